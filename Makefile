@@ -1,0 +1,32 @@
+# Convenience entry points; the build itself is CMake (see CMakePresets.json).
+BUILD ?= build
+JOBS ?= 2
+CMAKE_FLAGS ?= -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+
+.PHONY: all deps test-deps configure build run test clean
+
+all: build
+
+deps:
+	scripts/install-deps.sh
+
+test-deps:
+	scripts/install-deps.sh --tests
+
+configure:
+	cmake -S . -B $(BUILD) $(CMAKE_FLAGS)
+
+build: deps configure
+	cmake --build $(BUILD) -j$(JOBS)
+
+# Installs what is missing, builds, and opens mbscope (offscreen when there is no display).
+run: build
+	scripts/run-mbscope.sh $(BUILD)/app/mbscope
+
+# Installs what is missing (peers included), builds, and runs every test with CTest's summary.
+test: test-deps configure
+	cmake --build $(BUILD) -j$(JOBS)
+	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
+
+clean:
+	rm -rf $(BUILD)

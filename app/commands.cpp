@@ -1,0 +1,74 @@
+#include "commands.h"
+
+#include "decodecommand.h"
+
+#include <QtCore/QTextStream>
+
+#include <cstring>
+
+namespace mbscope::app {
+
+namespace {
+
+struct Subcommand {
+    const char *name;
+    const char *summary;
+    int (*run)(const QStringList &arguments);
+};
+
+const Subcommand kSubcommands[] = {
+    {"decode", "explain a Modbus frame field by field (hex argument or standard input)", runDecode},
+};
+
+void printUsage(QTextStream &out)
+{
+    out << "Usage: mbscope [SUBCOMMAND] [OPTIONS]\n\n"
+        << "Without a subcommand mbscope opens its window.\n\nSubcommands:\n";
+    for (const Subcommand &s : kSubcommands)
+        out << "  " << QString::fromLatin1(s.name).leftJustified(10) << s.summary << '\n';
+    out << "\nRun 'mbscope SUBCOMMAND --help' for a subcommand's options.\n";
+}
+
+} // namespace
+
+bool isSubcommand(const char *name)
+{
+    for (const Subcommand &s : kSubcommands) {
+        if (std::strcmp(s.name, name) == 0)
+            return true;
+    }
+    return false;
+}
+
+bool hasGui()
+{
+#ifdef MBSCOPE_HAVE_UI
+    return true;
+#else
+    return false;
+#endif
+}
+
+int runHeadless(const QStringList &arguments)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    const QString first = arguments.value(1);
+    if (first == QLatin1String("--version")) {
+        out << "mbscope " << MBSCOPE_VERSION << '\n';
+        return ExitOk;
+    }
+    if (first.isEmpty() || first == QLatin1String("--help") || first == QLatin1String("-h") || first == QLatin1String("help")) {
+        printUsage(out);
+        return first.isEmpty() && !hasGui() ? ExitUsage : ExitOk;
+    }
+    for (const Subcommand &s : kSubcommands) {
+        if (first == QLatin1String(s.name))
+            return s.run(arguments.mid(1));
+    }
+    err << "mbscope: unknown subcommand '" << first << "'\n";
+    printUsage(err);
+    return ExitUsage;
+}
+
+} // namespace mbscope::app

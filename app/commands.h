@@ -1,0 +1,22 @@
+#pragma once
+
+#include <QtCore/QStringList>
+
+#ifdef MBSCOPE_HAVE_UI
+class QApplication;
+#endif
+
+namespace mbscope::app {
+
+[[nodiscard]] bool isSubcommand(const char *name);
+[[nodiscard]] bool hasGui();
+// Runs a subcommand (or prints help); arguments as QCoreApplication::arguments() gives them.
+int runHeadless(const QStringList &arguments);
+#ifdef MBSCOPE_HAVE_UI
+int runGui(QApplication &app);
+#endif
+
+// Exit statuses shared by every subcommand.
+enum ExitStatus { ExitOk = 0, ExitFailure = 1, ExitUsage = 2 };
+
+} // namespace mbscope::app

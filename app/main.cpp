@@ -1,0 +1,34 @@
+// mbscope: the window when run without a subcommand, headless subcommands otherwise.
+#include "commands.h"
+
+#include <QtCore/QCoreApplication>
+#include <QtCore/QStringList>
+
+#ifdef MBSCOPE_HAVE_UI
+#include <QtWidgets/QApplication>
+#endif
+
+#include <cstdio>
+#include <cstring>
+
+int main(int argc, char *argv[])
+{
+    const char *first = argc > 1 ? argv[1] : nullptr;
+    const bool subcommand = first && first[0] != '-' && mbscope::app::isSubcommand(first);
+    const bool wantsHelp = first && (std::strcmp(first, "--help") == 0 || std::strcmp(first, "-h") == 0
+                                     || std::strcmp(first, "--version") == 0 || std::strcmp(first, "help") == 0);
+    if (subcommand || wantsHelp || !mbscope::app::hasGui()) {
+        QCoreApplication app(argc, argv);
+        QCoreApplication::setApplicationName(QStringLiteral("mbscope"));
+        QCoreApplication::setApplicationVersion(QStringLiteral(MBSCOPE_VERSION));
+        return mbscope::app::runHeadless(QCoreApplication::arguments());
+    }
+#ifdef MBSCOPE_HAVE_UI
+    QApplication app(argc, argv);
+    QApplication::setApplicationName(QStringLiteral("mbscope"));
+    QApplication::setApplicationVersion(QStringLiteral(MBSCOPE_VERSION));
+    return mbscope::app::runGui(app);
+#else
+    return 2;
+#endif
+}

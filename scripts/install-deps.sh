@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Installs, through apt-get, only the Debian 12 packages mbscope needs that are missing.
+# Idempotent: a second run finds nothing to do and touches nothing.
+# Usage: scripts/install-deps.sh [--tests]   (--tests adds the real peers the test suite starts)
+set -euo pipefail
+
+build_pkgs=(
+  build-essential cmake ninja-build pkg-config
+  qt6-base-dev qt6-base-dev-tools qt6-serialbus-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools
+  qt6-l10n-tools libqcustomplot-dev libqcustomplot2.1-qt6 libgl-dev
+  qt6-qpa-plugins
+)
+test_pkgs=(
+  tshark socat libmodbus-dev mbpoll python3-pymodbus python3-serial python3-serial-asyncio
+  xvfb clang libclang-rt-14-dev libbenchmark-dev xauth
+)
+
+want=("${build_pkgs[@]}")
+if [[ "${1:-}" == "--tests" ]]; then
+  want+=("${test_pkgs[@]}")
+fi
+
+missing=()
+for p in "${want[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#want[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+# tshark asks whether non-root users may capture; answer it up front so no prompt blocks CI.
+echo "wireshark-common wireshark-common/install-setuid boolean false" | $sudo debconf-set-selections
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
