@@ -21,6 +21,8 @@ struct Expected {
 };
 
 // pdu starts at the function code and may hold fewer bytes than the PDU needs.
+// Direction::Auto: exception codes count as responses; otherwise the answer is given only where
+// the request and response rules agree, else Unknown (see pdusize.cpp).
 [[nodiscard]] Expected expectedPduSize(QByteArrayView pdu, Direction direction);
 
 } // namespace mbscope::pdusize
