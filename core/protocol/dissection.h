@@ -13,6 +13,7 @@ struct Dissection {
     Direction direction = Direction::Auto; // the direction used (detected when asked for Auto)
     QString framingReason;   // why this framing was chosen, when it was detected
     QString directionReason; // why this direction was chosen, when it was detected
+    QString note;            // how to read the offsets when it is not obvious (ASCII frames)
     FieldTree fields;
 
     [[nodiscard]] bool isValid() const { return !fields.isEmpty() && fields.worstSeverity() < Severity::Error; }

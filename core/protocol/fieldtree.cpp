@@ -139,7 +139,7 @@ QString FieldTree::valueText(int index) const
         for (char c : raw(index)) {
             const auto u = static_cast<unsigned char>(c);
             if (u == '"' || u == '\\')
-                text += QLatin1Char('\\') + QLatin1Char(c);
+                text += QStringLiteral("\\") + QLatin1Char(c);
             else if (u >= 0x20 && u < 0x7f)
                 text += QLatin1Char(c);
             else
