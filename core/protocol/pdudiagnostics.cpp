@@ -1,11 +1,272 @@
-// Temporary: families shown raw until their dissectors land (being written now).
+// Function 08 Diagnostics (MODBUS Application Protocol Specification V1.1b3, 6.8 and 6.8.1).
+//
+// Layout, request and response alike: function code, 2-byte sub-function, data (2-byte words).
+// Keys:
+//   modbus.subfunction          Hex, meaning the sub-function's name
+//   modbus.echo_data            00 Return Query Data: the bytes to echo (Bytes)
+//   modbus.restart_option       01 Restart Communications Option: 0000 keep / FF00 clear the log
+//   modbus.diagnostic_register  02 response: the 16-bit diagnostic register (Hex)
+//   modbus.ascii_delimiter      03: the new end-of-message character (Hex, meaning the character)
+//   modbus.padding              03: the byte after the delimiter, fixed at 00 by the spec
+//   modbus.counter_value        0B-12 response: the counter (Decimal, named after the counter)
+//   modbus.diagnostic_data      the data word of every other sub-function (0000 in requests and in
+//                               the echoes of 0A and 14), and the raw data of reserved ones (Bytes)
 #include "pdudissector.h"
 
+#include "pdudiagfields.h"
+
+#include <array>
+
 namespace mbscope::pdu {
-void dissectReadExceptionStatus(const PduContext &ctx) { dissectRawData(ctx); }
-void dissectDiagnostics(const PduContext &ctx) { dissectRawData(ctx); }
-void dissectCommEventCounter(const PduContext &ctx) { dissectRawData(ctx); }
-void dissectCommEventLog(const PduContext &ctx) { dissectRawData(ctx); }
-void dissectReportServerId(const PduContext &ctx) { dissectRawData(ctx); }
-void dissectEncapsulatedInterface(const PduContext &ctx) { dissectRawData(ctx); }
+namespace {
+
+using namespace diag;
+
+enum class Kind : quint8 {
+    Echo,       // 00: any data, echoed
+    Restart,    // 01: 0000 or FF00, echoed
+    Register,   // 02: request 0000, response the diagnostic register
+    Delimiter,  // 03: CHAR 00, echoed
+    ListenOnly, // 04: request 0000, no response at all
+    Clear,      // 0A, 14: request 0000, echoed
+    Counter,    // 0B-12: request 0000, response a counter
+    Reserved,   // everything else
+};
+
+struct SubFunction {
+    const char *name;
+    const char *valueName; // name of the response's value field
+    Kind kind;
+};
+
+SubFunction subFunction(quint16 code)
+{
+    switch (code) {
+    case 0x00: return {"Return Query Data", "Echo data", Kind::Echo};
+    case 0x01: return {"Restart Communications Option", "Restart option", Kind::Restart};
+    case 0x02: return {"Return Diagnostic Register", "Diagnostic register", Kind::Register};
+    case 0x03: return {"Change ASCII Input Delimiter", "ASCII input delimiter", Kind::Delimiter};
+    case 0x04: return {"Force Listen Only Mode", "Data", Kind::ListenOnly};
+    case 0x0A: return {"Clear Counters and Diagnostic Register", "Data", Kind::Clear};
+    case 0x0B: return {"Return Bus Message Count", "Bus message count", Kind::Counter};
+    case 0x0C: return {"Return Bus Communication Error Count", "Bus communication error count", Kind::Counter};
+    case 0x0D: return {"Return Bus Exception Error Count", "Bus exception error count", Kind::Counter};
+    case 0x0E: return {"Return Server Message Count", "Server message count", Kind::Counter};
+    case 0x0F: return {"Return Server No Response Count", "Server no response count", Kind::Counter};
+    case 0x10: return {"Return Server NAK Count", "Server NAK count", Kind::Counter};
+    case 0x11: return {"Return Server Busy Count", "Server busy count", Kind::Counter};
+    case 0x12: return {"Return Bus Character Overrun Count", "Bus character overrun count", Kind::Counter};
+    case 0x14: return {"Clear Overrun Counter and Flag", "Data", Kind::Clear};
+    // V1.1b3 reserves these; older Modicon documents gave them the meanings quoted.
+    case 0x13: return {"Reserved (legacy Modicon: Return IOP Overrun Count)", "Data", Kind::Reserved};
+    case 0x15: return {"Reserved (legacy Modicon: Get/Clear Modbus Plus Statistics)", "Data", Kind::Reserved};
+    default: return {"Reserved sub-function", "Data", Kind::Reserved};
+    }
+}
+
+// Static names of every byte value, for the ASCII delimiter: "'A'", "LF (line feed)".
+struct CharNames {
+    std::array<std::array<char, 4>, 95> printable{};
+};
+
+constexpr CharNames makeCharNames()
+{
+    CharNames names;
+    for (int i = 0; i < 95; ++i)
+        names.printable[size_t(i)] = {'\'', char(0x20 + i), '\'', '\0'};
+    return names;
+}
+
+constexpr CharNames kCharNames = makeCharNames();
+
+const char *characterName(quint8 c)
+{
+    static const char *const control[32] = {
+        "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS (backspace)", "HT (tab)",
+        "LF (line feed, the default delimiter)", "VT", "FF (form feed)", "CR (carriage return)", "SO", "SI",
+        "DLE", "DC1 (XON)", "DC2", "DC3 (XOFF)", "DC4", "NAK", "SYN", "ETB", "CAN", "EM", "SUB", "ESC",
+        "FS", "GS", "RS", "US"};
+    if (c < 0x20)
+        return control[c];
+    if (c == 0x20)
+        return "' ' (space)";
+    if (c < 0x7F)
+        return kCharNames.printable[size_t(c - 0x20)].data();
+    if (c == 0x7F)
+        return "DEL";
+    return "not an ASCII character";
+}
+
+// Data word of the request of a sub-function that takes none (V1.1b3, 6.8.1: "0000").
+void addZeroData(const PduContext &ctx, const SubFunction &sub, bool echo)
+{
+    const int d = addFixed(ctx, 3, 2, "modbus.diagnostic_data", "Data", ValueFormat::Hex);
+    if (!ctx.has(3, 2))
+        return;
+    if (ctx.u16(3) != 0) {
+        ctx.tree.flag(d, Severity::Error,
+                      QStringLiteral("%1 is not allowed: %2 %3 carries the data 0x0000")
+                          .arg(hexWord(ctx.u16(3)), QString::fromLatin1(sub.name),
+                               echo ? QStringLiteral("echoes the request and") : QStringLiteral("request")));
+    }
+    addTrailing(ctx, 5);
+}
+
+// Flags a response whose data differs from the request's (sub-functions that echo). A fixed-size
+// echo compares `bytes` bytes; a variable one (00) compares all the data.
+void checkEcho(const PduContext &ctx, int field, int from, int bytes, bool variable = false)
+{
+    if (!isResponse(ctx) || !ctx.hasRequest() || ctx.request.size() < 3 || ctx.requestU16(1) != ctx.u16(1))
+        return;
+    const int requestData = int(ctx.request.size()) - from;
+    const int sent = variable ? requestData : qMin(requestData, bytes);
+    const int got = qMin(bytes, ctx.length - from);
+    for (int i = 0; i < qMin(sent, got); ++i) {
+        if (ctx.byte(from + i) != ctx.requestByte(from + i)) {
+            ctx.tree.flag(field, Severity::Error,
+                          QStringLiteral("does not echo the request: data byte %1 is %2, the request sent %3")
+                              .arg(from - 3 + i).arg(hexByte(ctx.byte(from + i)), hexByte(ctx.requestByte(from + i))));
+            return;
+        }
+    }
+    if (sent != got && got == bytes) {
+        ctx.tree.flag(field, Severity::Error,
+                      QStringLiteral("does not echo the request: %1 of data returned, the request sent %2")
+                          .arg(byteCount(got), byteCount(qMax(sent, 0))));
+    }
+}
+
+void dissectEcho(const PduContext &ctx)
+{
+    const int bytes = ctx.length - 3;
+    if (bytes <= 0) {
+        // V1.1b3 allows any data, which includes none; the echo check still applies.
+        if (isResponse(ctx) && ctx.hasRequest() && ctx.request.size() > 3 && ctx.requestU16(1) == 0) {
+            const int e = ctx.add("modbus.echo_data", "Echo data", 3, 0);
+            ctx.tree.flag(e, Severity::Error,
+                          QStringLiteral("missing: the request sent %1 of data to echo, none came back")
+                              .arg(byteCount(int(ctx.request.size()) - 3)));
+        }
+        return;
+    }
+    const int e = ctx.add("modbus.echo_data", "Echo data", 3, bytes, 0, ValueFormat::Bytes);
+    if (bytes % 2 != 0) {
+        ctx.tree.flag(e, Severity::Info,
+                      QStringLiteral("odd length (%1): V1.1b3 6.8.1 gives the data as 2-byte words").arg(byteCount(bytes)));
+    }
+    checkEcho(ctx, e, 3, bytes, true);
+}
+
+void dissectRestart(const PduContext &ctx)
+{
+    const int r = addFixed(ctx, 3, 2, "modbus.restart_option", "Restart option", ValueFormat::Hex);
+    if (!ctx.has(3, 2))
+        return;
+    const quint16 option = ctx.u16(3);
+    if (option == 0x0000) {
+        ctx.tree.setMeaning(r, "Restart, keep the communications event log");
+    } else if (option == 0xFF00) {
+        ctx.tree.setMeaning(r, "Restart and clear the communications event log");
+    } else {
+        ctx.tree.flag(r, Severity::Error,
+                      QStringLiteral("%1 is not a restart option: 0x0000 keeps the event log, 0xFF00 clears it")
+                          .arg(hexWord(option)));
+    }
+    checkEcho(ctx, r, 3, 2);
+    addTrailing(ctx, 5);
+}
+
+void dissectDelimiter(const PduContext &ctx)
+{
+    const int d = addFixed(ctx, 3, 1, "modbus.ascii_delimiter", "ASCII input delimiter", ValueFormat::Hex);
+    if (!ctx.has(3))
+        return;
+    const quint8 c = ctx.byte(3);
+    ctx.tree.setMeaning(d, characterName(c));
+    // Serial Line V1.02, 2.5.2.1: ASCII frames start with ':' and carry hex digits, so either as
+    // the end delimiter would cut frames apart.
+    const bool hexDigit = (c >= '0' && c <= '9') || (c >= 'A' && c <= 'F') || (c >= 'a' && c <= 'f');
+    if (c == ':' || hexDigit) {
+        ctx.tree.flag(d, Severity::Warning,
+                      QStringLiteral("%1 as the end delimiter breaks ASCII framing: ':' starts every frame and "
+                                     "hex digits carry its content").arg(hexByte(c)));
+    }
+    checkEcho(ctx, d, 3, 2);
+    const int p = addFixed(ctx, 4, 1, "modbus.padding", "Padding", ValueFormat::Hex);
+    if (!ctx.has(4))
+        return;
+    if (ctx.byte(4) != 0) {
+        ctx.tree.flag(p, Severity::Error,
+                      QStringLiteral("%1 is not allowed: the byte after the delimiter is 0x00 (V1.1b3 6.8.1, sub-function 03)")
+                          .arg(hexByte(ctx.byte(4))));
+    }
+    addTrailing(ctx, 5);
+}
+
+void dissectValue(const PduContext &ctx, const SubFunction &sub)
+{
+    const bool counter = sub.kind == Kind::Counter;
+    addFixed(ctx, 3, 2, counter ? "modbus.counter_value" : "modbus.diagnostic_register", sub.valueName,
+             counter ? ValueFormat::Decimal : ValueFormat::Hex);
+    if (ctx.has(3, 2))
+        addTrailing(ctx, 5);
+}
+
+} // namespace
+
+void dissectDiagnostics(const PduContext &ctx)
+{
+    const int fc = functionField(ctx);
+    ctx.tree.flag(fc, Severity::Info,
+                  QStringLiteral("serial line only: V1.1b3 6.8 defines Diagnostics for serial line devices"));
+    const int s = addFixed(ctx, 1, 2, "modbus.subfunction", "Sub-function", ValueFormat::Hex);
+    if (!ctx.has(1, 2))
+        return;
+    const quint16 code = ctx.u16(1);
+    const SubFunction sub = subFunction(code);
+    ctx.tree.setMeaning(s, sub.name);
+    const bool response = isResponse(ctx);
+    if (response && ctx.hasRequest() && ctx.request.size() >= 3 && ctx.requestU16(1) != code) {
+        ctx.tree.flag(s, Severity::Error,
+                      QStringLiteral("does not match the request: the request's sub-function is %1")
+                          .arg(hexWord(ctx.requestU16(1))));
+    }
+    switch (sub.kind) {
+    case Kind::Echo:
+        dissectEcho(ctx);
+        return;
+    case Kind::Restart:
+        dissectRestart(ctx);
+        return;
+    case Kind::Delimiter:
+        dissectDelimiter(ctx);
+        return;
+    case Kind::Register:
+    case Kind::Counter:
+        if (response)
+            dissectValue(ctx, sub);
+        else
+            addZeroData(ctx, sub, false);
+        return;
+    case Kind::ListenOnly:
+        if (response) {
+            ctx.tree.flag(s, Severity::Warning,
+                          QStringLiteral("a device returns no response to Force Listen Only Mode (V1.1b3 6.8.1, "
+                                         "sub-function 04): this frame is probably a request"));
+        }
+        addZeroData(ctx, sub, false);
+        return;
+    case Kind::Clear:
+        addZeroData(ctx, sub, response);
+        return;
+    case Kind::Reserved:
+        break;
+    }
+    ctx.tree.flag(s, Severity::Warning,
+                  QStringLiteral("reserved sub-function %1: V1.1b3 6.8.1 defines 0x0000-0x0004, 0x000A-0x0012 and 0x0014; "
+                                 "its data is shown raw").arg(hexWord(code)));
+    if (ctx.length > 3)
+        ctx.add("modbus.diagnostic_data", "Data", 3, ctx.length - 3, 0, ValueFormat::Bytes);
+}
+
 } // namespace mbscope::pdu

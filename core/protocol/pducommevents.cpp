@@ -1,0 +1,211 @@
+// Functions 07 Read Exception Status, 0B Get Comm Event Counter and 0C Get Comm Event Log
+// (MODBUS Application Protocol Specification V1.1b3, 6.7, 6.9, 6.10). All three are serial
+// line only, and their requests carry no data.
+//
+// Keys:
+//   modbus.exception_status      07 response: the status byte (Hex)
+//   modbus.exception_status_bit  its 8 outputs, address 0-7 (Bit, ON/OFF)
+//   modbus.status                0B/0C response: 0x0000 ready, 0xFFFF busy (Hex)
+//   modbus.event_count           0B/0C response (Decimal)
+//   modbus.byte_count            0C response (Decimal)
+//   modbus.message_count         0C response (Decimal)
+//   modbus.event                 0C response: one per event byte, address 0 = most recent (Hex,
+//                                meaning the event type and its flags)
+#include "pdudissector.h"
+
+#include "pdudiagfields.h"
+
+#include <array>
+
+namespace mbscope::pdu {
+namespace {
+
+using namespace diag;
+
+// V1.1b3, 6.10: the event byte types and their bit flags. Every byte value gets a static
+// meaning, built at compile time, so the event list allocates nothing.
+constexpr int kEventTextSize = 192;
+
+struct EventTexts {
+    std::array<std::array<char, kEventTextSize>, 256> text{};
+};
+
+constexpr void appendText(std::array<char, kEventTextSize> &out, int &at, const char *s)
+{
+    while (*s)
+        out[size_t(at++)] = *s++;
+}
+
+constexpr void appendFlags(std::array<char, kEventTextSize> &out, int &at, int value, const char *const *flags)
+{
+    bool first = true;
+    for (int bit = 0; bit < 6; ++bit) {
+        if (!(value & (1 << bit)) || !flags[bit])
+            continue;
+        appendText(out, at, first ? ": " : ", ");
+        appendText(out, at, flags[bit]);
+        first = false;
+    }
+}
+
+constexpr EventTexts makeEventTexts()
+{
+    // Receive event, bit 7 set: bits 0, 2 and 3 are not used.
+    const char *const receive[7] = {nullptr, "communication error", nullptr, nullptr, "character overrun",
+                                    "in listen only mode", "broadcast received"};
+    // Send event, bit 7 clear and bit 6 set.
+    const char *const send[6] = {"read exception sent (codes 01-03)", "abort exception sent (code 04)",
+                                 "busy exception sent (codes 05-06)", "program NAK exception sent (code 07)",
+                                 "write timeout", "in listen only mode"};
+    EventTexts t;
+    for (int v = 0; v < 256; ++v) {
+        auto &out = t.text[size_t(v)];
+        int at = 0;
+        if (v & 0x80) {
+            appendText(out, at, "Receive event");
+            bool first = true;
+            for (int bit = 0; bit < 7; ++bit) {
+                if (!(v & (1 << bit)) || !receive[bit])
+                    continue;
+                appendText(out, at, first ? ": " : ", ");
+                appendText(out, at, receive[bit]);
+                first = false;
+            }
+            if (v & 0x0D)
+                appendText(out, at, first ? ": unused bits set" : ", unused bits set");
+        } else if (v & 0x40) {
+            appendText(out, at, "Send event");
+            appendFlags(out, at, v, send);
+        } else if (v == 0x04) {
+            appendText(out, at, "Entered listen only mode");
+        } else if (v == 0x00) {
+            appendText(out, at, "Communication restart");
+        } else {
+            appendText(out, at, "Undefined event (bits 7 and 6 clear, neither 0x00 nor 0x04)");
+        }
+        out[size_t(at)] = '\0';
+    }
+    return t;
+}
+
+constexpr EventTexts kEventTexts = makeEventTexts();
+
+[[nodiscard]] bool isDefinedEvent(quint8 v)
+{
+    return (v & 0xC0) != 0 || v == 0x00 || v == 0x04;
+}
+
+void noteSerialLineOnly(const PduContext &ctx, const char *function, const char *section)
+{
+    ctx.tree.flag(functionField(ctx), Severity::Info,
+                  QStringLiteral("serial line only: V1.1b3 %1 defines %2 for serial line devices")
+                      .arg(QLatin1String(section), QLatin1String(function)));
+}
+
+void addStatus(const PduContext &ctx, int pduOffset)
+{
+    const int s = addFixed(ctx, pduOffset, 2, "modbus.status", "Status", ValueFormat::Hex);
+    if (!ctx.has(pduOffset, 2))
+        return;
+    const quint16 status = ctx.u16(pduOffset);
+    if (status == 0x0000) {
+        ctx.tree.setMeaning(s, "Ready: no previous command is in progress");
+    } else if (status == 0xFFFF) {
+        ctx.tree.setMeaning(s, "Busy: a previous command is still being processed");
+    } else {
+        ctx.tree.flag(s, Severity::Error,
+                      QStringLiteral("%1 is not a status: 0x0000 means ready, 0xFFFF busy (V1.1b3 6.9)")
+                          .arg(hexWord(status)));
+    }
+}
+
+} // namespace
+
+void dissectReadExceptionStatus(const PduContext &ctx)
+{
+    noteSerialLineOnly(ctx, "Read Exception Status", "6.7");
+    if (!isResponse(ctx)) {
+        addTrailing(ctx, 1);
+        return;
+    }
+    const int s = addFixed(ctx, 1, 1, "modbus.exception_status", "Exception status", ValueFormat::Hex);
+    if (!ctx.has(1))
+        return;
+    // The meaning of each of the eight outputs is device specific (V1.1b3, 6.7).
+    const quint8 status = ctx.byte(1);
+    for (int bit = 0; bit < 8; ++bit) {
+        const bool on = (status >> bit) & 1;
+        const int b = ctx.addChild(s, "modbus.exception_status_bit", "Output", 1, 1, on ? 1 : 0,
+                                   ValueFormat::Bit, on ? "ON" : "OFF");
+        ctx.tree.setAddress(b, bit);
+    }
+    addTrailing(ctx, 2);
+}
+
+void dissectCommEventCounter(const PduContext &ctx)
+{
+    noteSerialLineOnly(ctx, "Get Comm Event Counter", "6.9");
+    if (!isResponse(ctx)) {
+        addTrailing(ctx, 1);
+        return;
+    }
+    addStatus(ctx, 1);
+    if (!ctx.has(1, 2))
+        return;
+    addFixed(ctx, 3, 2, "modbus.event_count", "Event count", ValueFormat::Decimal);
+    if (ctx.has(3, 2))
+        addTrailing(ctx, 5);
+}
+
+void dissectCommEventLog(const PduContext &ctx)
+{
+    noteSerialLineOnly(ctx, "Get Comm Event Log", "6.10");
+    if (!isResponse(ctx)) {
+        addTrailing(ctx, 1);
+        return;
+    }
+    // Byte count = 6 (status, event count, message count) + one byte per event, 0-64 events.
+    const int bc = addFixed(ctx, 1, 1, "modbus.byte_count", "Byte count", ValueFormat::Decimal);
+    if (!ctx.has(1))
+        return;
+    const int count = ctx.byte(1);
+    const int present = ctx.length - 2;
+    if (count < 6) {
+        ctx.tree.flag(bc, Severity::Error,
+                      QStringLiteral("byte count %1 is too small: status, event count and message count take 6 bytes")
+                          .arg(count));
+    } else if (count > 6 + 64) {
+        ctx.tree.flag(bc, Severity::Error,
+                      QStringLiteral("byte count %1 announces %2 events: the log holds at most 64 (byte count 6-70)")
+                          .arg(count).arg(count - 6));
+    }
+    if (count > present) {
+        ctx.tree.flag(bc, Severity::Error,
+                      QStringLiteral("byte count %1 announces %1 data bytes but only %2 are present")
+                          .arg(count).arg(qMax(present, 0)));
+    }
+    addStatus(ctx, 2);
+    if (!ctx.has(2, 2))
+        return;
+    addFixed(ctx, 4, 2, "modbus.event_count", "Event count", ValueFormat::Decimal);
+    if (!ctx.has(4, 2))
+        return;
+    addFixed(ctx, 6, 2, "modbus.message_count", "Message count", ValueFormat::Decimal);
+    if (!ctx.has(6, 2))
+        return;
+    // Events end where the byte count says, or where the PDU does if that comes first.
+    const int end = qMin(2 + qMax(count, 6), ctx.length);
+    for (int at = 8; at < end; ++at) {
+        const quint8 v = ctx.byte(at);
+        const int e = ctx.add("modbus.event", "Event", at, 1, v, ValueFormat::Hex, kEventTexts.text[v].data());
+        ctx.tree.setAddress(e, at - 8);
+        if (!isDefinedEvent(v)) {
+            ctx.tree.flag(e, Severity::Warning,
+                          QStringLiteral("%1 is not an event type of V1.1b3 6.10: receive events set bit 7, send "
+                                         "events bit 6, 0x04 is listen only mode and 0x00 a restart").arg(hexByte(v)));
+        }
+    }
+    addTrailing(ctx, 2 + qMax(count, 6));
+}
+
+} // namespace mbscope::pdu

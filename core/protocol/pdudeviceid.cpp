@@ -1,0 +1,287 @@
+// Function 2B (43) Encapsulated Interface Transport (MODBUS Application Protocol Specification
+// V1.1b3, 6.19-6.21 and Annex B). MEI type 0x0E Read Device Identification is decoded object by
+// object; 0x0D CANopen General Reference is shown raw (its content belongs to CiA DS-309);
+// other MEI types are reserved and shown raw.
+//
+// Keys:
+//   modbus.mei_type             Hex, meaning the MEI type's name
+//   modbus.read_device_id_code  0E: 01 basic, 02 regular, 03 extended stream, 04 one object (Hex)
+//   modbus.object_id            0E request: the first (stream) or only (04) object asked for (Hex)
+//   modbus.conformity_level     0E response (Hex)
+//   modbus.more_follows         0E response: 0x00 no, 0xFF yes (Hex)
+//   modbus.next_object_id       0E response (Hex)
+//   modbus.object_count         0E response: number of objects (Decimal)
+//   modbus.object               0E response: one group per object, address = 0-based index,
+//                               children modbus.object_id (meaning the object's name),
+//                               modbus.object_length (Decimal), modbus.object_value (Ascii)
+//   modbus.data                 0D and reserved MEI types: the bytes after the MEI type
+#include "pdudissector.h"
+
+#include "pdudiagfields.h"
+
+namespace mbscope::pdu {
+namespace {
+
+using namespace diag;
+
+const char *readDeviceIdCodeName(quint8 code)
+{
+    switch (code) {
+    case 0x01: return "Basic device identification (stream access)";
+    case 0x02: return "Regular device identification (stream access)";
+    case 0x03: return "Extended device identification (stream access)";
+    case 0x04: return "One specific identification object (individual access)";
+    default: return "Undefined read device ID code";
+    }
+}
+
+// V1.1b3, 6.21, table of objects.
+const char *objectName(quint8 id)
+{
+    switch (id) {
+    case 0x00: return "VendorName";
+    case 0x01: return "ProductCode";
+    case 0x02: return "MajorMinorRevision";
+    case 0x03: return "VendorUrl";
+    case 0x04: return "ProductName";
+    case 0x05: return "ModelName";
+    case 0x06: return "UserApplicationName";
+    default: return id < 0x80 ? "Reserved object" : "Private object (extended, device dependent)";
+    }
+}
+
+const char *conformityName(quint8 level)
+{
+    switch (level) {
+    case 0x01: return "Basic identification (stream access only)";
+    case 0x02: return "Regular identification (stream access only)";
+    case 0x03: return "Extended identification (stream access only)";
+    case 0x81: return "Basic identification (stream access and individual access)";
+    case 0x82: return "Regular identification (stream access and individual access)";
+    case 0x83: return "Extended identification (stream access and individual access)";
+    default: return "Undefined conformity level";
+    }
+}
+
+[[nodiscard]] bool isReservedObject(quint8 id)
+{
+    return id >= 0x07 && id <= 0x7F;
+}
+
+int addReadDeviceIdCode(const PduContext &ctx)
+{
+    const int c = addFixed(ctx, 2, 1, "modbus.read_device_id_code", "Read device ID code", ValueFormat::Hex);
+    if (!ctx.has(2))
+        return c;
+    const quint8 code = ctx.byte(2);
+    ctx.tree.setMeaning(c, readDeviceIdCodeName(code));
+    if (code < 0x01 || code > 0x04) {
+        ctx.tree.flag(c, Severity::Error,
+                      QStringLiteral("%1 is not a read device ID code: 01 basic, 02 regular, 03 extended stream, "
+                                     "04 one specific object (V1.1b3 6.21)").arg(hexByte(code)));
+    }
+    return c;
+}
+
+void dissectDeviceIdRequest(const PduContext &ctx)
+{
+    addReadDeviceIdCode(ctx);
+    if (!ctx.has(2))
+        return;
+    const quint8 code = ctx.byte(2);
+    const quint8 id = ctx.has(3) ? ctx.byte(3) : 0;
+    const int o = addFixed(ctx, 3, 1, "modbus.object_id", "Object ID", ValueFormat::Hex, objectName(id));
+    if (!ctx.has(3))
+        return;
+    if (isReservedObject(id)) {
+        ctx.tree.flag(o, Severity::Warning,
+                      QStringLiteral("%1 is a reserved object ID (0x07-0x7F)").arg(hexByte(id)));
+    } else if ((code == 0x01 && id > 0x02) || (code == 0x02 && id > 0x06)) {
+        // V1.1b3 6.21: a stream access from an object the category does not hold restarts at 0.
+        ctx.tree.flag(o, Severity::Info,
+                      QStringLiteral("%1 is outside the %2 category: the device answers from object 0x00")
+                          .arg(hexByte(id), code == 0x01 ? QStringLiteral("basic (0x00-0x02)")
+                                                         : QStringLiteral("regular (0x00-0x06)")));
+    }
+    addTrailing(ctx, 4);
+}
+
+// The object list of a response, from pduOffset 7 to the end of the PDU: every object present
+// is shown, and the count, the order and the lengths are checked. Returns the last object's ID,
+// or -1 when there is none.
+int dissectObjects(const PduContext &ctx, int countField, quint8 code)
+{
+    const int announced = ctx.byte(6);
+    int index = 0;
+    int previous = -1;
+    int at = 7;
+    while (at < ctx.length) {
+        const quint8 id = ctx.byte(at);
+        const bool hasLength = ctx.has(at + 1);
+        const int length = hasLength ? ctx.byte(at + 1) : 0;
+        const int available = qMax(0, ctx.length - (at + 2));
+        const int shown = qMin(length, available);
+        const int g = ctx.add("modbus.object", "Object", at, hasLength ? 2 + shown : 1, 0, ValueFormat::None,
+                              objectName(id));
+        ctx.tree.setAddress(g, index);
+        const int idField = ctx.addChild(g, "modbus.object_id", "Object ID", at, 1, id, ValueFormat::Hex, objectName(id));
+        if (isReservedObject(id)) {
+            ctx.tree.flag(idField, Severity::Warning,
+                          QStringLiteral("%1 is a reserved object ID (0x07-0x7F)").arg(hexByte(id)));
+        }
+        if (previous >= 0 && id <= previous) {
+            ctx.tree.flag(idField, Severity::Warning,
+                          QStringLiteral("objects out of order: %1 follows %2, a stream lists objects by increasing ID")
+                              .arg(hexByte(id), hexByte(quint8(previous))));
+        }
+        previous = id;
+        ++index;
+        if (!hasLength) {
+            const int l = ctx.addChild(g, "modbus.object_length", "Object length", at + 1, 0);
+            ctx.tree.flag(l, Severity::Error,
+                          QStringLiteral("missing: 1 byte expected at PDU offset %1, the PDU ends there").arg(at + 1));
+            break;
+        }
+        const int l = ctx.addChild(g, "modbus.object_length", "Object length", at + 1, 1, quint64(length),
+                                   ValueFormat::Decimal);
+        if (shown > 0 || length == 0)
+            ctx.addChild(g, "modbus.object_value", "Object value", at + 2, shown, 0, ValueFormat::Ascii);
+        if (length > available) {
+            ctx.tree.flag(l, Severity::Error,
+                          QStringLiteral("object length %1 exceeds the PDU: %1 bytes expected, only %2 present")
+                              .arg(length).arg(available));
+        }
+        at += 2 + length;
+    }
+    if (index != announced) {
+        ctx.tree.flag(countField, Severity::Error,
+                      QStringLiteral("number of objects %1 but %2 present").arg(announced).arg(index));
+    }
+    if (code == 0x04 && index > 1) {
+        ctx.tree.flag(countField, Severity::Error,
+                      QStringLiteral("individual access (code 04) returns one object, %1 are present").arg(index));
+    }
+    return previous;
+}
+
+void dissectDeviceIdResponse(const PduContext &ctx)
+{
+    const int c = addReadDeviceIdCode(ctx);
+    if (!ctx.has(2))
+        return;
+    const quint8 code = ctx.byte(2);
+    const bool requested = ctx.hasRequest() && ctx.request.size() >= 4 && ctx.requestByte(1) == 0x0E;
+    if (requested && ctx.requestByte(2) != code) {
+        ctx.tree.flag(c, Severity::Error,
+                      QStringLiteral("does not match the request: the request's read device ID code is %1")
+                          .arg(hexByte(ctx.requestByte(2))));
+    }
+    const int cl = addFixed(ctx, 3, 1, "modbus.conformity_level", "Conformity level", ValueFormat::Hex);
+    if (!ctx.has(3))
+        return;
+    const quint8 level = ctx.byte(3);
+    ctx.tree.setMeaning(cl, conformityName(level));
+    if ((level & 0x7F) < 0x01 || (level & 0x7F) > 0x03) {
+        ctx.tree.flag(cl, Severity::Error,
+                      QStringLiteral("%1 is not a conformity level: 01-03 (stream access only) or 81-83 "
+                                     "(stream and individual access)").arg(hexByte(level)));
+    } else if (code == 0x04 && level < 0x80) {
+        ctx.tree.flag(cl, Severity::Warning,
+                      QStringLiteral("the device answered an individual access (code 04) but its conformity level "
+                                     "%1 says it supports stream access only").arg(hexByte(level)));
+    }
+    const int mf = addFixed(ctx, 4, 1, "modbus.more_follows", "More follows", ValueFormat::Hex);
+    if (!ctx.has(4))
+        return;
+    const quint8 more = ctx.byte(4);
+    if (more == 0x00) {
+        ctx.tree.setMeaning(mf, "No more objects");
+    } else if (more == 0xFF) {
+        ctx.tree.setMeaning(mf, "More objects follow: ask again from the next object ID");
+        if (code == 0x04) {
+            ctx.tree.flag(mf, Severity::Error,
+                          QStringLiteral("individual access (code 04) sets more follows to 0x00 (V1.1b3 6.21)"));
+        }
+    } else {
+        ctx.tree.flag(mf, Severity::Error,
+                      QStringLiteral("%1 is not allowed: more follows is 0x00 (no) or 0xFF (yes)").arg(hexByte(more)));
+    }
+    const int next = addFixed(ctx, 5, 1, "modbus.next_object_id", "Next object ID", ValueFormat::Hex);
+    if (!ctx.has(5))
+        return;
+    if (more == 0xFF)
+        ctx.tree.setMeaning(next, objectName(ctx.byte(5)));
+    else if (more == 0x00 && ctx.byte(5) != 0x00) {
+        ctx.tree.flag(next, Severity::Error,
+                      QStringLiteral("%1 is not allowed: the next object ID is 0x00 when more follows is 0x00")
+                          .arg(hexByte(ctx.byte(5))));
+    }
+    const int count = addFixed(ctx, 6, 1, "modbus.object_count", "Number of objects", ValueFormat::Decimal);
+    if (!ctx.has(6))
+        return;
+    if (ctx.length <= 7) {
+        if (ctx.byte(6) != 0) {
+            ctx.tree.flag(count, Severity::Error,
+                          QStringLiteral("truncated: %1 objects announced, the PDU ends before the object list")
+                              .arg(ctx.byte(6)));
+        }
+        return;
+    }
+    const int last = dissectObjects(ctx, count, code);
+    if (requested && ctx.byte(7) != ctx.requestByte(3)) {
+        // The first object's ID field comes right after the first object group.
+        const int firstId = ctx.tree.indexOf("modbus.object_id", count + 1);
+        if (code == 0x04 && firstId >= 0) {
+            ctx.tree.flag(firstId, Severity::Error,
+                          QStringLiteral("does not match the request: object %1 was asked for")
+                              .arg(hexByte(ctx.requestByte(3))));
+        } else if (code != 0x04 && firstId >= 0 && ctx.byte(7) != 0x00) {
+            // V1.1b3 6.21: a stream starts at the object asked for, or at 0x00 when that one is unknown.
+            ctx.tree.flag(firstId, Severity::Warning,
+                          QStringLiteral("the stream starts at %1: the request asked from object %2 (or 0x00 when that one is unknown)")
+                              .arg(hexByte(ctx.byte(7)), hexByte(ctx.requestByte(3))));
+        }
+    }
+    if (more == 0xFF && last >= 0 && ctx.byte(5) <= last) {
+        ctx.tree.flag(next, Severity::Warning,
+                      QStringLiteral("next object ID %1 does not lie beyond the last object returned (%2): "
+                                     "the next request would repeat objects").arg(hexByte(ctx.byte(5)), hexByte(quint8(last))));
+    }
+}
+
+} // namespace
+
+void dissectEncapsulatedInterface(const PduContext &ctx)
+{
+    const int m = addFixed(ctx, 1, 1, "modbus.mei_type", "MEI type", ValueFormat::Hex);
+    if (!ctx.has(1))
+        return;
+    const quint8 mei = ctx.byte(1);
+    if (isResponse(ctx) && ctx.hasRequest() && ctx.request.size() >= 2 && ctx.requestByte(1) != mei) {
+        ctx.tree.flag(m, Severity::Error,
+                      QStringLiteral("does not match the request: the request's MEI type is %1")
+                          .arg(hexByte(ctx.requestByte(1))));
+    }
+    if (mei == 0x0E) {
+        ctx.tree.setMeaning(m, "Read Device Identification");
+        if (isResponse(ctx))
+            dissectDeviceIdResponse(ctx);
+        else
+            dissectDeviceIdRequest(ctx);
+        return;
+    }
+    if (mei == 0x0D) {
+        ctx.tree.setMeaning(m, "CANopen General Reference");
+        ctx.tree.flag(m, Severity::Info,
+                      QStringLiteral("CANopen General Reference: its data follows CiA DS-309 and is shown raw"));
+    } else {
+        ctx.tree.setMeaning(m, "Reserved MEI type");
+        ctx.tree.flag(m, Severity::Warning,
+                      QStringLiteral("reserved MEI type %1: V1.1b3 defines 0x0D (CANopen) and 0x0E (device "
+                                     "identification); the data is shown raw").arg(hexByte(mei)));
+    }
+    if (ctx.length > 2)
+        ctx.add("modbus.data", "Data", 2, ctx.length - 2, 0, ValueFormat::Bytes);
+}
+
+} // namespace mbscope::pdu
