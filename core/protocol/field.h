@@ -16,6 +16,8 @@ enum class ValueFormat : quint8 {
     Bytes,      // the raw bytes as hex: 01 02 03
     Ascii,      // the raw bytes as quoted text, non-printable bytes escaped
     Bit,        // 0 or 1: a coil or discrete input; meaning says ON or OFF
+    Reference5, // a Modicon reference in five digits, zero-padded: 00122, 40122
+    Reference6, // a Modicon reference in six digits, zero-padded: 000122, 400122
 };
 
 // One node of a dissection. Keys, names and meanings are static strings (string literals or

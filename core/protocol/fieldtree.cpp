@@ -130,6 +130,10 @@ QString FieldTree::valueText(int index) const
         return QString::number(f.value);
     case ValueFormat::Hex:
         return hexDigits(f.value, f.length);
+    case ValueFormat::Reference5:
+        return QString::number(f.value).rightJustified(5, QLatin1Char('0'));
+    case ValueFormat::Reference6:
+        return QString::number(f.value).rightJustified(6, QLatin1Char('0'));
     case ValueFormat::DecimalHex:
         return QString::number(f.value) + QStringLiteral(" (") + hexDigits(f.value, f.length) + QLatin1Char(')');
     case ValueFormat::Bytes:

@@ -2,7 +2,58 @@
 
 #include "functioncode.h"
 
+#include <cstring>
+#include "pdudiagfields.h"
+
 namespace mbscope::pdu {
+
+namespace {
+
+// Modicon references number the four tables from 1: 0xxxx coils, 1xxxx discrete inputs,
+// 3xxxx input registers, 4xxxx holding registers. The five-digit form reaches PDU address
+// 9998 (reference x9999), the six-digit form the whole 0-65535 range.
+void addReferences(const PduContext &ctx, quint8 function, int first)
+{
+    int table = -1;
+    const char *meaning = nullptr;
+    switch (function) {
+    case 0x01: case 0x05: case 0x0F:
+        table = 0;
+        meaning = "Modicon coil reference (0xxxx): the 1-based number of the 0-based PDU address";
+        break;
+    case 0x02:
+        table = 1;
+        meaning = "Modicon discrete input reference (1xxxx): the 1-based number of the 0-based PDU address";
+        break;
+    case 0x04:
+        table = 3;
+        meaning = "Modicon input register reference (3xxxx): the 1-based number of the 0-based PDU address";
+        break;
+    case 0x03: case 0x06: case 0x10: case 0x16: case 0x17:
+        table = 4;
+        meaning = "Modicon holding register reference (4xxxx): the 1-based number of the 0-based PDU address";
+        break;
+    default:
+        return;
+    }
+    const int end = ctx.tree.size();
+    for (int i = first; i < end; ++i) {
+        const Field &f = ctx.tree.at(i);
+        if (f.length != 2 || f.severity == Severity::Error)
+            continue;
+        const char *key = f.key;
+        if (std::strcmp(key, "modbus.start_address") != 0 && std::strcmp(key, "modbus.address") != 0
+            && std::strcmp(key, "modbus.read_start_address") != 0 && std::strcmp(key, "modbus.write_start_address") != 0)
+            continue;
+        const quint64 address = f.value;
+        const bool five = address <= 9998;
+        const quint64 reference = quint64(table) * (five ? 10000 : 100000) + address + 1;
+        ctx.tree.add(i, "modbus.reference", "Modicon reference", f.offset, 2, reference,
+                     five ? ValueFormat::Reference5 : ValueFormat::Reference6, meaning);
+    }
+}
+
+} // namespace
 
 void dissect(const PduContext &ctx)
 {
@@ -25,25 +76,33 @@ void dissect(const PduContext &ctx)
                       QStringLiteral("does not match the request: the request's function code is 0x%1")
                           .arg(ctx.requestByte(0), 2, 16, QLatin1Char('0')).toUpper().replace(QStringLiteral("0X"), QStringLiteral("0x")));
     }
+    const int first = ctx.tree.size();
+    bool handled = true;
     switch (base) {
-    case 0x01: case 0x02: dissectReadBits(ctx); return;
-    case 0x03: case 0x04: dissectReadRegisters(ctx); return;
-    case 0x05: dissectWriteSingleCoil(ctx); return;
-    case 0x06: dissectWriteSingleRegister(ctx); return;
+    case 0x01: case 0x02: dissectReadBits(ctx); break;
+    case 0x03: case 0x04: dissectReadRegisters(ctx); break;
+    case 0x05: dissectWriteSingleCoil(ctx); break;
+    case 0x06: dissectWriteSingleRegister(ctx); break;
     case 0x07: dissectReadExceptionStatus(ctx); return;
     case 0x08: dissectDiagnostics(ctx); return;
     case 0x0B: dissectCommEventCounter(ctx); return;
     case 0x0C: dissectCommEventLog(ctx); return;
-    case 0x0F: dissectWriteMultipleCoils(ctx); return;
-    case 0x10: dissectWriteMultipleRegisters(ctx); return;
+    case 0x0F: dissectWriteMultipleCoils(ctx); break;
+    case 0x10: dissectWriteMultipleRegisters(ctx); break;
     case 0x11: dissectReportServerId(ctx); return;
     case 0x14: dissectReadFileRecord(ctx); return;
     case 0x15: dissectWriteFileRecord(ctx); return;
-    case 0x16: dissectMaskWriteRegister(ctx); return;
-    case 0x17: dissectReadWriteRegisters(ctx); return;
+    case 0x16: dissectMaskWriteRegister(ctx); break;
+    case 0x17: dissectReadWriteRegisters(ctx); break;
     case 0x18: dissectReadFifoQueue(ctx); return;
     case 0x2B: dissectEncapsulatedInterface(ctx); return;
-    default: break;
+    default:
+        handled = false;
+        break;
+    }
+    if (handled) {
+        addReferences(ctx, base, first);
+        return;
     }
     if (kind == FunctionKind::UserDefined) {
         ctx.tree.flag(f, Severity::Info, QStringLiteral("user-defined function code (65-72, 100-110): its data is shown raw"));
@@ -61,38 +120,55 @@ void dissectRawData(const PduContext &ctx)
         ctx.add("modbus.data", "Data", 1, ctx.length - 1, 0, ValueFormat::Bytes);
 }
 
+// An exception response (V1.1b3, 7): the function code with bit 7 set, then one exception code.
 void dissectException(const PduContext &ctx)
 {
     const quint8 base = ctx.function() & 0x7F;
     const int f = ctx.tree.size() - 1; // the function code field just added
-    if (functionKind(base) != FunctionKind::Public) {
+    switch (functionKind(base)) {
+    case FunctionKind::Public:
+        break;
+    case FunctionKind::UserDefined:
+        // A device may well reject its own user-defined functions with an exception.
+        ctx.tree.flag(f, Severity::Info,
+                      QStringLiteral("exception for user-defined function %1 (65-72, 100-110)").arg(diag::hexByte(base)));
+        break;
+    case FunctionKind::Reserved:
         ctx.tree.flag(f, Severity::Warning,
-                      QStringLiteral("exception for function 0x%1, which is not a public function code")
-                          .arg(QString::number(base, 16).toUpper().rightJustified(2, QLatin1Char('0'))));
+                      QStringLiteral("exception for function %1, a reserved function code").arg(diag::hexByte(base)));
+        break;
+    default:
+        ctx.tree.flag(f, Severity::Warning,
+                      QStringLiteral("exception for function %1, which the specification does not assign").arg(diag::hexByte(base)));
+        break;
     }
-    ctx.add("modbus.request_function_code", "Function in error", 0, 1, base, ValueFormat::Hex, functionName(base));
+    const int r = ctx.add("modbus.request_function_code", "Function in error", 0, 1, base, ValueFormat::Hex, functionName(base));
     if (ctx.hasRequest() && ctx.requestByte(0) != base) {
-        ctx.tree.flag(ctx.tree.size() - 1, Severity::Error,
-                      QStringLiteral("does not match the request: the request's function code is 0x%1")
-                          .arg(QString::number(ctx.requestByte(0), 16).toUpper().rightJustified(2, QLatin1Char('0'))));
+        ctx.tree.flag(r, Severity::Error,
+                      QStringLiteral("does not match the request: the request's function code is %1, the exception is for %2")
+                          .arg(diag::hexByte(ctx.requestByte(0)), diag::hexByte(base)));
     }
     if (ctx.direction == Direction::Request) {
         ctx.tree.flag(f, Severity::Error, QStringLiteral("an exception code (0x80 set) can only appear in a response"));
     }
-    if (!ctx.has(1)) {
-        const int e = ctx.add("modbus.exception_code", "Exception code", 1, 0);
-        ctx.tree.flag(e, Severity::Error, QStringLiteral("missing: an exception response carries one exception code byte"));
+    const int e = diag::addFixed(ctx, 1, 1, "modbus.exception_code", "Exception code", ValueFormat::Hex);
+    if (!ctx.has(1))
         return;
-    }
     const quint8 code = ctx.byte(1);
-    const int e = ctx.add("modbus.exception_code", "Exception code", 1, 1, code, ValueFormat::Hex, exceptionMeaning(code));
-    if (!isKnownException(code))
-        ctx.tree.flag(e, Severity::Warning, QStringLiteral("not an exception code the specification defines (0x01-0x08, 0x0A, 0x0B)"));
-    if (ctx.length > 2) {
-        const int t = ctx.add("modbus.trailing", "Unexpected bytes", 2, ctx.length - 2, 0, ValueFormat::Bytes);
-        ctx.tree.flag(t, Severity::Error,
-                      QStringLiteral("%1 bytes after the exception code; an exception PDU is exactly 2 bytes").arg(ctx.length - 2));
+    ctx.tree.setMeaning(e, exceptionMeaning(code));
+    if (!isKnownException(code)) {
+        ctx.tree.flag(e, Severity::Warning,
+                      QStringLiteral("%1 is not an exception code the specification defines (0x01-0x08, 0x0A, 0x0B)")
+                          .arg(diag::hexByte(code)));
+    } else if (code == 0x07) {
+        ctx.tree.flag(e, Severity::Info,
+                      QStringLiteral("0x07 Negative Acknowledge is a legacy Modicon code, not in V1.1b3's table (7)"));
+    } else if (code == 0x08 && base != 0x14 && base != 0x15) {
+        ctx.tree.flag(e, Severity::Info,
+                      QStringLiteral("V1.1b3 (7) defines Memory Parity Error for Read/Write File Record (0x14, 0x15), "
+                                     "this exception is for %1").arg(diag::hexByte(base)));
     }
+    diag::addTrailing(ctx, 2);
 }
 
 } // namespace mbscope::pdu
