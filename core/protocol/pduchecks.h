@@ -1,0 +1,78 @@
+#pragma once
+
+// Private helpers shared by the data-access dissectors (pdureadbits.cpp ... pdureadwrite.cpp).
+// Not part of the core's API: include only from core/protocol/pdu*.cpp.
+
+#include "pducontext.h"
+
+#include <QtCore/QString>
+
+namespace mbscope::pdu::checks {
+
+// One fixed-size field of a PDU layout. what names this field and everything after it, for the
+// message of a PDU cut short here ("quantity, byte count and register values").
+struct Slot {
+    const char *key;
+    const char *name;
+    int size; // 1 or 2 bytes, big-endian
+    ValueFormat format;
+    const char *what;
+};
+
+// Adds layout[0..count) from pduOffset on under parent, writing each field's index to indexes.
+// At the first slot not wholly present it adds one missing field instead and returns false.
+// pduSize is the size the PDU should reach; atLeast says it is only a lower bound.
+bool addFixed(const PduContext &ctx, int parent, int pduOffset, const Slot *layout, int count,
+              int *indexes, int pduSize, bool atLeast);
+
+// Adds the field for a PDU cut short at pduOffset (covering any partial bytes up to ctx.length):
+// "missing: <what>; expected N more bytes" (or "at least N").
+int missing(const PduContext &ctx, int parent, int pduOffset, int pduSize, bool atLeast, const char *what);
+
+// Adds the field for data announced by a byte count but cut short: from is where the absent
+// (or partial) item starts, countStart..countEnd the bytes the byte count covers.
+int missingData(const PduContext &ctx, int parent, int from, int countStart, int countEnd);
+
+// Flags bytes after pduEnd as modbus.trailing (error). Returns true when there were any.
+bool trailing(const PduContext &ctx, int pduEnd);
+
+// The matching request when it is for the same function and holds at least minSize bytes.
+[[nodiscard]] bool requestUsable(const PduContext &ctx, int minSize);
+[[nodiscard]] inline bool isResponse(const PduContext &ctx) { return ctx.direction == Direction::Response; }
+
+// Quantity limits (V1.1b3, 6.x tables): flags field when quantity is outside 1..max.
+// label is "quantity", "read quantity", ...
+void checkQuantity(const PduContext &ctx, int field, int quantity, int max, const char *label);
+// Flags field when start + quantity runs past address 0xFFFF.
+void checkRange(const PduContext &ctx, int field, int start, int quantity, const char *label);
+
+// Items. An address < 0 means unknown: items are then numbered from 0 by index.
+void addRegisters(const PduContext &ctx, int parent, int pduOffset, int count, const char *name,
+                  int firstAddress);
+void addBits(const PduContext &ctx, int parent, int pduOffset, int bits, const char *key,
+             const char *name, int firstAddress);
+
+// The data of a register block: the bytes countStart..countEnd announced by a byte count,
+// registers from dataOffset to itemsEnd (default countEnd; less for one file sub-response).
+// Shows every whole register present, then a field for an odd byte left over, or the missing
+// field when the PDU ends early (returns true then).
+bool registerBlock(const PduContext &ctx, int parent, int dataOffset, int countStart, int countEnd,
+                   const char *name, int firstAddress, int itemsEnd = -1);
+// The data of a bit block (01/02 responses, 0F requests). quantity < 0: unknown, show every bit
+// of the bytes present. With a quantity whose byte count matches, shows quantity bits and the
+// padding bits of the last byte.
+void bitBlock(const PduContext &ctx, int parent, int dataOffset, int byteCount, int quantity,
+              const char *key, const char *name, int firstAddress);
+
+// Compares every value field from firstField on with the request's bytes at the same PDU
+// offsets, flagging each mismatch with the request's value. strict: a field the request does
+// not have is a mismatch too (15 echoes the whole request).
+void checkEcho(const PduContext &ctx, int firstField, bool strict);
+
+// Text for messages only (allocates): "121 (0x0079)", "0xFF00", "3 bytes".
+[[nodiscard]] QString valueText(quint64 value, ValueFormat format, int bytes);
+[[nodiscard]] QString hex(quint64 value, int bytes);
+[[nodiscard]] QString amount(qint64 n, const char *singular, const char *plural);
+[[nodiscard]] QString functionLabel(const PduContext &ctx); // "Read Coils"
+
+} // namespace mbscope::pdu::checks

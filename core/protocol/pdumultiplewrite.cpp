@@ -1,0 +1,117 @@
+// 0F Write Multiple Coils and 10 Write Multiple Registers (MODBUS Application Protocol
+// Specification V1.1b3, 6.11 and 6.12): request start address, quantity, byte count and the
+// values; the normal response echoes start address and quantity.
+#include "pduchecks.h"
+#include "pdudissector.h"
+
+namespace mbscope::pdu {
+
+using namespace checks;
+
+namespace {
+
+constexpr int kMaxCoils = 1968;    // 0x07B0, V1.1b3 6.11
+constexpr int kMaxRegisters = 123; // 0x007B, V1.1b3 6.12
+
+const Slot kCoilsHeader[] = {
+    {"modbus.start_address", "Start address", 2, ValueFormat::DecimalHex,
+     "start address, quantity, byte count and coil values"},
+    {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity, byte count and coil values"},
+};
+
+const Slot kRegistersHeader[] = {
+    {"modbus.start_address", "Start address", 2, ValueFormat::DecimalHex,
+     "start address, quantity, byte count and register values"},
+    {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity, byte count and register values"},
+};
+
+const Slot kEcho[] = {
+    {"modbus.start_address", "Start address", 2, ValueFormat::DecimalHex, "start address and quantity"},
+    {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity"},
+};
+
+// The normal response of both codes: start address and quantity, checked against the request.
+void echoResponse(const PduContext &ctx, int maxQuantity)
+{
+    const int first = ctx.tree.size();
+    int f[2];
+    if (addFixed(ctx, ctx.parent, 1, kEcho, 2, f, 5, false)) {
+        checkQuantity(ctx, f[1], ctx.u16(3), maxQuantity, "quantity");
+        checkRange(ctx, f[1], ctx.u16(1), ctx.u16(3), "quantity");
+        trailing(ctx, 5);
+    }
+    if (requestUsable(ctx, 5))
+        checkEcho(ctx, first, false);
+}
+
+// Adds start address, quantity and byte count of a request; false when the PDU ends first.
+// dataBytes(quantity) is the byte count the quantity calls for.
+bool requestHeader(const PduContext &ctx, const Slot *header, int *f, int dataBytes, const char *what)
+{
+    if (!addFixed(ctx, ctx.parent, 1, header, 2, f, 7, true))
+        return false;
+    if (!ctx.has(5)) {
+        missing(ctx, ctx.parent, 5, 6 + qMax(dataBytes, 1), dataBytes < 1, what);
+        return false;
+    }
+    f[2] = ctx.add("modbus.byte_count", "Byte count", 5, 1, ctx.byte(5), ValueFormat::Decimal);
+    return true;
+}
+
+} // namespace
+
+void dissectWriteMultipleCoils(const PduContext &ctx)
+{
+    if (isResponse(ctx)) {
+        echoResponse(ctx, kMaxCoils);
+        return;
+    }
+    const int quantity = ctx.has(3, 2) ? ctx.u16(3) : 0;
+    const int needed = (quantity + 7) / 8;
+    int f[3];
+    if (!requestHeader(ctx, kCoilsHeader, f, needed, "byte count and coil values"))
+        return;
+    const int start = ctx.u16(1);
+    const int byteCount = ctx.byte(5);
+    checkQuantity(ctx, f[1], quantity, kMaxCoils, "quantity");
+    checkRange(ctx, f[1], start, quantity, "quantity");
+    if (byteCount != needed) {
+        ctx.tree.flag(f[2], Severity::Error,
+                      QStringLiteral("byte count %1 does not match quantity %2, which needs %3 "
+                                     "(quantity / 8, rounded up)")
+                          .arg(QString::number(byteCount), QString::number(quantity),
+                               amount(needed, "byte", "bytes")));
+    }
+    bitBlock(ctx, ctx.parent, 6, byteCount, quantity, "modbus.coil_value", "Coil", start);
+    trailing(ctx, 6 + byteCount);
+}
+
+void dissectWriteMultipleRegisters(const PduContext &ctx)
+{
+    if (isResponse(ctx)) {
+        echoResponse(ctx, kMaxRegisters);
+        return;
+    }
+    const int quantity = ctx.has(3, 2) ? ctx.u16(3) : 0;
+    int f[3];
+    if (!requestHeader(ctx, kRegistersHeader, f, 2 * quantity, "byte count and register values"))
+        return;
+    const int start = ctx.u16(1);
+    const int byteCount = ctx.byte(5);
+    checkQuantity(ctx, f[1], quantity, kMaxRegisters, "quantity");
+    checkRange(ctx, f[1], start, quantity, "quantity");
+    if (byteCount != 2 * quantity) {
+        ctx.tree.flag(f[2], Severity::Error,
+                      QStringLiteral("byte count %1 does not match quantity %2, which needs %3 (2 per register)")
+                          .arg(QString::number(byteCount), QString::number(quantity),
+                               amount(2 * quantity, "byte", "bytes")));
+    }
+    if (byteCount % 2 != 0) {
+        ctx.tree.flag(f[2], Severity::Error,
+                      QStringLiteral("byte count %1 is odd: registers are 2 bytes each").arg(byteCount));
+    }
+    registerBlock(ctx, ctx.parent, 6, 6, 6 + byteCount, "Register", start);
+    trailing(ctx, 6 + byteCount);
+}
+
+} // namespace mbscope::pdu

@@ -1,0 +1,76 @@
+// 01 Read Coils and 02 Read Discrete Inputs (MODBUS Application Protocol Specification V1.1b3,
+// 6.1 and 6.2): request start address + quantity (1-2000); response byte count + packed bits.
+#include "pduchecks.h"
+#include "pdudissector.h"
+
+namespace mbscope::pdu {
+
+using namespace checks;
+
+namespace {
+
+constexpr int kMaxBits = 2000; // 0x07D0, V1.1b3 6.1/6.2
+constexpr int kMaxBytes = (kMaxBits + 7) / 8;
+
+const Slot kRequest[] = {
+    {"modbus.start_address", "Start address", 2, ValueFormat::DecimalHex, "start address and quantity"},
+    {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity"},
+};
+
+void request(const PduContext &ctx)
+{
+    int f[2];
+    if (!addFixed(ctx, ctx.parent, 1, kRequest, 2, f, 5, false))
+        return;
+    const int start = ctx.u16(1);
+    const int quantity = ctx.u16(3);
+    checkQuantity(ctx, f[1], quantity, kMaxBits, "quantity");
+    checkRange(ctx, f[1], start, quantity, "quantity");
+    trailing(ctx, 5);
+}
+
+void response(const PduContext &ctx)
+{
+    const bool coils = ctx.function() == 0x01;
+    if (!ctx.has(1)) {
+        missing(ctx, ctx.parent, 1, 3, true, coils ? "byte count and coil status" : "byte count and input status");
+        return;
+    }
+    const int byteCount = ctx.byte(1);
+    const int bc = ctx.add("modbus.byte_count", "Byte count", 1, 1, quint64(byteCount), ValueFormat::Decimal);
+    const bool known = requestUsable(ctx, 5);
+    const int quantity = known ? ctx.requestU16(3) : -1;
+    const int start = known ? ctx.requestU16(1) : -1;
+    if (known && byteCount != (quantity + 7) / 8) {
+        ctx.tree.flag(bc, Severity::Error,
+                      QStringLiteral("byte count %1 does not match the request: quantity %2 needs %3 "
+                                     "(quantity / 8, rounded up)")
+                          .arg(QString::number(byteCount), QString::number(quantity),
+                               amount((quantity + 7) / 8, "byte", "bytes")));
+    } else if (byteCount == 0) {
+        ctx.tree.flag(bc, Severity::Error,
+                      QStringLiteral("byte count 0: a %1 response carries 1-%2 data bytes (1-2000 bits)")
+                          .arg(functionLabel(ctx), QString::number(kMaxBytes)));
+    } else if (byteCount > kMaxBytes) {
+        ctx.tree.flag(bc, Severity::Error,
+                      QStringLiteral("byte count %1 is too large: a %2 response carries at most %3 data bytes "
+                                     "(2000 bits)")
+                          .arg(QString::number(byteCount), functionLabel(ctx), QString::number(kMaxBytes)));
+    }
+    const char *key = coils ? "modbus.coil_value" : "modbus.discrete_input_value";
+    const char *name = known ? (coils ? "Coil" : "Discrete input") : (coils ? "Coil index" : "Input index");
+    bitBlock(ctx, ctx.parent, 2, byteCount, quantity, key, name, start);
+    trailing(ctx, 2 + byteCount);
+}
+
+} // namespace
+
+void dissectReadBits(const PduContext &ctx)
+{
+    if (isResponse(ctx))
+        response(ctx);
+    else
+        request(ctx);
+}
+
+} // namespace mbscope::pdu
