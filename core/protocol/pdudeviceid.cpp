@@ -170,7 +170,7 @@ void dissectDeviceIdResponse(const PduContext &ctx)
     if (!ctx.has(2))
         return;
     const quint8 code = ctx.byte(2);
-    const bool requested = ctx.hasRequest() && ctx.request.size() >= 4 && ctx.requestByte(1) == 0x0E;
+    const bool requested = ctx.request.size() >= 4 && ctx.requestByte(0) == 0x2B && ctx.requestByte(1) == 0x0E;
     if (requested && ctx.requestByte(2) != code) {
         ctx.tree.flag(c, Severity::Error,
                       QStringLiteral("does not match the request: the request's read device ID code is %1")
@@ -257,7 +257,7 @@ void dissectEncapsulatedInterface(const PduContext &ctx)
     if (!ctx.has(1))
         return;
     const quint8 mei = ctx.byte(1);
-    if (isResponse(ctx) && ctx.hasRequest() && ctx.request.size() >= 2 && ctx.requestByte(1) != mei) {
+    if (isResponse(ctx) && ctx.request.size() >= 2 && ctx.requestByte(0) == 0x2B && ctx.requestByte(1) != mei) {
         ctx.tree.flag(m, Severity::Error,
                       QStringLiteral("does not match the request: the request's MEI type is %1")
                           .arg(hexByte(ctx.requestByte(1))));

@@ -97,6 +97,13 @@ const char *characterName(quint8 c)
     return "not an ASCII character";
 }
 
+// A matching Diagnostics request with its sub-function; a request of another function is
+// already flagged by the dispatch and says nothing about this PDU's data.
+[[nodiscard]] bool sameRequest(const PduContext &ctx)
+{
+    return ctx.request.size() >= 3 && ctx.requestByte(0) == 0x08;
+}
+
 // Data word of the request of a sub-function that takes none (V1.1b3, 6.8.1: "0000").
 void addZeroData(const PduContext &ctx, const SubFunction &sub, bool echo)
 {
@@ -116,7 +123,7 @@ void addZeroData(const PduContext &ctx, const SubFunction &sub, bool echo)
 // echo compares `bytes` bytes; a variable one (00) compares all the data.
 void checkEcho(const PduContext &ctx, int field, int from, int bytes, bool variable = false)
 {
-    if (!isResponse(ctx) || !ctx.hasRequest() || ctx.request.size() < 3 || ctx.requestU16(1) != ctx.u16(1))
+    if (!isResponse(ctx) || !sameRequest(ctx) || ctx.requestU16(1) != ctx.u16(1))
         return;
     const int requestData = int(ctx.request.size()) - from;
     const int sent = variable ? requestData : qMin(requestData, bytes);
@@ -141,7 +148,7 @@ void dissectEcho(const PduContext &ctx)
     const int bytes = ctx.length - 3;
     if (bytes <= 0) {
         // V1.1b3 allows any data, which includes none; the echo check still applies.
-        if (isResponse(ctx) && ctx.hasRequest() && ctx.request.size() > 3 && ctx.requestU16(1) == 0) {
+        if (isResponse(ctx) && sameRequest(ctx) && ctx.request.size() > 3 && ctx.requestU16(1) == 0) {
             const int e = ctx.add("modbus.echo_data", "Echo data", 3, 0);
             ctx.tree.flag(e, Severity::Error,
                           QStringLiteral("missing: the request sent %1 of data to echo, none came back")
@@ -226,7 +233,7 @@ void dissectDiagnostics(const PduContext &ctx)
     const SubFunction sub = subFunction(code);
     ctx.tree.setMeaning(s, sub.name);
     const bool response = isResponse(ctx);
-    if (response && ctx.hasRequest() && ctx.request.size() >= 3 && ctx.requestU16(1) != code) {
+    if (response && sameRequest(ctx) && ctx.requestU16(1) != code) {
         ctx.tree.flag(s, Severity::Error,
                       QStringLiteral("does not match the request: the request's sub-function is %1")
                           .arg(hexWord(ctx.requestU16(1))));
