@@ -130,8 +130,12 @@ QString FieldTree::valueText(int index) const
         return QString::number(f.value);
     case ValueFormat::Hex:
         return hexDigits(f.value, f.length);
-    case ValueFormat::Reference5:
-        return QString::number(f.value).rightJustified(5, QLatin1Char('0'));
+    case ValueFormat::Reference5: {
+        // Show the six-digit form beside it: 40122 / 400122.
+        const quint64 six = (f.value / 10000) * 100000 + f.value % 10000;
+        return QString::number(f.value).rightJustified(5, QLatin1Char('0')) + QStringLiteral(" / ")
+               + QString::number(six).rightJustified(6, QLatin1Char('0'));
+    }
     case ValueFormat::Reference6:
         return QString::number(f.value).rightJustified(6, QLatin1Char('0'));
     case ValueFormat::DecimalHex:
