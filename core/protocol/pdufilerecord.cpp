@@ -164,10 +164,10 @@ void readResponse(const PduContext &ctx)
             expected += 2 + 2 * ctx.requestU16(2 + kHeader * i + 5);
         if (byteCount != expected) {
             ctx.tree.flag(bc, Severity::Error,
-                          QStringLiteral("byte count %1 does not match the request: its %2 need %3 "
+                          QStringLiteral("byte count %1 does not match the request: %2 expected for its %3 "
                                          "(2 + 2 per register each)")
-                              .arg(QString::number(byteCount), amount(requested, "sub-request", "sub-requests"),
-                                   amount(expected, "byte", "bytes")));
+                              .arg(QString::number(byteCount), amount(expected, "byte", "bytes"),
+                                   amount(requested, "sub-request", "sub-requests")));
         }
     }
     const int dataEnd = 2 + byteCount;

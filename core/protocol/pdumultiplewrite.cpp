@@ -44,12 +44,15 @@ void echoResponse(const PduContext &ctx, int maxQuantity)
         checkEcho(ctx, first, false);
 }
 
-// Adds start address, quantity and byte count of a request; false when the PDU ends first.
-// dataBytes(quantity) is the byte count the quantity calls for.
-bool requestHeader(const PduContext &ctx, const Slot *header, int *f, int dataBytes, const char *what)
+// Adds and checks start address, quantity and byte count of a request; false when the PDU
+// ends first. dataBytes is the byte count the quantity calls for.
+bool requestHeader(const PduContext &ctx, const Slot *header, int *f, int maxQuantity, int dataBytes,
+                   const char *what)
 {
     if (!addFixed(ctx, ctx.parent, 1, header, 2, f, 7, true))
         return false;
+    checkQuantity(ctx, f[1], ctx.u16(3), maxQuantity, "quantity");
+    checkRange(ctx, f[1], ctx.u16(1), ctx.u16(3), "quantity");
     if (!ctx.has(5)) {
         missing(ctx, ctx.parent, 5, 6 + qMax(dataBytes, 1), dataBytes < 1, what);
         return false;
@@ -69,12 +72,10 @@ void dissectWriteMultipleCoils(const PduContext &ctx)
     const int quantity = ctx.has(3, 2) ? ctx.u16(3) : 0;
     const int needed = (quantity + 7) / 8;
     int f[3];
-    if (!requestHeader(ctx, kCoilsHeader, f, needed, "byte count and coil values"))
+    if (!requestHeader(ctx, kCoilsHeader, f, kMaxCoils, needed, "byte count and coil values"))
         return;
     const int start = ctx.u16(1);
     const int byteCount = ctx.byte(5);
-    checkQuantity(ctx, f[1], quantity, kMaxCoils, "quantity");
-    checkRange(ctx, f[1], start, quantity, "quantity");
     if (byteCount != needed) {
         ctx.tree.flag(f[2], Severity::Error,
                       QStringLiteral("byte count %1 does not match quantity %2, which needs %3 "
@@ -94,12 +95,10 @@ void dissectWriteMultipleRegisters(const PduContext &ctx)
     }
     const int quantity = ctx.has(3, 2) ? ctx.u16(3) : 0;
     int f[3];
-    if (!requestHeader(ctx, kRegistersHeader, f, 2 * quantity, "byte count and register values"))
+    if (!requestHeader(ctx, kRegistersHeader, f, kMaxRegisters, 2 * quantity, "byte count and register values"))
         return;
     const int start = ctx.u16(1);
     const int byteCount = ctx.byte(5);
-    checkQuantity(ctx, f[1], quantity, kMaxRegisters, "quantity");
-    checkRange(ctx, f[1], start, quantity, "quantity");
     if (byteCount != 2 * quantity) {
         ctx.tree.flag(f[2], Severity::Error,
                       QStringLiteral("byte count %1 does not match quantity %2, which needs %3 (2 per register)")
