@@ -276,9 +276,9 @@ RegisterValueResult RegisterValue::fromRegisters(std::span<const quint16> regist
 {
     const int needed = format.registerCount();
     if (registers.size() < size_t(needed)) {
-        return failed(QStringLiteral("%1 needs %2 registers, %3 given")
+        return failed(QStringLiteral("%1 needs %2, %3 given")
                           .arg(format.name())
-                          .arg(needed)
+                          .arg(needed == 1 ? QStringLiteral("1 register") : QStringLiteral("%1 registers").arg(needed))
                           .arg(qulonglong(registers.size())));
     }
     return {RegisterValue(joinRegisters(registers.first(size_t(needed)), format.order()), format), QString(), true};

@@ -198,7 +198,7 @@ private slots:
         QCOMPARE(result.error, QStringLiteral("f32-cdab needs 2 registers, 1 given"));
         const RegisterValueResult none = RegisterValue::fromRegisters({}, format(QStringLiteral("u16")));
         QVERIFY(!none.ok);
-        QCOMPARE(none.error, QStringLiteral("u16 needs 1 registers, 0 given"));
+        QCOMPARE(none.error, QStringLiteral("u16 needs 1 register, 0 given"));
     }
 
     void extraRegistersAreIgnored()
