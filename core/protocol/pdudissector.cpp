@@ -74,7 +74,7 @@ void dissect(const PduContext &ctx)
     if (ctx.hasRequest() && ctx.direction == Direction::Response && ctx.requestByte(0) != base) {
         ctx.tree.flag(f, Severity::Error,
                       QStringLiteral("does not match the request: the request's function code is 0x%1")
-                          .arg(ctx.requestByte(0), 2, 16, QLatin1Char('0')).toUpper().replace(QStringLiteral("0X"), QStringLiteral("0x")));
+                          .arg(QString::number(ctx.requestByte(0), 16).toUpper().rightJustified(2, QLatin1Char('0'))));
     }
     const int first = ctx.tree.size();
     bool handled = true;

@@ -149,10 +149,17 @@ void readResponse(const PduContext &ctx)
 {
     const int byteCount = ctx.byte(1);
     const int bc = ctx.add("modbus.byte_count", "Byte count", 1, 1, quint64(byteCount), ValueFormat::Decimal);
-    if (byteCount == 0 || byteCount > 0xF5) {
+    // V1.1b3, 6.14 tabulates the response length as 0x07-0xF5, copied from the request; the
+    // only hard bound is the 253-byte PDU, which a request for 124 registers reaches (250 bytes).
+    if (byteCount == 0 || byteCount > 251) {
         ctx.tree.flag(bc, Severity::Error,
                       QStringLiteral("byte count %1 is out of range: a Read File Record response carries "
-                                     "1-245 (0x01-0xF5) bytes of sub-responses")
+                                     "1-251 bytes of sub-responses (a PDU holds 253 bytes)")
+                          .arg(byteCount));
+    } else if (byteCount > 0xF5) {
+        ctx.tree.flag(bc, Severity::Warning,
+                      QStringLiteral("byte count %1 is above the 0xF5 (245) the specification's table gives; it fits "
+                                     "the 253-byte PDU, but some servers and clients stop at 245")
                           .arg(byteCount));
     }
     // The matching request's sub-requests give each sub-response's length and record numbers.
