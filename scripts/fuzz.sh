@@ -1,0 +1,63 @@
+#!/bin/sh
+# Build the libFuzzer targets with clang (core instrumented too) and run each for N seconds
+# (default 30) from the seed corpus in tests/fuzz/corpus. Exits non-zero on any crash, timeout,
+# leak or sanitizer report.
+#
+#   scripts/fuzz.sh [seconds]
+#
+# Environment: MBSCOPE_FUZZ_BUILD_DIR (default build-fuzz), MBSCOPE_FUZZ_JOBS (default 2).
+set -eu
+
+seconds=${1:-30}
+case $seconds in
+    ''|*[!0-9]*) echo "usage: $0 [seconds]" >&2; exit 2 ;;
+esac
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${MBSCOPE_FUZZ_BUILD_DIR:-$root/build-fuzz}
+jobs=${MBSCOPE_FUZZ_JOBS:-2}
+
+for tool in clang++ cmake; do
+    if ! command -v "$tool" >/dev/null 2>&1; then
+        echo "fuzz.sh: $tool is not installed (Debian: apt-get install clang cmake)" >&2
+        exit 2
+    fi
+done
+
+# The core library is compiled with fuzzer-no-link (coverage for libFuzzer) and the sanitizers;
+# the fuzz executables add -fsanitize=fuzzer themselves (tests/fuzz/CMakeLists.txt).
+flags="-g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined"
+cmake -S "$root" -B "$build" -G Ninja \
+    -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_COMPILER=clang++ \
+    -DCMAKE_CXX_FLAGS="$flags" \
+    -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
+    -DMBSCOPE_FUZZ=ON -DMBSCOPE_BUILD_UI=OFF -DMBSCOPE_BENCH=OFF >/dev/null
+cmake --build "$build" --target fuzz_dissector fuzz_framers -j"$jobs"
+
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+status=0
+for name in dissector framers; do
+    work=$build/tests/fuzz/corpus-$name
+    mkdir -p "$work"
+    log=$build/tests/fuzz/fuzz_$name.log
+    echo "== fuzz_$name: $seconds s (log: $log)"
+    if ! "$build/tests/fuzz/fuzz_$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+            -print_final_stats=1 -artifact_prefix="$build/tests/fuzz/crash-$name-" \
+            "$work" "$root/tests/fuzz/corpus/$name" >"$log" 2>&1; then
+        echo "fuzz_$name FAILED:" >&2
+        grep -E 'ERROR|runtime error|SUMMARY|Test unit written|#0 |#1 |#2 |#3 ' "$log" | head -40 >&2
+        status=1
+        continue
+    fi
+    if grep -qE 'runtime error|ERROR: (AddressSanitizer|LeakSanitizer|libFuzzer)' "$log"; then
+        echo "fuzz_$name: sanitizer report:" >&2
+        grep -E 'runtime error|ERROR' "$log" | head -20 >&2
+        status=1
+        continue
+    fi
+    grep -E '^stat::number_of_executed_units|^stat::new_units_added|^stat::peak_rss_mb' "$log" | sed 's/^/    /'
+    echo "    corpus: $(ls "$work" | wc -l) inputs, no crash"
+done
+exit $status
