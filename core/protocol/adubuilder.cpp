@@ -20,6 +20,11 @@ void appendBigEndian16(QByteArray &out, quint16 value)
     out.append(char(value & 0xFF));
 }
 
+QString hexByte(char value)
+{
+    return QString::number(quint8(value), 16).toUpper().rightJustified(2, QLatin1Char('0'));
+}
+
 void appendHexByte(QByteArray &out, quint8 value)
 {
     out.append(kHexDigits[value >> 4]);
@@ -179,14 +184,14 @@ AduParts AduBuilder::parseAscii(QByteArrayView adu)
             const qsizetype bad = high < 0 ? at : at + 1;
             digitError = QStringLiteral("character %1 (0x%2) is not a hex digit")
                              .arg(bad)
-                             .arg(quint8(adu[bad]), 2, 16, QLatin1Char('0'));
+                             .arg(hexByte(adu[bad]));
             break;
         }
         binary.append(char(high << 4 | low));
     }
     if (digitError.isEmpty() && at < digitsEnd) {
         digitError = hexDigitValue(adu[at]) < 0
-            ? QStringLiteral("character %1 (0x%2) is not a hex digit").arg(at).arg(quint8(adu[at]), 2, 16, QLatin1Char('0'))
+            ? QStringLiteral("character %1 (0x%2) is not a hex digit").arg(at).arg(hexByte(adu[at]))
             : QStringLiteral("odd number of hex digits (%1)").arg(digitsEnd - 1);
     }
 
