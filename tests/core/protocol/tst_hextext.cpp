@@ -179,6 +179,50 @@ private slots:
                                 "(separators are space, tab, newline, ',', '-', ':' and ';')"));
     }
 
+    // Random text over digits, separators and bad characters: parse never fails to answer, and an
+    // error's line and column point at a character that explains it. Lines are located here
+    // independently of the parser (split on CR LF, CR, LF).
+    void randomTextPointsAtTheCulprit()
+    {
+        const QString alphabet = QStringLiteral("0123456789abcdefABCDEF    ,-:;\t\r\n0x0XgG.#\u00A0");
+        QRandomGenerator random(42);
+        for (int trial = 0; trial < 20000; ++trial) {
+            QString text;
+            const int length = random.bounded(12);
+            for (int i = 0; i < length; ++i)
+                text += alphabet[random.bounded(int(alphabet.size()))];
+            const HexTextResult result = HexText::parse(text);
+            if (result.ok) {
+                QVERIFY(!result.bytes.isEmpty());
+                continue;
+            }
+            QVERIFY(result.bytes.isEmpty());
+            QVERIFY2(result.error.message.startsWith(
+                         QStringLiteral("line %1, column %2: ").arg(result.error.line).arg(result.error.column)),
+                     qPrintable(result.error.message));
+            const QStringList lines = QString(text).replace(QLatin1String("\r\n"), QLatin1String("\n"))
+                                          .replace(QLatin1Char('\r'), QLatin1Char('\n'))
+                                          .split(QLatin1Char('\n'));
+            QVERIFY(result.error.line >= 1 && result.error.line <= lines.size());
+            const QString &line = lines[result.error.line - 1];
+            if (result.error.message.contains(QLatin1String("the text"))) {
+                QCOMPARE(result.error.column, 1); // empty or separators only: points at the start
+                continue;
+            }
+            QVERIFY2(result.error.column >= 1 && result.error.column <= line.size(), qPrintable(text));
+            const QChar culprit = line[result.error.column - 1];
+            const bool startsGroup = result.error.column == 1
+                || QStringLiteral(" \t,-:;").contains(line[result.error.column - 2]);
+            if (result.error.message.contains(QLatin1String("is not a hex digit or a separator"))) {
+                QVERIFY2(!QStringLiteral("0123456789abcdefABCDEF \t,-:;").contains(culprit), qPrintable(text));
+            } else if (result.error.message.contains(QLatin1String("odd number"))) {
+                QVERIFY2(QStringLiteral("0123456789abcdefABCDEF").contains(culprit) && startsGroup, qPrintable(text));
+            } else {
+                QVERIFY2(culprit == u'0' && startsGroup, qPrintable(text + QLatin1String(": ") + result.error.message));
+            }
+        }
+    }
+
     void format_data()
     {
         QTest::addColumn<QByteArray>("bytes");
