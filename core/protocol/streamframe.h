@@ -40,7 +40,8 @@ struct StreamFrame {
 };
 
 // A run of bytes that no frame could use: consecutive skipped bytes with the same reason, or all
-// the bytes of one RTU resynchronisation (with the reason of the first), at most 1024 bytes.
+// the bytes of one RTU resynchronisation (with the reason of the first), at most 256 bytes
+// (longer runs are split, so that garbage is reported while it lasts).
 struct SkippedBytes {
     QByteArray bytes;
     qint64 offset = 0;

@@ -5,7 +5,7 @@
 namespace mbscope {
 
 namespace {
-constexpr qsizetype kMaxRun = 1024;
+constexpr qsizetype kMaxRun = 256;
 constexpr qsizetype kCompactAt = 1024;
 } // namespace
 

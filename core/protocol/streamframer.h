@@ -30,7 +30,7 @@ public:
     [[nodiscard]] bool hasFrames() const { return !m_frames.isEmpty(); }
     [[nodiscard]] qsizetype pendingSize() const { return m_buffer.size() - m_position; }
     // Skipped bytes of the run still open: it is reported when a frame follows, at a silence or
-    // once 1024 bytes long, so that a run does not depend on how the stream was chunked.
+    // once 256 bytes long, so that a run does not depend on how the stream was chunked.
     [[nodiscard]] qsizetype openSkippedRunSize() const { return m_runOpen ? m_run.bytes.size() : 0; }
     [[nodiscard]] qint64 streamSize() const { return m_bufferOffset + m_buffer.size(); }
     // The timestamp given with the last chunk fed (0 when none).

@@ -76,10 +76,13 @@ private slots:
         QTest::newRow("too short") << QByteArray(":07F9\r\n") << QStringList{frame(0, QByteArray(":07F9\r\n"), " malformed")} << false;
         QTest::newRow("empty frame") << QByteArray(":\r\n") << QStringList{frame(0, QByteArray(":\r\n"), " malformed")} << false;
 
-        // 513 characters without the end: abandoned, then the next frame is found.
+        // 513 characters without the end: abandoned (reported in runs of at most 256 bytes), then
+        // the next frame is found.
         const QByteArray runaway = ':' + QByteArray(600, '0');
         QTest::newRow("too long") << runaway + tutorial
-                                  << QStringList{skip(0, 513, "toolong"), skip(513, 88, "noframe"), frame(601, tutorial)} << false;
+                                  << QStringList{skip(0, 256, "toolong"), skip(256, 256, "toolong"), skip(512, 1, "toolong"),
+                                                 skip(513, 88, "noframe"), frame(601, tutorial)}
+                                  << false;
     }
     void stream()
     {
