@@ -1,6 +1,7 @@
 #include "decodepanel.h"
 
 #include "fieldtreemodel.h"
+#include "fieldtreeview.h"
 #include "severitystyle.h"
 
 #include "protocol/dissector.h"
@@ -10,11 +11,9 @@
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QGridLayout>
 #include <QtWidgets/QHBoxLayout>
-#include <QtWidgets/QHeaderView>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QPlainTextEdit>
-#include <QtWidgets/QTreeView>
 #include <QtWidgets/QVBoxLayout>
 
 namespace mbscope {
@@ -136,14 +135,9 @@ void DecodePanel::buildUi()
     m_reasonLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_reasonLabel->setForegroundRole(QPalette::PlaceholderText);
 
-    m_tree = new QTreeView(this);
+    m_tree = new FieldTreeView(this);
     m_tree->setObjectName(QStringLiteral("fieldTree"));
-    m_tree->setModel(m_model);
-    m_tree->setUniformRowHeights(true);
-    m_tree->setAlternatingRowColors(true);
-    m_tree->setSelectionBehavior(QAbstractItemView::SelectRows);
-    m_tree->header()->setStretchLastSection(true);
-    m_tree->header()->setSectionResizeMode(QHeaderView::Interactive);
+    m_tree->setFieldModel(m_model);
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(inputs);
@@ -236,9 +230,7 @@ void DecodePanel::showDissection(const Dissection &dissection)
     m_inputError.clear();
     m_errorLabel->hide();
     m_model->setDissection(dissection);
-    m_tree->expandAll();
-    for (int c = 0; c < FieldTreeModel::ProblemColumn; ++c)
-        m_tree->resizeColumnToContents(c);
+    m_tree->showAllFields();
 
     // summary() already counts errors and warnings; the verdict only says whether the frame
     // keeps to the spec, coloured by the worst problem found.

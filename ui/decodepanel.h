@@ -10,11 +10,11 @@ class QComboBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
-class QTreeView;
 
 namespace mbscope {
 
 class FieldTreeModel;
+class FieldTreeView;
 
 // Type a frame as hex, see every field. The frame is re-dissected while the user types (after a
 // short pause, so a long paste is read once). Text that is not hex never clears what is shown:
@@ -46,7 +46,7 @@ public:
     [[nodiscard]] bool hasInputError() const { return !m_inputError.isEmpty(); }
     [[nodiscard]] QString inputError() const { return m_inputError; }
     [[nodiscard]] FieldTreeModel *model() const { return m_model; }
-    [[nodiscard]] QTreeView *treeView() const { return m_tree; }
+    [[nodiscard]] FieldTreeView *treeView() const { return m_tree; }
 
 public Q_SLOTS:
     // Dissects now instead of waiting for the pause (a combo change, a programmatic fill).
@@ -72,7 +72,7 @@ private:
     QLabel *m_summaryLabel = nullptr;
     QLabel *m_errorLabel = nullptr;
     QLabel *m_reasonLabel = nullptr;
-    QTreeView *m_tree = nullptr;
+    FieldTreeView *m_tree = nullptr;
     FieldTreeModel *m_model = nullptr;
     QTimer m_debounce;
     QString m_inputError;

@@ -23,7 +23,7 @@ MainWindow::MainWindow(QWidget *parent)
     setCentralWidget(m_tabs);
     createMenus();
     statusBar()->showMessage(tr("Ready"));
-    resize(1100, 700);
+    resize(1000, 620);
 }
 
 void MainWindow::createMenus()

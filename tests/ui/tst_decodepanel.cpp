@@ -2,6 +2,7 @@
 // wrong and keeps the last tree and the user's text, the options re-dissect at once.
 #include "decodepanel.h"
 #include "fieldtreemodel.h"
+#include "fieldtreeview.h"
 
 #include <QtWidgets/QHeaderView>
 #include <QtWidgets/QLabel>
@@ -70,6 +71,7 @@ private Q_SLOTS:
     void badMatchingRequest();
     void clearingTheTextEmptiesTheTree();
     void columnsFitTheirContents();
+    void problemsWrapAndKeepTheirRoom();
 };
 
 void TestDecodePanel::init()
@@ -269,12 +271,30 @@ void TestDecodePanel::columnsFitTheirContents()
     QTRY_VERIFY(rows() > 0);
     QTreeView *view = m_panel->treeView();
     // Fitting a column again must not widen it: the panel already fitted it after the dissection.
-    for (int c = FieldTreeModel::OffsetColumn; c < FieldTreeModel::ProblemColumn; ++c) {
+    for (int c = FieldTreeModel::OffsetColumn; c < FieldTreeModel::ValueColumn; ++c) {
         const int shown = view->header()->sectionSize(c);
         view->resizeColumnToContents(c);
         QVERIFY2(shown >= view->header()->sectionSize(c),
                  qPrintable(QStringLiteral("column %1 is narrower than its contents").arg(c)));
     }
+}
+
+void TestDecodePanel::problemsWrapAndKeepTheirRoom()
+{
+    // Reserved unit 250 (a warning) followed by a second frame (trailing bytes, an error).
+    m_panel->setFrameText(QStringLiteral("FA 03 00 00 00 01 91 81 00 06 00 01 00 03 99 DA"));
+    QTRY_VERIFY(rows() > 0);
+    QTreeView *view = m_panel->treeView();
+    const int viewport = view->viewport()->width();
+    QVERIFY2(view->columnWidth(FieldTreeModel::ProblemColumn) >= viewport / 4,
+             qPrintable(QStringLiteral("problem column %1 of %2").arg(view->columnWidth(FieldTreeModel::ProblemColumn)).arg(viewport)));
+    // A message longer than its column wraps onto more lines instead of being cut.
+    const FieldTreeModel *model = m_panel->model();
+    const QModelIndex sound = model->indexOfKey("modbus.function_code", FieldTreeModel::ProblemColumn);
+    const QModelIndex trailing = model->indexOfKey("frame.trailing", FieldTreeModel::ProblemColumn);
+    QVERIFY(trailing.isValid());
+    view->resize(500, view->height()); // narrow enough for every real message to need two lines
+    QTRY_VERIFY(view->visualRect(trailing).height() > view->visualRect(sound).height());
 }
 
 QTEST_MAIN(TestDecodePanel)
