@@ -95,11 +95,10 @@ constexpr EventTexts kEventTexts = makeEventTexts();
     return (v & 0xC0) != 0 || v == 0x00 || v == 0x04;
 }
 
-void noteSerialLineOnly(const PduContext &ctx, const char *function, const char *section)
+// The note is a literal (static data, no allocation): these frames are usually fine.
+void noteSerialLineOnly(const PduContext &ctx, const QString &note)
 {
-    ctx.tree.flag(functionField(ctx), Severity::Info,
-                  QStringLiteral("serial line only: V1.1b3 %1 defines %2 for serial line devices")
-                      .arg(QLatin1String(section), QLatin1String(function)));
+    ctx.tree.flag(functionField(ctx), Severity::Info, note);
 }
 
 void addStatus(const PduContext &ctx, int pduOffset)
@@ -123,7 +122,8 @@ void addStatus(const PduContext &ctx, int pduOffset)
 
 void dissectReadExceptionStatus(const PduContext &ctx)
 {
-    noteSerialLineOnly(ctx, "Read Exception Status", "6.7");
+    noteSerialLineOnly(ctx,
+                       QStringLiteral("serial line only: V1.1b3 6.7 defines Read Exception Status for serial line devices"));
     if (!isResponse(ctx)) {
         addTrailing(ctx, 1);
         return;
@@ -144,7 +144,8 @@ void dissectReadExceptionStatus(const PduContext &ctx)
 
 void dissectCommEventCounter(const PduContext &ctx)
 {
-    noteSerialLineOnly(ctx, "Get Comm Event Counter", "6.9");
+    noteSerialLineOnly(ctx,
+                       QStringLiteral("serial line only: V1.1b3 6.9 defines Get Comm Event Counter for serial line devices"));
     if (!isResponse(ctx)) {
         addTrailing(ctx, 1);
         return;
@@ -159,7 +160,8 @@ void dissectCommEventCounter(const PduContext &ctx)
 
 void dissectCommEventLog(const PduContext &ctx)
 {
-    noteSerialLineOnly(ctx, "Get Comm Event Log", "6.10");
+    noteSerialLineOnly(ctx,
+                       QStringLiteral("serial line only: V1.1b3 6.10 defines Get Comm Event Log for serial line devices"));
     if (!isResponse(ctx)) {
         addTrailing(ctx, 1);
         return;

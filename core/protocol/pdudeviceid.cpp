@@ -238,14 +238,16 @@ void dissectDeviceIdResponse(const PduContext &ctx)
         } else if (code != 0x04 && firstId >= 0 && ctx.byte(7) != 0x00) {
             // V1.1b3 6.21: a stream starts at the object asked for, or at 0x00 when that one is unknown.
             ctx.tree.flag(firstId, Severity::Warning,
-                          QStringLiteral("the stream starts at %1: the request asked from object %2 (or 0x00 when that one is unknown)")
+                          QStringLiteral("the stream starts at %1: the request asked from object %2 "
+                                         "(or 0x00 when that one is unknown)")
                               .arg(hexByte(ctx.byte(7)), hexByte(ctx.requestByte(3))));
         }
     }
     if (more == 0xFF && last >= 0 && ctx.byte(5) <= last) {
         ctx.tree.flag(next, Severity::Warning,
                       QStringLiteral("next object ID %1 does not lie beyond the last object returned (%2): "
-                                     "the next request would repeat objects").arg(hexByte(ctx.byte(5)), hexByte(quint8(last))));
+                                     "the next request would repeat objects")
+                          .arg(hexByte(ctx.byte(5)), hexByte(quint8(last))));
     }
 }
 
