@@ -64,7 +64,7 @@ inline int addFixed(const PduContext &ctx, int pduOffset, int bytes, const char 
     return f;
 }
 
-// Flags everything from pduOffset to the end of the PDU as trailing; expected is the size the
+// Flags everything from pduOffset to the end of the PDU as trailing: pduOffset is the size the
 // PDU should have had, function code included.
 inline void addTrailing(const PduContext &ctx, int pduOffset)
 {
