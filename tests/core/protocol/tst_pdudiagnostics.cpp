@@ -34,7 +34,7 @@ private slots:
         // A request of another function: the dispatch flags the function code, the echo is not compared.
         rsp("08 00 00 A5 37",
             "modbus.function_code=0x08 Diagnostics !error | " SF("00", "Return Query Data") " | modbus.echo_data=A5 37",
-            "", "03 00 00 A5 37");
+            "the request's function code is 0x03", "03 00 00 A5 37");
     }
     void returnQueryData() { checkRow(); }
 
