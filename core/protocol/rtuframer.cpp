@@ -3,9 +3,10 @@
 #include "checksum.h"
 #include "pdusize.h"
 
-#include <algorithm>
 #include <array>
 #include <limits>
+#include <utility>
+#include <algorithm>
 
 namespace mbscope {
 
@@ -134,7 +135,8 @@ RtuFramer::Decision RtuFramer::decide(QByteArrayView bytes, bool atBoundary)
             break;
         }
     }
-    std::sort(lengths.begin(), lengths.begin() + candidates);
+    if (candidates == 2 && lengths[1] < lengths[0])
+        std::swap(lengths[0], lengths[1]);
     for (int i = 0; i < candidates; ++i) {
         const qsizetype length = lengths[size_t(i)];
         if (length > available)
@@ -181,56 +183,91 @@ void RtuFramer::process()
             break;
         case Verdict::Reject:
             skip(1, decision.reason);
-            m_atBoundary = false;
-            m_probes.clear();
+            beginResync();
             break;
         }
     }
 }
 
-// Resynchronisation looks at every start after the last boundary and takes the frame whose end
-// (with a valid CRC) comes first; ties go to the earlier start. A bogus start that predicts a long
-// frame therefore cannot hold back a real frame behind it, and the choice is the same however the
-// bytes were chunked: fed one by one, the first frame to complete is the one that ends first.
-// Each start's verdict is kept (m_probes) and only looked at again once enough bytes arrived.
+// Resynchronisation takes, among all starts after the last boundary, the frame with a valid CRC
+// that ends first (ties go to the earlier start). A bogus start that predicts a long frame thus
+// cannot hold back a real frame behind it. To make the choice the same however the bytes were
+// chunked, pending bytes are delivered to it one at a time, as if fed one by one: each start gets
+// a verdict from the bytes delivered so far, and is looked at again only when the bytes it waits
+// for have come (a min-heap of those events), so each byte costs O(log n) besides the verdicts.
+void RtuFramer::beginResync()
+{
+    m_atBoundary = false;
+    m_probes.clear();
+    m_probeOrigin = pendingOffset();
+    m_delivered = pendingOffset();
+    m_events.clear();
+}
+
+void RtuFramer::endResync()
+{
+    m_atBoundary = true;
+    m_probes.clear();
+    m_events.clear();
+}
+
 bool RtuFramer::resynchronise()
 {
-    const QByteArrayView bytes = pending();
-    const qsizetype available = bytes.size();
-    if (m_probes.size() < available)
-        m_probes.resize(available);
-    qsizetype bestStart = -1;
-    qsizetype bestEnd = std::numeric_limits<qsizetype>::max();
-    for (qsizetype start = 0; start < available && start + kMinAduSize <= bestEnd; ++start) {
-        Decision &probe = m_probes[start];
-        if (probe.verdict == Verdict::Wait && start + probe.needed <= available) {
-            const Decision decision = decide(bytes.sliced(start), false);
-            probe.verdict = decision.verdict;
-            probe.length = decision.length;
-            probe.reason = decision.reason;
-            probe.needed = decision.needed;
+    const auto later = [](const Event &a, const Event &b) { return a.at > b.at; };
+    for (;;) {
+        const qint64 base = pendingOffset();
+        const QByteArrayView bytes = pending();
+        if (m_delivered >= base + bytes.size())
+            return false;
+        ++m_delivered;
+
+        // The start two bytes back now has a unit id and a function code to judge.
+        const qint64 newStart = m_delivered - 2;
+        if (newStart >= base) {
+            m_probes.append(Decision{});
+            m_events.push_back({m_delivered, newStart});
+            std::push_heap(m_events.begin(), m_events.end(), later);
         }
-        if (probe.verdict == Verdict::Accept && start + probe.length < bestEnd) {
-            bestStart = start;
-            bestEnd = start + probe.length;
+
+        qint64 accepted = -1;
+        while (!m_events.empty() && m_events.front().at <= m_delivered) {
+            const qint64 start = m_events.front().start;
+            std::pop_heap(m_events.begin(), m_events.end(), later);
+            m_events.pop_back();
+            if (start < base)
+                continue;
+            Decision &probe = m_probes[qsizetype(start - m_probeOrigin)];
+            probe = decide(bytes.sliced(start - base, m_delivered - start), false);
+            if (probe.verdict == Verdict::Wait) {
+                m_events.push_back({start + probe.needed, start});
+                std::push_heap(m_events.begin(), m_events.end(), later);
+            } else if (probe.verdict == Verdict::Accept && (accepted < 0 || start < accepted)) {
+                accepted = start;
+            }
+        }
+
+        if (accepted >= 0) {
+            const qsizetype length = m_probes.at(qsizetype(accepted - m_probeOrigin)).length;
+            for (qint64 start = base; start < accepted; ++start)
+                skip(1, m_probes.at(qsizetype(start - m_probeOrigin)).reason, true);
+            emitFrame(length);
+            endResync();
+            return true;
+        }
+
+        // Starts at the front that cannot begin a frame are garbage: report them and let them go.
+        while (pendingOffset() < m_delivered - 1) {
+            const Decision &front = m_probes.at(qsizetype(pendingOffset() - m_probeOrigin));
+            if (front.verdict != Verdict::Reject)
+                break;
+            skip(1, front.reason, true);
+        }
+        const qsizetype dead = qsizetype(pendingOffset() - m_probeOrigin);
+        if (dead >= 512) {
+            m_probes.remove(0, dead);
+            m_probeOrigin += dead;
         }
     }
-    if (bestStart >= 0) {
-        for (qsizetype i = 0; i < bestStart; ++i)
-            skip(1, m_probes.at(i).reason, true);
-        emitFrame(bestEnd - bestStart);
-        m_atBoundary = true;
-        m_probes.clear();
-        return true;
-    }
-    // Starts at the front that cannot begin a frame are garbage: report them and let them go.
-    qsizetype rejected = 0;
-    while (rejected < m_probes.size() && m_probes.at(rejected).verdict == Verdict::Reject) {
-        skip(1, m_probes.at(rejected).reason, true);
-        ++rejected;
-    }
-    m_probes.remove(0, rejected);
-    return rejected > 0;
 }
 
 void RtuFramer::flushPending()
@@ -256,16 +293,14 @@ void RtuFramer::flushPending()
             skip(bytes.size(), SkipReason::Incomplete, !m_atBoundary);
         }
     }
-    m_atBoundary = true;
     m_crcScanned = 0;
-    m_probes.clear();
+    endResync();
 }
 
 void RtuFramer::resetState()
 {
-    m_atBoundary = true;
     m_crcScanned = 0;
-    m_probes.clear();
+    endResync();
 }
 
 } // namespace mbscope

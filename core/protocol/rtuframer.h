@@ -3,6 +3,8 @@
 #include "framing.h"
 #include "streamframer.h"
 
+#include <vector>
+
 namespace mbscope {
 
 // RTU frames (MODBUS over Serial Line V1.02, 2.5.1) cut out without timing where the bytes allow:
@@ -62,6 +64,12 @@ private:
     // What a frame starting at bytes[0] is, from the bytes present.
     [[nodiscard]] Decision decide(QByteArrayView bytes, bool atBoundary);
     [[nodiscard]] bool resynchronise();
+    void beginResync();
+    void endResync();
+    struct Event {
+        qint64 at;    // stream offset up to which bytes must be delivered
+        qint64 start; // the start to judge again then
+    };
     [[nodiscard]] bool isImpossible(quint8 functionCode) const;
     [[nodiscard]] bool hasLengthRule(QByteArrayView bytes) const;
     [[nodiscard]] qsizetype predictedLength(QByteArrayView bytes) const;
@@ -70,7 +78,12 @@ private:
     int m_baud = 0;
     bool m_atBoundary = true; // false while resynchronising
     qsizetype m_crcScanned = 0; // lengths already tried for a code without a length rule
-    QList<Decision> m_probes;   // while resynchronising: the verdict for each pending start
+    // While resynchronising: the verdict for each start from m_probeOrigin on, the bytes delivered
+    // so far (a stream offset), and when each waiting start must be judged again.
+    QList<Decision> m_probes;
+    qint64 m_probeOrigin = 0;
+    qint64 m_delivered = 0;
+    std::vector<Event> m_events;
 };
 
 } // namespace mbscope
