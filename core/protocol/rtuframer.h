@@ -20,7 +20,8 @@ namespace mbscope {
 // the frame with a valid CRC that ends first; codes without a length rule are skipped then
 // (NoLengthRule), since only a silence can tell where such a frame starts. Skipped bytes form one
 // run with the reason of its first byte. The decisions depend only on the bytes and silences,
-// never on how the bytes were chunked.
+// never on how the bytes were chunked. Unit ids are not judged (the dissector flags reserved
+// ones); the CRC decides, so about one start in 65536 that fits a length rule passes by chance.
 class RtuFramer final : public StreamFramer
 {
 public:
