@@ -1,0 +1,45 @@
+#pragma once
+
+#include <QtCore/QByteArray>
+#include <QtCore/QMetaType>
+#include <QtCore/QString>
+
+namespace mbscope {
+
+// The verdict of one request/response exchange.
+enum class TransactionStatus : quint8 {
+    Ok,          // a matching, well-formed answer
+    Exception,   // a matching exception response (exceptionCode says which)
+    Timeout,     // no matching answer within the timeout (after every retry)
+    CrcError,    // an answer whose CRC/LRC is wrong
+    Malformed,   // an answer that is not a well-formed frame for the request (byte count, length...)
+    Unexpected,  // an answer that does not match (transaction id, unit or function code)
+    LinkError,   // the link failed (closed, refused, I/O error) before an answer came
+    Broadcast,   // a broadcast: sent, turnaround waited, no answer expected
+};
+
+[[nodiscard]] QString transactionStatusName(TransactionStatus status); // "ok", "timeout", "crc_error"...
+
+// One exchange as the engine saw it. Timestamps are monotonic nanoseconds (monotonicNowNs):
+// sentNs when the last request byte was written, firstByteNs and doneNs when the first and the
+// last byte of the answer arrived (0 when there was no answer).
+struct Transaction {
+    quint64 id = 0;          // engine-wide sequence number
+    int item = -1;           // index of the request item in a poll, -1 for a single send
+    int attempt = 0;         // 0 for the first try, then retries
+    QByteArray request;      // exactly the bytes sent
+    QByteArray response;     // exactly the bytes of the matched answer (empty on timeout)
+    TransactionStatus status = TransactionStatus::Timeout;
+    quint8 exceptionCode = 0;
+    QString problem;         // what was wrong, for statuses other than Ok and Broadcast
+    qint64 sentNs = 0;
+    qint64 firstByteNs = 0;
+    qint64 doneNs = 0;
+
+    [[nodiscard]] qint64 latencyNs() const { return doneNs > 0 ? doneNs - sentNs : -1; }
+    [[nodiscard]] bool isOk() const { return status == TransactionStatus::Ok; }
+};
+
+} // namespace mbscope
+
+Q_DECLARE_METATYPE(mbscope::Transaction)
