@@ -16,6 +16,8 @@ enum class TransactionStatus : quint8 {
     Unexpected,  // an answer that does not match (transaction id, unit or function code)
     LinkError,   // the link failed (closed, refused, I/O error) before an answer came
     Broadcast,   // a broadcast: sent, turnaround waited, no answer expected
+    Late,        // an answer that came after its request was recorded as Timeout: a record of its
+                 // own about a request already counted (statistics count it as late, not in count)
 };
 
 [[nodiscard]] QString transactionStatusName(TransactionStatus status); // "ok", "timeout", "crc_error"...
@@ -35,6 +37,9 @@ struct Transaction {
     qint64 sentNs = 0;
     qint64 firstByteNs = 0;
     qint64 doneNs = 0;
+    // Pipelining only: the engine gave the request a transaction id of its own so that answers in
+    // flight can be told apart; request holds the bytes actually sent.
+    bool transactionIdRewritten = false;
 
     [[nodiscard]] qint64 latencyNs() const { return doneNs > 0 ? doneNs - sentNs : -1; }
     [[nodiscard]] bool isOk() const { return status == TransactionStatus::Ok; }
