@@ -1,0 +1,209 @@
+/*
+ * A libmodbus server for mbscope's integration tests and benchmark.
+ *
+ *   libmodbus_server tcp [--port N]                      MBAP on 127.0.0.1 (port 0: the system chooses)
+ *   libmodbus_server rtu --device PATH [--baud 115200]   RTU on a serial device or pty, 8N1, unit 1
+ *
+ * Prints "LISTENING 127.0.0.1:PORT" (tcp) or "LISTENING PATH" (rtu) on stdout once ready, serves
+ * the data map of peer_datamap.h through libmodbus's own modbus_reply (01-06, 0F, 10, 11, 16, 17;
+ * other codes answer exception 01), and exits when its standard input closes (the test that started
+ * it is gone) or after --lifetime seconds. On TCP it serves any number of connections at once with
+ * select(), reads one request at a time per connection (libmodbus reads exactly one MBAP length),
+ * so pipelined requests are answered in order. libmodbus's TCP backend answers any unit id; RTU
+ * answers unit 1 and broadcasts (unit 0, no answer).
+ */
+#include "peer_datamap.h"
+
+#include <modbus.h>
+
+#include <errno.h>
+#include <netinet/in.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/select.h>
+#include <sys/socket.h>
+#include <time.h>
+#include <unistd.h>
+
+static modbus_mapping_t *make_mapping(void)
+{
+    modbus_mapping_t *map = modbus_mapping_new(PEER_TABLE_SIZE, PEER_TABLE_SIZE, PEER_TABLE_SIZE, PEER_TABLE_SIZE);
+    if (map == NULL)
+        return NULL;
+    for (unsigned a = 0; a < PEER_TABLE_SIZE; ++a) {
+        map->tab_bits[a] = (uint8_t)peer_coil(a);
+        map->tab_input_bits[a] = (uint8_t)peer_discrete_input(a);
+        map->tab_registers[a] = peer_holding_register(a);
+        map->tab_input_registers[a] = peer_input_register(a);
+    }
+    return map;
+}
+
+static int usage(void)
+{
+    fprintf(stderr, "usage: libmodbus_server tcp [--port N] [--lifetime S]\n"
+                    "       libmodbus_server rtu --device PATH [--baud B] [--lifetime S]\n");
+    return 2;
+}
+
+/* True once stdin has reached its end (select said readable and read returned 0 or failed). */
+static int stdin_closed(void)
+{
+    char buffer[256];
+    const ssize_t n = read(STDIN_FILENO, buffer, sizeof buffer);
+    return n <= 0;
+}
+
+static int serve_tcp(int port, time_t deadline, modbus_mapping_t *map)
+{
+    modbus_t *ctx = modbus_new_tcp("127.0.0.1", port);
+    if (ctx == NULL) {
+        fprintf(stderr, "libmodbus_server: modbus_new_tcp: %s\n", modbus_strerror(errno));
+        return 1;
+    }
+    const int listener = modbus_tcp_listen(ctx, 16);
+    if (listener < 0) {
+        fprintf(stderr, "libmodbus_server: listen on port %d: %s\n", port, modbus_strerror(errno));
+        modbus_free(ctx);
+        return 1;
+    }
+    struct sockaddr_in bound;
+    socklen_t length = sizeof bound;
+    if (getsockname(listener, (struct sockaddr *)&bound, &length) != 0) {
+        perror("libmodbus_server: getsockname");
+        return 1;
+    }
+    printf("LISTENING 127.0.0.1:%u\n", (unsigned)ntohs(bound.sin_port));
+    fflush(stdout);
+
+    fd_set all;
+    FD_ZERO(&all);
+    FD_SET(listener, &all);
+    FD_SET(STDIN_FILENO, &all);
+    int maxfd = listener > STDIN_FILENO ? listener : STDIN_FILENO;
+    uint8_t query[MODBUS_TCP_MAX_ADU_LENGTH];
+
+    while (time(NULL) < deadline) {
+        fd_set ready = all;
+        struct timeval tick = {1, 0};
+        const int n = select(maxfd + 1, &ready, NULL, NULL, &tick);
+        if (n < 0 && errno != EINTR) {
+            perror("libmodbus_server: select");
+            break;
+        }
+        if (n <= 0)
+            continue;
+        if (FD_ISSET(STDIN_FILENO, &ready) && stdin_closed())
+            break;
+        for (int fd = 0; fd <= maxfd; ++fd) {
+            if (!FD_ISSET(fd, &ready) || fd == STDIN_FILENO)
+                continue;
+            if (fd == listener) {
+                const int client = accept(listener, NULL, NULL);
+                if (client >= 0 && client < FD_SETSIZE) {
+                    FD_SET(client, &all);
+                    if (client > maxfd)
+                        maxfd = client;
+                } else if (client >= 0) {
+                    close(client);
+                }
+                continue;
+            }
+            modbus_set_socket(ctx, fd);
+            const int rc = modbus_receive(ctx, query);
+            if (rc > 0) {
+                modbus_reply(ctx, query, rc, map);
+            } else if (rc < 0) {
+                close(fd);
+                FD_CLR(fd, &all);
+            }
+        }
+    }
+    close(listener);
+    modbus_free(ctx);
+    return 0;
+}
+
+static int serve_rtu(const char *device, int baud, time_t deadline, modbus_mapping_t *map)
+{
+    modbus_t *ctx = modbus_new_rtu(device, baud, 'N', 8, 1);
+    if (ctx == NULL) {
+        fprintf(stderr, "libmodbus_server: modbus_new_rtu %s: %s\n", device, modbus_strerror(errno));
+        return 1;
+    }
+    modbus_set_slave(ctx, PEER_UNIT);
+    if (modbus_connect(ctx) != 0) {
+        fprintf(stderr, "libmodbus_server: open %s: %s\n", device, modbus_strerror(errno));
+        modbus_free(ctx);
+        return 1;
+    }
+    printf("LISTENING %s\n", device);
+    fflush(stdout);
+
+    const int serial = modbus_get_socket(ctx);
+    uint8_t query[MODBUS_RTU_MAX_ADU_LENGTH];
+    while (time(NULL) < deadline) {
+        fd_set ready;
+        FD_ZERO(&ready);
+        FD_SET(serial, &ready);
+        FD_SET(STDIN_FILENO, &ready);
+        struct timeval tick = {1, 0};
+        const int n = select((serial > STDIN_FILENO ? serial : STDIN_FILENO) + 1, &ready, NULL, NULL, &tick);
+        if (n < 0 && errno != EINTR)
+            break;
+        if (n <= 0)
+            continue;
+        if (FD_ISSET(STDIN_FILENO, &ready) && stdin_closed())
+            break;
+        if (FD_ISSET(serial, &ready)) {
+            /* A frame for another unit or with a bad CRC returns -1 and is dropped; go on. */
+            const int rc = modbus_receive(ctx, query);
+            if (rc > 0)
+                modbus_reply(ctx, query, rc, map);
+        }
+    }
+    modbus_close(ctx);
+    modbus_free(ctx);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2)
+        return usage();
+    const char *mode = argv[1];
+    const char *device = NULL;
+    int port = 0;
+    int baud = 115200;
+    double lifetime = 900.0;
+    for (int i = 2; i < argc; ++i) {
+        if (i + 1 >= argc)
+            return usage();
+        if (strcmp(argv[i], "--port") == 0)
+            port = atoi(argv[++i]);
+        else if (strcmp(argv[i], "--device") == 0)
+            device = argv[++i];
+        else if (strcmp(argv[i], "--baud") == 0)
+            baud = atoi(argv[++i]);
+        else if (strcmp(argv[i], "--lifetime") == 0)
+            lifetime = atof(argv[++i]);
+        else
+            return usage();
+    }
+    modbus_mapping_t *map = make_mapping();
+    if (map == NULL) {
+        fprintf(stderr, "libmodbus_server: modbus_mapping_new: %s\n", modbus_strerror(errno));
+        return 1;
+    }
+    const time_t deadline = time(NULL) + (time_t)lifetime;
+    int rc;
+    if (strcmp(mode, "tcp") == 0)
+        rc = serve_tcp(port, deadline, map);
+    else if (strcmp(mode, "rtu") == 0 && device != NULL)
+        rc = serve_rtu(device, baud, deadline, map);
+    else
+        rc = usage();
+    modbus_mapping_free(map);
+    return rc;
+}
