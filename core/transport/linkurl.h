@@ -1,5 +1,6 @@
 #pragma once
 
+#include "protocol/delimitedframer.h"
 #include "protocol/framing.h"
 
 #include <QtCore/QString>
@@ -21,58 +22,79 @@ enum class LinkKind : quint8 {
     Tls,      // tls://host:802?cert=...&key=...&ca=...  (MODBUS/TCP Security, mutual TLS)
 };
 
-// Checksum after the end byte of a delimited frame (?framing=delimited&checksum=...).
-enum class DelimitedChecksum : quint8 { None, Sum, Xor };
-
-// A non-Modbus framing on any stream or serial link: frames run from a start byte to an end byte,
-// optionally followed by one checksum byte (LG Master-K: ENQ ... EOT + BCC; home-made ASCII
-// protocols: '$' ... '#').
-struct DelimitedFraming {
-    bool enabled = false;
-    int startByte = -1; // -1: no start byte, frames run from the previous end
-    int endByte = 0x0A;
-    DelimitedChecksum checksum = DelimitedChecksum::None;
-    bool textDisplay = true; // show frames as text (true) or hex
-};
-
 struct SerialSettings {
-    QString device;     // /dev/ttyUSB0
+    QString device;     // /dev/ttyUSB0 (or a name such as COM3)
     int baud = 9600;
-    char parity = 'E';  // 'N', 'E', 'O' (the serial-line spec's default is even)
-    int dataBits = 8;
-    int stopBits = 1;
+    char parity = 'E';  // 'N', 'E', 'O' (the serial-line spec's default is even, V1.02 2.5.1)
+    int dataBits = 8;   // 5..8; RTU needs 8; ASCII defaults to 7 (Serial Line V1.02, 2.5.2)
+    int stopBits = 1;   // 1 or 2
     int turnaroundUs = 0; // RS485: wait this long after sending before expecting the answer
+
+    friend bool operator==(const SerialSettings &, const SerialSettings &) = default;
 };
 
 struct TlsSettings {
     QString certificate; // PEM file: our certificate (client or server)
-    QString privateKey;  // PEM file
-    QString caCertificates; // PEM file: the peer's CA
+    QString privateKey;  // PEM file (RSA or EC, without a passphrase)
+    QString caCertificates; // PEM file: the peer's CA (empty: the system's CAs)
+
+    friend bool operator==(const TlsSettings &, const TlsSettings &) = default;
 };
 
 // A parsed target URL. parse() never throws: it returns the URL or an error that names the part
 // at fault and what was expected ("rtu:///dev/ttyUSB0?baud=96OO: baud '96OO' is not a number").
+//
+// Syntax: scheme://host[:port][?options] for network links (IPv6 addresses in brackets:
+// tcp://[::1]:502), scheme://device[?options] for serial links (rtu:///dev/ttyUSB0: the device
+// path follows the two slashes). Default ports: 502 for tcp and udp (Messaging on TCP/IP V1.0b,
+// 4.1), 802 for tls (MODBUS/TCP Security, 5.1); rtu-tcp, ascii-tcp and rtu-udp need a port (serial
+// device servers listen on ports of their own). Scheme and option names are case-insensitive.
+//
+// Options (unknown, repeated or misplaced options are errors, never ignored):
+//   serial:  baud=9600  parity=N|E|O (or none|even|odd)  data=5..8  stop=1|2
+//            turnaround=10ms (units ns, us, ms, s; a bare number is ms) or turnaround_us=10000
+//   tls:     cert=FILE  key=FILE (both or neither)  ca=FILE
+//   network: connect_timeout=3000ms (bare number: ms; default 3000)
+//   any:     timeout=1000ms  the response timeout for requests on this link (the engine's
+//            default when absent)
+//            framing=delimited  start=HH  end=HH  checksum=none|sum|xor  display=text|hex
+//            Bytes are two hex digits (an optional 0x is accepted): start=24 is 0x24 '$',
+//            end=23 is 0x23 '#', start=05&end=04 are ENQ and EOT. end defaults to 0A (LF); no
+//            start byte by default. See DelimitedFramer.
+// Values may be percent-encoded (%20, %26 for '&'); toString() encodes what needs it.
 class LinkUrl
 {
 public:
     struct Result;
 
     [[nodiscard]] static Result parse(QStringView text);
+    // "tcp, rtu-tcp, ascii-tcp, udp, rtu-udp, rtu, ascii, tls"
+    [[nodiscard]] static QString knownSchemes();
+    [[nodiscard]] static QString schemeName(LinkKind kind); // "rtu-tcp"
 
     LinkKind kind = LinkKind::Tcp;
-    QString host;   // network links
+    QString host;   // network links; an IPv6 address without brackets
     quint16 port = 502;
     SerialSettings serial;
     TlsSettings tls;
     DelimitedFraming delimited;
     int connectTimeoutMs = 3000;
+    int responseTimeoutMs = -1; // -1: not given (the engine's default applies)
 
     [[nodiscard]] bool isSerial() const { return kind == LinkKind::Rtu || kind == LinkKind::Ascii; }
     [[nodiscard]] bool isDatagram() const { return kind == LinkKind::Udp || kind == LinkKind::RtuUdp; }
-    // The Modbus framing the link carries (Rtu for rtu-tcp, rtu-udp and rtu://; Tcp for tcp and tls).
+    // The Modbus framing the link carries (Rtu for rtu-tcp, rtu-udp and rtu://; Tcp for tcp and tls;
+    // Udp for udp). With delimited.enabled the link carries delimited frames instead and this is
+    // only what the scheme would have carried.
     [[nodiscard]] Framing framing() const;
     // Canonical text, parseable again: "rtu:///dev/ttyUSB0?baud=9600&parity=E&data=8&stop=1".
+    // Network links always show the port; options at their defaults are left out, except the
+    // serial settings, which are always written in full.
     [[nodiscard]] QString toString() const;
+    // Where the link goes, for messages: "127.0.0.1:502", "[::1]:502", "/dev/ttyUSB0".
+    [[nodiscard]] QString address() const;
+
+    friend bool operator==(const LinkUrl &, const LinkUrl &) = default;
 };
 
 struct LinkUrl::Result {

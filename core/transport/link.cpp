@@ -1,0 +1,68 @@
+#include "link.h"
+
+#include "seriallink.h"
+#include "tcplink.h"
+#include "tlslink.h"
+#include "udplink.h"
+
+namespace mbscope {
+
+Link::Link(const LinkUrl &url, QObject *parent)
+    : QObject(parent)
+    , m_url(url)
+{
+    qRegisterMetaType<mbscope::LinkError>();
+}
+
+Link::~Link() = default;
+
+Link *Link::create(const LinkUrl &url, QObject *parent)
+{
+    switch (url.kind) {
+    case LinkKind::Tcp:
+    case LinkKind::RtuTcp:
+    case LinkKind::AsciiTcp: return new TcpLink(url, parent);
+    case LinkKind::Udp:
+    case LinkKind::RtuUdp: return new UdpLink(url, parent);
+    case LinkKind::Rtu:
+    case LinkKind::Ascii: return new SerialLink(url, parent);
+    case LinkKind::Tls: return new TlsLink(url, parent);
+    }
+    return new TcpLink(url, parent);
+}
+
+void Link::reportError(LinkError::Kind kind, const QString &what)
+{
+    m_lastError.kind = kind;
+    m_lastError.message = m_url.toString() + QStringLiteral(": ") + what;
+    emit errorOccurred(m_lastError);
+}
+
+void Link::setClosed(const QString &reason)
+{
+    const State was = m_state;
+    m_state = State::Closed;
+    if (was != State::Closed)
+        emit closed(reason);
+}
+
+void Link::reportLoss(LinkError::Kind kind, const QString &what)
+{
+    m_state = State::Closed;
+    reportError(kind, what);
+    emit closed(m_lastError.message);
+}
+
+QString Link::osAnswer(const QString &errorString)
+{
+    if (errorString.isEmpty())
+        return QStringLiteral("no reason given");
+    QString text = errorString;
+    if (text.size() > 1 && text.at(0).isUpper() && text.at(1).isLower())
+        text[0] = text.at(0).toLower();
+    if (text.endsWith(QLatin1Char('.')))
+        text.chop(1);
+    return text;
+}
+
+} // namespace mbscope

@@ -1,0 +1,45 @@
+#pragma once
+
+#include "link.h"
+
+#include <QtCore/QTimer>
+#include <QtNetwork/QAbstractSocket>
+
+QT_BEGIN_NAMESPACE
+class QUdpSocket;
+QT_END_NAMESPACE
+
+namespace mbscope {
+
+// Datagrams: udp:// (MBAP) and rtu-udp:// (RTU), one frame per datagram. The socket is connected
+// to the peer, so the kernel drops datagrams from any other address and reports an ICMP "port
+// unreachable" as an error. Open means the host name was resolved and the socket connected; UDP
+// itself has no handshake, so a device that is off is only noticed by the engine's timeouts.
+// bytesWritten(t) is emitted inside write(): the kernel has taken the whole datagram.
+// Zero-length datagrams are not reported (no frame fits in them).
+class UdpLink final : public Link
+{
+    Q_OBJECT
+public:
+    explicit UdpLink(const LinkUrl &url, QObject *parent = nullptr);
+    ~UdpLink() override;
+
+    [[nodiscard]] bool isDatagram() const override { return true; }
+
+    void open() override;
+    void close() override;
+    bool write(const QByteArray &bytes) override;
+
+private:
+    void startOpen();
+    void teardown();
+    void onReadyRead();
+    void onSocketError(QAbstractSocket::SocketError error);
+    void onConnectTimeout();
+    [[nodiscard]] QString where() const;
+
+    QUdpSocket *m_socket = nullptr;
+    QTimer m_connectTimer;
+};
+
+} // namespace mbscope
