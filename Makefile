@@ -1,9 +1,10 @@
 # Convenience entry points; the build itself is CMake (see CMakePresets.json).
 BUILD ?= build
 JOBS ?= 2
+FUZZ_SECONDS ?= 20
 CMAKE_FLAGS ?= -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
 
-.PHONY: all deps test-deps configure build run test clean
+.PHONY: all deps test-deps configure build run test fuzz clean
 
 all: build
 
@@ -23,10 +24,15 @@ build: deps configure
 run: build
 	scripts/run-mbscope.sh $(BUILD)/app/mbscope
 
-# Installs what is missing (peers included), builds, and runs every test with CTest's summary.
+# Installs what is missing (peers included), builds, runs the fuzzers briefly (a separate clang
+# build with sanitizers), then runs every test with CTest's summary last.
 test: test-deps configure
 	cmake --build $(BUILD) -j$(JOBS)
+	scripts/fuzz.sh $(FUZZ_SECONDS)
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
+
+fuzz:
+	scripts/fuzz.sh $(FUZZ_SECONDS)
 
 clean:
 	rm -rf $(BUILD)
