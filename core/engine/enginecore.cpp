@@ -1,0 +1,451 @@
+#include "enginecore.h"
+
+#include "protocol/streamframer.h"
+#include "transport/monotonicclock.h"
+
+#include <utility>
+
+namespace mbscope {
+
+namespace {
+
+int msUntil(qint64 deadlineNs, qint64 nowNs)
+{
+    // Round up: a timer that fires early would only be armed again.
+    const qint64 ns = deadlineNs - nowNs;
+    return ns <= 0 ? 0 : int(qMin<qint64>((ns + 999999) / 1000000, 24LL * 3600 * 1000));
+}
+
+// Another attempt makes sense when the device's answer was missing or unusable; an exception is
+// a clear answer and a link error ends the request (the next request reconnects).
+bool retryable(TransactionStatus status)
+{
+    return status == TransactionStatus::Timeout || status == TransactionStatus::CrcError
+        || status == TransactionStatus::Malformed || status == TransactionStatus::Unexpected;
+}
+
+void setUpTimer(QTimer &timer)
+{
+    timer.setSingleShot(true);
+    timer.setTimerType(Qt::PreciseTimer);
+}
+
+} // namespace
+
+EngineCore::EngineCore(QObject *parent)
+    : QObject(parent)
+    , m_deadlineTimer(this)
+    , m_silenceTimer(this)
+    , m_openTimer(this)
+    , m_batchTimer(this)
+{
+    setUpTimer(m_deadlineTimer);
+    setUpTimer(m_silenceTimer);
+    setUpTimer(m_openTimer);
+    setUpTimer(m_batchTimer);
+    connect(&m_deadlineTimer, &QTimer::timeout, this, &EngineCore::onDeadline);
+    connect(&m_silenceTimer, &QTimer::timeout, this, &EngineCore::onSilence);
+    connect(&m_batchTimer, &QTimer::timeout, this, &EngineCore::flushBatch);
+    connect(&m_openTimer, &QTimer::timeout, this, [this] {
+        if (m_opening)
+            onLinkError(LinkError{LinkError::Kind::Timeout,
+                                  QStringLiteral("%1: the link did not open within %2 ms")
+                                      .arg(m_url.toString()).arg(m_url.connectTimeoutMs)});
+    });
+    setTarget(LinkUrl{}, EngineOptions{});
+}
+
+EngineCore::~EngineCore() = default;
+
+void EngineCore::setTarget(const LinkUrl &url, const EngineOptions &options)
+{
+    if (m_link) {
+        m_closingQuietly = true;
+        m_link->close();
+        delete m_link;
+        m_link = nullptr;
+        m_closingQuietly = false;
+    }
+    m_opening = false;
+    m_url = url;
+    m_options = options;
+    m_framing = LinkFraming::of(url, options);
+    m_framer = m_framing.createFramer(url);
+    m_verdict = std::make_unique<ResponseVerdict>(m_framing.framing, m_framing.delimited);
+    m_stamps.clear();
+    m_timedOut.clear();
+    m_answered.clear();
+}
+
+int EngineCore::pipelineDepth() const
+{
+    const bool mbap = !m_framing.delimited && (m_framing.framing == Framing::Tcp || m_framing.framing == Framing::Udp);
+    return mbap ? qMax(1, m_options.pipelineDepth) : 1;
+}
+
+void EngineCore::submit(const RequestItem &item, quint64 id, int itemIndex, quint64 tag)
+{
+    m_queue.append(Outgoing{item, id, itemIndex, 0, tag, {}});
+    pump();
+}
+
+void EngineCore::cancel(quint64 tag)
+{
+    m_queue.removeIf([tag](const Outgoing &o) { return o.tag == tag; });
+    const qsizetype before = m_inFlight.size();
+    m_inFlight.removeIf([tag](const Pending &p) { return p.out.tag == tag; });
+    m_counters.abandoned += quint64(before - m_inFlight.size());
+    armDeadline();
+    scheduleBatch();
+}
+
+int EngineCore::outstanding(quint64 tag) const
+{
+    int n = 0;
+    for (const Outgoing &o : m_queue)
+        n += o.tag == tag ? 1 : 0;
+    for (const Pending &p : m_inFlight)
+        n += p.out.tag == tag ? 1 : 0;
+    return n;
+}
+
+void EngineCore::closeLink()
+{
+    m_deferPump = true;
+    failInFlight(QStringLiteral("%1: closed on request").arg(m_url.toString()));
+    if (m_link && m_link->state() != Link::State::Closed) {
+        m_closingQuietly = true;
+        m_link->close();
+        m_closingQuietly = false;
+    }
+    m_opening = false;
+    m_openTimer.stop();
+    resetFramer();
+    m_deferPump = false;
+}
+
+void EngineCore::schedulePump()
+{
+    if (m_pumpScheduled)
+        return;
+    m_pumpScheduled = true;
+    QMetaObject::invokeMethod(this, [this] {
+        m_pumpScheduled = false;
+        pump();
+    }, Qt::QueuedConnection);
+}
+
+void EngineCore::pump()
+{
+    if (m_pumping || m_deferPump) {
+        schedulePump();
+        return;
+    }
+    m_pumping = true;
+    while (!m_queue.isEmpty()) {
+        if (!m_link || m_link->state() != Link::State::Open) {
+            ensureLink();
+            break;
+        }
+        if (!m_inFlight.isEmpty()) {
+            // A broadcast occupies the line alone until its turnaround has passed.
+            if (m_inFlight.size() >= pipelineDepth() || m_inFlight.constFirst().out.item.broadcast
+                || m_queue.constFirst().item.broadcast)
+                break;
+        }
+        sendNext();
+    }
+    m_pumping = false;
+}
+
+void EngineCore::ensureLink()
+{
+    if (!m_link) {
+        m_link = m_factory ? m_factory(m_url, this) : Link::create(m_url, this);
+        if (!m_link) {
+            failHead(QStringLiteral("%1: no link can be made for this target").arg(m_url.toString()));
+            schedulePump();
+            return;
+        }
+        connect(m_link, &Link::opened, this, &EngineCore::onOpened);
+        connect(m_link, &Link::closed, this, &EngineCore::onClosed);
+        connect(m_link, &Link::errorOccurred, this, &EngineCore::onLinkError);
+        connect(m_link, &Link::bytesWritten, this, &EngineCore::onBytesWritten);
+        connect(m_link, &Link::bytesReceived, this, &EngineCore::onBytesReceived);
+    }
+    if (m_link->state() == Link::State::Closed && !m_opening) {
+        m_opening = true;
+        ++m_counters.connects;
+        // The link enforces the connect timeout; this one only guards against a link that never answers.
+        m_openTimer.start(m_url.connectTimeoutMs + 2000);
+        m_link->open();
+    }
+}
+
+void EngineCore::onOpened()
+{
+    m_opening = false;
+    m_openTimer.stop();
+    resetFramer();
+    schedulePump();
+}
+
+void EngineCore::resetFramer()
+{
+    m_silenceTimer.stop();
+    m_framer->reset();
+    m_stamps.clear();
+}
+
+void EngineCore::sendNext()
+{
+    Pending p;
+    p.out = m_queue.takeFirst();
+    p.sent = p.out.item.bytes;
+    if (pipelineDepth() > 1 && p.out.item.rule == MatchRule::Mbap && p.sent.size() >= 2) {
+        // Pipelining needs a distinct transaction id per request in flight (Messaging on TCP/IP
+        // V1.0b, 3.1.3: the id pairs a response with its request).
+        quint16 tid = m_nextTransactionId++;
+        for (int guard = 0; guard < 65536; ++guard) {
+            bool used = false;
+            for (const Pending &q : m_inFlight)
+                used = used || q.out.item.transactionId == tid;
+            if (!used)
+                break;
+            tid = m_nextTransactionId++;
+        }
+        p.sent[0] = char(tid >> 8);
+        p.sent[1] = char(tid & 0xFF);
+        p.rewritten = tid != p.out.item.transactionId;
+        p.out.item.transactionId = tid;
+    }
+    const qint64 waitNs = qint64(p.out.item.broadcast ? m_options.broadcastTurnaroundMs : p.out.item.timeoutMs) * 1000000;
+    p.writeStartNs = monotonicNowNs();
+    p.deadlineNs = p.writeStartNs + waitNs;
+    const quint64 id = p.out.id;
+    const QByteArray bytes = p.sent;
+    m_inFlight.append(std::move(p));
+    ++m_counters.requestsSent;
+    m_counters.bytesOut += quint64(bytes.size());
+    logOutgoing(bytes, m_inFlight.constLast().writeStartNs);
+    if (!m_link->write(bytes)) {
+        const qsizetype i = indexOfId(id);
+        if (i >= 0)
+            finish(i, TransactionStatus::LinkError, QStringLiteral("%1: the link did not take the request").arg(m_url.toString()));
+    }
+    armDeadline();
+    scheduleBatch();
+}
+
+void EngineCore::onBytesWritten(qint64 lastByteNs)
+{
+    for (Pending &p : m_inFlight) {
+        if (p.sentNs != 0)
+            continue;
+        p.sentNs = lastByteNs;
+        // Timeouts (and a broadcast's turnaround) run from the moment the request left.
+        const qint64 waitNs = qint64(p.out.item.broadcast ? m_options.broadcastTurnaroundMs : p.out.item.timeoutMs) * 1000000;
+        p.deadlineNs = lastByteNs + waitNs;
+        break;
+    }
+    armDeadline();
+}
+
+void EngineCore::armDeadline()
+{
+    if (m_inFlight.isEmpty()) {
+        m_deadlineTimer.stop();
+        return;
+    }
+    qint64 earliest = m_inFlight.constFirst().deadlineNs;
+    for (const Pending &p : m_inFlight)
+        earliest = qMin(earliest, p.deadlineNs);
+    m_deadlineTimer.start(msUntil(earliest, monotonicNowNs()));
+}
+
+void EngineCore::onDeadline()
+{
+    const qint64 now = monotonicNowNs();
+    QList<quint64> due;
+    for (const Pending &p : m_inFlight) {
+        if (p.deadlineNs <= now)
+            due.append(p.out.id);
+    }
+    for (const quint64 id : due) {
+        qsizetype i = indexOfId(id);
+        if (i < 0)
+            continue;
+        if (m_inFlight.at(i).out.item.broadcast) {
+            finish(i, TransactionStatus::Broadcast, {});
+            continue;
+        }
+        QString partial;
+        if (m_inFlight.size() == 1) {
+            // Bytes the framer still holds may be this request's answer cut short.
+            const qint64 held = flushPartial();
+            i = indexOfId(id);
+            if (i < 0)
+                continue;
+            if (held > 0)
+                partial = QStringLiteral("; %1 bytes of an unfinished answer were skipped").arg(held);
+        }
+        Pending late = m_inFlight.at(i);
+        late.timedOutNs = now;
+        m_timedOut.append(late);
+        while (m_timedOut.size() > qMax(0, m_options.lateWindow))
+            m_timedOut.removeFirst();
+        finish(i, TransactionStatus::Timeout, QStringLiteral("no answer within %1 ms").arg(late.out.item.timeoutMs) + partial);
+    }
+    armDeadline();
+}
+
+void EngineCore::onLinkError(const LinkError &error)
+{
+    ++m_counters.linkErrors;
+    m_openTimer.stop();
+    const bool wasOpening = m_opening;
+    m_opening = false;
+    m_deferPump = true;
+    emit linkMessage(error.message);
+    const qint64 held = flushPartial();
+    if (m_link && m_link->state() != Link::State::Closed) {
+        m_closingQuietly = true;
+        m_link->close();
+        m_closingQuietly = false;
+    }
+    resetFramer();
+    QString problem = error.message;
+    if (held > 0)
+        problem += QStringLiteral(" (after %1 bytes of an unfinished answer)").arg(held);
+    if (wasOpening && m_inFlight.isEmpty())
+        failHead(problem);
+    else
+        failInFlight(problem);
+    m_deferPump = false;
+    schedulePump();
+}
+
+void EngineCore::onClosed(const QString &reason)
+{
+    if (m_closingQuietly)
+        return;
+    m_deferPump = true;
+    const bool wasOpening = m_opening;
+    m_opening = false;
+    m_openTimer.stop();
+    const qint64 held = flushPartial();
+    QString problem = QStringLiteral("%1: the link closed: %2").arg(m_url.toString(), reason);
+    if (held > 0)
+        problem += QStringLiteral(" (after %1 bytes of an unfinished answer)").arg(held);
+    if (!m_inFlight.isEmpty() || wasOpening) {
+        ++m_counters.linkErrors;
+        emit linkMessage(problem);
+    }
+    resetFramer();
+    if (wasOpening && m_inFlight.isEmpty())
+        failHead(problem);
+    else
+        failInFlight(problem);
+    m_deferPump = false;
+    schedulePump();
+}
+
+void EngineCore::failInFlight(const QString &problem)
+{
+    while (!m_inFlight.isEmpty())
+        finish(0, TransactionStatus::LinkError, problem);
+}
+
+void EngineCore::failHead(const QString &problem)
+{
+    if (m_queue.isEmpty())
+        return;
+    const Outgoing o = m_queue.takeFirst();
+    Transaction t;
+    t.id = o.id;
+    t.item = o.itemIndex;
+    t.attempt = o.attempt;
+    t.request = o.item.bytes;
+    t.status = TransactionStatus::LinkError;
+    t.problem = o.history + problem;
+    record(std::move(t), o.tag);
+}
+
+qsizetype EngineCore::indexOfId(quint64 id) const
+{
+    for (qsizetype i = 0; i < m_inFlight.size(); ++i) {
+        if (m_inFlight.at(i).out.id == id)
+            return i;
+    }
+    return -1;
+}
+
+void EngineCore::finish(qsizetype index, TransactionStatus status, const QString &problem, const QByteArray &response,
+                        qint64 firstNs, qint64 lastNs, quint8 exceptionCode)
+{
+    Pending p = m_inFlight.takeAt(index);
+    if (retryable(status) && p.out.attempt < p.out.item.retries) {
+        Outgoing again = p.out;
+        again.item.bytes = p.out.item.bytes;
+        again.history += QStringLiteral("attempt %1: %2: %3; ").arg(again.attempt + 1).arg(transactionStatusName(status), problem);
+        ++again.attempt;
+        ++m_counters.retries;
+        m_queue.prepend(again);
+        armDeadline();
+        pump();
+        return;
+    }
+    if (!response.isEmpty()) {
+        m_answered.append(p.out.item);
+        if (m_answered.size() > 8)
+            m_answered.removeFirst();
+    }
+    Transaction t;
+    t.id = p.out.id;
+    t.item = p.out.itemIndex;
+    t.attempt = p.out.attempt;
+    t.request = p.sent;
+    t.response = response;
+    t.status = status;
+    t.exceptionCode = exceptionCode;
+    t.problem = p.out.history + problem;
+    // A link may report the write after the answer began; the answer then bounds it.
+    t.sentNs = p.sentNs != 0 && (firstNs == 0 || p.sentNs <= firstNs) ? p.sentNs : p.writeStartNs;
+    t.firstByteNs = firstNs;
+    t.doneNs = lastNs;
+    t.transactionIdRewritten = p.rewritten;
+    record(std::move(t), p.out.tag);
+    armDeadline();
+    pump();
+}
+
+void EngineCore::record(Transaction transaction, quint64 tag)
+{
+    ++m_counters.transactions;
+    if (transaction.status == TransactionStatus::Late)
+        ++m_counters.late;
+    logTransaction(transaction);
+    emit recorded(transaction, tag);
+    m_batch.append(std::move(transaction));
+    scheduleBatch();
+}
+
+void EngineCore::scheduleBatch()
+{
+    if (m_batchTimer.isActive())
+        return;
+    const qint64 intervalNs = qint64(m_options.batchIntervalMs) * 1000000;
+    m_batchTimer.start(msUntil(m_lastBatchNs + intervalNs, monotonicNowNs()));
+}
+
+void EngineCore::flushBatch()
+{
+    m_batchTimer.stop();
+    m_lastBatchNs = monotonicNowNs();
+    if (!m_batch.isEmpty())
+        emit transactionsFinished(std::exchange(m_batch, {}));
+    m_progress.counters = m_counters;
+    emit progress(m_progress);
+}
+
+} // namespace mbscope

@@ -1,0 +1,172 @@
+#pragma once
+
+#include "chunkstamps.h"
+#include "engineoptions.h"
+#include "engineprogress.h"
+#include "linkframing.h"
+#include "requestitem.h"
+#include "responsematcher.h"
+#include "responseverdict.h"
+#include "transaction.h"
+
+#include "transport/link.h"
+#include "transport/linkurl.h"
+
+#include <QtCore/QList>
+#include <QtCore/QObject>
+#include <QtCore/QTimer>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+
+namespace mbscope {
+
+class StreamFramer;
+class TrafficLog;
+
+// The engine's work, in the engine's thread (TransactionEngine owns the thread and posts to it):
+// it opens the link on demand, writes requests, frames what comes back, matches answers to
+// requests, decides each transaction's status and hands the records on: at once (recorded(), for
+// the poller in the same thread) and in batches for observers (transactionsFinished(), at most
+// every EngineOptions::batchIntervalMs, never from the receive path).
+//
+// Timing truth: sentNs is the link's bytesWritten time of the last request byte; firstByteNs and
+// doneNs are the link's read times of the first and the last byte of the matched frame. An answer
+// cannot begin before its request was written, so a frame whose first byte came earlier belongs to
+// an earlier request (late) or to none (unsolicited), whatever its keys say.
+class EngineCore : public QObject
+{
+    Q_OBJECT
+public:
+    using LinkFactory = std::function<Link *(const LinkUrl &url, QObject *parent)>;
+
+    explicit EngineCore(QObject *parent = nullptr);
+    ~EngineCore() override;
+
+    // Engine thread only, except reserveId().
+    void setLinkFactory(LinkFactory factory) { m_factory = std::move(factory); }
+    // Closes the current link; the next request opens one to the new target.
+    void setTarget(const LinkUrl &url, const EngineOptions &options);
+    void setTrafficLog(TrafficLog *log) { m_log = log; }
+    [[nodiscard]] const LinkUrl &target() const { return m_url; }
+    [[nodiscard]] const EngineOptions &options() const { return m_options; }
+
+    // A fresh transaction id; thread-safe.
+    [[nodiscard]] quint64 reserveId() { return m_nextId.fetch_add(1) + 1; }
+    // Queues a request. tag groups requests of one poll run (0: single sends).
+    void submit(const RequestItem &item, quint64 id, int itemIndex = -1, quint64 tag = 0);
+    // Drops the queued requests of a tag and abandons those in flight (not recorded; their
+    // answers, should they come, count as unsolicited).
+    void cancel(quint64 tag);
+    // Requests of a tag queued or in flight.
+    [[nodiscard]] int outstanding(quint64 tag) const;
+    // How many requests may be in flight at once on this target.
+    [[nodiscard]] int pipelineDepth() const;
+    void closeLink();
+
+    [[nodiscard]] EngineCounters &counters() { return m_counters; }
+    [[nodiscard]] EngineProgress &progressState() { return m_progress; }
+    // Emits what is waiting for observers now (end of a poll), then the progress.
+    void flushBatch();
+    void scheduleBatch();
+
+signals:
+    // In the engine thread, as soon as a record is made (direct connections only).
+    void recorded(const mbscope::Transaction &transaction, quint64 tag);
+    // For observers in other threads: batches of records and the progress.
+    void transactionsFinished(const QList<mbscope::Transaction> &transactions);
+    void progress(const mbscope::EngineProgress &progress);
+    void linkMessage(const QString &message);
+
+private:
+    struct Outgoing {
+        RequestItem item;
+        quint64 id = 0;
+        int itemIndex = -1;
+        int attempt = 0;
+        quint64 tag = 0;
+        QString history; // what went wrong with earlier attempts
+    };
+    struct Pending {
+        Outgoing out;
+        QByteArray sent;        // the bytes written
+        bool rewritten = false; // transaction id given by the engine (pipelining)
+        qint64 writeStartNs = 0;
+        qint64 sentNs = 0;      // 0 until the link reports the write
+        qint64 deadlineNs = 0;
+        qint64 timedOutNs = 0;  // for late answers
+        bool answeredBroadcast = false;
+    };
+
+    // enginecore.cpp: link, sending, timers, records
+    void ensureLink();
+    void pump();
+    void schedulePump();
+    void sendNext();
+    void armDeadline();
+    void onOpened();
+    void onClosed(const QString &reason);
+    void onLinkError(const LinkError &error);
+    void onBytesWritten(qint64 lastByteNs);
+    void onDeadline();
+    void failInFlight(const QString &problem);
+    void failHead(const QString &problem);
+    void resetFramer();
+    // Removes in-flight entry index and records (or retries) it.
+    void finish(qsizetype index, TransactionStatus status, const QString &problem,
+                const QByteArray &response = {}, qint64 firstNs = 0, qint64 lastNs = 0, quint8 exceptionCode = 0);
+    void record(Transaction transaction, quint64 tag);
+    [[nodiscard]] qsizetype indexOfId(quint64 id) const;
+
+    // enginereceive.cpp: framing, matching, late and unsolicited answers
+    void onBytesReceived(const QByteArray &bytes, qint64 firstNs, qint64 lastNs);
+    void processFramerOutput();
+    void handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 lastNs);
+    void handleSkipped(const SkippedBytes &run, qint64 firstNs, qint64 lastNs);
+    void answer(qsizetype index, const StreamFrame &frame, qint64 firstNs, qint64 lastNs);
+    [[nodiscard]] bool tryLate(const StreamFrame &frame, const FrameKeys &keys, qint64 firstNs, qint64 lastNs);
+    [[nodiscard]] bool isDuplicate(const FrameKeys &keys) const;
+    void unsolicited(const QByteArray &bytes, qint64 firstNs, qint64 lastNs, const char *verdict);
+    void onSilence();
+    void armSilence();
+    [[nodiscard]] qint64 flushPartial(); // flushes the framer; returns the bytes it held
+
+    // enginelog.cpp: the traffic log, when one is attached
+    void logOutgoing(const QByteArray &bytes, qint64 ns);
+    void logIncoming(const QByteArray &bytes, qint64 firstNs, qint64 lastNs, const QString &verdict);
+    void logTransaction(const Transaction &transaction);
+
+    LinkUrl m_url;
+    EngineOptions m_options;
+    LinkFraming m_framing;
+    LinkFactory m_factory;
+    TrafficLog *m_log = nullptr;
+    Link *m_link = nullptr;
+    bool m_opening = false;
+    std::unique_ptr<StreamFramer> m_framer;
+    std::unique_ptr<ResponseVerdict> m_verdict;
+    ChunkStamps m_stamps;
+
+    QList<Outgoing> m_queue;
+    QList<Pending> m_inFlight;
+    QList<Pending> m_timedOut;   // newest last, at most lateWindow
+    QList<RequestItem> m_answered; // recently answered requests, for second answers
+    quint16 m_nextTransactionId = 1;
+    std::atomic<quint64> m_nextId{0};
+
+    QTimer m_deadlineTimer;
+    QTimer m_silenceTimer;
+    QTimer m_openTimer;
+    QTimer m_batchTimer;
+    bool m_pumpScheduled = false;
+    bool m_pumping = false;
+    bool m_deferPump = false;      // inside a link callback: pump from the event loop
+    bool m_closingQuietly = false; // closing on purpose: the closed() that follows says nothing new
+    qint64 m_lastBatchNs = 0;
+    QList<Transaction> m_batch;
+    EngineCounters m_counters;
+    EngineProgress m_progress;
+};
+
+} // namespace mbscope

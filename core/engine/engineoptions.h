@@ -1,0 +1,29 @@
+#pragma once
+
+#include <QtCore/QtGlobal>
+
+namespace mbscope {
+
+// How the engine talks on a link, beyond what the target URL says.
+struct EngineOptions {
+    // Requests in flight at once. Above 1 only on MBAP links (tcp, tls, udp), where transaction
+    // ids tell answers apart (Messaging on TCP/IP V1.0b, 4.2: a client may send several requests
+    // without waiting); the engine then gives each request a transaction id of its own and marks
+    // the record (Transaction::transactionIdRewritten). Serial framings carry one at a time.
+    int pipelineDepth = 1;
+    // After a broadcast (unit 0 on a serial framing) the client waits this long before the next
+    // request so that every server has acted on it (Serial Line V1.02, 2.4.1: "turnaround delay",
+    // typically 100 to 200 ms).
+    int broadcastTurnaroundMs = 100;
+    // RTU over TCP has no line silence to end a frame the length rule cannot; bytes still waiting
+    // in the framer after this much quiet are taken as ended, as a serial line's t3.5 would end
+    // them (a gateway forwards a frame whole, so a gap this long is never inside one). Serial links
+    // use t3.5 from the baud rate (Serial Line V1.02, 2.5.1.1); datagrams end at their boundary.
+    int streamSilenceMs = 50;
+    // How many timed-out requests wait for a late answer (oldest forgotten first).
+    int lateWindow = 32;
+    // How often observers get batched updates, at most (~30 a second).
+    int batchIntervalMs = 33;
+};
+
+} // namespace mbscope

@@ -1,0 +1,236 @@
+#include "enginecore.h"
+
+#include "protocol/framing.h"
+#include "protocol/rtuframer.h"
+#include "protocol/streamframer.h"
+#include "transport/monotonicclock.h"
+
+namespace mbscope {
+
+namespace {
+
+QString msText(qint64 ns)
+{
+    return QString::number(double(ns) / 1e6, 'f', 3);
+}
+
+} // namespace
+
+void EngineCore::onBytesReceived(const QByteArray &bytes, qint64 firstNs, qint64 lastNs)
+{
+    if (bytes.isEmpty())
+        return;
+    m_counters.bytesIn += quint64(bytes.size());
+    m_stamps.add(m_framer->streamSize(), bytes.size(), firstNs, lastNs);
+    m_framer->feed(bytes, lastNs);
+    // A datagram is whole: nothing in it waits for the next one (Modbus UDP and RTU over UDP
+    // carry one ADU per datagram).
+    if (m_framing.datagram)
+        m_framer->flushOnSilence();
+    processFramerOutput();
+    armSilence();
+}
+
+void EngineCore::armSilence()
+{
+    if (m_framing.silenceNs <= 0 || (m_framer->pendingSize() == 0 && m_framer->openSkippedRunSize() == 0)) {
+        m_silenceTimer.stop();
+        return;
+    }
+    const qint64 due = m_framer->lastFeedNs() + m_framing.silenceNs;
+    const qint64 now = monotonicNowNs();
+    m_silenceTimer.start(due <= now ? 0 : int((due - now + 999999) / 1000000));
+}
+
+void EngineCore::onSilence()
+{
+    if (m_framing.baud > 0) {
+        // Serial RTU: the framer itself checks that t3.5 has passed since the last byte
+        // (Serial Line V1.02, 2.5.1.1); a timer that fired early is armed again.
+        if (!static_cast<RtuFramer *>(m_framer.get())->onSilence(monotonicNowNs())) {
+            armSilence();
+            return;
+        }
+    } else {
+        m_framer->flushOnSilence();
+    }
+    processFramerOutput();
+}
+
+qint64 EngineCore::flushPartial()
+{
+    const qint64 held = m_framer->pendingSize() + m_framer->openSkippedRunSize();
+    m_framer->flushOnSilence();
+    processFramerOutput();
+    m_silenceTimer.stop();
+    return held;
+}
+
+void EngineCore::processFramerOutput()
+{
+    const QList<StreamFrame> frames = m_framer->takeFrames();
+    const QList<SkippedBytes> skipped = m_framer->takeSkipped();
+    // Frames and skipped runs in stream order, as the bytes came.
+    qsizetype f = 0;
+    qsizetype s = 0;
+    while (f < frames.size() || s < skipped.size()) {
+        const bool takeSkipped = s < skipped.size() && (f >= frames.size() || skipped.at(s).offset < frames.at(f).offset);
+        if (takeSkipped) {
+            const SkippedBytes &run = skipped.at(s++);
+            handleSkipped(run, m_stamps.firstNs(run.offset), m_stamps.lastNs(run.offset + run.count() - 1));
+        } else {
+            const StreamFrame &frame = frames.at(f++);
+            handleFrame(frame, m_stamps.firstNs(frame.offset), m_stamps.lastNs(frame.offset + frame.bytes.size() - 1));
+        }
+    }
+}
+
+void EngineCore::handleSkipped(const SkippedBytes &run, qint64 firstNs, qint64 lastNs)
+{
+    ++m_counters.skippedRuns;
+    m_counters.skippedBytes += quint64(run.count());
+    // An RTU answer with a wrong CRC, or cut short, cannot be delimited by the framer, which
+    // skips it; its unit and function code may still name the pending request, whose status
+    // then says what was wrong instead of a bare timeout.
+    const bool rtuCandidate = !m_framing.delimited && m_framing.framing == Framing::Rtu && run.count() >= 4
+        && (run.reason == SkipReason::ChecksumMismatch || run.reason == SkipReason::Incomplete);
+    if (rtuCandidate) {
+        const FrameKeys keys = ResponseMatcher::keysOf(run.bytes, Framing::Rtu);
+        for (qsizetype i = 0; i < m_inFlight.size(); ++i) {
+            const Pending &p = m_inFlight.at(i);
+            if (p.out.item.broadcast || firstNs < p.writeStartNs || !ResponseMatcher::match(p.out.item, keys).matched())
+                continue;
+            ResponseVerdict::Result v = m_verdict->judge(run.bytes, p.sent);
+            if (v.status == TransactionStatus::Ok || v.status == TransactionStatus::Exception) {
+                v.status = TransactionStatus::Malformed;
+                v.problem = QStringLiteral("the answer's bytes could not be delimited as an RTU frame (%1)")
+                                .arg(QString::fromLatin1(skipReasonName(run.reason)));
+            }
+            logIncoming(run.bytes, firstNs, lastNs, transactionStatusName(v.status));
+            finish(i, v.status, v.problem, run.bytes, firstNs, lastNs, v.exceptionCode);
+            return;
+        }
+    }
+    logIncoming(run.bytes, firstNs, lastNs,
+                QStringLiteral("skipped: ") + QString::fromLatin1(skipReasonName(run.reason)));
+}
+
+void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 lastNs)
+{
+    const FrameKeys keys = m_framing.delimited ? FrameKeys{} : ResponseMatcher::keysOf(frame.bytes, m_framing.framing);
+    // An answer cannot begin before its request was written: only requests written before the
+    // frame's first byte are candidates.
+    qsizetype candidate = -1;
+    int eligible = 0;
+    for (qsizetype i = 0; i < m_inFlight.size(); ++i) {
+        const Pending &p = m_inFlight.at(i);
+        if (firstNs < p.writeStartNs)
+            continue;
+        ++eligible;
+        if (candidate < 0)
+            candidate = i;
+        if (p.out.item.rule == MatchRule::Mbap && keys.valid && keys.transactionId == p.out.item.transactionId) {
+            candidate = i; // the transaction id names its request, whatever its place in the pipeline
+            eligible = 1;
+            break;
+        }
+    }
+    if (candidate >= 0 && eligible > 1 && m_inFlight.at(candidate).out.item.rule == MatchRule::Mbap)
+        candidate = -1; // several in flight and no transaction id matches: nobody's answer
+
+    if (candidate >= 0) {
+        const Pending &p = m_inFlight.at(candidate);
+        if (p.out.item.broadcast) {
+            const QString problem = QStringLiteral("an answer came to a broadcast (unit 0 is never answered: Serial Line V1.02, 2.1)");
+            logIncoming(frame.bytes, firstNs, lastNs, transactionStatusName(TransactionStatus::Unexpected));
+            finish(candidate, TransactionStatus::Unexpected, problem, frame.bytes, firstNs, lastNs);
+            return;
+        }
+        const ResponseMatcher::Result match = m_framing.delimited ? ResponseMatcher::Result{ResponseMatcher::Outcome::Match, {}}
+                                                                 : ResponseMatcher::match(p.out.item, keys);
+        if (match.matched()) {
+            answer(candidate, frame, firstNs, lastNs);
+            return;
+        }
+        if (tryLate(frame, keys, firstNs, lastNs))
+            return;
+        if (isDuplicate(keys)) {
+            ++m_counters.duplicateFrames;
+            unsolicited(frame.bytes, firstNs, lastNs, "duplicate");
+            return;
+        }
+        logIncoming(frame.bytes, firstNs, lastNs, transactionStatusName(TransactionStatus::Unexpected));
+        finish(candidate, TransactionStatus::Unexpected, match.problem, frame.bytes, firstNs, lastNs);
+        return;
+    }
+    if (tryLate(frame, keys, firstNs, lastNs))
+        return;
+    if (isDuplicate(keys)) {
+        ++m_counters.duplicateFrames;
+        unsolicited(frame.bytes, firstNs, lastNs, "duplicate");
+        return;
+    }
+    unsolicited(frame.bytes, firstNs, lastNs, "unsolicited");
+}
+
+void EngineCore::answer(qsizetype index, const StreamFrame &frame, qint64 firstNs, qint64 lastNs)
+{
+    const ResponseVerdict::Result v = m_verdict->judge(frame, m_inFlight.at(index).sent);
+    logIncoming(frame.bytes, firstNs, lastNs, transactionStatusName(v.status));
+    finish(index, v.status, v.problem, frame.bytes, firstNs, lastNs, v.exceptionCode);
+}
+
+bool EngineCore::tryLate(const StreamFrame &frame, const FrameKeys &keys, qint64 firstNs, qint64 lastNs)
+{
+    // The most recent timed-out request that this frame answers (and that was written before it).
+    for (qsizetype i = m_timedOut.size() - 1; i >= 0; --i) {
+        const Pending &p = m_timedOut.at(i);
+        if (firstNs < p.writeStartNs)
+            continue;
+        if (!m_framing.delimited && !ResponseMatcher::match(p.out.item, keys).matched())
+            continue;
+        const Pending late = m_timedOut.takeAt(i);
+        const ResponseVerdict::Result v = m_verdict->judge(frame, late.sent);
+        Transaction t;
+        t.id = late.out.id;
+        t.item = late.out.itemIndex;
+        t.attempt = late.out.attempt;
+        t.request = late.sent;
+        t.response = frame.bytes;
+        t.status = TransactionStatus::Late;
+        t.exceptionCode = v.exceptionCode;
+        t.sentNs = late.sentNs != 0 && late.sentNs <= firstNs ? late.sentNs : late.writeStartNs;
+        t.firstByteNs = firstNs;
+        t.doneNs = lastNs;
+        t.transactionIdRewritten = late.rewritten;
+        t.problem = QStringLiteral("the answer came %1 ms after the request, %2 ms after its %3 ms timeout")
+                        .arg(msText(lastNs - t.sentNs), msText(lastNs - late.timedOutNs)).arg(late.out.item.timeoutMs);
+        if (v.status != TransactionStatus::Ok)
+            t.problem += QStringLiteral("; the answer itself: %1%2%3")
+                             .arg(transactionStatusName(v.status), v.problem.isEmpty() ? QString() : QStringLiteral(": "), v.problem);
+        logIncoming(frame.bytes, firstNs, lastNs, transactionStatusName(TransactionStatus::Late));
+        record(std::move(t), late.out.tag);
+        return true;
+    }
+    return false;
+}
+
+bool EngineCore::isDuplicate(const FrameKeys &keys) const
+{
+    if (m_framing.delimited || !keys.valid)
+        return false;
+    for (const RequestItem &item : m_answered) {
+        if (item.rule != MatchRule::NextFrame && ResponseMatcher::match(item, keys).matched())
+            return true;
+    }
+    return false;
+}
+
+void EngineCore::unsolicited(const QByteArray &bytes, qint64 firstNs, qint64 lastNs, const char *verdict)
+{
+    ++m_counters.unsolicitedFrames;
+    logIncoming(bytes, firstNs, lastNs, QString::fromLatin1(verdict));
+    scheduleBatch();
+}
+
+} // namespace mbscope

@@ -1,0 +1,152 @@
+#include "poller.h"
+
+#include "enginecore.h"
+
+#include "transport/monotonicclock.h"
+
+namespace mbscope {
+
+Poller::Poller(EngineCore *core, const PollSettings &settings, quint64 tag, QObject *parent)
+    : QObject(parent)
+    , m_core(core)
+    , m_settings(settings)
+    , m_tag(tag)
+    , m_timer(this)
+{
+    m_timer.setSingleShot(true);
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, [this] { advance(false); });
+    connect(m_core, &EngineCore::recorded, this, &Poller::onRecorded);
+    m_run.intervalNs = settings.intervalNs;
+    QStringList names;
+    for (const RequestItem &item : settings.items)
+        names.append(item.name);
+    m_run.statistics.setItemNames(names);
+}
+
+void Poller::start()
+{
+    if (m_started)
+        return;
+    m_started = true;
+    m_startNs = monotonicNowNs();
+    m_nextDueNs = m_startNs;
+    m_countersAtStart = m_core->counters();
+    EngineProgress &p = m_core->progressState();
+    p.polling = true;
+    p.intervalNs = m_settings.intervalNs;
+    p.cyclesPlanned = m_settings.count;
+    p.durationNs = m_settings.durationNs;
+    p.cycle = 0;
+    p.ok = 0;
+    p.failed = 0;
+    if (m_settings.items.isEmpty()) {
+        finish();
+        return;
+    }
+    advance(false);
+}
+
+void Poller::stop()
+{
+    if (!m_started || m_finished)
+        return;
+    m_run.stopped = true;
+    m_core->cancel(m_tag);
+    finish();
+}
+
+bool Poller::moreCycles(qint64 nowNs) const
+{
+    if (m_settings.count > 0 && m_run.cycles >= m_settings.count)
+        return false;
+    if (m_settings.durationNs > 0 && nowNs - m_startNs >= m_settings.durationNs)
+        return false;
+    return true;
+}
+
+bool Poller::hasRoom() const
+{
+    return m_core->outstanding(m_tag) < m_core->pipelineDepth();
+}
+
+void Poller::advance(bool fromRecord)
+{
+    while (!m_finished) {
+        const qint64 now = monotonicNowNs();
+        if (!moreCycles(now)) {
+            m_timer.stop();
+            if (m_core->outstanding(m_tag) == 0)
+                finish();
+            else if (m_settings.durationNs > 0 && m_settings.count == 0)
+                updateProgress(now);
+            return;
+        }
+        if (now < m_nextDueNs) {
+            qint64 wakeNs = m_nextDueNs;
+            if (m_settings.durationNs > 0)
+                wakeNs = qMin(wakeNs, m_startNs + m_settings.durationNs);
+            m_timer.start(int((wakeNs - now + 999999) / 1000000));
+            return;
+        }
+        if (!hasRoom())
+            return; // the next record calls again
+        // Started by the end of the cycle before rather than by its own due time: that cycle
+        // took longer than the interval.
+        if (fromRecord && m_settings.intervalNs > 0 && m_run.cycles > 0) {
+            ++m_run.overruns;
+            ++m_core->counters().overruns;
+        }
+        startCycle(now);
+        // Loop: arm the timer for the next due time, or (back to back, pipelined) start
+        // another cycle while the pipeline has room.
+        fromRecord = false;
+    }
+}
+
+void Poller::startCycle(qint64 nowNs)
+{
+    ++m_run.cycles;
+    ++m_core->counters().cycles;
+    m_nextDueNs = nowNs + m_settings.intervalNs;
+    updateProgress(nowNs);
+    for (qsizetype i = 0; i < m_settings.items.size(); ++i) {
+        if (m_finished)
+            return;
+        m_core->submit(m_settings.items.at(i), m_core->reserveId(), int(i), m_tag);
+    }
+}
+
+void Poller::onRecorded(const Transaction &transaction, quint64 tag)
+{
+    if (tag != m_tag || !m_started || m_finished)
+        return;
+    m_run.statistics.add(transaction);
+    updateProgress(monotonicNowNs());
+    advance(true);
+}
+
+void Poller::updateProgress(qint64 nowNs)
+{
+    EngineProgress &p = m_core->progressState();
+    p.cycle = m_run.cycles;
+    p.elapsedNs = nowNs - m_startNs;
+    p.ok = m_run.statistics.overall().ok();
+    p.failed = m_run.statistics.overall().failed();
+    m_core->scheduleBatch();
+}
+
+void Poller::finish()
+{
+    if (m_finished)
+        return;
+    m_finished = true;
+    m_timer.stop();
+    const qint64 now = monotonicNowNs();
+    m_run.elapsedNs = m_started ? now - m_startNs : 0;
+    m_run.counters = m_core->counters() - m_countersAtStart;
+    updateProgress(now);
+    emit finished();
+}
+
+} // namespace mbscope

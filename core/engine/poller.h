@@ -1,0 +1,56 @@
+#pragma once
+
+#include "pollreport.h"
+#include "pollsettings.h"
+
+#include <QtCore/QObject>
+#include <QtCore/QTimer>
+
+namespace mbscope {
+
+class EngineCore;
+struct Transaction;
+
+// One poll run in the engine's thread: the items submitted in cycles (PollSettings says how),
+// each record added to the run's statistics as it is made. A cycle that could not start when it
+// was due, because the one before was still running, starts as soon as that one ends and counts
+// as an overrun: the interval runs from one cycle's actual start to the next.
+class Poller : public QObject
+{
+    Q_OBJECT
+public:
+    Poller(EngineCore *core, const PollSettings &settings, quint64 tag, QObject *parent = nullptr);
+
+    void start();
+    // Starts no more cycles and abandons the requests still queued or in flight; finished() follows
+    // at once with the run so far.
+    void stop();
+
+    [[nodiscard]] const PollRun &run() const { return m_run; }
+    [[nodiscard]] bool isFinished() const { return m_finished; }
+
+signals:
+    void finished();
+
+private:
+    void onRecorded(const Transaction &transaction, quint64 tag);
+    void advance(bool fromRecord);
+    void startCycle(qint64 nowNs);
+    [[nodiscard]] bool moreCycles(qint64 nowNs) const;
+    [[nodiscard]] bool hasRoom() const;
+    void finish();
+    void updateProgress(qint64 nowNs);
+
+    EngineCore *m_core;
+    PollSettings m_settings;
+    quint64 m_tag;
+    PollRun m_run;
+    EngineCounters m_countersAtStart;
+    QTimer m_timer;
+    qint64 m_startNs = 0;
+    qint64 m_nextDueNs = 0;
+    bool m_started = false;
+    bool m_finished = false;
+};
+
+} // namespace mbscope

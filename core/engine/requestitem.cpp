@@ -1,0 +1,46 @@
+#include "requestitem.h"
+
+#include "protocol/adubuilder.h"
+#include "transport/linkurl.h"
+
+namespace mbscope {
+
+RequestItem RequestItem::fromBytes(const QByteArray &bytes, Framing framing, bool delimited, const QString &name)
+{
+    RequestItem item;
+    item.name = name;
+    item.bytes = bytes;
+    item.framing = framing;
+    item.rule = MatchRule::NextFrame;
+    if (delimited)
+        return item;
+
+    const AduParts parts = AduBuilder::parse(bytes, framing);
+    if (parts.pdu.isEmpty())
+        return item;
+    item.unit = parts.unitId;
+    item.functionCode = quint8(parts.pdu.at(0));
+    switch (framing) {
+    case Framing::Tcp:
+    case Framing::Udp:
+        item.rule = MatchRule::Mbap;
+        item.transactionId = parts.transactionId;
+        break;
+    case Framing::Rtu:
+    case Framing::Ascii:
+        item.rule = MatchRule::UnitFunction;
+        item.broadcast = parts.unitId == 0;
+        break;
+    case Framing::Pdu:
+    case Framing::Auto:
+        break;
+    }
+    return item;
+}
+
+RequestItem RequestItem::forLink(const QByteArray &bytes, const LinkUrl &url, const QString &name)
+{
+    return fromBytes(bytes, url.framing(), url.delimited.enabled, name);
+}
+
+} // namespace mbscope

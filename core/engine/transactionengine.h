@@ -1,0 +1,89 @@
+#pragma once
+
+#include "engineoptions.h"
+#include "engineprogress.h"
+#include "pollreport.h"
+#include "pollsettings.h"
+#include "requestitem.h"
+#include "transaction.h"
+
+#include "transport/linkurl.h"
+
+#include <QtCore/QList>
+#include <QtCore/QObject>
+#include <QtCore/QThread>
+
+#include <functional>
+#include <optional>
+
+namespace mbscope {
+
+class EngineCore;
+class Link;
+class Sweep;
+class TrafficLog;
+
+// Sends requests and measures answers on a thread of its own, which it creates and owns with the
+// link inside it. Every public method is thread-safe: it posts the work to the engine thread and
+// returns at once. Observers only receive: batches of finished transactions and a progress
+// snapshot at most ~30 times a second (EngineOptions::batchIntervalMs), and finished() with the
+// statistics when a poll or sweep ends. Nothing on the receive path waits for them.
+//
+// Headless use (the engine needs an event loop in the calling thread to deliver its signals):
+//   TransactionEngine engine;
+//   engine.setTarget(url);
+//   std::optional<Transaction> t = engine.sendAndWait(RequestItem::forLink(bytes, url));
+// or for a poll: connect finished(), startPoll(settings), run the event loop (or waitForFinished()).
+class TransactionEngine : public QObject
+{
+    Q_OBJECT
+public:
+    using LinkFactory = std::function<Link *(const LinkUrl &url, QObject *parent)>;
+
+    explicit TransactionEngine(QObject *parent = nullptr);
+    ~TransactionEngine() override;
+
+    // Makes the links (default: Link::create). Called in the engine thread; for tests.
+    void setLinkFactory(LinkFactory factory);
+    // The device to talk to. The link opens on the first request and again on the next request
+    // after it closed.
+    void setTarget(const LinkUrl &url, const EngineOptions &options = {});
+    // Every frame in and out and every transaction go to the log; it is used from the engine
+    // thread from now on (until setTrafficLog(nullptr) returns), so it must outlive that.
+    void setTrafficLog(TrafficLog *log);
+
+    // Queues one request; returns the id its Transaction will carry (Transaction::id).
+    quint64 send(const RequestItem &item);
+    // Sends and waits, running a local event loop, until the transaction is recorded or waitMs
+    // passes (-1: the request's timeouts and retries, plus the connect timeout, plus a margin).
+    // Call it from the thread that owns the engine.
+    [[nodiscard]] std::optional<Transaction> sendAndWait(const RequestItem &item, int waitMs = -1);
+
+    // Starts a poll or a sweep (stopping one that runs: its finished() comes first).
+    void startPoll(const PollSettings &settings);
+    void startSweep(const SweepSettings &settings);
+    // Stops a poll or sweep promptly: requests in flight are abandoned, finished() still
+    // delivers the statistics so far. Safe to call from any thread (a Ctrl-C handler's event).
+    void stop();
+    // Runs a local event loop until finished() (or waitMs, -1: no limit); returns the report.
+    [[nodiscard]] std::optional<PollReport> waitForFinished(int waitMs = -1);
+    // Closes the link now; requests in flight end as link errors.
+    void closeLink();
+
+signals:
+    void transactionsFinished(const QList<mbscope::Transaction> &transactions);
+    void progress(const mbscope::EngineProgress &progress);
+    void finished(const mbscope::PollReport &report);
+    // What the link said when it failed or closed with requests in flight.
+    void linkMessage(const QString &message);
+
+private:
+    void startRuns(const SweepSettings &settings, bool isSweep);
+
+    QThread m_thread;
+    EngineCore *m_core;       // lives in m_thread
+    Sweep *m_sweep = nullptr; // engine thread only
+    LinkUrl m_url;            // caller's thread: for sendAndWait's default wait
+};
+
+} // namespace mbscope
