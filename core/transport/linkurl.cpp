@@ -97,13 +97,16 @@ std::optional<qint64> parseDuration(QStringView text, qint64 defaultUnitNs)
             break;
         }
     }
-    if (digits.isEmpty() || digits.size() > 12)
+    if (digits.isEmpty() || digits.size() > 18)
         return std::nullopt;
     for (QChar c : digits) {
         if (c < u'0' || c > u'9')
             return std::nullopt;
     }
-    return digits.toLongLong() * unit;
+    // Beyond 10^18 ns (31 years) every caller says "out of range"; clamping avoids overflow.
+    constexpr qint64 kHuge = 1'000'000'000'000'000'000LL;
+    const qint64 value = digits.toLongLong();
+    return value > kHuge / unit ? kHuge : value * unit;
 }
 
 QString durationError(const QString &key, const QString &value)
@@ -184,7 +187,7 @@ QString parseHostPort(QStringView authority, LinkUrl &url)
             portText = portText.first(slash);
     }
     if (!rest.isEmpty() && rest != u"/")
-        return QStringLiteral("unexpected path '%1': a %2 link has no path").arg(rest.toString(), scheme);
+        return QStringLiteral("unexpected path '%1': %2 links have no path").arg(rest.toString(), scheme);
     if (hasPort) {
         if (portText.isEmpty())
             return QStringLiteral("no port after ':': expected a number 1-65535");
@@ -343,10 +346,10 @@ QString parseOptions(QStringView query, LinkUrl &url)
                 if (inScope(o.scope, url.kind))
                     known.append(QLatin1String(o.key));
             }
-            return QStringLiteral("unknown option '%1': a %2 link takes %3").arg(key, scheme, known.join(QStringLiteral(", ")));
+            return QStringLiteral("unknown option '%1': %2 links take %3").arg(key, scheme, known.join(QStringLiteral(", ")));
         }
         if (!inScope(option->scope, url.kind))
-            return QStringLiteral("'%1' is an option of %2, not of a %3 link").arg(key, scopeText(option->scope), scheme);
+            return QStringLiteral("'%1' is an option of %2, not of %3 links").arg(key, scopeText(option->scope), scheme);
         if (seen.contains(key))
             return QStringLiteral("option '%1' is given twice").arg(key);
         seen.insert(key);
