@@ -1,6 +1,7 @@
 #include "adudissectors.h"
 
 #include "checksum.h"
+#include "hexformat.h"
 #include "pdudissector.h"
 
 namespace mbscope::adu {
@@ -23,7 +24,7 @@ QString charName(char c)
     const auto u = quint8(c);
     if (u >= 0x20 && u < 0x7F)
         return QStringLiteral("'%1'").arg(QLatin1Char(c));
-    return QStringLiteral("0x%1").arg(QString::number(u, 16).toUpper().rightJustified(2, QLatin1Char('0')));
+    return hexByte(u);
 }
 
 } // namespace
@@ -113,9 +114,8 @@ void dissectAscii(Dissection &out, const RequestInfo &request)
             const int l = tree.add(-1, "ascii.lrc", "LRC", m - 1, 1, sent, ValueFormat::Hex, sent == computed ? "(valid)" : "(wrong)");
             if (sent != computed)
                 tree.flag(l, Severity::Error,
-                          QStringLiteral("LRC 0x%1 does not match the 0x%2 computed over the decoded bytes 0-%3")
-                              .arg(QString::number(sent, 16).toUpper().rightJustified(2, QLatin1Char('0')),
-                                   QString::number(computed, 16).toUpper().rightJustified(2, QLatin1Char('0')))
+                          QStringLiteral("LRC %1 does not match the %2 computed over the decoded bytes 0-%3")
+                              .arg(hexByte(sent), hexByte(computed))
                               .arg(m - 2));
         }
     }

@@ -1,6 +1,7 @@
 #include "adubuilder.h"
 
 #include "checksum.h"
+#include "hexformat.h"
 
 namespace mbscope {
 
@@ -18,11 +19,6 @@ void appendBigEndian16(QByteArray &out, quint16 value)
 {
     out.append(char(value >> 8));
     out.append(char(value & 0xFF));
-}
-
-QString hexByte(char value)
-{
-    return QString::number(quint8(value), 16).toUpper().rightJustified(2, QLatin1Char('0'));
 }
 
 void appendHexByte(QByteArray &out, quint8 value)
@@ -182,16 +178,16 @@ AduParts AduBuilder::parseAscii(QByteArrayView adu)
         const int low = hexDigitValue(adu[at + 1]);
         if (high < 0 || low < 0) {
             const qsizetype bad = high < 0 ? at : at + 1;
-            digitError = QStringLiteral("character %1 (0x%2) is not a hex digit")
+            digitError = QStringLiteral("character %1 (%2) is not a hex digit")
                              .arg(bad)
-                             .arg(hexByte(adu[bad]));
+                             .arg(hexByte(quint8(adu[bad])));
             break;
         }
         binary.append(char(high << 4 | low));
     }
     if (digitError.isEmpty() && at < digitsEnd) {
         digitError = hexDigitValue(adu[at]) < 0
-            ? QStringLiteral("character %1 (0x%2) is not a hex digit").arg(at).arg(hexByte(adu[at]))
+            ? QStringLiteral("character %1 (%2) is not a hex digit").arg(at).arg(hexByte(quint8(adu[at])))
             : QStringLiteral("odd number of hex digits (%1)").arg(digitsEnd - 1);
     }
 

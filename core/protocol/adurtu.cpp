@@ -1,17 +1,13 @@
 #include "adudissectors.h"
 
 #include "checksum.h"
+#include "hexformat.h"
 #include "pdudissector.h"
 #include "pdusize.h"
 
 namespace mbscope::adu {
 
 namespace {
-
-QString hex16(quint16 v)
-{
-    return QStringLiteral("0x") + QString::number(v, 16).toUpper().rightJustified(4, QLatin1Char('0'));
-}
 
 // MODBUS over Serial Line v1.02, 2.2: 0 is the broadcast address, 1-247 are server addresses
 // and 248-255 are reserved.
@@ -71,9 +67,9 @@ void dissectRtu(Dissection &out, const RequestInfo &request)
     if (!crcOk) {
         tree.flag(c, Severity::Error,
                   QStringLiteral("CRC %1 does not match the %2 computed over bytes 0-%3; a correct frame ends %4 %5")
-                      .arg(hex16(sent), hex16(computed)).arg(crcAt - 1)
-                      .arg(QString::number(computed & 0xFF, 16).toUpper().rightJustified(2, QLatin1Char('0')),
-                           QString::number(computed >> 8, 16).toUpper().rightJustified(2, QLatin1Char('0'))));
+                      .arg(hexWord(sent), hexWord(computed)).arg(crcAt - 1)
+                      .arg(hexDigits(computed & 0xFF, 2),
+                           hexDigits(computed >> 8, 2)));
     }
 
     if (frameEnd < n) {

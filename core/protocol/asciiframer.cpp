@@ -1,15 +1,9 @@
 #include "asciiframer.h"
 
 #include "adubuilder.h"
+#include "hexformat.h"
 
 namespace mbscope {
-
-namespace {
-QString hexByte(char value)
-{
-    return QString::number(quint8(value), 16).toUpper().rightJustified(2, QLatin1Char('0'));
-}
-} // namespace
 
 AsciiFramer::AsciiFramer(char endCharacter)
     : m_end(endCharacter)
@@ -65,7 +59,7 @@ void AsciiFramer::emitChecked(qsizetype length)
         const int low = i + 1 < digitsEnd ? AduBuilder::hexDigitValue(frame[i + 1]) : 0;
         if (high < 0 || low < 0) {
             const qsizetype bad = high < 0 ? i : i + 1;
-            problem = QStringLiteral("character %1 (0x%2) is not a hex digit").arg(bad).arg(hexByte(frame[bad]));
+            problem = QStringLiteral("character %1 (%2) is not a hex digit").arg(bad).arg(hexByte(quint8(frame[bad])));
             break;
         }
         lastByte = quint8(high << 4 | low);
@@ -80,8 +74,8 @@ void AsciiFramer::emitChecked(qsizetype length)
             problem = QStringLiteral("%1 hex digits: a frame needs at least 6 (unit id, function code, LRC)")
                           .arg(digits);
         else if (sum != 0)
-            problem = QStringLiteral("LRC 0x%1 does not match 0x%2 computed over the unit id and PDU")
-                          .arg(hexByte(char(lastByte)), hexByte(char(lastByte - sum)));
+            problem = QStringLiteral("LRC %1 does not match %2 computed over the unit id and PDU")
+                          .arg(hexByte(lastByte), hexByte(quint8(lastByte - sum)));
     }
     emitFrame(length, problem.isEmpty() ? FrameStatus::Valid : FrameStatus::Malformed, problem);
 }

@@ -1,6 +1,7 @@
 #include "dissection.h"
 
 #include "functioncode.h"
+#include "hexformat.h"
 
 namespace mbscope {
 
@@ -42,7 +43,7 @@ QString Dissection::summary() const
         text += QStringLiteral(": %1 exception").arg(QString::fromLatin1(functionName(code & 0x7F)));
         const int e = t.indexOf("modbus.exception_code");
         if (e >= 0 && t.at(e).length > 0)
-            text += QStringLiteral(" 0x%1 %2").arg(QString::number(t.at(e).value, 16).toUpper().rightJustified(2, QLatin1Char('0')),
+            text += QStringLiteral(" %1 %2").arg(hexByte(t.at(e).value),
                                                    QString::fromLatin1(exceptionName(quint8(t.at(e).value))));
     } else {
         text += QStringLiteral(": ") + QString::fromLatin1(functionName(code));

@@ -2,6 +2,7 @@
 
 #include "adudissectors.h"
 #include "checksum.h"
+#include "hexformat.h"
 
 namespace mbscope {
 
@@ -145,8 +146,8 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
     const int code = functionCodeOf(out);
     if (code >= 0x80) {
         out = asResponse;
-        out.directionReason = QStringLiteral("function code 0x%1 has bit 7 set: an exception, which only a response carries")
-                                  .arg(QString::number(code, 16).toUpper());
+        out.directionReason = QStringLiteral("function code %1 has bit 7 set: an exception, which only a response carries")
+                                  .arg(hexByte(quint64(code)));
         return;
     }
     const Score req = score(out.fields);

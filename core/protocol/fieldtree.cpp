@@ -1,5 +1,7 @@
 #include "fieldtree.h"
 
+#include "hexformat.h"
+
 #include <cstring>
 
 namespace mbscope {
@@ -113,10 +115,10 @@ QString FieldTree::name(int index) const
     return n;
 }
 
-static QString hexDigits(quint64 value, int bytes)
+// Hex as wide as the field: two digits per byte.
+static QString hexOfWidth(quint64 value, int bytes)
 {
-    const int width = qBound(1, bytes, 8) * 2;
-    return QStringLiteral("0x") + QString::number(value, 16).toUpper().rightJustified(width, QLatin1Char('0'));
+    return hex(value, 2 * qBound(1, bytes, 8));
 }
 
 QString FieldTree::valueText(int index) const
@@ -129,7 +131,7 @@ QString FieldTree::valueText(int index) const
     case ValueFormat::Bit:
         return QString::number(f.value);
     case ValueFormat::Hex:
-        return hexDigits(f.value, f.length);
+        return hexOfWidth(f.value, f.length);
     case ValueFormat::Reference5: {
         // Show the six-digit form beside it: 40122 / 400122.
         const quint64 six = (f.value / 10000) * 100000 + f.value % 10000;
@@ -139,7 +141,7 @@ QString FieldTree::valueText(int index) const
     case ValueFormat::Reference6:
         return QString::number(f.value).rightJustified(6, QLatin1Char('0'));
     case ValueFormat::DecimalHex:
-        return QString::number(f.value) + QStringLiteral(" (") + hexDigits(f.value, f.length) + QLatin1Char(')');
+        return QString::number(f.value) + QStringLiteral(" (") + hexOfWidth(f.value, f.length) + QLatin1Char(')');
     case ValueFormat::Bytes:
         return QString::fromLatin1(raw(index).toHex(' ').toUpper());
     case ValueFormat::Ascii: {
@@ -151,7 +153,7 @@ QString FieldTree::valueText(int index) const
             else if (u >= 0x20 && u < 0x7f)
                 text += QLatin1Char(c);
             else
-                text += QStringLiteral("\\x") + QString::number(u, 16).toUpper().rightJustified(2, QLatin1Char('0'));
+                text += QStringLiteral("\\x") + hexDigits(u, 2);
         }
         return text + QLatin1Char('"');
     }

@@ -1,5 +1,7 @@
 #include "hextext.h"
 
+#include "hexformat.h"
+
 namespace mbscope {
 
 namespace {
@@ -50,10 +52,10 @@ QString describeCharacter(QStringView text, qsizetype at)
     if (c.isHighSurrogate() && at + 1 < text.size() && text[at + 1].isLowSurrogate()) {
         const char32_t ucs4 = QChar::surrogateToUcs4(c, text[at + 1]);
         return QLatin1Char('\'') + text.sliced(at, 2).toString() + QLatin1String("' (U+")
-            + QString::number(uint(ucs4), 16).toUpper().rightJustified(4, QLatin1Char('0')) + QLatin1Char(')');
+            + hexDigits(uint(ucs4), 4) + QLatin1Char(')');
     }
     const QString code = QLatin1String("U+")
-        + QString::number(uint(c.unicode()), 16).toUpper().rightJustified(4, QLatin1Char('0'));
+        + hexDigits(c.unicode(), 4);
     if (c.isSpace())
         return code + QLatin1String(" (a space character other than space, tab or newline)");
     if (!c.isPrint())

@@ -1,5 +1,7 @@
 #include "modiconreference.h"
 
+#include "hexformat.h"
+
 namespace mbscope {
 
 namespace {
@@ -73,9 +75,9 @@ QString ModiconReference::sixDigit() const
 
 QString ModiconReference::describe() const
 {
-    QString text = QStringLiteral("PDU address %1 (0x%2), %3 %4, Modicon ")
+    QString text = QStringLiteral("PDU address %1 (%2), %3 %4, Modicon ")
                        .arg(m_address)
-                       .arg(QString::number(m_address, 16).toUpper().rightJustified(4, QLatin1Char('0')))
+                       .arg(hexWord(m_address))
                        .arg(QLatin1String(numberName(m_table)))
                        .arg(number());
     if (hasFiveDigitForm())

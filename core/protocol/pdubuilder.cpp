@@ -1,6 +1,7 @@
 #include "pdubuilder.h"
 
 #include "functioncode.h"
+#include "hexformat.h"
 
 namespace mbscope {
 
@@ -29,7 +30,7 @@ void PduBuilder::addError(const QString &parameter, const QString &message)
 
 QString PduBuilder::hex(qint64 value, int digits)
 {
-    return QStringLiteral("0x") + QString::number(value, 16).toUpper().rightJustified(digits, QLatin1Char('0'));
+    return mbscope::hex(quint64(value), digits);
 }
 
 bool PduBuilder::checkRange(const QString &parameter, const QString &label, qint64 value, qint64 min,

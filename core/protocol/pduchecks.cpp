@@ -27,12 +27,6 @@ QString lowerFirst(const QString &name)
 
 } // namespace
 
-QString hex(quint64 value, int bytes)
-{
-    const int width = qBound(1, bytes, 8) * 2;
-    return QStringLiteral("0x") + QString::number(value, 16).toUpper().rightJustified(width, QLatin1Char('0'));
-}
-
 QString amount(qint64 n, const char *singular, const char *plural)
 {
     return QString::number(n) + QLatin1Char(' ') + QLatin1String(n == 1 ? singular : plural);
@@ -40,17 +34,18 @@ QString amount(qint64 n, const char *singular, const char *plural)
 
 QString valueText(quint64 value, ValueFormat format, int bytes)
 {
+    const int digits = 2 * qBound(1, bytes, 8);
     switch (format) {
     case ValueFormat::Hex:
-        return hex(value, bytes);
+        return hex(value, digits);
     case ValueFormat::DecimalHex:
-        return QString::number(value) + QStringLiteral(" (") + hex(value, bytes) + QLatin1Char(')');
+        return QString::number(value) + QStringLiteral(" (") + hex(value, digits) + QLatin1Char(')');
     case ValueFormat::Bytes: {
         QString text;
         for (int i = qBound(1, bytes, 8) - 1; i >= 0; --i) {
             if (!text.isEmpty())
                 text += QLatin1Char(' ');
-            text += QString::number((value >> (8 * i)) & 0xFF, 16).toUpper().rightJustified(2, QLatin1Char('0'));
+            text += hexDigits((value >> (8 * i)) & 0xFF, 2);
         }
         return text;
     }
@@ -120,7 +115,7 @@ void checkQuantity(const PduContext &ctx, int field, int quantity, int max, cons
     ctx.tree.flag(field, Severity::Error,
                   QStringLiteral("%1 %2 is out of range: %3 allows 1-%4 (0x0001-%5)")
                       .arg(QLatin1String(label), QString::number(quantity), functionLabel(ctx),
-                           QString::number(max), hex(quint64(max), 2)));
+                           QString::number(max), hexWord(quint64(max))));
 }
 
 void checkRange(const PduContext &ctx, int field, int start, int quantity, const char *label)
@@ -203,7 +198,7 @@ void bitBlock(const PduContext &ctx, int parent, int dataOffset, int byteCount, 
                 ctx.tree.flag(f, Severity::Warning,
                               QStringLiteral("padding bits are %1, expected 0: the %2 of the last data byte "
                                              "beyond the quantity should be zero")
-                                  .arg(hex(pad, 1), amount(8 - used, "unused high bit", "unused high bits")));
+                                  .arg(hexByte(pad), amount(8 - used, "unused high bit", "unused high bits")));
             }
         }
     } else {

@@ -3,6 +3,7 @@
 // Private helpers shared by the data-access dissectors (pdureadbits.cpp ... pdureadwrite.cpp).
 // Not part of the core's API: include only from core/protocol/pdu*.cpp.
 
+#include "hexformat.h"
 #include "pducontext.h"
 
 #include <QtCore/QString>
@@ -69,9 +70,8 @@ void bitBlock(const PduContext &ctx, int parent, int dataOffset, int byteCount, 
 // not have is a mismatch too (15 echoes the whole request).
 void checkEcho(const PduContext &ctx, int firstField, bool strict);
 
-// Text for messages only (allocates): "121 (0x0079)", "0xFF00", "3 bytes".
+// Text for messages only (allocates): "121 (0x0079)", "0xFF00", "3 bytes" (hex: hexformat.h).
 [[nodiscard]] QString valueText(quint64 value, ValueFormat format, int bytes);
-[[nodiscard]] QString hex(quint64 value, int bytes);
 [[nodiscard]] QString amount(qint64 n, const char *singular, const char *plural);
 [[nodiscard]] QString functionLabel(const PduContext &ctx); // "Read Coils"
 

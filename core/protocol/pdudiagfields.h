@@ -5,21 +5,12 @@
 // one wording, and format hex for messages. Messages are built only when something is flagged,
 // so the no-problem path allocates nothing.
 
+#include "hexformat.h"
 #include "pducontext.h"
 
 #include <QtCore/QString>
 
 namespace mbscope::pdu::diag {
-
-[[nodiscard]] inline QString hexByte(quint32 value)
-{
-    return QStringLiteral("0x") + QString::number(value & 0xFFu, 16).toUpper().rightJustified(2, QLatin1Char('0'));
-}
-
-[[nodiscard]] inline QString hexWord(quint32 value)
-{
-    return QStringLiteral("0x") + QString::number(value & 0xFFFFu, 16).toUpper().rightJustified(4, QLatin1Char('0'));
-}
 
 [[nodiscard]] inline QString byteCount(int n)
 {

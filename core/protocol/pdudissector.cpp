@@ -1,9 +1,10 @@
 #include "pdudissector.h"
 
 #include "functioncode.h"
+#include "hexformat.h"
+#include "pdudiagfields.h"
 
 #include <cstring>
-#include "pdudiagfields.h"
 
 namespace mbscope::pdu {
 
@@ -73,8 +74,8 @@ void dissect(const PduContext &ctx)
     }
     if (ctx.hasRequest() && ctx.direction == Direction::Response && ctx.requestByte(0) != base) {
         ctx.tree.flag(f, Severity::Error,
-                      QStringLiteral("does not match the request: the request's function code is 0x%1")
-                          .arg(QString::number(ctx.requestByte(0), 16).toUpper().rightJustified(2, QLatin1Char('0'))));
+                      QStringLiteral("does not match the request: the request's function code is %1")
+                          .arg(hexByte(ctx.requestByte(0))));
     }
     const int first = ctx.tree.size();
     bool handled = true;
@@ -131,22 +132,22 @@ void dissectException(const PduContext &ctx)
     case FunctionKind::UserDefined:
         // A device may well reject its own user-defined functions with an exception.
         ctx.tree.flag(f, Severity::Info,
-                      QStringLiteral("exception for user-defined function %1 (65-72, 100-110)").arg(diag::hexByte(base)));
+                      QStringLiteral("exception for user-defined function %1 (65-72, 100-110)").arg(hexByte(base)));
         break;
     case FunctionKind::Reserved:
         ctx.tree.flag(f, Severity::Warning,
-                      QStringLiteral("exception for function %1, a reserved function code").arg(diag::hexByte(base)));
+                      QStringLiteral("exception for function %1, a reserved function code").arg(hexByte(base)));
         break;
     default:
         ctx.tree.flag(f, Severity::Warning,
-                      QStringLiteral("exception for function %1, which the specification does not assign").arg(diag::hexByte(base)));
+                      QStringLiteral("exception for function %1, which the specification does not assign").arg(hexByte(base)));
         break;
     }
     const int r = ctx.add("modbus.request_function_code", "Function in error", 0, 1, base, ValueFormat::Hex, functionName(base));
     if (ctx.hasRequest() && ctx.requestByte(0) != base) {
         ctx.tree.flag(r, Severity::Error,
                       QStringLiteral("does not match the request: the request's function code is %1, the exception is for %2")
-                          .arg(diag::hexByte(ctx.requestByte(0)), diag::hexByte(base)));
+                          .arg(hexByte(ctx.requestByte(0)), hexByte(base)));
     }
     if (ctx.direction == Direction::Request) {
         ctx.tree.flag(f, Severity::Error, QStringLiteral("an exception code (0x80 set) can only appear in a response"));
@@ -159,14 +160,14 @@ void dissectException(const PduContext &ctx)
     if (!isKnownException(code)) {
         ctx.tree.flag(e, Severity::Warning,
                       QStringLiteral("%1 is not an exception code the specification defines (0x01-0x08, 0x0A, 0x0B)")
-                          .arg(diag::hexByte(code)));
+                          .arg(hexByte(code)));
     } else if (code == 0x07) {
         ctx.tree.flag(e, Severity::Info,
                       QStringLiteral("0x07 Negative Acknowledge is a legacy Modicon code, not in V1.1b3's table (7)"));
     } else if (code == 0x08 && base != 0x14 && base != 0x15) {
         ctx.tree.flag(e, Severity::Info,
                       QStringLiteral("V1.1b3 (7) defines Memory Parity Error for Read/Write File Record (0x14, 0x15), "
-                                     "this exception is for %1").arg(diag::hexByte(base)));
+                                     "this exception is for %1").arg(hexByte(base)));
     }
     diag::addTrailing(ctx, 2);
 }

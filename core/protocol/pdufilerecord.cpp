@@ -86,7 +86,7 @@ int byteCountField(const PduContext &ctx, int min, int max)
         ctx.tree.flag(bc, Severity::Error,
                       QStringLiteral("byte count %1 is out of range: %2 allows %3-%4 (%5-%6)")
                           .arg(QString::number(byteCount), functionLabel(ctx), QString::number(min),
-                               QString::number(max), hex(quint64(min), 1), hex(quint64(max), 1)));
+                               QString::number(max), hexByte(quint64(min)), hexByte(quint64(max))));
     }
     return bc;
 }

@@ -38,7 +38,7 @@ void dissectWriteSingleCoil(const PduContext &ctx)
             ctx.tree.flag(f[1], Severity::Error,
                           QStringLiteral("output value %1 is not allowed: Write Single Coil takes 0xFF00 (ON) "
                                          "or 0x0000 (OFF)")
-                              .arg(hex(value, 2)));
+                              .arg(hexWord(value)));
         }
         trailing(ctx, 5);
     }

@@ -1,5 +1,7 @@
 #include "registervalue.h"
 
+#include "hexformat.h"
+
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -99,7 +101,7 @@ bool decodeAscii(QStringView text, QByteArray *bytes, QString *error)
         if (c.unicode() > 0x7F) {
             *error = QStringLiteral("character %1 (U+%2) is not ASCII; write a byte above 0x7F as \\xNN")
                          .arg(position)
-                         .arg(QString::number(c.unicode(), 16).toUpper().rightJustified(4, QLatin1Char('0')));
+                         .arg(hexDigits(c.unicode(), 4));
             return false;
         }
         if (c != u'\\') {
@@ -434,7 +436,7 @@ QString RegisterValue::toText() const
 {
     switch (m_format.type()) {
     case RegisterType::Hex16:
-        return QLatin1String("0x") + QString::number(m_bits, 16).toUpper().rightJustified(4, QLatin1Char('0'));
+        return hex(m_bits, 4);
     case RegisterType::Binary16: {
         QString out = QStringLiteral("0b");
         for (int bit = 15; bit >= 0; --bit) {

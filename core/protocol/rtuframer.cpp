@@ -1,6 +1,7 @@
 #include "rtuframer.h"
 
 #include "checksum.h"
+#include "hexformat.h"
 #include "pdusize.h"
 
 #include <array>
@@ -285,9 +286,9 @@ void RtuFramer::flushPending()
                 emitFrame(bytes.size(), FrameStatus::Truncated, problem);
             } else {
                 emitFrame(bytes.size(), FrameStatus::Unverified,
-                          QStringLiteral("function code 0x%1 has no length rule: the frame was ended by the "
+                          QStringLiteral("function code %1 has no length rule: the frame was ended by the "
                                          "silence and no CRC in it is valid")
-                              .arg(QString::number(quint8(bytes[1]), 16).toUpper().rightJustified(2, QLatin1Char('0'))));
+                              .arg(hexByte(quint8(bytes[1]))));
             }
         } else {
             skip(bytes.size(), SkipReason::Incomplete, !m_atBoundary);
