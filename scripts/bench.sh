@@ -29,4 +29,4 @@ if command -v taskset >/dev/null 2>&1 && [ "$cpu" -lt "$(nproc)" ]; then
 else
     echo "bench.sh: not pinned (taskset missing or CPU $cpu absent)" >&2
 fi
-exec $pin "$bench" --benchmark_counters_tabular=true "$@"
+exec $pin "$bench" "$@"
