@@ -1,5 +1,7 @@
 #include "enginecore.h"
 
+#include "trafficlog.h"
+
 #include "protocol/streamframer.h"
 #include "transport/monotonicclock.h"
 
@@ -38,11 +40,17 @@ EngineCore::EngineCore(QObject *parent)
     , m_silenceTimer(this)
     , m_openTimer(this)
     , m_batchTimer(this)
+    , m_journalTimer(this)
 {
     setUpTimer(m_deadlineTimer);
     setUpTimer(m_silenceTimer);
     setUpTimer(m_openTimer);
     setUpTimer(m_batchTimer);
+    m_journalTimer.setInterval(50);
+    connect(&m_journalTimer, &QTimer::timeout, this, [this] {
+        if (m_log)
+            m_log->flushIfDue(monotonicNowNs());
+    });
     connect(&m_deadlineTimer, &QTimer::timeout, this, &EngineCore::onDeadline);
     connect(&m_silenceTimer, &QTimer::timeout, this, &EngineCore::onSilence);
     connect(&m_batchTimer, &QTimer::timeout, this, &EngineCore::flushBatch);
@@ -75,6 +83,7 @@ void EngineCore::setTarget(const LinkUrl &url, const EngineOptions &options)
     m_stamps.clear();
     m_timedOut.clear();
     m_answered.clear();
+    attachLog();
 }
 
 int EngineCore::pipelineDepth() const
@@ -227,7 +236,7 @@ void EngineCore::sendNext()
     m_inFlight.append(std::move(p));
     ++m_counters.requestsSent;
     m_counters.bytesOut += quint64(bytes.size());
-    logOutgoing(bytes, m_inFlight.constLast().writeStartNs);
+    logOutgoing(bytes, m_inFlight.constLast().writeStartNs, id);
     if (!m_link->write(bytes)) {
         const qsizetype i = indexOfId(id);
         if (i >= 0)

@@ -7,6 +7,7 @@
 #include "requestitem.h"
 #include "responsematcher.h"
 #include "responseverdict.h"
+#include "trafficentry.h"
 #include "transaction.h"
 
 #include "transport/link.h"
@@ -48,7 +49,7 @@ public:
     void setLinkFactory(LinkFactory factory) { m_factory = std::move(factory); }
     // Closes the current link; the next request opens one to the new target.
     void setTarget(const LinkUrl &url, const EngineOptions &options);
-    void setTrafficLog(TrafficLog *log) { m_log = log; }
+    void setTrafficLog(TrafficLog *log);
     [[nodiscard]] const LinkUrl &target() const { return m_url; }
     [[nodiscard]] const EngineOptions &options() const { return m_options; }
 
@@ -127,14 +128,15 @@ private:
     void answer(qsizetype index, const StreamFrame &frame, qint64 firstNs, qint64 lastNs);
     [[nodiscard]] bool tryLate(const StreamFrame &frame, const FrameKeys &keys, qint64 firstNs, qint64 lastNs);
     [[nodiscard]] bool isDuplicate(const FrameKeys &keys) const;
-    void unsolicited(const QByteArray &bytes, qint64 firstNs, qint64 lastNs, const char *verdict);
+    void unsolicited(const QByteArray &bytes, qint64 firstNs);
     void onSilence();
     void armSilence();
     [[nodiscard]] qint64 flushPartial(); // flushes the framer; returns the bytes it held
 
     // enginelog.cpp: the traffic log, when one is attached
-    void logOutgoing(const QByteArray &bytes, qint64 ns);
-    void logIncoming(const QByteArray &bytes, qint64 firstNs, qint64 lastNs, const QString &verdict);
+    void attachLog();
+    void logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id);
+    void logIncoming(const QByteArray &bytes, qint64 firstNs, TrafficVerdict verdict, quint64 id = 0);
     void logTransaction(const Transaction &transaction);
 
     LinkUrl m_url;
@@ -142,6 +144,7 @@ private:
     LinkFraming m_framing;
     LinkFactory m_factory;
     TrafficLog *m_log = nullptr;
+    quint16 m_logLink = 0;
     Link *m_link = nullptr;
     bool m_opening = false;
     std::unique_ptr<StreamFramer> m_framer;
@@ -159,6 +162,7 @@ private:
     QTimer m_silenceTimer;
     QTimer m_openTimer;
     QTimer m_batchTimer;
+    QTimer m_journalTimer; // journal batches reach the disk within their batch time on a quiet link
     bool m_pumpScheduled = false;
     bool m_pumping = false;
     bool m_deferPump = false;      // inside a link callback: pump from the event loop

@@ -1,24 +1,49 @@
 #include "enginecore.h"
 
+#include "trafficlog.h"
+
+#include "transport/monotonicclock.h"
+
 namespace mbscope {
 
-void EngineCore::logOutgoing(const QByteArray &bytes, qint64 ns)
+void EngineCore::setTrafficLog(TrafficLog *log)
 {
-    Q_UNUSED(bytes);
-    Q_UNUSED(ns);
+    if (m_log && m_log != log)
+        m_log->flush();
+    m_log = log;
+    attachLog();
 }
 
-void EngineCore::logIncoming(const QByteArray &bytes, qint64 firstNs, qint64 lastNs, const QString &verdict)
+void EngineCore::attachLog()
 {
-    Q_UNUSED(bytes);
-    Q_UNUSED(firstNs);
-    Q_UNUSED(lastNs);
-    Q_UNUSED(verdict);
+    if (!m_log) {
+        m_journalTimer.stop();
+        return;
+    }
+    m_logLink = m_log->addLink(m_url.toString());
+    m_journalTimer.start();
+}
+
+void EngineCore::logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id)
+{
+    if (m_log)
+        m_log->append(ns, TrafficDirection::Out, m_logLink, TrafficVerdict::Sent, id, bytes);
+}
+
+void EngineCore::logIncoming(const QByteArray &bytes, qint64 firstNs, TrafficVerdict verdict, quint64 id)
+{
+    if (m_log)
+        m_log->append(firstNs, TrafficDirection::In, m_logLink, verdict, id, bytes);
 }
 
 void EngineCore::logTransaction(const Transaction &transaction)
 {
-    Q_UNUSED(transaction);
+    // A transaction whose answer was logged carries its verdict on that frame. One without an
+    // answer (timeout, link error, broadcast) is logged as an empty frame in with its verdict,
+    // so that the log holds every transaction's outcome.
+    if (!m_log || !transaction.response.isEmpty())
+        return;
+    m_log->append(monotonicNowNs(), TrafficDirection::In, m_logLink, trafficVerdict(transaction.status), transaction.id, {});
 }
 
 } // namespace mbscope

@@ -106,13 +106,12 @@ void EngineCore::handleSkipped(const SkippedBytes &run, qint64 firstNs, qint64 l
                 v.problem = QStringLiteral("the answer's bytes could not be delimited as an RTU frame (%1)")
                                 .arg(QString::fromLatin1(skipReasonName(run.reason)));
             }
-            logIncoming(run.bytes, firstNs, lastNs, transactionStatusName(v.status));
+            logIncoming(run.bytes, firstNs, trafficVerdict(v.status), p.out.id);
             finish(i, v.status, v.problem, run.bytes, firstNs, lastNs, v.exceptionCode);
             return;
         }
     }
-    logIncoming(run.bytes, firstNs, lastNs,
-                QStringLiteral("skipped: ") + QString::fromLatin1(skipReasonName(run.reason)));
+    logIncoming(run.bytes, firstNs, TrafficVerdict::Garbage);
 }
 
 void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 lastNs)
@@ -142,7 +141,7 @@ void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 la
         const Pending &p = m_inFlight.at(candidate);
         if (p.out.item.broadcast) {
             const QString problem = QStringLiteral("an answer came to a broadcast (unit 0 is never answered: Serial Line V1.02, 2.1)");
-            logIncoming(frame.bytes, firstNs, lastNs, transactionStatusName(TransactionStatus::Unexpected));
+            logIncoming(frame.bytes, firstNs, TrafficVerdict::Unexpected, p.out.id);
             finish(candidate, TransactionStatus::Unexpected, problem, frame.bytes, firstNs, lastNs);
             return;
         }
@@ -156,10 +155,10 @@ void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 la
             return;
         if (isDuplicate(keys)) {
             ++m_counters.duplicateFrames;
-            unsolicited(frame.bytes, firstNs, lastNs, "duplicate");
+            unsolicited(frame.bytes, firstNs);
             return;
         }
-        logIncoming(frame.bytes, firstNs, lastNs, transactionStatusName(TransactionStatus::Unexpected));
+        logIncoming(frame.bytes, firstNs, TrafficVerdict::Unexpected, p.out.id);
         finish(candidate, TransactionStatus::Unexpected, match.problem, frame.bytes, firstNs, lastNs);
         return;
     }
@@ -167,16 +166,16 @@ void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 la
         return;
     if (isDuplicate(keys)) {
         ++m_counters.duplicateFrames;
-        unsolicited(frame.bytes, firstNs, lastNs, "duplicate");
+        unsolicited(frame.bytes, firstNs);
         return;
     }
-    unsolicited(frame.bytes, firstNs, lastNs, "unsolicited");
+    unsolicited(frame.bytes, firstNs);
 }
 
 void EngineCore::answer(qsizetype index, const StreamFrame &frame, qint64 firstNs, qint64 lastNs)
 {
     const ResponseVerdict::Result v = m_verdict->judge(frame, m_inFlight.at(index).sent);
-    logIncoming(frame.bytes, firstNs, lastNs, transactionStatusName(v.status));
+    logIncoming(frame.bytes, firstNs, trafficVerdict(v.status), m_inFlight.at(index).out.id);
     finish(index, v.status, v.problem, frame.bytes, firstNs, lastNs, v.exceptionCode);
 }
 
@@ -208,7 +207,7 @@ bool EngineCore::tryLate(const StreamFrame &frame, const FrameKeys &keys, qint64
         if (v.status != TransactionStatus::Ok)
             t.problem += QStringLiteral("; the answer itself: %1%2%3")
                              .arg(transactionStatusName(v.status), v.problem.isEmpty() ? QString() : QStringLiteral(": "), v.problem);
-        logIncoming(frame.bytes, firstNs, lastNs, transactionStatusName(TransactionStatus::Late));
+        logIncoming(frame.bytes, firstNs, TrafficVerdict::Late, late.out.id);
         record(std::move(t), late.out.tag);
         return true;
     }
@@ -226,10 +225,10 @@ bool EngineCore::isDuplicate(const FrameKeys &keys) const
     return false;
 }
 
-void EngineCore::unsolicited(const QByteArray &bytes, qint64 firstNs, qint64 lastNs, const char *verdict)
+void EngineCore::unsolicited(const QByteArray &bytes, qint64 firstNs)
 {
     ++m_counters.unsolicitedFrames;
-    logIncoming(bytes, firstNs, lastNs, QString::fromLatin1(verdict));
+    logIncoming(bytes, firstNs, TrafficVerdict::Unsolicited);
     scheduleBatch();
 }
 
