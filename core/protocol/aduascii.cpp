@@ -8,17 +8,6 @@ namespace mbscope::adu {
 
 namespace {
 
-int hexValue(char c)
-{
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'A' && c <= 'F')
-        return c - 'A' + 10;
-    if (c >= 'a' && c <= 'f')
-        return c - 'a' + 10;
-    return -1;
-}
-
 QString charName(char c)
 {
     const auto u = quint8(c);
@@ -39,7 +28,7 @@ bool decodeAsciiPayload(const QByteArray &frame, QByteArray &binary, QString *er
     if (frame.endsWith("\r\n"))
         end -= 2;
     for (int i = begin; i < end; i += 2) {
-        const int hi = hexValue(frame.at(i));
+        const int hi = hexDigitValue(frame.at(i));
         if (hi < 0) {
             if (error)
                 *error = QStringLiteral("character %1 (%2) is not a hex digit").arg(i + 1).arg(charName(frame.at(i)));
@@ -54,7 +43,7 @@ bool decodeAsciiPayload(const QByteArray &frame, QByteArray &binary, QString *er
                 *errorOffset = i;
             return false;
         }
-        const int lo = hexValue(frame.at(i + 1));
+        const int lo = hexDigitValue(frame.at(i + 1));
         if (lo < 0) {
             if (error)
                 *error = QStringLiteral("character %1 (%2) is not a hex digit").arg(i + 2).arg(charName(frame.at(i + 1)));

@@ -31,13 +31,7 @@ void appendHexByte(QByteArray &out, quint8 value)
 
 int AduBuilder::hexDigitValue(char c)
 {
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'A' && c <= 'F')
-        return c - 'A' + 10;
-    if (c >= 'a' && c <= 'f')
-        return c - 'a' + 10;
-    return -1;
+    return mbscope::hexDigitValue(c);
 }
 
 QByteArray AduBuilder::mbap(QByteArrayView pdu, quint8 unitId, quint16 transactionId, quint16 protocolId)

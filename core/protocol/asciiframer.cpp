@@ -1,6 +1,5 @@
 #include "asciiframer.h"
 
-#include "adubuilder.h"
 #include "hexformat.h"
 
 namespace mbscope {
@@ -55,8 +54,8 @@ void AsciiFramer::emitChecked(qsizetype length)
     quint8 sum = 0;
     quint8 lastByte = 0;
     for (qsizetype i = 1; i < digitsEnd; i += 2) {
-        const int high = AduBuilder::hexDigitValue(frame[i]);
-        const int low = i + 1 < digitsEnd ? AduBuilder::hexDigitValue(frame[i + 1]) : 0;
+        const int high = hexDigitValue(frame[i]);
+        const int low = i + 1 < digitsEnd ? hexDigitValue(frame[i + 1]) : 0;
         if (high < 0 || low < 0) {
             const qsizetype bad = high < 0 ? i : i + 1;
             problem = QStringLiteral("character %1 (%2) is not a hex digit").arg(bad).arg(hexByte(quint8(frame[bad])));

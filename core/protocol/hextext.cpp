@@ -20,18 +20,6 @@ bool isSeparator(QChar c)
     }
 }
 
-int hexValue(QChar c)
-{
-    const char16_t u = c.unicode();
-    if (u >= u'0' && u <= u'9')
-        return u - u'0';
-    if (u >= u'a' && u <= u'f')
-        return u - u'a' + 10;
-    if (u >= u'A' && u <= u'F')
-        return u - u'A' + 10;
-    return -1;
-}
-
 bool isPrefixX(QChar c)
 {
     return c == u'x' || c == u'X';
@@ -119,7 +107,7 @@ HexTextResult HexText::parse(QStringView text)
         const qsizetype groupStart = i;
         if (c == u'0' && i + 1 < n && isPrefixX(text[i + 1])) {
             qsizetype j = i + 2;
-            while (j < n && hexValue(text[j]) >= 0)
+            while (j < n && hexDigitValue(text[j]) >= 0)
                 ++j;
             if (j < n && !isSeparator(text[j]))
                 return strayCharacter(pos, text, j);
@@ -139,14 +127,14 @@ HexTextResult HexText::parse(QStringView text)
             }
             int value = 0;
             for (qsizetype k = i + 2; k < j; ++k)
-                value = value * 16 + hexValue(text[k]);
+                value = value * 16 + hexDigitValue(text[k]);
             bytes.append(char(value));
             i = j;
             continue;
         }
 
         qsizetype j = i;
-        while (j < n && hexValue(text[j]) >= 0)
+        while (j < n && hexDigitValue(text[j]) >= 0)
             ++j;
         if (j < n && !isSeparator(text[j]))
             return strayCharacter(pos, text, j);
@@ -158,7 +146,7 @@ HexTextResult HexText::parse(QStringView text)
                                .arg(digits));
         }
         for (qsizetype k = i; k < j; k += 2)
-            bytes.append(char(hexValue(text[k]) * 16 + hexValue(text[k + 1])));
+            bytes.append(char(hexDigitValue(text[k]) * 16 + hexDigitValue(text[k + 1])));
         i = j;
     }
 

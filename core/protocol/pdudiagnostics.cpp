@@ -192,8 +192,7 @@ void dissectDelimiter(const PduContext &ctx)
     ctx.tree.setMeaning(d, characterName(c));
     // Serial Line V1.02, 2.5.2.1: ASCII frames start with ':' and carry hex digits, so either as
     // the end delimiter would cut frames apart.
-    const bool hexDigit = (c >= '0' && c <= '9') || (c >= 'A' && c <= 'F') || (c >= 'a' && c <= 'f');
-    if (c == ':' || hexDigit) {
+    if (c == ':' || hexDigitValue(char16_t(c)) >= 0) {
         ctx.tree.flag(d, Severity::Warning,
                       QStringLiteral("%1 as the end delimiter breaks ASCII framing: ':' starts every frame and "
                                      "hex digits carry its content").arg(hexByte(c)));

@@ -67,28 +67,13 @@ QString floatText(Float value)
 
 void appendEscaped(QString &out, quint8 byte)
 {
-    static const char digits[] = "0123456789ABCDEF";
     if (byte == '\\') {
         out += QLatin1String("\\\\");
     } else if (byte >= 0x20 && byte <= 0x7E) {
         out += QLatin1Char(char(byte));
     } else {
-        out += QLatin1String("\\x");
-        out += QLatin1Char(digits[byte >> 4]);
-        out += QLatin1Char(digits[byte & 0x0F]);
+        out += QLatin1String("\\x") + hexDigits(byte, 2);
     }
-}
-
-int hexDigit(QChar c)
-{
-    const char16_t u = c.unicode();
-    if (u >= u'0' && u <= u'9')
-        return u - u'0';
-    if (u >= u'a' && u <= u'f')
-        return u - u'a' + 10;
-    if (u >= u'A' && u <= u'F')
-        return u - u'A' + 10;
-    return -1;
 }
 
 // Reads text with \\ and \xNN escapes into bytes; characters must be ASCII (below 0x80).
@@ -113,9 +98,9 @@ bool decodeAscii(QStringView text, QByteArray *bytes, QString *error)
             ++i;
             continue;
         }
-        if (i + 3 < text.size() && (text[i + 1] == u'x' || text[i + 1] == u'X') && hexDigit(text[i + 2]) >= 0
-            && hexDigit(text[i + 3]) >= 0) {
-            bytes->append(char(hexDigit(text[i + 2]) * 16 + hexDigit(text[i + 3])));
+        if (i + 3 < text.size() && (text[i + 1] == u'x' || text[i + 1] == u'X') && hexDigitValue(text[i + 2]) >= 0
+            && hexDigitValue(text[i + 3]) >= 0) {
+            bytes->append(char(hexDigitValue(text[i + 2]) * 16 + hexDigitValue(text[i + 3])));
             i += 3;
             continue;
         }
@@ -138,7 +123,7 @@ Pattern parsePattern(QStringView digits, int base, int bits, quint64 *value, QCh
     for (QChar c : digits) {
         if (c == u'_')
             continue;
-        const int d = hexDigit(c);
+        const int d = hexDigitValue(c);
         if (d < 0 || d >= base) {
             *bad = c;
             return Pattern::BadDigit;
