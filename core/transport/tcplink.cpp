@@ -187,8 +187,10 @@ TcpLink::Failure TcpLink::describe(QAbstractSocket::SocketError error, bool open
     case QAbstractSocket::SocketTimeoutError:
         return {Kind::Timeout, QStringLiteral("%1 did not answer in time (%2)").arg(where(), os)};
     case QAbstractSocket::RemoteHostClosedError:
-        return {Kind::Closed, opening ? QStringLiteral("%1 closed the connection while it was being opened (%2)").arg(where(), os)
-                                      : QStringLiteral("%1 closed the connection (%2)").arg(where(), os)};
+        // Qt 6 maps a reset (ECONNRESET, EPIPE) to the same error as an orderly close, so the
+        // message names both.
+        return {Kind::Closed, opening ? QStringLiteral("%1 closed or reset the connection while it was being opened").arg(where())
+                                      : QStringLiteral("%1 closed or reset the connection").arg(where())};
     case QAbstractSocket::NetworkError:
         return {Kind::Io, opening ? QStringLiteral("cannot reach %1 (%2)").arg(where(), os)
                                   : QStringLiteral("connection to %1 lost (%2)").arg(where(), os)};
