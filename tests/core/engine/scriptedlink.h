@@ -1,0 +1,106 @@
+#pragma once
+
+// A test double for unit tests of the engine: a Link whose peer lives in the same thread and
+// answers each write with scripted bytes after scripted delays (QTimer), or closes. It knows
+// nothing of Modbus; the scripts in the tests build the answers.
+
+#include "transport/link.h"
+#include "transport/monotonicclock.h"
+
+#include <QtCore/QByteArray>
+#include <QtCore/QList>
+#include <QtCore/QTimer>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+
+namespace mbscope::test {
+
+struct Reply {
+    int delayMs = 0;
+    QByteArray bytes;
+    bool close = false; // the peer closes the connection after the bytes (if any)
+};
+
+// index counts the writes the peer has seen on all connections (0 for the first request).
+using PeerScript = std::function<QList<Reply>(const QByteArray &request, int index)>;
+
+// What the peer saw, readable from the test's thread.
+struct PeerState {
+    std::atomic<int> opens{0};
+    std::atomic<int> writes{0};
+    std::atomic<bool> refuse{false}; // open() fails with "connection refused"
+};
+
+class ScriptedLink : public Link
+{
+public:
+    ScriptedLink(const LinkUrl &url, PeerScript script, std::shared_ptr<PeerState> state, QObject *parent)
+        : Link(url, parent)
+        , m_script(std::move(script))
+        , m_state(std::move(state))
+    {
+    }
+
+    [[nodiscard]] bool isDatagram() const override { return url().isDatagram(); }
+
+    void open() override
+    {
+        if (state() != State::Closed)
+            return;
+        setState(State::Opening);
+        const int generation = ++m_generation;
+        QTimer::singleShot(0, this, [this, generation] {
+            if (generation != m_generation || state() != State::Opening)
+                return;
+            ++m_state->opens;
+            if (m_state->refuse) {
+                setState(State::Closed);
+                reportError(LinkError::Kind::Refused, QStringLiteral("connection refused by the scripted peer"));
+                return;
+            }
+            setState(State::Open);
+            emit opened();
+        });
+    }
+
+    void close() override
+    {
+        ++m_generation;
+        setClosed(QStringLiteral("closed on request"));
+    }
+
+    bool write(const QByteArray &bytes) override
+    {
+        if (state() != State::Open) {
+            reportError(LinkError::Kind::Closed, QStringLiteral("cannot write: the link is not open"));
+            return false;
+        }
+        emit bytesWritten(monotonicNowNs());
+        const int generation = m_generation;
+        const QList<Reply> replies = m_script(bytes, m_state->writes++);
+        for (const Reply &reply : replies) {
+            QTimer::singleShot(reply.delayMs, Qt::PreciseTimer, this, [this, generation, reply] {
+                if (generation != m_generation || state() != State::Open)
+                    return;
+                if (!reply.bytes.isEmpty()) {
+                    const qint64 now = monotonicNowNs();
+                    emit bytesReceived(reply.bytes, now, now);
+                }
+                if (reply.close) {
+                    ++m_generation;
+                    reportLoss(LinkError::Kind::Closed, QStringLiteral("the scripted peer closed the connection"));
+                }
+            });
+        }
+        return true;
+    }
+
+private:
+    PeerScript m_script;
+    std::shared_ptr<PeerState> m_state;
+    int m_generation = 0;
+};
+
+} // namespace mbscope::test
