@@ -21,6 +21,16 @@ void appendBigEndian16(QByteArray &out, quint16 value)
     out.append(char(value & 0xFF));
 }
 
+// The serial framings' payload: unit id then PDU, with room for the check bytes after it.
+QByteArray unitAndPdu(QByteArrayView pdu, quint8 unitId, qsizetype room)
+{
+    QByteArray out;
+    out.reserve(1 + pdu.size() + room);
+    out.append(char(unitId));
+    out.append(pdu.data(), pdu.size());
+    return out;
+}
+
 void appendHexByte(QByteArray &out, quint8 value)
 {
     out.append(kHexDigits[value >> 4]);
@@ -49,10 +59,7 @@ QByteArray AduBuilder::mbap(QByteArrayView pdu, quint8 unitId, quint16 transacti
 
 QByteArray AduBuilder::rtu(QByteArrayView pdu, quint8 unitId)
 {
-    QByteArray out;
-    out.reserve(pdu.size() + 3);
-    out.append(char(unitId));
-    out.append(pdu.data(), pdu.size());
+    QByteArray out = unitAndPdu(pdu, unitId, 2);
     // Serial Line V1.02, 6.2.2: the CRC is sent low-order byte first.
     const quint16 crc = checksum::crc16Modbus(out);
     out.append(char(crc & 0xFF));
@@ -62,10 +69,7 @@ QByteArray AduBuilder::rtu(QByteArrayView pdu, quint8 unitId)
 
 QByteArray AduBuilder::ascii(QByteArrayView pdu, quint8 unitId)
 {
-    QByteArray binary;
-    binary.reserve(pdu.size() + 1);
-    binary.append(char(unitId));
-    binary.append(pdu.data(), pdu.size());
+    const QByteArray binary = unitAndPdu(pdu, unitId, 0);
     // Serial Line V1.02, 2.5.2.1: the LRC is computed over the binary bytes, then sent as two digits.
     const quint8 lrc = checksum::lrc(binary);
     QByteArray out;
