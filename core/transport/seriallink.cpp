@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <grp.h>
+#include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -100,7 +101,7 @@ QString SerialLink::openFailureMessage(const QString &device, int osError)
     case EBUSY:
         return QStringLiteral("%1 is in use by another program (%2)").arg(device, qt_error_string(osError));
     case ENOTTY:
-        return QStringLiteral("%1 is not a serial port (%2)").arg(device, qt_error_string(osError));
+        return QStringLiteral("%1 is not a serial port (not a terminal device)").arg(device);
     default:
         return QStringLiteral("cannot open %1 (%2)").arg(device, qt_error_string(osError));
     }
@@ -132,6 +133,10 @@ void SerialLink::startOpen()
     if (::stat(path.constData(), &info) != 0 || ::access(path.constData(), R_OK | W_OK) != 0) {
         const int osError = errno;
         failWith(kindForErrno(osError), openFailureMessage(s.device, osError));
+        return;
+    }
+    if (!S_ISCHR(info.st_mode)) {
+        failWith(LinkError::Kind::Config, openFailureMessage(s.device, ENOTTY));
         return;
     }
 
@@ -174,6 +179,7 @@ void SerialLink::startOpen()
     m_submitted = 0;
     m_accepted = 0;
     m_lineFreeNs = 0;
+    m_readErrors = 0;
     setState(State::Open);
     emit opened();
 }
@@ -271,8 +277,18 @@ void SerialLink::onReadyRead()
         return;
     const qint64 now = monotonicNowNs();
     const QByteArray bytes = m_port->readAll();
-    if (!bytes.isEmpty())
+    if (!bytes.isEmpty()) {
+        m_readErrors = 0;
         emit bytesReceived(bytes, now, now);
+    }
+}
+
+bool SerialLink::hungUp() const
+{
+    if (!m_port || m_port->handle() < 0)
+        return false;
+    pollfd probe{int(m_port->handle()), POLLIN, 0};
+    return ::poll(&probe, 1, 0) == 1 && (probe.revents & (POLLHUP | POLLERR | POLLNVAL)) != 0;
 }
 
 void SerialLink::onPortError(QSerialPort::SerialPortError error)
@@ -281,9 +297,10 @@ void SerialLink::onPortError(QSerialPort::SerialPortError error)
         return;
     const QString os = osAnswer(m_port->errorString());
     const QString device = url().serial.device;
-    if (error == QSerialPort::ResourceError) {
-        // The device went away (unplugged adapter, pty whose other end closed): bytes read before
-        // are delivered, then the link is lost.
+    // A device that went away (unplugged adapter, pty whose other end closed) reads as end of
+    // file or EIO with a hang-up on the descriptor: QSerialPort reports a ResourceError, or a
+    // ReadError over and over while the descriptor stays readable. Either way the link is lost.
+    if (error == QSerialPort::ResourceError || (error == QSerialPort::ReadError && (hungUp() || ++m_readErrors >= 100))) {
         if (m_port->bytesAvailable() > 0)
             onReadyRead();
         if (!m_port)

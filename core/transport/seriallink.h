@@ -56,6 +56,7 @@ private:
     void teardown();
     void onReadyRead();
     void onPortError(QSerialPort::SerialPortError error);
+    [[nodiscard]] bool hungUp() const;
     void account();
     void scheduleDrain();
     void onDrainTimer();
@@ -67,6 +68,7 @@ private:
     qint64 m_submitted = 0;
     qint64 m_accepted = 0;
     qint64 m_lineFreeNs = 0;
+    int m_readErrors = 0; // read errors since the last bytes read
     bool m_inWrite = false;
 };
 
