@@ -305,8 +305,10 @@ void SerialLink::onPortError(QSerialPort::SerialPortError error)
             onReadyRead();
         if (!m_port)
             return;
+        // After a hang-up, read() returned 0 and errno is stale: say what the descriptor said.
+        const QString why = error == QSerialPort::ResourceError ? os : QStringLiteral("the line hung up");
         teardown();
-        reportLoss(LinkError::Kind::Closed, QStringLiteral("%1 went away (unplugged?) (%2)").arg(device, os));
+        reportLoss(LinkError::Kind::Closed, QStringLiteral("%1 went away (unplugged?): %2").arg(device, why));
         return;
     }
     const char *what = error == QSerialPort::WriteError ? "writing to" : error == QSerialPort::ReadError ? "reading from" : "using";
