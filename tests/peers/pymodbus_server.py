@@ -128,7 +128,9 @@ async def serve(args):
         "ascii": ModbusAsciiFramer,
     }
     framer = framers[args.mode]
-    options = {"broadcast_enable": args.broadcast}
+    # ignore_missing_slaves: no answer for other units on every framing (pymodbus otherwise answers
+    # exception 0B on the serial framings and stays silent on MBAP).
+    options = {"broadcast_enable": args.broadcast, "ignore_missing_slaves": True}
 
     if args.mode in ("tcp", "rtu-tcp", "ascii-tcp"):
         server = ModbusTcpServer(
