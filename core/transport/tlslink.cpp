@@ -114,6 +114,18 @@ qint64 TlsLink::acceptedBytes() const
 
 TcpLink::Failure TlsLink::describe(QAbstractSocket::SocketError error, bool opening) const
 {
+    Failure failure = describeTls(error, opening);
+    // With TLS 1.3 a server that wants a client certificate finds out after our side of the
+    // handshake has finished, and closes the connection: say what is likely missing.
+    if (url().tls.certificate.isEmpty()
+        && (error == QAbstractSocket::RemoteHostClosedError || failure.kind == LinkError::Kind::Handshake))
+        failure.what += QStringLiteral(" (no client certificate was given: MODBUS/TCP Security servers require one, "
+                                       "set cert= and key=)");
+    return failure;
+}
+
+TcpLink::Failure TlsLink::describeTls(QAbstractSocket::SocketError error, bool opening) const
+{
     switch (error) {
     case QAbstractSocket::SslHandshakeFailedError:
     case QAbstractSocket::SslInternalError:

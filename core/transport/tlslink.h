@@ -29,6 +29,8 @@ protected:
     [[nodiscard]] Failure describe(QAbstractSocket::SocketError error, bool opening) const override;
 
 private:
+    [[nodiscard]] Failure describeTls(QAbstractSocket::SocketError error, bool opening) const;
+
     QList<QSslCertificate> m_localChain;
     QSslKey m_key;
     QList<QSslCertificate> m_caCertificates;
