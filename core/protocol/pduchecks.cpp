@@ -130,6 +130,74 @@ void checkRange(const PduContext &ctx, int field, int start, int quantity, const
                            QString::number(start + quantity - 1)));
 }
 
+void checkBlock(const PduContext &ctx, int field, int start, int quantity, int max, const char *label)
+{
+    checkQuantity(ctx, field, quantity, max, label);
+    checkRange(ctx, field, start, quantity, label);
+}
+
+bool checkByteCount(const PduContext &ctx, int field, int byteCount, int needed, const char *label, int quantity,
+                    bool ofRequest, const char *rule)
+{
+    if (byteCount == needed)
+        return false;
+    const QString text = ofRequest
+        ? QStringLiteral("byte count %1 does not match the request: %2 %3 needs %4 (%5)")
+        : QStringLiteral("byte count %1 does not match %2 %3, which needs %4 (%5)");
+    ctx.tree.flag(field, Severity::Error,
+                  text.arg(QString::number(byteCount), QLatin1String(label), QString::number(quantity),
+                           amount(needed, "byte", "bytes"), QLatin1String(rule)));
+    return true;
+}
+
+void checkEvenByteCount(const PduContext &ctx, int field, int byteCount)
+{
+    if (byteCount % 2 != 0) {
+        ctx.tree.flag(field, Severity::Error,
+                      QStringLiteral("byte count %1 is odd: registers are 2 bytes each").arg(byteCount));
+    }
+}
+
+bool startAndQuantity(const PduContext &ctx, int maxQuantity)
+{
+    static const Slot layout[] = {
+        {"modbus.start_address", "Start address", 2, ValueFormat::DecimalHex, "start address and quantity"},
+        {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity"},
+    };
+    int f[2];
+    if (!addFixed(ctx, ctx.parent, 1, layout, 2, f, 5, false))
+        return false;
+    checkBlock(ctx, f[1], ctx.u16(1), ctx.u16(3), maxQuantity, "quantity");
+    trailing(ctx, 5);
+    return true;
+}
+
+void registerReadResponse(const PduContext &ctx, const char *label, const char *what)
+{
+    constexpr int kMaxRegisters = 125; // 0x007D, V1.1b3 6.3, 6.4 and the read block of 6.17
+    if (!ctx.has(1)) {
+        missing(ctx, ctx.parent, 1, 4, true, what);
+        return;
+    }
+    const int byteCount = ctx.byte(1);
+    const int bc = ctx.add("modbus.byte_count", "Byte count", 1, 1, quint64(byteCount), ValueFormat::Decimal);
+    // The request starts with start address and quantity (of the read block, for 17).
+    const bool known = requestUsable(ctx, 5);
+    const int quantity = known ? ctx.requestU16(3) : -1;
+    const bool mismatched =
+        known && checkByteCount(ctx, bc, byteCount, 2 * quantity, label, quantity, true, "2 per register");
+    if (!mismatched && (byteCount == 0 || byteCount > 2 * kMaxRegisters)) {
+        ctx.tree.flag(bc, Severity::Error,
+                      QStringLiteral("byte count %1 is out of range: a %2 response carries 1-125 registers "
+                                     "(2-250 bytes)")
+                          .arg(QString::number(byteCount), functionLabel(ctx)));
+    }
+    checkEvenByteCount(ctx, bc, byteCount);
+    registerBlock(ctx, ctx.parent, 2, 2, 2 + byteCount, known ? "Register" : "Register index",
+                  known ? int(ctx.requestU16(1)) : -1);
+    trailing(ctx, 2 + byteCount);
+}
+
 void addRegisters(const PduContext &ctx, int parent, int pduOffset, int count, const char *name, int firstAddress)
 {
     for (int i = 0; i < count; ++i) {

@@ -46,6 +46,24 @@ bool trailing(const PduContext &ctx, int pduEnd);
 void checkQuantity(const PduContext &ctx, int field, int quantity, int max, const char *label);
 // Flags field when start + quantity runs past address 0xFFFF.
 void checkRange(const PduContext &ctx, int field, int start, int quantity, const char *label);
+// Both of the above: a block of quantity items from start.
+void checkBlock(const PduContext &ctx, int field, int start, int quantity, int max, const char *label);
+
+// Flags field when byteCount is not the needed bytes that quantity calls for; rule says why
+// ("2 per register"). ofRequest: the quantity is the matching request's. Returns true when flagged.
+bool checkByteCount(const PduContext &ctx, int field, int byteCount, int needed, const char *label, int quantity,
+                    bool ofRequest, const char *rule);
+// Flags field when the byte count of register data is odd.
+void checkEvenByteCount(const PduContext &ctx, int field, int byteCount);
+
+// Start address and quantity, checked against 1..maxQuantity and the end of the address space,
+// then trailing bytes: 01-04 requests and 0F/10 responses (V1.1b3 6.1-6.4, 6.11, 6.12).
+// Returns false when the PDU ends first.
+bool startAndQuantity(const PduContext &ctx, int maxQuantity);
+// Byte count and registers of a register read response (03, 04, 17: V1.1b3 6.3, 6.4, 6.17),
+// checked against the request's quantity when it is known. label names that quantity
+// ("read quantity"); what is the missing text for a PDU that ends after the function code.
+void registerReadResponse(const PduContext &ctx, const char *label, const char *what);
 
 // Items. An address < 0 means unknown: items are then numbered from 0 by index.
 void addRegisters(const PduContext &ctx, int parent, int pduOffset, int count, const char *name,

@@ -25,21 +25,11 @@ const Slot kRegistersHeader[] = {
     {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity, byte count and register values"},
 };
 
-const Slot kEcho[] = {
-    {"modbus.start_address", "Start address", 2, ValueFormat::DecimalHex, "start address and quantity"},
-    {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity"},
-};
-
 // The normal response of both codes: start address and quantity, checked against the request.
 void echoResponse(const PduContext &ctx, int maxQuantity)
 {
     const int first = ctx.tree.size();
-    int f[2];
-    if (addFixed(ctx, ctx.parent, 1, kEcho, 2, f, 5, false)) {
-        checkQuantity(ctx, f[1], ctx.u16(3), maxQuantity, "quantity");
-        checkRange(ctx, f[1], ctx.u16(1), ctx.u16(3), "quantity");
-        trailing(ctx, 5);
-    }
+    startAndQuantity(ctx, maxQuantity);
     if (requestUsable(ctx, 5))
         checkEcho(ctx, first, false);
 }
@@ -51,8 +41,7 @@ bool requestHeader(const PduContext &ctx, const Slot *header, int *f, int maxQua
 {
     if (!addFixed(ctx, ctx.parent, 1, header, 2, f, 7, true))
         return false;
-    checkQuantity(ctx, f[1], ctx.u16(3), maxQuantity, "quantity");
-    checkRange(ctx, f[1], ctx.u16(1), ctx.u16(3), "quantity");
+    checkBlock(ctx, f[1], ctx.u16(1), ctx.u16(3), maxQuantity, "quantity");
     if (!ctx.has(5)) {
         missing(ctx, ctx.parent, 5, 6 + qMax(dataBytes, 1), dataBytes < 1, what);
         return false;
@@ -76,13 +65,7 @@ void dissectWriteMultipleCoils(const PduContext &ctx)
         return;
     const int start = ctx.u16(1);
     const int byteCount = ctx.byte(5);
-    if (byteCount != needed) {
-        ctx.tree.flag(f[2], Severity::Error,
-                      QStringLiteral("byte count %1 does not match quantity %2, which needs %3 "
-                                     "(quantity / 8, rounded up)")
-                          .arg(QString::number(byteCount), QString::number(quantity),
-                               amount(needed, "byte", "bytes")));
-    }
+    checkByteCount(ctx, f[2], byteCount, needed, "quantity", quantity, false, "quantity / 8, rounded up");
     bitBlock(ctx, ctx.parent, 6, byteCount, quantity, "modbus.coil_value", "Coil", start);
     trailing(ctx, 6 + byteCount);
 }
@@ -99,16 +82,8 @@ void dissectWriteMultipleRegisters(const PduContext &ctx)
         return;
     const int start = ctx.u16(1);
     const int byteCount = ctx.byte(5);
-    if (byteCount != 2 * quantity) {
-        ctx.tree.flag(f[2], Severity::Error,
-                      QStringLiteral("byte count %1 does not match quantity %2, which needs %3 (2 per register)")
-                          .arg(QString::number(byteCount), QString::number(quantity),
-                               amount(2 * quantity, "byte", "bytes")));
-    }
-    if (byteCount % 2 != 0) {
-        ctx.tree.flag(f[2], Severity::Error,
-                      QStringLiteral("byte count %1 is odd: registers are 2 bytes each").arg(byteCount));
-    }
+    checkByteCount(ctx, f[2], byteCount, 2 * quantity, "quantity", quantity, false, "2 per register");
+    checkEvenByteCount(ctx, f[2], byteCount);
     registerBlock(ctx, ctx.parent, 6, 6, 6 + byteCount, "Register", start);
     trailing(ctx, 6 + byteCount);
 }

@@ -12,23 +12,6 @@ namespace {
 constexpr int kMaxBits = 2000; // 0x07D0, V1.1b3 6.1/6.2
 constexpr int kMaxBytes = (kMaxBits + 7) / 8;
 
-const Slot kRequest[] = {
-    {"modbus.start_address", "Start address", 2, ValueFormat::DecimalHex, "start address and quantity"},
-    {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity"},
-};
-
-void request(const PduContext &ctx)
-{
-    int f[2];
-    if (!addFixed(ctx, ctx.parent, 1, kRequest, 2, f, 5, false))
-        return;
-    const int start = ctx.u16(1);
-    const int quantity = ctx.u16(3);
-    checkQuantity(ctx, f[1], quantity, kMaxBits, "quantity");
-    checkRange(ctx, f[1], start, quantity, "quantity");
-    trailing(ctx, 5);
-}
-
 void response(const PduContext &ctx)
 {
     const bool coils = ctx.function() == 0x01;
@@ -41,17 +24,13 @@ void response(const PduContext &ctx)
     const bool known = requestUsable(ctx, 5);
     const int quantity = known ? ctx.requestU16(3) : -1;
     const int start = known ? ctx.requestU16(1) : -1;
-    if (known && byteCount != (quantity + 7) / 8) {
-        ctx.tree.flag(bc, Severity::Error,
-                      QStringLiteral("byte count %1 does not match the request: quantity %2 needs %3 "
-                                     "(quantity / 8, rounded up)")
-                          .arg(QString::number(byteCount), QString::number(quantity),
-                               amount((quantity + 7) / 8, "byte", "bytes")));
-    } else if (byteCount == 0) {
+    const bool mismatched = known
+        && checkByteCount(ctx, bc, byteCount, (quantity + 7) / 8, "quantity", quantity, true, "quantity / 8, rounded up");
+    if (!mismatched && byteCount == 0) {
         ctx.tree.flag(bc, Severity::Error,
                       QStringLiteral("byte count 0: a %1 response carries 1-%2 data bytes (1-2000 bits)")
                           .arg(functionLabel(ctx), QString::number(kMaxBytes)));
-    } else if (byteCount > kMaxBytes) {
+    } else if (!mismatched && byteCount > kMaxBytes) {
         ctx.tree.flag(bc, Severity::Error,
                       QStringLiteral("byte count %1 is too large: a %2 response carries at most %3 data bytes "
                                      "(2000 bits)")
@@ -70,7 +49,7 @@ void dissectReadBits(const PduContext &ctx)
     if (isResponse(ctx))
         response(ctx);
     else
-        request(ctx);
+        startAndQuantity(ctx, kMaxBits);
 }
 
 } // namespace mbscope::pdu

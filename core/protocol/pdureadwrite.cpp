@@ -33,10 +33,8 @@ void request(const PduContext &ctx)
     const int readQuantity = ctx.u16(3);
     const int writeStart = ctx.u16(5);
     const int writeQuantity = ctx.u16(7);
-    checkQuantity(ctx, f[1], readQuantity, kMaxRead, "read quantity");
-    checkRange(ctx, f[1], readStart, readQuantity, "read quantity");
-    checkQuantity(ctx, f[3], writeQuantity, kMaxWrite, "write quantity");
-    checkRange(ctx, f[3], writeStart, writeQuantity, "write quantity");
+    checkBlock(ctx, f[1], readStart, readQuantity, kMaxRead, "read quantity");
+    checkBlock(ctx, f[3], writeStart, writeQuantity, kMaxWrite, "write quantity");
     if (!ctx.has(9)) {
         missing(ctx, ctx.parent, 9, 10 + qMax(2 * writeQuantity, 2), writeQuantity < 1,
                 "byte count and write register values");
@@ -44,50 +42,10 @@ void request(const PduContext &ctx)
     }
     const int byteCount = ctx.byte(9);
     const int bc = ctx.add("modbus.byte_count", "Write byte count", 9, 1, quint64(byteCount), ValueFormat::Decimal);
-    if (byteCount != 2 * writeQuantity) {
-        ctx.tree.flag(bc, Severity::Error,
-                      QStringLiteral("byte count %1 does not match write quantity %2, which needs %3 "
-                                     "(2 per register)")
-                          .arg(QString::number(byteCount), QString::number(writeQuantity),
-                               amount(2 * writeQuantity, "byte", "bytes")));
-    }
-    if (byteCount % 2 != 0) {
-        ctx.tree.flag(bc, Severity::Error,
-                      QStringLiteral("byte count %1 is odd: registers are 2 bytes each").arg(byteCount));
-    }
+    checkByteCount(ctx, bc, byteCount, 2 * writeQuantity, "write quantity", writeQuantity, false, "2 per register");
+    checkEvenByteCount(ctx, bc, byteCount);
     registerBlock(ctx, ctx.parent, 10, 10, 10 + byteCount, "Register", writeStart);
     trailing(ctx, 10 + byteCount);
-}
-
-void response(const PduContext &ctx)
-{
-    if (!ctx.has(1)) {
-        missing(ctx, ctx.parent, 1, 4, true, "byte count and read register values");
-        return;
-    }
-    const int byteCount = ctx.byte(1);
-    const int bc = ctx.add("modbus.byte_count", "Byte count", 1, 1, quint64(byteCount), ValueFormat::Decimal);
-    const bool known = requestUsable(ctx, 5);
-    const int quantity = known ? ctx.requestU16(3) : -1;
-    if (known && byteCount != 2 * quantity) {
-        ctx.tree.flag(bc, Severity::Error,
-                      QStringLiteral("byte count %1 does not match the request: read quantity %2 needs %3 "
-                                     "(2 per register)")
-                          .arg(QString::number(byteCount), QString::number(quantity),
-                               amount(2 * quantity, "byte", "bytes")));
-    } else if (byteCount == 0 || byteCount > 2 * kMaxRead) {
-        ctx.tree.flag(bc, Severity::Error,
-                      QStringLiteral("byte count %1 is out of range: a Read/Write Multiple Registers response "
-                                     "carries 1-125 registers (2-250 bytes)")
-                          .arg(byteCount));
-    }
-    if (byteCount % 2 != 0) {
-        ctx.tree.flag(bc, Severity::Error,
-                      QStringLiteral("byte count %1 is odd: registers are 2 bytes each").arg(byteCount));
-    }
-    registerBlock(ctx, ctx.parent, 2, 2, 2 + byteCount, known ? "Register" : "Register index",
-                  known ? int(ctx.requestU16(1)) : -1);
-    trailing(ctx, 2 + byteCount);
 }
 
 } // namespace
@@ -95,7 +53,7 @@ void response(const PduContext &ctx)
 void dissectReadWriteRegisters(const PduContext &ctx)
 {
     if (isResponse(ctx))
-        response(ctx);
+        registerReadResponse(ctx, "read quantity", "byte count and read register values");
     else
         request(ctx);
 }
