@@ -37,6 +37,7 @@ QString describeSettings(const SerialSettings &s)
 
 SerialLink::SerialLink(const LinkUrl &url, QObject *parent)
     : Link(url, parent)
+    , m_drainTimer(this) // a child, so that moveToThread() takes it along
 {
     m_drainTimer.setSingleShot(true);
     m_drainTimer.setTimerType(Qt::PreciseTimer);

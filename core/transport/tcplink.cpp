@@ -9,6 +9,7 @@ namespace mbscope {
 
 TcpLink::TcpLink(const LinkUrl &url, QObject *parent)
     : Link(url, parent)
+    , m_connectTimer(this) // a child, so that moveToThread() takes it along
 {
     m_connectTimer.setSingleShot(true);
     connect(&m_connectTimer, &QTimer::timeout, this, &TcpLink::onConnectTimeout);

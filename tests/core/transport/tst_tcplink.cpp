@@ -5,6 +5,7 @@
 
 #include <QtCore/QPointer>
 #include <QtCore/QScopeGuard>
+#include <QtCore/QThread>
 #include <QtNetwork/QTcpServer>
 #include <QtNetwork/QTcpSocket>
 #include <QtTest/QtTest>
@@ -314,6 +315,35 @@ private slots:
                                                          "the host did not answer")
                                               .arg(port));
         QCOMPARE(link->state(), Link::State::Closed);
+    }
+
+    // The engine runs links in its own thread: a link moved there takes its timer and socket
+    // along, and works with calls queued to it while its signals reach this thread.
+    void inWorkerThread()
+    {
+        Peer peer;
+        QThread worker;
+        worker.start();
+        auto cleanup = qScopeGuard([&] {
+            worker.quit();
+            worker.wait();
+        });
+        Link *link = makeLink(peer.url()).release();
+        Recorder rec(link);
+        link->moveToThread(&worker);
+        connect(&worker, &QThread::finished, link, &QObject::deleteLater);
+        for (QObject *child : link->findChildren<QObject *>())
+            QCOMPARE(child->thread(), &worker);
+        QMetaObject::invokeMethod(link, [link] { link->open(); });
+        QTRY_COMPARE_WITH_TIMEOUT(rec.opened, 1, kWaitMs);
+        for (QObject *child : link->findChildren<QObject *>())
+            QCOMPARE(child->thread(), &worker); // the socket made at open() too
+        QMetaObject::invokeMethod(link, [link] { link->write("threaded"); });
+        QTRY_COMPARE_WITH_TIMEOUT(rec.received, QByteArray("threaded"), kWaitMs);
+        QCOMPARE(rec.writtenNs.size(), 1);
+        QMetaObject::invokeMethod(link, [link] { link->close(); });
+        QTRY_COMPARE_WITH_TIMEOUT(rec.closed, 1, kWaitMs);
+        QVERIFY(rec.errors.isEmpty());
     }
 
     // Deleting a link while a connection is open or opening is clean.
