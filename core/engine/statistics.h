@@ -23,6 +23,8 @@ namespace mbscope {
 //   stretch the tail, a CRC error or malformed answer may not be the answer at all.
 // - the histogram counts the same latencies: O(1) per transaction with fixed or logarithmic bins;
 //   with HistogramSpec::Auto the bins are fitted to the stored latencies when asked.
+// Not thread-safe, const queries included (percentiles sort the stored latencies in place): the
+// engine's thread owns it; others get a copy.
 class Statistics
 {
 public:

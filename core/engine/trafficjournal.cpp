@@ -197,7 +197,9 @@ void TrafficJournalWriter::addFrame(const TrafficEntry &entry)
     }
     ++m_batchFrames;
     ++m_batchRecords;
-    if (m_batchFrames >= quint32(m_options.batchEntries) || entry.tNs - m_batchFirstNs >= m_options.batchNs)
+    // A batch also ends at 256 MiB, far inside the header's 32-bit payload size.
+    if (m_batchFrames >= quint32(m_options.batchEntries) || entry.tNs - m_batchFirstNs >= m_options.batchNs
+        || m_size >= (std::size_t(1) << 28))
         flush();
 }
 

@@ -54,7 +54,7 @@ namespace mbscope {
 //   A link name record comes before the first frame that uses its id.
 //
 // Each batch is written with one write(2) (QFile unbuffered) when it holds batchEntries frames or
-// its first frame is batchNs old, whichever comes first, and on close. That reaches the kernel's
+// its first frame is batchNs old, whichever comes first (or it reaches 256 MiB), and on close. That reaches the kernel's
 // page cache, which survives the process being killed; sync makes it fdatasync as well, to
 // survive a power cut, at the cost of a disk round trip per batch.
 class TrafficJournalWriter
