@@ -39,8 +39,9 @@ struct LinkError {
 // Life cycle: open() -> opened() or errorOccurred() (state back to Closed). While open, a lost
 // connection emits errorOccurred() then closed(reason). close() emits closed() when the link was
 // open or opening. open() after close() or after a loss opens again: the engine reconnects on its
-// next request by calling open() when state() is Closed. Some errors leave the link open (a UDP
-// "port unreachable", a serial write error): check state() after errorOccurred().
+// next request by calling open() when state() is Closed. close() is immediate and never fails.
+// Some errors leave the link open (a serial write error, a UDP "port unreachable" should Qt
+// report one): check state() after errorOccurred().
 class Link : public QObject
 {
     Q_OBJECT
@@ -74,7 +75,8 @@ public:
     // kernel; UDP: sent; serial: drained, see SerialLink). It may be emitted before write() returns.
     virtual bool write(const QByteArray &bytes) = 0;
 
-    // Creates the link a URL names (TcpLink, UdpLink, SerialLink, TlsLink).
+    // Creates the link a URL names (TcpLink for tcp, rtu-tcp and ascii-tcp; UdpLink for udp and
+    // rtu-udp; SerialLink for rtu and ascii; TlsLink for tls), closed. The caller owns it.
     [[nodiscard]] static Link *create(const LinkUrl &url, QObject *parent = nullptr);
 
 signals:
