@@ -4,6 +4,7 @@
 
 #include "protocol/streamframer.h"
 #include "transport/monotonicclock.h"
+#include "transport/seriallink.h"
 
 #include <utility>
 
@@ -201,6 +202,7 @@ void EngineCore::onOpened()
 
 void EngineCore::resetFramer()
 {
+    m_writeOrder.clear();
     m_silenceTimer.stop();
     m_framer->reset();
     m_stamps.clear();
@@ -228,35 +230,60 @@ void EngineCore::sendNext()
         p.rewritten = tid != p.out.item.transactionId;
         p.out.item.transactionId = tid;
     }
-    const qint64 waitNs = qint64(p.out.item.broadcast ? m_options.broadcastTurnaroundMs : p.out.item.timeoutMs) * 1000000;
     p.writeStartNs = monotonicNowNs();
-    p.deadlineNs = p.writeStartNs + waitNs;
+    p.deadlineNs = p.writeStartNs + waitNs(p.out.item);
     const quint64 id = p.out.id;
+    const int attempt = p.out.attempt;
     const QByteArray bytes = p.sent;
     m_inFlight.append(std::move(p));
     ++m_counters.requestsSent;
     m_counters.bytesOut += quint64(bytes.size());
     logOutgoing(bytes, m_inFlight.constLast().writeStartNs, id);
+    // bytesWritten() comes once per write, in order, possibly before write() returns.
+    m_writeOrder.append(WriteMark{id, attempt});
     if (!m_link->write(bytes)) {
+        if (!m_writeOrder.isEmpty() && m_writeOrder.constLast().id == id && m_writeOrder.constLast().attempt == attempt)
+            m_writeOrder.removeLast();
         const qsizetype i = indexOfId(id);
         if (i >= 0)
             finish(i, TransactionStatus::LinkError, QStringLiteral("%1: the link did not take the request").arg(m_url.toString()));
+    } else if (const auto *serial = qobject_cast<const SerialLink *>(m_link)) {
+        // A serial link knows when the last byte will have left the line before it says so
+        // (it signals once that time has come), and a fast answer may come first.
+        const qsizetype i = indexOfId(id);
+        if (i >= 0 && m_inFlight.at(i).sentNs == 0 && serial->lineFreeNs() >= m_inFlight.at(i).writeStartNs) {
+            m_inFlight[i].predictedSentNs = serial->lineFreeNs();
+            m_inFlight[i].deadlineNs = serial->lineFreeNs() + waitNs(m_inFlight.at(i).out.item);
+        }
     }
     armDeadline();
     scheduleBatch();
 }
 
+qint64 EngineCore::waitNs(const RequestItem &item) const
+{
+    if (!item.broadcast)
+        return qint64(item.timeoutMs) * 1000000;
+    // After a broadcast: the link's RS485 turnaround delay when the URL gives one, else the
+    // engine's (Serial Line V1.02, 2.4.1).
+    const qint64 linkTurnaround = m_link ? m_link->turnaroundNs() : 0;
+    return linkTurnaround > 0 ? linkTurnaround : qint64(m_options.broadcastTurnaroundMs) * 1000000;
+}
+
 void EngineCore::onBytesWritten(qint64 lastByteNs)
 {
-    for (Pending &p : m_inFlight) {
-        if (p.sentNs != 0)
-            continue;
-        p.sentNs = lastByteNs;
-        // Timeouts (and a broadcast's turnaround) run from the moment the request left.
-        const qint64 waitNs = qint64(p.out.item.broadcast ? m_options.broadcastTurnaroundMs : p.out.item.timeoutMs) * 1000000;
-        p.deadlineNs = lastByteNs + waitNs;
-        break;
-    }
+    if (m_writeOrder.isEmpty())
+        return;
+    const WriteMark mark = m_writeOrder.takeFirst();
+    const qsizetype i = indexOfId(mark.id);
+    // The request may have ended already (an answer that came before the link said the bytes
+    // had left: the answer's time then bounds the send time, see finish()).
+    if (i < 0 || m_inFlight.at(i).out.attempt != mark.attempt || m_inFlight.at(i).sentNs != 0)
+        return;
+    Pending &p = m_inFlight[i];
+    p.sentNs = lastByteNs;
+    // Timeouts (and a broadcast's turnaround) run from the moment the request left.
+    p.deadlineNs = lastByteNs + waitNs(p.out.item);
     armDeadline();
 }
 
@@ -317,12 +344,11 @@ void EngineCore::onLinkError(const LinkError &error)
     m_deferPump = true;
     emit linkMessage(error.message);
     const qint64 held = flushPartial();
-    if (m_link && m_link->state() != Link::State::Closed) {
-        m_closingQuietly = true;
-        m_link->close();
-        m_closingQuietly = false;
-    }
-    resetFramer();
+    // Some errors leave the link open (UDP "port unreachable", a serial write error); a lost
+    // link says so with closed() after this.
+    const bool stillOpen = m_link && m_link->state() == Link::State::Open;
+    if (!stillOpen)
+        resetFramer();
     QString problem = error.message;
     if (held > 0)
         problem += QStringLiteral(" (after %1 bytes of an unfinished answer)").arg(held);
@@ -418,14 +444,25 @@ void EngineCore::finish(qsizetype index, TransactionStatus status, const QString
     t.status = status;
     t.exceptionCode = exceptionCode;
     t.problem = p.out.history + problem;
-    // A link may report the write after the answer began; the answer then bounds it.
-    t.sentNs = p.sentNs != 0 && (firstNs == 0 || p.sentNs <= firstNs) ? p.sentNs : p.writeStartNs;
+    t.sentNs = sentTime(p, firstNs);
     t.firstByteNs = firstNs;
     t.doneNs = lastNs;
     t.transactionIdRewritten = p.rewritten;
     record(std::move(t), p.out.tag);
     armDeadline();
     pump();
+}
+
+qint64 EngineCore::sentTime(const Pending &p, qint64 firstNs)
+{
+    // The link's time for the last request byte, unless the answer began before it (a serial
+    // link's drain time is computed, and a pseudo terminal drains at once): an answer cannot
+    // begin before its request left, so its first byte bounds the send time, and the moment the
+    // write began is the latest time known to be before it.
+    const qint64 linkNs = p.sentNs != 0 ? p.sentNs : p.predictedSentNs;
+    if (linkNs != 0 && (firstNs == 0 || linkNs <= firstNs))
+        return linkNs;
+    return p.writeStartNs;
 }
 
 void EngineCore::record(Transaction transaction, quint64 tag)

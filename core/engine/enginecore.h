@@ -95,6 +95,7 @@ private:
         bool rewritten = false; // transaction id given by the engine (pipelining)
         qint64 writeStartNs = 0;
         qint64 sentNs = 0;      // 0 until the link reports the write
+        qint64 predictedSentNs = 0; // serial: when the link computes the last byte will have left
         qint64 deadlineNs = 0;
         qint64 timedOutNs = 0;  // for late answers
         bool answeredBroadcast = false;
@@ -119,6 +120,8 @@ private:
                 const QByteArray &response = {}, qint64 firstNs = 0, qint64 lastNs = 0, quint8 exceptionCode = 0);
     void record(Transaction transaction, quint64 tag);
     [[nodiscard]] qsizetype indexOfId(quint64 id) const;
+    [[nodiscard]] qint64 waitNs(const RequestItem &item) const;
+    [[nodiscard]] static qint64 sentTime(const Pending &p, qint64 firstNs);
 
     // enginereceive.cpp: framing, matching, late and unsolicited answers
     void onBytesReceived(const QByteArray &bytes, qint64 firstNs, qint64 lastNs);
@@ -153,6 +156,11 @@ private:
 
     QList<Outgoing> m_queue;
     QList<Pending> m_inFlight;
+    struct WriteMark {
+        quint64 id = 0;
+        int attempt = 0;
+    };
+    QList<WriteMark> m_writeOrder; // writes whose bytesWritten() has not come yet, in order
     QList<Pending> m_timedOut;   // newest last, at most lateWindow
     QList<RequestItem> m_answered; // recently answered requests, for second answers
     quint16 m_nextTransactionId = 1;

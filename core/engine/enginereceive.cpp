@@ -198,7 +198,7 @@ bool EngineCore::tryLate(const StreamFrame &frame, const FrameKeys &keys, qint64
         t.response = frame.bytes;
         t.status = TransactionStatus::Late;
         t.exceptionCode = v.exceptionCode;
-        t.sentNs = late.sentNs != 0 && late.sentNs <= firstNs ? late.sentNs : late.writeStartNs;
+        t.sentNs = sentTime(late, firstNs);
         t.firstByteNs = firstNs;
         t.doneNs = lastNs;
         t.transactionIdRewritten = late.rewritten;

@@ -31,6 +31,9 @@ struct PeerState {
     std::atomic<int> opens{0};
     std::atomic<int> writes{0};
     std::atomic<bool> refuse{false}; // open() fails with "connection refused"
+    // > 0: bytesWritten() comes this long after the write, carrying the time of the write (as a
+    // serial link's computed drain time may come after a fast answer).
+    std::atomic<int> writtenDelayMs{0};
 };
 
 class ScriptedLink : public Link
@@ -44,6 +47,7 @@ public:
     }
 
     [[nodiscard]] bool isDatagram() const override { return url().isDatagram(); }
+    [[nodiscard]] qint64 turnaroundNs() const override { return qint64(url().serial.turnaroundUs) * 1000; }
 
     void open() override
     {
@@ -77,8 +81,16 @@ public:
             reportError(LinkError::Kind::Closed, QStringLiteral("cannot write: the link is not open"));
             return false;
         }
-        emit bytesWritten(monotonicNowNs());
         const int generation = m_generation;
+        if (const int delay = m_state->writtenDelayMs; delay > 0) {
+            const qint64 writtenNs = monotonicNowNs();
+            QTimer::singleShot(delay, Qt::PreciseTimer, this, [this, generation, writtenNs] {
+                if (generation == m_generation)
+                    emit bytesWritten(writtenNs);
+            });
+        } else {
+            emit bytesWritten(monotonicNowNs());
+        }
         const QList<Reply> replies = m_script(bytes, m_state->writes++);
         for (const Reply &reply : replies) {
             QTimer::singleShot(reply.delayMs, Qt::PreciseTimer, this, [this, generation, reply] {

@@ -65,6 +65,8 @@ private slots:
     void noPipeliningSendsBytesAsGiven();
     void broadcast();
     void broadcastAnswered();
+    void broadcastWaitsTheLinkTurnaround();
+    void answerBeforeWriteReport();
     void manySends();
     void trafficLog();
 };
@@ -491,6 +493,42 @@ void tst_TransactionEngine::broadcastAnswered()
     QCOMPARE(t->status, TransactionStatus::Unexpected);
     QVERIFY(t->problem.contains(QLatin1String("broadcast")));
     QCOMPARE(t->response, rtu("0600010003", 3));
+}
+
+void tst_TransactionEngine::broadcastWaitsTheLinkTurnaround()
+{
+    // The URL's RS485 turnaround delay is the wait after a broadcast (Serial Line V1.02, 2.4.1).
+    EngineOptions options;
+    options.broadcastTurnaroundMs = 1;
+    EngineHarness h(QStringLiteral("rtu:///dev/ttyTEST?baud=19200&turnaround=80ms"), [](const QByteArray &request, int) {
+        return request.at(0) == 0 ? QList<Reply>{} : QList<Reply>{Reply{1, rtu("0304000a000b", 1), false}};
+    }, options);
+    h.engine.send(h.item(rtu("0600010003", 0)));
+    h.engine.send(h.item(rtu("0300000002", 1)));
+    QVERIFY(h.waitForRecords(2));
+    QCOMPARE(h.records.at(0).status, TransactionStatus::Broadcast);
+    QCOMPARE(h.records.at(1).status, TransactionStatus::Ok);
+    QVERIFY(h.records.at(1).sentNs >= h.records.at(0).sentNs + 80 * 1000000LL);
+}
+
+void tst_TransactionEngine::answerBeforeWriteReport()
+{
+    // The link reports each write 40 ms late, with the write's time. The first answer comes
+    // before that report, the second long after: the first report must not be taken for the
+    // second request's, which is in flight when it comes.
+    EngineHarness h(QStringLiteral("rtu-tcp://peer:4001"), [](const QByteArray &, int index) {
+        return QList<Reply>{Reply{index % 2 == 0 ? 5 : 100, rtu("0304000a000b", 1), false}};
+    });
+    h.peer->writtenDelayMs = 40;
+    for (int i = 0; i < 3; ++i)
+        h.engine.send(h.item(rtu("0300000002", 1)));
+    QVERIFY(h.waitForRecords(3));
+    for (qsizetype i = 0; i < 3; ++i) {
+        QCOMPARE(h.records.at(i).status, TransactionStatus::Ok);
+        checkTimes(h.records.at(i));
+        if (i > 0)
+            QVERIFY(h.records.at(i).sentNs >= h.records.at(i - 1).doneNs);
+    }
 }
 
 void tst_TransactionEngine::manySends()
