@@ -63,8 +63,7 @@ void dissectAscii(Dissection &out, const RequestInfo &request)
     QString decodeError;
     int errorOffset = -1;
     const bool decoded = decodeAsciiPayload(wire, binary, &decodeError, &errorOffset);
-    out.note = QStringLiteral("ASCII frame: offsets count decoded bytes (unit id is byte 0); byte k is characters %1 and %2 of the frame")
-                   .arg(QStringLiteral("2k+2"), QStringLiteral("2k+3"));
+    out.note = QStringLiteral("ASCII frame: offsets count decoded bytes (unit id is byte 0); byte k is characters 2k+2 and 2k+3 of the frame");
     FieldTree &tree = out.fields;
     tree.reset(binary);
 

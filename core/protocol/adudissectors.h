@@ -10,7 +10,9 @@ namespace mbscope::adu {
 
 // What is known of the matching request once its own ADU has been taken apart.
 struct RequestInfo {
-    QByteArray pdu;      // function code first; empty when no request was given
+    QByteArrayView pdu;  // function code first; empty when no request was given. Views the
+                         // caller's request bytes (or storage, for ASCII): no copy per frame.
+    QByteArray storage;  // owns decoded bytes when the request had to be decoded (ASCII)
     int unit = -1;       // unit id, -1 when unknown
     int transactionId = -1; // MBAP only
 };

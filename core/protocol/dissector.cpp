@@ -133,7 +133,11 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
         runFraming(out, request);
         return;
     }
-    Dissection asResponse;
+    // Reused per thread: auto-detection dissects twice, and the second tree keeps its capacity.
+    thread_local Dissection asResponse;
+    asResponse.framingReason.clear();
+    asResponse.directionReason.clear();
+    asResponse.note.clear();
     asResponse.framing = out.framing;
     asResponse.direction = Direction::Response;
     asResponse.fields.reset(frame);
@@ -181,17 +185,16 @@ RequestInfo requestInfo(const QByteArray &request, Framing framing)
     case Framing::Rtu:
         info.unit = quint8(request.at(0));
         if (request.size() >= 4)
-            info.pdu = request.mid(1, request.size() - 3);
+            info.pdu = QByteArrayView(request).sliced(1, request.size() - 3);
         else
-            info.pdu = request.mid(1);
+            info.pdu = QByteArrayView(request).sliced(1);
         break;
     case Framing::Ascii: {
-        QByteArray binary;
-        (void)decodeAsciiPayload(request, binary, nullptr, nullptr);
-        if (!binary.isEmpty())
-            info.unit = quint8(binary.at(0));
-        if (binary.size() >= 3)
-            info.pdu = binary.mid(1, binary.size() - 2);
+        (void)decodeAsciiPayload(request, info.storage, nullptr, nullptr);
+        if (!info.storage.isEmpty())
+            info.unit = quint8(info.storage.at(0));
+        if (info.storage.size() >= 3)
+            info.pdu = QByteArrayView(info.storage).sliced(1, info.storage.size() - 2);
         break;
     }
     case Framing::Tcp:
@@ -200,11 +203,12 @@ RequestInfo requestInfo(const QByteArray &request, Framing framing)
             info.transactionId = (quint8(request.at(0)) << 8) | quint8(request.at(1));
         if (request.size() >= 7)
             info.unit = quint8(request.at(6));
-        info.pdu = request.mid(7);
+        if (request.size() > 7)
+            info.pdu = QByteArrayView(request).sliced(7);
         break;
     case Framing::Pdu:
     case Framing::Auto:
-        info.pdu = request;
+        info.pdu = QByteArrayView(request);
         break;
     }
     return info;

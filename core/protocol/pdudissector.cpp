@@ -37,9 +37,13 @@ void addReferences(const PduContext &ctx, quint8 function, int first)
     default:
         return;
     }
+    // Address fields sit in the fixed header (PDU offsets 1-6: 17's write address is at 5), so
+    // the scan stops there instead of comparing keys on every register value.
     const int end = ctx.tree.size();
     for (int i = first; i < end; ++i) {
         const Field &f = ctx.tree.at(i);
+        if (f.offset > ctx.offset + 6)
+            break;
         if (f.length != 2 || f.severity == Severity::Error)
             continue;
         const char *key = f.key;
