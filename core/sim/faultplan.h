@@ -1,0 +1,23 @@
+#pragma once
+
+#include <QtCore/QByteArray>
+#include <QtCore/QList>
+
+namespace mbscope {
+
+// What the simulator does with one answer after the fault rules have spoken: the endpoint
+// executes the plan, the fault injector (FaultInjector) makes it. A plan without faults is one
+// chunk holding the whole answer with the unit's response delay.
+struct ResponseChunk {
+    QByteArray bytes;   // bytes to write (may be junk, a duplicate answer, or part of the answer)
+    qint64 delayNs = 0; // wait this long after the previous chunk (the first: after the request)
+};
+
+struct FaultPlan {
+    bool drop = false;            // no answer at all
+    bool closeBefore = false;     // close the connection instead of answering
+    bool closeAfter = false;      // close the connection after the last chunk
+    QList<ResponseChunk> chunks;  // in order; empty when drop or closeBefore
+};
+
+} // namespace mbscope
