@@ -10,7 +10,9 @@
  * it is gone) or after --lifetime seconds. On TCP it serves any number of connections at once with
  * select(), reads one request at a time per connection (libmodbus reads exactly one MBAP length),
  * so pipelined requests are answered in order. libmodbus's TCP backend answers any unit id; RTU
- * answers unit 1 and broadcasts (unit 0, no answer).
+ * answers unit 1 and broadcasts (unit 0, no answer). After a request for another unit, libmodbus's
+ * RTU backend takes the next frame on the line for that unit's answer and ignores it (right on a
+ * multi-drop bus, where the other unit answers).
  */
 #include "peer_datamap.h"
 
@@ -157,10 +159,16 @@ static int serve_rtu(const char *device, int baud, time_t deadline, modbus_mappi
         if (FD_ISSET(STDIN_FILENO, &ready) && stdin_closed())
             break;
         if (FD_ISSET(serial, &ready)) {
-            /* A frame for another unit or with a bad CRC returns -1 and is dropped; go on. */
             const int rc = modbus_receive(ctx, query);
-            if (rc > 0)
+            if (rc > 0) {
                 modbus_reply(ctx, query, rc, map);
+            } else {
+                /* A frame libmodbus could not use (bad CRC, a function code it cannot size, another
+                 * unit's request, or the frame it then reads as that unit's answer) may leave bytes
+                 * behind. A serial device resynchronises on the line's t3.5 silence (Serial Line
+                 * V1.02, 2.5.1.1); libmodbus does not, so drop what is left of the frame. */
+                modbus_flush(ctx);
+            }
         }
     }
     modbus_close(ctx);
