@@ -64,10 +64,21 @@ EngineCore::EngineCore(QObject *parent)
     setTarget(LinkUrl{}, EngineOptions{});
 }
 
-EngineCore::~EngineCore() = default;
+EngineCore::~EngineCore()
+{
+    // The link goes first, while everything it could reach is still whole.
+    if (m_link) {
+        disconnect(m_link, nullptr, this, nullptr);
+        delete m_link;
+    }
+}
 
 void EngineCore::setTarget(const LinkUrl &url, const EngineOptions &options)
 {
+    m_deferPump = true;
+    failInFlight(QStringLiteral("%1: the target changed to %2").arg(m_url.toString(), url.toString()));
+    m_deferPump = false;
+    m_writeOrder.clear();
     if (m_link) {
         m_closingQuietly = true;
         m_link->close();
@@ -147,6 +158,10 @@ void EngineCore::schedulePump()
 
 void EngineCore::pump()
 {
+    if (m_processing) {
+        m_pumpAfterProcessing = true; // sent as soon as the frames of this read are handled
+        return;
+    }
     if (m_pumping || m_deferPump) {
         schedulePump();
         return;

@@ -174,6 +174,8 @@ private:
     bool m_pumpScheduled = false;
     bool m_pumping = false;
     bool m_deferPump = false;      // inside a link callback: pump from the event loop
+    bool m_processing = false;     // handling the frames of one read
+    bool m_pumpAfterProcessing = false;
     bool m_closingQuietly = false; // closing on purpose: the closed() that follows says nothing new
     qint64 m_lastBatchNs = 0;
     QList<Transaction> m_batch;

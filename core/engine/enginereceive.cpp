@@ -5,6 +5,8 @@
 #include "protocol/streamframer.h"
 #include "transport/monotonicclock.h"
 
+#include <utility>
+
 namespace mbscope {
 
 namespace {
@@ -70,6 +72,12 @@ void EngineCore::processFramerOutput()
 {
     const QList<StreamFrame> frames = m_framer->takeFrames();
     const QList<SkippedBytes> skipped = m_framer->takeSkipped();
+    if (frames.isEmpty() && skipped.isEmpty())
+        return;
+    // The next request goes out once every frame of this read has been handled, not in the
+    // middle (a write may fail and reset the stream these frames came from).
+    const bool outer = !m_processing;
+    m_processing = true;
     // Frames and skipped runs in stream order, as the bytes came.
     qsizetype f = 0;
     qsizetype s = 0;
@@ -83,6 +91,11 @@ void EngineCore::processFramerOutput()
             handleFrame(frame, m_stamps.firstNs(frame.offset), m_stamps.lastNs(frame.offset + frame.bytes.size() - 1));
         }
     }
+    if (!outer)
+        return;
+    m_processing = false;
+    if (std::exchange(m_pumpAfterProcessing, false))
+        pump();
 }
 
 void EngineCore::handleSkipped(const SkippedBytes &run, qint64 firstNs, qint64 lastNs)
