@@ -1,0 +1,26 @@
+#pragma once
+
+#include <QtCore/QtGlobal>
+
+namespace mbscope {
+
+// The four primary tables of the Modbus data model (V1.1b3, 4.3). Coils and discrete inputs hold
+// single bits (stored as 0 or 1 in a quint16), the register tables 16-bit words.
+enum class SimTable : quint8 {
+    Coils,
+    DiscreteInputs,
+    InputRegisters,
+    HoldingRegisters,
+};
+
+inline constexpr int SimTableCount = 4;
+
+[[nodiscard]] constexpr bool isBitTable(SimTable table)
+{
+    return table == SimTable::Coils || table == SimTable::DiscreteInputs;
+}
+
+// "coils", "discrete inputs", "input registers", "holding registers" (for messages).
+[[nodiscard]] const char *simTableName(SimTable table);
+
+} // namespace mbscope
