@@ -28,6 +28,7 @@
 #define E3_COUNT_ALLOCATIONS 0
 #endif
 
+#if E3_COUNT_ALLOCATIONS
 namespace {
 std::atomic<bool> g_counting{false};
 std::atomic<long> g_allocations{0};
@@ -38,7 +39,6 @@ void countOne()
 }
 } // namespace
 
-#if E3_COUNT_ALLOCATIONS
 extern "C" {
 void *__libc_malloc(std::size_t size);
 void *__libc_calloc(std::size_t count, std::size_t size);
