@@ -1,0 +1,165 @@
+// Polling throughput and latency (issue 3, "Tests"): a local libmodbus server polled as fast as
+// possible with one fixed Read Holding Registers request, by, in the same run and one after the
+// other:
+//   - a raw C socket loop (blocking send/recv of a fixed 12-byte request): the floor;
+//   - libmodbus's client (modbus_read_registers in a loop): the baseline the issue names;
+//   - mbscope's engine, sequential, with every frame logged to a traffic log;
+//   - mbscope's engine with N = 4 and 8 requests in flight (Messaging on TCP/IP V1.0b, 4.2).
+// Each prints transactions/s and latency percentiles; nothing is asserted (figures, not tests).
+// Targets from the issue: sequential at least 90 % of libmodbus's transactions/s while logging
+// every frame; pipelined several times libmodbus.
+//
+// Pinning: the process pins itself with sched_setaffinity() to one CPU (--cpu, default 1) before
+// it starts any thread or the server, so the server (a child: affinity is inherited across fork
+// and exec), the engine's thread and every client share that one core. On this two-core machine
+// unpinned figures are bimodal (client and server on one core or on two, as the scheduler
+// pleases); on one core every client pays the same context switches, so the rows compare.
+// --no-pin leaves placement to the scheduler.
+//
+//   bench_poll [--count N] [--warmup N] [--quantity Q] [--cpu C | --no-pin] [--pipeline 4,8]
+//
+// scripts/bench-poll.sh builds a Release tree and runs it.
+#include "enginepoll.h"
+#include "peerprocess.h"
+#include "pollbaselines.h"
+
+#include <QtCore/QCoreApplication>
+#include <QtCore/QStringList>
+
+#include <sched.h>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <unistd.h>
+
+using namespace mbscope;
+using namespace mbscope::bench;
+
+namespace {
+
+struct Options {
+    PollPlan plan;
+    int cpu = 1;
+    bool pin = true;
+    QList<int> pipelines{4, 8};
+};
+
+bool parse(const QStringList &args, Options *o)
+{
+    for (qsizetype i = 1; i < args.size(); ++i) {
+        const QString &a = args.at(i);
+        if (a == QLatin1String("--no-pin")) {
+            o->pin = false;
+            continue;
+        }
+        if (i + 1 >= args.size())
+            return false;
+        const QString v = args.at(++i);
+        bool ok = true;
+        if (a == QLatin1String("--count"))
+            o->plan.count = v.toLongLong(&ok);
+        else if (a == QLatin1String("--warmup"))
+            o->plan.warmup = v.toLongLong(&ok);
+        else if (a == QLatin1String("--quantity"))
+            o->plan.quantity = v.toInt(&ok);
+        else if (a == QLatin1String("--cpu"))
+            o->cpu = v.toInt(&ok);
+        else if (a == QLatin1String("--pipeline")) {
+            o->pipelines.clear();
+            for (const QString &n : v.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+                o->pipelines.append(n.toInt(&ok));
+                if (!ok || o->pipelines.last() < 1)
+                    return false;
+            }
+        } else
+            return false;
+        if (!ok)
+            return false;
+    }
+    return o->plan.count > 0 && o->plan.warmup >= 0 && o->plan.quantity >= 1 && o->plan.quantity <= 125;
+}
+
+bool pinTo(int cpu)
+{
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    CPU_SET(cpu, &set);
+    return sched_setaffinity(0, sizeof set, &set) == 0;
+}
+
+void printRow(PollFigures &f, double libmodbusRate)
+{
+    const double share = libmodbusRate > 0 ? 100.0 * f.perSecond() / libmodbusRate : 0.0;
+    std::printf("%-34s %10.0f %8.1f %8.1f %8.1f %9.1f %7lld %7.0f %%   %s\n", qPrintable(f.client), f.perSecond(),
+                f.percentileUs(50), f.percentileUs(90), f.percentileUs(99), f.percentileUs(100), f.errors, share,
+                qPrintable(f.note));
+    std::fflush(stdout);
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    Options options;
+    {
+        QStringList args;
+        for (int i = 0; i < argc; ++i)
+            args.append(QString::fromLocal8Bit(argv[i]));
+        if (!parse(args, &options)) {
+            std::fprintf(stderr, "usage: bench_poll [--count N] [--warmup N] [--quantity Q] [--cpu C | --no-pin] "
+                                 "[--pipeline 4,8]\n");
+            return 2;
+        }
+    }
+    // Before QCoreApplication and the server: every thread and child made later inherits it.
+    if (options.pin) {
+        const long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+        if (options.cpu >= cpus)
+            options.cpu = int(cpus - 1);
+        if (!pinTo(options.cpu)) {
+            std::fprintf(stderr, "bench_poll: cannot pin to CPU %d: %s (running unpinned)\n", options.cpu,
+                         std::strerror(errno));
+            options.pin = false;
+        }
+    }
+    QCoreApplication app(argc, argv);
+
+    QString why;
+    if (!testpeers::libmodbusPeersAvailable(&why)) {
+        std::fprintf(stderr, "bench_poll: %s\n", qPrintable(why));
+        return 2;
+    }
+    testpeers::PeerProcess server;
+    if (!server.start(testpeers::libmodbusServerPath(), {QStringLiteral("tcp")})) {
+        std::fprintf(stderr, "bench_poll: %s\n", qPrintable(server.error()));
+        return 2;
+    }
+    options.plan.port = server.port();
+
+    std::printf("bench_poll: libmodbus_server on %s; Read Holding Registers x %d; %lld transactions per client "
+                "after %lld warm-up; %s\n",
+                qPrintable(server.where()), options.plan.quantity, options.plan.count, options.plan.warmup,
+                options.pin ? qPrintable(QStringLiteral("server and clients pinned to CPU %1").arg(options.cpu))
+                            : "unpinned");
+    std::printf("%-34s %10s %8s %8s %8s %9s %7s %9s   %s\n", "client", "tx/s", "p50 us", "p90 us", "p99 us",
+                "max us", "errors", "vs lmb", "note");
+
+    PollFigures raw = pollRawSocket(options.plan);
+    PollFigures libmodbus = pollLibmodbus(options.plan);
+    const double baseline = libmodbus.perSecond();
+    printRow(raw, baseline);
+    printRow(libmodbus, baseline);
+
+    EnginePollSettings engine;
+    engine.plan = options.plan;
+    engine.logTraffic = true;
+    PollFigures sequential = pollEngine(engine);
+    printRow(sequential, baseline);
+    for (int depth : options.pipelines) {
+        engine.pipelineDepth = depth;
+        PollFigures pipelined = pollEngine(engine);
+        printRow(pipelined, baseline);
+    }
+    const bool failed = raw.errors || libmodbus.errors || sequential.errors;
+    return failed ? 1 : 0;
+}
