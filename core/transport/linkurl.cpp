@@ -136,13 +136,16 @@ QString hexByte(int value)
 }
 
 // Host and port of a network URL; returns an error or an empty string.
-QString parseHostPort(QStringView authority, LinkUrl &url)
+QString parseHostPort(QStringView authority, LinkUrl &url, LinkUse use)
 {
     const QString scheme = LinkUrl::schemeName(url.kind);
-    if (authority.isEmpty())
-        return QStringLiteral("no host: expected %1://host:port").arg(scheme);
     QStringView rest;
-    if (authority.startsWith(u'[')) {
+    if (use == LinkUse::Listen && (authority.isEmpty() || authority.startsWith(u':') || authority == u"/")) {
+        url.host = QStringLiteral("127.0.0.1"); // a server binds the loopback interface unless told
+        rest = authority;
+    } else if (authority.isEmpty()) {
+        return QStringLiteral("no host: expected %1://host:port").arg(scheme);
+    } else if (authority.startsWith(u'[')) {
         const qsizetype close = authority.indexOf(u']');
         if (close < 0)
             return QStringLiteral("'[' without ']' in the host: expected an IPv6 address in brackets, e.g. %1://[::1]:502")
@@ -195,8 +198,9 @@ QString parseHostPort(QStringView authority, LinkUrl &url)
         const qlonglong port = portText.toLongLong(&ok);
         if (!ok || portText.startsWith(u'+') || portText.startsWith(u'-'))
             return QStringLiteral("port '%1' is not a number").arg(portText.toString());
-        if (port < 1 || port > 65535)
-            return QStringLiteral("port %1 is out of range: expected 1-65535").arg(port);
+        const int lowest = use == LinkUse::Listen ? 0 : 1; // listening on 0: the OS chooses
+        if (port < lowest || port > 65535)
+            return QStringLiteral("port %1 is out of range: expected %2-65535").arg(port).arg(lowest);
         url.port = quint16(port);
         return {};
     }
@@ -397,6 +401,11 @@ QString LinkUrl::schemeName(LinkKind kind)
 
 LinkUrl::Result LinkUrl::parse(QStringView input)
 {
+    return parse(input, LinkUse::Connect);
+}
+
+LinkUrl::Result LinkUrl::parse(QStringView input, LinkUse use)
+{
     const QStringView text = input.trimmed();
     auto fail = [&](const QString &what) { return Result{std::nullopt, text.toString() + QStringLiteral(": ") + what}; };
     const qsizetype separator = text.indexOf(u"://");
@@ -426,7 +435,7 @@ LinkUrl::Result LinkUrl::parse(QStringView input)
             return fail(QStringLiteral("no serial device: expected e.g. %1:///dev/ttyUSB0").arg(scheme));
         if (url.kind == LinkKind::Ascii)
             url.serial.dataBits = 7; // Serial Line V1.02, 2.5.2: ASCII characters carry 7 data bits
-    } else if (const QString error = parseHostPort(authority, url); !error.isEmpty()) {
+    } else if (const QString error = parseHostPort(authority, url, use); !error.isEmpty()) {
         return fail(error);
     }
     if (const QString error = parseOptions(query, url); !error.isEmpty())

@@ -10,6 +10,14 @@
 
 namespace mbscope {
 
+// What a URL is parsed for. Listen (the simulator's endpoints) also accepts port 0 (the OS
+// chooses a free port) and an empty host (tcp://:502), which means 127.0.0.1: a server binds
+// the loopback interface unless its URL names another one.
+enum class LinkUse : quint8 {
+    Connect,
+    Listen,
+};
+
 // Which link a target URL names. The framing on the wire follows from it (LinkUrl::framing).
 enum class LinkKind : quint8 {
     Tcp,      // tcp://host:502                 MBAP over TCP
@@ -68,6 +76,7 @@ public:
     struct Result;
 
     [[nodiscard]] static Result parse(QStringView text);
+    [[nodiscard]] static Result parse(QStringView text, LinkUse use);
     // "tcp, rtu-tcp, ascii-tcp, udp, rtu-udp, rtu, ascii, tls"
     [[nodiscard]] static QString knownSchemes();
     [[nodiscard]] static QString schemeName(LinkKind kind); // "rtu-tcp"
