@@ -101,19 +101,21 @@ private:
         bool answeredBroadcast = false;
     };
 
-    // enginecore.cpp: link, sending, timers, records
+    // enginelink.cpp: opening, errors and closing of the link
     void ensureLink();
+    void onOpened();
+    void onClosed(const QString &reason);
+    void onLinkError(const LinkError &error);
+    void failInFlight(const QString &problem);
+    void failHead(const QString &problem);
+
+    // enginecore.cpp: sending, timers, records
     void pump();
     void schedulePump();
     void sendNext();
     void armDeadline();
-    void onOpened();
-    void onClosed(const QString &reason);
-    void onLinkError(const LinkError &error);
     void onBytesWritten(qint64 lastByteNs);
     void onDeadline();
-    void failInFlight(const QString &problem);
-    void failHead(const QString &problem);
     void resetFramer();
     // Removes in-flight entry index and records (or retries) it.
     void finish(qsizetype index, TransactionStatus status, const QString &problem,
