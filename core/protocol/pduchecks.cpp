@@ -66,16 +66,18 @@ QString functionLabel(const PduContext &ctx)
 
 int missing(const PduContext &ctx, int parent, int pduOffset, int pduSize, bool atLeast, const char *what)
 {
+    // what names fields as a sentence does ("object length and object value"); a field's own name
+    // ("Exception code") reads the same once lowered.
     const int from = qBound(0, pduOffset, qMax(ctx.length, 0));
     const int have = qMax(0, ctx.length - from);
     const int f = ctx.addChild(parent, kMissingKey, kMissingName, from, have, 0,
                                have > 0 ? ValueFormat::Bytes : ValueFormat::None);
     ctx.tree.flag(f, Severity::Error,
-                  QStringLiteral("missing: %1; %2").arg(QLatin1String(what), moreBytes(qMax(1, pduSize - ctx.length), atLeast)));
+                  QStringLiteral("missing: %1; %2").arg(lowerFirst(QString::fromLatin1(what)), moreBytes(qMax(1, pduSize - ctx.length), atLeast)));
     return f;
 }
 
-int missingData(const PduContext &ctx, int parent, int from, int countStart, int countEnd)
+int missingData(const PduContext &ctx, int parent, int from, int countStart, int countEnd, const char *counter)
 {
     const int announced = countEnd - countStart;
     const int present = qBound(0, ctx.length - countStart, announced);
@@ -84,8 +86,8 @@ int missingData(const PduContext &ctx, int parent, int from, int countStart, int
     const int f = ctx.addChild(parent, kMissingKey, kMissingName, start, have, 0,
                                have > 0 ? ValueFormat::Bytes : ValueFormat::None);
     ctx.tree.flag(f, Severity::Error,
-                  QStringLiteral("missing: byte count %1 announces %2 but only %3 present; %4")
-                      .arg(QString::number(announced), amount(announced, "data byte", "data bytes"),
+                  QStringLiteral("missing: %1 %2 announces %3 but only %4 present; %5")
+                      .arg(QLatin1String(counter), QString::number(announced), amount(announced, "data byte", "data bytes"),
                            present == 1 ? QStringLiteral("1 is") : QString::number(present) + QStringLiteral(" are"),
                            moreBytes(countEnd - ctx.length, false)));
     return f;
@@ -98,9 +100,34 @@ bool trailing(const PduContext &ctx, int pduEnd)
     const int n = ctx.length - pduEnd;
     const int f = ctx.add("modbus.trailing", "Unexpected bytes", pduEnd, n, 0, ValueFormat::Bytes);
     ctx.tree.flag(f, Severity::Error,
-                  QStringLiteral("%1 after the end of the PDU: its fields make it %2 long (function code included)")
-                      .arg(amount(n, "byte", "bytes"), amount(pduEnd, "byte", "bytes")));
+                  QStringLiteral("%1 after the end of the PDU: it should be %2 long, %3 are present")
+                      .arg(amount(n, "byte", "bytes"), amount(pduEnd, "byte", "bytes"), QString::number(ctx.length)));
     return true;
+}
+
+int countedFields(const PduContext &ctx, const Slot *layout, int count, int *indexes, const char *tooSmall)
+{
+    int fixed = 0;
+    for (int i = 1; i < count; ++i)
+        fixed += layout[i].size;
+    if (!addFixed(ctx, ctx.parent, 1, layout, 1, indexes, 2 + fixed, true))
+        return -1;
+    const int byteCount = ctx.byte(1);
+    if (byteCount < fixed) {
+        ctx.tree.flag(indexes[0], Severity::Error,
+                      QStringLiteral("byte count %1 is too small: %2").arg(QString::number(byteCount), QLatin1String(tooSmall)));
+    }
+    const int end = 2 + qMax(byteCount, fixed);
+    if (!addFixed(ctx, ctx.parent, 2, layout + 1, count - 1, indexes + 1, end, byteCount < fixed))
+        return -1;
+    return end;
+}
+
+void countedEnd(const PduContext &ctx, int end)
+{
+    if (ctx.length < end)
+        missingData(ctx, ctx.parent, ctx.length, 2, end);
+    trailing(ctx, end);
 }
 
 bool requestUsable(const PduContext &ctx, int minSize)

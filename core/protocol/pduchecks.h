@@ -1,7 +1,12 @@
 #pragma once
 
-// Private helpers shared by the data-access dissectors (pdureadbits.cpp ... pdureadwrite.cpp).
-// Not part of the core's API: include only from core/protocol/pdu*.cpp.
+// Private helpers shared by the PDU dissectors (core/protocol/pdu*.cpp), data access and
+// diagnostics alike. Not part of the core's API: include only from core/protocol/pdu*.cpp.
+//
+// A PDU that ends early gets one field, modbus.missing ("Missing bytes", error), where it ends:
+// it covers any partial bytes and its message names every field still absent and how many more
+// bytes the PDU needs ("missing: quantity; expected 2 more bytes"), as frame.missing does for a
+// frame. Bytes after the PDU's end get one modbus.trailing field.
 
 #include "hexformat.h"
 #include "pducontext.h"
@@ -30,12 +35,26 @@ bool addFixed(const PduContext &ctx, int parent, int pduOffset, const Slot *layo
 // "missing: <what>; expected N more bytes" (or "at least N").
 int missing(const PduContext &ctx, int parent, int pduOffset, int pduSize, bool atLeast, const char *what);
 
-// Adds the field for data announced by a byte count but cut short: from is where the absent
-// (or partial) item starts, countStart..countEnd the bytes the byte count covers.
-int missingData(const PduContext &ctx, int parent, int from, int countStart, int countEnd);
+// Adds the field for data announced by a count field (counter: "byte count", "object length")
+// but cut short: from is where the absent (or partial) item starts, countStart..countEnd the
+// bytes the count covers.
+int missingData(const PduContext &ctx, int parent, int from, int countStart, int countEnd,
+                const char *counter = "byte count");
 
 // Flags bytes after pduEnd as modbus.trailing (error). Returns true when there were any.
 bool trailing(const PduContext &ctx, int pduEnd);
+
+// A response whose byte count (PDU offset 1, layout[0]) covers fixed fields (layout[1..count))
+// then data of its own length: 0C and 11 (V1.1b3 6.10, 6.13). Adds the byte count and the fixed
+// fields, flags a byte count too small for them ("byte count 1 is too small: <tooSmall>") and
+// returns where the PDU should end, or -1 when it ends before the fixed fields do.
+int countedFields(const PduContext &ctx, const Slot *layout, int count, int *indexes, const char *tooSmall);
+// After the data of countedFields: the missing field when the PDU ends before end, then trailing.
+void countedEnd(const PduContext &ctx, int end);
+
+// The function code field: the dispatch (pdu::dissect) adds it just before calling a family's
+// dissector.
+[[nodiscard]] inline int functionField(const PduContext &ctx) { return ctx.tree.size() - 1; }
 
 // The matching request when it is for the same function and holds at least minSize bytes.
 [[nodiscard]] bool requestUsable(const PduContext &ctx, int minSize);

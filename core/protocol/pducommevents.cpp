@@ -11,16 +11,15 @@
 //   modbus.message_count         0C response (Decimal)
 //   modbus.event                 0C response: one per event byte, address 0 = most recent (Hex,
 //                                meaning the event type and its flags)
+#include "pduchecks.h"
 #include "pdudissector.h"
-
-#include "pdudiagfields.h"
 
 #include <array>
 
 namespace mbscope::pdu {
 namespace {
 
-using namespace diag;
+using namespace checks;
 
 // V1.1b3, 6.10: the event byte types and their bit flags. Every byte value gets a static
 // meaning, built at compile time, so the event list allocates nothing.
@@ -101,10 +100,10 @@ void noteSerialLineOnly(const PduContext &ctx, const QString &note)
     ctx.tree.flag(functionField(ctx), Severity::Info, note);
 }
 
-void addStatus(const PduContext &ctx, int pduOffset)
+// The status field s (V1.1b3 6.9), when present.
+void checkStatus(const PduContext &ctx, int s, int pduOffset)
 {
-    const int s = addFixed(ctx, pduOffset, 2, "modbus.status", "Status", ValueFormat::Hex);
-    if (!ctx.has(pduOffset, 2))
+    if (s < 0)
         return;
     const quint16 status = ctx.u16(pduOffset);
     if (status == 0x0000) {
@@ -125,11 +124,14 @@ void dissectReadExceptionStatus(const PduContext &ctx)
     noteSerialLineOnly(ctx,
                        QStringLiteral("serial line only: V1.1b3 6.7 defines Read Exception Status for serial line devices"));
     if (!isResponse(ctx)) {
-        addTrailing(ctx, 1);
+        trailing(ctx, 1);
         return;
     }
-    const int s = addFixed(ctx, 1, 1, "modbus.exception_status", "Exception status", ValueFormat::Hex);
-    if (!ctx.has(1))
+    static const Slot layout[] = {
+        {"modbus.exception_status", "Exception status", 1, ValueFormat::Hex, "exception status"},
+    };
+    int s = -1;
+    if (!addFixed(ctx, ctx.parent, 1, layout, 1, &s, 2, false))
         return;
     // The meaning of each of the eight outputs is device specific (V1.1b3, 6.7).
     const quint8 status = ctx.byte(1);
@@ -139,7 +141,7 @@ void dissectReadExceptionStatus(const PduContext &ctx)
                                    ValueFormat::Bit, on ? "ON" : "OFF");
         ctx.tree.setAddress(b, bit);
     }
-    addTrailing(ctx, 2);
+    trailing(ctx, 2);
 }
 
 void dissectCommEventCounter(const PduContext &ctx)
@@ -147,15 +149,18 @@ void dissectCommEventCounter(const PduContext &ctx)
     noteSerialLineOnly(ctx,
                        QStringLiteral("serial line only: V1.1b3 6.9 defines Get Comm Event Counter for serial line devices"));
     if (!isResponse(ctx)) {
-        addTrailing(ctx, 1);
+        trailing(ctx, 1);
         return;
     }
-    addStatus(ctx, 1);
-    if (!ctx.has(1, 2))
-        return;
-    addFixed(ctx, 3, 2, "modbus.event_count", "Event count", ValueFormat::Decimal);
-    if (ctx.has(3, 2))
-        addTrailing(ctx, 5);
+    static const Slot layout[] = {
+        {"modbus.status", "Status", 2, ValueFormat::Hex, "status and event count"},
+        {"modbus.event_count", "Event count", 2, ValueFormat::Decimal, "event count"},
+    };
+    int f[2] = {-1, -1};
+    const bool whole = addFixed(ctx, ctx.parent, 1, layout, 2, f, 5, false);
+    checkStatus(ctx, f[0], 1);
+    if (whole)
+        trailing(ctx, 5);
 }
 
 void dissectCommEventLog(const PduContext &ctx)
@@ -163,41 +168,30 @@ void dissectCommEventLog(const PduContext &ctx)
     noteSerialLineOnly(ctx,
                        QStringLiteral("serial line only: V1.1b3 6.10 defines Get Comm Event Log for serial line devices"));
     if (!isResponse(ctx)) {
-        addTrailing(ctx, 1);
+        trailing(ctx, 1);
         return;
     }
     // Byte count = 6 (status, event count, message count) + one byte per event, 0-64 events.
-    const int bc = addFixed(ctx, 1, 1, "modbus.byte_count", "Byte count", ValueFormat::Decimal);
-    if (!ctx.has(1))
-        return;
-    const int count = ctx.byte(1);
-    const int present = ctx.length - 2;
-    if (count < 6) {
-        ctx.tree.flag(bc, Severity::Error,
-                      QStringLiteral("byte count %1 is too small: status, event count and message count take 6 bytes")
-                          .arg(count));
-    } else if (count > 6 + 64) {
-        ctx.tree.flag(bc, Severity::Error,
+    static const Slot layout[] = {
+        {"modbus.byte_count", "Byte count", 1, ValueFormat::Decimal,
+         "byte count, status, event count, message count and any events"},
+        {"modbus.status", "Status", 2, ValueFormat::Hex, "status, event count, message count and any events"},
+        {"modbus.event_count", "Event count", 2, ValueFormat::Decimal, "event count, message count and any events"},
+        {"modbus.message_count", "Message count", 2, ValueFormat::Decimal, "message count and any events"},
+    };
+    int f[4] = {-1, -1, -1, -1};
+    const int end = countedFields(ctx, layout, 4, f, "status, event count and message count take 6 bytes");
+    const int count = ctx.has(1) ? ctx.byte(1) : 0;
+    if (count > 6 + 64) {
+        ctx.tree.flag(f[0], Severity::Error,
                       QStringLiteral("byte count %1 announces %2 events: the log holds at most 64 (byte count 6-70)")
                           .arg(count).arg(count - 6));
     }
-    if (count > present) {
-        ctx.tree.flag(bc, Severity::Error,
-                      QStringLiteral("byte count %1 announces %1 data bytes but only %2 are present")
-                          .arg(count).arg(qMax(present, 0)));
-    }
-    addStatus(ctx, 2);
-    if (!ctx.has(2, 2))
-        return;
-    addFixed(ctx, 4, 2, "modbus.event_count", "Event count", ValueFormat::Decimal);
-    if (!ctx.has(4, 2))
-        return;
-    addFixed(ctx, 6, 2, "modbus.message_count", "Message count", ValueFormat::Decimal);
-    if (!ctx.has(6, 2))
+    checkStatus(ctx, f[1], 2);
+    if (end < 0)
         return;
     // Events end where the byte count says, or where the PDU does if that comes first.
-    const int end = qMin(2 + qMax(count, 6), ctx.length);
-    for (int at = 8; at < end; ++at) {
+    for (int at = 8; at < qMin(end, ctx.length); ++at) {
         const quint8 v = ctx.byte(at);
         const int e = ctx.add("modbus.event", "Event", at, 1, v, ValueFormat::Hex, kEventTexts.text[v].data());
         ctx.tree.setAddress(e, at - 8);
@@ -207,7 +201,7 @@ void dissectCommEventLog(const PduContext &ctx)
                                          "events bit 6, 0x04 is listen only mode and 0x00 a restart").arg(hexByte(v)));
         }
     }
-    addTrailing(ctx, 2 + qMax(count, 6));
+    countedEnd(ctx, end);
 }
 
 } // namespace mbscope::pdu

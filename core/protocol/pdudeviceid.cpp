@@ -15,14 +15,13 @@
 //                               children modbus.object_id (meaning the object's name),
 //                               modbus.object_length (Decimal), modbus.object_value (Ascii)
 //   modbus.data                 0D and reserved MEI types: the bytes after the MEI type
+#include "pduchecks.h"
 #include "pdudissector.h"
-
-#include "pdudiagfields.h"
 
 namespace mbscope::pdu {
 namespace {
 
-using namespace diag;
+using namespace checks;
 
 const char *readDeviceIdCodeName(quint8 code)
 {
@@ -68,11 +67,11 @@ const char *conformityName(quint8 level)
     return id >= 0x07 && id <= 0x7F;
 }
 
-int addReadDeviceIdCode(const PduContext &ctx)
+// The read device ID code field c, when present.
+void checkReadDeviceIdCode(const PduContext &ctx, int c)
 {
-    const int c = addFixed(ctx, 2, 1, "modbus.read_device_id_code", "Read device ID code", ValueFormat::Hex);
-    if (!ctx.has(2))
-        return c;
+    if (c < 0)
+        return;
     const quint8 code = ctx.byte(2);
     ctx.tree.setMeaning(c, readDeviceIdCodeName(code));
     if (code < 0x01 || code > 0x04) {
@@ -80,19 +79,23 @@ int addReadDeviceIdCode(const PduContext &ctx)
                       QStringLiteral("%1 is not a read device ID code: 01 basic, 02 regular, 03 extended stream, "
                                      "04 one specific object (V1.1b3 6.21)").arg(hexByte(code)));
     }
-    return c;
 }
 
 void dissectDeviceIdRequest(const PduContext &ctx)
 {
-    addReadDeviceIdCode(ctx);
-    if (!ctx.has(2))
+    static const Slot layout[] = {
+        {"modbus.read_device_id_code", "Read device ID code", 1, ValueFormat::Hex, "read device ID code and object ID"},
+        {"modbus.object_id", "Object ID", 1, ValueFormat::Hex, "object ID"},
+    };
+    int f[2] = {-1, -1};
+    const bool whole = addFixed(ctx, ctx.parent, 2, layout, 2, f, 4, false);
+    checkReadDeviceIdCode(ctx, f[0]);
+    if (!whole)
         return;
     const quint8 code = ctx.byte(2);
-    const quint8 id = ctx.has(3) ? ctx.byte(3) : 0;
-    const int o = addFixed(ctx, 3, 1, "modbus.object_id", "Object ID", ValueFormat::Hex, objectName(id));
-    if (!ctx.has(3))
-        return;
+    const quint8 id = ctx.byte(3);
+    const int o = f[1];
+    ctx.tree.setMeaning(o, objectName(id));
     if (isReservedObject(id)) {
         ctx.tree.flag(o, Severity::Warning,
                       QStringLiteral("%1 is a reserved object ID (0x07-0x7F)").arg(hexByte(id)));
@@ -103,7 +106,7 @@ void dissectDeviceIdRequest(const PduContext &ctx)
                           .arg(hexByte(id), code == 0x01 ? QStringLiteral("basic (0x00-0x02)")
                                                          : QStringLiteral("regular (0x00-0x06)")));
     }
-    addTrailing(ctx, 4);
+    trailing(ctx, 4);
 }
 
 // The object list of a response, from pduOffset 7 to the end of the PDU: every object present
@@ -137,20 +140,14 @@ int dissectObjects(const PduContext &ctx, int countField, quint8 code)
         previous = id;
         ++index;
         if (!hasLength) {
-            const int l = ctx.addChild(g, "modbus.object_length", "Object length", at + 1, 0);
-            ctx.tree.flag(l, Severity::Error,
-                          QStringLiteral("missing: 1 byte expected at PDU offset %1, the PDU ends there").arg(at + 1));
+            missing(ctx, g, at + 1, at + 2, true, "object length and object value");
             break;
         }
-        const int l = ctx.addChild(g, "modbus.object_length", "Object length", at + 1, 1, quint64(length),
-                                   ValueFormat::Decimal);
+        ctx.addChild(g, "modbus.object_length", "Object length", at + 1, 1, quint64(length), ValueFormat::Decimal);
         if (shown > 0 || length == 0)
             ctx.addChild(g, "modbus.object_value", "Object value", at + 2, shown, 0, ValueFormat::Ascii);
-        if (length > available) {
-            ctx.tree.flag(l, Severity::Error,
-                          QStringLiteral("object length %1 exceeds the PDU: %1 bytes expected, only %2 present")
-                              .arg(length).arg(available));
-        }
+        if (length > available)
+            missingData(ctx, g, at + 2 + shown, at + 2, at + 2 + length, "object length");
         at += 2 + length;
     }
     if (index != announced) {
@@ -166,8 +163,20 @@ int dissectObjects(const PduContext &ctx, int countField, quint8 code)
 
 void dissectDeviceIdResponse(const PduContext &ctx)
 {
-    const int c = addReadDeviceIdCode(ctx);
-    if (!ctx.has(2))
+    static const Slot layout[] = {
+        {"modbus.read_device_id_code", "Read device ID code", 1, ValueFormat::Hex,
+         "read device ID code, conformity level, more follows, next object ID, number of objects and objects"},
+        {"modbus.conformity_level", "Conformity level", 1, ValueFormat::Hex,
+         "conformity level, more follows, next object ID, number of objects and objects"},
+        {"modbus.more_follows", "More follows", 1, ValueFormat::Hex, "more follows, next object ID, number of objects and objects"},
+        {"modbus.next_object_id", "Next object ID", 1, ValueFormat::Hex, "next object ID, number of objects and objects"},
+        {"modbus.object_count", "Number of objects", 1, ValueFormat::Decimal, "number of objects and objects"},
+    };
+    int f[5] = {-1, -1, -1, -1, -1};
+    const bool whole = addFixed(ctx, ctx.parent, 2, layout, 5, f, 7, true);
+    const int c = f[0];
+    checkReadDeviceIdCode(ctx, c);
+    if (c < 0)
         return;
     const quint8 code = ctx.byte(2);
     const bool requested = ctx.request.size() >= 4 && ctx.requestByte(0) == 0x2B && ctx.requestByte(1) == 0x0E;
@@ -176,8 +185,8 @@ void dissectDeviceIdResponse(const PduContext &ctx)
                       QStringLiteral("does not match the request: the request's read device ID code is %1")
                           .arg(hexByte(ctx.requestByte(2))));
     }
-    const int cl = addFixed(ctx, 3, 1, "modbus.conformity_level", "Conformity level", ValueFormat::Hex);
-    if (!ctx.has(3))
+    const int cl = f[1];
+    if (cl < 0)
         return;
     const quint8 level = ctx.byte(3);
     ctx.tree.setMeaning(cl, conformityName(level));
@@ -190,8 +199,8 @@ void dissectDeviceIdResponse(const PduContext &ctx)
                       QStringLiteral("the device answered an individual access (code 04) but its conformity level "
                                      "%1 says it supports stream access only").arg(hexByte(level)));
     }
-    const int mf = addFixed(ctx, 4, 1, "modbus.more_follows", "More follows", ValueFormat::Hex);
-    if (!ctx.has(4))
+    const int mf = f[2];
+    if (mf < 0)
         return;
     const quint8 more = ctx.byte(4);
     if (more == 0x00) {
@@ -206,8 +215,8 @@ void dissectDeviceIdResponse(const PduContext &ctx)
         ctx.tree.flag(mf, Severity::Error,
                       QStringLiteral("%1 is not allowed: more follows is 0x00 (no) or 0xFF (yes)").arg(hexByte(more)));
     }
-    const int next = addFixed(ctx, 5, 1, "modbus.next_object_id", "Next object ID", ValueFormat::Hex);
-    if (!ctx.has(5))
+    const int next = f[3];
+    if (next < 0)
         return;
     if (more == 0xFF)
         ctx.tree.setMeaning(next, objectName(ctx.byte(5)));
@@ -216,15 +225,13 @@ void dissectDeviceIdResponse(const PduContext &ctx)
                       QStringLiteral("%1 is not allowed: the next object ID is 0x00 when more follows is 0x00")
                           .arg(hexByte(ctx.byte(5))));
     }
-    const int count = addFixed(ctx, 6, 1, "modbus.object_count", "Number of objects", ValueFormat::Decimal);
-    if (!ctx.has(6))
+    const int count = f[4];
+    if (!whole)
         return;
     if (ctx.length <= 7) {
-        if (ctx.byte(6) != 0) {
-            ctx.tree.flag(count, Severity::Error,
-                          QStringLiteral("truncated: %1 objects announced, the PDU ends before the object list")
-                              .arg(ctx.byte(6)));
-        }
+        // Each object takes at least its ID and length bytes.
+        if (ctx.byte(6) != 0)
+            missing(ctx, ctx.parent, 7, 7 + 2 * ctx.byte(6), true, "objects");
         return;
     }
     const int last = dissectObjects(ctx, count, code);
@@ -255,8 +262,9 @@ void dissectDeviceIdResponse(const PduContext &ctx)
 
 void dissectEncapsulatedInterface(const PduContext &ctx)
 {
-    const int m = addFixed(ctx, 1, 1, "modbus.mei_type", "MEI type", ValueFormat::Hex);
-    if (!ctx.has(1))
+    static const Slot layout[] = {{"modbus.mei_type", "MEI type", 1, ValueFormat::Hex, "MEI type"}};
+    int m = -1;
+    if (!addFixed(ctx, ctx.parent, 1, layout, 1, &m, 2, true))
         return;
     const quint8 mei = ctx.byte(1);
     if (isResponse(ctx) && ctx.request.size() >= 2 && ctx.requestByte(0) == 0x2B && ctx.requestByte(1) != mei) {

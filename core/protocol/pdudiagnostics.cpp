@@ -11,16 +11,15 @@
 //   modbus.counter_value        0B-12 response: the counter (Decimal, named after the counter)
 //   modbus.diagnostic_data      the data word of every other sub-function (0000 in requests and in
 //                               the echoes of 0A and 14), and the raw data of reserved ones (Bytes)
+#include "pduchecks.h"
 #include "pdudissector.h"
-
-#include "pdudiagfields.h"
 
 #include <array>
 
 namespace mbscope::pdu {
 namespace {
 
-using namespace diag;
+using namespace checks;
 
 enum class Kind : quint8 {
     Echo,       // 00: any data, echoed
@@ -104,11 +103,22 @@ const char *characterName(quint8 c)
     return ctx.request.size() >= 3 && ctx.requestByte(0) == 0x08;
 }
 
+// Adds one 2-byte field at PDU offset 3, the data word every sub-function but 00 and 03 carries,
+// and flags bytes after it. Returns the field, or -1 when the PDU ends first.
+int addDataWord(const PduContext &ctx, const char *key, const char *name, ValueFormat format, const char *what)
+{
+    const Slot slot{key, name, 2, format, what};
+    int f = -1;
+    if (addFixed(ctx, ctx.parent, 3, &slot, 1, &f, 5, false))
+        trailing(ctx, 5);
+    return f;
+}
+
 // Data word of the request of a sub-function that takes none (V1.1b3, 6.8.1: "0000").
 void addZeroData(const PduContext &ctx, const SubFunction &sub, bool echo)
 {
-    const int d = addFixed(ctx, 3, 2, "modbus.diagnostic_data", "Data", ValueFormat::Hex);
-    if (!ctx.has(3, 2))
+    const int d = addDataWord(ctx, "modbus.diagnostic_data", "Data", ValueFormat::Hex, "data");
+    if (d < 0)
         return;
     if (ctx.u16(3) != 0) {
         ctx.tree.flag(d, Severity::Error,
@@ -116,12 +126,11 @@ void addZeroData(const PduContext &ctx, const SubFunction &sub, bool echo)
                           .arg(hexWord(ctx.u16(3)), QString::fromLatin1(sub.name),
                                echo ? QStringLiteral("echoes the request and") : QStringLiteral("request")));
     }
-    addTrailing(ctx, 5);
 }
 
 // Flags a response whose data differs from the request's (sub-functions that echo). A fixed-size
 // echo compares `bytes` bytes; a variable one (00) compares all the data.
-void checkEcho(const PduContext &ctx, int field, int from, int bytes, bool variable = false)
+void checkDataEcho(const PduContext &ctx, int field, int from, int bytes, bool variable = false)
 {
     if (!isResponse(ctx) || !sameRequest(ctx) || ctx.requestU16(1) != ctx.u16(1))
         return;
@@ -139,7 +148,7 @@ void checkEcho(const PduContext &ctx, int field, int from, int bytes, bool varia
     if (sent != got && got == bytes) {
         ctx.tree.flag(field, Severity::Error,
                       QStringLiteral("does not echo the request: %1 of data returned, the request sent %2")
-                          .arg(byteCount(got), byteCount(qMax(sent, 0))));
+                          .arg(amount(got, "byte", "bytes"), amount(qMax(sent, 0), "byte", "bytes")));
     }
 }
 
@@ -152,22 +161,22 @@ void dissectEcho(const PduContext &ctx)
             const int e = ctx.add("modbus.echo_data", "Echo data", 3, 0);
             ctx.tree.flag(e, Severity::Error,
                           QStringLiteral("missing: the request sent %1 of data to echo, none came back")
-                              .arg(byteCount(int(ctx.request.size()) - 3)));
+                              .arg(amount(ctx.request.size() - 3, "byte", "bytes")));
         }
         return;
     }
     const int e = ctx.add("modbus.echo_data", "Echo data", 3, bytes, 0, ValueFormat::Bytes);
     if (bytes % 2 != 0) {
         ctx.tree.flag(e, Severity::Info,
-                      QStringLiteral("odd length (%1): V1.1b3 6.8.1 gives the data as 2-byte words").arg(byteCount(bytes)));
+                      QStringLiteral("odd length (%1): V1.1b3 6.8.1 gives the data as 2-byte words").arg(amount(bytes, "byte", "bytes")));
     }
-    checkEcho(ctx, e, 3, bytes, true);
+    checkDataEcho(ctx, e, 3, bytes, true);
 }
 
 void dissectRestart(const PduContext &ctx)
 {
-    const int r = addFixed(ctx, 3, 2, "modbus.restart_option", "Restart option", ValueFormat::Hex);
-    if (!ctx.has(3, 2))
+    const int r = addDataWord(ctx, "modbus.restart_option", "Restart option", ValueFormat::Hex, "restart option");
+    if (r < 0)
         return;
     const quint16 option = ctx.u16(3);
     if (option == 0x0000) {
@@ -179,14 +188,19 @@ void dissectRestart(const PduContext &ctx)
                       QStringLiteral("%1 is not a restart option: 0x0000 keeps the event log, 0xFF00 clears it")
                           .arg(hexWord(option)));
     }
-    checkEcho(ctx, r, 3, 2);
-    addTrailing(ctx, 5);
+    checkDataEcho(ctx, r, 3, 2);
 }
 
 void dissectDelimiter(const PduContext &ctx)
 {
-    const int d = addFixed(ctx, 3, 1, "modbus.ascii_delimiter", "ASCII input delimiter", ValueFormat::Hex);
-    if (!ctx.has(3))
+    static const Slot layout[] = {
+        {"modbus.ascii_delimiter", "ASCII input delimiter", 1, ValueFormat::Hex, "ASCII input delimiter and padding"},
+        {"modbus.padding", "Padding", 1, ValueFormat::Hex, "padding"},
+    };
+    int f[2] = {-1, -1};
+    const bool whole = addFixed(ctx, ctx.parent, 3, layout, 2, f, 5, false);
+    const int d = f[0];
+    if (d < 0)
         return;
     const quint8 c = ctx.byte(3);
     ctx.tree.setMeaning(d, characterName(c));
@@ -197,25 +211,24 @@ void dissectDelimiter(const PduContext &ctx)
                       QStringLiteral("%1 as the end delimiter breaks ASCII framing: ':' starts every frame and "
                                      "hex digits carry its content").arg(hexByte(c)));
     }
-    checkEcho(ctx, d, 3, 2);
-    const int p = addFixed(ctx, 4, 1, "modbus.padding", "Padding", ValueFormat::Hex);
-    if (!ctx.has(4))
+    checkDataEcho(ctx, d, 3, 2);
+    if (!whole)
         return;
     if (ctx.byte(4) != 0) {
-        ctx.tree.flag(p, Severity::Error,
+        ctx.tree.flag(f[1], Severity::Error,
                       QStringLiteral("%1 is not allowed: the byte after the delimiter is 0x00 (V1.1b3 6.8.1, sub-function 03)")
                           .arg(hexByte(ctx.byte(4))));
     }
-    addTrailing(ctx, 5);
+    trailing(ctx, 5);
 }
 
 void dissectValue(const PduContext &ctx, const SubFunction &sub)
 {
     const bool counter = sub.kind == Kind::Counter;
-    addFixed(ctx, 3, 2, counter ? "modbus.counter_value" : "modbus.diagnostic_register", sub.valueName,
-             counter ? ValueFormat::Decimal : ValueFormat::Hex);
-    if (ctx.has(3, 2))
-        addTrailing(ctx, 5);
+    if (counter)
+        addDataWord(ctx, "modbus.counter_value", sub.valueName, ValueFormat::Decimal, "counter value");
+    else
+        addDataWord(ctx, "modbus.diagnostic_register", sub.valueName, ValueFormat::Hex, "diagnostic register");
 }
 
 } // namespace
@@ -225,8 +238,9 @@ void dissectDiagnostics(const PduContext &ctx)
     const int fc = functionField(ctx);
     ctx.tree.flag(fc, Severity::Info,
                   QStringLiteral("serial line only: V1.1b3 6.8 defines Diagnostics for serial line devices"));
-    const int s = addFixed(ctx, 1, 2, "modbus.subfunction", "Sub-function", ValueFormat::Hex);
-    if (!ctx.has(1, 2))
+    static const Slot layout[] = {{"modbus.subfunction", "Sub-function", 2, ValueFormat::Hex, "sub-function and data"}};
+    int s = -1;
+    if (!addFixed(ctx, ctx.parent, 1, layout, 1, &s, 3, true))
         return;
     const quint16 code = ctx.u16(1);
     const SubFunction sub = subFunction(code);

@@ -34,7 +34,7 @@ private slots:
             " | >modbus.exception_status_bit#4=0 OFF | >modbus.exception_status_bit#5=0 OFF"
             " | >modbus.exception_status_bit#6=0 OFF | >modbus.exception_status_bit#7=1 ON | modbus.trailing=01 !error",
             "1 byte after the end of the PDU: it should be 2 bytes long, 3 are present");
-        rsp("07", F07 " | modbus.exception_status= !error", "missing: 1 byte expected at PDU offset 1, the PDU ends there");
+        rsp("07", F07 " | modbus.missing= !error", "modbus.missing: missing: exception status; expected 1 more byte");
     }
     void readExceptionStatus() { checkRow(); }
 
@@ -48,9 +48,9 @@ private slots:
         rsp("0B FF FF 00 00", F0B BUSY " | modbus.event_count=0");
         rsp("0B 12 34 00 01", F0B " | modbus.status=0x1234 !error | modbus.event_count=1",
             "0x1234 is not a status: 0x0000 means ready, 0xFFFF busy (V1.1b3 6.9)");
-        rsp("0B 00", F0B " | modbus.status=00 !error", "truncated: 2 bytes expected at PDU offset 1, only 1 present");
-        rsp("0B 00 00 01", F0B READY " | modbus.event_count=01 !error",
-            "truncated: 2 bytes expected at PDU offset 3, only 1 present");
+        rsp("0B 00", F0B " | modbus.missing=00 !error", "modbus.missing: missing: status and event count; expected 3 more bytes");
+        rsp("0B 00 00 01", F0B READY " | modbus.missing=01 !error",
+            "modbus.missing: missing: event count; expected 1 more byte");
         rsp("0B 00 00 01 08 FF", F0B READY " | modbus.event_count=264 | modbus.trailing=FF !error",
             "1 byte after the end of the PDU: it should be 5 bytes long, 6 are present");
     }
@@ -90,24 +90,30 @@ private slots:
             " | modbus.event_count=1 | modbus.message_count=1",
             "byte count 4 is too small: status, event count and message count take 6 bytes");
         rsp("0C 04 00 00 00 01", F0C " | modbus.byte_count=4 !error" READY
-            " | modbus.event_count=1 | modbus.message_count= !error",
-            "missing: 2 bytes expected at PDU offset 6, the PDU ends there");
+            " | modbus.event_count=1 | modbus.missing= !error",
+            "byte count 4 is too small: status, event count and message count take 6 bytes"
+            " | modbus.missing: missing: message count and any events; expected at least 2 more bytes");
         rsp("0C 47 00 00 00 00 00 00", F0C " | modbus.byte_count=71 !error" READY
-            " | modbus.event_count=0 | modbus.message_count=0",
-            "byte count 71 announces 65 events: the log holds at most 64 (byte count 6-70); "
-            "byte count 71 announces 71 data bytes but only 6 are present");
-        rsp("0C 0A 00 00 00 03 00 04 C0 40", F0C " | modbus.byte_count=10 !error" READY
+            " | modbus.event_count=0 | modbus.message_count=0 | modbus.missing= !error",
+            "byte count 71 announces 65 events: the log holds at most 64 (byte count 6-70)"
+            " | modbus.missing: missing: byte count 71 announces 71 data bytes but only 6 are present; "
+            "expected 65 more bytes");
+        rsp("0C 0A 00 00 00 03 00 04 C0 40", F0C " | modbus.byte_count=10" READY
             " | modbus.event_count=3 | modbus.message_count=4"
-            " | modbus.event#0=0xC0 Receive event: broadcast received | modbus.event#1=0x40 Send event",
-            "byte count 10 announces 10 data bytes but only 8 are present");
+            " | modbus.event#0=0xC0 Receive event: broadcast received | modbus.event#1=0x40 Send event"
+            " | modbus.missing= !error",
+            "modbus.missing: missing: byte count 10 announces 10 data bytes but only 8 are present; "
+            "expected 2 more bytes");
         rsp("0C 06 00 00 00 00 00 00 99", F0C " | modbus.byte_count=6" READY
             " | modbus.event_count=0 | modbus.message_count=0 | modbus.trailing=99 !error",
             "1 byte after the end of the PDU: it should be 8 bytes long, 9 are present");
         rsp("0C 06 00 01 00 00 00 00", F0C " | modbus.byte_count=6 | modbus.status=0x0001 !error"
             " | modbus.event_count=0 | modbus.message_count=0", "0x0001 is not a status");
-        rsp("0C", F0C " | modbus.byte_count= !error", "missing: 1 byte expected at PDU offset 1, the PDU ends there");
-        rsp("0C 06 00", F0C " | modbus.byte_count=6 !error | modbus.status=00 !error",
-            "byte count 6 announces 6 data bytes but only 1 are present");
+        rsp("0C", F0C " | modbus.missing= !error",
+            "modbus.missing: missing: byte count, status, event count, message count and any events; "
+            "expected at least 7 more bytes");
+        rsp("0C 06 00", F0C " | modbus.byte_count=6 | modbus.missing=00 !error",
+            "modbus.missing: missing: status, event count, message count and any events; expected 5 more bytes");
     }
     void commEventLog() { checkRow(); }
 
@@ -143,16 +149,19 @@ private slots:
             " | modbus.additional_data=00",
             "0x55 is not a run indicator status (0x00 OFF, 0xFF ON); if this device's server ID is longer than one "
             "byte, this byte is part of it");
-        rsp("11 01 01", F11 " | modbus.byte_count=1 !error | modbus.server_id=01 | modbus.run_indicator= !error",
-            "byte count 1 is too small: the server ID and the run indicator take at least 2 bytes");
-        rsp("11 06 01 FF 41 42", F11 " | modbus.byte_count=6 !error | modbus.server_id=01"
-            " | modbus.run_indicator=0xFF ON | modbus.additional_data=41 42",
-            "byte count 6 announces 6 data bytes but only 4 are present");
+        rsp("11 01 01", F11 " | modbus.byte_count=1 !error | modbus.server_id=01 | modbus.missing= !error",
+            "byte count 1 is too small: the server ID and the run indicator take at least 2 bytes"
+            " | modbus.missing: missing: run indicator status; expected at least 1 more byte");
+        rsp("11 06 01 FF 41 42", F11 " | modbus.byte_count=6 | modbus.server_id=01"
+            " | modbus.run_indicator=0xFF ON | modbus.additional_data=41 42 | modbus.missing= !error",
+            "modbus.missing: missing: byte count 6 announces 6 data bytes but only 4 are present; expected 2 more bytes");
         rsp("11 02 01 FF 00", F11 " | modbus.byte_count=2 | modbus.server_id=01 | modbus.run_indicator=0xFF ON"
             " | modbus.trailing=00 !error", "1 byte after the end of the PDU: it should be 4 bytes long, 5 are present");
-        rsp("11", F11 " | modbus.byte_count= !error", "missing: 1 byte expected at PDU offset 1, the PDU ends there");
-        rsp("11 00", F11 " | modbus.byte_count=0 !error | modbus.server_id= !error",
-            "missing: 1 byte expected at PDU offset 2, the PDU ends there");
+        rsp("11", F11 " | modbus.missing= !error",
+            "modbus.missing: missing: byte count, server ID and run indicator status; expected at least 3 more bytes");
+        rsp("11 00", F11 " | modbus.byte_count=0 !error | modbus.missing= !error",
+            "byte count 0 is too small: the server ID and the run indicator take at least 2 bytes"
+            " | modbus.missing: missing: server ID and run indicator status; expected at least 2 more bytes");
     }
     void reportServerId() { checkRow(); }
 

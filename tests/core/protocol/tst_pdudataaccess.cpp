@@ -92,7 +92,7 @@ void TestPduDataAccess::readBits_data()
     req("01 00 00 00 00", "start_address=0|quantity=0!E~quantity 0 is out of range");
     req("01 FF FF 00 02", "start_address=65535|quantity=2!E~range wraps past 0xFFFF: start address 65535 + quantity 2 would end at address 65536");
     req("02 FC 00 07 D0", "start_address=64512|quantity=2000!E~range wraps past 0xFFFF");
-    req("01 00 13 00 13 00", "start_address=19|quantity=19|trailing!E~1 byte after the end of the PDU: its fields make it 5 bytes");
+    req("01 00 13 00 13 00", "start_address=19|quantity=19|trailing!E~1 byte after the end of the PDU: it should be 5 bytes long, 6 are present");
     req("01", "missing!E~missing: start address and quantity; expected 4 more bytes");
     req("01 00", "missing!E%00~expected 3 more bytes");
     req("01 00 13", "start_address=19|missing!E~missing: quantity; expected 2 more bytes");
@@ -170,7 +170,7 @@ void TestPduDataAccess::readRegisters_data()
     rsp("04 00", "byte_count=0!E~does not match the request: quantity 1 needs 2 bytes", "04 00 08 00 01");
     rsp("03 FC", "byte_count=252!E~byte count 252 is out of range|missing!E~expected 252 more bytes");
     rsp("03 04 00 01 00", "byte_count=4|register_value=[1]@0|missing!E%00~only 3 are present; expected 1 more byte");
-    rsp("03 02 00 01 FF", "byte_count=2|register_value=[1]|trailing!E~1 byte after the end of the PDU: its fields make it 4 bytes");
+    rsp("03 02 00 01 FF", "byte_count=2|register_value=[1]|trailing!E~1 byte after the end of the PDU: it should be 4 bytes long, 5 are present");
     rsp("03", "missing!E~missing: byte count and register values; expected at least 3 more bytes");
     rsp("03 02 00 01", "function_code=3!E|byte_count=2|register_value=[1]@0",
         "04 00 08 00 01", "request of another function");

@@ -46,10 +46,10 @@ private slots:
             "0x03 is outside the basic (0x00-0x02) category: the device answers from object 0x00");
         req("2B 0E 02 80", F2B MEI0E REGULAR " | modbus.object_id=0x80 Private object (extended, device dependent) !info",
             "0x80 is outside the regular (0x00-0x06) category");
-        req("2B 0E 01", F2B MEI0E BASIC " | modbus.object_id= !error",
-            "missing: 1 byte expected at PDU offset 3, the PDU ends there");
-        req("2B 0E", F2B MEI0E " | modbus.read_device_id_code= !error", "missing: 1 byte expected at PDU offset 2");
-        req("2B", F2B " | modbus.mei_type= !error", "missing: 1 byte expected at PDU offset 1, the PDU ends there");
+        req("2B 0E 01", F2B MEI0E BASIC " | modbus.missing= !error", "modbus.missing: missing: object ID; expected 1 more byte");
+        req("2B 0E", F2B MEI0E " | modbus.missing= !error",
+            "modbus.missing: missing: read device ID code and object ID; expected 2 more bytes");
+        req("2B", F2B " | modbus.missing= !error", "modbus.missing: missing: MEI type; expected at least 1 more byte");
         req("2B 0E 01 00 00", F2B MEI0E BASIC " | modbus.object_id=0x00 VendorName | modbus.trailing=00 !error",
             "1 byte after the end of the PDU: it should be 4 bytes long, 5 are present");
     }
@@ -153,17 +153,19 @@ private slots:
             "number of objects 1 but 2 present");
         rsp("2B 0E 01 01 00 00 01 00 0A 41 42", F2B MEI0E BASIC
             " | modbus.conformity_level=0x01 Basic identification (stream access only)" NO_MORE " | modbus.object_count=1"
-            " | modbus.object#0=VendorName | >modbus.object_id=0x00 VendorName | >modbus.object_length=10 !error"
-            " | >modbus.object_value=\"AB\"", "object length 10 exceeds the PDU: 10 bytes expected, only 2 present");
+            " | modbus.object#0=VendorName | >modbus.object_id=0x00 VendorName | >modbus.object_length=10"
+            " | >modbus.object_value=\"AB\" | >modbus.missing= !error",
+            "modbus.missing: missing: object length 10 announces 10 data bytes but only 2 are present; expected 8 more bytes");
         rsp("2B 0E 01 01 00 00 01 00 05", F2B MEI0E BASIC
             " | modbus.conformity_level=0x01 Basic identification (stream access only)" NO_MORE " | modbus.object_count=1"
-            " | modbus.object#0=VendorName | >modbus.object_id=0x00 VendorName | >modbus.object_length=5 !error",
-            "object length 5 exceeds the PDU: 5 bytes expected, only 0 present");
+            " | modbus.object#0=VendorName | >modbus.object_id=0x00 VendorName | >modbus.object_length=5"
+            " | >modbus.missing= !error",
+            "modbus.missing: missing: object length 5 announces 5 data bytes but only 0 are present; expected 5 more bytes");
         rsp("2B 0E 01 01 00 00 02 00 01 41 01", F2B MEI0E BASIC
             " | modbus.conformity_level=0x01 Basic identification (stream access only)" NO_MORE " | modbus.object_count=2"
             OBJ("0", "00", "VendorName", "1", "A")
-            " | modbus.object#1=ProductCode | >modbus.object_id=0x01 ProductCode | >modbus.object_length= !error",
-            "missing: 1 byte expected at PDU offset 11, the PDU ends there");
+            " | modbus.object#1=ProductCode | >modbus.object_id=0x01 ProductCode | >modbus.missing= !error",
+            "modbus.missing: missing: object length and object value; expected at least 1 more byte");
         rsp("2B 0E 03 03 00 00 01 10 01 41", F2B MEI0E
             " | modbus.read_device_id_code=0x03 Extended device identification (stream access)"
             " | modbus.conformity_level=0x03 Extended identification (stream access only)" NO_MORE " | modbus.object_count=1"
@@ -175,12 +177,14 @@ private slots:
             " | >modbus.object_value=\"A\"", "the stream starts at 0x05: the request asked from object 0x04", "2B 0E 02 04");
         rsp("2B 0E 01 01 00 00 02", F2B MEI0E BASIC
             " | modbus.conformity_level=0x01 Basic identification (stream access only)" NO_MORE
-            " | modbus.object_count=2 !error", "truncated: 2 objects announced, the PDU ends before the object list");
+            " | modbus.object_count=2 | modbus.missing= !error", "modbus.missing: missing: objects; expected at least 4 more bytes");
         rsp("2B 0E 01 01 00", F2B MEI0E BASIC
             " | modbus.conformity_level=0x01 Basic identification (stream access only)"
-            " | modbus.more_follows=0x00 No more objects | modbus.next_object_id= !error",
-            "missing: 1 byte expected at PDU offset 5, the PDU ends there");
-        rsp("2B 0E 01", F2B MEI0E BASIC " | modbus.conformity_level= !error", "missing: 1 byte expected at PDU offset 3");
+            " | modbus.more_follows=0x00 No more objects | modbus.missing= !error",
+            "modbus.missing: missing: next object ID, number of objects and objects; expected at least 2 more bytes");
+        rsp("2B 0E 01", F2B MEI0E BASIC " | modbus.missing= !error",
+            "modbus.missing: missing: conformity level, more follows, next object ID, number of objects and objects; "
+            "expected at least 4 more bytes");
     }
     void responseProblems() { checkRow(); }
 

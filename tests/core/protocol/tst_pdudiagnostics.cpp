@@ -54,10 +54,10 @@ private slots:
         rsp("08 00 01 00 00", F08 SF("01", "Restart Communications Option")
             " | modbus.restart_option=0x0000 Restart, keep the communications event log !error",
             "does not echo the request: data byte 0 is 0x00, the request sent 0xFF", "08 00 01 FF 00");
-        req("08 00 01 FF", F08 SF("01", "Restart Communications Option") " | modbus.restart_option=FF !error",
-            "truncated: 2 bytes expected at PDU offset 3, only 1 present");
-        req("08 00 01", F08 SF("01", "Restart Communications Option") " | modbus.restart_option= !error",
-            "missing: 2 bytes expected at PDU offset 3, the PDU ends there");
+        req("08 00 01 FF", F08 SF("01", "Restart Communications Option") " | modbus.missing=FF !error",
+            "modbus.missing: missing: restart option; expected 1 more byte");
+        req("08 00 01", F08 SF("01", "Restart Communications Option") " | modbus.missing= !error",
+            "modbus.missing: missing: restart option; expected 2 more bytes");
         req("08 00 01 FF 00 00", F08 SF("01", "Restart Communications Option")
             " | modbus.restart_option=0xFF00 Restart and clear the communications event log | modbus.trailing=00 !error",
             "1 byte after the end of the PDU: it should be 5 bytes long, 6 are present");
@@ -73,8 +73,8 @@ private slots:
             "08 00 02 00 00");
         req("08 00 02 00 01", F08 SF("02", "Return Diagnostic Register") " | modbus.diagnostic_data=0x0001 !error",
             "0x0001 is not allowed: Return Diagnostic Register request carries the data 0x0000");
-        rsp("08 00 02 01", F08 SF("02", "Return Diagnostic Register") " | modbus.diagnostic_register=01 !error",
-            "truncated: 2 bytes expected at PDU offset 3, only 1 present");
+        rsp("08 00 02 01", F08 SF("02", "Return Diagnostic Register") " | modbus.missing=01 !error",
+            "modbus.missing: missing: diagnostic register; expected 1 more byte");
         rsp("08 00 02 01 23 45 67", F08 SF("02", "Return Diagnostic Register")
             " | modbus.diagnostic_register=0x0123 | modbus.trailing=45 67 !error",
             "2 bytes after the end of the PDU: it should be 5 bytes long, 7 are present");
@@ -109,8 +109,8 @@ private slots:
             " | modbus.ascii_delimiter=0x0A LF (line feed, the default delimiter) !error | modbus.padding=0x00",
             "does not echo the request: data byte 0 is 0x0A, the request sent 0x0D", "08 00 03 0D 00");
         req("08 00 03 0A", F08 SF("03", "Change ASCII Input Delimiter")
-            " | modbus.ascii_delimiter=0x0A LF (line feed, the default delimiter) | modbus.padding= !error",
-            "missing: 1 byte expected at PDU offset 4, the PDU ends there");
+            " | modbus.ascii_delimiter=0x0A LF (line feed, the default delimiter) | modbus.missing= !error",
+            "modbus.missing: missing: padding; expected 1 more byte");
         req("08 00 03 0A 00 0D", F08 SF("03", "Change ASCII Input Delimiter")
             " | modbus.ascii_delimiter=0x0A LF (line feed, the default delimiter) | modbus.padding=0x00"
             " | modbus.trailing=0D !error", "1 byte after the end of the PDU");
@@ -172,13 +172,13 @@ private slots:
         }
         req("08 00 0B 00 01", F08 SF("0B", "Return Bus Message Count") " | modbus.diagnostic_data=0x0001 !error",
             "0x0001 is not allowed: Return Bus Message Count request carries the data 0x0000");
-        req("08 00 0B", F08 SF("0B", "Return Bus Message Count") " | modbus.diagnostic_data= !error",
-            "missing: 2 bytes expected at PDU offset 3, the PDU ends there");
+        req("08 00 0B", F08 SF("0B", "Return Bus Message Count") " | modbus.missing= !error",
+            "modbus.missing: missing: data; expected 2 more bytes");
         req("08 00 0B 00 00 00 00", F08 SF("0B", "Return Bus Message Count")
             " | modbus.diagnostic_data=0x0000 | modbus.trailing=00 00 !error",
             "2 bytes after the end of the PDU: it should be 5 bytes long, 7 are present");
-        rsp("08 00 0E 00", F08 SF("0E", "Return Server Message Count") " | modbus.counter_value=00 !error",
-            "truncated: 2 bytes expected at PDU offset 3, only 1 present");
+        rsp("08 00 0E 00", F08 SF("0E", "Return Server Message Count") " | modbus.missing=00 !error",
+            "modbus.missing: missing: counter value; expected 1 more byte");
         rsp("08 00 0E 00 05 00", F08 SF("0E", "Return Server Message Count")
             " | modbus.counter_value=5 | modbus.trailing=00 !error", "1 byte after the end of the PDU");
         rsp("08 00 0B 00 05", F08 SF("0B", "Return Bus Message Count") " !error | modbus.counter_value=5",
@@ -210,11 +210,12 @@ private slots:
     void truncated_data()
     {
         addColumns();
-        req("08", F08 "modbus.subfunction= !error", "missing: 2 bytes expected at PDU offset 1, the PDU ends there");
-        rsp("08", F08 "modbus.subfunction= !error", "missing: 2 bytes expected at PDU offset 1");
-        req("08 00", F08 "modbus.subfunction=00 !error", "truncated: 2 bytes expected at PDU offset 1, only 1 present");
-        rsp("08 00", F08 "modbus.subfunction=00 !error", "truncated: 2 bytes expected at PDU offset 1, only 1 present",
-            "08 00 00 12 34");
+        req("08", F08 "modbus.missing= !error", "modbus.missing: missing: sub-function and data; expected at least 2 more bytes");
+        rsp("08", F08 "modbus.missing= !error", "modbus.missing: missing: sub-function and data; expected at least 2 more bytes");
+        req("08 00", F08 "modbus.missing=00 !error",
+            "modbus.missing: missing: sub-function and data; expected at least 1 more byte");
+        rsp("08 00", F08 "modbus.missing=00 !error",
+            "modbus.missing: missing: sub-function and data; expected at least 1 more byte", "08 00 00 12 34");
     }
     void truncated() { checkRow(); }
 

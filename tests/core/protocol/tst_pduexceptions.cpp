@@ -70,8 +70,8 @@ private slots:
         rsp("81 02 00 11 22", EXC("81", "01", "Read Coils") " | modbus.exception_code=0x02 Illegal Data Address: the "
             "address range is not available in the device | modbus.trailing=00 11 22 !error",
             "3 bytes after the end of the PDU: it should be 2 bytes long, 5 are present");
-        rsp("83", EXC("83", "03", "Read Holding Registers") " | modbus.exception_code= !error",
-            "missing: 1 byte expected at PDU offset 1, the PDU ends there");
+        rsp("83", EXC("83", "03", "Read Holding Registers") " | modbus.missing= !error",
+            "modbus.missing: missing: exception code; expected 1 more byte");
         req("83 02", "modbus.function_code=0x83 Exception response !error | modbus.request_function_code=0x03 Read Holding "
             "Registers | modbus.exception_code=0x02 Illegal Data Address: the address range is not available in the device",
             "an exception code (0x80 set) can only appear in a response");
