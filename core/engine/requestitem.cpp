@@ -40,7 +40,10 @@ RequestItem RequestItem::fromBytes(const QByteArray &bytes, Framing framing, boo
 
 RequestItem RequestItem::forLink(const QByteArray &bytes, const LinkUrl &url, const QString &name)
 {
-    return fromBytes(bytes, url.framing(), url.delimited.enabled, name);
+    RequestItem item = fromBytes(bytes, url.framing(), url.delimited.enabled, name);
+    if (url.responseTimeoutMs > 0)
+        item.timeoutMs = url.responseTimeoutMs;
+    return item;
 }
 
 } // namespace mbscope

@@ -38,7 +38,8 @@ struct RequestItem {
     // frame (the user may send a broken frame on purpose; the engine still times the answer).
     [[nodiscard]] static RequestItem fromBytes(const QByteArray &bytes, Framing framing,
                                                bool delimited = false, const QString &name = {});
-    // The framing and delimited flag of the link's URL.
+    // The framing and delimited flag of the link's URL, and its response timeout (?timeout=) when
+    // it gives one.
     [[nodiscard]] static RequestItem forLink(const QByteArray &bytes, const LinkUrl &url,
                                              const QString &name = {});
 };

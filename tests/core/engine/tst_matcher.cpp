@@ -40,6 +40,7 @@ private slots:
     void match_data();
     void match();
     void exceptionAnswersOnlyItsFunction();
+    void itemForLink();
 };
 
 void tst_Matcher::keys_data()
@@ -165,6 +166,25 @@ void tst_Matcher::exceptionAnswersOnlyItsFunction()
     // A request with bit 7 set (sent on purpose) is answered only by the same code.
     QVERIFY(ResponseMatcher::answersFunction(0x83, 0x83));
     QVERIFY(!ResponseMatcher::answersFunction(0x83, 0x03));
+}
+
+void tst_Matcher::itemForLink()
+{
+    const RequestItem tcp = RequestItem::forLink(mbap("0300000002", 3, 1), parseUrl(QStringLiteral("tcp://h:502?timeout=250ms")));
+    QCOMPARE(tcp.timeoutMs, 250);
+    QCOMPARE(int(tcp.rule), int(MatchRule::Mbap));
+    QCOMPARE(int(tcp.transactionId), 3);
+    const RequestItem rtuTcp = RequestItem::forLink(rtu("0600010003", 0), parseUrl(QStringLiteral("rtu-tcp://h:4001")), QStringLiteral("broadcast"));
+    QCOMPARE(rtuTcp.timeoutMs, RequestItem{}.timeoutMs);
+    QCOMPARE(rtuTcp.name, QStringLiteral("broadcast"));
+    QCOMPARE(int(rtuTcp.framing), int(Framing::Rtu));
+    QVERIFY(rtuTcp.broadcast);
+    const RequestItem udp = RequestItem::forLink(mbap("0300000002", 3, 0), parseUrl(QStringLiteral("udp://h:502")));
+    QCOMPARE(int(udp.framing), int(Framing::Udp));
+    QVERIFY(!udp.broadcast);
+    const RequestItem text = RequestItem::forLink(QByteArray("$01R#"), parseUrl(QStringLiteral("rtu:///dev/ttyS0?baud=9600&framing=delimited&start=24&end=23")));
+    QCOMPARE(int(text.rule), int(MatchRule::NextFrame));
+    QVERIFY(!text.broadcast);
 }
 
 QTEST_GUILESS_MAIN(tst_Matcher)
