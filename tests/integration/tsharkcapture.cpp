@@ -3,6 +3,7 @@
 #include <QtCore/QDeadlineTimer>
 #include <QtCore/QFileInfo>
 #include <QtCore/QStandardPaths>
+#include <QtCore/QThread>
 
 namespace mbscope::testpeers {
 
@@ -58,7 +59,9 @@ bool TsharkCapture::start(quint16 port, int timeoutMs)
                      QStringLiteral("tcp port ") + QString::number(port), QStringLiteral("-w"), m_file});
     QDeadlineTimer deadline(timeoutMs);
     QByteArray log;
-    while (!log.contains("Capturing on")) {
+    // "Capturing on 'Loopback: lo'" comes when tshark has started dumpcap, "Capture started."
+    // once dumpcap has the interface open with its filter: packets before that are not captured.
+    while (!log.contains("Capture started")) {
         if (m_tshark->state() == QProcess::NotRunning || deadline.hasExpired()) {
             log += m_tshark->readAllStandardError();
             m_error = QStringLiteral("tshark cannot capture on lo (capturing needs root or the wireshark "
@@ -76,6 +79,18 @@ bool TsharkCapture::stopAndRead(QList<WireSegment> *segments, int timeoutMs)
     if (!m_tshark) {
         m_error = QStringLiteral("no capture was started");
         return false;
+    }
+    // dumpcap (behind tshark) writes with stdio buffering and may still be reading the capture
+    // buffer: wait until the file has stopped growing before stopping it, or the last packets are
+    // lost with the buffers.
+    QDeadlineTimer settle(timeoutMs / 2);
+    qint64 size = -1;
+    int quiet = 0;
+    while (quiet < 5 && !settle.hasExpired()) {
+        QThread::msleep(200);
+        const qint64 now = QFileInfo(m_file).size();
+        quiet = now == size ? quiet + 1 : 0;
+        size = now;
     }
     m_tshark->terminate();
     if (!m_tshark->waitForFinished(timeoutMs)) {

@@ -19,8 +19,8 @@ struct WireSegment {
 };
 
 // A tshark capture of one TCP port on the loopback interface, written to a pcapng file and read
-// back after it stops. start() returns once tshark says it is capturing, so nothing sent after it
-// is missed.
+// back after it stops. start() returns once tshark says the capture has started (dumpcap has the
+// interface open), so nothing sent after it is missed.
 class TsharkCapture
 {
 public:
