@@ -126,6 +126,12 @@ SimReply SimProcessor::process(QByteArrayView pdu, bool broadcast)
         }
     }
     reply = dispatch(functionCode, pdu);
+    if (listenOnly && reply.hasAnswer()) {
+        // A refused 08/01 in listen-only mode: nothing is ever sent in that mode.
+        reply.kind = SimReply::Kind::Silent;
+        reply.pdu.clear();
+        reply.note = QStringLiteral("listen-only mode: not answered (%1)").arg(reply.note);
+    }
     if (broadcast && reply.hasAnswer()) {
         const QString was = reply.kind == SimReply::Kind::Exception
                                 ? QStringLiteral(" (the answer would have been exception 0x%1: %2)")

@@ -20,7 +20,7 @@ namespace mbscope::simtest {
 //   holding registers 0-31 writable: 10 x i; 40-47 read-only: 0xA000 + i
 //   file 1: 30 records 0x0100 + r, writable; file 2: 4 records 0x0200 + r, read-only
 //   FIFO at 0x04DE: 01B8 1284 (V1.1b3 6.18's example); FIFO at 0x0500: 32 registers (too many)
-//   device id objects 00-06 and 0x80; server id 42 43, running, additional data "sim"
+//   device id objects 00-06 and 0x80; server id 42, running, additional data "sim"
 //   exception status 0x6D (V1.1b3 6.7's example)
 inline std::unique_ptr<SimUnit> makeUnit(quint8 id = 1)
 {
@@ -63,7 +63,7 @@ inline std::unique_ptr<SimUnit> makeUnit(quint8 id = 1)
     unit->setDeviceIdObject(0x05, "S-1");
     unit->setDeviceIdObject(0x06, "tests");
     unit->setDeviceIdObject(0x80, "extended");
-    unit->setServerId(QByteArray("\x42\x43", 2));
+    unit->setServerId("\x42");
     unit->setRunIndicator(true);
     unit->setAdditionalData("sim");
     unit->setExceptionStatus(0x6D);
