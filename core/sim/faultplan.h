@@ -2,6 +2,7 @@
 
 #include <QtCore/QByteArray>
 #include <QtCore/QList>
+#include <QtCore/QStringList>
 
 namespace mbscope {
 
@@ -18,6 +19,7 @@ struct FaultPlan {
     bool closeBefore = false;     // close the connection instead of answering
     bool closeAfter = false;      // close the connection after the last chunk
     QList<ResponseChunk> chunks;  // in order; empty when drop or closeBefore
+    QStringList faults;           // the rules that fired (their names, else their kinds), for logs
 };
 
 } // namespace mbscope

@@ -1,0 +1,262 @@
+#include "sim/faultinjector.h"
+
+#include "protocol/adubuilder.h"
+#include "sim/faultbytes.h"
+
+#include <QtCore/QMutexLocker>
+
+#include <algorithm>
+#include <cmath>
+
+namespace mbscope {
+
+namespace {
+
+constexpr quint64 kRuleStream = 1;
+constexpr quint64 kDelayStream = 2;
+
+quint16 word(const QByteArray &pdu, qsizetype at)
+{
+    return quint16(quint8(pdu.at(at)) << 8 | quint8(pdu.at(at + 1)));
+}
+
+qint64 msToNs(double ms)
+{
+    return qint64(std::llround(ms * 1e6));
+}
+
+// A segment of the bytes to send: the answer (with junk), or a duplicate, after a delay.
+struct Segment {
+    QByteArray bytes;
+    qint64 delayNs = 0;
+};
+
+void split(const Segment &segment, int pieceBytes, qint64 gapNs, QList<ResponseChunk> *out)
+{
+    for (qsizetype at = 0; at < segment.bytes.size(); at += pieceBytes)
+        out->append(ResponseChunk{segment.bytes.mid(at, pieceBytes), at == 0 ? segment.delayNs : gapNs});
+}
+
+} // namespace
+
+FaultContext FaultContext::forRequest(Framing framing, const QByteArray &request, const QByteArray &response,
+                                      qint64 responseDelayNs)
+{
+    FaultContext c;
+    c.framing = framing;
+    c.request = request;
+    c.response = response;
+    c.responseDelayNs = responseDelayNs;
+    const AduParts parts = AduBuilder::parse(request, framing);
+    c.unit = parts.unitId;
+    const QByteArray &pdu = parts.pdu;
+    if (pdu.isEmpty())
+        return c;
+    c.function = quint8(pdu.at(0));
+    auto span = [&c](int start, int count) {
+        c.firstAddress = start;
+        c.lastAddress = std::min(65535, start + std::max(count, 1) - 1);
+    };
+    switch (c.function) {
+    case 0x01: case 0x02: case 0x03: case 0x04: case 0x0F: case 0x10:
+        if (pdu.size() >= 5)
+            span(word(pdu, 1), word(pdu, 3));
+        break;
+    case 0x05: case 0x06: case 0x16: case 0x18:
+        if (pdu.size() >= 3)
+            span(word(pdu, 1), 1);
+        break;
+    case 0x17:
+        if (pdu.size() >= 9) {
+            const int readStart = word(pdu, 1);
+            const int writeStart = word(pdu, 5);
+            const int end = std::max(readStart + std::max<int>(word(pdu, 3), 1), writeStart + std::max<int>(word(pdu, 7), 1));
+            const int start = std::min(readStart, writeStart);
+            span(start, end - start);
+        }
+        break;
+    default:
+        break;
+    }
+    return c;
+}
+
+void FaultInjector::setRules(const FaultRuleSet &rules)
+{
+    QMutexLocker lock(&m_mutex);
+    m_rules = rules;
+    lock.unlock();
+    reset();
+}
+
+FaultRuleSet FaultInjector::rules() const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_rules;
+}
+
+void FaultInjector::setResponseDelay(quint8 unit, const DelaySpec &delay)
+{
+    QMutexLocker lock(&m_mutex);
+    m_delays.insert(unit, delay);
+    m_delayRandom.remove(unit);
+}
+
+void FaultInjector::clearResponseDelays()
+{
+    QMutexLocker lock(&m_mutex);
+    m_delays.clear();
+    m_delayRandom.clear();
+}
+
+void FaultInjector::reset()
+{
+    QMutexLocker lock(&m_mutex);
+    m_ruleRandom.clear();
+    for (qsizetype i = 0; i < m_rules.rules.size(); ++i)
+        m_ruleRandom.emplace_back(SimRandom::derive(m_rules.seed, kRuleStream, quint64(i)));
+    m_delayRandom.clear();
+}
+
+SimRandom &FaultInjector::delayRandom(quint8 unit)
+{
+    auto it = m_delayRandom.find(unit);
+    if (it == m_delayRandom.end())
+        it = m_delayRandom.insert(unit, SimRandom(SimRandom::derive(m_rules.seed, kDelayStream, unit)));
+    return it.value();
+}
+
+bool FaultInjector::matches(const FaultRule &rule, const FaultContext &context)
+{
+    if (!rule.units.isEmpty() && !rule.units.contains(context.unit))
+        return false;
+    if (!rule.functions.isEmpty() && !rule.functions.contains(context.function))
+        return false;
+    if (rule.hasAddressRange()
+        && (context.firstAddress < 0 || context.lastAddress < rule.firstAddress || context.firstAddress > rule.lastAddress))
+        return false;
+    using K = FaultRule::Kind;
+    switch (rule.kind) {
+    case K::WrongChecksum:
+        return context.framing == Framing::Rtu || context.framing == Framing::Ascii;
+    case K::WrongTransactionId:
+        return context.framing == Framing::Tcp || context.framing == Framing::Udp;
+    case K::FewerRegisters:
+        return !FaultBytes::fewerRegisters(context.response, context.framing, rule.fewer).isEmpty();
+    default:
+        return true;
+    }
+}
+
+FaultPlan FaultInjector::plan(const FaultContext &context)
+{
+    QMutexLocker lock(&m_mutex);
+    using K = FaultRule::Kind;
+    FaultPlan plan;
+
+    // Which rules fire: each matching rule draws once from its own stream.
+    QList<qsizetype> fired;
+    for (qsizetype i = 0; i < m_rules.rules.size(); ++i) {
+        const FaultRule &rule = m_rules.rules.at(i);
+        if (matches(rule, context) && m_ruleRandom[size_t(i)].chance(rule.probability)) {
+            fired.append(i);
+            plan.faults.append(rule.name.isEmpty() ? FaultRule::kindName(rule.kind) : rule.name);
+        }
+    }
+    auto firedOf = [&](K kind) {
+        QList<const FaultRule *> out;
+        for (qsizetype i : fired) {
+            if (m_rules.rules.at(i).kind == kind)
+                out.append(&m_rules.rules.at(i));
+        }
+        return out;
+    };
+    auto randomOf = [&](const FaultRule *rule) -> SimRandom & {
+        return m_ruleRandom[size_t(rule - m_rules.rules.constData())];
+    };
+    auto closeFired = [&](FaultRule::CloseWhen when) {
+        const auto closes = firedOf(K::Close);
+        return std::any_of(closes.cbegin(), closes.cend(), [when](const FaultRule *r) { return r->closeWhen == when; });
+    };
+
+    // The unit's response time is drawn for every answer, so that faults do not shift the
+    // delays of the answers after them.
+    qint64 delayNs = context.responseDelayNs;
+    if (const auto it = m_delays.constFind(context.unit); it != m_delays.constEnd())
+        delayNs = it->sampleNs(delayRandom(context.unit));
+
+    plan.drop = !firedOf(K::Drop).isEmpty();
+    plan.closeBefore = closeFired(FaultRule::CloseWhen::Before);
+    if (plan.drop || plan.closeBefore)
+        return plan;
+
+    // Content: the PDU and unit, then the bytes as sent.
+    QByteArray adu = context.response;
+    for (const FaultRule *rule : firedOf(K::Exception)) {
+        const QByteArray changed = FaultBytes::exception(adu, context.framing, context.function, rule->exceptionCode);
+        if (!changed.isEmpty())
+            adu = changed;
+    }
+    for (const FaultRule *rule : firedOf(K::FewerRegisters)) {
+        const QByteArray changed = FaultBytes::fewerRegisters(adu, context.framing, rule->fewer);
+        if (!changed.isEmpty())
+            adu = changed;
+    }
+    for (const FaultRule *rule : firedOf(K::WrongUnit)) {
+        const QByteArray changed = FaultBytes::wrongUnit(adu, context.framing, rule->delta);
+        if (!changed.isEmpty())
+            adu = changed;
+    }
+    for (const FaultRule *rule : firedOf(K::WrongTransactionId)) {
+        const QByteArray changed = FaultBytes::wrongTransactionId(adu, context.framing, rule->delta);
+        if (!changed.isEmpty())
+            adu = changed;
+    }
+    if (!firedOf(K::WrongChecksum).isEmpty()) {
+        const QByteArray changed = FaultBytes::wrongChecksum(adu, context.framing);
+        if (!changed.isEmpty())
+            adu = changed;
+    }
+
+    for (const FaultRule *rule : firedOf(K::Delay))
+        delayNs = rule->delay.sampleNs(randomOf(rule));
+
+    QByteArray before;
+    QByteArray after;
+    for (const FaultRule *rule : firedOf(K::Junk)) {
+        SimRandom &random = randomOf(rule);
+        before += rule->junkBefore;
+        for (int i = 0; i < rule->junkBeforeCount; ++i)
+            before.append(char(random.below(256)));
+        after += rule->junkAfter;
+        for (int i = 0; i < rule->junkAfterCount; ++i)
+            after.append(char(random.below(256)));
+    }
+
+    QList<Segment> segments = {Segment{before + adu + after, delayNs}};
+    for (const FaultRule *rule : firedOf(K::Duplicate)) {
+        for (int i = 0; i < rule->copies; ++i)
+            segments.append(Segment{adu, msToNs(rule->gapMs)});
+    }
+    if (closeFired(FaultRule::CloseWhen::Midway)) {
+        Segment &first = segments.first();
+        first.bytes.truncate(std::max<qsizetype>(1, first.bytes.size() / 2));
+        segments = {first};
+        plan.closeAfter = true;
+    }
+
+    const auto trickles = firedOf(K::Trickle);
+    const auto chunks = firedOf(K::Chunks);
+    for (const Segment &segment : segments) {
+        if (!trickles.isEmpty())
+            split(segment, 1, msToNs(trickles.last()->gapMs), &plan.chunks);
+        else if (!chunks.isEmpty())
+            split(segment, chunks.last()->chunkBytes, msToNs(chunks.last()->gapMs), &plan.chunks);
+        else
+            plan.chunks.append(ResponseChunk{segment.bytes, segment.delayNs});
+    }
+    plan.closeAfter = plan.closeAfter || closeFired(FaultRule::CloseWhen::After);
+    return plan;
+}
+
+} // namespace mbscope

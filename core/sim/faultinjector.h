@@ -1,0 +1,79 @@
+#pragma once
+
+#include "protocol/framing.h"
+#include "sim/delayspec.h"
+#include "sim/faultplan.h"
+#include "sim/faultrule.h"
+#include "sim/simrandom.h"
+
+#include <QtCore/QByteArray>
+#include <QtCore/QMap>
+#include <QtCore/QMutex>
+
+#include <vector>
+
+namespace mbscope {
+
+// What the fault injector is told about one answer.
+struct FaultContext {
+    Framing framing = Framing::Tcp; // Rtu for rtu://, rtu-tcp and rtu-udp; Tcp for tcp and tls; Udp; Ascii
+    quint8 unit = 0;
+    quint8 function = 0;            // the request's function code
+    int firstAddress = -1;          // the addresses the request touches; -1: none (07, 11, 2B...)
+    int lastAddress = -1;
+    QByteArray request;             // the request ADU
+    QByteArray response;            // the correct response ADU
+    qint64 responseDelayNs = 0;     // the unit's response time when no distribution is set for it
+
+    // unit, function and addresses read from the request ADU: 01-04, 0F, 10 start and quantity;
+    // 05, 06, 16 the address; 17 from the lower start to the higher end of read and write; 18
+    // the FIFO pointer address.
+    [[nodiscard]] static FaultContext forRequest(Framing framing, const QByteArray &request,
+                                                 const QByteArray &response, qint64 responseDelayNs = 0);
+};
+
+// Decides what happens to each answer of the simulator: plan() turns the correct response ADU
+// into a FaultPlan (chunks of bytes with delays, or silence, or a closed connection) by the rules
+// in force. Reproducible: each rule draws from its own random stream derived from the rule set's
+// seed and the rule's index, each unit's response delay from a stream of its own, so the same
+// requests give the same plans, and a rule that never matches changes nothing for the others.
+//
+// setRules() may be called while the simulator runs (from any thread: plan() and setRules() are
+// serialised by a mutex); it restarts the random streams.
+//
+// The effects of the rules that fire on one answer combine in this order, whatever their order
+// in the list: drop and close-before (no answer); exception, fewer registers, wrong unit (the
+// PDU and unit, checksum and length recomputed); wrong transaction id and wrong checksum (the
+// bytes as sent); delay (the last delay rule that fired replaces the unit's response time);
+// junk before/after; duplicates; close midway (the first half of the bytes, then close);
+// trickle or chunks (trickle wins); close after.
+class FaultInjector
+{
+public:
+    FaultInjector() = default;
+
+    void setRules(const FaultRuleSet &rules);
+    [[nodiscard]] FaultRuleSet rules() const;
+    // A unit's response time distribution (from its profile); restarts that unit's stream.
+    void setResponseDelay(quint8 unit, const DelaySpec &delay);
+    void clearResponseDelays();
+    // Every random stream back to its start.
+    void reset();
+
+    [[nodiscard]] FaultPlan plan(const FaultContext &context);
+
+    // Whether rule could apply to this answer (unit, function, addresses, and what the fault
+    // needs: a checksum, an MBAP header, a read answer...).
+    [[nodiscard]] static bool matches(const FaultRule &rule, const FaultContext &context);
+
+private:
+    [[nodiscard]] SimRandom &delayRandom(quint8 unit);
+
+    mutable QMutex m_mutex;
+    FaultRuleSet m_rules;
+    std::vector<SimRandom> m_ruleRandom;
+    QMap<quint8, DelaySpec> m_delays;
+    QMap<quint8, SimRandom> m_delayRandom;
+};
+
+} // namespace mbscope

@@ -1,0 +1,216 @@
+#pragma once
+
+// Rows for tst_profileloader's contentErrors: a profile with one mistake, the JSON path of the
+// first problem and its message (what was found and what was expected).
+
+#include <QtCore/QByteArray>
+#include <QtCore/QString>
+#include <QtTest/QtTest>
+
+namespace profilecases {
+
+inline QByteArray unit(const char *unitBody)
+{
+    return QByteArray(R"({"name": "t", "units": [{"id": 1)") + unitBody + "}]}";
+}
+
+inline QByteArray holding(const char *entries)
+{
+    return unit((QByteArray(R"(, "tables": {"holding": [)") + entries + "]}").constData());
+}
+
+inline QByteArray table(const char *name, const char *entries)
+{
+    return unit((QByteArray(R"(, "tables": {")") + name + R"(": [)" + entries + "]}").constData());
+}
+
+inline QByteArray generator(const char *entryExtra, const char *gen)
+{
+    return holding((QByteArray(R"({"address": 0)") + entryExtra + R"(, "generator": )" + gen + "}").constData());
+}
+
+inline QByteArray faults(const char *rules)
+{
+    return QByteArray(R"({"name": "t", "units": [{"id": 1}], "faults": {"rules": [)") + rules + "]}}";
+}
+
+inline void row(const char *name, const QByteArray &json, const char *path, const QString &message)
+{
+    QTest::newRow(name) << json << QString::fromLatin1(path) << message;
+}
+
+inline void addRows()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QString>("message");
+    const auto S = [](const char *s) { return QString::fromUtf8(s); };
+
+    // The document
+    row("top-level array", "[]", "", S("expected a JSON object at the top level, found an array"));
+    row("name missing", R"({"units": [{"id": 1}]})", "", S("'name' is missing"));
+    row("name empty", R"({"name": " ", "units": [{"id": 1}]})", "name", S("the name is empty"));
+    row("name a number", R"({"name": 5, "units": [{"id": 1}]})", "name", S("expected a string, found the number 5"));
+    row("unknown top-level key", R"({"name": "t", "unit": [], "units": [{"id": 1}]})", "",
+        S("unknown key 'unit': expected one of $schema, name, description, endpoints, seed, units, faults"));
+    row("units missing", R"({"name": "t"})", "", S("'units' is missing"));
+    row("units empty", R"({"name": "t", "units": []})", "units", S("the list is empty: a profile has at least one unit"));
+    row("units an object", R"({"name": "t", "units": {}})", "units", S("expected an array, found an object"));
+    row("seed negative", R"({"name": "t", "seed": -1, "units": [{"id": 1}]})", "seed", S("-1 is below 0"));
+    row("endpoint scheme", R"({"name": "t", "endpoints": ["modbus://x:1"], "units": [{"id": 1}]})", "endpoints[0]",
+        S("modbus://x:1: unknown scheme 'modbus': expected one of tcp, rtu-tcp, ascii-tcp, udp, rtu-udp, rtu, ascii, tls"));
+
+    // Units
+    row("unit id missing", R"({"name": "t", "units": [{"name": "x"}]})", "units[0]", S("'id' is missing"));
+    row("unit id 256", R"({"name": "t", "units": [{"id": 256}]})", "units[0].id", S("256 is beyond 255"));
+    row("unit id fraction", R"({"name": "t", "units": [{"id": 1.5}]})", "units[0].id", S("1.5 is not a whole number"));
+    row("unit id bad hex", R"({"name": "t", "units": [{"id": "0xZZ"}]})", "units[0].id",
+        S("expected a whole number or hex text such as \"0x0079\", found a string \"0xZZ\""));
+    row("unit id twice", R"({"name": "t", "units": [{"id": 3}, {"id": "0x03"}]})", "units[1].id",
+        S("unit 3 is given twice (also an earlier unit)"));
+    row("unit unknown key", unit(R"(, "table": {})"), "units[0]",
+        S("unknown key 'table': expected one of id, name, description, functions, responseDelay, tables, fifos, files, "
+          "deviceIdentification, serverId, exceptionStatus"));
+    row("function not implemented", unit(R"(, "functions": ["0x03", "0x41"])"), "units[0].functions[1]",
+        S("function code 41 is not one the simulator implements (01, 02, 03, 04, 05, 06, 07, 08, 0B, 0C, 0F, 10, 11, 14, "
+          "15, 16, 17, 18, 2B)"));
+    row("function code 0", unit(R"(, "functions": [0])"), "units[0].functions[0]", S("0 is below 1"));
+    row("function twice", unit(R"(, "functions": [3, "0x03"])"), "units[0].functions[1]", S("function code 03 is listed twice"));
+    row("functions empty", unit(R"(, "functions": [])"), "units[0].functions",
+        S("the list is empty: a unit answers at least one function code"));
+    row("delay unknown distribution", unit(R"(, "responseDelay": {"distribution": "gamma"})"),
+        "units[0].responseDelay.distribution",
+        S("'gamma' is not a distribution: expected fixed, uniform, normal or exponential"));
+    row("delay negative", unit(R"(, "responseDelay": -3)"), "units[0].responseDelay", S("-3 is below 0"));
+    row("delay text", unit(R"(, "responseDelay": "4ms")"), "units[0].responseDelay",
+        S("expected milliseconds or an object such as {\"distribution\": \"normal\", \"meanMs\": 4, \"stddevMs\": 1}, "
+          "found a string \"4ms\""));
+    row("delay uniform reversed", unit(R"(, "responseDelay": {"distribution": "uniform", "minMs": 5, "maxMs": 2})"),
+        "units[0].responseDelay.maxMs", S("2 is below minMs 5"));
+    row("delay normal without stddev", unit(R"(, "responseDelay": {"distribution": "normal", "meanMs": 5})"),
+        "units[0].responseDelay", S("'stddevMs' is missing"));
+    row("delay key of another distribution", unit(R"(, "responseDelay": {"distribution": "fixed", "ms": 1, "meanMs": 2})"),
+        "units[0].responseDelay", S("unknown key 'meanMs': expected one of distribution, ms"));
+
+    // Table entries
+    row("address beyond 65535", holding(R"({"address": 1}, {"address": 2}, {"address": 70000})"),
+        "units[0].tables.holding[2].address", S("70000 is beyond 65535"));
+    row("unknown table", unit(R"(, "tables": {"holdings": []})"), "units[0].tables",
+        S("unknown key 'holdings': expected one of coils, discrete, input, holding"));
+    row("address missing", holding(R"({"name": "x"})"), "units[0].tables.holding[0]", S("'address' is missing"));
+    row("entry not an object", holding("5"), "units[0].tables.holding[0]", S("expected an object, found the number 5"));
+    row("unknown type", holding(R"({"address": 0, "type": "f33"})"), "units[0].tables.holding[0].type",
+        S("'f33' is not a register format: expected u16, i16, hex, bin, ascii, u32, i32, u64, i64, f32 or f64, "
+          "optionally followed by an order as in f32-cdab"));
+    row("scale zero", holding(R"({"address": 0, "scale": 0})"), "units[0].tables.holding[0].scale",
+        S("0 would make every value the same: expected a non-zero factor"));
+    row("count not whole values", holding(R"({"address": 0, "type": "f32", "count": 3})"), "units[0].tables.holding[0].count",
+        S("3 registers are not a whole number of f32-abcd values (2 registers each)"));
+    row("more values than count", holding(R"({"address": 0, "count": 2, "values": [1, 2, 3]})"),
+        "units[0].tables.holding[0].count", S("3 values take 3 registers, more than count 2"));
+    row("runs past 65535", holding(R"({"address": 65530, "type": "u32", "count": 10})"), "units[0].tables.holding[0]",
+        S("addresses 65530-65539 run past 65535 (10 registers from 65530)"));
+    row("overlap", holding(R"({"address": 0, "count": 10}, {"address": 20}, {"address": 5, "count": 10})"),
+        "units[0].tables.holding[2]", S("addresses 5-14 overlap holding[0] (0-9)"));
+    row("value and values", holding(R"({"address": 0, "value": 1, "values": [1]})"), "units[0].tables.holding[0]",
+        S("give 'value' (every value the same) or 'values' (a list), not both"));
+    row("value out of range", holding(R"({"address": 0, "values": [1, 70000]})"), "units[0].tables.holding[0].values[1]",
+        S("70000 is out of range for u16 (raw 0 to 65535)"));
+    row("scaled value out of range", holding(R"({"address": 0, "type": "i16", "scale": 0.1, "value": 4000})"),
+        "units[0].tables.holding[0].value", S("4000 is out of range for i16 (raw -32768 to 32767)"));
+    row("raw text refused", holding(R"({"address": 0, "type": "hex", "value": "0xG1"})"), "units[0].tables.holding[0].value",
+        S("'0xG1': 'G' is not a hex digit"));
+    row("value a boolean", holding(R"({"address": 0, "value": true})"), "units[0].tables.holding[0].value",
+        S("expected a number or the raw value as text (\"0x1A2B\"), found true"));
+    row("coil value 2", table("coils", R"({"address": 0, "values": [1, 2]})"), "units[0].tables.coils[0].values[1]",
+        S("expected true, false, 0 or 1, found the number 2"));
+    row("type on coils", table("coils", R"({"address": 0, "type": "u16"})"), "units[0].tables.coils[0]",
+        S("unknown key 'type': expected one of address, count, name, description, writable, value, values, generator"));
+    row("writable on input registers", table("input", R"({"address": 0, "writable": true})"), "units[0].tables.input[0]",
+        S("unknown key 'writable': expected one of address, count, name, description, unit, type, scale, offset, value, "
+          "values, generator"));
+    row("writable a string", holding(R"({"address": 0, "writable": "yes"})"), "units[0].tables.holding[0].writable",
+        S("expected true or false, found a string \"yes\""));
+
+    // Generators
+    row("generator kind unknown", generator("", R"({"kind": "triangle"})"), "units[0].tables.holding[0].generator.kind",
+        S("'triangle' is not a generator: expected constant, counter, randomWalk, sine, poisson or copy"));
+    row("generator kind missing", generator("", R"({"step": 1})"), "units[0].tables.holding[0].generator",
+        S("'kind' is missing"));
+    row("key of another generator", generator("", R"({"kind": "counter", "amplitude": 3})"),
+        "units[0].tables.holding[0].generator",
+        S("unknown key 'amplitude': expected one of kind, periodMs, seed, step, min, max, wrap"));
+    row("counter max below min", generator("", R"({"kind": "counter", "min": 10, "max": 5})"),
+        "units[0].tables.holding[0].generator.max", S("5 is not above min 10"));
+    row("counter max beyond type", generator(R"(, "type": "i16")", R"({"kind": "counter", "max": 40000})"),
+        "units[0].tables.holding[0].generator.max", S("40000 is beyond 32767"));
+    row("walk step negative", generator("", R"({"kind": "randomWalk", "step": -1})"),
+        "units[0].tables.holding[0].generator.step", S("-1 is below 0"));
+    row("period zero", generator("", R"({"kind": "sine", "periodMs": 0})"), "units[0].tables.holding[0].generator.periodMs",
+        S("0 is below 1"));
+    row("poisson without rate", generator("", R"({"kind": "poisson"})"), "units[0].tables.holding[0].generator",
+        S("'rate' is missing"));
+    row("poisson gate longer than period", generator("", R"({"kind": "poisson", "rate": 5, "gateMs": 2000, "periodMs": 1000})"),
+        "units[0].tables.holding[0].generator.gateMs", S("2000 is longer than periodMs 1000: gates would overlap"));
+    row("constant out of range", generator("", R"({"kind": "constant", "value": -1})"),
+        "units[0].tables.holding[0].generator.value", S("-1 is below 0"));
+    row("copy source missing", generator("", R"({"kind": "copy", "table": "input", "address": 9})"),
+        "units[0].tables.holding[0].generator.address", S("input 9 is not in any input entry of this unit"));
+    row("copy source inside a value", holding(R"({"address": 0, "type": "f32"}, {"address": 2, "generator": {"kind": "copy", "address": 1}})"),
+        "units[0].tables.holding[1].generator.address",
+        S("holding 1 is inside a f32-abcd value that starts at 0: expected the first address of a value"));
+    row("copy table unknown", generator("", R"({"kind": "copy", "table": "coil", "address": 0})"),
+        "units[0].tables.holding[0].generator.table",
+        S("'coil' is not a table: expected coils, discrete, input or holding"));
+
+    // FIFOs, files, identification, server id
+    const QByteArray thousandAndOne = QByteArray("0,").repeated(1000) + "0";
+    row("fifo too long", unit((R"(, "fifos": [{"address": 1, "values": [)" + thousandAndOne + "]}]").constData()),
+        "units[0].fifos[0].values", S("1001 values are more than 1000"));
+    row("fifo twice", unit(R"(, "fifos": [{"address": 7}, {"address": 7}])"), "units[0].fifos[1].address", S("FIFO 7 is given twice"));
+    row("file number 0", unit(R"(, "files": [{"file": 0, "length": 1}])"), "units[0].files[0].file", S("0 is below 1"));
+    row("file without records", unit(R"(, "files": [{"file": 1}])"), "units[0].files[0]",
+        S("the file has no records: give 'records' or 'length'"));
+    row("file length short", unit(R"(, "files": [{"file": 1, "length": 1, "records": [1, 2]}])"), "units[0].files[0].length",
+        S("1 is shorter than the 2 records given"));
+    row("file too long", unit(R"(, "files": [{"file": 1, "length": 10001}])"), "units[0].files[0].length", S("10001 is beyond 10000"));
+    row("device id basic missing", unit(R"(, "deviceIdentification": {"objects": {"VendorName": "x"}})"),
+        "units[0].deviceIdentification.objects",
+        S("ProductCode, MajorMinorRevision are missing: VendorName, ProductCode and MajorMinorRevision are mandatory (V1.1b3 6.21)"));
+    row("device id unknown object", unit(R"(, "deviceIdentification": {"objects": {"Vendor": "x", "ProductCode": "p", "MajorMinorRevision": "1"}})"),
+        "units[0].deviceIdentification.objects",
+        S("unknown key 'Vendor': expected VendorName, ProductCode, MajorMinorRevision, VendorUrl, ProductName, ModelName, "
+          "UserApplicationName or an object id \"0x00\"-\"0xFF\""));
+    row("device id conformity", unit(R"(, "deviceIdentification": {"conformityLevel": 4})"),
+        "units[0].deviceIdentification.conformityLevel",
+        S("4 is not a conformity level: expected 0x01, 0x02, 0x03, 0x81, 0x82 or 0x83"));
+    row("device id not latin-1", unit(R"(, "deviceIdentification": {"objects": {"VendorName": "\u20ac", "ProductCode": "p", "MajorMinorRevision": "1"}})"),
+        "units[0].deviceIdentification.objects.VendorName", S("'\u20ac' is not a Latin-1 character: device strings are bytes"));
+    row("server id not hex", unit(R"(, "serverId": {"id": "XY"})"), "units[0].serverId.id",
+        S("expected hex bytes such as \"2A\" or \"4D 42 53\": line 1, column 1: 'X' is not a hex digit or a separator "
+          "(0x may only start a byte, as in 0x01 0x03)"));
+    row("server id missing", unit(R"(, "serverId": {"running": true})"), "units[0].serverId", S("'id' is missing"));
+
+    // Fault rules in a profile
+    row("fault kind unknown", faults(R"({"kind": "explode"})"), "faults.rules[0].kind",
+        S("'explode' is not a fault: expected one of delay, drop, wrongChecksum, wrongTransactionId, wrongUnit, exception, "
+          "fewerRegisters, chunks, trickle, junk, duplicate, close"));
+    row("fault probability", faults(R"({"kind": "drop", "probability": 1.5})"), "faults.rules[0].probability",
+        S("1.5 is beyond 1"));
+    row("fault addresses reversed", faults(R"({"kind": "drop", "addresses": [10, 5]})"), "faults.rules[0].addresses[1]",
+        S("5 is below the first address 10"));
+    row("fault addresses three", faults(R"({"kind": "drop", "addresses": [1, 2, 3]})"), "faults.rules[0].addresses",
+        S("expected [first, last] (two addresses), found 3 values"));
+    row("fault unit not in profile", faults(R"({"kind": "drop", "units": [1, 5]})"), "faults.rules[0].units[1]",
+        S("unit 5 is not in this profile"));
+    row("fault key of another kind", faults(R"({"kind": "drop", "code": 4})"), "faults.rules[0]",
+        S("unknown key 'code': expected one of kind, name, units, functions, addresses, probability"));
+    row("junk without bytes", faults(R"({"kind": "junk"})"), "faults.rules[0]",
+        S("junk needs 'before' or 'after' (a byte count or hex bytes)"));
+    row("close when", faults(R"({"kind": "close", "when": "soon"})"), "faults.rules[0].when",
+        S("'soon' is not a moment: expected before, midway or after"));
+    row("delay rule without delay", faults(R"({"kind": "delay"})"), "faults.rules[0]", S("'delay' is missing"));
+    row("exception code 0", faults(R"({"kind": "exception", "code": 0})"), "faults.rules[0].code", S("0 is below 1"));
+}
+
+} // namespace profilecases
