@@ -1,0 +1,152 @@
+#include "sim/simconnection.h"
+
+#include "protocol/asciiframer.h"
+#include "protocol/mbapframer.h"
+#include "protocol/rtuframer.h"
+#include "sim/simendpoint.h"
+#include "sim/simulator.h"
+#include "transport/monotonicclock.h"
+
+#include <QtNetwork/QTcpSocket>
+
+namespace mbscope {
+
+namespace {
+
+std::unique_ptr<StreamFramer> framerFor(Framing framing)
+{
+    switch (framing) {
+    case Framing::Rtu: return std::make_unique<RtuFramer>(Direction::Request);
+    case Framing::Ascii: return std::make_unique<AsciiFramer>();
+    default: return std::make_unique<MbapFramer>();
+    }
+}
+
+QString peerOf(const QTcpSocket *socket)
+{
+    const QString address = socket->peerAddress().toString();
+    const QString host = address.contains(QLatin1Char(':')) ? QLatin1Char('[') + address + QLatin1Char(']') : address;
+    return host + QLatin1Char(':') + QString::number(socket->peerPort());
+}
+
+} // namespace
+
+SimConnection::SimConnection(Simulator *simulator, SimEndpoint *endpoint, QTcpSocket *socket, QObject *parent)
+    : QObject(parent)
+    , m_simulator(simulator)
+    , m_endpoint(endpoint)
+    , m_socket(socket)
+    , m_framer(framerFor(endpoint->framing()))
+    , m_responder(true, this)
+    , m_idle(this)
+    , m_silence(this)
+    , m_peer(peerOf(socket))
+{
+    socket->setParent(this);
+    m_idle.setSingleShot(true);
+    m_silence.setSingleShot(true);
+    connect(socket, &QTcpSocket::readyRead, this, &SimConnection::onReadyRead);
+    connect(socket, &QTcpSocket::disconnected, this, &SimConnection::onDisconnected);
+    connect(&m_silence, &QTimer::timeout, this, &SimConnection::onSilence);
+    connect(&m_idle, &QTimer::timeout, this, [this] {
+        close(QStringLiteral("idle for %1 ms: closed").arg(m_endpoint->options().idleTimeoutMs));
+    });
+    connect(&m_responder, &SimResponder::closeRequested, this, [this] { close(QStringLiteral("closed by a fault rule")); });
+    if (m_endpoint->options().idleTimeoutMs > 0)
+        m_idle.start(m_endpoint->options().idleTimeoutMs);
+    // Bytes may have arrived with the connection (a TLS handshake followed by a request).
+    if (socket->bytesAvailable() > 0)
+        QMetaObject::invokeMethod(this, &SimConnection::onReadyRead, Qt::QueuedConnection);
+}
+
+SimConnection::~SimConnection() = default;
+
+void SimConnection::onReadyRead()
+{
+    if (m_closing)
+        return;
+    const QByteArray bytes = m_socket->readAll();
+    if (bytes.isEmpty())
+        return;
+    if (m_endpoint->options().idleTimeoutMs > 0)
+        m_idle.start(m_endpoint->options().idleTimeoutMs);
+    m_framer->feed(bytes, monotonicNowNs());
+    drain();
+    if (!m_closing && m_framer->pendingSize() + m_framer->openSkippedRunSize() > 0)
+        m_silence.start(m_endpoint->options().streamSilenceMs);
+    else
+        m_silence.stop();
+}
+
+void SimConnection::onSilence()
+{
+    m_framer->flushOnSilence();
+    drain();
+}
+
+void SimConnection::drain()
+{
+    // MBAP (Messaging on TCP/IP V1.0b, 3.1.3): a header that is not Modbus's means the stream
+    // cannot be trusted any more; the connection is closed once the bytes are reported.
+    const bool mbap = m_endpoint->framing() == Framing::Tcp;
+    if (mbap && m_framer->openSkippedRunSize() > 0)
+        m_framer->flushOnSilence();
+    const QList<StreamFrame> frames = m_framer->takeFrames();
+    const QList<SkippedBytes> skipped = m_framer->takeSkipped();
+    // Frames and skipped runs in stream order.
+    qsizetype f = 0;
+    qsizetype s = 0;
+    while (!m_closing && (f < frames.size() || s < skipped.size())) {
+        if (s < skipped.size() && (f >= frames.size() || skipped.at(s).offset < frames.at(f).offset)) {
+            m_simulator->noteSkipped(m_endpoint, skipped.at(s), m_peer);
+            if (mbap) {
+                close(QStringLiteral("invalid MBAP header (protocol id not 0 or length outside 2-254): closed"));
+                return;
+            }
+            ++s;
+            continue;
+        }
+        const StreamFrame &frame = frames.at(f++);
+        const qint64 received = frame.lastByteNs != 0 ? frame.lastByteNs : monotonicNowNs();
+        const FaultPlan plan = m_simulator->handleFrame(m_endpoint, frame.bytes, frame.status, m_peer, received);
+        m_responder.enqueue(plan, received, [this](const QByteArray &answer) {
+            if (m_socket->state() != QAbstractSocket::ConnectedState)
+                return;
+            m_socket->write(answer);
+            m_simulator->noteSent(m_endpoint, answer);
+        });
+    }
+}
+
+void SimConnection::close(const QString &reason)
+{
+    if (m_closing)
+        return;
+    m_closing = true;
+    m_idle.stop();
+    m_silence.stop();
+    m_responder.clear();
+    m_simulator->noteConnection(m_endpoint, m_peer, SimLogEntry::Verdict::ConnectionClosed, reason);
+    if (m_socket->state() == QAbstractSocket::UnconnectedState)
+        onDisconnected();
+    else
+        m_socket->disconnectFromHost(); // disconnected() follows once written bytes are out
+}
+
+void SimConnection::onDisconnected()
+{
+    if (m_finished)
+        return;
+    m_finished = true;
+    if (!m_closing) {
+        m_closing = true;
+        m_idle.stop();
+        m_silence.stop();
+        m_responder.clear();
+        m_simulator->noteConnection(m_endpoint, m_peer, SimLogEntry::Verdict::ConnectionClosed,
+                                    QStringLiteral("closed by the client"));
+    }
+    Q_EMIT finished(this);
+}
+
+} // namespace mbscope

@@ -1,0 +1,23 @@
+#include "sim/simendpoint.h"
+
+namespace mbscope {
+
+SimEndpoint::SimEndpoint(Simulator *simulator, const LinkUrl &url, const SimEndpointOptions &options)
+    : m_simulator(simulator)
+    , m_url(url)
+    , m_boundUrl(url)
+    , m_name(url.toString())
+    , m_options(options)
+{
+}
+
+SimEndpoint::~SimEndpoint() = default;
+
+void SimEndpoint::setBound(const LinkUrl &bound, bool listening)
+{
+    m_boundUrl = bound;
+    m_name = bound.toString();
+    m_listening = listening;
+}
+
+} // namespace mbscope

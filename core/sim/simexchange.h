@@ -1,0 +1,28 @@
+#pragma once
+
+#include "protocol/framing.h"
+#include "sim/simreply.h"
+
+#include <QtCore/QByteArray>
+#include <QtCore/QString>
+
+namespace mbscope {
+
+// One request and the answer a unit made, as the fault hook (Simulator::setFaultHook, the
+// FaultInjector) sees it before anything is sent. The hook returns the FaultPlan the endpoint
+// executes; without a hook the plan is responseAdu after responseDelayNs.
+struct SimExchange {
+    QString endpoint;           // the endpoint's URL as bound ("rtu-tcp://127.0.0.1:4001")
+    QString peer;               // "127.0.0.1:53122", a serial device, ...
+    Framing framing = Framing::Tcp; // Tcp or Udp (MBAP), Rtu or Ascii
+    quint8 unitId = 0;          // as addressed in the request
+    quint16 transactionId = 0;  // MBAP framings
+    QByteArray requestAdu;      // the request as received
+    QByteArray requestPdu;      // function code first
+    SimReply reply;             // the unit's answer (reply.pdu: the response PDU)
+    QByteArray responseAdu;     // reply.pdu framed like the request (same unit and transaction id)
+    qint64 responseDelayNs = 0; // the unit's response delay
+    qint64 receivedNs = 0;      // monotonicNowNs() when the request's last byte arrived
+};
+
+} // namespace mbscope

@@ -1,0 +1,136 @@
+#include "sim/simserialendpoint.h"
+
+#include "protocol/asciiframer.h"
+#include "protocol/rtuframer.h"
+#include "sim/simulator.h"
+#include "transport/monotonicclock.h"
+
+#include <QtSerialPort/QSerialPort>
+
+namespace mbscope {
+
+namespace {
+
+constexpr int kAsciiSilenceMs = 1000; // Serial Line V1.02, 2.5.2.1: up to 1 s between characters
+
+} // namespace
+
+SimSerialEndpoint::SimSerialEndpoint(Simulator *simulator, const LinkUrl &url, const SimEndpointOptions &options)
+    : SimEndpoint(simulator, url, options)
+    , m_responder(true, this)
+    , m_silence(this)
+{
+    m_silence.setSingleShot(true);
+    m_silence.setTimerType(Qt::PreciseTimer);
+    connect(&m_silence, &QTimer::timeout, this, &SimSerialEndpoint::onSilence);
+}
+
+SimSerialEndpoint::~SimSerialEndpoint()
+{
+    stop();
+}
+
+bool SimSerialEndpoint::start(QString *error)
+{
+    const SerialSettings &s = url().serial;
+    m_port = new QSerialPort(s.device, this);
+    m_port->setBaudRate(s.baud);
+    m_port->setDataBits(QSerialPort::DataBits(s.dataBits));
+    m_port->setParity(s.parity == 'E' ? QSerialPort::EvenParity
+                      : s.parity == 'O' ? QSerialPort::OddParity
+                                        : QSerialPort::NoParity);
+    m_port->setStopBits(s.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop);
+    m_port->setFlowControl(QSerialPort::NoFlowControl);
+    if (!m_port->open(QIODevice::ReadWrite)) {
+        *error = url().toString() + QStringLiteral(": cannot open %1: %2").arg(s.device, m_port->errorString());
+        delete m_port;
+        m_port = nullptr;
+        return false;
+    }
+    if (url().kind == LinkKind::Rtu) {
+        auto rtu = std::make_unique<RtuFramer>(Direction::Request);
+        rtu->setBaudRate(s.baud);
+        m_framer = std::move(rtu);
+    } else {
+        m_framer = std::make_unique<AsciiFramer>();
+    }
+    connect(m_port, &QSerialPort::readyRead, this, &SimSerialEndpoint::onReadyRead);
+    connect(m_port, &QSerialPort::errorOccurred, this, [this](QSerialPort::SerialPortError e) {
+        if (e == QSerialPort::NoError || e == QSerialPort::TimeoutError)
+            return;
+        simulator()->noteConnection(this, url().serial.device, SimLogEntry::Verdict::ConnectionClosed,
+                                    QStringLiteral("serial port error: %1").arg(m_port->errorString()));
+        if (e == QSerialPort::ResourceError) // the device is gone (the pty's other end closed)
+            stop();
+    });
+    setBound(url(), true);
+    return true;
+}
+
+void SimSerialEndpoint::stop()
+{
+    m_silence.stop();
+    m_responder.clear();
+    if (m_port && m_port->isOpen())
+        m_port->close();
+    setBound(boundUrl(), false);
+}
+
+void SimSerialEndpoint::onReadyRead()
+{
+    const QByteArray bytes = m_port->readAll();
+    if (bytes.isEmpty())
+        return;
+    m_framer->feed(bytes, monotonicNowNs());
+    drain();
+    if (m_framer->pendingSize() + m_framer->openSkippedRunSize() == 0) {
+        m_silence.stop();
+        return;
+    }
+    if (url().kind == LinkKind::Rtu) {
+        // t3.5 after the last byte, rounded up to whole milliseconds (timers have no finer grain).
+        const qint64 t35 = RtuFramer::t35Ns(url().serial.baud);
+        m_silence.start(int(std::max<qint64>(1, (t35 + 999'999) / 1'000'000)));
+    } else {
+        m_silence.start(kAsciiSilenceMs);
+    }
+}
+
+void SimSerialEndpoint::onSilence()
+{
+    if (auto *rtu = dynamic_cast<RtuFramer *>(m_framer.get())) {
+        if (!rtu->onSilence(monotonicNowNs())) {
+            m_silence.start(1); // the timer fired a little early
+            return;
+        }
+    } else {
+        m_framer->flushOnSilence();
+    }
+    drain();
+}
+
+void SimSerialEndpoint::drain()
+{
+    const QString &device = url().serial.device;
+    const QList<StreamFrame> frames = m_framer->takeFrames();
+    const QList<SkippedBytes> skipped = m_framer->takeSkipped();
+    qsizetype f = 0;
+    qsizetype s = 0;
+    while (f < frames.size() || s < skipped.size()) {
+        if (s < skipped.size() && (f >= frames.size() || skipped.at(s).offset < frames.at(f).offset)) {
+            simulator()->noteSkipped(this, skipped.at(s++), device);
+            continue;
+        }
+        const StreamFrame &frame = frames.at(f++);
+        const qint64 received = frame.lastByteNs != 0 ? frame.lastByteNs : monotonicNowNs();
+        const FaultPlan plan = simulator()->handleFrame(this, frame.bytes, frame.status, device, received);
+        m_responder.enqueue(plan, received, [this](const QByteArray &answer) {
+            if (!m_port || !m_port->isOpen())
+                return;
+            m_port->write(answer);
+            simulator()->noteSent(this, answer);
+        });
+    }
+}
+
+} // namespace mbscope

@@ -1,0 +1,348 @@
+#include "sim/simulator.h"
+
+#include "engine/trafficlog.h"
+#include "protocol/adubuilder.h"
+#include "sim/simdatagramendpoint.h"
+#include "sim/simprocessor.h"
+#include "sim/simserialendpoint.h"
+#include "sim/simstreamendpoint.h"
+#include "sim/simunit.h"
+#include "transport/linkurl.h"
+#include "transport/monotonicclock.h"
+
+namespace mbscope {
+
+namespace {
+
+bool isSerialFraming(Framing framing)
+{
+    return framing == Framing::Rtu || framing == Framing::Ascii;
+}
+
+QByteArray frameAnswer(const QByteArray &pdu, Framing framing, quint8 unitId, quint16 transactionId)
+{
+    switch (framing) {
+    case Framing::Rtu: return AduBuilder::rtu(pdu, unitId);
+    case Framing::Ascii: return AduBuilder::ascii(pdu, unitId);
+    default: return AduBuilder::mbap(pdu, unitId, transactionId);
+    }
+}
+
+TrafficVerdict trafficVerdictOf(SimLogEntry::Verdict verdict)
+{
+    switch (verdict) {
+    case SimLogEntry::Verdict::Answered: return TrafficVerdict::Ok;
+    case SimLogEntry::Verdict::Exception: return TrafficVerdict::Exception;
+    case SimLogEntry::Verdict::NoAnswer: return TrafficVerdict::Broadcast;
+    case SimLogEntry::Verdict::UnknownUnit: return TrafficVerdict::Unexpected;
+    case SimLogEntry::Verdict::ChecksumError: return TrafficVerdict::CrcError;
+    case SimLogEntry::Verdict::Malformed: return TrafficVerdict::Malformed;
+    default: return TrafficVerdict::Garbage;
+    }
+}
+
+QString hex4(int value)
+{
+    return QStringLiteral("0x") + QString::number(value, 16).toUpper().rightJustified(4, QLatin1Char('0'));
+}
+
+} // namespace
+
+Simulator::Simulator(QObject *parent)
+    : QObject(parent)
+{
+    qRegisterMetaType<SimLogEntry>();
+}
+
+Simulator::~Simulator()
+{
+    // Endpoints report their last connections closing: delete them while the units and the log
+    // still exist, not later as children.
+    const QList<SimEndpoint *> all = m_endpoints;
+    m_endpoints.clear();
+    for (SimEndpoint *endpoint : all) {
+        endpoint->stop();
+        delete endpoint;
+    }
+}
+
+SimUnit *Simulator::addUnit(quint8 id)
+{
+    return adoptUnit(std::make_unique<SimUnit>(id));
+}
+
+SimUnit *Simulator::adoptUnit(std::unique_ptr<SimUnit> unit)
+{
+    if (!unit || unit->id() == 0 || m_units.count(unit->id()) != 0)
+        return nullptr;
+    const quint8 id = unit->id();
+    Slot slot;
+    slot.unit = std::move(unit);
+    slot.processor = std::make_unique<SimProcessor>(slot.unit.get());
+    return m_units.emplace(id, std::move(slot)).first->second.unit.get();
+}
+
+void Simulator::removeUnit(quint8 id)
+{
+    m_units.erase(id);
+}
+
+SimUnit *Simulator::unit(quint8 id) const
+{
+    const auto it = m_units.find(id);
+    return it == m_units.end() ? nullptr : it->second.unit.get();
+}
+
+QList<quint8> Simulator::unitIds() const
+{
+    QList<quint8> ids;
+    for (const auto &entry : m_units)
+        ids.append(entry.first);
+    return ids;
+}
+
+SimEndpoint *Simulator::listen(const QString &url, const SimEndpointOptions &options, QString *error)
+{
+    const LinkUrl::Result parsed = LinkUrl::parse(url, LinkUse::Listen);
+    if (!parsed.url) {
+        if (error)
+            *error = parsed.error;
+        return nullptr;
+    }
+    return listen(*parsed.url, options, error);
+}
+
+SimEndpoint *Simulator::listen(const LinkUrl &url, const SimEndpointOptions &options, QString *error)
+{
+    if (url.delimited.enabled) {
+        if (error)
+            *error = url.toString() + QStringLiteral(": the simulator serves Modbus framings only, not framing=delimited");
+        return nullptr;
+    }
+    SimEndpoint *endpoint = nullptr;
+    switch (url.kind) {
+    case LinkKind::Tcp:
+    case LinkKind::RtuTcp:
+    case LinkKind::AsciiTcp:
+    case LinkKind::Tls:
+        endpoint = new SimStreamEndpoint(this, url, options);
+        break;
+    case LinkKind::Udp:
+    case LinkKind::RtuUdp:
+        endpoint = new SimDatagramEndpoint(this, url, options);
+        break;
+    case LinkKind::Rtu:
+    case LinkKind::Ascii:
+        endpoint = new SimSerialEndpoint(this, url, options);
+        break;
+    }
+    QString why;
+    if (!endpoint->start(&why)) {
+        delete endpoint;
+        if (error)
+            *error = why;
+        return nullptr;
+    }
+    endpoint->setParent(this);
+    m_endpoints.append(endpoint);
+    return endpoint;
+}
+
+void Simulator::closeEndpoint(SimEndpoint *endpoint)
+{
+    if (!m_endpoints.removeOne(endpoint))
+        return;
+    endpoint->stop();
+    m_trafficLinks.remove(endpoint);
+    endpoint->deleteLater();
+}
+
+void Simulator::closeAll()
+{
+    const QList<SimEndpoint *> all = m_endpoints;
+    for (SimEndpoint *endpoint : all)
+        closeEndpoint(endpoint);
+}
+
+void Simulator::setTrafficLog(TrafficLog *log)
+{
+    m_trafficLog = log;
+    m_trafficLinks.clear();
+}
+
+QList<Simulator::Slot *> Simulator::slotsOf(const SimEndpoint *endpoint)
+{
+    QList<Slot *> out;
+    const QList<quint8> &only = endpoint->options().units;
+    for (auto &entry : m_units) {
+        if (only.isEmpty() || only.contains(entry.first))
+            out.append(&entry.second);
+    }
+    return out;
+}
+
+FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status,
+                                 const QString &peer, qint64 receivedNs)
+{
+    FaultPlan silence;
+    silence.drop = true;
+    const Framing framing = endpoint->framing();
+    const bool serial = isSerialFraming(framing);
+    const AduParts parts = AduBuilder::parse(adu, framing);
+    const QList<Slot *> units = slotsOf(endpoint);
+    const int unitForLog = parts.complete || !parts.pdu.isEmpty() ? parts.unitId : -1;
+
+    if (serial) {
+        // Serial Line V1.02, 2.5.1.2 / 2.5.2.2: a frame with a wrong CRC or LRC is discarded
+        // silently; the bus communication error counter counts it.
+        if (status != FrameStatus::Valid || !parts.complete || !parts.checksumValid()) {
+            for (Slot *slot : units)
+                SimProcessor::noteCommError(*slot->unit);
+            const bool badChecksum = parts.complete && parts.checksumPresent && !parts.checksumValid();
+            const QString reason = badChecksum ? QStringLiteral("%1 %2, expected %3: discarded")
+                                                     .arg(framing == Framing::Rtu ? QStringLiteral("CRC") : QStringLiteral("LRC"),
+                                                          hex4(parts.checksum), hex4(parts.expectedChecksum))
+                                               : (parts.error.isEmpty() ? QStringLiteral("incomplete frame: discarded")
+                                                                        : parts.error + QStringLiteral(": discarded"));
+            log(endpoint, peer, unitForLog, adu, {},
+                badChecksum ? SimLogEntry::Verdict::ChecksumError : SimLogEntry::Verdict::Malformed, reason);
+            return silence;
+        }
+    } else if (!parts.complete || parts.protocolId != 0 || !parts.lengthMatches) {
+        // Messaging on TCP/IP V1.0b, 3.1.3: protocol id 0 is Modbus; the length counts what follows.
+        QString reason = parts.error;
+        if (reason.isEmpty() && parts.protocolId != 0)
+            reason = QStringLiteral("MBAP protocol id %1, expected 0 (Modbus)").arg(parts.protocolId);
+        if (reason.isEmpty())
+            reason = QStringLiteral("MBAP length %1 does not match the %2 bytes that follow the length field")
+                         .arg(parts.length)
+                         .arg(adu.size() - 6);
+        log(endpoint, peer, unitForLog, adu, {}, SimLogEntry::Verdict::Malformed, reason + QStringLiteral(": dropped"));
+        return silence;
+    }
+    if (parts.pdu.isEmpty()) {
+        log(endpoint, peer, unitForLog, adu, {}, SimLogEntry::Verdict::Malformed, QStringLiteral("no function code: dropped"));
+        return silence;
+    }
+    for (Slot *slot : units)
+        SimProcessor::noteBusMessage(*slot->unit);
+
+    const quint8 unitId = parts.unitId;
+    if (serial && unitId == 0) {
+        for (Slot *slot : units)
+            slot->processor->process(parts.pdu, true);
+        log(endpoint, peer, 0, adu, {}, SimLogEntry::Verdict::NoAnswer,
+            QStringLiteral("broadcast to %1 unit(s): processed, never answered (Serial Line V1.02, 2.1)").arg(units.size()));
+        return silence;
+    }
+    Slot *target = nullptr;
+    for (Slot *slot : units) {
+        if (slot->unit->id() == unitId)
+            target = slot;
+    }
+    if (!target && !serial && endpoint->options().directUnitIds && (unitId == 0 || unitId == 0xFF) && !units.isEmpty())
+        target = units.first();
+
+    SimReply reply;
+    qint64 delayNs = 0;
+    SimLogEntry::Verdict verdict = SimLogEntry::Verdict::Answered;
+    if (!target) {
+        auto policy = endpoint->options().unknownUnit;
+        if (policy == SimEndpointOptions::UnknownUnit::Auto)
+            policy = endpoint->url().isSerial() ? SimEndpointOptions::UnknownUnit::Ignore
+                                                : SimEndpointOptions::UnknownUnit::Exception;
+        if (policy == SimEndpointOptions::UnknownUnit::Ignore) {
+            log(endpoint, peer, unitId, adu, {}, SimLogEntry::Verdict::UnknownUnit,
+                QStringLiteral("no unit %1 here: ignored").arg(unitId));
+            return silence;
+        }
+        // V1.1b3 section 7: 0B, gateway target device failed to respond.
+        reply = SimReply::exception(quint8(parts.pdu[0]) & 0x7F, 0x0B,
+                                    QStringLiteral("no unit %1 here: exception 0B (gateway target device failed to respond)").arg(unitId));
+        verdict = SimLogEntry::Verdict::UnknownUnit;
+    } else {
+        reply = target->processor->process(parts.pdu, false);
+        delayNs = target->unit->responseDelayNs();
+        if (reply.kind == SimReply::Kind::Exception)
+            verdict = SimLogEntry::Verdict::Exception;
+        else if (!reply.hasAnswer())
+            verdict = SimLogEntry::Verdict::NoAnswer;
+    }
+    if (!reply.hasAnswer()) {
+        log(endpoint, peer, unitId, adu, {}, verdict, reply.note);
+        return silence;
+    }
+    const QByteArray answer = frameAnswer(reply.pdu, framing, unitId, parts.transactionId);
+    log(endpoint, peer, unitId, adu, answer, verdict, reply.note);
+    if (m_faultHook) {
+        SimExchange exchange;
+        exchange.endpoint = endpoint->name();
+        exchange.peer = peer;
+        exchange.framing = framing;
+        exchange.unitId = unitId;
+        exchange.transactionId = parts.transactionId;
+        exchange.requestAdu = adu.toByteArray();
+        exchange.requestPdu = parts.pdu;
+        exchange.reply = reply;
+        exchange.responseAdu = answer;
+        exchange.responseDelayNs = delayNs;
+        exchange.receivedNs = receivedNs;
+        return m_faultHook(exchange);
+    }
+    FaultPlan plan;
+    plan.chunks.append(ResponseChunk{answer, delayNs});
+    return plan;
+}
+
+void Simulator::noteSkipped(SimEndpoint *endpoint, const SkippedBytes &skipped, const QString &peer)
+{
+    if (isSerialFraming(endpoint->framing())) {
+        for (Slot *slot : slotsOf(endpoint)) {
+            if (skipped.reason == SkipReason::TooLong)
+                SimProcessor::noteOverrun(*slot->unit);
+            else if (skipped.reason == SkipReason::ChecksumMismatch || skipped.reason == SkipReason::Incomplete)
+                SimProcessor::noteCommError(*slot->unit);
+        }
+    }
+    log(endpoint, peer, -1, skipped.bytes, {}, SimLogEntry::Verdict::Garbage,
+        QStringLiteral("%1 byte(s) skipped: %2").arg(skipped.count()).arg(QLatin1String(skipReasonName(skipped.reason))));
+}
+
+void Simulator::noteConnection(SimEndpoint *endpoint, const QString &peer, SimLogEntry::Verdict verdict,
+                               const QString &reason)
+{
+    log(endpoint, peer, -1, {}, {}, verdict, reason);
+}
+
+void Simulator::noteSent(SimEndpoint *endpoint, const QByteArray &bytes)
+{
+    if (m_trafficLog)
+        m_trafficLog->append(monotonicNowNs(), TrafficDirection::Out, trafficLink(endpoint), TrafficVerdict::Ok, 0, bytes);
+}
+
+quint16 Simulator::trafficLink(const SimEndpoint *endpoint)
+{
+    auto it = m_trafficLinks.find(endpoint);
+    if (it == m_trafficLinks.end())
+        it = m_trafficLinks.insert(endpoint, m_trafficLog->addLink(endpoint->name()));
+    return *it;
+}
+
+void Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
+                    const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason)
+{
+    SimLogEntry entry;
+    entry.tNs = monotonicNowNs();
+    entry.endpoint = endpoint->name();
+    entry.peer = peer;
+    entry.unitId = unitId;
+    entry.request = request.toByteArray();
+    entry.response = response;
+    entry.verdict = verdict;
+    entry.reason = reason;
+    if (m_trafficLog && !request.isEmpty())
+        m_trafficLog->append(entry.tNs, TrafficDirection::In, trafficLink(endpoint), trafficVerdictOf(verdict), 0, request);
+    Q_EMIT logged(entry);
+}
+
+} // namespace mbscope

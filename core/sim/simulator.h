@@ -1,0 +1,110 @@
+#pragma once
+
+#include "protocol/streamframe.h"
+#include "sim/faultplan.h"
+#include "sim/simendpointoptions.h"
+#include "sim/simexchange.h"
+#include "sim/simlogentry.h"
+
+#include <QtCore/QByteArrayView>
+#include <QtCore/QHash>
+#include <QtCore/QList>
+#include <QtCore/QObject>
+
+#include <functional>
+#include <map>
+#include <memory>
+
+namespace mbscope {
+
+class LinkUrl;
+class SimEndpoint;
+class SimProcessor;
+class SimUnit;
+class TrafficLog;
+
+// The built-in device simulator: units (SimUnit, each with its SimProcessor) behind endpoints
+// (SimEndpoint: tcp://, rtu-tcp://, ascii-tcp://, tls://, udp://, rtu-udp://, rtu://, ascii://).
+// Every endpoint reaches every unit unless its options name some (a gateway); requests to a unit
+// nobody has get exception 0B or silence (SimEndpointOptions::unknownUnit). On serial framings
+// (RTU and ASCII, also over TCP and UDP) unit 0 is a broadcast: every unit processes it, none
+// answers (Serial Line V1.02, 2.1).
+//
+//     Simulator sim;
+//     SimUnit *unit = sim.addUnit(1);            // fill it: ranges, device id... (or a profile)
+//     SimEndpoint *tcp = sim.listen(QStringLiteral("tcp://127.0.0.1:0"), {}, &error);
+//     quint16 port = tcp->boundUrl().port;        // the port the OS chose
+//
+// Faults: setFaultHook() sees each answer before it leaves (SimExchange) and returns the
+// FaultPlan to execute; without a hook the answer leaves after the unit's response delay.
+// Time never blocks: delays and chunks run on timers.
+class Simulator : public QObject
+{
+    Q_OBJECT
+public:
+    using FaultHook = std::function<FaultPlan(const SimExchange &exchange)>;
+
+    explicit Simulator(QObject *parent = nullptr);
+    ~Simulator() override;
+
+    // ---- Units ----
+    // A new empty unit (ids 1-255; 0 is the serial broadcast address), or nullptr when the id is
+    // taken or 0.
+    SimUnit *addUnit(quint8 id);
+    // Takes a unit built elsewhere (a profile loader); nullptr (and the unit deleted) when its id
+    // is taken or 0.
+    SimUnit *adoptUnit(std::unique_ptr<SimUnit> unit);
+    void removeUnit(quint8 id);
+    [[nodiscard]] SimUnit *unit(quint8 id) const;
+    [[nodiscard]] QList<quint8> unitIds() const;
+
+    // ---- Endpoints ----
+    // Parses the URL for listening (LinkUse::Listen: port 0 lets the OS choose, no host means
+    // 127.0.0.1), binds and starts. nullptr with *error set on failure.
+    SimEndpoint *listen(const QString &url, const SimEndpointOptions &options = {}, QString *error = nullptr);
+    SimEndpoint *listen(const LinkUrl &url, const SimEndpointOptions &options = {}, QString *error = nullptr);
+    [[nodiscard]] QList<SimEndpoint *> endpoints() const { return m_endpoints; }
+    void closeEndpoint(SimEndpoint *endpoint);
+    void closeAll();
+
+    // ---- Faults and logs ----
+    void setFaultHook(FaultHook hook) { m_faultHook = std::move(hook); }
+    [[nodiscard]] bool hasFaultHook() const { return bool(m_faultHook); }
+    // Frames in and out are appended to log (not owned; nullptr stops). Same thread only.
+    void setTrafficLog(TrafficLog *log);
+
+    // ---- The request path (used by the endpoints; public for tests and fuzzing) ----
+    // One frame cut by the endpoint's framer (or one datagram). Returns what to send: a plan
+    // with drop set for silence.
+    FaultPlan handleFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status,
+                          const QString &peer, qint64 receivedNs);
+    // Bytes the framer skipped: logged, and on serial framings counted (a CRC mismatch is a comm
+    // error, a frame too long an overrun).
+    void noteSkipped(SimEndpoint *endpoint, const SkippedBytes &skipped, const QString &peer);
+    // Connection events and bytes sent, for the logs.
+    void noteConnection(SimEndpoint *endpoint, const QString &peer, SimLogEntry::Verdict verdict,
+                        const QString &reason);
+    void noteSent(SimEndpoint *endpoint, const QByteArray &bytes);
+
+Q_SIGNALS:
+    // Every request, answer and connection event, as it happens.
+    void logged(const mbscope::SimLogEntry &entry);
+
+private:
+    struct Slot {
+        std::unique_ptr<SimUnit> unit;
+        std::unique_ptr<SimProcessor> processor;
+    };
+    [[nodiscard]] QList<Slot *> slotsOf(const SimEndpoint *endpoint);
+    void log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
+             const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason);
+    [[nodiscard]] quint16 trafficLink(const SimEndpoint *endpoint);
+
+    std::map<quint8, Slot> m_units;
+    QList<SimEndpoint *> m_endpoints;
+    FaultHook m_faultHook;
+    TrafficLog *m_trafficLog = nullptr;
+    QHash<const SimEndpoint *, quint16> m_trafficLinks;
+};
+
+} // namespace mbscope
