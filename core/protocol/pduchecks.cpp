@@ -66,14 +66,12 @@ QString functionLabel(const PduContext &ctx)
 
 int missing(const PduContext &ctx, int parent, int pduOffset, int pduSize, bool atLeast, const char *what)
 {
-    // what names fields as a sentence does ("object length and object value"); a field's own name
-    // ("Exception code") reads the same once lowered.
     const int from = qBound(0, pduOffset, qMax(ctx.length, 0));
     const int have = qMax(0, ctx.length - from);
     const int f = ctx.addChild(parent, kMissingKey, kMissingName, from, have, 0,
                                have > 0 ? ValueFormat::Bytes : ValueFormat::None);
     ctx.tree.flag(f, Severity::Error,
-                  QStringLiteral("missing: %1; %2").arg(lowerFirst(QString::fromLatin1(what)), moreBytes(qMax(1, pduSize - ctx.length), atLeast)));
+                  QStringLiteral("missing: %1; %2").arg(QLatin1String(what), moreBytes(qMax(1, pduSize - ctx.length), atLeast)));
     return f;
 }
 

@@ -2,7 +2,7 @@
 
 #include "functioncode.h"
 #include "hexformat.h"
-#include "pdudiagfields.h"
+#include "pduchecks.h"
 
 #include <cstring>
 
@@ -156,8 +156,11 @@ void dissectException(const PduContext &ctx)
     if (ctx.direction == Direction::Request) {
         ctx.tree.flag(f, Severity::Error, QStringLiteral("an exception code (0x80 set) can only appear in a response"));
     }
-    const int e = diag::addFixed(ctx, 1, 1, "modbus.exception_code", "Exception code", ValueFormat::Hex);
-    if (!ctx.has(1))
+    static const checks::Slot layout[] = {
+        {"modbus.exception_code", "Exception code", 1, ValueFormat::Hex, "exception code"},
+    };
+    int e = -1;
+    if (!checks::addFixed(ctx, ctx.parent, 1, layout, 1, &e, 2, false))
         return;
     const quint8 code = ctx.byte(1);
     ctx.tree.setMeaning(e, exceptionMeaning(code));
@@ -173,7 +176,7 @@ void dissectException(const PduContext &ctx)
                       QStringLiteral("V1.1b3 (7) defines Memory Parity Error for Read/Write File Record (0x14, 0x15), "
                                      "this exception is for %1").arg(hexByte(base)));
     }
-    diag::addTrailing(ctx, 2);
+    checks::trailing(ctx, 2);
 }
 
 } // namespace mbscope::pdu
