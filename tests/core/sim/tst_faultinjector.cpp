@@ -1,0 +1,576 @@
+#include "protocol/hextext.h"
+#include "sim/faultbytes.h"
+#include "sim/faultinjector.h"
+
+#include <QtTest/QtTest>
+
+#include <cmath>
+
+Q_DECLARE_METATYPE(mbscope::FaultRule)
+Q_DECLARE_METATYPE(mbscope::DelaySpec)
+
+using namespace mbscope;
+
+namespace {
+
+QByteArray hex(const char *text)
+{
+    const HexTextResult r = HexText::parse(QString::fromLatin1(text));
+    if (!r.ok)
+        qFatal("bad hex in test data: %s", text);
+    return r.bytes;
+}
+
+QString hexText(const QByteArray &bytes)
+{
+    return HexText::format(bytes);
+}
+
+// The answers the rules work on (CRC-16/MODBUS and LRC computed by an independent script):
+// RTU  01 03 00 79 00 02 15 D2 -> 01 03 04 04 1A 00 00 DA C4  (two registers from 0x0079)
+// TCP  tid 5, unit 1, 03 from 0 x2 -> 00 0A 00 0B
+// ASCII :010304000A000BE3 CR LF
+const char kRtuRequest[] = "01 03 00 79 00 02 15 D2";
+const char kRtuResponse[] = "01 03 04 04 1A 00 00 DA C4";
+const char kTcpRequest[] = "00 05 00 00 00 06 01 03 00 00 00 02";
+const char kTcpResponse[] = "00 05 00 00 00 07 01 03 04 00 0A 00 0B";
+const QByteArray kAsciiRequest = QByteArrayLiteral(":010300000002FA\r\n");
+const QByteArray kAsciiResponse = QByteArrayLiteral(":010304000A000BE3\r\n");
+
+constexpr qint64 kUnitDelayNs = 3000000;
+
+FaultContext rtuContext()
+{
+    return FaultContext::forRequest(Framing::Rtu, hex(kRtuRequest), hex(kRtuResponse), kUnitDelayNs);
+}
+
+FaultContext tcpContext()
+{
+    return FaultContext::forRequest(Framing::Tcp, hex(kTcpRequest), hex(kTcpResponse), kUnitDelayNs);
+}
+
+FaultContext asciiContext()
+{
+    return FaultContext::forRequest(Framing::Ascii, kAsciiRequest, kAsciiResponse, kUnitDelayNs);
+}
+
+FaultRule rule(FaultRule::Kind kind)
+{
+    FaultRule r;
+    r.kind = kind;
+    return r;
+}
+
+FaultPlan planWith(const FaultRule &r, const FaultContext &context, quint64 seed = 1)
+{
+    FaultInjector injector;
+    injector.setRules(FaultRuleSet{seed, {r}});
+    return injector.plan(context);
+}
+
+// One chunk with the whole answer after the unit's response time.
+void verifySingle(const FaultPlan &plan, const QByteArray &bytes, qint64 delayNs = kUnitDelayNs)
+{
+    QVERIFY(!plan.drop);
+    QVERIFY(!plan.closeBefore);
+    QVERIFY(!plan.closeAfter);
+    QCOMPARE(plan.chunks.size(), 1);
+    QCOMPARE(hexText(plan.chunks.at(0).bytes), hexText(bytes));
+    QCOMPARE(plan.chunks.at(0).delayNs, delayNs);
+}
+
+} // namespace
+
+class TestFaultInjector : public QObject
+{
+    Q_OBJECT
+private slots:
+    void context_data()
+    {
+        QTest::addColumn<QByteArray>("request");
+        QTest::addColumn<int>("unit");
+        QTest::addColumn<int>("function");
+        QTest::addColumn<int>("first");
+        QTest::addColumn<int>("last");
+        auto row = [](const char *frame, int unit, int function, int first, int last) {
+            QTest::newRow(frame) << hex(frame) << unit << function << first << last;
+        };
+        row("01 03 00 79 00 16 15 DD", 1, 0x03, 0x79, 0x79 + 21);
+        row("07 04 01 2C 00 03 70 58", 7, 0x04, 300, 302);
+        row("01 01 FF FF 00 10 00 00", 1, 0x01, 0xFFFF, 0xFFFF); // clamped at the last address
+        row("02 06 00 0A 01 02 00 00", 2, 0x06, 10, 10);
+        row("01 05 00 07 FF 00 00 00", 1, 0x05, 7, 7);
+        row("01 0F 00 13 00 0A 02 CD 01 00 00", 1, 0x0F, 0x13, 0x13 + 9);
+        row("01 10 00 01 00 02 04 00 0A 01 02 00 00", 1, 0x10, 1, 2);
+        row("01 16 00 04 00 F2 00 25 00 00", 1, 0x16, 4, 4);
+        // 17: read 3 from 4, write 3 from 14 -> 4..16
+        row("01 17 00 04 00 03 00 0E 00 03 06 00 FF 00 FF 00 FF 00 00", 1, 0x17, 4, 16);
+        row("01 18 04 DE 00 00", 1, 0x18, 0x04DE, 0x04DE);
+        row("01 11 00 00", 1, 0x11, -1, -1);
+        row("01 2B 0E 01 00 00 00", 1, 0x2B, -1, -1);
+    }
+    void context()
+    {
+        QFETCH(QByteArray, request);
+        QFETCH(int, unit);
+        QFETCH(int, function);
+        QFETCH(int, first);
+        QFETCH(int, last);
+        const FaultContext c = FaultContext::forRequest(Framing::Rtu, request, QByteArray(), 5);
+        QCOMPARE(int(c.unit), unit);
+        QCOMPARE(int(c.function), function);
+        QCOMPARE(c.firstAddress, first);
+        QCOMPARE(c.lastAddress, last);
+        QCOMPARE(c.responseDelayNs, qint64(5));
+        QCOMPARE(c.request, request);
+    }
+
+    void noRules()
+    {
+        FaultInjector injector;
+        const FaultPlan plan = injector.plan(rtuContext());
+        verifySingle(plan, hex(kRtuResponse));
+        QVERIFY(plan.faults.isEmpty());
+    }
+
+    // Every fault's exact bytes: only what the fault names is wrong.
+    void exactBytes_data()
+    {
+        QTest::addColumn<int>("framing");
+        QTest::addColumn<FaultRule>("faultRule");
+        QTest::addColumn<QByteArray>("expected");
+        using K = FaultRule::Kind;
+        auto row = [](const char *name, Framing framing, FaultRule r, const QByteArray &expected) {
+            QTest::newRow(name) << int(framing) << r << expected;
+        };
+        FaultRule r = rule(K::WrongChecksum);
+        row("01 03 04 04 1A 00 00 25 3B rtu wrong CRC (DA C4 inverted)", Framing::Rtu, r, hex("01 03 04 04 1A 00 00 25 3B"));
+        row(":010304000A000B1C ascii wrong LRC (E3 inverted)", Framing::Ascii, r, QByteArrayLiteral(":010304000A000B1C\r\n"));
+        r = rule(K::WrongTransactionId);
+        row("00 06 ... tcp tid + 1", Framing::Tcp, r, hex("00 06 00 00 00 07 01 03 04 00 0A 00 0B"));
+        r.delta = 0xFFFF;
+        row("00 04 ... tcp tid - 1 (delta FFFF)", Framing::Tcp, r, hex("00 04 00 00 00 07 01 03 04 00 0A 00 0B"));
+        r = rule(K::WrongUnit);
+        row("02 03 04 04 1A 00 00 E9 C4 rtu unit + 1, CRC recomputed", Framing::Rtu, r, hex("02 03 04 04 1A 00 00 E9 C4"));
+        r.delta = 255;
+        row("00 03 04 04 1A 00 00 CA 04 rtu unit - 1", Framing::Rtu, r, hex("00 03 04 04 1A 00 00 CA 04"));
+        row("00 05 00 00 00 07 00 03 ... tcp unit - 1", Framing::Tcp, r, hex("00 05 00 00 00 07 00 03 04 00 0A 00 0B"));
+        r = rule(K::Exception);
+        row("01 83 04 40 F3 rtu exception 04", Framing::Rtu, r, hex("01 83 04 40 F3"));
+        row("00 05 00 00 00 03 01 83 04 tcp exception 04 (MBAP length 3)", Framing::Tcp, r, hex("00 05 00 00 00 03 01 83 04"));
+        row(":01830478 ascii exception 04", Framing::Ascii, r, QByteArrayLiteral(":01830478\r\n"));
+        r.exceptionCode = 2;
+        row("01 83 02 C0 F1 rtu exception 02", Framing::Rtu, r, hex("01 83 02 C0 F1"));
+        r = rule(K::FewerRegisters);
+        row("01 03 02 04 1A 3B 4F rtu one register fewer", Framing::Rtu, r, hex("01 03 02 04 1A 3B 4F"));
+        row("00 05 00 00 00 05 01 03 02 00 0A tcp one fewer (MBAP length 5)", Framing::Tcp, r, hex("00 05 00 00 00 05 01 03 02 00 0A"));
+        row(":010302000AF0 ascii one fewer", Framing::Ascii, r, QByteArrayLiteral(":010302000AF0\r\n"));
+        r.fewer = 5;
+        row("01 03 00 20 F0 rtu five fewer of two: none left", Framing::Rtu, r, hex("01 03 00 20 F0"));
+    }
+    void exactBytes()
+    {
+        QFETCH(int, framing);
+        QFETCH(FaultRule, faultRule);
+        QFETCH(QByteArray, expected);
+        FaultContext c;
+        switch (Framing(framing)) {
+        case Framing::Rtu:
+            c = rtuContext();
+            break;
+        case Framing::Ascii:
+            c = asciiContext();
+            break;
+        default:
+            c = tcpContext();
+            break;
+        }
+        const FaultPlan plan = planWith(faultRule, c);
+        verifySingle(plan, expected);
+        QCOMPARE(plan.faults, QStringList{FaultRule::kindName(faultRule.kind)});
+    }
+
+    // Faults that need what the answer does not have do not apply: the answer goes out unchanged
+    // and nothing is listed as fired.
+    void notApplicable_data()
+    {
+        QTest::addColumn<int>("framing");
+        QTest::addColumn<FaultRule>("faultRule");
+        QTest::newRow("wrong checksum on tcp") << int(Framing::Tcp) << rule(FaultRule::Kind::WrongChecksum);
+        QTest::newRow("wrong tid on rtu") << int(Framing::Rtu) << rule(FaultRule::Kind::WrongTransactionId);
+        QTest::newRow("wrong tid on ascii") << int(Framing::Ascii) << rule(FaultRule::Kind::WrongTransactionId);
+    }
+    void notApplicable()
+    {
+        QFETCH(int, framing);
+        QFETCH(FaultRule, faultRule);
+        const FaultContext c = Framing(framing) == Framing::Tcp ? tcpContext()
+            : Framing(framing) == Framing::Rtu                  ? rtuContext()
+                                                                : asciiContext();
+        const FaultPlan plan = planWith(faultRule, c);
+        verifySingle(plan, c.response);
+        QVERIFY(plan.faults.isEmpty());
+    }
+
+    void fewerRegistersPdu_data()
+    {
+        QTest::addColumn<QByteArray>("pdu");
+        QTest::addColumn<int>("fewer");
+        QTest::addColumn<QByteArray>("expected");
+        auto row = [](const char *pdu, int fewer, const char *expected) {
+            QTest::addRow("%s fewer %d", pdu, fewer) << hex(pdu) << fewer << (expected ? hex(expected) : QByteArray());
+        };
+        row("01 02 CD 01", 1, "01 01 CD");                 // coils: one data byte fewer
+        row("02 03 AC DB 35", 2, "02 01 AC");              // discrete inputs
+        row("04 06 03 E8 01 F4 00 0A", 1, "04 04 03 E8 01 F4");
+        row("17 06 00 FE 0A CD 00 01", 1, "17 04 00 FE 0A CD");
+        row("18 00 06 00 02 01 B8 12 84", 1, "18 00 04 00 01 01 B8"); // FIFO: byte count and FIFO count
+        row("18 00 06 00 02 01 B8 12 84", 9, "18 00 02 00 00");
+        row("03 02 00 01", 1, "03 00");
+        row("83 02", 1, nullptr);                           // an exception
+        row("06 00 01 00 03", 1, nullptr);                  // not a read
+        row("03 00", 1, nullptr);                           // nothing to take away
+        row("03 04 00 01", 1, nullptr);                     // inconsistent already
+    }
+    void fewerRegistersPdu()
+    {
+        QFETCH(QByteArray, pdu);
+        QFETCH(int, fewer);
+        QFETCH(QByteArray, expected);
+        QCOMPARE(hexText(FaultBytes::fewerRegistersPdu(pdu, fewer)), hexText(expected));
+    }
+
+    void drop()
+    {
+        const FaultPlan plan = planWith(rule(FaultRule::Kind::Drop), rtuContext());
+        QVERIFY(plan.drop);
+        QVERIFY(plan.chunks.isEmpty());
+        QCOMPARE(plan.faults, QStringList{QStringLiteral("drop")});
+    }
+
+    void close_data()
+    {
+        QTest::addColumn<int>("when");
+        QTest::addColumn<bool>("before");
+        QTest::addColumn<bool>("after");
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::newRow("before") << int(FaultRule::CloseWhen::Before) << true << false << QByteArray();
+        QTest::newRow("after") << int(FaultRule::CloseWhen::After) << false << true << hex(kRtuResponse);
+        QTest::newRow("midway: 01 03 04 04 of 9 bytes") << int(FaultRule::CloseWhen::Midway) << false << true << hex("01 03 04 04");
+    }
+    void close()
+    {
+        QFETCH(int, when);
+        QFETCH(bool, before);
+        QFETCH(bool, after);
+        QFETCH(QByteArray, bytes);
+        FaultRule r = rule(FaultRule::Kind::Close);
+        r.closeWhen = FaultRule::CloseWhen(when);
+        const FaultPlan plan = planWith(r, rtuContext());
+        QCOMPARE(plan.closeBefore, before);
+        QCOMPARE(plan.closeAfter, after);
+        QVERIFY(!plan.drop);
+        if (before) {
+            QVERIFY(plan.chunks.isEmpty());
+        } else {
+            QCOMPARE(plan.chunks.size(), 1);
+            QCOMPARE(hexText(plan.chunks.at(0).bytes), hexText(bytes));
+            QCOMPARE(plan.chunks.at(0).delayNs, kUnitDelayNs);
+        }
+    }
+
+    void chunks()
+    {
+        FaultRule r = rule(FaultRule::Kind::Chunks);
+        r.chunkBytes = 4;
+        r.gapMs = 2.5;
+        const FaultPlan plan = planWith(r, rtuContext());
+        QCOMPARE(plan.chunks.size(), 3);
+        QCOMPARE(hexText(plan.chunks.at(0).bytes), QStringLiteral("01 03 04 04"));
+        QCOMPARE(hexText(plan.chunks.at(1).bytes), QStringLiteral("1A 00 00 DA"));
+        QCOMPARE(hexText(plan.chunks.at(2).bytes), QStringLiteral("C4"));
+        QCOMPARE(plan.chunks.at(0).delayNs, kUnitDelayNs);
+        QCOMPARE(plan.chunks.at(1).delayNs, qint64(2500000));
+        QCOMPARE(plan.chunks.at(2).delayNs, qint64(2500000));
+    }
+
+    void trickle()
+    {
+        FaultRule r = rule(FaultRule::Kind::Trickle);
+        r.gapMs = 20;
+        const FaultPlan plan = planWith(r, tcpContext());
+        const QByteArray response = hex(kTcpResponse);
+        QCOMPARE(plan.chunks.size(), response.size());
+        for (qsizetype i = 0; i < response.size(); ++i) {
+            QCOMPARE(plan.chunks.at(i).bytes, response.mid(i, 1));
+            QCOMPARE(plan.chunks.at(i).delayNs, i == 0 ? kUnitDelayNs : qint64(20000000));
+        }
+    }
+
+    void junk()
+    {
+        FaultRule r = rule(FaultRule::Kind::Junk);
+        r.junkBefore = hex("DE AD");
+        r.junkAfterCount = 3;
+        const FaultPlan a = planWith(r, rtuContext(), 7);
+        QCOMPARE(a.chunks.size(), 1);
+        const QByteArray bytes = a.chunks.at(0).bytes;
+        QCOMPARE(bytes.size(), 2 + 9 + 3);
+        QCOMPARE(hexText(bytes.left(11)), QStringLiteral("DE AD ") + QString::fromLatin1(kRtuResponse));
+        // Random junk: the same seed gives the same bytes, another seed others.
+        QCOMPARE(planWith(r, rtuContext(), 7).chunks.at(0).bytes, bytes);
+        QVERIFY(planWith(r, rtuContext(), 8).chunks.at(0).bytes.right(3) != bytes.right(3));
+    }
+
+    void duplicate()
+    {
+        FaultRule r = rule(FaultRule::Kind::Duplicate);
+        r.copies = 2;
+        r.gapMs = 5;
+        const FaultPlan plan = planWith(r, tcpContext());
+        QCOMPARE(plan.chunks.size(), 3);
+        for (const ResponseChunk &chunk : plan.chunks)
+            QCOMPARE(chunk.bytes, hex(kTcpResponse));
+        QCOMPARE(plan.chunks.at(0).delayNs, kUnitDelayNs);
+        QCOMPARE(plan.chunks.at(1).delayNs, qint64(5000000));
+        QCOMPARE(plan.chunks.at(2).delayNs, qint64(5000000));
+    }
+
+    void fixedDelay()
+    {
+        FaultRule r = rule(FaultRule::Kind::Delay);
+        r.delay = DelaySpec::fixed(1500);
+        verifySingle(planWith(r, rtuContext()), hex(kRtuResponse), qint64(1500) * 1000000);
+    }
+
+    void combined();
+    void filters_data();
+    void filters();
+    void dropProportion();
+    void delayDistributions_data();
+    void delayDistributions();
+    void unitResponseDelay();
+    void reproducible();
+    void setRulesWhileRunning();
+};
+
+// Several rules on one answer combine in the documented order, whatever their list order.
+void TestFaultInjector::combined()
+{
+    FaultRule checksum = rule(FaultRule::Kind::WrongChecksum);
+    FaultRule exception = rule(FaultRule::Kind::Exception);
+    FaultRule junk = rule(FaultRule::Kind::Junk);
+    junk.junkBefore = hex("FF");
+    FaultRule chunks = rule(FaultRule::Kind::Chunks);
+    chunks.chunkBytes = 2;
+    chunks.gapMs = 1;
+    FaultRule closeAfter = rule(FaultRule::Kind::Close);
+    checksum.name = QStringLiteral("noisy line");
+    FaultInjector injector;
+    injector.setRules(FaultRuleSet{1, {checksum, chunks, exception, junk, closeAfter}});
+    const FaultPlan plan = injector.plan(rtuContext());
+    // Exception 01 83 04 40 F3, CRC inverted (BF 0C), junk FF before, in pieces of two.
+    QCOMPARE(plan.chunks.size(), 3);
+    QCOMPARE(hexText(plan.chunks.at(0).bytes), QStringLiteral("FF 01"));
+    QCOMPARE(hexText(plan.chunks.at(1).bytes), QStringLiteral("83 04"));
+    QCOMPARE(hexText(plan.chunks.at(2).bytes), QStringLiteral("BF 0C"));
+    QVERIFY(plan.closeAfter);
+    QCOMPARE(plan.faults, (QStringList{QStringLiteral("noisy line"), QStringLiteral("chunks"), QStringLiteral("exception"),
+                                       QStringLiteral("junk"), QStringLiteral("close")}));
+    // Drop wins over everything else.
+    injector.setRules(FaultRuleSet{1, {exception, rule(FaultRule::Kind::Drop), junk}});
+    const FaultPlan dropped = injector.plan(rtuContext());
+    QVERIFY(dropped.drop);
+    QVERIFY(dropped.chunks.isEmpty());
+    // Wrong unit then wrong CRC: the CRC of the new unit's frame, inverted (E9 C4 -> 16 3B).
+    injector.setRules(FaultRuleSet{1, {rule(FaultRule::Kind::WrongChecksum), rule(FaultRule::Kind::WrongUnit)}});
+    QCOMPARE(hexText(injector.plan(rtuContext()).chunks.at(0).bytes), QStringLiteral("02 03 04 04 1A 00 00 16 3B"));
+}
+
+void TestFaultInjector::filters_data()
+{
+    QTest::addColumn<QList<quint8>>("units");
+    QTest::addColumn<QList<quint8>>("functions");
+    QTest::addColumn<int>("first");
+    QTest::addColumn<int>("last");
+    QTest::addColumn<bool>("fires");
+    // The request: unit 1, 03, 0x79-0x7A (121-122).
+    QTest::newRow("everything") << QList<quint8>{} << QList<quint8>{} << -1 << -1 << true;
+    QTest::newRow("unit 1") << QList<quint8>{1} << QList<quint8>{} << -1 << -1 << true;
+    QTest::newRow("unit 3") << QList<quint8>{3} << QList<quint8>{} << -1 << -1 << false;
+    QTest::newRow("units 2, 1") << QList<quint8>{2, 1} << QList<quint8>{} << -1 << -1 << true;
+    QTest::newRow("function 03") << QList<quint8>{} << QList<quint8>{0x03} << -1 << -1 << true;
+    QTest::newRow("function 10") << QList<quint8>{} << QList<quint8>{0x10} << -1 << -1 << false;
+    QTest::newRow("range ending at 121") << QList<quint8>{} << QList<quint8>{} << 100 << 121 << true;
+    QTest::newRow("range starting at 122") << QList<quint8>{} << QList<quint8>{} << 122 << 200 << true;
+    QTest::newRow("range before") << QList<quint8>{} << QList<quint8>{} << 0 << 120 << false;
+    QTest::newRow("range after") << QList<quint8>{} << QList<quint8>{} << 123 << 65535 << false;
+    QTest::newRow("unit 1, 03, range") << QList<quint8>{1} << QList<quint8>{3} << 121 << 121 << true;
+}
+
+void TestFaultInjector::filters()
+{
+    QFETCH(QList<quint8>, units);
+    QFETCH(QList<quint8>, functions);
+    QFETCH(int, first);
+    QFETCH(int, last);
+    QFETCH(bool, fires);
+    FaultRule r = rule(FaultRule::Kind::Drop);
+    r.units = units;
+    r.functions = functions;
+    r.firstAddress = first;
+    r.lastAddress = last;
+    QCOMPARE(planWith(r, rtuContext()).drop, fires);
+    QCOMPARE(FaultInjector::matches(r, rtuContext()), fires);
+}
+
+// A drop probability observed over many answers, within five standard errors of a proportion.
+void TestFaultInjector::dropProportion()
+{
+    for (const double p : {0.1, 0.5, 0.02}) {
+        FaultRule r = rule(FaultRule::Kind::Drop);
+        r.probability = p;
+        FaultInjector injector;
+        injector.setRules(FaultRuleSet{12345, {r}});
+        const int n = 20000;
+        int dropped = 0;
+        for (int i = 0; i < n; ++i)
+            dropped += injector.plan(tcpContext()).drop ? 1 : 0;
+        const double observed = double(dropped) / n;
+        QVERIFY2(std::fabs(observed - p) < 5 * std::sqrt(p * (1 - p) / n),
+                 qPrintable(QStringLiteral("p %1, observed %2").arg(p).arg(observed)));
+    }
+}
+
+void TestFaultInjector::delayDistributions_data()
+{
+    QTest::addColumn<DelaySpec>("spec");
+    QTest::addColumn<double>("mean");   // expected mean, ms
+    QTest::addColumn<double>("stddev"); // expected standard deviation, ms
+    QTest::addColumn<double>("low");    // every sample within [low, high]
+    QTest::addColumn<double>("high");
+    DelaySpec fixed = DelaySpec::fixed(7.5);
+    QTest::newRow("fixed 7.5") << fixed << 7.5 << 0.0 << 7.5 << 7.5;
+    DelaySpec uniform;
+    uniform.kind = DelaySpec::Kind::Uniform;
+    uniform.minMs = 2;
+    uniform.maxMs = 6;
+    QTest::newRow("uniform 2-6") << uniform << 4.0 << 4 / std::sqrt(12.0) << 2.0 << 6.0;
+    DelaySpec normal;
+    normal.kind = DelaySpec::Kind::Normal;
+    normal.meanMs = 50;
+    normal.stddevMs = 5;
+    QTest::newRow("normal 50, 5") << normal << 50.0 << 5.0 << 0.0 << 1e9;
+    DelaySpec exponential;
+    exponential.kind = DelaySpec::Kind::Exponential;
+    exponential.meanMs = 20;
+    QTest::newRow("exponential 20") << exponential << 20.0 << 20.0 << 0.0 << 1e9;
+}
+
+// Delay rules observed as the plan's first chunk delay: mean and spread within bounds.
+void TestFaultInjector::delayDistributions()
+{
+    QFETCH(DelaySpec, spec);
+    QFETCH(double, mean);
+    QFETCH(double, stddev);
+    QFETCH(double, low);
+    QFETCH(double, high);
+    FaultRule r = rule(FaultRule::Kind::Delay);
+    r.delay = spec;
+    FaultInjector injector;
+    injector.setRules(FaultRuleSet{99, {r}});
+    const int n = 20000;
+    double sum = 0;
+    double sumSquares = 0;
+    for (int i = 0; i < n; ++i) {
+        const double ms = double(injector.plan(rtuContext()).chunks.at(0).delayNs) / 1e6;
+        QVERIFY2(ms >= low - 1e-6 && ms <= high + 1e-6, qPrintable(QString::number(ms)));
+        sum += ms;
+        sumSquares += ms * ms;
+    }
+    const double m = sum / n;
+    const double sd = std::sqrt(std::max(0.0, sumSquares / n - m * m));
+    QVERIFY2(std::fabs(m - mean) <= 5 * stddev / std::sqrt(double(n)) + 1e-6,
+             qPrintable(QStringLiteral("mean %1, expected %2").arg(m).arg(mean)));
+    QVERIFY2(std::fabs(sd - stddev) <= 0.05 * stddev + 1e-6,
+             qPrintable(QStringLiteral("stddev %1, expected %2").arg(sd).arg(stddev)));
+}
+
+// The unit's own response time (from the profile) when no delay rule fires; clamped to its bounds.
+void TestFaultInjector::unitResponseDelay()
+{
+    DelaySpec normal;
+    normal.kind = DelaySpec::Kind::Normal;
+    normal.meanMs = 4;
+    normal.stddevMs = 1.5;
+    normal.minMs = 1;
+    normal.maxMs = 12;
+    FaultInjector injector;
+    injector.setResponseDelay(1, normal);
+    double sum = 0;
+    const int n = 10000;
+    for (int i = 0; i < n; ++i) {
+        const FaultPlan plan = injector.plan(rtuContext());
+        const double ms = double(plan.chunks.at(0).delayNs) / 1e6;
+        QVERIFY(ms >= 1 && ms <= 12);
+        sum += ms;
+    }
+    QVERIFY(std::fabs(sum / n - 4) < 5 * 1.5 / std::sqrt(double(n)) + 0.01);
+    // Another unit keeps the context's fixed time.
+    FaultContext other = rtuContext();
+    other.unit = 2;
+    QCOMPARE(injector.plan(other).chunks.at(0).delayNs, kUnitDelayNs);
+    injector.clearResponseDelays();
+    QCOMPARE(injector.plan(rtuContext()).chunks.at(0).delayNs, kUnitDelayNs);
+}
+
+// The same rules, seed and requests give the same plans; a rule that never matches does not
+// shift the draws of the others; setRules restarts the streams.
+void TestFaultInjector::reproducible()
+{
+    FaultRule drop = rule(FaultRule::Kind::Drop);
+    drop.probability = 0.3;
+    FaultRule delay = rule(FaultRule::Kind::Delay);
+    delay.delay.kind = DelaySpec::Kind::Exponential;
+    delay.delay.meanMs = 10;
+    FaultRule never = rule(FaultRule::Kind::Drop);
+    never.units = {99};
+    never.probability = 0.5;
+    auto trace = [](FaultInjector &injector) {
+        QList<qint64> out;
+        for (int i = 0; i < 500; ++i) {
+            const FaultPlan plan = injector.plan(rtuContext());
+            out.append(plan.drop ? -1 : plan.chunks.at(0).delayNs);
+        }
+        return out;
+    };
+    FaultInjector a;
+    a.setRules(FaultRuleSet{2026, {drop, delay}});
+    FaultInjector b;
+    b.setRules(FaultRuleSet{2026, {drop, delay}});
+    const QList<qint64> first = trace(a);
+    QCOMPARE(trace(b), first);
+    QVERIFY(first.contains(-1) && first.count(-1) < 500);
+    FaultInjector c;
+    c.setRules(FaultRuleSet{2026, {drop, delay, never}});
+    QCOMPARE(trace(c), first);
+    a.setRules(FaultRuleSet{2026, {drop, delay}});
+    QCOMPARE(trace(a), first);
+    FaultInjector d;
+    d.setRules(FaultRuleSet{2027, {drop, delay}});
+    QVERIFY(trace(d) != first);
+}
+
+void TestFaultInjector::setRulesWhileRunning()
+{
+    FaultInjector injector;
+    verifySingle(injector.plan(tcpContext()), hex(kTcpResponse));
+    injector.setRules(FaultRuleSet{1, {rule(FaultRule::Kind::Drop)}});
+    QVERIFY(injector.plan(tcpContext()).drop);
+    QCOMPARE(injector.rules().rules.size(), 1);
+    injector.setRules(FaultRuleSet{});
+    verifySingle(injector.plan(tcpContext()), hex(kTcpResponse));
+}
+
+QTEST_GUILESS_MAIN(TestFaultInjector)
+#include "tst_faultinjector.moc"
