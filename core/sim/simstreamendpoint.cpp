@@ -124,7 +124,9 @@ bool SimStreamEndpoint::start(QString *error)
     }
     if (!m_server->listen(*address, url().port))
         return fail(m_server->errorString());
-    connect(m_server, &QTcpServer::newConnection, this, &SimStreamEndpoint::onNewConnection);
+    // pendingConnectionAvailable (Qt 6.4): QSslServer queues a client only once its handshake is
+    // done, after newConnection was already emitted; for QTcpServer both come together.
+    connect(m_server, &QTcpServer::pendingConnectionAvailable, this, &SimStreamEndpoint::onNewConnection);
     LinkUrl bound = url();
     bound.port = m_server->serverPort();
     setBound(bound, true);
