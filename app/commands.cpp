@@ -1,6 +1,11 @@
 #include "commands.h"
 
 #include "decodecommand.h"
+#include "pollcommand.h"
+#include "readcommand.h"
+#include "sendcommand.h"
+#include "sweepcommand.h"
+#include "writecommand.h"
 
 #include <QtCore/QTextStream>
 
@@ -18,6 +23,11 @@ struct Subcommand {
 
 const Subcommand kSubcommands[] = {
     {"decode", "explain a Modbus frame field by field (hex argument or standard input)", runDecode},
+    {"send", "send bytes exactly (or a PDU completed) and show the answer decoded and the latency", runSend},
+    {"read", "read coils, inputs or registers and show the values in chosen formats", runRead},
+    {"write", "write coils or holding registers", runWrite},
+    {"poll", "send requests in cycles and print statistics: counts, latency percentiles, histogram", runPoll},
+    {"sweep", "poll at several intervals and print error rate and latency per interval", runSweep},
 };
 
 void printUsage(QTextStream &out)

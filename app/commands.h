@@ -17,6 +17,8 @@ int runGui(QApplication &app);
 #endif
 
 // Exit statuses shared by every subcommand.
-enum ExitStatus { ExitOk = 0, ExitFailure = 1, ExitUsage = 2 };
+// A link error (nothing reached the device: refused, no such host or port) ends a command as a
+// usage error does: the command could not do what it was asked.
+enum ExitStatus { ExitOk = 0, ExitFailure = 1, ExitUsage = 2, ExitLinkError = 2 };
 
 } // namespace mbscope::app

@@ -1,5 +1,6 @@
 // mbscope: the window when run without a subcommand, headless subcommands otherwise.
 #include "commands.h"
+#include "histogramplot.h"
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QStringList>
@@ -17,6 +18,17 @@ int main(int argc, char *argv[])
     const bool subcommand = first && first[0] != '-' && mbscope::app::isSubcommand(first);
     const bool wantsHelp = first && (std::strcmp(first, "--help") == 0 || std::strcmp(first, "-h") == 0
                                      || std::strcmp(first, "--version") == 0 || std::strcmp(first, "help") == 0);
+#ifdef MBSCOPE_HAVE_UI
+    // poll and sweep draw --histogram with QCustomPlot, a widget: they need a QApplication, on
+    // the offscreen platform so that no display is needed (or used) to write a PNG.
+    if (subcommand && mbscope::app::HistogramPlot::isRequested(argc, argv)) {
+        mbscope::app::HistogramPlot::prepareOffscreenPlatform();
+        QApplication app(argc, argv);
+        QApplication::setApplicationName(QStringLiteral("mbscope"));
+        QApplication::setApplicationVersion(QStringLiteral(MBSCOPE_VERSION));
+        return mbscope::app::runHeadless(QCoreApplication::arguments());
+    }
+#endif
     if (subcommand || wantsHelp || !mbscope::app::hasGui()) {
         QCoreApplication app(argc, argv);
         QCoreApplication::setApplicationName(QStringLiteral("mbscope"));

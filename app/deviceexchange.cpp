@@ -1,0 +1,33 @@
+#include "deviceexchange.h"
+
+#include "requestoptions.h"
+#include "targetoptions.h"
+
+#include "engine/transactionengine.h"
+
+namespace mbscope::app {
+
+QList<Transaction> exchange(const TargetSettings &target, const QList<PlannedRequest> &requests)
+{
+    TransactionEngine engine;
+    engine.setTarget(target.url);
+    QList<Transaction> records;
+    for (const PlannedRequest &r : requests) {
+        std::optional<Transaction> t = engine.sendAndWait(r.item);
+        if (!t) {
+            // sendAndWait waits for every timeout and retry plus the connect timeout and a margin:
+            // getting here means the engine lost the request, which is a bug to report as it is.
+            Transaction lost;
+            lost.request = r.item.bytes;
+            lost.status = TransactionStatus::LinkError;
+            lost.problem = QStringLiteral("the engine recorded nothing for this request (a bug in mbscope)");
+            t = lost;
+        }
+        records.append(*t);
+        if (t->status == TransactionStatus::LinkError)
+            break;
+    }
+    return records;
+}
+
+} // namespace mbscope::app

@@ -1,0 +1,88 @@
+#include "pollcommand.h"
+
+#include "commands.h"
+#include "polloptions.h"
+#include "pollresults.h"
+#include "pollrunner.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QTextStream>
+
+namespace mbscope::app {
+
+// Poll and sweep differ in one option and in what they print; the rest is shared.
+int runPollOrSweep(const QStringList &arguments, bool sweep)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    const char *name = sweep ? "sweep" : "poll";
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        sweep ? QStringLiteral(
+                    "Runs the same poll at each interval in turn and prints a table of interval against error rate and "
+                    "latency (min, mean, p50, p99, max), e.g. to find how fast a noisy RS485 bus can be polled.\n"
+                    "Example: mbscope sweep --target rtu:///dev/ttyUSB0?baud=9600 --function 3 --address 0 --quantity 10 "
+                    "--intervals 100,200,300,333,350,400 --count 300\n"
+                    "A live progress line is shown on a terminal; Ctrl-C stops and prints the intervals run so far.\n"
+                    "Exit status: 0 every transaction ok, 1 some failed, 2 usage or link error.")
+              : QStringLiteral(
+                    "Sends the requests in cycles at an interval, for a count of cycles or a duration, and prints the "
+                    "statistics: counts by outcome, latency min, mean, median, p90, p95, p99, max and standard "
+                    "deviation.\n"
+                    "Examples: mbscope poll --target tcp://192.168.1.10 --function 3 --address 0 --quantity 10 "
+                    "--interval 100ms --count 100\n"
+                    "          mbscope poll --target tcp://192.168.1.10 --hex \"00 01 00 00 00 06 01 03 00 00 00 0A\" "
+                    "--interval 0 --duration 60s --pipeline 8 --histogram latency.png\n"
+                    "A live progress line is shown on a terminal; Ctrl-C stops the poll and still prints the statistics.\n"
+                    "Exit status: 0 every transaction ok, 1 some failed, 2 usage or link error."));
+    parser.addHelpOption();
+    const PollOptions options(sweep);
+    options.addTo(parser);
+    if (!parser.parse(arguments)) {
+        err << "mbscope " << name << ": " << parser.errorText() << '\n';
+        return ExitUsage;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << parser.helpText();
+        return ExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty()) {
+        err << "mbscope " << name << ": unexpected argument '" << parser.positionalArguments().constFirst()
+            << "': every setting is an option (see mbscope " << name << " --help)\n";
+        return ExitUsage;
+    }
+    PollConfig config;
+    if (!options.read(parser, config, err))
+        return ExitUsage;
+
+    PollRunner runner(config.target, config.engine);
+    const PollOutcome outcome = runner.run(config.settings, sweep);
+    const PollResults results(config, outcome);
+    if (outcome.linkFailed) {
+        err << "mbscope " << name << ": " << outcome.linkMessage << '\n';
+        return results.exitStatus();
+    }
+    if (config.json)
+        out << QJsonDocument(sweep ? results.sweepJson() : results.pollJson()).toJson(QJsonDocument::Indented);
+    else
+        out << (sweep ? results.sweepText() : results.pollText());
+    out.flush();
+    if (!config.histogramPath.isEmpty()) {
+        QString error;
+        if (!results.writeHistogram(&error)) {
+            err << "mbscope " << name << ": --histogram: " << error << '\n';
+            return ExitUsage;
+        }
+        if (!config.json)
+            out << "plot          " << config.histogramPath << '\n';
+    }
+    return results.exitStatus();
+}
+
+int runPoll(const QStringList &arguments)
+{
+    return runPollOrSweep(arguments, false);
+}
+
+} // namespace mbscope::app

@@ -1,0 +1,163 @@
+#include "polloptions.h"
+
+#include "durations.h"
+#include "histogramplot.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QDir>
+#include <QtCore/QFileInfo>
+#include <QtCore/QTextStream>
+
+namespace mbscope::app {
+
+namespace {
+
+// Far more in flight than any gateway buffers; MBAP transaction ids would allow 65536.
+constexpr int kMaxPipeline = 1000;
+
+} // namespace
+
+PollOptions::PollOptions(bool sweep)
+    : m_sweep(sweep)
+    , m_command(sweep ? QStringLiteral("sweep") : QStringLiteral("poll"))
+    , m_requests(RequestOptions::Hex | RequestOptions::Read | RequestOptions::Write, true)
+    , m_interval(QStringLiteral("interval"),
+                 QStringLiteral("Time from the start of one cycle to the start of the next: 100ms, 1s... (default 1s; "
+                                "0: back to back)."),
+                 QStringLiteral("duration"), QStringLiteral("1s"))
+    , m_intervals(QStringLiteral("intervals"),
+                  QStringLiteral("The poll intervals to run, in order, separated by commas: 100,200,300 (bare numbers "
+                                 "are milliseconds) or 100ms,1s."),
+                  QStringLiteral("list"))
+    , m_count(QStringLiteral("count"),
+              sweep ? QStringLiteral("Cycles (polls) per interval.") : QStringLiteral("Cycles (polls) to run; each cycle "
+                                                                                      "sends every request once."),
+              QStringLiteral("n"))
+    , m_duration(QStringLiteral("duration"),
+                 sweep ? QStringLiteral("How long each interval runs (with or instead of --count): 60s, 5min...")
+                       : QStringLiteral("How long to poll (with or instead of --count): 60s, 5min... Without --count and "
+                                        "--duration the poll runs until Ctrl-C."),
+                 QStringLiteral("duration"))
+    , m_pipeline(QStringLiteral("pipeline"),
+                 QStringLiteral("Requests in flight at once, with distinct transaction ids (tcp, tls and udp targets; "
+                                "default 1)."),
+                 QStringLiteral("n"), QStringLiteral("1"))
+    , m_stats(QStringLiteral("stats"),
+              QStringLiteral("Detailed statistics: each request's own, the latency histogram as text, and what the "
+                             "engine counted (retries, late and unsolicited answers, bytes, connections)."))
+    , m_histogram(QStringLiteral("histogram"),
+                  QStringLiteral("Draw the latency histogram into a PNG file (no display needed)."),
+                  QStringLiteral("file.png"))
+    , m_json(QStringLiteral("json"), QStringLiteral("Print the statistics as JSON."))
+{
+}
+
+void PollOptions::addTo(QCommandLineParser &parser) const
+{
+    m_target.addTo(parser);
+    m_requests.addTo(parser);
+    parser.addOption(m_sweep ? m_intervals : m_interval);
+    parser.addOptions({m_count, m_duration, m_pipeline, m_stats, m_histogram, m_json});
+}
+
+bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextStream &err) const
+{
+    const QString prefix = QStringLiteral("mbscope %1: ").arg(m_command);
+    if (!m_target.read(parser, m_command, out.target, err))
+        return false;
+
+    if (m_sweep) {
+        if (!parser.isSet(m_intervals)) {
+            err << prefix << "--intervals is required: the poll intervals to compare, e.g. --intervals 100,200,300,400\n";
+            return false;
+        }
+        const DurationListResult list = parseDurationList(parser.value(m_intervals));
+        if (!list.ok) {
+            err << prefix << "--intervals: " << list.error << '\n';
+            return false;
+        }
+        out.settings.intervalsNs = list.ns;
+    } else {
+        const DurationResult interval = parseDuration(parser.value(m_interval));
+        if (!interval.ok) {
+            err << prefix << "--interval: " << interval.error << '\n';
+            return false;
+        }
+        out.settings.poll.intervalNs = interval.ns;
+        out.settings.intervalsNs = {interval.ns};
+    }
+
+    if (parser.isSet(m_count)) {
+        const IntegerResult count = parseInteger(QStringLiteral("--count"), parser.value(m_count), 1,
+                                                 1'000'000'000LL, QStringLiteral("cycles"));
+        if (!count.ok) {
+            err << prefix << count.error << '\n';
+            return false;
+        }
+        out.settings.poll.count = quint64(count.value);
+    }
+    if (parser.isSet(m_duration)) {
+        const DurationResult duration = parseDuration(parser.value(m_duration));
+        if (!duration.ok) {
+            err << prefix << "--duration: " << duration.error << '\n';
+            return false;
+        }
+        if (duration.ns == 0) {
+            err << prefix << "--duration 0 would poll nothing: give a length such as 60s\n";
+            return false;
+        }
+        out.settings.poll.durationNs = duration.ns;
+    }
+    if (m_sweep && out.settings.poll.count == 0 && out.settings.poll.durationNs == 0) {
+        err << prefix << "give --count (cycles per interval) or --duration (time per interval): without them the "
+            << "first interval would never end\n";
+        return false;
+    }
+
+    const IntegerResult pipeline = parseInteger(QStringLiteral("--pipeline"), parser.value(m_pipeline), 1, kMaxPipeline);
+    if (!pipeline.ok) {
+        err << prefix << pipeline.error << '\n';
+        return false;
+    }
+    const Framing framing = out.target.url.framing();
+    const bool mbap = !out.target.url.delimited.enabled && (framing == Framing::Tcp || framing == Framing::Udp);
+    if (pipeline.value > 1 && !mbap) {
+        err << prefix << "--pipeline " << pipeline.value << ": pipelining needs MBAP transaction ids to tell answers "
+            << "apart (tcp://, tls:// and udp:// targets); " << LinkUrl::schemeName(out.target.url.kind) << "://"
+            << (out.target.url.delimited.enabled ? " with delimited framing" : "")
+            << " carries one request at a time\n";
+        return false;
+    }
+    out.engine.pipelineDepth = int(pipeline.value);
+
+    if (parser.isSet(m_histogram)) {
+        if (!HistogramPlot::isAvailable()) {
+            err << prefix << "--histogram: " << HistogramPlot::unavailableReason() << '\n';
+            return false;
+        }
+        const QString path = parser.value(m_histogram);
+        const QFileInfo file(path);
+        const QFileInfo dir(file.absolutePath());
+        // Said now, not after a 60 s poll.
+        if (path.isEmpty() || file.isDir()) {
+            err << prefix << "--histogram '" << path << "' is not a file name: expected e.g. --histogram latency.png\n";
+            return false;
+        }
+        if (!dir.isDir() || !dir.isWritable() || (file.exists() && !file.isWritable())) {
+            err << prefix << "--histogram: cannot write " << QDir::toNativeSeparators(file.absoluteFilePath())
+                << (dir.isDir() ? ": permission denied\n" : ": the folder does not exist\n");
+            return false;
+        }
+        out.histogramPath = path;
+    }
+    out.stats = parser.isSet(m_stats);
+    out.json = parser.isSet(m_json);
+
+    if (!m_requests.read(parser, m_command, out.target, out.plan, err))
+        return false;
+    for (const PlannedRequest &r : out.plan.requests)
+        out.settings.poll.items.append(r.item);
+    return true;
+}
+
+} // namespace mbscope::app

@@ -1,0 +1,12 @@
+#include "sweepcommand.h"
+
+#include "pollcommand.h"
+
+namespace mbscope::app {
+
+int runSweep(const QStringList &arguments)
+{
+    return runPollOrSweep(arguments, true);
+}
+
+} // namespace mbscope::app

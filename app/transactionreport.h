@@ -1,0 +1,33 @@
+#pragma once
+
+#include "engine/transaction.h"
+#include "transport/linkurl.h"
+
+#include <QtCore/QJsonObject>
+#include <QtCore/QString>
+
+namespace mbscope::app {
+
+// One transaction of send, read or write as people and scripts read it: the request and the
+// response decoded field by field (DissectionFormat), the status and the latency. Frames of a
+// delimited link carry no Modbus fields: they are shown as hex and text.
+class TransactionReport
+{
+public:
+    // REQUEST / RESPONSE headings, each frame's table, then the outcome line.
+    [[nodiscard]] static QString text(const Transaction &t, const LinkUrl &url);
+    // The outcome line alone: "ok: answered in 1.234 ms" or "timeout: no answer within 1000 ms".
+    [[nodiscard]] static QString outcome(const Transaction &t);
+    // {"status", "problem", "exception_code", "latency_us", "first_byte_us", "attempts",
+    //  "request": {"hex", "length", "dissection"}, "response": {...} or null}
+    [[nodiscard]] static QJsonObject json(const Transaction &t, const LinkUrl &url);
+
+    // 0 for ok (and a broadcast, which wants no answer), 2 for a link error (nothing reached the
+    // device), 1 for every other failure.
+    [[nodiscard]] static int exitStatus(const Transaction &t);
+};
+
+// "1.234 ms", "734.5 µs", "2.100 s".
+[[nodiscard]] QString latencyText(qint64 ns);
+
+} // namespace mbscope::app

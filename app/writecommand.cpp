@@ -1,0 +1,103 @@
+#include "writecommand.h"
+
+#include "commands.h"
+#include "deviceexchange.h"
+#include "requestoptions.h"
+#include "targetoptions.h"
+#include "transactionreport.h"
+#include "valuetable.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QTextStream>
+
+namespace mbscope::app {
+
+int runWrite(const QStringList &arguments)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    const QString command = QStringLiteral("write");
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Writes coils or holding registers from --address with Write Multiple Coils (15) / Write Multiple Registers "
+        "(16), or with --single one Write Single Coil (05) / Write Single Register (06) per value, and prints each "
+        "request and response decoded, the latency and the values written with their Modicon references.\n"
+        "Examples: mbscope write --target tcp://192.168.1.10 --coils 1,0,0 --address 0\n"
+        "          mbscope write --target tcp://192.168.1.10 --registers 205,172,73 --address 0 --single\n"
+        "          mbscope write --target tcp://192.168.1.10 --registers 123.456 --format f32-cdab --address 10\n"
+        "Exit status: 0 every write ok, 1 some failed (exception, timeout, bad answer), 2 usage or link error."));
+    parser.addHelpOption();
+    const TargetOptions targetOptions;
+    const RequestOptions requestOptions(RequestOptions::Write);
+    const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the transactions and values as JSON."));
+    targetOptions.addTo(parser);
+    requestOptions.addTo(parser);
+    parser.addOption(jsonOpt);
+    if (!parser.parse(arguments)) {
+        err << "mbscope write: " << parser.errorText() << '\n';
+        return ExitUsage;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << parser.helpText();
+        return ExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty()) {
+        err << "mbscope write: unexpected argument '" << parser.positionalArguments().constFirst()
+            << "': give values with --coils 1,0,0 or --registers 205,172,73\n";
+        return ExitUsage;
+    }
+    TargetSettings target;
+    RequestPlan plan;
+    if (!targetOptions.read(parser, command, target, err) || !requestOptions.read(parser, command, target, plan, err))
+        return ExitUsage;
+
+    const QList<Transaction> records = exchange(target, plan.requests);
+    int status = ExitOk;
+    for (const Transaction &t : records)
+        status = qMax(status, TransactionReport::exitStatus(t));
+
+    // What was asked, whatever came of it: the values table says what each request carried.
+    ValueTable values;
+    values.functionCode = plan.requests.constFirst().functionCode;
+    values.address = plan.requests.constFirst().address;
+    values.formats = plan.formats;
+    for (const PlannedRequest &r : plan.requests) {
+        values.registers += r.registers;
+        values.bits += r.coils;
+    }
+    const int written = int(plan.requests.size());
+    const bool complete = records.size() == written;
+
+    if (parser.isSet(jsonOpt)) {
+        QJsonArray transactions;
+        for (qsizetype i = 0; i < records.size(); ++i) {
+            QJsonObject o = TransactionReport::json(records.at(i), target.url);
+            o.insert(QStringLiteral("description"), plan.requests.at(i).description);
+            transactions.append(o);
+        }
+        out << QJsonDocument(QJsonObject{{QStringLiteral("target"), target.url.toString()},
+                                         {QStringLiteral("transactions"), transactions},
+                                         {QStringLiteral("values"), values.json()}})
+                   .toJson(QJsonDocument::Indented);
+    } else {
+        for (qsizetype i = 0; i < records.size(); ++i) {
+            if (records.size() > 1)
+                out << (i > 0 ? "\n" : "") << "#" << (i + 1) << " of " << written << ": " << plan.requests.at(i).description
+                    << "\n";
+            out << TransactionReport::text(records.at(i), target.url);
+        }
+        if (!complete)
+            out << "\nstopped after " << records.size() << " of " << written << " requests: the link failed\n";
+        out << "\nVALUES " << (status == ExitOk ? "written" : "sent") << ": " << plan.summary;
+        if (written > 1)
+            out << " (" << written << " requests)";
+        out << "\n" << values.text();
+    }
+    if (!records.isEmpty() && records.constLast().status == TransactionStatus::LinkError)
+        err << "mbscope write: " << records.constLast().problem << '\n';
+    return status;
+}
+
+} // namespace mbscope::app
