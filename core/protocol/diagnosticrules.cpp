@@ -110,4 +110,16 @@ bool checkData(PduBuilder &b, int subFunction, const QByteArray &data, Direction
     }
 }
 
+BuildResult build(int subFunction, const QByteArray &data, Direction direction)
+{
+    PduBuilder b(0x08);
+    if (checkSubFunction(b, subFunction))
+        checkData(b, subFunction, data, direction);
+    if (b.hasErrors())
+        return b.finish();
+    b.appendU16(subFunction);
+    b.appendBytes(data);
+    return b.finish();
+}
+
 } // namespace mbscope::diagnosticrules

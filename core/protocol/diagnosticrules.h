@@ -1,5 +1,6 @@
 #pragma once
 
+#include "buildresult.h"
 #include "framing.h"
 
 #include <QtCore/QByteArray>
@@ -18,5 +19,7 @@ namespace mbscope::diagnosticrules {
 bool checkSubFunction(PduBuilder &builder, int subFunction);
 // The data field is what the sub-function prescribes in that direction.
 bool checkData(PduBuilder &builder, int subFunction, const QByteArray &data, Direction direction);
+// A Diagnostics PDU in that direction: sub-function and data, both checked.
+[[nodiscard]] BuildResult build(int subFunction, const QByteArray &data, Direction direction);
 
 } // namespace mbscope::diagnosticrules

@@ -23,6 +23,39 @@ void PduBuilder::appendU16(int value)
     m_pdu.append(char(quint8(value)));
 }
 
+void PduBuilder::appendBits(const QList<bool> &values)
+{
+    const int byteCount = int((values.size() + 7) / 8);
+    appendU8(byteCount);
+    for (int i = 0; i < byteCount; ++i) {
+        int packed = 0;
+        for (int bit = 0; bit < 8 && i * 8 + bit < values.size(); ++bit) {
+            if (values[i * 8 + bit])
+                packed |= 1 << bit;
+        }
+        appendU8(packed);
+    }
+}
+
+void PduBuilder::appendRegisters(const QList<quint16> &values)
+{
+    appendU8(int(values.size() * 2));
+    for (quint16 value : values)
+        appendU16(value);
+}
+
+BuildResult PduBuilder::startAndQuantity(quint8 function, int startAddress, int quantity, int maxQuantity,
+                                         const char *verb, const char *unit)
+{
+    PduBuilder b(function);
+    b.checkAddress(QStringLiteral("startAddress"), QStringLiteral("start address"), startAddress);
+    b.checkQuantity(QStringLiteral("quantity"), QStringLiteral("quantity"), quantity, maxQuantity, verb, unit);
+    b.checkSpan(QStringLiteral("quantity"), QStringLiteral("start address"), startAddress, quantity);
+    b.appendU16(startAddress);
+    b.appendU16(quantity);
+    return b.finish();
+}
+
 void PduBuilder::addError(const QString &parameter, const QString &message)
 {
     m_errors.append(BuildError{parameter, message});

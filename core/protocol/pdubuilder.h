@@ -29,6 +29,11 @@ public:
     void appendU8(int value) { m_pdu.append(char(quint8(value))); }
     void appendU16(int value); // big-endian, as every Modbus data item (V1.1b3, 4.2)
     void appendBytes(QByteArrayView bytes) { m_pdu.append(bytes.data(), bytes.size()); }
+    // A byte count, then the bits packed 8 to a byte, the first in the low bit of the first byte
+    // and the unused high bits of the last byte zero (V1.1b3, 6.1, 6.2, 6.11).
+    void appendBits(const QList<bool> &values);
+    // A byte count (2 per register), then the registers (V1.1b3, 6.3, 6.4, 6.12, 6.17).
+    void appendRegisters(const QList<quint16> &values);
 
     void addError(const QString &parameter, const QString &message);
 
@@ -51,6 +56,11 @@ public:
 
     // The result: the PDU when nothing is wrong (and it is within 253 bytes), else the errors.
     [[nodiscard]] BuildResult finish();
+
+    // A PDU of start address and quantity, both checked (01-04 requests, 0F/10 responses): verb
+    // and unit complete the quantity's rule ("reads", "coils").
+    [[nodiscard]] static BuildResult startAndQuantity(quint8 function, int startAddress, int quantity,
+                                                      int maxQuantity, const char *verb, const char *unit);
 
     [[nodiscard]] static QString hex(qint64 value, int digits);
 

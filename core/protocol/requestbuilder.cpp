@@ -11,17 +11,6 @@ namespace {
 // V1.1b3, 6.14/6.15: a file holds 10000 records, numbered 0-9999 (0x0000-0x270F).
 constexpr int RecordsPerFile = 10000;
 
-BuildResult readItems(quint8 function, int startAddress, int quantity, int maxQuantity, const char *unit)
-{
-    PduBuilder b(function);
-    b.checkAddress(QStringLiteral("startAddress"), QStringLiteral("start address"), startAddress);
-    b.checkQuantity(QStringLiteral("quantity"), QStringLiteral("quantity"), quantity, maxQuantity, "reads", unit);
-    b.checkSpan(QStringLiteral("quantity"), QStringLiteral("start address"), startAddress, quantity);
-    b.appendU16(startAddress);
-    b.appendU16(quantity);
-    return b.finish();
-}
-
 QString indexed(const char *list, qsizetype index, const char *member)
 {
     return QStringLiteral("%1[%2].%3").arg(QLatin1String(list)).arg(index).arg(QLatin1String(member));
@@ -58,22 +47,22 @@ void checkFileRecord(PduBuilder &b, qsizetype index, int referenceType, int file
 
 BuildResult RequestBuilder::readCoils(int startAddress, int quantity)
 {
-    return readItems(0x01, startAddress, quantity, 2000, "coils");
+    return PduBuilder::startAndQuantity(0x01, startAddress, quantity, 2000, "reads", "coils");
 }
 
 BuildResult RequestBuilder::readDiscreteInputs(int startAddress, int quantity)
 {
-    return readItems(0x02, startAddress, quantity, 2000, "discrete inputs");
+    return PduBuilder::startAndQuantity(0x02, startAddress, quantity, 2000, "reads", "discrete inputs");
 }
 
 BuildResult RequestBuilder::readHoldingRegisters(int startAddress, int quantity)
 {
-    return readItems(0x03, startAddress, quantity, 125, "registers");
+    return PduBuilder::startAndQuantity(0x03, startAddress, quantity, 125, "reads", "registers");
 }
 
 BuildResult RequestBuilder::readInputRegisters(int startAddress, int quantity)
 {
-    return readItems(0x04, startAddress, quantity, 125, "registers");
+    return PduBuilder::startAndQuantity(0x04, startAddress, quantity, 125, "reads", "registers");
 }
 
 BuildResult RequestBuilder::writeSingleCoil(int address, bool on)
@@ -119,18 +108,7 @@ BuildResult RequestBuilder::writeMultipleCoils(int startAddress, const QList<boo
         return b.finish();
     b.appendU16(startAddress);
     b.appendU16(int(quantity));
-    // V1.1b3, 6.11: N = quantity / 8 rounded up; the first coil is the low bit of the first byte,
-    // and unused bits of the last byte are zero.
-    const int byteCount = int((quantity + 7) / 8);
-    b.appendU8(byteCount);
-    for (int i = 0; i < byteCount; ++i) {
-        int packed = 0;
-        for (int bit = 0; bit < 8 && i * 8 + bit < quantity; ++bit) {
-            if (values[i * 8 + bit])
-                packed |= 1 << bit;
-        }
-        b.appendU8(packed);
-    }
+    b.appendBits(values);
     return b.finish();
 }
 
@@ -145,9 +123,7 @@ BuildResult RequestBuilder::writeMultipleRegisters(int startAddress, const QList
         return b.finish();
     b.appendU16(startAddress);
     b.appendU16(int(quantity));
-    b.appendU8(int(quantity * 2));
-    for (quint16 value : values)
-        b.appendU16(value);
+    b.appendRegisters(values);
     return b.finish();
 }
 
@@ -184,9 +160,7 @@ BuildResult RequestBuilder::readWriteMultipleRegisters(int readStartAddress, int
     b.appendU16(readQuantity);
     b.appendU16(writeStartAddress);
     b.appendU16(int(writeQuantity));
-    b.appendU8(int(writeQuantity * 2));
-    for (quint16 value : writeValues)
-        b.appendU16(value);
+    b.appendRegisters(writeValues);
     return b.finish();
 }
 

@@ -47,14 +47,7 @@ BuildResult RequestBuilder::reportServerId()
 
 BuildResult RequestBuilder::diagnostics(int subFunction, const QByteArray &data)
 {
-    PduBuilder b(0x08);
-    if (diagnosticrules::checkSubFunction(b, subFunction))
-        diagnosticrules::checkData(b, subFunction, data, Direction::Request);
-    if (b.hasErrors())
-        return b.finish();
-    b.appendU16(subFunction);
-    b.appendBytes(data);
-    return b.finish();
+    return diagnosticrules::build(subFunction, data, Direction::Request);
 }
 
 BuildResult RequestBuilder::diagnostics(int subFunction)

@@ -10,21 +10,9 @@ namespace {
 BuildResult readBits(quint8 function, const QList<bool> &values, const char *unit)
 {
     PduBuilder b(function);
-    const qint64 quantity = values.size();
-    if (!b.checkQuantity(QStringLiteral("values"), QStringLiteral("quantity"), quantity, 2000, "reads", unit))
+    if (!b.checkQuantity(QStringLiteral("values"), QStringLiteral("quantity"), values.size(), 2000, "reads", unit))
         return b.finish();
-    // V1.1b3, 6.1/6.2: the first item is the low bit of the first byte; the unused high bits of
-    // the last byte are zero.
-    const int byteCount = int((quantity + 7) / 8);
-    b.appendU8(byteCount);
-    for (int i = 0; i < byteCount; ++i) {
-        int packed = 0;
-        for (int bit = 0; bit < 8 && i * 8 + bit < quantity; ++bit) {
-            if (values[i * 8 + bit])
-                packed |= 1 << bit;
-        }
-        b.appendU8(packed);
-    }
+    b.appendBits(values);
     return b.finish();
 }
 
@@ -39,20 +27,7 @@ BuildResult registers(quint8 function, const QList<quint16> &values, const QStri
                           .arg(max))) {
         return b.finish();
     }
-    b.appendU8(int(quantity * 2));
-    for (quint16 value : values)
-        b.appendU16(value);
-    return b.finish();
-}
-
-BuildResult echoRange(quint8 function, int startAddress, int quantity, int max, const char *unit)
-{
-    PduBuilder b(function);
-    b.checkAddress(QStringLiteral("startAddress"), QStringLiteral("start address"), startAddress);
-    b.checkQuantity(QStringLiteral("quantity"), QStringLiteral("quantity"), quantity, max, "writes", unit);
-    b.checkSpan(QStringLiteral("quantity"), QStringLiteral("start address"), startAddress, quantity);
-    b.appendU16(startAddress);
-    b.appendU16(quantity);
+    b.appendRegisters(values);
     return b.finish();
 }
 
@@ -98,12 +73,12 @@ BuildResult ResponseBuilder::writeSingleRegister(int address, int value)
 BuildResult ResponseBuilder::writeMultipleCoils(int startAddress, int quantity)
 {
     // V1.1b3, 6.11: the start address and the quantity of coils forced.
-    return echoRange(0x0F, startAddress, quantity, 1968, "coils");
+    return PduBuilder::startAndQuantity(0x0F, startAddress, quantity, 1968, "writes", "coils");
 }
 
 BuildResult ResponseBuilder::writeMultipleRegisters(int startAddress, int quantity)
 {
-    return echoRange(0x10, startAddress, quantity, 123, "registers");
+    return PduBuilder::startAndQuantity(0x10, startAddress, quantity, 123, "writes", "registers");
 }
 
 BuildResult ResponseBuilder::maskWriteRegister(int address, int andMask, int orMask)
@@ -185,14 +160,7 @@ BuildResult ResponseBuilder::readExceptionStatus(int outputs)
 
 BuildResult ResponseBuilder::diagnostics(int subFunction, const QByteArray &data)
 {
-    PduBuilder b(0x08);
-    if (diagnosticrules::checkSubFunction(b, subFunction))
-        diagnosticrules::checkData(b, subFunction, data, Direction::Response);
-    if (b.hasErrors())
-        return b.finish();
-    b.appendU16(subFunction);
-    b.appendBytes(data);
-    return b.finish();
+    return diagnosticrules::build(subFunction, data, Direction::Response);
 }
 
 BuildResult ResponseBuilder::diagnosticsValue(int subFunction, int value)
