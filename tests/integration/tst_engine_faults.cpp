@@ -212,9 +212,10 @@ void TestEngineFaults::fault_data()
             row(link, "trickle 10", 3000, S::Ok, 0, 0, 0, 0, 0);
         // Slower than the engine's end-of-frame silence (50 ms over TCP, t3.5 = 1.75 ms on a
         // 115200 baud line): RTU has no length field that survives a gap, so the answer breaks
-        // into pieces that are no frame; every byte is still counted.
+        // into pieces that are no frame; every byte is still counted. The gaps are far longer than
+        // the silence so that a busy machine, late to read, still sees each byte alone.
         if (!mbap)
-            row(link, serial ? "trickle 20" : "trickle 120", 3000, S::Timeout, 0, 0, 0, 11, 0);
+            row(link, serial ? "trickle 60" : "trickle 150", 3000, S::Timeout, 0, 0, 0, 11, 0);
         row(link, "garbage 7", 2000, S::Ok, 0, 0, 0, 7, 0);
         if (mbap)
             row(link, "wrong-tid", 2000, S::Unexpected, 0, 0, 0, 0, 0);
