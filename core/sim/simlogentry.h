@@ -3,6 +3,7 @@
 #include <QtCore/QByteArray>
 #include <QtCore/QMetaType>
 #include <QtCore/QString>
+#include <QtCore/QStringList>
 
 namespace mbscope {
 
@@ -30,6 +31,7 @@ struct SimLogEntry {
     QByteArray response;   // the answer as built (empty when none); faults may change what is sent
     Verdict verdict = Verdict::Answered;
     QString reason;        // why: the exception's cause, "bad CRC: 0x1234, expected 0x5678", ...
+    QStringList faults;    // the fault rules that fired on the answer (FaultPlan::faults)
 
     // "answered", "exception", "no_answer", "unknown_unit", "checksum_error", "malformed",
     // "garbage", "connection_opened", "connection_refused", "connection_closed"

@@ -57,7 +57,10 @@ Simulator::Simulator(QObject *parent)
 Simulator::~Simulator()
 {
     // Endpoints report their last connections closing: delete them while the units and the log
-    // still exist, not later as children.
+    // still exist, not later as children; and say nothing any more (whoever listened may be
+    // gone already).
+    blockSignals(true);
+    m_trafficLog = nullptr;
     const QList<SimEndpoint *> all = m_endpoints;
     m_endpoints.clear();
     for (SimEndpoint *endpoint : all) {
@@ -273,7 +276,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         return silence;
     }
     const QByteArray answer = frameAnswer(reply.pdu, framing, unitId, parts.transactionId);
-    log(endpoint, peer, unitId, adu, answer, verdict, reply.note);
+    FaultPlan plan;
     if (m_faultHook) {
         SimExchange exchange;
         exchange.endpoint = endpoint->name();
@@ -287,10 +290,11 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         exchange.responseAdu = answer;
         exchange.responseDelayNs = delayNs;
         exchange.receivedNs = receivedNs;
-        return m_faultHook(exchange);
+        plan = m_faultHook(exchange);
+    } else {
+        plan.chunks.append(ResponseChunk{answer, delayNs});
     }
-    FaultPlan plan;
-    plan.chunks.append(ResponseChunk{answer, delayNs});
+    log(endpoint, peer, unitId, adu, answer, verdict, reply.note, plan.faults);
     return plan;
 }
 
@@ -329,7 +333,8 @@ quint16 Simulator::trafficLink(const SimEndpoint *endpoint)
 }
 
 void Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
-                    const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason)
+                    const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
+                    const QStringList &faults)
 {
     SimLogEntry entry;
     entry.tNs = monotonicNowNs();
@@ -340,6 +345,7 @@ void Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, QByt
     entry.response = response;
     entry.verdict = verdict;
     entry.reason = reason;
+    entry.faults = faults;
     if (m_trafficLog && !request.isEmpty())
         m_trafficLog->append(entry.tNs, TrafficDirection::In, trafficLink(endpoint), trafficVerdictOf(verdict), 0, request);
     Q_EMIT logged(entry);

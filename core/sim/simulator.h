@@ -97,7 +97,8 @@ private:
     };
     [[nodiscard]] QList<Slot *> slotsOf(const SimEndpoint *endpoint);
     void log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
-             const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason);
+             const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
+             const QStringList &faults = {});
     [[nodiscard]] quint16 trafficLink(const SimEndpoint *endpoint);
 
     std::map<quint8, Slot> m_units;

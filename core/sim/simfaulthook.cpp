@@ -1,0 +1,15 @@
+#include "sim/simfaulthook.h"
+
+#include "sim/faultinjector.h"
+
+namespace mbscope {
+
+Simulator::FaultHook faultHookFor(FaultInjector *injector)
+{
+    return [injector](const SimExchange &exchange) {
+        return injector->plan(FaultContext::forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu,
+                                                       exchange.responseDelayNs));
+    };
+}
+
+} // namespace mbscope
