@@ -1,0 +1,265 @@
+#include "simulatecommand.h"
+
+#include "simulatesession.h"
+
+#include "sim/profileloader.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QCoreApplication>
+#include <QtCore/QEventLoop>
+#include <QtCore/QRegularExpression>
+#include <QtCore/QSocketNotifier>
+#include <QtCore/QTextStream>
+#include <QtCore/QTimer>
+
+#include <chrono>
+#include <csignal>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace mbscope::app {
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitUsage = 2;
+
+// SIGINT/SIGTERM reach the event loop through a socket pair (a signal handler may only write).
+int g_signalFds[2] = {-1, -1};
+
+extern "C" void onStopSignal(int)
+{
+    const char byte = 1;
+    if (g_signalFds[0] >= 0)
+        [[maybe_unused]] const auto written = ::write(g_signalFds[0], &byte, 1);
+}
+
+class StopSignals
+{
+public:
+    explicit StopSignals(const std::function<void()> &onStop)
+    {
+        if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalFds) != 0)
+            return;
+        m_notifier = std::make_unique<QSocketNotifier>(g_signalFds[1], QSocketNotifier::Read);
+        QObject::connect(m_notifier.get(), &QSocketNotifier::activated, m_notifier.get(), [onStop] {
+            char byte = 0;
+            [[maybe_unused]] const auto got = ::read(g_signalFds[1], &byte, 1);
+            onStop();
+        });
+        struct sigaction action = {};
+        action.sa_handler = onStopSignal;
+        sigemptyset(&action.sa_mask);
+        action.sa_flags = SA_RESTART;
+        ::sigaction(SIGINT, &action, &m_oldInt);
+        ::sigaction(SIGTERM, &action, &m_oldTerm);
+    }
+    ~StopSignals()
+    {
+        if (g_signalFds[0] < 0)
+            return;
+        ::sigaction(SIGINT, &m_oldInt, nullptr);
+        ::sigaction(SIGTERM, &m_oldTerm, nullptr);
+        m_notifier.reset();
+        ::close(g_signalFds[0]);
+        ::close(g_signalFds[1]);
+        g_signalFds[0] = g_signalFds[1] = -1;
+    }
+    StopSignals(const StopSignals &) = delete;
+    StopSignals &operator=(const StopSignals &) = delete;
+
+private:
+    std::unique_ptr<QSocketNotifier> m_notifier;
+    struct sigaction m_oldInt = {};
+    struct sigaction m_oldTerm = {};
+};
+
+// "60s", "500ms", "2m", "1h", "1.5s"; a bare number is seconds. -1 when unreadable.
+qint64 parseDurationMs(const QString &text)
+{
+    static const QRegularExpression re(QStringLiteral("^\\s*(\\d+(?:\\.\\d+)?)\\s*(ms|s|m|min|h)?\\s*$"));
+    const QRegularExpressionMatch m = re.match(text);
+    if (!m.hasMatch())
+        return -1;
+    const double value = m.captured(1).toDouble();
+    const QString unit = m.captured(2);
+    double factor = 1000;
+    if (unit == QLatin1String("ms"))
+        factor = 1;
+    else if (unit == QLatin1String("m") || unit == QLatin1String("min"))
+        factor = 60000;
+    else if (unit == QLatin1String("h"))
+        factor = 3600000;
+    return qint64(value * factor);
+}
+
+void listProfiles(QTextStream &out)
+{
+    const QList<ShippedProfile> profiles = ProfileLoader::shippedProfiles();
+    for (const ShippedProfile &p : profiles)
+        out << p.name << "\n    " << p.description << "\n";
+    if (profiles.isEmpty())
+        out << "(no profiles are compiled into this executable)\n";
+}
+
+QString knownProfileNames()
+{
+    QStringList names;
+    for (const ShippedProfile &p : ProfileLoader::shippedProfiles())
+        names << p.name;
+    return names.join(QStringLiteral(", "));
+}
+
+} // namespace
+
+int runSimulate(const QStringList &arguments)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Serves a device profile as a Modbus server until Ctrl-C (or --duration), printing one line per request "
+        "(or a summary every 10 s with --quiet) and a summary at the end.\n"
+        "Profiles: a shipped one by name (see --list-profiles) or a JSON file (docs/profiles.md).\n"
+        "Exit status: 0 after a clean stop, 2 for unusable options (unknown profile, bad URL, port in use, bad faults file)."));
+    parser.addHelpOption();
+    const QCommandLineOption profileOption(QStringLiteral("profile"), QStringLiteral("Profile name or JSON file."),
+                                           QStringLiteral("NAME|FILE"));
+    const QCommandLineOption listenOption(QStringLiteral("listen"),
+                                          QStringLiteral("Listen URL (repeatable; default: the profile's endpoints), "
+                                                         "e.g. tcp://127.0.0.1:1502, rtu-tcp://127.0.0.1:0 (port 0: any free port), "
+                                                         "rtu:///dev/pts/5?baud=9600&parity=N."),
+                                          QStringLiteral("URL"));
+    const QCommandLineOption faultsOption(QStringLiteral("faults"),
+                                          QStringLiteral("Fault rules file ({\"seed\": N, \"rules\": [...]}); replaces the profile's rules."),
+                                          QStringLiteral("FILE"));
+    const QCommandLineOption logOption(QStringLiteral("log"),
+                                       QStringLiteral("Write every frame as a JSON line (t, direction, endpoint, peer, unit, hex, verdict)."),
+                                       QStringLiteral("FILE"));
+    const QCommandLineOption durationOption(QStringLiteral("duration"),
+                                            QStringLiteral("Stop after this long (60s, 500ms, 2m, 1h)."), QStringLiteral("TIME"));
+    const QCommandLineOption quietOption(QStringLiteral("quiet"), QStringLiteral("A summary every 10 s instead of one line per request."));
+    const QCommandLineOption seedOption(QStringLiteral("seed"),
+                                        QStringLiteral("Seed of the value generators and fault rules (default: the profile's and faults file's)."),
+                                        QStringLiteral("N"));
+    const QCommandLineOption listOption(QStringLiteral("list-profiles"), QStringLiteral("List the shipped profiles and exit."));
+    parser.addOptions({profileOption, listenOption, faultsOption, logOption, durationOption, quietOption, seedOption, listOption});
+    if (!parser.parse(arguments)) {
+        err << "mbscope simulate: " << parser.errorText() << '\n';
+        return kExitUsage;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << parser.helpText();
+        return kExitOk;
+    }
+    if (parser.isSet(listOption)) {
+        listProfiles(out);
+        return kExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty()) {
+        err << "mbscope simulate: unexpected argument '" << parser.positionalArguments().first() << "'\n";
+        return kExitUsage;
+    }
+    if (!parser.isSet(profileOption)) {
+        err << "mbscope simulate: --profile NAME|FILE is required; shipped profiles: " << knownProfileNames() << '\n';
+        return kExitUsage;
+    }
+
+    qint64 durationMs = 0;
+    if (parser.isSet(durationOption)) {
+        durationMs = parseDurationMs(parser.value(durationOption));
+        if (durationMs <= 0) {
+            err << "mbscope simulate: --duration '" << parser.value(durationOption)
+                << "' is not a duration (expected e.g. 60s, 500ms, 2m, 1h)\n";
+            return kExitUsage;
+        }
+    }
+    std::optional<quint64> seed;
+    if (parser.isSet(seedOption)) {
+        bool ok = false;
+        seed = parser.value(seedOption).toULongLong(&ok, 0);
+        if (!ok) {
+            err << "mbscope simulate: --seed '" << parser.value(seedOption) << "' is not a number\n";
+            return kExitUsage;
+        }
+    }
+
+    const QString profileName = parser.value(profileOption);
+    if (!ProfileLoader::isPath(profileName)) {
+        bool known = false;
+        for (const ShippedProfile &p : ProfileLoader::shippedProfiles())
+            known = known || p.name == profileName;
+        if (!known) {
+            err << "mbscope simulate: unknown profile '" << profileName << "'; shipped profiles: " << knownProfileNames()
+                << " (or give a JSON file's path)\n";
+            return kExitUsage;
+        }
+    }
+    ProfileLoadResult loaded = ProfileLoader::load(profileName);
+    if (!loaded.ok) {
+        err << "mbscope simulate: profile '" << profileName << "':\n" << loaded.errorText() << '\n';
+        return kExitUsage;
+    }
+    DeviceProfile profile = loaded.profile;
+    std::optional<FaultRuleSet> faults;
+    if (parser.isSet(faultsOption)) {
+        FaultRulesLoadResult rules = ProfileLoader::loadFaults(parser.value(faultsOption));
+        if (!rules.ok) {
+            err << "mbscope simulate: faults file '" << parser.value(faultsOption) << "':\n" << rules.errorText() << '\n';
+            return kExitUsage;
+        }
+        faults = rules.rules;
+    }
+    if (seed) {
+        profile.seed = *seed;
+        profile.faults.seed = *seed;
+        if (faults)
+            faults->seed = *seed;
+    }
+    const QStringList urls = parser.isSet(listenOption) ? parser.values(listenOption) : profile.endpoints;
+    if (urls.isEmpty()) {
+        err << "mbscope simulate: profile '" << profile.name << "' names no endpoint: give one with --listen URL\n";
+        return kExitUsage;
+    }
+
+    SimulateSession::Options options;
+    options.quiet = parser.isSet(quietOption);
+    SimulateSession session(out, options);
+    QString error;
+    if (!session.load(profile, faults, &error)) {
+        err << "mbscope simulate: profile '" << profile.name << "': " << error << '\n';
+        return kExitUsage;
+    }
+    if (parser.isSet(logOption) && !session.openLog(parser.value(logOption), &error)) {
+        err << "mbscope simulate: " << error << '\n';
+        return kExitUsage;
+    }
+    if (!session.listen(urls, &error)) {
+        err << "mbscope simulate: " << error << '\n';
+        return kExitUsage;
+    }
+
+    out << "simulating " << profile.name << " (" << profile.source << ", seed " << profile.seed << ")\n";
+    for (const QString &line : session.endpointDescriptions())
+        out << "listening " << line << '\n';
+    out.flush();
+
+    QEventLoop loop;
+    bool interrupted = false;
+    StopSignals stopSignals([&] {
+        interrupted = true;
+        loop.quit();
+    });
+    if (durationMs > 0)
+        QTimer::singleShot(std::chrono::milliseconds(durationMs), &loop, &QEventLoop::quit);
+    session.start();
+    loop.exec();
+    session.stop();
+    out << (interrupted ? "interrupted: " : "stopped: ") << session.summary() << Qt::endl;
+    return kExitOk;
+}
+
+} // namespace mbscope::app

@@ -1,0 +1,345 @@
+#include "simulatesession.h"
+
+#include "protocol/adubuilder.h"
+#include "protocol/functioncode.h"
+#include "sim/profileapplier.h"
+#include "sim/simendpoint.h"
+#include "sim/simexchange.h"
+#include "sim/simunit.h"
+#include "transport/monotonicclock.h"
+
+#include <QtCore/QDateTime>
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
+#include <QtCore/QRegularExpression>
+#include <QtCore/QTextStream>
+
+#include <memory>
+
+namespace mbscope::app {
+
+namespace {
+
+QString hexOf(const QByteArray &bytes)
+{
+    return QString::fromLatin1(bytes.toHex(' ').toUpper());
+}
+
+QString joinIds(const QList<quint8> &ids)
+{
+    QStringList parts;
+    for (quint8 id : ids)
+        parts << QString::number(id);
+    return parts.join(QStringLiteral(", "));
+}
+
+bool isRequest(SimLogEntry::Verdict v)
+{
+    using V = SimLogEntry::Verdict;
+    return v == V::Answered || v == V::Exception || v == V::NoAnswer || v == V::UnknownUnit
+           || v == V::ChecksumError || v == V::Malformed;
+}
+
+} // namespace
+
+SimulateSession::SimulateSession(QTextStream &out, const Options &options, QObject *parent)
+    : QObject(parent), m_out(out), m_options(options)
+{
+    connect(&m_sim, &Simulator::logged, this, &SimulateSession::onLogged);
+    m_sim.setFaultHook([this](const SimExchange &exchange) { return onExchange(exchange); });
+    connect(&m_summaryTimer, &QTimer::timeout, this, [this] {
+        m_out << QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")) << "  " << summary() << Qt::endl;
+    });
+}
+
+SimulateSession::~SimulateSession()
+{
+    stop();
+    m_sim.setFaultHook({});
+}
+
+bool SimulateSession::load(const DeviceProfile &profile, const std::optional<FaultRuleSet> &faults, QString *error)
+{
+    const QList<SimUnit *> units = ProfileApplier::createUnits(profile, nullptr, error);
+    if (units.isEmpty() && !profile.units.isEmpty())
+        return false;
+    for (SimUnit *unit : units) {
+        const quint8 id = unit->id();
+        SimUnit *adopted = m_sim.adoptUnit(std::unique_ptr<SimUnit>(unit));
+        if (!adopted) {
+            *error = QStringLiteral("unit %1: the id is taken or invalid").arg(id);
+            return false;
+        }
+        m_units.append(adopted);
+    }
+    ProfileApplier::configure(&m_injector, profile);
+    if (faults)
+        m_injector.setRules(*faults);
+    m_driver.attach(profile, m_units);
+    return true;
+}
+
+bool SimulateSession::listen(const QStringList &urls, QString *error)
+{
+    for (const QString &url : urls) {
+        QString why;
+        SimEndpoint *endpoint = m_sim.listen(url, {}, &why);
+        if (!endpoint) {
+            *error = why.isEmpty() ? url + QStringLiteral(": cannot listen") : why;
+            if (why.contains(QLatin1String("in use"), Qt::CaseInsensitive))
+                *error += QStringLiteral("\n(another program serves that port: choose another with --listen, e.g. --listen %1)")
+                              .arg(QString(url).replace(QRegularExpression(QStringLiteral(":(\\d+)(?=[/?]|$)")),
+                                                        QStringLiteral(":0")));
+            return false;
+        }
+        m_framings.insert(endpoint->name(), endpoint->framing());
+    }
+    return true;
+}
+
+bool SimulateSession::openLog(const QString &path, QString *error)
+{
+    m_log.setFileName(path);
+    if (!m_log.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
+        *error = QStringLiteral("cannot write the log '%1': %2").arg(path, m_log.errorString());
+        return false;
+    }
+    return true;
+}
+
+void SimulateSession::start()
+{
+    m_startNs = monotonicNowNs();
+    m_elapsed.start();
+    m_driver.start();
+    if (m_options.quiet && m_options.summaryIntervalMs > 0)
+        m_summaryTimer.start(m_options.summaryIntervalMs);
+}
+
+void SimulateSession::stop()
+{
+    m_summaryTimer.stop();
+    m_driver.stop();
+    if (m_pending) {
+        const SimLogEntry entry = *m_pending;
+        m_pending.reset();
+        finish(entry, nullptr);
+    }
+    m_sim.closeAll();
+    if (m_log.isOpen())
+        m_log.close();
+}
+
+QStringList SimulateSession::endpointDescriptions() const
+{
+    QStringList lines;
+    for (SimEndpoint *endpoint : m_sim.endpoints()) {
+        const QList<quint8> ids = endpoint->options().units.isEmpty() ? m_sim.unitIds() : endpoint->options().units;
+        lines << QStringLiteral("%1 (unit%2 %3)").arg(endpoint->name(), ids.size() == 1 ? QString() : QStringLiteral("s"),
+                                                     joinIds(ids));
+    }
+    return lines;
+}
+
+QString SimulateSession::summary() const
+{
+    const double seconds = m_elapsed.isValid() ? double(m_elapsed.elapsed()) / 1000.0 : 0.0;
+    int open = 0;
+    for (SimEndpoint *endpoint : m_sim.endpoints())
+        open += endpoint->connectionCount();
+    const Counts &c = m_counts;
+    return QStringLiteral("%1 requests in %2 s (%3/s): %4 answered, %5 exceptions, %6 unknown unit, %7 without answer, "
+                          "%8 dropped by fault, %9 changed by faults, %10 malformed; %11 connections (%12 open, %13 refused)")
+        .arg(c.requests)
+        .arg(seconds, 0, 'f', 1)
+        .arg(seconds > 0 ? double(c.requests) / seconds : 0.0, 0, 'f', 0)
+        .arg(c.answered)
+        .arg(c.exceptions)
+        .arg(c.unknownUnit)
+        .arg(c.noAnswer)
+        .arg(c.droppedByFault)
+        .arg(c.faulted)
+        .arg(c.malformed)
+        .arg(c.connections)
+        .arg(open)
+        .arg(c.refused);
+}
+
+void SimulateSession::onLogged(const SimLogEntry &entry)
+{
+    if (m_pending) {
+        // The hook did not run for the previous answer (it always does today): report it as built.
+        const SimLogEntry previous = *m_pending;
+        m_pending.reset();
+        finish(previous, nullptr);
+    }
+    if (!entry.response.isEmpty()) {
+        m_pending = entry; // the fault hook runs next and says what is sent
+        return;
+    }
+    finish(entry, nullptr);
+}
+
+FaultPlan SimulateSession::onExchange(const SimExchange &exchange)
+{
+    const FaultContext context = FaultContext::forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu,
+                                                          exchange.responseDelayNs);
+    const FaultPlan plan = m_injector.plan(context);
+    if (m_pending) {
+        const SimLogEntry entry = *m_pending;
+        m_pending.reset();
+        finish(entry, &plan);
+    }
+    return plan;
+}
+
+void SimulateSession::finish(const SimLogEntry &entry, const FaultPlan *plan)
+{
+    count(entry, plan);
+    if (!m_options.quiet)
+        printLine(entry, plan);
+    if (m_log.isOpen())
+        writeLog(entry, plan);
+}
+
+void SimulateSession::count(const SimLogEntry &entry, const FaultPlan *plan)
+{
+    using V = SimLogEntry::Verdict;
+    Counts &c = m_counts;
+    if (isRequest(entry.verdict))
+        ++c.requests;
+    const bool dropped = plan && (plan->drop || plan->closeBefore);
+    if (dropped) {
+        ++c.droppedByFault;
+        return;
+    }
+    if (plan && !plan->faults.isEmpty())
+        ++c.faulted;
+    switch (entry.verdict) {
+    case V::Answered: ++c.answered; break;
+    case V::Exception: ++c.exceptions; break;
+    case V::NoAnswer: ++c.noAnswer; break;
+    case V::UnknownUnit: ++c.unknownUnit; break;
+    case V::ChecksumError:
+    case V::Malformed:
+    case V::Garbage: ++c.malformed; break;
+    case V::ConnectionOpened: ++c.connections; break;
+    case V::ConnectionRefused: ++c.refused; break;
+    case V::ConnectionClosed: break;
+    }
+}
+
+Framing SimulateSession::framingOf(const QString &endpoint) const
+{
+    return m_framings.value(endpoint, Framing::Tcp);
+}
+
+double SimulateSession::secondsSinceStart(qint64 ns) const
+{
+    return double(ns - m_startNs) / 1e9;
+}
+
+QString SimulateSession::verdictText(const SimLogEntry &entry, const FaultPlan *plan) const
+{
+    using V = SimLogEntry::Verdict;
+    const QString faults = plan ? plan->faults.join(QStringLiteral(", ")) : QString();
+    if (plan && (plan->drop || plan->closeBefore))
+        return QStringLiteral("dropped by fault (%1)%2").arg(faults, plan->closeBefore ? QStringLiteral(": connection closed") : QString());
+    QString text;
+    switch (entry.verdict) {
+    case V::Answered: text = QStringLiteral("answered"); break;
+    case V::Exception: {
+        const AduParts response = AduBuilder::parse(entry.response, framingOf(entry.endpoint));
+        const quint8 code = response.pdu.size() >= 2 ? quint8(response.pdu.at(1)) : 0;
+        text = QStringLiteral("exception %1 %2").arg(code, 2, 16, QLatin1Char('0')).arg(QLatin1String(exceptionName(code)));
+        break;
+    }
+    case V::NoAnswer: text = QStringLiteral("no answer (%1)").arg(entry.reason); break;
+    case V::UnknownUnit: text = QStringLiteral("unknown unit: %1").arg(entry.reason); break;
+    case V::ChecksumError:
+    case V::Malformed: text = QStringLiteral("malformed: %1").arg(entry.reason); break;
+    case V::Garbage: text = QStringLiteral("garbage: %1").arg(entry.reason); break;
+    case V::ConnectionOpened: text = QStringLiteral("connection opened"); break;
+    case V::ConnectionRefused: text = QStringLiteral("connection refused: %1").arg(entry.reason); break;
+    case V::ConnectionClosed: text = QStringLiteral("connection closed (%1)").arg(entry.reason); break;
+    }
+    if (!faults.isEmpty())
+        text += QStringLiteral(", changed by fault (%1)").arg(faults);
+    return text;
+}
+
+QString SimulateSession::logVerdict(const SimLogEntry &entry, const FaultPlan *plan) const
+{
+    if (plan && (plan->drop || plan->closeBefore))
+        return QStringLiteral("dropped_by_fault");
+    return QLatin1String(SimLogEntry::verdictName(entry.verdict));
+}
+
+void SimulateSession::printLine(const SimLogEntry &entry, const FaultPlan *plan)
+{
+    const QString time = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss.zzz"));
+    QString what;
+    if (isRequest(entry.verdict) && !entry.request.isEmpty()) {
+        const AduParts request = AduBuilder::parse(entry.request, framingOf(entry.endpoint));
+        if (!request.pdu.isEmpty()) {
+            const quint8 function = quint8(request.pdu.at(0));
+            what = QStringLiteral("%1 %2").arg(function, 2, 16, QLatin1Char('0')).arg(QLatin1String(functionName(function)));
+        }
+    }
+    m_out << time << "  " << entry.endpoint << "  " << entry.peer;
+    if (entry.unitId >= 0)
+        m_out << "  unit " << entry.unitId;
+    if (!what.isEmpty())
+        m_out << "  " << what;
+    m_out << "  " << verdictText(entry, plan) << Qt::endl;
+}
+
+void SimulateSession::writeLog(const SimLogEntry &entry, const FaultPlan *plan)
+{
+    if (entry.request.isEmpty() && entry.response.isEmpty())
+        return; // connection events are not frames
+    const QString verdict = logVerdict(entry, plan);
+    auto write = [this](const QJsonObject &object) {
+        m_log.write(QJsonDocument(object).toJson(QJsonDocument::Compact));
+        m_log.write("\n");
+    };
+    QJsonObject in;
+    in[QStringLiteral("t")] = secondsSinceStart(entry.tNs);
+    in[QStringLiteral("direction")] = QStringLiteral("in");
+    in[QStringLiteral("endpoint")] = entry.endpoint;
+    in[QStringLiteral("peer")] = entry.peer;
+    if (entry.unitId >= 0)
+        in[QStringLiteral("unit")] = entry.unitId;
+    in[QStringLiteral("hex")] = hexOf(entry.request);
+    in[QStringLiteral("verdict")] = verdict;
+    if (!entry.reason.isEmpty())
+        in[QStringLiteral("reason")] = entry.reason;
+    write(in);
+    if (entry.response.isEmpty() || (plan && (plan->drop || plan->closeBefore)))
+        return;
+    // What leaves: the plan's bytes (the answer as the faults changed it), at the planned time.
+    QByteArray sent = entry.response;
+    qint64 delayNs = 0;
+    if (plan) {
+        sent.clear();
+        for (const ResponseChunk &chunk : plan->chunks) {
+            sent += chunk.bytes;
+            delayNs += chunk.delayNs;
+        }
+    }
+    QJsonObject out;
+    out[QStringLiteral("t")] = secondsSinceStart(entry.tNs + delayNs);
+    out[QStringLiteral("direction")] = QStringLiteral("out");
+    out[QStringLiteral("endpoint")] = entry.endpoint;
+    out[QStringLiteral("peer")] = entry.peer;
+    if (entry.unitId >= 0)
+        out[QStringLiteral("unit")] = entry.unitId;
+    out[QStringLiteral("hex")] = hexOf(sent);
+    out[QStringLiteral("verdict")] = verdict;
+    if (plan && !plan->faults.isEmpty())
+        out[QStringLiteral("faults")] = QJsonArray::fromStringList(plan->faults);
+    write(out);
+}
+
+} // namespace mbscope::app

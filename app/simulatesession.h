@@ -1,0 +1,96 @@
+#pragma once
+
+#include "sim/deviceprofile.h"
+#include "sim/faultinjector.h"
+#include "sim/faultplan.h"
+#include "sim/generatordriver.h"
+#include "sim/simlogentry.h"
+#include "sim/simulator.h"
+
+#include <QtCore/QElapsedTimer>
+#include <QtCore/QFile>
+#include <QtCore/QHash>
+#include <QtCore/QObject>
+#include <QtCore/QStringList>
+#include <QtCore/QTimer>
+
+#include <optional>
+
+class QTextStream;
+
+namespace mbscope::app {
+
+// What `mbscope simulate` runs: a Simulator with a profile's units and generators, a
+// FaultInjector as its fault hook, and the observers that print one line per request (or a
+// periodic summary) and write the JSON-lines traffic log.
+//
+// The Simulator reports a request (logged) before its fault hook decides what is sent, so an
+// answered request is held until the hook has spoken: then its line says "dropped by fault" or
+// which faults changed the answer.
+class SimulateSession : public QObject
+{
+    Q_OBJECT
+public:
+    struct Options {
+        bool quiet = false;
+        int summaryIntervalMs = 10000; // --quiet: one summary line this often
+    };
+
+    SimulateSession(QTextStream &out, const Options &options, QObject *parent = nullptr);
+    ~SimulateSession() override;
+
+    // Units, generators, response delays and fault rules of the profile (the faults given
+    // replace the profile's when set). False with *error set.
+    bool load(const DeviceProfile &profile, const std::optional<FaultRuleSet> &faults, QString *error);
+    // Binds every URL; false with *error naming the URL at fault (and what to do about it).
+    bool listen(const QStringList &urls, QString *error);
+    bool openLog(const QString &path, QString *error);
+    void start();
+    void stop();
+
+    // "rtu-tcp://127.0.0.1:4001 (units 1, 3)" per endpoint, as bound.
+    [[nodiscard]] QStringList endpointDescriptions() const;
+    [[nodiscard]] QString summary() const;
+    [[nodiscard]] Simulator &simulator() { return m_sim; }
+
+private:
+    struct Counts {
+        quint64 requests = 0;
+        quint64 answered = 0;
+        quint64 exceptions = 0;
+        quint64 noAnswer = 0;
+        quint64 unknownUnit = 0;
+        quint64 droppedByFault = 0;
+        quint64 faulted = 0; // answered, but changed by a fault (delay, junk, wrong CRC...)
+        quint64 malformed = 0;
+        quint64 connections = 0;
+        quint64 refused = 0;
+    };
+
+    void onLogged(const SimLogEntry &entry);
+    FaultPlan onExchange(const SimExchange &exchange);
+    void finish(const SimLogEntry &entry, const FaultPlan *plan);
+    void count(const SimLogEntry &entry, const FaultPlan *plan);
+    void printLine(const SimLogEntry &entry, const FaultPlan *plan);
+    void writeLog(const SimLogEntry &entry, const FaultPlan *plan);
+    [[nodiscard]] QString verdictText(const SimLogEntry &entry, const FaultPlan *plan) const;
+    [[nodiscard]] QString logVerdict(const SimLogEntry &entry, const FaultPlan *plan) const;
+    [[nodiscard]] Framing framingOf(const QString &endpoint) const;
+    [[nodiscard]] double secondsSinceStart(qint64 ns) const;
+
+    QTextStream &m_out;
+    Options m_options;
+    Simulator m_sim;
+    FaultInjector m_injector;
+    GeneratorDriver m_driver;
+    QList<SimUnit *> m_units;
+    std::optional<SimLogEntry> m_pending;
+    QHash<QString, Framing> m_framings;
+    QFile m_log;
+    QTimer m_summaryTimer;
+    QElapsedTimer m_elapsed;
+    qint64 m_startNs = 0;
+    Counts m_counts;
+};
+
+} // namespace mbscope::app
