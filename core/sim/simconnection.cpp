@@ -43,6 +43,8 @@ SimConnection::SimConnection(Simulator *simulator, SimEndpoint *endpoint, QTcpSo
     , m_peer(peerOf(socket))
 {
     socket->setParent(this);
+    // Answers are small and must leave at once, not wait for Nagle's algorithm to gather more.
+    socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
     m_idle.setSingleShot(true);
     m_silence.setSingleShot(true);
     connect(socket, &QTcpSocket::readyRead, this, &SimConnection::onReadyRead);
