@@ -71,7 +71,8 @@ int missing(const PduContext &ctx, int parent, int pduOffset, int pduSize, bool 
     const int f = ctx.addChild(parent, kMissingKey, kMissingName, from, have, 0,
                                have > 0 ? ValueFormat::Bytes : ValueFormat::None);
     ctx.tree.flag(f, Severity::Error,
-                  QStringLiteral("missing: %1; %2").arg(QLatin1String(what), moreBytes(qMax(1, pduSize - ctx.length), atLeast)));
+                  QStringLiteral("missing: %1; %2")
+                      .arg(QLatin1String(what), moreBytes(qMax(1, pduSize - ctx.length), atLeast)));
     return f;
 }
 
@@ -85,7 +86,8 @@ int missingData(const PduContext &ctx, int parent, int from, int countStart, int
                                have > 0 ? ValueFormat::Bytes : ValueFormat::None);
     ctx.tree.flag(f, Severity::Error,
                   QStringLiteral("missing: %1 %2 announces %3 but only %4 present; %5")
-                      .arg(QLatin1String(counter), QString::number(announced), amount(announced, "data byte", "data bytes"),
+                      .arg(QLatin1String(counter), QString::number(announced),
+                           amount(announced, "data byte", "data bytes"),
                            present == 1 ? QStringLiteral("1 is") : QString::number(present) + QStringLiteral(" are"),
                            moreBytes(countEnd - ctx.length, false)));
     return f;
@@ -113,12 +115,28 @@ int countedFields(const PduContext &ctx, const Slot *layout, int count, int *ind
     const int byteCount = ctx.byte(1);
     if (byteCount < fixed) {
         ctx.tree.flag(indexes[0], Severity::Error,
-                      QStringLiteral("byte count %1 is too small: %2").arg(QString::number(byteCount), QLatin1String(tooSmall)));
+                      QStringLiteral("byte count %1 is too small: %2")
+                          .arg(QString::number(byteCount), QLatin1String(tooSmall)));
     }
     const int end = 2 + qMax(byteCount, fixed);
     if (!addFixed(ctx, ctx.parent, 2, layout + 1, count - 1, indexes + 1, end, byteCount < fixed))
         return -1;
     return end;
+}
+
+bool serialLineResponse(const PduContext &ctx, const QString &note)
+{
+    ctx.tree.flag(functionField(ctx), Severity::Info, note);
+    if (isResponse(ctx))
+        return true;
+    trailing(ctx, 1);
+    return false;
+}
+
+void rawData(const PduContext &ctx, int pduOffset, const char *key)
+{
+    if (ctx.length > pduOffset)
+        ctx.add(key, "Data", pduOffset, ctx.length - pduOffset, 0, ValueFormat::Bytes);
 }
 
 void countedEnd(const PduContext &ctx, int end)

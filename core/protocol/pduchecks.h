@@ -52,6 +52,15 @@ int countedFields(const PduContext &ctx, const Slot *layout, int count, int *ind
 // After the data of countedFields: the missing field when the PDU ends before end, then trailing.
 void countedEnd(const PduContext &ctx, int end);
 
+// 07, 0B, 0C and 11 (V1.1b3 6.7, 6.9, 6.10, 6.13) are serial line only: notes that on the
+// function code (note is a literal, so nothing allocates). Their requests carry no data: for a
+// request, flags any bytes after the function code and returns false; for a response, true.
+bool serialLineResponse(const PduContext &ctx, const QString &note);
+
+// Shows the bytes from pduOffset to the end of the PDU raw, as key (codes whose data the
+// specification leaves open, reserved sub-functions and MEI types).
+void rawData(const PduContext &ctx, int pduOffset, const char *key = "modbus.data");
+
 // The function code field: the dispatch (pdu::dissect) adds it just before calling a family's
 // dissector.
 [[nodiscard]] inline int functionField(const PduContext &ctx) { return ctx.tree.size() - 1; }

@@ -94,12 +94,6 @@ constexpr EventTexts kEventTexts = makeEventTexts();
     return (v & 0xC0) != 0 || v == 0x00 || v == 0x04;
 }
 
-// The note is a literal (static data, no allocation): these frames are usually fine.
-void noteSerialLineOnly(const PduContext &ctx, const QString &note)
-{
-    ctx.tree.flag(functionField(ctx), Severity::Info, note);
-}
-
 // The status field s (V1.1b3 6.9), when present.
 void checkStatus(const PduContext &ctx, int s, int pduOffset)
 {
@@ -121,12 +115,9 @@ void checkStatus(const PduContext &ctx, int s, int pduOffset)
 
 void dissectReadExceptionStatus(const PduContext &ctx)
 {
-    noteSerialLineOnly(ctx,
-                       QStringLiteral("serial line only: V1.1b3 6.7 defines Read Exception Status for serial line devices"));
-    if (!isResponse(ctx)) {
-        trailing(ctx, 1);
+    if (!serialLineResponse(
+            ctx, QStringLiteral("serial line only: V1.1b3 6.7 defines Read Exception Status for serial line devices")))
         return;
-    }
     static const Slot layout[] = {
         {"modbus.exception_status", "Exception status", 1, ValueFormat::Hex, "exception status"},
     };
@@ -146,12 +137,9 @@ void dissectReadExceptionStatus(const PduContext &ctx)
 
 void dissectCommEventCounter(const PduContext &ctx)
 {
-    noteSerialLineOnly(ctx,
-                       QStringLiteral("serial line only: V1.1b3 6.9 defines Get Comm Event Counter for serial line devices"));
-    if (!isResponse(ctx)) {
-        trailing(ctx, 1);
+    if (!serialLineResponse(
+            ctx, QStringLiteral("serial line only: V1.1b3 6.9 defines Get Comm Event Counter for serial line devices")))
         return;
-    }
     static const Slot layout[] = {
         {"modbus.status", "Status", 2, ValueFormat::Hex, "status and event count"},
         {"modbus.event_count", "Event count", 2, ValueFormat::Decimal, "event count"},
@@ -165,12 +153,9 @@ void dissectCommEventCounter(const PduContext &ctx)
 
 void dissectCommEventLog(const PduContext &ctx)
 {
-    noteSerialLineOnly(ctx,
-                       QStringLiteral("serial line only: V1.1b3 6.10 defines Get Comm Event Log for serial line devices"));
-    if (!isResponse(ctx)) {
-        trailing(ctx, 1);
+    if (!serialLineResponse(
+            ctx, QStringLiteral("serial line only: V1.1b3 6.10 defines Get Comm Event Log for serial line devices")))
         return;
-    }
     // Byte count = 6 (status, event count, message count) + one byte per event, 0-64 events.
     static const Slot layout[] = {
         {"modbus.byte_count", "Byte count", 1, ValueFormat::Decimal,

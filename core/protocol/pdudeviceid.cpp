@@ -290,8 +290,7 @@ void dissectEncapsulatedInterface(const PduContext &ctx)
                       QStringLiteral("reserved MEI type %1: V1.1b3 defines 0x0D (CANopen) and 0x0E (device "
                                      "identification); the data is shown raw").arg(hexByte(mei)));
     }
-    if (ctx.length > 2)
-        ctx.add("modbus.data", "Data", 2, ctx.length - 2, 0, ValueFormat::Bytes);
+    rawData(ctx, 2);
 }
 
 } // namespace mbscope::pdu

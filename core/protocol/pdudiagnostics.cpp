@@ -285,8 +285,7 @@ void dissectDiagnostics(const PduContext &ctx)
     ctx.tree.flag(s, Severity::Warning,
                   QStringLiteral("reserved sub-function %1: V1.1b3 6.8.1 defines 0x0000-0x0004, 0x000A-0x0012 and 0x0014; "
                                  "its data is shown raw").arg(hexWord(code)));
-    if (ctx.length > 3)
-        ctx.add("modbus.diagnostic_data", "Data", 3, ctx.length - 3, 0, ValueFormat::Bytes);
+    rawData(ctx, 3, "modbus.diagnostic_data");
 }
 
 } // namespace mbscope::pdu

@@ -121,8 +121,7 @@ void dissect(const PduContext &ctx)
 
 void dissectRawData(const PduContext &ctx)
 {
-    if (ctx.length > 1)
-        ctx.add("modbus.data", "Data", 1, ctx.length - 1, 0, ValueFormat::Bytes);
+    checks::rawData(ctx, 1);
 }
 
 // An exception response (V1.1b3, 7): the function code with bit 7 set, then one exception code.

@@ -17,12 +17,9 @@ using namespace checks;
 
 void dissectReportServerId(const PduContext &ctx)
 {
-    ctx.tree.flag(functionField(ctx), Severity::Info,
-                  QStringLiteral("serial line only: V1.1b3 6.13 defines Report Server ID for serial line devices"));
-    if (!isResponse(ctx)) {
-        trailing(ctx, 1);
+    if (!serialLineResponse(
+            ctx, QStringLiteral("serial line only: V1.1b3 6.13 defines Report Server ID for serial line devices")))
         return;
-    }
     static const Slot layout[] = {
         {"modbus.byte_count", "Byte count", 1, ValueFormat::Decimal, "byte count, server ID and run indicator status"},
         {"modbus.server_id", "Server ID", 1, ValueFormat::Bytes, "server ID and run indicator status"},

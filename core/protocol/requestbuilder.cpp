@@ -11,6 +11,20 @@ namespace {
 // V1.1b3, 6.14/6.15: a file holds 10000 records, numbered 0-9999 (0x0000-0x270F).
 constexpr int RecordsPerFile = 10000;
 
+// Start address and quantity of a write of values (0F, 10: V1.1b3 6.11, 6.12), checked and, when
+// all is well, appended; the span is checked only for a quantity within its limits.
+bool writeHeader(PduBuilder &b, int startAddress, qint64 quantity, int maxQuantity, const char *unit)
+{
+    b.checkAddress(QStringLiteral("startAddress"), QStringLiteral("start address"), startAddress);
+    if (b.checkQuantity(QStringLiteral("values"), QStringLiteral("quantity"), quantity, maxQuantity, "writes", unit))
+        b.checkSpan(QStringLiteral("values"), QStringLiteral("start address"), startAddress, quantity);
+    if (b.hasErrors())
+        return false;
+    b.appendU16(startAddress);
+    b.appendU16(int(quantity));
+    return true;
+}
+
 QString indexed(const char *list, qsizetype index, const char *member)
 {
     return QStringLiteral("%1[%2].%3").arg(QLatin1String(list)).arg(index).arg(QLatin1String(member));
@@ -100,30 +114,16 @@ BuildResult RequestBuilder::writeSingleRegister(int address, int value)
 BuildResult RequestBuilder::writeMultipleCoils(int startAddress, const QList<bool> &values)
 {
     PduBuilder b(0x0F);
-    const qint64 quantity = values.size();
-    b.checkAddress(QStringLiteral("startAddress"), QStringLiteral("start address"), startAddress);
-    if (b.checkQuantity(QStringLiteral("values"), QStringLiteral("quantity"), quantity, 1968, "writes", "coils"))
-        b.checkSpan(QStringLiteral("values"), QStringLiteral("start address"), startAddress, quantity);
-    if (b.hasErrors())
-        return b.finish();
-    b.appendU16(startAddress);
-    b.appendU16(int(quantity));
-    b.appendBits(values);
+    if (writeHeader(b, startAddress, values.size(), 1968, "coils"))
+        b.appendBits(values);
     return b.finish();
 }
 
 BuildResult RequestBuilder::writeMultipleRegisters(int startAddress, const QList<quint16> &values)
 {
     PduBuilder b(0x10);
-    const qint64 quantity = values.size();
-    b.checkAddress(QStringLiteral("startAddress"), QStringLiteral("start address"), startAddress);
-    if (b.checkQuantity(QStringLiteral("values"), QStringLiteral("quantity"), quantity, 123, "writes", "registers"))
-        b.checkSpan(QStringLiteral("values"), QStringLiteral("start address"), startAddress, quantity);
-    if (b.hasErrors())
-        return b.finish();
-    b.appendU16(startAddress);
-    b.appendU16(int(quantity));
-    b.appendRegisters(values);
+    if (writeHeader(b, startAddress, values.size(), 123, "registers"))
+        b.appendRegisters(values);
     return b.finish();
 }
 
