@@ -1,0 +1,440 @@
+// `mbscope simulate` against real clients: pymodbus (tcp, rtu-tcp), mbpoll (tcp, and rtu on a
+// socat pty), and 50 concurrent TCP clients of 1000 requests each. The command runs as a process
+// (mbscope_simulate_cli: the command alone), on ports the OS chooses (port 0), and is stopped
+// with SIGINT as a user stops it with Ctrl-C.
+#include "peerprocess.h"
+
+#include <QtCore/QElapsedTimer>
+#include <QtCore/QEventLoop>
+#include <QtCore/QFile>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
+#include <QtCore/QProcess>
+#include <QtCore/QRegularExpression>
+#include <QtCore/QStandardPaths>
+#include <QtCore/QTemporaryDir>
+#include <QtCore/QTimer>
+#include <QtNetwork/QTcpServer>
+#include <QtNetwork/QTcpSocket>
+#include <QtTest/QtTest>
+
+#include <csignal>
+#include <memory>
+#include <vector>
+
+using namespace mbscope::testpeers;
+
+namespace {
+
+const QList<int> kPublished = {1050, 0, 0, 0, 250, 1, 1000, 10000, 4, 4, 80, 800, 8000};
+
+struct Run {
+    int exitCode = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+Run runProcess(const QString &program, const QStringList &args, int timeoutMs = 60000)
+{
+    QProcess p;
+    p.start(program, args);
+    Run r;
+    if (!p.waitForStarted(10000)) {
+        r.err = p.errorString().toUtf8();
+        return r;
+    }
+    p.closeWriteChannel();
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished(5000);
+        r.err = "timed out";
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out += p.readAllStandardOutput();
+    r.err += p.readAllStandardError();
+    return r;
+}
+
+// The simulate command as a process: started, its endpoints read from its "listening" lines,
+// stopped with SIGINT (killed by the destructor when a test fails half-way).
+class SimCli
+{
+public:
+    ~SimCli()
+    {
+        if (m_process && m_process->state() != QProcess::NotRunning) {
+            m_process->kill();
+            m_process->waitForFinished(5000);
+        }
+    }
+
+    bool start(const QStringList &args, int endpoints, QString *error)
+    {
+        m_process = std::make_unique<QProcess>();
+        m_process->start(QStringLiteral(MBSCOPE_SIMULATE_CLI), args);
+        if (!m_process->waitForStarted(10000)) {
+            *error = m_process->errorString();
+            return false;
+        }
+        QElapsedTimer timer;
+        timer.start();
+        while (m_listening.size() < endpoints && timer.elapsed() < 20000) {
+            if (m_process->state() == QProcess::NotRunning)
+                break;
+            m_process->waitForReadyRead(200);
+            m_out += m_process->readAllStandardOutput();
+            m_listening.clear();
+            for (const QByteArray &line : m_out.split('\n')) {
+                if (line.startsWith("listening "))
+                    m_listening << QString::fromUtf8(line.mid(10));
+            }
+        }
+        if (m_listening.size() < endpoints) {
+            *error = QStringLiteral("no listening lines; stdout: %1 stderr: %2")
+                         .arg(QString::fromUtf8(m_out), QString::fromUtf8(m_process->readAllStandardError()));
+            return false;
+        }
+        return true;
+    }
+
+    [[nodiscard]] quint16 port(int index) const
+    {
+        static const QRegularExpression re(QStringLiteral(":(\\d+) \\(unit"));
+        return quint16(re.match(m_listening.value(index)).captured(1).toUInt());
+    }
+    [[nodiscard]] const QStringList &listening() const { return m_listening; }
+
+    // SIGINT, as Ctrl-C; the exit code (-1 when it did not stop).
+    int stop()
+    {
+        ::kill(pid_t(m_process->processId()), SIGINT);
+        if (!m_process->waitForFinished(20000))
+            return -1;
+        m_out += m_process->readAllStandardOutput();
+        m_err += m_process->readAllStandardError();
+        return m_process->exitStatus() == QProcess::NormalExit ? m_process->exitCode() : -1;
+    }
+    [[nodiscard]] const QByteArray &output() const { return m_out; }
+    [[nodiscard]] const QByteArray &errors() const { return m_err; }
+
+private:
+    std::unique_ptr<QProcess> m_process;
+    QStringList m_listening;
+    QByteArray m_out;
+    QByteArray m_err;
+};
+
+// mbpoll's "[122]: 	1050" lines, by reference.
+QMap<int, int> mbpollValues(const QByteArray &output)
+{
+    QMap<int, int> values;
+    static const QRegularExpression re(QStringLiteral("^\\[(\\d+)\\]:\\s+(-?\\d+)"));
+    for (const QByteArray &line : output.split('\n')) {
+        const QRegularExpressionMatch m = re.match(QString::fromLatin1(line.trimmed()));
+        if (m.hasMatch())
+            values.insert(m.captured(1).toInt(), m.captured(2).toInt());
+    }
+    return values;
+}
+
+void checkRosraoValues(const QMap<int, int> &values)
+{
+    QCOMPARE(values.size(), 22);
+    for (int i = 0; i < kPublished.size(); ++i)
+        QCOMPARE(values.value(122 + i, -1), kPublished.at(i));
+    for (int i = 14; i < 22; ++i) // 0x0087-0x008E; 0x0086 (index 13) is the live gate count
+        QCOMPARE(values.value(122 + i, -1), 0);
+}
+
+} // namespace
+
+class tst_Simulate : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void listProfiles();
+    void errors_data();
+    void errors();
+    void pymodbus_data();
+    void pymodbus();
+    void mbpollTcp();
+    void mbpollRtu();
+    void durationStopsAndQuietSummarises();
+    void load();
+};
+
+void tst_Simulate::listProfiles()
+{
+    const Run r = runProcess(QStringLiteral(MBSCOPE_SIMULATE_CLI), {QStringLiteral("--list-profiles")});
+    QCOMPARE(r.exitCode, 0);
+    for (const char *name : {"rosrao-gamma", "m221-plc", "arduino-rs485", "conformance"})
+        QVERIFY2(r.out.contains(QByteArray(name) + "\n    "), r.out.constData());
+    QVERIFY(r.out.contains("Geiger"));
+}
+
+void tst_Simulate::errors_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QStringList>("expected"); // in stderr
+    const QString gamma = QStringLiteral("rosrao-gamma");
+    QTest::newRow("unknown profile") << QStringList{QStringLiteral("--profile"), QStringLiteral("rosrao-gama")}
+                                     << QStringList{QStringLiteral("unknown profile 'rosrao-gama'"), QStringLiteral("shipped profiles: arduino-rs485, conformance, m221-plc, rosrao-gamma"),
+                                                    QStringLiteral("conformance")};
+    QTest::newRow("no profile") << QStringList{} << QStringList{QStringLiteral("--profile")};
+    QTest::newRow("bad url") << QStringList{QStringLiteral("--profile"), gamma, QStringLiteral("--listen"), QStringLiteral("tpc://127.0.0.1:0")}
+                             << QStringList{QStringLiteral("tpc")};
+    QTest::newRow("port in use") << QStringList{QStringLiteral("--profile"), gamma, QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:PORT_IN_USE")}
+                                 << QStringList{QStringLiteral(":PORT_IN_USE"), QStringLiteral("--listen tcp://127.0.0.1:0")};
+    QTest::newRow("faults syntax") << QStringList{QStringLiteral("--profile"), gamma, QStringLiteral("--faults"), QStringLiteral("FAULTS_SYNTAX")}
+                                   << QStringList{QStringLiteral("FAULTS_SYNTAX:3:")};
+    QTest::newRow("faults content") << QStringList{QStringLiteral("--profile"), gamma, QStringLiteral("--faults"), QStringLiteral("FAULTS_CONTENT")}
+                                    << QStringList{QStringLiteral("rules[1].kind"), QStringLiteral("explode")};
+    QTest::newRow("bad duration") << QStringList{QStringLiteral("--profile"), gamma, QStringLiteral("--duration"), QStringLiteral("soon")}
+                                  << QStringList{QStringLiteral("--duration 'soon'")};
+}
+
+void tst_Simulate::errors()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QStringList, expected);
+    QTcpServer busy;
+    QVERIFY(busy.listen(QHostAddress::LocalHost, 0));
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString syntax = dir.filePath(QStringLiteral("syntax.json"));
+    const QString content = dir.filePath(QStringLiteral("content.json"));
+    QFile f1(syntax);
+    QVERIFY(f1.open(QIODevice::WriteOnly));
+    f1.write("{\"seed\": 7,\n \"rules\": [\n   {\"kind\": \"drop\",, \"probability\": 0.5}\n ]}\n");
+    f1.close();
+    QFile f2(content);
+    QVERIFY(f2.open(QIODevice::WriteOnly));
+    f2.write("{\"seed\": 7, \"rules\": [{\"kind\": \"drop\"}, {\"kind\": \"explode\"}]}\n");
+    f2.close();
+    auto substitute = [&](QString s) {
+        return s.replace(QStringLiteral("PORT_IN_USE"), QString::number(busy.serverPort()))
+            .replace(QStringLiteral("FAULTS_SYNTAX"), syntax)
+            .replace(QStringLiteral("FAULTS_CONTENT"), content);
+    };
+    for (QString &a : args)
+        a = substitute(a);
+    const Run r = runProcess(QStringLiteral(MBSCOPE_SIMULATE_CLI), args);
+    QCOMPARE(r.exitCode, 2);
+    for (const QString &e : expected)
+        QVERIFY2(QString::fromUtf8(r.err).contains(substitute(e)), r.err.constData());
+}
+
+void tst_Simulate::pymodbus_data()
+{
+    QTest::addColumn<QString>("profile");
+    QTest::addColumn<QString>("scheme");
+    QTest::addColumn<QString>("scenario");
+    QTest::newRow("rosrao-gamma tcp") << QStringLiteral("rosrao-gamma") << QStringLiteral("tcp") << QStringLiteral("rosrao");
+    QTest::newRow("rosrao-gamma rtu-tcp") << QStringLiteral("rosrao-gamma") << QStringLiteral("rtu-tcp") << QStringLiteral("rosrao");
+    QTest::newRow("conformance tcp") << QStringLiteral("conformance") << QStringLiteral("tcp") << QStringLiteral("conformance");
+    QTest::newRow("conformance rtu-tcp") << QStringLiteral("conformance") << QStringLiteral("rtu-tcp") << QStringLiteral("conformance");
+}
+
+void tst_Simulate::pymodbus()
+{
+    QFETCH(QString, profile);
+    QFETCH(QString, scheme);
+    QFETCH(QString, scenario);
+    QString why;
+    if (!pymodbusAvailable(&why))
+        QSKIP(qPrintable(why));
+    QTemporaryDir dir;
+    const QString logPath = dir.filePath(QStringLiteral("traffic.jsonl"));
+    SimCli sim;
+    QVERIFY2(sim.start({QStringLiteral("--profile"), profile, QStringLiteral("--listen"), scheme + QStringLiteral("://127.0.0.1:0"),
+                        QStringLiteral("--log"), logPath},
+                       1, &why),
+             qPrintable(why));
+    QVERIFY(sim.listening().first().startsWith(scheme + QStringLiteral("://127.0.0.1:")));
+    QVERIFY(sim.port(0) != 0);
+    const Run client = runProcess(systemPython(), {QStringLiteral(MBSCOPE_SIM_TEST_DIR "/sim_client.py"), scenario,
+                                                   QString::number(sim.port(0)), scheme});
+    QVERIFY2(client.exitCode == 0 && client.out.contains("done"), (client.out + client.err).constData());
+    QCOMPARE(sim.stop(), 0);
+    const QByteArray out = sim.output();
+    QVERIFY2(out.contains("  unit 1  03 Read Holding Registers  answered\n"), out.constData());
+    QVERIFY2(out.contains("exception 0"), out.constData());
+    QVERIFY2(out.contains("interrupted: "), out.constData());
+
+    // The traffic log: one JSON object per frame, requests in and answers out, in pairs.
+    QFile log(logPath);
+    QVERIFY(log.open(QIODevice::ReadOnly));
+    int in = 0;
+    int outFrames = 0;
+    for (const QByteArray &line : log.readAll().split('\n')) {
+        if (line.isEmpty())
+            continue;
+        const QJsonObject o = QJsonDocument::fromJson(line).object();
+        QVERIFY2(!o.isEmpty(), line.constData());
+        QVERIFY(o.contains(QStringLiteral("t")) && o.contains(QStringLiteral("peer")) && o.contains(QStringLiteral("verdict")));
+        QVERIFY(!o.value(QStringLiteral("hex")).toString().isEmpty());
+        (o.value(QStringLiteral("direction")).toString() == QLatin1String("in") ? in : outFrames)++;
+    }
+    QVERIFY(in > 5);
+    QCOMPARE(outFrames, in);
+}
+
+void tst_Simulate::mbpollTcp()
+{
+    const QString mbpoll = QStandardPaths::findExecutable(QStringLiteral("mbpoll"));
+    if (mbpoll.isEmpty())
+        QSKIP("mbpoll is not installed (Debian: mbpoll)");
+    QString why;
+    SimCli sim;
+    QVERIFY2(sim.start({QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0")},
+                       1, &why),
+             qPrintable(why));
+    const Run r = runProcess(mbpoll, {QStringLiteral("-m"), QStringLiteral("tcp"), QStringLiteral("-p"), QString::number(sim.port(0)),
+                                      QStringLiteral("-a"), QStringLiteral("1"), QStringLiteral("-r"), QStringLiteral("122"),
+                                      QStringLiteral("-c"), QStringLiteral("22"), QStringLiteral("-1"), QStringLiteral("127.0.0.1")});
+    QVERIFY2(r.exitCode == 0, (r.out + r.err).constData());
+    checkRosraoValues(mbpollValues(r.out));
+    QCOMPARE(sim.stop(), 0);
+}
+
+void tst_Simulate::mbpollRtu()
+{
+    const QString mbpoll = QStandardPaths::findExecutable(QStringLiteral("mbpoll"));
+    if (mbpoll.isEmpty())
+        QSKIP("mbpoll is not installed (Debian: mbpoll)");
+    QString why;
+    if (!socatAvailable(&why))
+        QSKIP(qPrintable(why));
+    PtyPair pty;
+    QVERIFY2(pty.start(), qPrintable(pty.error()));
+    SimCli sim;
+    QVERIFY2(sim.start({QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                        QStringLiteral("rtu://%1?baud=9600&parity=N").arg(pty.ourEnd())},
+                       1, &why),
+             qPrintable(why));
+    const Run r = runProcess(mbpoll, {QStringLiteral("-m"), QStringLiteral("rtu"), QStringLiteral("-b"), QStringLiteral("9600"),
+                                      QStringLiteral("-P"), QStringLiteral("none"), QStringLiteral("-a"), QStringLiteral("3"),
+                                      QStringLiteral("-r"), QStringLiteral("122"), QStringLiteral("-c"), QStringLiteral("22"),
+                                      QStringLiteral("-1"), pty.peerEnd()});
+    QVERIFY2(r.exitCode == 0, (r.out + r.err).constData());
+    checkRosraoValues(mbpollValues(r.out));
+    QCOMPARE(sim.stop(), 0);
+    QVERIFY2(sim.output().contains("  unit 3  03 Read Holding Registers  answered"), sim.output().constData());
+}
+
+void tst_Simulate::durationStopsAndQuietSummarises()
+{
+    const Run r = runProcess(QStringLiteral(MBSCOPE_SIMULATE_CLI),
+                             {QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                              QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--listen"), QStringLiteral("rtu-tcp://127.0.0.1:0"),
+                              QStringLiteral("--duration"), QStringLiteral("300ms"), QStringLiteral("--quiet"),
+                              QStringLiteral("--seed"), QStringLiteral("9")},
+                             30000);
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY2(r.out.contains("simulating conformance (:/profiles/conformance.json, seed 9)"), r.out.constData());
+    QCOMPARE(r.out.count("listening "), 2);
+    QVERIFY2(r.out.contains("stopped: 0 requests"), r.out.constData());
+}
+
+// 50 TCP clients at once, 1000 requests each, one after the other per client: every answer
+// checked (transaction id, unit, values), none missing. The rate is printed, never asserted.
+void tst_Simulate::load()
+{
+    constexpr int kClients = 50;
+    constexpr int kRequests = 1000;
+    QString why;
+    SimCli sim;
+    QVERIFY2(sim.start({QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       1, &why),
+             qPrintable(why));
+    const quint16 port = sim.port(0);
+
+    struct Client {
+        std::unique_ptr<QTcpSocket> socket;
+        QByteArray buffer;
+        int sent = 0;
+        int answered = 0;
+        int address = 0;
+        QString error;
+    };
+    std::vector<Client> clients(kClients);
+    int done = 0;
+    QEventLoop loop;
+    auto send = [](Client &c, int index) {
+        c.address = (index * 7 + c.sent * 13) % 90;
+        const quint16 tid = quint16(c.sent);
+        const char request[] = {char(tid >> 8), char(tid & 0xFF), 0, 0, 0, 6, 1, 3, 0, char(c.address), 0, 10};
+        c.socket->write(request, sizeof request);
+        ++c.sent;
+    };
+    auto finishOne = [&] {
+        if (++done == kClients)
+            loop.quit();
+    };
+    for (int i = 0; i < kClients; ++i) {
+        Client &c = clients[size_t(i)];
+        c.socket = std::make_unique<QTcpSocket>();
+        c.socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+        QObject::connect(c.socket.get(), &QTcpSocket::connected, &loop, [&c, i, &send] { send(c, i); });
+        QObject::connect(c.socket.get(), &QTcpSocket::errorOccurred, &loop, [&c, &finishOne] {
+            if (c.error.isEmpty() && c.answered < kRequests) {
+                c.error = c.socket->errorString();
+                finishOne();
+            }
+        });
+        QObject::connect(c.socket.get(), &QTcpSocket::readyRead, &loop, [&c, i, &send, &finishOne] {
+            c.buffer += c.socket->readAll();
+            while (c.buffer.size() >= 9 && c.error.isEmpty()) {
+                const int length = (quint8(c.buffer[4]) << 8) | quint8(c.buffer[5]);
+                if (c.buffer.size() < 6 + length)
+                    return;
+                const QByteArray frame = c.buffer.left(6 + length);
+                c.buffer.remove(0, 6 + length);
+                const int tid = (quint8(frame[0]) << 8) | quint8(frame[1]);
+                QByteArray expected = QByteArray::fromHex("010314");
+                for (int k = 0; k < 10; ++k) {
+                    const int v = 1000 + 3 * (c.address + k);
+                    expected += char(v >> 8);
+                    expected += char(v & 0xFF);
+                }
+                if (tid != c.answered || frame.mid(6) != expected) {
+                    c.error = QStringLiteral("client %1 request %2: answer %3").arg(i).arg(c.answered).arg(QString::fromLatin1(frame.toHex(' ')));
+                    finishOne();
+                    return;
+                }
+                if (++c.answered == kRequests) {
+                    c.socket->disconnectFromHost();
+                    finishOne();
+                    return;
+                }
+                send(c, i);
+            }
+        });
+    }
+    QTimer::singleShot(240000, &loop, &QEventLoop::quit); // a bound, not a speed requirement
+    QElapsedTimer timer;
+    timer.start();
+    for (Client &c : clients)
+        c.socket->connectToHost(QHostAddress::LocalHost, port);
+    loop.exec();
+    const double seconds = double(timer.nsecsElapsed()) / 1e9;
+    int answered = 0;
+    for (const Client &c : clients) {
+        QVERIFY2(c.error.isEmpty(), qPrintable(c.error));
+        answered += c.answered;
+    }
+    QCOMPARE(answered, kClients * kRequests);
+    qInfo("load: %d clients x %d requests = %d answers in %.2f s: %.0f requests/s served", kClients, kRequests, answered,
+          seconds, double(answered) / seconds);
+    clients.clear();
+    QCOMPARE(sim.stop(), 0);
+    // The simulator counted the same: every request answered.
+    QVERIFY2(sim.output().contains("interrupted: 50000 requests"), sim.output().constData());
+    QVERIFY2(sim.output().contains(": 50000 answered, 0 exceptions"), sim.output().constData());
+}
+
+QTEST_GUILESS_MAIN(tst_Simulate)
+#include "tst_simulate.moc"
