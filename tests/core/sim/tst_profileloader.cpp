@@ -3,7 +3,7 @@
 #include "sim/profileloader.h"
 #include "sim/simunit.h"
 
-#include "profileerrorcases.h"
+#include "profilecases.h"
 
 #include <QtCore/QFile>
 #include <QtCore/QTemporaryDir>
@@ -223,11 +223,12 @@ private slots:
     void faultsFileErrors_data();
     void faultsFileErrors();
     void applier();
+    void documentedExamples();
 };
 
 void TestProfileLoader::contentErrors_data()
 {
-    profilecases::addRows();
+    profilecases::addErrorRows();
 }
 
 // The published RosRao response: 22 holding registers from 0x0079 starting with these values
@@ -362,29 +363,7 @@ void TestProfileLoader::conformance()
 // Engineering values encoded with RegisterFormat/RegisterValue and the entry's scaling.
 void TestProfileLoader::encodedValues_data()
 {
-    QTest::addColumn<QByteArray>("entry");
-    QTest::addColumn<QList<quint16>>("registers");
-    auto row = [](const char *name, const char *entry, QList<quint16> regs) {
-        QTest::newRow(name) << QByteArray(entry) << regs;
-    };
-    row("42F6 E979 f32 123.456", R"({"address": 0, "type": "f32", "value": 123.456})", {0x42F6, 0xE979});
-    row("E979 42F6 f32-cdab 123.456", R"({"address": 0, "type": "f32-cdab", "value": 123.456})", {0xE979, 0x42F6});
-    row("F642 79E9 f32-badc", R"({"address": 0, "type": "f32-badc", "value": 123.456})", {0xF642, 0x79E9});
-    row("5678 1234 u32-cdab", R"({"address": 0, "type": "u32-cdab", "value": 305419896})", {0x5678, 0x1234});
-    row("FFFF FFFE i32 -2", R"({"address": 0, "type": "i32", "value": -2})", {0xFFFF, 0xFFFE});
-    row("FF83 i16 scale 0.1 -12.5", R"({"address": 0, "type": "i16", "scale": 0.1, "value": -12.5})", {0xFF83});
-    row("2C3D u16 scale 0.01 offset 900", R"({"address": 0, "scale": 0.01, "offset": 900, "value": 1013.25})", {11325});
-    row("0004 u16 rounds 3.6", R"({"address": 0, "value": 3.6})", {4});
-    row("4009 21FB 5444 2D18 f64 pi", R"({"address": 0, "type": "f64", "value": 3.141592653589793})",
-        {0x4009, 0x21FB, 0x5444, 0x2D18});
-    row("FFFF hex raw text", R"({"address": 0, "type": "hex", "value": "0xFFFF"})", {0xFFFF});
-    row("FFFF i16 raw text", R"({"address": 0, "type": "i16", "scale": 10, "value": "0xFFFF"})", {0xFFFF});
-    row("4D42 5343 ascii", R"({"address": 0, "type": "ascii", "values": ["MB", "SC"]})", {0x4D42, 0x5343});
-    row("0007 0007 0007 fill", R"({"address": 0, "count": 3, "value": 7})", {7, 7, 7});
-    row("0001 0002 0000 padded", R"({"address": 0, "count": 3, "values": [1, 2]})", {1, 2, 0});
-    row("0000 0000 f32 count 2 no value", R"({"address": 0, "type": "f32"})", {0, 0});
-    row("1234 5678 9ABC DEF0 u64 raw", R"({"address": 0, "type": "u64", "value": "0x123456789ABCDEF0"})",
-        {0x1234, 0x5678, 0x9ABC, 0xDEF0});
+    profilecases::addEncodingRows();
 }
 
 void TestProfileLoader::encodedValues()
@@ -509,6 +488,30 @@ void TestProfileLoader::applier()
     // Applying again replaces the ranges rather than refusing them as overlaps.
     QVERIFY2(ProfileApplier::apply(r.profile.units.at(0), &unit, &error), qPrintable(error));
     QCOMPARE(unit.ranges(SimTable::HoldingRegisters).size(), 1);
+}
+
+// The examples in docs/profiles.md load as they are shown.
+void TestProfileLoader::documentedExamples()
+{
+    QFile doc(QStringLiteral(MBSCOPE_TEST_DATA_DIR "/../../docs/profiles.md"));
+    QVERIFY(doc.open(QIODevice::ReadOnly));
+    const QByteArray text = doc.readAll();
+    QList<QByteArray> blocks;
+    for (qsizetype at = text.indexOf("```json\n"); at >= 0; at = text.indexOf("```json\n", at)) {
+        const qsizetype start = at + 8;
+        const qsizetype end = text.indexOf("```", start);
+        QVERIFY(end > start);
+        blocks.append(text.mid(start, end - start));
+        at = end + 3;
+    }
+    QCOMPARE(blocks.size(), 2);
+    const ProfileLoadResult profile = ProfileLoader::parse(blocks.at(0), QStringLiteral("profiles.md"));
+    QVERIFY2(profile.ok, qPrintable(profile.errorText()));
+    QCOMPARE(profile.profile.units.at(0).entries.size(), 5);
+    QCOMPARE(profile.profile.faults.rules.size(), 2);
+    const FaultRulesLoadResult faults = ProfileLoader::parseFaults(blocks.at(1), QStringLiteral("profiles.md"));
+    QVERIFY2(faults.ok, qPrintable(faults.errorText()));
+    QCOMPARE(faults.rules.rules.size(), 4);
 }
 
 QTEST_GUILESS_MAIN(TestProfileLoader)

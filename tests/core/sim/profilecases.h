@@ -1,7 +1,8 @@
 #pragma once
 
-// Rows for tst_profileloader's contentErrors: a profile with one mistake, the JSON path of the
-// first problem and its message (what was found and what was expected).
+// Rows for tst_profileloader: contentErrors (a profile with one mistake, the JSON path of the
+// first problem and its message: what was found and what was expected) and encodedValues (an
+// entry and the registers its initial value becomes).
 
 #include <QtCore/QByteArray>
 #include <QtCore/QString>
@@ -39,7 +40,7 @@ inline void row(const char *name, const QByteArray &json, const char *path, cons
     QTest::newRow(name) << json << QString::fromLatin1(path) << message;
 }
 
-inline void addRows()
+inline void addErrorRows()
 {
     QTest::addColumn<QByteArray>("json");
     QTest::addColumn<QString>("path");
@@ -211,6 +212,33 @@ inline void addRows()
         S("'soon' is not a moment: expected before, midway or after"));
     row("delay rule without delay", faults(R"({"kind": "delay"})"), "faults.rules[0]", S("'delay' is missing"));
     row("exception code 0", faults(R"({"kind": "exception", "code": 0})"), "faults.rules[0].code", S("0 is below 1"));
+}
+
+inline void addEncodingRows()
+{
+    QTest::addColumn<QByteArray>("entry");
+    QTest::addColumn<QList<quint16>>("registers");
+    auto row = [](const char *name, const char *entry, QList<quint16> regs) {
+        QTest::newRow(name) << QByteArray(entry) << regs;
+    };
+    row("42F6 E979 f32 123.456", R"({"address": 0, "type": "f32", "value": 123.456})", {0x42F6, 0xE979});
+    row("E979 42F6 f32-cdab 123.456", R"({"address": 0, "type": "f32-cdab", "value": 123.456})", {0xE979, 0x42F6});
+    row("F642 79E9 f32-badc", R"({"address": 0, "type": "f32-badc", "value": 123.456})", {0xF642, 0x79E9});
+    row("5678 1234 u32-cdab", R"({"address": 0, "type": "u32-cdab", "value": 305419896})", {0x5678, 0x1234});
+    row("FFFF FFFE i32 -2", R"({"address": 0, "type": "i32", "value": -2})", {0xFFFF, 0xFFFE});
+    row("FF83 i16 scale 0.1 -12.5", R"({"address": 0, "type": "i16", "scale": 0.1, "value": -12.5})", {0xFF83});
+    row("2C3D u16 scale 0.01 offset 900", R"({"address": 0, "scale": 0.01, "offset": 900, "value": 1013.25})", {11325});
+    row("0004 u16 rounds 3.6", R"({"address": 0, "value": 3.6})", {4});
+    row("4009 21FB 5444 2D18 f64 pi", R"({"address": 0, "type": "f64", "value": 3.141592653589793})",
+        {0x4009, 0x21FB, 0x5444, 0x2D18});
+    row("FFFF hex raw text", R"({"address": 0, "type": "hex", "value": "0xFFFF"})", {0xFFFF});
+    row("FFFF i16 raw text", R"({"address": 0, "type": "i16", "scale": 10, "value": "0xFFFF"})", {0xFFFF});
+    row("4D42 5343 ascii", R"({"address": 0, "type": "ascii", "values": ["MB", "SC"]})", {0x4D42, 0x5343});
+    row("0007 0007 0007 fill", R"({"address": 0, "count": 3, "value": 7})", {7, 7, 7});
+    row("0001 0002 0000 padded", R"({"address": 0, "count": 3, "values": [1, 2]})", {1, 2, 0});
+    row("0000 0000 f32 count 2 no value", R"({"address": 0, "type": "f32"})", {0, 0});
+    row("1234 5678 9ABC DEF0 u64 raw", R"({"address": 0, "type": "u64", "value": "0x123456789ABCDEF0"})",
+        {0x1234, 0x5678, 0x9ABC, 0xDEF0});
 }
 
 } // namespace profilecases
