@@ -11,12 +11,16 @@
 // must be Ok with no message. %text must occur in FieldTree::display, ~text in the message.
 // The function code (field 0) is checked to be Ok unless the expectation starts with it. The
 // Modicon reference children (modbus.reference) that the dispatch adds are skipped.
+//
+// For data-driven tests: columns() in a _data function, then one req()/rsp() per row, and check()
+// as the test function's body.
 
 #include "protocol/fieldtree.h"
 #include "protocol/pducontext.h"
 #include "protocol/pdudissector.h"
 
 #include <QtCore/QStringList>
+#include <QtTest/QtTest>
 
 #include <cstring>
 
@@ -209,6 +213,55 @@ inline QString checkBounds(const FieldTree &tree)
             return QStringLiteral("field %1 out of bounds\n").arg(i) + dump(tree);
     }
     return {};
+}
+
+// The columns of a data-driven test: pdu, direction, request, spec.
+inline void columns()
+{
+    QTest::addColumn<QByteArray>("pdu");
+    QTest::addColumn<int>("direction");
+    QTest::addColumn<QByteArray>("request");
+    QTest::addColumn<QString>("spec");
+}
+
+// One row, named by direction, the PDU's hex (a long one cut), the request's and the note.
+inline void row(Direction direction, const QByteArray &pdu, const QString &spec, const QByteArray &request,
+                const char *note)
+{
+    QString text = QLatin1String(direction == Direction::Request ? "req " : "rsp ");
+    text += pdu.size() > 20
+        ? QString::fromLatin1(pdu.left(12).toHex(' ').toUpper()) + QStringLiteral(" ... (%1 bytes)").arg(pdu.size())
+        : QString::fromLatin1(pdu.toHex(' ').toUpper());
+    if (!request.isEmpty())
+        text += QStringLiteral(" / req ") + QString::fromLatin1(request.left(16).toHex(' ').toUpper());
+    if (note)
+        text += QStringLiteral(" (") + QLatin1String(note) + QLatin1Char(')');
+    QTest::newRow(qPrintable(text)) << pdu << int(direction) << request << spec;
+}
+
+inline void req(const char *pdu, const char *spec, const char *note = nullptr)
+{
+    row(Direction::Request, bytes(pdu), QLatin1String(spec), {}, note);
+}
+
+inline void rsp(const char *pdu, const char *spec, const char *request = "", const char *note = nullptr)
+{
+    row(Direction::Response, bytes(pdu), QLatin1String(spec), bytes(request), note);
+}
+
+// The body of a data-driven test function: dissect the row's PDU, check bounds and the spec.
+inline void check()
+{
+    QFETCH(QByteArray, pdu);
+    QFETCH(int, direction);
+    QFETCH(QByteArray, request);
+    QFETCH(QString, spec);
+    FieldTree tree;
+    dissect(tree, pdu, Direction(direction), request);
+    const QString bounds = checkBounds(tree);
+    QVERIFY2(bounds.isEmpty(), qPrintable(bounds));
+    const QString result = match(tree, spec);
+    QVERIFY2(result.isEmpty(), qPrintable(result));
 }
 
 } // namespace pdutest

@@ -3,6 +3,7 @@
 #include <QtTest/QtTest>
 
 using namespace mbscope;
+using namespace pdutest;
 
 // Dissection of the bit and register access codes 01-06, 0F and 10, both directions, against
 // MODBUS Application Protocol Specification V1.1b3 section 6 (its worked examples are the
@@ -12,57 +13,9 @@ class TestPduDataAccess : public QObject
 {
     Q_OBJECT
 private:
-    static QString name(const char *dir, const QByteArray &pdu, const QByteArray &request, const char *note)
-    {
-        QString text = QLatin1String(dir) + QLatin1Char(' ');
-        if (pdu.size() > 16)
-            text += QString::fromLatin1(pdu.left(12).toHex(' ').toUpper()) + QStringLiteral(" ... (%1 bytes)").arg(pdu.size());
-        else
-            text += QString::fromLatin1(pdu.toHex(' ').toUpper());
-        if (!request.isEmpty())
-            text += QStringLiteral(" / req ") + QString::fromLatin1(request.left(12).toHex(' ').toUpper());
-        if (note)
-            text += QStringLiteral(" (") + QLatin1String(note) + QLatin1Char(')');
-        return text;
-    }
-    static void row(const char *dir, const QByteArray &pdu, const QString &spec, const QByteArray &request,
-                    const char *note)
-    {
-        const Direction d = dir[1] == 'e' ? Direction::Request : Direction::Response;
-        QTest::newRow(qPrintable(name(dir, pdu, request, note))) << pdu << int(d) << request << spec;
-    }
-    static void req(const char *pdu, const char *spec, const char *note = nullptr)
-    {
-        row("req", pdutest::bytes(pdu), QLatin1String(spec), {}, note);
-    }
-    static void rsp(const char *pdu, const char *spec, const char *request = "", const char *note = nullptr)
-    {
-        row("rsp", pdutest::bytes(pdu), QLatin1String(spec), pdutest::bytes(request), note);
-    }
     static QByteArray filled(const char *head, int n, char byte)
     {
         return pdutest::bytes(head) + QByteArray(n, byte);
-    }
-
-    static void columns()
-    {
-        QTest::addColumn<QByteArray>("pdu");
-        QTest::addColumn<int>("direction");
-        QTest::addColumn<QByteArray>("request");
-        QTest::addColumn<QString>("spec");
-    }
-    static void check()
-    {
-        QFETCH(QByteArray, pdu);
-        QFETCH(int, direction);
-        QFETCH(QByteArray, request);
-        QFETCH(QString, spec);
-        FieldTree tree;
-        pdutest::dissect(tree, pdu, Direction(direction), request);
-        const QString bounds = pdutest::checkBounds(tree);
-        QVERIFY2(bounds.isEmpty(), qPrintable(bounds));
-        const QString result = pdutest::match(tree, spec);
-        QVERIFY2(result.isEmpty(), qPrintable(result));
     }
 
 private slots:
@@ -126,9 +79,9 @@ void TestPduDataAccess::readBits_data()
         "01 00 00 00 01");
     rsp("01", "missing!E~missing: byte count and coil status; expected at least 2 more bytes");
     rsp("02", "missing!E~missing: byte count and input status");
-    row("rsp", filled("01 FA", 250, '\x55'), QStringLiteral("byte_count=250|coil_value*2000@0"),
+    row(Direction::Response, filled("01 FA", 250, '\x55'), QStringLiteral("byte_count=250|coil_value*2000@0"),
         pdutest::bytes("01 00 00 07 D0"), "2000 coils");
-    row("rsp", filled("01 FA", 250, '\x55'), QStringLiteral("byte_count=250|coil_value*2000@0"), {},
+    row(Direction::Response, filled("01 FA", 250, '\x55'), QStringLiteral("byte_count=250|coil_value*2000@0"), {},
         "2000 coils, no request");
 }
 
@@ -174,7 +127,7 @@ void TestPduDataAccess::readRegisters_data()
     rsp("03", "missing!E~missing: byte count and register values; expected at least 3 more bytes");
     rsp("03 02 00 01", "function_code=3!E|byte_count=2|register_value=[1]@0",
         "04 00 08 00 01", "request of another function");
-    row("rsp", filled("03 FA", 250, '\x01'), QStringLiteral("byte_count=250|register_value*125@0"),
+    row(Direction::Response, filled("03 FA", 250, '\x01'), QStringLiteral("byte_count=250|register_value*125@0"),
         pdutest::bytes("03 00 00 00 7D"), "125 registers");
 }
 
@@ -229,9 +182,9 @@ void TestPduDataAccess::multipleCoils_data()
     req("0F 00 13", "start_address=19|missing!E~missing: quantity, byte count and coil values; expected at least 4 more bytes");
     req("0F", "missing!E~missing: start address, quantity, byte count and coil values; expected at least 6 more bytes");
     req("0F 00 00 00 01 01 01 00", "start_address=0|quantity=1|byte_count=1|coil_value=[1]|padding_bits=0|trailing!E~1 byte after");
-    row("req", filled("0F 00 00 07 B0 F6", 246, '\xFF'), QStringLiteral("start_address=0|quantity=1968|byte_count=246|coil_value*1968@0"),
+    row(Direction::Request, filled("0F 00 00 07 B0 F6", 246, '\xFF'), QStringLiteral("start_address=0|quantity=1968|byte_count=246|coil_value*1968@0"),
         {}, "1968 coils");
-    row("req", filled("0F 00 00 07 B1 F7", 247, '\0'),
+    row(Direction::Request, filled("0F 00 00 07 B1 F7", 247, '\0'),
         QStringLiteral("start_address=0|quantity=1969!E~quantity 1969 is out of range|byte_count=247|coil_value*1969@0|padding_bits=0"),
         {}, "1969 coils");
 
@@ -263,9 +216,9 @@ void TestPduDataAccess::multipleRegisters_data()
     req("10 00 00 00 00", "start_address=0|quantity=0!E~quantity 0 is out of range|missing!E~expected at least 2 more bytes");
     req("10 00", "missing!E~missing: start address, quantity, byte count and register values; expected at least 5 more bytes");
     req("10 00 00 00 01 02 00 CD 00", "start_address=0|quantity=1|byte_count=2|register_value=[205]|trailing!E~1 byte after");
-    row("req", filled("10 00 00 00 7B F6", 246, '\x02'), QStringLiteral("start_address=0|quantity=123|byte_count=246|register_value*123@0"),
+    row(Direction::Request, filled("10 00 00 00 7B F6", 246, '\x02'), QStringLiteral("start_address=0|quantity=123|byte_count=246|register_value*123@0"),
         {}, "123 registers");
-    row("req", filled("10 00 00 00 7C F8", 248, '\x02'),
+    row(Direction::Request, filled("10 00 00 00 7C F8", 248, '\x02'),
         QStringLiteral("start_address=0|quantity=124!E~quantity 124 is out of range|byte_count=248|register_value*124@0"), {},
         "124 registers");
 

@@ -3,6 +3,7 @@
 #include <QtTest/QtTest>
 
 using namespace mbscope;
+using namespace pdutest;
 
 // Dissection of 14 Read File Record, 15 Write File Record, 16 Mask Write Register, 17 Read/Write
 // Multiple Registers and 18 Read FIFO Queue, both directions, against MODBUS Application
@@ -11,49 +12,6 @@ using namespace mbscope;
 class TestPduRecords : public QObject
 {
     Q_OBJECT
-private:
-    static void row(const char *dir, const QByteArray &pdu, const QString &spec, const QByteArray &request,
-                    const char *note)
-    {
-        const Direction d = dir[1] == 'e' ? Direction::Request : Direction::Response;
-        QString text = QLatin1String(dir) + QLatin1Char(' ');
-        text += pdu.size() > 20 ? QString::fromLatin1(pdu.left(12).toHex(' ').toUpper()) + QStringLiteral(" ... (%1 bytes)").arg(pdu.size())
-                                : QString::fromLatin1(pdu.toHex(' ').toUpper());
-        if (!request.isEmpty())
-            text += QStringLiteral(" / req ") + QString::fromLatin1(request.left(16).toHex(' ').toUpper());
-        if (note)
-            text += QStringLiteral(" (") + QLatin1String(note) + QLatin1Char(')');
-        QTest::newRow(qPrintable(text)) << pdu << int(d) << request << spec;
-    }
-    static void req(const char *pdu, const char *spec, const char *note = nullptr)
-    {
-        row("req", pdutest::bytes(pdu), QLatin1String(spec), {}, note);
-    }
-    static void rsp(const char *pdu, const char *spec, const char *request = "", const char *note = nullptr)
-    {
-        row("rsp", pdutest::bytes(pdu), QLatin1String(spec), pdutest::bytes(request), note);
-    }
-    static void columns()
-    {
-        QTest::addColumn<QByteArray>("pdu");
-        QTest::addColumn<int>("direction");
-        QTest::addColumn<QByteArray>("request");
-        QTest::addColumn<QString>("spec");
-    }
-    static void check()
-    {
-        QFETCH(QByteArray, pdu);
-        QFETCH(int, direction);
-        QFETCH(QByteArray, request);
-        QFETCH(QString, spec);
-        FieldTree tree;
-        pdutest::dissect(tree, pdu, Direction(direction), request);
-        const QString bounds = pdutest::checkBounds(tree);
-        QVERIFY2(bounds.isEmpty(), qPrintable(bounds));
-        const QString result = pdutest::match(tree, spec);
-        QVERIFY2(result.isEmpty(), qPrintable(result));
-    }
-
 private slots:
     void readFileRecord_data();
     void readFileRecord() { check(); }
@@ -305,9 +263,9 @@ void TestPduRecords::fifo_data()
     rsp("18 00 06 00", "byte_count=6|missing!E%00~missing: FIFO count and FIFO values; expected 5 more bytes");
     rsp("18 00 01 00", "byte_count=1|missing!E~missing: FIFO count and FIFO values; expected at least 1 more byte");
     rsp("18 00", "missing!E%00~missing: byte count, FIFO count and FIFO values; expected at least 3 more bytes");
-    row("rsp", pdutest::bytes("18 00 40 00 1F") + QByteArray(62, '\x07'),
+    row(Direction::Response, pdutest::bytes("18 00 40 00 1F") + QByteArray(62, '\x07'),
         QStringLiteral("byte_count=64|fifo_count=31|register_value*31@0"), {}, "31 values");
-    row("rsp", pdutest::bytes("18 00 42 00 20") + QByteArray(64, '\x07'),
+    row(Direction::Response, pdutest::bytes("18 00 42 00 20") + QByteArray(64, '\x07'),
         QStringLiteral("byte_count=66|fifo_count=32!E~FIFO count 32 is out of range: a FIFO queue returns 0-31 values"
                        "|register_value*32@0"),
         {}, "32 values");
