@@ -1,39 +1,16 @@
 #include "protocol/requestbuilder.h"
 
+#include "buildertesting.h"
+
 #include <QtTest/QtTest>
 
 using namespace mbscope;
+using namespace buildertest;
 
 // Request PDUs built from parameters. Expected bytes are the examples printed in the MODBUS
 // Application Protocol Specification V1.1b3 (section 6.x) where it gives one; every limit is
 // checked at its edge (valid) and just past it (an error naming the parameter).
 namespace {
-
-QByteArray hex(const char *text)
-{
-    return QByteArray::fromHex(QByteArray(text).replace(' ', ""));
-}
-
-QString spaced(const QByteArray &bytes)
-{
-    return QString::fromLatin1(bytes.toHex(' ').toUpper());
-}
-
-QList<quint16> words(int count, int first = 0)
-{
-    QList<quint16> values;
-    for (int i = 0; i < count; ++i)
-        values.append(quint16(first + i * 0x0101));
-    return values;
-}
-
-QList<bool> bits(const char *pattern) // "1011": first coil first
-{
-    QList<bool> values;
-    for (const char *c = pattern; *c; ++c)
-        values.append(*c == '1');
-    return values;
-}
 
 QList<FileRecordRead> reads(int count, int length)
 {
@@ -41,21 +18,6 @@ QList<FileRecordRead> reads(int count, int length)
     for (int i = 0; i < count; ++i)
         list.append(FileRecordRead{i + 1, i, length});
     return list;
-}
-
-void addBytes(const BuildResult &result, const QByteArray &expected, const char *suffix = nullptr)
-{
-    QString name = spaced(expected);
-    if (suffix)
-        name += QStringLiteral(" (%1)").arg(QLatin1String(suffix));
-    QTest::newRow(qPrintable(name)) << result.pdu << result.errorString() << expected;
-}
-
-// parameter empty: the build must succeed (an edge that is still within the limit).
-void addLimit(const char *name, const BuildResult &result, const char *parameter = "", const char *fragment = "")
-{
-    QTest::newRow(name) << result.isValid() << result.pdu << result.errorString() << QString::fromLatin1(parameter)
-                        << QString::fromLatin1(fragment) << result.message(QString::fromLatin1(parameter));
 }
 
 } // namespace
@@ -74,9 +36,7 @@ private slots:
 
 void TestRequestBuilder::bytes_data()
 {
-    QTest::addColumn<QByteArray>("pdu");
-    QTest::addColumn<QString>("errors");
-    QTest::addColumn<QByteArray>("expected");
+    bytesColumns();
 
     // 6.1-6.4 examples, and the RosRao request of the field publications.
     addBytes(RequestBuilder::readCoils(0x13, 0x13), hex("01 00 13 00 13"));
@@ -154,21 +114,12 @@ void TestRequestBuilder::bytes_data()
 
 void TestRequestBuilder::bytes()
 {
-    QFETCH(QByteArray, pdu);
-    QFETCH(QString, errors);
-    QFETCH(QByteArray, expected);
-    QVERIFY2(errors.isEmpty(), qPrintable(errors));
-    QCOMPARE(spaced(pdu), spaced(expected));
+    checkBytes();
 }
 
 void TestRequestBuilder::limits_data()
 {
-    QTest::addColumn<bool>("valid");
-    QTest::addColumn<QByteArray>("pdu");
-    QTest::addColumn<QString>("errors");
-    QTest::addColumn<QString>("parameter");
-    QTest::addColumn<QString>("fragment");
-    QTest::addColumn<QString>("message");
+    limitsColumns();
 
     using R = RequestBuilder;
     // 01/02: 1-2000 (V1.1b3, 6.1/6.2)
@@ -372,22 +323,7 @@ void TestRequestBuilder::limits_data()
 
 void TestRequestBuilder::limits()
 {
-    QFETCH(bool, valid);
-    QFETCH(QByteArray, pdu);
-    QFETCH(QString, errors);
-    QFETCH(QString, parameter);
-    QFETCH(QString, fragment);
-    QFETCH(QString, message);
-    if (parameter.isEmpty()) {
-        QVERIFY2(valid, qPrintable(errors));
-        QVERIFY(!pdu.isEmpty());
-        QVERIFY2(pdu.size() <= 253, qPrintable(QString::number(pdu.size())));
-        return;
-    }
-    QVERIFY2(!valid, "the builder accepted a value past the limit");
-    QVERIFY2(pdu.isEmpty(), "a failed build must not return bytes");
-    QVERIFY2(!message.isEmpty(), qPrintable(QStringLiteral("no error on %1; errors: %2").arg(parameter, errors)));
-    QVERIFY2(message.contains(fragment), qPrintable(QStringLiteral("message: %1\nexpected fragment: %2").arg(message, fragment)));
+    checkLimit();
 }
 
 void TestRequestBuilder::errorsAreAllCollected()

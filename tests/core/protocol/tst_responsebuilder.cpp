@@ -1,57 +1,20 @@
 #include "protocol/functioncode.h"
 #include "protocol/responsebuilder.h"
 
+#include "buildertesting.h"
+
 #include <QtTest/QtTest>
 
 using namespace mbscope;
+using namespace buildertest;
 
 // Response PDUs built from values, as the simulator answers. Expected bytes are the examples of
 // the MODBUS Application Protocol Specification V1.1b3 (section 6.x) where it prints one.
 namespace {
 
-QByteArray hex(const char *text)
-{
-    return QByteArray::fromHex(QByteArray(text).replace(' ', ""));
-}
-
-QString spaced(const QByteArray &bytes)
-{
-    return QString::fromLatin1(bytes.toHex(' ').toUpper());
-}
-
-QList<quint16> words(int count)
-{
-    QList<quint16> values;
-    for (int i = 0; i < count; ++i)
-        values.append(quint16(i * 0x0101));
-    return values;
-}
-
-QList<bool> bits(const char *pattern) // first coil first
-{
-    QList<bool> values;
-    for (const char *c = pattern; *c; ++c)
-        values.append(*c == '1');
-    return values;
-}
-
 QList<QList<quint16>> records(int count, int length)
 {
     return QList<QList<quint16>>(count, words(length));
-}
-
-void addBytes(const BuildResult &result, const QByteArray &expected, const char *suffix = nullptr)
-{
-    QString name = spaced(expected);
-    if (suffix)
-        name += QStringLiteral(" (%1)").arg(QLatin1String(suffix));
-    QTest::newRow(qPrintable(name)) << result.pdu << result.errorString() << expected;
-}
-
-void addLimit(const char *name, const BuildResult &result, const char *parameter = "", const char *fragment = "")
-{
-    QTest::newRow(name) << result.isValid() << result.pdu << result.errorString() << QString::fromLatin1(parameter)
-                        << QString::fromLatin1(fragment) << result.message(QString::fromLatin1(parameter));
 }
 
 } // namespace
@@ -70,9 +33,7 @@ private slots:
 
 void TestResponseBuilder::bytes_data()
 {
-    QTest::addColumn<QByteArray>("pdu");
-    QTest::addColumn<QString>("errors");
-    QTest::addColumn<QByteArray>("expected");
+    bytesColumns();
 
     using R = ResponseBuilder;
     // 6.1, 6.2: coils 20-38 (CD 6B 05), inputs 197-218 (AC DB 35); unused high bits are zero
@@ -145,11 +106,7 @@ void TestResponseBuilder::bytes_data()
 
 void TestResponseBuilder::bytes()
 {
-    QFETCH(QByteArray, pdu);
-    QFETCH(QString, errors);
-    QFETCH(QByteArray, expected);
-    QVERIFY2(errors.isEmpty(), qPrintable(errors));
-    QCOMPARE(spaced(pdu), spaced(expected));
+    checkBytes();
 }
 
 void TestResponseBuilder::exceptions_data()
@@ -189,12 +146,7 @@ void TestResponseBuilder::exceptions()
 
 void TestResponseBuilder::limits_data()
 {
-    QTest::addColumn<bool>("valid");
-    QTest::addColumn<QByteArray>("pdu");
-    QTest::addColumn<QString>("errors");
-    QTest::addColumn<QString>("parameter");
-    QTest::addColumn<QString>("fragment");
-    QTest::addColumn<QString>("message");
+    limitsColumns();
 
     using R = ResponseBuilder;
     addLimit("01 2000 coils", R::readCoils(QList<bool>(2000, true)));
@@ -316,22 +268,7 @@ void TestResponseBuilder::limits_data()
 
 void TestResponseBuilder::limits()
 {
-    QFETCH(bool, valid);
-    QFETCH(QByteArray, pdu);
-    QFETCH(QString, errors);
-    QFETCH(QString, parameter);
-    QFETCH(QString, fragment);
-    QFETCH(QString, message);
-    if (parameter.isEmpty()) {
-        QVERIFY2(valid, qPrintable(errors));
-        QVERIFY(!pdu.isEmpty());
-        QVERIFY2(pdu.size() <= 253, qPrintable(QString::number(pdu.size())));
-        return;
-    }
-    QVERIFY2(!valid, "the builder accepted a value past the limit");
-    QVERIFY2(pdu.isEmpty(), "a failed build must not return bytes");
-    QVERIFY2(!message.isEmpty(), qPrintable(QStringLiteral("no error on %1; errors: %2").arg(parameter, errors)));
-    QVERIFY2(message.contains(fragment), qPrintable(QStringLiteral("message: %1\nexpected fragment: %2").arg(message, fragment)));
+    checkLimit();
 }
 
 QTEST_GUILESS_MAIN(TestResponseBuilder)
