@@ -1,6 +1,7 @@
 #include "commands.h"
 
 #include "decodecommand.h"
+#include "simulatecommand.h"
 #include "pollcommand.h"
 #include "readcommand.h"
 #include "sendcommand.h"
@@ -28,6 +29,7 @@ const Subcommand kSubcommands[] = {
     {"write", "write coils or holding registers", runWrite},
     {"poll", "send requests in cycles and print statistics: counts, latency percentiles, histogram", runPoll},
     {"sweep", "poll at several intervals and print error rate and latency per interval", runSweep},
+    {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},
 };
 
 void printUsage(QTextStream &out)
