@@ -63,8 +63,21 @@ std::optional<UnitProfile> ProfileUnitReader::read(JsonReader &reader, const QJs
     reader.checkKeys(*o, path, {"id", "name", "description", "functions", "responseDelay", "tables", "fifos", "files",
                                 "deviceIdentification", "serverId", "exceptionStatus"});
     UnitProfile unit;
-    if (reader.require(*o, path, "id"))
-        unit.id = quint8(reader.integer(*o, path, "id", 0, 255).value_or(0));
+    if (reader.require(*o, path, "id")) {
+        const QJsonValue id = o->value(QLatin1String("id"));
+        bool hex = false;
+        const int hexValue = id.toString().trimmed().mid(2).toInt(&hex, 16);
+        if ((id.isDouble() && id.toDouble() == 0)
+            || (id.isString() && id.toString().trimmed().startsWith(QLatin1String("0x"), Qt::CaseInsensitive) && hex
+                && hexValue == 0))
+            // Serial Line V1.02, 2.2: 0 is the broadcast address, no unit's own. Over TCP the
+            // simulator's endpoints route unit ids 0 and 255 to the first unit.
+            reader.error(JsonReader::member(path, "id"),
+                         QStringLiteral("0 is the broadcast address, not a unit's: expected 1-255 (TCP requests to "
+                                        "unit 0 or 255 reach the first unit)"));
+        else
+            unit.id = quint8(reader.integer(*o, path, "id", 1, 255).value_or(1));
+    }
     unit.name = reader.string(*o, path, "name").value_or(QString());
     unit.description = reader.string(*o, path, "description").value_or(QString());
     unit.exceptionStatus = quint8(reader.integer(*o, path, "exceptionStatus", 0, 255).value_or(0));

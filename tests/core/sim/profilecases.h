@@ -63,6 +63,10 @@ inline void addErrorRows()
 
     // Units
     row("unit id missing", R"({"name": "t", "units": [{"name": "x"}]})", "units[0]", S("'id' is missing"));
+    row("unit id 0", R"({"name": "t", "units": [{"id": 0}]})", "units[0].id",
+        S("0 is the broadcast address, not a unit's: expected 1-255 (TCP requests to unit 0 or 255 reach the first unit)"));
+    row("unit id 0x00", R"({"name": "t", "units": [{"id": "0x00"}]})", "units[0].id",
+        S("0 is the broadcast address, not a unit's: expected 1-255 (TCP requests to unit 0 or 255 reach the first unit)"));
     row("unit id 256", R"({"name": "t", "units": [{"id": 256}]})", "units[0].id", S("256 is beyond 255"));
     row("unit id fraction", R"({"name": "t", "units": [{"id": 1.5}]})", "units[0].id", S("1.5 is not a whole number"));
     row("unit id bad hex", R"({"name": "t", "units": [{"id": "0xZZ"}]})", "units[0].id",
