@@ -85,8 +85,7 @@ void FaultInjector::setRules(const FaultRuleSet &rules)
 {
     QMutexLocker lock(&m_mutex);
     m_rules = rules;
-    lock.unlock();
-    reset();
+    resetStreams(); // under the same lock: plan() never sees rules without their streams
 }
 
 FaultRuleSet FaultInjector::rules() const
@@ -112,6 +111,11 @@ void FaultInjector::clearResponseDelays()
 void FaultInjector::reset()
 {
     QMutexLocker lock(&m_mutex);
+    resetStreams();
+}
+
+void FaultInjector::resetStreams()
+{
     m_ruleRandom.clear();
     for (qsizetype i = 0; i < m_rules.rules.size(); ++i)
         m_ruleRandom.emplace_back(SimRandom::derive(m_rules.seed, kRuleStream, quint64(i)));

@@ -68,6 +68,7 @@ public:
 
 private:
     [[nodiscard]] SimRandom &delayRandom(quint8 unit);
+    void resetStreams(); // with m_mutex held
 
     mutable QMutex m_mutex;
     FaultRuleSet m_rules;

@@ -4,6 +4,9 @@
 
 #include <QtTest/QtTest>
 
+#include <QtCore/QThread>
+
+#include <atomic>
 #include <cmath>
 
 using namespace mbscope;
@@ -229,6 +232,7 @@ private slots:
     void unitResponseDelay();
     void reproducible();
     void setRulesWhileRunning();
+    void setRulesFromAnotherThread();
 };
 
 // Several rules on one answer combine in the documented order, whatever their list order.
@@ -447,6 +451,28 @@ void TestFaultInjector::setRulesWhileRunning()
     QCOMPARE(injector.rules().rules.size(), 1);
     injector.setRules(FaultRuleSet{});
     verifySingle(injector.plan(tcpContext()), hex(kTcpResponse));
+}
+
+// plan() in one thread while another replaces the rules: each plan sees one rule set whole.
+void TestFaultInjector::setRulesFromAnotherThread()
+{
+    FaultInjector injector;
+    const FaultRuleSet one{1, {rule(FaultRule::Kind::Drop)}};
+    FaultRule duplicate = rule(FaultRule::Kind::Duplicate);
+    const FaultRuleSet three{2, {rule(FaultRule::Kind::WrongUnit), duplicate, rule(FaultRule::Kind::WrongChecksum)}};
+    std::atomic<bool> done = false;
+    QThread *writer = QThread::create([&] {
+        for (int i = 0; !done; ++i)
+            injector.setRules(i % 2 ? one : three);
+    });
+    writer->start();
+    for (int i = 0; i < 20000; ++i) {
+        const FaultPlan plan = injector.plan(rtuContext());
+        QVERIFY(plan.drop || plan.chunks.size() == 2 || plan.chunks.size() == 1);
+    }
+    done = true;
+    writer->wait();
+    delete writer;
 }
 
 QTEST_GUILESS_MAIN(TestFaultInjector)
