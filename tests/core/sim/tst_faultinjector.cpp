@@ -2,9 +2,8 @@
 #include "sim/faultbytes.h"
 #include "sim/faultinjector.h"
 
-#include <QtTest/QtTest>
-
 #include <QtCore/QThread>
+#include <QtTest/QtTest>
 
 #include <atomic>
 #include <cmath>
