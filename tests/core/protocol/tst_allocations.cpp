@@ -1,84 +1,11 @@
 // "No per-field heap allocation on the hot path" (issue 2): once a Dissection has been used, a
-// dissection with explicit framing and direction of a valid frame must not allocate at all.
-// Every heap allocation of the process (operator new, and Qt's containers, which call malloc
-// directly) goes through malloc, calloc, realloc or the aligned allocators, so those are replaced
-// here with counting versions that forward to glibc's own.
-//
-// Under AddressSanitizer the allocator belongs to the sanitizer and cannot be replaced: the test
-// skips there.
+// dissection with explicit framing and direction of a valid frame must not allocate at all
+// (allocations counted by allocationcounter.h; skipped where they cannot be).
+#include "allocationcounter.h"
 #include "protocol/adubuilder.h"
 #include "protocol/dissector.h"
 
 #include <QtTest/QtTest>
-
-#include <atomic>
-#include <cstddef>
-
-#if defined(__SANITIZE_ADDRESS__)
-#define MBSCOPE_COUNT_ALLOCATIONS 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || __has_feature(thread_sanitizer)
-#define MBSCOPE_COUNT_ALLOCATIONS 0
-#endif
-#endif
-#if !defined(MBSCOPE_COUNT_ALLOCATIONS) && defined(__GLIBC__)
-#define MBSCOPE_COUNT_ALLOCATIONS 1
-#endif
-#ifndef MBSCOPE_COUNT_ALLOCATIONS
-#define MBSCOPE_COUNT_ALLOCATIONS 0
-#endif
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-
-inline void counted()
-{
-    if (g_counting.load(std::memory_order_relaxed))
-        g_allocations.fetch_add(1, std::memory_order_relaxed);
-}
-} // namespace
-
-#if MBSCOPE_COUNT_ALLOCATIONS
-extern "C" {
-void *__libc_malloc(std::size_t size);
-void *__libc_calloc(std::size_t count, std::size_t size);
-void *__libc_realloc(void *pointer, std::size_t size);
-void *__libc_memalign(std::size_t alignment, std::size_t size);
-
-void *malloc(std::size_t size)
-{
-    counted();
-    return __libc_malloc(size);
-}
-void *calloc(std::size_t count, std::size_t size)
-{
-    counted();
-    return __libc_calloc(count, size);
-}
-void *realloc(void *pointer, std::size_t size)
-{
-    counted();
-    return __libc_realloc(pointer, size);
-}
-void *memalign(std::size_t alignment, std::size_t size)
-{
-    counted();
-    return __libc_memalign(alignment, size);
-}
-void *aligned_alloc(std::size_t alignment, std::size_t size)
-{
-    counted();
-    return __libc_memalign(alignment, size);
-}
-int posix_memalign(void **pointer, std::size_t alignment, std::size_t size)
-{
-    counted();
-    *pointer = __libc_memalign(alignment, size);
-    return *pointer ? 0 : 12; // ENOMEM
-}
-} // extern "C"
-#endif
 
 using namespace mbscope;
 
@@ -89,15 +16,13 @@ class TestAllocations : public QObject
 private slots:
     void initTestCase()
     {
-        if (!MBSCOPE_COUNT_ALLOCATIONS)
+        if (!allocationcounter::available)
             QSKIP("allocations cannot be counted in this build (a sanitizer owns the allocator, or not glibc)");
         // The counter must see allocations: a test that cannot fail proves nothing.
-        g_allocations = 0;
-        g_counting = true;
+        allocationcounter::start();
         QByteArray probe(100, 'x');
         probe.append("more, to be sure it reallocates or allocates");
-        g_counting = false;
-        QVERIFY(g_allocations.load() > 0);
+        QVERIFY(allocationcounter::stop() > 0);
     }
 
     void dissectAllocatesNothing_data()
@@ -151,12 +76,10 @@ private slots:
         Dissector::dissect(frame, options, out); // warm up: the tree grows to the frame's size once
         QVERIFY2(out.isValid(), "the frame must be valid: problem messages are allowed to allocate");
 
-        g_allocations = 0;
-        g_counting = true;
+        allocationcounter::start();
         for (int i = 0; i < 1000; ++i)
             Dissector::dissect(frame, options, out);
-        g_counting = false;
-        QCOMPARE(g_allocations.load(), 0L);
+        QCOMPARE(allocationcounter::stop(), 0L);
         QVERIFY(out.isValid());
     }
 };

@@ -1,54 +1,7 @@
+// No allocation on valid 07, 08, 0B, 0C, 11 and 2B frames once the field tree is warmed up
+// (issue 2: no per-field heap allocation on the hot path), counted by allocationcounter.h.
+#include "allocationcounter.h"
 #include "diagtestsupport.h"
-
-#include <atomic>
-#include <cstddef>
-
-// Counts every heap allocation of this executable, to check that dissecting a frame with no
-// problem allocates nothing once the field tree is warmed up (issue 2: no per-field heap
-// allocation on the hot path). Qt's containers and strings call malloc/realloc directly and
-// operator new ends in malloc, so the count wraps glibc's allocator entry points; under
-// AddressSanitizer, which owns malloc, the test is skipped.
-static std::atomic<long> g_allocations{0};
-
-#if defined(__SANITIZE_ADDRESS__)
-#define MBSCOPE_COUNT_ALLOCATIONS 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define MBSCOPE_COUNT_ALLOCATIONS 0
-#endif
-#endif
-#if !defined(MBSCOPE_COUNT_ALLOCATIONS) && defined(__GLIBC__)
-#define MBSCOPE_COUNT_ALLOCATIONS 1
-#endif
-#if !defined(MBSCOPE_COUNT_ALLOCATIONS)
-#define MBSCOPE_COUNT_ALLOCATIONS 0
-#endif
-
-#if MBSCOPE_COUNT_ALLOCATIONS
-extern "C" {
-void *__libc_malloc(std::size_t size);
-void *__libc_calloc(std::size_t count, std::size_t size);
-void *__libc_realloc(void *p, std::size_t size);
-
-void *malloc(std::size_t size)
-{
-    ++g_allocations;
-    return __libc_malloc(size);
-}
-
-void *calloc(std::size_t count, std::size_t size)
-{
-    ++g_allocations;
-    return __libc_calloc(count, size);
-}
-
-void *realloc(void *p, std::size_t size)
-{
-    ++g_allocations;
-    return __libc_realloc(p, size);
-}
-}
-#endif
 
 using namespace diagtest;
 
@@ -98,29 +51,28 @@ private slots:
         QFETCH(QByteArray, pdu);
         QFETCH(int, direction);
         QFETCH(QByteArray, request);
-        if (!MBSCOPE_COUNT_ALLOCATIONS)
-            QSKIP("allocations are not counted under AddressSanitizer or without glibc");
+        if (!allocationcounter::available)
+            QSKIP("allocations are not counted under a sanitizer or without glibc");
         FieldTree tree;
         dissect(tree, pdu, Direction(direction), request); // warm up: the field vector grows once
         QVERIFY(tree.worstSeverity() <= Severity::Info);
-        const long before = g_allocations.load();
+        allocationcounter::start();
         for (int i = 0; i < 10; ++i)
             dissect(tree, pdu, Direction(direction), request);
-        const long after = g_allocations.load();
-        QCOMPARE(after - before, 0L);
+        QCOMPARE(allocationcounter::stop(), 0L);
     }
 
     // The counter itself works: a flagged frame builds its message on the heap.
     void flaggedFramesDoAllocate()
     {
-        if (!MBSCOPE_COUNT_ALLOCATIONS)
-            QSKIP("allocations are not counted under AddressSanitizer or without glibc");
+        if (!allocationcounter::available)
+            QSKIP("allocations are not counted under a sanitizer or without glibc");
         FieldTree tree;
         const QByteArray pdu = hex("08 00 01 12 34");
         dissect(tree, pdu, Direction::Request);
-        const long before = g_allocations.load();
+        allocationcounter::start();
         dissect(tree, pdu, Direction::Request);
-        QVERIFY(g_allocations.load() > before);
+        QVERIFY(allocationcounter::stop() > 0);
     }
 };
 
