@@ -86,7 +86,6 @@ bool UdpLink::write(const QByteArray &bytes)
 
 void UdpLink::onReadyRead()
 {
-    const qint64 now = monotonicNowNs();
     // Bounded: at most what was queued when the handler started plus what comes meanwhile; a
     // socket that keeps failing (an ICMP error pending) ends the loop.
     for (int i = 0; i < 4096 && m_socket && m_socket->hasPendingDatagrams(); ++i) {
@@ -97,6 +96,10 @@ void UdpLink::onReadyRead()
         const qint64 got = m_socket->readDatagram(datagram.data(), datagram.size());
         if (got < 0)
             break;
+        // Stamped per datagram, right after it was read: the engine may write the next request
+        // from inside bytesReceived, and a datagram queued behind must not carry a time taken
+        // before that write (it would be refused as arriving before its request).
+        const qint64 now = monotonicNowNs();
         datagram.truncate(got);
         if (!datagram.isEmpty())
             emit bytesReceived(datagram, now, now);
