@@ -86,7 +86,7 @@ void PollRunner::onProgress(const EngineProgress &p)
     text += QStringLiteral("  %1").arg(QString::number(double(p.elapsedNs) / 1e9, 'f', 1));
     if (p.durationNs > 0)
         text += QStringLiteral("/%1").arg(QString::number(double(p.durationNs) / 1e9, 'f', 1));
-    text += QStringLiteral(" s  (Ctrl-C: stop and print statistics)");
+    text += QStringLiteral(" s  (Ctrl-C stops)");
     m_line.show(text);
 }
 
