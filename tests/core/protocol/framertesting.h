@@ -1,10 +1,12 @@
 #pragma once
 
 // Shared by the framer tests: feed a stream in several ways and describe what came out as lines
-// that read like the expectations ("frame @8 0103...15DD", "skip @0 2 crc").
+// that read like the expectations ("frame @8 0103...15DD", "skip @0 2 crc"), which frame() and
+// skip() write.
 
 #include "protocol/streamframer.h"
 
+#include <QtCore/QRandomGenerator>
 #include <QtCore/QStringList>
 #include <QtTest/QtTest>
 
@@ -44,6 +46,19 @@ inline const char *statusToken(mbscope::FrameStatus status)
     return " ?";
 }
 
+// "frame @offset HEX[ status]": status is "" (valid) or " unverified", " truncated", " malformed".
+inline QString frame(qint64 offset, const QByteArray &bytes, const char *status = "")
+{
+    return QStringLiteral("frame @%1 %2%3").arg(offset).arg(QString::fromLatin1(bytes.toHex().toUpper()),
+                                                             QLatin1String(status));
+}
+
+// "skip @offset count reason", reason as reasonToken() writes it.
+inline QString skip(qint64 offset, qint64 count, const char *reason)
+{
+    return QStringLiteral("skip @%1 %2 %3").arg(offset).arg(count).arg(QLatin1String(reason));
+}
+
 struct Outcome {
     QList<mbscope::StreamFrame> frames;
     QList<mbscope::SkippedBytes> skipped;
@@ -60,16 +75,10 @@ struct Outcome {
     [[nodiscard]] QStringList describe() const
     {
         QList<std::pair<qint64, QString>> lines;
-        for (const auto &frame : frames)
-            lines.append({frame.offset, QStringLiteral("frame @%1 %2%3")
-                                            .arg(frame.offset)
-                                            .arg(QString::fromLatin1(frame.bytes.toHex().toUpper()),
-                                                 QLatin1String(statusToken(frame.status)))});
+        for (const auto &f : frames)
+            lines.append({f.offset, frame(f.offset, f.bytes, statusToken(f.status))});
         for (const auto &run : skipped)
-            lines.append({run.offset, QStringLiteral("skip @%1 %2 %3")
-                                          .arg(run.offset)
-                                          .arg(run.count())
-                                          .arg(QLatin1String(reasonToken(run.reason)))});
+            lines.append({run.offset, skip(run.offset, run.count(), reasonToken(run.reason))});
         std::stable_sort(lines.begin(), lines.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
         QStringList out;
         for (const auto &line : lines)
@@ -138,6 +147,36 @@ inline void checkAllChunkings(const Factory &make, const QByteArray &stream, con
     }
     for (qsizetype at = 1; at < stream.size() && !QTest::currentTestFailed(); ++at)
         check({at}, "cut in two");
+}
+
+// Feeds the stream whole, then in random chunks of 1 to maxChunk - 1 bytes (a silence at the end
+// of both when asked): the chunked run must give the same lines, account for every byte and never
+// hold more than maxPending bytes.
+inline void checkRandomChunks(const Factory &make, const QByteArray &stream, QRandomGenerator &random, int maxChunk,
+                              qsizetype maxPending, bool silence)
+{
+    auto whole = make();
+    whole->feed(stream);
+    if (silence)
+        whole->flushOnSilence();
+    Outcome reference;
+    reference.take(*whole);
+    QVERIFY(reference.accountsFor(stream.size()));
+
+    auto chunked = make();
+    Outcome outcome;
+    for (qsizetype at = 0; at < stream.size();) {
+        const qsizetype length = qMin<qsizetype>(random.bounded(1, maxChunk), stream.size() - at);
+        chunked->feed(QByteArrayView(stream).sliced(at, length));
+        QVERIFY(chunked->pendingSize() < maxPending);
+        outcome.take(*chunked);
+        at += length;
+    }
+    if (silence)
+        chunked->flushOnSilence();
+    outcome.take(*chunked);
+    QCOMPARE(outcome.describe(), reference.describe());
+    QVERIFY(outcome.accountsFor(stream.size()));
 }
 
 } // namespace framertesting

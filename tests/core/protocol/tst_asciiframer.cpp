@@ -7,6 +7,8 @@
 #include <QtTest/QtTest>
 
 using namespace mbscope;
+using framertesting::frame;
+using framertesting::skip;
 
 // ASCII framing by ':' and CR LF (MODBUS over Serial Line V1.02, 2.5.2). Frames: the serial
 // tutorial's ":070300C800042A" (tests/data, published-frames) and the spec's example
@@ -16,15 +18,6 @@ class TestAsciiFramer : public QObject
     Q_OBJECT
 private:
     static std::unique_ptr<StreamFramer> make() { return std::make_unique<AsciiFramer>(); }
-    static QString frame(qint64 offset, const QByteArray &bytes, const char *status = "")
-    {
-        return QStringLiteral("frame @%1 %2%3").arg(offset).arg(QString::fromLatin1(bytes.toHex().toUpper()),
-                                                                 QLatin1String(status));
-    }
-    static QString skip(qint64 offset, int count, const char *reason)
-    {
-        return QStringLiteral("skip @%1 %2 %3").arg(offset).arg(count).arg(QLatin1String(reason));
-    }
 
 private slots:
     void stream_data()
@@ -162,26 +155,9 @@ private slots:
                                                         : char(random.bounded(256)));
                 }
             }
-            AsciiFramer whole;
-            whole.feed(stream);
-            whole.flushOnSilence();
-            framertesting::Outcome reference;
-            reference.take(whole);
-            QVERIFY(reference.accountsFor(stream.size()));
-
-            AsciiFramer chunked;
-            framertesting::Outcome outcome;
-            for (qsizetype at = 0; at < stream.size();) {
-                const qsizetype length = qMin<qsizetype>(random.bounded(1, 100), stream.size() - at);
-                chunked.feed(QByteArrayView(stream).sliced(at, length));
-                QVERIFY(chunked.pendingSize() < AsciiFramer::kMaxFrameSize + 100);
-                outcome.take(chunked);
-                at += length;
-            }
-            chunked.flushOnSilence();
-            outcome.take(chunked);
-            QCOMPARE(outcome.describe(), reference.describe());
-            QVERIFY(outcome.accountsFor(stream.size()));
+            framertesting::checkRandomChunks(make, stream, random, 100, AsciiFramer::kMaxFrameSize + 100, true);
+            if (QTest::currentTestFailed())
+                return;
         }
     }
 };

@@ -5,6 +5,8 @@
 #include <QtTest/QtTest>
 
 using namespace mbscope;
+using framertesting::frame;
+using framertesting::skip;
 
 Q_DECLARE_METATYPE(mbscope::DelimitedFraming)
 
@@ -20,15 +22,6 @@ private:
     static DelimitedFraming enqEot(DelimitedChecksum checksum)
     {
         return DelimitedFraming{true, 0x05, 0x04, checksum, true};
-    }
-    static QString frame(qint64 offset, const QByteArray &bytes, const char *status = "")
-    {
-        return QStringLiteral("frame @%1 %2%3").arg(offset).arg(QString::fromLatin1(bytes.toHex().toUpper()),
-                                                                 QLatin1String(status));
-    }
-    static QString skip(qint64 offset, int count, const char *reason)
-    {
-        return QStringLiteral("skip @%1 %2 %3").arg(offset).arg(count).arg(QLatin1String(reason));
     }
 
 private slots:

@@ -7,6 +7,8 @@
 #include <QtTest/QtTest>
 
 using namespace mbscope;
+using framertesting::frame;
+using framertesting::skip;
 
 Q_DECLARE_METATYPE(mbscope::Direction)
 
@@ -19,15 +21,6 @@ class TestRtuFramer : public QObject
 private:
     static QByteArray hex(const char *text) { return QByteArray::fromHex(text); }
     static QByteArray rtu(const char *pdu, quint8 unit = 0x11) { return AduBuilder::rtu(hex(pdu), unit); }
-    static QString frame(qint64 offset, const QByteArray &bytes, const char *status = "")
-    {
-        return QStringLiteral("frame @%1 %2%3").arg(offset).arg(QString::fromLatin1(bytes.toHex().toUpper()),
-                                                                 QLatin1String(status));
-    }
-    static QString skip(qint64 offset, int count, const char *reason)
-    {
-        return QStringLiteral("skip @%1 %2 %3").arg(offset).arg(count).arg(QLatin1String(reason));
-    }
     // Every request/response pair of V1.1b3 section 6 (its own examples where it gives them).
     static QList<std::pair<QByteArray, QByteArray>> pairs()
     {
