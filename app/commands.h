@@ -16,6 +16,10 @@ int runHeadless(const QStringList &arguments);
 int runGui(QApplication &app);
 #endif
 
+// A subcommand's --help text with its real usage line ("Usage: mbscope poll [options]") instead of
+// the executable's path that QCommandLineParser puts there.
+[[nodiscard]] QString subcommandHelp(const QString &helpText, const char *name);
+
 // Exit statuses shared by every subcommand.
 // A link error (nothing reached the device: refused, no such host or port) ends a command as a
 // usage error does: the command could not do what it was asked.

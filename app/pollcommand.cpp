@@ -44,7 +44,7 @@ int runPollOrSweep(const QStringList &arguments, bool sweep)
         return ExitUsage;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
+        out << subcommandHelp(parser.helpText(), name);
         return ExitOk;
     }
     if (!parser.positionalArguments().isEmpty()) {

@@ -43,8 +43,9 @@ PollOptions::PollOptions(bool sweep)
                                 "default 1)."),
                  QStringLiteral("n"), QStringLiteral("1"))
     , m_stats(QStringLiteral("stats"),
-              QStringLiteral("Detailed statistics: each request's own, the latency histogram as text, and what the "
-                             "engine counted (retries, late and unsolicited answers, bytes, connections)."))
+              QStringLiteral("Detailed statistics: the latency histogram as text, and what the engine counted "
+                             "(retries, late and unsolicited answers, bytes, connections)%1.")
+                  .arg(sweep ? QStringLiteral("; each interval's full statistics") : QString()))
     , m_histogram(QStringLiteral("histogram"),
                   QStringLiteral("Draw the latency histogram into a PNG file (no display needed)."),
                   QStringLiteral("file.png"))

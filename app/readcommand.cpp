@@ -40,7 +40,7 @@ int runRead(const QStringList &arguments)
         return ExitUsage;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
+        out << subcommandHelp(parser.helpText(), "read");
         return ExitOk;
     }
     if (!parser.positionalArguments().isEmpty()) {

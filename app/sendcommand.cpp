@@ -36,7 +36,7 @@ int runSend(const QStringList &arguments)
         return ExitUsage;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
+        out << subcommandHelp(parser.helpText(), "send");
         return ExitOk;
     }
     if (!parser.positionalArguments().isEmpty()) {

@@ -40,7 +40,7 @@ int runWrite(const QStringList &arguments)
         return ExitUsage;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
+        out << subcommandHelp(parser.helpText(), "write");
         return ExitOk;
     }
     if (!parser.positionalArguments().isEmpty()) {

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <map>
 
+using namespace mbscope;
 using namespace mbscope::testcli;
 
 class TestCliExchange : public QObject
@@ -41,6 +42,10 @@ private slots:
     void usageErrors();
     void linkRefused_data();
     void linkRefused();
+    void readOverSerialPty_data();
+    void readOverSerialPty();
+    void help_data();
+    void help();
 };
 
 QString TestCliExchange::target(const QString &mode, QString *error)
@@ -416,6 +421,54 @@ void TestCliExchange::linkRefused()
         QVERIFY2(r.out.isEmpty(), r.describe());
     else
         QVERIFY2(r.outText().contains(QLatin1String("RESULT link_error: ")), r.describe());
+}
+
+void TestCliExchange::readOverSerialPty_data()
+{
+    QTest::addColumn<QString>("scheme");
+    QTest::newRow("rtu") << "rtu";
+    QTest::newRow("ascii") << "ascii";
+}
+
+void TestCliExchange::readOverSerialPty()
+{
+    QFETCH(QString, scheme);
+    QString why;
+    if (!testpeers::pymodbusAvailable(&why) || !testpeers::socatAvailable(&why))
+        QSKIP(qPrintable(why));
+    testpeers::PtyPair pty;
+    QVERIFY2(pty.start(), qPrintable(pty.error()));
+    testpeers::PeerProcess peer;
+    QVERIFY2(peer.start(testpeers::systemPython(), {testpeers::peersDir() + QStringLiteral("/pymodbus_server.py"), scheme,
+                                                    QStringLiteral("--device"), pty.peerEnd()}),
+             qPrintable(peer.error()));
+    // The peer runs 8N1 (pymodbus_server.py); the pty ignores the rate, the engine's t3.5 follows it.
+    const QString url = QStringLiteral("%1://%2?baud=115200&parity=N&data=8&stop=1").arg(scheme, pty.ourEnd());
+    const CliResult r = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), url, QStringLiteral("--address"),
+                                    QStringLiteral("0x79"), QStringLiteral("--quantity"), QStringLiteral("2"),
+                                    QStringLiteral("--timeout"), QStringLiteral("3s"), QStringLiteral("--json")});
+    QVERIFY2(r.exitCode == 0, r.describe());
+    const QJsonArray values = r.json().value(QStringLiteral("values")).toArray();
+    QCOMPARE(values.size(), 2);
+    QCOMPARE(values.at(0).toObject().value(QStringLiteral("raw")).toInt(), int(holdingRegister(121)));
+    QCOMPARE(values.at(1).toObject().value(QStringLiteral("raw")).toInt(), int(holdingRegister(122)));
+}
+
+void TestCliExchange::help_data()
+{
+    QTest::addColumn<QString>("command");
+    for (const char *c : {"send", "read", "write", "poll", "sweep"})
+        QTest::newRow(c) << QString::fromLatin1(c);
+}
+
+void TestCliExchange::help()
+{
+    QFETCH(QString, command);
+    const CliResult r = runMbscope({command, QStringLiteral("--help")});
+    QVERIFY2(r.exitCode == 0, r.describe());
+    QVERIFY2(r.outText().startsWith(QStringLiteral("Usage: mbscope %1 [options]\n").arg(command)), r.describe());
+    for (const char *expected : {"--target <url>", "--timeout <duration>", "--json", "Exit status: 0"})
+        QVERIFY2(r.outText().contains(QLatin1String(expected)), r.describe());
 }
 
 QTEST_GUILESS_MAIN(TestCliExchange)
