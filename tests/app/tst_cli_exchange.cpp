@@ -87,6 +87,9 @@ void TestCliExchange::sendExact_data()
                                              << "01 03 04 05 53 05 56 89 80";
     QTest::newRow("udp 12 34 00 00 00 06 01 03 00 79 00 02") << "udp" << "12 34 00 00 00 06 01 03 00 79 00 02"
                                                              << "12 34 00 00 00 07 01 03 04 05 53 05 56";
+    // On an ASCII link the frame may be typed as its characters; CR LF is added.
+    QTest::newRow(":01030079000281") << "ascii-tcp" << ":01030079000281"
+                                     << QString::fromLatin1(QByteArray(":0103040553055645\r\n").toHex(' ').toUpper());
 }
 
 void TestCliExchange::sendExact()
@@ -103,7 +106,10 @@ void TestCliExchange::sendExact()
     QVERIFY2(r.exitCode == 0, r.describe());
     const QJsonObject o = r.json();
     QCOMPARE(o.value(QStringLiteral("status")).toString(), QStringLiteral("ok"));
-    QCOMPARE(o.value(QStringLiteral("request")).toObject().value(QStringLiteral("hex")).toString(), request);
+    const QString sent = request.startsWith(QLatin1Char(':'))
+                             ? QString::fromLatin1((request.toLatin1() + "\r\n").toHex(' ').toUpper())
+                             : request;
+    QCOMPARE(o.value(QStringLiteral("request")).toObject().value(QStringLiteral("hex")).toString(), sent);
     QCOMPARE(o.value(QStringLiteral("response")).toObject().value(QStringLiteral("hex")).toString(), response);
     QVERIFY(o.value(QStringLiteral("latency_us")).toDouble() > 0);
     QCOMPARE(o.value(QStringLiteral("target")).toString(), url);
