@@ -1,13 +1,10 @@
 #include "delimitedframer.h"
 
+#include "hexformat.h"
+
 namespace mbscope {
 
 namespace {
-
-QString hexByte(quint8 value)
-{
-    return QString::number(value, 16).toUpper().rightJustified(2, QLatin1Char('0'));
-}
 
 // ASCII control character names (ANSI X3.4 / ISO 646), as protocol documents write them.
 constexpr const char *kControlNames[32] = {
@@ -59,7 +56,7 @@ QString DelimitedFramer::toText(QByteArrayView bytes)
         else if (b == 0x7F)
             text += QLatin1String("<DEL>");
         else if (b > 0x7F)
-            text += QLatin1String("\\x") + hexByte(b);
+            text += QLatin1String("\\x") + hexDigits(b, 2);
         else
             text += QLatin1Char(c);
     }
@@ -139,7 +136,7 @@ void DelimitedFramer::emitChecked(qsizetype length)
     const QString how = m_framing.checksum == DelimitedChecksum::Sum ? QStringLiteral("8-bit sum (BCC)")
                                                                      : QStringLiteral("XOR");
     emitFrame(length, FrameStatus::Malformed,
-              QStringLiteral("checksum 0x%1 does not match 0x%2, the %3 of the %4 bytes up to the end byte")
+              QStringLiteral("checksum %1 does not match %2, the %3 of the %4 bytes up to the end byte")
                   .arg(hexByte(got), hexByte(expected), how)
                   .arg(length - 1));
 }
