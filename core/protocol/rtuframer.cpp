@@ -22,6 +22,17 @@ bool crcValid(QByteArrayView frame)
 
 constexpr int kMinAduSize = 4; // unit id, function code, CRC
 
+// halves / 2 character times of 11 bits at baud, or fixedNs above 19200 baud, where Serial Line
+// V1.02, 2.5.1.1 fixes t1.5 at 750 us and t3.5 at 1.75 ms.
+qint64 characterIntervalNs(int baud, int halves, qint64 fixedNs)
+{
+    if (baud <= 0)
+        return 0;
+    if (baud > 19200)
+        return fixedNs;
+    return halves * 1'000'000'000LL * 11 / (2LL * baud);
+}
+
 } // namespace
 
 RtuFramer::RtuFramer(Direction direction)
@@ -38,20 +49,12 @@ qint64 RtuFramer::characterTimeNs(int baud)
 
 qint64 RtuFramer::t15Ns(int baud)
 {
-    if (baud <= 0)
-        return 0;
-    if (baud > 19200)
-        return 750'000;
-    return 15LL * 1'000'000'000LL * 11 / (10LL * baud);
+    return characterIntervalNs(baud, 3, 750'000);
 }
 
 qint64 RtuFramer::t35Ns(int baud)
 {
-    if (baud <= 0)
-        return 0;
-    if (baud > 19200)
-        return 1'750'000;
-    return 35LL * 1'000'000'000LL * 11 / (10LL * baud);
+    return characterIntervalNs(baud, 7, 1'750'000);
 }
 
 bool RtuFramer::onSilence(qint64 nowNs)
