@@ -149,6 +149,23 @@ inline void checkAllChunkings(const Factory &make, const QByteArray &stream, con
         check({at}, "cut in two");
 }
 
+// The stream test of a framer: columns stream, expected (lines) and silence, after any columns of
+// the framer's own settings; each row checked by checkAllChunkings.
+inline void streamColumns()
+{
+    QTest::addColumn<QByteArray>("stream");
+    QTest::addColumn<QStringList>("expected");
+    QTest::addColumn<bool>("silence");
+}
+
+inline void checkStreamRow(const Factory &make)
+{
+    QFETCH(QByteArray, stream);
+    QFETCH(QStringList, expected);
+    QFETCH(bool, silence);
+    checkAllChunkings(make, stream, expected, silence);
+}
+
 // Feeds the stream whole, then in random chunks of 1 to maxChunk - 1 bytes (a silence at the end
 // of both when asked): the chunked run must give the same lines, account for every byte and never
 // hold more than maxPending bytes.

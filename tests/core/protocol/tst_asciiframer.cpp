@@ -22,9 +22,7 @@ private:
 private slots:
     void stream_data()
     {
-        QTest::addColumn<QByteArray>("stream");
-        QTest::addColumn<QStringList>("expected");
-        QTest::addColumn<bool>("silence");
+        framertesting::streamColumns();
 
         const QByteArray tutorial(":070300C800042A\r\n");
         const QByteArray spec(":1103006B00037E\r\n");
@@ -77,13 +75,7 @@ private slots:
                                                  skip(513, 88, "noframe"), frame(601, tutorial)}
                                   << false;
     }
-    void stream()
-    {
-        QFETCH(QByteArray, stream);
-        QFETCH(QStringList, expected);
-        QFETCH(bool, silence);
-        framertesting::checkAllChunkings(&make, stream, expected, silence);
-    }
+    void stream() { framertesting::checkStreamRow(&make); }
 
     void problems_data()
     {

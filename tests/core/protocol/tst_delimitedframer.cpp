@@ -28,9 +28,7 @@ private slots:
     void stream_data()
     {
         QTest::addColumn<DelimitedFraming>("framing");
-        QTest::addColumn<QByteArray>("stream");
-        QTest::addColumn<QStringList>("expected");
-        QTest::addColumn<bool>("silence");
+        framertesting::streamColumns();
 
         const QByteArray request("$01R#");
         const QByteArray answer("$01 293 295 #");
@@ -111,11 +109,7 @@ private slots:
     void stream()
     {
         QFETCH(DelimitedFraming, framing);
-        QFETCH(QByteArray, stream);
-        QFETCH(QStringList, expected);
-        QFETCH(bool, silence);
-        framertesting::checkAllChunkings([framing] { return std::make_unique<DelimitedFramer>(framing); }, stream, expected,
-                                         silence);
+        framertesting::checkStreamRow([framing] { return std::make_unique<DelimitedFramer>(framing); });
     }
 
     void malformedProblem()

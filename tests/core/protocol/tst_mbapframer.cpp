@@ -20,9 +20,7 @@ private:
 private slots:
     void stream_data()
     {
-        QTest::addColumn<QByteArray>("stream");
-        QTest::addColumn<QStringList>("expected");
-        QTest::addColumn<bool>("silence");
+        framertesting::streamColumns();
 
         const QByteArray m221Request = hex("000100000009001000000001020" "0CD");
         const QByteArray m221Reply = hex("000100000006001000000001");
@@ -90,13 +88,7 @@ private slots:
                            QStringLiteral("skip @15 11 header"), QStringLiteral("frame @26 000100000006001000000001")}
             << false;
     }
-    void stream()
-    {
-        QFETCH(QByteArray, stream);
-        QFETCH(QStringList, expected);
-        QFETCH(bool, silence);
-        framertesting::checkAllChunkings(&make, stream, expected, silence);
-    }
+    void stream() { framertesting::checkStreamRow(&make); }
 
     void timestamps()
     {

@@ -80,9 +80,7 @@ private slots:
     void stream_data()
     {
         QTest::addColumn<Direction>("direction");
-        QTest::addColumn<QByteArray>("stream");
-        QTest::addColumn<QStringList>("expected");
-        QTest::addColumn<bool>("silence");
+        framertesting::streamColumns();
         const Direction Req = Direction::Request;
         const Direction Rsp = Direction::Response;
         const Direction Auto = Direction::Auto;
@@ -196,11 +194,7 @@ private slots:
     void stream()
     {
         QFETCH(Direction, direction);
-        QFETCH(QByteArray, stream);
-        QFETCH(QStringList, expected);
-        QFETCH(bool, silence);
-        framertesting::checkAllChunkings([direction] { return std::make_unique<RtuFramer>(direction); }, stream,
-                                         expected, silence);
+        framertesting::checkStreamRow([direction] { return std::make_unique<RtuFramer>(direction); });
     }
 
     // Every code's request and response, one after another, in each framer direction.
