@@ -11,6 +11,18 @@ namespace {
 const char *const kMissingKey = "modbus.missing";
 const char *const kMissingName = "Missing bytes";
 
+// The missing field itself: from pduOffset (clamped into the PDU) to its end, showing any partial
+// bytes, flagged with message.
+int missingField(const PduContext &ctx, int parent, int pduOffset, const QString &message)
+{
+    const int from = qBound(0, pduOffset, qMax(ctx.length, 0));
+    const int have = qMax(0, ctx.length - from);
+    const int f = ctx.addChild(parent, kMissingKey, kMissingName, from, have, 0,
+                               have > 0 ? ValueFormat::Bytes : ValueFormat::None);
+    ctx.tree.flag(f, Severity::Error, message);
+    return f;
+}
+
 QString moreBytes(int n, bool atLeast)
 {
     return QStringLiteral("expected %1%2").arg(atLeast ? QStringLiteral("at least ") : QString(),
@@ -66,31 +78,21 @@ QString functionLabel(const PduContext &ctx)
 
 int missing(const PduContext &ctx, int parent, int pduOffset, int pduSize, bool atLeast, const char *what)
 {
-    const int from = qBound(0, pduOffset, qMax(ctx.length, 0));
-    const int have = qMax(0, ctx.length - from);
-    const int f = ctx.addChild(parent, kMissingKey, kMissingName, from, have, 0,
-                               have > 0 ? ValueFormat::Bytes : ValueFormat::None);
-    ctx.tree.flag(f, Severity::Error,
-                  QStringLiteral("missing: %1; %2")
-                      .arg(QLatin1String(what), moreBytes(qMax(1, pduSize - ctx.length), atLeast)));
-    return f;
+    return missingField(ctx, parent, pduOffset,
+                        QStringLiteral("missing: %1; %2")
+                            .arg(QLatin1String(what), moreBytes(qMax(1, pduSize - ctx.length), atLeast)));
 }
 
 int missingData(const PduContext &ctx, int parent, int from, int countStart, int countEnd, const char *counter)
 {
     const int announced = countEnd - countStart;
     const int present = qBound(0, ctx.length - countStart, announced);
-    const int start = qBound(0, from, qMax(ctx.length, 0));
-    const int have = qMax(0, ctx.length - start);
-    const int f = ctx.addChild(parent, kMissingKey, kMissingName, start, have, 0,
-                               have > 0 ? ValueFormat::Bytes : ValueFormat::None);
-    ctx.tree.flag(f, Severity::Error,
-                  QStringLiteral("missing: %1 %2 announces %3 but only %4 present; %5")
-                      .arg(QLatin1String(counter), QString::number(announced),
-                           amount(announced, "data byte", "data bytes"),
-                           present == 1 ? QStringLiteral("1 is") : QString::number(present) + QStringLiteral(" are"),
-                           moreBytes(countEnd - ctx.length, false)));
-    return f;
+    return missingField(ctx, parent, from,
+                        QStringLiteral("missing: %1 %2 announces %3 but only %4 present; %5")
+                            .arg(QLatin1String(counter), QString::number(announced),
+                                 amount(announced, "data byte", "data bytes"),
+                                 present == 1 ? QStringLiteral("1 is") : QString::number(present) + QStringLiteral(" are"),
+                                 moreBytes(countEnd - ctx.length, false)));
 }
 
 bool trailing(const PduContext &ctx, int pduEnd)
