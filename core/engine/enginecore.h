@@ -133,6 +133,7 @@ private:
     void answer(qsizetype index, const StreamFrame &frame, qint64 firstNs, qint64 lastNs);
     [[nodiscard]] bool tryLate(const StreamFrame &frame, const FrameKeys &keys, qint64 firstNs, qint64 lastNs);
     [[nodiscard]] bool isDuplicate(const FrameKeys &keys) const;
+    bool duplicateFirst(const FrameKeys &keys);
     void unsolicited(const QByteArray &bytes, qint64 firstNs);
     void onSilence();
     void armSilence();
@@ -179,6 +180,8 @@ private:
     bool m_processing = false;     // handling the frames of one read
     bool m_pumpAfterProcessing = false;
     bool m_closingQuietly = false; // closing on purpose: the closed() that follows says nothing new
+    bool m_linkLost = false;
+    bool m_duplicateSeen = false;  // set by duplicateFirst() for the frame being handled       // flushing what a lost link left: a cut answer is a link error
     qint64 m_lastBatchNs = 0;
     QList<Transaction> m_batch;
     EngineCounters m_counters;

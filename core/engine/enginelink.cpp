@@ -59,7 +59,9 @@ void EngineCore::onLinkError(const LinkError &error)
     m_opening = false;
     m_deferPump = true;
     emit linkMessage(error.message);
+    m_linkLost = true;
     const qint64 held = flushPartial();
+    m_linkLost = false;
     // Some errors leave the link open (UDP "port unreachable", a serial write error); a lost
     // link says so with closed() after this.
     const bool stillOpen = m_link && m_link->state() == Link::State::Open;
@@ -84,7 +86,9 @@ void EngineCore::onClosed(const QString &reason)
     const bool wasOpening = m_opening;
     m_opening = false;
     m_openTimer.stop();
+    m_linkLost = true;
     const qint64 held = flushPartial();
+    m_linkLost = false;
     QString problem = QStringLiteral("%1: the link closed: %2").arg(m_url.toString(), reason);
     if (held > 0)
         problem += QStringLiteral(" (after %1 bytes of an unfinished answer)").arg(held);

@@ -105,7 +105,10 @@ void EngineCore::handleSkipped(const SkippedBytes &run, qint64 firstNs, qint64 l
     // An RTU answer with a wrong CRC, or cut short, cannot be delimited by the framer, which
     // skips it; its unit and function code may still name the pending request, whose status
     // then says what was wrong instead of a bare timeout.
-    const bool rtuCandidate = !m_framing.delimited && m_framing.framing == Framing::Rtu && run.count() >= 4
+    // Bytes left unfinished when the link was lost are the link's failure, not a bad answer: the
+    // pending request ends as a link error that counts them.
+    const bool cutByLoss = m_linkLost && run.reason == SkipReason::Incomplete;
+    const bool rtuCandidate = !m_framing.delimited && m_framing.framing == Framing::Rtu && run.count() >= 4 && !cutByLoss
         && (run.reason == SkipReason::ChecksumMismatch || run.reason == SkipReason::Incomplete);
     if (rtuCandidate) {
         const FrameKeys keys = ResponseMatcher::keysOf(run.bytes, Framing::Rtu);
@@ -164,8 +167,11 @@ void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 la
             answer(candidate, frame, firstNs, lastNs);
             return;
         }
-        if (tryLate(frame, keys, firstNs, lastNs))
+        if (duplicateFirst(keys) || tryLate(frame, keys, firstNs, lastNs)) {
+            if (m_duplicateSeen)
+                unsolicited(frame.bytes, firstNs);
             return;
+        }
         if (isDuplicate(keys)) {
             ++m_counters.duplicateFrames;
             unsolicited(frame.bytes, firstNs);
@@ -175,14 +181,32 @@ void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 la
         finish(candidate, TransactionStatus::Unexpected, match.problem, frame.bytes, firstNs, lastNs);
         return;
     }
-    if (tryLate(frame, keys, firstNs, lastNs))
+    if (duplicateFirst(keys) || tryLate(frame, keys, firstNs, lastNs)) {
+        if (m_duplicateSeen)
+            unsolicited(frame.bytes, firstNs);
         return;
+    }
     if (isDuplicate(keys)) {
         ++m_counters.duplicateFrames;
         unsolicited(frame.bytes, firstNs);
         return;
     }
     unsolicited(frame.bytes, firstNs);
+}
+
+bool EngineCore::duplicateFirst(const FrameKeys &keys)
+{
+    // On RTU and ASCII only unit and function code name an answer, so a second copy of the answer
+    // just received would also "match" any older timed-out request with the same keys. A serial
+    // exchange is strictly sequential: the copy of a newer answer is a duplicate, not a late
+    // answer to an older request. MBAP answers carry their transaction id and need no such rule.
+    m_duplicateSeen = false;
+    const bool keyedById = m_framing.framing == Framing::Tcp || m_framing.framing == Framing::Udp;
+    if (keyedById || !isDuplicate(keys))
+        return false;
+    ++m_counters.duplicateFrames;
+    m_duplicateSeen = true;
+    return true;
 }
 
 void EngineCore::answer(qsizetype index, const StreamFrame &frame, qint64 firstNs, qint64 lastNs)

@@ -28,6 +28,12 @@ public:
     void flag(int index, Severity severity, const QString &message);
     void setAddress(int index, int address) { m_fields[size_t(index)].address = address; }
     void setMeaning(int index, const char *meaning) { m_fields[size_t(index)].meaning = meaning; }
+    void setSpan(int index, int offset, int length)
+    {
+        m_fields[size_t(index)].offset = offset;
+        m_fields[size_t(index)].length = length;
+    }
+    void setValue(int index, quint64 value) { m_fields[size_t(index)].value = value; }
 
     [[nodiscard]] const QByteArray &frame() const { return m_frame; }
     [[nodiscard]] int size() const { return int(m_fields.size()); }

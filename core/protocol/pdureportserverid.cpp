@@ -3,8 +3,9 @@
 // ID, the run indicator status and device-specific additional data.
 //
 // The spec leaves the server ID's length device specific. mbscope shows it as one byte, the
-// layout of libmodbus, FreeModbus and Wireshark; a run indicator that is neither 0x00 nor 0xFF
-// then says either a bad status or a longer server ID, and the message says both.
+// layout of libmodbus, FreeModbus and Wireshark, unless byte 3 is no run indicator status and the
+// last byte is one: then the server ID runs up to the last byte (pymodbus' layout). Otherwise a
+// run indicator that is neither 0x00 nor 0xFF gets a warning that says both readings.
 //
 // Keys: modbus.byte_count (Decimal), modbus.server_id (Bytes), modbus.run_indicator (Hex, ON/OFF),
 // modbus.additional_data (Bytes).
@@ -30,19 +31,32 @@ void dissectReportServerId(const PduContext &ctx)
     if (end < 0)
         return;
     const int r = f[2];
+    const int present = qMin(end, ctx.length);
     const quint8 run = ctx.byte(3);
-    if (run == 0x00) {
+    // Devices with a longer server ID (pymodbus sends its identity text) put the run indicator
+    // last: when byte 3 is no status but the last byte is, read the frame that way and say so.
+    const quint8 last = present > 4 ? ctx.byte(present - 1) : run;
+    int additionalFrom = 4;
+    if (run != 0x00 && run != 0xFF && present > 4 && (last == 0x00 || last == 0xFF)) {
+        ctx.tree.setSpan(f[1], ctx.offset + 2, present - 3);
+        ctx.tree.setSpan(r, ctx.offset + present - 1, 1);
+        ctx.tree.setValue(r, last);
+        ctx.tree.flag(f[1], Severity::Info,
+                      QStringLiteral("a %1-byte server ID: the run indicator status is read from the last byte "
+                                     "(V1.1b3 6.13 leaves the server ID's length to the device)").arg(present - 3));
+        ctx.tree.setMeaning(r, last == 0xFF ? "ON" : "OFF");
+        additionalFrom = present;
+    } else if (run == 0x00) {
         ctx.tree.setMeaning(r, "OFF");
     } else if (run == 0xFF) {
         ctx.tree.setMeaning(r, "ON");
     } else {
-        ctx.tree.flag(r, Severity::Error,
+        ctx.tree.flag(r, Severity::Warning,
                       QStringLiteral("%1 is not a run indicator status (0x00 OFF, 0xFF ON); if this device's server ID "
                                      "is longer than one byte, this byte is part of it").arg(hexByte(run)));
     }
-    const int present = qMin(end, ctx.length);
-    if (present > 4)
-        ctx.add("modbus.additional_data", "Additional data", 4, present - 4, 0, ValueFormat::Bytes);
+    if (present > additionalFrom)
+        ctx.add("modbus.additional_data", "Additional data", additionalFrom, present - additionalFrom, 0, ValueFormat::Bytes);
     countedEnd(ctx, end);
 }
 

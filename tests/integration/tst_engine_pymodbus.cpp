@@ -190,9 +190,6 @@ void TestEnginePymodbus::functionCodes()
     QByteArray sent;
     const std::optional<Transaction> tr = exchange(t, hex(c.request), 1, 3000, &sent);
     QVERIFY2(tr, "the engine recorded nothing");
-    if (QByteArray(c.name).startsWith("11 "))
-        QEXPECT_FAIL("", "engine bug: a valid 11 answer whose server ID is longer than one byte (V1.1b3 6.17: "
-                         "device specific) is judged malformed (the dissector's run indicator error)", Continue);
     QVERIFY2(tr->status == c.status, qPrintable(describe(tr)));
     QCOMPARE(int(tr->exceptionCode), c.exceptionCode);
     QCOMPARE(tr->request.toHex(' '), sent.toHex(' ')); // sent exactly as given

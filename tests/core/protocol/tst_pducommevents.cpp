@@ -145,10 +145,16 @@ private slots:
         rsp("11 02 01 FF", F11 " | modbus.byte_count=2 | modbus.server_id=01 | modbus.run_indicator=0xFF ON", "", "11");
         rsp("11 05 2A 00 4C 4D 42", F11 " | modbus.byte_count=5 | modbus.server_id=2A | modbus.run_indicator=0x00 OFF"
             " | modbus.additional_data=4C 4D 42");
-        rsp("11 03 01 55 00", F11 " | modbus.byte_count=3 | modbus.server_id=01 | modbus.run_indicator=0x55 !error"
-            " | modbus.additional_data=00",
+        rsp("11 03 01 55 42", F11 " | modbus.byte_count=3 | modbus.server_id=01 | modbus.run_indicator=0x55 !warning"
+            " | modbus.additional_data=42",
             "0x55 is not a run indicator status (0x00 OFF, 0xFF ON); if this device's server ID is longer than one "
             "byte, this byte is part of it");
+        // pymodbus' layout: the identity text, then the run indicator last.
+        rsp("11 03 01 55 00", F11 " | modbus.byte_count=3 | modbus.server_id=01 55 !info | modbus.run_indicator=0x00 OFF",
+            "a 2-byte server ID: the run indicator status is read from the last byte");
+        rsp("11 05 41 42 43 44 FF", F11 " | modbus.byte_count=5 | modbus.server_id=41 42 43 44 !info"
+            " | modbus.run_indicator=0xFF ON",
+            "a 4-byte server ID");
         rsp("11 01 01", F11 " | modbus.byte_count=1 !error | modbus.server_id=01 | modbus.missing= !error",
             "byte count 1 is too small: the server ID and the run indicator take at least 2 bytes"
             " | modbus.missing: missing: run indicator status; expected at least 1 more byte");
