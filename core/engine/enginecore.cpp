@@ -296,6 +296,7 @@ void EngineCore::onDeadline()
         Pending late = m_inFlight.at(i);
         late.timedOutNs = now;
         m_timedOut.append(late);
+        m_lastEndAnswered = false;
         while (m_timedOut.size() > qMax(0, m_options.lateWindow))
             m_timedOut.removeFirst();
         finish(i, TransactionStatus::Timeout, QStringLiteral("no answer within %1 ms").arg(late.out.item.timeoutMs) + partial);
@@ -329,6 +330,7 @@ void EngineCore::finish(qsizetype index, TransactionStatus status, const QString
     }
     if (!response.isEmpty()) {
         m_answered.append(p.out.item);
+        m_lastEndAnswered = true;
         if (m_answered.size() > 8)
             m_answered.removeFirst();
     }

@@ -181,7 +181,8 @@ private:
     bool m_pumpAfterProcessing = false;
     bool m_closingQuietly = false; // closing on purpose: the closed() that follows says nothing new
     bool m_linkLost = false;
-    bool m_duplicateSeen = false;  // set by duplicateFirst() for the frame being handled       // flushing what a lost link left: a cut answer is a link error
+    bool m_duplicateSeen = false;
+    bool m_lastEndAnswered = false; // the latest request to end was answered (not timed out)  // set by duplicateFirst() for the frame being handled       // flushing what a lost link left: a cut answer is a link error
     qint64 m_lastBatchNs = 0;
     QList<Transaction> m_batch;
     EngineCounters m_counters;

@@ -132,6 +132,14 @@ void EngineCore::handleSkipped(const SkippedBytes &run, qint64 firstNs, qint64 l
 
 void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 lastNs)
 {
+    if (m_linkLost && frame.status == FrameStatus::Truncated) {
+        // The link went away in the middle of an answer: the request ends as a link error that
+        // counts these bytes, not as a CRC error of a frame that never finished.
+        ++m_counters.skippedRuns;
+        m_counters.skippedBytes += quint64(frame.bytes.size());
+        logIncoming(frame.bytes, firstNs, TrafficVerdict::Garbage);
+        return;
+    }
     const FrameKeys keys = m_framing.delimited ? FrameKeys{} : ResponseMatcher::keysOf(frame.bytes, m_framing.framing);
     // An answer cannot begin before its request was written: only requests written before the
     // frame's first byte are candidates.
@@ -201,8 +209,11 @@ bool EngineCore::duplicateFirst(const FrameKeys &keys)
     // exchange is strictly sequential: the copy of a newer answer is a duplicate, not a late
     // answer to an older request. MBAP answers carry their transaction id and need no such rule.
     m_duplicateSeen = false;
+    // Only when the latest request to end was answered: after a timeout the frame may well be
+    // that request's late answer.
     const bool keyedById = m_framing.framing == Framing::Tcp || m_framing.framing == Framing::Udp;
-    if (keyedById || !isDuplicate(keys))
+    if (keyedById || !m_lastEndAnswered || m_answered.isEmpty() || m_answered.last().rule == MatchRule::NextFrame
+        || !ResponseMatcher::match(m_answered.last(), keys).matched())
         return false;
     ++m_counters.duplicateFrames;
     m_duplicateSeen = true;
