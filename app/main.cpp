@@ -29,7 +29,10 @@ int main(int argc, char *argv[])
         return mbscope::app::runHeadless(QCoreApplication::arguments());
     }
 #endif
-    if (subcommand || wantsHelp || !mbscope::app::hasGui()) {
+    // A first word that is no subcommand is a typo ("mbscope sned"): say so instead of opening
+    // the window.
+    const bool unknownWord = first && first[0] != '-' && !subcommand;
+    if (subcommand || unknownWord || wantsHelp || !mbscope::app::hasGui()) {
         QCoreApplication app(argc, argv);
         QCoreApplication::setApplicationName(QStringLiteral("mbscope"));
         QCoreApplication::setApplicationVersion(QStringLiteral(MBSCOPE_VERSION));
