@@ -243,7 +243,9 @@ class Connection(asyncio.Protocol):
             pass
         elif name == "close":
             write(adu[: max(1, len(adu) // 2)])
-            await asyncio.sleep(0.05)
+            # Well under the 50 ms an RTU-over-TCP client may take as the end of a frame: the
+            # close must come mid-frame, not after a silence that already ended the answer.
+            await asyncio.sleep(0.01)
             say(f"SERVED {number} {name}")  # closing cancels this task: report first
             self.transport.close()
             return
