@@ -9,10 +9,12 @@ build_pkgs=(
   qt6-base-dev qt6-base-dev-tools qt6-serialbus-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools
   qt6-l10n-tools libqcustomplot-dev libqcustomplot2.1-qt6 libgl-dev
   qt6-qpa-plugins
+  librsvg2-bin dpkg-dev
 )
 test_pkgs=(
   tshark socat libmodbus-dev mbpoll python3-pymodbus python3-serial python3-serial-asyncio
   xvfb clang libclang-rt-14-dev libbenchmark-dev xauth
+  desktop-file-utils appstream
 )
 
 want=("${build_pkgs[@]}")
