@@ -1,8 +1,9 @@
-// `mbscope simulate` against real clients: pymodbus (tcp, rtu-tcp), mbpoll (tcp, and rtu on a
-// socat pty), and 50 concurrent TCP clients of 1000 requests each. The command runs as a process
-// (mbscope_simulate_cli: the command alone), on ports the OS chooses (port 0), and is stopped
-// with SIGINT as a user stops it with Ctrl-C.
+// `mbscope simulate` against real clients: pymodbus (tcp, rtu-tcp, udp, rtu-udp, tls, and rtu and
+// ascii on socat ptys), mbpoll (tcp, and rtu on a socat pty), and 50 concurrent TCP clients of
+// 1000 requests each. The product executable runs as a process (`mbscope simulate`), on ports the
+// OS chooses (port 0), and is stopped with SIGINT as a user stops it with Ctrl-C.
 #include "peerprocess.h"
+#include "simcli.h"
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QEventLoop>
@@ -23,119 +24,11 @@
 #include <vector>
 
 using namespace mbscope::testpeers;
+using namespace mbscope::simtest;
 
 namespace {
 
 const QList<int> kPublished = {1050, 0, 0, 0, 250, 1, 1000, 10000, 4, 4, 80, 800, 8000};
-
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runProcess(const QString &program, const QStringList &args, int timeoutMs = 60000)
-{
-    QProcess p;
-    p.start(program, args);
-    Run r;
-    if (!p.waitForStarted(10000)) {
-        r.err = p.errorString().toUtf8();
-        return r;
-    }
-    p.closeWriteChannel();
-    if (!p.waitForFinished(timeoutMs)) {
-        p.kill();
-        p.waitForFinished(5000);
-        r.err = "timed out";
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out += p.readAllStandardOutput();
-    r.err += p.readAllStandardError();
-    return r;
-}
-
-// The simulate command as a process: started, its endpoints read from its "listening" lines,
-// stopped with SIGINT (killed by the destructor when a test fails half-way).
-class SimCli
-{
-public:
-    ~SimCli()
-    {
-        if (m_process && m_process->state() != QProcess::NotRunning) {
-            m_process->kill();
-            m_process->waitForFinished(5000);
-        }
-    }
-
-    bool start(const QStringList &args, int endpoints, QString *error)
-    {
-        m_process = std::make_unique<QProcess>();
-        m_process->start(QStringLiteral(MBSCOPE_SIMULATE_CLI), args);
-        if (!m_process->waitForStarted(10000)) {
-            *error = m_process->errorString();
-            return false;
-        }
-        QElapsedTimer timer;
-        timer.start();
-        while (m_listening.size() < endpoints && timer.elapsed() < 20000) {
-            if (m_process->state() == QProcess::NotRunning)
-                break;
-            m_process->waitForReadyRead(200);
-            m_out += m_process->readAllStandardOutput();
-            m_listening.clear();
-            for (const QByteArray &line : m_out.split('\n')) {
-                if (line.startsWith("listening "))
-                    m_listening << QString::fromUtf8(line.mid(10));
-            }
-        }
-        if (m_listening.size() < endpoints) {
-            *error = QStringLiteral("no listening lines; stdout: %1 stderr: %2")
-                         .arg(QString::fromUtf8(m_out), QString::fromUtf8(m_process->readAllStandardError()));
-            return false;
-        }
-        return true;
-    }
-
-    [[nodiscard]] quint16 port(int index) const
-    {
-        static const QRegularExpression re(QStringLiteral(":(\\d+) \\(unit"));
-        return quint16(re.match(m_listening.value(index)).captured(1).toUInt());
-    }
-    [[nodiscard]] const QStringList &listening() const { return m_listening; }
-
-    // SIGINT, as Ctrl-C; the exit code (-1 when it did not stop).
-    int stop()
-    {
-        ::kill(pid_t(m_process->processId()), SIGINT);
-        if (!m_process->waitForFinished(20000))
-            return -1;
-        m_out += m_process->readAllStandardOutput();
-        m_err += m_process->readAllStandardError();
-        return m_process->exitStatus() == QProcess::NormalExit ? m_process->exitCode() : -1;
-    }
-    [[nodiscard]] const QByteArray &output() const { return m_out; }
-    [[nodiscard]] const QByteArray &errors() const { return m_err; }
-
-private:
-    std::unique_ptr<QProcess> m_process;
-    QStringList m_listening;
-    QByteArray m_out;
-    QByteArray m_err;
-};
-
-// mbpoll's "[122]: 	1050" lines, by reference.
-QMap<int, int> mbpollValues(const QByteArray &output)
-{
-    QMap<int, int> values;
-    static const QRegularExpression re(QStringLiteral("^\\[(\\d+)\\]:\\s+(-?\\d+)"));
-    for (const QByteArray &line : output.split('\n')) {
-        const QRegularExpressionMatch m = re.match(QString::fromLatin1(line.trimmed()));
-        if (m.hasMatch())
-            values.insert(m.captured(1).toInt(), m.captured(2).toInt());
-    }
-    return values;
-}
 
 void checkRosraoValues(const QMap<int, int> &values)
 {
@@ -166,7 +59,7 @@ private Q_SLOTS:
 
 void tst_Simulate::listProfiles()
 {
-    const Run r = runProcess(QStringLiteral(MBSCOPE_SIMULATE_CLI), {QStringLiteral("--list-profiles")});
+    const Run r = runSimulate({QStringLiteral("--list-profiles")});
     QCOMPARE(r.exitCode, 0);
     for (const char *name : {"rosrao-gamma", "m221-plc", "arduino-rs485", "conformance"})
         QVERIFY2(r.out.contains(QByteArray(name) + "\n    "), r.out.constData());
@@ -219,7 +112,7 @@ void tst_Simulate::errors()
     };
     for (QString &a : args)
         a = substitute(a);
-    const Run r = runProcess(QStringLiteral(MBSCOPE_SIMULATE_CLI), args);
+    const Run r = runSimulate(args);
     QCOMPARE(r.exitCode, 2);
     for (const QString &e : expected)
         QVERIFY2(QString::fromUtf8(r.err).contains(substitute(e)), r.err.constData());
@@ -230,12 +123,18 @@ void tst_Simulate::pymodbus_data()
     QTest::addColumn<QString>("profile");
     QTest::addColumn<QString>("scheme");
     QTest::addColumn<QString>("scenario");
-    QTest::newRow("rosrao-gamma tcp") << QStringLiteral("rosrao-gamma") << QStringLiteral("tcp") << QStringLiteral("rosrao");
-    QTest::newRow("rosrao-gamma rtu-tcp") << QStringLiteral("rosrao-gamma") << QStringLiteral("rtu-tcp") << QStringLiteral("rosrao");
-    QTest::newRow("conformance tcp") << QStringLiteral("conformance") << QStringLiteral("tcp") << QStringLiteral("conformance");
-    QTest::newRow("conformance rtu-tcp") << QStringLiteral("conformance") << QStringLiteral("rtu-tcp") << QStringLiteral("conformance");
+    const QString gamma = QStringLiteral("rosrao-gamma");
+    const QString conformance = QStringLiteral("conformance");
+    const QString rosrao = QStringLiteral("rosrao");
+    for (const char *scheme : {"tcp", "rtu-tcp", "udp", "rtu-udp", "tls", "rtu", "ascii"}) {
+        QTest::newRow(qPrintable(QStringLiteral("rosrao-gamma ") + QLatin1String(scheme))) << gamma << QString::fromLatin1(scheme) << rosrao;
+        QTest::newRow(qPrintable(QStringLiteral("conformance ") + QLatin1String(scheme))) << conformance << QString::fromLatin1(scheme) << conformance;
+    }
 }
 
+// A pymodbus client (sim_client.py) checks what the simulator serves in each framing: values
+// against the profile, writes read back, exceptions. rtu:// and ascii:// run on a socat pty pair,
+// tls:// with a throwaway CA and client certificate (mutual TLS, MODBUS/TCP Security).
 void tst_Simulate::pymodbus()
 {
     QFETCH(QString, profile);
@@ -244,18 +143,47 @@ void tst_Simulate::pymodbus()
     QString why;
     if (!pymodbusAvailable(&why))
         QSKIP(qPrintable(why));
+    const bool serial = scheme == QLatin1String("rtu") || scheme == QLatin1String("ascii");
+    const bool tls = scheme == QLatin1String("tls");
+    if (serial && !socatAvailable(&why))
+        QSKIP(qPrintable(why));
     QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    if (tls && !makeTestCertificates(dir.path(), &why)) {
+        if (why.contains(QLatin1String("not installed")))
+            QSKIP(qPrintable(why));
+        QFAIL(qPrintable(why));
+    }
+    PtyPair pty;
+    QString listen = scheme + QStringLiteral("://127.0.0.1:0");
+    QString target; // what sim_client.py is pointed at: a port or a device
+    if (serial) {
+        QVERIFY2(pty.start(), qPrintable(pty.error()));
+        listen = QStringLiteral("%1://%2?baud=19200&parity=N").arg(scheme, pty.ourEnd());
+        target = pty.peerEnd();
+    } else if (tls) {
+        listen += QStringLiteral("?cert=%1&key=%2&ca=%3")
+                      .arg(dir.filePath(QStringLiteral("server.pem")), dir.filePath(QStringLiteral("server.key")),
+                           dir.filePath(QStringLiteral("ca.pem")));
+    }
     const QString logPath = dir.filePath(QStringLiteral("traffic.jsonl"));
     SimCli sim;
-    QVERIFY2(sim.start({QStringLiteral("--profile"), profile, QStringLiteral("--listen"), scheme + QStringLiteral("://127.0.0.1:0"),
-                        QStringLiteral("--log"), logPath},
+    QVERIFY2(sim.start({QStringLiteral("--profile"), profile, QStringLiteral("--listen"), listen, QStringLiteral("--log"), logPath},
                        1, &why),
              qPrintable(why));
-    QVERIFY(sim.listening().first().startsWith(scheme + QStringLiteral("://127.0.0.1:")));
-    QVERIFY(sim.port(0) != 0);
-    const Run client = runProcess(systemPython(), {QStringLiteral(MBSCOPE_SIM_TEST_DIR "/sim_client.py"), scenario,
-                                                   QString::number(sim.port(0)), scheme});
-    QVERIFY2(client.exitCode == 0 && client.out.contains("done"), (client.out + client.err).constData());
+    QVERIFY2(sim.listening().first().startsWith(serial ? scheme + QStringLiteral("://") + pty.ourEnd()
+                                                       : scheme + QStringLiteral("://127.0.0.1:")),
+             qPrintable(sim.listening().first()));
+    if (!serial) {
+        QVERIFY(sim.port(0) != 0);
+        target = QString::number(sim.port(0));
+    }
+    QStringList clientArgs = {QStringLiteral(MBSCOPE_SIM_TEST_DIR "/sim_client.py"), scenario, target, scheme};
+    if (tls)
+        clientArgs << QStringLiteral("--ca") << dir.filePath(QStringLiteral("ca.pem")) << QStringLiteral("--cert")
+                   << dir.filePath(QStringLiteral("client.pem")) << QStringLiteral("--key") << dir.filePath(QStringLiteral("client.key"));
+    const Run client = runProcess(systemPython(), clientArgs, 120000);
+    QVERIFY2(client.exitCode == 0 && client.out.contains("done"), (client.out + client.err + sim.output()).constData());
     QCOMPARE(sim.stop(), 0);
     const QByteArray out = sim.output();
     QVERIFY2(out.contains("  unit 1  03 Read Holding Registers  answered\n"), out.constData());
@@ -326,8 +254,7 @@ void tst_Simulate::mbpollRtu()
 
 void tst_Simulate::durationStopsAndQuietSummarises()
 {
-    const Run r = runProcess(QStringLiteral(MBSCOPE_SIMULATE_CLI),
-                             {QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+    const Run r = runSimulate({QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
                               QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--listen"), QStringLiteral("rtu-tcp://127.0.0.1:0"),
                               QStringLiteral("--duration"), QStringLiteral("300ms"), QStringLiteral("--quiet"),
                               QStringLiteral("--seed"), QStringLiteral("9")},
