@@ -1,0 +1,203 @@
+#include "captureanalysis.h"
+
+#include "capture/exchangefields.h"
+#include "protocol/functioncode.h"
+
+#include <QtCore/QJsonArray>
+
+namespace mbscope {
+
+namespace {
+
+QString padded(const QString &label)
+{
+    return label.leftJustified(14);
+}
+
+QString milliseconds(qint64 ns)
+{
+    return QString::number(double(ns) / 1e6, 'f', 3);
+}
+
+} // namespace
+
+CaptureAnalysis::CaptureAnalysis(const HistogramSpec &histogram) : m_spec(histogram), m_overall(histogram) {}
+
+CaptureAnalysis::~CaptureAnalysis() = default;
+
+void CaptureAnalysis::add(const CaptureExchange &exchange)
+{
+    const Transaction &t = exchange.transaction;
+    const qint64 first = t.sentNs != 0 ? t.sentNs : t.doneNs;
+    const qint64 last = std::max(t.sentNs, t.doneNs);
+    if (first != 0 && (m_firstNs == 0 || first < m_firstNs))
+        m_firstNs = first;
+    m_lastNs = std::max(m_lastNs, last);
+    if (m_conversations.size() <= exchange.conversation)
+        m_conversations.resize(exchange.conversation + 1);
+    ConversationCounts &c = m_conversations[exchange.conversation];
+    if (exchange.kind == CaptureExchange::Kind::UnmatchedResponse) {
+        ++m_unmatched;
+        ++c.unmatched;
+        return;
+    }
+    m_overall.add(t);
+    if (t.status != TransactionStatus::Late) {
+        ++c.transactions;
+        if (t.status == TransactionStatus::Ok)
+            ++c.ok;
+        else if (t.status != TransactionStatus::Broadcast)
+            ++c.failed;
+    }
+    const ExchangeFields fields = ExchangeFields::of(t, exchange.framing);
+    if (!fields.valid)
+        return;
+    auto &slot = m_byFunction[fields.function];
+    if (!slot)
+        slot = std::make_unique<Statistics>(m_spec);
+    slot->add(t);
+}
+
+QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
+{
+    QJsonObject o = m_overall.toJson();
+    QJsonObject source{
+        {QStringLiteral("path"), report.path},
+        {QStringLiteral("format"), report.kindName()},
+        {QStringLiteral("complete"), report.isComplete()},
+        {QStringLiteral("error"), report.error.isEmpty() ? QJsonValue() : QJsonValue(report.error)},
+        {QStringLiteral("unmatched_responses"), double(m_unmatched)},
+    };
+    if (report.kind == ExchangeSourceReport::Kind::Capture) {
+        const auto &f = report.frames;
+        source.insert(QStringLiteral("packets"), double(report.file.packets));
+        source.insert(QStringLiteral("good_bytes"), double(report.file.goodBytes));
+        source.insert(QStringLiteral("file_bytes"), double(report.file.fileBytes));
+        source.insert(QStringLiteral("modbus_packets"), double(f.modbusPackets));
+        source.insert(QStringLiteral("other_packets"), double(f.otherPackets + f.notIp));
+        source.insert(QStringLiteral("fragments"), double(f.fragments));
+        source.insert(QStringLiteral("malformed_packets"), double(f.malformedPackets));
+        source.insert(QStringLiteral("cut_by_snap_length"), double(f.cutBySnapLength));
+        source.insert(QStringLiteral("frames"), double(f.frames));
+        source.insert(QStringLiteral("requests"), double(report.pairs.requests));
+        source.insert(QStringLiteral("responses"), double(report.pairs.responses));
+        source.insert(QStringLiteral("malformed_requests"), double(report.pairs.malformedRequests));
+        source.insert(QStringLiteral("retransmitted_bytes"), double(f.retransmittedBytes));
+        source.insert(QStringLiteral("lost_bytes"), double(f.lostBytes));
+        source.insert(QStringLiteral("gaps"), double(f.gaps));
+        source.insert(QStringLiteral("skipped_bytes"), double(f.skippedBytes));
+        source.insert(QStringLiteral("skipped_runs"), double(f.skippedRuns));
+    } else if (report.kind == ExchangeSourceReport::Kind::Journal) {
+        source.insert(QStringLiteral("frames"), double(report.journal.frames));
+        source.insert(QStringLiteral("batches"), double(report.journal.batches));
+        source.insert(QStringLiteral("garbage_frames"), double(report.journalGarbage));
+        source.insert(QStringLiteral("recovery"), report.journal.message);
+    }
+    o.insert(QStringLiteral("source"), source);
+    o.insert(QStringLiteral("span_ms"), double(m_lastNs - m_firstNs) / 1e6);
+
+    QJsonArray conversations;
+    for (const CaptureConversation &c : report.conversations) {
+        const ConversationCounts counts = c.id < m_conversations.size() ? m_conversations[c.id] : ConversationCounts{};
+        conversations.append(QJsonObject{
+            {QStringLiteral("client"), c.clientText()},
+            {QStringLiteral("server"), c.serverText()},
+            {QStringLiteral("transport"), c.udp ? QStringLiteral("udp") : QStringLiteral("tcp")},
+            {QStringLiteral("framing"), framingName(c.framing)},
+            {QStringLiteral("requests"), double(c.requests)},
+            {QStringLiteral("responses"), double(c.responses)},
+            {QStringLiteral("transactions"), double(counts.transactions)},
+            {QStringLiteral("ok"), double(counts.ok)},
+            {QStringLiteral("failed"), double(counts.failed)},
+            {QStringLiteral("unmatched_responses"), double(counts.unmatched)},
+        });
+    }
+    o.insert(QStringLiteral("conversations"), conversations);
+    QJsonArray functions;
+    for (const auto &[code, statistics] : m_byFunction) {
+        QJsonObject f = statistics->toJson();
+        f.insert(QStringLiteral("function"), QStringLiteral("0x%1").arg(code, 2, 16, QLatin1Char('0')));
+        f.insert(QStringLiteral("name"), QString::fromLatin1(functionName(code)));
+        functions.append(f);
+    }
+    o.insert(QStringLiteral("functions"), functions);
+    o.insert(QStringLiteral("problems"), QJsonArray::fromStringList(report.problems));
+    o.insert(QStringLiteral("problem_count"), double(report.problemCount));
+    return o;
+}
+
+QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
+{
+    QString out = QStringLiteral("ANALYZE %1  (%2").arg(report.path, report.kindName());
+    if (report.kind == ExchangeSourceReport::Kind::Capture)
+        out += QStringLiteral(", %1 packets, %2 Modbus frames").arg(report.file.packets).arg(report.frames.frames);
+    else
+        out += QStringLiteral(", %1 frames").arg(report.journal.frames);
+    out += QStringLiteral(", %1 s of traffic)\n").arg(QString::number(double(m_lastNs - m_firstNs) / 1e9, 'f', 3));
+    if (!report.error.isEmpty())
+        out += padded(QStringLiteral("damaged")) + report.error + QStringLiteral("; everything before it is analysed\n");
+
+    for (const CaptureConversation &c : report.conversations) {
+        const ConversationCounts counts = c.id < m_conversations.size() ? m_conversations[c.id] : ConversationCounts{};
+        out += padded(QStringLiteral("conversation")) + c.description()
+               + QStringLiteral(": %1 transactions, %2 ok, %3 failed").arg(counts.transactions).arg(counts.ok).arg(counts.failed);
+        if (counts.unmatched > 0)
+            out += QStringLiteral(", %1 answers matching no request").arg(counts.unmatched);
+        out += QLatin1Char('\n');
+    }
+    if (report.conversations.empty())
+        out += padded(QStringLiteral("conversation")) + QStringLiteral("none: no traffic on the Modbus ports (--port, --rtu-port)\n");
+
+    if (!m_byFunction.empty()) {
+        QList<QStringList> rows;
+        rows.append({QStringLiteral("FUNCTION"), QStringLiteral("COUNT"), QStringLiteral("OK"), QStringLiteral("EXCEPTIONS"),
+                     QStringLiteral("TIMEOUTS"), QStringLiteral("OTHER"), QStringLiteral("MEDIAN ms"), QStringLiteral("P99 ms"),
+                     QStringLiteral("MAX ms")});
+        for (const auto &[code, s] : m_byFunction) {
+            const LatencySamples &l = s->latency();
+            const bool any = !l.isEmpty();
+            rows.append({QStringLiteral("0x%1 %2").arg(code, 2, 16, QLatin1Char('0')).arg(QString::fromLatin1(functionName(code))),
+                         QString::number(s->count()), QString::number(s->ok()), QString::number(s->exceptions()),
+                         QString::number(s->timeouts()), QString::number(s->failed() - s->exceptions() - s->timeouts()),
+                         any ? milliseconds(l.medianNs()) : QStringLiteral("-"),
+                         any ? milliseconds(l.percentileNs(99)) : QStringLiteral("-"),
+                         any ? milliseconds(l.maxNs()) : QStringLiteral("-")});
+        }
+        QList<int> widths(rows.constFirst().size(), 0);
+        for (const QStringList &row : rows) {
+            for (qsizetype i = 0; i < row.size(); ++i)
+                widths[i] = std::max(widths.at(i), int(row.at(i).size()));
+        }
+        out += QLatin1Char('\n');
+        for (const QStringList &row : rows) {
+            QString line = row.at(0).leftJustified(widths.at(0));
+            for (qsizetype i = 1; i < row.size(); ++i)
+                line += QStringLiteral("  ") + row.at(i).rightJustified(widths.at(i));
+            out += line + QLatin1Char('\n');
+        }
+        out += QLatin1Char('\n');
+    }
+    out += m_overall.summary();
+    if (m_unmatched > 0)
+        out += padded(QStringLiteral("unmatched")) + QStringLiteral("%1 answer(s) matching no request\n").arg(m_unmatched);
+    if (report.kind == ExchangeSourceReport::Kind::Capture) {
+        const auto &f = report.frames;
+        if (f.lostBytes > 0 || f.retransmittedBytes > 0 || f.skippedBytes > 0 || report.pairs.malformedRequests > 0)
+            out += padded(QStringLiteral("streams")) + QStringLiteral("%1 byte(s) lost in %2 gap(s), %3 retransmitted, %4 skipped by the framers, "
+                                                                      "%5 malformed request(s)\n")
+                                                            .arg(f.lostBytes).arg(f.gaps).arg(f.retransmittedBytes).arg(f.skippedBytes)
+                                                            .arg(report.pairs.malformedRequests);
+    }
+    if (!report.problems.isEmpty()) {
+        out += padded(QStringLiteral("problems")) + QStringLiteral("%1 found%2\n")
+                                                       .arg(report.problemCount)
+                                                       .arg(report.problemCount > quint64(report.problems.size())
+                                                                ? QStringLiteral(", the first %1:").arg(report.problems.size())
+                                                                : QStringLiteral(":"));
+        for (const QString &p : report.problems)
+            out += padded(QString()) + p + QLatin1Char('\n');
+    }
+    return out;
+}
+
+} // namespace mbscope

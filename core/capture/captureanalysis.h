@@ -1,0 +1,62 @@
+#pragma once
+
+#include "capture/captureexchange.h"
+#include "capture/exchangesource.h"
+#include "engine/statistics.h"
+
+#include <QtCore/QJsonObject>
+#include <QtCore/QString>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace mbscope {
+
+// The figures of a capture or journal read offline: the engine's Statistics over every exchange
+// (the same counts, percentiles and histogram a poll prints), and the same per function code;
+// per conversation the transactions, answers and failures; the time the traffic spans.
+// Answers that match no request are counted apart, as the engine counts unsolicited frames.
+class CaptureAnalysis
+{
+public:
+    explicit CaptureAnalysis(const HistogramSpec &histogram = HistogramSpec::automatic());
+    ~CaptureAnalysis();
+
+    void add(const CaptureExchange &exchange);
+
+    [[nodiscard]] const Statistics &statistics() const { return m_overall; }
+    [[nodiscard]] quint64 unmatchedResponses() const { return m_unmatched; }
+    [[nodiscard]] qint64 firstNs() const { return m_firstNs; }
+    [[nodiscard]] qint64 lastNs() const { return m_lastNs; }
+
+    // Statistics::toJson's keys at the top (the shape poll --json prints), then
+    // "source": {"path", "format", "complete", "error", "packets", "modbus_packets", "frames",
+    //            "requests", "responses", "unmatched_responses", "malformed_requests",
+    //            "retransmitted_bytes", "lost_bytes", "gaps", "skipped_bytes", ...},
+    // "span_ms", "conversations": [{"client", "server", "transport", "framing", "requests",
+    // "responses", "transactions", "ok", "failed"}], "functions": [{"function", "name",
+    // ...Statistics::toJson's keys}], "problems": [...], "problem_count".
+    [[nodiscard]] QJsonObject toJson(const ExchangeSourceReport &report) const;
+    // For a terminal: the source, its conversations, a table per function code, the
+    // statistics as poll prints them, then the problems found.
+    [[nodiscard]] QString summary(const ExchangeSourceReport &report) const;
+
+private:
+    struct ConversationCounts {
+        quint64 transactions = 0;
+        quint64 ok = 0;
+        quint64 failed = 0;
+        quint64 unmatched = 0;
+    };
+
+    HistogramSpec m_spec;
+    Statistics m_overall;
+    std::map<quint8, std::unique_ptr<Statistics>> m_byFunction;
+    std::vector<ConversationCounts> m_conversations;
+    quint64 m_unmatched = 0;
+    qint64 m_firstNs = 0;
+    qint64 m_lastNs = 0;
+};
+
+} // namespace mbscope

@@ -1,0 +1,42 @@
+#pragma once
+
+#include "capture/decodedpacket.h"
+#include "protocol/framing.h"
+#include "protocol/streamframe.h"
+
+#include <QtCore/QByteArray>
+#include <QtCore/QString>
+
+namespace mbscope {
+
+// One client/server pair seen in a capture: a TCP connection's two directions (or several
+// connections on the same four-tuple, one after the other), or a UDP exchange.
+struct CaptureConversation {
+    quint32 id = 0; // 0, 1, 2... in the order first seen
+    bool udp = false;
+    IpAddress client;
+    IpAddress server;
+    quint16 clientPort = 0;
+    quint16 serverPort = 0;
+    Framing framing = Framing::Tcp; // Tcp (MBAP over TCP), Udp (MBAP over UDP) or Rtu
+    quint64 requests = 0;   // frames from the client
+    quint64 responses = 0;  // frames from the server
+
+    [[nodiscard]] QString clientText() const; // "192.168.1.5:50123", "[::1]:50123"
+    [[nodiscard]] QString serverText() const;
+    // "tcp 192.168.1.5:50123 -> 192.168.1.10:502 (Modbus TCP)"
+    [[nodiscard]] QString description() const;
+};
+
+// A Modbus frame cut out of a captured stream or datagram.
+struct CapturedFrame {
+    qint64 timeNs = 0;     // capture time of the packet that brought the frame's last byte
+    quint64 packet = 0;    // that packet's number in the file (1-based)
+    quint32 conversation = 0;
+    Framing framing = Framing::Tcp;
+    Direction direction = Direction::Request; // Request: client to server
+    FrameStatus status = FrameStatus::Valid;
+    QByteArray bytes;
+};
+
+} // namespace mbscope

@@ -1,0 +1,25 @@
+#pragma once
+
+#include "engine/transaction.h"
+#include "protocol/framing.h"
+
+namespace mbscope {
+
+// One request and what became of it, read back from a capture or a traffic journal, in the
+// engine's own terms so that Statistics, exports and plots treat both alike. Times are capture
+// times in ns since 1970-01-01 UTC: transaction.sentNs when the request's last byte was seen,
+// transaction.doneNs (and firstByteNs) when the answer's last byte was seen, 0 when none.
+//
+// An answer that matches no request is a record of its own (UnmatchedResponse: the request is
+// empty, sentNs 0); Statistics are not fed those, as the engine counts them apart.
+struct CaptureExchange {
+    enum class Kind : quint8 { Transaction, UnmatchedResponse };
+    Kind kind = Kind::Transaction;
+    quint32 conversation = 0;   // CaptureConversation::id, or the journal's link id
+    Framing framing = Framing::Tcp;
+    quint64 requestPacket = 0;  // packet number in the capture (journal: sequence + 1); 0 when none
+    quint64 responsePacket = 0;
+    Transaction transaction;    // id: 1, 2, 3... in request order
+};
+
+} // namespace mbscope

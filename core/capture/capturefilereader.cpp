@@ -1,0 +1,97 @@
+#include "capturefilereader.h"
+
+#include "capture/capturebytesource.h"
+
+#include <QtCore/QFile>
+
+namespace mbscope {
+
+CaptureFileReader::Format CaptureFileReader::detect(QByteArrayView first)
+{
+    if (first.size() < 4)
+        return Format::Unknown;
+    const auto b = [&](int i) { return quint8(first[i]); };
+    const quint32 be = quint32(b(0)) << 24 | quint32(b(1)) << 16 | quint32(b(2)) << 8 | b(3);
+    switch (be) {
+    case 0xa1b2c3d4: case 0xd4c3b2a1: // microseconds
+    case 0xa1b23c4d: case 0x4d3cb2a1: // nanoseconds
+        return Format::Pcap;
+    case 0x0a0d0d0a: // a section header block: the same in both byte orders
+        return Format::Pcapng;
+    default:
+        return Format::Unknown;
+    }
+}
+
+QString CaptureFileReader::formatName(Format format)
+{
+    switch (format) {
+    case Format::Pcap: return QStringLiteral("pcap");
+    case Format::Pcapng: return QStringLiteral("pcapng");
+    case Format::Unknown: break;
+    }
+    return QStringLiteral("unknown");
+}
+
+CaptureFileReader::Result CaptureFileReader::readFile(const QString &path, const Sink &sink)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        Result result;
+        result.errorOffset = 0;
+        result.error = QStringLiteral("cannot open: %1").arg(file.errorString());
+        return result;
+    }
+    return readDevice(&file, sink);
+}
+
+CaptureFileReader::Result CaptureFileReader::readDevice(QIODevice *device, const Sink &sink)
+{
+    CaptureByteSource source(device);
+    return read(source, sink);
+}
+
+CaptureFileReader::Result CaptureFileReader::readBytes(QByteArrayView bytes, const Sink &sink)
+{
+    CaptureByteSource source(bytes);
+    return read(source, sink);
+}
+
+CaptureFileReader::Result CaptureFileReader::read(CaptureByteSource &source, const Sink &sink)
+{
+    Result result;
+    const qint64 available = source.remaining();
+    result.fileBytes = source.size();
+    if (available <= 0) {
+        result.errorOffset = 0;
+        result.error = source.error().isEmpty() ? QStringLiteral("the file is empty: not a capture")
+                                                : QStringLiteral("cannot read: %1").arg(source.error());
+        return result;
+    }
+    const uchar *head = source.peek(std::min<qint64>(available, 4));
+    const QByteArrayView first(head, std::min<qint64>(available, 4));
+    result.format = detect(first);
+    switch (result.format) {
+    case Format::Pcap:
+        readPcap(source, sink, result);
+        break;
+    case Format::Pcapng:
+        readPcapng(source, sink, result);
+        break;
+    case Format::Unknown:
+        result.errorOffset = 0;
+        result.error = QStringLiteral("not a capture file: it starts with %1, where a pcap file starts with "
+                                      "d4 c3 b2 a1 (or a1 b2 c3 d4, 4d 3c b2 a1, a1 b2 3c 4d) and a pcapng file "
+                                      "with 0a 0d 0d 0a")
+                           .arg(QString::fromLatin1(first.toByteArray().toHex(' ')));
+        break;
+    }
+    result.fileBytes = std::max(result.fileBytes, source.offset() + source.remaining());
+    if (result.error.isEmpty() && !source.error().isEmpty()) {
+        result.errorOffset = source.offset();
+        result.error = QStringLiteral("at byte %1: read error: %2").arg(source.offset()).arg(source.error());
+    }
+    return result;
+}
+
+} // namespace mbscope

@@ -1,0 +1,98 @@
+#pragma once
+
+#include "capture/captureexchange.h"
+#include "capture/capturedframe.h"
+#include "engine/responseverdict.h"
+#include "protocol/dissection.h"
+
+#include <QtCore/QHash>
+#include <QtCore/QStringList>
+
+#include <deque>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace mbscope {
+
+// Pairs captured requests with their answers and judges each answer as the engine does
+// (ResponseVerdict), without any device:
+// - MBAP (Modbus TCP and UDP): by transaction id within the conversation; an answer whose unit or
+//   function code does not fit its request is Unexpected (V1.0b, 4.4.1.2: the id is the key);
+// - RTU: the oldest waiting request with the answer's unit and function code (or its exception);
+//   requests before it that were never answered are timeouts (a serial line answers one at a
+//   time); unit 0 is a broadcast, which expects no answer (Serial Line V1.02, 2.1).
+// A request unanswered for timeoutNs of capture time is a Timeout, and an answer that comes
+// after that is a Late record, as in the engine. Exchanges come out in request order. Every
+// request is dissected as well; malformed ones are counted and the first few described.
+class ExchangePairer
+{
+public:
+    using Sink = std::function<void(const CaptureExchange &)>;
+
+    struct Counters {
+        quint64 requests = 0;
+        quint64 responses = 0;
+        quint64 unmatchedResponses = 0;
+        quint64 malformedRequests = 0;
+        quint64 lateResponses = 0;
+    };
+    static constexpr int kMaxProblems = 20;
+
+    ExchangePairer(qint64 timeoutNs, Sink sink);
+    ~ExchangePairer();
+    ExchangePairer(const ExchangePairer &) = delete;
+    ExchangePairer &operator=(const ExchangePairer &) = delete;
+
+    void add(const CapturedFrame &frame);
+    // The capture ended: requests still waiting are timeouts.
+    void finish();
+
+    [[nodiscard]] const Counters &counters() const { return m_counters; }
+    [[nodiscard]] const QStringList &problems() const { return m_problems; }
+    [[nodiscard]] quint64 problemCount() const { return m_problemCount; }
+
+private:
+    struct Slot {
+        CaptureExchange exchange;
+        bool done = false;
+    };
+    struct TimedOut {
+        QByteArray request;
+        qint64 sentNs = 0;
+        quint64 packet = 0;
+        quint64 id = 0;
+    };
+    struct Conversation {
+        QHash<quint16, quint64> waitingById; // MBAP: transaction id -> slot
+        std::deque<quint64> waitingInOrder;  // RTU: slots in request order
+        QHash<quint16, TimedOut> timedOutById;
+        TimedOut lastTimedOut;                // RTU
+    };
+
+    void addRequest(const CapturedFrame &frame);
+    void addResponse(const CapturedFrame &frame);
+    void answer(quint64 slotIndex, const CapturedFrame &frame, bool keysMatch, const QString &mismatch);
+    void late(const TimedOut &request, const CapturedFrame &frame);
+    void unmatched(const CapturedFrame &frame, const QString &why);
+    void expire(qint64 nowNs);
+    void timeOut(Slot &slot, const QString &problem);
+    void emitReady();
+    [[nodiscard]] Slot &slot(quint64 index) { return m_slots[std::size_t(index - m_firstSlot)]; }
+    [[nodiscard]] Conversation &conversation(quint32 id);
+    [[nodiscard]] ResponseVerdict &verdictFor(Framing framing);
+    void problem(const QString &what);
+
+    qint64 m_timeoutNs;
+    Sink m_sink;
+    Counters m_counters;
+    std::deque<Slot> m_slots;
+    quint64 m_firstSlot = 1; // index of m_slots.front()
+    std::vector<std::unique_ptr<Conversation>> m_conversations;
+    std::unique_ptr<ResponseVerdict> m_verdicts[3]; // Tcp, Udp, Rtu
+    Dissection m_requestDissection;
+    QStringList m_problems;
+    quint64 m_problemCount = 0;
+};
+
+} // namespace mbscope

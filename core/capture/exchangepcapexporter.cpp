@@ -1,0 +1,96 @@
+#include "exchangepcapexporter.h"
+
+#include <limits>
+
+namespace mbscope {
+
+ExchangePcapExporter::ExchangePcapExporter(CaptureFileWriter &writer, const std::vector<CaptureConversation> &conversations)
+    : m_writer(writer)
+{
+    for (const CaptureConversation &c : conversations) {
+        if (m_streams.size() <= c.id)
+            m_streams.resize(c.id + 1);
+        Stream &s = m_streams[c.id];
+        s.info = c;
+        s.known = true;
+    }
+}
+
+ExchangePcapExporter::Stream &ExchangePcapExporter::stream(quint32 conversation, Framing framing)
+{
+    if (m_streams.size() <= conversation)
+        m_streams.resize(conversation + 1);
+    Stream &s = m_streams[conversation];
+    if (!s.known) {
+        // A conversation nobody described: made-up addresses, the framing's usual port.
+        s.info.id = conversation;
+        s.info.framing = framing;
+        s.info.udp = framing == Framing::Udp;
+        s.info.client.bytes = {10, 0, 0, 1};
+        s.info.server.bytes = {10, 0, 0, 2};
+        s.info.clientPort = quint16(49152 + conversation);
+        s.info.serverPort = framing == Framing::Rtu || framing == Framing::Ascii ? 4001 : 502;
+        s.known = true;
+    }
+    if (s.endpoints.serverPort == 0) {
+        s.endpoints = {s.info.client, s.info.server, s.info.clientPort, s.info.serverPort};
+        if (s.info.framing == Framing::Rtu && !m_rtuPorts.contains(s.info.serverPort))
+            m_rtuPorts.append(s.info.serverPort);
+    }
+    return s;
+}
+
+void ExchangePcapExporter::add(const CaptureExchange &exchange)
+{
+    const Transaction &t = exchange.transaction;
+    stream(exchange.conversation, exchange.framing);
+    const bool requestWritten = exchange.kind == CaptureExchange::Kind::Transaction && t.status != TransactionStatus::Late;
+    if (requestWritten && !t.request.isEmpty()) {
+        // No later exchange has an earlier request: everything held up to this one can go.
+        writeUpTo(t.sentNs);
+        hold(t.sentNs, exchange.conversation, true, t.request);
+    }
+    if (!t.response.isEmpty())
+        hold(t.doneNs, exchange.conversation, false, t.response);
+}
+
+void ExchangePcapExporter::finish()
+{
+    writeUpTo(std::numeric_limits<qint64>::max());
+}
+
+void ExchangePcapExporter::hold(qint64 timeNs, quint32 conversation, bool toServer, const QByteArray &payload)
+{
+    m_held.emplace(timeNs, Held{conversation, toServer, payload});
+}
+
+void ExchangePcapExporter::writeUpTo(qint64 timeNs)
+{
+    while (!m_held.empty() && m_held.begin()->first <= timeNs) {
+        auto node = m_held.extract(m_held.begin());
+        writeOne(node.key(), node.mapped());
+    }
+}
+
+void ExchangePcapExporter::writeOne(qint64 timeNs, const Held &held)
+{
+    Stream &s = m_streams[held.conversation];
+    if (s.info.udp) {
+        m_writer.write(timeNs, PacketSynthesizer::udp(s.endpoints, held.toServer, held.payload));
+        return;
+    }
+    using P = PacketSynthesizer;
+    if (!s.opened) {
+        // The three-way handshake, so that Wireshark sees the connection from its start.
+        m_writer.write(timeNs, P::tcp(s.endpoints, true, s.clientNext - 1, 0, P::kSyn, {}));
+        m_writer.write(timeNs, P::tcp(s.endpoints, false, s.serverNext - 1, s.clientNext, P::kSyn | P::kAck, {}));
+        m_writer.write(timeNs, P::tcp(s.endpoints, true, s.clientNext, s.serverNext, P::kAck, {}));
+        s.opened = true;
+    }
+    quint32 &sequence = held.toServer ? s.clientNext : s.serverNext;
+    const quint32 acknowledgement = held.toServer ? s.serverNext : s.clientNext;
+    m_writer.write(timeNs, P::tcp(s.endpoints, held.toServer, sequence, acknowledgement, P::kPsh | P::kAck, held.payload));
+    sequence += quint32(held.payload.size());
+}
+
+} // namespace mbscope

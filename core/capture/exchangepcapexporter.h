@@ -1,0 +1,63 @@
+#pragma once
+
+#include "capture/captureexchange.h"
+#include "capture/capturedframe.h"
+#include "capture/capturefilewriter.h"
+#include "capture/packetsynthesizer.h"
+
+#include <QtCore/QList>
+
+#include <map>
+#include <vector>
+
+namespace mbscope {
+
+// Exchanges back into packets that Wireshark decodes as Modbus: each conversation becomes one
+// TCP connection (a handshake, then every request from the client and every answer from the
+// server as one segment, sequence and acknowledgement numbers running on) or UDP datagrams,
+// between the conversation's addresses and ports. Requests are stamped with their sentNs,
+// answers with their doneNs, and packets are written in time order (exchanges come in request
+// order, so a packet is written once no later request can come before it).
+//
+// MBAP goes to its port (502 by default: tshark decodes it as Modbus/TCP by itself). RTU frames
+// go to the conversation's port, which tshark does not know: rtuPorts() lists them so the user
+// can be told the decode option ("-d tcp.port==4001,mbrtu"). ASCII frames are written as they
+// are; tshark has no dissector for ASCII over TCP.
+class ExchangePcapExporter
+{
+public:
+    ExchangePcapExporter(CaptureFileWriter &writer, const std::vector<CaptureConversation> &conversations);
+
+    void add(const CaptureExchange &exchange);
+    void finish(); // writes what is still held back
+
+    [[nodiscard]] QList<quint16> rtuPorts() const { return m_rtuPorts; }
+    [[nodiscard]] quint64 packets() const { return m_writer.packets(); }
+
+private:
+    struct Stream {
+        CaptureConversation info;
+        PacketSynthesizer::Endpoints endpoints;
+        bool known = false;
+        bool opened = false;
+        quint32 clientNext = 0x10000000; // next sequence number from the client
+        quint32 serverNext = 0x20000000;
+    };
+    struct Held {
+        quint32 conversation = 0;
+        bool toServer = true;
+        QByteArray payload;
+    };
+
+    Stream &stream(quint32 conversation, Framing framing);
+    void hold(qint64 timeNs, quint32 conversation, bool toServer, const QByteArray &payload);
+    void writeUpTo(qint64 timeNs);
+    void writeOne(qint64 timeNs, const Held &held);
+
+    CaptureFileWriter &m_writer;
+    std::vector<Stream> m_streams;
+    std::multimap<qint64, Held> m_held;
+    QList<quint16> m_rtuPorts;
+};
+
+} // namespace mbscope

@@ -1,0 +1,83 @@
+#include "exchangesource.h"
+
+#include "capture/journalexchangereader.h"
+
+#include <QtCore/QFile>
+
+namespace mbscope {
+
+namespace {
+
+ExchangeSourceReport readPackets(const QString &path, const std::function<CaptureFileReader::Result(const CaptureFileReader::Sink &)> &reader,
+                                 const CaptureOptions &options, const ExchangeSource::Sink &sink)
+{
+    ExchangeSourceReport report;
+    report.path = path;
+    ExchangePairer pairer(options.timeoutNs, sink);
+    ModbusFrameExtractor extractor(options, [&pairer](const CapturedFrame &frame) { pairer.add(frame); });
+    report.file = reader([&extractor](const CapturePacket &packet) { extractor.add(packet); });
+    extractor.finish();
+    pairer.finish();
+    report.kind = report.file.format == CaptureFileReader::Format::Unknown ? ExchangeSourceReport::Kind::Unreadable
+                                                                             : ExchangeSourceReport::Kind::Capture;
+    report.error = report.file.error;
+    report.frames = extractor.counters();
+    report.pairs = pairer.counters();
+    report.conversations = extractor.conversations();
+    report.problems = extractor.problems() + pairer.problems();
+    report.problemCount = extractor.problemCount() + pairer.problemCount();
+    return report;
+}
+
+} // namespace
+
+QString ExchangeSourceReport::kindName() const
+{
+    switch (kind) {
+    case Kind::Capture: return CaptureFileReader::formatName(file.format);
+    case Kind::Journal: return QStringLiteral("journal");
+    case Kind::Unreadable: break;
+    }
+    return QStringLiteral("unreadable");
+}
+
+ExchangeSourceReport ExchangeSource::read(const QString &path, const CaptureOptions &options, const Sink &sink)
+{
+    QByteArray first;
+    {
+        QFile file(path);
+        if (!file.open(QIODevice::ReadOnly)) {
+            ExchangeSourceReport report;
+            report.path = path;
+            report.error = QStringLiteral("cannot open: %1").arg(file.errorString());
+            return report;
+        }
+        first = file.read(8);
+    }
+    if (JournalExchangeReader::isJournal(first)) {
+        ExchangeSourceReport report;
+        report.path = path;
+        const JournalExchangeReader::Result journal = JournalExchangeReader::read(path, sink);
+        report.kind = ExchangeSourceReport::Kind::Journal;
+        report.journal = journal.recovery;
+        report.journalGarbage = journal.garbageFrames;
+        report.conversations = journal.conversations;
+        report.pairs.unmatchedResponses = journal.unmatchedResponses;
+        report.pairs.lateResponses = journal.lateResponses;
+        if (!journal.recovery.isClean())
+            report.error = journal.recovery.message;
+        if (journal.recovery.ending == TrafficJournalRecovery::Ending::NotAJournal
+            || journal.recovery.ending == TrafficJournalRecovery::Ending::Unreadable)
+            report.kind = ExchangeSourceReport::Kind::Unreadable;
+        return report;
+    }
+    return readPackets(path, [&path](const CaptureFileReader::Sink &s) { return CaptureFileReader::readFile(path, s); }, options, sink);
+}
+
+ExchangeSourceReport ExchangeSource::readCapture(QByteArrayView bytes, const CaptureOptions &options, const Sink &sink)
+{
+    return readPackets(QStringLiteral("(memory)"), [bytes](const CaptureFileReader::Sink &s) { return CaptureFileReader::readBytes(bytes, s); },
+                       options, sink);
+}
+
+} // namespace mbscope

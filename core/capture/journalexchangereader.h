@@ -1,0 +1,45 @@
+#pragma once
+
+#include "capture/captureexchange.h"
+#include "capture/capturedframe.h"
+#include "engine/trafficjournal.h"
+
+#include <QtCore/QString>
+
+#include <functional>
+#include <vector>
+
+namespace mbscope {
+
+// The exchanges of a traffic journal (trafficjournal.h) in the same shape as a capture's, so
+// that one analysis and one set of exports serve both. The journal already knows which answer
+// belongs to which request (the transaction id) and what the engine made of it (the verdict):
+// both are kept, not worked out again; ResponseVerdict only adds the exception code and the
+// problem text. Retries share their transaction's id: only the last attempt is an exchange, as
+// in the engine's statistics. Unsolicited frames are unmatched answers; garbage is counted.
+//
+// Times: the journal's monotonic ns turned into wall-clock ns through its header. A request is
+// stamped when it was written, an answer when its first byte was read (what the journal keeps),
+// so latencies from a journal can be a frame's transmission time shorter than the engine's.
+class JournalExchangeReader
+{
+public:
+    using Sink = std::function<void(const CaptureExchange &)>;
+
+    struct Result {
+        TrafficJournalRecovery recovery;
+        quint64 garbageFrames = 0;
+        quint64 unmatchedResponses = 0;
+        quint64 lateResponses = 0;
+        quint64 noOutcome = 0; // requests whose outcome the journal does not hold (cut short)
+        // One per link id: framing from the link's URL, the server's address and port when the
+        // URL names an IPv4 address (else 10.0.0.2), a client at 10.0.0.1:(49152 + id).
+        std::vector<CaptureConversation> conversations;
+    };
+
+    [[nodiscard]] static Result read(const QString &path, const Sink &sink);
+    // Whether a file starts with the journal's magic ("MBSCTLOG").
+    [[nodiscard]] static bool isJournal(QByteArrayView firstBytes);
+};
+
+} // namespace mbscope

@@ -1,0 +1,275 @@
+#include "modbusframeextractor.h"
+
+#include "capture/packetdecoder.h"
+#include "capture/tcpstreamreassembler.h"
+#include "protocol/mbapframer.h"
+#include "protocol/rtuframer.h"
+
+#include <QtCore/QHashFunctions>
+
+namespace mbscope {
+
+namespace {
+constexpr quint8 kFin = 0x01;
+constexpr quint8 kSyn = 0x02;
+constexpr quint8 kRst = 0x04;
+constexpr quint8 kAck = 0x10;
+constexpr int kToServer = 0;
+constexpr int kToClient = 1;
+} // namespace
+
+struct ModbusFrameExtractor::Flow {
+    CaptureConversation info;
+    std::unique_ptr<StreamFramer> framers[2];
+    std::unique_ptr<TcpStreamReassembler> streams[2];
+    qint64 lastFeedNs[2]{};
+    quint64 lastPacket[2]{};
+};
+
+std::size_t ModbusFrameExtractor::FlowKeyHash::operator()(const FlowKey &key) const noexcept
+{
+    std::size_t seed = qHashBits(key.client.bytes.data(), key.client.bytes.size());
+    seed = qHashMulti(seed, qHashBits(key.server.bytes.data(), key.server.bytes.size()), key.clientPort, key.serverPort, key.udp);
+    return seed;
+}
+
+ModbusFrameExtractor::ModbusFrameExtractor(const CaptureOptions &options, Sink sink)
+    : m_options(options), m_sink(std::move(sink))
+{
+}
+
+ModbusFrameExtractor::~ModbusFrameExtractor() = default;
+
+bool ModbusFrameExtractor::isRtuPort(quint16 port) const
+{
+    return m_options.rtuPorts.contains(port);
+}
+
+bool ModbusFrameExtractor::isMbapPort(quint16 port) const
+{
+    return m_options.mbapPorts.contains(port);
+}
+
+std::vector<CaptureConversation> ModbusFrameExtractor::conversations() const
+{
+    std::vector<CaptureConversation> list;
+    list.reserve(m_flows.size());
+    for (const auto &flow : m_flows)
+        list.push_back(flow->info);
+    return list;
+}
+
+void ModbusFrameExtractor::problem(quint64 packet, const Flow *flow, const QString &what)
+{
+    ++m_problemCount;
+    if (m_problems.size() >= kMaxProblems)
+        return;
+    m_problems.append(flow ? QStringLiteral("packet %1 (%2): %3").arg(packet).arg(flow->info.description(), what)
+                           : QStringLiteral("packet %1: %2").arg(packet).arg(what));
+}
+
+ModbusFrameExtractor::Flow &ModbusFrameExtractor::flowFor(const DecodedPacket &d, bool toServer, Framing framing)
+{
+    FlowKey key;
+    key.udp = d.outcome == DecodedPacket::Outcome::Udp;
+    key.client = toServer ? d.source : d.destination;
+    key.server = toServer ? d.destination : d.source;
+    key.clientPort = toServer ? d.sourcePort : d.destinationPort;
+    key.serverPort = toServer ? d.destinationPort : d.sourcePort;
+    if (m_lastFlow && key == m_lastKey)
+        return *m_lastFlow;
+    auto [it, inserted] = m_flowIndex.try_emplace(key, m_flows.size());
+    if (inserted) {
+        auto flow = std::make_unique<Flow>();
+        flow->info.id = quint32(m_flows.size());
+        flow->info.udp = key.udp;
+        flow->info.client = key.client;
+        flow->info.server = key.server;
+        flow->info.clientPort = key.clientPort;
+        flow->info.serverPort = key.serverPort;
+        flow->info.framing = framing;
+        for (int direction : {kToServer, kToClient}) {
+            if (framing == Framing::Rtu)
+                flow->framers[direction] = std::make_unique<RtuFramer>(direction == kToServer ? Direction::Request : Direction::Response);
+            else
+                flow->framers[direction] = std::make_unique<MbapFramer>();
+            if (!key.udp) {
+                Flow *raw = flow.get();
+                flow->streams[direction] = std::make_unique<TcpStreamReassembler>(
+                    [this, raw, direction](qint64 gap, QByteArrayView bytes) { onStreamBytes(*raw, direction, gap, bytes); });
+            }
+        }
+        m_flows.push_back(std::move(flow));
+    }
+    m_lastKey = key;
+    m_lastFlow = m_flows[it->second].get();
+    return *m_lastFlow;
+}
+
+void ModbusFrameExtractor::add(const CapturePacket &packet)
+{
+    ++m_counters.packets;
+    m_timeNs = packet.timeNs;
+    m_packet = packet.number;
+    const DecodedPacket d = PacketDecoder::decode(packet);
+    switch (d.outcome) {
+    case DecodedPacket::Outcome::NotIp:
+        ++m_counters.notIp;
+        return;
+    case DecodedPacket::Outcome::OtherProtocol:
+        ++m_counters.otherPackets;
+        return;
+    case DecodedPacket::Outcome::Fragment:
+        ++m_counters.fragments;
+        return;
+    case DecodedPacket::Outcome::Malformed:
+        ++m_counters.malformedPackets;
+        problem(packet.number, nullptr, QString::fromLatin1(d.problem));
+        return;
+    case DecodedPacket::Outcome::UnknownLinkType:
+        if (m_counters.unknownLinkType++ == 0)
+            problem(packet.number, nullptr, QStringLiteral("link type %1 is not one mbscope reads (Ethernet, Linux cooked, "
+                                                           "loopback, raw IP): its packets are skipped")
+                                                .arg(packet.linkType));
+        return;
+    case DecodedPacket::Outcome::Tcp:
+    case DecodedPacket::Outcome::Udp:
+        break;
+    }
+    bool toServer = false;
+    if (isRtuPort(d.destinationPort) || isMbapPort(d.destinationPort)) {
+        toServer = true;
+    } else if (!isRtuPort(d.sourcePort) && !isMbapPort(d.sourcePort)) {
+        ++m_counters.otherPackets;
+        return;
+    }
+    const quint16 serverPort = toServer ? d.destinationPort : d.sourcePort;
+    const bool udp = d.outcome == DecodedPacket::Outcome::Udp;
+    const Framing framing = isRtuPort(serverPort) ? Framing::Rtu : udp ? Framing::Udp : Framing::Tcp;
+    ++m_counters.modbusPackets;
+    Flow &flow = flowFor(d, toServer, framing);
+    const int direction = toServer ? kToServer : kToClient;
+    if (d.truncated) {
+        ++m_counters.cutBySnapLength;
+        problem(packet.number, &flow, QStringLiteral("the capture kept %1 of its %2 payload bytes (snap length): the rest is lost")
+                                          .arg(d.payload.size()).arg(d.payloadLength));
+    }
+    if (udp) {
+        if (d.payload.isEmpty())
+            return;
+        CapturedFrame frame;
+        frame.timeNs = m_timeNs;
+        frame.packet = m_packet;
+        frame.conversation = flow.info.id;
+        frame.framing = framing;
+        frame.direction = toServer ? Direction::Request : Direction::Response;
+        frame.bytes = d.payload.toByteArray();
+        ++(toServer ? flow.info.requests : flow.info.responses);
+        ++m_counters.frames;
+        m_sink(frame);
+        return;
+    }
+    const quint8 flags = d.tcpFlags;
+    if ((flags & kSyn) && !(flags & kAck) && flow.streams[kToServer]->delivered() > 0) {
+        // A new connection from the same client port: the old one ended unseen.
+        for (int dir : {kToServer, kToClient}) {
+            flow.streams[dir]->finish();
+            flushDirection(flow, dir);
+            flow.streams[dir]->reset();
+            flow.framers[dir]->reset();
+        }
+    }
+    if (!d.payload.isEmpty() && framing == Framing::Rtu) {
+        // RTU has no length for every code: a pause, or the other side speaking, ends a frame.
+        const int other = 1 - direction;
+        if (flow.framers[other]->pendingSize() > 0)
+            flushDirection(flow, other);
+        if (flow.framers[direction]->pendingSize() > 0 && m_timeNs - flow.lastFeedNs[direction] > m_options.rtuSilenceNs)
+            flushDirection(flow, direction);
+    }
+    flow.streams[direction]->add(d.sequence, flags, d.payload);
+    if (flags & (kFin | kRst)) {
+        flow.streams[direction]->finish();
+        flushDirection(flow, direction);
+        if (flags & kRst) {
+            flow.streams[1 - direction]->finish();
+            flushDirection(flow, 1 - direction);
+        }
+    }
+}
+
+void ModbusFrameExtractor::onStreamBytes(Flow &flow, int direction, qint64 gap, QByteArrayView bytes)
+{
+    StreamFramer &framer = *flow.framers[direction];
+    if (gap > 0) {
+        ++m_counters.gaps;
+        m_counters.lostBytes += gap;
+        problem(m_packet, &flow, QStringLiteral("%1 byte(s) %2 never captured (a lost packet, or a capture started "
+                                                "mid-stream): framing starts again after them")
+                                     .arg(gap)
+                                     .arg(direction == kToServer ? QStringLiteral("to the server") : QStringLiteral("to the client")));
+        flushDirection(flow, direction);
+        framer.reset();
+    }
+    framer.feed(bytes, m_timeNs);
+    flow.lastFeedNs[direction] = m_timeNs;
+    flow.lastPacket[direction] = m_packet;
+    collect(flow, direction);
+}
+
+void ModbusFrameExtractor::flushDirection(Flow &flow, int direction)
+{
+    flow.framers[direction]->flushOnSilence();
+    collect(flow, direction);
+}
+
+void ModbusFrameExtractor::collect(Flow &flow, int direction)
+{
+    StreamFramer &framer = *flow.framers[direction];
+    if (framer.hasFrames()) {
+        const QList<StreamFrame> frames = framer.takeFrames();
+        for (const StreamFrame &f : frames) {
+            CapturedFrame frame;
+            frame.timeNs = f.lastByteNs;
+            frame.packet = flow.lastPacket[direction];
+            frame.conversation = flow.info.id;
+            frame.framing = flow.info.framing;
+            frame.direction = direction == kToServer ? Direction::Request : Direction::Response;
+            frame.status = f.status;
+            frame.bytes = f.bytes;
+            ++(direction == kToServer ? flow.info.requests : flow.info.responses);
+            ++m_counters.frames;
+            m_sink(frame);
+        }
+    }
+    const QList<SkippedBytes> skipped = framer.takeSkipped();
+    for (const SkippedBytes &s : skipped) {
+        m_counters.skippedBytes += s.count();
+        ++m_counters.skippedRuns;
+        problem(flow.lastPacket[direction], &flow, QStringLiteral("%1 byte(s) skipped (%2): %3")
+                                                       .arg(s.count())
+                                                       .arg(QLatin1String(skipReasonName(s.reason)),
+                                                            QString::fromLatin1(s.bytes.left(16).toHex(' ')) +
+                                                                (s.count() > 16 ? QStringLiteral(" ...") : QString())));
+    }
+}
+
+void ModbusFrameExtractor::finish()
+{
+    for (const auto &flow : m_flows) {
+        for (int direction : {kToServer, kToClient}) {
+            if (flow->streams[direction])
+                flow->streams[direction]->finish();
+            flushDirection(*flow, direction);
+        }
+    }
+    m_counters.retransmittedBytes = 0;
+    for (const auto &flow : m_flows) {
+        for (const auto &stream : flow->streams) {
+            if (stream)
+                m_counters.retransmittedBytes += stream->retransmittedBytes();
+        }
+    }
+}
+
+} // namespace mbscope
