@@ -14,6 +14,8 @@ namespace mbscope::app {
 int runHeadless(const QStringList &arguments);
 #ifdef MBSCOPE_HAVE_UI
 int runGui(QApplication &app);
+// `mbscope --screenshot FILE`: the window is rendered offscreen (decided before QApplication exists).
+[[nodiscard]] bool guiWantsOffscreen(int argc, char *argv[]);
 #endif
 
 // A subcommand's --help text with its real usage line ("Usage: mbscope poll [options]") instead of

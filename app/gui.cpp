@@ -1,52 +1,127 @@
 // The window: what `mbscope` runs without a subcommand.
 #include "commands.h"
 
-#include "decodepanel.h"
+#include "linkcontroller.h"
 #include "mainwindow.h"
+#include "transactionview.h"
 
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QRegularExpression>
 #include <QtCore/QTimer>
 #include <QtGui/QPixmap>
 #include <QtWidgets/QApplication>
 
 #include <cstdio>
+#include <cstring>
 
 namespace mbscope::app {
 
 namespace {
 
-// The RosRao detector's register read (unit 1, 22 holding registers from 121), a frame users of
-// this tool type by hand: a first run shows a real dissection instead of an empty panel.
-const char kExampleFrame[] = "01 03 00 79 00 16 15 DD";
+// How long a screenshot waits for the first answer before it renders what is there.
+constexpr int kScreenshotAnswerWaitMs = 3000;
 
-// Renders the window once it is shown and laid out, then quits: docs and GUI smoke tests use it
-// with QT_QPA_PLATFORM=offscreen, so no display is needed.
-void scheduleScreenshot(QApplication &app, QWidget &window, const QString &path)
+bool saveScreenshot(QWidget &window, const QString &path)
 {
-    QTimer::singleShot(0, &window, [&app, &window, path] {
-        // Layout requests are posted events; deliver them so the grab shows final geometry.
-        QCoreApplication::sendPostedEvents();
-        const QPixmap shot = window.grab();
-        if (shot.isNull() || !shot.save(path, "PNG")) {
+    // Layout requests are posted events; deliver them so the grab shows final geometry.
+    QCoreApplication::sendPostedEvents();
+    const QPixmap shot = window.grab();
+    return !shot.isNull() && shot.save(path, "PNG");
+}
+
+// Renders the window once it is laid out and, on a first run, once the simulator's answer to
+// the ready request is shown (or a few seconds passed), then quits: docs and GUI smoke tests use
+// it with QT_QPA_PLATFORM=offscreen, so no display is needed.
+void scheduleScreenshot(QApplication &app, MainWindow &window, const QString &path, bool waitForAnswer)
+{
+    auto shoot = [&app, &window, path] {
+        if (!saveScreenshot(window, path)) {
             std::fprintf(stderr, "mbscope: cannot write the screenshot to %s\n", qPrintable(path));
             app.exit(ExitFailure);
             return;
         }
         app.exit(ExitOk);
-    });
+    };
+    if (!waitForAnswer) {
+        QTimer::singleShot(0, &window, shoot);
+        return;
+    }
+    QObject::connect(window.answerView(), &TransactionView::transactionShown, &window,
+                     [shoot] { QTimer::singleShot(50, shoot); }, Qt::SingleShotConnection);
+    QTimer::singleShot(kScreenshotAnswerWaitMs, &window, shoot);
+    QTimer::singleShot(0, &window, [&window] { window.composer()->send(); });
 }
 
 } // namespace
 
+bool guiWantsOffscreen(int argc, char *argv[])
+{
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--screenshot") == 0 || std::strncmp(argv[i], "--screenshot=", 13) == 0)
+            return true;
+    }
+    return false;
+}
+
 int runGui(QApplication &app)
 {
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("mbscope: the Modbus test and analysis workbench. Without a "
+                                                    "subcommand it opens the window; `mbscope help` lists the subcommands."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption screenshotOption(QStringLiteral("screenshot"),
+                                              QStringLiteral("Render the window offscreen to FILE (PNG) and exit."),
+                                              QStringLiteral("FILE"));
+    const QCommandLineOption sizeOption(QStringLiteral("size"),
+                                        QStringLiteral("Window size WIDTHxHEIGHT (default 1400x900)."),
+                                        QStringLiteral("WxH"));
+    const QCommandLineOption noSimulatorOption(QStringLiteral("no-simulator"),
+                                               QStringLiteral("Start disconnected instead of with the built-in simulator."));
+    parser.addOptions({screenshotOption, sizeOption, noSimulatorOption});
+    if (!parser.parse(QCoreApplication::arguments())) {
+        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator]\n",
+                     qPrintable(parser.errorText()));
+        return ExitUsage;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        std::printf("%s", qPrintable(parser.helpText()));
+        return ExitOk;
+    }
+    if (parser.isSet(QStringLiteral("version"))) {
+        std::printf("mbscope %s\n", qPrintable(QCoreApplication::applicationVersion()));
+        return ExitOk;
+    }
+    if (!parser.positionalArguments().isEmpty()) {
+        std::fprintf(stderr, "mbscope: unexpected argument '%s'\n", qPrintable(parser.positionalArguments().constFirst()));
+        return ExitUsage;
+    }
+
+    QSize size(1400, 900);
+    if (parser.isSet(sizeOption)) {
+        const QRegularExpressionMatch m =
+            QRegularExpression(QStringLiteral("^(\\d{3,5})[xX](\\d{3,5})$")).match(parser.value(sizeOption));
+        if (!m.hasMatch()) {
+            std::fprintf(stderr, "mbscope: --size '%s' is not WIDTHxHEIGHT (e.g. 1400x900, each 100-99999)\n",
+                         qPrintable(parser.value(sizeOption)));
+            return ExitUsage;
+        }
+        size = QSize(m.captured(1).toInt(), m.captured(2).toInt());
+    }
+    // MBSCOPE_SCREENSHOT is kept for scripts (run-mbscope.sh, the CTest smoke test).
+    QString screenshot = parser.value(screenshotOption);
+    if (screenshot.isEmpty())
+        screenshot = qEnvironmentVariable("MBSCOPE_SCREENSHOT");
+
     MainWindow window;
-    window.decodePanel()->setFrameText(QString::fromLatin1(kExampleFrame));
-    window.decodePanel()->decodeNow();
+    window.resize(size);
+    bool simulated = false;
+    if (!parser.isSet(noSimulatorOption))
+        simulated = window.startWithSimulator();
     window.show();
 
-    const QString screenshot = qEnvironmentVariable("MBSCOPE_SCREENSHOT");
     if (!screenshot.isEmpty())
-        scheduleScreenshot(app, window, screenshot);
+        scheduleScreenshot(app, window, screenshot, simulated);
 
     bool ok = false;
     const int quitAfterMs = qEnvironmentVariableIntValue("MBSCOPE_QUIT_AFTER_MS", &ok);

@@ -39,6 +39,8 @@ int main(int argc, char *argv[])
         return mbscope::app::runHeadless(QCoreApplication::arguments());
     }
 #ifdef MBSCOPE_HAVE_UI
+    if (mbscope::app::guiWantsOffscreen(argc, argv))
+        mbscope::app::HistogramPlot::prepareOffscreenPlatform();
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("mbscope"));
     QApplication::setApplicationVersion(QStringLiteral(MBSCOPE_VERSION));

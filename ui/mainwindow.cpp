@@ -1,29 +1,161 @@
 #include "mainwindow.h"
 
+#include "connectionbar.h"
 #include "decodepanel.h"
+#include "linkcontroller.h"
+#include "linkstatuswidget.h"
+#include "noticebanner.h"
+#include "rawrequesteditor.h"
+#include "requestcomposer.h"
+#include "savedrequests.h"
+#include "transactionview.h"
 
 #include <QtCore/QCoreApplication>
 #include <QtGui/QAction>
 #include <QtGui/QKeySequence>
 #include <QtWidgets/QMenuBar>
 #include <QtWidgets/QMessageBox>
+#include <QtWidgets/QPlainTextEdit>
+#include <QtWidgets/QSplitter>
 #include <QtWidgets/QStatusBar>
 #include <QtWidgets/QTabWidget>
+#include <QtWidgets/QVBoxLayout>
 
 namespace mbscope {
 
 MainWindow::MainWindow(QWidget *parent)
     : QMainWindow(parent)
-    , m_tabs(new QTabWidget(this))
-    , m_decodePanel(new DecodePanel(this))
+    , m_controller(new LinkController(this))
+    , m_simulator(new EmbeddedSimulator(this))
 {
     setWindowTitle(QStringLiteral("mbscope"));
-    m_tabs->setDocumentMode(true);
-    m_tabs->addTab(m_decodePanel, tr("&Decode"));
-    setCentralWidget(m_tabs);
+    buildUi();
+    connectPanels();
     createMenus();
-    statusBar()->showMessage(tr("Ready"));
-    resize(1000, 620);
+    statusBar()->showMessage(tr("Ready"), 3000);
+    resize(1400, 900);
+}
+
+MainWindow::~MainWindow()
+{
+    // The engine's link goes first, so the simulator does not log a client vanishing mid-request.
+    delete m_controller;
+    m_controller = nullptr;
+    m_simulator->stop();
+}
+
+void MainWindow::buildUi()
+{
+    m_connectionBar = new ConnectionBar(this);
+    m_connectionBar->setObjectName(QStringLiteral("connectionBar"));
+    m_banner = new NoticeBanner(this);
+    m_composer = new RequestComposer(this);
+    m_composer->setObjectName(QStringLiteral("requestComposer"));
+    m_answerView = new TransactionView(this);
+    m_answerView->setObjectName(QStringLiteral("answerView"));
+    m_decodePanel = new DecodePanel(this);
+    m_decodePanel->setObjectName(QStringLiteral("decodePanel"));
+
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("viewTabs"));
+    m_tabs->setDocumentMode(true);
+    m_tabs->addTab(m_answerView, tr("&Answer"));
+    m_tabs->addTab(m_decodePanel, tr("&Decode any frame"));
+
+    m_splitter = new QSplitter(Qt::Horizontal, this);
+    m_splitter->addWidget(m_composer);
+    m_splitter->addWidget(m_tabs);
+    m_splitter->setStretchFactor(0, 0);
+    m_splitter->setStretchFactor(1, 1);
+    m_splitter->setSizes({470, 930});
+    m_splitter->setChildrenCollapsible(false);
+
+    auto *central = new QWidget(this);
+    auto *layout = new QVBoxLayout(central);
+    layout->setContentsMargins(6, 4, 6, 4);
+    layout->addWidget(m_connectionBar);
+    layout->addWidget(m_banner);
+    layout->addWidget(m_splitter, 1);
+    setCentralWidget(central);
+
+    m_linkStatus = new LinkStatusWidget(this);
+    statusBar()->addPermanentWidget(m_linkStatus);
+
+    m_composer->setFraming(m_connectionBar->framing());
+    m_composer->setUnitId(m_connectionBar->unitId());
+}
+
+void MainWindow::connectPanels()
+{
+    ConnectionBar *bar = m_connectionBar;
+    LinkController *link = m_controller;
+    connect(bar, &ConnectionBar::connectRequested, link, &LinkController::connectTo);
+    connect(bar, &ConnectionBar::disconnectRequested, link, &LinkController::disconnectLink);
+    connect(bar, &ConnectionBar::framingChanged, m_composer, &RequestComposer::setFraming);
+    connect(bar, &ConnectionBar::unitIdChanged, m_composer, &RequestComposer::setUnitId);
+    connect(m_composer, &RequestComposer::unitIdSeen, bar, &ConnectionBar::setUnitId);
+
+    connect(link, &LinkController::stateChanged, this, [this, bar](LinkController::State state, const QString &message) {
+        const bool connected = state != LinkController::State::Disconnected;
+        bar->setConnected(connected);
+        m_composer->setLinkReady(connected);
+        m_linkStatus->setState(state, message);
+        if (state == LinkController::State::Failed)
+            bar->showError(message);
+        else if (state == LinkController::State::Connected) {
+            bar->clearError();
+            bar->addRecent(m_controller->url());
+        }
+    });
+    connect(link, &LinkController::countersChanged, m_linkStatus, &LinkStatusWidget::setCounters);
+    connect(link, &LinkController::pollingChanged, m_composer, &RequestComposer::setPolling);
+    connect(link, &LinkController::latestTransaction, this, [this](const Transaction &transaction) {
+        m_answerView->showTransaction(transaction, m_controller->url().framing());
+    });
+    connect(link, &LinkController::pollFinished, this, [this](const PollReport &report) {
+        m_answerView->flush();
+        quint64 count = 0;
+        for (const PollRun &run : report.runs)
+            count += run.cycles;
+        statusBar()->showMessage(tr("Poll %1 after %2 cycles").arg(report.stopped ? tr("stopped") : tr("finished")).arg(count), 5000);
+    });
+
+    connect(m_composer, &RequestComposer::sendRequested, this, [this](const QByteArray &bytes) {
+        m_tabs->setCurrentWidget(m_answerView);
+        m_controller->send(bytes);
+    });
+    connect(m_composer, &RequestComposer::pollRequested, this, [this](const QByteArray &bytes, int intervalMs, quint64 count) {
+        m_tabs->setCurrentWidget(m_answerView);
+        m_controller->startPoll(bytes, intervalMs, count);
+    });
+    connect(m_composer, &RequestComposer::stopPollRequested, link, &LinkController::stopPoll);
+}
+
+bool MainWindow::startWithSimulator(const QString &url)
+{
+    const EmbeddedSimulator::Started started = m_simulator->start(QString::fromLatin1(kFirstRunProfile), url);
+    if (!started.ok) {
+        m_connectionBar->showError(started.error);
+        return false;
+    }
+    m_connectionBar->setUrl(started.url);
+    m_connectionBar->setUnitId(1);
+    m_composer->setFraming(started.url.framing());
+    const SavedRequest read = SavedRequests::rosRaoRead();
+    m_composer->rawEditor()->setText(read.hex);
+    m_composer->showRawTab();
+    if (const std::optional<LinkUrl> target = m_connectionBar->url())
+        m_controller->connectTo(*target);
+
+    QString notice = tr("<b>Connected to mbscope's built-in simulator</b>, not to a device: a RosRao gamma detector "
+                        "(profile <code>%1</code>) answering on <code>%2</code>. Press <b>Send</b> to read its 22 "
+                        "registers. To talk to a real device, press <b>Disconnect</b>, choose its link type, host and "
+                        "port (or serial port) and press <b>Connect</b>.")
+                         .arg(QString::fromLatin1(kFirstRunProfile), started.url.toString().toHtmlEscaped());
+    if (!started.note.isEmpty())
+        notice += QStringLiteral("<br>") + started.note.toHtmlEscaped();
+    m_banner->showNotice(notice);
+    return true;
 }
 
 void MainWindow::createMenus()
@@ -32,6 +164,18 @@ void MainWindow::createMenus()
     QAction *quit = file->addAction(tr("&Quit"), QCoreApplication::instance(), &QCoreApplication::quit);
     quit->setShortcut(QKeySequence::Quit);
     quit->setMenuRole(QAction::QuitRole);
+
+    QMenu *request = menuBar()->addMenu(tr("&Request"));
+    request->addAction(m_composer->sendAction());
+    request->addAction(m_composer->pollAction());
+    request->addSeparator();
+    QAction *focusRaw = request->addAction(tr("&Edit raw bytes"), this, [this] {
+        m_composer->showRawTab();
+        m_composer->rawEditor()->editor()->setFocus();
+    });
+    focusRaw->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    QAction *form = request->addAction(tr("Build with the &form"), m_composer, &RequestComposer::showFormTab);
+    form->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     QAction *about = help->addAction(tr("&About mbscope"), this, &MainWindow::showAbout);

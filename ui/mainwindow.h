@@ -1,30 +1,68 @@
 #pragma once
 
+#include "embeddedsimulator.h"
+
 #include <QtWidgets/QMainWindow>
 
+class QSplitter;
 class QTabWidget;
 
 namespace mbscope {
 
+class ConnectionBar;
 class DecodePanel;
+class LinkController;
+class LinkStatusWidget;
+class NoticeBanner;
+class RequestComposer;
+class TransactionView;
 
-// The window only assembles: panels are their own classes, and each later feature (connection,
-// traffic, polling, simulator) adds a tab or a dock here, not its logic.
+// The window only assembles: the connection bar, the composer, the answer and decode views, the
+// status bar and the menus are their own classes; LinkController talks to the engine. Here they
+// are laid out and connected, nothing more.
 class MainWindow : public QMainWindow
 {
     Q_OBJECT
 
 public:
+    // Where a first run serves the RosRao detector: the port its serial device server uses.
+    static constexpr const char *kFirstRunUrl = "rtu-tcp://127.0.0.1:4001";
+    static constexpr const char *kFirstRunProfile = "rosrao-gamma";
+
     explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    // The first run: the built-in simulator with the RosRao profile (on url, or a free loopback
+    // port when that one is taken), connected, with the RosRao read ready in the composer.
+    // False (and the reason in the connection bar) when the simulator cannot start.
+    bool startWithSimulator(const QString &url = QString::fromLatin1(kFirstRunUrl));
 
     [[nodiscard]] DecodePanel *decodePanel() const { return m_decodePanel; }
+    [[nodiscard]] ConnectionBar *connectionBar() const { return m_connectionBar; }
+    [[nodiscard]] RequestComposer *composer() const { return m_composer; }
+    [[nodiscard]] TransactionView *answerView() const { return m_answerView; }
+    [[nodiscard]] LinkController *controller() const { return m_controller; }
+    [[nodiscard]] LinkStatusWidget *linkStatus() const { return m_linkStatus; }
+    [[nodiscard]] NoticeBanner *banner() const { return m_banner; }
+    [[nodiscard]] EmbeddedSimulator *simulator() const { return m_simulator; }
+    [[nodiscard]] QTabWidget *viewTabs() const { return m_tabs; }
 
 private:
+    void buildUi();
+    void connectPanels();
     void createMenus();
     void showAbout();
 
+    LinkController *m_controller = nullptr;
+    EmbeddedSimulator *m_simulator = nullptr;
+    ConnectionBar *m_connectionBar = nullptr;
+    NoticeBanner *m_banner = nullptr;
+    RequestComposer *m_composer = nullptr;
+    QSplitter *m_splitter = nullptr;
     QTabWidget *m_tabs = nullptr;
+    TransactionView *m_answerView = nullptr;
     DecodePanel *m_decodePanel = nullptr;
+    LinkStatusWidget *m_linkStatus = nullptr;
 };
 
 } // namespace mbscope

@@ -1,6 +1,8 @@
-// MainWindow: the title, the menus the issue asks for, and the decode panel in the central area.
+// MainWindow: the title, the menus, and the panels it assembles (connection bar, composer, views).
 #include "decodepanel.h"
+#include "connectionbar.h"
 #include "mainwindow.h"
+#include "requestcomposer.h"
 
 #include <QtGui/QAction>
 #include <QtWidgets/QMenu>
@@ -27,9 +29,11 @@ void TestMainWindow::assemblesThePanels()
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QCOMPARE(window.windowTitle(), QStringLiteral("mbscope"));
     QVERIFY(window.decodePanel());
-    auto *tabs = qobject_cast<QTabWidget *>(window.centralWidget());
+    QTabWidget *tabs = window.viewTabs();
     QVERIFY(tabs);
-    QCOMPARE(tabs->currentWidget(), window.decodePanel());
+    QVERIFY(tabs->indexOf(window.decodePanel()) >= 0);
+    QVERIFY(window.connectionBar()->isVisible());
+    QVERIFY(window.composer()->isVisible());
     QVERIFY(window.statusBar()->isVisible());
 }
 
@@ -45,7 +49,8 @@ void TestMainWindow::menus()
                 actions << a->text();
         }
     }
-    QCOMPARE(titles, (QStringList{QStringLiteral("&File"), QStringLiteral("&Help")}));
+    QCOMPARE(titles, (QStringList{QStringLiteral("&File"), QStringLiteral("&Request"), QStringLiteral("&Help")}));
+    QVERIFY(actions.contains(QStringLiteral("&Send")));
     QVERIFY(actions.contains(QStringLiteral("&Quit")));
     QVERIFY(actions.contains(QStringLiteral("&About mbscope")));
 }

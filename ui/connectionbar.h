@@ -1,0 +1,87 @@
+#pragma once
+
+#include "transport/linkurl.h"
+
+#include <QtWidgets/QWidget>
+
+#include <optional>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QSpinBox;
+class QStackedWidget;
+class QToolButton;
+
+namespace mbscope {
+
+// Where to talk to: the link type, then host and port (network links) or a serial port with its
+// line settings, the unit id and the response timeout. It produces a LinkUrl (url()) and asks
+// to connect or disconnect; it never opens anything itself. A target that cannot be used is
+// refused in place (errorText()), naming the field and what to change; link failures reported
+// later (showError) appear in the same place. Targets that connected are kept as recent targets
+// in QSettings ("connection/recent").
+class ConnectionBar : public QWidget
+{
+    Q_OBJECT
+public:
+    static constexpr int kMaxRecent = 10;
+
+    explicit ConnectionBar(QWidget *parent = nullptr);
+
+    // The target as the fields say, with the timeout as ?timeout=; nullopt with errorText() set.
+    [[nodiscard]] std::optional<LinkUrl> url();
+    // Fills the fields from a URL (recent target, first run).
+    void setUrl(const LinkUrl &url);
+    [[nodiscard]] int unitId() const;
+    void setUnitId(int unit);
+    [[nodiscard]] int timeoutMs() const;
+    // The framing of the chosen link type (what "Complete" adds in the composer).
+    [[nodiscard]] Framing framing() const;
+
+    // The controller's view: connected (fields locked, button says Disconnect) or not.
+    void setConnected(bool connected);
+    [[nodiscard]] bool isConnected() const { return m_connected; }
+    void showError(const QString &message);
+    void clearError();
+    [[nodiscard]] QString errorText() const;
+
+    void addRecent(const LinkUrl &url);
+    [[nodiscard]] QStringList recentTargets() const;
+    // Re-reads the serial ports the system has (also done when the list is opened).
+    void refreshSerialPorts();
+
+    [[nodiscard]] QPushButton *connectButton() const { return m_connectButton; }
+
+Q_SIGNALS:
+    void connectRequested(const mbscope::LinkUrl &url);
+    void disconnectRequested();
+    void framingChanged(mbscope::Framing framing);
+    void unitIdChanged(int unit);
+
+private:
+    void buildUi();
+    void onConnectClicked();
+    void onKindChanged();
+    void rebuildRecentMenu();
+    [[nodiscard]] LinkKind kind() const;
+
+    QComboBox *m_kindCombo = nullptr;
+    QStackedWidget *m_targetStack = nullptr;
+    QLineEdit *m_hostEdit = nullptr;
+    QSpinBox *m_portSpin = nullptr;
+    QComboBox *m_serialPortCombo = nullptr;
+    QComboBox *m_baudCombo = nullptr;
+    QComboBox *m_parityCombo = nullptr;
+    QComboBox *m_dataBitsCombo = nullptr;
+    QComboBox *m_stopBitsCombo = nullptr;
+    QSpinBox *m_unitSpin = nullptr;
+    QSpinBox *m_timeoutSpin = nullptr;
+    QPushButton *m_connectButton = nullptr;
+    QToolButton *m_recentButton = nullptr;
+    QLabel *m_errorLabel = nullptr;
+    bool m_connected = false;
+};
+
+} // namespace mbscope

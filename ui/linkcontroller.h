@@ -1,0 +1,84 @@
+#pragma once
+
+#include "engine/engineprogress.h"
+#include "engine/pollreport.h"
+#include "engine/transaction.h"
+#include "transport/linkurl.h"
+
+#include <QtCore/QByteArray>
+#include <QtCore/QList>
+#include <QtCore/QObject>
+
+#include <memory>
+
+namespace mbscope {
+
+class TransactionEngine;
+
+// Between the window's widgets and the TransactionEngine: owns the engine (and with it the engine
+// thread), turns "send these bytes" and "poll these bytes" into RequestItems for the connected
+// link, and reports what happened as plain signals. No widget code, so tests drive it directly
+// and MainWindow only connects it to the panels.
+//
+// The engine opens the link on the first request, so "connected" means: the target is set, and
+// (once a request went out) the link opened; a link failure puts the controller into Failed with
+// the link's own words until the next request succeeds or the user connects elsewhere.
+class LinkController : public QObject
+{
+    Q_OBJECT
+public:
+    enum class State : quint8 {
+        Disconnected,
+        Ready,     // target set; the link opens on the first request
+        Connected, // the link opened and answers come back
+        Failed,    // the link failed; message() says why
+    };
+    Q_ENUM(State)
+
+    explicit LinkController(QObject *parent = nullptr);
+    ~LinkController() override;
+
+    void connectTo(const LinkUrl &url);
+    void disconnectLink();
+    [[nodiscard]] State state() const { return m_state; }
+    [[nodiscard]] bool isConnected() const { return m_state != State::Disconnected; }
+    [[nodiscard]] const LinkUrl &url() const { return m_url; }
+    [[nodiscard]] QString message() const { return m_message; }
+    [[nodiscard]] const EngineCounters &counters() const { return m_counters; }
+    [[nodiscard]] bool isPolling() const { return m_polling; }
+    [[nodiscard]] TransactionEngine *engine() const { return m_engine.get(); }
+
+    // Sends bytes exactly as given; returns the transaction id, 0 when not connected.
+    quint64 send(const QByteArray &bytes);
+    // Sends bytes every intervalMs (0: back to back), count times (0: until stopPoll()).
+    bool startPoll(const QByteArray &bytes, int intervalMs, quint64 count);
+    void stopPoll();
+
+Q_SIGNALS:
+    void stateChanged(mbscope::LinkController::State state, const QString &message);
+    // Every transaction, in batches as the engine delivers them (at most ~30 a second).
+    void transactionsFinished(const QList<mbscope::Transaction> &transactions);
+    // The newest transaction of each batch: what the decode view shows.
+    void latestTransaction(const mbscope::Transaction &transaction);
+    void countersChanged(const mbscope::EngineCounters &counters);
+    void pollingChanged(bool polling);
+    void pollFinished(const mbscope::PollReport &report);
+
+private:
+    void onTransactions(const QList<Transaction> &transactions);
+    void onProgress(const EngineProgress &progress);
+    void onLinkMessage(const QString &message);
+    void onPollFinished(const PollReport &report);
+    void setState(State state, const QString &message = {});
+    void resetEngine();
+
+    std::unique_ptr<TransactionEngine> m_engine;
+    LinkUrl m_url;
+    State m_state = State::Disconnected;
+    QString m_message;
+    EngineCounters m_counters;
+    EngineCounters m_countersBefore; // a new engine restarts at zero; the status bar keeps counting
+    bool m_polling = false;
+};
+
+} // namespace mbscope

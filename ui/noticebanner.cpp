@@ -1,0 +1,48 @@
+#include "noticebanner.h"
+
+#include "severitystyle.h"
+
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QToolButton>
+
+namespace mbscope {
+
+NoticeBanner::NoticeBanner(QWidget *parent)
+    : QFrame(parent)
+    , m_label(new QLabel(this))
+{
+    setObjectName(QStringLiteral("noticeBanner"));
+    setFrameShape(QFrame::StyledPanel);
+    setAutoFillBackground(true);
+    QPalette p = palette();
+    p.setColor(QPalette::Window, SeverityStyle::backgroundColor(Severity::Info));
+    setPalette(p);
+    m_label->setObjectName(QStringLiteral("noticeText"));
+    m_label->setWordWrap(true);
+    m_label->setTextFormat(Qt::RichText);
+    m_label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto *close = new QToolButton(this);
+    close->setObjectName(QStringLiteral("noticeCloseButton"));
+    close->setText(tr("Dismiss"));
+    close->setAutoRaise(true);
+    connect(close, &QToolButton::clicked, this, &QWidget::hide);
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(10, 6, 6, 6);
+    layout->addWidget(m_label, 1);
+    layout->addWidget(close, 0, Qt::AlignTop);
+    hide();
+}
+
+void NoticeBanner::showNotice(const QString &richText)
+{
+    m_label->setText(richText);
+    show();
+}
+
+QString NoticeBanner::text() const
+{
+    return m_label->text();
+}
+
+} // namespace mbscope

@@ -1,0 +1,83 @@
+#pragma once
+
+#include "protocol/framing.h"
+
+#include <QtCore/QByteArray>
+#include <QtWidgets/QWidget>
+
+class QAction;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+class QTabWidget;
+
+namespace mbscope {
+
+class RawRequestEditor;
+class RequestForm;
+
+// What to send: the Raw tab (the exact bytes) and the Form tab (built from fields) kept in
+// sync, then Send once or Poll. The Raw bytes are what leaves: the Form writes its bytes into
+// the Raw tab while it is the tab in use, and a Raw request the Form can describe fills the Form.
+// Changing the link or unit while on the Raw tab does not rewrite the bytes typed there.
+class RequestComposer : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit RequestComposer(QWidget *parent = nullptr);
+
+    [[nodiscard]] RawRequestEditor *rawEditor() const { return m_raw; }
+    [[nodiscard]] RequestForm *form() const { return m_form; }
+    [[nodiscard]] QTabWidget *tabs() const { return m_tabs; }
+    [[nodiscard]] QAction *sendAction() const { return m_sendAction; }
+    [[nodiscard]] QAction *pollAction() const { return m_pollAction; }
+    [[nodiscard]] QSpinBox *intervalSpin() const { return m_intervalSpin; }
+    [[nodiscard]] QSpinBox *countSpin() const { return m_countSpin; }
+
+    // The bytes Send would send (the Raw tab's); empty while they are not hex.
+    [[nodiscard]] QByteArray bytes() const;
+    void setRequestText(const QString &hex);
+    void showRawTab();
+    void showFormTab();
+
+public Q_SLOTS:
+    void setFraming(mbscope::Framing framing);
+    void setUnitId(int unit);
+    // Whether a link is there to send to (Send and Poll are enabled only then).
+    void setLinkReady(bool ready);
+    void setPolling(bool polling);
+    // Sends the current bytes (what Ctrl+Return does).
+    void send();
+    // Starts a poll, or stops the one running.
+    void togglePoll();
+
+Q_SIGNALS:
+    void sendRequested(const QByteArray &bytes);
+    void pollRequested(const QByteArray &bytes, int intervalMs, quint64 count);
+    void stopPollRequested();
+    // A Raw request named a unit (the composer's form now uses it): the connection bar follows.
+    void unitIdSeen(int unit);
+
+private:
+    void buildUi();
+    void onRawChanged(const QByteArray &bytes, bool valid);
+    void onFormChanged();
+    void updateActions();
+
+    QTabWidget *m_tabs = nullptr;
+    RawRequestEditor *m_raw = nullptr;
+    RequestForm *m_form = nullptr;
+    QAction *m_sendAction = nullptr;
+    QAction *m_pollAction = nullptr;
+    QPushButton *m_sendButton = nullptr;
+    QPushButton *m_pollButton = nullptr;
+    QSpinBox *m_intervalSpin = nullptr;
+    QSpinBox *m_countSpin = nullptr;
+    QLabel *m_sendHint = nullptr;
+    Framing m_framing = Framing::Rtu;
+    bool m_syncing = false;
+    bool m_linkReady = false;
+    bool m_polling = false;
+};
+
+} // namespace mbscope
