@@ -1,7 +1,7 @@
 // The window: what `mbscope` runs without a subcommand.
 #include "commands.h"
 
-#include "linkcontroller.h"
+#include "requestcomposer.h"
 #include "mainwindow.h"
 #include "transactionview.h"
 
