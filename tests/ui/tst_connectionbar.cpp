@@ -1,0 +1,214 @@
+// ConnectionBar: the URL it produces for every link type, errors in place, recent targets.
+#include "connectionbar.h"
+#include "guitestsupport.h"
+
+#include <QtCore/QSettings>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSpinBox>
+#include <QtTest/QSignalSpy>
+#include <QtTest/QtTest>
+
+using namespace mbscope;
+
+class TestConnectionBar : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void init();
+    void networkUrl_data();
+    void networkUrl();
+    void serialUrl();
+    void emptyHostIsRefusedInPlace();
+    void hostWithPortIsRefused();
+    void rtuNeedsEightDataBits();
+    void setUrlRoundTrip_data();
+    void setUrlRoundTrip();
+    void connectAndDisconnectSignals();
+    void recentTargets();
+    void screenshot();
+};
+
+void TestConnectionBar::initTestCase()
+{
+    guitest::isolateSettings();
+}
+
+void TestConnectionBar::init()
+{
+    QSettings().clear();
+}
+
+static void chooseKind(ConnectionBar &bar, LinkKind kind)
+{
+    auto *combo = bar.findChild<QComboBox *>(QStringLiteral("linkKindCombo"));
+    QVERIFY(combo);
+    combo->setCurrentIndex(combo->findData(int(kind)));
+    QVERIFY(combo->currentIndex() >= 0);
+}
+
+void TestConnectionBar::networkUrl_data()
+{
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<QString>("host");
+    QTest::addColumn<int>("port");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("tcp") << int(LinkKind::Tcp) << QStringLiteral("192.168.0.10") << 502 << QStringLiteral("tcp://192.168.0.10:502");
+    QTest::newRow("rtu-tcp") << int(LinkKind::RtuTcp) << QStringLiteral("192.168.127.254") << 4001
+                             << QStringLiteral("rtu-tcp://192.168.127.254:4001");
+    QTest::newRow("udp") << int(LinkKind::Udp) << QStringLiteral("plc.local") << 502 << QStringLiteral("udp://plc.local:502");
+    QTest::newRow("rtu-udp") << int(LinkKind::RtuUdp) << QStringLiteral("10.0.0.2") << 5000 << QStringLiteral("rtu-udp://10.0.0.2:5000");
+    QTest::newRow("ascii-tcp") << int(LinkKind::AsciiTcp) << QStringLiteral("10.0.0.3") << 4002
+                               << QStringLiteral("ascii-tcp://10.0.0.3:4002");
+}
+
+void TestConnectionBar::networkUrl()
+{
+    QFETCH(int, kind);
+    QFETCH(QString, host);
+    QFETCH(int, port);
+    QFETCH(QString, expected);
+    ConnectionBar bar;
+    chooseKind(bar, LinkKind(kind));
+    bar.findChild<QLineEdit *>(QStringLiteral("hostEdit"))->setText(host);
+    bar.findChild<QSpinBox *>(QStringLiteral("portSpin"))->setValue(port);
+    bar.findChild<QSpinBox *>(QStringLiteral("timeoutSpin"))->setValue(750);
+    const std::optional<LinkUrl> url = bar.url();
+    QVERIFY2(url, qPrintable(bar.errorText()));
+    QCOMPARE(url->kind, LinkKind(kind));
+    QCOMPARE(url->host, host);
+    QCOMPARE(int(url->port), port);
+    QCOMPARE(url->responseTimeoutMs, 750);
+    QVERIFY2(url->toString().startsWith(expected), qPrintable(url->toString()));
+    QVERIFY(bar.errorText().isEmpty());
+}
+
+void TestConnectionBar::serialUrl()
+{
+    ConnectionBar bar;
+    chooseKind(bar, LinkKind::Rtu);
+    bar.findChild<QComboBox *>(QStringLiteral("serialPortCombo"))->setCurrentText(QStringLiteral("/dev/ttyUSB0"));
+    bar.findChild<QComboBox *>(QStringLiteral("baudCombo"))->setCurrentText(QStringLiteral("19200"));
+    auto *parity = bar.findChild<QComboBox *>(QStringLiteral("parityCombo"));
+    parity->setCurrentIndex(parity->findData(QStringLiteral("N")));
+    auto *stop = bar.findChild<QComboBox *>(QStringLiteral("stopBitsCombo"));
+    stop->setCurrentIndex(stop->findData(2));
+    const std::optional<LinkUrl> url = bar.url();
+    QVERIFY2(url, qPrintable(bar.errorText()));
+    QCOMPARE(url->kind, LinkKind::Rtu);
+    QCOMPARE(url->serial.device, QStringLiteral("/dev/ttyUSB0"));
+    QCOMPARE(url->serial.baud, 19200);
+    QCOMPARE(url->serial.parity, 'N');
+    QCOMPARE(url->serial.dataBits, 8);
+    QCOMPARE(url->serial.stopBits, 2);
+    QCOMPARE(bar.framing(), Framing::Rtu);
+}
+
+void TestConnectionBar::emptyHostIsRefusedInPlace()
+{
+    ConnectionBar bar;
+    bar.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&bar));
+    QSignalSpy connectSpy(&bar, &ConnectionBar::connectRequested);
+    bar.findChild<QLineEdit *>(QStringLiteral("hostEdit"))->clear();
+    QTest::mouseClick(bar.connectButton(), Qt::LeftButton);
+    QCOMPARE(connectSpy.count(), 0);
+    QVERIFY2(bar.errorText().contains(QLatin1String("host name or IP address")), qPrintable(bar.errorText()));
+    // Typing in the field clears the message.
+    QTest::keyClicks(bar.findChild<QLineEdit *>(QStringLiteral("hostEdit")), QStringLiteral("10.0.0.1"));
+    QVERIFY(bar.errorText().isEmpty());
+}
+
+void TestConnectionBar::hostWithPortIsRefused()
+{
+    ConnectionBar bar;
+    bar.findChild<QLineEdit *>(QStringLiteral("hostEdit"))->setText(QStringLiteral("10.0.0.1 502"));
+    QVERIFY(!bar.url());
+    QVERIFY2(bar.errorText().contains(QLatin1String("the port goes in Port")), qPrintable(bar.errorText()));
+}
+
+void TestConnectionBar::rtuNeedsEightDataBits()
+{
+    ConnectionBar bar;
+    chooseKind(bar, LinkKind::Rtu);
+    bar.findChild<QComboBox *>(QStringLiteral("serialPortCombo"))->setCurrentText(QStringLiteral("/dev/ttyS0"));
+    auto *data = bar.findChild<QComboBox *>(QStringLiteral("dataBitsCombo"));
+    data->setCurrentIndex(data->findData(7));
+    QVERIFY(!bar.url());
+    QVERIFY2(bar.errorText().contains(QLatin1String("8 data bits")), qPrintable(bar.errorText()));
+}
+
+void TestConnectionBar::setUrlRoundTrip_data()
+{
+    QTest::addColumn<QString>("url");
+    QTest::newRow("tcp") << QStringLiteral("tcp://192.168.1.5:502?timeout=1500ms");
+    QTest::newRow("rtu-tcp") << QStringLiteral("rtu-tcp://127.0.0.1:4001?timeout=1000ms");
+    QTest::newRow("rtu") << QStringLiteral("rtu:///dev/ttyUSB1?baud=38400&parity=O&data=8&stop=1&timeout=200ms");
+    QTest::newRow("ascii") << QStringLiteral("ascii:///dev/ttyS1?baud=9600&parity=E&data=7&stop=1&timeout=1000ms");
+}
+
+void TestConnectionBar::setUrlRoundTrip()
+{
+    QFETCH(QString, url);
+    const LinkUrl::Result parsed = LinkUrl::parse(url);
+    QVERIFY2(parsed.url, qPrintable(parsed.error));
+    ConnectionBar bar;
+    bar.setUrl(*parsed.url);
+    const std::optional<LinkUrl> back = bar.url();
+    QVERIFY2(back, qPrintable(bar.errorText()));
+    QCOMPARE(back->toString(), parsed.url->toString());
+}
+
+void TestConnectionBar::connectAndDisconnectSignals()
+{
+    ConnectionBar bar;
+    QSignalSpy connectSpy(&bar, &ConnectionBar::connectRequested);
+    QSignalSpy disconnectSpy(&bar, &ConnectionBar::disconnectRequested);
+    bar.connectButton()->click();
+    QCOMPARE(connectSpy.count(), 1);
+    bar.setConnected(true);
+    QCOMPARE(bar.connectButton()->text(), QStringLiteral("Dis&connect"));
+    QVERIFY(!bar.findChild<QComboBox *>(QStringLiteral("linkKindCombo"))->isEnabled());
+    bar.connectButton()->click();
+    QCOMPARE(disconnectSpy.count(), 1);
+    QCOMPARE(connectSpy.count(), 1);
+}
+
+void TestConnectionBar::recentTargets()
+{
+    ConnectionBar bar;
+    for (int i = 0; i < ConnectionBar::kMaxRecent + 3; ++i) {
+        LinkUrl url;
+        url.host = QStringLiteral("10.0.0.%1").arg(i);
+        bar.addRecent(url);
+    }
+    LinkUrl again;
+    again.host = QStringLiteral("10.0.0.5");
+    bar.addRecent(again);
+    const QStringList recent = bar.recentTargets();
+    QCOMPARE(recent.size(), ConnectionBar::kMaxRecent);
+    QCOMPARE(recent.first(), again.toString());
+    QCOMPARE(recent.count(again.toString()), 1);
+    // A second bar (the next start of the program) sees the same list.
+    ConnectionBar next;
+    QCOMPARE(next.recentTargets(), recent);
+}
+
+void TestConnectionBar::screenshot()
+{
+    ConnectionBar bar;
+    bar.resize(1400, bar.sizeHint().height());
+    bar.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&bar));
+    QVERIFY(guitest::saveShot(&bar, QStringLiteral("connectionbar-network.png")));
+    chooseKind(bar, LinkKind::Rtu);
+    bar.findChild<QComboBox *>(QStringLiteral("serialPortCombo"))->setCurrentText(QString());
+    QVERIFY(!bar.url());
+    QVERIFY(guitest::saveShot(&bar, QStringLiteral("connectionbar-serial-error.png")));
+}
+
+QTEST_MAIN(TestConnectionBar)
+#include "tst_connectionbar.moc"
