@@ -4,6 +4,7 @@
 #include "simulatecommand.h"
 #include "pollcommand.h"
 #include "readcommand.h"
+#include "runcommand.h"
 #include "sendcommand.h"
 #include "sweepcommand.h"
 #include "writecommand.h"
@@ -29,6 +30,7 @@ const Subcommand kSubcommands[] = {
     {"write", "write coils or holding registers", runWrite},
     {"poll", "send requests in cycles and print statistics: counts, latency percentiles, histogram", runPoll},
     {"sweep", "poll at several intervals and print error rate and latency per interval", runSweep},
+    {"run", "run a session's test plan against a device; pass/fail per step, JUnit XML for CI", runRun},
     {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},
 };
 

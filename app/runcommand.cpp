@@ -1,0 +1,157 @@
+#include "runcommand.h"
+
+#include "commands.h"
+
+#include "session/junitreport.h"
+#include "session/planrunner.h"
+#include "session/sessionreader.h"
+#include "transport/linkurl.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QFileInfo>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QTextStream>
+
+namespace mbscope::app {
+
+namespace {
+
+int countSteps(const std::vector<PlanStep> &steps)
+{
+    int n = 0;
+    for (const PlanStep &s : steps)
+        n += s.kind == PlanStep::Kind::Repeat ? s.times * countSteps(s.steps) : 1;
+    return n;
+}
+
+QString outcomeLabel(StepResult::Outcome outcome)
+{
+    switch (outcome) {
+    case StepResult::Outcome::Passed:
+        return QStringLiteral("PASS ");
+    case StepResult::Outcome::Failed:
+        return QStringLiteral("FAIL ");
+    case StepResult::Outcome::Error:
+        return QStringLiteral("ERROR");
+    case StepResult::Outcome::Skipped:
+        return QStringLiteral("SKIP ");
+    }
+    return QString();
+}
+
+void printStep(QTextStream &out, const StepResult &s)
+{
+    out << outcomeLabel(s.outcome) << "  " << s.name << "  (" << s.path << ", "
+        << QString::number(double(s.elapsedNs) / 1e6, 'f', 1) << " ms)\n";
+    for (const QString &reason : s.reasons)
+        out << "       " << reason << '\n';
+    if (s.outcome != StepResult::Outcome::Passed && s.outcome != StepResult::Outcome::Skipped && !s.detail.isEmpty())
+        out << "       " << s.detail << '\n';
+    out.flush();
+}
+
+} // namespace
+
+int runRun(const QStringList &arguments)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Runs the test plan of a session document (*.mbscope.json, see docs/session.schema.json) against a device: "
+        "each step sends a request and checks the answer (exact bytes, decoded field values or ranges, an exception "
+        "code, no answer), polls and checks bounds on the statistics (\"p95 < 20 ms\", \"timeouts == 0\"), waits or "
+        "repeats steps. Prints each step with pass or fail and why.\n"
+        "Example: mbscope run docs/examples/rosrao-gamma.mbscope.json --target rtu-tcp://127.0.0.1:4001 --junit results.xml\n"
+        "Exit status: 0 every step passed, 1 a step failed, 2 usage, document or link error."));
+    parser.addHelpOption();
+    parser.addPositionalArgument(QStringLiteral("SESSION"), QStringLiteral("The session document holding the plan."));
+    const QCommandLineOption target(QStringLiteral("target"),
+                                    QStringLiteral("Run against this URL instead of the session's target "
+                                                   "(tcp://host:502, rtu-tcp://host:4001, rtu:///dev/ttyUSB0?baud=9600 ...)."),
+                                    QStringLiteral("URL"));
+    const QCommandLineOption junit(QStringLiteral("junit"), QStringLiteral("Write the results as JUnit XML to FILE (for CI)."),
+                                   QStringLiteral("FILE"));
+    const QCommandLineOption json(QStringLiteral("json"), QStringLiteral("Print the results as JSON instead of text."));
+    parser.addOptions({target, junit, json});
+    if (!parser.parse(arguments)) {
+        err << "mbscope run: " << parser.errorText() << '\n';
+        return ExitUsage;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << subcommandHelp(parser.helpText(), "run");
+        return ExitOk;
+    }
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1) {
+        err << "mbscope run: " << (positional.isEmpty() ? QStringLiteral("give the session document to run")
+                                                        : QStringLiteral("one session document at a time ('%1' is one too many)").arg(positional.at(1)))
+            << " (see mbscope run --help)\n";
+        return ExitUsage;
+    }
+    const QString path = positional.constFirst();
+    const SessionLoadResult loaded = SessionReader::load(path);
+    if (!loaded.ok()) {
+        err << "mbscope run: cannot open the session (" << loaded.problems.size()
+            << (loaded.problems.size() == 1 ? " problem" : " problems") << "):\n"
+            << loaded.errorText() << '\n';
+        return ExitUsage;
+    }
+    const SessionDocument &document = *loaded.document;
+    if (document.plan.empty()) {
+        err << "mbscope run: " << path << ": the session has no test plan ('plan' is missing or empty)\n";
+        return ExitUsage;
+    }
+    const QString url = parser.isSet(target) ? parser.value(target) : document.target.url;
+    if (url.isEmpty()) {
+        err << "mbscope run: no target: give --target URL or save one in the session (target.url)\n";
+        return ExitUsage;
+    }
+    const LinkUrl::Result parsed = LinkUrl::parse(url);
+    if (!parsed.url) {
+        err << "mbscope run: " << (parser.isSet(target) ? QStringLiteral("--target") : QStringLiteral("%1: target.url").arg(path))
+            << ": " << parsed.error << '\n';
+        return ExitUsage;
+    }
+
+    SessionDocument named = document;
+    if (named.name.isEmpty())
+        named.name = QFileInfo(path).completeBaseName();
+    const bool asJson = parser.isSet(json);
+    if (!asJson) {
+        out << "plan     " << named.name << " (" << path << "), " << countSteps(named.plan) << " steps\n"
+            << "target   " << parsed.url->toString() << "\n\n";
+        out.flush();
+    }
+    PlanRunner runner(named, *parsed.url, document.target);
+    const PlanResult result = runner.run([&](const StepResult &step) {
+        if (!asJson)
+            printStep(out, step);
+    });
+
+    if (asJson) {
+        out << QJsonDocument(result.toJson()).toJson(QJsonDocument::Indented);
+    } else {
+        out << '\n' << result.steps.size() << " steps: " << result.count(StepResult::Outcome::Passed) << " passed, "
+            << result.count(StepResult::Outcome::Failed) << " failed, " << result.count(StepResult::Outcome::Error)
+            << " errors, " << result.count(StepResult::Outcome::Skipped) << " skipped in "
+            << QString::number(double(result.elapsedNs) / 1e9, 'f', 3) << " s\n";
+    }
+    out.flush();
+    if (parser.isSet(junit)) {
+        QString error;
+        if (!JUnitReport::write(result, parser.value(junit), &error)) {
+            err << "mbscope run: --junit: " << error << '\n';
+            return ExitUsage;
+        }
+        if (!asJson)
+            out << "junit    " << parser.value(junit) << '\n';
+    }
+    if (result.linkFailed) {
+        err << "mbscope run: " << result.linkMessage << '\n';
+        return ExitLinkError;
+    }
+    return result.passed() ? ExitOk : ExitFailure;
+}
+
+} // namespace mbscope::app

@@ -1,0 +1,250 @@
+#include "session/planrunner.h"
+
+#include "engine/requestitem.h"
+#include "engine/transactionengine.h"
+#include "protocol/hextext.h"
+#include "session/expectationcheck.h"
+#include "transport/monotonicclock.h"
+
+#include <QtCore/QEventLoop>
+#include <QtCore/QFileInfo>
+#include <QtCore/QTimer>
+
+namespace mbscope {
+
+namespace {
+
+QString msText(qint64 ns)
+{
+    return QString::number(double(ns) / 1e6, 'f', 3) + QStringLiteral(" ms");
+}
+
+QString exchangeText(const Transaction &t)
+{
+    QString text = QStringLiteral("sent %1").arg(HexText::format(t.request));
+    if (!t.response.isEmpty())
+        text += QStringLiteral(", answer %1 in %2").arg(HexText::format(t.response), msText(t.latencyNs()));
+    else
+        text += QStringLiteral(", %1").arg(ExpectationCheck::describeAnswer(t));
+    return text;
+}
+
+} // namespace
+
+PlanRunner::PlanRunner(const SessionDocument &document, const LinkUrl &url, const SessionTarget &target)
+    : m_document(document), m_url(url), m_target(target), m_engine(std::make_unique<TransactionEngine>())
+{
+    EngineOptions options;
+    options.pipelineDepth = target.pipelineDepth;
+    m_engine->setTarget(url, options);
+}
+
+PlanRunner::~PlanRunner() = default;
+
+PlanResult PlanRunner::run(const StepObserver &observer)
+{
+    m_observer = observer;
+    m_result = PlanResult{};
+    m_result.name = m_document.name;
+    m_result.target = m_url.toString();
+    m_result.started = QDateTime::currentDateTimeUtc();
+    m_last.reset();
+    const qint64 start = monotonicNowNs();
+    runSteps(m_document.plan, QStringLiteral("plan"), QString());
+    m_result.elapsedNs = monotonicNowNs() - start;
+    m_engine->closeLink();
+    return m_result;
+}
+
+void PlanRunner::report(const StepResult &result)
+{
+    m_result.steps.append(result);
+    if (m_observer)
+        m_observer(result);
+}
+
+void PlanRunner::skip(const std::vector<PlanStep> &steps, const QString &path, const QString &suffix)
+{
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        StepResult r;
+        r.path = QStringLiteral("%1[%2]").arg(path).arg(i);
+        r.name = steps[i].name + suffix;
+        r.kind = steps[i].kind;
+        r.outcome = StepResult::Outcome::Skipped;
+        r.reasons.append(QStringLiteral("not run: the link failed earlier"));
+        report(r);
+    }
+}
+
+void PlanRunner::runSteps(const std::vector<PlanStep> &steps, const QString &path, const QString &suffix)
+{
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const QString at = QStringLiteral("%1[%2]").arg(path).arg(i);
+        if (m_result.linkFailed) {
+            skip(std::vector<PlanStep>(steps.begin() + qsizetype(i), steps.end()), path, suffix);
+            return;
+        }
+        runStep(steps[i], at, suffix);
+    }
+}
+
+void PlanRunner::runStep(const PlanStep &step, const QString &path, const QString &suffix)
+{
+    if (step.kind == PlanStep::Kind::Repeat) {
+        for (int n = 1; n <= step.times && !m_result.linkFailed; ++n)
+            runSteps(step.steps, path + QStringLiteral(".steps"),
+                     suffix + QStringLiteral(" (%1/%2)").arg(n).arg(step.times));
+        return;
+    }
+    StepResult result;
+    result.path = path;
+    result.name = step.name + suffix;
+    result.kind = step.kind;
+    const qint64 start = monotonicNowNs();
+    switch (step.kind) {
+    case PlanStep::Kind::Send:
+        runSend(step, result);
+        break;
+    case PlanStep::Kind::Expect:
+        runExpect(step, result);
+        break;
+    case PlanStep::Kind::Poll:
+        runPoll(step, result);
+        break;
+    case PlanStep::Kind::Wait: {
+        QEventLoop loop;
+        QTimer::singleShot(int(step.waitMs), &loop, &QEventLoop::quit);
+        loop.exec();
+        result.reasons.append(QStringLiteral("waited %1 ms").arg(step.waitMs));
+        break;
+    }
+    case PlanStep::Kind::Repeat:
+        break;
+    }
+    result.elapsedNs = monotonicNowNs() - start;
+    report(result);
+}
+
+std::optional<RequestItem> PlanRunner::item(const SessionRequest &request, QString *error)
+{
+    const SessionRequest::Bytes bytes = request.wireBytes(m_url, m_transactionId++);
+    if (!bytes.ok()) {
+        *error = QStringLiteral("%1: %2").arg(bytes.parameter, bytes.error);
+        return std::nullopt;
+    }
+    RequestItem item = RequestItem::forLink(bytes.bytes, m_url, request.name);
+    if (m_target.timeoutMs > 0)
+        item.timeoutMs = m_target.timeoutMs;
+    item.retries = m_target.retries;
+    return item;
+}
+
+void PlanRunner::check(const StepExpectation &expectation, const Transaction &t, StepResult &result) const
+{
+    const ExpectationCheck::Outcome outcome = ExpectationCheck::check(expectation, t, m_url.framing(), m_url.delimited.enabled);
+    result.outcome = outcome.passed() ? StepResult::Outcome::Passed : StepResult::Outcome::Failed;
+    result.reasons = outcome.passed() ? outcome.checks : outcome.failures;
+}
+
+void PlanRunner::runSend(const PlanStep &step, StepResult &result)
+{
+    m_last.reset();
+    const SessionRequest *request = step.requestName.isEmpty() ? &step.request : m_document.request(step.requestName);
+    QString error;
+    const std::optional<RequestItem> it = request ? item(*request, &error) : std::nullopt;
+    if (!it) {
+        result.outcome = StepResult::Outcome::Error;
+        result.reasons.append(request ? error : QStringLiteral("no request named '%1'").arg(step.requestName));
+        return;
+    }
+    const std::optional<Transaction> t = m_engine->sendAndWait(*it);
+    if (!t) {
+        result.outcome = StepResult::Outcome::Error;
+        result.reasons.append(QStringLiteral("the engine did not record the request in time"));
+        return;
+    }
+    result.detail = exchangeText(*t);
+    if (t->status == TransactionStatus::LinkError) {
+        result.outcome = StepResult::Outcome::Error;
+        result.reasons.append(t->problem);
+        m_result.linkFailed = true;
+        m_result.linkMessage = t->problem;
+        return;
+    }
+    m_last = t;
+    check(step.expect, *t, result);
+}
+
+void PlanRunner::runExpect(const PlanStep &step, StepResult &result)
+{
+    if (!m_last) {
+        result.outcome = StepResult::Outcome::Failed;
+        result.reasons.append(QStringLiteral("no answer to check: the send step before did not run"));
+        return;
+    }
+    result.detail = exchangeText(*m_last);
+    check(step.expect, *m_last, result);
+}
+
+void PlanRunner::runPoll(const PlanStep &step, StepResult &result)
+{
+    PollSettings settings;
+    for (const QString &name : step.poll.requests) {
+        QString error;
+        const SessionRequest *request = m_document.request(name);
+        const std::optional<RequestItem> it = request ? item(*request, &error) : std::nullopt;
+        if (!it) {
+            result.outcome = StepResult::Outcome::Error;
+            result.reasons.append(request ? error : QStringLiteral("no request named '%1'").arg(name));
+            return;
+        }
+        settings.items.append(*it);
+    }
+    settings.intervalNs = step.poll.intervalMs * 1'000'000;
+    settings.count = step.poll.count;
+    settings.durationNs = step.poll.durationMs * 1'000'000;
+    QString linkMessage;
+    QObject context;
+    QObject::connect(m_engine.get(), &TransactionEngine::linkMessage, &context,
+                     [&linkMessage](const QString &message) { linkMessage = message; });
+    m_engine->startPoll(settings);
+    const std::optional<PollReport> report = m_engine->waitForFinished();
+    if (!report || report->runs.isEmpty()) {
+        result.outcome = StepResult::Outcome::Error;
+        result.reasons.append(QStringLiteral("the poll did not finish"));
+        return;
+    }
+    const Statistics &stats = report->runs.constFirst().statistics.overall();
+    result.detail = QStringLiteral("%1 transactions, %2 ok, %3 failed").arg(stats.count()).arg(stats.ok()).arg(stats.failed());
+    if (!stats.latency().isEmpty())
+        result.detail += QStringLiteral(", latency median %1, p95 %2, max %3")
+                             .arg(msText(stats.latency().medianNs()), msText(stats.latency().percentileNs(95)),
+                                  msText(stats.latency().maxNs()));
+    if (stats.count() > 0 && stats.linkErrors() == stats.count()) {
+        result.outcome = StepResult::Outcome::Error;
+        m_result.linkFailed = true;
+        m_result.linkMessage = linkMessage.isEmpty() ? QStringLiteral("every request of the poll ended in a link error") : linkMessage;
+        result.reasons.append(m_result.linkMessage);
+        return;
+    }
+    QStringList failures;
+    QStringList checks;
+    if (step.bounds.isEmpty()) {
+        if (stats.failed() == 0)
+            checks.append(QStringLiteral("every transaction ok"));
+        else
+            failures.append(QStringLiteral("%1 of %2 transactions failed (give bounds to allow some)").arg(stats.failed()).arg(stats.count()));
+    }
+    for (const PollBound &b : step.bounds) {
+        const std::optional<double> measured = b.measure(stats);
+        const QString seen = b.describe(stats);
+        if (measured && b.holds(*measured))
+            checks.append(QStringLiteral("%1 (%2)").arg(b.text, seen));
+        else
+            failures.append(QStringLiteral("%1 does not hold: %2").arg(b.text, seen));
+    }
+    result.outcome = failures.isEmpty() ? StepResult::Outcome::Passed : StepResult::Outcome::Failed;
+    result.reasons = failures.isEmpty() ? checks : failures;
+}
+
+} // namespace mbscope

@@ -1,0 +1,56 @@
+#pragma once
+
+#include "engine/transaction.h"
+#include "session/planresult.h"
+#include "session/sessiondocument.h"
+#include "transport/linkurl.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace mbscope {
+
+class TransactionEngine;
+struct RequestItem;
+
+// Runs a session's test plan against a target through a TransactionEngine and reports each step
+// as it ends. Blocking: it runs local event loops while it waits (for answers, polls, waits), so
+// it is called from a thread with an event loop (the main thread of `mbscope run`, or a test).
+// A link error (nothing reaches the device) ends the run: the steps left are reported skipped.
+class PlanRunner
+{
+public:
+    using StepObserver = std::function<void(const StepResult &result)>;
+
+    // url: where to run (the document's target or --target); target: the engine's settings
+    // (timeout, retries, pipeline) from the document.
+    PlanRunner(const SessionDocument &document, const LinkUrl &url, const SessionTarget &target);
+    ~PlanRunner();
+    PlanRunner(const PlanRunner &) = delete;
+    PlanRunner &operator=(const PlanRunner &) = delete;
+
+    [[nodiscard]] PlanResult run(const StepObserver &observer = {});
+
+private:
+    void runSteps(const std::vector<PlanStep> &steps, const QString &path, const QString &suffix);
+    void runStep(const PlanStep &step, const QString &path, const QString &suffix);
+    void runSend(const PlanStep &step, StepResult &result);
+    void runExpect(const PlanStep &step, StepResult &result);
+    void runPoll(const PlanStep &step, StepResult &result);
+    void skip(const std::vector<PlanStep> &steps, const QString &path, const QString &suffix);
+    void report(const StepResult &result);
+    [[nodiscard]] std::optional<RequestItem> item(const SessionRequest &request, QString *error);
+    void check(const StepExpectation &expectation, const Transaction &transaction, StepResult &result) const;
+
+    const SessionDocument &m_document;
+    LinkUrl m_url;
+    SessionTarget m_target;
+    std::unique_ptr<TransactionEngine> m_engine;
+    std::optional<Transaction> m_last; // the answer of the last send, for expect steps
+    StepObserver m_observer;
+    PlanResult m_result;
+    quint16 m_transactionId = 1;
+};
+
+} // namespace mbscope

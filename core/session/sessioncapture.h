@@ -1,0 +1,17 @@
+#pragma once
+
+#include <QtCore/QString>
+
+namespace mbscope {
+
+// Captured traffic: never inline in the document (a long poll's frames would make it huge and
+// rewriting it on every batch would not survive a crash); the frames live in an append-only
+// traffic journal (engine/trafficjournal.h) beside the document, which this names.
+struct SessionCapture {
+    QString journal; // a file name relative to the document's folder: "bench.mbscope.journal"
+    QString notes;
+
+    friend bool operator==(const SessionCapture &, const SessionCapture &) = default;
+};
+
+} // namespace mbscope

@@ -1,0 +1,214 @@
+#include "session/sessionreader.h"
+
+#include "session/planstepreader.h"
+#include "session/sessionrequestreader.h"
+#include "sim/jsonreader.h"
+#include "sim/profileloader.h"
+#include "transport/linkurl.h"
+
+#include <QtCore/QDir>
+#include <QtCore/QFile>
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
+
+namespace mbscope {
+
+namespace {
+
+constexpr qint64 kMaxFileBytes = 64 * 1024 * 1024; // traffic lives in the journal, not here
+
+ProfileProblem fileProblem(const QString &source, const QString &message, int line = 0, int column = 0)
+{
+    ProfileProblem p;
+    p.source = source;
+    p.message = message;
+    p.line = line;
+    p.column = column;
+    return p;
+}
+
+void readTarget(JsonReader &reader, const QJsonValue &value, SessionTarget *target)
+{
+    const QString path = QStringLiteral("target");
+    const auto o = reader.objectValue(value, path);
+    if (!o)
+        return;
+    reader.checkKeys(*o, path, {"url", "timeoutMs", "retries", "pipeline"});
+    if (const auto url = reader.string(*o, path, "url")) {
+        const LinkUrl::Result parsed = LinkUrl::parse(*url);
+        if (!parsed.url)
+            reader.error(JsonReader::member(path, "url"), parsed.error);
+        target->url = *url;
+    }
+    target->timeoutMs = int(reader.integer(*o, path, "timeoutMs", 1, 3'600'000).value_or(-1));
+    target->retries = int(reader.integer(*o, path, "retries", 0, 100).value_or(0));
+    target->pipelineDepth = int(reader.integer(*o, path, "pipeline", 1, 256).value_or(1));
+}
+
+void readProfile(JsonReader &reader, const QJsonValue &value, SessionProfile *profile, QList<ProfileProblem> *problems)
+{
+    const QString path = QStringLiteral("profile");
+    if (value.isString()) {
+        profile->kind = SessionProfile::Kind::Reference;
+        profile->reference = value.toString();
+        if (profile->reference.trimmed().isEmpty())
+            reader.error(path, QStringLiteral("the reference is empty: give a shipped profile's name or a profile file's path"));
+        return;
+    }
+    if (!value.isObject()) {
+        reader.error(path, QStringLiteral("expected a profile's name or path (a string) or the profile itself (an object), found %1")
+                               .arg(JsonReader::describe(value)));
+        return;
+    }
+    profile->kind = SessionProfile::Kind::Inline;
+    profile->profile = value.toObject();
+    // The profile loader checks it as it would a profile file; its paths start inside the profile.
+    const ProfileLoadResult loaded = ProfileLoader::parse(QJsonDocument(profile->profile).toJson(), reader.source());
+    for (ProfileProblem p : loaded.problems) {
+        p.source = reader.source();
+        p.path = p.path.isEmpty() ? path : JsonReader::member(path, p.path);
+        p.line = p.column = 0;
+        problems->append(p);
+    }
+}
+
+void readCapture(JsonReader &reader, const QJsonValue &value, std::optional<SessionCapture> *capture)
+{
+    const QString path = QStringLiteral("capture");
+    const auto o = reader.objectValue(value, path);
+    if (!o)
+        return;
+    reader.checkKeys(*o, path, {"journal", "notes"});
+    SessionCapture c;
+    if (reader.require(*o, path, "journal")) {
+        if (const auto journal = reader.string(*o, path, "journal")) {
+            c.journal = *journal;
+            const QString clean = QDir::cleanPath(*journal);
+            if (journal->trimmed().isEmpty())
+                reader.error(JsonReader::member(path, "journal"), QStringLiteral("the journal's file name is empty"));
+            else if (QDir::isAbsolutePath(*journal) || clean.startsWith(QLatin1String("..")))
+                reader.error(JsonReader::member(path, "journal"),
+                             QStringLiteral("'%1' is not beside the document: give a file name relative to the document's folder "
+                                            "(a session and its capture move together)")
+                                 .arg(*journal));
+        }
+    }
+    c.notes = reader.string(*o, path, "notes").value_or(QString());
+    *capture = c;
+}
+
+} // namespace
+
+SessionLoadResult SessionReader::load(const QString &path)
+{
+    SessionLoadResult result;
+    QFile file(path);
+    if (!file.exists()) {
+        result.problems.append(fileProblem(path, QStringLiteral("no such session file")));
+        return result;
+    }
+    if (!file.open(QIODevice::ReadOnly)) {
+        result.problems.append(fileProblem(path, QStringLiteral("cannot be read: %1").arg(file.errorString())));
+        return result;
+    }
+    if (file.size() > kMaxFileBytes) {
+        result.problems.append(fileProblem(path, QStringLiteral("%1 bytes is too large for a session document (at most %2; "
+                                                                "captured traffic belongs in its journal)")
+                                                     .arg(file.size()).arg(kMaxFileBytes)));
+        return result;
+    }
+    return parse(file.readAll(), path);
+}
+
+SessionLoadResult SessionReader::parse(const QByteArray &json, const QString &source)
+{
+    SessionLoadResult result;
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        // Qt gives the offset just past the token it gave up on; point at that token's last
+        // character, unless the parser ran into the end of the text (as the profile loader does).
+        qsizetype at = parseError.offset;
+        if (at > 0 && at <= json.size() && !QChar::isSpace(uchar(json.at(at - 1))))
+            --at;
+        const auto [line, column] = ProfileLoader::lineColumn(json, at);
+        result.problems.append(fileProblem(source, QStringLiteral("JSON syntax error: %1").arg(parseError.errorString()), line, column));
+        return result;
+    }
+    if (!doc.isObject()) {
+        result.problems.append(fileProblem(source, QStringLiteral("expected a JSON object at the top level, found %1")
+                                                       .arg(doc.isArray() ? QStringLiteral("an array") : QStringLiteral("nothing"))));
+        return result;
+    }
+    const QJsonObject root = doc.object();
+    JsonReader reader(&result.problems, source);
+    const QString top;
+
+    // Format and version first: a newer document is refused before its content is judged.
+    if (reader.require(root, top, "format")) {
+        const QJsonValue format = root.value(QLatin1String("format"));
+        if (format.toString() != QLatin1String(SessionDocument::kFormat)) {
+            reader.error(QStringLiteral("format"), QStringLiteral("%1 is not an mbscope session: expected \"%2\"")
+                                                       .arg(JsonReader::describe(format), QLatin1String(SessionDocument::kFormat)));
+            return result;
+        }
+    }
+    if (reader.require(root, top, "version")) {
+        if (const auto version = reader.integer(root, top, "version", 1, 1'000'000)) {
+            if (*version > SessionDocument::kVersion) {
+                reader.error(QStringLiteral("version"),
+                             QStringLiteral("this session was written by a newer mbscope (session version %1); this mbscope reads "
+                                            "version %2 and older: open it with a newer mbscope")
+                                 .arg(*version)
+                                 .arg(SessionDocument::kVersion));
+                return result;
+            }
+        }
+    }
+    reader.checkKeys(root, top, {"$schema", "format", "version", "name", "notes", "target", "requests", "poll", "sweep",
+                                 "profile", "capture", "plan"});
+
+    SessionDocument d;
+    d.name = reader.string(root, top, "name").value_or(QString());
+    d.notes = reader.string(root, top, "notes").value_or(QString());
+    if (root.contains(QLatin1String("target")))
+        readTarget(reader, root.value(QLatin1String("target")), &d.target);
+
+    QStringList names;
+    if (const auto requests = reader.array(root, top, "requests")) {
+        for (qsizetype i = 0; i < requests->size(); ++i) {
+            const QString at = JsonReader::element(QStringLiteral("requests"), i);
+            const auto r = SessionRequestReader::read(reader, requests->at(i), at, true);
+            if (!r)
+                continue;
+            if (names.contains(r->name))
+                reader.error(JsonReader::member(at, "name"),
+                             QStringLiteral("'%1' names an earlier request too: steps and polls refer to requests by name").arg(r->name));
+            names.append(r->name);
+            d.requests.append(*r);
+        }
+    }
+    if (root.contains(QLatin1String("poll")))
+        d.poll = SessionRequestReader::readPoll(reader, root.value(QLatin1String("poll")), QStringLiteral("poll"), names, false);
+    if (root.contains(QLatin1String("sweep"))) {
+        QList<qint64> intervals;
+        if (const auto poll = SessionRequestReader::readPoll(reader, root.value(QLatin1String("sweep")), QStringLiteral("sweep"),
+                                                             names, true, &intervals))
+            d.sweep = SessionSweep{*poll, intervals};
+    }
+    if (root.contains(QLatin1String("profile")))
+        readProfile(reader, root.value(QLatin1String("profile")), &d.profile, &result.problems);
+    if (root.contains(QLatin1String("capture")))
+        readCapture(reader, root.value(QLatin1String("capture")), &d.capture);
+    if (const auto plan = reader.array(root, top, "plan")) {
+        PlanStepReader steps(reader, names);
+        d.plan = steps.readSteps(*plan, QStringLiteral("plan"));
+    }
+
+    if (result.problems.isEmpty())
+        result.document = std::move(d);
+    return result;
+}
+
+} // namespace mbscope
