@@ -4,7 +4,7 @@ JOBS ?= 2
 FUZZ_SECONDS ?= 20
 CMAKE_FLAGS ?= -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
 
-.PHONY: all deps test-deps configure build run test fuzz clean
+.PHONY: all deps test-deps configure build run test package fuzz clean
 
 all: build
 
@@ -30,6 +30,10 @@ test: test-deps configure
 	cmake --build $(BUILD) -j$(JOBS)
 	scripts/fuzz.sh $(FUZZ_SECONDS)
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
+
+# Builds the Debian package build/mbscope_VERSION_ARCH.deb (CPack; Depends computed by dpkg-shlibdeps).
+package: build
+	cmake --build $(BUILD) --target package
 
 fuzz:
 	scripts/fuzz.sh $(FUZZ_SECONDS)
