@@ -1,0 +1,235 @@
+// FrameInspector, offscreen, over every published frame: selecting a field highlights exactly its
+// bytes; clicking any byte selects the innermost field that covers it (and so highlights that
+// field's bytes); a drag selects the innermost field covering the whole range; problems tint their
+// bytes. FieldLocator's rule is checked against a definition of its own here.
+#include "fieldlocator.h"
+#include "fieldtreemodel.h"
+#include "fieldtreeview.h"
+#include "frameinspector.h"
+#include "guitestsupport.h"
+#include "hexview.h"
+#include "publishedframes.h"
+
+#include "protocol/dissector.h"
+
+#include <QtWidgets/QLabel>
+#include <QtTest/QAbstractItemModelTester>
+#include <QtTest/QtTest>
+
+using namespace mbscope;
+
+namespace {
+
+bool covers(const Field &f, int first, int last)
+{
+    return f.length > 0 && f.offset <= first && f.offset + f.length > last;
+}
+
+bool isAncestor(const FieldTree &tree, int ancestor, int field)
+{
+    for (int p = tree.at(field).parent; p >= 0; p = tree.at(p).parent) {
+        if (p == ancestor)
+            return true;
+    }
+    return false;
+}
+
+// The innermost fields covering [first, last]: those covering it with no descendant that also
+// covers it. Usually one; the view may pick any of them.
+QList<int> innermost(const FieldTree &tree, int first, int last)
+{
+    QList<int> result;
+    for (int i = 0; i < tree.size(); ++i) {
+        if (!covers(tree.at(i), first, last))
+            continue;
+        bool inner = true;
+        for (int j = 0; j < tree.size() && inner; ++j)
+            inner = !(j != i && covers(tree.at(j), first, last) && isAncestor(tree, i, j));
+        if (inner)
+            result.append(i);
+    }
+    return result;
+}
+
+Dissection dissect(const QByteArray &frame, int framing, int direction)
+{
+    DissectOptions options;
+    options.framing = Framing(framing);
+    options.direction = Direction(direction);
+    return Dissector::dissect(frame, options);
+}
+
+} // namespace
+
+class TestFrameInspector : public QObject
+{
+    Q_OBJECT
+
+private:
+    FrameInspector *m_inspector = nullptr;
+
+    void show(const QByteArray &frame, int framing, int direction);
+
+private Q_SLOTS:
+    void init();
+    void cleanup();
+    void fieldSelectsItsBytes_data() { QVERIFY(guitest::addPublishedFrameRows() >= 13); }
+    void fieldSelectsItsBytes();
+    void byteSelectsInnermostField_data() { QVERIFY(guitest::addPublishedFrameRows() >= 13); }
+    void byteSelectsInnermostField();
+    void dragSelectsFieldCoveringTheRange_data() { QVERIFY(guitest::addPublishedFrameRows() >= 13); }
+    void dragSelectsFieldCoveringTheRange();
+    void problemsTintTheirBytes();
+    void placeholderInsteadOfAFrame();
+    void screenshot();
+};
+
+void TestFrameInspector::init()
+{
+    m_inspector = new FrameInspector;
+    m_inspector->resize(1100, 420);
+    m_inspector->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_inspector));
+}
+
+void TestFrameInspector::cleanup()
+{
+    delete m_inspector;
+    m_inspector = nullptr;
+}
+
+void TestFrameInspector::show(const QByteArray &frame, int framing, int direction)
+{
+    m_inspector->setDissection(dissect(frame, framing, direction));
+    QCOMPARE(m_inspector->hexView()->bytes(), frame);
+    QVERIFY(m_inspector->treeView()->isVisible());
+}
+
+void TestFrameInspector::fieldSelectsItsBytes()
+{
+    QFETCH(QByteArray, frame);
+    QFETCH(int, framing);
+    QFETCH(int, direction);
+    QAbstractItemModelTester tester(m_inspector->model(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    show(frame, framing, direction);
+    const FieldTree &tree = m_inspector->dissection().fields;
+    QVERIFY(tree.size() > 2);
+    QSignalSpy selected(m_inspector, &FrameInspector::fieldSelected);
+    HexView *hex = m_inspector->hexView();
+    QSignalSpy picked(hex, &HexView::bytesPicked);
+    for (int i = 0; i < tree.size(); ++i) {
+        const Field &f = tree.at(i);
+        m_inspector->selectField(i);
+        QCOMPARE(m_inspector->selectedField(), i);
+        QCOMPARE(selected.last().at(0).toInt(), i);
+        QCOMPARE(hex->selectionLength(), f.length);
+        if (f.length > 0)
+            QCOMPARE(hex->selectionOffset(), f.offset);
+    }
+    QCOMPARE(picked.size(), 0); // what the program selects is not a pick
+    // Clicking a field row in the tree does the same as selecting it.
+    const int last = tree.size() - 1;
+    const QModelIndex index = m_inspector->model()->indexOfField(last);
+    m_inspector->treeView()->scrollTo(index);
+    QTest::mouseClick(m_inspector->treeView()->viewport(), Qt::LeftButton, {},
+                      m_inspector->treeView()->visualRect(m_inspector->model()->indexOfField(last, FieldTreeModel::FieldColumn)).center());
+    QCOMPARE(m_inspector->selectedField(), last);
+    QCOMPARE(hex->selectionLength(), tree.at(last).length);
+}
+
+void TestFrameInspector::byteSelectsInnermostField()
+{
+    QFETCH(QByteArray, frame);
+    QFETCH(int, framing);
+    QFETCH(int, direction);
+    show(frame, framing, direction);
+    const FieldTree &tree = m_inspector->dissection().fields;
+    HexView *hex = m_inspector->hexView();
+    for (int offset = 0; offset < frame.size(); ++offset) {
+        const QList<int> expected = innermost(tree, offset, offset);
+        const QString where = QStringLiteral("byte %1").arg(offset);
+        QVERIFY2(!expected.isEmpty(), qPrintable(where + QStringLiteral(": no field covers it")));
+        const HexView::Area area = offset % 2 ? HexView::Area::Ascii : HexView::Area::Hex;
+        QTest::mouseClick(hex->viewport(), Qt::LeftButton, {}, hex->byteRect(offset, area).center());
+        const int field = m_inspector->selectedField();
+        QVERIFY2(expected.contains(field), qPrintable(where + QStringLiteral(" selected field %1 (%2)").arg(field).arg(
+                                                          field >= 0 ? tree.name(field) : QString())));
+        QCOMPARE(FieldLocator::innermostField(tree, offset), field);
+        // The selection becomes the field's bytes.
+        QCOMPARE(hex->selectionOffset(), tree.at(field).offset);
+        QCOMPARE(hex->selectionLength(), tree.at(field).length);
+    }
+}
+
+void TestFrameInspector::dragSelectsFieldCoveringTheRange()
+{
+    QFETCH(QByteArray, frame);
+    QFETCH(int, framing);
+    QFETCH(int, direction);
+    show(frame, framing, direction);
+    const FieldTree &tree = m_inspector->dissection().fields;
+    HexView *hex = m_inspector->hexView();
+    // From the second byte to the second-to-last: in every framing that spans the PDU's parts.
+    const int first = 1;
+    const int last = int(frame.size()) - 2;
+    const QPoint from = hex->byteRect(first).center();
+    const QPoint to = hex->byteRect(last).center();
+    QTest::mousePress(hex->viewport(), Qt::LeftButton, {}, from);
+    QMouseEvent move(QEvent::MouseMove, to, hex->viewport()->mapToGlobal(to), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(hex->viewport(), &move);
+    QTest::mouseRelease(hex->viewport(), Qt::LeftButton, {}, to);
+    const QList<int> expected = innermost(tree, first, last);
+    const int field = m_inspector->selectedField();
+    if (expected.isEmpty()) {
+        QCOMPARE(field, -1);
+    } else {
+        QVERIFY2(expected.contains(field), qPrintable(QStringLiteral("selected %1").arg(field)));
+        QVERIFY(covers(tree.at(field), first, last));
+    }
+}
+
+void TestFrameInspector::problemsTintTheirBytes()
+{
+    // RosRao's answer as printed: the byte count says 44, 40 data bytes follow; the CRC is wrong.
+    const QByteArray printed = QByteArray::fromHex(
+        "01 03 2C 04 1A 00 00 00 00 00 00 00 FA 00 01 03 E8 27 10 00 04 00 04 00 50 03 20 1F 40 "
+        "00 00 00 00 00 00 00 00 00 00 00 00 00 00 15 72");
+    show(printed, int(Framing::Rtu), int(Direction::Response));
+    const FieldTree &tree = m_inspector->dissection().fields;
+    QVERIFY(tree.worstSeverity() == Severity::Error);
+    const QList<HexView::Mark> marks = m_inspector->hexView()->marks();
+    QVERIFY(!marks.isEmpty());
+    int flagged = 0;
+    for (int i = 0; i < tree.size(); ++i) {
+        if (tree.at(i).severity >= Severity::Warning && tree.at(i).length > 0)
+            ++flagged;
+    }
+    QCOMPARE(marks.size(), flagged);
+    // A sound frame has none.
+    show(QByteArray::fromHex("01030079001615DD"), int(Framing::Rtu), int(Direction::Request));
+    QVERIFY(m_inspector->hexView()->marks().isEmpty());
+}
+
+void TestFrameInspector::placeholderInsteadOfAFrame()
+{
+    m_inspector->setPlaceholder(QStringLiteral("No answer: timeout"));
+    QVERIFY(!m_inspector->treeView()->isVisible());
+    QVERIFY(!m_inspector->hexView()->isVisible());
+    auto *label = m_inspector->findChild<QLabel *>(QStringLiteral("framePlaceholder"));
+    QVERIFY(label && label->isVisible());
+    QCOMPARE(label->text(), QStringLiteral("No answer: timeout"));
+    QCOMPARE(m_inspector->model()->rowCount(), 0);
+    QCOMPARE(m_inspector->selectedField(), -1);
+}
+
+void TestFrameInspector::screenshot()
+{
+    m_inspector->setTitle(QStringLiteral("Response"));
+    show(QByteArray::fromHex("07 03 08 00 07 00 06 00 05 00 04 64 5D"), int(Framing::Rtu), int(Direction::Response));
+    m_inspector->selectField(m_inspector->dissection().fields.indexOf("modbus.byte_count"));
+    QVERIFY(m_inspector->selectedField() >= 0);
+    QVERIFY(guitest::saveShot(m_inspector, QStringLiteral("frameinspector.png")));
+}
+
+QTEST_MAIN(TestFrameInspector)
+#include "tst_frameinspector.moc"

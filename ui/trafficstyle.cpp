@@ -1,0 +1,49 @@
+#include "trafficstyle.h"
+
+#include <QtGui/QGuiApplication>
+#include <QtGui/QPalette>
+
+namespace mbscope {
+
+Severity TrafficStyle::severity(TrafficVerdict verdict)
+{
+    switch (verdict) {
+    case TrafficVerdict::Ok:
+    case TrafficVerdict::Sent:
+        return Severity::Ok;
+    case TrafficVerdict::Broadcast:
+        return Severity::Info;
+    case TrafficVerdict::Exception:
+    case TrafficVerdict::Late:
+    case TrafficVerdict::Unsolicited:
+        return Severity::Warning;
+    case TrafficVerdict::Timeout:
+    case TrafficVerdict::CrcError:
+    case TrafficVerdict::Malformed:
+    case TrafficVerdict::Unexpected:
+    case TrafficVerdict::LinkError:
+    case TrafficVerdict::Garbage:
+        return Severity::Error;
+    }
+    return Severity::Error;
+}
+
+QString TrafficStyle::verdictText(TrafficVerdict verdict)
+{
+    return QLatin1String(trafficVerdictName(verdict)).toString().replace(QLatin1Char('_'), QLatin1Char(' '));
+}
+
+QString TrafficStyle::directionText(TrafficDirection direction)
+{
+    return direction == TrafficDirection::Out ? QStringLiteral("\u2192 out") : QStringLiteral("\u2190 in");
+}
+
+QColor TrafficStyle::directionColor(TrafficDirection direction)
+{
+    const bool dark = QGuiApplication::palette().color(QPalette::Base).lightness() < 128;
+    if (direction == TrafficDirection::Out)
+        return dark ? QColor(0x8A, 0xB4, 0xF8) : QColor(0x1A, 0x5F, 0xB4);
+    return dark ? QColor(0x81, 0xC9, 0x95) : QColor(0x1B, 0x7F, 0x3B);
+}
+
+} // namespace mbscope
