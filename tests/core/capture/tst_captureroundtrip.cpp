@@ -1,0 +1,244 @@
+// Exchanges -> ExchangePcapExporter (packets with synthesized Ethernet/IP/TCP or UDP) -> an
+// in-memory pcapng or pcap -> ExchangeSource (reader, decoder, TCP reassembly, framers, pairer)
+// gives back the same exchanges: the same bytes, times to the nanosecond, the same verdicts,
+// in request order. Each row is one situation the pairer must get right.
+#include "capture/captureanalysis.h"
+#include "capture/capturefilewriter.h"
+#include "capture/exchangepcapexporter.h"
+#include "capture/exchangesource.h"
+#include "protocol/adubuilder.h"
+
+#include <QtTest/QTest>
+
+#include <vector>
+
+using namespace mbscope;
+
+Q_DECLARE_METATYPE(std::vector<mbscope::CaptureExchange>)
+Q_DECLARE_METATYPE(std::vector<mbscope::CaptureConversation>)
+
+namespace {
+
+constexpr qint64 kStart = 1'700'000'000'000'000'000LL;
+constexpr qint64 kMs = 1'000'000;
+
+QByteArray mbap(quint16 tid, quint8 unit, const char *pduHex)
+{
+    return AduBuilder::mbap(QByteArray::fromHex(pduHex), unit, tid);
+}
+
+QByteArray rtu(quint8 unit, const QByteArray &pduHex)
+{
+    return AduBuilder::rtu(QByteArray::fromHex(pduHex), unit);
+}
+
+CaptureConversation conversation(quint32 id, Framing framing, quint16 serverPort, bool v6 = false)
+{
+    CaptureConversation c;
+    c.id = id;
+    c.framing = framing;
+    c.udp = framing == Framing::Udp;
+    c.clientPort = quint16(40000 + id);
+    c.serverPort = serverPort;
+    if (v6) {
+        c.client.v6 = c.server.v6 = true;
+        c.client.bytes = {0x20, 0x01, 0x0d, 0xb8, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1};
+        c.server.bytes = {0x20, 0x01, 0x0d, 0xb8, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2};
+    } else {
+        c.client.bytes = {192, 168, 1, 5};
+        c.server.bytes = {192, 168, 1, quint8(10 + id)};
+    }
+    return c;
+}
+
+CaptureExchange exchange(quint32 conv, Framing framing, const QByteArray &request, qint64 sentNs, const QByteArray &response,
+                         qint64 doneNs, TransactionStatus status, quint8 exceptionCode = 0)
+{
+    CaptureExchange e;
+    e.conversation = conv;
+    e.framing = framing;
+    e.transaction.request = request;
+    e.transaction.response = response;
+    e.transaction.sentNs = sentNs;
+    e.transaction.firstByteNs = e.transaction.doneNs = doneNs;
+    e.transaction.status = status;
+    e.transaction.exceptionCode = exceptionCode;
+    if (request.isEmpty())
+        e.kind = CaptureExchange::Kind::UnmatchedResponse;
+    return e;
+}
+
+QString describe(const CaptureExchange &e)
+{
+    return QStringLiteral("%1 %2 -> %3 at %4..%5 %6 (%7)")
+        .arg(transactionStatusName(e.transaction.status), QString::fromLatin1(e.transaction.request.toHex(' ')),
+             QString::fromLatin1(e.transaction.response.toHex(' ')))
+        .arg(e.transaction.sentNs - kStart)
+        .arg(e.transaction.doneNs == 0 ? 0 : e.transaction.doneNs - kStart)
+        .arg(e.kind == CaptureExchange::Kind::UnmatchedResponse ? QStringLiteral("unmatched") : QStringLiteral("transaction"))
+        .arg(e.transaction.problem);
+}
+
+} // namespace
+
+class TestCaptureRoundTrip : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void roundTrip_data();
+    void roundTrip();
+};
+
+void TestCaptureRoundTrip::roundTrip_data()
+{
+    QTest::addColumn<std::vector<CaptureConversation>>("conversations");
+    QTest::addColumn<std::vector<CaptureExchange>>("exchanges");
+    QTest::addColumn<bool>("classicPcap");
+
+    const Framing tcp = Framing::Tcp;
+    const auto ok = TransactionStatus::Ok;
+    {
+        std::vector<CaptureExchange> e;
+        for (int i = 0; i < 20; ++i) {
+            const qint64 t = kStart + i * 100 * kMs;
+            e.push_back(exchange(0, tcp, mbap(quint16(i), 1, "0300000002"), t, mbap(quint16(i), 1, "030400010002"), t + 3 * kMs + i * 1000, ok));
+        }
+        QTest::newRow("mbap: 20 sequential reads") << std::vector{conversation(0, tcp, 502)} << e << false;
+        QTest::newRow("mbap: the same in classic pcap") << std::vector{conversation(0, tcp, 502)} << e << true;
+    }
+    {
+        // Four requests in flight, answered last first: the transaction id pairs them.
+        std::vector<CaptureExchange> e;
+        for (int i = 0; i < 4; ++i)
+            e.push_back(exchange(0, tcp, mbap(quint16(100 + i), 1, "0300100001"), kStart + i * 1000,
+                                 mbap(quint16(100 + i), 1, "030200aa"), kStart + 10 * kMs - i * 1000, ok));
+        QTest::newRow("mbap: pipelined, answers in reverse") << std::vector{conversation(0, tcp, 502)} << e << false;
+    }
+    QTest::newRow("mbap: exception 02")
+        << std::vector{conversation(0, tcp, 502)}
+        << std::vector{exchange(0, tcp, mbap(1, 1, "0300640001"), kStart, mbap(1, 1, "8302"), kStart + kMs, TransactionStatus::Exception, 2)}
+        << false;
+    QTest::newRow("mbap: timeout, then the late answer")
+        << std::vector{conversation(0, tcp, 502)}
+        << std::vector{exchange(0, tcp, mbap(7, 1, "0300000001"), kStart, {}, 0, TransactionStatus::Timeout),
+                       exchange(0, tcp, mbap(8, 1, "0300000001"), kStart + 1200 * kMs, mbap(8, 1, "03020001"), kStart + 1201 * kMs, ok),
+                       exchange(0, tcp, mbap(7, 1, "0300000001"), kStart, mbap(7, 1, "03020001"), kStart + 1500 * kMs,
+                                TransactionStatus::Late)}
+        << false;
+    QTest::newRow("mbap: an answer with no request")
+        << std::vector{conversation(0, tcp, 502)}
+        << std::vector{exchange(0, tcp, mbap(1, 1, "0600010003"), kStart, mbap(1, 1, "0600010003"), kStart + kMs, ok),
+                       exchange(0, tcp, {}, 0, mbap(99, 1, "03020001"), kStart + 2 * kMs, TransactionStatus::Unexpected)}
+        << false;
+    QTest::newRow("mbap: answered by the wrong unit")
+        << std::vector{conversation(0, tcp, 502)}
+        << std::vector{exchange(0, tcp, mbap(5, 1, "0300000001"), kStart, mbap(5, 2, "03020001"), kStart + kMs, TransactionStatus::Unexpected)}
+        << false;
+    QTest::newRow("mbap: malformed answer (byte count)")
+        << std::vector{conversation(0, tcp, 502)}
+        << std::vector{exchange(0, tcp, mbap(5, 1, "0300000002"), kStart, mbap(5, 1, "0302000100"), kStart + kMs, TransactionStatus::Malformed)}
+        << false;
+    QTest::newRow("modbus udp")
+        << std::vector{conversation(0, Framing::Udp, 502)}
+        << std::vector{exchange(0, Framing::Udp, mbap(1, 1, "0400000001"), kStart, mbap(1, 1, "04020007"), kStart + 2 * kMs, ok),
+                       exchange(0, Framing::Udp, mbap(2, 1, "0400000001"), kStart + 5 * kMs, {}, 0, TransactionStatus::Timeout)}
+        << false;
+    QTest::newRow("mbap over ipv6, two conversations")
+        << std::vector{conversation(0, tcp, 502, true), conversation(1, tcp, 1502)}
+        << std::vector{exchange(0, tcp, mbap(1, 1, "0100000010"), kStart, mbap(1, 1, "0102ff00"), kStart + kMs, ok),
+                       exchange(1, tcp, mbap(1, 9, "0500050000"), kStart + 100, mbap(1, 9, "0500050000"), kStart + kMs + 100, ok)}
+        << false;
+    {
+        const Framing r = Framing::Rtu;
+        QTest::newRow("rtu over tcp: read, broadcast, passed-over request, exception")
+            << std::vector{conversation(0, r, 4001)}
+            << std::vector{exchange(0, r, rtu(1, "0300790016"), kStart, rtu(1, "032c" + QByteArray(88, '0')), kStart + 40 * kMs, ok),
+                           exchange(0, r, rtu(0, "0600010005"), kStart + 100 * kMs, {}, 0, TransactionStatus::Broadcast),
+                           exchange(0, r, rtu(1, "0300000001"), kStart + 200 * kMs, {}, 0, TransactionStatus::Timeout),
+                           exchange(0, r, rtu(2, "0300000001"), kStart + 300 * kMs, rtu(2, "03020001"), kStart + 320 * kMs, ok),
+                           exchange(0, r, rtu(2, "0300000001"), kStart + 400 * kMs, rtu(2, "8302"), kStart + 420 * kMs,
+                                    TransactionStatus::Exception, 2)}
+            << false;
+    }
+}
+
+void TestCaptureRoundTrip::roundTrip()
+{
+    QFETCH(std::vector<CaptureConversation>, conversations);
+    QFETCH(std::vector<CaptureExchange>, exchanges);
+    QFETCH(bool, classicPcap);
+
+    CaptureFileWriter writer;
+    writer.openInMemory(classicPcap ? CaptureFileWriter::Format::Pcap : CaptureFileWriter::Format::Pcapng);
+    ExchangePcapExporter exporter(writer);
+    for (const CaptureConversation &c : conversations)
+        exporter.addConversation(c);
+    for (const CaptureExchange &e : exchanges)
+        exporter.add(e);
+    exporter.finish();
+    QString error;
+    QVERIFY(writer.close(&error));
+
+    CaptureOptions options;
+    options.mbapPorts = {502, 1502};
+    options.rtuPorts = {4001};
+    std::vector<CaptureExchange> read;
+    CaptureAnalysis analysis;
+    std::vector<CaptureConversation> seenConversations;
+    const ExchangeSourceReport report = ExchangeSource::readCapture(
+        writer.bytes(), options,
+        [&](const CaptureExchange &e) {
+            read.push_back(e);
+            analysis.add(e);
+        },
+        [&](const CaptureConversation &c) { seenConversations.push_back(c); });
+    QVERIFY2(report.isComplete(), qPrintable(report.error));
+    QCOMPARE(report.frames.lostBytes, qint64(0));
+    QCOMPARE(report.frames.skippedBytes, qint64(0));
+    QCOMPARE(seenConversations.size(), conversations.size());
+    for (std::size_t i = 0; i < conversations.size(); ++i) {
+        QCOMPARE(seenConversations[i].clientText(), conversations[i].clientText());
+        QCOMPARE(seenConversations[i].serverText(), conversations[i].serverText());
+        QCOMPARE(seenConversations[i].framing, conversations[i].framing);
+    }
+
+    QStringList got;
+    QStringList want;
+    for (const CaptureExchange &e : read)
+        got.append(describe(e));
+    for (const CaptureExchange &e : exchanges)
+        want.append(describe(e));
+    QCOMPARE(read.size(), exchanges.size());
+    for (std::size_t i = 0; i < exchanges.size(); ++i) {
+        const Transaction &a = read[i].transaction;
+        const Transaction &b = exchanges[i].transaction;
+        const QByteArray where = QStringLiteral("exchange %1: got %2, want %3").arg(i).arg(got.at(qsizetype(i)), want.at(qsizetype(i))).toUtf8();
+        QVERIFY2(read[i].kind == exchanges[i].kind, where.constData());
+        QVERIFY2(a.request == b.request, where.constData());
+        QVERIFY2(a.response == b.response, where.constData());
+        QVERIFY2(a.status == b.status, where.constData());
+        QVERIFY2(a.exceptionCode == b.exceptionCode, where.constData());
+        QVERIFY2(a.doneNs == b.doneNs, where.constData());
+        if (read[i].kind == CaptureExchange::Kind::Transaction)
+            QVERIFY2(a.sentNs == b.sentNs, where.constData());
+        QVERIFY2(read[i].conversation == exchanges[i].conversation, where.constData());
+    }
+
+    // The analysis counts as the engine's Statistics does over the same transactions.
+    Statistics truth;
+    for (const CaptureExchange &e : exchanges) {
+        if (e.kind == CaptureExchange::Kind::Transaction)
+            truth.add(e.transaction);
+    }
+    QCOMPARE(analysis.statistics().count(), truth.count());
+    QCOMPARE(analysis.statistics().ok(), truth.ok());
+    QCOMPARE(analysis.statistics().failed(), truth.failed());
+    QCOMPARE(analysis.statistics().late(), truth.late());
+    QCOMPARE(analysis.statistics().latency().count(), truth.latency().count());
+    QCOMPARE(analysis.statistics().latency().maxNs(), truth.latency().maxNs());
+    QCOMPARE(analysis.statistics().latency().medianNs(), truth.latency().medianNs());
+}
+
+QTEST_GUILESS_MAIN(TestCaptureRoundTrip)
+#include "tst_captureroundtrip.moc"
