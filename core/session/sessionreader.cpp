@@ -155,7 +155,12 @@ SessionLoadResult SessionReader::parse(const QByteArray &json, const QString &so
         }
     }
     if (reader.require(root, top, "version")) {
-        if (const auto version = reader.integer(root, top, "version", 1, 1'000'000)) {
+        const QJsonValue v = root.value(QLatin1String("version"));
+        if (!v.isDouble())
+            reader.error(QStringLiteral("version"), QStringLiteral("expected a whole number such as %1, found %2")
+                                                        .arg(SessionDocument::kVersion)
+                                                        .arg(JsonReader::describe(v)));
+        else if (const auto version = reader.integer(root, top, "version", 1, 1'000'000)) {
             if (*version > SessionDocument::kVersion) {
                 reader.error(QStringLiteral("version"),
                              QStringLiteral("this session was written by a newer mbscope (session version %1); this mbscope reads "

@@ -20,8 +20,8 @@ bool SessionRequestReader::checkName(JsonReader &reader, const QString &path, co
         return true;
     reader.error(path, requestNames.isEmpty()
                            ? QStringLiteral("no request named '%1': the document's request list is empty").arg(name)
-                           : QStringLiteral("no request named '%1': expected one of %2")
-                                 .arg(name, requestNames.join(QStringLiteral(", "))));
+                           : QStringLiteral("no request named '%1': expected one of '%2'")
+                                 .arg(name, requestNames.join(QStringLiteral("', '"))));
     return false;
 }
 
@@ -75,6 +75,7 @@ std::optional<SessionRequest> SessionRequestReader::read(JsonReader &reader, con
         }
     } else {
         r.kind = SessionRequest::Kind::Form;
+        const int formBefore = reader.problemCount();
         r.function = int(reader.integer(*o, path, "function", 1, 255).value_or(0));
         if (r.function != 0 && !SessionRequest::formSupports(r.function))
             reader.error(JsonReader::member(path, "function"), r.pdu().error);
@@ -113,8 +114,8 @@ std::optional<SessionRequest> SessionRequestReader::read(JsonReader &reader, con
         } else if (writesCoils) {
             reader.require(*o, path, "coils");
         }
-        // Build it only when every parameter was read, so each problem is reported once.
-        if (reader.problemCount() == before) {
+        // Build it only when every form parameter was read, so each problem is reported once.
+        if (reader.problemCount() == formBefore) {
             const SessionRequest::Bytes pdu = r.pdu();
             if (!pdu.ok())
                 reader.error(JsonReader::member(path, pdu.parameter), pdu.error);
