@@ -35,6 +35,9 @@ public:
     // that carry payload, in capture order.
     [[nodiscard]] bool stopAndRead(QList<WireSegment> *segments, int timeoutMs = 60000);
     [[nodiscard]] const QString &error() const { return m_error; }
+    // The pcapng file tshark writes (it exists once start() returned; complete after
+    // stopAndRead()); removed with this object.
+    [[nodiscard]] const QString &filePath() const { return m_file; }
 
 private:
     std::unique_ptr<QTemporaryDir> m_dir;
