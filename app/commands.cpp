@@ -1,6 +1,8 @@
 #include "commands.h"
 
+#include "analyzecommand.h"
 #include "decodecommand.h"
+#include "exportcommand.h"
 #include "simulatecommand.h"
 #include "pollcommand.h"
 #include "readcommand.h"
@@ -32,6 +34,8 @@ const Subcommand kSubcommands[] = {
     {"sweep", "poll at several intervals and print error rate and latency per interval", runSweep},
     {"run", "run a session's test plan against a device; pass/fail per step, JUnit XML for CI", runRun},
     {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},
+    {"analyze", "read a pcap, pcapng or traffic journal offline: pairs, decoded frames, statistics, histogram", runAnalyze},
+    {"export", "write a capture or journal as CSV, JSON lines, pcapng for Wireshark, or latency plots", runExport},
 };
 
 void printUsage(QTextStream &out)

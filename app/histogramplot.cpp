@@ -1,5 +1,7 @@
 #include "histogramplot.h"
 
+#include "plotfile.h"
+
 #include <QtCore/QByteArray>
 #include <QtCore/QCoreApplication>
 
@@ -29,12 +31,16 @@ QString HistogramPlot::unavailableReason()
 
 bool HistogramPlot::isRequested(int argc, char *argv[])
 {
-    if (argc < 2 || (std::strcmp(argv[1], "poll") != 0 && std::strcmp(argv[1], "sweep") != 0))
+    const bool plots = argc >= 2
+                       && (std::strcmp(argv[1], "poll") == 0 || std::strcmp(argv[1], "sweep") == 0
+                           || std::strcmp(argv[1], "analyze") == 0 || std::strcmp(argv[1], "export") == 0);
+    if (!plots)
         return false;
     for (int i = 2; i < argc; ++i) {
         if (std::strcmp(argv[i], "--") == 0)
             return false;
-        if (std::strcmp(argv[i], "--histogram") == 0 || std::strncmp(argv[i], "--histogram=", 12) == 0)
+        if (std::strcmp(argv[i], "--histogram") == 0 || std::strncmp(argv[i], "--histogram=", 12) == 0
+            || std::strcmp(argv[i], "--timeseries") == 0 || std::strncmp(argv[i], "--timeseries=", 13) == 0)
             return true;
     }
     return false;
@@ -178,11 +184,7 @@ bool HistogramPlot::write(const QString &path, const QString &title, const QStri
             label->setFont(QFont(QStringLiteral("Sans"), 9));
         }
     }
-    if (!plot.savePng(path, 900, 500)) {
-        *error = QStringLiteral("cannot write %1").arg(path);
-        return false;
-    }
-    return true;
+    return PlotFile::save(plot, path, 900, 500, error);
 }
 
 #else

@@ -34,13 +34,14 @@ public:
     [[nodiscard]] static QString unavailableReason();
 
     // Whether a command line asks for a plot, so main() makes a QApplication instead of a
-    // QCoreApplication: poll or sweep with --histogram.
+    // QCoreApplication: poll, sweep, analyze or export with --histogram (or --timeseries).
     [[nodiscard]] static bool isRequested(int argc, char *argv[]);
     // Renders without a display: QT_QPA_PLATFORM=offscreen unless the user chose a platform. A
     // PNG needs no window, and the offscreen platform gives the same picture with or without X.
     static void prepareOffscreenPlatform();
 
-    // Draws and saves the PNG (900 x 500), a note in the top right corner ("2 above 0.315 ms").
+    // Draws and saves the plot (900 x 500; PNG, SVG or PDF by the file name: PlotFile), a note
+    // in the top right corner ("2 above 0.315 ms").
     // Returns false with the reason in error.
     [[nodiscard]] static bool write(const QString &path, const QString &title, const QString &note,
                                     const QList<HistogramSeries> &series, const QList<HistogramMarker> &markers,

@@ -1,0 +1,111 @@
+#include "analyzecommand.h"
+
+#include "captureinput.h"
+#include "commands.h"
+#include "exchangeplots.h"
+#include "plotfile.h"
+
+#include "capture/captureanalysis.h"
+#include "capture/exchangesource.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QTextStream>
+
+namespace mbscope::app {
+
+int runAnalyze(const QStringList &arguments)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Reads a capture offline and analyses its Modbus traffic without any device: a pcap or pcapng file (Wireshark, "
+        "tcpdump, dumpcap, mbscope export --pcap) with Modbus TCP, Modbus UDP or RTU over TCP, or an mbscope traffic "
+        "journal. Requests are paired with their answers (the transaction id for MBAP; order, unit and function for RTU), "
+        "every frame is decoded, and the statistics are those poll prints: counts by outcome, latency percentiles, "
+        "histogram. Latency is the capture time of the answer's last packet minus the request's.\n"
+        "Example: mbscope analyze bench.pcapng --rtu-port 4001 --histogram latency.svg\n"
+        "A damaged file is analysed up to the damage, which is reported with its byte offset.\n"
+        "Exit status: 0 every transaction ok, 1 some failed or the file is damaged, 2 usage error or unreadable file."));
+    parser.addHelpOption();
+    const CaptureInput input;
+    input.addTo(parser);
+    const QCommandLineOption histogramOpt(QStringLiteral("histogram"),
+                                          QStringLiteral("Draw the latency histogram into a file: .png, .svg or .pdf."),
+                                          QStringLiteral("file"));
+    const QCommandLineOption timeSeriesOpt(QStringLiteral("timeseries"),
+                                           QStringLiteral("Draw latency over time into a file: .png, .svg or .pdf."),
+                                           QStringLiteral("file"));
+    const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the statistics as JSON (poll --json's shape, "
+                                                                            "with \"source\", \"conversations\" and \"functions\")."));
+    parser.addOptions({histogramOpt, timeSeriesOpt, jsonOpt});
+    parser.addPositionalArgument(QStringLiteral("capture"), QStringLiteral("A .pcap, .pcapng or traffic journal file."));
+    if (!parser.parse(arguments)) {
+        err << "mbscope analyze: " << parser.errorText() << '\n';
+        return ExitUsage;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << subcommandHelp(parser.helpText(), "analyze");
+        return ExitOk;
+    }
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1) {
+        err << "mbscope analyze: " << (positional.isEmpty() ? QStringLiteral("no capture given") : QStringLiteral("one capture at a time"))
+            << ": mbscope analyze CAPTURE [options]\n";
+        return ExitUsage;
+    }
+    CaptureOptions options;
+    QString error;
+    if (!input.read(parser, &options, &error)) {
+        err << "mbscope analyze: " << error << '\n';
+        return ExitUsage;
+    }
+    for (const QCommandLineOption &plot : {histogramOpt, timeSeriesOpt}) {
+        if (!parser.isSet(plot))
+            continue;
+        const QString problem = PlotFile::formatProblem(parser.value(plot));
+        if (!problem.isEmpty()) {
+            err << "mbscope analyze: --" << plot.names().constFirst() << ' ' << problem << '\n';
+            return ExitUsage;
+        }
+    }
+    QString path;
+    if (!CaptureInput::resolve(positional.constFirst(), &path, &error)) {
+        err << "mbscope analyze: " << error << '\n';
+        return ExitUsage;
+    }
+
+    CaptureAnalysis analysis;
+    ExchangePlots plots(parser.isSet(timeSeriesOpt));
+    const ExchangeSourceReport report = ExchangeSource::read(path, options, [&](const CaptureExchange &exchange) {
+        analysis.add(exchange);
+        plots.add(exchange);
+    });
+    if (!report.isReadable()) {
+        err << "mbscope analyze: " << path << ": " << report.error << '\n';
+        return ExitUsage;
+    }
+    if (parser.isSet(jsonOpt))
+        out << QJsonDocument(analysis.toJson(report)).toJson(QJsonDocument::Indented);
+    else
+        out << analysis.summary(report);
+    out.flush();
+    if (!report.error.isEmpty())
+        err << "mbscope analyze: " << path << ": " << report.error << "; everything before it was analysed\n";
+
+    int status = ExitOk;
+    if (parser.isSet(histogramOpt) && !ExchangePlots::writeHistogram(parser.value(histogramOpt), path, analysis.statistics(), &error)) {
+        err << "mbscope analyze: --histogram: " << error << '\n';
+        status = ExitFailure;
+    }
+    if (parser.isSet(timeSeriesOpt) && !plots.writeTimeSeries(parser.value(timeSeriesOpt), path, &error)) {
+        err << "mbscope analyze: --timeseries: " << error << '\n';
+        status = ExitFailure;
+    }
+    if (!report.error.isEmpty() || analysis.statistics().failed() > 0 || analysis.unmatchedResponses() > 0)
+        status = ExitFailure;
+    return status;
+}
+
+} // namespace mbscope::app

@@ -1,0 +1,257 @@
+#include "exportcommand.h"
+
+#include "captureinput.h"
+#include "commands.h"
+#include "exchangeplots.h"
+#include "plotfile.h"
+
+#include "capture/captureanalysis.h"
+#include "capture/capturefilewriter.h"
+#include "capture/exchangepcapexporter.h"
+#include "capture/exchangerow.h"
+#include "capture/exchangesource.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QFile>
+#include <QtCore/QFileInfo>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QTextStream>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace mbscope::app {
+
+namespace {
+
+// A text output: a file, or standard output for "-".
+struct TextOutput {
+    QFile file;
+    std::unique_ptr<QTextStream> stream;
+    QString name;
+    quint64 rows = 0;
+
+    bool open(const QString &path, QString *error)
+    {
+        name = path;
+        const bool ok = path == QLatin1String("-") ? file.open(stdout, QIODevice::WriteOnly)
+                                                   : (file.setFileName(path), file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        if (!ok) {
+            *error = QStringLiteral("cannot create %1: %2").arg(path, file.errorString());
+            return false;
+        }
+        stream = std::make_unique<QTextStream>(&file);
+        stream->setEncoding(QStringConverter::Utf8);
+        return true;
+    }
+    bool close(QString *error)
+    {
+        stream->flush();
+        const bool ok = stream->status() == QTextStream::Ok && file.error() == QFileDevice::NoError;
+        if (!ok)
+            *error = QStringLiteral("cannot write %1: %2").arg(name, file.errorString());
+        file.close();
+        return ok;
+    }
+};
+
+} // namespace
+
+int runExport(const QStringList &arguments)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Writes the transactions of a capture (pcap, pcapng) or an mbscope traffic journal out again:\n"
+        "  --csv: one row per transaction: times, unit, function, address, quantity, values, latency, status, bytes;\n"
+        "  --jsonl: the same as one JSON object per line;\n"
+        "  --pcap: packets Wireshark and tshark decode as Modbus (pcapng, or classic pcap for a name ending in .pcap), "
+        "each conversation a TCP connection with correct checksums; RTU frames go to their own port, for which the "
+        "tshark option to decode them is printed;\n"
+        "  --histogram, --timeseries: the latency histogram and latency over time as PNG, SVG or PDF.\n"
+        "Use - as the file to write CSV or JSON lines to standard output.\n"
+        "Example: mbscope export bench.mbscope.journal --csv bench.csv --pcap bench.pcapng\n"
+        "Exit status: 0 written, 1 written from a damaged source (up to the damage), 2 usage error, unreadable source or "
+        "an output that could not be written."));
+    parser.addHelpOption();
+    const CaptureInput input;
+    input.addTo(parser);
+    const QCommandLineOption csvOpt(QStringLiteral("csv"), QStringLiteral("Write CSV, one row per transaction."), QStringLiteral("file"));
+    const QCommandLineOption jsonlOpt(QStringLiteral("jsonl"), QStringLiteral("Write JSON lines, one object per transaction."),
+                                      QStringLiteral("file"));
+    const QCommandLineOption pcapOpt(QStringLiteral("pcap"), QStringLiteral("Write a capture: pcapng, or pcap for a name ending in .pcap."),
+                                     QStringLiteral("file"));
+    const QCommandLineOption histogramOpt(QStringLiteral("histogram"), QStringLiteral("Draw the latency histogram: .png, .svg or .pdf."),
+                                          QStringLiteral("file"));
+    const QCommandLineOption timeSeriesOpt(QStringLiteral("timeseries"), QStringLiteral("Draw latency over time: .png, .svg or .pdf."),
+                                           QStringLiteral("file"));
+    parser.addOptions({csvOpt, jsonlOpt, pcapOpt, histogramOpt, timeSeriesOpt});
+    parser.addPositionalArgument(QStringLiteral("source"), QStringLiteral("A .pcap, .pcapng or traffic journal file."));
+    if (!parser.parse(arguments)) {
+        err << "mbscope export: " << parser.errorText() << '\n';
+        return ExitUsage;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << subcommandHelp(parser.helpText(), "export");
+        return ExitOk;
+    }
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1) {
+        err << "mbscope export: " << (positional.isEmpty() ? QStringLiteral("no source given") : QStringLiteral("one source at a time"))
+            << ": mbscope export SOURCE --csv FILE | --jsonl FILE | --pcap FILE | --histogram FILE | --timeseries FILE\n";
+        return ExitUsage;
+    }
+    const QList<QCommandLineOption> outputs{csvOpt, jsonlOpt, pcapOpt, histogramOpt, timeSeriesOpt};
+    bool any = false;
+    for (const QCommandLineOption &o : outputs)
+        any = any || parser.isSet(o);
+    if (!any) {
+        err << "mbscope export: nothing to write: give --csv, --jsonl, --pcap, --histogram or --timeseries with a file name\n";
+        return ExitUsage;
+    }
+    CaptureOptions options;
+    QString error;
+    if (!input.read(parser, &options, &error)) {
+        err << "mbscope export: " << error << '\n';
+        return ExitUsage;
+    }
+    QString path;
+    if (!CaptureInput::resolve(positional.constFirst(), &path, &error)) {
+        err << "mbscope export: " << error << '\n';
+        return ExitUsage;
+    }
+    for (const QCommandLineOption &o : outputs) {
+        if (parser.isSet(o) && QFileInfo(parser.value(o)) == QFileInfo(path)) {
+            err << "mbscope export: --" << o.names().constFirst() << " would overwrite the source " << path << '\n';
+            return ExitUsage;
+        }
+    }
+    if (parser.isSet(csvOpt) && parser.isSet(jsonlOpt) && parser.value(csvOpt) == QLatin1String("-")
+        && parser.value(jsonlOpt) == QLatin1String("-")) {
+        err << "mbscope export: --csv and --jsonl cannot both go to standard output\n";
+        return ExitUsage;
+    }
+    for (const QCommandLineOption &plot : {histogramOpt, timeSeriesOpt}) {
+        const QString problem = parser.isSet(plot) ? PlotFile::formatProblem(parser.value(plot)) : QString();
+        if (!problem.isEmpty()) {
+            err << "mbscope export: --" << plot.names().constFirst() << ' ' << problem << '\n';
+            return ExitUsage;
+        }
+    }
+
+    TextOutput csv;
+    TextOutput jsonl;
+    CaptureFileWriter pcapWriter;
+    std::optional<ExchangePcapExporter> pcap;
+    if (parser.isSet(csvOpt)) {
+        if (!csv.open(parser.value(csvOpt), &error)) {
+            err << "mbscope export: " << error << '\n';
+            return ExitUsage;
+        }
+        *csv.stream << ExchangeRow::columns().join(QLatin1Char(',')) << '\n';
+    }
+    if (parser.isSet(jsonlOpt) && !jsonl.open(parser.value(jsonlOpt), &error)) {
+        err << "mbscope export: " << error << '\n';
+        return ExitUsage;
+    }
+    if (parser.isSet(pcapOpt)) {
+        const QString file = parser.value(pcapOpt);
+        if (!pcapWriter.open(file, CaptureFileWriter::formatFor(file), &error)) {
+            err << "mbscope export: " << error << '\n';
+            return ExitUsage;
+        }
+        pcap.emplace(pcapWriter);
+    }
+
+    std::vector<CaptureConversation> conversations;
+    CaptureAnalysis analysis;
+    ExchangePlots plots(parser.isSet(timeSeriesOpt));
+    const auto onConversation = [&](const CaptureConversation &c) {
+        if (conversations.size() <= c.id)
+            conversations.resize(c.id + 1);
+        conversations[c.id] = c;
+        if (pcap)
+            pcap->addConversation(c);
+    };
+    const auto onExchange = [&](const CaptureExchange &e) {
+        const CaptureConversation *c = e.conversation < conversations.size() ? &conversations[e.conversation] : nullptr;
+        if (csv.stream) {
+            QStringList cells = ExchangeRow::cells(e, c);
+            for (QString &cell : cells)
+                cell = ExchangeRow::csvCell(cell);
+            *csv.stream << cells.join(QLatin1Char(',')) << '\n';
+            ++csv.rows;
+        }
+        if (jsonl.stream) {
+            *jsonl.stream << QJsonDocument(ExchangeRow::json(e, c)).toJson(QJsonDocument::Compact) << '\n';
+            ++jsonl.rows;
+        }
+        if (pcap)
+            pcap->add(e);
+        analysis.add(e);
+        plots.add(e);
+    };
+    const ExchangeSourceReport report = ExchangeSource::read(path, options, onExchange, onConversation);
+    if (!report.isReadable()) {
+        err << "mbscope export: " << path << ": " << report.error << '\n';
+        return ExitUsage;
+    }
+
+    int status = report.error.isEmpty() ? ExitOk : ExitFailure;
+    if (!report.error.isEmpty())
+        err << "mbscope export: " << path << ": " << report.error << "; everything before it was exported\n";
+    // What was written goes to stderr when a table goes to standard output.
+    const bool toStdout = (csv.stream && csv.name == QLatin1String("-")) || (jsonl.stream && jsonl.name == QLatin1String("-"));
+    QTextStream &note = toStdout ? err : out;
+    if (csv.stream) {
+        if (!csv.close(&error)) {
+            err << "mbscope export: " << error << '\n';
+            status = ExitUsage;
+        } else if (csv.name != QLatin1String("-")) {
+            note << "csv      " << csv.name << ": " << csv.rows << " row(s)\n";
+        }
+    }
+    if (jsonl.stream) {
+        if (!jsonl.close(&error)) {
+            err << "mbscope export: " << error << '\n';
+            status = ExitUsage;
+        } else if (jsonl.name != QLatin1String("-")) {
+            note << "jsonl    " << jsonl.name << ": " << jsonl.rows << " line(s)\n";
+        }
+    }
+    if (pcap) {
+        pcap->finish();
+        if (!pcapWriter.close(&error)) {
+            err << "mbscope export: " << error << '\n';
+            status = ExitUsage;
+        } else {
+            note << "pcap     " << parser.value(pcapOpt) << ": " << pcap->packets() << " packet(s), "
+                 << (CaptureFileWriter::formatFor(parser.value(pcapOpt)) == CaptureFileWriter::Format::Pcap ? "pcap" : "pcapng") << '\n';
+            for (const quint16 port : pcap->rtuPorts()) {
+                note << "         RTU over TCP on port " << port << ": tshark decodes it with -d tcp.port==" << port
+                     << ",mbrtu (Wireshark: Decode As... TCP port " << port << " as Modbus RTU)\n";
+            }
+        }
+    }
+    if (parser.isSet(histogramOpt)) {
+        if (!ExchangePlots::writeHistogram(parser.value(histogramOpt), path, analysis.statistics(), &error)) {
+            err << "mbscope export: --histogram: " << error << '\n';
+            status = ExitUsage;
+        } else {
+            note << "histogram " << parser.value(histogramOpt) << '\n';
+        }
+    }
+    if (parser.isSet(timeSeriesOpt)) {
+        if (!plots.writeTimeSeries(parser.value(timeSeriesOpt), path, &error)) {
+            err << "mbscope export: --timeseries: " << error << '\n';
+            status = ExitUsage;
+        } else {
+            note << "timeseries " << parser.value(timeSeriesOpt) << '\n';
+        }
+    }
+    return status;
+}
+
+} // namespace mbscope::app
