@@ -4,16 +4,15 @@
 
 namespace mbscope {
 
-ExchangePcapExporter::ExchangePcapExporter(CaptureFileWriter &writer, const std::vector<CaptureConversation> &conversations)
-    : m_writer(writer)
+void ExchangePcapExporter::addConversation(const CaptureConversation &c)
 {
-    for (const CaptureConversation &c : conversations) {
-        if (m_streams.size() <= c.id)
-            m_streams.resize(c.id + 1);
-        Stream &s = m_streams[c.id];
-        s.info = c;
-        s.known = true;
-    }
+    if (m_streams.size() <= c.id)
+        m_streams.resize(c.id + 1);
+    Stream &s = m_streams[c.id];
+    if (s.known)
+        return;
+    s.info = c;
+    s.known = true;
 }
 
 ExchangePcapExporter::Stream &ExchangePcapExporter::stream(quint32 conversation, Framing framing)

@@ -26,8 +26,11 @@ namespace mbscope {
 class ExchangePcapExporter
 {
 public:
-    ExchangePcapExporter(CaptureFileWriter &writer, const std::vector<CaptureConversation> &conversations);
+    explicit ExchangePcapExporter(CaptureFileWriter &writer) : m_writer(writer) {}
 
+    // The addresses and ports of a conversation, before its first exchange (one never described
+    // gets 10.0.0.1 -> 10.0.0.2 and its framing's usual port).
+    void addConversation(const CaptureConversation &conversation);
     void add(const CaptureExchange &exchange);
     void finish(); // writes what is still held back
 

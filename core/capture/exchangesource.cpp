@@ -9,12 +9,15 @@ namespace mbscope {
 namespace {
 
 ExchangeSourceReport readPackets(const QString &path, const std::function<CaptureFileReader::Result(const CaptureFileReader::Sink &)> &reader,
-                                 const CaptureOptions &options, const ExchangeSource::Sink &sink)
+                                 const CaptureOptions &options, const ExchangeSource::Sink &sink,
+                                 const ExchangeSource::ConversationSink &onConversation)
 {
     ExchangeSourceReport report;
     report.path = path;
     ExchangePairer pairer(options.timeoutNs, sink);
     ModbusFrameExtractor extractor(options, [&pairer](const CapturedFrame &frame) { pairer.add(frame); });
+    if (onConversation)
+        extractor.setConversationSink(onConversation);
     report.file = reader([&extractor](const CapturePacket &packet) { extractor.add(packet); });
     extractor.finish();
     pairer.finish();
@@ -41,7 +44,8 @@ QString ExchangeSourceReport::kindName() const
     return QStringLiteral("unreadable");
 }
 
-ExchangeSourceReport ExchangeSource::read(const QString &path, const CaptureOptions &options, const Sink &sink)
+ExchangeSourceReport ExchangeSource::read(const QString &path, const CaptureOptions &options, const Sink &sink,
+                                          const ConversationSink &onConversation)
 {
     QByteArray first;
     {
@@ -57,7 +61,7 @@ ExchangeSourceReport ExchangeSource::read(const QString &path, const CaptureOpti
     if (JournalExchangeReader::isJournal(first)) {
         ExchangeSourceReport report;
         report.path = path;
-        const JournalExchangeReader::Result journal = JournalExchangeReader::read(path, sink);
+        const JournalExchangeReader::Result journal = JournalExchangeReader::read(path, sink, onConversation);
         report.kind = ExchangeSourceReport::Kind::Journal;
         report.journal = journal.recovery;
         report.journalGarbage = journal.garbageFrames;
@@ -71,13 +75,15 @@ ExchangeSourceReport ExchangeSource::read(const QString &path, const CaptureOpti
             report.kind = ExchangeSourceReport::Kind::Unreadable;
         return report;
     }
-    return readPackets(path, [&path](const CaptureFileReader::Sink &s) { return CaptureFileReader::readFile(path, s); }, options, sink);
+    return readPackets(path, [&path](const CaptureFileReader::Sink &s) { return CaptureFileReader::readFile(path, s); }, options, sink,
+                       onConversation);
 }
 
-ExchangeSourceReport ExchangeSource::readCapture(QByteArrayView bytes, const CaptureOptions &options, const Sink &sink)
+ExchangeSourceReport ExchangeSource::readCapture(QByteArrayView bytes, const CaptureOptions &options, const Sink &sink,
+                                                 const ConversationSink &onConversation)
 {
     return readPackets(QStringLiteral("(memory)"), [bytes](const CaptureFileReader::Sink &s) { return CaptureFileReader::readBytes(bytes, s); },
-                       options, sink);
+                       options, sink, onConversation);
 }
 
 } // namespace mbscope

@@ -45,9 +45,14 @@ class ExchangeSource
 {
 public:
     using Sink = std::function<void(const CaptureExchange &)>;
-    [[nodiscard]] static ExchangeSourceReport read(const QString &path, const CaptureOptions &options, const Sink &sink);
+    // Called once per conversation (a capture's client/server pair, a journal's link) before
+    // any of its exchanges: exports need its addresses as they go.
+    using ConversationSink = std::function<void(const CaptureConversation &)>;
+    [[nodiscard]] static ExchangeSourceReport read(const QString &path, const CaptureOptions &options, const Sink &sink,
+                                                   const ConversationSink &onConversation = {});
     // The same over capture bytes in memory (tests).
-    [[nodiscard]] static ExchangeSourceReport readCapture(QByteArrayView bytes, const CaptureOptions &options, const Sink &sink);
+    [[nodiscard]] static ExchangeSourceReport readCapture(QByteArrayView bytes, const CaptureOptions &options, const Sink &sink,
+                                                          const ConversationSink &onConversation = {});
 };
 
 } // namespace mbscope

@@ -52,7 +52,8 @@ bool JournalExchangeReader::isJournal(QByteArrayView firstBytes)
     return firstBytes.startsWith("MBSCTLOG");
 }
 
-JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, const Sink &sink)
+JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, const Sink &sink,
+                                                          const std::function<void(const CaptureConversation &)> &onConversation)
 {
     Result result;
     // The header's clock pair turns monotonic ns into wall-clock ns; the reader gives it only at
@@ -110,8 +111,12 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
     // Link names come as records the reader keeps to itself until it returns: a first pass that
     // only counts gives them, so that every exchange knows its framing as it is read.
     const TrafficJournalRecovery names = TrafficJournalReader::read(path, {});
-    for (qsizetype i = 0; i < names.links.size(); ++i)
-        framings.insert(quint16(i), conversationFor(quint16(i), names.links.at(i)).framing);
+    for (qsizetype i = 0; i < names.links.size(); ++i) {
+        result.conversations.push_back(conversationFor(quint16(i), names.links.at(i)));
+        framings.insert(quint16(i), result.conversations.back().framing);
+        if (onConversation)
+            onConversation(result.conversations.back());
+    }
 
     result.recovery = TrafficJournalReader::read(path, [&](const TrafficEntry &e) {
         const QByteArray bytes = e.bytes.toByteArray();
@@ -187,8 +192,6 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
         }
     }
     emitReady();
-    for (qsizetype i = 0; i < result.recovery.links.size(); ++i)
-        result.conversations.push_back(conversationFor(quint16(i), result.recovery.links.at(i)));
     return result;
 }
 

@@ -37,7 +37,9 @@ public:
         std::vector<CaptureConversation> conversations;
     };
 
-    [[nodiscard]] static Result read(const QString &path, const Sink &sink);
+    // onConversation is called for every link before the first exchange.
+    [[nodiscard]] static Result read(const QString &path, const Sink &sink,
+                                     const std::function<void(const CaptureConversation &)> &onConversation = {});
     // Whether a file starts with the journal's magic ("MBSCTLOG").
     [[nodiscard]] static bool isJournal(QByteArrayView firstBytes);
 };

@@ -100,6 +100,8 @@ ModbusFrameExtractor::Flow &ModbusFrameExtractor::flowFor(const DecodedPacket &d
             }
         }
         m_flows.push_back(std::move(flow));
+        if (m_conversationSink)
+            m_conversationSink(m_flows.back()->info);
     }
     m_lastKey = key;
     m_lastFlow = m_flows[it->second].get();

@@ -48,6 +48,9 @@ public:
     ModbusFrameExtractor(const ModbusFrameExtractor &) = delete;
     ModbusFrameExtractor &operator=(const ModbusFrameExtractor &) = delete;
 
+    // Called once per conversation when it is first seen, before any of its frames.
+    void setConversationSink(std::function<void(const CaptureConversation &)> sink) { m_conversationSink = std::move(sink); }
+
     void add(const CapturePacket &packet);
     // The capture ended: streams waiting behind holes and unfinished frames are handed on.
     void finish();
@@ -82,6 +85,7 @@ private:
 
     CaptureOptions m_options;
     Sink m_sink;
+    std::function<void(const CaptureConversation &)> m_conversationSink;
     Counters m_counters;
     std::vector<std::unique_ptr<Flow>> m_flows;
     std::unordered_map<FlowKey, std::size_t, FlowKeyHash> m_flowIndex;
