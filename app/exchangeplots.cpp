@@ -46,8 +46,19 @@ bool ExchangePlots::writeHistogram(const QString &path, const QString &source, c
         const qint64 limit = sorted.back() > 2 * p99 ? 2 * p99 : sorted.back();
         const auto end = std::upper_bound(sorted.begin(), sorted.end(), limit);
         const std::span<const qint64> kept = sorted.first(std::size_t(end - sorted.begin()));
-        const Histogram h = Histogram::autoFixed(kept);
-        series.append(HistogramSeries{QString(), h.edgesNs(), h.counts(), false});
+        const qint64 median = kept[(kept.size() - 1) / 2];
+        Histogram h;
+        if (kept.back() > 10 * std::max<qint64>(median, 1)) {
+            // A long tail: equal bins would put nearly every answer in the first one; ten bins
+            // per decade show the bulk and the tail (as poll's histogram does).
+            const qint64 low = std::max<qint64>(100, qint64(std::pow(10.0, std::floor(std::log10(double(std::max<qint64>(kept.front(), 1)))))));
+            h = Histogram::logarithmic(10, low, kept.back() + 1);
+            for (const qint64 ns : kept)
+                h.add(ns);
+        } else {
+            h = Histogram::autoFixed(kept);
+        }
+        series.append(HistogramSeries{QString(), h.edgesNs(), h.counts(), h.isLogarithmic()});
         markers.append(HistogramMarker{QStringLiteral("median %1").arg(latencyText(statistics.latency().medianNs())),
                                        double(statistics.latency().medianNs())});
         markers.append(HistogramMarker{QStringLiteral("p99 %1").arg(latencyText(p99)), double(p99)});

@@ -229,10 +229,9 @@ int runExport(const QStringList &arguments)
         } else {
             note << "pcap     " << parser.value(pcapOpt) << ": " << pcap->packets() << " packet(s), "
                  << (CaptureFileWriter::formatFor(parser.value(pcapOpt)) == CaptureFileWriter::Format::Pcap ? "pcap" : "pcapng") << '\n';
-            for (const quint16 port : pcap->rtuPorts()) {
-                note << "         RTU over TCP on port " << port << ": tshark decodes it with -d tcp.port==" << port
-                     << ",mbrtu (Wireshark: Decode As... TCP port " << port << " as Modbus RTU)\n";
-            }
+            // Ports tshark does not know by itself (Wireshark: Analyze > Decode As...).
+            for (const QString &option : pcap->decodeOptions())
+                note << "         " << option << '\n';
         }
     }
     if (parser.isSet(histogramOpt)) {

@@ -35,6 +35,19 @@ ExchangePcapExporter::Stream &ExchangePcapExporter::stream(quint32 conversation,
         s.endpoints = {s.info.client, s.info.server, s.info.clientPort, s.info.serverPort};
         if (s.info.framing == Framing::Rtu && !m_rtuPorts.contains(s.info.serverPort))
             m_rtuPorts.append(s.info.serverPort);
+        const QString transport = s.info.udp ? QStringLiteral("udp") : QStringLiteral("tcp");
+        QString option;
+        if (s.info.framing == Framing::Rtu)
+            option = QStringLiteral("port %1 (RTU over %2): -d %3.port==%1,mbrtu").arg(s.info.serverPort).arg(transport.toUpper(), transport);
+        else if (s.info.framing == Framing::Ascii)
+            option = QStringLiteral("port %1 (ASCII over %2): tshark has no dissector for it").arg(s.info.serverPort).arg(transport.toUpper());
+        else if (s.info.serverPort != 502)
+            option = QStringLiteral("port %1 (Modbus %2): -d %3.port==%1,%4")
+                         .arg(s.info.serverPort)
+                         .arg(s.info.udp ? QStringLiteral("UDP") : QStringLiteral("TCP"), transport,
+                              s.info.udp ? QStringLiteral("mbudp") : QStringLiteral("mbtcp"));
+        if (!option.isEmpty() && !m_decodeOptions.contains(option))
+            m_decodeOptions.append(option);
     }
     return s;
 }

@@ -6,6 +6,7 @@
 #include "capture/packetsynthesizer.h"
 
 #include <QtCore/QList>
+#include <QtCore/QStringList>
 
 #include <map>
 #include <vector>
@@ -35,6 +36,9 @@ public:
     void finish(); // writes what is still held back
 
     [[nodiscard]] QList<quint16> rtuPorts() const { return m_rtuPorts; }
+    // What tshark needs to decode every conversation written, one entry per port it does not
+    // know by itself: "port 4001 (RTU over TCP): -d tcp.port==4001,mbrtu". MBAP on 502 needs none.
+    [[nodiscard]] QStringList decodeOptions() const { return m_decodeOptions; }
     [[nodiscard]] quint64 packets() const { return m_writer.packets(); }
 
 private:
@@ -61,6 +65,7 @@ private:
     std::vector<Stream> m_streams;
     std::multimap<qint64, Held> m_held;
     QList<quint16> m_rtuPorts;
+    QStringList m_decodeOptions;
 };
 
 } // namespace mbscope
