@@ -4,6 +4,8 @@
 #include "protocol/functioncode.h"
 #include "protocol/hextext.h"
 
+#include <algorithm>
+
 namespace mbscope {
 
 namespace {
@@ -74,9 +76,11 @@ ExpectationCheck::Outcome ExpectationCheck::check(const StepExpectation &e, cons
             qsizetype at = 0;
             while (at < expected.size() && at < t.response.size() && expected.at(at) == t.response.at(at))
                 ++at;
-            fail(QStringLiteral("answer is %1, expected %2 (they differ from byte %3)")
-                     .arg(HexText::format(t.response), HexText::format(expected))
-                     .arg(at));
+            const bool prefix = at == std::min(expected.size(), t.response.size());
+            fail(QStringLiteral("answer is %1, expected %2 (%3)")
+                     .arg(HexText::format(t.response), HexText::format(expected),
+                          prefix ? QStringLiteral("%1 bytes where %2 were expected").arg(t.response.size()).arg(expected.size())
+                                 : QStringLiteral("they differ from byte %1").arg(at)));
         }
     }
     if (e.fields.isEmpty())

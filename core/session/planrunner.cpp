@@ -63,9 +63,9 @@ void PlanRunner::report(const StepResult &result)
         m_observer(result);
 }
 
-void PlanRunner::skip(const std::vector<PlanStep> &steps, const QString &path, const QString &suffix)
+void PlanRunner::skip(const std::vector<PlanStep> &steps, std::size_t from, const QString &path, const QString &suffix)
 {
-    for (std::size_t i = 0; i < steps.size(); ++i) {
+    for (std::size_t i = from; i < steps.size(); ++i) {
         StepResult r;
         r.path = QStringLiteral("%1[%2]").arg(path).arg(i);
         r.name = steps[i].name + suffix;
@@ -81,7 +81,7 @@ void PlanRunner::runSteps(const std::vector<PlanStep> &steps, const QString &pat
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const QString at = QStringLiteral("%1[%2]").arg(path).arg(i);
         if (m_result.linkFailed) {
-            skip(std::vector<PlanStep>(steps.begin() + qsizetype(i), steps.end()), path, suffix);
+            skip(steps, i, path, suffix);
             return;
         }
         runStep(steps[i], at, suffix);
@@ -165,6 +165,7 @@ void PlanRunner::runSend(const PlanStep &step, StepResult &result)
     }
     result.detail = exchangeText(*t);
     if (t->status == TransactionStatus::LinkError) {
+        result.detail = QStringLiteral("sent %1").arg(HexText::format(t->request));
         result.outcome = StepResult::Outcome::Error;
         result.reasons.append(t->problem);
         m_result.linkFailed = true;

@@ -38,7 +38,7 @@ private:
     void runSend(const PlanStep &step, StepResult &result);
     void runExpect(const PlanStep &step, StepResult &result);
     void runPoll(const PlanStep &step, StepResult &result);
-    void skip(const std::vector<PlanStep> &steps, const QString &path, const QString &suffix);
+    void skip(const std::vector<PlanStep> &steps, std::size_t from, const QString &path, const QString &suffix);
     void report(const StepResult &result);
     [[nodiscard]] std::optional<RequestItem> item(const SessionRequest &request, QString *error);
     void check(const StepExpectation &expectation, const Transaction &transaction, StepResult &result) const;

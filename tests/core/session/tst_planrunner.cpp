@@ -113,6 +113,9 @@ void TestPlanRunner::expectations_data()
     QTest::newRow("bytes fail") << R"({"name": "s", "send": "write 250", "expect": {"bytes": "01 06 00 7D 00 FB 58 51"}})"
                                 << false
                                 << "answer is 01 06 00 7D 00 FA 99 91, expected 01 06 00 7D 00 FB 58 51 (they differ from byte 5)";
+    QTest::newRow("bytes shorter") << R"({"name": "s", "send": "write 250", "expect": {"bytes": "01 06 00 7D"}})"
+                                   << false
+                                   << "answer is 01 06 00 7D 00 FA 99 91, expected 01 06 00 7D (8 bytes where 4 were expected)";
     QTest::newRow("field value pass") << R"({"name": "s", "send": "read all", "expect": {"fields": {"modbus.register_value@0x0079": 1050}}})"
                                       << true << "modbus.register_value@0x0079 = 1050";
     QTest::newRow("field value fail") << R"({"name": "s", "send": "read all", "expect": {"fields": {"modbus.register_value@0x0079": 1051}}})"
@@ -259,6 +262,9 @@ void TestPlanRunner::linkError()
     QCOMPARE(result.steps.at(0).outcome, StepResult::Outcome::Error);
     QCOMPARE(result.steps.at(1).outcome, StepResult::Outcome::Skipped);
     QCOMPARE(result.steps.at(2).outcome, StepResult::Outcome::Skipped);
+    QCOMPARE(result.steps.at(1).path, QStringLiteral("plan[1]"));
+    QCOMPARE(result.steps.at(2).path, QStringLiteral("plan[2]"));
+    QCOMPARE(result.steps.at(0).detail, QStringLiteral("sent 01 03 00 79 00 16 15 DD"));
 
     const JUnitSuite suite = readJUnit(JUnitReport::toXml(result));
     QCOMPARE(suite.attributes.value(QStringLiteral("errors")), QStringLiteral("1"));
