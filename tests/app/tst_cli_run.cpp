@@ -1,0 +1,199 @@
+// mbscope run as users run it: the shipped example plan against `mbscope simulate --profile
+// rosrao-gamma` (a child process on a port the OS chooses), a plan that fails, --json, the JUnit
+// file read back, and the exit statuses: 0 all passed, 1 a step failed, 2 a broken document
+// (every problem listed with its JSON path), a usage error or a refused link.
+#include "clitest.h"
+
+#include <QtCore/QDeadlineTimer>
+#include <QtCore/QDir>
+#include <QtCore/QJsonArray>
+#include <QtCore/QProcess>
+#include <QtCore/QRegularExpression>
+#include <QtCore/QTemporaryDir>
+#include <QtCore/QXmlStreamReader>
+#include <QtTest/QTest>
+
+using namespace mbscope;
+using namespace mbscope::testcli;
+
+namespace {
+
+QString sourceDir()
+{
+    return QStringLiteral(MBSCOPE_TEST_DATA_DIR "/../..");
+}
+
+QString example()
+{
+    return sourceDir() + QStringLiteral("/docs/examples/rosrao-gamma.mbscope.json");
+}
+
+// testcase name -> the element inside it ("", "failure", "error", "skipped")
+QList<std::pair<QString, QString>> junitCases(const QString &path, QString *error)
+{
+    QList<std::pair<QString, QString>> cases;
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        *error = file.errorString();
+        return cases;
+    }
+    QXmlStreamReader xml(&file);
+    while (!xml.atEnd()) {
+        if (xml.readNext() != QXmlStreamReader::StartElement)
+            continue;
+        if (xml.name() == QLatin1String("testcase"))
+            cases.append({xml.attributes().value(QLatin1String("name")).toString(), QString()});
+        else if (!cases.isEmpty() && (xml.name() == QLatin1String("failure") || xml.name() == QLatin1String("error")
+                                      || xml.name() == QLatin1String("skipped")))
+            cases.last().second = xml.name().toString();
+    }
+    if (xml.hasError())
+        *error = xml.errorString();
+    return cases;
+}
+
+} // namespace
+
+class TestCliRun : public QObject
+{
+    Q_OBJECT
+
+    QProcess m_simulator;
+    QString m_target;
+    QTemporaryDir m_dir;
+
+private slots:
+    void initTestCase();
+    void cleanupTestCase();
+    void examplePasses();
+    void failingPlan();
+    void json();
+    void brokenDocument();
+    void usageAndLinkErrors_data();
+    void usageAndLinkErrors();
+};
+
+void TestCliRun::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    m_simulator.start(mbscopePath(), {QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"),
+                                      QStringLiteral("--listen"), QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--quiet")});
+    QVERIFY2(m_simulator.waitForStarted(), qPrintable(m_simulator.errorString()));
+    static const QRegularExpression listening(QStringLiteral("listening (rtu-tcp://127\\.0\\.0\\.1:[0-9]+)"));
+    QByteArray out;
+    QDeadlineTimer deadline(30000);
+    while (m_target.isEmpty() && !deadline.hasExpired() && m_simulator.state() == QProcess::Running) {
+        m_simulator.waitForReadyRead(100);
+        out += m_simulator.readAllStandardOutput();
+        const QRegularExpressionMatch m = listening.match(QString::fromUtf8(out));
+        if (m.hasMatch())
+            m_target = m.captured(1);
+    }
+    QVERIFY2(!m_target.isEmpty(), out.constData());
+}
+
+void TestCliRun::cleanupTestCase()
+{
+    m_simulator.terminate();
+    if (!m_simulator.waitForFinished(5000))
+        m_simulator.kill();
+}
+
+void TestCliRun::examplePasses()
+{
+    const QString junit = m_dir.filePath(QStringLiteral("example.xml"));
+    const CliResult r = runMbscope({QStringLiteral("run"), example(), QStringLiteral("--target"), m_target,
+                                    QStringLiteral("--junit"), junit});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("PASS   settings are the published ones  (plan[0], ")), r.out.constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("       modbus.register_value@0x0079 = 1050\n")), r.out.constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("\n16 steps: 16 passed, 0 failed, 0 errors, 0 skipped in ")), r.out.constData());
+    QVERIFY2(r.outText().endsWith(QStringLiteral("junit    ") + junit + QLatin1Char('\n')), r.out.constData());
+    QString error;
+    const auto cases = junitCases(junit, &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(cases.size(), 16);
+    QCOMPARE(cases.at(15).first, QStringLiteral("read the gate counts (3/3)"));
+    for (const auto &c : cases)
+        QVERIFY2(c.second.isEmpty(), qPrintable(c.first + QLatin1Char(' ') + c.second));
+}
+
+void TestCliRun::failingPlan()
+{
+    const QString plan = m_dir.filePath(QStringLiteral("fail.mbscope.json"));
+    QFile file(plan);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "mbscope-session", "version": 1, "name": "failing",
+        "requests": [{"name": "read", "function": 3, "unit": 1, "address": "0x0079", "quantity": 1}],
+        "plan": [{"name": "right", "send": "read", "expect": {"fields": {"modbus.register_value@0x0079": 1050}}},
+                 {"name": "wrong", "send": "read", "expect": {"fields": {"modbus.register_value@0x0079": 1100}}},
+                 {"name": "silent", "send": "read", "expect": {"noAnswer": true}}]})");
+    file.close();
+    const QString junit = m_dir.filePath(QStringLiteral("fail.xml"));
+    const CliResult r = runMbscope({QStringLiteral("run"), plan, QStringLiteral("--target"), m_target,
+                                    QStringLiteral("--junit"), junit});
+    QVERIFY2(r.finished && r.exitCode == 1, r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("FAIL   wrong  (plan[1], ")), r.out.constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("       modbus.register_value@0x0079 is 1050, expected 1100\n")), r.out.constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("3 steps: 1 passed, 2 failed, 0 errors, 0 skipped")), r.out.constData());
+    QString error;
+    const auto cases = junitCases(junit, &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(cases, (QList<std::pair<QString, QString>>{{QStringLiteral("right"), QString()},
+                                                        {QStringLiteral("wrong"), QStringLiteral("failure")},
+                                                        {QStringLiteral("silent"), QStringLiteral("failure")}}));
+}
+
+void TestCliRun::json()
+{
+    const QString plan = m_dir.filePath(QStringLiteral("one.mbscope.json"));
+    QFile file(plan);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "mbscope-session", "version": 1,
+        "plan": [{"name": "outside the map", "send": {"function": 3, "address": 512, "quantity": 1}, "expect": {"exception": 2}}]})");
+    file.close();
+    const CliResult r = runMbscope({QStringLiteral("run"), plan, QStringLiteral("--target"), m_target, QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QLatin1String("plan")).toString(), QStringLiteral("one.mbscope")); // the file's name, for want of one
+    QCOMPARE(o.value(QLatin1String("passed")).toBool(), true);
+    const QJsonObject step = o.value(QLatin1String("steps")).toArray().at(0).toObject();
+    QCOMPARE(step.value(QLatin1String("outcome")).toString(), QStringLiteral("passed"));
+    QCOMPARE(step.value(QLatin1String("reasons")).toArray().at(0).toString(),
+             QStringLiteral("exception 0x02 (Illegal Data Address), as expected"));
+}
+
+void TestCliRun::brokenDocument()
+{
+    const QString broken = QStringLiteral(MBSCOPE_TEST_DATA_DIR "/sessions/broken/address-beyond.mbscope.json");
+    const CliResult r = runMbscope({QStringLiteral("run"), broken, QStringLiteral("--target"), m_target});
+    QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
+    QCOMPARE(r.errText(), QStringLiteral("mbscope run: cannot open the session (1 problem):\n%1: requests[3].address: 70000 is beyond 65535\n")
+                              .arg(broken));
+    QVERIFY(r.out.isEmpty());
+}
+
+void TestCliRun::usageAndLinkErrors_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("error");
+    const QString closed = QStringLiteral("rtu-tcp://127.0.0.1:%1").arg(closedPort());
+    QTest::newRow("no document") << QStringList{} << "mbscope run: give the session document to run (see mbscope run --help)\n";
+    QTest::newRow("target without port") << QStringList{example(), QStringLiteral("--target"), QStringLiteral("rtu-tcp://127.0.0.1")}
+                               << "mbscope run: --target: rtu-tcp://127.0.0.1: no port: rtu-tcp needs one, e.g. rtu-tcp://127.0.0.1:4001 (serial device servers listen on ports of their own)\n";
+    QTest::newRow("refused") << QStringList{example(), QStringLiteral("--target"), closed}
+                             << QStringLiteral("mbscope run: %1: connection refused by 127.0.0.1:%2: the host answered, but nothing listens on port %2 (connection refused)\n")
+                                    .arg(closed, closed.section(QLatin1Char(':'), -1));
+}
+
+void TestCliRun::usageAndLinkErrors()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, error);
+    const CliResult r = runMbscope(QStringList{QStringLiteral("run")} + arguments);
+    QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
+    QCOMPARE(r.errText(), error);
+}
+
+QTEST_GUILESS_MAIN(TestCliRun)
+#include "tst_cli_run.moc"
