@@ -37,15 +37,17 @@ ExchangePcapExporter::Stream &ExchangePcapExporter::stream(quint32 conversation,
             m_rtuPorts.append(s.info.serverPort);
         const QString transport = s.info.udp ? QStringLiteral("udp") : QStringLiteral("tcp");
         QString option;
+        // The Modbus dissectors tell requests from answers by their port preference, so a
+        // port is given as a preference (-o), not only as "Decode As" (-d).
         if (s.info.framing == Framing::Rtu)
-            option = QStringLiteral("port %1 (RTU over %2): -d %3.port==%1,mbrtu").arg(s.info.serverPort).arg(transport.toUpper(), transport);
+            option = QStringLiteral("port %1 (RTU over %2): -o mbrtu.%3.port:%1").arg(s.info.serverPort).arg(transport.toUpper(), transport);
         else if (s.info.framing == Framing::Ascii)
             option = QStringLiteral("port %1 (ASCII over %2): tshark has no dissector for it").arg(s.info.serverPort).arg(transport.toUpper());
         else if (s.info.serverPort != 502)
-            option = QStringLiteral("port %1 (Modbus %2): -d %3.port==%1,%4")
+            option = QStringLiteral("port %1 (Modbus %2): -o %3.%4.port:%1")
                          .arg(s.info.serverPort)
-                         .arg(s.info.udp ? QStringLiteral("UDP") : QStringLiteral("TCP"), transport,
-                              s.info.udp ? QStringLiteral("mbudp") : QStringLiteral("mbtcp"));
+                         .arg(s.info.udp ? QStringLiteral("UDP") : QStringLiteral("TCP"),
+                              s.info.udp ? QStringLiteral("mbudp") : QStringLiteral("mbtcp"), transport);
         if (!option.isEmpty() && !m_decodeOptions.contains(option))
             m_decodeOptions.append(option);
     }

@@ -21,9 +21,9 @@ namespace mbscope {
 // order, so a packet is written once no later request can come before it).
 //
 // MBAP goes to its port (502 by default: tshark decodes it as Modbus/TCP by itself). RTU frames
-// go to the conversation's port, which tshark does not know: rtuPorts() lists them so the user
-// can be told the decode option ("-d tcp.port==4001,mbrtu"). ASCII frames are written as they
-// are; tshark has no dissector for ASCII over TCP.
+// go to the conversation's port, which tshark does not know: decodeOptions() gives the option
+// to tell it ("-o mbrtu.tcp.port:4001"). ASCII frames are written as they are; tshark has no
+// dissector for ASCII over TCP.
 class ExchangePcapExporter
 {
 public:
@@ -37,7 +37,7 @@ public:
 
     [[nodiscard]] QList<quint16> rtuPorts() const { return m_rtuPorts; }
     // What tshark needs to decode every conversation written, one entry per port it does not
-    // know by itself: "port 4001 (RTU over TCP): -d tcp.port==4001,mbrtu". MBAP on 502 needs none.
+    // know by itself: "port 4001 (RTU over TCP): -o mbrtu.tcp.port:4001". MBAP on 502 needs none.
     [[nodiscard]] QStringList decodeOptions() const { return m_decodeOptions; }
     [[nodiscard]] quint64 packets() const { return m_writer.packets(); }
 
