@@ -1,0 +1,353 @@
+// mbscope analyze and mbscope export as users run them, on captures and journals the test
+// writes with the core (so every expected figure is known): text and JSON, damaged files with
+// their messages and exit statuses, CSV / JSON lines / pcapng exports read back, plots in PNG,
+// SVG and PDF, and usage errors.
+#include "clitest.h"
+
+#include "capture/capturefilewriter.h"
+#include "capture/exchangepcapexporter.h"
+#include "engine/trafficjournal.h"
+#include "protocol/adubuilder.h"
+
+#include <QtCore/QFile>
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QTemporaryDir>
+#include <QtTest/QTest>
+
+using namespace mbscope;
+using namespace mbscope::testcli;
+
+namespace {
+
+constexpr qint64 kStart = 1'700'000'000'000'000'000LL;
+constexpr qint64 kMs = 1'000'000;
+
+QByteArray mbap(quint16 tid, const char *pduHex)
+{
+    return AduBuilder::mbap(QByteArray::fromHex(pduHex), 1, tid);
+}
+
+CaptureExchange exchange(Framing framing, const QByteArray &request, qint64 sentNs, const QByteArray &response, qint64 doneNs)
+{
+    CaptureExchange e;
+    e.framing = framing;
+    e.transaction.request = request;
+    e.transaction.response = response;
+    e.transaction.sentNs = sentNs;
+    e.transaction.doneNs = e.transaction.firstByteNs = doneNs;
+    return e;
+}
+
+// Three reads answered in 2, 3 and 4 ms (and, with failures, an exception and a timeout).
+bool writeCapture(const QString &path, bool failures, Framing framing = Framing::Tcp)
+{
+    CaptureFileWriter writer;
+    QString error;
+    if (!writer.open(path, CaptureFileWriter::formatFor(path), &error))
+        return false;
+    ExchangePcapExporter exporter(writer);
+    CaptureConversation c;
+    c.framing = framing;
+    c.client.bytes = {192, 168, 1, 5};
+    c.server.bytes = {192, 168, 1, 10};
+    c.clientPort = 40000;
+    c.serverPort = framing == Framing::Rtu ? 4001 : 502;
+    exporter.addConversation(c);
+    for (int i = 0; i < 3; ++i) {
+        const qint64 t = kStart + i * 100 * kMs;
+        if (framing == Framing::Rtu)
+            exporter.add(exchange(framing, AduBuilder::rtu(QByteArray::fromHex("0300640002"), 1), t,
+                                  AduBuilder::rtu(QByteArray::fromHex("0304000a01f4"), 1), t + (2 + i) * kMs));
+        else
+            exporter.add(exchange(framing, mbap(quint16(i), "0300640002"), t, mbap(quint16(i), "0304000a01f4"), t + (2 + i) * kMs));
+    }
+    if (failures) {
+        exporter.add(exchange(framing, mbap(10, "0327100001"), kStart + 400 * kMs, mbap(10, "8302"), kStart + 401 * kMs));
+        exporter.add(exchange(framing, mbap(11, "0300000001"), kStart + 500 * kMs, {}, 0));
+    }
+    exporter.finish();
+    return writer.close(&error);
+}
+
+QByteArray readFile(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+} // namespace
+
+class TestCliCapture : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void analyzeText();
+    void analyzeJson();
+    void damaged_data();
+    void damaged();
+    void exportTables();
+    void exportPcapAnalysedAgain();
+    void exportRtuNotesTheDecodeOption();
+    void exportJournal();
+    void plots_data();
+    void plots();
+    void usageErrors_data();
+    void usageErrors();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_good;
+    QString m_failing;
+};
+
+void TestCliCapture::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    m_good = m_dir.filePath(QStringLiteral("good.pcapng"));
+    m_failing = m_dir.filePath(QStringLiteral("failing.pcapng"));
+    QVERIFY(writeCapture(m_good, false));
+    QVERIFY(writeCapture(m_failing, true));
+    QCOMPARE(readFile(m_good).size(), 952);
+}
+
+void TestCliCapture::analyzeText()
+{
+    const CliResult r = runMbscope({QStringLiteral("analyze"), m_good});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    const QString text = r.outText();
+    QVERIFY2(text.contains(QStringLiteral("(pcapng, 9 packets, 6 Modbus frames")), r.describe().constData());
+    QVERIFY2(text.contains(QStringLiteral("tcp 192.168.1.5:40000 -> 192.168.1.10:502 (Modbus TCP): 3 transactions, 3 ok, 0 failed")),
+             r.describe().constData());
+    QVERIFY2(text.contains(QStringLiteral("0x03 Read Holding Registers")), r.describe().constData());
+
+    const CliResult failing = runMbscope({QStringLiteral("analyze"), m_failing});
+    QVERIFY2(failing.finished && failing.exitCode == 1, failing.describe().constData());
+    QVERIFY2(failing.outText().contains(QStringLiteral("5 transactions, 3 ok, 2 failed")), failing.describe().constData());
+}
+
+void TestCliCapture::analyzeJson()
+{
+    const CliResult r = runMbscope({QStringLiteral("analyze"), m_failing, QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 1, r.describe().constData());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), 5);
+    QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 3);
+    QCOMPARE(o.value(QStringLiteral("exceptions")).toInt(), 1);
+    QCOMPARE(o.value(QStringLiteral("timeouts")).toInt(), 1);
+    // Latencies 2, 3, 4 ms and the exception's 1 ms: answered means Ok and Exception.
+    const QJsonObject latency = o.value(QStringLiteral("latency_us")).toObject();
+    QCOMPARE(latency.value(QStringLiteral("count")).toInt(), 4);
+    QCOMPARE(latency.value(QStringLiteral("min")).toDouble(), 1000.0);
+    QCOMPARE(latency.value(QStringLiteral("max")).toDouble(), 4000.0);
+    QVERIFY(o.value(QStringLiteral("histogram")).isObject());
+    const QJsonObject source = o.value(QStringLiteral("source")).toObject();
+    QCOMPARE(source.value(QStringLiteral("format")).toString(), QStringLiteral("pcapng"));
+    QCOMPARE(source.value(QStringLiteral("complete")).toBool(), true);
+    QCOMPARE(source.value(QStringLiteral("requests")).toInt(), 5);
+    const QJsonArray conversations = o.value(QStringLiteral("conversations")).toArray();
+    QCOMPARE(conversations.size(), 1);
+    QCOMPARE(conversations.at(0).toObject().value(QStringLiteral("server")).toString(), QStringLiteral("192.168.1.10:502"));
+    const QJsonArray functions = o.value(QStringLiteral("functions")).toArray();
+    QCOMPARE(functions.size(), 1);
+    QCOMPARE(functions.at(0).toObject().value(QStringLiteral("function")).toString(), QStringLiteral("0x03"));
+}
+
+void TestCliCapture::damaged_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("message");
+    QTest::addColumn<QString>("analysed"); // what stdout must still say, empty when nothing
+
+    // The pcapng: a 44-byte section header and a 44-byte interface block, the handshake (3
+    // blocks of 88), then each request and each answer in a block of 100: the second request,
+    // at byte 552, is cut after 30 bytes (initTestCase checks the file's size).
+    const QByteArray good = readFile(m_good);
+    QTest::newRow("cut in a packet") << QStringLiteral("cut.pcapng") << good.left(552 + 30) << 1
+                                     << QStringLiteral("at byte 552: the block of type 0x00000006 is cut short: it says 100 bytes, the file has 30")
+                                     << QStringLiteral("1 transactions, 1 ok");
+    QTest::newRow("not a capture") << QStringLiteral("notes.txt") << QByteArray("hello, this is text\n") << 2
+                                   << QStringLiteral("not a capture file: it starts with 68 65 6c 6c") << QString();
+    QTest::newRow("empty") << QStringLiteral("empty.pcap") << QByteArray() << 2 << QStringLiteral("the file is empty: not a capture")
+                           << QString();
+}
+
+void TestCliCapture::damaged()
+{
+    QFETCH(QString, name);
+    QFETCH(QByteArray, bytes);
+    QFETCH(int, exitCode);
+    QFETCH(QString, message);
+    QFETCH(QString, analysed);
+    const QString path = m_dir.filePath(name);
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(bytes);
+    f.close();
+    const CliResult r = runMbscope({QStringLiteral("analyze"), path});
+    QVERIFY2(r.finished && r.exitCode == exitCode, r.describe().constData());
+    QVERIFY2(r.errText().contains(message), r.describe().constData());
+    if (!analysed.isEmpty())
+        QVERIFY2(r.outText().contains(analysed), r.describe().constData());
+}
+
+void TestCliCapture::exportTables()
+{
+    const QString csv = m_dir.filePath(QStringLiteral("out.csv"));
+    const QString jsonl = m_dir.filePath(QStringLiteral("out.jsonl"));
+    const CliResult r = runMbscope({QStringLiteral("export"), m_failing, QStringLiteral("--csv"), csv, QStringLiteral("--jsonl"), jsonl});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral(": 5 row(s)")), r.describe().constData());
+    const QList<QByteArray> rows = readFile(csv).trimmed().split('\n');
+    QCOMPARE(rows.size(), 6);
+    QVERIFY(rows.at(0).startsWith("index,kind,request_time,response_time,latency_us,client,server,framing,unit,function"));
+    QVERIFY2(rows.at(1).contains(",2000.000,192.168.1.5:40000,192.168.1.10:502,tcp,1,0x03,Read Holding Registers,100,2,10 500,ok,"),
+             rows.at(1).constData());
+    QVERIFY2(rows.at(1).contains("2023-11-14T22:13:20.000000000Z"), rows.at(1).constData());
+    QVERIFY2(rows.at(4).contains(",exception,0x02,"), rows.at(4).constData());
+    QVERIFY2(rows.at(5).contains(",timeout,,"), rows.at(5).constData());
+
+    const QList<QByteArray> lines = readFile(jsonl).trimmed().split('\n');
+    QCOMPARE(lines.size(), 5);
+    const QJsonObject first = QJsonDocument::fromJson(lines.at(0)).object();
+    QCOMPARE(first.value(QStringLiteral("latency_us")).toDouble(), 2000.0);
+    QCOMPARE(first.value(QStringLiteral("address")).toInt(), 100);
+    QCOMPARE(first.value(QStringLiteral("values")).toString(), QStringLiteral("10 500"));
+    QCOMPARE(first.value(QStringLiteral("status")).toString(), QStringLiteral("ok"));
+    QCOMPARE(first.value(QStringLiteral("request_time_ns")).toString(), QString::number(kStart));
+    const QJsonObject last = QJsonDocument::fromJson(lines.at(4)).object();
+    QVERIFY(last.value(QStringLiteral("latency_us")).isNull());
+    QCOMPARE(last.value(QStringLiteral("status")).toString(), QStringLiteral("timeout"));
+
+    // CSV to standard output, the note to standard error.
+    const CliResult toStdout = runMbscope({QStringLiteral("export"), m_good, QStringLiteral("--csv"), QStringLiteral("-")});
+    QVERIFY2(toStdout.finished && toStdout.exitCode == 0, toStdout.describe().constData());
+    QCOMPARE(toStdout.out.trimmed().split('\n').size(), 4);
+}
+
+void TestCliCapture::exportPcapAnalysedAgain()
+{
+    const QString pcap = m_dir.filePath(QStringLiteral("again.pcap"));
+    const CliResult r = runMbscope({QStringLiteral("export"), m_failing, QStringLiteral("--pcap"), pcap});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("packet(s), pcap")), r.describe().constData());
+    QVERIFY(readFile(pcap).startsWith(QByteArray::fromHex("4d3cb2a1"))); // nanosecond pcap, little-endian
+    const CliResult again = runMbscope({QStringLiteral("analyze"), pcap, QStringLiteral("--json")});
+    QVERIFY2(again.finished, again.describe().constData());
+    QCOMPARE(again.json().value(QStringLiteral("count")).toInt(), 5);
+    QCOMPARE(again.json().value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("max")).toDouble(), 4000.0);
+}
+
+void TestCliCapture::exportRtuNotesTheDecodeOption()
+{
+    const QString rtu = m_dir.filePath(QStringLiteral("rtu.pcapng"));
+    QVERIFY(writeCapture(rtu, false, Framing::Rtu));
+    const CliResult analysed = runMbscope({QStringLiteral("analyze"), rtu, QStringLiteral("--rtu-port"), QStringLiteral("4001"), QStringLiteral("--json")});
+    QVERIFY2(analysed.finished && analysed.exitCode == 0, analysed.describe().constData());
+    QCOMPARE(analysed.json().value(QStringLiteral("ok")).toInt(), 3);
+    const QString out = m_dir.filePath(QStringLiteral("rtu-out.pcapng"));
+    const CliResult r = runMbscope({QStringLiteral("export"), rtu, QStringLiteral("--rtu-port"), QStringLiteral("4001"), QStringLiteral("--pcap"), out});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("port 4001 (RTU over TCP): -o mbrtu.tcp.port:4001")), r.describe().constData());
+    // Without --rtu-port the traffic on 4001 is not Modbus to mbscope either.
+    const CliResult unknown = runMbscope({QStringLiteral("analyze"), rtu});
+    QVERIFY2(unknown.outText().contains(QStringLiteral("none: no traffic on the Modbus ports")), unknown.describe().constData());
+}
+
+void TestCliCapture::exportJournal()
+{
+    const QString journal = m_dir.filePath(QStringLiteral("poll.mbscope.journal"));
+    {
+        TrafficJournalWriter writer;
+        QString error;
+        QVERIFY2(writer.open(journal, {}, true, &error), qPrintable(error));
+        writer.addLink(0, u"tcp://192.168.1.20:502");
+        quint64 sequence = 0;
+        const auto add = [&](qint64 t, quint64 id, TrafficDirection d, TrafficVerdict v, const QByteArray &bytes) {
+            writer.addFrame(TrafficEntry{sequence++, t, id, 0, d, v, bytes});
+        };
+        add(1000 * kMs, 1, TrafficDirection::Out, TrafficVerdict::Sent, mbap(1, "0300640002"));
+        add(1003 * kMs, 1, TrafficDirection::In, TrafficVerdict::Ok, mbap(1, "0304000a01f4"));
+        add(1100 * kMs, 2, TrafficDirection::Out, TrafficVerdict::Sent, mbap(2, "0300640002"));
+        add(2100 * kMs, 2, TrafficDirection::In, TrafficVerdict::Timeout, {});
+        writer.close();
+    }
+    const QString csv = m_dir.filePath(QStringLiteral("journal.csv"));
+    const CliResult r = runMbscope({QStringLiteral("export"), journal, QStringLiteral("--csv"), csv});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    const QList<QByteArray> rows = readFile(csv).trimmed().split('\n');
+    QCOMPARE(rows.size(), 3);
+    QVERIFY2(rows.at(1).contains(",3000.000,10.0.0.1:49152,192.168.1.20:502,tcp,1,0x03,Read Holding Registers,100,2,10 500,ok,"),
+             rows.at(1).constData());
+    QVERIFY2(rows.at(2).contains(",timeout,"), rows.at(2).constData());
+    const CliResult analysed = runMbscope({QStringLiteral("analyze"), journal, QStringLiteral("--json")});
+    QCOMPARE(analysed.json().value(QStringLiteral("source")).toObject().value(QStringLiteral("format")).toString(), QStringLiteral("journal"));
+    QCOMPARE(analysed.json().value(QStringLiteral("timeouts")).toInt(), 1);
+}
+
+void TestCliCapture::plots_data()
+{
+    QTest::addColumn<QString>("option");
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<QByteArray>("magic");
+    QTest::newRow("histogram png") << QStringLiteral("--histogram") << QStringLiteral("h.png") << QByteArray("\x89PNG");
+    QTest::newRow("histogram pdf") << QStringLiteral("--histogram") << QStringLiteral("h.pdf") << QByteArray("%PDF");
+    QTest::newRow("histogram svg") << QStringLiteral("--histogram") << QStringLiteral("h.svg") << QByteArray("<?xml");
+    QTest::newRow("time series png") << QStringLiteral("--timeseries") << QStringLiteral("t.png") << QByteArray("\x89PNG");
+    QTest::newRow("time series svg") << QStringLiteral("--timeseries") << QStringLiteral("t.svg") << QByteArray("<?xml");
+}
+
+void TestCliCapture::plots()
+{
+#ifndef MBSCOPE_HAVE_UI
+    QSKIP("built without the GUI: no QCustomPlot, no plots");
+#endif
+    QFETCH(QString, option);
+    QFETCH(QString, file);
+    QFETCH(QByteArray, magic);
+    const QString path = m_dir.filePath(file);
+    QFile::remove(path);
+    const CliResult r = runMbscope({QStringLiteral("export"), m_failing, option, path});
+    if (r.exitCode == 2 && r.errText().contains(QStringLiteral("without Qt SVG")))
+        QSKIP("this mbscope was built without Qt SVG (qt6-svg-dev)");
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    const QByteArray bytes = readFile(path);
+    QVERIFY2(bytes.startsWith(magic), bytes.left(16).toHex(' ').constData());
+    QVERIFY(bytes.size() > 1000);
+}
+
+void TestCliCapture::usageErrors_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("export with nothing to write") << QStringList{QStringLiteral("export"), QStringLiteral("GOOD")}
+                                                  << QStringLiteral("nothing to write: give --csv, --jsonl, --pcap");
+    QTest::newRow("plot format") << QStringList{QStringLiteral("analyze"), QStringLiteral("GOOD"), QStringLiteral("--histogram"), QStringLiteral("x.gif")}
+                                 << QStringLiteral("'x.gif': the plot's format comes from the file name, which must end in .png, .svg or .pdf");
+    QTest::newRow("port") << QStringList{QStringLiteral("analyze"), QStringLiteral("GOOD"), QStringLiteral("--port"), QStringLiteral("50O2")}
+                          << QStringLiteral("--port '50O2' is not a port: expected a number from 1 to 65535");
+    QTest::newRow("timeout") << QStringList{QStringLiteral("analyze"), QStringLiteral("GOOD"), QStringLiteral("--timeout"), QStringLiteral("soon")}
+                             << QStringLiteral("--timeout: ");
+    QTest::newRow("no such file") << QStringList{QStringLiteral("analyze"), QStringLiteral("/nonexistent/x.pcap")}
+                                  << QStringLiteral("/nonexistent/x.pcap: no such file");
+    QTest::newRow("no capture") << QStringList{QStringLiteral("analyze")} << QStringLiteral("no capture given");
+    QTest::newRow("overwrite the source") << QStringList{QStringLiteral("export"), QStringLiteral("GOOD"), QStringLiteral("--pcap"), QStringLiteral("GOOD")}
+                                          << QStringLiteral("--pcap would overwrite the source");
+}
+
+void TestCliCapture::usageErrors()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    arguments.replaceInStrings(QStringLiteral("GOOD"), m_good);
+    const CliResult r = runMbscope(arguments);
+    QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
+    QVERIFY2(r.errText().contains(message), r.describe().constData());
+}
+
+QTEST_GUILESS_MAIN(TestCliCapture)
+#include "tst_cli_capture.moc"
