@@ -12,7 +12,7 @@ build_pkgs=(
   librsvg2-bin dpkg-dev
 )
 test_pkgs=(
-  tshark socat libmodbus-dev mbpoll python3-pymodbus python3-serial python3-serial-asyncio
+  tshark socat libmodbus-dev mbpoll python3-pymodbus python3-serial python3-serial-asyncio python3-jsonschema
   xvfb clang libclang-rt-14-dev libbenchmark-dev xauth
   desktop-file-utils appstream
 )
