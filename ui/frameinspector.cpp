@@ -14,10 +14,10 @@ namespace mbscope {
 
 namespace {
 
-// The tree gets the larger share: its rows carry names, values and problems; the hex view needs
-// only its fixed 16-byte width.
-constexpr int kTreeStretch = 3;
-constexpr int kHexStretch = 2;
+// Room beyond the hint goes to the tree: its rows carry names, values and problems, while the hex
+// view needs only its fixed 16-byte width.
+constexpr int kTreeStretch = 1;
+constexpr int kHexStretch = 0;
 
 } // namespace
 
@@ -32,6 +32,13 @@ FrameInspector::FrameInspector(QWidget *parent)
     m_title->setFont(bold);
     m_title->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_title->hide();
+
+    // How to read the offsets when the bytes shown are not the bytes sent (ASCII frames).
+    m_note = new QLabel(this);
+    m_note->setObjectName(QStringLiteral("frameNote"));
+    m_note->setWordWrap(true);
+    m_note->setForegroundRole(QPalette::PlaceholderText);
+    m_note->hide();
 
     m_placeholder = new QLabel(this);
     m_placeholder->setObjectName(QStringLiteral("framePlaceholder"));
@@ -56,6 +63,7 @@ FrameInspector::FrameInspector(QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_title);
+    layout->addWidget(m_note);
     layout->addWidget(m_splitter, 1);
     layout->addWidget(m_placeholder, 1);
 
@@ -89,6 +97,8 @@ void FrameInspector::setDissection(const Dissection &dissection)
             marks.append({f.offset, f.length, SeverityStyle::backgroundColor(f.severity)});
     }
     m_hex->setMarks(marks);
+    m_note->setText(dissection.note);
+    m_note->setVisible(!dissection.note.isEmpty());
     m_placeholder->hide();
     m_splitter->show();
 }
@@ -102,6 +112,7 @@ void FrameInspector::setPlaceholder(const QString &text)
 {
     m_model->clear();
     m_hex->clear();
+    m_note->hide();
     m_placeholder->setText(text);
     m_splitter->hide();
     m_placeholder->show();
@@ -128,6 +139,10 @@ void FrameInspector::selectField(int field)
     }
     m_tree->selectionModel()->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
     m_tree->scrollTo(index);
+    // Picking another byte of the field already selected changes no row: the field's bytes are
+    // highlighted again all the same, so the highlight always shows a whole field.
+    const Field &f = m_model->dissection().fields.at(field);
+    m_hex->setSelection(f.offset, f.length);
 }
 
 void FrameInspector::onTreeSelection()

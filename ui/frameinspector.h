@@ -15,7 +15,8 @@ class HexView;
 
 // One frame as Wireshark shows a packet: its field tree beside its bytes. Selecting a field
 // highlights its bytes; clicking or dragging over bytes selects the innermost field covering them.
-// Fields with problems tint their bytes with their severity's colour.
+// Fields with problems tint their bytes with their severity's colour. The bytes shown are the
+// dissection's (an ASCII frame's decoded bytes, with the dissection's note on how to read them).
 class FrameInspector : public QWidget
 {
     Q_OBJECT
@@ -50,6 +51,7 @@ private:
     void onBytesPicked(int offset, int length);
 
     QLabel *m_title = nullptr;
+    QLabel *m_note = nullptr;
     QLabel *m_placeholder = nullptr;
     QSplitter *m_splitter = nullptr;
     FieldTreeModel *m_model = nullptr;

@@ -241,7 +241,7 @@ void HexView::paintEvent(QPaintEvent *)
     // A thin rule between the hex and the ASCII columns.
     painter.setPen(pal.color(QPalette::Mid));
     const int ruleX = hexX(m_bytesPerLine) + dx;
-    painter.drawLine(ruleX, 0, ruleX, viewport()->height());
+    painter.drawLine(ruleX, 0, ruleX, (lastLine - firstLine) * m_lineHeight);
 }
 
 void HexView::resizeEvent(QResizeEvent *event)

@@ -28,15 +28,15 @@ namespace {
 constexpr int kAnyVerdict = -1;
 constexpr int kProblemsOnly = -2;
 
-// Column widths in characters of the table's font: fixed so a million rows never need measuring.
+// Column widths in digits of the table's font: fixed so a million rows never need measuring.
 struct ColumnWidth {
     TrafficModel::Column column;
     int chars;
 };
 constexpr ColumnWidth kColumnWidths[] = {
-    {TrafficModel::NumberColumn, 8},  {TrafficModel::TimeColumn, 12},    {TrafficModel::DirectionColumn, 6},
-    {TrafficModel::LinkColumn, 22},   {TrafficModel::UnitColumn, 5},     {TrafficModel::FunctionColumn, 28},
-    {TrafficModel::LengthColumn, 7},  {TrafficModel::LatencyColumn, 11}, {TrafficModel::VerdictColumn, 11},
+    {TrafficModel::NumberColumn, 7},  {TrafficModel::TimeColumn, 11},    {TrafficModel::DirectionColumn, 6},
+    {TrafficModel::LinkColumn, 22},   {TrafficModel::UnitColumn, 4},     {TrafficModel::FunctionColumn, 30},
+    {TrafficModel::LengthColumn, 6},  {TrafficModel::LatencyColumn, 10}, {TrafficModel::VerdictColumn, 11},
 };
 
 } // namespace
@@ -142,9 +142,11 @@ void TrafficMonitor::buildUi()
     columns->setSectionResizeMode(QHeaderView::Interactive);
     columns->setStretchLastSection(true);
     columns->setHighlightSections(false);
-    const int charWidth = m_view->fontMetrics().averageCharWidth();
+    // Digits are wider than the average character: a seven-digit frame number must not elide.
+    const int charWidth = m_view->fontMetrics().horizontalAdvance(QLatin1Char('0'));
+    constexpr int kCellPadding = 12;
     for (const ColumnWidth &w : kColumnWidths)
-        m_view->setColumnWidth(w.column, w.chars * charWidth);
+        m_view->setColumnWidth(w.column, w.chars * charWidth + kCellPadding);
 
     m_statusLabel = new QLabel(this);
     m_statusLabel->setObjectName(QStringLiteral("statusLabel"));

@@ -101,7 +101,16 @@ void TestFrameInspector::cleanup()
 void TestFrameInspector::show(const QByteArray &frame, int framing, int direction)
 {
     m_inspector->setDissection(dissect(frame, framing, direction));
-    QCOMPARE(m_inspector->hexView()->bytes(), frame);
+    // An ASCII frame's fields count its decoded bytes: those are shown, with the note saying so.
+    auto *note = m_inspector->findChild<QLabel *>(QStringLiteral("frameNote"));
+    if (Framing(framing) == Framing::Ascii) {
+        QCOMPARE(m_inspector->hexView()->bytes(), QByteArray::fromHex(frame.mid(1, frame.size() - 3))); // without ':' and CR LF
+        QVERIFY(note->isVisible());
+        QCOMPARE(note->text(), m_inspector->dissection().note);
+    } else {
+        QCOMPARE(m_inspector->hexView()->bytes(), frame);
+        QVERIFY(!note->isVisible());
+    }
     QVERIFY(m_inspector->treeView()->isVisible());
 }
 
@@ -145,7 +154,8 @@ void TestFrameInspector::byteSelectsInnermostField()
     show(frame, framing, direction);
     const FieldTree &tree = m_inspector->dissection().fields;
     HexView *hex = m_inspector->hexView();
-    for (int offset = 0; offset < frame.size(); ++offset) {
+    const int size = int(hex->bytes().size());
+    for (int offset = 0; offset < size; ++offset) {
         const QList<int> expected = innermost(tree, offset, offset);
         const QString where = QStringLiteral("byte %1").arg(offset);
         QVERIFY2(!expected.isEmpty(), qPrintable(where + QStringLiteral(": no field covers it")));
@@ -171,7 +181,7 @@ void TestFrameInspector::dragSelectsFieldCoveringTheRange()
     HexView *hex = m_inspector->hexView();
     // From the second byte to the second-to-last: in every framing that spans the PDU's parts.
     const int first = 1;
-    const int last = int(frame.size()) - 2;
+    const int last = int(hex->bytes().size()) - 2;
     const QPoint from = hex->byteRect(first).center();
     const QPoint to = hex->byteRect(last).center();
     QTest::mousePress(hex->viewport(), Qt::LeftButton, {}, from);
