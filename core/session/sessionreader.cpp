@@ -28,6 +28,26 @@ ProfileProblem fileProblem(const QString &source, const QString &message, int li
     return p;
 }
 
+// The offset of the opening quote of the first string holding a raw line end, or -1.
+qsizetype unclosedStringStart(const QByteArray &json)
+{
+    qsizetype start = -1;
+    for (qsizetype i = 0; i < json.size(); ++i) {
+        const char c = json.at(i);
+        if (start < 0) {
+            if (c == '"')
+                start = i;
+        } else if (c == '\\') {
+            ++i;
+        } else if (c == '"') {
+            start = -1;
+        } else if (c == '\n' || c == '\r') {
+            return start;
+        }
+    }
+    return -1;
+}
+
 void readTarget(JsonReader &reader, const QJsonValue &value, SessionTarget *target)
 {
     const QString path = QStringLiteral("target");
@@ -132,8 +152,17 @@ SessionLoadResult SessionReader::parse(const QByteArray &json, const QString &so
         qsizetype at = parseError.offset;
         if (at > 0 && at <= json.size() && !QChar::isSpace(uchar(json.at(at - 1))))
             --at;
+        QString message = QStringLiteral("JSON syntax error: %1").arg(parseError.errorString());
+        // Qt reads an unterminated string to the end of the text and reports it there; the
+        // string that was never closed is the first one that runs over a line end.
+        if (parseError.error == QJsonParseError::UnterminatedString) {
+            if (const qsizetype start = unclosedStringStart(json); start >= 0) {
+                at = start;
+                message = QStringLiteral("JSON syntax error: the string that starts here is not closed on its line");
+            }
+        }
         const auto [line, column] = ProfileLoader::lineColumn(json, at);
-        result.problems.append(fileProblem(source, QStringLiteral("JSON syntax error: %1").arg(parseError.errorString()), line, column));
+        result.problems.append(fileProblem(source, message, line, column));
         return result;
     }
     if (!doc.isObject()) {
