@@ -1,6 +1,7 @@
 #include "valuetable.h"
 
 #include "protocol/modiconreference.h"
+#include "protocol/readanswer.h"
 #include "protocol/registervalue.h"
 
 #include <QtCore/QJsonObject>
@@ -18,24 +19,15 @@ QString reference(quint8 functionCode, int address)
     const auto table = ModiconReference::tableOf(functionCode);
     if (!table || address < 0 || address > 0xFFFF)
         return {};
-    const ModiconReference r(*table, quint16(address));
-    return r.hasFiveDigitForm() ? r.fiveDigit() : r.sixDigit();
-}
-
-QString addressText(int address)
-{
-    return QStringLiteral("%1 (0x%2)").arg(address).arg(QString::number(address, 16).toUpper().rightJustified(4, QLatin1Char('0')));
+    return ReadAnswer::referenceText(ModiconReference(*table, quint16(address)));
 }
 
 // The value of a format starting at register index, when the whole value is there.
 std::optional<RegisterValue> valueAt(const QList<quint16> &registers, qsizetype index, RegisterFormat format)
 {
-    const int n = format.registerCount();
-    if (index % n != 0 || index + n > registers.size())
-        return std::nullopt;
-    const RegisterValueResult r =
-        RegisterValue::fromRegisters(std::span<const quint16>(registers.constData() + index, std::size_t(n)), format);
-    return r.ok ? std::optional<RegisterValue>(r.value) : std::nullopt;
+    ReadAnswer answer;
+    answer.registers = registers; // shared, not copied
+    return answer.valueAt(int(index), format);
 }
 
 QJsonValue jsonOf(const RegisterValue &v)
@@ -67,19 +59,10 @@ ValueTable ValueTable::fromReadResponse(quint8 functionCode, int address, int qu
     t.functionCode = functionCode;
     t.address = address;
     t.formats = formats;
-    // V1.1b3 6.1-6.4: function code, byte count, then the data.
-    if (pdu.size() < 2 || quint8(pdu.at(0)) != functionCode)
-        return t;
-    const int byteCount = quint8(pdu.at(1));
-    const QByteArray data = pdu.mid(2, byteCount);
-    if (data.size() != byteCount)
-        return t;
-    if (functionCode == 0x01 || functionCode == 0x02) {
-        for (int i = 0; i < quantity && i / 8 < data.size(); ++i)
-            t.bits.append((quint8(data.at(i / 8)) >> (i % 8)) & 1);
-    } else {
-        for (int i = 0; i + 1 < data.size(); i += 2)
-            t.registers.append(quint16((quint8(data.at(i)) << 8) | quint8(data.at(i + 1))));
+    const ReadAnswerResult r = ReadAnswer::fromResponse(functionCode, address, quantity, pdu);
+    if (r.ok) {
+        t.registers = r.answer.registers;
+        t.bits = r.answer.bits;
     }
     return t;
 }
@@ -90,7 +73,7 @@ QString ValueTable::text() const
     if (!bits.isEmpty()) {
         rows.append({QStringLiteral("ADDRESS"), QStringLiteral("REFERENCE"), QStringLiteral("VALUE")});
         for (qsizetype i = 0; i < bits.size(); ++i)
-            rows.append({addressText(address + int(i)), reference(functionCode, address + int(i)),
+            rows.append({ReadAnswer::addressText(address + int(i)), reference(functionCode, address + int(i)),
                          bits.at(i) ? QStringLiteral("1  ON") : QStringLiteral("0  OFF")});
     } else {
         QStringList heading{QStringLiteral("ADDRESS"), QStringLiteral("REFERENCE")};
@@ -98,7 +81,7 @@ QString ValueTable::text() const
             heading.append(f.name());
         rows.append(heading);
         for (qsizetype i = 0; i < registers.size(); ++i) {
-            QStringList row{addressText(address + int(i)), reference(functionCode, address + int(i))};
+            QStringList row{ReadAnswer::addressText(address + int(i)), reference(functionCode, address + int(i))};
             for (const RegisterFormat &f : formats) {
                 const auto v = valueAt(registers, i, f);
                 row.append(v ? v->toText() : QString());

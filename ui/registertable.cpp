@@ -57,7 +57,8 @@ RegisterTable::RegisterTable(QWidget *parent)
     m_view->setModel(m_model);
     m_view->verticalHeader()->hide();
     m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 6);
-    m_view->horizontalHeader()->setStretchLastSection(true);
+    // Numbers stay beside their names: no column stretches to the view's edge.
+    m_view->horizontalHeader()->setStretchLastSection(false);
     m_view->horizontalHeader()->setContextMenuPolicy(Qt::CustomContextMenu);
     m_view->setSelectionBehavior(QAbstractItemView::SelectItems);
     m_view->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
@@ -79,7 +80,7 @@ RegisterTable::RegisterTable(QWidget *parent)
     layout->addWidget(m_view);
 
     connect(m_model, &RegisterTableModel::writeRequested, this, [this](const QByteArray &pdu, const QString &what) {
-        showMessage(QString());
+        m_showingProblem = false;
         m_message->setText(QStringLiteral("Write requested: ") + what);
         m_message->setStyleSheet(QString());
         m_message->show();
@@ -219,19 +220,19 @@ void RegisterTable::refreshWriteChoices()
         return;
     }
     m_writeBox->setEnabled(true);
+    const WriteChoice choice = m_model->writeChoice();
     if (table == ModbusTable::Coils) {
+        // Automatic and Single both write a coil with 05; the model keeps the choice as made, so
+        // going back to registers shows it again.
         m_writeBox->addItem(QStringLiteral("05 Write Single Coil"), int(WriteChoice::Single));
         m_writeBox->addItem(QStringLiteral("0F Write Multiple Coils"), int(WriteChoice::Multiple));
-    } else {
-        m_writeBox->addItem(QStringLiteral("06 or 10 by width"), int(WriteChoice::Automatic));
-        m_writeBox->addItem(QStringLiteral("06 Write Single Register"), int(WriteChoice::Single));
-        m_writeBox->addItem(QStringLiteral("10 Write Multiple Registers"), int(WriteChoice::Multiple));
+        m_writeBox->setCurrentIndex(choice == WriteChoice::Multiple ? 1 : 0);
+        return;
     }
-    WriteChoice choice = m_model->writeChoice();
-    if (table == ModbusTable::Coils && choice == WriteChoice::Automatic)
-        choice = WriteChoice::Single; // the same function, 05, said as what it is
+    m_writeBox->addItem(QStringLiteral("06 or 10 by width"), int(WriteChoice::Automatic));
+    m_writeBox->addItem(QStringLiteral("06 Write Single Register"), int(WriteChoice::Single));
+    m_writeBox->addItem(QStringLiteral("10 Write Multiple Registers"), int(WriteChoice::Multiple));
     m_writeBox->setCurrentIndex(qMax(0, m_writeBox->findData(int(choice))));
-    m_model->setWriteChoice(WriteChoice(m_writeBox->currentData().toInt()));
 }
 
 void RegisterTable::applySpans()
@@ -252,9 +253,10 @@ void RegisterTable::applySpans()
 
 void RegisterTable::showMessage(const QString &text)
 {
+    m_showingProblem = !text.isEmpty();
     m_message->setText(text);
     m_message->setStyleSheet(QStringLiteral("QLabel { color: #a40000; }"));
-    m_message->setVisible(!text.isEmpty());
+    m_message->setVisible(m_showingProblem);
 }
 
 QString RegisterTable::message() const
@@ -305,7 +307,7 @@ void RegisterTable::showHeaderMenu(const QPoint &position)
 bool RegisterTable::showTransaction(const Transaction &transaction, Framing framing)
 {
     const bool ok = m_model->updateFromTransaction(transaction, framing);
-    if (ok && m_message->isVisible() && !m_message->styleSheet().isEmpty())
+    if (ok && m_showingProblem)
         showMessage(QString());
     return ok;
 }
@@ -313,7 +315,7 @@ bool RegisterTable::showTransaction(const Transaction &transaction, Framing fram
 bool RegisterTable::showAnswer(const QByteArray &requestPdu, const QByteArray &responsePdu)
 {
     const bool ok = m_model->update(requestPdu, responsePdu);
-    if (ok && m_message->isVisible() && !m_message->styleSheet().isEmpty())
+    if (ok && m_showingProblem)
         showMessage(QString());
     return ok;
 }

@@ -72,6 +72,7 @@ private:
     QLabel *m_message = nullptr;
     int m_currentValue = 0;
     bool m_refreshing = false;
+    bool m_showingProblem = false; // the message line shows a refused answer or edit
 };
 
 } // namespace mbscope

@@ -357,8 +357,8 @@ bool RegisterTableModel::isChanged(int row, int column) const
 {
     int first = row;
     int width = 1;
-    if (const int vi = valueIndexOf(column); vi >= 0 && !m_answer.isBits()) {
-        width = m_formats.at(vi).registerCount();
+    if (const int vi = valueIndexOf(column); vi >= 0) {
+        width = m_answer.isBits() ? 1 : m_formats.at(vi).registerCount();
         first = row - row % width;
     } else if (column == scaledColumn()) {
         const TableEntry *entry = entryAt(row);
@@ -414,7 +414,7 @@ bool RegisterTableModel::isEditableCell(int row, int column) const
 
 QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
 {
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+    if (!index.isValid() || !checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
         return {};
     const int row = index.row();
     const int column = index.column();
@@ -512,7 +512,7 @@ QVariant RegisterTableModel::headerData(int section, Qt::Orientation orientation
 
 Qt::ItemFlags RegisterTableModel::flags(const QModelIndex &index) const
 {
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+    if (!index.isValid() || !checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
         return Qt::NoItemFlags;
     Qt::ItemFlags f = Qt::ItemIsSelectable | Qt::ItemIsEnabled | Qt::ItemNeverHasChildren;
     if (isEditableCell(index.row(), index.column())) {
@@ -559,7 +559,9 @@ std::optional<QList<quint16>> RegisterTableModel::wordsFromText(int row, int col
         return v.value.registers();
     }
     const RegisterFormat format = formatOfColumn(column);
-    const RegisterValueResult v = RegisterValue::fromText(trimmed, format);
+    // Spaces are characters in ASCII ("A " is 0x4120); elsewhere they only surround the number.
+    const RegisterValueResult v =
+        RegisterValue::fromText(format.type() == RegisterType::Ascii ? text : trimmed, format);
     if (!v.ok) {
         *error = format.name() + QLatin1String(": ") + v.error;
         return std::nullopt;
@@ -570,7 +572,7 @@ std::optional<QList<quint16>> RegisterTableModel::wordsFromText(int row, int col
 TableWriteResult RegisterTableModel::writeFor(const QModelIndex &index, const QString &text) const
 {
     TableWriteResult result;
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+    if (!index.isValid() || !checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
         return result;
     const int row = index.row();
     const int column = index.column();
