@@ -113,6 +113,9 @@ int runGui(QApplication &app)
     if (screenshot.isEmpty())
         screenshot = qEnvironmentVariable("MBSCOPE_SCREENSHOT");
 
+    // QSettings (recent targets, saved requests) under ~/.config/mbscope/.
+    if (QCoreApplication::organizationName().isEmpty())
+        QCoreApplication::setOrganizationName(QStringLiteral("mbscope"));
     MainWindow window;
     window.resize(size);
     bool simulated = false;

@@ -68,6 +68,8 @@ void ConnectionBar::buildUi()
     m_hostEdit->setObjectName(QStringLiteral("hostEdit"));
     m_hostEdit->setPlaceholderText(tr("host name or IP address"));
     m_hostEdit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("192.168.127.254___")));
+    // A host name is rarely longer than this; a wider field only pushes the port away from it.
+    m_hostEdit->setMaximumWidth(fontMetrics().horizontalAdvance(QStringLiteral("modbus-gateway.example.org____")));
     m_portSpin = new QSpinBox(this);
     m_portSpin->setObjectName(QStringLiteral("portSpin"));
     m_portSpin->setRange(1, 65535);
@@ -79,12 +81,14 @@ void ConnectionBar::buildUi()
     networkRow->addWidget(m_hostEdit, 1);
     networkRow->addWidget(buddyLabel(tr("P&ort:"), m_portSpin, network));
     networkRow->addWidget(m_portSpin);
+    networkRow->addStretch(1);
 
     // Serial target
     m_serialPortCombo = new QComboBox(this);
     m_serialPortCombo->setObjectName(QStringLiteral("serialPortCombo"));
     m_serialPortCombo->setEditable(true);
     m_serialPortCombo->setMinimumContentsLength(14);
+    m_serialPortCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_serialPortCombo->lineEdit()->setPlaceholderText(tr("/dev/ttyUSB0"));
     auto *refresh = new QToolButton(this);
     refresh->setObjectName(QStringLiteral("refreshPortsButton"));
@@ -114,7 +118,7 @@ void ConnectionBar::buildUi()
     auto *serialRow = new QHBoxLayout(serial);
     serialRow->setContentsMargins(0, 0, 0, 0);
     serialRow->addWidget(buddyLabel(tr("P&ort:"), m_serialPortCombo, serial));
-    serialRow->addWidget(m_serialPortCombo, 1);
+    serialRow->addWidget(m_serialPortCombo);
     serialRow->addWidget(refresh);
     serialRow->addWidget(buddyLabel(tr("&Baud:"), m_baudCombo, serial));
     serialRow->addWidget(m_baudCombo);
@@ -124,6 +128,7 @@ void ConnectionBar::buildUi()
     serialRow->addWidget(m_dataBitsCombo);
     serialRow->addWidget(buddyLabel(tr("&Stop:"), m_stopBitsCombo, serial));
     serialRow->addWidget(m_stopBitsCombo);
+    serialRow->addStretch(1);
 
     m_targetStack = new QStackedWidget(this);
     m_targetStack->addWidget(network);
@@ -226,7 +231,7 @@ void ConnectionBar::refreshSerialPorts()
     }
     m_serialPortCombo->setToolTip(ports.isEmpty() ? tr("No serial port found: plug in the adapter and press Refresh, "
                                                        "or type the device path")
-                                                  : tr("%n serial port(s) found", nullptr, int(ports.size())));
+                                                  : tr("Serial ports found: %1").arg(ports.size()));
     m_serialPortCombo->setCurrentText(current);
 }
 

@@ -45,9 +45,10 @@ void LinkStatusWidget::setState(LinkController::State state, const QString &mess
 void LinkStatusWidget::setCounters(const EngineCounters &counters)
 {
     const QLocale locale;
-    QString text = tr("TX %1 B  RX %2 B  \u00B7  %3 requests")
+    QString text = tr("TX %1 B  RX %2 B  \u00B7  %3")
                        .arg(locale.toString(counters.bytesOut), locale.toString(counters.bytesIn),
-                            locale.toString(counters.requestsSent));
+                            counters.requestsSent == 1 ? tr("1 request")
+                                                       : tr("%1 requests").arg(locale.toString(counters.requestsSent)));
     if (counters.linkErrors > 0)
         text += tr("  \u00B7  %1 link errors").arg(locale.toString(counters.linkErrors));
     m_countersLabel->setText(text);

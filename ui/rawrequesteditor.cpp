@@ -4,6 +4,7 @@
 
 #include "protocol/adubuilder.h"
 #include "protocol/functioncode.h"
+#include "protocol/pdusize.h"
 
 #include <QtGui/QFontDatabase>
 #include <QtGui/QTextBlock>
@@ -40,6 +41,17 @@ QString completionName(Framing framing)
     case Framing::Ascii: return RawRequestEditor::tr("Add unit and LRC");
     default: return RawRequestEditor::tr("Complete");
     }
+}
+
+// RTU bytes that are exactly a unit id and a whole request PDU: what people type before the CRC
+// (a frame of that length with a correct CRC would be a shorter request, which the CRC check
+// tells apart).
+bool isPduWithoutCrc(const QByteArray &bytes)
+{
+    if (bytes.size() < 2)
+        return false;
+    const pdusize::Expected expected = pdusize::expectedPduSize(QByteArrayView(bytes).sliced(1), Direction::Request);
+    return expected.status == pdusize::Status::Complete && expected.size == bytes.size() - 1;
 }
 
 } // namespace
@@ -81,7 +93,11 @@ void RawRequestEditor::buildUi()
     m_edit->setTabChangesFocus(true);
     m_edit->setPlaceholderText(tr("The bytes to send, as hex: 01 03 00 79 00 16 15 DD"));
     const QFontMetrics fm(mono);
-    m_edit->setMinimumHeight(fm.lineSpacing() * 3 + 2 * m_edit->frameWidth() + 8);
+    // A 256-byte ADU as spaced hex is about 6 lines at the composer's width: room for that, and
+    // the rest of the height goes to the Form and the poll settings, not to empty editor space.
+    const int margins = 2 * m_edit->frameWidth() + int(2 * m_edit->document()->documentMargin());
+    m_edit->setMinimumHeight(fm.lineSpacing() * 3 + margins);
+    m_edit->setMaximumHeight(fm.lineSpacing() * 8 + margins);
 
     m_completeButton = new QToolButton(this);
     m_completeButton->setObjectName(QStringLiteral("completeButton"));
@@ -117,10 +133,11 @@ void RawRequestEditor::buildUi()
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(savedRow);
-    layout->addWidget(m_edit, 1);
+    layout->addWidget(m_edit);
     layout->addLayout(countRow);
     layout->addWidget(m_infoLabel);
     layout->addWidget(m_noteLabel);
+    layout->addStretch(1);
 
     connect(m_edit, &QPlainTextEdit::textChanged, this, &RawRequestEditor::onTextChanged);
     updateCompleteMenu();
@@ -229,7 +246,7 @@ void RawRequestEditor::updateInfo()
         m_infoLabel->setPalette(p);
         return;
     }
-    m_countLabel->setText(tr("%n byte(s)", nullptr, int(m_bytes.size())));
+    m_countLabel->setText(m_bytes.size() == 1 ? tr("1 byte") : tr("%1 bytes").arg(m_bytes.size()));
     m_infoLabel->setPalette(p);
     if (m_bytes.isEmpty()) {
         m_infoLabel->setText(tr("Type the request as hex, choose a saved one, or build it in the Form tab."));
@@ -247,6 +264,11 @@ void RawRequestEditor::updateInfo()
         if (!parts.complete) {
             text = tr("Not a whole %1 frame (%2). Send it as it is, or use \u201C%3\u201D if it is a PDU.")
                        .arg(framingName(m_framing).toUpper(), parts.error, completionName(m_framing));
+        } else if (m_framing == Framing::Rtu && !parts.checksumValid() && isPduWithoutCrc(m_bytes)) {
+            text = tr("Unit %1 and a whole %2 request, but no CRC: use \u201CAppend CRC only\u201D in the %3 menu, "
+                      "or send it as it is.")
+                       .arg(quint8(m_bytes.at(0)))
+                       .arg(QLatin1String(functionName(quint8(m_bytes.at(1)))), completionName(m_framing));
         } else if (parts.checksumValid()) {
             text = tr("%1 frame: unit %2, %3, %4 correct.").arg(framingName(m_framing).toUpper()).arg(parts.unitId).arg(what, sum);
         } else {

@@ -206,7 +206,7 @@ void RequestComposer::updateActions()
     else if (m_polling)
         m_sendHint->setText(tr("Polling\u2026"));
     else
-        m_sendHint->setText(tr("%n byte(s) ready.", nullptr, int(bytes().size())));
+        m_sendHint->setText(bytes().size() == 1 ? tr("1 byte ready.") : tr("%1 bytes ready.").arg(bytes().size()));
 }
 
 void RequestComposer::send()

@@ -37,6 +37,7 @@ TransactionView::TransactionView(QWidget *parent)
     m_summary->setWordWrap(true);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_summary->setTextFormat(Qt::RichText);
+    m_summary->setContentsMargins(6, 4, 6, 0);
     m_decode->setObjectName(QStringLiteral("answerDecodePanel"));
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

@@ -158,7 +158,7 @@ void TestRawRequestEditor::appendCrcOnly()
     RawRequestEditor editor;
     editor.setFraming(Framing::Rtu);
     editor.setText(QStringLiteral("01 03 00 79 00 16"));
-    QVERIFY2(editor.infoText().contains(QLatin1String("Not a whole RTU frame")), qPrintable(editor.infoText()));
+    QVERIFY2(editor.infoText().contains(QLatin1String("but no CRC")), qPrintable(editor.infoText()));
     QVERIFY(editor.addChecksum());
     QCOMPARE(editor.text(), QStringLiteral("01 03 00 79 00 16 15 DD"));
 }

@@ -244,6 +244,8 @@ void TestRequestForm::addressNotations()
     QVERIFY2(form.addressField()->baseText().contains(QLatin1String("PDU address 121")), qPrintable(form.addressField()->baseText()));
     QVERIFY(form.addressField()->baseText().contains(QLatin1String("register number 122")));
     // Switching notation keeps the address and rewrites the text.
+    form.addressField()->setNotation(AddressField::Notation::Decimal);
+    QCOMPARE(form.addressField()->text(), QStringLiteral("121"));
     form.addressField()->setNotation(AddressField::Notation::Hex);
     QCOMPARE(form.addressField()->text(), QStringLiteral("0x0079"));
     form.addressField()->setNotation(AddressField::Notation::Modicon);
