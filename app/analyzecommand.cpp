@@ -21,8 +21,8 @@ int runAnalyze(const QStringList &arguments)
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
         "Reads a capture offline and analyses its Modbus traffic without any device: a pcap or pcapng file (Wireshark, "
-        "tcpdump, dumpcap, mbscope export --pcap) with Modbus TCP, Modbus UDP or RTU over TCP, or an mbscope traffic "
-        "journal. Requests are paired with their answers (the transaction id for MBAP; order, unit and function for RTU), "
+        "tcpdump, dumpcap, mbscope export --pcap) with Modbus TCP, Modbus UDP or RTU over TCP, an mbscope traffic "
+        "journal, or a session document (its captured traffic). Requests are paired with their answers (the transaction id for MBAP; order, unit and function for RTU), "
         "every frame is decoded, and the statistics are those poll prints: counts by outcome, latency percentiles, "
         "histogram. Latency is the capture time of the answer's last packet minus the request's.\n"
         "Example: mbscope analyze bench.pcapng --rtu-port 4001 --histogram latency.svg\n"
@@ -40,7 +40,7 @@ int runAnalyze(const QStringList &arguments)
     const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the statistics as JSON (poll --json's shape, "
                                                                             "with \"source\", \"conversations\" and \"functions\")."));
     parser.addOptions({histogramOpt, timeSeriesOpt, jsonOpt});
-    parser.addPositionalArgument(QStringLiteral("capture"), QStringLiteral("A .pcap, .pcapng or traffic journal file."));
+    parser.addPositionalArgument(QStringLiteral("capture"), QStringLiteral("A .pcap, .pcapng or traffic journal file, or a session document with a capture."));
     if (!parser.parse(arguments)) {
         err << "mbscope analyze: " << parser.errorText() << '\n';
         return ExitUsage;

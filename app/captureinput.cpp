@@ -2,7 +2,11 @@
 
 #include "durations.h"
 
+#include "session/capturerecovery.h"
+#include "session/sessionreader.h"
+
 #include <QtCore/QCommandLineParser>
+#include <QtCore/QFile>
 #include <QtCore/QFileInfo>
 
 namespace mbscope::app {
@@ -77,7 +81,32 @@ bool CaptureInput::resolve(const QString &source, QString *path, QString *error)
         *error = QStringLiteral("%1: a directory, not a capture or journal").arg(source);
         return false;
     }
-    *path = source;
+    // A session document (JSON, "{" first) stands for the traffic journal it names.
+    QByteArray first;
+    {
+        QFile file(source);
+        if (file.open(QIODevice::ReadOnly))
+            first = file.read(64).trimmed();
+    }
+    if (!first.startsWith('{')) {
+        *path = source;
+        return true;
+    }
+    const SessionLoadResult loaded = SessionReader::load(source);
+    if (!loaded.ok()) {
+        *error = QStringLiteral("%1: not a session document mbscope can read:\n%2").arg(source, loaded.errorText());
+        return false;
+    }
+    const QString journal = CaptureRecovery::journalPath(*loaded.document, source);
+    if (journal.isEmpty()) {
+        *error = QStringLiteral("%1: the session holds no captured traffic (no \"capture\" naming a journal)").arg(source);
+        return false;
+    }
+    if (!QFileInfo::exists(journal)) {
+        *error = QStringLiteral("%1: the session's journal %2 does not exist").arg(source, journal);
+        return false;
+    }
+    *path = journal;
     return true;
 }
 

@@ -22,7 +22,8 @@ public:
     [[nodiscard]] bool read(const QCommandLineParser &parser, CaptureOptions *options, QString *error) const;
 
     // The file to read for a source given on the command line: the file itself (a pcap, a
-    // pcapng or a traffic journal). False with *error when it does not exist.
+    // pcapng or a traffic journal), or for a session document the journal its "capture" names.
+    // False with *error when there is none (no such file, a session without a capture...).
     [[nodiscard]] static bool resolve(const QString &source, QString *path, QString *error);
 
 private:

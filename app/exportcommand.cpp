@@ -64,7 +64,8 @@ int runExport(const QStringList &arguments)
     QTextStream err(stderr);
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
-        "Writes the transactions of a capture (pcap, pcapng) or an mbscope traffic journal out again:\n"
+        "Writes the transactions of a capture (pcap, pcapng), an mbscope traffic journal or a session document's "
+        "captured traffic out again:\n"
         "  --csv: one row per transaction: times, unit, function, address, quantity, values, latency, status, bytes;\n"
         "  --jsonl: the same as one JSON object per line;\n"
         "  --pcap: packets Wireshark and tshark decode as Modbus (pcapng, or classic pcap for a name ending in .pcap), "
@@ -88,7 +89,7 @@ int runExport(const QStringList &arguments)
     const QCommandLineOption timeSeriesOpt(QStringLiteral("timeseries"), QStringLiteral("Draw latency over time: .png, .svg or .pdf."),
                                            QStringLiteral("file"));
     parser.addOptions({csvOpt, jsonlOpt, pcapOpt, histogramOpt, timeSeriesOpt});
-    parser.addPositionalArgument(QStringLiteral("source"), QStringLiteral("A .pcap, .pcapng or traffic journal file."));
+    parser.addPositionalArgument(QStringLiteral("source"), QStringLiteral("A .pcap, .pcapng or traffic journal file, or a session document with a capture."));
     if (!parser.parse(arguments)) {
         err << "mbscope export: " << parser.errorText() << '\n';
         return ExitUsage;

@@ -287,6 +287,25 @@ void TestCliCapture::exportJournal()
     const CliResult analysed = runMbscope({QStringLiteral("analyze"), journal, QStringLiteral("--json")});
     QCOMPARE(analysed.json().value(QStringLiteral("source")).toObject().value(QStringLiteral("format")).toString(), QStringLiteral("journal"));
     QCOMPARE(analysed.json().value(QStringLiteral("timeouts")).toInt(), 1);
+
+    // A session document stands for the journal its "capture" names (beside it).
+    const QString session = m_dir.filePath(QStringLiteral("poll.mbscope.json"));
+    QFile doc(session);
+    QVERIFY(doc.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    doc.write(R"({"format": "mbscope-session", "version": 1, "capture": {"journal": "poll.mbscope.journal"}})");
+    doc.close();
+    const CliResult viaSession = runMbscope({QStringLiteral("analyze"), session, QStringLiteral("--json")});
+    QVERIFY2(viaSession.finished && viaSession.exitCode == 1, viaSession.describe().constData());
+    QCOMPARE(viaSession.json().value(QStringLiteral("ok")).toInt(), 1);
+    QCOMPARE(viaSession.json().value(QStringLiteral("timeouts")).toInt(), 1);
+    const QString bare = m_dir.filePath(QStringLiteral("bare.mbscope.json"));
+    QFile bareDoc(bare);
+    QVERIFY(bareDoc.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    bareDoc.write(R"({"format": "mbscope-session", "version": 1})");
+    bareDoc.close();
+    const CliResult noCapture = runMbscope({QStringLiteral("export"), bare, QStringLiteral("--csv"), QStringLiteral("-")});
+    QVERIFY2(noCapture.finished && noCapture.exitCode == 2, noCapture.describe().constData());
+    QVERIFY2(noCapture.errText().contains(QStringLiteral("the session holds no captured traffic")), noCapture.describe().constData());
 }
 
 void TestCliCapture::plots_data()
