@@ -67,6 +67,7 @@ private slots:
     void iconsHaveTheirSize_data();
     void iconsHaveTheirSize();
     void manPageIsTheSource();
+    void changelogNamesTheVersion();
     void installedBinaryRuns_data();
     void installedBinaryRuns();
     void installedBinaryNamesNoBuildTree();
@@ -161,6 +162,7 @@ void TestPackage::containsFile_data()
         QStringLiteral("usr/share/icons/hicolor/scalable/apps/mbscope.svg"),
         QStringLiteral("usr/share/man/man1/mbscope.1.gz"),
         QStringLiteral("usr/share/doc/mbscope/copyright"),
+        QStringLiteral("usr/share/doc/mbscope/changelog.gz"),
         QStringLiteral("usr/share/mbscope/profiles/rosrao-gamma.json"),
     };
     for (const QString &path : paths)
@@ -222,6 +224,16 @@ void TestPackage::manPageIsTheSource()
     const ProcessRun gunzip = runProcess(QStringLiteral("gzip"), {QStringLiteral("-dc"), rootPath(QStringLiteral("usr/share/man/man1/mbscope.1.gz"))});
     QVERIFY2(gunzip.succeeded(), gunzip.describe().constData());
     QVERIFY(gunzip.out == readAll(kSourceDir + QStringLiteral("/docs/mbscope.1")));
+}
+
+// Debian reads the package's version history from the changelog's first line.
+void TestPackage::changelogNamesTheVersion()
+{
+    const ProcessRun gunzip = runProcess(QStringLiteral("gzip"), {QStringLiteral("-dc"), rootPath(QStringLiteral("usr/share/doc/mbscope/changelog.gz"))});
+    QVERIFY2(gunzip.succeeded(), gunzip.describe().constData());
+    const QString first = gunzip.outText().section(QLatin1Char('\n'), 0, 0);
+    QVERIFY2(first.startsWith(QStringLiteral("mbscope (" MBSCOPE_VERSION ") ")),
+             qPrintable(QStringLiteral("packaging/changelog starts '%1', not with version " MBSCOPE_VERSION).arg(first)));
 }
 
 void TestPackage::installedBinaryRuns_data()
