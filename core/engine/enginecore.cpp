@@ -6,6 +6,9 @@
 #include "transport/monotonicclock.h"
 #include "transport/seriallink.h"
 
+#include <QtCore/QVarLengthArray>
+
+#include <algorithm>
 #include <utility>
 
 namespace mbscope {
@@ -152,6 +155,11 @@ void EngineCore::pump()
         return;
     }
     m_pumping = true;
+    // A pipelined stream link gets the requests of one turn in one write: one system call and one
+    // segment for all of them, and a server that reads what has come answers them together.
+    // Datagram links carry one request per datagram.
+    const int depth = pipelineDepth();
+    const bool together = depth > 1 && !m_framing.datagram;
     while (!m_queue.isEmpty()) {
         if (!m_link || m_link->state() != Link::State::Open) {
             ensureLink();
@@ -159,12 +167,15 @@ void EngineCore::pump()
         }
         if (!m_inFlight.isEmpty()) {
             // A broadcast occupies the line alone until its turnaround has passed.
-            if (m_inFlight.size() >= pipelineDepth() || m_inFlight.constFirst().out.item.broadcast
+            if (m_inFlight.size() >= depth || m_inFlight.constFirst().out.item.broadcast
                 || m_queue.constFirst().item.broadcast)
                 break;
         }
-        sendNext();
+        stageNext();
+        if (!together)
+            writeStaged();
     }
+    writeStaged();
     m_pumping = false;
 }
 
@@ -176,7 +187,7 @@ void EngineCore::resetFramer()
     m_stamps.clear();
 }
 
-void EngineCore::sendNext()
+void EngineCore::stageNext()
 {
     Pending p;
     p.out = m_queue.takeFirst();
@@ -200,25 +211,45 @@ void EngineCore::sendNext()
     }
     p.writeStartNs = monotonicNowNs();
     p.deadlineNs = p.writeStartNs + waitNs(p.out.item);
-    const quint64 id = p.out.id;
-    const int attempt = p.out.attempt;
-    const QByteArray bytes = p.sent;
-    m_inFlight.append(std::move(p));
     ++m_counters.requestsSent;
-    m_counters.bytesOut += quint64(bytes.size());
-    logOutgoing(bytes, m_inFlight.constLast().writeStartNs, id);
-    // bytesWritten() comes once per write, in order, possibly before write() returns.
-    m_writeOrder.append(WriteMark{id, attempt});
+    m_counters.bytesOut += quint64(p.sent.size());
+    logOutgoing(p.sent, p.writeStartNs, p.out.id);
+    // bytesWritten() comes once per write, in order, possibly before write() returns; it times
+    // every request of that write.
+    m_writeOrder.append(WriteMark{p.out.id, p.out.attempt, false});
+    if (m_stagedCount++ == 0)
+        m_staged = p.sent; // shared, not copied: a single request is written as it is
+    else
+        m_staged.append(p.sent);
+    m_inFlight.append(std::move(p));
+}
+
+void EngineCore::writeStaged()
+{
+    if (m_stagedCount == 0)
+        return;
+    // The staged requests are the last entries of the write order (nothing ran since staging).
+    QVarLengthArray<WriteMark, 16> staged;
+    for (qsizetype i = m_writeOrder.size() - m_stagedCount; i < m_writeOrder.size(); ++i)
+        staged.append(m_writeOrder.at(i));
+    m_writeOrder.last().endsWrite = true;
+    m_stagedCount = 0;
+    const QByteArray bytes = std::exchange(m_staged, {});
     if (!m_link->write(bytes)) {
-        if (!m_writeOrder.isEmpty() && m_writeOrder.constLast().id == id && m_writeOrder.constLast().attempt == attempt)
-            m_writeOrder.removeLast();
-        const qsizetype i = indexOfId(id);
-        if (i >= 0)
-            finish(i, TransactionStatus::LinkError, QStringLiteral("%1: the link did not take the request").arg(m_url.toString()));
+        m_writeOrder.removeIf([&staged](const WriteMark &m) {
+            return std::any_of(staged.cbegin(), staged.cend(),
+                               [&m](const WriteMark &s) { return s.id == m.id && s.attempt == m.attempt; });
+        });
+        for (const WriteMark &mark : staged) {
+            const qsizetype i = indexOfId(mark.id);
+            if (i >= 0 && m_inFlight.at(i).out.attempt == mark.attempt)
+                finish(i, TransactionStatus::LinkError, QStringLiteral("%1: the link did not take the request").arg(m_url.toString()));
+        }
     } else if (const auto *serial = qobject_cast<const SerialLink *>(m_link)) {
         // A serial link knows when the last byte will have left the line before it says so
-        // (it signals once that time has come), and a fast answer may come first.
-        const qsizetype i = indexOfId(id);
+        // (it signals once that time has come), and a fast answer may come first. (Serial links
+        // carry one request per write.)
+        const qsizetype i = indexOfId(staged.last().id);
         if (i >= 0 && m_inFlight.at(i).sentNs == 0 && serial->lineFreeNs() >= m_inFlight.at(i).writeStartNs) {
             m_inFlight[i].predictedSentNs = serial->lineFreeNs();
             m_inFlight[i].deadlineNs = serial->lineFreeNs() + waitNs(m_inFlight.at(i).out.item);
@@ -240,30 +271,38 @@ qint64 EngineCore::waitNs(const RequestItem &item) const
 
 void EngineCore::onBytesWritten(qint64 lastByteNs)
 {
-    if (m_writeOrder.isEmpty())
-        return;
-    const WriteMark mark = m_writeOrder.takeFirst();
-    const qsizetype i = indexOfId(mark.id);
-    // The request may have ended already (an answer that came before the link said the bytes
-    // had left: the answer's time then bounds the send time, see finish()).
-    if (i < 0 || m_inFlight.at(i).out.attempt != mark.attempt || m_inFlight.at(i).sentNs != 0)
-        return;
-    Pending &p = m_inFlight[i];
-    p.sentNs = lastByteNs;
-    // Timeouts (and a broadcast's turnaround) run from the moment the request left.
-    p.deadlineNs = lastByteNs + waitNs(p.out.item);
+    while (!m_writeOrder.isEmpty()) {
+        const WriteMark mark = m_writeOrder.takeFirst();
+        const qsizetype i = indexOfId(mark.id);
+        // The request may have ended already (an answer that came before the link said the bytes
+        // had left: the answer's time then bounds the send time, see finish()).
+        if (i >= 0 && m_inFlight.at(i).out.attempt == mark.attempt && m_inFlight.at(i).sentNs == 0) {
+            Pending &p = m_inFlight[i];
+            p.sentNs = lastByteNs;
+            // Timeouts (and a broadcast's turnaround) run from the moment the request left.
+            p.deadlineNs = lastByteNs + waitNs(p.out.item);
+        }
+        if (mark.endsWrite)
+            break;
+    }
     armDeadline();
 }
 
 void EngineCore::armDeadline()
 {
-    if (m_inFlight.isEmpty()) {
-        m_deadlineTimer.stop();
+    // Restarting a QTimer unregisters and registers it with the event dispatcher, which per
+    // request was a large share of the engine's work. The timer is armed only when it would fire
+    // too late (or not at all); one that fires early, because the request it was armed for was
+    // answered, finds nothing due and arms itself for the next deadline. With nothing in flight
+    // it is left to fire once for nothing.
+    if (m_inFlight.isEmpty())
         return;
-    }
     qint64 earliest = m_inFlight.constFirst().deadlineNs;
     for (const Pending &p : m_inFlight)
         earliest = qMin(earliest, p.deadlineNs);
+    if (m_deadlineTimer.isActive() && m_deadlineArmedNs <= earliest)
+        return;
+    m_deadlineArmedNs = earliest;
     m_deadlineTimer.start(msUntil(earliest, monotonicNowNs()));
 }
 

@@ -112,7 +112,10 @@ private:
     // enginecore.cpp: sending, timers, records
     void pump();
     void schedulePump();
-    void sendNext();
+    // Takes the head of the queue in flight, logs it and adds its bytes to the next write.
+    void stageNext();
+    // Writes what stageNext() gathered in one write.
+    void writeStaged();
     void armDeadline();
     void onBytesWritten(qint64 lastByteNs);
     void onDeadline();
@@ -162,14 +165,18 @@ private:
     struct WriteMark {
         quint64 id = 0;
         int attempt = 0;
+        bool endsWrite = true; // the last request of its write (a pipelined write carries several)
     };
-    QList<WriteMark> m_writeOrder; // writes whose bytesWritten() has not come yet, in order
+    QList<WriteMark> m_writeOrder; // requests whose write's bytesWritten() has not come yet, in order
+    QByteArray m_staged;           // requests staged for the next write
+    qsizetype m_stagedCount = 0;
     QList<Pending> m_timedOut;   // newest last, at most lateWindow
     QList<RequestItem> m_answered; // recently answered requests, for second answers
     quint16 m_nextTransactionId = 1;
     std::atomic<quint64> m_nextId{0};
 
     QTimer m_deadlineTimer;
+    qint64 m_deadlineArmedNs = 0; // the deadline m_deadlineTimer fires for, while it is active
     QTimer m_silenceTimer;
     QTimer m_openTimer;
     QTimer m_batchTimer;

@@ -71,7 +71,8 @@ public:
     virtual void close() = 0;
     // Writes the bytes exactly as given. Returns false (and emits errorOccurred) when the link
     // cannot take them. bytesWritten(tNs) follows once per write, in order, once the last byte has
-    // left for the wire as far as the operating system lets us know (TCP and TLS: accepted by the
+    // left for the wire as far as the operating system lets us know (TCP: the clock read just
+    // before the send() that handed the kernel the last byte, see TcpLink; TLS: accepted by the
     // kernel; UDP: sent; serial: drained, see SerialLink). It may be emitted before write() returns.
     virtual bool write(const QByteArray &bytes) = 0;
 

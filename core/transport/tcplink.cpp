@@ -5,6 +5,9 @@
 #include <QtNetwork/QHostAddress>
 #include <QtNetwork/QTcpSocket>
 
+#include <cerrno>
+#include <sys/socket.h>
+
 namespace mbscope {
 
 TcpLink::TcpLink(const LinkUrl &url, QObject *parent)
@@ -115,8 +118,28 @@ bool TcpLink::write(const QByteArray &bytes)
                     QStringLiteral("cannot write %1 bytes: the link is not open").arg(bytes.size()));
         return false;
     }
-    const qint64 written = m_socket->write(bytes);
-    if (written != bytes.size()) {
+    QByteArrayView rest(bytes);
+    if (writesToDescriptor() && m_marks.isEmpty() && m_socket->bytesToWrite() == 0) {
+        // The request's time is the clock read just before the send() that hands its last byte to
+        // the kernel: the kernel puts the segment on the wire (loopback: through the capture
+        // point) inside that call, and the call's return can come much later (on one core the
+        // server may run, and even answer, before the client is scheduled again).
+        const qint64 sentNs = monotonicNowNs();
+        const qint64 sent = sendNow(rest);
+        if (sent == rest.size()) {
+            m_submitted += sent;
+            emit bytesWritten(sentNs);
+            return true;
+        }
+        // Partly taken (the kernel's buffer is full) or refused: Qt's buffer and error handling
+        // take the rest, and the write is reported once it has left.
+        if (sent > 0) {
+            m_submitted += sent;
+            rest = rest.sliced(sent);
+        }
+    }
+    const qint64 written = m_socket->write(rest.data(), rest.size());
+    if (written != rest.size()) {
         reportError(LinkError::Kind::Io, QStringLiteral("writing %1 bytes to %2 failed (%3)")
                                              .arg(bytes.size())
                                              .arg(where(), osAnswer(m_socket->errorString())));
@@ -133,6 +156,21 @@ bool TcpLink::write(const QByteArray &bytes)
         return false; // the flush met an error, already reported
     reportWritten();
     return true;
+}
+
+qint64 TcpLink::sendNow(QByteArrayView bytes)
+{
+    const int fd = int(m_socket->socketDescriptor());
+    if (fd < 0)
+        return 0;
+    for (;;) {
+        // MSG_NOSIGNAL: a closed peer is an error to report, not a SIGPIPE.
+        const ssize_t n = ::send(fd, bytes.data(), size_t(bytes.size()), MSG_NOSIGNAL | MSG_DONTWAIT);
+        if (n >= 0)
+            return qint64(n);
+        if (errno != EINTR)
+            return 0;
+    }
 }
 
 qint64 TcpLink::acceptedBytes() const
@@ -156,10 +194,22 @@ void TcpLink::onReadyRead()
 {
     if (!m_socket)
         return;
+    // Qt has just read the socket into its buffer and signalled: the clock first, then the bytes.
     const qint64 now = monotonicNowNs();
-    const QByteArray bytes = m_socket->readAll();
-    if (!bytes.isEmpty())
-        emit bytesReceived(bytes, now, now);
+    const qint64 available = m_socket->bytesAvailable();
+    if (available <= 0)
+        return;
+    // One buffer for every read: no allocation per answer unless a receiver keeps the bytes (then
+    // the next read detaches it).
+    m_readBuffer.resize(available);
+    const qint64 n = m_socket->read(m_readBuffer.data(), available);
+    if (n <= 0)
+        return;
+    m_readBuffer.resize(n);
+    // Shared while the receivers run, so a read nested in them (an error handler's) detaches
+    // instead of changing these bytes under them.
+    const QByteArray bytes = m_readBuffer;
+    emit bytesReceived(bytes, now, now);
 }
 
 QString TcpLink::where() const

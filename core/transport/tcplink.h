@@ -14,8 +14,10 @@ namespace mbscope {
 
 // A TCP stream: tcp://, rtu-tcp://, ascii-tcp:// (and the base of tls://). Nagle's algorithm is
 // off (TCP_NODELAY), so that a request leaves at once instead of waiting for more bytes.
-// Written bytes are flushed to the kernel inside write(); bytesWritten(t) comes when the kernel has
-// accepted the last byte of that write (TCP gives no later moment to an application).
+// A request is handed to the kernel inside write() by one send() on the socket's descriptor, and
+// bytesWritten(t) carries the clock read just before that call (the segment leaves within it);
+// should the kernel take only part, Qt's buffer sends the rest and bytesWritten(t) comes when the
+// kernel has accepted the last byte (TCP gives no later moment to an application).
 // A new socket is made at each open(), so that nothing of a lost connection leaks into the next.
 class TcpLink : public Link
 {
@@ -40,6 +42,9 @@ protected:
     virtual void startConnecting();
     // Called once TCP is connected; the link is open at once, or later (TLS: after the handshake).
     virtual void onTcpConnected();
+    // Plain TCP writes a request with one send() on the descriptor, timed just before it; TLS
+    // (whose bytes must go through the TLS layer) says false.
+    [[nodiscard]] virtual bool writesToDescriptor() const { return true; }
     // Bytes of the writes so far that the kernel has accepted.
     [[nodiscard]] virtual qint64 acceptedBytes() const;
     // What a socket error means, while opening (opening = true) or once open.
@@ -56,6 +61,9 @@ private:
     void startOpen();
     void teardown();
     void fail(const Failure &failure);
+    // One non-blocking send() of as much as the kernel takes now; 0 when it takes nothing or fails
+    // (Qt's write path then reports the failure).
+    [[nodiscard]] qint64 sendNow(QByteArrayView bytes);
     void onReadyRead();
     void onSocketError(QAbstractSocket::SocketError error);
     void onDisconnected();
@@ -66,6 +74,7 @@ private:
     QList<qint64> m_marks;  // m_submitted at the end of each write not yet reported
     qint64 m_submitted = 0; // bytes given to the socket since open()
     bool m_inWrite = false;
+    QByteArray m_readBuffer; // the bytes of the latest read, reused
 };
 
 } // namespace mbscope

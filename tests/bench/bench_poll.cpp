@@ -7,20 +7,32 @@
 //   - mbscope's engine with N = 4 and 8 requests in flight (Messaging on TCP/IP V1.0b, 4.2).
 // Each prints transactions/s and latency percentiles; nothing is asserted (figures, not tests).
 // Latency is each client's own: the raw loop and libmodbus time from before send() to after the
-// last recv(); the engine's is its record's doneNs - sentNs (from the link's report that the
-// request was written to the read of the last answer byte), which leaves out the send call
-// itself (tests/integration/tst_latency_truth compares it with the wire).
+// last recv(); the engine's is its record's doneNs - sentNs (from the clock read just before the
+// send() of the request to the read of the last answer byte; tests/integration/tst_latency_truth
+// compares it with the wire).
 // Targets from the issue: sequential at least 90 % of libmodbus's transactions/s while logging
 // every frame; pipelined several times libmodbus.
 //
+// Two servers, one table each (every row of a table against the same server process):
+//   - "libmodbus_server tcp": libmodbus's modbus_receive/modbus_reply loop, which reads one
+//     request per turn of its select() loop and sends each answer by itself. Pipelined requests
+//     are answered one by one, so pipelining gains little over it (on one core each answer wakes
+//     the client, which sends one more request, which wakes the server: the exchange stays one
+//     at a time).
+//   - "libmodbus_server tcp --batch": the same modbus_reply, but every whole request of a read is
+//     answered and the answers leave corked together in one segment, as a gateway or PLC that
+//     queues requests does. The pipelined figures (and the "vs lmb" column, against libmodbus's
+//     client on this server) are the throughput the issue asks about.
+//
 // Pinning: the process pins itself with sched_setaffinity() to one CPU (--cpu, default 1) before
-// it starts any thread or the server, so the server (a child: affinity is inherited across fork
-// and exec), the engine's thread and every client share that one core. On this two-core machine
+// it starts any thread or server, so the servers (children: affinity is inherited across fork and
+// exec), the engine's thread and every client share that one core. On this two-core machine
 // unpinned figures are bimodal (client and server on one core or on two, as the scheduler
 // pleases); on one core every client pays the same context switches, so the rows compare.
 // --no-pin leaves placement to the scheduler.
 //
 //   bench_poll [--count N] [--warmup N] [--quantity Q] [--cpu C | --no-pin] [--pipeline 4,8]
+//              [--server one|batch|both]
 //
 // scripts/bench-poll.sh builds a Release tree and runs it.
 #include "enginepoll.h"
@@ -46,6 +58,8 @@ struct Options {
     int cpu = 1;
     bool pin = true;
     QList<int> pipelines{4, 8};
+    bool oneByOne = true; // libmodbus_server tcp
+    bool batch = true;    // libmodbus_server tcp --batch
 };
 
 bool parse(const QStringList &args, Options *o)
@@ -66,7 +80,11 @@ bool parse(const QStringList &args, Options *o)
             o->plan.warmup = v.toLongLong(&ok);
         else if (a == QLatin1String("--quantity"))
             o->plan.quantity = v.toInt(&ok);
-        else if (a == QLatin1String("--cpu"))
+        else if (a == QLatin1String("--server")) {
+            ok = v == QLatin1String("one") || v == QLatin1String("batch") || v == QLatin1String("both");
+            o->oneByOne = v != QLatin1String("batch");
+            o->batch = v != QLatin1String("one");
+        } else if (a == QLatin1String("--cpu"))
             o->cpu = v.toInt(&ok);
         else if (a == QLatin1String("--pipeline")) {
             o->pipelines.clear();
@@ -100,6 +118,52 @@ void printRow(PollFigures &f, double libmodbusRate)
     std::fflush(stdout);
 }
 
+// One table: a server started with serverArgs, every client against it. Returns false when a
+// baseline or the sequential engine had errors (or the server did not start).
+bool runTable(const Options &options, const QStringList &serverArgs, const char *serverNote, bool unloggedRow)
+{
+    testpeers::PeerProcess server;
+    if (!server.start(testpeers::libmodbusServerPath(), serverArgs)) {
+        std::fprintf(stderr, "bench_poll: %s\n", qPrintable(server.error()));
+        return false;
+    }
+    PollPlan plan = options.plan;
+    plan.port = server.port();
+
+    std::printf("\nserver: libmodbus_server %s on %s (%s); Read Holding Registers x %d; %lld transactions per "
+                "client after %lld warm-up; %s\n",
+                qPrintable(serverArgs.join(QLatin1Char(' '))), qPrintable(server.where()), serverNote, plan.quantity,
+                plan.count, plan.warmup,
+                options.pin ? qPrintable(QStringLiteral("server and clients pinned to CPU %1").arg(options.cpu))
+                            : "unpinned");
+    std::printf("%-34s %10s %8s %8s %8s %9s %7s %9s   %s\n", "client", "tx/s", "p50 us", "p90 us", "p99 us",
+                "max us", "errors", "vs lmb", "note");
+
+    PollFigures raw = pollRawSocket(plan);
+    PollFigures libmodbus = pollLibmodbus(plan);
+    const double baseline = libmodbus.perSecond();
+    printRow(raw, baseline);
+    printRow(libmodbus, baseline);
+
+    EnginePollSettings engine;
+    engine.plan = plan;
+    engine.logTraffic = true;
+    PollFigures sequential = pollEngine(engine);
+    printRow(sequential, baseline);
+    if (unloggedRow) {
+        engine.logTraffic = false; // what logging every frame costs
+        PollFigures unlogged = pollEngine(engine);
+        printRow(unlogged, baseline);
+        engine.logTraffic = true;
+    }
+    for (int depth : options.pipelines) {
+        engine.pipelineDepth = depth;
+        PollFigures pipelined = pollEngine(engine);
+        printRow(pipelined, baseline);
+    }
+    return !raw.errors && !libmodbus.errors && !sequential.errors;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -111,7 +175,7 @@ int main(int argc, char **argv)
             args.append(QString::fromLocal8Bit(argv[i]));
         if (!parse(args, &options)) {
             std::fprintf(stderr, "usage: bench_poll [--count N] [--warmup N] [--quantity Q] [--cpu C | --no-pin] "
-                                 "[--pipeline 4,8]\n");
+                                 "[--pipeline 4,8] [--server one|batch|both]\n");
             return 2;
         }
     }
@@ -133,41 +197,12 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "bench_poll: %s\n", qPrintable(why));
         return 2;
     }
-    testpeers::PeerProcess server;
-    if (!server.start(testpeers::libmodbusServerPath(), {QStringLiteral("tcp")})) {
-        std::fprintf(stderr, "bench_poll: %s\n", qPrintable(server.error()));
-        return 2;
-    }
-    options.plan.port = server.port();
-
-    std::printf("bench_poll: libmodbus_server on %s; Read Holding Registers x %d; %lld transactions per client "
-                "after %lld warm-up; %s\n",
-                qPrintable(server.where()), options.plan.quantity, options.plan.count, options.plan.warmup,
-                options.pin ? qPrintable(QStringLiteral("server and clients pinned to CPU %1").arg(options.cpu))
-                            : "unpinned");
-    std::printf("%-34s %10s %8s %8s %8s %9s %7s %9s   %s\n", "client", "tx/s", "p50 us", "p90 us", "p99 us",
-                "max us", "errors", "vs lmb", "note");
-
-    PollFigures raw = pollRawSocket(options.plan);
-    PollFigures libmodbus = pollLibmodbus(options.plan);
-    const double baseline = libmodbus.perSecond();
-    printRow(raw, baseline);
-    printRow(libmodbus, baseline);
-
-    EnginePollSettings engine;
-    engine.plan = options.plan;
-    engine.logTraffic = true;
-    PollFigures sequential = pollEngine(engine);
-    printRow(sequential, baseline);
-    engine.logTraffic = false; // what logging every frame costs
-    PollFigures unlogged = pollEngine(engine);
-    printRow(unlogged, baseline);
-    engine.logTraffic = true;
-    for (int depth : options.pipelines) {
-        engine.pipelineDepth = depth;
-        PollFigures pipelined = pollEngine(engine);
-        printRow(pipelined, baseline);
-    }
-    const bool failed = raw.errors || libmodbus.errors || sequential.errors;
-    return failed ? 1 : 0;
+    bool ok = true;
+    if (options.oneByOne)
+        ok = runTable(options, {QStringLiteral("tcp")}, "one request per read, each answer sent alone", true) && ok;
+    if (options.batch)
+        ok = runTable(options, {QStringLiteral("tcp"), QStringLiteral("--batch")},
+                      "every whole request of a read answered, answers sent together", false)
+             && ok;
+    return ok ? 0 : 1;
 }

@@ -1,7 +1,7 @@
 /*
  * A libmodbus server for mbscope's integration tests and benchmark.
  *
- *   libmodbus_server tcp [--port N]                      MBAP on 127.0.0.1 (port 0: the system chooses)
+ *   libmodbus_server tcp [--port N] [--batch]            MBAP on 127.0.0.1 (port 0: the system chooses)
  *   libmodbus_server rtu --device PATH [--baud 115200]   RTU on a serial device or pty, 8N1, unit 1
  *
  * Prints "LISTENING 127.0.0.1:PORT" (tcp) or "LISTENING PATH" (rtu) on stdout once ready, serves
@@ -9,7 +9,11 @@
  * other codes answer exception 01), and exits when its standard input closes (the test that started
  * it is gone) or after --lifetime seconds. On TCP it serves any number of connections at once with
  * select(), reads one request at a time per connection (libmodbus reads exactly one MBAP length),
- * so pipelined requests are answered in order. libmodbus's TCP backend answers any unit id; RTU
+ * so pipelined requests are answered in order, one per turn of its loop. With --batch it reads
+ * everything a connection has sent and answers every whole request in it (still with modbus_reply)
+ * under TCP_CORK, so the answers to pipelined requests leave together in one segment, as a
+ * gateway or PLC that queues requests does: the server for pipelined throughput figures.
+ * libmodbus's TCP backend answers any unit id; RTU
  * answers unit 1 and broadcasts (unit 0, no answer). After a request for another unit, libmodbus's
  * RTU backend takes the next frame on the line for that unit's answer and ignores it (right on a
  * multi-drop bus, where the other unit answers).
@@ -45,7 +49,7 @@ static modbus_mapping_t *make_mapping(void)
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: libmodbus_server tcp [--port N] [--lifetime S]\n"
+    fprintf(stderr, "usage: libmodbus_server tcp [--port N] [--batch] [--lifetime S]\n"
                     "       libmodbus_server rtu --device PATH [--baud B] [--lifetime S]\n");
     return 2;
 }
@@ -58,7 +62,53 @@ static int stdin_closed(void)
     return n <= 0;
 }
 
-static int serve_tcp(int port, time_t deadline, modbus_mapping_t *map)
+/* What a --batch connection has sent that does not make a whole request yet. */
+struct pending_bytes {
+    size_t size;
+    uint8_t data[4 * MODBUS_TCP_MAX_ADU_LENGTH];
+};
+
+/* --batch: reads what the connection has sent and answers every whole MBAP request in it. More
+ * than one answer is corked (TCP_CORK) so they leave in one segment when uncorked. Returns -1 when
+ * the connection is finished (closed, failed, or sent something that is not MBAP). */
+static int answer_all(modbus_t *ctx, int fd, modbus_mapping_t *map, struct pending_bytes *p)
+{
+    const ssize_t n = recv(fd, p->data + p->size, sizeof p->data - p->size, 0);
+    if (n < 0 && errno == EINTR)
+        return 0;
+    if (n <= 0)
+        return -1;
+    p->size += (size_t)n;
+    size_t whole = 0;
+    int requests = 0;
+    while (p->size - whole >= 7) {
+        const uint8_t *h = p->data + whole;
+        const size_t length = (size_t)h[4] << 8 | h[5];
+        /* Messaging on TCP/IP V1.0b, 3.1.3: protocol id 0, length of unit id + PDU. */
+        if (h[2] != 0 || h[3] != 0 || length < 2 || length > MODBUS_TCP_MAX_ADU_LENGTH - 6)
+            return -1;
+        if (p->size - whole < 6 + length)
+            break;
+        whole += 6 + length;
+        ++requests;
+    }
+    const int one = 1, zero = 0;
+    if (requests > 1)
+        setsockopt(fd, IPPROTO_TCP, TCP_CORK, &one, sizeof one);
+    modbus_set_socket(ctx, fd);
+    for (size_t at = 0; at < whole;) {
+        const int length = 6 + (p->data[at + 4] << 8 | p->data[at + 5]);
+        modbus_reply(ctx, p->data + at, length, map);
+        at += (size_t)length;
+    }
+    if (requests > 1)
+        setsockopt(fd, IPPROTO_TCP, TCP_CORK, &zero, sizeof zero);
+    memmove(p->data, p->data + whole, p->size - whole);
+    p->size -= whole;
+    return 0;
+}
+
+static int serve_tcp(int port, int batch, time_t deadline, modbus_mapping_t *map)
 {
     modbus_t *ctx = modbus_new_tcp("127.0.0.1", port);
     if (ctx == NULL) {
@@ -86,6 +136,7 @@ static int serve_tcp(int port, time_t deadline, modbus_mapping_t *map)
     FD_SET(STDIN_FILENO, &all);
     int maxfd = listener > STDIN_FILENO ? listener : STDIN_FILENO;
     uint8_t query[MODBUS_TCP_MAX_ADU_LENGTH];
+    static struct pending_bytes *pending[FD_SETSIZE];
 
     while (time(NULL) < deadline) {
         fd_set ready = all;
@@ -110,10 +161,21 @@ static int serve_tcp(int port, time_t deadline, modbus_mapping_t *map)
                     const int one = 1;
                     setsockopt(client, IPPROTO_TCP, TCP_NODELAY, &one, sizeof one);
                     FD_SET(client, &all);
+                    if (batch)
+                        pending[client] = calloc(1, sizeof(struct pending_bytes));
                     if (client > maxfd)
                         maxfd = client;
                 } else if (client >= 0) {
                     close(client);
+                }
+                continue;
+            }
+            if (batch) {
+                if (pending[fd] == NULL || answer_all(ctx, fd, map, pending[fd]) < 0) {
+                    free(pending[fd]);
+                    pending[fd] = NULL;
+                    close(fd);
+                    FD_CLR(fd, &all);
                 }
                 continue;
             }
@@ -190,7 +252,12 @@ int main(int argc, char **argv)
     int port = 0;
     int baud = 115200;
     double lifetime = 900.0;
+    int batch = 0;
     for (int i = 2; i < argc; ++i) {
+        if (strcmp(argv[i], "--batch") == 0) {
+            batch = 1;
+            continue;
+        }
         if (i + 1 >= argc)
             return usage();
         if (strcmp(argv[i], "--port") == 0)
@@ -212,7 +279,7 @@ int main(int argc, char **argv)
     const time_t deadline = time(NULL) + (time_t)lifetime;
     int rc;
     if (strcmp(mode, "tcp") == 0)
-        rc = serve_tcp(port, deadline, map);
+        rc = serve_tcp(port, batch, deadline, map);
     else if (strcmp(mode, "rtu") == 0 && device != NULL)
         rc = serve_rtu(device, baud, deadline, map);
     else

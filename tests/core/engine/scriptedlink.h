@@ -23,7 +23,9 @@ struct Reply {
     bool close = false; // the peer closes the connection after the bytes (if any)
 };
 
-// index counts the writes the peer has seen on all connections (0 for the first request).
+// index counts the requests the peer has seen on all connections (0 for the first request). A
+// write that carries several whole MBAP requests (a pipelined engine writes the requests of one
+// turn together) is read as a server reads its stream: the script sees one request at a time.
 using PeerScript = std::function<QList<Reply>(const QByteArray &request, int index)>;
 
 // What the peer saw, readable from the test's thread.
@@ -91,7 +93,9 @@ public:
         } else {
             emit bytesWritten(monotonicNowNs());
         }
-        const QList<Reply> replies = m_script(bytes, m_state->writes++);
+        QList<Reply> replies;
+        for (const QByteArray &request : requestsIn(bytes))
+            replies += m_script(request, m_state->writes++);
         for (const Reply &reply : replies) {
             QTimer::singleShot(reply.delayMs, Qt::PreciseTimer, this, [this, generation, reply] {
                 if (generation != m_generation || state() != State::Open)
@@ -110,6 +114,26 @@ public:
     }
 
 private:
+    // The MBAP requests of a write on a tcp:// stream when it is made of whole ones (Messaging on
+    // TCP/IP V1.0b, 3.1.3: the length field counts the bytes after it); the write as it is else.
+    [[nodiscard]] QList<QByteArray> requestsIn(const QByteArray &bytes) const
+    {
+        if (url().framing() != Framing::Tcp || url().isDatagram() || url().delimited.enabled)
+            return {bytes};
+        QList<QByteArray> requests;
+        qsizetype at = 0;
+        while (bytes.size() - at >= 7) {
+            const qsizetype length = 6 + (quint8(bytes.at(at + 4)) << 8 | quint8(bytes.at(at + 5)));
+            if (length > bytes.size() - at)
+                break;
+            requests.append(bytes.mid(at, length));
+            at += length;
+        }
+        if (at != bytes.size() || requests.size() < 2)
+            return {bytes};
+        return requests;
+    }
+
     PeerScript m_script;
     std::shared_ptr<PeerState> m_state;
     int m_generation = 0;

@@ -21,6 +21,8 @@ private slots:
     void modbus();
     void delimited_data();
     void delimited();
+    void registerCheckAgrees_data();
+    void registerCheckAgrees();
 };
 
 void tst_ResponseVerdict::modbus_data()
@@ -133,6 +135,67 @@ void tst_ResponseVerdict::delimited()
     ResponseVerdict verdict(Framing::Tcp, true);
     const ResponseVerdict::Result r = verdict.judge(frames.first(), QByteArray("\x05" "00RSS\x04"));
     QCOMPARE(int(r.status), int(status));
+}
+
+void tst_ResponseVerdict::registerCheckAgrees_data()
+{
+    QTest::addColumn<QString>("framing");
+    QTest::addColumn<QByteArray>("request");
+    QTest::addColumn<QByteArray>("response");
+    auto row = [](const char *framing, const QByteArray &request, const QByteArray &response) {
+        QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(QLatin1String(framing), QString::fromLatin1(request.toHex(' ')))))
+            << QString::fromLatin1(framing) << request << response;
+    };
+    row("tcp", mbap("0300000002", 0x2A2A, 1), mbap("030403e803eb", 0x2A2A, 1));
+    row("tcp", mbap("0400070001", 7, 0), mbap("040201f4", 7, 0));
+    row("udp", mbap("040000000a", 1, 255), mbap(QByteArray("0414" + QByteArray(40, '7')).constData(), 1, 255));
+    // 125 registers, the most one request may ask for, ending at the last address (V1.1b3, 6.3).
+    row("tcp", mbap("03ff83007d", 0xFFFF, 1), mbap(QByteArray("03fa" + QByteArray(500, 'a')).constData(), 0xFFFF, 1));
+}
+
+// The register check says Ok without the dissector; wherever it does, the dissector must agree.
+// Every byte of request and answer is changed in turn (one bit, the top bit, all bits), and the
+// answer is cut and lengthened: each variant the check accepts must be Ok for the dissector too,
+// and the unchanged answer must be accepted (else the check would never be used).
+void tst_ResponseVerdict::registerCheckAgrees()
+{
+    QFETCH(QString, framing);
+    QFETCH(QByteArray, request);
+    QFETCH(QByteArray, response);
+    ResponseVerdict verdict(*framingFromName(framing), false);
+    QVERIFY(verdict.isExpectedRegisterAnswer(response, request));
+    QCOMPARE(int(verdict.judgeByDissection(response, request).status), int(TransactionStatus::Ok));
+
+    int accepted = 0;
+    auto check = [&](const QByteArray &answer, const QByteArray &asked, const QString &what) {
+        if (!verdict.isExpectedRegisterAnswer(answer, asked))
+            return true;
+        ++accepted;
+        const ResponseVerdict::Result full = verdict.judgeByDissection(answer, asked);
+        if (full.status == TransactionStatus::Ok)
+            return true;
+        qWarning("%s: the register check accepts %s for %s; the dissector says %s: %s", qPrintable(what),
+                 answer.toHex(' ').constData(), asked.toHex(' ').constData(), qPrintable(transactionStatusName(full.status)),
+                 qPrintable(full.problem));
+        return false;
+    };
+    for (const char mask : {char(0x01), char(0x80), char(0xFF)}) {
+        for (qsizetype i = 0; i < response.size(); ++i) {
+            QByteArray changed = response;
+            changed[i] = char(changed.at(i) ^ mask);
+            QVERIFY(check(changed, request, QStringLiteral("answer byte %1 ^ %2").arg(i).arg(quint8(mask))));
+        }
+        for (qsizetype i = 0; i < request.size(); ++i) {
+            QByteArray changed = request;
+            changed[i] = char(changed.at(i) ^ mask);
+            QVERIFY(check(response, changed, QStringLiteral("request byte %1 ^ %2").arg(i).arg(quint8(mask))));
+        }
+    }
+    for (qsizetype n = 0; n < response.size(); ++n)
+        QVERIFY(check(response.first(n), request, QStringLiteral("answer cut to %1 bytes").arg(n)));
+    QVERIFY(check(response + '\0', request, QStringLiteral("answer with a byte more")));
+    // Register values are free: changing them keeps the answer accepted.
+    QVERIFY(accepted >= 3 * (response.size() - 9));
 }
 
 QTEST_GUILESS_MAIN(tst_ResponseVerdict)
