@@ -338,6 +338,13 @@ void ConnectionBar::showError(const QString &message)
     m_errorLabel->setVisible(!message.isEmpty());
 }
 
+void ConnectionBar::showLinkFailure(const QString &linkMessage)
+{
+    showError(tr("The link failed: %1. Check that the device is powered and reachable at this address, then send "
+                 "again (the link reopens), or press Disconnect to change the target.")
+                  .arg(linkMessage));
+}
+
 void ConnectionBar::clearError()
 {
     showError({});

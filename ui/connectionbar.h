@@ -44,6 +44,8 @@ public:
     void setConnected(bool connected);
     [[nodiscard]] bool isConnected() const { return m_connected; }
     void showError(const QString &message);
+    // A link that failed after connecting: the link's own words and what the user can do.
+    void showLinkFailure(const QString &linkMessage);
     void clearError();
     [[nodiscard]] QString errorText() const;
 

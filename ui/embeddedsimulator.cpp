@@ -80,6 +80,7 @@ EmbeddedSimulator::Started EmbeddedSimulator::start(const QString &profile, cons
     }
     m_started.ok = true;
     m_started.url = endpoint->boundUrl();
+    m_loaded = loaded.profile;
 
     m_injector = std::move(injector);
     m_simulator = simulator.release();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "sim/deviceprofile.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QObject>
@@ -41,6 +42,8 @@ public:
     [[nodiscard]] bool isRunning() const { return m_simulator != nullptr; }
     [[nodiscard]] const Started &started() const { return m_started; }
     [[nodiscard]] QString profileName() const { return m_profile; }
+    // The profile served (names and scaling for the register table).
+    [[nodiscard]] const DeviceProfile &profile() const { return m_loaded; }
 
 private:
     QThread m_thread;
@@ -50,6 +53,7 @@ private:
     std::unique_ptr<FaultInjector> m_injector;
     Started m_started;
     QString m_profile;
+    DeviceProfile m_loaded;
 };
 
 } // namespace mbscope

@@ -50,7 +50,8 @@ void LinkStatusWidget::setCounters(const EngineCounters &counters)
                             counters.requestsSent == 1 ? tr("1 request")
                                                        : tr("%1 requests").arg(locale.toString(counters.requestsSent)));
     if (counters.linkErrors > 0)
-        text += tr("  \u00B7  %1 link errors").arg(locale.toString(counters.linkErrors));
+        text += counters.linkErrors == 1 ? tr("  \u00B7  1 link error")
+                                         : tr("  \u00B7  %1 link errors").arg(locale.toString(counters.linkErrors));
     m_countersLabel->setText(text);
 }
 

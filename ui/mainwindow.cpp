@@ -6,13 +6,18 @@
 #include "linkstatuswidget.h"
 #include "noticebanner.h"
 #include "rawrequesteditor.h"
+#include "registertable.h"
 #include "requestcomposer.h"
 #include "savedrequests.h"
+#include "trafficmonitor.h"
 #include "transactionview.h"
+
+#include "protocol/adubuilder.h"
 
 #include <QtCore/QCoreApplication>
 #include <QtGui/QAction>
 #include <QtGui/QKeySequence>
+#include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMenuBar>
 #include <QtWidgets/QMessageBox>
 #include <QtWidgets/QPlainTextEdit>
@@ -30,7 +35,9 @@ MainWindow::MainWindow(QWidget *parent)
 {
     setWindowTitle(QStringLiteral("mbscope"));
     buildUi();
+    buildDocks();
     connectPanels();
+    connectDocks();
     createMenus();
     statusBar()->showMessage(tr("Ready"), 3000);
     resize(1400, 900);
@@ -101,7 +108,7 @@ void MainWindow::connectPanels()
         m_composer->setLinkReady(connected);
         m_linkStatus->setState(state, message);
         if (state == LinkController::State::Failed)
-            bar->showError(message);
+            bar->showLinkFailure(message);
         else if (state == LinkController::State::Connected) {
             bar->clearError();
             bar->addRecent(m_controller->url());
@@ -131,6 +138,67 @@ void MainWindow::connectPanels()
     connect(m_composer, &RequestComposer::stopPollRequested, link, &LinkController::stopPoll);
 }
 
+void MainWindow::buildDocks()
+{
+    setDockOptions(dockOptions() | QMainWindow::AllowTabbedDocks);
+    m_traffic = new TrafficMonitor(this);
+    m_traffic->setObjectName(QStringLiteral("trafficMonitor"));
+    m_trafficDock = new QDockWidget(tr("Traffic"), this);
+    m_trafficDock->setObjectName(QStringLiteral("trafficDock"));
+    m_trafficDock->setWidget(m_traffic);
+    addDockWidget(Qt::BottomDockWidgetArea, m_trafficDock);
+
+    m_registers = new RegisterTable(this);
+    m_registers->setObjectName(QStringLiteral("registerTable"));
+    m_registersDock = new QDockWidget(tr("Registers"), this);
+    m_registersDock->setObjectName(QStringLiteral("registersDock"));
+    m_registersDock->setWidget(m_registers);
+    addDockWidget(Qt::BottomDockWidgetArea, m_registersDock);
+    tabifyDockWidget(m_trafficDock, m_registersDock);
+    m_trafficDock->raise();
+    resizeDocks({m_trafficDock}, {260}, Qt::Vertical);
+}
+
+void MainWindow::connectDocks()
+{
+    // Every transaction goes to the traffic list; a row picked there is shown in the Answer tab.
+    connect(m_controller, &LinkController::transactionsFinished, m_traffic, &TrafficMonitor::appendTransactions);
+    connect(m_traffic, &TrafficMonitor::frameSelected, this, [this](const FrameExchange &exchange) {
+        m_tabs->setCurrentWidget(m_answerView);
+        m_answerView->showExchange(exchange);
+    });
+    // Answers to reads (a poll's, a single send's) fill the register table; its edits are sent.
+    connect(m_controller, &LinkController::latestTransaction, this, &MainWindow::showInRegisterTable);
+    connect(m_registers, &RegisterTable::writeRequested, this, &MainWindow::sendWrite);
+}
+
+void MainWindow::showInRegisterTable(const Transaction &transaction)
+{
+    if (!transaction.isOk())
+        return;
+    const Framing framing = m_controller->url().framing();
+    const AduParts request = AduBuilder::parse(transaction.request, framing);
+    // Only reads (01-04, 17) have values to show; a write's answer would replace them with a complaint.
+    const quint8 function = request.pdu.isEmpty() ? 0 : quint8(request.pdu.at(0));
+    if ((function < 0x01 || function > 0x04) && function != 0x17)
+        return;
+    m_registers->showTransaction(transaction, framing);
+}
+
+void MainWindow::sendWrite(const QByteArray &pdu, const QString &description)
+{
+    if (!m_controller->isConnected()) {
+        statusBar()->showMessage(tr("Not sent (%1): connect first").arg(description), 5000);
+        return;
+    }
+    AduOptions options;
+    options.framing = m_controller->url().framing();
+    options.unitId = quint8(m_connectionBar->unitId());
+    options.transactionId = 1;
+    m_controller->send(AduBuilder::complete(pdu, options));
+    statusBar()->showMessage(tr("Sent: %1").arg(description), 5000);
+}
+
 bool MainWindow::startWithSimulator(const QString &url)
 {
     const EmbeddedSimulator::Started started = m_simulator->start(QString::fromLatin1(kFirstRunProfile), url);
@@ -146,6 +214,8 @@ bool MainWindow::startWithSimulator(const QString &url)
     m_composer->showRawTab();
     if (const std::optional<LinkUrl> target = m_connectionBar->url())
         m_controller->connectTo(*target);
+    if (const UnitProfile *unit = m_simulator->profile().unit(1))
+        m_registers->setProfile(*unit, m_simulator->profile().name);
 
     QString notice = tr("<b>Connected to mbscope's built-in simulator</b>, not to a device: a RosRao gamma detector "
                         "(profile <code>%1</code>) answering on <code>%2</code>. Press <b>Send</b> to read its 22 "
@@ -176,6 +246,16 @@ void MainWindow::createMenus()
     focusRaw->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
     QAction *form = request->addAction(tr("Build with the &form"), m_composer, &RequestComposer::showFormTab);
     form->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_trafficDock->toggleViewAction());
+    view->addAction(m_registersDock->toggleViewAction());
+    QAction *find = view->addAction(tr("&Find in traffic"), this, [this] {
+        m_trafficDock->show();
+        m_trafficDock->raise();
+        m_traffic->focusSearch();
+    });
+    find->setShortcut(QKeySequence::Find);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     QAction *about = help->addAction(tr("&About mbscope"), this, &MainWindow::showAbout);

@@ -2,8 +2,11 @@
 
 #include "embeddedsimulator.h"
 
+#include "engine/transaction.h"
+
 #include <QtWidgets/QMainWindow>
 
+class QDockWidget;
 class QSplitter;
 class QTabWidget;
 
@@ -14,7 +17,9 @@ class DecodePanel;
 class LinkController;
 class LinkStatusWidget;
 class NoticeBanner;
+class RegisterTable;
 class RequestComposer;
+class TrafficMonitor;
 class TransactionView;
 
 // The window only assembles: the connection bar, the composer, the answer and decode views, the
@@ -46,10 +51,16 @@ public:
     [[nodiscard]] NoticeBanner *banner() const { return m_banner; }
     [[nodiscard]] EmbeddedSimulator *simulator() const { return m_simulator; }
     [[nodiscard]] QTabWidget *viewTabs() const { return m_tabs; }
+    [[nodiscard]] TrafficMonitor *trafficMonitor() const { return m_traffic; }
+    [[nodiscard]] RegisterTable *registerTable() const { return m_registers; }
 
 private:
     void buildUi();
+    void buildDocks();
     void connectPanels();
+    void connectDocks();
+    void showInRegisterTable(const Transaction &transaction);
+    void sendWrite(const QByteArray &pdu, const QString &description);
     void createMenus();
     void showAbout();
 
@@ -63,6 +74,10 @@ private:
     TransactionView *m_answerView = nullptr;
     DecodePanel *m_decodePanel = nullptr;
     LinkStatusWidget *m_linkStatus = nullptr;
+    TrafficMonitor *m_traffic = nullptr;
+    RegisterTable *m_registers = nullptr;
+    QDockWidget *m_trafficDock = nullptr;
+    QDockWidget *m_registersDock = nullptr;
 };
 
 } // namespace mbscope

@@ -1,58 +1,41 @@
 #include "transactionview.h"
 
-#include "decodepanel.h"
+#include "decodeview.h"
 #include "severitystyle.h"
-
-#include "protocol/hextext.h"
 
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QVBoxLayout>
 
 namespace mbscope {
 
-namespace {
-
-QString hexOf(const QByteArray &bytes)
-{
-    return HexText::format(bytes);
-}
-
-// The hex of a frame in the summary line, shortened: the whole frame is in the panel below.
-QString shortHex(const QByteArray &bytes)
-{
-    constexpr int kShown = 16;
-    if (bytes.size() <= kShown)
-        return hexOf(bytes);
-    return hexOf(bytes.first(kShown)) + QStringLiteral(" \u2026");
-}
-
-} // namespace
-
 TransactionView::TransactionView(QWidget *parent)
     : QWidget(parent)
-    , m_summary(new QLabel(this))
-    , m_decode(new DecodePanel(this))
+    , m_problem(new QLabel(this))
+    , m_decode(new DecodeView(this))
 {
-    m_summary->setObjectName(QStringLiteral("transactionSummary"));
-    m_summary->setWordWrap(true);
-    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_summary->setTextFormat(Qt::RichText);
-    m_summary->setContentsMargins(6, 4, 6, 0);
-    m_decode->setObjectName(QStringLiteral("answerDecodePanel"));
+    m_problem->setObjectName(QStringLiteral("transactionProblem"));
+    m_problem->setWordWrap(true);
+    m_problem->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_problem->setContentsMargins(6, 4, 6, 0);
+    QPalette p = m_problem->palette();
+    p.setColor(QPalette::WindowText, SeverityStyle::textColor(Severity::Error));
+    m_problem->setPalette(p);
+    m_problem->hide();
+    m_decode->setObjectName(QStringLiteral("answerDecodeView"));
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_summary);
+    layout->addWidget(m_problem);
     layout->addWidget(m_decode, 1);
     m_refresh.setSingleShot(true);
     connect(&m_refresh, &QTimer::timeout, this, &TransactionView::flush);
-    clear();
 }
 
 void TransactionView::clear()
 {
     m_pending.reset();
     m_shown.reset();
-    m_summary->setText(tr("Send a request: its answer appears here, every field explained."));
+    m_problem->hide();
+    m_decode->clear();
 }
 
 void TransactionView::showTransaction(const Transaction &transaction, Framing framing)
@@ -65,6 +48,14 @@ void TransactionView::showTransaction(const Transaction &transaction, Framing fr
     }
     if (!m_refresh.isActive())
         m_refresh.start(int(kMinRefreshMs - m_sinceShown.elapsed()));
+}
+
+void TransactionView::showExchange(const FrameExchange &exchange)
+{
+    m_refresh.stop();
+    m_pending.reset();
+    m_problem->hide();
+    m_decode->showExchange(exchange);
 }
 
 void TransactionView::flush()
@@ -80,44 +71,18 @@ void TransactionView::present(const Transaction &t, Framing framing)
 {
     m_sinceShown.start();
     m_shown = t;
-    Severity severity = Severity::Ok;
-    switch (t.status) {
-    case TransactionStatus::Ok:
-    case TransactionStatus::Broadcast: break;
-    case TransactionStatus::Exception:
-    case TransactionStatus::Late: severity = Severity::Warning; break;
-    default: severity = Severity::Error; break;
-    }
-    const QString colour = severity == Severity::Ok ? QStringLiteral("#1b7f2a") : SeverityStyle::textColor(severity).name();
-    QString verdict = transactionStatusName(t.status);
-    if (!t.problem.isEmpty() && t.status != TransactionStatus::Ok)
-        verdict += QStringLiteral(": ") + t.problem;
-    const QString latency = t.latencyNs() >= 0 ? tr("%1 ms").arg(double(t.latencyNs()) / 1e6, 0, 'f', 2) : tr("no answer");
-    QString text = tr("<b style=\"color:%1\">%2</b> &nbsp;\u00B7&nbsp; latency <b>%3</b> &nbsp;\u00B7&nbsp; "
-                      "request <code>%4</code> (%5 B)")
-                       .arg(colour, verdict.toHtmlEscaped(), latency, shortHex(t.request))
-                       .arg(t.request.size());
-    if (!t.response.isEmpty())
-        text += tr(" &rarr; response <code>%1</code> (%2 B)").arg(shortHex(t.response)).arg(t.response.size());
-    m_summary->setText(text);
-
-    m_decode->setFraming(framing);
-    if (t.response.isEmpty()) {
-        m_decode->setRequestText({});
-        m_decode->setDirection(Direction::Request);
-        m_decode->setFrameText(hexOf(t.request));
-    } else {
-        m_decode->setRequestText(hexOf(t.request));
-        m_decode->setDirection(Direction::Response);
-        m_decode->setFrameText(hexOf(t.response));
-    }
-    m_decode->decodeNow();
+    const bool failed = t.status != TransactionStatus::Ok && t.status != TransactionStatus::Broadcast;
+    m_problem->setText(failed && !t.problem.isEmpty()
+                           ? tr("%1: %2").arg(transactionStatusName(t.status), t.problem)
+                           : QString());
+    m_problem->setVisible(!m_problem->text().isEmpty());
+    m_decode->showTransaction(t, framing);
     Q_EMIT transactionShown(t);
 }
 
-QString TransactionView::summaryText() const
+QString TransactionView::problemText() const
 {
-    return m_summary->text();
+    return m_problem->isVisibleTo(this) ? m_problem->text() : QString();
 }
 
 } // namespace mbscope

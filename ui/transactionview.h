@@ -1,6 +1,7 @@
 #pragma once
 
 #include "engine/transaction.h"
+#include "frameexchange.h"
 #include "protocol/framing.h"
 
 #include <QtCore/QElapsedTimer>
@@ -13,12 +14,13 @@ class QLabel;
 
 namespace mbscope {
 
-class DecodePanel;
+class DecodeView;
 
-// The answer to what was sent: one line with the verdict, the latency and both frames, then the
-// decode panel with the response dissected against its matched request (a request that got no
-// answer is dissected itself). During a poll the newest transaction is shown at most
-// kMinRefreshMs apart, so a fast poll does not spend the GUI thread on trees nobody can read.
+// The answer to what was sent: the DecodeView (request and matched response, each a field tree
+// beside its bytes, verdict and latency on top), with the engine's words above it when the
+// exchange failed (a refused connection, a timeout). During a poll the newest transaction is shown
+// at most kMinRefreshMs apart, so a fast poll does not spend the GUI thread on trees nobody can
+// read; a frame picked in the traffic list is shown at once.
 class TransactionView : public QWidget
 {
     Q_OBJECT
@@ -28,11 +30,13 @@ public:
     explicit TransactionView(QWidget *parent = nullptr);
 
     void showTransaction(const Transaction &transaction, Framing framing);
+    void showExchange(const FrameExchange &exchange);
     // Shows a pending transaction now (tests, and the end of a poll).
     void flush();
     void clear();
-    [[nodiscard]] DecodePanel *decodePanel() const { return m_decode; }
-    [[nodiscard]] QString summaryText() const;
+    [[nodiscard]] DecodeView *decodeView() const { return m_decode; }
+    // The engine's description of a failed exchange; empty after a good one.
+    [[nodiscard]] QString problemText() const;
     [[nodiscard]] std::optional<Transaction> shown() const { return m_shown; }
 
 Q_SIGNALS:
@@ -41,8 +45,8 @@ Q_SIGNALS:
 private:
     void present(const Transaction &transaction, Framing framing);
 
-    QLabel *m_summary = nullptr;
-    DecodePanel *m_decode = nullptr;
+    QLabel *m_problem = nullptr;
+    DecodeView *m_decode = nullptr;
     QTimer m_refresh;
     QElapsedTimer m_sinceShown;
     std::optional<Transaction> m_pending;

@@ -49,7 +49,9 @@ void TestMainWindow::menus()
                 actions << a->text();
         }
     }
-    QCOMPARE(titles, (QStringList{QStringLiteral("&File"), QStringLiteral("&Request"), QStringLiteral("&Help")}));
+    QCOMPARE(titles, (QStringList{QStringLiteral("&File"), QStringLiteral("&Request"), QStringLiteral("&View"),
+                                  QStringLiteral("&Help")}));
+    QVERIFY(actions.contains(QStringLiteral("&Find in traffic")));
     QVERIFY(actions.contains(QStringLiteral("&Send")));
     QVERIFY(actions.contains(QStringLiteral("&Quit")));
     QVERIFY(actions.contains(QStringLiteral("&About mbscope")));

@@ -2,7 +2,8 @@
 // decoded answer (request + matched response, latency), Ctrl+Return, a taken port, a link error in
 // place, a poll and its counters, screenshots.
 #include "connectionbar.h"
-#include "decodepanel.h"
+#include "decodeview.h"
+#include "frameinspector.h"
 #include "fieldtreemodel.h"
 #include "guitestsupport.h"
 #include "linkcontroller.h"
@@ -10,7 +11,11 @@
 #include "mainwindow.h"
 #include "noticebanner.h"
 #include "rawrequesteditor.h"
+#include "registertable.h"
+#include "registertablemodel.h"
 #include "requestcomposer.h"
+#include "trafficmodel.h"
+#include "trafficmonitor.h"
 #include "transactionview.h"
 
 #include <QtNetwork/QTcpServer>
@@ -74,7 +79,8 @@ void TestWorkbench::typedRequestIsAnsweredAndDecoded()
     QVERIFY(window.startWithSimulator(kAnyPort));
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
-    FieldTreeModel *model = window.answerView()->decodePanel()->model();
+    DecodeView *decode = window.answerView()->decodeView();
+    FieldTreeModel *model = decode->responseInspector()->model();
     QAbstractItemModelTester tester(model, QAbstractItemModelTester::FailureReportingMode::QtTest);
 
     QPlainTextEdit *raw = window.composer()->rawEditor()->editor();
@@ -92,13 +98,15 @@ void TestWorkbench::typedRequestIsAnsweredAndDecoded()
     QCOMPARE(t.response.size(), 3 + 44 + 2);
     QVERIFY(t.latencyNs() > 0);
     QCOMPARE(window.viewTabs()->currentWidget(), window.answerView());
-    QVERIFY(window.answerView()->summaryText().contains(QLatin1String("latency")));
-    QVERIFY(window.answerView()->summaryText().contains(QLatin1String("ms")));
+    QVERIFY(window.answerView()->problemText().isEmpty());
+    QCOMPARE(decode->exchange().latencyNs, t.latencyNs());
+    QVERIFY2(decode->copyText(DecodeView::CopyFormat::Text).contains(QLatin1String("ms")),
+             qPrintable(decode->copyText(DecodeView::CopyFormat::Text)));
 
-    // The tree: the response read against its request.
-    DecodePanel *decode = window.answerView()->decodePanel();
-    QCOMPARE(decode->requestText(), QStringLiteral("01 03 00 79 00 16 15 DD"));
-    const Dissection &d = decode->dissection();
+    // The trees: the request, and the response read against it.
+    QCOMPARE(decode->exchange().request, t.request);
+    QCOMPARE(decode->requestDissection().direction, Direction::Request);
+    const Dissection &d = decode->responseDissection();
     QVERIFY2(d.isValid(), qPrintable(d.summary()));
     QCOMPARE(d.direction, Direction::Response);
     const QModelIndex unit = model->indexOfKey("rtu.unit_id", FieldTreeModel::ValueColumn);
@@ -117,6 +125,10 @@ void TestWorkbench::typedRequestIsAnsweredAndDecoded()
     QTRY_VERIFY_WITH_TIMEOUT(window.linkStatus()->countersText().contains(QLatin1String("TX 8 B")), kAnswerWaitMs);
     QVERIFY2(window.linkStatus()->countersText().contains(QLatin1String("RX 49 B")), qPrintable(window.linkStatus()->countersText()));
     QVERIFY(window.linkStatus()->stateText().contains(QLatin1String("Connected")));
+
+    // The traffic list has the exchange; the register table shows the 22 values with the profile's names.
+    QTRY_VERIFY_WITH_TIMEOUT(window.trafficMonitor()->model()->rowCount() >= 2, kAnswerWaitMs);
+    QCOMPARE(window.registerTable()->model()->rowCount(), 22);
 
     QVERIFY(guitest::saveShot(&window, QStringLiteral("workbench-answer.png")));
     QVERIFY(guitest::saveShot(window.answerView(), QStringLiteral("answer-view.png")));
@@ -176,6 +188,8 @@ void TestWorkbench::linkErrorIsShownInPlace()
     window.composer()->send();
     QTRY_VERIFY_WITH_TIMEOUT(!window.connectionBar()->errorText().isEmpty(), kAnswerWaitMs);
     QVERIFY2(window.connectionBar()->errorText().contains(QLatin1String("refused")), qPrintable(window.connectionBar()->errorText()));
+    QVERIFY(window.connectionBar()->errorText().contains(QLatin1String("Disconnect")));
+    QTRY_VERIFY_WITH_TIMEOUT(window.answerView()->problemText().contains(QLatin1String("refused")), kAnswerWaitMs);
     QVERIFY(window.linkStatus()->stateText().contains(QLatin1String("Link failed")));
     QVERIFY(guitest::saveShot(&window, QStringLiteral("workbench-link-error.png")));
 }
