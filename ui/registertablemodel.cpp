@@ -33,8 +33,7 @@ const QColor kContinuationText(128, 128, 128);
 
 // What a value column shows on one row.
 struct RegisterTableModel::ValueCell {
-    QString text;
-    QString toolTip;
+    QString text;         // the display text or the tooltip, as asked
     int firstRow = 0;     // the row of the value's first register
     int span = 1;         // rows the value covers (0 on the rows after its first)
     bool continuation = false;
@@ -267,42 +266,52 @@ QString RegisterTableModel::rowWhere(int row) const
         + QStringLiteral(" (PDU address %1)").arg(address);
 }
 
-RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIndex) const
+RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIndex, CellText wanted) const
 {
+    // The layout is arithmetic; text is made only for the role asked (views ask per painted cell).
     ValueCell cell;
     cell.firstRow = row;
     if (m_answer.isBits()) {
-        cell.text = m_answer.bits.at(row) ? QStringLiteral("1  ON") : QStringLiteral("0  OFF");
+        if (wanted == CellText::Display)
+            cell.text = m_answer.bits.at(row) ? QStringLiteral("1  ON") : QStringLiteral("0  OFF");
         return cell;
     }
     const RegisterFormat format = m_formats.at(valueIndex);
     const int width = format.registerCount();
     cell.firstRow = row - row % width;
+    cell.continuation = cell.firstRow != row;
+    cell.span = cell.continuation ? 0 : qMin(width, m_answer.count() - row);
+    cell.complete = cell.firstRow + width <= m_answer.count();
+    if (wanted == CellText::None)
+        return cell;
+
     const QString firstRef = ReadAnswer::referenceText(m_answer.reference(cell.firstRow));
-    if (cell.firstRow != row) {
-        cell.continuation = true;
-        cell.span = 0;
-        cell.text = QStringLiteral("\u2191 %1 from %2").arg(format.typeName(), firstRef);
-        cell.toolTip = QStringLiteral("Register %1 is register %2 of the %3 registers of the %4 value at %5")
-                           .arg(ReadAnswer::referenceText(m_answer.reference(row)))
-                           .arg(row - cell.firstRow + 1)
-                           .arg(width)
-                           .arg(format.name(), firstRef);
+    if (cell.continuation) {
+        if (wanted == CellText::Display)
+            cell.text = QStringLiteral("\u2191 %1 from %2").arg(format.typeName(), firstRef);
+        else
+            cell.text = QStringLiteral("Register %1 is register %2 of the %3 registers of the %4 value at %5")
+                            .arg(ReadAnswer::referenceText(m_answer.reference(row)))
+                            .arg(row - cell.firstRow + 1)
+                            .arg(width)
+                            .arg(format.name(), firstRef);
         return cell;
     }
-    const std::optional<RegisterValue> value = m_answer.valueAt(row, format);
-    cell.span = qMin(width, m_answer.count() - row);
-    if (!value) {
-        cell.complete = false;
-        cell.text = QStringLiteral("(%1 of %2 registers)").arg(cell.span).arg(width);
-        cell.toolTip = QStringLiteral("%1 needs %2 registers from %3; the answer ends after %4")
-                           .arg(format.name())
-                           .arg(width)
-                           .arg(firstRef)
-                           .arg(cell.span);
+    if (!cell.complete) {
+        if (wanted == CellText::Display)
+            cell.text = QStringLiteral("(%1 of %2 registers)").arg(cell.span).arg(width);
+        else
+            cell.text = QStringLiteral("%1 needs %2 registers from %3; the answer ends after %4")
+                            .arg(format.name())
+                            .arg(width)
+                            .arg(firstRef)
+                            .arg(cell.span);
         return cell;
     }
-    cell.text = value->toText();
+    if (wanted == CellText::Display) {
+        cell.text = m_answer.valueAt(row, format)->toText();
+        return cell;
+    }
     QString raw;
     for (int i = row; i < row + width; ++i)
         raw += (raw.isEmpty() ? QString() : QStringLiteral(" ")) + hexDigits(m_answer.registers.at(i), 4);
@@ -310,7 +319,7 @@ RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIn
         ? firstRef
         : QStringLiteral("%1 registers %2-%3").arg(width).arg(firstRef,
                                                              ReadAnswer::referenceText(m_answer.reference(row + width - 1)));
-    cell.toolTip = format.description() + QLatin1String("\n") + span + QLatin1String(", on the wire ") + raw;
+    cell.text = format.description() + QLatin1String("\n") + span + QLatin1String(", on the wire ") + raw;
     return cell;
 }
 
@@ -385,7 +394,7 @@ QVariant RegisterTableModel::toolTip(int row, int column) const
         return entry ? QVariant(entry->description) : QVariant();
     }
     if (const int vi = valueIndexOf(column); vi >= 0)
-        return m_answer.isBits() ? QVariant() : QVariant(valueCell(row, vi).toolTip);
+        return m_answer.isBits() ? QVariant() : QVariant(valueCell(row, vi, CellText::ToolTip).text);
     if (column == scaledColumn()) {
         const TableEntry *entry = entryAt(row);
         if (!entry)
@@ -402,8 +411,10 @@ bool RegisterTableModel::isEditableCell(int row, int column) const
 {
     if (!ModiconReference::isWritable(m_answer.table))
         return false;
-    if (const int vi = valueIndexOf(column); vi >= 0)
-        return m_answer.isBits() || (!valueCell(row, vi).continuation && valueCell(row, vi).complete);
+    if (const int vi = valueIndexOf(column); vi >= 0) {
+        const ValueCell cell = valueCell(row, vi, CellText::None);
+        return m_answer.isBits() || (!cell.continuation && cell.complete);
+    }
     if (column == scaledColumn() && !m_answer.isBits()) {
         const TableEntry *entry = entryAt(row);
         return entry && (m_answer.address + row - entry->address) % entry->width() == 0
@@ -429,7 +440,7 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
         if (column == NameColumn)
             return nameText(row);
         if (vi >= 0) {
-            const ValueCell cell = valueCell(row, vi);
+            const ValueCell cell = valueCell(row, vi, CellText::Display);
             if (role == Qt::EditRole && m_answer.isBits())
                 return m_answer.bits.at(row) ? QStringLiteral("1") : QStringLiteral("0");
             return cell.text;
@@ -444,7 +455,7 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
     case Qt::BackgroundRole:
         return isChanged(row, column) ? QVariant(QBrush(kChangedBackground)) : QVariant();
     case Qt::ForegroundRole:
-        if (vi >= 0 && !m_answer.isBits() && valueCell(row, vi).continuation)
+        if (vi >= 0 && !m_answer.isBits() && valueCell(row, vi, CellText::None).continuation)
             return QBrush(kContinuationText);
         return {};
     case Qt::FontRole:
@@ -461,7 +472,7 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
         return isChanged(row, column);
     case SpanRole:
         if (vi >= 0)
-            return valueCell(row, vi).span;
+            return valueCell(row, vi, CellText::None).span;
         return 1;
     case RawRole:
         return m_answer.isBits() ? int(m_answer.bits.at(row)) : int(m_answer.registers.at(row));

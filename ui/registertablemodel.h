@@ -116,7 +116,8 @@ Q_SIGNALS:
 
 private:
     struct ValueCell;
-    [[nodiscard]] ValueCell valueCell(int row, int valueIndex) const;
+    enum class CellText : quint8 { None, Display, ToolTip };
+    [[nodiscard]] ValueCell valueCell(int row, int valueIndex, CellText wanted) const;
     [[nodiscard]] const TableEntry *entryAt(int row) const;
     [[nodiscard]] QString nameText(int row) const;
     [[nodiscard]] QString scaledText(int row) const;

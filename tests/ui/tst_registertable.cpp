@@ -13,7 +13,9 @@
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QHeaderView>
 #include <QtWidgets/QLabel>
+#include <QtWidgets/QApplication>
 #include <QtWidgets/QLineEdit>
+#include <QtWidgets/QMenu>
 #include <QtWidgets/QTableView>
 
 using namespace mbscope;
@@ -78,6 +80,7 @@ class TestRegisterTable : public QObject
 
 private Q_SLOTS:
     void toolbarSetsFormatAndOrder();
+    void headerMenuSetsFormat();
     void writeChoicesFollowTheTable();
     void editTypedInTheView_data();
     void editTypedInTheView();
@@ -117,6 +120,46 @@ void TestRegisterTable::toolbarSetsFormatAndOrder()
     QCOMPARE(table.model()->valueFormats().at(1).name(), u"u64-abcdefgh"_s);
     QCOMPARE(table.view()->rowSpan(4, column + 1), 4);
     QCOMPARE(table.model()->valueFormats().at(0).name(), u"f32-cdab"_s);
+}
+
+void TestRegisterTable::headerMenuSetsFormat()
+{
+    RegisterTable table;
+    table.model()->setValueFormats({RegisterFormat(RegisterType::UInt16), RegisterFormat(RegisterType::Hex16)});
+    table.resize(800, 400);
+    table.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&table));
+    QVERIFY(table.showAnswer(kRosRaoRequest, rosRaoResponse()));
+    QHeaderView *header = table.view()->horizontalHeader();
+    const int column = RegisterTableModel::FirstValueColumn + 1;
+    const QPoint position(header->sectionViewportPosition(column) + 5, header->height() / 2);
+    QStringList offered;
+    bool triggered = false;
+    // The menu runs its own event loop: pick "i32-abcd" from inside it.
+    QTimer::singleShot(0, this, [&] {
+        auto *menu = qobject_cast<QMenu *>(QApplication::activePopupWidget());
+        if (!menu)
+            return;
+        for (QAction *a : menu->actions()) {
+            if (!a->text().isEmpty())
+                offered.append(a->text());
+        }
+        for (QAction *a : menu->actions()) {
+            if (a->text() == u"i32-abcd"_s) {
+                a->trigger();
+                triggered = true;
+            }
+        }
+        menu->close();
+    });
+    Q_EMIT header->customContextMenuRequested(position);
+    QVERIFY2(triggered, qPrintable(offered.join(u", "_s)));
+    QVERIFY(offered.contains(u"f64-abcdefgh"_s));
+    QVERIFY(offered.contains(u"BA (byte swap)"_s));
+    QCOMPARE(table.model()->valueFormats().at(1).name(), u"i32-abcd"_s);
+    QCOMPARE(table.currentValueIndex(), 1);
+    QCOMPARE(box(table, "registerTableFormat")->currentText(), u"i32"_s);
+    QCOMPARE(table.view()->rowSpan(0, column), 2);
 }
 
 void TestRegisterTable::writeChoicesFollowTheTable()
