@@ -6,6 +6,8 @@
 #include "trafficmodel.h"
 #include "trafficsearch.h"
 
+#include "engine/trafficlog.h"
+
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QFile>
 #include <QtTest/QAbstractItemModelTester>
@@ -78,6 +80,7 @@ private Q_SLOTS:
     void keys();
     void pairsAnswersWithRequests();
     void transactionsFeed();
+    void trafficLogFeed();
     void filter_data();
     void filter();
     void appendsWhileFiltered();
@@ -250,6 +253,34 @@ void TestTrafficModel::transactionsFeed()
     QCOMPARE(e.response, kArduinoResponse);
     QCOMPARE(e.verdict, TrafficVerdict::Late);
     QCOMPARE(e.latencyNs, 1'191'000'000);
+}
+
+// The frames of a TrafficLog (what the engine logs, unsolicited and garbage included) as they
+// come out of TrafficLog::copy, with the log's link names.
+void TestTrafficModel::trafficLogFeed()
+{
+    TrafficLog log;
+    const quint16 rtu = log.addLink(kRtuTcp);
+    const quint16 tcp = log.addLink(kTcp);
+    log.append(100, TrafficDirection::Out, rtu, TrafficVerdict::Sent, 1, kArduinoRequest);
+    log.append(2'100, TrafficDirection::In, rtu, TrafficVerdict::Ok, 1, kArduinoResponse);
+    log.append(5'000, TrafficDirection::In, rtu, TrafficVerdict::Garbage, 0, QByteArray::fromHex("FFFF00"));
+    log.append(6'000, TrafficDirection::Out, tcp, TrafficVerdict::Sent, 2, kMbapWrite);
+    log.append(9'000, TrafficDirection::In, tcp, TrafficVerdict::Unsolicited, 0, kMbapWrite);
+    for (qsizetype i = 0; i < log.links().size(); ++i)
+        m_model->setLinkName(quint16(i), log.links().at(i));
+    m_model->appendFrames(log.copy(log.firstSequence(), 3));
+    m_model->appendFrames(log.copy(log.firstSequence() + 3, 10));
+    QCOMPARE(m_model->rowCount(), 5);
+    QCOMPARE(cell(*m_model, 1, TrafficModel::LatencyColumn), QStringLiteral("2.0 µs"));
+    QCOMPARE(cell(*m_model, 2, TrafficModel::VerdictColumn), QStringLiteral("garbage"));
+    QCOMPARE(cell(*m_model, 2, TrafficModel::UnitColumn), QString());
+    QCOMPARE(cell(*m_model, 3, TrafficModel::LinkColumn), kTcp);
+    QCOMPARE(cell(*m_model, 4, TrafficModel::VerdictColumn), QStringLiteral("unsolicited"));
+    QCOMPARE(cell(*m_model, 4, TrafficModel::FunctionColumn), QStringLiteral("0x10 Write Multiple Registers"));
+    QCOMPARE(m_model->exchangeAt(3).framing, Framing::Tcp);
+    QCOMPARE(m_model->exchangeAt(0).framing, Framing::Rtu);
+    QCOMPARE(m_model->exchangeAt(0).response, kArduinoResponse);
 }
 
 void TestTrafficModel::filter_data()
