@@ -1,6 +1,7 @@
 #include "runcommand.h"
 
 #include "commands.h"
+#include "interruptwatcher.h"
 
 #include "session/junitreport.h"
 #include "session/planrunner.h"
@@ -63,7 +64,8 @@ int runRun(const QStringList &arguments)
         "code, no answer), polls and checks bounds on the statistics (\"p95 < 20 ms\", \"timeouts == 0\"), waits or "
         "repeats steps. Prints each step with pass or fail and why.\n"
         "Example: mbscope run docs/examples/rosrao-gamma.mbscope.json --target rtu-tcp://127.0.0.1:4001 --junit results.xml\n"
-        "Exit status: 0 every step passed, 1 a step failed, 2 usage, document or link error."));
+        "Ctrl-C stops the run: the steps left are reported skipped, and the JUnit file is still written.\n"
+        "Exit status: 0 every step passed, 1 a step failed (or the run was interrupted), 2 usage, document or link error."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("SESSION"), QStringLiteral("The session document holding the plan."));
     const QCommandLineOption target(QStringLiteral("target"),
@@ -124,6 +126,8 @@ int runRun(const QStringList &arguments)
         out.flush();
     }
     PlanRunner runner(named, *parsed.url, document.target);
+    InterruptWatcher interrupt;
+    QObject::connect(&interrupt, &InterruptWatcher::interrupted, &interrupt, [&runner] { runner.stop(); });
     const PlanResult result = runner.run([&](const StepResult &step) {
         if (!asJson)
             printStep(out, step);
@@ -150,6 +154,11 @@ int runRun(const QStringList &arguments)
     if (result.linkFailed) {
         err << "mbscope run: " << result.linkMessage << '\n';
         return ExitLinkError;
+    }
+    if (result.interrupted) {
+        const int left = result.count(StepResult::Outcome::Skipped);
+        err << "mbscope run: interrupted: " << left << (left == 1 ? " step" : " steps") << " not run\n";
+        return ExitFailure;
     }
     return result.passed() ? ExitOk : ExitFailure;
 }

@@ -73,6 +73,8 @@ QJsonObject PlanResult::toJson() const
     root.insert(QLatin1String("steps"), list);
     if (linkFailed)
         root.insert(QLatin1String("link_error"), linkMessage);
+    if (interrupted)
+        root.insert(QLatin1String("interrupted"), true);
     return root;
 }
 

@@ -38,11 +38,12 @@ struct PlanResult {
     QList<StepResult> steps;
     bool linkFailed = false;
     QString linkMessage;
+    bool interrupted = false; // stopped early (Ctrl-C): the steps left are skipped
 
     [[nodiscard]] int count(StepResult::Outcome outcome) const;
-    [[nodiscard]] bool passed() const { return !linkFailed && count(StepResult::Outcome::Passed) == steps.size(); }
+    [[nodiscard]] bool passed() const { return !linkFailed && !interrupted && count(StepResult::Outcome::Passed) == steps.size(); }
     // {"plan", "target", "started", "elapsed_ms", "passed", "counts": {...}, "steps": [{"path",
-    //  "name", "kind", "outcome", "reasons", "detail", "elapsed_ms"}], "link_error"}
+    //  "name", "kind", "outcome", "reasons", "detail", "elapsed_ms"}], "link_error", "interrupted"}
     [[nodiscard]] QJsonObject toJson() const;
 };
 

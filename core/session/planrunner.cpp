@@ -56,6 +56,14 @@ PlanResult PlanRunner::run(const StepObserver &observer)
     return m_result;
 }
 
+void PlanRunner::stop()
+{
+    m_result.interrupted = true;
+    m_engine->stop();
+    if (m_waitLoop)
+        m_waitLoop->quit();
+}
+
 void PlanRunner::report(const StepResult &result)
 {
     m_result.steps.append(result);
@@ -71,7 +79,8 @@ void PlanRunner::skip(const std::vector<PlanStep> &steps, std::size_t from, cons
         r.name = steps[i].name + suffix;
         r.kind = steps[i].kind;
         r.outcome = StepResult::Outcome::Skipped;
-        r.reasons.append(QStringLiteral("not run: the link failed earlier"));
+        r.reasons.append(m_result.linkFailed ? QStringLiteral("not run: the link failed earlier")
+                                             : QStringLiteral("not run: the run was interrupted"));
         report(r);
     }
 }
@@ -80,7 +89,7 @@ void PlanRunner::runSteps(const std::vector<PlanStep> &steps, const QString &pat
 {
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const QString at = QStringLiteral("%1[%2]").arg(path).arg(i);
-        if (m_result.linkFailed) {
+        if (ended()) {
             skip(steps, i, path, suffix);
             return;
         }
@@ -91,9 +100,21 @@ void PlanRunner::runSteps(const std::vector<PlanStep> &steps, const QString &pat
 void PlanRunner::runStep(const PlanStep &step, const QString &path, const QString &suffix)
 {
     if (step.kind == PlanStep::Kind::Repeat) {
-        for (int n = 1; n <= step.times && !m_result.linkFailed; ++n)
-            runSteps(step.steps, path + QStringLiteral(".steps"),
-                     suffix + QStringLiteral(" (%1/%2)").arg(n).arg(step.times));
+        for (int n = 1; n <= step.times; ++n) {
+            if (ended()) {
+                // One line for the repetitions left, however many (a repeat may run thousands).
+                StepResult r;
+                r.path = path;
+                r.name = step.name + suffix + QStringLiteral(" (%1/%2 to %2/%2)").arg(n).arg(step.times);
+                r.kind = step.kind;
+                r.outcome = StepResult::Outcome::Skipped;
+                r.reasons.append(m_result.linkFailed ? QStringLiteral("not run: the link failed earlier")
+                                                     : QStringLiteral("not run: the run was interrupted"));
+                report(r);
+                break;
+            }
+            runSteps(step.steps, path + QStringLiteral(".steps"), suffix + QStringLiteral(" (%1/%2)").arg(n).arg(step.times));
+        }
         return;
     }
     StepResult result;
@@ -114,8 +135,15 @@ void PlanRunner::runStep(const PlanStep &step, const QString &path, const QStrin
     case PlanStep::Kind::Wait: {
         QEventLoop loop;
         QTimer::singleShot(int(step.waitMs), &loop, &QEventLoop::quit);
+        m_waitLoop = &loop;
         loop.exec();
-        result.reasons.append(QStringLiteral("waited %1 ms").arg(step.waitMs));
+        m_waitLoop = nullptr;
+        if (m_result.interrupted) {
+            result.outcome = StepResult::Outcome::Failed;
+            result.reasons.append(QStringLiteral("interrupted after %1 ms").arg((monotonicNowNs() - start) / 1'000'000));
+        } else {
+            result.reasons.append(QStringLiteral("waited %1 ms").arg(step.waitMs));
+        }
         break;
     }
     case PlanStep::Kind::Repeat:
@@ -216,6 +244,11 @@ void PlanRunner::runPoll(const PlanStep &step, StepResult &result)
         return;
     }
     const Statistics &stats = report->runs.constFirst().statistics.overall();
+    if (m_result.interrupted) {
+        result.outcome = StepResult::Outcome::Failed;
+        result.reasons.append(QStringLiteral("interrupted: the poll was stopped after %1 transactions").arg(stats.count()));
+        return;
+    }
     result.detail = QStringLiteral("%1 transactions, %2 ok, %3 failed").arg(stats.count()).arg(stats.ok()).arg(stats.failed());
     if (!stats.latency().isEmpty())
         result.detail += QStringLiteral(", latency median %1, p95 %2, max %3")

@@ -9,6 +9,8 @@
 #include <memory>
 #include <optional>
 
+class QEventLoop;
+
 namespace mbscope {
 
 class TransactionEngine;
@@ -31,6 +33,10 @@ public:
     PlanRunner &operator=(const PlanRunner &) = delete;
 
     [[nodiscard]] PlanResult run(const StepObserver &observer = {});
+    // Ends the run early (Ctrl-C): a poll in progress stops, a wait ends, a send finishes; the
+    // steps left are reported skipped and the result says it was interrupted. Call it from the
+    // runner's thread (an event the local loops deliver).
+    void stop();
 
 private:
     void runSteps(const std::vector<PlanStep> &steps, const QString &path, const QString &suffix);
@@ -39,6 +45,7 @@ private:
     void runExpect(const PlanStep &step, StepResult &result);
     void runPoll(const PlanStep &step, StepResult &result);
     void skip(const std::vector<PlanStep> &steps, std::size_t from, const QString &path, const QString &suffix);
+    [[nodiscard]] bool ended() const { return m_result.linkFailed || m_result.interrupted; }
     void report(const StepResult &result);
     [[nodiscard]] std::optional<RequestItem> item(const SessionRequest &request, QString *error);
     void check(const StepExpectation &expectation, const Transaction &transaction, StepResult &result) const;
@@ -51,6 +58,7 @@ private:
     StepObserver m_observer;
     PlanResult m_result;
     quint16 m_transactionId = 1;
+    QEventLoop *m_waitLoop = nullptr; // the wait step's, while one runs
 };
 
 } // namespace mbscope
