@@ -1,6 +1,6 @@
 #include "captureanalysis.h"
 
-#include "capture/exchangefields.h"
+#include "engine/responsematcher.h"
 #include "protocol/functioncode.h"
 
 #include <QtCore/QJsonArray>
@@ -49,10 +49,13 @@ void CaptureAnalysis::add(const CaptureExchange &exchange)
         else if (t.status != TransactionStatus::Broadcast)
             ++c.failed;
     }
-    const ExchangeFields fields = ExchangeFields::of(t, exchange.framing);
-    if (!fields.valid)
+    // The function code alone (ExchangeFields would also format the values: not needed here).
+    FrameKeys keys = ResponseMatcher::keysOf(t.request, exchange.framing);
+    if (!keys.valid)
+        keys = ResponseMatcher::keysOf(t.response, exchange.framing);
+    if (!keys.valid)
         return;
-    auto &slot = m_byFunction[fields.function];
+    auto &slot = m_byFunction[quint8(keys.functionCode & 0x7f)];
     if (!slot)
         slot = std::make_unique<Statistics>(m_spec);
     slot->add(t);

@@ -117,10 +117,10 @@ void CaptureFileReader::readPcapng(CaptureByteSource &source, const Sink &sink, 
         }
         const quint32 type = order.u32(head);
         const quint32 length = order.u32(head + 4);
-        const QString typeText = QStringLiteral("0x%1").arg(type, 8, 16, QLatin1Char('0'));
+        const auto typeText = [type] { return QStringLiteral("0x%1").arg(type, 8, 16, QLatin1Char('0')); }; // errors only
         if (length < 12 || length % 4 != 0 || length > kMaxBlockBytes) {
             fail(at, QStringLiteral("the block of type %1 says it is %2 bytes long, %3: the file is damaged")
-                         .arg(typeText)
+                         .arg(typeText())
                          .arg(length)
                          .arg(length < 12 ? QStringLiteral("less than the 12 every block takes")
                                           : length % 4 != 0 ? QStringLiteral("not a multiple of 4")
@@ -130,14 +130,14 @@ void CaptureFileReader::readPcapng(CaptureByteSource &source, const Sink &sink, 
         const uchar *block = source.peek(qsizetype(length));
         if (!block) {
             fail(at, QStringLiteral("the block of type %1 is cut short: it says %2 bytes, the file has %3")
-                         .arg(typeText).arg(length).arg(source.remaining()));
+                         .arg(typeText()).arg(length).arg(source.remaining()));
             return;
         }
         const quint32 trailing = order.u32(block + length - 4);
         if (trailing != length) {
             fail(at + length - 4, QStringLiteral("the block of type %1 that starts at byte %2 ends with a length of %3 "
                                                  "where it began with %4: the file is damaged")
-                                      .arg(typeText).arg(at).arg(trailing).arg(length));
+                                      .arg(typeText()).arg(at).arg(trailing).arg(length));
             return;
         }
         const uchar *body = block + 8;
