@@ -12,7 +12,6 @@
 #include <QtWidgets/QMenu>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
-#include <QtWidgets/QStackedWidget>
 #include <QtWidgets/QToolButton>
 #include <QtWidgets/QVBoxLayout>
 
@@ -75,13 +74,13 @@ void ConnectionBar::buildUi()
     m_portSpin->setRange(1, 65535);
     m_portSpin->setValue(502);
     auto *network = new QWidget(this);
+    m_networkPage = network;
     auto *networkRow = new QHBoxLayout(network);
     networkRow->setContentsMargins(0, 0, 0, 0);
     networkRow->addWidget(buddyLabel(tr("&Host:"), m_hostEdit, network));
     networkRow->addWidget(m_hostEdit, 1);
     networkRow->addWidget(buddyLabel(tr("P&ort:"), m_portSpin, network));
     networkRow->addWidget(m_portSpin);
-    networkRow->addStretch(1);
 
     // Serial target
     m_serialPortCombo = new QComboBox(this);
@@ -115,6 +114,7 @@ void ConnectionBar::buildUi()
     for (int bits : {1, 2})
         m_stopBitsCombo->addItem(QString::number(bits), bits);
     auto *serial = new QWidget(this);
+    m_serialPage = serial;
     auto *serialRow = new QHBoxLayout(serial);
     serialRow->setContentsMargins(0, 0, 0, 0);
     serialRow->addWidget(buddyLabel(tr("P&ort:"), m_serialPortCombo, serial));
@@ -128,11 +128,10 @@ void ConnectionBar::buildUi()
     serialRow->addWidget(m_dataBitsCombo);
     serialRow->addWidget(buddyLabel(tr("&Stop:"), m_stopBitsCombo, serial));
     serialRow->addWidget(m_stopBitsCombo);
-    serialRow->addStretch(1);
 
-    m_targetStack = new QStackedWidget(this);
-    m_targetStack->addWidget(network);
-    m_targetStack->addWidget(serial);
+    // One of the two pages is shown; a hidden page takes no room, so each keeps its natural width
+    // (a stacked widget would give the short network page the serial page's width).
+    serial->hide();
 
     m_unitSpin = new QSpinBox(this);
     m_unitSpin->setObjectName(QStringLiteral("unitSpin"));
@@ -170,7 +169,8 @@ void ConnectionBar::buildUi()
     auto *row = new QHBoxLayout;
     row->addWidget(buddyLabel(tr("&Link:"), m_kindCombo, this));
     row->addWidget(m_kindCombo);
-    row->addWidget(m_targetStack, 1);
+    row->addWidget(m_networkPage);
+    row->addWidget(m_serialPage);
     row->addSpacing(8);
     row->addWidget(buddyLabel(tr("&Unit:"), m_unitSpin, this));
     row->addWidget(m_unitSpin);
@@ -179,6 +179,7 @@ void ConnectionBar::buildUi()
     row->addSpacing(8);
     row->addWidget(m_connectButton);
     row->addWidget(m_recentButton);
+    row->addStretch(1);
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 4, 6, 4);
@@ -208,7 +209,8 @@ Framing ConnectionBar::framing() const
 void ConnectionBar::onKindChanged()
 {
     const bool serial = kind() == LinkKind::Rtu || kind() == LinkKind::Ascii;
-    m_targetStack->setCurrentIndex(serial ? 1 : 0);
+    m_networkPage->setVisible(!serial);
+    m_serialPage->setVisible(serial);
     if (serial && m_serialPortCombo->count() == 0)
         refreshSerialPorts();
     // ASCII carries 7 data bits by default (Serial Line V1.02, 2.5.2), RTU always 8.
@@ -328,7 +330,7 @@ void ConnectionBar::setConnected(bool connected)
     m_connected = connected;
     m_connectButton->setText(connected ? tr("Dis&connect") : tr("&Connect"));
     // The target of a live link is what the link uses: change it by disconnecting first.
-    for (QWidget *w : std::initializer_list<QWidget *>{m_kindCombo, m_targetStack, m_timeoutSpin, m_recentButton})
+    for (QWidget *w : std::initializer_list<QWidget *>{m_kindCombo, m_networkPage, m_serialPage, m_timeoutSpin, m_recentButton})
         w->setEnabled(!connected);
 }
 

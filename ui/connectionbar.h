@@ -11,7 +11,6 @@ class QLabel;
 class QLineEdit;
 class QPushButton;
 class QSpinBox;
-class QStackedWidget;
 class QToolButton;
 
 namespace mbscope {
@@ -70,7 +69,8 @@ private:
     [[nodiscard]] LinkKind kind() const;
 
     QComboBox *m_kindCombo = nullptr;
-    QStackedWidget *m_targetStack = nullptr;
+    QWidget *m_networkPage = nullptr; // host and port; shown for network links
+    QWidget *m_serialPage = nullptr;  // port and line settings; shown for serial links
     QLineEdit *m_hostEdit = nullptr;
     QSpinBox *m_portSpin = nullptr;
     QComboBox *m_serialPortCombo = nullptr;

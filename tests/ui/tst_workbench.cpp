@@ -20,6 +20,7 @@
 
 #include <QtNetwork/QTcpServer>
 #include <QtTest/QAbstractItemModelTester>
+#include <QtWidgets/QDockWidget>
 #include <QtWidgets/QPlainTextEdit>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
@@ -134,6 +135,11 @@ void TestWorkbench::typedRequestIsAnsweredAndDecoded()
     QVERIFY(guitest::saveShot(window.answerView(), QStringLiteral("answer-view.png")));
     QVERIFY(guitest::saveShot(window.composer(), QStringLiteral("composer-raw.png")));
     QVERIFY(guitest::saveShot(window.connectionBar(), QStringLiteral("connectionbar-connected.png")));
+    QVERIFY(guitest::saveShot(window.trafficMonitor(), QStringLiteral("traffic-dock.png")));
+    auto *registersDock = window.findChild<QDockWidget *>(QStringLiteral("registersDock"));
+    QVERIFY(registersDock);
+    registersDock->raise();
+    QVERIFY(guitest::saveShot(&window, QStringLiteral("workbench-registers.png")));
 }
 
 void TestWorkbench::ctrlReturnSends()
