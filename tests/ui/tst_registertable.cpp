@@ -4,16 +4,16 @@
 // (MBSCOPE_TEST_OUTPUT_DIR, else the working directory) for people to look at.
 #include "registertable.h"
 
+#include "guitestsupport.h"
 #include "registertablemodel.h"
 #include "sim/profileloader.h"
 
-#include <QtCore/QDir>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QtTest>
+#include <QtWidgets/QApplication>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QHeaderView>
 #include <QtWidgets/QLabel>
-#include <QtWidgets/QApplication>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QMenu>
 #include <QtWidgets/QTableView>
@@ -64,12 +64,6 @@ QStringList items(const QComboBox *combo)
     for (int i = 0; i < combo->count(); ++i)
         out.append(combo->itemText(i));
     return out;
-}
-
-QString outputPath(const QString &file)
-{
-    const QString dir = qEnvironmentVariable("MBSCOPE_TEST_OUTPUT_DIR", QDir::currentPath());
-    return QDir(dir).filePath(file);
 }
 
 } // namespace
@@ -270,7 +264,7 @@ void TestRegisterTable::screenshot()
 
     const QImage image = table.grab().toImage();
     QVERIFY(!image.isNull());
-    const QString path = outputPath(u"registertable.png"_s);
+    const QString path = guitest::outputPath(u"registertable.png"_s);
     QVERIFY2(image.save(path), qPrintable(path));
     qInfo("screenshot: %s", qPrintable(path));
 }
@@ -287,7 +281,7 @@ void TestRegisterTable::screenshotCoils()
     QCOMPARE(table.model()->rowCount(), 16);
     QVERIFY(table.model()->index(1, RegisterTableModel::FirstValueColumn).data(RegisterTableModel::ChangedRole).toBool());
     QCoreApplication::processEvents();
-    const QString path = outputPath(u"registertable-coils.png"_s);
+    const QString path = guitest::outputPath(u"registertable-coils.png"_s);
     QVERIFY2(table.grab().toImage().save(path), qPrintable(path));
     qInfo("screenshot: %s", qPrintable(path));
 }
