@@ -426,8 +426,13 @@ void EngineCore::flushBatch()
 {
     m_batchTimer.stop();
     m_lastBatchNs = monotonicNowNs();
-    if (!m_batch.isEmpty())
+    if (!m_batch.isEmpty()) {
+        const qsizetype size = m_batch.size();
         emit transactionsFinished(std::exchange(m_batch, {}));
+        // The observers keep the list that was sent; the next one is likely as long, and growing
+        // a list of records copies them at every step.
+        m_batch.reserve(size);
+    }
     m_progress.counters = m_counters;
     emit progress(m_progress);
 }
