@@ -81,7 +81,8 @@ int runRun(const QStringList &arguments)
         return ExitUsage;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        out << subcommandHelp(parser.helpText(), "run");
+        out << subcommandHelp(parser.helpText(), "run")
+                   .replace(QLatin1String("Usage: mbscope run [options]\n"), QLatin1String("Usage: mbscope run [options] SESSION\n"));
         return ExitOk;
     }
     const QStringList positional = parser.positionalArguments();
