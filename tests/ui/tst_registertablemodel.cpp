@@ -153,6 +153,7 @@ private Q_SLOTS:
     void writes();
     void refusedEdits_data();
     void refusedEdits();
+    void updateCost();
 };
 
 void TestRegisterTableModel::modelTester()
@@ -720,6 +721,37 @@ void TestRegisterTableModel::refusedEdits()
     QCOMPARE(refused.count(), 1);
     QCOMPARE(refused.at(0).at(0).toString(), message);
     QCOMPARE(model.lastProblem(), message);
+}
+
+// What one poll answer costs the GUI thread: a 125-register answer (the most 03 reads) into a
+// model of four value columns, then every cell's text, as a view painting it all would ask.
+// Prints the figure; asserts only that every cell was asked.
+void TestRegisterTableModel::updateCost()
+{
+    RegisterTableModel model;
+    model.setValueFormats({format(u"u16"_s), format(u"hex"_s), format(u"f32-cdab"_s), format(u"u32-abcd"_s)});
+    model.setProfile(rosRaoProfile(), u"rosrao-gamma"_s);
+    QList<quint16> a(125);
+    QList<quint16> b(125);
+    for (int i = 0; i < 125; ++i) {
+        a[i] = quint16(i * 7);
+        b[i] = quint16(i % 3 == 0 ? i * 7 + 1 : i * 7);
+    }
+    const QByteArray request = readRequestPdu(0x03, 0x79, 125);
+    const QByteArray answers[2] = {readRegistersPdu(0x03, 0x79, a), readRegistersPdu(0x03, 0x79, b)};
+    int cells = 0;
+    int turn = 0;
+    QBENCHMARK {
+        model.update(request, answers[turn++ % 2]);
+        cells = 0;
+        for (int row = 0; row < model.rowCount(); ++row) {
+            for (int column = 0; column < model.columnCount(); ++column) {
+                cells += model.index(row, column).data().isValid() ? 1 : 0;
+                (void)model.index(row, column).data(Qt::BackgroundRole);
+            }
+        }
+    }
+    QCOMPARE(cells, 125 * model.columnCount());
 }
 
 QTEST_MAIN(TestRegisterTableModel)
