@@ -6,6 +6,7 @@
 #include "simulatecommand.h"
 #include "pollcommand.h"
 #include "readcommand.h"
+#include "replaycommand.h"
 #include "runcommand.h"
 #include "sendcommand.h"
 #include "sweepcommand.h"
@@ -36,6 +37,7 @@ const Subcommand kSubcommands[] = {
     {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},
     {"analyze", "read a pcap, pcapng or traffic journal offline: pairs, decoded frames, statistics, histogram", runAnalyze},
     {"export", "write a capture or journal as CSV, JSON lines, pcapng for Wireshark, or latency plots", runExport},
+    {"replay", "re-send a recording to a device and compare the answers, or serve it as a stand-in device", runReplay},
 };
 
 void printUsage(QTextStream &out)

@@ -1,0 +1,219 @@
+#include "replaycommand.h"
+
+#include "captureinput.h"
+#include "commands.h"
+#include "durations.h"
+#include "interruptwatcher.h"
+#include "replayserve.h"
+
+#include "protocol/hextext.h"
+#include "replay/replayrunner.h"
+#include "replay/replayscript.h"
+#include "session/sessionreader.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QTextStream>
+
+namespace mbscope::app {
+
+namespace {
+
+// "max" -> 0 (no waiting), "1", "10", "0.5" -> that factor; false when it is neither.
+bool parseSpeed(const QString &text, double *speed)
+{
+    if (text == QLatin1String("max")) {
+        *speed = 0;
+        return true;
+    }
+    bool ok = false;
+    const double value = text.toDouble(&ok);
+    if (!ok || !(value > 0) || value > 1e6)
+        return false;
+    *speed = value;
+    return true;
+}
+
+} // namespace
+
+int runReplay(const QStringList &arguments)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Replays recorded Modbus traffic: a session document (its captured traffic), a traffic journal, or a pcap/pcapng "
+        "capture (read as analyze reads it).\n"
+        "With a target (--target, default the session's): re-sends the recorded requests at the recorded pacing and "
+        "compares each answer with the recorded one field by field (dissector keys, as a plan's expectations name them: "
+        "modbus.register_value@0x007D), an exception against a normal answer, a missing answer; then the latency "
+        "recorded and now (median, p95).\n"
+        "With --serve URL: a simulator on URL answers with the recorded answers, matched by unit and request PDU (the "
+        "MBAP transaction id aside); a request recorded several times gets its answers in turn, cycling.\n"
+        "Example: mbscope replay bench.mbscope.json --speed max\n"
+        "Example: mbscope replay bench.mbscope.journal --serve rtu-tcp://127.0.0.1:4001\n"
+        "Exit status: 0 every answer matched (or --serve stopped), 1 some differed, 2 usage error, unreadable source or link failure."));
+    parser.addHelpOption();
+    const CaptureInput input;
+    input.addTo(parser);
+    const QCommandLineOption targetOpt(QStringLiteral("target"),
+                                       QStringLiteral("The device to replay to (default: the session's target.url)."), QStringLiteral("url"));
+    const QCommandLineOption speedOpt(QStringLiteral("speed"),
+                                      QStringLiteral("Pacing: 1 as recorded (default), N times faster, or max (back to back). With "
+                                                     "--serve: the recorded latency divided by N, max for none."),
+                                      QStringLiteral("max|N"), QStringLiteral("1"));
+    const QCommandLineOption serveOpt(QStringLiteral("serve"),
+                                      QStringLiteral("Be the device instead: answer with the recorded answers on this URL "
+                                                     "(tcp://, rtu-tcp://, udp://, rtu://... port 0: the OS chooses)."),
+                                      QStringLiteral("url"));
+    const QCommandLineOption unrecordedOpt(QStringLiteral("unrecorded"),
+                                           QStringLiteral("With --serve, a request or unit never recorded gets: exception (0B, "
+                                                          "gateway target device failed to respond; default) or ignore (no answer)."),
+                                           QStringLiteral("exception|ignore"), QStringLiteral("exception"));
+    const QCommandLineOption durationOpt(QStringLiteral("duration"),
+                                         QStringLiteral("With --serve, stop after this long (default: until Ctrl-C)."), QStringLiteral("duration"));
+    const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the result as JSON."));
+    parser.addOptions({targetOpt, speedOpt, serveOpt, unrecordedOpt, durationOpt, jsonOpt});
+    parser.addPositionalArgument(QStringLiteral("source"),
+                                 QStringLiteral("A session document with a capture, a traffic journal, or a .pcap/.pcapng file."));
+    if (!parser.parse(arguments)) {
+        err << "mbscope replay: " << parser.errorText() << '\n';
+        return ExitUsage;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << subcommandHelp(parser.helpText(), "replay");
+        return ExitOk;
+    }
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1) {
+        err << "mbscope replay: " << (positional.isEmpty() ? QStringLiteral("no source given") : QStringLiteral("one source at a time"))
+            << ": mbscope replay SOURCE [--target URL | --serve URL] [options]\n";
+        return ExitUsage;
+    }
+    CaptureOptions options;
+    QString error;
+    if (!input.read(parser, &options, &error)) {
+        err << "mbscope replay: " << error << '\n';
+        return ExitUsage;
+    }
+    double speed = 1.0;
+    if (!parseSpeed(parser.value(speedOpt), &speed)) {
+        err << "mbscope replay: --speed '" << parser.value(speedOpt) << "' is not a speed: expected max or a factor above 0 (1, 10, 0.5)\n";
+        return ExitUsage;
+    }
+    if (parser.isSet(serveOpt) && parser.isSet(targetOpt)) {
+        err << "mbscope replay: --serve and --target exclude each other: replay to a device, or be the device\n";
+        return ExitUsage;
+    }
+    const QString unrecorded = parser.value(unrecordedOpt);
+    if (unrecorded != QLatin1String("exception") && unrecorded != QLatin1String("ignore")) {
+        err << "mbscope replay: --unrecorded '" << unrecorded << "': expected exception or ignore\n";
+        return ExitUsage;
+    }
+    qint64 durationMs = 0;
+    if (parser.isSet(durationOpt)) {
+        const DurationResult d = parseDuration(parser.value(durationOpt));
+        if (!d.ok || d.ns <= 0) {
+            err << "mbscope replay: --duration: " << (d.ok ? QStringLiteral("must be more than 0") : d.error) << '\n';
+            return ExitUsage;
+        }
+        durationMs = std::max<qint64>(1, d.ns / 1'000'000);
+    }
+
+    const QString source = positional.constFirst();
+    QString path;
+    if (!CaptureInput::resolve(source, &path, &error)) {
+        err << "mbscope replay: " << error << '\n';
+        return ExitUsage;
+    }
+    // A session document (resolved to its journal) also gives the target and its timeout.
+    SessionTarget sessionTarget;
+    if (path != source) {
+        const SessionLoadResult loaded = SessionReader::load(source);
+        if (loaded.ok())
+            sessionTarget = loaded.document->target;
+    }
+    const ReplayScript script = ReplayScript::read(path, options);
+    if (!script.report().isReadable()) {
+        err << "mbscope replay: " << path << ": " << script.report().error << '\n';
+        return ExitUsage;
+    }
+    if (!script.report().error.isEmpty())
+        err << "mbscope replay: " << path << ": " << script.report().error << "; the exchanges before it are replayed\n";
+    if (script.isEmpty()) {
+        err << "mbscope replay: " << path << ": no recorded requests to replay\n";
+        return ExitUsage;
+    }
+
+    if (parser.isSet(serveOpt)) {
+        ReplayServeOptions serve;
+        serve.url = parser.value(serveOpt);
+        serve.unrecorded = unrecorded == QLatin1String("ignore") ? ReplayResponder::Unrecorded::Ignore
+                                                                 : ReplayResponder::Unrecorded::Exception0B;
+        serve.speed = speed;
+        serve.durationMs = durationMs;
+        serve.json = parser.isSet(jsonOpt);
+        return serveReplay(script, source, serve, out, err);
+    }
+
+    const QString url = parser.isSet(targetOpt) ? parser.value(targetOpt) : sessionTarget.url;
+    if (url.isEmpty()) {
+        err << "mbscope replay: no target: give --target URL"
+            << (path != source ? " or save one in the session (target.url)" : " (a capture or journal names none)")
+            << ", or --serve URL to be the device\n";
+        return ExitUsage;
+    }
+    const LinkUrl::Result parsed = LinkUrl::parse(url);
+    if (!parsed.url) {
+        err << "mbscope replay: " << (parser.isSet(targetOpt) ? QStringLiteral("--target") : QStringLiteral("%1: target.url").arg(source))
+            << ": " << parsed.error << '\n';
+        return ExitUsage;
+    }
+    if (parsed.url->delimited.enabled) {
+        err << "mbscope replay: " << url << ": a delimited link carries no Modbus framing to replay into\n";
+        return ExitUsage;
+    }
+    // The response timeout: --timeout when given (the same that pairs a capture), else the
+    // session's, else the URL's or the engine's default.
+    int timeoutMs = -1;
+    const bool timeoutGiven = arguments.contains(QStringLiteral("--timeout"))
+        || std::any_of(arguments.begin(), arguments.end(), [](const QString &a) { return a.startsWith(QLatin1String("--timeout=")); });
+    if (timeoutGiven)
+        timeoutMs = int(std::max<qint64>(1, options.timeoutNs / 1'000'000));
+    else if (sessionTarget.timeoutMs > 0)
+        timeoutMs = sessionTarget.timeoutMs;
+
+    const bool asJson = parser.isSet(jsonOpt);
+    if (!asJson) {
+        out << "replaying " << script.size() << " recorded requests of " << source << " to " << parsed.url->toString() << ", "
+            << (speed > 0 ? (speed == 1.0 ? QStringLiteral("at the recorded pacing") : QStringLiteral("%1 times faster").arg(speed))
+                          : QStringLiteral("back to back"))
+            << "\n\n";
+        out.flush();
+    }
+    ReplayRunner runner(script, *parsed.url, EngineOptions{}, timeoutMs);
+    runner.setSpeed(speed);
+    InterruptWatcher interrupt;
+    QObject::connect(&interrupt, &InterruptWatcher::interrupted, &interrupt, [&runner] { runner.stop(); });
+    QString linkProblem;
+    const ReplayResult result = runner.run([&](const ReplayOutcome &outcome) {
+        if (outcome.replayed.status == TransactionStatus::LinkError && linkProblem.isEmpty()) {
+            linkProblem = outcome.replayed.problem;
+            runner.stop();
+        }
+    });
+    if (asJson)
+        out << QJsonDocument(result.toJson(script)).toJson(QJsonDocument::Indented);
+    else
+        out << result.summary(script);
+    out.flush();
+    if (!linkProblem.isEmpty()) {
+        err << "mbscope replay: " << parsed.url->toString() << ": " << linkProblem << '\n';
+        return ExitLinkError;
+    }
+    if (result.interrupted)
+        return ExitFailure;
+    return result.allMatched() ? ExitOk : ExitFailure;
+}
+
+} // namespace mbscope::app

@@ -1,0 +1,75 @@
+#include "replayserve.h"
+
+#include "commands.h"
+#include "interruptwatcher.h"
+
+#include "replay/replayscript.h"
+#include "sim/simendpoint.h"
+#include "sim/simulator.h"
+
+#include <QtCore/QEventLoop>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
+#include <QtCore/QTextStream>
+#include <QtCore/QTimer>
+
+#include <chrono>
+
+namespace mbscope::app {
+
+int serveReplay(const ReplayScript &script, const QString &source, const ReplayServeOptions &options, QTextStream &out,
+                QTextStream &err)
+{
+    Simulator sim;
+    ReplayResponder responder(script, options.unrecorded, options.speed);
+    responder.install(sim);
+    QString error;
+    SimEndpoint *endpoint = sim.listen(options.url, responder.endpointOptions(), &error);
+    if (!endpoint) {
+        err << "mbscope replay: --serve " << options.url << ": " << error << '\n';
+        return ExitUsage;
+    }
+    const QString bound = endpoint->name();
+    QStringList units;
+    for (quint8 id : script.unitIds())
+        units.append(QString::number(id));
+    if (!options.json) {
+        out << "serving " << script.size() << " recorded answers of " << source << " (" << responder.distinctRequests()
+            << " distinct requests, units " << units.join(QStringLiteral(", ")) << ")\n"
+            << "latency       "
+            << (options.speed > 0 ? QStringLiteral("as recorded%1").arg(options.speed == 1.0 ? QString() : QStringLiteral(" / %1").arg(options.speed))
+                                  : QStringLiteral("none (--speed max)"))
+            << "\nnot recorded  " << ReplayResponder::policyText(options.unrecorded) << '\n'
+            << "listening " << bound << '\n';
+        out.flush();
+    }
+
+    QEventLoop loop;
+    InterruptWatcher interrupt;
+    bool interrupted = false;
+    QObject::connect(&interrupt, &InterruptWatcher::interrupted, &loop, [&] {
+        interrupted = true;
+        loop.quit();
+    });
+    if (options.durationMs > 0)
+        QTimer::singleShot(std::chrono::milliseconds(options.durationMs), &loop, &QEventLoop::quit);
+    loop.exec();
+    sim.closeAll();
+    sim.setFaultHook({});
+
+    const ReplayResponder::Counters &c = responder.counters();
+    if (options.json) {
+        out << QJsonDocument(QJsonObject{{QStringLiteral("listening"), bound},
+                                         {QStringLiteral("served"), double(c.served)},
+                                         {QStringLiteral("silences"), double(c.silences)},
+                                         {QStringLiteral("unrecorded"), double(c.unrecorded)},
+                                         {QStringLiteral("interrupted"), interrupted}})
+                   .toJson(QJsonDocument::Indented);
+    } else {
+        out << (interrupted ? "interrupted: " : "stopped: ") << c.served << " recorded answers served, " << c.silences
+            << " recorded silences kept, " << c.unrecorded << " requests never recorded\n";
+    }
+    return ExitOk;
+}
+
+} // namespace mbscope::app

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "engine/statistics.h"
+#include "replay/replayoutcome.h"
+
+#include <QtCore/QJsonObject>
+#include <QtCore/QList>
+#include <QtCore/QString>
+
+namespace mbscope {
+
+class ReplayScript;
+
+// What a replay against a live target found: every outcome, the counts by verdict, and the
+// latency figures recorded and now (Statistics over the recorded and the replayed transactions).
+struct ReplayResult {
+    QString target;
+    QList<ReplayOutcome> outcomes;
+    Statistics recorded;
+    Statistics replayed;
+    bool interrupted = false;
+    qint64 elapsedNs = 0;
+
+    [[nodiscard]] qsizetype count(AnswerComparison::Verdict verdict) const;
+    [[nodiscard]] qsizetype differed() const { return outcomes.size() - count(AnswerComparison::Verdict::Match); }
+    [[nodiscard]] bool allMatched() const { return !interrupted && differed() == 0; }
+
+    // "latency ms    recorded median 4.012  p95 7.901   now median 0.310  p95 0.522   (median -92.3 %)"
+    [[nodiscard]] QString latencyLine() const;
+    // The differences (each with its request number and the request's unit and function), then
+    // the counts and the latency line; at most maxListed outcomes are listed in full.
+    [[nodiscard]] QString summary(const ReplayScript &script, int maxListed = 50) const;
+    // {"target","replayed","matched","values_differ","outcome_differs","missing_answers",
+    //  "interrupted","elapsed_ms","differences":[{"request","sent","function","verdict","differences":[...]}],
+    //  "latency_us":{"recorded":{median,p95,...},"replayed":{...}}}
+    [[nodiscard]] QJsonObject toJson(const ReplayScript &script) const;
+};
+
+} // namespace mbscope

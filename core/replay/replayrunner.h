@@ -1,0 +1,60 @@
+#pragma once
+
+#include "engine/engineoptions.h"
+#include "replay/replayresult.h"
+#include "transport/linkurl.h"
+
+#include <QtCore/QByteArray>
+
+#include <functional>
+#include <memory>
+
+class QEventLoop;
+
+namespace mbscope {
+
+class ReplayScript;
+class TransactionEngine;
+
+// Re-sends a ReplayScript's requests to a live target through the TransactionEngine, one at a
+// time, at the recorded pacing (each request at its recorded offset from the first, divided by
+// the speed factor; speed 0 sends back to back), and compares each answer with the recorded
+// one (AnswerComparison). A request whose answer takes longer than the recorded interval delays
+// the ones after it: replay never sends two requests at once, as the recording did not.
+//
+// Requests recorded in the target's framing are sent byte for byte; in another framing they are
+// re-framed from their unit and PDU (MBAP transaction ids 1, 2, 3...).
+// Runs a local event loop: call from a thread with none running (the CLI's main thread).
+class ReplayRunner
+{
+public:
+    using Observer = std::function<void(const ReplayOutcome &outcome)>;
+
+    ReplayRunner(const ReplayScript &script, const LinkUrl &target, const EngineOptions &options = {},
+                 int timeoutMs = -1);
+    ~ReplayRunner();
+    ReplayRunner(const ReplayRunner &) = delete;
+    ReplayRunner &operator=(const ReplayRunner &) = delete;
+
+    // 1: recorded pacing; 10: ten times faster; 0: no waiting at all.
+    void setSpeed(double speed) { m_speed = speed; }
+    [[nodiscard]] ReplayResult run(const Observer &observer = {});
+    // From a Ctrl-C handler's event: stops after the request in flight.
+    void stop();
+
+    // The bytes that carry exchange index of the script on a link with the given framing.
+    [[nodiscard]] static QByteArray wireBytes(const ReplayScript &script, qsizetype index, Framing framing);
+
+private:
+    void waitUntil(qint64 dueNs);
+
+    const ReplayScript &m_script;
+    LinkUrl m_target;
+    int m_timeoutMs;
+    double m_speed = 1.0;
+    bool m_stopped = false;
+    QEventLoop *m_waitLoop = nullptr;
+    std::unique_ptr<TransactionEngine> m_engine;
+};
+
+} // namespace mbscope
