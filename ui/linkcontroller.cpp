@@ -2,6 +2,7 @@
 
 #include "engine/pollsettings.h"
 #include "engine/requestitem.h"
+#include "engine/statistics.h"
 #include "engine/transactionengine.h"
 
 namespace mbscope {
@@ -101,6 +102,41 @@ void LinkController::stopPoll()
     if (!m_engine || !m_polling)
         return;
     m_engine->stop();
+}
+
+QString LinkController::describe(const PollReport &report)
+{
+    quint64 count = 0;
+    quint64 ok = 0;
+    quint64 failed = 0;
+    qint64 minNs = 0;
+    qint64 maxNs = 0;
+    double weightedMeanNs = 0;
+    qint64 answered = 0;
+    for (const PollRun &run : report.runs) {
+        const Statistics &s = run.statistics.overall();
+        count += s.count();
+        ok += s.ok();
+        failed += s.failed();
+        const LatencySamples &latency = s.latency();
+        if (latency.isEmpty())
+            continue;
+        minNs = answered == 0 ? latency.minNs() : qMin(minNs, latency.minNs());
+        maxNs = qMax(maxNs, latency.maxNs());
+        weightedMeanNs += latency.meanNs() * double(latency.count());
+        answered += latency.count();
+    }
+    QString text = tr("Poll %1: %2 transactions, %3 ok, %4 failed")
+                       .arg(report.stopped ? tr("stopped") : tr("finished"))
+                       .arg(count)
+                       .arg(ok)
+                       .arg(failed);
+    if (answered > 0)
+        text += tr("; latency min %1 ms, mean %2 ms, max %3 ms")
+                    .arg(double(minNs) / 1e6, 0, 'f', 2)
+                    .arg(weightedMeanNs / double(answered) / 1e6, 0, 'f', 2)
+                    .arg(double(maxNs) / 1e6, 0, 'f', 2);
+    return text;
 }
 
 void LinkController::onTransactions(const QList<Transaction> &transactions)

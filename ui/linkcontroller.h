@@ -54,6 +54,10 @@ public:
     bool startPoll(const QByteArray &bytes, int intervalMs, quint64 count);
     void stopPoll();
 
+    // One line for the status bar: "Poll finished: 20 transactions, 20 ok, 0 failed; latency min
+    // 1.21 ms, mean 4.05 ms, max 11.80 ms".
+    [[nodiscard]] static QString describe(const PollReport &report);
+
 Q_SIGNALS:
     void stateChanged(mbscope::LinkController::State state, const QString &message);
     // Every transaction, in batches as the engine delivers them (at most ~30 a second).

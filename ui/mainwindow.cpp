@@ -121,10 +121,7 @@ void MainWindow::connectPanels()
     });
     connect(link, &LinkController::pollFinished, this, [this](const PollReport &report) {
         m_answerView->flush();
-        quint64 count = 0;
-        for (const PollRun &run : report.runs)
-            count += run.cycles;
-        statusBar()->showMessage(tr("Poll %1 after %2 cycles").arg(report.stopped ? tr("stopped") : tr("finished")).arg(count), 5000);
+        statusBar()->showMessage(LinkController::describe(report), 15000);
     });
 
     connect(m_composer, &RequestComposer::sendRequested, this, [this](const QByteArray &bytes) {
@@ -212,6 +209,7 @@ bool MainWindow::startWithSimulator(const QString &url)
     const SavedRequest read = SavedRequests::rosRaoRead();
     m_composer->rawEditor()->setText(read.hex);
     m_composer->showRawTab();
+    m_composer->rawEditor()->editor()->setFocus();
     if (const std::optional<LinkUrl> target = m_connectionBar->url())
         m_controller->connectTo(*target);
     if (const UnitProfile *unit = m_simulator->profile().unit(1))

@@ -24,6 +24,7 @@
 #include <QtWidgets/QPlainTextEdit>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
+#include <QtWidgets/QStatusBar>
 #include <QtWidgets/QTabWidget>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QtTest>
@@ -218,6 +219,9 @@ void TestWorkbench::pollCountsAndStops()
     QVERIFY(window.answerView()->shown().has_value());
     QVERIFY(window.answerView()->shown()->isOk());
     QVERIFY(window.composer()->sendAction()->isEnabled());
+    const QString summary = window.statusBar()->currentMessage();
+    QVERIFY2(summary.contains(QLatin1String("Poll finished: 20 transactions, 20 ok")), qPrintable(summary));
+    QVERIFY2(summary.contains(QLatin1String("latency min")), qPrintable(summary));
 }
 
 QTEST_MAIN(TestWorkbench)
