@@ -31,8 +31,13 @@
 // pleases); on one core every client pays the same context switches, so the rows compare.
 // --no-pin leaves placement to the scheduler.
 //
+// Rounds: with --rounds R every client runs R times count/R transactions, the clients taking turns
+// (raw, libmodbus, engine rows, raw, libmodbus, ...), and each row adds up its rounds. On a machine
+// shared with other work the load then falls on every row alike instead of on whichever row ran
+// during a busy second.
+//
 //   bench_poll [--count N] [--warmup N] [--quantity Q] [--cpu C | --no-pin] [--pipeline 4,8]
-//              [--server one|batch|both]
+//              [--server one|batch|both] [--rounds R]
 //
 // scripts/bench-poll.sh builds a Release tree and runs it.
 #include "enginepoll.h"
@@ -41,6 +46,9 @@
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QStringList>
+
+#include <functional>
+#include <vector>
 
 #include <sched.h>
 #include <cerrno>
@@ -60,6 +68,7 @@ struct Options {
     QList<int> pipelines{4, 8};
     bool oneByOne = true; // libmodbus_server tcp
     bool batch = true;    // libmodbus_server tcp --batch
+    int rounds = 1;
 };
 
 bool parse(const QStringList &args, Options *o)
@@ -78,6 +87,8 @@ bool parse(const QStringList &args, Options *o)
             o->plan.count = v.toLongLong(&ok);
         else if (a == QLatin1String("--warmup"))
             o->plan.warmup = v.toLongLong(&ok);
+        else if (a == QLatin1String("--rounds"))
+            o->rounds = v.toInt(&ok);
         else if (a == QLatin1String("--quantity"))
             o->plan.quantity = v.toInt(&ok);
         else if (a == QLatin1String("--server")) {
@@ -98,7 +109,7 @@ bool parse(const QStringList &args, Options *o)
         if (!ok)
             return false;
     }
-    return o->plan.count > 0 && o->plan.warmup >= 0 && o->plan.quantity >= 1 && o->plan.quantity <= 125;
+    return o->plan.count > 0 && o->rounds >= 1 && o->rounds <= o->plan.count && o->plan.warmup >= 0 && o->plan.quantity >= 1 && o->plan.quantity <= 125;
 }
 
 bool pinTo(int cpu)
@@ -131,37 +142,47 @@ bool runTable(const Options &options, const QStringList &serverArgs, const char 
     plan.port = server.port();
 
     std::printf("\nserver: libmodbus_server %s on %s (%s); Read Holding Registers x %d; %lld transactions per "
-                "client after %lld warm-up; %s\n",
+                "client in %d round(s), %lld warm-up before each; %s\n",
                 qPrintable(serverArgs.join(QLatin1Char(' '))), qPrintable(server.where()), serverNote, plan.quantity,
-                plan.count, plan.warmup,
+                plan.count / options.rounds * options.rounds, options.rounds, plan.warmup,
                 options.pin ? qPrintable(QStringLiteral("server and clients pinned to CPU %1").arg(options.cpu))
                             : "unpinned");
     std::printf("%-34s %10s %8s %8s %8s %9s %7s %9s   %s\n", "client", "tx/s", "p50 us", "p90 us", "p99 us",
                 "max us", "errors", "vs lmb", "note");
 
-    PollFigures raw = pollRawSocket(plan);
-    PollFigures libmodbus = pollLibmodbus(plan);
-    const double baseline = libmodbus.perSecond();
-    printRow(raw, baseline);
-    printRow(libmodbus, baseline);
+    // The rows, in the order they take turns: raw, libmodbus, the engine sequential (logged, then
+    // unlogged: what logging every frame costs), then pipelined.
+    std::vector<std::function<PollFigures(const PollPlan &)>> clients;
+    clients.emplace_back(pollRawSocket);
+    clients.emplace_back(pollLibmodbus);
+    auto engineRow = [](bool logTraffic, int depth) {
+        return [logTraffic, depth](const PollPlan &roundPlan) {
+            EnginePollSettings engine;
+            engine.plan = roundPlan;
+            engine.logTraffic = logTraffic;
+            engine.pipelineDepth = depth;
+            return pollEngine(engine);
+        };
+    };
+    clients.emplace_back(engineRow(true, 1));
+    if (unloggedRow)
+        clients.emplace_back(engineRow(false, 1));
+    for (int depth : options.pipelines)
+        clients.emplace_back(engineRow(true, depth));
 
-    EnginePollSettings engine;
-    engine.plan = plan;
-    engine.logTraffic = true;
-    PollFigures sequential = pollEngine(engine);
-    printRow(sequential, baseline);
-    if (unloggedRow) {
-        engine.logTraffic = false; // what logging every frame costs
-        PollFigures unlogged = pollEngine(engine);
-        printRow(unlogged, baseline);
-        engine.logTraffic = true;
+    std::vector<PollFigures> rows(clients.size());
+    PollPlan roundPlan = plan;
+    roundPlan.count = plan.count / options.rounds;
+    for (int round = 0; round < options.rounds; ++round) {
+        for (size_t i = 0; i < clients.size(); ++i)
+            rows[i].absorb(clients[i](roundPlan));
     }
-    for (int depth : options.pipelines) {
-        engine.pipelineDepth = depth;
-        PollFigures pipelined = pollEngine(engine);
-        printRow(pipelined, baseline);
-    }
-    return !raw.errors && !libmodbus.errors && !sequential.errors;
+    if (options.rounds > 1)
+        std::printf("(notes are the first round's)\n");
+    const double baseline = rows[1].perSecond();
+    for (PollFigures &row : rows)
+        printRow(row, baseline);
+    return !rows[0].errors && !rows[1].errors && !rows[2].errors;
 }
 
 } // namespace
@@ -175,7 +196,7 @@ int main(int argc, char **argv)
             args.append(QString::fromLocal8Bit(argv[i]));
         if (!parse(args, &options)) {
             std::fprintf(stderr, "usage: bench_poll [--count N] [--warmup N] [--quantity Q] [--cpu C | --no-pin] "
-                                 "[--pipeline 4,8] [--server one|batch|both]\n");
+                                 "[--pipeline 4,8] [--server one|batch|both] [--rounds R]\n");
             return 2;
         }
     }

@@ -67,6 +67,18 @@ double PollFigures::percentileUs(double p)
     return double(latencyNs[size_t(rank - 1)]) / 1000.0;
 }
 
+void PollFigures::absorb(const PollFigures &round)
+{
+    if (client.isEmpty())
+        client = round.client;
+    if (note.isEmpty())
+        note = round.note;
+    transactions += round.transactions;
+    errors += round.errors;
+    seconds += round.seconds;
+    latencyNs.insert(latencyNs.end(), round.latencyNs.begin(), round.latencyNs.end());
+}
+
 bool registersMatchDataMap(const unsigned short *values, int quantity)
 {
     for (int a = 0; a < quantity; ++a) {

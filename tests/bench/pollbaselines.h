@@ -17,6 +17,8 @@ struct PollFigures {
     std::vector<long long> latencyNs; // successful transactions only
 
     [[nodiscard]] double perSecond() const { return seconds > 0.0 ? double(transactions) / seconds : 0.0; }
+    // Adds one round of the same client (transactions, errors, time and latencies add up).
+    void absorb(const PollFigures &round);
     // Nearest-rank percentile in microseconds (p in 0..100); sorts latencyNs on first use.
     [[nodiscard]] double percentileUs(double p);
 };
