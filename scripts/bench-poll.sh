@@ -5,7 +5,11 @@
 # engine's thread to one CPU (sched_setaffinity, inherited by the server it starts): see the
 # comment at the top of tests/bench/bench_poll.cpp.
 #
-#   scripts/bench-poll.sh [bench_poll options...]    e.g. --count 50000 --pipeline 2,4,8,16
+# Two tables: against libmodbus_server tcp (one request per read) and libmodbus_server tcp --batch
+# (every request of a read answered, the answers corked into one segment: the server for the
+# pipelined figures). On a machine shared with other work, --rounds 5 makes the clients take turns.
+#
+#   scripts/bench-poll.sh [bench_poll options...]    e.g. --count 50000 --pipeline 2,4,8,16 --rounds 5
 #
 # Environment: MBSCOPE_BENCH_BUILD_DIR (default build-bench), MBSCOPE_BENCH_CPU (default 1),
 # MBSCOPE_BENCH_JOBS (default 2).
