@@ -125,7 +125,8 @@ void TestWorkbench::typedRequestIsAnsweredAndDecoded()
 
     // The status bar counted the bytes.
     QTRY_VERIFY_WITH_TIMEOUT(window.linkStatus()->countersText().contains(QLatin1String("TX 8 B")), kAnswerWaitMs);
-    QVERIFY2(window.linkStatus()->countersText().contains(QLatin1String("RX 49 B")), qPrintable(window.linkStatus()->countersText()));
+    QTRY_VERIFY2_WITH_TIMEOUT(window.linkStatus()->countersText().contains(QLatin1String("RX 49 B")),
+                              qPrintable(window.linkStatus()->countersText()), kAnswerWaitMs);
     QVERIFY(window.linkStatus()->stateText().contains(QLatin1String("Connected")));
 
     // The traffic list has the exchange; the register table shows the 22 values with the profile's names.
