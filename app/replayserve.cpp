@@ -66,8 +66,12 @@ int serveReplay(const ReplayScript &script, const QString &source, const ReplayS
                                          {QStringLiteral("interrupted"), interrupted}})
                    .toJson(QJsonDocument::Indented);
     } else {
-        out << (interrupted ? "interrupted: " : "stopped: ") << c.served << " recorded answers served, " << c.silences
-            << " recorded silences kept, " << c.unrecorded << " requests never recorded\n";
+        const auto counted = [](quint64 n, const char *one, const char *many) {
+            return QStringLiteral("%1 %2").arg(n).arg(QLatin1String(n == 1 ? one : many));
+        };
+        out << (interrupted ? "interrupted: " : "stopped: ") << counted(c.served, "recorded answer", "recorded answers") << " served, "
+            << counted(c.silences, "recorded silence", "recorded silences") << " kept, "
+            << counted(c.unrecorded, "request", "requests") << " never recorded\n";
     }
     return ExitOk;
 }

@@ -1,0 +1,301 @@
+// mbscope replay as users run it: a recording made by the engine polling `mbscope simulate
+// --profile rosrao-gamma` (RTU over TCP) is replayed against the same simulator (every answer
+// matches), against one whose profile was changed (differences by field key, exit 1), and
+// served by `mbscope replay --serve` then read back with mbscope read, pymodbus and replay itself.
+
+#include "clitest.h"
+
+#include "engine/requestitem.h"
+#include "engine/trafficlog.h"
+#include "engine/transactionengine.h"
+#include "protocol/adubuilder.h"
+#include "transport/linkurl.h"
+
+#include <QtCore/QFile>
+#include <QtCore/QJsonArray>
+#include <QtCore/QProcess>
+#include <QtCore/QTemporaryDir>
+#include <QtCore/QThread>
+#include <QtTest/QTest>
+
+#include <csignal>
+#include <memory>
+
+using namespace mbscope;
+using namespace mbscope::testcli;
+
+namespace {
+
+// A long-running mbscope subcommand (simulate, replay --serve): started, its "listening URL"
+// line read, stopped with SIGINT as Ctrl-C stops it.
+class Background
+{
+public:
+    ~Background() { stop(); }
+    bool start(const QStringList &arguments, QString *error)
+    {
+        m_process = std::make_unique<QProcess>();
+        m_process->start(mbscopePath(), arguments);
+        if (!m_process->waitForStarted(30000)) {
+            *error = QStringLiteral("cannot start mbscope: ") + m_process->errorString();
+            return false;
+        }
+        QByteArray seen;
+        while (m_process->waitForReadyRead(30000)) {
+            seen += m_process->readAllStandardOutput();
+            const qsizetype at = seen.indexOf("listening ");
+            const qsizetype end = at < 0 ? -1 : seen.indexOf('\n', at);
+            if (end > at) {
+                m_url = QString::fromUtf8(seen.mid(at + 10, end - at - 10)).section(QLatin1Char(' '), 0, 0);
+                m_out = seen;
+                return true;
+            }
+        }
+        *error = QStringLiteral("no 'listening' line from mbscope %1: %2 %3")
+                     .arg(arguments.join(QLatin1Char(' ')), QString::fromUtf8(seen), QString::fromUtf8(m_process->readAllStandardError()));
+        return false;
+    }
+    [[nodiscard]] QString url() const { return m_url; }
+    // The whole output once stopped.
+    QByteArray stop()
+    {
+        if (m_process && m_process->state() != QProcess::NotRunning) {
+            ::kill(pid_t(m_process->processId()), SIGINT);
+            if (!m_process->waitForFinished(10000))
+                m_process->kill();
+            m_out += m_process->readAllStandardOutput();
+        }
+        return m_out;
+    }
+
+private:
+    std::unique_ptr<QProcess> m_process;
+    QString m_url;
+    QByteArray m_out;
+};
+
+QByteArray pdu(const char *hex)
+{
+    return QByteArray::fromHex(hex);
+}
+
+} // namespace
+
+class TestCliReplay : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void replayMatchesTheSameDevice();
+    void replayAtRecordedPacing();
+    void replayReportsChangedValues();
+    void replayReportsLinkAndUsageErrors();
+    void serveAnswersWithTheRecording();
+    void serveToPymodbus();
+
+private:
+    [[nodiscard]] bool record(const QString &target, QString *error);
+
+    QTemporaryDir m_dir;
+    Background m_sim;
+    QString m_journal;
+    QString m_session;
+    int m_requests = 0;
+};
+
+// Polls the simulator with the engine, its traffic journaled: reads of the settings of units 1
+// and 3 (the same request three times), a write of the value already there, a read of a
+// register the device does not have (exception 02) and a unit nobody has (exception 0B).
+bool TestCliReplay::record(const QString &target, QString *error)
+{
+    const LinkUrl::Result parsed = LinkUrl::parse(target);
+    if (!parsed.url) {
+        *error = parsed.error;
+        return false;
+    }
+    const QList<QPair<quint8, QByteArray>> requests = {
+        {1, pdu("0300790016")}, {3, pdu("030079000d")}, {1, pdu("0300790016")}, {1, pdu("06007d00fa")},
+        {1, pdu("0302000001")}, {7, pdu("0300790001")}, {1, pdu("0300790016")},
+    };
+    TrafficLog log;
+    if (!log.openJournal(m_journal, {}, true, error))
+        return false;
+    TransactionEngine engine;
+    engine.setTarget(*parsed.url);
+    engine.setTrafficLog(&log);
+    for (const auto &[unit, request] : requests) {
+        RequestItem item = RequestItem::forLink(AduBuilder::rtu(request, unit), *parsed.url);
+        item.timeoutMs = 300;
+        if (!engine.sendAndWait(item)) {
+            *error = QStringLiteral("the engine did not finish a request");
+            return false;
+        }
+        QThread::msleep(20); // a recorded pacing to replay
+        ++m_requests;
+    }
+    engine.closeLink();
+    engine.setTrafficLog(nullptr);
+    log.closeJournal();
+    QFile session(m_session);
+    if (!session.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+        *error = session.errorString();
+        return false;
+    }
+    session.write(QStringLiteral(R"({"format": "mbscope-session", "version": 1, "name": "recorded",
+  "target": {"url": "%1", "timeoutMs": 300}, "capture": {"journal": "recorded.mbscope.journal"}})")
+                      .arg(target)
+                      .toUtf8());
+    return true;
+}
+
+void TestCliReplay::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    m_journal = m_dir.filePath(QStringLiteral("recorded.mbscope.journal"));
+    m_session = m_dir.filePath(QStringLiteral("recorded.mbscope.json"));
+    QString error;
+    QVERIFY2(m_sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                          QStringLiteral("rtu-tcp://127.0.0.1:0")},
+                         &error),
+             qPrintable(error));
+    QVERIFY2(record(m_sim.url(), &error), qPrintable(error));
+}
+
+void TestCliReplay::replayMatchesTheSameDevice()
+{
+    // The session's own target; the live gate counts (0x0086) are outside what was read.
+    const CliResult r = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--speed"), QStringLiteral("max"), QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("replayed")).toInt(), m_requests);
+    QCOMPARE(o.value(QStringLiteral("matched")).toInt(), m_requests);
+    QCOMPARE(o.value(QStringLiteral("differences")).toArray().size(), 0);
+    const QJsonObject latency = o.value(QStringLiteral("latency_us")).toObject();
+    // Every request answered, exceptions included (unit 7: 0B from the simulator's gateway).
+    QCOMPARE(latency.value(QStringLiteral("recorded")).toObject().value(QStringLiteral("count")).toInt(), m_requests);
+    QCOMPARE(latency.value(QStringLiteral("replayed")).toObject().value(QStringLiteral("count")).toInt(), m_requests);
+}
+
+void TestCliReplay::replayAtRecordedPacing()
+{
+    const CliResult r = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--target"), m_sim.url()});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    const QString text = r.outText();
+    QVERIFY2(text.contains(QStringLiteral("at the recorded pacing")), r.describe().constData());
+    QVERIFY2(text.contains(QStringLiteral("matched       %1").arg(m_requests)), r.describe().constData());
+    QVERIFY2(text.contains(QStringLiteral("latency ms    recorded median")), r.describe().constData());
+    // Requests go out no earlier than their recorded offsets: at least the 20 ms gaps recorded.
+    const CliResult j = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--target"), m_sim.url(), QStringLiteral("--json")});
+    QVERIFY2(j.json().value(QStringLiteral("elapsed_ms")).toDouble() >= 20.0 * (m_requests - 1), j.describe().constData());
+}
+
+void TestCliReplay::replayReportsChangedValues()
+{
+    // The profile with one published value changed: 250 at 0x007D becomes 251.
+    QFile shipped(QStringLiteral(MBSCOPE_TEST_DATA_DIR "/../../resources/profiles/rosrao-gamma.json"));
+    QVERIFY(shipped.open(QIODevice::ReadOnly));
+    QByteArray profile = shipped.readAll();
+    QVERIFY(profile.contains("[1050, 0, 0, 0, 250,"));
+    profile.replace("[1050, 0, 0, 0, 250,", "[1050, 0, 0, 0, 251,");
+    const QString changed = m_dir.filePath(QStringLiteral("changed.json"));
+    QFile out(changed);
+    QVERIFY(out.open(QIODevice::WriteOnly));
+    out.write(profile);
+    out.close();
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), changed, QStringLiteral("--listen"), QStringLiteral("rtu-tcp://127.0.0.1:0")}, &error),
+             qPrintable(error));
+
+    const CliResult r = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--target"), sim.url(), QStringLiteral("--speed"), QStringLiteral("10")});
+    QVERIFY2(r.finished && r.exitCode == 1, r.describe().constData());
+    const QString text = r.outText();
+    // Unit 1's three reads differ (unit 3's profile kept 250), each by that one field.
+    QCOMPARE(text.count(QStringLiteral("modbus.register_value@0x007D: recorded 250, now 251")), 3);
+    QVERIFY2(text.contains(QStringLiteral("#1 unit 1 Read Holding Registers 03 00 79 00 16: values differ")), r.describe().constData());
+    QVERIFY2(text.contains(QStringLiteral("differed      3  (values 3, outcome 0, missing answers 0)")), r.describe().constData());
+    QVERIFY2(!text.contains(QStringLiteral("@0x007E")), r.describe().constData());
+    // The write echoes its request, which did not change: it matches.
+    QVERIFY2(!text.contains(QStringLiteral("#4 ")), r.describe().constData());
+}
+
+void TestCliReplay::replayReportsLinkAndUsageErrors()
+{
+    const QString closed = QStringLiteral("rtu-tcp://127.0.0.1:%1").arg(closedPort());
+    const CliResult refused = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--target"), closed, QStringLiteral("--speed"), QStringLiteral("max")});
+    QVERIFY2(refused.finished && refused.exitCode == 2, refused.describe().constData());
+    QVERIFY2(refused.errText().contains(QStringLiteral("127.0.0.1")), refused.describe().constData());
+
+    const CliResult noTarget = runMbscope({QStringLiteral("replay"), m_journal});
+    QVERIFY2(noTarget.exitCode == 2 && noTarget.errText().contains(QStringLiteral("no target: give --target URL")), noTarget.describe().constData());
+    const CliResult badSpeed = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--speed"), QStringLiteral("fast")});
+    QVERIFY2(badSpeed.exitCode == 2 && badSpeed.errText().contains(QStringLiteral("--speed 'fast' is not a speed")), badSpeed.describe().constData());
+    const CliResult missing = runMbscope({QStringLiteral("replay"), m_dir.filePath(QStringLiteral("none.pcapng"))});
+    QVERIFY2(missing.exitCode == 2 && missing.errText().contains(QStringLiteral("no such file")), missing.describe().constData());
+}
+
+void TestCliReplay::serveAnswersWithTheRecording()
+{
+    // The RTU-over-TCP recording served over Modbus TCP: answers re-framed, matched by unit and PDU.
+    Background served;
+    QString error;
+    QVERIFY2(served.start({QStringLiteral("replay"), m_session, QStringLiteral("--serve"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--speed"), QStringLiteral("max")},
+                          &error),
+             qPrintable(error));
+    QVERIFY2(served.url().startsWith(QStringLiteral("tcp://127.0.0.1:")), qPrintable(served.url()));
+
+    const CliResult read = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), served.url(), QStringLiteral("--unit"), QStringLiteral("1"),
+                                       QStringLiteral("--address"), QStringLiteral("0x79"), QStringLiteral("--quantity"), QStringLiteral("22"), QStringLiteral("--json")});
+    QVERIFY2(read.finished && read.exitCode == 0, read.describe().constData());
+    QVERIFY2(read.outText().contains(QStringLiteral("1050")) && read.outText().contains(QStringLiteral("8000")), read.describe().constData());
+
+    // A request never recorded: exception 0B, as the startup line says.
+    const CliResult unrecorded = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), served.url(), QStringLiteral("--address"), QStringLiteral("0x80")});
+    QVERIFY2(unrecorded.exitCode == 1 && unrecorded.outText().contains(QStringLiteral("0x0B")), unrecorded.describe().constData());
+
+    // Replaying the recording against its own stand-in: every answer (and the silence) matches.
+    const CliResult replay = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--target"), served.url(), QStringLiteral("--speed"), QStringLiteral("max"),
+                                         QStringLiteral("--timeout"), QStringLiteral("300ms"), QStringLiteral("--json")});
+    QVERIFY2(replay.finished && replay.exitCode == 0, replay.describe().constData());
+    QCOMPARE(replay.json().value(QStringLiteral("matched")).toInt(), m_requests);
+
+    const QString output = QString::fromUtf8(served.stop());
+    QVERIFY2(output.contains(QStringLiteral("not recorded  exception 0B")), qPrintable(output));
+    QVERIFY2(output.contains(QStringLiteral("1 request never recorded")), qPrintable(output));
+}
+
+void TestCliReplay::serveToPymodbus()
+{
+    QProcess probe;
+    probe.start(QStringLiteral("/usr/bin/python3"), {QStringLiteral("-c"), QStringLiteral("import pymodbus")});
+    if (!probe.waitForFinished(30000) || probe.exitCode() != 0)
+        QSKIP("pymodbus is missing: apt install python3-pymodbus (scripts/install-deps.sh --tests)");
+    Background served;
+    QString error;
+    QVERIFY2(served.start({QStringLiteral("replay"), m_journal, QStringLiteral("--serve"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--unrecorded"), QStringLiteral("ignore")},
+                          &error),
+             qPrintable(error));
+    const quint16 port = quint16(served.url().section(QLatin1Char(':'), -1).toUInt());
+    // Unit 3's settings were read once: each read gets that answer again (cycling through one).
+    const QString script = QStringLiteral(
+        "from pymodbus.client import ModbusTcpClient\n"
+        "c = ModbusTcpClient('127.0.0.1', port=%1, timeout=1, retries=0)\n"
+        "c.connect()\n"
+        "for _ in range(2):\n"
+        "    r = c.read_holding_registers(0x79, 13, slave=3)\n"
+        "    print(' '.join(str(v) for v in r.registers))\n"
+        "r = c.read_holding_registers(0x79, 12, slave=3)\n"
+        "print('unrecorded', 'error' if r.isError() else 'answered')\n"
+        "c.close()\n").arg(port);
+    QProcess client;
+    client.start(QStringLiteral("/usr/bin/python3"), {QStringLiteral("-c"), script});
+    QVERIFY(client.waitForFinished(60000));
+    const QString out = QString::fromUtf8(client.readAllStandardOutput());
+    const QString expected = QStringLiteral("1050 0 0 0 250 1 1000 10000 4 4 80 800 8000\n");
+    QVERIFY2(out.startsWith(expected + expected), qPrintable(out + QString::fromUtf8(client.readAllStandardError())));
+    QVERIFY2(out.contains(QStringLiteral("unrecorded error")), qPrintable(out));
+}
+
+QTEST_GUILESS_MAIN(TestCliReplay)
+#include "tst_cli_replay.moc"
