@@ -135,6 +135,25 @@ void MainWindow::connectPanels()
     connect(m_composer, &RequestComposer::stopPollRequested, link, &LinkController::stopPoll);
 }
 
+void MainWindow::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    if (!m_fitted) {
+        m_fitted = true;
+        fitPanelsToWindow();
+    }
+}
+
+// The composer needs about 450 px for its poll row; the answer gets the rest. The docks take a
+// bit over a quarter of the height: enough rows of traffic to follow a poll, the answer's two
+// trees keep most of it.
+void MainWindow::fitPanelsToWindow()
+{
+    const int composerWidth = qBound(420, width() / 3, 520);
+    m_splitter->setSizes({composerWidth, qMax(200, m_splitter->width() - composerWidth)});
+    resizeDocks({m_trafficDock}, {qBound(160, height() * 28 / 100, 320)}, Qt::Vertical);
+}
+
 void MainWindow::buildDocks()
 {
     setDockOptions(dockOptions() | QMainWindow::AllowTabbedDocks);
@@ -153,7 +172,6 @@ void MainWindow::buildDocks()
     addDockWidget(Qt::BottomDockWidgetArea, m_registersDock);
     tabifyDockWidget(m_trafficDock, m_registersDock);
     m_trafficDock->raise();
-    resizeDocks({m_trafficDock}, {260}, Qt::Vertical);
 }
 
 void MainWindow::connectDocks()

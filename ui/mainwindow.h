@@ -54,7 +54,11 @@ public:
     [[nodiscard]] TrafficMonitor *trafficMonitor() const { return m_traffic; }
     [[nodiscard]] RegisterTable *registerTable() const { return m_registers; }
 
+protected:
+    void showEvent(QShowEvent *event) override;
+
 private:
+    void fitPanelsToWindow();
     void buildUi();
     void buildDocks();
     void connectPanels();
@@ -78,6 +82,7 @@ private:
     RegisterTable *m_registers = nullptr;
     QDockWidget *m_trafficDock = nullptr;
     QDockWidget *m_registersDock = nullptr;
+    bool m_fitted = false; // panel proportions set on the first show, then left to the user
 };
 
 } // namespace mbscope
