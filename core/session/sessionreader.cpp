@@ -8,6 +8,7 @@
 
 #include <QtCore/QDir>
 #include <QtCore/QFile>
+#include <QtCore/QFileInfo>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
@@ -138,7 +139,21 @@ SessionLoadResult SessionReader::load(const QString &path)
                                                      .arg(file.size()).arg(kMaxFileBytes)));
         return result;
     }
-    return parse(file.readAll(), path);
+    result = parse(file.readAll(), path);
+    // A profile given by path is a file beside the document (or under it): it must be there.
+    // Names of shipped profiles are checked where they are used (core may run without them).
+    if (result.document && result.document->profile.kind == SessionProfile::Kind::Reference
+        && ProfileLoader::isPath(result.document->profile.reference)) {
+        const QString reference = result.document->profile.reference;
+        const QString resolved = QFileInfo(path).absoluteDir().absoluteFilePath(reference);
+        if (!QFileInfo::exists(resolved)) {
+            ProfileProblem p = fileProblem(path, QStringLiteral("no such profile file '%1' (a path is relative to the document's folder)").arg(reference));
+            p.path = QStringLiteral("profile");
+            result.problems.append(p);
+            result.document.reset();
+        }
+    }
+    return result;
 }
 
 SessionLoadResult SessionReader::parse(const QByteArray &json, const QString &source)
