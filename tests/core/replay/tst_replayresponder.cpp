@@ -1,0 +1,158 @@
+// ReplayResponder: the simulator answering with recorded answers, through its fault hook and
+// Simulator::handleFrame as an endpoint calls it (a recording over RTU served on Modbus TCP and
+// on RTU over TCP; frames built by AduBuilder).
+
+#include "capture/captureexchange.h"
+#include "protocol/adubuilder.h"
+#include "replay/replayresponder.h"
+#include "replay/replayscript.h"
+#include "sim/simendpoint.h"
+#include "sim/simulator.h"
+
+#include <QtTest/QTest>
+
+using namespace mbscope;
+
+namespace {
+
+CaptureExchange recorded(quint8 unit, const char *request, const char *answer, qint64 sentMs)
+{
+    CaptureExchange e;
+    e.framing = Framing::Rtu;
+    e.transaction.request = AduBuilder::rtu(QByteArray::fromHex(request), unit);
+    const QByteArray pdu = QByteArray::fromHex(answer);
+    e.transaction.sentNs = sentMs * 1'000'000;
+    if (pdu.isEmpty()) {
+        e.transaction.status = TransactionStatus::Timeout;
+    } else {
+        e.transaction.response = AduBuilder::rtu(pdu, unit);
+        e.transaction.status = (quint8(pdu.at(0)) & 0x80) ? TransactionStatus::Exception : TransactionStatus::Ok;
+        e.transaction.doneNs = e.transaction.sentNs + 4'000'000;
+    }
+    return e;
+}
+
+// The script: unit 1's read recorded three times with two values, a silence on unit 3.
+ReplayScript script()
+{
+    ReplayScript s;
+    s.add(recorded(1, "0300790001", "0302041a", 0));
+    s.add(recorded(1, "0300790001", "0302041b", 10));
+    s.add(recorded(3, "0300790001", "", 20));
+    s.add(recorded(1, "0300790001", "0302041c", 30));
+    s.add(recorded(1, "0302000001", "8302", 40));
+    return s;
+}
+
+} // namespace
+
+class TestReplayResponder : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void script();
+    void answers_data();
+    void answers();
+    void recordedLatencyBySpeed();
+};
+
+void TestReplayResponder::script()
+{
+    const ReplayScript s = ::script();
+    QCOMPARE(s.size(), 5);
+    QCOMPARE(s.unitIds(), (QList<quint8>{1, 3}));
+    QCOMPARE(s.exchanges().at(3).offsetNs, 30'000'000);
+    QCOMPARE(s.exchanges().at(2).requestPdu, QByteArray::fromHex("0300790001"));
+    QCOMPARE(s.recordedStatistics().count(), 5u);
+    QCOMPARE(s.recordedStatistics().timeouts(), 1u);
+}
+
+void TestReplayResponder::answers_data()
+{
+    QTest::addColumn<QString>("listen");
+    QTest::addColumn<int>("policy");
+    QTest::addColumn<quint8>("unit");
+    QTest::addColumn<QByteArray>("request");
+    // Answer PDUs in turn for the same request sent again and again ("" for silence).
+    QTest::addColumn<QList<QByteArray>>("answers");
+
+    const auto x = [](const char *hex) { return QByteArray::fromHex(hex); };
+    const int exception = int(ReplayResponder::Unrecorded::Exception0B);
+    const int ignore = int(ReplayResponder::Unrecorded::Ignore);
+    QTest::newRow("tcp: recorded answers in turn, cycling")
+        << QStringLiteral("tcp://127.0.0.1:0") << exception << quint8(1) << x("0300790001")
+        << QList<QByteArray>{x("0302041a"), x("0302041b"), x("0302041c"), x("0302041a")};
+    QTest::newRow("rtu-tcp: recorded answers in turn")
+        << QStringLiteral("rtu-tcp://127.0.0.1:0") << exception << quint8(1) << x("0300790001")
+        << QList<QByteArray>{x("0302041a"), x("0302041b")};
+    QTest::newRow("recorded exception") << QStringLiteral("tcp://127.0.0.1:0") << exception << quint8(1) << x("0302000001")
+                                        << QList<QByteArray>{x("8302"), x("8302")};
+    QTest::newRow("recorded silence") << QStringLiteral("tcp://127.0.0.1:0") << exception << quint8(3) << x("0300790001")
+                                      << QList<QByteArray>{QByteArray(), QByteArray()};
+    QTest::newRow("never recorded: 0B") << QStringLiteral("tcp://127.0.0.1:0") << exception << quint8(1) << x("0300790002")
+                                        << QList<QByteArray>{x("830b")};
+    QTest::newRow("never recorded: ignored") << QStringLiteral("rtu-tcp://127.0.0.1:0") << ignore << quint8(1) << x("0300790002")
+                                             << QList<QByteArray>{QByteArray()};
+    QTest::newRow("unit never recorded: 0B") << QStringLiteral("tcp://127.0.0.1:0") << exception << quint8(9) << x("0300790001")
+                                             << QList<QByteArray>{x("830b")};
+    QTest::newRow("unit never recorded: ignored") << QStringLiteral("tcp://127.0.0.1:0") << ignore << quint8(9) << x("0300790001")
+                                                  << QList<QByteArray>{QByteArray()};
+}
+
+void TestReplayResponder::answers()
+{
+    QFETCH(QString, listen);
+    QFETCH(int, policy);
+    QFETCH(quint8, unit);
+    QFETCH(QByteArray, request);
+    QFETCH(QList<QByteArray>, answers);
+
+    const ReplayScript s = ::script();
+    ReplayResponder responder(s, ReplayResponder::Unrecorded(policy), 0);
+    Simulator sim;
+    responder.install(sim);
+    QString error;
+    SimEndpoint *endpoint = sim.listen(listen, responder.endpointOptions(), &error);
+    QVERIFY2(endpoint, qPrintable(error));
+    const Framing framing = endpoint->framing();
+    quint16 transactionId = 0x1200;
+    for (const QByteArray &expected : answers) {
+        AduOptions options;
+        options.framing = framing;
+        options.unitId = unit;
+        options.transactionId = ++transactionId;
+        const QByteArray adu = AduBuilder::complete(request, options);
+        const FaultPlan plan = sim.handleFrame(endpoint, adu, FrameStatus::Valid, QStringLiteral("test"), 0);
+        if (expected.isEmpty()) {
+            QVERIFY(plan.drop);
+            continue;
+        }
+        QVERIFY(!plan.drop);
+        QCOMPARE(plan.chunks.size(), 1);
+        // Framed for this endpoint, with the request's unit and transaction id; speed 0: at once.
+        QCOMPARE(plan.chunks.constFirst().bytes.toHex(' '), AduBuilder::complete(expected, options).toHex(' '));
+        QCOMPARE(plan.chunks.constFirst().delayNs, 0);
+    }
+}
+
+void TestReplayResponder::recordedLatencyBySpeed()
+{
+    // Recorded 4 ms; --speed 2 answers after 2 ms, --speed 1 after 4 ms.
+    const ReplayScript s = ::script();
+    for (const double speed : {1.0, 2.0}) {
+        ReplayResponder responder(s, ReplayResponder::Unrecorded::Exception0B, speed);
+        SimExchange exchange;
+        exchange.framing = Framing::Rtu;
+        exchange.unitId = 1;
+        exchange.requestPdu = QByteArray::fromHex("0300790001");
+        const FaultPlan plan = responder.answer(exchange);
+        QCOMPARE(plan.chunks.size(), 1);
+        QCOMPARE(plan.chunks.constFirst().delayNs, qint64(4'000'000 / speed));
+        QCOMPARE(plan.chunks.constFirst().bytes, AduBuilder::rtu(QByteArray::fromHex("0302041a"), 1));
+        QCOMPARE(responder.counters().served, 1u);
+    }
+}
+
+QTEST_GUILESS_MAIN(TestReplayResponder)
+#include "tst_replayresponder.moc"
