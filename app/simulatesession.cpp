@@ -121,11 +121,7 @@ void SimulateSession::stop()
 {
     m_summaryTimer.stop();
     m_driver.stop();
-    if (m_pending) {
-        const SimLogEntry entry = *m_pending;
-        m_pending.reset();
-        finish(entry, nullptr);
-    }
+    m_plan.reset();
     m_sim.closeAll();
     if (m_log.isOpen())
         m_log.close();
@@ -168,30 +164,22 @@ QString SimulateSession::summary() const
 
 void SimulateSession::onLogged(const SimLogEntry &entry)
 {
-    if (m_pending) {
-        // The hook did not run for the previous answer (it always does today): report it as built.
-        const SimLogEntry previous = *m_pending;
-        m_pending.reset();
-        finish(previous, nullptr);
-    }
-    if (!entry.response.isEmpty()) {
-        m_pending = entry; // the fault hook runs next and says what is sent
-        return;
-    }
-    finish(entry, nullptr);
+    // An entry with an answer is the request the fault hook has just seen (handleFrame calls the
+    // hook, then logs): its plan says what was really sent. Entries without an answer (silence,
+    // malformed frames, connection events) never went through the hook.
+    std::optional<FaultPlan> plan;
+    if (!entry.response.isEmpty())
+        plan.swap(m_plan);
+    m_plan.reset();
+    finish(entry, plan ? &*plan : nullptr);
 }
 
 FaultPlan SimulateSession::onExchange(const SimExchange &exchange)
 {
     const FaultContext context = FaultContext::forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu,
                                                           exchange.responseDelayNs);
-    const FaultPlan plan = m_injector.plan(context);
-    if (m_pending) {
-        const SimLogEntry entry = *m_pending;
-        m_pending.reset();
-        finish(entry, &plan);
-    }
-    return plan;
+    m_plan = m_injector.plan(context);
+    return *m_plan;
 }
 
 void SimulateSession::finish(const SimLogEntry &entry, const FaultPlan *plan)

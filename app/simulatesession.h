@@ -84,7 +84,9 @@ private:
     FaultInjector m_injector;
     GeneratorDriver m_driver;
     QList<SimUnit *> m_units;
-    std::optional<SimLogEntry> m_pending;
+    // The plan the fault hook made for the request being handled: Simulator::handleFrame asks
+    // the hook first, then logs the request with its answer.
+    std::optional<FaultPlan> m_plan;
     QHash<QString, Framing> m_framings;
     QFile m_log;
     QTimer m_summaryTimer;

@@ -50,8 +50,17 @@ int addressOf(int index)
 struct Observation {
     QList<bool> answered;  // by request index
     QList<double> latencyMs; // of the answered ones
-    int simulatorDropped = -1; // "N dropped by fault" in the simulator's summary
+    int simulatorRequests = -1; // "interrupted: N requests" in the simulator's summary
+    int simulatorDropped = -1;  // "N dropped by fault" in it
     QString error;
+
+    [[nodiscard]] int missing() const { return int(answered.count(false)); }
+    // Every request reached the simulator and every answer it sent came back: loopback UDP
+    // loses datagrams only when a receiver on a very busy machine falls behind.
+    [[nodiscard]] bool lossless() const
+    {
+        return simulatorRequests == int(answered.size()) && simulatorDropped == missing();
+    }
 };
 
 Observation observe(const QByteArray &faults)
@@ -92,7 +101,7 @@ Observation observe(const QByteArray &faults)
                 o.error = QStringLiteral("unexpected answer %1").arg(QString::fromLatin1(answer.toHex(' ')));
                 continue;
             }
-            QByteArray expected = QByteArray::fromHex("0000000701030404");
+            QByteArray expected = QByteArray::fromHex("000000000007010304"); // MBAP, unit 1, 03, 4 bytes
             expected[0] = char(tid >> 8);
             expected[1] = char(tid & 0xFF);
             for (int k = 0; k < 2; ++k) {
@@ -129,12 +138,29 @@ Observation observe(const QByteArray &faults)
         o.error = QStringLiteral("the client did not finish: %1 of %2 requests sent").arg(next).arg(kRequests);
     if (sim.stop() != 0 && o.error.isEmpty())
         o.error = QStringLiteral("simulate did not stop cleanly: ") + QString::fromUtf8(sim.errors());
-    static const QRegularExpression droppedRe(QStringLiteral("interrupted: \\d+ requests.* (\\d+) dropped by fault"));
-    const QRegularExpressionMatch m = droppedRe.match(QString::fromUtf8(sim.output()));
-    if (m.hasMatch())
-        o.simulatorDropped = m.captured(1).toInt();
-    else if (o.error.isEmpty())
+    static const QRegularExpression summaryRe(QStringLiteral("interrupted: (\\d+) requests.* (\\d+) dropped by fault"));
+    const QRegularExpressionMatch m = summaryRe.match(QString::fromUtf8(sim.output()));
+    if (m.hasMatch()) {
+        o.simulatorRequests = m.captured(1).toInt();
+        o.simulatorDropped = m.captured(2).toInt();
+    } else if (o.error.isEmpty()) {
         o.error = QStringLiteral("no summary in: ") + QString::fromUtf8(sim.output());
+    }
+    return o;
+}
+
+// observe(), again (at most three times in all) when a datagram was lost on the way: what is
+// compared must be what the fault rules did, not what a busy machine's socket buffers did.
+Observation observeLossless(const QByteArray &faults)
+{
+    Observation o;
+    for (int attempt = 1; attempt <= 3; ++attempt) {
+        o = observe(faults);
+        if (!o.error.isEmpty() || o.lossless())
+            break;
+        qInfo("attempt %d: %d requests reached the simulator, %d of %d answers missing, %d dropped by fault: again",
+              attempt, o.simulatorRequests, o.missing(), kRequests, o.simulatorDropped);
+    }
     return o;
 }
 
@@ -204,8 +230,9 @@ void tst_SimulateFaults::dropsAndDelays()
     QFETCH(Cdf, cdf);
     QFETCH(double, minimumMs);
     QFETCH(double, drop);
-    const Observation o = observe(faultsJson(4242, drop, delay));
+    const Observation o = observeLossless(faultsJson(4242, drop, delay));
     QVERIFY2(o.error.isEmpty(), qPrintable(o.error));
+    QCOMPARE(o.simulatorRequests, kRequests);
 
     // Drops: only inside the rule's addresses, in the configured proportion.
     int inside = 0;
@@ -258,13 +285,14 @@ void tst_SimulateFaults::dropsAndDelays()
 void tst_SimulateFaults::sameSeedSameDrops()
 {
     const QByteArray delay = R"({"distribution": "uniform", "minMs": 1, "maxMs": 5})";
-    const Observation first = observe(faultsJson(7, 0.3, delay));
+    const Observation first = observeLossless(faultsJson(7, 0.3, delay));
     QVERIFY2(first.error.isEmpty(), qPrintable(first.error));
-    const Observation again = observe(faultsJson(7, 0.3, delay));
+    const Observation again = observeLossless(faultsJson(7, 0.3, delay));
     QVERIFY2(again.error.isEmpty(), qPrintable(again.error));
-    const Observation other = observe(faultsJson(8, 0.3, delay));
+    const Observation other = observeLossless(faultsJson(8, 0.3, delay));
     QVERIFY2(other.error.isEmpty(), qPrintable(other.error));
-    QVERIFY(first.answered.count(false) > 0);
+    QVERIFY(first.lossless() && again.lossless() && other.lossless());
+    QVERIFY(first.missing() > 0);
     QCOMPARE(again.answered, first.answered);
     QVERIFY(other.answered != first.answered);
 }

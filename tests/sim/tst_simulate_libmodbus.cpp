@@ -51,7 +51,10 @@ void tst_SimulateLibmodbus::everyFunctionCode()
     const Run run = runProcess(client, args, 120000);
     QVERIFY2(run.exitCode == 0 && run.out.endsWith("done\n"), (run.out + run.err).constData());
     QVERIFY2(!run.out.contains("FAIL"), run.out.constData());
-    QVERIFY2(run.out.count("\nok ") >= 40, run.out.constData());
+    int checks = 0;
+    for (const QByteArray &line : run.out.split('\n'))
+        checks += line.startsWith("ok ") ? 1 : 0;
+    QCOMPARE(checks, 23); // every check of libmodbus_conformance.c ran
     QCOMPARE(sim.stop(), 0);
 
     // The simulator saw each function code and answered it, normally and with the exceptions asked for.
