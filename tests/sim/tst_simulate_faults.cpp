@@ -14,6 +14,7 @@
 #include "simcli.h"
 
 #include <QtCore/QElapsedTimer>
+#include <QtCore/QEventLoop>
 #include <QtCore/QFile>
 #include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
@@ -131,9 +132,18 @@ Observation observe(const QByteArray &faults)
             pace.stop();
     });
     pace.start(kPaceMs);
-    // Bounded: every request sent, then quiet; never longer than two minutes in all.
-    const bool done = QTest::qWaitFor(
-        [&] { return next == kRequests && clock.nsecsElapsed() - lastEventNs > qint64(kQuietMs) * 1'000'000; }, 120000);
+    // A real event loop (QTest::qWaitFor sleeps 10 ms between turns, which would pace the
+    // requests and stamp the answers in 10 ms steps). Bounded: two minutes at most.
+    QEventLoop loop;
+    QTimer watch;
+    QObject::connect(&watch, &QTimer::timeout, &loop, [&] {
+        if (next == kRequests && clock.nsecsElapsed() - lastEventNs > qint64(kQuietMs) * 1'000'000)
+            loop.quit();
+    });
+    watch.start(50);
+    QTimer::singleShot(120000, &loop, &QEventLoop::quit);
+    loop.exec();
+    const bool done = next == kRequests && clock.nsecsElapsed() - lastEventNs > qint64(kQuietMs) * 1'000'000;
     if (!done && o.error.isEmpty())
         o.error = QStringLiteral("the client did not finish: %1 of %2 requests sent").arg(next).arg(kRequests);
     if (sim.stop() != 0 && o.error.isEmpty())
