@@ -72,6 +72,7 @@ EngineCore::~EngineCore()
     // The link goes first, while everything it could reach is still whole.
     if (m_link) {
         disconnect(m_link, nullptr, this, nullptr);
+        m_link->setReceiver(nullptr);
         delete m_link;
     }
 }
@@ -85,6 +86,7 @@ void EngineCore::setTarget(const LinkUrl &url, const EngineOptions &options)
     if (m_link) {
         m_closingQuietly = true;
         m_link->close();
+        m_link->setReceiver(nullptr);
         delete m_link;
         m_link = nullptr;
         m_closingQuietly = false;
@@ -409,9 +411,31 @@ void EngineCore::record(Transaction transaction, quint64 tag)
     if (transaction.status == TransactionStatus::Late)
         ++m_counters.late;
     logTransaction(transaction);
+    if (m_recordListeners.size() == 1) {
+        m_recordListeners.constFirst()->onRecord(transaction, tag);
+    } else if (!m_recordListeners.isEmpty()) {
+        // A listener may go (or add another) while records are handed out: each one still
+        // listening gets this record once.
+        const QList<RecordListener *> listeners = m_recordListeners;
+        for (RecordListener *listener : listeners) {
+            if (m_recordListeners.contains(listener))
+                listener->onRecord(transaction, tag);
+        }
+    }
     emit recorded(transaction, tag);
     m_batch.append(std::move(transaction));
     scheduleBatch();
+}
+
+void EngineCore::addRecordListener(RecordListener *listener)
+{
+    if (!m_recordListeners.contains(listener))
+        m_recordListeners.append(listener);
+}
+
+void EngineCore::removeRecordListener(RecordListener *listener)
+{
+    m_recordListeners.removeAll(listener);
 }
 
 void EngineCore::scheduleBatch()

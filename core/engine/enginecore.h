@@ -4,6 +4,7 @@
 #include "engineoptions.h"
 #include "engineprogress.h"
 #include "linkframing.h"
+#include "recordlistener.h"
 #include "requestitem.h"
 #include "responsematcher.h"
 #include "responseverdict.h"
@@ -11,6 +12,7 @@
 #include "transaction.h"
 
 #include "transport/link.h"
+#include "transport/linkreceiver.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QList>
@@ -36,7 +38,7 @@ class TrafficLog;
 // doneNs are the link's read times of the first and the last byte of the matched frame. An answer
 // cannot begin before its request was written, so a frame whose first byte came earlier belongs to
 // an earlier request (late) or to none (unsolicited), whatever its keys say.
-class EngineCore : public QObject
+class EngineCore : public QObject, private LinkReceiver
 {
     Q_OBJECT
 public:
@@ -68,12 +70,17 @@ public:
 
     [[nodiscard]] EngineCounters &counters() { return m_counters; }
     [[nodiscard]] EngineProgress &progressState() { return m_progress; }
+    // Listeners get every record at once, by a direct call, before recorded() is emitted. A
+    // listener removes itself before it goes (it may do so from inside onRecord()).
+    void addRecordListener(RecordListener *listener);
+    void removeRecordListener(RecordListener *listener);
     // Emits what is waiting for observers now (end of a poll), then the progress.
     void flushBatch();
     void scheduleBatch();
 
 signals:
-    // In the engine thread, as soon as a record is made (direct connections only).
+    // In the engine thread, as soon as a record is made, after the record listeners (direct
+    // connections only).
     void recorded(const mbscope::Transaction &transaction, quint64 tag);
     // For observers in other threads: batches of records and the progress.
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
@@ -128,9 +135,14 @@ private:
     [[nodiscard]] qint64 waitNs(const RequestItem &item) const;
     [[nodiscard]] static qint64 sentTime(const Pending &p, qint64 firstNs);
 
+    // LinkReceiver: the link calls these directly (links that emit signals reach the same slots).
+    void linkBytesReceived(const QByteArray &bytes, qint64 firstNs, qint64 lastNs) override { onBytesReceived(bytes, firstNs, lastNs); }
+    void linkBytesWritten(qint64 lastByteNs) override { onBytesWritten(lastByteNs); }
+
     // enginereceive.cpp: framing, matching, late and unsolicited answers
     void onBytesReceived(const QByteArray &bytes, qint64 firstNs, qint64 lastNs);
     void processFramerOutput();
+    void handleOutput(const QList<StreamFrame> &frames, const QList<SkippedBytes> &skipped);
     void handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 lastNs);
     void handleSkipped(const SkippedBytes &run, qint64 firstNs, qint64 lastNs);
     void answer(qsizetype index, const StreamFrame &frame, qint64 firstNs, qint64 lastNs);
@@ -159,6 +171,10 @@ private:
     std::unique_ptr<StreamFramer> m_framer;
     std::unique_ptr<ResponseVerdict> m_verdict;
     ChunkStamps m_stamps;
+    // The framer's output of one read, kept so that neither list is allocated per frame.
+    QList<StreamFrame> m_frames;
+    QList<SkippedBytes> m_skipped;
+    QList<RecordListener *> m_recordListeners;
 
     QList<Outgoing> m_queue;
     QList<Pending> m_inFlight;

@@ -28,6 +28,7 @@ void EngineCore::ensureLink()
             schedulePump();
             return;
         }
+        m_link->setReceiver(this);
         connect(m_link, &Link::opened, this, &EngineCore::onOpened);
         connect(m_link, &Link::closed, this, &EngineCore::onClosed);
         connect(m_link, &Link::errorOccurred, this, &EngineCore::onLinkError);

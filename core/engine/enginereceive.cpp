@@ -70,14 +70,31 @@ qint64 EngineCore::flushPartial()
 
 void EngineCore::processFramerOutput()
 {
-    const QList<StreamFrame> frames = m_framer->takeFrames();
-    const QList<SkippedBytes> skipped = m_framer->takeSkipped();
-    if (frames.isEmpty() && skipped.isEmpty())
+    if (m_processing) {
+        // Frames framed while those of a read are being handled (a flush from an error handler):
+        // lists of their own, the engine's are in use.
+        QList<StreamFrame> frames;
+        QList<SkippedBytes> skipped;
+        if (m_framer->takeOutput(frames, skipped))
+            handleOutput(frames, skipped);
+        return;
+    }
+    if (!m_framer->takeOutput(m_frames, m_skipped))
         return;
     // The next request goes out once every frame of this read has been handled, not in the
     // middle (a write may fail and reset the stream these frames came from).
-    const bool outer = !m_processing;
     m_processing = true;
+    handleOutput(m_frames, m_skipped);
+    // Emptied but kept: their memory serves the next read (the frames' bytes live on in records).
+    m_frames.clear();
+    m_skipped.clear();
+    m_processing = false;
+    if (std::exchange(m_pumpAfterProcessing, false))
+        pump();
+}
+
+void EngineCore::handleOutput(const QList<StreamFrame> &frames, const QList<SkippedBytes> &skipped)
+{
     // Frames and skipped runs in stream order, as the bytes came.
     qsizetype f = 0;
     qsizetype s = 0;
@@ -91,11 +108,6 @@ void EngineCore::processFramerOutput()
             handleFrame(frame, m_stamps.firstNs(frame.offset), m_stamps.lastNs(frame.offset + frame.bytes.size() - 1));
         }
     }
-    if (!outer)
-        return;
-    m_processing = false;
-    if (std::exchange(m_pumpAfterProcessing, false))
-        pump();
 }
 
 void EngineCore::handleSkipped(const SkippedBytes &run, qint64 firstNs, qint64 lastNs)

@@ -16,12 +16,19 @@ Poller::Poller(EngineCore *core, const PollSettings &settings, quint64 tag, QObj
     m_timer.setSingleShot(true);
     m_timer.setTimerType(Qt::PreciseTimer);
     connect(&m_timer, &QTimer::timeout, this, [this] { advance(false); });
-    connect(m_core, &EngineCore::recorded, this, &Poller::onRecorded);
+    m_core->addRecordListener(this);
+    m_listenedTo = m_core;
     m_run.intervalNs = settings.intervalNs;
     QStringList names;
     for (const RequestItem &item : settings.items)
         names.append(item.name);
     m_run.statistics.setItemNames(names);
+}
+
+Poller::~Poller()
+{
+    if (m_listenedTo)
+        m_listenedTo->removeRecordListener(this);
 }
 
 void Poller::start()
@@ -117,7 +124,7 @@ void Poller::startCycle(qint64 nowNs)
     }
 }
 
-void Poller::onRecorded(const Transaction &transaction, quint64 tag)
+void Poller::onRecord(const Transaction &transaction, quint64 tag)
 {
     if (tag != m_tag || !m_started || m_finished)
         return;

@@ -2,8 +2,10 @@
 
 #include "pollreport.h"
 #include "pollsettings.h"
+#include "recordlistener.h"
 
 #include <QtCore/QObject>
+#include <QtCore/QPointer>
 #include <QtCore/QTimer>
 
 namespace mbscope {
@@ -15,11 +17,12 @@ struct Transaction;
 // each record added to the run's statistics as it is made. A cycle that could not start when it
 // was due, because the one before was still running, starts as soon as that one ends and counts
 // as an overrun: the interval runs from one cycle's actual start to the next.
-class Poller : public QObject
+class Poller : public QObject, private RecordListener
 {
     Q_OBJECT
 public:
     Poller(EngineCore *core, const PollSettings &settings, quint64 tag, QObject *parent = nullptr);
+    ~Poller() override;
 
     void start();
     // Starts no more cycles and abandons the requests still queued or in flight; finished() follows
@@ -33,7 +36,7 @@ signals:
     void finished();
 
 private:
-    void onRecorded(const Transaction &transaction, quint64 tag);
+    void onRecord(const Transaction &transaction, quint64 tag) override;
     void advance(bool fromRecord);
     void startCycle(qint64 nowNs);
     [[nodiscard]] bool moreCycles(qint64 nowNs) const;
@@ -42,6 +45,9 @@ private:
     void updateProgress(qint64 nowNs);
 
     EngineCore *m_core;
+    // The engine may go first (a sweep, and its poller, are the engine's children): only a
+    // living engine is told that this listener leaves.
+    QPointer<EngineCore> m_listenedTo;
     PollSettings m_settings;
     quint64 m_tag;
     PollRun m_run;

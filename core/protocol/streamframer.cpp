@@ -77,6 +77,17 @@ QList<SkippedBytes> StreamFramer::takeSkipped()
     return std::exchange(m_skipped, {});
 }
 
+bool StreamFramer::takeOutput(QList<StreamFrame> &frames, QList<SkippedBytes> &skipped)
+{
+    frames.clear();
+    skipped.clear();
+    if (m_frames.isEmpty() && m_skipped.isEmpty())
+        return false;
+    m_frames.swap(frames);
+    m_skipped.swap(skipped);
+    return true;
+}
+
 void StreamFramer::emitFrame(qsizetype length, FrameStatus status, const QString &problem)
 {
     closeSkippedRun();

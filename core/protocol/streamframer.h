@@ -27,6 +27,10 @@ public:
 
     [[nodiscard]] QList<StreamFrame> takeFrames();
     [[nodiscard]] QList<SkippedBytes> takeSkipped();
+    // Both at once into lists the caller keeps: they are cleared and swapped with the framer's,
+    // so neither side allocates a list per frame (takeFrames() leaves the framer an empty list
+    // that its next frame must allocate again). False when there was nothing.
+    bool takeOutput(QList<StreamFrame> &frames, QList<SkippedBytes> &skipped);
     [[nodiscard]] bool hasFrames() const { return !m_frames.isEmpty(); }
     [[nodiscard]] qsizetype pendingSize() const { return m_buffer.size() - m_position; }
     // Skipped bytes of the run still open: it is reported when a frame follows, at a silence or

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "linkreceiver.h"
 #include "linkurl.h"
 
 #include <QtCore/QByteArray>
@@ -76,6 +77,11 @@ public:
     // kernel; UDP: sent; serial: drained, see SerialLink). It may be emitted before write() returns.
     virtual bool write(const QByteArray &bytes) = 0;
 
+    // While a receiver is set, received bytes and write times go to it by a direct call and
+    // bytesReceived() / bytesWritten() are not emitted (links that emit those signals themselves,
+    // as test doubles may, still reach whoever is connected). Same thread only; nullptr: signals.
+    void setReceiver(LinkReceiver *receiver) { m_receiver = receiver; }
+
     // Creates the link a URL names (TcpLink for tcp, rtu-tcp and ascii-tcp; UdpLink for udp and
     // rtu-udp; SerialLink for rtu and ascii; TlsLink for tls), closed. The caller owns it.
     [[nodiscard]] static Link *create(const LinkUrl &url, QObject *parent = nullptr);
@@ -94,6 +100,22 @@ signals:
 protected:
     explicit Link(const LinkUrl &url, QObject *parent = nullptr);
     void setState(State state) { m_state = state; }
+    // What subclasses call instead of emitting bytesReceived() / bytesWritten(): the receiver, or
+    // the signal when there is none.
+    void deliverReceived(const QByteArray &bytes, qint64 firstByteNs, qint64 lastByteNs)
+    {
+        if (m_receiver)
+            m_receiver->linkBytesReceived(bytes, firstByteNs, lastByteNs);
+        else
+            emit bytesReceived(bytes, firstByteNs, lastByteNs);
+    }
+    void deliverWritten(qint64 lastByteNs)
+    {
+        if (m_receiver)
+            m_receiver->linkBytesWritten(lastByteNs);
+        else
+            emit bytesWritten(lastByteNs);
+    }
     // Records and emits an error; the message is prefixed with the URL ("tcp://h:502: ...").
     void reportError(LinkError::Kind kind, const QString &what);
     // Closed from Open or Opening: sets the state and emits closed(reason) once.
@@ -108,6 +130,7 @@ private:
     LinkUrl m_url;
     State m_state = State::Closed;
     LinkError m_lastError;
+    LinkReceiver *m_receiver = nullptr;
 };
 
 } // namespace mbscope

@@ -265,7 +265,7 @@ void SerialLink::onDrainTimer()
     const qint64 now = monotonicNowNs();
     while (!m_drains.isEmpty() && m_drains.first() <= now) {
         const qint64 drained = m_drains.takeFirst();
-        emit bytesWritten(drained);
+        deliverWritten(drained);
         if (!m_port)
             return;
     }
@@ -280,7 +280,7 @@ void SerialLink::onReadyRead()
     const QByteArray bytes = m_port->readAll();
     if (!bytes.isEmpty()) {
         m_readErrors = 0;
-        emit bytesReceived(bytes, now, now);
+        deliverReceived(bytes, now, now);
     }
 }
 

@@ -128,7 +128,7 @@ bool TcpLink::write(const QByteArray &bytes)
         const qint64 sent = sendNow(rest);
         if (sent == rest.size()) {
             m_submitted += sent;
-            emit bytesWritten(sentNs);
+            deliverWritten(sentNs);
             return true;
         }
         // Partly taken (the kernel's buffer is full) or refused: Qt's buffer and error handling
@@ -186,7 +186,7 @@ void TcpLink::reportWritten()
     const qint64 now = monotonicNowNs();
     while (!m_marks.isEmpty() && m_marks.first() <= accepted) {
         m_marks.removeFirst();
-        emit bytesWritten(now);
+        deliverWritten(now);
     }
 }
 
@@ -209,7 +209,7 @@ void TcpLink::onReadyRead()
     // Shared while the receivers run, so a read nested in them (an error handler's) detaches
     // instead of changing these bytes under them.
     const QByteArray bytes = m_readBuffer;
-    emit bytesReceived(bytes, now, now);
+    deliverReceived(bytes, now, now);
 }
 
 QString TcpLink::where() const

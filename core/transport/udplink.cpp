@@ -80,7 +80,7 @@ bool UdpLink::write(const QByteArray &bytes)
                                              .arg(where(), osAnswer(m_socket->errorString())));
         return false;
     }
-    emit bytesWritten(monotonicNowNs());
+    deliverWritten(monotonicNowNs());
     return true;
 }
 
@@ -102,7 +102,7 @@ void UdpLink::onReadyRead()
         const qint64 now = monotonicNowNs();
         datagram.truncate(got);
         if (!datagram.isEmpty())
-            emit bytesReceived(datagram, now, now);
+            deliverReceived(datagram, now, now);
     }
 }
 
