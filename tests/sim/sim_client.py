@@ -10,6 +10,7 @@ conformance profile). Prints one "ok ..." line per check; exits 1 at the first "
 tls is MODBUS/TCP Security: MBAP inside mutual TLS, the server checked against the CA.
 """
 import argparse
+import socket
 import ssl
 import sys
 
@@ -34,7 +35,7 @@ def registers(client, address, count, unit):
     return list(reply.registers)
 
 
-def rosrao(client):
+def rosrao(client, framing):  # pylint: disable=unused-argument
     for unit in (1, 3):
         values = registers(client, 0x0079, 22, unit)
         check(f"unit {unit} published values at 0x0079", values[:13], PUBLISHED)
@@ -56,7 +57,7 @@ def rosrao(client):
     check("03 beyond the map refused", getattr(reply, "exception_code", None), 2)
 
 
-def conformance(client):
+def conformance(client, framing):
     reply = client.read_coils(0, 30, slave=1)
     check("01 coils", list(reply.bits[:30]), [a % 3 == 0 for a in range(30)])
     reply = client.read_discrete_inputs(0, 20, slave=1)
@@ -84,18 +85,39 @@ def conformance(client):
     check("read-only block unchanged", registers(client, 300, 10, 1), [7] * 10)
     reply = client.read_exception_status(slave=1)
     check("07 exception status", getattr(reply, "status", None), 0x6D)
-    # V1.1b3 6.16's example: 0x12 AND 0xF2 OR (0x25 AND NOT 0xF2) = 0x17.
-    client.write_register(4, 0x12, slave=1)
-    reply = client.mask_write_register(address=4, and_mask=0xF2, or_mask=0x25, slave=1)
-    check("16 answered", reply.isError(), False)
-    check("16 read back", registers(client, 4, 1, 1), [0x17])
-    reply = client.readwrite_registers(read_address=38, read_count=6, write_address=40,
-                                       write_registers=[111, 222, 333], slave=1)
-    check("17 reads after it writes", list(getattr(reply, "registers", [])),
-          [1000 + 3 * 38, 1000 + 3 * 39, 111, 222, 333, 1000 + 3 * 43])
+    # V1.1b3 6.16's example: 0x12 AND 0xF2 OR (0x25 AND NOT 0xF2) = 0x17; 17 writes, then reads.
+    # pymodbus 3.0's RTU and ASCII framers cannot wait for these answers whole: MBAP framings
+    # only (libmodbus_conformance.c checks 16 and 17 over RTU).
+    if framing in ("tcp", "udp", "tls"):
+        client.write_register(4, 0x12, slave=1)
+        reply = client.mask_write_register(address=4, and_mask=0xF2, or_mask=0x25, slave=1)
+        check("16 answered", reply.isError(), False)
+        check("16 read back", registers(client, 4, 1, 1), [0x17])
+        reply = client.readwrite_registers(read_address=38, read_count=6, write_address=40,
+                                           write_registers=[111, 222, 333], slave=1)
+        check("17 reads after it writes", list(getattr(reply, "registers", [])),
+              [1000 + 3 * 38, 1000 + 3 * 39, 111, 222, 333, 1000 + 3 * 43])
     check("unit 2 holding registers", registers(client, 0, 10, 2), [2000 + a for a in range(10)])
     reply = client.read_coils(0, 1, slave=2)
     check("unit 2 refuses 01 with 01", getattr(reply, "exception_code", None), 1)
+
+
+class BlockingTlsClient(ModbusTlsClient):
+    """pymodbus 3.0's TLS client reads after select() on the socket, which does not see bytes
+    already decrypted into the TLS layer's buffer: the rest of an answer waits for the timeout.
+    Blocking reads with the timeout instead."""
+
+    def recv(self, size):
+        self.socket.settimeout(self.params.timeout)
+        data = b""
+        try:
+            while True:
+                chunk = self.socket.recv(4096 if size is None else size - len(data))
+                data += chunk
+                if not chunk or size is None or len(data) >= size:
+                    return data
+        except (socket.timeout, ssl.SSLError):
+            return data
 
 
 def connect(args):
@@ -116,7 +138,7 @@ def connect(args):
             context = ssl.create_default_context(ssl.Purpose.SERVER_AUTH, cafile=args.ca)
             context.load_cert_chain(certfile=args.cert, keyfile=args.key)
             # The server's certificate names IP:127.0.0.1; MBAP, not pymodbus's header-less TLS framer.
-            client = ModbusTlsClient("127.0.0.1", port=port, framer=ModbusSocketFramer, sslctx=context,
+            client = BlockingTlsClient("127.0.0.1", port=port, framer=ModbusSocketFramer, sslctx=context,
                                      timeout=5, retries=0)
         else:
             client = ModbusTcpClient("127.0.0.1", port=port, framer=framer, timeout=5, retries=0)
@@ -139,7 +161,7 @@ def main():
     if args.framing == "tls" and not (args.ca and args.cert and args.key):
         parser.error("tls needs --ca, --cert and --key")
     client = connect(args)
-    {"rosrao": rosrao, "conformance": conformance}[args.scenario](client)
+    {"rosrao": rosrao, "conformance": conformance}[args.scenario](client, args.framing)
     client.close()
     print("done", flush=True)
 

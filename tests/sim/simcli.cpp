@@ -80,7 +80,8 @@ bool SimCli::start(const QStringList &args, int endpoints, QString *error)
 
 quint16 SimCli::port(int index) const
 {
-    static const QRegularExpression re(QStringLiteral(":(\\d+) \\(unit"));
+    // "tcp://127.0.0.1:PORT (unit...", "tls://127.0.0.1:PORT?cert=... (unit..."
+    static const QRegularExpression re(QStringLiteral("^[a-z-]+://[^/?:]+:(\\d+)"));
     return quint16(re.match(m_listening.value(index)).captured(1).toUInt());
 }
 

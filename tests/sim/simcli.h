@@ -38,7 +38,7 @@ public:
 
     // Starts and waits for `endpoints` "listening URL (units ...)" lines; false with *error set.
     [[nodiscard]] bool start(const QStringList &args, int endpoints, QString *error);
-    // The port of the index-th endpoint listed ("tcp://127.0.0.1:PORT (unit...").
+    // The port of the index-th endpoint listed ("tcp://127.0.0.1:PORT (unit...", 0 for a device).
     [[nodiscard]] quint16 port(int index) const;
     [[nodiscard]] const QStringList &listening() const { return m_listening; }
 
