@@ -107,6 +107,17 @@ void MainWindow::connectPanels()
         bar->setConnected(connected);
         m_composer->setLinkReady(connected);
         m_linkStatus->setState(state, message);
+        // The banner speaks of the simulator only while the window is connected to it.
+        if (m_simulator->isRunning() && m_banner->isVisible()) {
+            if (state == LinkController::State::Disconnected)
+                m_banner->showNotice(tr("Disconnected. The built-in simulator still answers on <code>%1</code>: press "
+                                        "<b>Connect</b> to use it again, or choose a real device's link type, host "
+                                        "and port (or serial port) first.")
+                                         .arg(m_simulator->started().url.toString().toHtmlEscaped()));
+            else if (m_controller->url().port != m_simulator->started().url.port
+                     || m_controller->url().kind != m_simulator->started().url.kind)
+                m_banner->hide();
+        }
         if (state == LinkController::State::Failed)
             bar->showLinkFailure(message);
         else if (state == LinkController::State::Connected) {

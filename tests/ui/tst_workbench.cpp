@@ -73,6 +73,11 @@ void TestWorkbench::firstRunIsReadyToSend()
     QVERIFY(window.banner()->text().contains(QLatin1String("real device")));
     QVERIFY(window.composer()->sendAction()->isEnabled());
     QVERIFY(guitest::saveShot(&window, QStringLiteral("workbench-first-run.png")));
+    // Disconnecting keeps the banner truthful: the simulator still runs, the window is not on it.
+    window.connectionBar()->connectButton()->click();
+    QVERIFY(!window.controller()->isConnected());
+    QVERIFY2(window.banner()->text().startsWith(QLatin1String("Disconnected")), qPrintable(window.banner()->text()));
+    QVERIFY(!window.composer()->sendAction()->isEnabled());
 }
 
 void TestWorkbench::typedRequestIsAnsweredAndDecoded()
