@@ -36,6 +36,10 @@ struct CapturedFrame {
     Framing framing = Framing::Tcp;
     Direction direction = Direction::Request; // Request: client to server
     FrameStatus status = FrameStatus::Valid;
+    // RTU answers only: bytes the framer skipped (a wrong CRC, cut short) offered as the answer
+    // to a waiting request with their unit and function code, as the engine does; when no
+    // request takes them they stay skipped bytes, not an unmatched answer.
+    bool undelimited = false;
     QByteArray bytes;
 };
 

@@ -101,8 +101,23 @@ void ExchangePairer::addRequest(const CapturedFrame &frame)
 
 void ExchangePairer::addResponse(const CapturedFrame &frame)
 {
-    ++m_counters.responses;
     const FrameKeys keys = ResponseMatcher::keysOf(frame.bytes, frame.framing);
+    if (frame.undelimited) {
+        // Skipped bytes that may be an answer: only a waiting request can make them one.
+        Conversation &c = conversation(frame.conversation);
+        for (auto it = c.waitingInOrder.begin(); it != c.waitingInOrder.end(); ++it) {
+            const FrameKeys asked = ResponseMatcher::keysOf(slot(*it).exchange.transaction.request, Framing::Rtu);
+            if (!keys.valid || asked.unit != keys.unit || !ResponseMatcher::answersFunction(asked.functionCode, keys.functionCode))
+                continue;
+            ++m_counters.responses;
+            const quint64 index = *it;
+            c.waitingInOrder.erase(it);
+            answer(index, frame, true, {});
+            return;
+        }
+        return;
+    }
+    ++m_counters.responses;
     if (!keys.valid) {
         unmatched(frame, QStringLiteral("too short to say which request it answers"));
         return;
@@ -171,6 +186,10 @@ void ExchangePairer::answer(quint64 slotIndex, const CapturedFrame &frame, bool 
     t.firstByteNs = t.doneNs = frame.timeNs;
     if (keysMatch) {
         ResponseVerdict::Result verdict = verdictFor(frame.framing).judge(frame.bytes, t.request);
+        if (frame.undelimited && (verdict.status == TransactionStatus::Ok || verdict.status == TransactionStatus::Exception)) {
+            verdict.status = TransactionStatus::Malformed;
+            verdict.problem = QStringLiteral("the answer's bytes could not be delimited as an RTU frame");
+        }
         t.status = verdict.status;
         t.exceptionCode = verdict.exceptionCode;
         t.problem = std::move(verdict.problem);

@@ -228,31 +228,46 @@ void ModbusFrameExtractor::flushDirection(Flow &flow, int direction)
 void ModbusFrameExtractor::collect(Flow &flow, int direction)
 {
     StreamFramer &framer = *flow.framers[direction];
-    if (framer.hasFrames()) {
-        const QList<StreamFrame> frames = framer.takeFrames();
-        for (const StreamFrame &f : frames) {
-            CapturedFrame frame;
-            frame.timeNs = f.lastByteNs;
-            frame.packet = flow.lastPacket[direction];
-            frame.conversation = flow.info.id;
-            frame.framing = flow.info.framing;
-            frame.direction = direction == kToServer ? Direction::Request : Direction::Response;
-            frame.status = f.status;
-            frame.bytes = f.bytes;
+    const QList<StreamFrame> frames = framer.hasFrames() ? framer.takeFrames() : QList<StreamFrame>();
+    const QList<SkippedBytes> skipped = framer.takeSkipped();
+    const auto emitFrame = [&](const QByteArray &bytes, qint64 timeNs, FrameStatus status, bool undelimited) {
+        CapturedFrame frame;
+        frame.timeNs = timeNs;
+        frame.packet = flow.lastPacket[direction];
+        frame.conversation = flow.info.id;
+        frame.framing = flow.info.framing;
+        frame.direction = direction == kToServer ? Direction::Request : Direction::Response;
+        frame.status = status;
+        frame.undelimited = undelimited;
+        frame.bytes = bytes;
+        if (!undelimited) {
             ++(direction == kToServer ? flow.info.requests : flow.info.responses);
             ++m_counters.frames;
-            m_sink(frame);
         }
-    }
-    const QList<SkippedBytes> skipped = framer.takeSkipped();
-    for (const SkippedBytes &s : skipped) {
-        m_counters.skippedBytes += s.count();
-        ++m_counters.skippedRuns;
-        problem(flow.lastPacket[direction], &flow, QStringLiteral("%1 byte(s) skipped (%2): %3")
-                                                       .arg(s.count())
-                                                       .arg(QLatin1String(skipReasonName(s.reason)),
-                                                            QString::fromLatin1(s.bytes.left(16).toHex(' ')) +
-                                                                (s.count() > 16 ? QStringLiteral(" ...") : QString())));
+        m_sink(frame);
+    };
+    // Frames and skipped runs in stream order, as the bytes came (the engine's order too).
+    qsizetype f = 0;
+    qsizetype k = 0;
+    while (f < frames.size() || k < skipped.size()) {
+        if (k < skipped.size() && (f >= frames.size() || skipped.at(k).offset < frames.at(f).offset)) {
+            const SkippedBytes &s = skipped.at(k++);
+            m_counters.skippedBytes += s.count();
+            ++m_counters.skippedRuns;
+            problem(flow.lastPacket[direction], &flow, QStringLiteral("%1 byte(s) skipped (%2): %3")
+                                                           .arg(s.count())
+                                                           .arg(QLatin1String(skipReasonName(s.reason)),
+                                                                QString::fromLatin1(s.bytes.left(16).toHex(' ')) +
+                                                                    (s.count() > 16 ? QStringLiteral(" ...") : QString())));
+            // An RTU answer with a wrong CRC, or cut short, cannot be delimited by the framer;
+            // its unit and function code may still name the waiting request (as in the engine).
+            if (flow.info.framing == Framing::Rtu && direction == kToClient && s.count() >= 4
+                && (s.reason == SkipReason::ChecksumMismatch || s.reason == SkipReason::Incomplete))
+                emitFrame(s.bytes, flow.lastFeedNs[direction], FrameStatus::Malformed, true);
+            continue;
+        }
+        const StreamFrame &frame = frames.at(f++);
+        emitFrame(frame.bytes, frame.lastByteNs, frame.status, false);
     }
 }
 
