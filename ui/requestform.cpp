@@ -5,6 +5,7 @@
 
 #include "protocol/adubuilder.h"
 #include "protocol/functioncode.h"
+#include "protocol/hextext.h"
 #include "protocol/requestbuilder.h"
 
 #include <QtWidgets/QCheckBox>
@@ -166,6 +167,11 @@ void RequestForm::buildUi()
     errorPalette.setColor(QPalette::WindowText, SeverityStyle::textColor(Severity::Error));
     m_errorLabel->setPalette(errorPalette);
 
+    m_previewLabel = new QLabel(this);
+    m_previewLabel->setObjectName(QStringLiteral("formPreviewLabel"));
+    m_previewLabel->setWordWrap(true);
+    m_previewLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
     m_form = new QFormLayout;
     m_form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     m_form->addRow(tr("&Function:"), m_function);
@@ -184,6 +190,7 @@ void RequestForm::buildUi()
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(m_form);
     layout->addWidget(m_errorLabel);
+    layout->addWidget(m_previewLabel);
     layout->addStretch(1);
 
     connect(m_function, &QComboBox::currentIndexChanged, this, &RequestForm::onFunctionChanged);
@@ -483,10 +490,21 @@ QString RequestForm::errorText() const
     return messages.join(QLatin1Char('\n'));
 }
 
+QString RequestForm::previewText() const
+{
+    return m_previewLabel->text();
+}
+
 void RequestForm::onChanged()
 {
     m_errorLabel->setText(errorText());
     m_errorLabel->setVisible(!m_errorLabel->text().isEmpty());
+    const QByteArray adu = bytes();
+    m_previewLabel->setText(adu.isEmpty() ? QString()
+                                          : tr("Bytes: %1  (%2, unit %3)")
+                                                .arg(HexText::format(adu), framingName(m_framing).toUpper())
+                                                .arg(m_unit));
+    m_previewLabel->setVisible(!adu.isEmpty());
     if (!m_filling)
         Q_EMIT changed();
 }

@@ -42,6 +42,8 @@ public:
     // The PDU completed for the framing and unit; empty when build() has errors.
     [[nodiscard]] QByteArray bytes() const;
     [[nodiscard]] QString errorText() const;
+    // "Bytes: 01 03 00 79 00 16 15 DD (RTU, unit 1)" under the fields; empty with errors.
+    [[nodiscard]] QString previewText() const;
 
     // Fills the fields from a request PDU (function code first). False when the form has no
     // fields for that code or the PDU is not a well-formed request of it (the fields keep theirs).
@@ -94,6 +96,7 @@ private:
     QComboBox *m_deviceIdCode = nullptr;
     QSpinBox *m_objectId = nullptr;
     QLabel *m_errorLabel = nullptr;
+    QLabel *m_previewLabel = nullptr; // the bytes the fields make, as the Raw tab will hold them
     QWidget *m_quantityRow = nullptr;
     Framing m_framing = Framing::Rtu;
     quint8 m_unit = 1;

@@ -152,6 +152,7 @@ void TestRequestForm::formAndRawAgree()
     QVERIFY2(composer.form()->errorText().isEmpty(), qPrintable(composer.form()->errorText()));
     QCOMPARE(composer.form()->bytes().toHex(' '), expected.toHex(' '));
     QCOMPARE(composer.bytes().toHex(' '), expected.toHex(' '));
+    QVERIFY2(composer.form()->previewText().contains(HexText::format(expected)), qPrintable(composer.form()->previewText()));
 
     // Raw -> Form: typing the same bytes in a fresh composer fills the form with the same request.
     RequestComposer typed;
