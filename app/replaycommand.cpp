@@ -141,7 +141,11 @@ int runReplay(const QStringList &arguments)
     if (!script.report().error.isEmpty())
         err << "mbscope replay: " << path << ": " << script.report().error << "; the exchanges before it are replayed\n";
     if (script.isEmpty()) {
-        err << "mbscope replay: " << path << ": no recorded requests to replay\n";
+        err << "mbscope replay: " << path << ": no recorded requests to replay"
+            << (script.report().kind == ExchangeSourceReport::Kind::Capture
+                    ? " (no Modbus traffic on the ports looked at: --port and --rtu-port say which carry it)"
+                    : "")
+            << '\n';
         return ExitUsage;
     }
 
@@ -208,7 +212,7 @@ int runReplay(const QStringList &arguments)
         out << result.summary(script);
     out.flush();
     if (!linkProblem.isEmpty()) {
-        err << "mbscope replay: " << parsed.url->toString() << ": " << linkProblem << '\n';
+        err << "mbscope replay: " << linkProblem << '\n';
         return ExitLinkError;
     }
     if (result.interrupted)
