@@ -42,6 +42,9 @@ int serveReplay(const ReplayScript &script, const QString &source, const ReplayS
             << "\nnot recorded  " << ReplayResponder::policyText(options.unrecorded) << '\n'
             << "listening " << bound << '\n';
         out.flush();
+    } else {
+        // Standard output stays one JSON document; a script still learns the port the OS chose.
+        err << "listening " << bound << Qt::endl;
     }
 
     QEventLoop loop;
