@@ -3,6 +3,7 @@
 
 #include "requestcomposer.h"
 #include "mainwindow.h"
+#include "sessioncontroller.h"
 #include "transactionview.h"
 
 #include <QtCore/QCommandLineParser>
@@ -10,6 +11,7 @@
 #include <QtCore/QTimer>
 #include <QtGui/QPixmap>
 #include <QtWidgets/QApplication>
+#include <QtWidgets/QMessageBox>
 
 #include <cstdio>
 #include <cstring>
@@ -78,9 +80,13 @@ int runGui(QApplication &app)
                                         QStringLiteral("WxH"));
     const QCommandLineOption noSimulatorOption(QStringLiteral("no-simulator"),
                                                QStringLiteral("Start disconnected instead of with the built-in simulator."));
-    parser.addOptions({screenshotOption, sizeOption, noSimulatorOption});
+    const QCommandLineOption sessionOption(QStringLiteral("session"),
+                                           QStringLiteral("Open the session FILE (*.mbscope.json) at start: its target, requests "
+                                                          "and poll settings; the built-in simulator is not started."),
+                                           QStringLiteral("FILE"));
+    parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption});
     if (!parser.parse(QCoreApplication::arguments())) {
-        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator]\n",
+        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE]\n",
                      qPrintable(parser.errorText()));
         return ExitUsage;
     }
@@ -117,10 +123,26 @@ int runGui(QApplication &app)
     if (QCoreApplication::organizationName().isEmpty())
         QCoreApplication::setOrganizationName(QStringLiteral("mbscope"));
     MainWindow window;
-    window.resize(size);
+    // A screenshot or an asked size is reproducible: the layout the last close saved is not used.
+    if (!screenshot.isEmpty() || parser.isSet(sizeOption) || !window.restoreLayout())
+        window.resize(size);
     bool simulated = false;
-    if (!parser.isSet(noSimulatorOption))
+    const QString sessionPath = parser.value(sessionOption);
+    if (!sessionPath.isEmpty()) {
+        // Said on standard error too: a screenshot run has nobody to read a dialog.
+        window.session()->setProblemReport([&screenshot, &window](const QString &path, const QStringList &problems) {
+            std::fprintf(stderr, "mbscope: the session %s was not opened:\n", qPrintable(path));
+            for (const QString &problem : problems)
+                std::fprintf(stderr, "  %s\n", qPrintable(problem));
+            if (screenshot.isEmpty())
+                QMessageBox::warning(&window, QObject::tr("Session not opened"),
+                                     QObject::tr("%1 was not opened:\n%2").arg(path, problems.join(QLatin1Char('\n'))));
+        });
+        if (!window.session()->open(sessionPath) && !screenshot.isEmpty())
+            return ExitFailure;
+    } else if (!parser.isSet(noSimulatorOption)) {
         simulated = window.startWithSimulator();
+    }
     window.show();
 
     if (!screenshot.isEmpty())

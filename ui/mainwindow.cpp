@@ -9,12 +9,16 @@
 #include "registertable.h"
 #include "requestcomposer.h"
 #include "savedrequests.h"
+#include "sessioncontroller.h"
+#include "trafficmodel.h"
 #include "trafficmonitor.h"
 #include "transactionview.h"
 
 #include "protocol/adubuilder.h"
 
 #include <QtCore/QCoreApplication>
+#include <QtCore/QSettings>
+#include <QtGui/QCloseEvent>
 #include <QtGui/QAction>
 #include <QtGui/QKeySequence>
 #include <QtWidgets/QDockWidget>
@@ -38,6 +42,8 @@ MainWindow::MainWindow(QWidget *parent)
     buildDocks();
     connectPanels();
     connectDocks();
+    m_session = new SessionController(this, m_connectionBar, m_composer);
+    connect(m_session, &SessionController::titleChanged, this, &QMainWindow::setWindowTitle);
     createMenus();
     statusBar()->showMessage(tr("Ready"), 3000);
     resize(1400, 900);
@@ -123,6 +129,8 @@ void MainWindow::connectPanels()
         else if (state == LinkController::State::Connected) {
             bar->clearError();
             bar->addRecent(m_controller->url());
+            // The traffic list names the link its frames travelled on.
+            m_traffic->model()->setCurrentLink(m_controller->url().toString());
         }
     });
     connect(link, &LinkController::countersChanged, m_linkStatus, &LinkStatusWidget::setCounters);
@@ -155,6 +163,33 @@ void MainWindow::showEvent(QShowEvent *event)
     }
 }
 
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (!m_session->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    saveLayout();
+    QMainWindow::closeEvent(event);
+}
+
+bool MainWindow::restoreLayout()
+{
+    const QSettings settings;
+    const QByteArray geometry = settings.value(QStringLiteral("window/geometry")).toByteArray();
+    const QByteArray state = settings.value(QStringLiteral("window/state")).toByteArray();
+    const bool geometryRestored = !geometry.isEmpty() && restoreGeometry(geometry);
+    m_layoutRestored = !state.isEmpty() && restoreState(state);
+    return geometryRestored || m_layoutRestored;
+}
+
+void MainWindow::saveLayout() const
+{
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+}
+
 // The composer needs about 450 px for its poll row; the answer gets the rest. The docks take a
 // bit over a quarter of the height: enough rows of traffic to follow a poll, the answer's two
 // trees keep most of it.
@@ -162,7 +197,8 @@ void MainWindow::fitPanelsToWindow()
 {
     const int composerWidth = qBound(420, width() / 3, 520);
     m_splitter->setSizes({composerWidth, qMax(200, m_splitter->width() - composerWidth)});
-    resizeDocks({m_trafficDock}, {qBound(160, height() * 28 / 100, 320)}, Qt::Vertical);
+    if (!m_layoutRestored)
+        resizeDocks({m_trafficDock}, {qBound(160, height() * 28 / 100, 320)}, Qt::Vertical);
 }
 
 void MainWindow::buildDocks()
@@ -243,6 +279,7 @@ bool MainWindow::startWithSimulator(const QString &url)
         m_controller->connectTo(*target);
     if (const UnitProfile *unit = m_simulator->profile().unit(1))
         m_registers->setProfile(*unit, m_simulator->profile().name);
+    m_session->markClean(); // the first run's target and request are where an untitled session starts
 
     QString notice = tr("<b>Connected to mbscope's built-in simulator</b>, not to a device: a RosRao gamma detector "
                         "(profile <code>%1</code>) answering on <code>%2</code>. Press <b>Send</b> to read its 22 "
@@ -258,7 +295,10 @@ bool MainWindow::startWithSimulator(const QString &url)
 void MainWindow::createMenus()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
-    QAction *quit = file->addAction(tr("&Quit"), QCoreApplication::instance(), &QCoreApplication::quit);
+    m_session->addMenuActions(file);
+    file->addSeparator();
+    // Closing the window (not quitting the application outright) asks about unsaved changes.
+    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
     quit->setMenuRole(QAction::QuitRole);
 

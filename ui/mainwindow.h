@@ -19,6 +19,7 @@ class LinkStatusWidget;
 class NoticeBanner;
 class RegisterTable;
 class RequestComposer;
+class SessionController;
 class TrafficMonitor;
 class TransactionView;
 
@@ -53,9 +54,16 @@ public:
     [[nodiscard]] QTabWidget *viewTabs() const { return m_tabs; }
     [[nodiscard]] TrafficMonitor *trafficMonitor() const { return m_traffic; }
     [[nodiscard]] RegisterTable *registerTable() const { return m_registers; }
+    [[nodiscard]] SessionController *session() const { return m_session; }
+
+    // Window geometry and dock layout kept in QSettings ("window/geometry", "window/state"):
+    // restoreLayout() puts back what the last close saved; false when nothing was saved.
+    bool restoreLayout();
+    void saveLayout() const;
 
 protected:
     void showEvent(QShowEvent *event) override;
+    void closeEvent(QCloseEvent *event) override;
 
 private:
     void fitPanelsToWindow();
@@ -82,6 +90,8 @@ private:
     RegisterTable *m_registers = nullptr;
     QDockWidget *m_trafficDock = nullptr;
     QDockWidget *m_registersDock = nullptr;
+    SessionController *m_session = nullptr;
+    bool m_layoutRestored = false; // the docks' sizes came from QSettings: the first show keeps them
     bool m_fitted = false; // panel proportions set on the first show, then left to the user
 };
 

@@ -52,6 +52,8 @@ public:
     // Fills the editor with the saved request of that name; false when there is none.
     bool loadSaved(const QString &name);
     [[nodiscard]] QList<SavedRequest> savedRequests() const { return m_saved; }
+    // Re-reads the named requests from QSettings (an opened session added some).
+    void reloadSavedRequests() { reloadSavedCombo(); }
 
 Q_SIGNALS:
     // After every edit: the bytes when the text is hex (valid), else empty bytes and false.
