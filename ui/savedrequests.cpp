@@ -35,7 +35,8 @@ QList<SavedRequest> SavedRequests::defaults()
 QList<SavedRequest> SavedRequests::load()
 {
     QSettings settings;
-    if (!settings.contains(kKey))
+    // An array is a group, which contains() does not see: its size key says it was stored.
+    if (!settings.contains(kKey + QStringLiteral("/size")))
         return defaults();
     QList<SavedRequest> requests;
     const int size = settings.beginReadArray(kKey);
