@@ -16,6 +16,9 @@ int runHeadless(const QStringList &arguments);
 int runGui(QApplication &app);
 // `mbscope --screenshot FILE`: the window is rendered offscreen (decided before QApplication exists).
 [[nodiscard]] bool guiWantsOffscreen(int argc, char *argv[]);
+// `mbscope --session FILE`: QGuiApplication takes -session/--session for itself (X11 session
+// management), so the option is taken out of argv before QApplication exists; runGui opens it.
+void takeSessionArgument(int &argc, char *argv[]);
 #endif
 
 // A subcommand's --help text with its real usage line ("Usage: mbscope poll [options]") instead of

@@ -20,6 +20,10 @@ namespace mbscope::app {
 
 namespace {
 
+// The --session argument, taken out of argv before QApplication could claim it.
+QString g_sessionArgument;
+bool g_sessionArgumentMissing = false;
+
 // How long a screenshot waits for the first answer before it renders what is there.
 constexpr int kScreenshotAnswerWaitMs = 3000;
 
@@ -63,6 +67,27 @@ bool guiWantsOffscreen(int argc, char *argv[])
             return true;
     }
     return false;
+}
+
+void takeSessionArgument(int &argc, char *argv[])
+{
+    int kept = 1;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--session") == 0 || std::strcmp(argv[i], "-session") == 0) {
+            if (i + 1 < argc)
+                g_sessionArgument = QString::fromLocal8Bit(argv[++i]);
+            else
+                g_sessionArgumentMissing = true;
+            continue;
+        }
+        if (std::strncmp(argv[i], "--session=", 10) == 0) {
+            g_sessionArgument = QString::fromLocal8Bit(argv[i] + 10);
+            continue;
+        }
+        argv[kept++] = argv[i];
+    }
+    argc = kept;
+    argv[argc] = nullptr;
 }
 
 int runGui(QApplication &app)
@@ -127,7 +152,11 @@ int runGui(QApplication &app)
     if (!screenshot.isEmpty() || parser.isSet(sizeOption) || !window.restoreLayout())
         window.resize(size);
     bool simulated = false;
-    const QString sessionPath = parser.value(sessionOption);
+    const QString sessionPath = parser.isSet(sessionOption) ? parser.value(sessionOption) : g_sessionArgument;
+    if (g_sessionArgumentMissing || (parser.isSet(sessionOption) && sessionPath.isEmpty())) {
+        std::fprintf(stderr, "mbscope: --session needs a FILE (a *.mbscope.json session)\n");
+        return ExitUsage;
+    }
     if (!sessionPath.isEmpty()) {
         // Said on standard error too: a screenshot run has nobody to read a dialog.
         window.session()->setProblemReport([&screenshot, &window](const QString &path, const QStringList &problems) {

@@ -41,6 +41,7 @@ int main(int argc, char *argv[])
 #ifdef MBSCOPE_HAVE_UI
     if (mbscope::app::guiWantsOffscreen(argc, argv))
         mbscope::app::HistogramPlot::prepareOffscreenPlatform();
+    mbscope::app::takeSessionArgument(argc, argv);
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("mbscope"));
     QApplication::setApplicationVersion(QStringLiteral(MBSCOPE_VERSION));
