@@ -111,6 +111,10 @@ void MainWindow::connectPanels()
     connect(link, &LinkController::stateChanged, this, [this, bar](LinkController::State state, const QString &message) {
         const bool connected = state != LinkController::State::Disconnected;
         bar->setConnected(connected);
+        // The traffic list names the link its frames travel on (set when the target is, before
+        // the first request: Connected comes only once the link answered).
+        if (state == LinkController::State::Ready)
+            m_traffic->model()->setCurrentLink(m_controller->url().toString());
         m_composer->setLinkReady(connected);
         m_linkStatus->setState(state, message);
         // The banner speaks of the simulator only while the window is connected to it.
@@ -129,8 +133,6 @@ void MainWindow::connectPanels()
         else if (state == LinkController::State::Connected) {
             bar->clearError();
             bar->addRecent(m_controller->url());
-            // The traffic list names the link its frames travelled on.
-            m_traffic->model()->setCurrentLink(m_controller->url().toString());
         }
     });
     connect(link, &LinkController::countersChanged, m_linkStatus, &LinkStatusWidget::setCounters);

@@ -8,12 +8,15 @@
 #include "requestcomposer.h"
 #include "savedrequests.h"
 #include "sessioncontroller.h"
+#include "trafficmodel.h"
+#include "trafficmonitor.h"
 
 #include "session/sessionreader.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QFile>
 #include <QtCore/QTemporaryDir>
+#include <QtWidgets/QDockWidget>
 #include <QtWidgets/QSpinBox>
 #include <QtTest/QtTest>
 
@@ -52,6 +55,8 @@ private Q_SLOTS:
     void promptAnswersDecideNewAndClose_data();
     void promptAnswersDecideNewAndClose();
     void recentFilesKeepTheLastEight();
+    void layoutIsRestored();
+    void trafficNamesTheConnectedLink();
 };
 
 void TestSessionMenu::savedSessionReopensTheSame()
@@ -227,6 +232,42 @@ void TestSessionMenu::recentFilesKeepTheLastEight()
         QVERIFY(window.session()->saveAs(written.constFirst()));
     }
     QCOMPARE(window.session()->recentFiles(), written.mid(0, SessionController::kMaxRecent));
+}
+
+void TestSessionMenu::layoutIsRestored()
+{
+    {
+        MainWindow window;
+        window.resize(1111, 777);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.findChild<QDockWidget *>(QStringLiteral("registersDock"))->hide();
+        QVERIFY(window.close());
+    }
+    MainWindow reopened;
+    QVERIFY(reopened.restoreLayout());
+    reopened.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&reopened));
+    QCOMPARE(reopened.size(), QSize(1111, 777));
+    QVERIFY(!reopened.findChild<QDockWidget *>(QStringLiteral("registersDock"))->isVisible());
+    QVERIFY(reopened.findChild<QDockWidget *>(QStringLiteral("trafficDock"))->isVisible());
+}
+
+// The Link column said "link 0": it names the URL the window connected to.
+void TestSessionMenu::trafficNamesTheConnectedLink()
+{
+    MainWindow window;
+    QVERIFY(window.startWithSimulator(QStringLiteral("rtu-tcp://127.0.0.1:0")));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(!window.session()->isModified()); // the first run is where an untitled session starts
+    QTRY_VERIFY_WITH_TIMEOUT(window.composer()->sendAction()->isEnabled(), 5000);
+    window.composer()->send();
+    TrafficModel *model = window.trafficMonitor()->model();
+    QTRY_VERIFY_WITH_TIMEOUT(model->rowCount() >= 2, 5000);
+    const QString link = model->index(0, TrafficModel::LinkColumn).data().toString();
+    QVERIFY2(link.contains(QLatin1String("127.0.0.1:")), qPrintable(link));
+    QVERIFY2(!link.contains(QLatin1String("link 0")), qPrintable(link));
 }
 
 QTEST_MAIN(TestSessionMenu)
