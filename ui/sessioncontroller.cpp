@@ -5,6 +5,7 @@
 #include "requestcomposer.h"
 #include "savedrequests.h"
 
+#include "protocol/hextext.h"
 #include "session/sessionreader.h"
 #include "session/sessionwriter.h"
 #include "transport/linkurl.h"
@@ -114,27 +115,58 @@ void SessionController::watchWidgets()
 
 SessionDocument SessionController::currentDocument() const
 {
-    SessionDocument d;
+    SessionDocument d = m_base;
+    d.target.url.clear();
     if (const std::optional<LinkUrl> url = m_bar->url())
         d.target.url = url->toString();
     d.target.timeoutMs = m_bar->timeoutMs() > 0 ? m_bar->timeoutMs() : -1;
+    d.requests.clear();
+    d.poll.reset();
     const QString current = m_composer->rawEditor()->text().trimmed();
+    // The composer shows the opened document's polled request: unchanged, it keeps its name and
+    // the poll its list.
+    const SessionRequest *polled = basePolledRequest();
+    const bool samePolled = polled && HexText::parse(polled->hex).bytes == m_composer->rawEditor()->bytes();
     if (!current.isEmpty() && m_composer->rawEditor()->isValid()) {
         SessionRequest request;
         request.name = QString::fromLatin1(kComposerRequest);
         request.hex = current;
+        if (samePolled)
+            request = *polled;
         d.requests.append(request);
         // A poll "until stopped" has no end a document can hold (a saved poll ends): only the
         // interval and count of a counted poll are kept.
         if (m_composer->countSpin()->value() > 0) {
             SessionPoll poll;
-            poll.requests = {request.name};
+            if (samePolled)
+                poll = *m_base.poll;
+            else
+                poll.requests = {request.name};
             poll.intervalMs = m_composer->intervalSpin()->value();
             poll.count = quint64(m_composer->countSpin()->value());
             d.poll = poll;
         }
     }
-    for (const SavedRequest &saved : m_composer->rawEditor()->savedRequests()) {
+    const QList<SavedRequest> savedList = m_composer->rawEditor()->savedRequests();
+    auto savedNamed = [&savedList](const QString &name) -> const SavedRequest * {
+        for (const SavedRequest &saved : savedList) {
+            if (saved.name == name)
+                return &saved;
+        }
+        return nullptr;
+    };
+    // The opened document's requests keep their place (its plan may name them); exact bytes take
+    // the composer list's text, forms and completed PDUs stay as read.
+    for (SessionRequest request : m_base.requests) {
+        if (request.name == QLatin1String(kComposerRequest) || d.request(request.name))
+            continue;
+        const SavedRequest *saved = savedNamed(request.name);
+        if (saved && request.kind == SessionRequest::Kind::Hex && !request.complete)
+            request.hex = saved->hex;
+        if (request.hexBytes().ok() || request.kind == SessionRequest::Kind::Form)
+            d.requests.append(request);
+    }
+    for (const SavedRequest &saved : savedList) {
         if (saved.name == QLatin1String(kComposerRequest) || d.request(saved.name))
             continue; // the document's names are unique; the composer's request keeps its name
         SessionRequest request;
@@ -144,6 +176,14 @@ SessionDocument SessionController::currentDocument() const
             d.requests.append(request);
     }
     return d;
+}
+
+const SessionRequest *SessionController::basePolledRequest() const
+{
+    if (!m_base.poll || m_base.poll->requests.isEmpty())
+        return nullptr;
+    const SessionRequest *request = m_base.request(m_base.poll->requests.constFirst());
+    return request && request->kind == SessionRequest::Kind::Hex && !request->complete ? request : nullptr;
 }
 
 void SessionController::apply(const SessionDocument &document)
@@ -180,6 +220,8 @@ void SessionController::apply(const SessionDocument &document)
         m_composer->rawEditor()->reloadSavedRequests();
     }
     const SessionRequest *current = document.request(QString::fromLatin1(kComposerRequest));
+    if (!current && &document == &m_base)
+        current = basePolledRequest();
     m_composer->setRequestText(current ? current->hex : QString());
     m_composer->showRawTab();
     m_composer->intervalSpin()->setValue(document.poll ? int(document.poll->intervalMs) : kDefaultIntervalMs);
@@ -204,7 +246,8 @@ bool SessionController::open(const QString &path)
         return false;
     }
     m_lastProblems.clear();
-    apply(*loaded.document);
+    m_base = *loaded.document;
+    apply(m_base);
     setPath(QFileInfo(path).absoluteFilePath());
     addRecent(m_path);
     markClean();
@@ -247,6 +290,7 @@ bool SessionController::newSession()
         return false;
     SessionDocument fresh;
     fresh.target = m_freshTarget;
+    m_base = SessionDocument();
     apply(fresh);
     setPath(QString());
     markClean();

@@ -19,8 +19,9 @@ class RequestComposer;
 
 // The window's session file: New, Open, Save, Save As and Open Recent. A session holds what the
 // widgets show (the connection bar's target and timeout, the composer's request, its poll
-// interval and count, the named requests) and nothing else; the document is made from the
-// widgets when saved and put back into them when opened. Modified means the widgets differ from
+// interval and count, the named requests); the document is made from the widgets when saved and
+// put back into them when opened. What the window does not show (the test plan, the profile, a
+// form request, the capture) is written back as it was read. Modified means the widgets differ from
 // what was last saved or opened. Every question to the user (save changes? which file? what was
 // wrong in it?) goes through a replaceable function, so tests answer without a modal dialog.
 class SessionController : public QObject
@@ -77,6 +78,8 @@ private:
     void watchWidgets();
     void updateModified();
     void apply(const SessionDocument &document);
+    // The opened document's first polled request, when it is exact bytes the composer can show.
+    [[nodiscard]] const SessionRequest *basePolledRequest() const;
     void addRecent(const QString &path);
     void rebuildRecentMenu();
     void setPath(const QString &path);
@@ -88,6 +91,7 @@ private:
     QMenu *m_recentMenu = nullptr;
     QString m_path;
     SessionDocument m_clean;
+    SessionDocument m_base; // the opened document: what the window does not show (plan, profile, ...) is saved back as read
     SessionTarget m_freshTarget; // what New puts back: the connection bar of a new window
     bool m_modified = false;
     bool m_applying = false;

@@ -55,6 +55,7 @@ private Q_SLOTS:
     void promptAnswersDecideNewAndClose_data();
     void promptAnswersDecideNewAndClose();
     void recentFilesKeepTheLastEight();
+    void savingKeepsWhatTheWindowDoesNotShow();
     void layoutIsRestored();
     void trafficNamesTheConnectedLink();
 };
@@ -232,6 +233,39 @@ void TestSessionMenu::recentFilesKeepTheLastEight()
         QVERIFY(window.session()->saveAs(written.constFirst()));
     }
     QCOMPARE(window.session()->recentFiles(), written.mid(0, SessionController::kMaxRecent));
+}
+
+// The shipped example has a test plan, a profile and a poll of a named request: the window shows
+// the polled request, and saving it back changes none of the rest.
+void TestSessionMenu::savingKeepsWhatTheWindowDoesNotShow()
+{
+    const QString example = QStringLiteral(MBSCOPE_TEST_DATA_DIR "/../../docs/examples/rosrao-gamma.mbscope.json");
+    const SessionLoadResult original = SessionReader::load(example);
+    QVERIFY2(original.ok(), qPrintable(original.errorText()));
+    QVERIFY(!original.document->plan.empty());
+
+    MainWindow window;
+    QVERIFY(window.session()->open(example));
+    QVERIFY(!window.session()->isModified());
+    const SessionRequest *polled = original.document->request(original.document->poll->requests.constFirst());
+    QCOMPARE(window.composer()->rawEditor()->text().trimmed(), polled->hex.trimmed());
+    QCOMPARE(window.composer()->countSpin()->value(), int(original.document->poll->count));
+
+    QTemporaryDir dir;
+    const QString copy = dir.filePath(QStringLiteral("copy.mbscope.json"));
+    QVERIFY(window.session()->saveAs(copy));
+    const SessionLoadResult written = SessionReader::load(copy);
+    QVERIFY2(written.ok(), qPrintable(written.errorText()));
+    SessionDocument expected = *original.document;
+    expected.target = written.document->target; // the connection bar writes the URL in full
+    QCOMPARE(written.document->plan, expected.plan);
+    QCOMPARE(written.document->profile, expected.profile);
+    QCOMPARE(written.document->poll, expected.poll);
+    for (const SessionRequest &request : expected.requests) {
+        QVERIFY2(written.document->request(request.name), qPrintable(request.name));
+        QCOMPARE(*written.document->request(request.name), request);
+    }
+    QCOMPARE(written.document->name, expected.name);
 }
 
 void TestSessionMenu::layoutIsRestored()
