@@ -1,6 +1,6 @@
 #include "connectionbar.h"
 
-#include "severitystyle.h"
+#include "hexerrormark.h"
 
 #include <QtCore/QSettings>
 #include <QtGui/QAction>
@@ -157,14 +157,7 @@ void ConnectionBar::buildUi()
     m_recentButton->setMenu(new QMenu(m_recentButton));
     m_recentButton->setToolTip(tr("Targets connected to before"));
 
-    m_errorLabel = new QLabel(this);
-    m_errorLabel->setObjectName(QStringLiteral("connectionErrorLabel"));
-    m_errorLabel->setWordWrap(true);
-    m_errorLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    QPalette errorPalette = m_errorLabel->palette();
-    errorPalette.setColor(QPalette::WindowText, SeverityStyle::textColor(Severity::Error));
-    m_errorLabel->setPalette(errorPalette);
-    m_errorLabel->hide();
+    m_errorLabel = hexerrormark::newErrorLabel(QStringLiteral("connectionErrorLabel"), this);
 
     auto *row = new QHBoxLayout;
     row->addWidget(buddyLabel(tr("&Link:"), m_kindCombo, this));

@@ -2,12 +2,12 @@
 
 #include "fieldtreemodel.h"
 #include "fieldtreeview.h"
+#include "hexerrormark.h"
 #include "severitystyle.h"
 
 #include "protocol/dissector.h"
 
 #include <QtGui/QFontDatabase>
-#include <QtGui/QTextBlock>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QGridLayout>
 #include <QtWidgets/QHBoxLayout>
@@ -120,14 +120,7 @@ void DecodePanel::buildUi()
     summaryRow->addWidget(m_verdictLabel, 0, Qt::AlignTop);
     summaryRow->addWidget(m_summaryLabel, 1);
 
-    m_errorLabel = new QLabel(this);
-    m_errorLabel->setObjectName(QStringLiteral("errorLabel"));
-    m_errorLabel->setWordWrap(true);
-    m_errorLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    QPalette errorPalette = m_errorLabel->palette();
-    errorPalette.setColor(QPalette::WindowText, SeverityStyle::textColor(Severity::Error));
-    m_errorLabel->setPalette(errorPalette);
-    m_errorLabel->hide();
+    m_errorLabel = hexerrormark::newErrorLabel(QStringLiteral("errorLabel"), this);
 
     m_reasonLabel = new QLabel(this);
     m_reasonLabel->setObjectName(QStringLiteral("reasonLabel"));
@@ -267,29 +260,8 @@ void DecodePanel::showInputError(const QString &what, const HexTextError &error,
     m_errorLabel->setText(text);
     m_errorLabel->show();
     if (inFrame)
-        markFrameError(error);
+        hexerrormark::mark(m_frameEdit, error);
     Q_EMIT decoded();
-}
-
-// Underlines the character the parser stopped at, so the user sees it without counting columns.
-void DecodePanel::markFrameError(const HexTextError &error)
-{
-    const QTextBlock block = m_frameEdit->document()->findBlockByNumber(error.line - 1);
-    if (!block.isValid())
-        return;
-    QTextCursor cursor(block);
-    const int column = qBound(0, error.column - 1, qMax(0, block.length() - 1));
-    cursor.setPosition(block.position() + column);
-    if (column < block.length() - 1)
-        cursor.movePosition(QTextCursor::NextCharacter, QTextCursor::KeepAnchor);
-    else
-        cursor.movePosition(QTextCursor::PreviousCharacter, QTextCursor::KeepAnchor);
-    QTextEdit::ExtraSelection mark;
-    mark.cursor = cursor;
-    mark.format.setUnderlineStyle(QTextCharFormat::WaveUnderline);
-    mark.format.setUnderlineColor(SeverityStyle::hue(Severity::Error));
-    mark.format.setBackground(SeverityStyle::backgroundColor(Severity::Error));
-    m_frameEdit->setExtraSelections({mark});
 }
 
 void DecodePanel::setVerdict(const QString &text, const QColor &color)

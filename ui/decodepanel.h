@@ -61,7 +61,6 @@ private:
     void showDissection(const Dissection &dissection);
     void showEmpty();
     void showInputError(const QString &what, const HexTextError &error, bool inFrame);
-    void markFrameError(const HexTextError &error);
     void setVerdict(const QString &text, const QColor &color);
 
     QPlainTextEdit *m_frameEdit = nullptr;

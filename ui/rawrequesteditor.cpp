@@ -1,5 +1,6 @@
 #include "rawrequesteditor.h"
 
+#include "hexerrormark.h"
 #include "severitystyle.h"
 
 #include "protocol/adubuilder.h"
@@ -190,27 +191,7 @@ void RawRequestEditor::onTextChanged()
 
 void RawRequestEditor::markError()
 {
-    if (m_error.message.isEmpty()) {
-        m_edit->setExtraSelections({});
-        return;
-    }
-    // The parser stopped at one character: mark it so the user does not count columns.
-    const QTextBlock block = m_edit->document()->findBlockByNumber(m_error.line - 1);
-    if (!block.isValid())
-        return;
-    QTextCursor cursor(block);
-    const int column = qBound(0, m_error.column - 1, qMax(0, block.length() - 1));
-    cursor.setPosition(block.position() + column);
-    if (column < block.length() - 1)
-        cursor.movePosition(QTextCursor::NextCharacter, QTextCursor::KeepAnchor);
-    else
-        cursor.movePosition(QTextCursor::PreviousCharacter, QTextCursor::KeepAnchor);
-    QTextEdit::ExtraSelection mark;
-    mark.cursor = cursor;
-    mark.format.setUnderlineStyle(QTextCharFormat::WaveUnderline);
-    mark.format.setUnderlineColor(SeverityStyle::hue(Severity::Error));
-    mark.format.setBackground(SeverityStyle::backgroundColor(Severity::Error));
-    m_edit->setExtraSelections({mark});
+    hexerrormark::mark(m_edit, m_error);
 }
 
 // Completion writes spaced hex (three characters a byte), so byte i starts at column 3 * i.
