@@ -1,5 +1,6 @@
 #include "simulatecommand.h"
 
+#include "faultswatcher.h"
 #include "simulatesession.h"
 
 #include "sim/profileloader.h"
@@ -134,7 +135,7 @@ int runSimulate(const QStringList &arguments)
                                                          "rtu:///dev/pts/5?baud=9600&parity=N."),
                                           QStringLiteral("URL"));
     const QCommandLineOption faultsOption(QStringLiteral("faults"),
-                                          QStringLiteral("Fault rules file ({\"seed\": N, \"rules\": [...]}); replaces the profile's rules."),
+                                          QStringLiteral("Fault rules file ({\"seed\": N, \"rules\": [...]}); replaces the profile's rules, and is read again whenever it is saved while the simulator runs."),
                                           QStringLiteral("FILE"));
     const QCommandLineOption logOption(QStringLiteral("log"),
                                        QStringLiteral("Write every frame as a JSON line (t, direction, endpoint, peer, unit, hex, verdict)."),
@@ -246,6 +247,10 @@ int runSimulate(const QStringList &arguments)
     for (const QString &line : session.endpointDescriptions())
         out << "listening " << line << '\n';
     out.flush();
+
+    std::unique_ptr<FaultsWatcher> faultsWatcher;
+    if (parser.isSet(faultsOption))
+        faultsWatcher = std::make_unique<FaultsWatcher>(parser.value(faultsOption), &session.faultInjector(), seed, out);
 
     QEventLoop loop;
     bool interrupted = false;

@@ -52,6 +52,7 @@ public:
     [[nodiscard]] QStringList endpointDescriptions() const;
     [[nodiscard]] QString summary() const;
     [[nodiscard]] Simulator &simulator() { return m_sim; }
+    [[nodiscard]] FaultInjector &faultInjector() { return m_injector; }
 
 private:
     struct Counts {

@@ -85,6 +85,17 @@ quint16 SimCli::port(int index) const
     return quint16(re.match(m_listening.value(index)).captured(1).toUInt());
 }
 
+bool SimCli::waitForOutput(const QByteArray &text, int timeoutMs)
+{
+    QElapsedTimer timer;
+    timer.start();
+    while (!m_out.contains(text) && timer.elapsed() < timeoutMs && m_process->state() == QProcess::Running) {
+        m_process->waitForReadyRead(100);
+        m_out += m_process->readAllStandardOutput();
+    }
+    return m_out.contains(text);
+}
+
 int SimCli::stop()
 {
     ::kill(pid_t(m_process->processId()), SIGINT);

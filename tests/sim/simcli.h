@@ -42,6 +42,8 @@ public:
     [[nodiscard]] quint16 port(int index) const;
     [[nodiscard]] const QStringList &listening() const { return m_listening; }
 
+    // Reads standard output while it runs until it holds text (false after timeoutMs).
+    [[nodiscard]] bool waitForOutput(const QByteArray &text, int timeoutMs);
     // SIGINT, as Ctrl-C; the exit code (-1 when it did not stop).
     int stop();
     [[nodiscard]] const QByteArray &output() const { return m_out; }

@@ -54,6 +54,7 @@ private Q_SLOTS:
     void mbpollTcp();
     void mbpollRtu();
     void durationStopsAndQuietSummarises();
+    void faultsChangedWhileRunning();
     void load();
 };
 
@@ -267,6 +268,78 @@ void tst_Simulate::durationStopsAndQuietSummarises()
 
 // 50 TCP clients at once, 1000 requests each, one after the other per client: every answer
 // checked (transaction id, unit, values), none missing. The rate is printed, never asserted.
+namespace {
+
+// One Read Holding Registers of register 0x0079 over MBAP; the whole answer (empty on timeout).
+QByteArray readFirstRegister(QTcpSocket &socket, quint16 tid)
+{
+    const char request[] = {char(tid >> 8), char(tid & 0xFF), 0, 0, 0, 6, 1, 3, 0, 0x79, 0, 1};
+    socket.write(request, sizeof request);
+    QByteArray answer;
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < 10000) {
+        if (answer.size() >= 6 && answer.size() >= 6 + ((quint8(answer[4]) << 8) | quint8(answer[5])))
+            return answer;
+        socket.waitForReadyRead(100);
+        answer += socket.readAll();
+    }
+    return {};
+}
+
+void writeFile(const QString &path, const QByteArray &text)
+{
+    // Written elsewhere and renamed over the old file, as editors save.
+    QFile file(path + QStringLiteral(".new"));
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(text);
+    file.close();
+    QFile::remove(path);
+    QVERIFY(QFile::rename(path + QStringLiteral(".new"), path));
+}
+
+} // namespace
+
+// The faults file is read again when it is saved: new rules take effect at once, and a file that
+// no longer reads is reported with where it is wrong while the rules in force stay.
+void tst_Simulate::faultsChangedWhileRunning()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString faults = dir.filePath(QStringLiteral("faults.json"));
+    writeFile(faults, "{\"seed\": 3, \"rules\": []}\n");
+    QString why;
+    SimCli sim;
+    QVERIFY2(sim.start({QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--faults"), faults, QStringLiteral("--quiet")},
+                       1, &why),
+             qPrintable(why));
+    QTcpSocket socket;
+    socket.connectToHost(QHostAddress::LocalHost, sim.port(0));
+    QVERIFY(socket.waitForConnected(5000));
+
+    QByteArray answer = readFirstRegister(socket, 1);
+    QCOMPARE(answer.toHex(' '), QByteArray("00 01 00 00 00 05 01 03 02 04 1a"));
+
+    writeFile(faults, "{\"seed\": 3, \"rules\": [{\"kind\": \"exception\", \"functions\": [\"0x03\"], \"code\": 6}]}\n");
+    QVERIFY2(sim.waitForOutput("faults: reloaded", 10000), sim.output().constData());
+    QVERIFY2(sim.output().contains(": 1 rule, seed 3"), sim.output().constData());
+    answer = readFirstRegister(socket, 2);
+    QCOMPARE(answer.toHex(' '), QByteArray("00 02 00 00 00 03 01 83 06"));
+
+    writeFile(faults, "{\"seed\": 3, \"rules\": [{\"kind\": \"explode\"}]}\n");
+    QVERIFY2(sim.waitForOutput("the rules in force stay", 10000), sim.output().constData());
+    QVERIFY2(sim.output().contains("rules[0].kind"), sim.output().constData());
+    answer = readFirstRegister(socket, 3);
+    QCOMPARE(answer.toHex(' '), QByteArray("00 03 00 00 00 03 01 83 06"));
+
+    writeFile(faults, "{\"seed\": 3, \"rules\": []}\n");
+    QVERIFY2(sim.waitForOutput(": 0 rules, seed 3", 10000), sim.output().constData());
+    answer = readFirstRegister(socket, 4);
+    QCOMPARE(answer.toHex(' '), QByteArray("00 04 00 00 00 05 01 03 02 04 1a"));
+    QCOMPARE(sim.stop(), 0);
+}
+
 void tst_Simulate::load()
 {
     constexpr int kClients = 50;
