@@ -17,6 +17,10 @@ constexpr const char *kControlNames[32] = {
 DelimitedFramer::DelimitedFramer(const DelimitedFraming &framing)
     : m_framing(framing)
 {
+    for (char c : framing.startBytes)
+        m_isStart.set(quint8(c));
+    for (char c : framing.endBytes)
+        m_isEnd.set(quint8(c));
 }
 
 quint8 DelimitedFramer::checksum(DelimitedChecksum kind, QByteArrayView bytes)
@@ -75,18 +79,20 @@ QString DelimitedFramer::checksumName(DelimitedChecksum kind)
 
 void DelimitedFramer::process()
 {
-    const int start = m_framing.startByte;
-    const char end = char(m_framing.endByte);
+    const bool started = m_isStart.any();
     const qsizetype trailer = m_framing.checksum == DelimitedChecksum::None ? 0 : 1;
+    auto isStart = [this](char c) { return m_isStart.test(quint8(c)); };
     for (;;) {
         const QByteArrayView bytes = pending();
         if (bytes.isEmpty())
             return;
         qsizetype first = 0;
-        if (start >= 0) {
-            if (bytes[0] != char(start)) {
-                const qsizetype at = bytes.indexOf(char(start));
-                skip(at < 0 ? bytes.size() : at, SkipReason::NoFrameStart);
+        if (started) {
+            if (!isStart(bytes[0])) {
+                qsizetype at = 1;
+                while (at < bytes.size() && !isStart(bytes[at]))
+                    ++at;
+                skip(at, SkipReason::NoFrameStart);
                 m_scanned = 0;
                 continue;
             }
@@ -95,16 +101,16 @@ void DelimitedFramer::process()
         bool decided = false;
         for (qsizetype i = qMax(first, m_scanned); i < bytes.size() && !decided; ++i) {
             const char c = bytes[i];
-            // The end byte is tested first, so that a framing whose start and end bytes are the
+            // The end bytes are tested first, so that a framing whose start and end bytes are the
             // same ('|' ... '|') still ends its frames.
-            if (c == end) {
+            if (m_isEnd.test(quint8(c))) {
                 if (bytes.size() < i + 1 + trailer) {
                     m_scanned = i; // the checksum byte has not arrived yet
                     return;
                 }
                 emitChecked(i + 1 + trailer);
                 decided = true;
-            } else if (start >= 0 && c == char(start)) {
+            } else if (started && isStart(c)) {
                 skip(i, SkipReason::Abandoned);
                 decided = true;
             } else if (i + 1 + trailer >= kMaxFrameSize) {

@@ -2,7 +2,10 @@
 
 #include "streamframer.h"
 
+#include <QtCore/QByteArray>
 #include <QtCore/QString>
+
+#include <bitset>
 
 namespace mbscope {
 
@@ -15,18 +18,20 @@ enum class DelimitedChecksum : quint8 {
 
 // A non-Modbus framing on any stream or serial link: frames run from a start byte to an end byte,
 // optionally followed by one checksum byte (LG Master-K: ENQ ... EOT + BCC; home-made ASCII
-// protocols: '$' ... '#').
+// protocols: '$' ... '#'). Either end may be one of several bytes: a Master-K answer begins with
+// ACK or NAK and ends with ETX (?start=06,15&end=03).
 struct DelimitedFraming {
     bool enabled = false;
-    int startByte = -1; // -1: no start byte, frames run from the previous end
-    int endByte = 0x0A;
+    QByteArray startBytes;         // any of these begins a frame; empty: frames run from the previous end
+    QByteArray endBytes{1, '\n'}; // any of these ends a frame
     DelimitedChecksum checksum = DelimitedChecksum::None;
     bool textDisplay = true; // show frames as text (true) or hex
 
     friend bool operator==(const DelimitedFraming &, const DelimitedFraming &) = default;
 };
 
-// Frames of a delimited framing cut out of a byte stream.
+// Frames of a delimited framing cut out of a byte stream ("the start byte" below: any of the
+// start bytes, and so for the end).
 // - With a start byte, bytes before it are skipped (NoFrameStart); a start byte inside a frame
 //   restarts it and the abandoned part is skipped (Abandoned), as a lost end byte would leave it.
 //   Without a start byte, a frame runs from the byte after the previous frame to the end byte.
@@ -62,6 +67,8 @@ private:
     void emitChecked(qsizetype length);
 
     DelimitedFraming m_framing;
+    std::bitset<256> m_isStart;
+    std::bitset<256> m_isEnd;
     qsizetype m_scanned = 0; // pending bytes of the open frame already searched for the end byte
 };
 

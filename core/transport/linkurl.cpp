@@ -298,11 +298,18 @@ QString applyOption(const QString &key, const QString &value, LinkUrl &url)
         return {};
     }
     if (key == u"start" || key == u"end") {
-        const auto byte = parseHexByte(value);
-        if (!byte)
-            return QStringLiteral("%1 '%2' is not a byte in hex: expected two hex digits, e.g. 24 for '$', 05 for ENQ")
-                .arg(key, value);
-        (key == u"start" ? url.delimited.startByte : url.delimited.endByte) = *byte;
+        // One byte, or several separated by commas (any of them begins, or ends, a frame).
+        QByteArray bytes;
+        for (const QStringView part : QStringView(value).split(u',')) {
+            const auto byte = parseHexByte(part);
+            if (!byte)
+                return QStringLiteral("%1 '%2' is not a byte in hex: expected two hex digits, e.g. 24 for '$', 05 for ENQ, "
+                                      "or several separated by commas (06,15 for ACK or NAK)")
+                    .arg(key, part.isEmpty() ? value : part.toString());
+            if (!bytes.contains(char(*byte)))
+                bytes.append(char(*byte));
+        }
+        (key == u"start" ? url.delimited.startBytes : url.delimited.endBytes) = bytes;
         return {};
     }
     if (key == u"checksum") {
@@ -495,9 +502,15 @@ QString LinkUrl::toString() const
         add("timeout", QString::number(responseTimeoutMs) + QStringLiteral("ms"));
     if (delimited.enabled) {
         add("framing", QStringLiteral("delimited"));
-        if (delimited.startByte >= 0)
-            add("start", hexByte(delimited.startByte));
-        add("end", hexByte(delimited.endByte));
+        auto hexList = [](const QByteArray &bytes) {
+            QStringList parts;
+            for (char c : bytes)
+                parts << hexByte(int(quint8(c)));
+            return parts.join(QLatin1Char(','));
+        };
+        if (!delimited.startBytes.isEmpty())
+            add("start", hexList(delimited.startBytes));
+        add("end", hexList(delimited.endBytes));
         if (delimited.checksum != DelimitedChecksum::None)
             add("checksum", DelimitedFramer::checksumName(delimited.checksum));
         if (!delimited.textDisplay)

@@ -109,8 +109,8 @@ void tst_ResponseVerdict::delimited_data()
 
     DelimitedFraming f;
     f.enabled = true;
-    f.startByte = 0x05;
-    f.endByte = 0x04;
+    f.startBytes = QByteArray("\x05");
+    f.endBytes = QByteArray("\x04");
     f.checksum = DelimitedChecksum::Sum;
     const QByteArray good = DelimitedFramer::complete(f, QByteArray("\x05" "00RSS\x04"));
     QByteArray bad = good;
@@ -125,8 +125,8 @@ void tst_ResponseVerdict::delimited()
     QFETCH(TransactionStatus, status);
     DelimitedFraming f;
     f.enabled = true;
-    f.startByte = 0x05;
-    f.endByte = 0x04;
+    f.startBytes = QByteArray("\x05");
+    f.endBytes = QByteArray("\x04");
     f.checksum = DelimitedChecksum::Sum;
     DelimitedFramer framer(f);
     framer.feed(frame);

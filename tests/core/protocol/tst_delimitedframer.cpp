@@ -18,10 +18,10 @@ class TestDelimitedFramer : public QObject
 {
     Q_OBJECT
 private:
-    static DelimitedFraming dollarHash() { return DelimitedFraming{true, 0x24, 0x23, DelimitedChecksum::None, true}; }
+    static DelimitedFraming dollarHash() { return DelimitedFraming{true, QByteArray("$"), QByteArray("#"), DelimitedChecksum::None, true}; }
     static DelimitedFraming enqEot(DelimitedChecksum checksum)
     {
-        return DelimitedFraming{true, 0x05, 0x04, checksum, true};
+        return DelimitedFraming{true, QByteArray("\x05"), QByteArray("\x04"), checksum, true};
     }
 
 private slots:
@@ -55,7 +55,7 @@ private slots:
                                                 << QStringList{skip(0, 1, "noframe"), frame(1, request)} << false;
 
         // No start byte: a frame runs from the previous end to the next end.
-        const DelimitedFraming lines{true, -1, 0x0A, DelimitedChecksum::None, true};
+        const DelimitedFraming lines{true, QByteArray(), QByteArray("\n"), DelimitedChecksum::None, true};
         QTest::newRow("lines: 'abc LF def LF'") << lines << QByteArray("abc\ndef\n")
                                                 << QStringList{frame(0, "abc\n"), frame(4, "def\n")} << false;
         QTest::newRow("lines: empty line") << lines << QByteArray("\n\n") << QStringList{frame(0, "\n"), frame(1, "\n")} << false;
@@ -63,9 +63,24 @@ private slots:
                                                 << QStringList{frame(0, "abc\n"), skip(4, 2, "incomplete")} << true;
 
         // Start and end bytes the same: the end is tested first.
-        const DelimitedFraming pipes{true, 0x7C, 0x7C, DelimitedChecksum::None, true};
+        const DelimitedFraming pipes{true, QByteArray("|"), QByteArray("|"), DelimitedChecksum::None, true};
         QTest::newRow("|abc||def|") << pipes << QByteArray("|abc||def|") << QStringList{frame(0, "|abc|"), frame(5, "|def|")}
                                     << false;
+
+        // Several start bytes: an LG Master-K answer begins with ACK (06) or NAK (15) and ends with
+        // ETX (03), BCC after it no checksum here.
+        const DelimitedFraming ackNak{true, QByteArray("\x06\x15"), QByteArray("\x03"), DelimitedChecksum::None, true};
+        const QByteArray ack("\x06" "00RSS010201F4" "\x03");
+        const QByteArray nak("\x15" "00RSS0004" "\x03");
+        QTest::newRow("ACK ... ETX, NAK ... ETX") << ackNak << ack + nak << QStringList{frame(0, ack), frame(ack.size(), nak)} << false;
+        QTest::newRow("noise, then NAK") << ackNak << QByteArray("\x05x") + nak
+                                         << QStringList{skip(0, 2, "noframe"), frame(2, nak)} << false;
+        QTest::newRow("NAK restarts an open ACK frame") << ackNak << QByteArray("\x06" "00R") + nak
+                                                        << QStringList{skip(0, 4, "abandoned"), frame(4, nak)} << false;
+        // Several end bytes: CR or LF ends a line.
+        const DelimitedFraming crOrLf{true, QByteArray(), QByteArray("\r\n"), DelimitedChecksum::None, true};
+        QTest::newRow("lines ended by CR or LF") << crOrLf << QByteArray("ab\rcd\n")
+                                                 << QStringList{frame(0, "ab\r"), frame(3, "cd\n")} << false;
 
         // ENQ ... EOT + BCC (8-bit sum from ENQ to EOT): 05 "00RSS0106%MW100" 04 -> 0x82, XOR 0x5A.
         const QByteArray masterK = QByteArray("\x05" "00RSS0106%MW100" "\x04");

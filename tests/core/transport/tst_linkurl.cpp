@@ -156,20 +156,26 @@ private slots:
 
         url = parsed(QStringLiteral("rtu:///dev/ttyUSB0?framing=delimited&start=24&end=23"));
         QVERIFY(url.delimited.enabled);
-        QCOMPARE(url.delimited.startByte, 0x24);
-        QCOMPARE(url.delimited.endByte, 0x23);
+        QCOMPARE(url.delimited.startBytes, QByteArray("$"));
+        QCOMPARE(url.delimited.endBytes, QByteArray("#"));
         QCOMPARE(url.delimited.checksum, DelimitedChecksum::None);
         QVERIFY(url.delimited.textDisplay);
 
         url = parsed(QStringLiteral("tcp://h?framing=delimited&start=05&end=04&checksum=sum&display=hex"));
-        QCOMPARE(url.delimited.startByte, 0x05);
-        QCOMPARE(url.delimited.endByte, 0x04);
+        QCOMPARE(url.delimited.startBytes, QByteArray("\x05"));
+        QCOMPARE(url.delimited.endBytes, QByteArray("\x04"));
         QCOMPARE(url.delimited.checksum, DelimitedChecksum::Sum);
         QVERIFY(!url.delimited.textDisplay);
 
         url = parsed(QStringLiteral("tcp://h?framing=delimited"));
-        QCOMPARE(url.delimited.startByte, -1);
-        QCOMPARE(url.delimited.endByte, 0x0A);
+        QCOMPARE(url.delimited.startBytes, QByteArray());
+        QCOMPARE(url.delimited.endBytes, QByteArray("\n"));
+
+        // LG Master-K answers: ACK or NAK ... ETX; the same byte twice counts once.
+        url = parsed(QStringLiteral("rtu-tcp://h:4001?framing=delimited&start=06,15,06&end=03&checksum=sum"));
+        QCOMPARE(url.delimited.startBytes, QByteArray("\x06\x15"));
+        QCOMPARE(url.delimited.endBytes, QByteArray("\x03"));
+        QVERIFY2(url.toString().contains(QStringLiteral("start=06,15&end=03")), qPrintable(url.toString()));
         QVERIFY(!parsed(QStringLiteral("tcp://h")).delimited.enabled);
     }
 
@@ -255,9 +261,14 @@ private slots:
         row("start without framing", "rtu:///dev/ttyUSB0?start=24&end=23", "'start' needs framing=delimited");
         row("checksum without framing", "tcp://h?checksum=sum", "'checksum' needs framing=delimited");
         row("start not hex", "tcp://h?framing=delimited&start=$",
-            "start '$' is not a byte in hex: expected two hex digits, e.g. 24 for '$', 05 for ENQ");
+            "start '$' is not a byte in hex: expected two hex digits, e.g. 24 for '$', 05 for ENQ, "
+            "or several separated by commas (06,15 for ACK or NAK)");
         row("end too long", "tcp://h?framing=delimited&end=123",
-            "end '123' is not a byte in hex: expected two hex digits, e.g. 24 for '$', 05 for ENQ");
+            "end '123' is not a byte in hex: expected two hex digits, e.g. 24 for '$', 05 for ENQ, "
+            "or several separated by commas (06,15 for ACK or NAK)");
+        row("start list, one byte bad", "tcp://h?framing=delimited&start=06,zz",
+            "start 'zz' is not a byte in hex: expected two hex digits, e.g. 24 for '$', 05 for ENQ, "
+            "or several separated by commas (06,15 for ACK or NAK)");
         row("checksum unknown", "tcp://h?framing=delimited&checksum=crc", "checksum 'crc' is not none, sum or xor");
         row("display unknown", "tcp://h?framing=delimited&display=ascii", "display 'ascii' is not text or hex");
         row("cert without key", "tls://plc?cert=c.pem", "cert without key: mutual TLS needs both cert=FILE and key=FILE");
@@ -296,7 +307,7 @@ private slots:
         url.serial.stopBits = 2;
         url.serial.turnaroundUs = 1234;
         url.responseTimeoutMs = 77;
-        url.delimited = DelimitedFraming{true, 0x3A, 0x0D, DelimitedChecksum::Xor, false};
+        url.delimited = DelimitedFraming{true, QByteArray(":"), QByteArray("\r\n"), DelimitedChecksum::Xor, false};
         const auto again = LinkUrl::parse(url.toString());
         QVERIFY2(again.url.has_value(), qPrintable(again.error));
         QVERIFY(*again.url == url);
