@@ -2,11 +2,11 @@
 
 #include "commands.h"
 #include "deviceexchange.h"
+#include "exchangecommand.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
 #include "transactionreport.h"
 
-#include <QtCore/QCommandLineParser>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QTextStream>
 
@@ -16,42 +16,26 @@ int runSend(const QStringList &arguments)
 {
     QTextStream out(stdout);
     QTextStream err(stderr);
-    const QString command = QStringLiteral("send");
-    QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
+    ExchangeCommandSpec spec;
+    spec.name = "send";
+    spec.description = QStringLiteral(
         "Sends bytes to a device exactly as given (a wrong CRC included), or with --complete a PDU wrapped for the "
         "target's framing (MBAP header, or unit id and CRC/LRC), then prints the request and the response decoded field "
         "by field, and the latency.\n"
         "Example: mbscope send --target rtu-tcp://192.168.127.254:4001 --hex \"01 03 00 79 00 16 15 DD\"\n"
-        "Exit status: 0 ok, 1 the transaction failed (exception, timeout, bad answer), 2 usage or link error."));
-    parser.addHelpOption();
-    const TargetOptions targetOptions;
-    const RequestOptions requestOptions(RequestOptions::Hex);
-    const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the transaction as JSON."));
-    targetOptions.addTo(parser);
-    requestOptions.addTo(parser);
-    parser.addOption(jsonOpt);
-    if (!parser.parse(arguments)) {
-        err << "mbscope send: " << parser.errorText() << '\n';
-        return ExitUsage;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        out << subcommandHelp(parser.helpText(), "send");
-        return ExitOk;
-    }
-    if (!parser.positionalArguments().isEmpty()) {
-        err << "mbscope send: unexpected argument '" << parser.positionalArguments().constFirst()
-            << "': give the bytes with --hex \"01 03 00 79 00 16 15 DD\"\n";
-        return ExitUsage;
-    }
-    TargetSettings target;
-    RequestPlan plan;
-    if (!targetOptions.read(parser, command, target, err) || !requestOptions.read(parser, command, target, plan, err))
-        return ExitUsage;
+        "Exit status: 0 ok, 1 the transaction failed (exception, timeout, bad answer), 2 usage or link error.");
+    spec.requestGroups = RequestOptions::Hex;
+    spec.jsonHelp = QStringLiteral("Print the transaction as JSON.");
+    spec.positionalHint = QStringLiteral("give the bytes with --hex \"01 03 00 79 00 16 15 DD\"");
+    ExchangeCommandInput input;
+    if (const std::optional<int> status = parseExchangeCommand(spec, arguments, out, err, input))
+        return *status;
+    const TargetSettings &target = input.target;
+    const RequestPlan &plan = input.plan;
 
     const QList<Transaction> records = exchange(target, plan.requests);
     const Transaction &t = records.constFirst();
-    if (parser.isSet(jsonOpt)) {
+    if (input.json) {
         QJsonObject o = TransactionReport::json(t, target.url);
         o.insert(QStringLiteral("target"), target.url.toString());
         out << QJsonDocument(o).toJson(QJsonDocument::Indented);

@@ -2,12 +2,12 @@
 
 #include "commands.h"
 #include "deviceexchange.h"
+#include "exchangecommand.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
 #include "transactionreport.h"
 #include "valuetable.h"
 
-#include <QtCore/QCommandLineParser>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QTextStream>
@@ -18,40 +18,24 @@ int runWrite(const QStringList &arguments)
 {
     QTextStream out(stdout);
     QTextStream err(stderr);
-    const QString command = QStringLiteral("write");
-    QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
+    ExchangeCommandSpec spec;
+    spec.name = "write";
+    spec.description = QStringLiteral(
         "Writes coils or holding registers from --address with Write Multiple Coils (15) / Write Multiple Registers "
         "(16), or with --single one Write Single Coil (05) / Write Single Register (06) per value, and prints each "
         "request and response decoded, the latency and the values written with their Modicon references.\n"
         "Examples: mbscope write --target tcp://192.168.1.10 --coils 1,0,0 --address 0\n"
         "          mbscope write --target tcp://192.168.1.10 --registers 205,172,73 --address 0 --single\n"
         "          mbscope write --target tcp://192.168.1.10 --registers 123.456 --format f32-cdab --address 10\n"
-        "Exit status: 0 every write ok, 1 some failed (exception, timeout, bad answer), 2 usage or link error."));
-    parser.addHelpOption();
-    const TargetOptions targetOptions;
-    const RequestOptions requestOptions(RequestOptions::Write);
-    const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the transactions and values as JSON."));
-    targetOptions.addTo(parser);
-    requestOptions.addTo(parser);
-    parser.addOption(jsonOpt);
-    if (!parser.parse(arguments)) {
-        err << "mbscope write: " << parser.errorText() << '\n';
-        return ExitUsage;
-    }
-    if (parser.isSet(QStringLiteral("help"))) {
-        out << subcommandHelp(parser.helpText(), "write");
-        return ExitOk;
-    }
-    if (!parser.positionalArguments().isEmpty()) {
-        err << "mbscope write: unexpected argument '" << parser.positionalArguments().constFirst()
-            << "': give values with --coils 1,0,0 or --registers 205,172,73\n";
-        return ExitUsage;
-    }
-    TargetSettings target;
-    RequestPlan plan;
-    if (!targetOptions.read(parser, command, target, err) || !requestOptions.read(parser, command, target, plan, err))
-        return ExitUsage;
+        "Exit status: 0 every write ok, 1 some failed (exception, timeout, bad answer), 2 usage or link error.");
+    spec.requestGroups = RequestOptions::Write;
+    spec.jsonHelp = QStringLiteral("Print the transactions and values as JSON.");
+    spec.positionalHint = QStringLiteral("give values with --coils 1,0,0 or --registers 205,172,73");
+    ExchangeCommandInput input;
+    if (const std::optional<int> status = parseExchangeCommand(spec, arguments, out, err, input))
+        return *status;
+    const TargetSettings &target = input.target;
+    const RequestPlan &plan = input.plan;
 
     const QList<Transaction> records = exchange(target, plan.requests);
     int status = ExitOk;
@@ -70,7 +54,7 @@ int runWrite(const QStringList &arguments)
     const int written = int(plan.requests.size());
     const bool complete = records.size() == written;
 
-    if (parser.isSet(jsonOpt)) {
+    if (input.json) {
         QJsonArray transactions;
         for (qsizetype i = 0; i < records.size(); ++i) {
             QJsonObject o = TransactionReport::json(records.at(i), target.url);

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "requestoptions.h"
+#include "targetoptions.h"
+
+#include <QtCore/QString>
+#include <QtCore/QStringList>
+
+#include <optional>
+
+class QTextStream;
+
+namespace mbscope::app {
+
+// The front that the one-shot exchange commands (send, read, write) share: their options, --help,
+// no positional arguments, and the target and requests read from the options.
+struct ExchangeCommandSpec {
+    const char *name = "";  // "send"
+    QString description;    // --help's text above the options
+    int requestGroups = 0;  // RequestOptions::Group flags
+    QString jsonHelp;       // what --json prints
+    QString positionalHint; // after "unexpected argument 'X': "
+};
+
+struct ExchangeCommandInput {
+    TargetSettings target;
+    RequestPlan plan;
+    bool json = false;
+};
+
+// Parses arguments into input. Returns the exit status when the command ends here (--help: 0;
+// a usage problem, said on err: 2), or nothing when the exchange is to go on.
+[[nodiscard]] std::optional<int> parseExchangeCommand(const ExchangeCommandSpec &spec, const QStringList &arguments,
+                                                      QTextStream &out, QTextStream &err, ExchangeCommandInput &input);
+
+} // namespace mbscope::app
