@@ -450,6 +450,8 @@ void EngineCore::flushBatch()
 {
     m_batchTimer.stop();
     m_lastBatchNs = monotonicNowNs();
+    if (!m_unmatched.isEmpty())
+        emit unmatchedFrames(std::exchange(m_unmatched, {}), m_url.toString());
     if (!m_batch.isEmpty()) {
         const qsizetype size = m_batch.size();
         emit transactionsFinished(std::exchange(m_batch, {}));

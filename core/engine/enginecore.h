@@ -84,6 +84,9 @@ signals:
     void recorded(const mbscope::Transaction &transaction, quint64 tag);
     // For observers in other threads: batches of records and the progress.
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
+    // Frames read that belong to no transaction (unsolicited, duplicates, garbage), in the same
+    // batches, just before them; link: the target's URL (enginelog.cpp).
+    void unmatchedFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void progress(const mbscope::EngineProgress &progress);
     void linkMessage(const QString &message);
 
@@ -208,6 +211,7 @@ private:
     bool m_lastEndAnswered = false; // the latest request to end was answered (not timed out)  // set by duplicateFirst() for the frame being handled       // flushing what a lost link left: a cut answer is a link error
     qint64 m_lastBatchNs = 0;
     QList<Transaction> m_batch;
+    QList<TrafficFrame> m_unmatched; // frames of no transaction, for the next batch
     EngineCounters m_counters;
     EngineProgress m_progress;
 };

@@ -4,6 +4,8 @@
 
 #include "transport/monotonicclock.h"
 
+#include <utility>
+
 namespace mbscope {
 
 void EngineCore::setTrafficLog(TrafficLog *log)
@@ -34,6 +36,18 @@ void EngineCore::logIncoming(const QByteArray &bytes, qint64 firstNs, TrafficVer
 {
     if (m_log)
         m_log->append(firstNs, TrafficDirection::In, m_logLink, verdict, id, bytes);
+    // A frame that answers no request never reaches observers as a transaction: it goes in the
+    // next batch on its own, so a traffic view shows garbage and unsolicited frames too.
+    if (verdict == TrafficVerdict::Unsolicited || verdict == TrafficVerdict::Garbage) {
+        TrafficFrame frame;
+        frame.tNs = firstNs;
+        frame.transactionId = id;
+        frame.direction = TrafficDirection::In;
+        frame.verdict = verdict;
+        frame.bytes = bytes;
+        m_unmatched.append(std::move(frame));
+        scheduleBatch();
+    }
 }
 
 void EngineCore::logTransaction(const Transaction &transaction)

@@ -14,12 +14,14 @@ TransactionEngine::TransactionEngine(QObject *parent)
 {
     qRegisterMetaType<mbscope::Transaction>();
     qRegisterMetaType<QList<mbscope::Transaction>>();
+    qRegisterMetaType<QList<mbscope::TrafficFrame>>();
     qRegisterMetaType<mbscope::EngineProgress>();
     qRegisterMetaType<mbscope::PollReport>();
     m_thread.setObjectName(QStringLiteral("mbscope engine"));
     m_core->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_core, &QObject::deleteLater);
     connect(m_core, &EngineCore::transactionsFinished, this, &TransactionEngine::transactionsFinished);
+    connect(m_core, &EngineCore::unmatchedFrames, this, &TransactionEngine::unmatchedFrames);
     connect(m_core, &EngineCore::progress, this, &TransactionEngine::progress);
     connect(m_core, &EngineCore::linkMessage, this, &TransactionEngine::linkMessage);
     m_thread.start();

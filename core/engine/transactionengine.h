@@ -5,6 +5,7 @@
 #include "pollreport.h"
 #include "pollsettings.h"
 #include "requestitem.h"
+#include "trafficentry.h"
 #include "transaction.h"
 
 #include "transport/linkurl.h"
@@ -72,6 +73,10 @@ public:
 
 signals:
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
+    // Frames read that answer no request (unsolicited, duplicates, garbage the framer skipped),
+    // batched with the transactions (just before them); link: the target's URL. Late answers and
+    // unexpected frames come as transactions instead.
+    void unmatchedFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void progress(const mbscope::EngineProgress &progress);
     void finished(const mbscope::PollReport &report);
     // What the link said when it failed or closed with requests in flight.
