@@ -450,8 +450,6 @@ void EngineCore::flushBatch()
 {
     m_batchTimer.stop();
     m_lastBatchNs = monotonicNowNs();
-    if (!m_unmatched.isEmpty())
-        emit unmatchedFrames(std::exchange(m_unmatched, {}), m_url.toString());
     if (!m_batch.isEmpty()) {
         const qsizetype size = m_batch.size();
         emit transactionsFinished(std::exchange(m_batch, {}));
@@ -459,6 +457,8 @@ void EngineCore::flushBatch()
         // a list of records copies them at every step.
         m_batch.reserve(size);
     }
+    if (!m_unmatched.isEmpty())
+        emit unmatchedFrames(std::exchange(m_unmatched, {}), m_url.toString());
     m_progress.counters = m_counters;
     emit progress(m_progress);
 }

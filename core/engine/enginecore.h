@@ -85,7 +85,7 @@ signals:
     // For observers in other threads: batches of records and the progress.
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
     // Frames read that belong to no transaction (unsolicited, duplicates, garbage), in the same
-    // batches, just before them; link: the target's URL (enginelog.cpp).
+    // batches, just after them; link: the target's URL (enginelog.cpp).
     void unmatchedFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void progress(const mbscope::EngineProgress &progress);
     void linkMessage(const QString &message);

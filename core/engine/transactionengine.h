@@ -74,8 +74,8 @@ public:
 signals:
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
     // Frames read that answer no request (unsolicited, duplicates, garbage the framer skipped),
-    // batched with the transactions (just before them); link: the target's URL. Late answers and
-    // unexpected frames come as transactions instead.
+    // batched with the transactions, just after them (a duplicate follows the answer it copies);
+    // link: the target's URL. Late answers and unexpected frames come as transactions instead.
     void unmatchedFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void progress(const mbscope::EngineProgress &progress);
     void finished(const mbscope::PollReport &report);
