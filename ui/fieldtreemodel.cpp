@@ -1,5 +1,6 @@
 #include "fieldtreemodel.h"
 
+#include "coretext.h"
 #include "severitystyle.h"
 
 #include <QtGui/QFontDatabase>
@@ -121,10 +122,19 @@ QVariant FieldTreeModel::displayText(int field, int column) const
             return QString::fromLatin1(raw.toHex(' ').toUpper());
         return QString::fromLatin1(raw.left(kMaxBytesShown).toHex(' ').toUpper()) + QStringLiteral(" \u2026");
     }
-    case FieldColumn:
-        return tree.name(field);
-    case ValueColumn:
-        return tree.display(field);
+    case FieldColumn: {
+        // FieldTree::name and display, in the window's language: the core's stay English.
+        QString name = fieldText(f.name);
+        if (f.address >= 0)
+            name += QLatin1Char(' ') + QString::number(f.address);
+        return name;
+    }
+    case ValueColumn: {
+        QString text = tree.valueText(field);
+        if (f.meaning && *f.meaning)
+            text += (text.isEmpty() ? QString() : QStringLiteral(" ")) + fieldText(f.meaning);
+        return text;
+    }
     case ProblemColumn:
         return f.message;
     }

@@ -5,6 +5,7 @@
 #include "linkcontroller.h"
 #include "linkstatuswidget.h"
 #include "noticebanner.h"
+#include "preferencesdialog.h"
 #include "rawrequesteditor.h"
 #include "registertable.h"
 #include "requestcomposer.h"
@@ -227,6 +228,7 @@ void MainWindow::connectDocks()
 {
     // Every transaction goes to the traffic list; a row picked there is shown in the Answer tab.
     connect(m_controller, &LinkController::transactionsFinished, m_traffic, &TrafficMonitor::appendTransactions);
+    connect(m_controller, &LinkController::unmatchedFrames, m_traffic, &TrafficMonitor::appendLinkFrames);
     connect(m_traffic, &TrafficMonitor::frameSelected, this, [this](const FrameExchange &exchange) {
         m_tabs->setCurrentWidget(m_answerView);
         m_answerView->showExchange(exchange);
@@ -325,6 +327,14 @@ void MainWindow::createMenus()
         m_traffic->focusSearch();
     });
     find->setShortcut(QKeySequence::Find);
+
+    QMenu *tools = menuBar()->addMenu(tr("&Tools"));
+    QAction *preferences = tools->addAction(tr("&Preferences\u2026"), this, [this] {
+        PreferencesDialog dialog(this);
+        if (dialog.exec() == QDialog::Accepted && dialog.apply())
+            statusBar()->showMessage(tr("The new language is used when mbscope is started again."), 10000);
+    });
+    preferences->setMenuRole(QAction::PreferencesRole);
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     QAction *about = help->addAction(tr("&About mbscope"), this, &MainWindow::showAbout);

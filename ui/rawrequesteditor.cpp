@@ -1,5 +1,7 @@
 #include "rawrequesteditor.h"
 
+#include "coretext.h"
+
 #include "hexerrormark.h"
 #include "severitystyle.h"
 
@@ -236,7 +238,7 @@ void RawRequestEditor::updateInfo()
     const AduParts parts = AduBuilder::parse(m_bytes, m_framing);
     const quint8 function = parts.pdu.isEmpty() ? 0 : quint8(parts.pdu.at(0));
     const QString what = parts.pdu.isEmpty() ? QString()
-                                             : tr("function %1 %2").arg(hex2(function), QLatin1String(functionName(function)));
+                                             : tr("function %1 %2").arg(hex2(function), fieldText(functionName(function)));
     QString text;
     switch (m_framing) {
     case Framing::Rtu:
@@ -246,10 +248,10 @@ void RawRequestEditor::updateInfo()
             text = tr("Not a whole %1 frame (%2). Send it as it is, or use \u201C%3\u201D if it is a PDU.")
                        .arg(framingName(m_framing).toUpper(), parts.error, completionName(m_framing));
         } else if (m_framing == Framing::Rtu && !parts.checksumValid() && isPduWithoutCrc(m_bytes)) {
-            text = tr("Unit %1 and a whole %2 request, but no CRC: use \u201CAppend CRC only\u201D in the %3 menu, "
+            text = tr("Unit %1 and a whole %2 request, but no CRC: use \u201C" "Append CRC only\u201D in the %3 menu, "
                       "or send it as it is.")
                        .arg(quint8(m_bytes.at(0)))
-                       .arg(QLatin1String(functionName(quint8(m_bytes.at(1)))), completionName(m_framing));
+                       .arg(fieldText(functionName(quint8(m_bytes.at(1)))), completionName(m_framing));
         } else if (parts.checksumValid()) {
             text = tr("%1 frame: unit %2, %3, %4 correct.").arg(framingName(m_framing).toUpper()).arg(parts.unitId).arg(what, sum);
         } else {

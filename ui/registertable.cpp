@@ -1,5 +1,6 @@
 #include "registertable.h"
 
+#include "coretext.h"
 #include "registertablemodel.h"
 
 #include <QtWidgets/QComboBox>
@@ -33,12 +34,12 @@ QString orderLabel(RegisterType type, RegisterOrder order)
     const RegisterFormat f(type, order);
     const int width = f.registerCount();
     if (width == 1)
-        return order == RegisterOrder::ABCD ? QStringLiteral("AB (high byte first)") : QStringLiteral("BA (byte swap)");
+        return order == RegisterOrder::ABCD ? QCoreApplication::translate("mbscope::RegisterTable", "AB (high byte first)") : QCoreApplication::translate("mbscope::RegisterTable", "BA (byte swap)");
     switch (order) {
-    case RegisterOrder::ABCD: return f.orderName() + QStringLiteral(" (big endian)");
-    case RegisterOrder::CDAB: return f.orderName() + QStringLiteral(" (word swap)");
-    case RegisterOrder::BADC: return f.orderName() + QStringLiteral(" (byte swap)");
-    case RegisterOrder::DCBA: return f.orderName() + QStringLiteral(" (little endian)");
+    case RegisterOrder::ABCD: return QCoreApplication::translate("mbscope::RegisterTable", "%1 (big endian)").arg(f.orderName());
+    case RegisterOrder::CDAB: return QCoreApplication::translate("mbscope::RegisterTable", "%1 (word swap)").arg(f.orderName());
+    case RegisterOrder::BADC: return QCoreApplication::translate("mbscope::RegisterTable", "%1 (byte swap)").arg(f.orderName());
+    case RegisterOrder::DCBA: return QCoreApplication::translate("mbscope::RegisterTable", "%1 (little endian)").arg(f.orderName());
     }
     return f.orderName();
 }
@@ -81,7 +82,7 @@ RegisterTable::RegisterTable(QWidget *parent)
 
     connect(m_model, &RegisterTableModel::writeRequested, this, [this](const QByteArray &pdu, const QString &what) {
         m_showingProblem = false;
-        m_message->setText(QStringLiteral("Write requested: ") + what);
+        m_message->setText(tr("Write requested: %1").arg(what));
         m_message->setStyleSheet(QString());
         m_message->show();
         Q_EMIT writeRequested(pdu, what);
@@ -117,28 +118,28 @@ void RegisterTable::buildToolBar()
     m_toolBar->addWidget(m_columnLabel);
     m_typeBox = new QComboBox(m_toolBar);
     m_typeBox->setObjectName(QStringLiteral("registerTableFormat"));
-    m_typeBox->setToolTip(QStringLiteral("What the registers of the current value column stand for"));
+    m_typeBox->setToolTip(tr("What the registers of the current value column stand for"));
     for (RegisterType type : kTypes)
         m_typeBox->addItem(RegisterFormat(type).typeName(), int(type));
     m_toolBar->addWidget(m_typeBox);
 
-    m_toolBar->addWidget(new QLabel(QStringLiteral(" Order "), m_toolBar));
+    m_toolBar->addWidget(new QLabel(tr(" Order "), m_toolBar));
     m_orderBox = new QComboBox(m_toolBar);
     m_orderBox->setObjectName(QStringLiteral("registerTableOrder"));
-    m_orderBox->setToolTip(QStringLiteral("Word and byte order of the current value column: the order the value's "
-                                          "bytes travel in, most significant named A"));
+    m_orderBox->setToolTip(tr("Word and byte order of the current value column: the order the value's "
+                              "bytes travel in, most significant named A"));
     m_toolBar->addWidget(m_orderBox);
 
-    m_addColumn = m_toolBar->addAction(QStringLiteral("+ Column"));
-    m_addColumn->setToolTip(QStringLiteral("Add a value column showing the same registers in another format"));
-    m_removeColumn = m_toolBar->addAction(QStringLiteral("\u2212 Column"));
-    m_removeColumn->setToolTip(QStringLiteral("Remove the current value column"));
+    m_addColumn = m_toolBar->addAction(tr("+ Column"));
+    m_addColumn->setToolTip(tr("Add a value column showing the same registers in another format"));
+    m_removeColumn = m_toolBar->addAction(QStringLiteral("\u2212 ") + tr("Column"));
+    m_removeColumn->setToolTip(tr("Remove the current value column"));
     m_toolBar->addSeparator();
 
-    m_toolBar->addWidget(new QLabel(QStringLiteral("Write with "), m_toolBar));
+    m_toolBar->addWidget(new QLabel(tr("Write with "), m_toolBar));
     m_writeBox = new QComboBox(m_toolBar);
     m_writeBox->setObjectName(QStringLiteral("registerTableWriteFunction"));
-    m_writeBox->setToolTip(QStringLiteral("The function an edited value is written with"));
+    m_writeBox->setToolTip(tr("The function an edited value is written with"));
     m_toolBar->addWidget(m_writeBox);
     m_toolBar->addSeparator();
 
@@ -190,7 +191,7 @@ void RegisterTable::refreshToolBar()
     m_refreshing = true;
     const bool bits = m_model->hasAnswer() && m_model->answer().isBits();
     const RegisterFormat format = m_model->valueFormats().value(m_currentValue);
-    m_columnLabel->setText(QStringLiteral("Column %1 ").arg(m_currentValue + 1));
+    m_columnLabel->setText(tr("Column %1 ").arg(m_currentValue + 1));
     m_typeBox->setCurrentIndex(m_typeBox->findData(int(format.type())));
     m_orderBox->clear();
     for (RegisterOrder order : ordersOf(format.type()))
@@ -200,12 +201,12 @@ void RegisterTable::refreshToolBar()
         w->setEnabled(!bits);
     m_addColumn->setEnabled(!bits);
     m_removeColumn->setEnabled(!bits && m_model->valueFormats().size() > 1);
-    m_profileLabel->setText(m_model->hasProfile() ? QStringLiteral("Profile: ") + m_model->profileName()
-                                                  : QStringLiteral("Profile: none"));
+    m_profileLabel->setText(m_model->hasProfile() ? tr("Profile: %1").arg(m_model->profileName())
+                                                  : tr("Profile: none"));
     m_profileLabel->setToolTip(m_model->hasProfile()
-                                   ? QStringLiteral("Names, scaling and units come from the device profile %1")
+                                   ? tr("Names, scaling and units come from the device profile %1")
                                          .arg(m_model->profileName())
-                                   : QStringLiteral("No device profile: no names or scaling"));
+                                   : tr("No device profile: no names or scaling"));
     refreshWriteChoices();
     m_refreshing = false;
 }
@@ -215,7 +216,7 @@ void RegisterTable::refreshWriteChoices()
     m_writeBox->clear();
     const ModbusTable table = m_model->answer().table;
     if (!ModiconReference::isWritable(table)) {
-        m_writeBox->addItem(QStringLiteral("read-only (%1)").arg(QLatin1String(ModiconReference::tableName(table))), -1);
+        m_writeBox->addItem(tr("read-only (%1)").arg(fieldText(ModiconReference::tableName(table))), -1);
         m_writeBox->setEnabled(false);
         return;
     }
@@ -224,14 +225,14 @@ void RegisterTable::refreshWriteChoices()
     if (table == ModbusTable::Coils) {
         // Automatic and Single both write a coil with 05; the model keeps the choice as made, so
         // going back to registers shows it again.
-        m_writeBox->addItem(QStringLiteral("05 Write Single Coil"), int(WriteChoice::Single));
-        m_writeBox->addItem(QStringLiteral("0F Write Multiple Coils"), int(WriteChoice::Multiple));
+        m_writeBox->addItem(tr("05 Write Single Coil"), int(WriteChoice::Single));
+        m_writeBox->addItem(tr("0F Write Multiple Coils"), int(WriteChoice::Multiple));
         m_writeBox->setCurrentIndex(choice == WriteChoice::Multiple ? 1 : 0);
         return;
     }
-    m_writeBox->addItem(QStringLiteral("06 or 10 by width"), int(WriteChoice::Automatic));
-    m_writeBox->addItem(QStringLiteral("06 Write Single Register"), int(WriteChoice::Single));
-    m_writeBox->addItem(QStringLiteral("10 Write Multiple Registers"), int(WriteChoice::Multiple));
+    m_writeBox->addItem(tr("06 or 10 by width"), int(WriteChoice::Automatic));
+    m_writeBox->addItem(tr("06 Write Single Register"), int(WriteChoice::Single));
+    m_writeBox->addItem(tr("10 Write Multiple Registers"), int(WriteChoice::Multiple));
     m_writeBox->setCurrentIndex(qMax(0, m_writeBox->findData(int(choice))));
 }
 
@@ -273,7 +274,7 @@ void RegisterTable::showHeaderMenu(const QPoint &position)
     setCurrentValueIndex(vi);
     const RegisterFormat current = m_model->valueFormats().at(vi);
     QMenu menu(this);
-    menu.addSection(QStringLiteral("Column %1 format").arg(vi + 1));
+    menu.addSection(tr("Column %1 format").arg(vi + 1));
     for (RegisterType type : kTypes) {
         QAction *a = menu.addAction(RegisterFormat(type, current.order()).name());
         a->setCheckable(true);
@@ -283,7 +284,7 @@ void RegisterTable::showHeaderMenu(const QPoint &position)
             refreshToolBar();
         });
     }
-    menu.addSection(QStringLiteral("Order"));
+    menu.addSection(tr("Order"));
     for (RegisterOrder order : ordersOf(current.type())) {
         QAction *a = menu.addAction(orderLabel(current.type(), order));
         a->setCheckable(true);
@@ -293,7 +294,7 @@ void RegisterTable::showHeaderMenu(const QPoint &position)
             refreshToolBar();
         });
     }
-    QAction *all = menu.addAction(QStringLiteral("Use this order in every column"));
+    QAction *all = menu.addAction(tr("Use this order in every column"));
     connect(all, &QAction::triggered, this, [this, current] {
         m_model->setOrder(current.order());
         refreshToolBar();

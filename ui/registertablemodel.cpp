@@ -1,5 +1,7 @@
 #include "registertablemodel.h"
 
+#include "coretext.h"
+
 #include "protocol/adubuilder.h"
 #include "protocol/hexformat.h"
 #include "protocol/registervalue.h"
@@ -23,6 +25,13 @@ SimTable simTableOf(ModbusTable table)
     case ModbusTable::HoldingRegisters: return SimTable::HoldingRegisters;
     }
     return SimTable::HoldingRegisters;
+}
+
+// RegisterFormat::description in the window's language: "float32 (IEEE 754 single), word swap (CDAB)".
+QString describe(const RegisterFormat &format)
+{
+    return QCoreApplication::translate("mbscope::RegisterTableModel", "%1, %2 (%3)")
+        .arg(fieldText(format.typeDescription()), fieldText(format.orderWords()), format.orderName());
 }
 
 // A changed value's background: light amber, readable with the default palette's text.
@@ -52,7 +61,7 @@ bool RegisterTableModel::update(const QByteArray &requestPdu, const QByteArray &
 {
     const ReadAnswerResult r = ReadAnswer::fromPdus(requestPdu, responsePdu);
     if (!r.ok) {
-        m_lastProblem = QLatin1String("answer not shown: ") + r.error;
+        m_lastProblem = tr("answer not shown: %1").arg(r.error);
         Q_EMIT answerRefused(m_lastProblem);
         return false;
     }
@@ -63,9 +72,10 @@ bool RegisterTableModel::update(const QByteArray &requestPdu, const QByteArray &
 bool RegisterTableModel::updateFromTransaction(const Transaction &transaction, Framing framing)
 {
     if (!transaction.isOk()) {
-        m_lastProblem = QLatin1String("answer not shown: the transaction ended with ")
-            + transactionStatusName(transaction.status)
-            + (transaction.problem.isEmpty() ? QString() : QLatin1String(": ") + transaction.problem);
+        const QString status = transactionStatusName(transaction.status);
+        m_lastProblem = transaction.problem.isEmpty()
+            ? tr("answer not shown: the transaction ended with %1").arg(status)
+            : tr("answer not shown: the transaction ended with %1: %2").arg(status, transaction.problem);
         Q_EMIT answerRefused(m_lastProblem);
         return false;
     }
@@ -260,10 +270,11 @@ const TableEntry *RegisterTableModel::entryAt(int row) const
 QString RegisterTableModel::rowWhere(int row) const
 {
     const int address = m_answer.address + row;
-    const char *what = m_answer.isBits() ? (m_answer.table == ModbusTable::Coils ? "coil" : "discrete input")
-                                         : "register";
-    return QLatin1String(what) + QLatin1Char(' ') + ReadAnswer::referenceText(m_answer.reference(row))
-        + QStringLiteral(" (PDU address %1)").arg(address);
+    const QString reference = ReadAnswer::referenceText(m_answer.reference(row));
+    if (!m_answer.isBits())
+        return tr("register %1 (PDU address %2)").arg(reference).arg(address);
+    return m_answer.table == ModbusTable::Coils ? tr("coil %1 (PDU address %2)").arg(reference).arg(address)
+                                                : tr("discrete input %1 (PDU address %2)").arg(reference).arg(address);
 }
 
 RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIndex, CellText wanted) const
@@ -273,7 +284,7 @@ RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIn
     cell.firstRow = row;
     if (m_answer.isBits()) {
         if (wanted == CellText::Display)
-            cell.text = m_answer.bits.at(row) ? QStringLiteral("1  ON") : QStringLiteral("0  OFF");
+            cell.text = m_answer.bits.at(row) ? tr("1  ON") : tr("0  OFF");
         return cell;
     }
     const RegisterFormat format = m_formats.at(valueIndex);
@@ -288,9 +299,9 @@ RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIn
     const QString firstRef = ReadAnswer::referenceText(m_answer.reference(cell.firstRow));
     if (cell.continuation) {
         if (wanted == CellText::Display)
-            cell.text = QStringLiteral("\u2191 %1 from %2").arg(format.typeName(), firstRef);
+            cell.text = tr("\u2191 %1 from %2").arg(format.typeName(), firstRef);
         else
-            cell.text = QStringLiteral("Register %1 is register %2 of the %3 registers of the %4 value at %5")
+            cell.text = tr("Register %1 is register %2 of the %3 registers of the %4 value at %5")
                             .arg(ReadAnswer::referenceText(m_answer.reference(row)))
                             .arg(row - cell.firstRow + 1)
                             .arg(width)
@@ -299,9 +310,9 @@ RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIn
     }
     if (!cell.complete) {
         if (wanted == CellText::Display)
-            cell.text = QStringLiteral("(%1 of %2 registers)").arg(cell.span).arg(width);
+            cell.text = tr("(%1 of %2 registers)").arg(cell.span).arg(width);
         else
-            cell.text = QStringLiteral("%1 needs %2 registers from %3; the answer ends after %4")
+            cell.text = tr("%1 needs %2 registers from %3; the answer ends after %4")
                             .arg(format.name())
                             .arg(width)
                             .arg(firstRef)
@@ -317,9 +328,9 @@ RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIn
         raw += (raw.isEmpty() ? QString() : QStringLiteral(" ")) + hexDigits(m_answer.registers.at(i), 4);
     const QString span = width == 1
         ? firstRef
-        : QStringLiteral("%1 registers %2-%3").arg(width).arg(firstRef,
+        : tr("%1 registers %2-%3").arg(width).arg(firstRef,
                                                              ReadAnswer::referenceText(m_answer.reference(row + width - 1)));
-    cell.text = format.description() + QLatin1String("\n") + span + QLatin1String(", on the wire ") + raw;
+    cell.text = tr("%1\n%2, on the wire %3").arg(describe(format), span, raw);
     return cell;
 }
 
@@ -334,7 +345,7 @@ QString RegisterTableModel::nameText(int row) const
     if (entry->valueCount() > 1)
         name += QStringLiteral("[%1]").arg(offset / width);
     if (offset % width != 0)
-        name += QStringLiteral(" (register %1 of %2)").arg(offset % width + 1).arg(width);
+        name += tr(" (register %1 of %2)").arg(offset % width + 1).arg(width);
     return name;
 }
 
@@ -348,7 +359,7 @@ QString RegisterTableModel::scaledText(int row) const
     if (offset % width != 0)
         return QStringLiteral("\u2191");
     if (row + width > m_answer.count())
-        return QStringLiteral("(%1 of %2 registers)").arg(m_answer.count() - row).arg(width);
+        return tr("(%1 of %2 registers)").arg(m_answer.count() - row).arg(width);
     const std::span<const quint16> words(m_answer.registers.constData() + row, size_t(width));
     QString text;
     if (entry->scale == 1 && entry->offset == 0) {
@@ -398,8 +409,8 @@ QVariant RegisterTableModel::toolTip(int row, int column) const
     if (column == scaledColumn()) {
         const TableEntry *entry = entryAt(row);
         if (!entry)
-            return m_profile ? QStringLiteral("The profile names no value at this address") : QVariant();
-        return QStringLiteral("%1 as %2, value = raw \u00d7 %3 + %4")
+            return m_profile ? tr("The profile names no value at this address") : QVariant();
+        return tr("%1 as %2, value = raw \u00d7 %3 + %4")
             .arg(entry->name, entry->format.name())
             .arg(entry->scale)
             .arg(entry->offset);
@@ -490,33 +501,32 @@ QVariant RegisterTableModel::headerData(int section, Qt::Orientation orientation
     const int digit = ModiconReference::tableDigit(m_answer.table);
     if (role == Qt::DisplayRole) {
         if (section == AddressColumn)
-            return QStringLiteral("PDU address");
+            return tr("PDU address");
         if (section == ReferenceColumn)
-            return QStringLiteral("Modicon (%1xxxx, from 1)").arg(digit);
+            return tr("Modicon (%1xxxx, from 1)").arg(digit);
         if (section == NameColumn)
-            return QStringLiteral("Name");
+            return tr("Name");
         if (const int vi = valueIndexOf(section); vi >= 0)
-            return m_hasAnswer && m_answer.isBits() ? QStringLiteral("Value") : m_formats.at(vi).name();
+            return m_hasAnswer && m_answer.isBits() ? tr("Value") : m_formats.at(vi).name();
         if (section == scaledColumn())
-            return QStringLiteral("Scaled");
+            return tr("Scaled");
         return {};
     }
     if (role == Qt::ToolTipRole) {
         if (section == AddressColumn)
-            return QStringLiteral("The 0-based address the request carries (V1.1b3, 4.4)");
+            return tr("The 0-based address the request carries (V1.1b3, 4.4)");
         if (section == ReferenceColumn)
-            return QStringLiteral("Modicon reference: the table digit %1, then the 1-based element number "
-                                  "(PDU address + 1)")
+            return tr("Modicon reference: the table digit %1, then the 1-based element number "
+                      "(PDU address + 1)")
                 .arg(digit);
         if (section == NameColumn)
-            return m_profile ? QStringLiteral("Names from the profile %1").arg(m_profileName)
-                             : QStringLiteral("No profile: no names");
+            return m_profile ? tr("Names from the profile %1").arg(m_profileName)
+                             : tr("No profile: no names");
         if (const int vi = valueIndexOf(section); vi >= 0)
             return m_answer.isBits() ? QVariant()
-                                     : QVariant(m_formats.at(vi).description()
-                                                + QStringLiteral("\nRight-click to change the format"));
+                                     : QVariant(tr("%1\nRight-click to change the format").arg(describe(m_formats.at(vi))));
         if (section == scaledColumn())
-            return QStringLiteral("The profile's format, scale, offset and unit: value = raw \u00d7 scale + offset");
+            return tr("The profile's format, scale, offset and unit: value = raw \u00d7 scale + offset");
     }
     return {};
 }
@@ -554,17 +564,17 @@ std::optional<QList<quint16>> RegisterTableModel::wordsFromText(int row, int col
         bool ok = false;
         const double value = QLocale::c().toDouble(number, &ok);
         if (!ok) {
-            *error = QStringLiteral("'%1' is not a number: the scaled value of %2 takes a decimal number")
+            *error = tr("'%1' is not a number: the scaled value of %2 takes a decimal number")
                          .arg(trimmed, entry->name);
             return std::nullopt;
         }
         const RegisterValueResult v = ScaledValue{entry->format, entry->scale, entry->offset}.encode(value);
         if (!v.ok) {
-            *error = QStringLiteral("%1 %2 (raw = (value - %3) / %4): ")
+            *error = tr("%1 %2 (raw = (value - %3) / %4): %5")
                          .arg(entry->name, entry->format.name())
                          .arg(entry->offset)
                          .arg(entry->scale)
-                + v.error;
+                         .arg(v.error);
             return std::nullopt;
         }
         return v.value.registers();
@@ -588,20 +598,19 @@ TableWriteResult RegisterTableModel::writeFor(const QModelIndex &index, const QS
     const int row = index.row();
     const int column = index.column();
     if (!ModiconReference::isWritable(m_answer.table)) {
-        result.error = rowWhere(row) + QLatin1String(": ") + QLatin1String(ModiconReference::tableName(m_answer.table))
-            + QLatin1String(" are read-only; only coils and holding registers can be written");
+        result.error = tr("%1: %2 are read-only; only coils and holding registers can be written")
+                           .arg(rowWhere(row), fieldText(ModiconReference::tableName(m_answer.table)));
         return result;
     }
     if (!isEditableCell(row, column)) {
-        result.error = rowWhere(row) + QLatin1String(": this cell cannot be written (edit a value's first register)");
+        result.error = tr("%1: this cell cannot be written (edit a value's first register)").arg(rowWhere(row));
         return result;
     }
     if (m_answer.isBits()) {
         const std::optional<bool> on = TableWrite::coilFromText(text);
         if (!on) {
-            result.error = rowWhere(row) + QStringLiteral(": '%1' is not a coil value: expected 1 or 0 (on/off, "
-                                                          "true/false)")
-                                               .arg(text.trimmed());
+            result.error = tr("%1: '%2' is not a coil value: expected 1 or 0 (on/off, true/false)")
+                               .arg(rowWhere(row), text.trimmed());
             return result;
         }
         return TableWrite::coil(m_answer.address + row, *on, m_writeChoice);
@@ -609,7 +618,7 @@ TableWriteResult RegisterTableModel::writeFor(const QModelIndex &index, const QS
     QString error;
     const std::optional<QList<quint16>> words = wordsFromText(row, column, text, &error);
     if (!words) {
-        result.error = rowWhere(row) + QLatin1String(", ") + error;
+        result.error = tr("%1, %2").arg(rowWhere(row), error);
         return result;
     }
     result = TableWrite::registers(m_answer.address + row, *words, m_writeChoice);
@@ -627,7 +636,7 @@ bool RegisterTableModel::setData(const QModelIndex &index, const QVariant &value
         return false;
     const TableWriteResult write = writeFor(index, text);
     if (!write.ok) {
-        refuse(write.error.isEmpty() ? QStringLiteral("no cell to write") : write.error);
+        refuse(write.error.isEmpty() ? tr("no cell to write") : write.error);
         return false;
     }
     Q_EMIT writeRequested(write.pdu, write.description);
@@ -636,7 +645,7 @@ bool RegisterTableModel::setData(const QModelIndex &index, const QVariant &value
 
 void RegisterTableModel::refuse(const QString &message)
 {
-    m_lastProblem = QLatin1String("not written: ") + message;
+    m_lastProblem = tr("not written: %1").arg(message);
     Q_EMIT editRefused(m_lastProblem);
 }
 

@@ -1,5 +1,7 @@
 #include "requestform.h"
 
+#include "coretext.h"
+
 #include "addressfield.h"
 #include "severitystyle.h"
 
@@ -109,7 +111,7 @@ void RequestForm::buildUi()
     m_function = new QComboBox(this);
     m_function->setObjectName(QStringLiteral("functionCombo"));
     for (int code : functionCodes()) {
-        const QString name = code == 0x2B ? tr("Read Device Identification") : QLatin1String(functionName(quint8(code)));
+        const QString name = code == 0x2B ? tr("Read Device Identification") : fieldText(functionName(quint8(code)));
         m_function->addItem(QStringLiteral("%1  %2").arg(hexDigits(code, 2), name), code);
     }
 

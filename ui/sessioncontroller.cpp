@@ -29,7 +29,6 @@ namespace mbscope {
 namespace {
 
 const QString kRecentKey = QStringLiteral("session/recent");
-const QString kFileFilter = QStringLiteral("mbscope sessions (*.mbscope.json *.json);;All files (*)");
 
 // The poll interval and count a new composer has; a document without a poll gets them back.
 constexpr int kDefaultIntervalMs = 500;
@@ -60,8 +59,9 @@ SessionController::SessionController(QMainWindow *window, ConnectionBar *bar, Re
         box.exec();
     };
     m_chooser = [this](bool forSave) {
-        return forSave ? QFileDialog::getSaveFileName(m_window, tr("Save session"), m_path, kFileFilter)
-                       : QFileDialog::getOpenFileName(m_window, tr("Open session"), QFileInfo(m_path).path(), kFileFilter);
+        const QString filter = tr("mbscope sessions (*.mbscope.json *.json);;All files (*)");
+        return forSave ? QFileDialog::getSaveFileName(m_window, tr("Save session"), m_path, filter)
+                       : QFileDialog::getOpenFileName(m_window, tr("Open session"), QFileInfo(m_path).path(), filter);
     };
     m_clean = currentDocument();
     m_freshTarget = m_clean.target;

@@ -1,5 +1,7 @@
 #include "trafficmodel.h"
 
+#include "coretext.h"
+
 #include "exchangeformat.h"
 #include "severitystyle.h"
 #include "trafficsearch.h"
@@ -103,6 +105,17 @@ void TrafficModel::appendFrames(const QList<TrafficFrame> &frames)
     enforceLimit();
     publish();
     emit countsChanged();
+}
+
+void TrafficModel::appendLinkFrames(const QList<TrafficFrame> &frames, const QString &link)
+{
+    if (frames.isEmpty())
+        return;
+    const quint16 id = m_store.linkId(link);
+    QList<TrafficFrame> named = frames;
+    for (TrafficFrame &frame : named)
+        frame.link = id;
+    appendFrames(named);
 }
 
 // A transaction becomes the two frames the traffic log would hold: the request out and the answer
@@ -358,8 +371,8 @@ QVariant TrafficModel::displayText(qsizetype s, int column) const
             return {};
         // An exception response is its request's code with the high bit set (V1.1b3, 7).
         if (r.function & 0x80)
-            return tr("%1 Exception to %2").arg(hexByte(r.function), QLatin1String(functionName(r.function & 0x7F)));
-        return hexByte(r.function) + QLatin1Char(' ') + QLatin1String(functionName(r.function));
+            return tr("%1 Exception to %2").arg(hexByte(r.function), fieldText(functionName(r.function & 0x7F)));
+        return hexByte(r.function) + QLatin1Char(' ') + fieldText(functionName(r.function));
     }
     case LengthColumn:
         return QString::number(r.length);

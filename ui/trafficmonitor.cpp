@@ -1,5 +1,7 @@
 #include "trafficmonitor.h"
 
+#include "coretext.h"
+
 #include "severitystyle.h"
 #include "trafficmodel.h"
 #include "trafficstyle.h"
@@ -67,7 +69,7 @@ void TrafficMonitor::buildUi()
     m_functionCombo->addItem(tr("any"), -1);
     for (int code = 1; code < 0x80; ++code) {
         if (functionKind(quint8(code)) == FunctionKind::Public)
-            m_functionCombo->addItem(hexByte(quint8(code)) + QLatin1Char(' ') + QLatin1String(functionName(quint8(code))), code);
+            m_functionCombo->addItem(hexByte(quint8(code)) + QLatin1Char(' ') + fieldText(functionName(quint8(code))), code);
     }
     m_functionCombo->setToolTip(tr("Show only frames of this function code (its exception responses included)"));
 
@@ -185,6 +187,11 @@ void TrafficMonitor::appendFrames(const QList<TrafficFrame> &frames)
 void TrafficMonitor::appendTransactions(const QList<Transaction> &transactions)
 {
     m_model->appendTransactions(transactions);
+}
+
+void TrafficMonitor::appendLinkFrames(const QList<TrafficFrame> &frames, const QString &link)
+{
+    m_model->appendLinkFrames(frames, link);
 }
 
 bool TrafficMonitor::isPaused() const

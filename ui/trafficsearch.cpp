@@ -1,5 +1,7 @@
 #include "trafficsearch.h"
 
+#include "coretext.h"
+
 #include "protocol/functioncode.h"
 #include "protocol/hextext.h"
 
@@ -29,7 +31,7 @@ TrafficSearch::TrafficSearch(const QString &query, const TrafficStore &store)
     for (int v = 0; v < kTrafficVerdictCount; ++v)
         m_verdictMatches[size_t(v)] = contains(QLatin1String(trafficVerdictName(TrafficVerdict(v))));
     for (int code = 0; code < 256; ++code)
-        m_functionMatches[size_t(code)] = contains(QLatin1String(functionName(quint8(code))));
+        m_functionMatches[size_t(code)] = contains(QLatin1String(functionName(quint8(code)))) || contains(fieldText(functionName(quint8(code))));
     const QStringList &links = store.linkNames();
     m_linkMatches.resize(size_t(links.size()));
     for (qsizetype i = 0; i < links.size(); ++i)

@@ -1,5 +1,6 @@
 #include "trafficstyle.h"
 
+#include <QtCore/QCoreApplication>
 #include <QtGui/QGuiApplication>
 #include <QtGui/QPalette>
 
@@ -30,12 +31,33 @@ Severity TrafficStyle::severity(TrafficVerdict verdict)
 
 QString TrafficStyle::verdictText(TrafficVerdict verdict)
 {
-    return QLatin1String(trafficVerdictName(verdict)).toString().replace(QLatin1Char('_'), QLatin1Char(' '));
+    // trafficVerdictName with spaces, in the window's language (the names are keys in JSON and
+    // journals, so the core keeps them as they are). In TrafficVerdict's order.
+    static constexpr const char *kWords[kTrafficVerdictCount] = {
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "ok"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "exception"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "timeout"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "crc error"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "malformed"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "unexpected"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "link error"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "broadcast"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "late"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "sent"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "unsolicited"),
+        QT_TRANSLATE_NOOP("mbscope::TrafficStyle", "garbage"),
+    };
+    const auto index = std::size_t(verdict);
+    if (index >= std::size(kWords))
+        return QLatin1String(trafficVerdictName(verdict)).toString().replace(QLatin1Char('_'), QLatin1Char(' '));
+    return QCoreApplication::translate("mbscope::TrafficStyle", kWords[index]);
 }
 
 QString TrafficStyle::directionText(TrafficDirection direction)
 {
-    return direction == TrafficDirection::Out ? QStringLiteral("\u2192 out") : QStringLiteral("\u2190 in");
+    return direction == TrafficDirection::Out
+               ? QStringLiteral("\u2192 ") + QCoreApplication::translate("mbscope::TrafficStyle", "out")
+               : QStringLiteral("\u2190 ") + QCoreApplication::translate("mbscope::TrafficStyle", "in");
 }
 
 QColor TrafficStyle::directionColor(TrafficDirection direction)

@@ -68,22 +68,22 @@ void dissectAscii(Dissection &out, const RequestInfo &request)
     tree.reset(binary);
 
     if (!wire.startsWith(':')) {
-        const int s = tree.add(-1, "ascii.start", "Start", 0, 0);
+        const int s = tree.add(-1, "ascii.start", QT_TRANSLATE_NOOP("mbscope::Field", "Start"), 0, 0);
         tree.flag(s, Severity::Error, QStringLiteral("an ASCII frame starts with ':' (0x3A); this one starts with %1")
                                           .arg(wire.isEmpty() ? QStringLiteral("nothing") : charName(wire.at(0))));
     }
     if (!decoded) {
-        const int d = tree.add(-1, "ascii.text", "Frame text", 0, 0);
+        const int d = tree.add(-1, "ascii.text", QT_TRANSLATE_NOOP("mbscope::Field", "Frame text"), 0, 0);
         tree.flag(d, Severity::Error, decodeError + QStringLiteral("; the bytes before it are decoded below"));
     }
     const int m = int(binary.size());
     if (m == 0) {
-        const int x = tree.add(-1, "frame.missing", "Missing bytes", 0, 0);
+        const int x = tree.add(-1, "frame.missing", QT_TRANSLATE_NOOP("mbscope::Field", "Missing bytes"), 0, 0);
         tree.flag(x, Severity::Error, QStringLiteral("no bytes: an ASCII frame holds at least unit id, function code and LRC as hex digits"));
     } else {
         const quint8 unit = quint8(binary.at(0));
-        const int u = tree.add(-1, "ascii.unit_id", "Unit id", 0, 1, unit, ValueFormat::Decimal,
-                               unit == 0 ? "broadcast" : (unit >= 248 ? "reserved address" : nullptr));
+        const int u = tree.add(-1, "ascii.unit_id", QT_TRANSLATE_NOOP("mbscope::Field", "Unit id"), 0, 1, unit, ValueFormat::Decimal,
+                               unit == 0 ? QT_TRANSLATE_NOOP("mbscope::Field", "broadcast") : (unit >= 248 ? QT_TRANSLATE_NOOP("mbscope::Field", "reserved address") : nullptr));
         if (unit == 0 && out.direction == Direction::Response)
             tree.flag(u, Severity::Error, QStringLiteral("a response never comes from unit 0: it is the broadcast address"));
         else if (unit >= 248)
@@ -92,14 +92,14 @@ void dissectAscii(Dissection &out, const RequestInfo &request)
             tree.flag(u, Severity::Error, QStringLiteral("does not match the request, which was sent to unit %1").arg(request.unit));
         if (m < 3) {
             pdu::dissect(PduContext{tree, -1, 1, m - 1, out.direction, request.pdu});
-            const int x = tree.add(-1, "frame.missing", "Missing bytes", m, 0);
+            const int x = tree.add(-1, "frame.missing", QT_TRANSLATE_NOOP("mbscope::Field", "Missing bytes"), m, 0);
             tree.flag(x, Severity::Error,
                       QStringLiteral("%1 bytes decoded; an ASCII frame needs at least 3 (unit id, function code, LRC)").arg(m));
         } else {
             pdu::dissect(PduContext{tree, -1, 1, m - 2, out.direction, request.pdu});
             const quint8 sent = quint8(binary.at(m - 1));
             const quint8 computed = checksum::lrc(QByteArrayView(binary).first(m - 1));
-            const int l = tree.add(-1, "ascii.lrc", "LRC", m - 1, 1, sent, ValueFormat::Hex, sent == computed ? "(valid)" : "(wrong)");
+            const int l = tree.add(-1, "ascii.lrc", QT_TRANSLATE_NOOP("mbscope::Field", "LRC"), m - 1, 1, sent, ValueFormat::Hex, sent == computed ? QT_TRANSLATE_NOOP("mbscope::Field", "(valid)") : QT_TRANSLATE_NOOP("mbscope::Field", "(wrong)"));
             if (sent != computed)
                 tree.flag(l, Severity::Error,
                           QStringLiteral("LRC %1 does not match the %2 computed over the decoded bytes 0-%3")
@@ -108,7 +108,7 @@ void dissectAscii(Dissection &out, const RequestInfo &request)
         }
     }
     if (!wire.endsWith("\r\n")) {
-        const int e = tree.add(-1, "ascii.end", "End", m, 0);
+        const int e = tree.add(-1, "ascii.end", QT_TRANSLATE_NOOP("mbscope::Field", "End"), m, 0);
         tree.flag(e, Severity::Error, QStringLiteral("an ASCII frame ends with CR LF (0x0D 0x0A); this one does not"));
     }
     bool lower = false;

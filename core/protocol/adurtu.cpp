@@ -14,8 +14,8 @@ namespace {
 void addUnit(FieldTree &tree, const char *key, int offset, int length, quint8 unit, Direction direction,
              const RequestInfo &request)
 {
-    const char *meaning = unit == 0 ? "broadcast" : (unit >= 248 ? "reserved address" : nullptr);
-    const int u = tree.add(-1, key, "Unit id", offset, length, unit, ValueFormat::Decimal, meaning);
+    const char *meaning = unit == 0 ? QT_TRANSLATE_NOOP("mbscope::Field", "broadcast") : (unit >= 248 ? QT_TRANSLATE_NOOP("mbscope::Field", "reserved address") : nullptr);
+    const int u = tree.add(-1, key, QT_TRANSLATE_NOOP("mbscope::Field", "Unit id"), offset, length, unit, ValueFormat::Decimal, meaning);
     if (unit == 0 && direction == Direction::Response)
         tree.flag(u, Severity::Error, QStringLiteral("a response never comes from unit 0: it is the broadcast address and servers do not answer broadcasts"));
     else if (unit == 0)
@@ -34,14 +34,14 @@ void dissectRtu(Dissection &out, const RequestInfo &request)
     const QByteArray &b = tree.frame();
     const int n = int(b.size());
     if (n == 0) {
-        const int m = tree.add(-1, "frame.missing", "Missing bytes", 0, 0);
+        const int m = tree.add(-1, "frame.missing", QT_TRANSLATE_NOOP("mbscope::Field", "Missing bytes"), 0, 0);
         tree.flag(m, Severity::Error, QStringLiteral("the frame is empty: an RTU frame needs at least 4 bytes (unit id, function code, 2 CRC bytes)"));
         return;
     }
     addUnit(tree, "rtu.unit_id", 0, 1, quint8(b.at(0)), out.direction, request);
     if (n < 4) {
         pdu::dissect(PduContext{tree, -1, 1, n - 1, out.direction, request.pdu});
-        const int m = tree.add(-1, "frame.missing", "Missing bytes", n, 0);
+        const int m = tree.add(-1, "frame.missing", QT_TRANSLATE_NOOP("mbscope::Field", "Missing bytes"), n, 0);
         tree.flag(m, Severity::Error,
                   QStringLiteral("the frame is %1 bytes; an RTU frame needs at least 4 (unit id, function code, 2 CRC bytes)").arg(n));
         return;
@@ -63,7 +63,7 @@ void dissectRtu(Dissection &out, const RequestInfo &request)
     const quint16 sent = quint16(quint8(b.at(crcAt)) | (quint8(b.at(crcAt + 1)) << 8));
     const quint16 computed = checksum::crc16Modbus(QByteArrayView(b).first(crcAt));
     const bool crcOk = sent == computed;
-    const int c = tree.add(-1, "rtu.crc", "CRC", crcAt, 2, sent, ValueFormat::Hex, crcOk ? "(valid)" : "(wrong)");
+    const int c = tree.add(-1, "rtu.crc", QT_TRANSLATE_NOOP("mbscope::Field", "CRC"), crcAt, 2, sent, ValueFormat::Hex, crcOk ? QT_TRANSLATE_NOOP("mbscope::Field", "(valid)") : QT_TRANSLATE_NOOP("mbscope::Field", "(wrong)"));
     if (!crcOk) {
         tree.flag(c, Severity::Error,
                   QStringLiteral("CRC %1 does not match the %2 computed over bytes 0-%3; a correct frame ends %4 %5")
@@ -73,13 +73,13 @@ void dissectRtu(Dissection &out, const RequestInfo &request)
     }
 
     if (frameEnd < n) {
-        const int t = tree.add(-1, "frame.trailing", "Trailing bytes", frameEnd, n - frameEnd, 0, ValueFormat::Bytes);
+        const int t = tree.add(-1, "frame.trailing", QT_TRANSLATE_NOOP("mbscope::Field", "Trailing bytes"), frameEnd, n - frameEnd, 0, ValueFormat::Bytes);
         tree.flag(t, Severity::Error,
                   QStringLiteral("%1 bytes after the end of the frame: the function's length rule and a valid CRC end it at byte %2")
                       .arg(n - frameEnd).arg(frameEnd));
     } else if (predictedFrame > n) {
         const int missing = predictedFrame - n;
-        const int m = tree.add(-1, "frame.missing", "Missing bytes", n, 0, quint64(missing), ValueFormat::Decimal);
+        const int m = tree.add(-1, "frame.missing", QT_TRANSLATE_NOOP("mbscope::Field", "Missing bytes"), n, 0, quint64(missing), ValueFormat::Decimal);
         QString message = QStringLiteral("the frame is %1 bytes but its own length fields announce %2: %3 bytes are missing")
                               .arg(n).arg(predictedFrame).arg(missing);
         const int bc = tree.indexOf("modbus.byte_count");
@@ -93,7 +93,7 @@ void dissectRtu(Dissection &out, const RequestInfo &request)
         tree.flag(m, Severity::Error, message);
     } else if (predictedFrame >= 4 && predictedFrame < n && !crcOk) {
         const int extra = n - predictedFrame;
-        const int m = tree.add(-1, "frame.trailing", "Extra bytes", predictedFrame, 0, quint64(extra), ValueFormat::Decimal);
+        const int m = tree.add(-1, "frame.trailing", QT_TRANSLATE_NOOP("mbscope::Field", "Extra bytes"), predictedFrame, 0, quint64(extra), ValueFormat::Decimal);
         tree.flag(m, Severity::Error,
                   QStringLiteral("the frame is %1 bytes but its own length fields announce %2: %3 bytes too many, and no valid CRC at byte %4")
                       .arg(n).arg(predictedFrame).arg(extra).arg(predictedFrame - 2));

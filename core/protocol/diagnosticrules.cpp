@@ -30,21 +30,21 @@ bool fail(PduBuilder &b, int subFunction, const QByteArray &data, const char *ex
 const char *subFunctionName(int subFunction)
 {
     switch (subFunction) {
-    case 0x00: return "Return Query Data";
-    case 0x01: return "Restart Communications Option";
-    case 0x02: return "Return Diagnostic Register";
-    case 0x03: return "Change ASCII Input Delimiter";
-    case 0x04: return "Force Listen Only Mode";
-    case 0x0A: return "Clear Counters and Diagnostic Register";
-    case 0x0B: return "Return Bus Message Count";
-    case 0x0C: return "Return Bus Communication Error Count";
-    case 0x0D: return "Return Bus Exception Error Count";
-    case 0x0E: return "Return Server Message Count";
-    case 0x0F: return "Return Server No Response Count";
-    case 0x10: return "Return Server NAK Count";
-    case 0x11: return "Return Server Busy Count";
-    case 0x12: return "Return Bus Character Overrun Count";
-    case 0x14: return "Clear Overrun Counter and Flag";
+    case 0x00: return QT_TRANSLATE_NOOP("mbscope::Field", "Return Query Data");
+    case 0x01: return QT_TRANSLATE_NOOP("mbscope::Field", "Restart Communications Option");
+    case 0x02: return QT_TRANSLATE_NOOP("mbscope::Field", "Return Diagnostic Register");
+    case 0x03: return QT_TRANSLATE_NOOP("mbscope::Field", "Change ASCII Input Delimiter");
+    case 0x04: return QT_TRANSLATE_NOOP("mbscope::Field", "Force Listen Only Mode");
+    case 0x0A: return QT_TRANSLATE_NOOP("mbscope::Field", "Clear Counters and Diagnostic Register");
+    case 0x0B: return QT_TRANSLATE_NOOP("mbscope::Field", "Return Bus Message Count");
+    case 0x0C: return QT_TRANSLATE_NOOP("mbscope::Field", "Return Bus Communication Error Count");
+    case 0x0D: return QT_TRANSLATE_NOOP("mbscope::Field", "Return Bus Exception Error Count");
+    case 0x0E: return QT_TRANSLATE_NOOP("mbscope::Field", "Return Server Message Count");
+    case 0x0F: return QT_TRANSLATE_NOOP("mbscope::Field", "Return Server No Response Count");
+    case 0x10: return QT_TRANSLATE_NOOP("mbscope::Field", "Return Server NAK Count");
+    case 0x11: return QT_TRANSLATE_NOOP("mbscope::Field", "Return Server Busy Count");
+    case 0x12: return QT_TRANSLATE_NOOP("mbscope::Field", "Return Bus Character Overrun Count");
+    case 0x14: return QT_TRANSLATE_NOOP("mbscope::Field", "Clear Overrun Counter and Flag");
     default: return nullptr;
     }
 }

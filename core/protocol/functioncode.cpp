@@ -26,49 +26,49 @@ FunctionKind functionKind(quint8 code)
 const char *functionName(quint8 code)
 {
     switch (code) {
-    case 0x01: return "Read Coils";
-    case 0x02: return "Read Discrete Inputs";
-    case 0x03: return "Read Holding Registers";
-    case 0x04: return "Read Input Registers";
-    case 0x05: return "Write Single Coil";
-    case 0x06: return "Write Single Register";
-    case 0x07: return "Read Exception Status";
-    case 0x08: return "Diagnostics";
-    case 0x0B: return "Get Comm Event Counter";
-    case 0x0C: return "Get Comm Event Log";
-    case 0x0F: return "Write Multiple Coils";
-    case 0x10: return "Write Multiple Registers";
-    case 0x11: return "Report Server ID";
-    case 0x14: return "Read File Record";
-    case 0x15: return "Write File Record";
-    case 0x16: return "Mask Write Register";
-    case 0x17: return "Read/Write Multiple Registers";
-    case 0x18: return "Read FIFO Queue";
-    case 0x2B: return "Encapsulated Interface Transport";
+    case 0x01: return QT_TRANSLATE_NOOP("mbscope::Field", "Read Coils");
+    case 0x02: return QT_TRANSLATE_NOOP("mbscope::Field", "Read Discrete Inputs");
+    case 0x03: return QT_TRANSLATE_NOOP("mbscope::Field", "Read Holding Registers");
+    case 0x04: return QT_TRANSLATE_NOOP("mbscope::Field", "Read Input Registers");
+    case 0x05: return QT_TRANSLATE_NOOP("mbscope::Field", "Write Single Coil");
+    case 0x06: return QT_TRANSLATE_NOOP("mbscope::Field", "Write Single Register");
+    case 0x07: return QT_TRANSLATE_NOOP("mbscope::Field", "Read Exception Status");
+    case 0x08: return QT_TRANSLATE_NOOP("mbscope::Field", "Diagnostics");
+    case 0x0B: return QT_TRANSLATE_NOOP("mbscope::Field", "Get Comm Event Counter");
+    case 0x0C: return QT_TRANSLATE_NOOP("mbscope::Field", "Get Comm Event Log");
+    case 0x0F: return QT_TRANSLATE_NOOP("mbscope::Field", "Write Multiple Coils");
+    case 0x10: return QT_TRANSLATE_NOOP("mbscope::Field", "Write Multiple Registers");
+    case 0x11: return QT_TRANSLATE_NOOP("mbscope::Field", "Report Server ID");
+    case 0x14: return QT_TRANSLATE_NOOP("mbscope::Field", "Read File Record");
+    case 0x15: return QT_TRANSLATE_NOOP("mbscope::Field", "Write File Record");
+    case 0x16: return QT_TRANSLATE_NOOP("mbscope::Field", "Mask Write Register");
+    case 0x17: return QT_TRANSLATE_NOOP("mbscope::Field", "Read/Write Multiple Registers");
+    case 0x18: return QT_TRANSLATE_NOOP("mbscope::Field", "Read FIFO Queue");
+    case 0x2B: return QT_TRANSLATE_NOOP("mbscope::Field", "Encapsulated Interface Transport");
     default: break;
     }
     switch (functionKind(code)) {
-    case FunctionKind::UserDefined: return "User-defined function";
-    case FunctionKind::Reserved: return "Reserved function code";
-    case FunctionKind::Exception: return "Exception response";
-    default: return "Unassigned function code";
+    case FunctionKind::UserDefined: return QT_TRANSLATE_NOOP("mbscope::Field", "User-defined function");
+    case FunctionKind::Reserved: return QT_TRANSLATE_NOOP("mbscope::Field", "Reserved function code");
+    case FunctionKind::Exception: return QT_TRANSLATE_NOOP("mbscope::Field", "Exception response");
+    default: return QT_TRANSLATE_NOOP("mbscope::Field", "Unassigned function code");
     }
 }
 
 const char *exceptionName(quint8 code)
 {
     switch (code) {
-    case 0x01: return "Illegal Function";
-    case 0x02: return "Illegal Data Address";
-    case 0x03: return "Illegal Data Value";
-    case 0x04: return "Server Device Failure";
-    case 0x05: return "Acknowledge";
-    case 0x06: return "Server Device Busy";
-    case 0x07: return "Negative Acknowledge";
-    case 0x08: return "Memory Parity Error";
-    case 0x0A: return "Gateway Path Unavailable";
-    case 0x0B: return "Gateway Target Device Failed to Respond";
-    default: return "Unknown exception code";
+    case 0x01: return QT_TRANSLATE_NOOP("mbscope::Field", "Illegal Function");
+    case 0x02: return QT_TRANSLATE_NOOP("mbscope::Field", "Illegal Data Address");
+    case 0x03: return QT_TRANSLATE_NOOP("mbscope::Field", "Illegal Data Value");
+    case 0x04: return QT_TRANSLATE_NOOP("mbscope::Field", "Server Device Failure");
+    case 0x05: return QT_TRANSLATE_NOOP("mbscope::Field", "Acknowledge");
+    case 0x06: return QT_TRANSLATE_NOOP("mbscope::Field", "Server Device Busy");
+    case 0x07: return QT_TRANSLATE_NOOP("mbscope::Field", "Negative Acknowledge");
+    case 0x08: return QT_TRANSLATE_NOOP("mbscope::Field", "Memory Parity Error");
+    case 0x0A: return QT_TRANSLATE_NOOP("mbscope::Field", "Gateway Path Unavailable");
+    case 0x0B: return QT_TRANSLATE_NOOP("mbscope::Field", "Gateway Target Device Failed to Respond");
+    default: return QT_TRANSLATE_NOOP("mbscope::Field", "Unknown exception code");
     }
 }
 
@@ -76,29 +76,29 @@ const char *exceptionMeaning(quint8 code)
 {
     switch (code) {
     case 0x01:
-        return "Illegal Function: the function code is not supported by the device, or not allowed in its current state";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Illegal Function: the function code is not supported by the device, or not allowed in its current state");
     case 0x02:
-        return "Illegal Data Address: the address range is not available in the device";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Illegal Data Address: the address range is not available in the device");
     case 0x03:
-        return "Illegal Data Value: a value in the request is not allowed, such as a quantity or length out of range";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Illegal Data Value: a value in the request is not allowed, such as a quantity or length out of range");
     case 0x04:
-        return "Server Device Failure: an unrecoverable error occurred while the device was performing the action";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Server Device Failure: an unrecoverable error occurred while the device was performing the action");
     case 0x05:
-        return "Acknowledge: the device accepted the request but needs a long time to process it; poll it later";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Acknowledge: the device accepted the request but needs a long time to process it; poll it later");
     case 0x06:
-        return "Server Device Busy: the device is processing a long-duration command; retry later";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Server Device Busy: the device is processing a long-duration command; retry later");
     case 0x07:
-        return "Negative Acknowledge: the device cannot perform the program function (legacy Modicon code)";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Negative Acknowledge: the device cannot perform the program function (legacy Modicon code)");
     case 0x08:
-        return "Memory Parity Error: the device found a parity error in its extended file memory (function 20/21)";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Memory Parity Error: the device found a parity error in its extended file memory (function 20/21)");
     case 0x0A:
-        return "Gateway Path Unavailable: the gateway could not allocate a path to the target, it is misconfigured or overloaded";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Gateway Path Unavailable: the gateway could not allocate a path to the target, it is misconfigured or overloaded");
     case 0x0B:
-        return "Gateway Target Device Failed to Respond: the gateway got no answer from the target device";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Gateway Target Device Failed to Respond: the gateway got no answer from the target device");
     case 0x09:
-        return "Unassigned exception code: 0x09 is not defined by the Modbus specification";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Unassigned exception code: 0x09 is not defined by the Modbus specification");
     default:
-        return "Unknown exception code: the Modbus specification defines 0x01-0x08, 0x0A and 0x0B";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "Unknown exception code: the Modbus specification defines 0x01-0x08, 0x0A and 0x0B");
     }
 }
 

@@ -181,12 +181,12 @@ ModiconReferenceResult ModiconReference::fromNumber(ModbusTable table, int numbe
 const char *ModiconReference::tableName(ModbusTable table)
 {
     switch (table) {
-    case ModbusTable::Coils: return "coils";
-    case ModbusTable::DiscreteInputs: return "discrete inputs";
-    case ModbusTable::InputRegisters: return "input registers";
-    case ModbusTable::HoldingRegisters: return "holding registers";
+    case ModbusTable::Coils: return QT_TRANSLATE_NOOP("mbscope::Field", "coils");
+    case ModbusTable::DiscreteInputs: return QT_TRANSLATE_NOOP("mbscope::Field", "discrete inputs");
+    case ModbusTable::InputRegisters: return QT_TRANSLATE_NOOP("mbscope::Field", "input registers");
+    case ModbusTable::HoldingRegisters: return QT_TRANSLATE_NOOP("mbscope::Field", "holding registers");
     }
-    return "holding registers";
+    return QT_TRANSLATE_NOOP("mbscope::Field", "holding registers");
 }
 
 const char *ModiconReference::numberName(ModbusTable table)

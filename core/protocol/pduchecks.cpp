@@ -9,7 +9,7 @@ namespace mbscope::pdu::checks {
 namespace {
 
 const char *const kMissingKey = "modbus.missing";
-const char *const kMissingName = "Missing bytes";
+const char *const kMissingName = QT_TRANSLATE_NOOP("mbscope::Field", "Missing bytes");
 
 // The missing field itself: from pduOffset (clamped into the PDU) to its end, showing any partial
 // bytes, flagged with message.
@@ -100,7 +100,7 @@ bool trailing(const PduContext &ctx, int pduEnd)
     if (ctx.length <= pduEnd)
         return false;
     const int n = ctx.length - pduEnd;
-    const int f = ctx.add("modbus.trailing", "Unexpected bytes", pduEnd, n, 0, ValueFormat::Bytes);
+    const int f = ctx.add("modbus.trailing", QT_TRANSLATE_NOOP("mbscope::Field", "Unexpected bytes"), pduEnd, n, 0, ValueFormat::Bytes);
     ctx.tree.flag(f, Severity::Error,
                   QStringLiteral("%1 after the end of the PDU: it should be %2 long, %3 are present")
                       .arg(amount(n, "byte", "bytes"), amount(pduEnd, "byte", "bytes"), QString::number(ctx.length)));
@@ -138,7 +138,7 @@ bool serialLineResponse(const PduContext &ctx, const QString &note)
 void rawData(const PduContext &ctx, int pduOffset, const char *key)
 {
     if (ctx.length > pduOffset)
-        ctx.add(key, "Data", pduOffset, ctx.length - pduOffset, 0, ValueFormat::Bytes);
+        ctx.add(key, QT_TRANSLATE_NOOP("mbscope::Field", "Data"), pduOffset, ctx.length - pduOffset, 0, ValueFormat::Bytes);
 }
 
 void countedEnd(const PduContext &ctx, int end)
@@ -206,8 +206,8 @@ void checkEvenByteCount(const PduContext &ctx, int field, int byteCount)
 bool startAndQuantity(const PduContext &ctx, int maxQuantity)
 {
     static const Slot layout[] = {
-        {"modbus.start_address", "Start address", 2, ValueFormat::DecimalHex, "start address and quantity"},
-        {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity"},
+        {"modbus.start_address", QT_TRANSLATE_NOOP("mbscope::Field", "Start address"), 2, ValueFormat::DecimalHex, "start address and quantity"},
+        {"modbus.quantity", QT_TRANSLATE_NOOP("mbscope::Field", "Quantity"), 2, ValueFormat::Decimal, "quantity"},
     };
     int f[2];
     if (!addFixed(ctx, ctx.parent, 1, layout, 2, f, 5, false))
@@ -225,7 +225,7 @@ void registerReadResponse(const PduContext &ctx, const char *label, const char *
         return;
     }
     const int byteCount = ctx.byte(1);
-    const int bc = ctx.add("modbus.byte_count", "Byte count", 1, 1, quint64(byteCount), ValueFormat::Decimal);
+    const int bc = ctx.add("modbus.byte_count", QT_TRANSLATE_NOOP("mbscope::Field", "Byte count"), 1, 1, quint64(byteCount), ValueFormat::Decimal);
     // The request starts with start address and quantity (of the read block, for 17).
     const bool known = requestUsable(ctx, 5);
     const int quantity = known ? ctx.requestU16(3) : -1;
@@ -238,7 +238,7 @@ void registerReadResponse(const PduContext &ctx, const char *label, const char *
                           .arg(QString::number(byteCount), functionLabel(ctx)));
     }
     checkEvenByteCount(ctx, bc, byteCount);
-    registerBlock(ctx, ctx.parent, 2, 2, 2 + byteCount, known ? "Register" : "Register index",
+    registerBlock(ctx, ctx.parent, 2, 2, 2 + byteCount, known ? QT_TRANSLATE_NOOP("mbscope::Field", "Register") : QT_TRANSLATE_NOOP("mbscope::Field", "Register index"),
                   known ? int(ctx.requestU16(1)) : -1);
     trailing(ctx, 2 + byteCount);
 }
@@ -263,7 +263,7 @@ void addBits(const PduContext &ctx, int parent, int pduOffset, int bits, const c
             return;
         // V1.1b3, 6.1: the first item is the least significant bit of the first data byte.
         const quint8 bit = (ctx.byte(at) >> (i % 8)) & 1;
-        const int f = ctx.addChild(parent, key, name, at, 1, bit, ValueFormat::Bit, bit ? "ON" : "OFF");
+        const int f = ctx.addChild(parent, key, name, at, 1, bit, ValueFormat::Bit, bit ? QT_TRANSLATE_NOOP("mbscope::Field", "ON") : QT_TRANSLATE_NOOP("mbscope::Field", "OFF"));
         ctx.tree.setAddress(f, firstAddress >= 0 ? firstAddress + i : i);
     }
 }
@@ -283,7 +283,7 @@ bool registerBlock(const PduContext &ctx, int parent, int dataOffset, int countS
         return true;
     }
     if (after < end) {
-        const int f = ctx.addChild(parent, "modbus.data", "Incomplete register", after, end - after, 0,
+        const int f = ctx.addChild(parent, "modbus.data", QT_TRANSLATE_NOOP("mbscope::Field", "Incomplete register"), after, end - after, 0,
                                    ValueFormat::Bytes);
         ctx.tree.flag(f, Severity::Error,
                       QStringLiteral("%1 left over at the end of the register data: registers are 2 bytes each")
@@ -305,8 +305,8 @@ void bitBlock(const PduContext &ctx, int parent, int dataOffset, int byteCount, 
             // V1.1b3, 6.1 and 6.11: the unused high bits of the last byte are padded with zeros.
             const int last = countEnd - 1;
             const quint8 pad = quint8(ctx.byte(last) >> used);
-            const int f = ctx.addChild(parent, "modbus.padding_bits", "Padding bits", last, 1, pad, ValueFormat::Hex,
-                                       "unused high bits of the last data byte");
+            const int f = ctx.addChild(parent, "modbus.padding_bits", QT_TRANSLATE_NOOP("mbscope::Field", "Padding bits"), last, 1, pad, ValueFormat::Hex,
+                                       QT_TRANSLATE_NOOP("mbscope::Field", "unused high bits of the last data byte"));
             if (pad != 0) {
                 ctx.tree.flag(f, Severity::Warning,
                               QStringLiteral("padding bits are %1, expected 0: the %2 of the last data byte "

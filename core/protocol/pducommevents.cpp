@@ -101,9 +101,9 @@ void checkStatus(const PduContext &ctx, int s, int pduOffset)
         return;
     const quint16 status = ctx.u16(pduOffset);
     if (status == 0x0000) {
-        ctx.tree.setMeaning(s, "Ready: no previous command is in progress");
+        ctx.tree.setMeaning(s, QT_TRANSLATE_NOOP("mbscope::Field", "Ready: no previous command is in progress"));
     } else if (status == 0xFFFF) {
-        ctx.tree.setMeaning(s, "Busy: a previous command is still being processed");
+        ctx.tree.setMeaning(s, QT_TRANSLATE_NOOP("mbscope::Field", "Busy: a previous command is still being processed"));
     } else {
         ctx.tree.flag(s, Severity::Error,
                       QStringLiteral("%1 is not a status: 0x0000 means ready, 0xFFFF busy (V1.1b3 6.9)")
@@ -119,7 +119,7 @@ void dissectReadExceptionStatus(const PduContext &ctx)
             ctx, QStringLiteral("serial line only: V1.1b3 6.7 defines Read Exception Status for serial line devices")))
         return;
     static const Slot layout[] = {
-        {"modbus.exception_status", "Exception status", 1, ValueFormat::Hex, "exception status"},
+        {"modbus.exception_status", QT_TRANSLATE_NOOP("mbscope::Field", "Exception status"), 1, ValueFormat::Hex, "exception status"},
     };
     int s = -1;
     if (!addFixed(ctx, ctx.parent, 1, layout, 1, &s, 2, false))
@@ -128,8 +128,8 @@ void dissectReadExceptionStatus(const PduContext &ctx)
     const quint8 status = ctx.byte(1);
     for (int bit = 0; bit < 8; ++bit) {
         const bool on = (status >> bit) & 1;
-        const int b = ctx.addChild(s, "modbus.exception_status_bit", "Output", 1, 1, on ? 1 : 0,
-                                   ValueFormat::Bit, on ? "ON" : "OFF");
+        const int b = ctx.addChild(s, "modbus.exception_status_bit", QT_TRANSLATE_NOOP("mbscope::Field", "Output"), 1, 1, on ? 1 : 0,
+                                   ValueFormat::Bit, on ? QT_TRANSLATE_NOOP("mbscope::Field", "ON") : QT_TRANSLATE_NOOP("mbscope::Field", "OFF"));
         ctx.tree.setAddress(b, bit);
     }
     trailing(ctx, 2);
@@ -141,8 +141,8 @@ void dissectCommEventCounter(const PduContext &ctx)
             ctx, QStringLiteral("serial line only: V1.1b3 6.9 defines Get Comm Event Counter for serial line devices")))
         return;
     static const Slot layout[] = {
-        {"modbus.status", "Status", 2, ValueFormat::Hex, "status and event count"},
-        {"modbus.event_count", "Event count", 2, ValueFormat::Decimal, "event count"},
+        {"modbus.status", QT_TRANSLATE_NOOP("mbscope::Field", "Status"), 2, ValueFormat::Hex, "status and event count"},
+        {"modbus.event_count", QT_TRANSLATE_NOOP("mbscope::Field", "Event count"), 2, ValueFormat::Decimal, "event count"},
     };
     int f[2] = {-1, -1};
     const bool whole = addFixed(ctx, ctx.parent, 1, layout, 2, f, 5, false);
@@ -158,11 +158,11 @@ void dissectCommEventLog(const PduContext &ctx)
         return;
     // Byte count = 6 (status, event count, message count) + one byte per event, 0-64 events.
     static const Slot layout[] = {
-        {"modbus.byte_count", "Byte count", 1, ValueFormat::Decimal,
+        {"modbus.byte_count", QT_TRANSLATE_NOOP("mbscope::Field", "Byte count"), 1, ValueFormat::Decimal,
          "byte count, status, event count, message count and any events"},
-        {"modbus.status", "Status", 2, ValueFormat::Hex, "status, event count, message count and any events"},
-        {"modbus.event_count", "Event count", 2, ValueFormat::Decimal, "event count, message count and any events"},
-        {"modbus.message_count", "Message count", 2, ValueFormat::Decimal, "message count and any events"},
+        {"modbus.status", QT_TRANSLATE_NOOP("mbscope::Field", "Status"), 2, ValueFormat::Hex, "status, event count, message count and any events"},
+        {"modbus.event_count", QT_TRANSLATE_NOOP("mbscope::Field", "Event count"), 2, ValueFormat::Decimal, "event count, message count and any events"},
+        {"modbus.message_count", QT_TRANSLATE_NOOP("mbscope::Field", "Message count"), 2, ValueFormat::Decimal, "message count and any events"},
     };
     int f[4] = {-1, -1, -1, -1};
     const int end = countedFields(ctx, layout, 4, f, "status, event count and message count take 6 bytes");
@@ -178,7 +178,7 @@ void dissectCommEventLog(const PduContext &ctx)
     // Events end where the byte count says, or where the PDU does if that comes first.
     for (int at = 8; at < qMin(end, ctx.length); ++at) {
         const quint8 v = ctx.byte(at);
-        const int e = ctx.add("modbus.event", "Event", at, 1, v, ValueFormat::Hex, kEventTexts.text[v].data());
+        const int e = ctx.add("modbus.event", QT_TRANSLATE_NOOP("mbscope::Field", "Event"), at, 1, v, ValueFormat::Hex, kEventTexts.text[v].data());
         ctx.tree.setAddress(e, at - 8);
         if (!isDefinedEvent(v)) {
             ctx.tree.flag(e, Severity::Warning,

@@ -26,11 +26,11 @@ using namespace checks;
 const char *readDeviceIdCodeName(quint8 code)
 {
     switch (code) {
-    case 0x01: return "Basic device identification (stream access)";
-    case 0x02: return "Regular device identification (stream access)";
-    case 0x03: return "Extended device identification (stream access)";
-    case 0x04: return "One specific identification object (individual access)";
-    default: return "Undefined read device ID code";
+    case 0x01: return QT_TRANSLATE_NOOP("mbscope::Field", "Basic device identification (stream access)");
+    case 0x02: return QT_TRANSLATE_NOOP("mbscope::Field", "Regular device identification (stream access)");
+    case 0x03: return QT_TRANSLATE_NOOP("mbscope::Field", "Extended device identification (stream access)");
+    case 0x04: return QT_TRANSLATE_NOOP("mbscope::Field", "One specific identification object (individual access)");
+    default: return QT_TRANSLATE_NOOP("mbscope::Field", "Undefined read device ID code");
     }
 }
 
@@ -38,27 +38,27 @@ const char *readDeviceIdCodeName(quint8 code)
 const char *objectName(quint8 id)
 {
     switch (id) {
-    case 0x00: return "VendorName";
-    case 0x01: return "ProductCode";
-    case 0x02: return "MajorMinorRevision";
-    case 0x03: return "VendorUrl";
-    case 0x04: return "ProductName";
-    case 0x05: return "ModelName";
-    case 0x06: return "UserApplicationName";
-    default: return id < 0x80 ? "Reserved object" : "Private object (extended, device dependent)";
+    case 0x00: return QT_TRANSLATE_NOOP("mbscope::Field", "VendorName");
+    case 0x01: return QT_TRANSLATE_NOOP("mbscope::Field", "ProductCode");
+    case 0x02: return QT_TRANSLATE_NOOP("mbscope::Field", "MajorMinorRevision");
+    case 0x03: return QT_TRANSLATE_NOOP("mbscope::Field", "VendorUrl");
+    case 0x04: return QT_TRANSLATE_NOOP("mbscope::Field", "ProductName");
+    case 0x05: return QT_TRANSLATE_NOOP("mbscope::Field", "ModelName");
+    case 0x06: return QT_TRANSLATE_NOOP("mbscope::Field", "UserApplicationName");
+    default: return id < 0x80 ? QT_TRANSLATE_NOOP("mbscope::Field", "Reserved object") : QT_TRANSLATE_NOOP("mbscope::Field", "Private object (extended, device dependent)");
     }
 }
 
 const char *conformityName(quint8 level)
 {
     switch (level) {
-    case 0x01: return "Basic identification (stream access only)";
-    case 0x02: return "Regular identification (stream access only)";
-    case 0x03: return "Extended identification (stream access only)";
-    case 0x81: return "Basic identification (stream access and individual access)";
-    case 0x82: return "Regular identification (stream access and individual access)";
-    case 0x83: return "Extended identification (stream access and individual access)";
-    default: return "Undefined conformity level";
+    case 0x01: return QT_TRANSLATE_NOOP("mbscope::Field", "Basic identification (stream access only)");
+    case 0x02: return QT_TRANSLATE_NOOP("mbscope::Field", "Regular identification (stream access only)");
+    case 0x03: return QT_TRANSLATE_NOOP("mbscope::Field", "Extended identification (stream access only)");
+    case 0x81: return QT_TRANSLATE_NOOP("mbscope::Field", "Basic identification (stream access and individual access)");
+    case 0x82: return QT_TRANSLATE_NOOP("mbscope::Field", "Regular identification (stream access and individual access)");
+    case 0x83: return QT_TRANSLATE_NOOP("mbscope::Field", "Extended identification (stream access and individual access)");
+    default: return QT_TRANSLATE_NOOP("mbscope::Field", "Undefined conformity level");
     }
 }
 
@@ -84,8 +84,8 @@ void checkReadDeviceIdCode(const PduContext &ctx, int c)
 void dissectDeviceIdRequest(const PduContext &ctx)
 {
     static const Slot layout[] = {
-        {"modbus.read_device_id_code", "Read device ID code", 1, ValueFormat::Hex, "read device ID code and object ID"},
-        {"modbus.object_id", "Object ID", 1, ValueFormat::Hex, "object ID"},
+        {"modbus.read_device_id_code", QT_TRANSLATE_NOOP("mbscope::Field", "Read device ID code"), 1, ValueFormat::Hex, "read device ID code and object ID"},
+        {"modbus.object_id", QT_TRANSLATE_NOOP("mbscope::Field", "Object ID"), 1, ValueFormat::Hex, "object ID"},
     };
     int f[2] = {-1, -1};
     const bool whole = addFixed(ctx, ctx.parent, 2, layout, 2, f, 4, false);
@@ -124,10 +124,10 @@ int dissectObjects(const PduContext &ctx, int countField, quint8 code)
         const int length = hasLength ? ctx.byte(at + 1) : 0;
         const int available = qMax(0, ctx.length - (at + 2));
         const int shown = qMin(length, available);
-        const int g = ctx.add("modbus.object", "Object", at, hasLength ? 2 + shown : 1, 0, ValueFormat::None,
+        const int g = ctx.add("modbus.object", QT_TRANSLATE_NOOP("mbscope::Field", "Object"), at, hasLength ? 2 + shown : 1, 0, ValueFormat::None,
                               objectName(id));
         ctx.tree.setAddress(g, index);
-        const int idField = ctx.addChild(g, "modbus.object_id", "Object ID", at, 1, id, ValueFormat::Hex, objectName(id));
+        const int idField = ctx.addChild(g, "modbus.object_id", QT_TRANSLATE_NOOP("mbscope::Field", "Object ID"), at, 1, id, ValueFormat::Hex, objectName(id));
         if (isReservedObject(id)) {
             ctx.tree.flag(idField, Severity::Warning,
                           QStringLiteral("%1 is a reserved object ID (0x07-0x7F)").arg(hexByte(id)));
@@ -143,9 +143,9 @@ int dissectObjects(const PduContext &ctx, int countField, quint8 code)
             missing(ctx, g, at + 1, at + 2, true, "object length and object value");
             break;
         }
-        ctx.addChild(g, "modbus.object_length", "Object length", at + 1, 1, quint64(length), ValueFormat::Decimal);
+        ctx.addChild(g, "modbus.object_length", QT_TRANSLATE_NOOP("mbscope::Field", "Object length"), at + 1, 1, quint64(length), ValueFormat::Decimal);
         if (shown > 0 || length == 0)
-            ctx.addChild(g, "modbus.object_value", "Object value", at + 2, shown, 0, ValueFormat::Ascii);
+            ctx.addChild(g, "modbus.object_value", QT_TRANSLATE_NOOP("mbscope::Field", "Object value"), at + 2, shown, 0, ValueFormat::Ascii);
         if (length > available)
             missingData(ctx, g, at + 2 + shown, at + 2, at + 2 + length, "object length");
         at += 2 + length;
@@ -164,13 +164,13 @@ int dissectObjects(const PduContext &ctx, int countField, quint8 code)
 void dissectDeviceIdResponse(const PduContext &ctx)
 {
     static const Slot layout[] = {
-        {"modbus.read_device_id_code", "Read device ID code", 1, ValueFormat::Hex,
+        {"modbus.read_device_id_code", QT_TRANSLATE_NOOP("mbscope::Field", "Read device ID code"), 1, ValueFormat::Hex,
          "read device ID code, conformity level, more follows, next object ID, number of objects and objects"},
-        {"modbus.conformity_level", "Conformity level", 1, ValueFormat::Hex,
+        {"modbus.conformity_level", QT_TRANSLATE_NOOP("mbscope::Field", "Conformity level"), 1, ValueFormat::Hex,
          "conformity level, more follows, next object ID, number of objects and objects"},
-        {"modbus.more_follows", "More follows", 1, ValueFormat::Hex, "more follows, next object ID, number of objects and objects"},
-        {"modbus.next_object_id", "Next object ID", 1, ValueFormat::Hex, "next object ID, number of objects and objects"},
-        {"modbus.object_count", "Number of objects", 1, ValueFormat::Decimal, "number of objects and objects"},
+        {"modbus.more_follows", QT_TRANSLATE_NOOP("mbscope::Field", "More follows"), 1, ValueFormat::Hex, "more follows, next object ID, number of objects and objects"},
+        {"modbus.next_object_id", QT_TRANSLATE_NOOP("mbscope::Field", "Next object ID"), 1, ValueFormat::Hex, "next object ID, number of objects and objects"},
+        {"modbus.object_count", QT_TRANSLATE_NOOP("mbscope::Field", "Number of objects"), 1, ValueFormat::Decimal, "number of objects and objects"},
     };
     int f[5] = {-1, -1, -1, -1, -1};
     const bool whole = addFixed(ctx, ctx.parent, 2, layout, 5, f, 7, true);
@@ -204,9 +204,9 @@ void dissectDeviceIdResponse(const PduContext &ctx)
         return;
     const quint8 more = ctx.byte(4);
     if (more == 0x00) {
-        ctx.tree.setMeaning(mf, "No more objects");
+        ctx.tree.setMeaning(mf, QT_TRANSLATE_NOOP("mbscope::Field", "No more objects"));
     } else if (more == 0xFF) {
-        ctx.tree.setMeaning(mf, "More objects follow: ask again from the next object ID");
+        ctx.tree.setMeaning(mf, QT_TRANSLATE_NOOP("mbscope::Field", "More objects follow: ask again from the next object ID"));
         if (code == 0x04) {
             ctx.tree.flag(mf, Severity::Error,
                           QStringLiteral("individual access (code 04) sets more follows to 0x00 (V1.1b3 6.21)"));
@@ -273,7 +273,7 @@ void dissectEncapsulatedInterface(const PduContext &ctx)
                           .arg(hexByte(ctx.requestByte(1))));
     }
     if (mei == 0x0E) {
-        ctx.tree.setMeaning(m, "Read Device Identification");
+        ctx.tree.setMeaning(m, QT_TRANSLATE_NOOP("mbscope::Field", "Read Device Identification"));
         if (isResponse(ctx))
             dissectDeviceIdResponse(ctx);
         else
@@ -281,11 +281,11 @@ void dissectEncapsulatedInterface(const PduContext &ctx)
         return;
     }
     if (mei == 0x0D) {
-        ctx.tree.setMeaning(m, "CANopen General Reference");
+        ctx.tree.setMeaning(m, QT_TRANSLATE_NOOP("mbscope::Field", "CANopen General Reference"));
         ctx.tree.flag(m, Severity::Info,
                       QStringLiteral("CANopen General Reference: its data follows CiA DS-309 and is shown raw"));
     } else {
-        ctx.tree.setMeaning(m, "Reserved MEI type");
+        ctx.tree.setMeaning(m, QT_TRANSLATE_NOOP("mbscope::Field", "Reserved MEI type"));
         ctx.tree.flag(m, Severity::Warning,
                       QStringLiteral("reserved MEI type %1: V1.1b3 defines 0x0D (CANopen) and 0x0E (device "
                                      "identification); the data is shown raw").arg(hexByte(mei)));

@@ -81,19 +81,19 @@ constexpr CharNames kCharNames = makeCharNames();
 const char *characterName(quint8 c)
 {
     static const char *const control[32] = {
-        "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", "BS (backspace)", "HT (tab)",
-        "LF (line feed, the default delimiter)", "VT", "FF (form feed)", "CR (carriage return)", "SO", "SI",
-        "DLE", "DC1 (XON)", "DC2", "DC3 (XOFF)", "DC4", "NAK", "SYN", "ETB", "CAN", "EM", "SUB", "ESC",
+        "NUL", "SOH", "STX", "ETX", "EOT", "ENQ", "ACK", "BEL", QT_TRANSLATE_NOOP("mbscope::Field", "BS (backspace)"), QT_TRANSLATE_NOOP("mbscope::Field", "HT (tab)"),
+        QT_TRANSLATE_NOOP("mbscope::Field", "LF (line feed, the default delimiter)"), "VT", QT_TRANSLATE_NOOP("mbscope::Field", "FF (form feed)"), QT_TRANSLATE_NOOP("mbscope::Field", "CR (carriage return)"), "SO", "SI",
+        "DLE", QT_TRANSLATE_NOOP("mbscope::Field", "DC1 (XON)"), "DC2", QT_TRANSLATE_NOOP("mbscope::Field", "DC3 (XOFF)"), "DC4", "NAK", "SYN", "ETB", "CAN", "EM", "SUB", "ESC",
         "FS", "GS", "RS", "US"};
     if (c < 0x20)
         return control[c];
     if (c == 0x20)
-        return "' ' (space)";
+        return QT_TRANSLATE_NOOP("mbscope::Field", "' ' (space)");
     if (c < 0x7F)
         return kCharNames.printable[size_t(c - 0x20)].data();
     if (c == 0x7F)
         return "DEL";
-    return "not an ASCII character";
+    return QT_TRANSLATE_NOOP("mbscope::Field", "not an ASCII character");
 }
 
 // A matching Diagnostics request with its sub-function; a request of another function is
@@ -158,14 +158,14 @@ void dissectEcho(const PduContext &ctx)
     if (bytes <= 0) {
         // V1.1b3 allows any data, which includes none; the echo check still applies.
         if (isResponse(ctx) && sameRequest(ctx) && ctx.request.size() > 3 && ctx.requestU16(1) == 0) {
-            const int e = ctx.add("modbus.echo_data", "Echo data", 3, 0);
+            const int e = ctx.add("modbus.echo_data", QT_TRANSLATE_NOOP("mbscope::Field", "Echo data"), 3, 0);
             ctx.tree.flag(e, Severity::Error,
                           QStringLiteral("missing: the request sent %1 of data to echo, none came back")
                               .arg(amount(ctx.request.size() - 3, "byte", "bytes")));
         }
         return;
     }
-    const int e = ctx.add("modbus.echo_data", "Echo data", 3, bytes, 0, ValueFormat::Bytes);
+    const int e = ctx.add("modbus.echo_data", QT_TRANSLATE_NOOP("mbscope::Field", "Echo data"), 3, bytes, 0, ValueFormat::Bytes);
     if (bytes % 2 != 0) {
         ctx.tree.flag(e, Severity::Info,
                       QStringLiteral("odd length (%1): V1.1b3 6.8.1 gives the data as 2-byte words").arg(amount(bytes, "byte", "bytes")));
@@ -180,9 +180,9 @@ void dissectRestart(const PduContext &ctx)
         return;
     const quint16 option = ctx.u16(3);
     if (option == 0x0000) {
-        ctx.tree.setMeaning(r, "Restart, keep the communications event log");
+        ctx.tree.setMeaning(r, QT_TRANSLATE_NOOP("mbscope::Field", "Restart, keep the communications event log"));
     } else if (option == 0xFF00) {
-        ctx.tree.setMeaning(r, "Restart and clear the communications event log");
+        ctx.tree.setMeaning(r, QT_TRANSLATE_NOOP("mbscope::Field", "Restart and clear the communications event log"));
     } else {
         ctx.tree.flag(r, Severity::Error,
                       QStringLiteral("%1 is not a restart option: 0x0000 keeps the event log, 0xFF00 clears it")
@@ -194,8 +194,8 @@ void dissectRestart(const PduContext &ctx)
 void dissectDelimiter(const PduContext &ctx)
 {
     static const Slot layout[] = {
-        {"modbus.ascii_delimiter", "ASCII input delimiter", 1, ValueFormat::Hex, "ASCII input delimiter and padding"},
-        {"modbus.padding", "Padding", 1, ValueFormat::Hex, "padding"},
+        {"modbus.ascii_delimiter", QT_TRANSLATE_NOOP("mbscope::Field", "ASCII input delimiter"), 1, ValueFormat::Hex, "ASCII input delimiter and padding"},
+        {"modbus.padding", QT_TRANSLATE_NOOP("mbscope::Field", "Padding"), 1, ValueFormat::Hex, "padding"},
     };
     int f[2] = {-1, -1};
     const bool whole = addFixed(ctx, ctx.parent, 3, layout, 2, f, 5, false);

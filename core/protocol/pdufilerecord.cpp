@@ -25,7 +25,7 @@ const char *groupKey(const PduContext &ctx)
 void checkReferenceType(const PduContext &ctx, int field, quint8 type)
 {
     if (type == kReferenceType) {
-        ctx.tree.setMeaning(field, "file record");
+        ctx.tree.setMeaning(field, QT_TRANSLATE_NOOP("mbscope::Field", "file record"));
         return;
     }
     ctx.tree.flag(field, Severity::Error,
@@ -37,10 +37,10 @@ void checkReferenceType(const PduContext &ctx, int field, quint8 type)
 int subHeader(const PduContext &ctx, int group, int pos, int end)
 {
     static const Slot layout[] = {
-        {"modbus.reference_type", "Reference type", 1, ValueFormat::Hex, ""},
-        {"modbus.file_number", "File number", 2, ValueFormat::Decimal, ""},
-        {"modbus.record_number", "Record number", 2, ValueFormat::DecimalHex, ""},
-        {"modbus.record_length", "Record length", 2, ValueFormat::Decimal, ""},
+        {"modbus.reference_type", QT_TRANSLATE_NOOP("mbscope::Field", "Reference type"), 1, ValueFormat::Hex, ""},
+        {"modbus.file_number", QT_TRANSLATE_NOOP("mbscope::Field", "File number"), 2, ValueFormat::Decimal, ""},
+        {"modbus.record_number", QT_TRANSLATE_NOOP("mbscope::Field", "Record number"), 2, ValueFormat::DecimalHex, ""},
+        {"modbus.record_length", QT_TRANSLATE_NOOP("mbscope::Field", "Record length"), 2, ValueFormat::Decimal, ""},
     };
     int at = pos;
     int f[4] = {-1, -1, -1, -1};
@@ -81,7 +81,7 @@ int subHeader(const PduContext &ctx, int group, int pos, int end)
 int byteCountField(const PduContext &ctx, int min, int max)
 {
     const int byteCount = ctx.byte(1);
-    const int bc = ctx.add("modbus.byte_count", "Byte count", 1, 1, quint64(byteCount), ValueFormat::Decimal);
+    const int bc = ctx.add("modbus.byte_count", QT_TRANSLATE_NOOP("mbscope::Field", "Byte count"), 1, 1, quint64(byteCount), ValueFormat::Decimal);
     if (byteCount < min || byteCount > max) {
         ctx.tree.flag(bc, Severity::Error,
                       QStringLiteral("byte count %1 is out of range: %2 allows %3-%4 (%5-%6)")
@@ -99,7 +99,7 @@ bool headerCut(const PduContext &ctx, int group, int pos, int after, int dataEnd
         missingData(ctx, group, after, 2, dataEnd);
         return true;
     }
-    const int f = ctx.addChild(group, "modbus.data", "Incomplete sub-request", after, dataEnd - after, 0,
+    const int f = ctx.addChild(group, "modbus.data", QT_TRANSLATE_NOOP("mbscope::Field", "Incomplete sub-request"), after, dataEnd - after, 0,
                                dataEnd > after ? ValueFormat::Bytes : ValueFormat::None);
     ctx.tree.flag(f, Severity::Error,
                   QStringLiteral("the byte count ends %1 into a sub-request, whose header is 7 bytes")
@@ -122,7 +122,7 @@ void readRequest(const PduContext &ctx)
     int responseSize = 2;
     for (int pos = 2; pos < avail; pos += kHeader) {
         const int end = qMin(pos + kHeader, avail);
-        const int g = ctx.add(groupKey(ctx), "Sub-request", pos, end - pos);
+        const int g = ctx.add(groupKey(ctx), QT_TRANSLATE_NOOP("mbscope::Field", "Sub-request"), pos, end - pos);
         const int after = subHeader(ctx, g, pos, end);
         if (after < pos + kHeader) {
             reported = headerCut(ctx, g, pos, after, dataEnd);
@@ -148,7 +148,7 @@ void readRequest(const PduContext &ctx)
 void readResponse(const PduContext &ctx)
 {
     const int byteCount = ctx.byte(1);
-    const int bc = ctx.add("modbus.byte_count", "Byte count", 1, 1, quint64(byteCount), ValueFormat::Decimal);
+    const int bc = ctx.add("modbus.byte_count", QT_TRANSLATE_NOOP("mbscope::Field", "Byte count"), 1, 1, quint64(byteCount), ValueFormat::Decimal);
     // V1.1b3, 6.14 tabulates the response length as 0x07-0xF5, copied from the request; the
     // only hard bound is the 253-byte PDU, which a request for 124 registers reaches (250 bytes).
     if (byteCount == 0 || byteCount > 251) {
@@ -185,8 +185,8 @@ void readResponse(const PduContext &ctx)
         const int length = ctx.byte(pos);
         const int subEnd = pos + 1 + length;
         const int blockEnd = qMin(subEnd, dataEnd);
-        const int g = ctx.add(groupKey(ctx), "Sub-response", pos, qMin(blockEnd, ctx.length) - pos);
-        const int lf = ctx.addChild(g, "modbus.subresponse_length", "Sub-response length", pos, 1, quint64(length),
+        const int g = ctx.add(groupKey(ctx), QT_TRANSLATE_NOOP("mbscope::Field", "Sub-response"), pos, qMin(blockEnd, ctx.length) - pos);
+        const int lf = ctx.addChild(g, "modbus.subresponse_length", QT_TRANSLATE_NOOP("mbscope::Field", "Sub-response length"), pos, 1, quint64(length),
                                     ValueFormat::Decimal);
         if (length % 2 == 0) {
             ctx.tree.flag(lf, Severity::Error,
@@ -221,10 +221,10 @@ void readResponse(const PduContext &ctx)
                 reported = true;
                 break;
             }
-            const int rt = ctx.addChild(g, "modbus.reference_type", "Reference type", pos + 1, 1, ctx.byte(pos + 1),
+            const int rt = ctx.addChild(g, "modbus.reference_type", QT_TRANSLATE_NOOP("mbscope::Field", "Reference type"), pos + 1, 1, ctx.byte(pos + 1),
                                         ValueFormat::Hex);
             checkReferenceType(ctx, rt, ctx.byte(pos + 1));
-            reported = registerBlock(ctx, g, pos + 2, 2, dataEnd, firstRecord >= 0 ? "Record" : "Record index",
+            reported = registerBlock(ctx, g, pos + 2, 2, dataEnd, firstRecord >= 0 ? QT_TRANSLATE_NOOP("mbscope::Field", "Record") : QT_TRANSLATE_NOOP("mbscope::Field", "Record index"),
                                      firstRecord, blockEnd);
         }
         pos = subEnd;
@@ -247,7 +247,7 @@ void writeRecords(const PduContext &ctx)
     byteCountField(ctx, 0x09, 0xFB);
     const int dataEnd = 2 + ctx.byte(1);
     const int avail = qMin(dataEnd, ctx.length);
-    const char *groupName = isResponse(ctx) ? "Sub-response" : "Sub-request";
+    const char *groupName = isResponse(ctx) ? QT_TRANSLATE_NOOP("mbscope::Field", "Sub-response") : QT_TRANSLATE_NOOP("mbscope::Field", "Sub-request");
     bool reported = false;
     for (int pos = 2; pos < avail && !reported;) {
         const int headerEnd = qMin(pos + kHeader, avail);

@@ -12,13 +12,13 @@ namespace {
 constexpr int kMaxFifo = 31; // V1.1b3 6.18: a queue holds at most 31 registers
 
 const Slot kMask[] = {
-    {"modbus.address", "Reference address", 2, ValueFormat::DecimalHex, "reference address, AND mask and OR mask"},
-    {"modbus.and_mask", "AND mask", 2, ValueFormat::Hex, "AND mask and OR mask"},
-    {"modbus.or_mask", "OR mask", 2, ValueFormat::Hex, "OR mask"},
+    {"modbus.address", QT_TRANSLATE_NOOP("mbscope::Field", "Reference address"), 2, ValueFormat::DecimalHex, "reference address, AND mask and OR mask"},
+    {"modbus.and_mask", QT_TRANSLATE_NOOP("mbscope::Field", "AND mask"), 2, ValueFormat::Hex, "AND mask and OR mask"},
+    {"modbus.or_mask", QT_TRANSLATE_NOOP("mbscope::Field", "OR mask"), 2, ValueFormat::Hex, "OR mask"},
 };
 
 const Slot kFifoRequest[] = {
-    {"modbus.fifo_address", "FIFO pointer address", 2, ValueFormat::DecimalHex, "FIFO pointer address"},
+    {"modbus.fifo_address", QT_TRANSLATE_NOOP("mbscope::Field", "FIFO pointer address"), 2, ValueFormat::DecimalHex, "FIFO pointer address"},
 };
 
 } // namespace
@@ -29,9 +29,10 @@ void dissectMaskWriteRegister(const PduContext &ctx)
     int f[3];
     if (addFixed(ctx, ctx.parent, 1, kMask, 3, f, 7, false)) {
         // V1.1b3, 6.16: Result = (Current Contents AND And_Mask) OR (Or_Mask AND (NOT And_Mask)).
-        ctx.tree.setMeaning(f[1], "bits kept from the current contents (1 = keep)");
-        ctx.tree.setMeaning(f[2], "bits set where the AND mask is 0: result = (current AND and_mask) OR "
-                                  "(or_mask AND NOT and_mask)");
+        ctx.tree.setMeaning(f[1], QT_TRANSLATE_NOOP("mbscope::Field", "bits kept from the current contents (1 = keep)"));
+        ctx.tree.setMeaning(f[2], QT_TRANSLATE_NOOP("mbscope::Field",
+                                                    "bits set where the AND mask is 0: result = (current AND and_mask) OR "
+                                                    "(or_mask AND NOT and_mask)"));
         if (ctx.u16(3) == 0xFFFF) {
             ctx.tree.flag(f[1], Severity::Info,
                           QStringLiteral("AND mask 0xFFFF keeps every bit: the register is left unchanged "
@@ -57,13 +58,13 @@ void dissectReadFifoQueue(const PduContext &ctx)
     }
     // The byte count is 2 bytes here and counts the FIFO count field plus the values.
     const int byteCount = ctx.u16(1);
-    const int bc = ctx.add("modbus.byte_count", "Byte count", 1, 2, quint64(byteCount), ValueFormat::Decimal);
+    const int bc = ctx.add("modbus.byte_count", QT_TRANSLATE_NOOP("mbscope::Field", "Byte count"), 1, 2, quint64(byteCount), ValueFormat::Decimal);
     if (!ctx.has(3, 2)) {
         missing(ctx, ctx.parent, 3, byteCount >= 2 ? 3 + byteCount : 5, byteCount < 2, "FIFO count and FIFO values");
         return;
     }
     const int count = ctx.u16(3);
-    const int fc = ctx.add("modbus.fifo_count", "FIFO count", 3, 2, quint64(count), ValueFormat::Decimal);
+    const int fc = ctx.add("modbus.fifo_count", QT_TRANSLATE_NOOP("mbscope::Field", "FIFO count"), 3, 2, quint64(count), ValueFormat::Decimal);
     if (count > kMaxFifo) {
         ctx.tree.flag(fc, Severity::Error,
                       QStringLiteral("FIFO count %1 is out of range: a FIFO queue returns 0-31 values").arg(count));

@@ -14,15 +14,15 @@ constexpr int kMaxCoils = 1968;    // 0x07B0, V1.1b3 6.11
 constexpr int kMaxRegisters = 123; // 0x007B, V1.1b3 6.12
 
 const Slot kCoilsHeader[] = {
-    {"modbus.start_address", "Start address", 2, ValueFormat::DecimalHex,
+    {"modbus.start_address", QT_TRANSLATE_NOOP("mbscope::Field", "Start address"), 2, ValueFormat::DecimalHex,
      "start address, quantity, byte count and coil values"},
-    {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity, byte count and coil values"},
+    {"modbus.quantity", QT_TRANSLATE_NOOP("mbscope::Field", "Quantity"), 2, ValueFormat::Decimal, "quantity, byte count and coil values"},
 };
 
 const Slot kRegistersHeader[] = {
-    {"modbus.start_address", "Start address", 2, ValueFormat::DecimalHex,
+    {"modbus.start_address", QT_TRANSLATE_NOOP("mbscope::Field", "Start address"), 2, ValueFormat::DecimalHex,
      "start address, quantity, byte count and register values"},
-    {"modbus.quantity", "Quantity", 2, ValueFormat::Decimal, "quantity, byte count and register values"},
+    {"modbus.quantity", QT_TRANSLATE_NOOP("mbscope::Field", "Quantity"), 2, ValueFormat::Decimal, "quantity, byte count and register values"},
 };
 
 // The normal response of both codes: start address and quantity, checked against the request.
@@ -46,7 +46,7 @@ bool requestHeader(const PduContext &ctx, const Slot *header, int *f, int maxQua
         missing(ctx, ctx.parent, 5, 6 + qMax(dataBytes, 1), dataBytes < 1, what);
         return false;
     }
-    f[2] = ctx.add("modbus.byte_count", "Byte count", 5, 1, ctx.byte(5), ValueFormat::Decimal);
+    f[2] = ctx.add("modbus.byte_count", QT_TRANSLATE_NOOP("mbscope::Field", "Byte count"), 5, 1, ctx.byte(5), ValueFormat::Decimal);
     return true;
 }
 

@@ -20,7 +20,7 @@ void response(const PduContext &ctx)
         return;
     }
     const int byteCount = ctx.byte(1);
-    const int bc = ctx.add("modbus.byte_count", "Byte count", 1, 1, quint64(byteCount), ValueFormat::Decimal);
+    const int bc = ctx.add("modbus.byte_count", QT_TRANSLATE_NOOP("mbscope::Field", "Byte count"), 1, 1, quint64(byteCount), ValueFormat::Decimal);
     const bool known = requestUsable(ctx, 5);
     const int quantity = known ? ctx.requestU16(3) : -1;
     const int start = known ? ctx.requestU16(1) : -1;
@@ -37,7 +37,7 @@ void response(const PduContext &ctx)
                           .arg(QString::number(byteCount), functionLabel(ctx), QString::number(kMaxBytes)));
     }
     const char *key = coils ? "modbus.coil_value" : "modbus.discrete_input_value";
-    const char *name = known ? (coils ? "Coil" : "Discrete input") : (coils ? "Coil index" : "Input index");
+    const char *name = known ? (coils ? QT_TRANSLATE_NOOP("mbscope::Field", "Coil") : QT_TRANSLATE_NOOP("mbscope::Field", "Discrete input")) : (coils ? QT_TRANSLATE_NOOP("mbscope::Field", "Coil index") : QT_TRANSLATE_NOOP("mbscope::Field", "Input index"));
     bitBlock(ctx, ctx.parent, 2, byteCount, quantity, key, name, start);
     trailing(ctx, 2 + byteCount);
 }

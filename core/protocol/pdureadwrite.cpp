@@ -14,13 +14,13 @@ constexpr int kMaxRead = 125; // 0x007D
 constexpr int kMaxWrite = 121; // 0x0079
 
 const Slot kHeader[] = {
-    {"modbus.read_start_address", "Read start address", 2, ValueFormat::DecimalHex,
+    {"modbus.read_start_address", QT_TRANSLATE_NOOP("mbscope::Field", "Read start address"), 2, ValueFormat::DecimalHex,
      "read start address, read quantity, write start address, write quantity, byte count and write values"},
-    {"modbus.read_quantity", "Quantity to read", 2, ValueFormat::Decimal,
+    {"modbus.read_quantity", QT_TRANSLATE_NOOP("mbscope::Field", "Quantity to read"), 2, ValueFormat::Decimal,
      "read quantity, write start address, write quantity, byte count and write values"},
-    {"modbus.write_start_address", "Write start address", 2, ValueFormat::DecimalHex,
+    {"modbus.write_start_address", QT_TRANSLATE_NOOP("mbscope::Field", "Write start address"), 2, ValueFormat::DecimalHex,
      "write start address, write quantity, byte count and write values"},
-    {"modbus.write_quantity", "Quantity to write", 2, ValueFormat::Decimal,
+    {"modbus.write_quantity", QT_TRANSLATE_NOOP("mbscope::Field", "Quantity to write"), 2, ValueFormat::Decimal,
      "write quantity, byte count and write values"},
 };
 
@@ -41,7 +41,7 @@ void request(const PduContext &ctx)
         return;
     }
     const int byteCount = ctx.byte(9);
-    const int bc = ctx.add("modbus.byte_count", "Write byte count", 9, 1, quint64(byteCount), ValueFormat::Decimal);
+    const int bc = ctx.add("modbus.byte_count", QT_TRANSLATE_NOOP("mbscope::Field", "Write byte count"), 9, 1, quint64(byteCount), ValueFormat::Decimal);
     checkByteCount(ctx, bc, byteCount, 2 * writeQuantity, "write quantity", writeQuantity, false, "2 per register");
     checkEvenByteCount(ctx, bc, byteCount);
     registerBlock(ctx, ctx.parent, 10, 10, 10 + byteCount, "Register", writeStart);

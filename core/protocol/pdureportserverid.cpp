@@ -22,9 +22,9 @@ void dissectReportServerId(const PduContext &ctx)
             ctx, QStringLiteral("serial line only: V1.1b3 6.13 defines Report Server ID for serial line devices")))
         return;
     static const Slot layout[] = {
-        {"modbus.byte_count", "Byte count", 1, ValueFormat::Decimal, "byte count, server ID and run indicator status"},
-        {"modbus.server_id", "Server ID", 1, ValueFormat::Bytes, "server ID and run indicator status"},
-        {"modbus.run_indicator", "Run indicator status", 1, ValueFormat::Hex, "run indicator status"},
+        {"modbus.byte_count", QT_TRANSLATE_NOOP("mbscope::Field", "Byte count"), 1, ValueFormat::Decimal, "byte count, server ID and run indicator status"},
+        {"modbus.server_id", QT_TRANSLATE_NOOP("mbscope::Field", "Server ID"), 1, ValueFormat::Bytes, "server ID and run indicator status"},
+        {"modbus.run_indicator", QT_TRANSLATE_NOOP("mbscope::Field", "Run indicator status"), 1, ValueFormat::Hex, "run indicator status"},
     };
     int f[3] = {-1, -1, -1};
     const int end = countedFields(ctx, layout, 3, f, "the server ID and the run indicator take at least 2 bytes");
@@ -44,19 +44,19 @@ void dissectReportServerId(const PduContext &ctx)
         ctx.tree.flag(f[1], Severity::Info,
                       QStringLiteral("a %1-byte server ID: the run indicator status is read from the last byte "
                                      "(V1.1b3 6.13 leaves the server ID's length to the device)").arg(present - 3));
-        ctx.tree.setMeaning(r, last == 0xFF ? "ON" : "OFF");
+        ctx.tree.setMeaning(r, last == 0xFF ? QT_TRANSLATE_NOOP("mbscope::Field", "ON") : QT_TRANSLATE_NOOP("mbscope::Field", "OFF"));
         additionalFrom = present;
     } else if (run == 0x00) {
-        ctx.tree.setMeaning(r, "OFF");
+        ctx.tree.setMeaning(r, QT_TRANSLATE_NOOP("mbscope::Field", "OFF"));
     } else if (run == 0xFF) {
-        ctx.tree.setMeaning(r, "ON");
+        ctx.tree.setMeaning(r, QT_TRANSLATE_NOOP("mbscope::Field", "ON"));
     } else {
         ctx.tree.flag(r, Severity::Warning,
                       QStringLiteral("%1 is not a run indicator status (0x00 OFF, 0xFF ON); if this device's server ID "
                                      "is longer than one byte, this byte is part of it").arg(hexByte(run)));
     }
     if (present > additionalFrom)
-        ctx.add("modbus.additional_data", "Additional data", additionalFrom, present - additionalFrom, 0, ValueFormat::Bytes);
+        ctx.add("modbus.additional_data", QT_TRANSLATE_NOOP("mbscope::Field", "Additional data"), additionalFrom, present - additionalFrom, 0, ValueFormat::Bytes);
     countedEnd(ctx, end);
 }
 

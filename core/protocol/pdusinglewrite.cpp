@@ -11,13 +11,13 @@ using namespace checks;
 namespace {
 
 const Slot kCoil[] = {
-    {"modbus.address", "Output address", 2, ValueFormat::DecimalHex, "output address and output value"},
-    {"modbus.value", "Output value", 2, ValueFormat::Hex, "output value"},
+    {"modbus.address", QT_TRANSLATE_NOOP("mbscope::Field", "Output address"), 2, ValueFormat::DecimalHex, "output address and output value"},
+    {"modbus.value", QT_TRANSLATE_NOOP("mbscope::Field", "Output value"), 2, ValueFormat::Hex, "output value"},
 };
 
 const Slot kRegister[] = {
-    {"modbus.address", "Register address", 2, ValueFormat::DecimalHex, "register address and register value"},
-    {"modbus.value", "Register value", 2, ValueFormat::Decimal, "register value"},
+    {"modbus.address", QT_TRANSLATE_NOOP("mbscope::Field", "Register address"), 2, ValueFormat::DecimalHex, "register address and register value"},
+    {"modbus.value", QT_TRANSLATE_NOOP("mbscope::Field", "Register value"), 2, ValueFormat::Decimal, "register value"},
 };
 
 } // namespace
@@ -30,11 +30,11 @@ void dissectWriteSingleCoil(const PduContext &ctx)
         // V1.1b3, 6.5: 0xFF00 requests ON, 0x0000 OFF; every other value is illegal.
         const quint16 value = ctx.u16(3);
         if (value == 0xFF00) {
-            ctx.tree.setMeaning(f[1], "ON");
+            ctx.tree.setMeaning(f[1], QT_TRANSLATE_NOOP("mbscope::Field", "ON"));
         } else if (value == 0x0000) {
-            ctx.tree.setMeaning(f[1], "OFF");
+            ctx.tree.setMeaning(f[1], QT_TRANSLATE_NOOP("mbscope::Field", "OFF"));
         } else {
-            ctx.tree.setMeaning(f[1], "illegal (neither ON nor OFF)");
+            ctx.tree.setMeaning(f[1], QT_TRANSLATE_NOOP("mbscope::Field", "illegal (neither ON nor OFF)"));
             ctx.tree.flag(f[1], Severity::Error,
                           QStringLiteral("output value %1 is not allowed: Write Single Coil takes 0xFF00 (ON) "
                                          "or 0x0000 (OFF)")

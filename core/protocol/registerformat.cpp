@@ -11,17 +11,17 @@ struct TypeInfo {
 };
 
 constexpr TypeInfo kTypes[] = {
-    {RegisterType::UInt16, "u16", "unsigned 16-bit"},
-    {RegisterType::Int16, "i16", "signed 16-bit"},
-    {RegisterType::Hex16, "hex", "16-bit hex"},
-    {RegisterType::Binary16, "bin", "16-bit binary"},
-    {RegisterType::Ascii, "ascii", "ASCII, two characters per register"},
-    {RegisterType::UInt32, "u32", "unsigned 32-bit"},
-    {RegisterType::Int32, "i32", "signed 32-bit"},
-    {RegisterType::UInt64, "u64", "unsigned 64-bit"},
-    {RegisterType::Int64, "i64", "signed 64-bit"},
-    {RegisterType::Float32, "f32", "float32 (IEEE 754 single)"},
-    {RegisterType::Float64, "f64", "float64 (IEEE 754 double)"},
+    {RegisterType::UInt16, "u16", QT_TRANSLATE_NOOP("mbscope::Field", "unsigned 16-bit")},
+    {RegisterType::Int16, "i16", QT_TRANSLATE_NOOP("mbscope::Field", "signed 16-bit")},
+    {RegisterType::Hex16, "hex", QT_TRANSLATE_NOOP("mbscope::Field", "16-bit hex")},
+    {RegisterType::Binary16, "bin", QT_TRANSLATE_NOOP("mbscope::Field", "16-bit binary")},
+    {RegisterType::Ascii, "ascii", QT_TRANSLATE_NOOP("mbscope::Field", "ASCII, two characters per register")},
+    {RegisterType::UInt32, "u32", QT_TRANSLATE_NOOP("mbscope::Field", "unsigned 32-bit")},
+    {RegisterType::Int32, "i32", QT_TRANSLATE_NOOP("mbscope::Field", "signed 32-bit")},
+    {RegisterType::UInt64, "u64", QT_TRANSLATE_NOOP("mbscope::Field", "unsigned 64-bit")},
+    {RegisterType::Int64, "i64", QT_TRANSLATE_NOOP("mbscope::Field", "signed 64-bit")},
+    {RegisterType::Float32, "f32", QT_TRANSLATE_NOOP("mbscope::Field", "float32 (IEEE 754 single)")},
+    {RegisterType::Float64, "f64", QT_TRANSLATE_NOOP("mbscope::Field", "float64 (IEEE 754 double)")},
 };
 
 struct Alias {
@@ -54,7 +54,8 @@ const TypeInfo &info(RegisterType type)
 constexpr const char *kOrderNames16[] = {"AB", "AB", "BA", "BA"};
 constexpr const char *kOrderNames32[] = {"ABCD", "CDAB", "BADC", "DCBA"};
 constexpr const char *kOrderNames64[] = {"ABCDEFGH", "GHEFCDAB", "BADCFEHG", "HGFEDCBA"};
-constexpr const char *kOrderWords[] = {"big endian", "word swap", "byte swap", "little endian"};
+constexpr const char *kOrderWords[] = {QT_TRANSLATE_NOOP("mbscope::Field", "big endian"), QT_TRANSLATE_NOOP("mbscope::Field", "word swap"), QT_TRANSLATE_NOOP("mbscope::Field", "byte swap"),
+                                       QT_TRANSLATE_NOOP("mbscope::Field", "little endian")};
 
 const char *orderSpelling(int registers, RegisterOrder order)
 {
@@ -145,6 +146,18 @@ QString RegisterFormat::name() const
     if (registerCount() == 1)
         return m_order == RegisterOrder::ABCD ? typeName() : typeName() + QLatin1String("-ba");
     return typeName() + QLatin1Char('-') + orderName().toLower();
+}
+
+const char *RegisterFormat::typeDescription() const
+{
+    return info(m_type).description;
+}
+
+const char *RegisterFormat::orderWords() const
+{
+    if (registerCount() == 1)
+        return m_order == RegisterOrder::ABCD ? QT_TRANSLATE_NOOP("mbscope::Field", "high byte first") : QT_TRANSLATE_NOOP("mbscope::Field", "byte swap");
+    return kOrderWords[size_t(m_order)];
 }
 
 QString RegisterFormat::description() const

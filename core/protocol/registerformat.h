@@ -94,6 +94,10 @@ public:
     [[nodiscard]] QString typeName() const;    // "f32"
     [[nodiscard]] QString orderName() const;   // "CDAB"; "AB"/"BA" for 16-bit; eight letters for 64-bit
     [[nodiscard]] QString description() const; // "float32 (IEEE 754 single), word swap (CDAB)"
+    // description()'s two parts as static strings the window translates (QT_TRANSLATE_NOOP
+    // "mbscope::Field"): "float32 (IEEE 754 single)" and "word swap" (one register: "high byte first").
+    [[nodiscard]] const char *typeDescription() const;
+    [[nodiscard]] const char *orderWords() const;
 
     [[nodiscard]] static RegisterFormatResult parse(QStringView name);
     // Every distinct format (34), 16-bit types first: for choosers and for tests.

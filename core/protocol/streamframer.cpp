@@ -12,16 +12,16 @@ constexpr qsizetype kCompactAt = 1024;
 const char *skipReasonName(SkipReason reason)
 {
     switch (reason) {
-    case SkipReason::NoFrameStart: return "no frame start";
-    case SkipReason::InvalidHeader: return "invalid MBAP header";
-    case SkipReason::ChecksumMismatch: return "CRC mismatch";
-    case SkipReason::ImpossibleFunction: return "impossible function code";
-    case SkipReason::NoLengthRule: return "function code without a length rule while resynchronising";
-    case SkipReason::Abandoned: return "frame restarted by ':'";
-    case SkipReason::TooLong: return "frame too long";
-    case SkipReason::Incomplete: return "incomplete frame at silence";
+    case SkipReason::NoFrameStart: return QT_TRANSLATE_NOOP("mbscope::Field", "no frame start");
+    case SkipReason::InvalidHeader: return QT_TRANSLATE_NOOP("mbscope::Field", "invalid MBAP header");
+    case SkipReason::ChecksumMismatch: return QT_TRANSLATE_NOOP("mbscope::Field", "CRC mismatch");
+    case SkipReason::ImpossibleFunction: return QT_TRANSLATE_NOOP("mbscope::Field", "impossible function code");
+    case SkipReason::NoLengthRule: return QT_TRANSLATE_NOOP("mbscope::Field", "function code without a length rule while resynchronising");
+    case SkipReason::Abandoned: return QT_TRANSLATE_NOOP("mbscope::Field", "frame restarted by ':'");
+    case SkipReason::TooLong: return QT_TRANSLATE_NOOP("mbscope::Field", "frame too long");
+    case SkipReason::Incomplete: return QT_TRANSLATE_NOOP("mbscope::Field", "incomplete frame at silence");
     }
-    return "unknown reason";
+    return QT_TRANSLATE_NOOP("mbscope::Field", "unknown reason");
 }
 
 StreamFramer::~StreamFramer() = default;

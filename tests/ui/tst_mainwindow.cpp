@@ -50,7 +50,7 @@ void TestMainWindow::menus()
         }
     }
     QCOMPARE(titles, (QStringList{QStringLiteral("&File"), QStringLiteral("&Request"), QStringLiteral("&View"),
-                                  QStringLiteral("&Help")}));
+                                  QStringLiteral("&Tools"), QStringLiteral("&Help")}));
     QVERIFY(actions.contains(QStringLiteral("&Find in traffic")));
     QVERIFY(actions.contains(QStringLiteral("&Send")));
     QVERIFY(actions.contains(QStringLiteral("&Quit")));
