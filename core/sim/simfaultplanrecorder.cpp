@@ -1,0 +1,35 @@
+#include "sim/simfaultplanrecorder.h"
+
+#include "sim/faultinjector.h"
+#include "sim/simexchange.h"
+#include "sim/simulator.h"
+
+namespace mbscope {
+
+SimFaultPlanRecorder::SimFaultPlanRecorder(Simulator *simulator, FaultInjector *injector, QObject *parent)
+    : QObject(parent), m_simulator(simulator)
+{
+    simulator->setFaultHook([this, injector](const SimExchange &exchange) {
+        m_plan = injector->plan(FaultContext::forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu,
+                                                         exchange.responseDelayNs));
+        return *m_plan;
+    });
+    connect(simulator, &Simulator::logged, this, &SimFaultPlanRecorder::onLogged, Qt::DirectConnection);
+}
+
+SimFaultPlanRecorder::~SimFaultPlanRecorder()
+{
+    if (m_simulator)
+        m_simulator->setFaultHook({});
+}
+
+void SimFaultPlanRecorder::onLogged(const SimLogEntry &entry)
+{
+    std::optional<FaultPlan> plan;
+    if (!entry.response.isEmpty())
+        plan.swap(m_plan);
+    m_plan.reset();
+    Q_EMIT recorded(SimTrafficRecord::of(entry, plan ? &*plan : nullptr));
+}
+
+} // namespace mbscope
