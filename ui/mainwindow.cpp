@@ -1,5 +1,6 @@
 #include "mainwindow.h"
 
+#include "analysisdock.h"
 #include "connectionbar.h"
 #include "decodepanel.h"
 #include "linkcontroller.h"
@@ -11,6 +12,7 @@
 #include "requestcomposer.h"
 #include "savedrequests.h"
 #include "sessioncontroller.h"
+#include "sessiontools.h"
 #include "trafficmodel.h"
 #include "trafficmonitor.h"
 #include "transactionview.h"
@@ -45,6 +47,8 @@ MainWindow::MainWindow(QWidget *parent)
     connectDocks();
     m_session = new SessionController(this, m_connectionBar, m_composer);
     connect(m_session, &SessionController::titleChanged, this, &QMainWindow::setWindowTitle);
+    // Replay and test plans: the Session menu and the Replay and Test plan docks beside Traffic.
+    m_sessionTools = new SessionTools(this, m_controller, m_session, m_traffic, m_trafficDock);
     createMenus();
     statusBar()->showMessage(tr("Ready"), 3000);
     resize(1400, 900);
@@ -221,6 +225,14 @@ void MainWindow::buildDocks()
     m_registersDock->setWidget(m_registers);
     addDockWidget(Qt::BottomDockWidgetArea, m_registersDock);
     tabifyDockWidget(m_trafficDock, m_registersDock);
+
+    m_analysis = new AnalysisDock(this);
+    m_analysis->setObjectName(QStringLiteral("analysis"));
+    m_analysisDock = new QDockWidget(tr("Analysis"), this);
+    m_analysisDock->setObjectName(QStringLiteral("analysisDock"));
+    m_analysisDock->setWidget(m_analysis);
+    addDockWidget(Qt::BottomDockWidgetArea, m_analysisDock);
+    tabifyDockWidget(m_registersDock, m_analysisDock);
     m_trafficDock->raise();
 }
 
@@ -318,9 +330,12 @@ void MainWindow::createMenus()
     QAction *form = request->addAction(tr("Build with the &form"), m_composer, &RequestComposer::showFormTab);
     form->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
 
+    m_sessionTools->addMenu(menuBar());
+
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_trafficDock->toggleViewAction());
     view->addAction(m_registersDock->toggleViewAction());
+    view->addAction(m_analysisDock->toggleViewAction());
     QAction *find = view->addAction(tr("&Find in traffic"), this, [this] {
         m_trafficDock->show();
         m_trafficDock->raise();

@@ -12,6 +12,7 @@ class QTabWidget;
 
 namespace mbscope {
 
+class AnalysisDock;
 class ConnectionBar;
 class DecodePanel;
 class LinkController;
@@ -20,6 +21,7 @@ class NoticeBanner;
 class RegisterTable;
 class RequestComposer;
 class SessionController;
+class SessionTools;
 class TrafficMonitor;
 class TransactionView;
 
@@ -55,6 +57,9 @@ public:
     [[nodiscard]] TrafficMonitor *trafficMonitor() const { return m_traffic; }
     [[nodiscard]] RegisterTable *registerTable() const { return m_registers; }
     [[nodiscard]] SessionController *session() const { return m_session; }
+    // The bottom dock whose tabs hold the analysis panels (histogram, trends, sweep...).
+    [[nodiscard]] AnalysisDock *analysisDock() const { return m_analysis; }
+    [[nodiscard]] SessionTools *sessionTools() const { return m_sessionTools; }
 
     // Window geometry and dock layout kept in QSettings ("window/geometry", "window/state"):
     // restoreLayout() puts back what the last close saved; false when nothing was saved.
@@ -90,7 +95,10 @@ private:
     RegisterTable *m_registers = nullptr;
     QDockWidget *m_trafficDock = nullptr;
     QDockWidget *m_registersDock = nullptr;
+    AnalysisDock *m_analysis = nullptr;
+    QDockWidget *m_analysisDock = nullptr;
     SessionController *m_session = nullptr;
+    SessionTools *m_sessionTools = nullptr;
     bool m_layoutRestored = false; // the docks' sizes came from QSettings: the first show keeps them
     bool m_fitted = false; // panel proportions set on the first show, then left to the user
 };
