@@ -173,6 +173,29 @@ void CaptureFileReader::readPcapng(CaptureByteSource &source, const Sink &sink, 
             return false;
         };
 
+        // Enhanced (6) and obsolete (2) packet blocks share their layout: interface (4 bytes, or
+        // 2 followed by a drops count), time stamp high and low, captured and original lengths,
+        // then the data. False when the block is damaged (the failure is recorded).
+        const auto readTimedPacket = [&](const QString &blockName, int interfaceIdBytes) {
+            if (bodyLength < 20) {
+                fail(at, QStringLiteral("the %1 block is %2 bytes long, less than the 32 it takes").arg(blockName).arg(length));
+                return false;
+            }
+            const quint32 iface = interfaceIdBytes == 2 ? order.u16(body) : order.u32(body);
+            const quint64 units = quint64(order.u32(body + 4)) << 32 | order.u32(body + 8);
+            const quint32 captured = order.u32(body + 12);
+            const quint32 original = order.u32(body + 16);
+            if (captured > bodyLength - 20) {
+                fail(at, QStringLiteral("packet %1 says %2 captured bytes, more than its block of %3 bytes holds: the file is damaged")
+                             .arg(result.packets + 1).arg(captured).arg(length));
+                return false;
+            }
+            if (!checkInterface(iface))
+                return false;
+            deliver(iface, units, body + 20, captured, original, true);
+            return true;
+        };
+
         switch (type) {
         case kSectionHeader: {
             if (bodyLength < 16) {
@@ -211,25 +234,10 @@ void CaptureFileReader::readPcapng(CaptureByteSource &source, const Sink &sink, 
             interfaces.push_back(iface);
             break;
         }
-        case kEnhancedPacket: {
-            if (bodyLength < 20) {
-                fail(at, QStringLiteral("the enhanced packet block is %1 bytes long, less than the 32 it takes").arg(length));
+        case kEnhancedPacket:
+            if (!readTimedPacket(QStringLiteral("enhanced packet"), 4))
                 return;
-            }
-            const quint32 iface = order.u32(body);
-            const quint64 units = quint64(order.u32(body + 4)) << 32 | order.u32(body + 8);
-            const quint32 captured = order.u32(body + 12);
-            const quint32 original = order.u32(body + 16);
-            if (captured > bodyLength - 20) {
-                fail(at, QStringLiteral("packet %1 says %2 captured bytes, more than its block of %3 bytes holds: the file is damaged")
-                             .arg(result.packets + 1).arg(captured).arg(length));
-                return;
-            }
-            if (!checkInterface(iface))
-                return;
-            deliver(iface, units, body + 20, captured, original, true);
             break;
-        }
         case kSimplePacket: {
             if (bodyLength < 4) {
                 fail(at, QStringLiteral("the simple packet block is %1 bytes long, less than the 16 it takes").arg(length));
@@ -244,25 +252,10 @@ void CaptureFileReader::readPcapng(CaptureByteSource &source, const Sink &sink, 
             deliver(0, 0, body + 4, captured, original, false);
             break;
         }
-        case kObsoletePacket: {
-            if (bodyLength < 20) {
-                fail(at, QStringLiteral("the packet block is %1 bytes long, less than the 32 it takes").arg(length));
+        case kObsoletePacket:
+            if (!readTimedPacket(QStringLiteral("packet"), 2))
                 return;
-            }
-            const quint32 iface = order.u16(body);
-            const quint64 units = quint64(order.u32(body + 4)) << 32 | order.u32(body + 8);
-            const quint32 captured = order.u32(body + 12);
-            const quint32 original = order.u32(body + 16);
-            if (captured > bodyLength - 20) {
-                fail(at, QStringLiteral("packet %1 says %2 captured bytes, more than its block of %3 bytes holds: the file is damaged")
-                             .arg(result.packets + 1).arg(captured).arg(length));
-                return;
-            }
-            if (!checkInterface(iface))
-                return;
-            deliver(iface, units, body + 20, captured, original, true);
             break;
-        }
         default:
             break;
         }

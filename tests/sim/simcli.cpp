@@ -1,10 +1,9 @@
 #include "simcli.h"
 
-#include <QtCore/QDir>
+#include "testcertificates.h"
+
 #include <QtCore/QElapsedTimer>
-#include <QtCore/QFile>
 #include <QtCore/QRegularExpression>
-#include <QtCore/QStandardPaths>
 
 #include <csignal>
 
@@ -106,63 +105,15 @@ int SimCli::stop()
     return m_process->exitStatus() == QProcess::NormalExit ? m_process->exitCode() : -1;
 }
 
-namespace {
-
-bool openssl(const QString &program, const QString &dir, const QStringList &arguments, QString *error)
-{
-    QProcess process;
-    process.setWorkingDirectory(dir);
-    process.setProcessChannelMode(QProcess::MergedChannels);
-    process.start(program, arguments);
-    if (!process.waitForFinished(60000) || process.exitStatus() != QProcess::NormalExit || process.exitCode() != 0) {
-        *error = QStringLiteral("openssl %1 failed: %2").arg(arguments.join(QLatin1Char(' ')), QString::fromLocal8Bit(process.readAll()));
-        return false;
-    }
-    return true;
-}
-
-} // namespace
-
 bool makeTestCertificates(const QString &dir, QString *error)
 {
-    const QString program = QStandardPaths::findExecutable(QStringLiteral("openssl"));
-    if (program.isEmpty()) {
-        *error = QStringLiteral("openssl is not installed (Debian: openssl): no certificates to test TLS with");
-        return false;
-    }
-    const QStringList ec = {QStringLiteral("-newkey"), QStringLiteral("ec"), QStringLiteral("-pkeyopt"),
-                            QStringLiteral("ec_paramgen_curve:prime256v1"), QStringLiteral("-nodes")};
-    if (!openssl(program, dir,
-                 QStringList{QStringLiteral("req"), QStringLiteral("-x509")} + ec
-                     + QStringList{QStringLiteral("-keyout"), QStringLiteral("ca.key"), QStringLiteral("-out"), QStringLiteral("ca.pem"),
-                                   QStringLiteral("-days"), QStringLiteral("2"), QStringLiteral("-subj"), QStringLiteral("/CN=mbscope test CA")},
-                 error))
-        return false;
-    const QList<std::pair<QString, QByteArray>> leaves = {
-        {QStringLiteral("server"), "subjectAltName=IP:127.0.0.1\nextendedKeyUsage=serverAuth\n"},
-        {QStringLiteral("client"), "extendedKeyUsage=clientAuth\n"},
-    };
-    for (const auto &[name, extensions] : leaves) {
-        QFile ext(QDir(dir).filePath(name + QStringLiteral(".ext")));
-        if (!ext.open(QIODevice::WriteOnly) || ext.write(extensions) != extensions.size()) {
-            *error = QStringLiteral("cannot write %1: %2").arg(ext.fileName(), ext.errorString());
-            return false;
-        }
-        ext.close();
-        if (!openssl(program, dir,
-                     QStringList{QStringLiteral("req")} + ec
-                         + QStringList{QStringLiteral("-keyout"), name + QStringLiteral(".key"), QStringLiteral("-out"),
-                                       name + QStringLiteral(".csr"), QStringLiteral("-subj"), QStringLiteral("/CN=") + name},
-                     error)
-            || !openssl(program, dir,
-                        {QStringLiteral("x509"), QStringLiteral("-req"), QStringLiteral("-in"), name + QStringLiteral(".csr"),
-                         QStringLiteral("-CA"), QStringLiteral("ca.pem"), QStringLiteral("-CAkey"), QStringLiteral("ca.key"),
-                         QStringLiteral("-CAcreateserial"), QStringLiteral("-days"), QStringLiteral("2"), QStringLiteral("-extfile"),
-                         name + QStringLiteral(".ext"), QStringLiteral("-out"), name + QStringLiteral(".pem")},
-                        error))
-            return false;
-    }
-    return true;
+    testing::TestCertificates certificates(dir);
+    const bool made = certificates.makeCa(QStringLiteral("ca"), QStringLiteral("/CN=mbscope test CA"))
+        && certificates.issue(QStringLiteral("server"), "subjectAltName=IP:127.0.0.1\nextendedKeyUsage=serverAuth\n", QStringLiteral("ca"))
+        && certificates.issue(QStringLiteral("client"), "extendedKeyUsage=clientAuth\n", QStringLiteral("ca"));
+    if (!made)
+        *error = certificates.error();
+    return made;
 }
 
 QMap<int, int> mbpollValues(const QByteArray &output)

@@ -99,16 +99,35 @@ inline QByteArray interfaceDescription(bool big, quint16 linkType, int tsresol =
     return block(big, 1, body);
 }
 
-inline QByteArray enhancedPacket(bool big, quint32 iface, quint64 units, const QByteArray &data, qint64 claimed = -1)
+// Enhanced (6) and obsolete (2) packet blocks: the interface field, then the time stamp's high
+// and low words, the captured and original lengths, and the data.
+inline QByteArray timedPacket(bool big, quint32 type, const QByteArray &interfaceField, quint64 units, const QByteArray &data,
+                              qint64 claimed)
 {
-    QByteArray body;
-    put32(body, iface, big);
+    QByteArray body = interfaceField;
     put32(body, quint32(units >> 32), big);
     put32(body, quint32(units), big);
     put32(body, claimed < 0 ? quint32(data.size()) : quint32(claimed), big);
     put32(body, quint32(data.size()), big);
     body.append(data);
-    return block(big, 6, body);
+    return block(big, type, body);
+}
+
+inline QByteArray enhancedPacket(bool big, quint32 iface, quint64 units, const QByteArray &data, qint64 claimed = -1)
+{
+    QByteArray interfaceField;
+    put32(interfaceField, iface, big);
+    return timedPacket(big, 6, interfaceField, units, data, claimed);
+}
+
+// The obsolete packet block, still written by old tools: a 16-bit interface id and a 16-bit
+// drops count where the enhanced block has a 32-bit interface id.
+inline QByteArray obsoletePacket(bool big, quint16 iface, quint64 units, const QByteArray &data, qint64 claimed = -1)
+{
+    QByteArray interfaceField;
+    put16(interfaceField, iface, big);
+    put16(interfaceField, 0, big);
+    return timedPacket(big, 2, interfaceField, units, data, claimed);
 }
 
 inline QByteArray simplePacket(bool big, const QByteArray &data)

@@ -75,6 +75,10 @@ void TestCaptureFileReader::variants_data()
             << sectionHeader(big) + interfaceDescription(big, 0, 0x80 | 10, 100) + enhancedPacket(big, 0, 1024 + 512, kFirst)
                    + enhancedPacket(big, 0, 2048 + 1, kSecond)
             << int(CaptureFileReader::Format::Pcapng) << 101500000000LL << 102000976563LL << 0u;
+        QTest::addRow("pcapng %s obsolete packet blocks", qPrintable(order))
+            << sectionHeader(big) + interfaceDescription(big, 1) + obsoletePacket(big, 0, 1700000000123456ULL, kFirst)
+                   + obsoletePacket(big, 0, 1700000001000001ULL, kSecond)
+            << int(CaptureFileReader::Format::Pcapng) << 1700000000123456000LL << 1700000001000001000LL << 1u;
     }
     // Two sections, the second with its own interfaces: interface 0 is a new one there.
     QTest::newRow("pcapng two sections")
@@ -160,6 +164,12 @@ void TestCaptureFileReader::damaged_data()
     QTest::newRow("pcapng unknown interface")
         << ngFirst + enhancedPacket(false, 3, 2, kSecond)
         << QStringLiteral("at byte 104: packet 2 is on interface 3, but its section describes 1 interface(s)") << 104LL << 1;
+    QTest::newRow("obsolete packet on an unknown interface")
+        << ngFirst + obsoletePacket(false, 2, 2, kSecond)
+        << QStringLiteral("at byte 104: packet 2 is on interface 2, but its section describes 1 interface(s)") << 104LL << 1;
+    QTest::newRow("obsolete packet's captured length past its block")
+        << ngFirst + obsoletePacket(false, 0, 2, kSecond, 400)
+        << QStringLiteral("at byte 104: packet 2 says 400 captured bytes, more than its block of 40 bytes holds") << 104LL << 1;
     QTest::newRow("pcapng captured length past its block")
         << ngFirst + enhancedPacket(false, 0, 2, kSecond, 400)
         << QStringLiteral("at byte 104: packet 2 says 400 captured bytes, more than its block of 40 bytes holds") << 104LL << 1;

@@ -9,9 +9,8 @@
 #include "sim/simulator.h"
 #include "simclient.h"
 #include "simfixture.h"
+#include "testcertificates.h"
 
-#include <QtCore/QProcess>
-#include <QtCore/QStandardPaths>
 #include <QtCore/QTemporaryDir>
 #include <QtNetwork/QSslCertificate>
 #include <QtNetwork/QSslConfiguration>
@@ -27,45 +26,8 @@ class TestSimulatorTls : public QObject
     Q_OBJECT
 private:
     QTemporaryDir m_dir;
-    QString m_openssl;
 
     QString path(const QString &name) const { return m_dir.filePath(name); }
-
-    bool openssl(const QStringList &arguments)
-    {
-        QProcess process;
-        process.setWorkingDirectory(m_dir.path());
-        process.setProcessChannelMode(QProcess::MergedChannels);
-        process.start(m_openssl, arguments);
-        if (!process.waitForFinished(60000) || process.exitCode() != 0) {
-            qWarning().noquote() << "openssl" << arguments.join(QLatin1Char(' ')) << "failed:" << process.readAll();
-            return false;
-        }
-        return true;
-    }
-    bool makeCa(const QString &name)
-    {
-        return openssl({QStringLiteral("req"), QStringLiteral("-x509"), QStringLiteral("-newkey"), QStringLiteral("ec"),
-                        QStringLiteral("-pkeyopt"), QStringLiteral("ec_paramgen_curve:prime256v1"), QStringLiteral("-nodes"),
-                        QStringLiteral("-keyout"), name + QStringLiteral(".key"), QStringLiteral("-out"), name + QStringLiteral(".pem"),
-                        QStringLiteral("-days"), QStringLiteral("2"), QStringLiteral("-subj"), QStringLiteral("/CN=") + name});
-    }
-    bool issue(const QString &name, const QString &extensions, const QString &ca)
-    {
-        QFile ext(path(name + QStringLiteral(".ext")));
-        if (!ext.open(QIODevice::WriteOnly))
-            return false;
-        ext.write(extensions.toUtf8());
-        ext.close();
-        return openssl({QStringLiteral("req"), QStringLiteral("-newkey"), QStringLiteral("ec"), QStringLiteral("-pkeyopt"),
-                        QStringLiteral("ec_paramgen_curve:prime256v1"), QStringLiteral("-nodes"), QStringLiteral("-keyout"),
-                        name + QStringLiteral(".key"), QStringLiteral("-out"), name + QStringLiteral(".csr"),
-                        QStringLiteral("-subj"), QStringLiteral("/CN=") + name})
-            && openssl({QStringLiteral("x509"), QStringLiteral("-req"), QStringLiteral("-in"), name + QStringLiteral(".csr"),
-                        QStringLiteral("-CA"), ca + QStringLiteral(".pem"), QStringLiteral("-CAkey"), ca + QStringLiteral(".key"),
-                        QStringLiteral("-CAcreateserial"), QStringLiteral("-days"), QStringLiteral("2"), QStringLiteral("-extfile"),
-                        name + QStringLiteral(".ext"), QStringLiteral("-out"), name + QStringLiteral(".pem")});
-    }
 
     // A client socket with the given certificate (empty: none), trusting the test CA.
     std::unique_ptr<QSslSocket> client(const QString &name)
@@ -96,15 +58,18 @@ private Q_SLOTS:
         QVERIFY(m_dir.isValid());
         if (!QSslSocket::supportsSsl())
             QSKIP("Qt has no TLS backend here");
-        m_openssl = QStandardPaths::findExecutable(QStringLiteral("openssl"));
-        if (m_openssl.isEmpty())
-            QSKIP("openssl is not installed: no certificates to test TLS with");
-        QVERIFY(makeCa(QStringLiteral("ca")));
-        QVERIFY(makeCa(QStringLiteral("otherca")));
-        QVERIFY(issue(QStringLiteral("server"), QStringLiteral("subjectAltName=IP:127.0.0.1\nextendedKeyUsage=serverAuth\n"),
-                      QStringLiteral("ca")));
-        QVERIFY(issue(QStringLiteral("client"), QStringLiteral("extendedKeyUsage=clientAuth\n"), QStringLiteral("ca")));
-        QVERIFY(issue(QStringLiteral("stranger"), QStringLiteral("extendedKeyUsage=clientAuth\n"), QStringLiteral("otherca")));
+        testing::TestCertificates certificates(m_dir.path());
+        if (!certificates.isAvailable())
+            QSKIP(qPrintable(certificates.error()));
+        QVERIFY2(certificates.makeCa(QStringLiteral("ca")), qPrintable(certificates.error()));
+        QVERIFY2(certificates.makeCa(QStringLiteral("otherca")), qPrintable(certificates.error()));
+        QVERIFY2(certificates.issue(QStringLiteral("server"), "subjectAltName=IP:127.0.0.1\nextendedKeyUsage=serverAuth\n",
+                                    QStringLiteral("ca")),
+                 qPrintable(certificates.error()));
+        QVERIFY2(certificates.issue(QStringLiteral("client"), "extendedKeyUsage=clientAuth\n", QStringLiteral("ca")),
+                 qPrintable(certificates.error()));
+        QVERIFY2(certificates.issue(QStringLiteral("stranger"), "extendedKeyUsage=clientAuth\n", QStringLiteral("otherca")),
+                 qPrintable(certificates.error()));
     }
 
     void mutualTls()

@@ -2,11 +2,10 @@
 #include "transport/tlslink.h"
 
 #include "linktesting.h"
+#include "testcertificates.h"
 
 #include <QtCore/QDir>
 #include <QtCore/QFile>
-#include <QtCore/QProcess>
-#include <QtCore/QStandardPaths>
 #include <QtCore/QTemporaryDir>
 #include <QtNetwork/QSslConfiguration>
 #include <QtNetwork/QSslKey>
@@ -89,50 +88,8 @@ class TestTlsLink : public QObject
     Q_OBJECT
 private:
     QTemporaryDir m_dir;
-    QString m_openssl;
 
     QString path(const char *name) const { return m_dir.filePath(QLatin1String(name)); }
-
-    bool openssl(const QStringList &arguments)
-    {
-        QProcess process;
-        process.setWorkingDirectory(m_dir.path());
-        process.setProcessChannelMode(QProcess::MergedChannels);
-        process.start(m_openssl, arguments);
-        if (!process.waitForFinished(60000) || process.exitCode() != 0) {
-            qWarning().noquote() << "openssl" << arguments.join(QLatin1Char(' ')) << "failed:" << process.readAll();
-            return false;
-        }
-        return true;
-    }
-
-    // A key and a certificate signed by the CA, with the given extensions.
-    bool issue(const QString &name, const QString &subject, const QString &extensions, const QString &ca)
-    {
-        QFile ext(m_dir.filePath(name + QStringLiteral(".ext")));
-        if (!ext.open(QIODevice::WriteOnly))
-            return false;
-        ext.write(extensions.toUtf8());
-        ext.close();
-        return openssl({QStringLiteral("req"), QStringLiteral("-newkey"), QStringLiteral("ec"), QStringLiteral("-pkeyopt"),
-                        QStringLiteral("ec_paramgen_curve:prime256v1"), QStringLiteral("-nodes"), QStringLiteral("-keyout"),
-                        name + QStringLiteral(".key"), QStringLiteral("-out"), name + QStringLiteral(".csr"),
-                        QStringLiteral("-subj"), subject})
-            && openssl({QStringLiteral("x509"), QStringLiteral("-req"), QStringLiteral("-in"), name + QStringLiteral(".csr"),
-                        QStringLiteral("-CA"), ca + QStringLiteral(".pem"), QStringLiteral("-CAkey"), ca + QStringLiteral(".key"),
-                        QStringLiteral("-CAcreateserial"), QStringLiteral("-days"), QStringLiteral("2"),
-                        QStringLiteral("-extfile"), name + QStringLiteral(".ext"), QStringLiteral("-out"),
-                        name + QStringLiteral(".pem")});
-    }
-
-    bool makeCa(const QString &name)
-    {
-        return openssl({QStringLiteral("req"), QStringLiteral("-x509"), QStringLiteral("-newkey"), QStringLiteral("ec"),
-                        QStringLiteral("-pkeyopt"), QStringLiteral("ec_paramgen_curve:prime256v1"), QStringLiteral("-nodes"),
-                        QStringLiteral("-keyout"), name + QStringLiteral(".key"), QStringLiteral("-out"),
-                        name + QStringLiteral(".pem"), QStringLiteral("-days"), QStringLiteral("2"), QStringLiteral("-subj"),
-                        QStringLiteral("/CN=") + name});
-    }
 
     QString clientUrl(quint16 port, const QString &ca = QStringLiteral("ca.pem")) const
     {
@@ -149,18 +106,20 @@ private slots:
         QVERIFY(m_dir.isValid());
         if (!QSslSocket::supportsSsl())
             QSKIP("Qt has no TLS backend here");
-        m_openssl = QStandardPaths::findExecutable(QStringLiteral("openssl"));
-        if (m_openssl.isEmpty())
-            QSKIP("openssl is not installed: no certificates to test TLS with");
-        QVERIFY(makeCa(QStringLiteral("ca")));
-        QVERIFY(makeCa(QStringLiteral("otherca")));
-        QVERIFY(issue(QStringLiteral("server"), QStringLiteral("/CN=localhost"),
-                      QStringLiteral("subjectAltName=IP:127.0.0.1,DNS:localhost\nextendedKeyUsage=serverAuth\n"),
-                      QStringLiteral("ca")));
-        QVERIFY(issue(QStringLiteral("client"), QStringLiteral("/CN=mbscope-client"),
-                      QStringLiteral("extendedKeyUsage=clientAuth\n"), QStringLiteral("ca")));
-        QVERIFY(issue(QStringLiteral("elsewhere"), QStringLiteral("/CN=plc.example"),
-                      QStringLiteral("subjectAltName=DNS:plc.example\nextendedKeyUsage=serverAuth\n"), QStringLiteral("ca")));
+        testing::TestCertificates certificates(m_dir.path());
+        if (!certificates.isAvailable())
+            QSKIP(qPrintable(certificates.error()));
+        QVERIFY2(certificates.makeCa(QStringLiteral("ca")), qPrintable(certificates.error()));
+        QVERIFY2(certificates.makeCa(QStringLiteral("otherca")), qPrintable(certificates.error()));
+        QVERIFY2(certificates.issue(QStringLiteral("server"), "subjectAltName=IP:127.0.0.1,DNS:localhost\nextendedKeyUsage=serverAuth\n",
+                                    QStringLiteral("ca"), QStringLiteral("/CN=localhost")),
+                 qPrintable(certificates.error()));
+        QVERIFY2(certificates.issue(QStringLiteral("client"), "extendedKeyUsage=clientAuth\n", QStringLiteral("ca"),
+                                    QStringLiteral("/CN=mbscope-client")),
+                 qPrintable(certificates.error()));
+        QVERIFY2(certificates.issue(QStringLiteral("elsewhere"), "subjectAltName=DNS:plc.example\nextendedKeyUsage=serverAuth\n",
+                                    QStringLiteral("ca"), QStringLiteral("/CN=plc.example")),
+                 qPrintable(certificates.error()));
     }
 
     void mutualEcho()
