@@ -1,6 +1,7 @@
 #include "connectionbar.h"
 
 #include "hexerrormark.h"
+#include "tlsfilesfield.h"
 
 #include <QtCore/QSettings>
 #include <QtGui/QAction>
@@ -26,10 +27,9 @@ struct KindChoice {
     const char *label;
 };
 
-// TLS needs certificate files: it is reachable through a recent target or a session, not
-// worth three more fields in the bar.
 constexpr KindChoice kKinds[] = {
     {LinkKind::Tcp, QT_TRANSLATE_NOOP("mbscope::ConnectionBar", "Modbus TCP")},
+    {LinkKind::Tls, QT_TRANSLATE_NOOP("mbscope::ConnectionBar", "Modbus TCP Security (TLS)")},
     {LinkKind::RtuTcp, QT_TRANSLATE_NOOP("mbscope::ConnectionBar", "RTU over TCP")},
     {LinkKind::AsciiTcp, QT_TRANSLATE_NOOP("mbscope::ConnectionBar", "ASCII over TCP")},
     {LinkKind::Udp, QT_TRANSLATE_NOOP("mbscope::ConnectionBar", "Modbus UDP")},
@@ -157,6 +157,12 @@ void ConnectionBar::buildUi()
     m_recentButton->setMenu(new QMenu(m_recentButton));
     m_recentButton->setToolTip(tr("Targets connected to before"));
 
+    // TLS's files on a row of their own, shown for tls:// only.
+    m_tlsFiles = new TlsFilesField(this);
+    m_tlsFiles->setObjectName(QStringLiteral("tlsFiles"));
+    m_tlsFiles->hide();
+    connect(m_tlsFiles, &TlsFilesField::edited, this, &ConnectionBar::clearError);
+
     m_errorLabel = hexerrormark::newErrorLabel(QStringLiteral("connectionErrorLabel"), this);
 
     auto *row = new QHBoxLayout;
@@ -178,6 +184,7 @@ void ConnectionBar::buildUi()
     layout->setContentsMargins(6, 4, 6, 4);
     layout->setSpacing(2);
     layout->addLayout(row);
+    layout->addWidget(m_tlsFiles);
     layout->addWidget(m_errorLabel);
 
     connect(m_kindCombo, &QComboBox::currentIndexChanged, this, &ConnectionBar::onKindChanged);
@@ -204,6 +211,14 @@ void ConnectionBar::onKindChanged()
     const bool serial = kind() == LinkKind::Rtu || kind() == LinkKind::Ascii;
     m_networkPage->setVisible(!serial);
     m_serialPage->setVisible(serial);
+    m_tlsFiles->setVisible(kind() == LinkKind::Tls);
+    // The port follows the link type while it is the other type's default: 802 is MODBUS/TCP
+    // Security's port (5.1), 502 Modbus TCP's.
+    if (kind() == LinkKind::Tls && m_portSpin->value() == 502)
+        m_portSpin->setValue(802);
+    else if (m_lastKind == LinkKind::Tls && kind() != LinkKind::Tls && m_portSpin->value() == 802)
+        m_portSpin->setValue(502);
+    m_lastKind = kind();
     if (serial && m_serialPortCombo->count() == 0)
         refreshSerialPorts();
     // ASCII carries 7 data bits by default (Serial Line V1.02, 2.5.2), RTU always 8.
@@ -273,6 +288,14 @@ std::optional<LinkUrl> ConnectionBar::url()
             return std::nullopt;
         }
         url.port = quint16(m_portSpin->value());
+        if (url.kind == LinkKind::Tls) {
+            const QString problem = m_tlsFiles->check();
+            if (!problem.isEmpty()) {
+                showError(problem);
+                return std::nullopt;
+            }
+            url.tls = m_tlsFiles->settings();
+        }
     }
     url.responseTimeoutMs = m_timeoutSpin->value();
     // Round trip through the parser: the URL the bar produces is one the CLI accepts too.
@@ -297,6 +320,7 @@ void ConnectionBar::setUrl(const LinkUrl &url)
     } else {
         m_hostEdit->setText(url.host);
         m_portSpin->setValue(url.port);
+        m_tlsFiles->setSettings(url.tls);
     }
     if (url.responseTimeoutMs > 0)
         m_timeoutSpin->setValue(url.responseTimeoutMs);
@@ -323,7 +347,7 @@ void ConnectionBar::setConnected(bool connected)
     m_connected = connected;
     m_connectButton->setText(connected ? tr("Dis&connect") : tr("&Connect"));
     // The target of a live link is what the link uses: change it by disconnecting first.
-    for (QWidget *w : std::initializer_list<QWidget *>{m_kindCombo, m_networkPage, m_serialPage, m_timeoutSpin, m_recentButton})
+    for (QWidget *w : std::initializer_list<QWidget *>{m_kindCombo, m_networkPage, m_serialPage, m_tlsFiles, m_timeoutSpin, m_recentButton})
         w->setEnabled(!connected);
 }
 

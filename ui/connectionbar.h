@@ -15,12 +15,14 @@ class QToolButton;
 
 namespace mbscope {
 
+class TlsFilesField;
+
 // Where to talk to: the link type, then host and port (network links) or a serial port with its
 // line settings, the unit id and the response timeout. It produces a LinkUrl (url()) and asks
 // to connect or disconnect; it never opens anything itself. A target that cannot be used is
 // refused in place (errorText()), naming the field and what to change; link failures reported
 // later (showError) appear in the same place. Targets that connected are kept as recent targets
-// in QSettings ("connection/recent").
+// in QSettings ("connection/recent"), TLS files included (tls://host:802?cert=...&key=...&ca=...).
 class ConnectionBar : public QWidget
 {
     Q_OBJECT
@@ -54,6 +56,7 @@ public:
     void refreshSerialPorts();
 
     [[nodiscard]] QPushButton *connectButton() const { return m_connectButton; }
+    [[nodiscard]] TlsFilesField *tlsFiles() const { return m_tlsFiles; }
 
 Q_SIGNALS:
     void connectRequested(const mbscope::LinkUrl &url);
@@ -83,6 +86,8 @@ private:
     QPushButton *m_connectButton = nullptr;
     QToolButton *m_recentButton = nullptr;
     QLabel *m_errorLabel = nullptr;
+    TlsFilesField *m_tlsFiles = nullptr; // certificate, key and CA of tls:// targets
+    LinkKind m_lastKind = LinkKind::Tcp;
     bool m_connected = false;
 };
 

@@ -1,12 +1,18 @@
-// ConnectionBar: the URL it produces for every link type, errors in place, recent targets.
+// ConnectionBar: the URL it produces for every link type, errors in place, recent targets; TLS's
+// certificate, key and CA files (a missing one named in place, kept in recent targets).
 #include "connectionbar.h"
 #include "guitestsupport.h"
+#include "tlsfilesfield.h"
 
 #include <QtCore/QSettings>
+#include <QtCore/QTemporaryDir>
+#include <QtWidgets/QApplication>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QPushButton>
+#include <QtWidgets/QMenu>
 #include <QtWidgets/QSpinBox>
+#include <QtWidgets/QToolButton>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QtTest>
 
@@ -29,6 +35,10 @@ private Q_SLOTS:
     void setUrlRoundTrip();
     void connectAndDisconnectSignals();
     void recentTargets();
+    void tlsUrlCarriesTheFiles();
+    void tlsFileProblemsAreNamed_data();
+    void tlsFileProblemsAreNamed();
+    void tlsRecentTargetKeepsTheFiles();
     void screenshot();
 };
 
@@ -197,6 +207,151 @@ void TestConnectionBar::recentTargets()
     QCOMPARE(next.recentTargets(), recent);
 }
 
+namespace {
+
+// Three files standing for the PEM files: the bar checks that they exist and can be read; what
+// is in them is the link's business (TlsLink says when one holds no certificate).
+struct TlsFiles {
+    QTemporaryDir dir;
+    QString cert = dir.filePath(QStringLiteral("client.pem"));
+    QString key = dir.filePath(QStringLiteral("client.key"));
+    QString ca = dir.filePath(QStringLiteral("ca.pem"));
+    TlsFiles()
+    {
+        for (const QString &path : {cert, key, ca}) {
+            QFile file(path);
+            if (file.open(QIODevice::WriteOnly))
+                file.write("-----BEGIN CERTIFICATE-----\n");
+        }
+    }
+};
+
+void setTlsFiles(ConnectionBar &bar, const QString &cert, const QString &key, const QString &ca)
+{
+    bar.tlsFiles()->certificateEdit()->setText(cert);
+    bar.tlsFiles()->keyEdit()->setText(key);
+    bar.tlsFiles()->caEdit()->setText(ca);
+}
+
+} // namespace
+
+void TestConnectionBar::tlsUrlCarriesTheFiles()
+{
+    TlsFiles files;
+    QVERIFY(files.dir.isValid());
+    ConnectionBar bar;
+    QVERIFY(!bar.tlsFiles()->isVisibleTo(&bar));
+    chooseKind(bar, LinkKind::Tls);
+    QVERIFY(bar.tlsFiles()->isVisibleTo(&bar));
+    QCOMPARE(bar.findChild<QSpinBox *>(QStringLiteral("portSpin"))->value(), 802); // MODBUS/TCP Security, 5.1
+    bar.findChild<QLineEdit *>(QStringLiteral("hostEdit"))->setText(QStringLiteral("plc.example.org"));
+    setTlsFiles(bar, files.cert, files.key, files.ca);
+    const std::optional<LinkUrl> url = bar.url();
+    QVERIFY2(url, qPrintable(bar.errorText()));
+    QCOMPARE(url->kind, LinkKind::Tls);
+    QCOMPARE(url->port, quint16(802));
+    QCOMPARE(url->tls.certificate, files.cert);
+    QCOMPARE(url->tls.privateKey, files.key);
+    QCOMPARE(url->tls.caCertificates, files.ca);
+    QVERIFY(url->toString().startsWith(QLatin1String("tls://plc.example.org:802?")));
+    QCOMPARE(bar.framing(), Framing::Tcp);
+    // Without client files (a server that needs none) and with the system's CAs.
+    setTlsFiles(bar, {}, {}, {});
+    QVERIFY2(bar.url(), qPrintable(bar.errorText()));
+    // Back to plain Modbus TCP: the port follows, the files go out of sight.
+    chooseKind(bar, LinkKind::Tcp);
+    QCOMPARE(bar.findChild<QSpinBox *>(QStringLiteral("portSpin"))->value(), 502);
+    QVERIFY(!bar.tlsFiles()->isVisibleTo(&bar));
+}
+
+void TestConnectionBar::tlsFileProblemsAreNamed_data()
+{
+    QTest::addColumn<QString>("cert");
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("ca");
+    QTest::addColumn<QString>("named");     // the error names this file
+    QTest::addColumn<QString>("focusedEdit");
+    QTest::newRow("missing certificate") << QStringLiteral("gone.pem") << QStringLiteral("key") << QStringLiteral("ca")
+                                         << QStringLiteral("certificate file '%1gone.pem' does not exist")
+                                         << QStringLiteral("tlsCertificateEdit");
+    QTest::newRow("missing key") << QStringLiteral("cert") << QStringLiteral("nokey.pem") << QString()
+                                 << QStringLiteral("private key file '%1nokey.pem' does not exist")
+                                 << QStringLiteral("tlsKeyEdit");
+    QTest::newRow("missing CA") << QString() << QString() << QStringLiteral("noca.pem")
+                                << QStringLiteral("CA certificate file '%1noca.pem' does not exist")
+                                << QStringLiteral("tlsCaEdit");
+    QTest::newRow("folder as CA") << QString() << QString() << QStringLiteral(".")
+                                  << QStringLiteral("is a folder") << QStringLiteral("tlsCaEdit");
+    QTest::newRow("certificate without key") << QStringLiteral("cert") << QString() << QString()
+                                             << QStringLiteral("without its private key") << QStringLiteral("tlsKeyEdit");
+    QTest::newRow("key without certificate") << QString() << QStringLiteral("key") << QString()
+                                             << QStringLiteral("without its certificate") << QStringLiteral("tlsCertificateEdit");
+}
+
+void TestConnectionBar::tlsFileProblemsAreNamed()
+{
+    QFETCH(QString, cert);
+    QFETCH(QString, key);
+    QFETCH(QString, ca);
+    QFETCH(QString, named);
+    QFETCH(QString, focusedEdit);
+    TlsFiles files;
+    const QString dir = files.dir.path() + QLatin1Char('/');
+    // "cert", "key", "ca" stand for the existing files; other names are made missing in the folder.
+    const auto path = [&](const QString &name, const QString &existing) {
+        if (name.isEmpty() || name == QLatin1String("cert") || name == QLatin1String("key") || name == QLatin1String("ca"))
+            return name.isEmpty() ? QString() : existing;
+        return name == QLatin1String(".") ? files.dir.path() : dir + name;
+    };
+    ConnectionBar bar;
+    bar.show();
+    QVERIFY(QTest::qWaitForWindowActive(&bar));
+    chooseKind(bar, LinkKind::Tls);
+    setTlsFiles(bar, path(cert, files.cert), path(key, files.key), path(ca, files.ca));
+    QSignalSpy connectSpy(&bar, &ConnectionBar::connectRequested);
+    bar.connectButton()->click();
+    QCOMPARE(connectSpy.count(), 0);
+    const QString expected = named.contains(QLatin1String("%1")) ? named.arg(dir) : named;
+    QVERIFY2(bar.errorText().contains(expected), qPrintable(bar.errorText()));
+    QCOMPARE(QApplication::focusWidget() ? QApplication::focusWidget()->objectName() : QString(), focusedEdit);
+    // Typing in a file field takes the message away.
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_End);
+    QTest::keyClicks(QApplication::focusWidget(), QStringLiteral("x"));
+    QVERIFY(bar.errorText().isEmpty());
+}
+
+void TestConnectionBar::tlsRecentTargetKeepsTheFiles()
+{
+    TlsFiles files;
+    ConnectionBar bar;
+    chooseKind(bar, LinkKind::Tls);
+    bar.findChild<QLineEdit *>(QStringLiteral("hostEdit"))->setText(QStringLiteral("10.1.2.3"));
+    setTlsFiles(bar, files.cert, files.key, files.ca);
+    const std::optional<LinkUrl> url = bar.url();
+    QVERIFY2(url, qPrintable(bar.errorText()));
+    bar.addRecent(*url);
+    QCOMPARE(bar.recentTargets().first(), url->toString());
+
+    // The next start: choosing the recent target brings the files back.
+    ConnectionBar next;
+    auto *recent = next.findChild<QToolButton *>(QStringLiteral("recentButton"));
+    QVERIFY(recent && recent->menu());
+    const QList<QAction *> actions = recent->menu()->actions();
+    QVERIFY(!actions.isEmpty());
+    actions.first()->trigger();
+    QCOMPARE(next.tlsFiles()->certificateEdit()->text(), files.cert);
+    QCOMPARE(next.tlsFiles()->keyEdit()->text(), files.key);
+    QCOMPARE(next.tlsFiles()->caEdit()->text(), files.ca);
+    QVERIFY(next.tlsFiles()->isVisibleTo(&next));
+    const std::optional<LinkUrl> again = next.url();
+    QVERIFY2(again, qPrintable(next.errorText()));
+    QCOMPARE(again->toString(), url->toString());
+    // A file removed since: named in place when connecting.
+    QFile::remove(files.key);
+    QVERIFY(!next.url());
+    QVERIFY2(next.errorText().contains(files.key), qPrintable(next.errorText()));
+}
+
 void TestConnectionBar::screenshot()
 {
     ConnectionBar bar;
@@ -208,6 +363,12 @@ void TestConnectionBar::screenshot()
     bar.findChild<QComboBox *>(QStringLiteral("serialPortCombo"))->setCurrentText(QString());
     QVERIFY(!bar.url());
     QVERIFY(guitest::saveShot(&bar, QStringLiteral("connectionbar-serial-error.png")));
+    chooseKind(bar, LinkKind::Tls);
+    bar.tlsFiles()->certificateEdit()->setText(QStringLiteral("/etc/modbus/client.pem"));
+    bar.tlsFiles()->keyEdit()->setText(QStringLiteral("/etc/modbus/client.key"));
+    QVERIFY(!bar.url());
+    bar.resize(1400, bar.sizeHint().height());
+    QVERIFY(guitest::saveShot(&bar, QStringLiteral("connectionbar-tls-error.png")));
 }
 
 QTEST_MAIN(TestConnectionBar)
