@@ -2,18 +2,63 @@
 
 #include "monotonicclock.h"
 
+#include <QtCore/QEvent>
+#include <QtCore/QSocketNotifier>
 #include <QtNetwork/QHostAddress>
 #include <QtNetwork/QTcpSocket>
 
 #include <cerrno>
+#include <cstring>
+#include <fcntl.h>
 #include <sys/socket.h>
+#include <unistd.h>
+#include <utility>
 
 namespace mbscope {
 
+namespace {
+
+// What one recv() may take. A Modbus answer is at most 260 bytes (and a pipelined turn a few
+// of them); a larger read is taken by further recv() calls in the same handler.
+constexpr qsizetype kReceiveChunk = 64 * 1024;
+
+} // namespace
+
+// A socket notifier that calls its link's handler directly: the event dispatcher's activation
+// reaches the link without QSocketNotifier's activated() signals (two per activation).
+class TcpLink::DescriptorNotifier final : public QSocketNotifier
+{
+public:
+    DescriptorNotifier(Type type, TcpLink *link, void (TcpLink::*handler)())
+        : QSocketNotifier(type, link)
+        , m_link(link)
+        , m_handler(handler)
+    {
+    }
+
+protected:
+    bool event(QEvent *e) override
+    {
+        if (e->type() == QEvent::SockAct) {
+            (m_link->*m_handler)();
+            return true;
+        }
+        return QSocketNotifier::event(e);
+    }
+
+private:
+    TcpLink *m_link;
+    void (TcpLink::*m_handler)();
+};
+
 TcpLink::TcpLink(const LinkUrl &url, QObject *parent)
     : Link(url, parent)
+    , m_readNotifier(new DescriptorNotifier(QSocketNotifier::Read, this, &TcpLink::onReadable))
+    , m_writeNotifier(new DescriptorNotifier(QSocketNotifier::Write, this, &TcpLink::onWritable))
     , m_connectTimer(this) // a child, so that moveToThread() takes it along
 {
+    m_readNotifier->setEnabled(false);
+    m_writeNotifier->setEnabled(false);
     m_connectTimer.setSingleShot(true);
     connect(&m_connectTimer, &QTimer::timeout, this, &TcpLink::onConnectTimeout);
 }
@@ -71,7 +116,42 @@ void TcpLink::startConnecting()
 
 void TcpLink::onTcpConnected()
 {
-    establish();
+    if (takeDescriptor())
+        establish();
+}
+
+bool TcpLink::takeDescriptor()
+{
+    const int socketFd = int(m_socket->socketDescriptor());
+    // F_DUPFD_CLOEXEC: the duplicate shares the connection and its non-blocking mode; closing
+    // the QTcpSocket's descriptor then only drops that reference (no FIN, no RST).
+    const int fd = socketFd >= 0 ? ::fcntl(socketFd, F_DUPFD_CLOEXEC, 0) : -1;
+    if (fd < 0) {
+        const QString os = osAnswer(qt_error_string(errno));
+        fail({LinkError::Kind::Io, QStringLiteral("connected to %1, but its descriptor could not be duplicated (%2)").arg(where(), os)});
+        return false;
+    }
+    m_where = where();
+    QTcpSocket *socket = std::exchange(m_socket, nullptr);
+    disconnect(socket, nullptr, this, nullptr);
+    // We are inside the socket's connected() signal: it closes its descriptor now and goes later.
+    socket->abort();
+    socket->deleteLater();
+    m_fd = fd;
+    m_unsent.clear();
+    if (!m_recvBuffer)
+        m_recvBuffer = std::make_unique<char[]>(kReceiveChunk);
+    m_readNotifier->setSocket(fd);
+    m_writeNotifier->setSocket(fd); // stays disabled until a write is left unfinished
+    m_readNotifier->setEnabled(true);
+    return true;
+}
+
+qintptr TcpLink::socketDescriptor() const
+{
+    if (m_fd >= 0)
+        return m_fd;
+    return m_socket ? m_socket->socketDescriptor() : -1;
 }
 
 void TcpLink::establish()
@@ -93,6 +173,15 @@ void TcpLink::teardown()
 {
     m_connectTimer.stop();
     m_marks.clear();
+    m_where.clear();
+    if (m_fd >= 0) {
+        // Disabled before the descriptor closes (the notifiers may be the caller: they stay).
+        m_readNotifier->setEnabled(false);
+        m_writeNotifier->setEnabled(false);
+        m_unsent.clear();
+        // An orderly close: the kernel sends what it holds, then FIN.
+        ::close(std::exchange(m_fd, -1));
+    }
     if (!m_socket)
         return;
     QTcpSocket *socket = m_socket;
@@ -113,33 +202,15 @@ void TcpLink::fail(const Failure &failure)
 
 bool TcpLink::write(const QByteArray &bytes)
 {
-    if (state() != State::Open || !m_socket) {
+    if (state() != State::Open || (!m_socket && m_fd < 0)) {
         reportError(LinkError::Kind::Closed,
                     QStringLiteral("cannot write %1 bytes: the link is not open").arg(bytes.size()));
         return false;
     }
-    QByteArrayView rest(bytes);
-    if (writesToDescriptor() && m_marks.isEmpty() && m_socket->bytesToWrite() == 0) {
-        // The request's time is the clock read just before the send() that hands its last byte to
-        // the kernel: the kernel puts the segment on the wire (loopback: through the capture
-        // point) inside that call, and the call's return can come much later (on one core the
-        // server may run, and even answer, before the client is scheduled again).
-        const qint64 sentNs = monotonicNowNs();
-        const qint64 sent = sendNow(rest);
-        if (sent == rest.size()) {
-            m_submitted += sent;
-            deliverWritten(sentNs);
-            return true;
-        }
-        // Partly taken (the kernel's buffer is full) or refused: Qt's buffer and error handling
-        // take the rest, and the write is reported once it has left.
-        if (sent > 0) {
-            m_submitted += sent;
-            rest = rest.sliced(sent);
-        }
-    }
-    const qint64 written = m_socket->write(rest.data(), rest.size());
-    if (written != rest.size()) {
+    if (m_fd >= 0)
+        return writeToDescriptor(bytes);
+    const qint64 written = m_socket->write(bytes);
+    if (written != bytes.size()) {
         reportError(LinkError::Kind::Io, QStringLiteral("writing %1 bytes to %2 failed (%3)")
                                              .arg(bytes.size())
                                              .arg(where(), osAnswer(m_socket->errorString())));
@@ -158,29 +229,134 @@ bool TcpLink::write(const QByteArray &bytes)
     return true;
 }
 
+bool TcpLink::writeToDescriptor(const QByteArray &bytes)
+{
+    QByteArrayView rest(bytes);
+    if (m_unsent.isEmpty()) {
+        // The request's time is the clock read just before the send() that hands its last byte to
+        // the kernel: the kernel puts the segment on the wire (loopback: through the capture
+        // point) inside that call, and the call's return can come much later (on one core the
+        // server may run, and even answer, before the client is scheduled again).
+        const qint64 sentNs = monotonicNowNs();
+        const qint64 sent = sendNow(rest);
+        if (sent < 0) {
+            loseDescriptor(errno);
+            return false;
+        }
+        m_submitted += sent;
+        if (sent == rest.size()) {
+            deliverWritten(sentNs);
+            return true;
+        }
+        rest = rest.sliced(sent);
+    }
+    // The kernel's buffer is full: the rest leaves when the descriptor is writable again, and the
+    // write is reported once it has.
+    m_unsent.append(rest.data(), rest.size());
+    m_submitted += rest.size();
+    m_marks.append(m_submitted);
+    m_writeNotifier->setEnabled(true);
+    return true;
+}
+
+void TcpLink::onWritable()
+{
+    if (m_fd < 0)
+        return;
+    const qint64 sent = sendNow(m_unsent);
+    if (sent < 0) {
+        loseDescriptor(errno);
+        return;
+    }
+    m_unsent.remove(0, sent);
+    if (m_unsent.isEmpty())
+        m_writeNotifier->setEnabled(false);
+    reportWritten();
+}
+
 qint64 TcpLink::sendNow(QByteArrayView bytes)
 {
-    const int fd = int(m_socket->socketDescriptor());
-    if (fd < 0)
-        return 0;
     for (;;) {
         // MSG_NOSIGNAL: a closed peer is an error to report, not a SIGPIPE.
-        const ssize_t n = ::send(fd, bytes.data(), size_t(bytes.size()), MSG_NOSIGNAL | MSG_DONTWAIT);
+        const ssize_t n = ::send(m_fd, bytes.data(), size_t(bytes.size()), MSG_NOSIGNAL | MSG_DONTWAIT);
         if (n >= 0)
             return qint64(n);
-        if (errno != EINTR)
+        if (errno == EAGAIN || errno == EWOULDBLOCK)
             return 0;
+        if (errno != EINTR)
+            return -1;
     }
+}
+
+void TcpLink::onReadable()
+{
+    if (m_fd < 0)
+        return;
+    // The clock first, then the bytes: they were all there when it was read.
+    const qint64 now = monotonicNowNs();
+    // One buffer for every read: no allocation per answer unless a receiver keeps the bytes (then
+    // the next read detaches it).
+    m_readBuffer.resize(0);
+    int lost = -1; // errno of a failed recv(), 0 at the end of the stream
+    for (;;) {
+        const ssize_t n = ::recv(m_fd, m_recvBuffer.get(), size_t(kReceiveChunk), MSG_DONTWAIT);
+        if (n > 0) {
+            m_readBuffer.append(m_recvBuffer.get(), qsizetype(n));
+            if (n < kReceiveChunk)
+                break;
+            continue; // maybe more
+        }
+        if (n == 0)
+            lost = 0;
+        else if (errno == EINTR)
+            continue;
+        else if (errno != EAGAIN && errno != EWOULDBLOCK)
+            lost = errno;
+        break;
+    }
+    if (!m_readBuffer.isEmpty()) {
+        // Shared while the receivers run, so a read nested in them detaches instead of changing
+        // these bytes under them.
+        const QByteArray bytes = m_readBuffer;
+        deliverReceived(bytes, now, now);
+    }
+    // The bytes that came before the end are delivered first: a server that closes mid-frame
+    // has still sent them. (A receiver may have closed the link meanwhile.)
+    if (lost >= 0 && m_fd >= 0 && state() == State::Open)
+        loseDescriptor(lost);
+}
+
+void TcpLink::loseDescriptor(int err)
+{
+    Failure failure;
+    switch (err) {
+    case 0:
+        failure = {LinkError::Kind::Closed, QStringLiteral("%1 closed the connection").arg(where())};
+        break;
+    case ECONNRESET:
+    case EPIPE:
+        failure = {LinkError::Kind::Closed,
+                   QStringLiteral("%1 reset the connection (%2)").arg(where(), osAnswer(qt_error_string(err)))};
+        break;
+    default:
+        failure = {LinkError::Kind::Io,
+                   QStringLiteral("connection to %1 lost (%2)").arg(where(), osAnswer(qt_error_string(err)))};
+        break;
+    }
+    teardown();
+    reportLoss(failure.kind, failure.what);
 }
 
 qint64 TcpLink::acceptedBytes() const
 {
+    if (m_fd >= 0)
+        return m_submitted - m_unsent.size();
     return m_socket ? m_submitted - m_socket->bytesToWrite() : 0;
 }
 
 void TcpLink::reportWritten()
 {
-    if (!m_socket || m_marks.isEmpty())
+    if ((!m_socket && m_fd < 0) || m_marks.isEmpty())
         return;
     const qint64 accepted = acceptedBytes();
     const qint64 now = monotonicNowNs();
@@ -214,6 +390,8 @@ void TcpLink::onReadyRead()
 
 QString TcpLink::where() const
 {
+    if (!m_where.isEmpty())
+        return m_where;
     QString text = url().address();
     if (m_socket && !m_socket->peerAddress().isNull()) {
         const QString peer = m_socket->peerAddress().toString();

@@ -6,6 +6,8 @@
 #include <QtCore/QTimer>
 #include <QtNetwork/QAbstractSocket>
 
+#include <memory>
+
 QT_BEGIN_NAMESPACE
 class QTcpSocket;
 QT_END_NAMESPACE
@@ -14,10 +16,17 @@ namespace mbscope {
 
 // A TCP stream: tcp://, rtu-tcp://, ascii-tcp:// (and the base of tls://). Nagle's algorithm is
 // off (TCP_NODELAY), so that a request leaves at once instead of waiting for more bytes.
-// A request is handed to the kernel inside write() by one send() on the socket's descriptor, and
-// bytesWritten(t) carries the clock read just before that call (the segment leaves within it);
-// should the kernel take only part, Qt's buffer sends the rest and bytesWritten(t) comes when the
-// kernel has accepted the last byte (TCP gives no later moment to an application).
+// QTcpSocket looks the host up and connects (its errors and timeouts name what went wrong); once
+// connected, plain TCP takes over a duplicate of the socket's descriptor and lets the QTcpSocket
+// go: the link then reads with one non-blocking recv() when a socket notifier says the descriptor
+// is readable, and writes with send(), without QAbstractSocket's buffers, ioctl(FIONREAD) and
+// signals in between (they were a measurable share of the engine's work per transaction, issue 3).
+// A request is handed to the kernel inside write() by one send(), and bytesWritten(t) carries the
+// clock read just before that call (the segment leaves within it); should the kernel take only
+// part, the rest waits in the link until the descriptor is writable, and bytesWritten(t) comes
+// when the kernel has accepted the last byte (TCP gives no later moment to an application).
+// Received bytes carry the clock read just before the recv() that took them.
+// TLS keeps its QSslSocket throughout (its bytes must go through the TLS layer).
 // A new socket is made at each open(), so that nothing of a lost connection leaks into the next.
 class TcpLink : public Link
 {
@@ -29,6 +38,10 @@ public:
     void open() override;
     void close() override;
     bool write(const QByteArray &bytes) override;
+
+    // The descriptor the link reads and writes while open (plain TCP), or its socket's; -1 when
+    // there is none. For tests and diagnostics (socket options).
+    [[nodiscard]] qintptr socketDescriptor() const;
 
 protected:
     struct Failure {
@@ -42,9 +55,6 @@ protected:
     virtual void startConnecting();
     // Called once TCP is connected; the link is open at once, or later (TLS: after the handshake).
     virtual void onTcpConnected();
-    // Plain TCP writes a request with one send() on the descriptor, timed just before it; TLS
-    // (whose bytes must go through the TLS layer) says false.
-    [[nodiscard]] virtual bool writesToDescriptor() const { return true; }
     // Bytes of the writes so far that the kernel has accepted.
     [[nodiscard]] virtual qint64 acceptedBytes() const;
     // What a socket error means, while opening (opening = true) or once open.
@@ -58,23 +68,37 @@ protected:
     void reportWritten();
 
 private:
+    class DescriptorNotifier;
+
     void startOpen();
     void teardown();
     void fail(const Failure &failure);
-    // One non-blocking send() of as much as the kernel takes now; 0 when it takes nothing or fails
-    // (Qt's write path then reports the failure).
+    // Plain TCP once connected: a duplicate of the socket's descriptor replaces the QTcpSocket.
+    [[nodiscard]] bool takeDescriptor();
+    bool writeToDescriptor(const QByteArray &bytes);
+    // One non-blocking send() of as much as the kernel takes now; -1 (errno set) when it fails.
     [[nodiscard]] qint64 sendNow(QByteArrayView bytes);
+    void onReadable();
+    void onWritable();
+    // The descriptor failed (errno err) or the peer closed it (err 0): the link is lost.
+    void loseDescriptor(int err);
     void onReadyRead();
     void onSocketError(QAbstractSocket::SocketError error);
     void onDisconnected();
     void onConnectTimeout();
 
-    QTcpSocket *m_socket = nullptr;
+    QTcpSocket *m_socket = nullptr; // while opening, and throughout for TLS
+    int m_fd = -1;                  // plain TCP once open
+    DescriptorNotifier *m_readNotifier;  // children, so that moveToThread() takes them along
+    DescriptorNotifier *m_writeNotifier;
+    QByteArray m_unsent;            // written bytes the kernel has not taken yet (descriptor)
+    QString m_where;                // where(), kept when the QTcpSocket goes
     QTimer m_connectTimer;
     QList<qint64> m_marks;  // m_submitted at the end of each write not yet reported
     qint64 m_submitted = 0; // bytes given to the socket since open()
     bool m_inWrite = false;
     QByteArray m_readBuffer; // the bytes of the latest read, reused
+    std::unique_ptr<char[]> m_recvBuffer; // what recv() fills, kReceiveChunk bytes
 };
 
 } // namespace mbscope

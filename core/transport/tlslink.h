@@ -25,7 +25,6 @@ protected:
     [[nodiscard]] QTcpSocket *createSocket() override;
     void startConnecting() override;
     void onTcpConnected() override {}
-    [[nodiscard]] bool writesToDescriptor() const override { return false; }
     [[nodiscard]] qint64 acceptedBytes() const override;
     [[nodiscard]] Failure describe(QAbstractSocket::SocketError error, bool opening) const override;
 
