@@ -36,6 +36,7 @@ LinkController::LinkController(QObject *parent)
 {
     qRegisterMetaType<mbscope::Transaction>();
     qRegisterMetaType<QList<mbscope::Transaction>>();
+    qRegisterMetaType<QList<mbscope::TrafficFrame>>();
     qRegisterMetaType<mbscope::EngineProgress>();
     qRegisterMetaType<mbscope::PollReport>();
 }
@@ -49,6 +50,7 @@ void LinkController::resetEngine()
     m_countersBefore = m_counters;
     m_engine = std::make_unique<TransactionEngine>();
     connect(m_engine.get(), &TransactionEngine::transactionsFinished, this, &LinkController::onTransactions);
+    connect(m_engine.get(), &TransactionEngine::unmatchedFrames, this, &LinkController::unmatchedFrames);
     connect(m_engine.get(), &TransactionEngine::progress, this, &LinkController::onProgress);
     connect(m_engine.get(), &TransactionEngine::linkMessage, this, &LinkController::onLinkMessage);
     connect(m_engine.get(), &TransactionEngine::finished, this, &LinkController::onPollFinished);

@@ -2,6 +2,7 @@
 
 #include "engine/engineprogress.h"
 #include "engine/pollreport.h"
+#include "engine/trafficentry.h"
 #include "engine/transaction.h"
 #include "transport/linkurl.h"
 
@@ -62,6 +63,9 @@ Q_SIGNALS:
     void stateChanged(mbscope::LinkController::State state, const QString &message);
     // Every transaction, in batches as the engine delivers them (at most ~30 a second).
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
+    // Frames that answer no request (unsolicited, duplicates, garbage), batched as the engine
+    // delivers them; link: the target's URL. With transactionsFinished they are every frame in.
+    void unmatchedFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     // The newest transaction of each batch: what the decode view shows.
     void latestTransaction(const mbscope::Transaction &transaction);
     void countersChanged(const mbscope::EngineCounters &counters);

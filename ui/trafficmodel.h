@@ -23,7 +23,9 @@ namespace mbscope {
 // Feeds: appendFrames() takes the traffic log's frames (TrafficLog::copy, a journal read back),
 // which carry every frame, unsolicited and garbage ones included; appendTransactions() takes
 // TransactionEngine::transactionsFinished's batches and makes the request and answer rows of each
-// (a late answer adds only its answer row). Feed one or the other, not both, or frames show twice.
+// (a late answer adds only its answer row), and appendLinkFrames() the frames of no transaction
+// (TransactionEngine::unmatchedFrames), so the two make every frame. Feed the log's frames or
+// the engine's batches, not both, or frames show twice.
 class TrafficModel : public QAbstractTableModel
 {
     Q_OBJECT
@@ -99,6 +101,9 @@ public:
 public Q_SLOTS:
     void appendFrames(const QList<mbscope::TrafficFrame> &frames);
     void appendTransactions(const QList<mbscope::Transaction> &transactions);
+    // Frames of one link named by its URL (TransactionEngine::unmatchedFrames): unsolicited,
+    // duplicate and garbage frames with their verdicts.
+    void appendLinkFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void clear();
 
 Q_SIGNALS:
