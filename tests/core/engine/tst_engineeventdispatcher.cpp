@@ -1,0 +1,211 @@
+#include "engine/engineeventdispatcher.h"
+
+#include <QtCore/QPointer>
+#include <QtCore/QScopeGuard>
+#include <QtCore/QSocketNotifier>
+#include <QtCore/QThread>
+#include <QtCore/QTimer>
+#include <QtTest/QtTest>
+
+#include <atomic>
+#include <sys/socket.h>
+#include <unistd.h>
+
+using namespace mbscope;
+
+namespace {
+
+constexpr int kWaitMs = 10000; // generous: a loaded machine must not fail the test
+
+// A thread running an EngineEventDispatcher, and a way to run code in it and wait for the result.
+class DispatcherThread
+{
+public:
+    DispatcherThread()
+    {
+        m_thread.setEventDispatcher(new EngineEventDispatcher);
+        m_thread.start();
+        m_context.moveToThread(&m_thread);
+    }
+    ~DispatcherThread()
+    {
+        m_thread.quit();
+        m_thread.wait();
+    }
+    [[nodiscard]] QObject *context() { return &m_context; }
+    [[nodiscard]] QThread *thread() { return &m_thread; }
+    template<typename F>
+    void run(F &&f)
+    {
+        QMetaObject::invokeMethod(&m_context, std::forward<F>(f), Qt::BlockingQueuedConnection);
+    }
+
+private:
+    QThread m_thread;
+    QObject m_context;
+};
+
+} // namespace
+
+class TestEngineEventDispatcher : public QObject
+{
+    Q_OBJECT
+private slots:
+    void isTheThreadsDispatcher()
+    {
+        DispatcherThread t;
+        bool ours = false;
+        t.run([&] { ours = qobject_cast<EngineEventDispatcher *>(QAbstractEventDispatcher::instance()) != nullptr; });
+        QVERIFY(ours);
+    }
+
+    // Calls posted from another thread are run, in order, and a quit() ends the loop at once
+    // (a blocked ppoll() is woken).
+    void postedCallsAndQuit()
+    {
+        auto t = std::make_unique<DispatcherThread>();
+        std::atomic<int> sum{0};
+        QList<int> order;
+        for (int i = 1; i <= 100; ++i)
+            QMetaObject::invokeMethod(t->context(), [&order, &sum, i] { order.append(i); sum += i; });
+        QTRY_COMPARE_WITH_TIMEOUT(sum.load(), 5050, kWaitMs);
+        QCOMPARE(order.size(), 100);
+        QVERIFY(std::is_sorted(order.cbegin(), order.cend()));
+        QElapsedTimer clock;
+        clock.start();
+        t.reset(); // quit() and wait(): returns only once the loop has ended
+        QVERIFY(clock.elapsed() < kWaitMs);
+    }
+
+    // Single-shot and repeating timers of several intervals fire, at or after their time, and a
+    // timer stopped from its own timeout does not fire again.
+    void timers_data()
+    {
+        QTest::addColumn<int>("intervalMs");
+        QTest::addColumn<bool>("singleShot");
+        QTest::newRow("zero, single shot") << 0 << true;
+        QTest::newRow("zero, repeating") << 0 << false;
+        QTest::newRow("5 ms, single shot") << 5 << true;
+        QTest::newRow("20 ms, repeating") << 20 << false;
+    }
+    void timers()
+    {
+        QFETCH(int, intervalMs);
+        QFETCH(bool, singleShot);
+        DispatcherThread t;
+        std::atomic<int> fired{0};
+        std::atomic<bool> early{false};
+        QTimer *timer = nullptr;
+        QElapsedTimer clock;
+        t.run([&] {
+            timer = new QTimer(t.context());
+            timer->setTimerType(Qt::PreciseTimer);
+            timer->setSingleShot(singleShot);
+            timer->setInterval(intervalMs);
+            QObject::connect(timer, &QTimer::timeout, timer, [&, timer] {
+                const int n = ++fired;
+                if (clock.elapsed() < qint64(n) * intervalMs)
+                    early = true;
+                if (n == 3)
+                    timer->stop();
+            });
+            clock.start();
+            timer->start();
+        });
+        const int expected = singleShot ? 1 : 3;
+        QTRY_COMPARE_WITH_TIMEOUT(fired.load(), expected, kWaitMs);
+        QTest::qWait(intervalMs * 3 + 50);
+        QCOMPARE(fired.load(), expected); // stopped (or single shot): no more
+        QVERIFY(!early.load());
+        bool active = true;
+        t.run([&] { active = timer->isActive(); });
+        QVERIFY(!active);
+    }
+
+    // remainingTime() and registeredTimers() describe the armed timers.
+    void timerIntrospection()
+    {
+        DispatcherThread t;
+        int remaining = -2;
+        int registered = 0;
+        int unknown = 0;
+        t.run([&] {
+            auto *timer = new QTimer(t.context());
+            timer->start(60000);
+            auto *dispatcher = QAbstractEventDispatcher::instance();
+            remaining = dispatcher->remainingTime(timer->timerId());
+            const auto infos = dispatcher->registeredTimers(timer);
+            registered = int(infos.size());
+            if (!infos.isEmpty() && infos.first().interval != 60000)
+                registered = -1;
+            unknown = dispatcher->remainingTime(timer->timerId() + 1000);
+            timer->stop();
+            if (!dispatcher->registeredTimers(timer).isEmpty())
+                registered = -2;
+        });
+        QVERIFY2(remaining > 59000 && remaining <= 60000, qPrintable(QString::number(remaining)));
+        QCOMPARE(registered, 1);
+        QCOMPARE(unknown, -1);
+    }
+
+    // A read notifier wakes the thread when bytes arrive on its descriptor; disabled, it stays
+    // quiet; a write notifier fires on a writable descriptor.
+    void socketNotifiers()
+    {
+        int fds[2];
+        QCOMPARE(::socketpair(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK, 0, fds), 0);
+        auto closeFds = qScopeGuard([&] {
+            ::close(fds[0]);
+            ::close(fds[1]);
+        });
+        DispatcherThread t;
+        std::atomic<int> reads{0};
+        std::atomic<int> writes{0};
+        QByteArray got;
+        QSocketNotifier *reader = nullptr;
+        t.run([&] {
+            reader = new QSocketNotifier(fds[0], QSocketNotifier::Read, t.context());
+            QObject::connect(reader, &QSocketNotifier::activated, reader, [&] {
+                char buffer[64];
+                const ssize_t n = ::read(fds[0], buffer, sizeof buffer);
+                if (n > 0)
+                    got.append(buffer, n);
+                ++reads;
+            });
+            auto *writer = new QSocketNotifier(fds[0], QSocketNotifier::Write, t.context());
+            QObject::connect(writer, &QSocketNotifier::activated, writer, [&, writer] {
+                ++writes;
+                writer->setEnabled(false); // once is enough
+            });
+        });
+        QTRY_COMPARE_WITH_TIMEOUT(writes.load(), 1, kWaitMs);
+        QCOMPARE(reads.load(), 0);
+        QCOMPARE(::write(fds[1], "abc", 3), ssize_t(3));
+        QTRY_COMPARE_WITH_TIMEOUT(reads.load(), 1, kWaitMs);
+        t.run([&] { reader->setEnabled(false); });
+        QCOMPARE(::write(fds[1], "def", 3), ssize_t(3));
+        QTest::qWait(50);
+        QCOMPARE(reads.load(), 1);
+        t.run([&] { reader->setEnabled(true); });
+        QTRY_COMPARE_WITH_TIMEOUT(reads.load(), 2, kWaitMs);
+        QString text;
+        t.run([&] { text = QString::fromLatin1(got); });
+        QCOMPARE(text, QStringLiteral("abcdef"));
+        QCOMPARE(writes.load(), 1);
+    }
+
+    // deleteLater() in the thread deletes the object.
+    void deferredDelete()
+    {
+        DispatcherThread t;
+        QPointer<QObject> doomed;
+        t.run([&] {
+            doomed = new QObject;
+            doomed->deleteLater();
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(doomed.isNull(), kWaitMs);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestEngineEventDispatcher)
+#include "tst_engineeventdispatcher.moc"
