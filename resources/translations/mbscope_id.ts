@@ -274,9 +274,14 @@
 <context>
     <name>mbscope::ConnectionBar</name>
     <message>
-        <location filename="../../ui/connectionbar.cpp" line="+32"/>
+        <location filename="../../ui/connectionbar.cpp" line="+31"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modbus TCP Security (TLS)</source>
+        <translation>Modbus TCP Security (TLS)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -391,12 +396,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+175"/>
+        <location line="+199"/>
         <source>&amp;Connect</source>
         <translation>Sa&amp;mbungkan</translation>
     </message>
     <message>
-        <location line="-172"/>
+        <location line="-196"/>
         <source>Disconnect</source>
         <translation>Putuskan</translation>
     </message>
@@ -411,7 +416,7 @@
         <translation>Target yang pernah disambungkan</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+11"/>
         <source>&amp;Link:</source>
         <translation>&amp;Link:</translation>
     </message>
@@ -426,7 +431,7 @@
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+66"/>
         <source>No serial port found: plug in the adapter and press Refresh, or type the device path</source>
         <translation>Tidak ada port serial: colokkan adaptor lalu tekan Segarkan, atau ketik path perangkatnya</translation>
     </message>
@@ -466,12 +471,12 @@
         <translation>Host &apos;%1&apos; bukan nama host atau alamat IP: ketik alamatnya saja, port diisi di Port.</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+19"/>
         <source>This target cannot be used: %1</source>
         <translation>Target ini tidak bisa dipakai: %1</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>Dis&amp;connect</source>
         <translation>&amp;Putuskan</translation>
     </message>
@@ -489,6 +494,39 @@
         <location line="+4"/>
         <source>(no recent targets yet)</source>
         <translation>(belum ada target terakhir)</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::CsvExportAction</name>
+    <message>
+        <location filename="../../ui/csvexportaction.cpp" line="+11"/>
+        <source>Export table as &amp;CSV…</source>
+        <translation>Ekspor tabel sebagai &amp;CSV…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Save the table as comma-separated values</source>
+        <translation>Simpan tabel sebagai nilai yang dipisahkan koma</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Export table</source>
+        <translation>Ekspor tabel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV file (*.csv)</source>
+        <translation>Berkas CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Table saved to %1</source>
+        <translation>Tabel disimpan ke %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Table not saved: %1</source>
+        <translation>Tabel tidak disimpan: %1</translation>
     </message>
 </context>
 <context>
@@ -1904,6 +1942,385 @@
     </message>
 </context>
 <context>
+    <name>mbscope::HistogramChart</name>
+    <message>
+        <location filename="../../ui/histogramchart.cpp" line="+60"/>
+        <source>latency (%1)</source>
+        <translation>latensi (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>transactions</source>
+        <translation>transaksi</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>no answered transactions: no latency to show</source>
+        <translation>tidak ada transaksi yang terjawab: tidak ada latensi untuk ditampilkan</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>latency (%1), logarithmic</source>
+        <translation>latensi (%1), logaritmik</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::LatencyAnalysis</name>
+    <message>
+        <location filename="../../ui/latencyanalysis.cpp" line="+19"/>
+        <source>Latency histogram</source>
+        <translation>Histogram latensi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Compare</source>
+        <translation>Bandingkan</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::LatencyComparePanel</name>
+    <message>
+        <location filename="../../ui/latencycomparepanel.cpp" line="+64"/>
+        <source>A run (current poll, reference, capture) and a request item, or all of its transactions</source>
+        <translation>Satu run (polling saat ini, referensi, capture) dan satu item permintaan, atau semua transaksinya</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Linear bins</source>
+        <translation>Bin linear</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Logarithmic bins</source>
+        <translation>Bin logaritmik</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>against</source>
+        <translation>terhadap</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>%1 (%2 answered)</source>
+        <translation>%1 (%2 terjawab)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>median %1: %2 %3</source>
+        <translation>median %1: %2 %3</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>first</source>
+        <translation>pertama</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>second</source>
+        <translation>kedua</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::LatencyHistogramPanel</name>
+    <message>
+        <location filename="../../ui/latencyhistogrampanel.cpp" line="+45"/>
+        <source>Which run to show: the current poll, the kept reference or an opened capture</source>
+        <translation>Run mana yang ditampilkan: polling saat ini, referensi yang disimpan, atau capture yang dibuka</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>All transactions, or those of one request item of the poll</source>
+        <translation>Semua transaksi, atau transaksi satu item permintaan dari polling</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Linear bins</source>
+        <translation>Bin linear</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Logarithmic bins</source>
+        <translation>Bin logaritmik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bins of equal width, or bins a constant factor apart for a long tail</source>
+        <translation>Bin dengan lebar sama, atau bin berjarak faktor tetap untuk ekor yang panjang</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Keep as reference</source>
+        <translation>&amp;Simpan sebagai referensi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep the current poll&apos;s figures to compare later runs with (Compare tab)</source>
+        <translation>Simpan angka polling saat ini untuk dibandingkan dengan run berikutnya (tab Bandingkan)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Fit</source>
+        <translation>&amp;Paskan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show the whole histogram again after zooming or panning</source>
+        <translation>Tampilkan lagi seluruh histogram setelah zoom atau geser</translation>
+    </message>
+    <message>
+        <location line="+123"/>
+        <source>Overall</source>
+        <translation>Keseluruhan</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>min %1 %2</source>
+        <translation>min %1 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>median %1 %2</source>
+        <translation>median %1 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>p95 %1 %2</source>
+        <translation>p95 %1 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>p99 %1 %2</source>
+        <translation>p99 %1 %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>max %1 %2</source>
+        <translation>maks %1 %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 transactions, %2 answered</source>
+        <translation>%1 transaksi, %2 terjawab</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::LatencyRuns</name>
+    <message>
+        <location filename="../../ui/latencyruns.cpp" line="+53"/>
+        <source>Current poll</source>
+        <translation>Polling saat ini</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reference</source>
+        <translation>Referensi</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Capture: %1</source>
+        <translation>Capture: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>overall</source>
+        <translation>keseluruhan</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>item %1</source>
+        <translation>item %1</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::LatencyStatisticsModel</name>
+    <message>
+        <location filename="../../ui/latencystatisticsmodel.cpp" line="+38"/>
+        <source>Transactions</source>
+        <translation>Transaksi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ok</source>
+        <translation>Ok</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Exceptions</source>
+        <translation>Exception</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Exception %1 %2</source>
+        <translation>Exception %1 %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Timeouts</source>
+        <translation>Waktu habis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CRC errors</source>
+        <translation>Error CRC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Malformed</source>
+        <translation>Cacat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unexpected</source>
+        <translation>Tak terduga</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Late</source>
+        <translation>Terlambat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Link errors</source>
+        <translation>Error link</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Latency min</source>
+        <translation>Latensi min</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latency mean</source>
+        <translation>Latensi rata-rata</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latency median</source>
+        <translation>Latensi median</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latency p90</source>
+        <translation>Latensi p90</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latency p95</source>
+        <translation>Latensi p95</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latency p99</source>
+        <translation>Latensi p99</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latency max</source>
+        <translation>Latensi maks</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latency std. deviation</source>
+        <translation>Simpangan baku latensi</translation>
+    </message>
+    <message>
+        <location line="+77"/>
+        <source>–</source>
+        <translation>–</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Figure</source>
+        <translation>Besaran</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::LatencyTimeGraphs</name>
+    <message>
+        <location filename="../../ui/latencytimegraphs.cpp" line="+31"/>
+        <source>answered (%1)</source>
+        <translation>terjawab (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>exceptions (%1)</source>
+        <translation>exception (%1)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no usable answer (%1), drawn at 0</source>
+        <translation>tanpa jawaban yang bisa dipakai (%1), digambar di 0</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::LatencyTimePanel</name>
+    <message>
+        <location filename="../../ui/latencytimepanel.cpp" line="+23"/>
+        <source>&amp;Follow</source>
+        <translation>&amp;Ikuti</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>time since the first request (s)</source>
+        <translation>waktu sejak permintaan pertama (s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>latency (ms)</source>
+        <translation>latensi (ms)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no usable answer</source>
+        <translation>tanpa jawaban yang bisa dipakai</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Keep every transaction in view as new ones arrive</source>
+        <translation>Jaga semua transaksi tetap terlihat saat transaksi baru masuk</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>C&amp;lear</source>
+        <translation>&amp;Kosongkan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Forget the points shown; new transactions start a new time axis</source>
+        <translation>Lupakan titik yang ditampilkan; transaksi baru memulai sumbu waktu baru</translation>
+    </message>
+    <message>
+        <location line="+89"/>
+        <source>%1 transactions: %2 answered, %3 exceptions, %4 without a usable answer</source>
+        <translation>%1 transaksi: %2 terjawab, %3 exception, %4 tanpa jawaban yang bisa dipakai</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::LinkController</name>
     <message>
         <location filename="../../ui/linkcontroller.cpp" line="+66"/>
@@ -1916,7 +2333,7 @@
         <translation>Tidak tersambung</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+68"/>
         <source>Poll %1: %2 transactions, %3 ok, %4 failed</source>
         <translation>Polling %1: %2 transaksi, %3 ok, %4 gagal</translation>
     </message>
@@ -1987,7 +2404,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/mainwindow.cpp" line="+49"/>
+        <location filename="../../ui/mainwindow.cpp" line="+58"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -2015,6 +2432,11 @@
         <location line="+7"/>
         <source>Registers</source>
         <translation>Register</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Analysis</source>
+        <translation>Analisis</translation>
     </message>
     <message>
         <location line="+38"/>
@@ -2057,12 +2479,12 @@
         <translation>Susun dengan &amp;formulir</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>&amp;View</source>
         <translation>&amp;Tampilan</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Find in traffic</source>
         <translation>&amp;Cari di lalu lintas</translation>
     </message>
@@ -2115,59 +2537,59 @@
     <message>
         <location filename="../../ui/plancontroller.cpp" line="+41"/>
         <source>The plan is already running.</source>
-        <translation type="unfinished"></translation>
+        <translation>Rencana uji sudah berjalan.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The session has no test plan: add a &quot;plan&quot; to the session document (see docs/sessions.md).</source>
-        <translation type="unfinished"></translation>
+        <translation>Sesi ini tidak punya rencana uji: tambahkan &quot;plan&quot; ke dokumen sesi (lihat docs/sessions.md).</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stop the poll first: the plan&apos;s steps need the device to themselves.</source>
-        <translation type="unfinished"></translation>
+        <translation>Hentikan polling dulu: langkah-langkah rencana uji perlu memakai perangkat sendirian.</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Connect to a device, or save a target in the session, to run the plan against.</source>
-        <translation type="unfinished"></translation>
+        <translation>Sambungkan ke perangkat, atau simpan target di sesi, untuk menjalankan rencana uji terhadapnya.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The session&apos;s target %1 is not a target: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Target sesi %1 bukan target: %2</translation>
     </message>
     <message numerus="yes">
         <location line="+50"/>
         <source>%n step(s): %1 passed, %2 failed, %3 errors, %4 skipped in %5 s against %6.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n langkah: %1 lulus, %2 gagal, %3 error, %4 dilewati dalam %5 s terhadap %6.</numerusform>
         </translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1 The link failed: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Link gagal: %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 Stopped before the end.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Dihentikan sebelum selesai.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Passed. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Lulus. %1</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Failed. %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Gagal. %1</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Run the plan before exporting its results.</source>
-        <translation type="unfinished"></translation>
+        <translation>Jalankan rencana uji sebelum mengekspor hasilnya.</translation>
     </message>
 </context>
 <context>
@@ -2175,52 +2597,52 @@
     <message>
         <location filename="../../ui/planpanel.cpp" line="+20"/>
         <source>Export the results as JUnit XML</source>
-        <translation type="unfinished"></translation>
+        <translation>Ekspor hasil sebagai JUnit XML</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>JUnit XML (*.xml);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>JUnit XML (*.xml);;Semua berkas (*)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Run plan</source>
-        <translation type="unfinished"></translation>
+        <translation>Jalankan rencana</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Run the session&apos;s test plan against the connected device (or the session&apos;s target)</source>
-        <translation type="unfinished"></translation>
+        <translation>Jalankan rencana uji sesi terhadap perangkat yang tersambung (atau target sesi)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Hentikan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Export JUnit XML…</source>
-        <translation type="unfinished"></translation>
+        <translation>Ekspor JUnit XML…</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Open a session with a test plan, then run it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Buka sesi yang punya rencana uji, lalu jalankan.</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>Running %1 against %2…</source>
-        <translation type="unfinished"></translation>
+        <translation>Menjalankan %1 terhadap %2…</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>the plan</source>
-        <translation type="unfinished"></translation>
+        <translation>rencana uji</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>%1 JUnit XML written to %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 JUnit XML ditulis ke %2.</translation>
     </message>
 </context>
 <context>
@@ -2228,94 +2650,102 @@
     <message>
         <location filename="../../ui/planresultmodel.cpp" line="+37"/>
         <source>PASS</source>
-        <translation type="unfinished"></translation>
+        <translation>LULUS</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>FAIL</source>
-        <translation type="unfinished"></translation>
+        <translation>GAGAL</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>ERROR</source>
-        <translation type="unfinished"></translation>
+        <translation>ERROR</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>SKIP</source>
-        <translation type="unfinished"></translation>
+        <translation>LEWATI</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>no answer</source>
-        <translation type="unfinished"></translation>
+        <translation>tanpa jawaban</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>answer %1</source>
-        <translation type="unfinished"></translation>
+        <translation>jawaban %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 = %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 = %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>exception 0x%1</source>
-        <translation type="unfinished"></translation>
+        <translation>exception 0x%1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>any answer</source>
-        <translation type="unfinished"></translation>
+        <translation>jawaban apa pun</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>the poll runs</source>
-        <translation type="unfinished"></translation>
+        <translation>polling berjalan</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>waits %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>menunggu %1 ms</translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
         <source>repeats %n time(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>diulang %n kali</numerusform>
         </translation>
     </message>
     <message>
         <location line="+62"/>
         <source>Result</source>
-        <translation type="unfinished"></translation>
+        <translation>Hasil</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Langkah</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Expected</source>
-        <translation type="unfinished"></translation>
+        <translation>Diharapkan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>What came</source>
-        <translation type="unfinished"></translation>
+        <translation>Yang datang</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Why it failed</source>
-        <translation type="unfinished"></translation>
+        <translation>Mengapa gagal</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>ms</source>
-        <translation type="unfinished"></translation>
+        <translation>ms</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::PlotCursor</name>
+    <message>
+        <location filename="../../ui/plotcursor.cpp" line="+111"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2323,37 +2753,37 @@
     <message>
         <location filename="../../ui/plotexportmenu.cpp" line="+18"/>
         <source>&amp;Save plot as…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Simpan plot sebagai…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Copy plot</source>
-        <translation type="unfinished"></translation>
+        <translation>Salin &amp;plot</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Save the plot as a PNG image, an SVG drawing or a PDF document</source>
-        <translation type="unfinished"></translation>
+        <translation>Simpan plot sebagai gambar PNG, gambar SVG atau dokumen PDF</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Copy the plot to the clipboard as an image</source>
-        <translation type="unfinished"></translation>
+        <translation>Salin plot ke clipboard sebagai gambar</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>Save plot</source>
-        <translation type="unfinished"></translation>
+        <translation>Simpan plot</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Plot saved to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Plot disimpan ke %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Plot not saved: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Plot tidak disimpan: %1</translation>
     </message>
 </context>
 <context>
@@ -2361,32 +2791,32 @@
     <message>
         <location filename="../../ui/plotsaver.cpp" line="+55"/>
         <source>&apos;%1&apos;: this mbscope was built without Qt SVG (Debian: qt6-svg-dev), so it cannot write SVG; use .png or .pdf</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos;: mbscope ini dibuat tanpa Qt SVG (Debian: qt6-svg-dev), jadi tidak dapat menulis SVG; pakai .png atau .pdf</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&apos;%1&apos;: the plot&apos;s format comes from the file name, which must end in .png, .svg or .pdf</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos;: format plot diambil dari nama berkas, yang harus berakhiran .png, .svg atau .pdf</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>PNG image (*.png)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gambar PNG (*.png)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>SVG drawing (*.svg)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gambar SVG (*.svg)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>PDF document (*.pdf)</source>
-        <translation type="unfinished"></translation>
+        <translation>Dokumen PDF (*.pdf)</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>cannot write %1</source>
-        <translation type="unfinished"></translation>
+        <translation>tidak dapat menulis %1</translation>
     </message>
 </context>
 <context>
@@ -2620,152 +3050,152 @@
     <message>
         <location filename="../../ui/registertable.cpp" line="+37"/>
         <source>AB (high byte first)</source>
-        <translation type="unfinished"></translation>
+        <translation>AB (byte atas dulu)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>BA (byte swap)</source>
-        <translation type="unfinished"></translation>
+        <translation>BA (tukar byte)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (big endian)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (big endian)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 (word swap)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (tukar word)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 (byte swap)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (tukar byte)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 (little endian)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (little endian)</translation>
     </message>
     <message>
         <location line="+43"/>
         <source>Write requested: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Penulisan diminta: %1</translation>
     </message>
     <message>
         <location line="+36"/>
         <source>What the registers of the current value column stand for</source>
-        <translation type="unfinished"></translation>
+        <translation>Arti register pada kolom nilai saat ini</translation>
     </message>
     <message>
         <location line="+5"/>
         <source> Order </source>
-        <translation type="unfinished"></translation>
+        <translation> Urutan </translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Word and byte order of the current value column: the order the value&apos;s bytes travel in, most significant named A</source>
-        <translation type="unfinished"></translation>
+        <translation>Urutan word dan byte kolom nilai saat ini: urutan byte nilai saat dikirim, yang paling signifikan dinamai A</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>+ Column</source>
-        <translation type="unfinished"></translation>
+        <translation>+ Kolom</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Add a value column showing the same registers in another format</source>
-        <translation type="unfinished"></translation>
+        <translation>Tambahkan kolom nilai yang menampilkan register yang sama dalam format lain</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Column</source>
-        <translation type="unfinished"></translation>
+        <translation>Kolom</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Remove the current value column</source>
-        <translation type="unfinished"></translation>
+        <translation>Hapus kolom nilai saat ini</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Write with </source>
-        <translation type="unfinished"></translation>
+        <translation>Tulis dengan </translation>
     </message>
     <message>
         <location line="+3"/>
         <source>The function an edited value is written with</source>
-        <translation type="unfinished"></translation>
+        <translation>Fungsi yang dipakai untuk menulis nilai yang disunting</translation>
     </message>
     <message>
         <location line="+52"/>
         <source>Column %1 </source>
-        <translation type="unfinished"></translation>
+        <translation>Kolom %1 </translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Profile: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Profile: none</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil: tidak ada</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Names, scaling and units come from the device profile %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nama, skala dan satuan diambil dari profil perangkat %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No device profile: no names or scaling</source>
-        <translation type="unfinished"></translation>
+        <translation>Tanpa profil perangkat: tanpa nama atau skala</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>read-only (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>hanya-baca (%1)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>05 Write Single Coil</source>
-        <translation type="unfinished"></translation>
+        <translation>05 Tulis Satu Coil</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>0F Write Multiple Coils</source>
-        <translation type="unfinished"></translation>
+        <translation>0F Tulis Banyak Coil</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>06 or 10 by width</source>
-        <translation type="unfinished"></translation>
+        <translation>06 atau 10 sesuai lebar</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>06 Write Single Register</source>
-        <translation type="unfinished"></translation>
+        <translation>06 Tulis Satu Register</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>10 Write Multiple Registers</source>
-        <translation type="unfinished"></translation>
+        <translation>10 Tulis Banyak Register</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>Column %1 format</source>
-        <translation type="unfinished"></translation>
+        <translation>Format kolom %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Order</source>
-        <translation type="unfinished"></translation>
+        <translation>Urutan</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Use this order in every column</source>
-        <translation type="unfinished"></translation>
+        <translation>Pakai urutan ini di semua kolom</translation>
     </message>
 </context>
 <context>
@@ -2773,109 +3203,110 @@
     <message>
         <location filename="../../ui/registertablemodel.cpp" line="+33"/>
         <source>%1, %2 (%3)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, %2 (%3)</translation>
     </message>
     <message>
         <location line="+31"/>
         <source>answer not shown: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>jawaban tidak ditampilkan: %1</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>answer not shown: the transaction ended with %1</source>
-        <translation type="unfinished"></translation>
+        <translation>jawaban tidak ditampilkan: transaksi berakhir dengan %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>answer not shown: the transaction ended with %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>jawaban tidak ditampilkan: transaksi berakhir dengan %1: %2</translation>
     </message>
     <message>
         <location line="+197"/>
         <source>register %1 (PDU address %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>register %1 (alamat PDU %2)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>coil %1 (PDU address %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>coil %1 (alamat PDU %2)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>discrete input %1 (PDU address %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>discrete input %1 (alamat PDU %2)</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>1  ON</source>
-        <translation type="unfinished"></translation>
+        <translation>1  ON</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>0  OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>0  OFF</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>↑ %1 from %2</source>
-        <translation type="unfinished"></translation>
+        <translation>↑ %1 dari %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Register %1 is register %2 of the %3 registers of the %4 value at %5</source>
-        <translation type="unfinished"></translation>
+        <translation>Register %1 adalah register ke-%2 dari %3 register nilai %4 di %5</translation>
     </message>
     <message>
         <location line="+9"/>
         <location line="+49"/>
         <source>(%1 of %2 registers)</source>
-        <translation type="unfinished"></translation>
+        <translation>(%1 dari %2 register)</translation>
     </message>
     <message>
         <location line="-47"/>
         <source>%1 needs %2 registers from %3; the answer ends after %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 memerlukan %2 register mulai %3; jawaban berakhir setelah %4</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1 registers %2-%3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 register %2-%3</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1
 %2, on the wire %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+%2, di jalur %3</translation>
     </message>
     <message>
         <location line="+15"/>
         <source> (register %1 of %2)</source>
-        <translation type="unfinished"></translation>
+        <translation> (register %1 dari %2)</translation>
     </message>
     <message>
         <location line="+64"/>
         <source>The profile names no value at this address</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil tidak menamai nilai apa pun di alamat ini</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 as %2, value = raw × %3 + %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 sebagai %2, nilai = mentah × %3 + %4</translation>
     </message>
     <message>
         <location line="+91"/>
         <source>PDU address</source>
-        <translation type="unfinished"></translation>
+        <translation>Alamat PDU</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Modicon (%1xxxx, from 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Modicon (%1xxxx, mulai 1)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Nama</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2885,78 +3316,213 @@
     <message>
         <location line="+2"/>
         <source>Scaled</source>
-        <translation type="unfinished"></translation>
+        <translation>Berskala</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>The 0-based address the request carries (V1.1b3, 4.4)</source>
-        <translation type="unfinished"></translation>
+        <translation>Alamat berbasis 0 yang dibawa permintaan (V1.1b3, 4.4)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Modicon reference: the table digit %1, then the 1-based element number (PDU address + 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Referensi Modicon: digit tabel %1, lalu nomor elemen berbasis 1 (alamat PDU + 1)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Names from the profile %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nama dari profil %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>No profile: no names</source>
-        <translation type="unfinished"></translation>
+        <translation>Tanpa profil: tanpa nama</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1
 Right-click to change the format</source>
-        <translation type="unfinished"></translation>
+        <translation>%1
+Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The profile&apos;s format, scale, offset and unit: value = raw × scale + offset</source>
-        <translation type="unfinished"></translation>
+        <translation>Format, skala, offset dan satuan dari profil: nilai = mentah × skala + offset</translation>
     </message>
     <message>
         <location line="+38"/>
         <source>&apos;%1&apos; is not a number: the scaled value of %2 takes a decimal number</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; bukan angka: nilai berskala %2 harus berupa bilangan desimal</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 %2 (raw = (value - %3) / %4): %5</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 (mentah = (nilai - %3) / %4): %5</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>%1: %2 are read-only; only coils and holding registers can be written</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 hanya-baca; hanya coil dan holding register yang bisa ditulis</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: this cell cannot be written (edit a value&apos;s first register)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: sel ini tidak bisa ditulis (sunting register pertama suatu nilai)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1: &apos;%2&apos; is not a coil value: expected 1 or 0 (on/off, true/false)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: &apos;%2&apos; bukan nilai coil: seharusnya 1 atau 0 (on/off, true/false)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1, %2</source>
-        <translation type="unfinished">%1: %2 {1,?}</translation>
+        <translation>%1, %2</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>no cell to write</source>
-        <translation type="unfinished"></translation>
+        <translation>tidak ada sel untuk ditulis</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>not written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>tidak ditulis: %1</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::RegisterTrendPanel</name>
+    <message>
+        <location filename="../../ui/registertrendpanel.cpp" line="+51"/>
+        <source>&amp;Follow</source>
+        <translation>&amp;Ikuti</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Add &amp;selected register</source>
+        <translation>Tambahkan register yang &amp;dipilih</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Checked registers are plotted against time</source>
+        <translation>Register yang dicentang diplot terhadap waktu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Holding registers</source>
+        <translation>Holding register</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Input registers</source>
+        <translation>Input register</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Coils</source>
+        <translation>Coil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Discrete inputs</source>
+        <translation>Discrete input</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Add</source>
+        <translation>&amp;Tambah</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Plot the register at this address, read with this format</source>
+        <translation>Plot register di alamat ini, dibaca dengan format ini</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Table:</source>
+        <translation>Tabel:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Address:</source>
+        <translation>Alamat:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Format:</source>
+        <translation>Format:</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>time since the first answer (s)</source>
+        <translation>waktu sejak jawaban pertama (s)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>scaled value</source>
+        <translation>nilai berskala</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Keep every value in view as new answers arrive</source>
+        <translation>Jaga semua nilai tetap terlihat saat jawaban baru masuk</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>C&amp;lear</source>
+        <translation>&amp;Kosongkan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Forget the values plotted; the registers stay chosen</source>
+        <translation>Lupakan nilai yang diplot; register tetap terpilih</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Plot the register selected in the Registers table, in the format of its column</source>
+        <translation>Plot register yang dipilih di tabel Register, dalam format kolomnya</translation>
+    </message>
+    <message>
+        <location line="+131"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>No register table to take a register from</source>
+        <translation>Tidak ada tabel register untuk diambil register-nya</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Select a register in the Registers table first</source>
+        <translation>Pilih dulu register di tabel Register</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <location line="+27"/>
+        <source>Plotting %1</source>
+        <translation>Memplot %1</translation>
+    </message>
+    <message>
+        <location line="-19"/>
+        <source>Not added: the address is wrong: %1</source>
+        <translation>Tidak ditambahkan: alamatnya salah: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not added: %1</source>
+        <translation>Tidak ditambahkan: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Not added: a %1 at PDU address %2 would go past the last address (65535)</source>
+        <translation>Tidak ditambahkan: %1 di alamat PDU %2 akan melewati alamat terakhir (65535)</translation>
     </message>
 </context>
 <context>
@@ -2964,95 +3530,95 @@ Right-click to change the format</source>
     <message>
         <location filename="../../ui/replaycontroller.cpp" line="+65"/>
         <source>A capture is still being read.</source>
-        <translation type="unfinished"></translation>
+        <translation>Capture masih dibaca.</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Stop the replay before opening another capture.</source>
-        <translation type="unfinished"></translation>
+        <translation>Hentikan replay sebelum membuka capture lain.</translation>
     </message>
     <message>
         <location line="+39"/>
         <source>%1 cannot be read: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 tidak dapat dibaca: %2</translation>
     </message>
     <message numerus="yes">
         <location line="+9"/>
         <source>%1 (%2): %n transaction(s), %3 ok, %4 failed</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 (%2): %n transaksi, %3 ok, %4 gagal</numerusform>
         </translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1; latency median %2 ms, p95 %3 ms, max %4 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1; latensi median %2 ms, p95 %3 ms, maks %4 ms</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1. The file is damaged: %2; everything before it was read.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. Berkasnya rusak: %2; semua yang sebelumnya sudah dibaca.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1. No Modbus requests were found on the ports looked at: set the Modbus TCP and RTU ports.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. Tidak ada permintaan Modbus di port yang diperiksa: atur port Modbus TCP dan RTU.</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>A replay is already running.</source>
-        <translation type="unfinished"></translation>
+        <translation>Replay sudah berjalan.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The capture is still being read.</source>
-        <translation type="unfinished"></translation>
+        <translation>Capture masih dibaca.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Open a capture or a session with recorded requests first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Buka dulu capture atau sesi yang berisi permintaan terekam.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Connect to the device to replay to first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Sambungkan dulu ke perangkat tujuan replay.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stop the poll first: a replay sends one request at a time, as they were recorded.</source>
-        <translation type="unfinished"></translation>
+        <translation>Hentikan polling dulu: replay mengirim satu permintaan per kali, sesuai rekamannya.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 is a delimited link: it carries no Modbus framing to replay into.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 adalah link berdelimiter: tidak membawa framing Modbus untuk replay.</translation>
     </message>
     <message>
         <location line="+46"/>
         <source>The replay stopped: %1. %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Replay berhenti: %1. %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stopped after %1 of %2 requests. %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Dihentikan setelah %1 dari %2 permintaan. %3</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Open a capture or a session with recorded answers first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Buka dulu capture atau sesi yang berisi jawaban terekam.</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Not serving.</source>
-        <translation type="unfinished"></translation>
+        <translation>Tidak melayani.</translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
         <source>Serving the recorded answers of %1 on %2 (%n distinct request(s)): %3 answers served, %4 silences kept, %5 requests never recorded.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Melayani jawaban terekam dari %1 di %2 (%n permintaan berbeda): %3 jawaban dilayani, %4 diam dipertahankan, %5 permintaan tidak pernah terekam.</numerusform>
         </translation>
     </message>
 </context>
@@ -3061,17 +3627,17 @@ Right-click to change the format</source>
     <message>
         <location filename="../../ui/replaydifferencesmodel.cpp" line="+79"/>
         <source>the same</source>
-        <translation type="unfinished"></translation>
+        <translation>sama</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>values</source>
-        <translation type="unfinished"></translation>
+        <translation>nilai</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>byte</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3081,7 +3647,7 @@ Right-click to change the format</source>
     <message>
         <location line="+2"/>
         <source>outcome</source>
-        <translation type="unfinished"></translation>
+        <translation>hasil</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3091,29 +3657,29 @@ Right-click to change the format</source>
     <message>
         <location line="+2"/>
         <source>latency</source>
-        <translation type="unfinished"></translation>
+        <translation>latensi</translation>
     </message>
     <message>
         <location line="+62"/>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>No answers replayed yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Belum ada jawaban yang di-replay.</translation>
     </message>
     <message numerus="yes">
         <location line="+1"/>
         <source>%n answer(s) replayed, %1 differ: %2.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n jawaban di-replay, %1 berbeda: %2.</numerusform>
         </translation>
     </message>
     <message>
         <location line="+67"/>
         <source>#</source>
-        <translation type="unfinished"></translation>
+        <translation>#</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3123,32 +3689,32 @@ Right-click to change the format</source>
     <message>
         <location line="+2"/>
         <source>Recorded answer</source>
-        <translation type="unfinished"></translation>
+        <translation>Jawaban terekam</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>New answer</source>
-        <translation type="unfinished"></translation>
+        <translation>Jawaban baru</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>What differs</source>
-        <translation type="unfinished"></translation>
+        <translation>Yang berbeda</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Differences</source>
-        <translation type="unfinished"></translation>
+        <translation>Perbedaan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Recorded ms</source>
-        <translation type="unfinished"></translation>
+        <translation>ms terekam</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Now ms</source>
-        <translation type="unfinished"></translation>
+        <translation>ms sekarang</translation>
     </message>
 </context>
 <context>
@@ -3156,160 +3722,160 @@ Right-click to change the format</source>
     <message>
         <location filename="../../ui/replaypanel.cpp" line="+29"/>
         <source>Open a capture or a session</source>
-        <translation type="unfinished"></translation>
+        <translation>Buka capture atau sesi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Captures and sessions (*.pcap *.pcapng *.cap *.json *.journal);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Capture dan sesi (*.pcap *.pcapng *.cap *.json *.journal);;Semua berkas (*)</translation>
     </message>
     <message numerus="yes">
         <location line="+11"/>
         <source>Replaying %n recorded request(s) to the target…</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Me-replay %n permintaan terekam ke target…</numerusform>
         </translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Open capture…</source>
-        <translation type="unfinished"></translation>
+        <translation>Buka capture…</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>A pcap or pcapng capture, a traffic journal, or a session document with captured traffic</source>
-        <translation type="unfinished"></translation>
+        <translation>Capture pcap atau pcapng, jurnal lalu lintas, atau dokumen sesi yang berisi lalu lintas terekam</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>No recording opened.</source>
-        <translation type="unfinished"></translation>
+        <translation>Belum ada rekaman yang dibuka.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Server ports carrying Modbus TCP or Modbus UDP in a capture, separated by commas</source>
-        <translation type="unfinished"></translation>
+        <translation>Port server yang membawa Modbus TCP atau Modbus UDP di capture, dipisahkan koma</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>e.g. 4001</source>
-        <translation type="unfinished"></translation>
+        <translation>mis. 4001</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Server ports carrying RTU frames over TCP or UDP in a capture (a serial device server)</source>
-        <translation type="unfinished"></translation>
+        <translation>Port server yang membawa frame RTU lewat TCP atau UDP di capture (serial device server)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Modbus TCP ports</source>
-        <translation type="unfinished"></translation>
+        <translation>Port Modbus TCP</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>RTU ports</source>
-        <translation type="unfinished"></translation>
+        <translation>Port RTU</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>As recorded</source>
-        <translation type="unfinished"></translation>
+        <translation>Sesuai rekaman</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>2 times faster</source>
-        <translation type="unfinished"></translation>
+        <translation>2 kali lebih cepat</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>10 times faster</source>
-        <translation type="unfinished"></translation>
+        <translation>10 kali lebih cepat</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Back to back</source>
-        <translation type="unfinished"></translation>
+        <translation>Tanpa jeda</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Replay to the target</source>
-        <translation type="unfinished"></translation>
+        <translation>Replay ke target</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Send the recorded requests to the connected device and compare each answer with the recorded one</source>
-        <translation type="unfinished"></translation>
+        <translation>Kirim permintaan terekam ke perangkat yang tersambung dan bandingkan setiap jawaban dengan jawaban terekam</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stop</source>
-        <translation type="unfinished"></translation>
+        <translation>Hentikan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Show matching answers</source>
-        <translation type="unfinished"></translation>
+        <translation>Tampilkan jawaban yang sama</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Kecepatan</translation>
     </message>
     <message>
         <location line="+30"/>
         <source>Where the recording answers as a device: tcp://, rtu-tcp://, udp://, rtu://… (port 0: any free port)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempat rekaman menjawab sebagai perangkat: tcp://, rtu-tcp://, udp://, rtu://… (port 0: port bebas mana saja)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Answer other requests with exception 0B</source>
-        <translation type="unfinished"></translation>
+        <translation>Jawab permintaan lain dengan exception 0B</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Leave other requests unanswered</source>
-        <translation type="unfinished"></translation>
+        <translation>Biarkan permintaan lain tidak dijawab</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+92"/>
         <source>Serve</source>
-        <translation type="unfinished"></translation>
+        <translation>Layani</translation>
     </message>
     <message>
         <location line="-91"/>
         <source>Answer with the recorded answers on this endpoint, matched by unit and request</source>
-        <translation type="unfinished"></translation>
+        <translation>Jawab dengan jawaban terekam di endpoint ini, dicocokkan menurut unit dan permintaan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Serve on</source>
-        <translation type="unfinished"></translation>
+        <translation>Layani di</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>Modbus TCP ports: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Port Modbus TCP: %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>RTU ports: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Port RTU: %1</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Reading %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>Membaca %1…</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Stopped serving.</source>
-        <translation type="unfinished"></translation>
+        <translation>Berhenti melayani.</translation>
     </message>
     <message>
         <location line="+32"/>
         <source>Stop serving</source>
-        <translation type="unfinished"></translation>
+        <translation>Berhenti melayani</translation>
     </message>
 </context>
 <context>
@@ -3317,7 +3883,7 @@ Right-click to change the format</source>
     <message>
         <location filename="../../ui/replayserver.cpp" line="+51"/>
         <source>Cannot serve the recording on %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Tidak dapat melayani rekaman di %1: %2</translation>
     </message>
 </context>
 <context>
@@ -3661,12 +4227,12 @@ Right-click to change the format</source>
     <message>
         <location filename="../../ui/sessioncontroller.cpp" line="+46"/>
         <source>Unsaved changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Perubahan belum disimpan</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>The session %1 has changes that are not saved.</source>
-        <translation type="unfinished"></translation>
+        <translation>Sesi %1 punya perubahan yang belum disimpan.</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -3676,72 +4242,72 @@ Right-click to change the format</source>
     <message>
         <location line="+1"/>
         <source>%1 was not opened; nothing was changed.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 tidak dibuka; tidak ada yang diubah.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>mbscope sessions (*.mbscope.json *.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sesi mbscope (*.mbscope.json *.json);;Semua berkas (*)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Save session</source>
-        <translation type="unfinished"></translation>
+        <translation>Simpan sesi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Open session</source>
-        <translation type="unfinished"></translation>
+        <translation>Buka sesi</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>&amp;New session</source>
-        <translation type="unfinished"></translation>
+        <translation>Sesi &amp;baru</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Open session…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Buka sesi…</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Open &amp;recent</source>
-        <translation type="unfinished"></translation>
+        <translation>Buka yang &amp;terakhir</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>&amp;Save session</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Simpan sesi</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Save session &amp;as…</source>
-        <translation type="unfinished"></translation>
+        <translation>Simpan sesi seb&amp;agai…</translation>
     </message>
     <message>
         <location line="+152"/>
         <source>line %1, column %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>baris %1, kolom %2: %3</translation>
     </message>
     <message>
         <location line="+63"/>
         <source>(untitled)</source>
-        <translation type="unfinished"></translation>
+        <translation>(tanpa judul)</translation>
     </message>
     <message>
         <location line="+32"/>
         <source>untitled session%1 — mbscope</source>
-        <translation type="unfinished"></translation>
+        <translation>sesi tanpa judul%1 — mbscope</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1%2 — mbscope</source>
-        <translation type="unfinished"></translation>
+        <translation>%1%2 — mbscope</translation>
     </message>
     <message>
         <location line="+39"/>
         <source>(none yet)</source>
-        <translation type="unfinished"></translation>
+        <translation>(belum ada)</translation>
     </message>
 </context>
 <context>
@@ -3749,57 +4315,57 @@ Right-click to change the format</source>
     <message>
         <location filename="../../ui/sessiontools.cpp" line="+42"/>
         <source>Replay</source>
-        <translation type="unfinished"></translation>
+        <translation>Replay</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Test plan</source>
-        <translation type="unfinished"></translation>
+        <translation>Rencana uji</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>&amp;Session</source>
-        <translation type="unfinished"></translation>
+        <translation>Se&amp;si</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Open capture for analysis and replay…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Buka capture untuk analisis dan replay…</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>&amp;Analyse the session&apos;s capture</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Analisis capture sesi</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&amp;Replay to the target</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Replay ke target</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>S&amp;top the replay</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hentikan replay</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Ser&amp;ve the recorded answers</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Layani jawaban terekam</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Run the test &amp;plan</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Jalankan rencana uji</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Stop the test p&amp;lan</source>
-        <translation type="unfinished"></translation>
+        <translation>H&amp;entikan rencana uji</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>E&amp;xport test results as JUnit XML…</source>
-        <translation type="unfinished"></translation>
+        <translation>E&amp;kspor hasil uji sebagai JUnit XML…</translation>
     </message>
 </context>
 <context>
@@ -3812,33 +4378,33 @@ Right-click to change the format</source>
     <message>
         <location line="+24"/>
         <source>Delay the answer</source>
-        <translation type="unfinished"></translation>
+        <translation>Tunda jawaban</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Drop the answer</source>
-        <translation type="unfinished"></translation>
+        <translation>Buang jawaban</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Wrong CRC or LRC</source>
-        <translation type="unfinished"></translation>
+        <translation>CRC atau LRC salah</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Exception instead of the answer</source>
-        <translation type="unfinished"></translation>
+        <translation>Exception sebagai ganti jawaban</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Fault:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Gangguan:</translation>
     </message>
     <message>
         <location line="+5"/>
         <location line="+243"/>
         <source>any unit</source>
-        <translation type="unfinished"></translation>
+        <translation>unit apa pun</translation>
     </message>
     <message>
         <location line="-242"/>
@@ -3849,225 +4415,226 @@ Right-click to change the format</source>
         <location line="+7"/>
         <location line="+236"/>
         <source>any function</source>
-        <translation type="unfinished"></translation>
+        <translation>fungsi apa pun</translation>
     </message>
     <message>
         <location line="-235"/>
         <source>Function &amp;code:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kode fungsi:</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>The share of matching answers the rule changes: 1 for every one, 0.1 for one in ten.</source>
-        <translation type="unfinished"></translation>
+        <translation>Porsi jawaban yang cocok yang diubah aturan ini: 1 untuk semuanya, 0.1 untuk satu dari sepuluh.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Probability:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Peluang:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>fixed</source>
-        <translation type="unfinished"></translation>
+        <translation>tetap</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>uniform</source>
-        <translation type="unfinished"></translation>
+        <translation>seragam</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>normal</source>
-        <translation type="unfinished"></translation>
+        <translation>normal</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>exponential</source>
-        <translation type="unfinished"></translation>
+        <translation>eksponensial</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Distribution:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Distribusi:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Delay:</source>
-        <translation type="unfinished"></translation>
+        <translation>Tunda:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Mean:</source>
-        <translation type="unfinished"></translation>
+        <translation>Rata-rata:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Standard deviation:</source>
-        <translation type="unfinished"></translation>
+        <translation>Simpangan baku:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>At least:</source>
-        <translation type="unfinished"></translation>
+        <translation>Minimal:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>At most:</source>
-        <translation type="unfinished"></translation>
+        <translation>Maksimal:</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>01 illegal function, 02 illegal data address, 03 illegal data value, 04 server device failure, 06 server device busy, 0B gateway target failed to respond.</source>
-        <translation type="unfinished"></translation>
+        <translation>01 fungsi tidak sah, 02 alamat data tidak sah, 03 nilai data tidak sah, 04 kegagalan perangkat server, 06 perangkat server sibuk, 0B perangkat tujuan gateway tidak menjawab.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>E&amp;xception code:</source>
-        <translation type="unfinished"></translation>
+        <translation>Kode e&amp;xception:</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Add rule</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Tambah aturan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Adds the rule to those in force: the simulator&apos;s next request sees it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Menambahkan aturan ke aturan yang berlaku: permintaan berikutnya ke simulator sudah terkena.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Rules in force:</source>
-        <translation type="unfinished"></translation>
+        <translation>Aturan yang berlaku:</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&amp;Remove</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hapus</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;No faults</source>
-        <translation type="unfinished"></translation>
+        <translation>Tanpa ga&amp;ngguan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Removes every rule: correct answers from the next request on.</source>
-        <translation type="unfinished"></translation>
+        <translation>Menghapus semua aturan: jawaban benar mulai permintaan berikutnya.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Load rules file...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Muat berkas aturan...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Replaces the rules by those of a faults file (the format of mbscope simulate --faults).</source>
-        <translation type="unfinished"></translation>
+        <translation>Mengganti aturan dengan isi berkas gangguan (format mbscope simulate --faults).</translation>
     </message>
     <message>
         <location line="+65"/>
         <source>Not added: a uniform delay needs &apos;At most&apos; (%1 ms) at or above &apos;At least&apos; (%2 ms).</source>
-        <translation type="unfinished"></translation>
+        <translation>Tidak ditambahkan: tunda seragam memerlukan &apos;Maksimal&apos; (%1 ms) sama dengan atau di atas &apos;Minimal&apos; (%2 ms).</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Added: %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ditambahkan: %1.</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>No fault rules: the simulator answers correctly from the next request on.</source>
-        <translation type="unfinished"></translation>
+        <translation>Tanpa aturan gangguan: simulator menjawab dengan benar mulai permintaan berikutnya.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The rules file does not read; the rules in force stay:
 %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Berkas aturan tidak dapat dibaca; aturan yang berlaku tetap:
+%1</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
         <source>%n rule(s) from %1, seed %2.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n aturan dari %1, seed %2.</numerusform>
         </translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Load fault rules</source>
-        <translation type="unfinished"></translation>
+        <translation>Muat aturan gangguan</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Fault rules (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aturan gangguan (*.json);;Semua berkas (*)</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>(none: every answer is correct)</source>
-        <translation type="unfinished"></translation>
+        <translation>(tidak ada: setiap jawaban benar)</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>delay %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>tunda %1 ms</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>delay uniform %1 to %2 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>tunda seragam %1 sampai %2 ms</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>delay normal, mean %1 ms, standard deviation %2 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>tunda normal, rata-rata %1 ms, simpangan baku %2 ms</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>delay exponential, mean %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>tunda eksponensial, rata-rata %1 ms</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>drop the answer</source>
-        <translation type="unfinished"></translation>
+        <translation>buang jawaban</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>wrong CRC or LRC</source>
-        <translation type="unfinished"></translation>
+        <translation>CRC atau LRC salah</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>exception %1</source>
-        <translation type="unfinished"></translation>
+        <translation>exception %1</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>unit %1</source>
-        <translation type="unfinished"></translation>
+        <translation>unit %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>function %1</source>
-        <translation type="unfinished">fungsi %1</translation>
+        <translation>fungsi %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 for %2, %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 untuk %2, %3</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1, addresses %2 to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, alamat %2 sampai %3</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (probability %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (peluang %2)</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4080,47 +4647,47 @@ Right-click to change the format</source>
     <message>
         <location filename="../../ui/simregistermodel.cpp" line="+100"/>
         <source>coil</source>
-        <translation type="unfinished"></translation>
+        <translation>coil</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>discrete input</source>
-        <translation type="unfinished"></translation>
+        <translation>discrete input</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>input register</source>
-        <translation type="unfinished"></translation>
+        <translation>input register</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>holding register</source>
-        <translation type="unfinished"></translation>
+        <translation>holding register</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1[%2]</source>
-        <translation type="unfinished"></translation>
+        <translation>%1[%2]</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1, register %2 of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, register %2 dari %3</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>%1 (unit: %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (satuan: %2)</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1 (0x%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (0x%2)</translation>
     </message>
     <message>
         <location line="+31"/>
         <source>Table</source>
-        <translation type="unfinished"></translation>
+        <translation>Tabel</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4130,7 +4697,7 @@ Right-click to change the format</source>
     <message>
         <location line="+1"/>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Nama</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4140,17 +4707,17 @@ Right-click to change the format</source>
     <message>
         <location line="+1"/>
         <source>Hex</source>
-        <translation type="unfinished"></translation>
+        <translation>Hex</translation>
     </message>
     <message>
         <location line="+31"/>
         <source>&apos;%1&apos; is not a bit value for %2 %3: type 0 or 1.</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; bukan nilai bit untuk %2 %3: ketik 0 atau 1.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&apos;%1&apos; is not a register value for %2 %3: type 0 to 65535, or 0x0000 to 0xFFFF.</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; bukan nilai register untuk %2 %3: ketik 0 sampai 65535, atau 0x0000 sampai 0xFFFF.</translation>
     </message>
 </context>
 <context>
@@ -4158,27 +4725,27 @@ Right-click to change the format</source>
     <message>
         <location filename="../../ui/simrunlistmodel.cpp" line="+111"/>
         <source>%1 (built-in, first run)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (bawaan, jalan pertama)</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>Profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Listening on</source>
-        <translation type="unfinished"></translation>
+        <translation>Mendengarkan di</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Requests</source>
-        <translation type="unfinished"></translation>
+        <translation>Permintaan</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Faulted</source>
-        <translation type="unfinished"></translation>
+        <translation>Diganggu</translation>
     </message>
 </context>
 <context>
@@ -4186,107 +4753,107 @@ Right-click to change the format</source>
     <message>
         <location filename="../../ui/simtrafficmodel.cpp" line="+106"/>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>no answer: dropped by fault rule %1</source>
-        <translation type="unfinished"></translation>
+        <translation>tanpa jawaban: dibuang oleh aturan gangguan %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>exception %1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>exception %1 (%2)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>answered</source>
-        <translation type="unfinished"></translation>
+        <translation>dijawab</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>no answer: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>tanpa jawaban: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>unknown unit: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>unit tidak dikenal: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>checksum error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>error checksum: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>malformed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>cacat: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>garbage: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>sampah: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>connection opened</source>
-        <translation type="unfinished"></translation>
+        <translation>koneksi dibuka</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>connection refused: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>koneksi ditolak: %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>connection closed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>koneksi ditutup: %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1, changed by fault rule %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, diubah oleh aturan gangguan %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1, then the connection closed</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, lalu koneksi ditutup</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>%1; sent %2 ms after the request</source>
-        <translation type="unfinished"></translation>
+        <translation>%1; dikirim %2 ms setelah permintaan</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Waktu (s)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Endpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>Endpoint</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Peer</source>
-        <translation type="unfinished"></translation>
+        <translation>Lawan</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Unit</source>
-        <translation type="unfinished"></translation>
+        <translation>Unit</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Function</source>
-        <translation type="unfinished"></translation>
+        <translation>Fungsi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Outcome</source>
-        <translation type="unfinished"></translation>
+        <translation>Hasil</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4296,7 +4863,7 @@ Right-click to change the format</source>
     <message>
         <location line="+1"/>
         <source>Sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Terkirim</translation>
     </message>
 </context>
 <context>
@@ -4329,136 +4896,136 @@ Right-click to change the format</source>
     <message>
         <location line="+1"/>
         <source>Modbus TCP Security (TLS)</source>
-        <translation type="unfinished"></translation>
+        <translation>Modbus TCP Security (TLS)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Serial RTU</source>
-        <translation type="unfinished"></translation>
+        <translation>RTU serial</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Serial ASCII</source>
-        <translation type="unfinished"></translation>
+        <translation>ASCII serial</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>Profile:</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil:</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>A built-in profile, or the path of a profile file (docs/profiles.md).</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil bawaan, atau path berkas profil (docs/profiles.md).</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>...</source>
-        <translation type="unfinished"></translation>
+        <translation>...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Choose a profile file</source>
-        <translation type="unfinished"></translation>
+        <translation>Pilih berkas profil</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Listen on:</source>
-        <translation type="unfinished"></translation>
+        <translation>Dengarkan di:</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Where the simulator listens, as a URL: port 0 lets the system choose a free port.</source>
-        <translation type="unfinished"></translation>
+        <translation>Tempat simulator mendengarkan, sebagai URL: port 0 membiarkan sistem memilih port bebas.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Start</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Mulai</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>S&amp;top</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hentikan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stops the simulator selected in the list.</source>
-        <translation type="unfinished"></translation>
+        <translation>Menghentikan simulator yang dipilih di daftar.</translation>
     </message>
     <message>
         <location line="+32"/>
         <source>Unit:</source>
-        <translation type="unfinished"></translation>
+        <translation>Unit:</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Double-click a value to set it in the simulator (decimal, or hex with 0x).</source>
-        <translation type="unfinished"></translation>
+        <translation>Klik ganda sebuah nilai untuk mengaturnya di simulator (desimal, atau hex dengan 0x).</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>&amp;Registers</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Register</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>&amp;Faults</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Gangguan</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>&amp;Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kosongkan</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>T&amp;raffic</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Lalu lintas</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>Set %1 %2 of unit %3 to %4.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 unit %3 diatur ke %4.</translation>
     </message>
     <message numerus="yes">
         <location line="+40"/>
         <source>%n line(s), the newest %1 kept.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n baris, %1 terbaru disimpan.</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
         <source>%n line(s); %1 older line(s) no longer shown (the newest %2 are kept).</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n baris; %1 baris lama tidak ditampilkan lagi (%2 terbaru disimpan).</numerusform>
         </translation>
     </message>
     <message>
         <location line="+31"/>
         <source>Open a device profile</source>
-        <translation type="unfinished"></translation>
+        <translation>Buka profil perangkat</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Device profiles (*.json);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil perangkat (*.json);;Semua berkas (*)</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Choose a profile first: a built-in one from the list, or a profile file.</source>
-        <translation type="unfinished"></translation>
+        <translation>Pilih profil dulu: profil bawaan dari daftar, atau berkas profil.</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>The profile &apos;%1&apos; cannot be loaded: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Profil &apos;%1&apos; tidak dapat dimuat: %2</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The simulator was not started on %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulator tidak dijalankan di %1: %2</translation>
     </message>
     <message>
         <location line="+69"/>
@@ -4467,12 +5034,322 @@ Right-click to change the format</source>
     </message>
 </context>
 <context>
+    <name>mbscope::SweepPanel</name>
+    <message>
+        <location filename="../../ui/sweeppanel.cpp" line="+44"/>
+        <source>&amp;Start sweep</source>
+        <translation>&amp;Mulai sweep</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;top</source>
+        <translation>&amp;Hentikan</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Poll intervals in milliseconds, separated by commas; each is run in turn</source>
+        <translation>Interval polling dalam milidetik, dipisahkan koma; dijalankan bergiliran</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Transactions (poll cycles) at each interval</source>
+        <translation>Transaksi (siklus polling) di setiap interval</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Export table as &amp;CSV…</source>
+        <translation>Ekspor tabel sebagai &amp;CSV…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save the sweep&apos;s table as comma-separated values</source>
+        <translation>Simpan tabel sweep sebagai nilai yang dipisahkan koma</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Intervals (ms):</source>
+        <translation>Interval (ms):</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Count per interval:</source>
+        <translation>Jumlah per interval:</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>poll interval (ms)</source>
+        <translation>interval polling (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+5"/>
+        <source>error rate (%)</source>
+        <translation>tingkat error (%)</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>latency (ms)</source>
+        <translation>latensi (ms)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>median latency (ms)</source>
+        <translation>latensi median (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>p95 latency (ms)</source>
+        <translation>latensi p95 (ms)</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>interval %1 of %2 is empty: write milliseconds between the commas</source>
+        <translation>interval %1 dari %2 kosong: tulis milidetik di antara koma</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>interval %1 (&apos;%2&apos;) is not a whole number of milliseconds from 0 to 3600000</source>
+        <translation>interval %1 (&apos;%2&apos;) bukan bilangan bulat milidetik dari 0 sampai 3600000</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>no intervals: write them in milliseconds, separated by commas (100, 200, 300)</source>
+        <translation>tidak ada interval: tulis dalam milidetik, dipisahkan koma (100, 200, 300)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Not started: %1</source>
+        <translation>Tidak dimulai: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Not started: connect to a device first</source>
+        <translation>Tidak dimulai: sambungkan ke perangkat dulu</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Not started: a poll is running; stop it first</source>
+        <translation>Tidak dimulai: polling sedang berjalan; hentikan dulu</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not started: there is no request to send (write one in the request composer)</source>
+        <translation>Tidak dimulai: tidak ada permintaan untuk dikirim (tulis di penyusun permintaan)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Not started: the link did not take the sweep</source>
+        <translation>Tidak dimulai: link tidak menerima sweep</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Sweeping %1 intervals, %2 transactions each</source>
+        <translation>Sweep %1 interval, masing-masing %2 transaksi</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Interval %1 ms (%2 of %3): cycle %4 of %5</source>
+        <translation>Interval %1 ms (%2 dari %3): siklus %4 dari %5</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Sweep stopped: %1 of %2 intervals run</source>
+        <translation>Sweep dihentikan: %1 dari %2 interval dijalankan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sweep finished: %1 intervals</source>
+        <translation>Sweep selesai: %1 interval</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Export sweep table</source>
+        <translation>Ekspor tabel sweep</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV files (*.csv)</source>
+        <translation>Berkas CSV (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Table saved to %1</source>
+        <translation>Tabel disimpan ke %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Table not saved: %1</source>
+        <translation>Tabel tidak disimpan: %1</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::SweepTableModel</name>
+    <message>
+        <location filename="../../ui/sweeptablemodel.cpp" line="+73"/>
+        <source>Stopped before its count: the figures cover the part that ran</source>
+        <translation>Dihentikan sebelum jumlahnya tercapai: angka mencakup bagian yang sudah berjalan</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (stopped)</source>
+        <translation>%1 (dihentikan)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Interval (ms)</source>
+        <translation>Interval (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Cycles</source>
+        <translation>Siklus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Transactions</source>
+        <translation>Transaksi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Failed</source>
+        <translation>Gagal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timeouts</source>
+        <translation>Waktu habis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Error rate (%)</source>
+        <translation>Tingkat error (%)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Median (ms)</source>
+        <translation>Median (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>p95 (ms)</source>
+        <translation>p95 (ms)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Max (ms)</source>
+        <translation>Maks (ms)</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::TableCsv</name>
     <message>
         <location filename="../../ui/tablecsv.cpp" line="+54"/>
         <location line="+5"/>
         <source>cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>tidak dapat menulis %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::TlsFilesField</name>
+    <message>
+        <location filename="../../ui/tlsfilesfield.cpp" line="+17"/>
+        <source>C&amp;ertificate:</source>
+        <translation>S&amp;ertifikat:</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>client certificate (PEM)</source>
+        <translation>sertifikat klien (PEM)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose this client&apos;s certificate (PEM)</source>
+        <translation>Pilih sertifikat klien ini (PEM)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Key:</source>
+        <translation>&amp;Kunci:</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>its private key (PEM)</source>
+        <translation>kunci privatnya (PEM)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the private key of the client certificate (PEM, no passphrase)</source>
+        <translation>Pilih kunci privat sertifikat klien (PEM, tanpa passphrase)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C&amp;A:</source>
+        <translation>C&amp;A:</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>device&apos;s CA (PEM; empty: system CAs)</source>
+        <translation>CA perangkat (PEM; kosong: CA sistem)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose the CA certificate that signed the device&apos;s certificate (PEM)</source>
+        <translation>Pilih sertifikat CA yang menandatangani sertifikat perangkat (PEM)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MODBUS/TCP Security (port 802) is mutual TLS: the device asks for this client&apos;s certificate and key, and its own certificate is checked against the CA file (or the system&apos;s CAs).</source>
+        <translation>MODBUS/TCP Security (port 802) adalah TLS dua arah: perangkat meminta sertifikat dan kunci klien ini, dan sertifikat perangkat sendiri diperiksa terhadap berkas CA (atau CA sistem).</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>PEM files (*.pem *.crt *.cer *.key);;All files (*)</source>
+        <translation>Berkas PEM (*.pem *.crt *.cer *.key);;Semua berkas (*)</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>The %1 file &apos;%2&apos; does not exist: choose it with the … button beside the field.</source>
+        <translation>Berkas %1 &apos;%2&apos; tidak ada: pilih dengan tombol … di samping kolomnya.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The %1 file &apos;%2&apos; is a folder: choose the PEM file inside it.</source>
+        <translation>Berkas %1 &apos;%2&apos; adalah folder: pilih berkas PEM di dalamnya.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The %1 file &apos;%2&apos; cannot be read (permission denied): make it readable by your user.</source>
+        <translation>Berkas %1 &apos;%2&apos; tidak dapat dibaca (izin ditolak): buat agar dapat dibaca oleh user Anda.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>A private key was given without its certificate: choose the client certificate too (mutual TLS needs both).</source>
+        <translation>Kunci privat diberikan tanpa sertifikatnya: pilih juga sertifikat klien (TLS dua arah memerlukan keduanya).</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A certificate was given without its private key: choose the key file too (mutual TLS needs both).</source>
+        <translation>Sertifikat diberikan tanpa kunci privatnya: pilih juga berkas kuncinya (TLS dua arah memerlukan keduanya).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>certificate</source>
+        <translation>sertifikat</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>private key</source>
+        <translation>kunci privat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CA certificate</source>
+        <translation>sertifikat CA</translation>
     </message>
 </context>
 <context>
@@ -4480,32 +5357,32 @@ Right-click to change the format</source>
     <message>
         <location filename="../../ui/trafficmodel.cpp" line="+282"/>
         <source>No.</source>
-        <translation type="unfinished"></translation>
+        <translation>No.</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Time (s)</source>
-        <translation type="unfinished"></translation>
+        <translation>Waktu (s)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Dir</source>
-        <translation type="unfinished"></translation>
+        <translation>Arah</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Link</source>
-        <translation type="unfinished"></translation>
+        <translation>Link</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Unit</source>
-        <translation type="unfinished"></translation>
+        <translation>Unit</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Function</source>
-        <translation type="unfinished"></translation>
+        <translation>Fungsi</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4515,12 +5392,12 @@ Right-click to change the format</source>
     <message>
         <location line="+1"/>
         <source>Latency</source>
-        <translation type="unfinished"></translation>
+        <translation>Latensi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Verdict</source>
-        <translation type="unfinished"></translation>
+        <translation>Hasil</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4530,47 +5407,47 @@ Right-click to change the format</source>
     <message>
         <location line="+5"/>
         <source>Seconds since the first frame listed (monotonic clock)</source>
-        <translation type="unfinished"></translation>
+        <translation>Detik sejak frame pertama di daftar (jam monotonik)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>From the request written to its answer</source>
-        <translation type="unfinished"></translation>
+        <translation>Dari permintaan ditulis sampai jawabannya</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>What became of the frame: a request is &apos;sent&apos;, its answer carries the verdict</source>
-        <translation type="unfinished"></translation>
+        <translation>Apa yang terjadi pada frame: permintaan berstatus &apos;terkirim&apos;, jawabannya membawa hasilnya</translation>
     </message>
     <message>
         <location line="+67"/>
         <source>link %1</source>
-        <translation type="unfinished"></translation>
+        <translation>link %1</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1 Exception to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Exception untuk %2</translation>
     </message>
     <message>
         <location line="+50"/>
         <source>No bytes</source>
-        <translation type="unfinished"></translation>
+        <translation>Tanpa byte</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Not an answer to any request sent</source>
-        <translation type="unfinished"></translation>
+        <translation>Bukan jawaban atas permintaan yang dikirim</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Answers frame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Menjawab frame %1</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Answered in frame %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Dijawab di frame %1</translation>
     </message>
 </context>
 <context>
@@ -4580,63 +5457,63 @@ Right-click to change the format</source>
         <location line="+5"/>
         <location line="+15"/>
         <source>any</source>
-        <translation type="unfinished"></translation>
+        <translation>semua</translation>
     </message>
     <message>
         <location line="-19"/>
         <source>Show only frames of this unit id</source>
-        <translation type="unfinished"></translation>
+        <translation>Tampilkan hanya frame dengan ID unit ini</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Show only frames of this function code (its exception responses included)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tampilkan hanya frame dengan kode fungsi ini (termasuk respons exception-nya)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>both</source>
-        <translation type="unfinished"></translation>
+        <translation>keduanya</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>problems only</source>
-        <translation type="unfinished"></translation>
+        <translation>hanya masalah</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+116"/>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Jeda</translation>
     </message>
     <message>
         <location line="-114"/>
         <source>Hold new frames back from the list; nothing is dropped, they appear on resume</source>
-        <translation type="unfinished"></translation>
+        <translation>Tahan frame baru dari daftar; tidak ada yang dibuang, frame muncul saat dilanjutkan</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Clear</source>
-        <translation type="unfinished"></translation>
+        <translation>Kosongkan</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Empty the list (the traffic log and its journal keep every frame)</source>
-        <translation type="unfinished"></translation>
+        <translation>Kosongkan daftar (log lalu lintas dan jurnalnya tetap menyimpan setiap frame)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Find: hex bytes or text (Enter, F3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Cari: byte hex atau teks (Enter, F3)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Find previous (Shift+F3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Cari sebelumnya (Shift+F3)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Find next (F3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Cari berikutnya (F3)</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -4646,47 +5523,47 @@ Right-click to change the format</source>
     <message>
         <location line="+1"/>
         <source>F&amp;unction:</source>
-        <translation type="unfinished"></translation>
+        <translation>F&amp;ungsi:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Di&amp;rection:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Arah:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Verdict:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hasil:</translation>
     </message>
     <message>
         <location line="+87"/>
         <source>Resume</source>
-        <translation type="unfinished"></translation>
+        <translation>Lanjutkan</translation>
     </message>
     <message>
         <location line="+98"/>
         <source>No frame shown matches “%1”</source>
-        <translation type="unfinished"></translation>
+        <translation>Tidak ada frame yang cocok dengan “%1”</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>%1 frames</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 frame</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>, %1 shown</source>
-        <translation type="unfinished"></translation>
+        <translation>, %1 ditampilkan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source> · paused: %1 new frames held</source>
-        <translation type="unfinished"></translation>
+        <translation> · dijeda: %1 frame baru ditahan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source> · %1 oldest dropped from the list</source>
-        <translation type="unfinished"></translation>
+        <translation> · %1 terlama dibuang dari daftar</translation>
     </message>
 </context>
 <context>
@@ -4768,6 +5645,67 @@ Right-click to change the format</source>
         <location filename="../../ui/transactionview.cpp" line="+76"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::TrendPanels</name>
+    <message>
+        <location filename="../../ui/trendpanels.cpp" line="+21"/>
+        <source>Latency over time</source>
+        <translation>Latensi terhadap waktu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Register trends</source>
+        <translation>Tren register</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sweep</source>
+        <translation>Sweep</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::TrendSeries</name>
+    <message>
+        <location filename="../../ui/trendseries.cpp" line="+35"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>bit</source>
+        <translation>bit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, %2 (%3)</source>
+        <translation>%1, %2 (%3)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1, PDU address %2</source>
+        <translation>%1, alamat PDU %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1, %2, value = raw × %3 + %4</source>
+        <translation>%1, %2, nilai = mentah × %3 + %4</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 (profile %2)</source>
+        <translation>%1 (profil %2)</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>%1 [%2]</source>
+        <translation>%1 [%2]</translation>
     </message>
 </context>
 </TS>
