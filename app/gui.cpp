@@ -11,6 +11,7 @@
 #include <QtCore/QTimer>
 #include <QtGui/QPixmap>
 #include <QtWidgets/QApplication>
+#include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMessageBox>
 
 #include <cstdio>
@@ -33,6 +34,29 @@ bool saveScreenshot(QWidget &window, const QString &path)
     QCoreApplication::sendPostedEvents();
     const QPixmap shot = window.grab();
     return !shot.isNull() && shot.save(path, "PNG");
+}
+
+// --dock NAME: the dock whose object name is NAME or NAMEDock, or whose title is NAME (case and
+// the mnemonic & ignored), shown and raised, so a screenshot can show any dock of the window.
+bool raiseDock(MainWindow &window, const QString &name)
+{
+    const QList<QDockWidget *> docks = window.findChildren<QDockWidget *>();
+    for (QDockWidget *dock : docks) {
+        const QString title = dock->windowTitle().remove(QLatin1Char('&'));
+        if (dock->objectName().compare(name, Qt::CaseInsensitive) == 0
+            || dock->objectName().compare(name + QStringLiteral("Dock"), Qt::CaseInsensitive) == 0
+            || title.compare(name, Qt::CaseInsensitive) == 0) {
+            dock->show();
+            dock->raise();
+            return true;
+        }
+    }
+    QStringList names;
+    for (const QDockWidget *dock : docks)
+        names += dock->windowTitle().remove(QLatin1Char('&')).toLower();
+    std::fprintf(stderr, "mbscope: --dock '%s' names no dock of the window (it has: %s)\n", qPrintable(name),
+                 qPrintable(names.join(QStringLiteral(", "))));
+    return false;
 }
 
 // Renders the window once it is laid out and, on a first run, once the simulator's answer to
@@ -109,9 +133,15 @@ int runGui(QApplication &app)
                                            QStringLiteral("Open the session FILE (*.mbscope.json) at start: its target, requests "
                                                           "and poll settings; the built-in simulator is not started."),
                                            QStringLiteral("FILE"));
-    parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption});
+    const QCommandLineOption beforeSendOption(QStringLiteral("screenshot-before-send"),
+                                              QStringLiteral("With --screenshot: render the first run as it opens, before "
+                                                             "the ready request is sent."));
+    const QCommandLineOption dockOption(QStringLiteral("dock"),
+                                        QStringLiteral("Show and raise the dock NAME (traffic, registers, ...) at start."),
+                                        QStringLiteral("NAME"));
+    parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption, beforeSendOption, dockOption});
     if (!parser.parse(QCoreApplication::arguments())) {
-        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE]\n",
+        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--dock NAME]\n",
                      qPrintable(parser.errorText()));
         return ExitUsage;
     }
@@ -174,8 +204,10 @@ int runGui(QApplication &app)
     }
     window.show();
 
+    if (parser.isSet(dockOption) && !raiseDock(window, parser.value(dockOption)))
+        return ExitUsage;
     if (!screenshot.isEmpty())
-        scheduleScreenshot(app, window, screenshot, simulated);
+        scheduleScreenshot(app, window, screenshot, simulated && !parser.isSet(beforeSendOption));
 
     bool ok = false;
     const int quitAfterMs = qEnvironmentVariableIntValue("MBSCOPE_QUIT_AFTER_MS", &ok);
