@@ -6,8 +6,8 @@ class QCustomPlot;
 
 namespace mbscope::app {
 
-// Saves a QCustomPlot in the format its file name says: .png (savePng), .pdf (savePdf, vector)
-// or .svg (QSvgGenerator from Qt SVG, vector; in a build without Qt SVG the error says so).
+// The CLI's side of PlotSaver (ui/plotsaver.h, shared with the window): a QCustomPlot saved in the
+// format its file name says; in a build without the GUI every plot is refused, saying why.
 class PlotFile
 {
 public:
