@@ -21,6 +21,8 @@
 #include <QtWidgets/QToolButton>
 #include <QtWidgets/QVBoxLayout>
 
+#include <iterator>
+
 namespace mbscope {
 
 namespace {
@@ -88,6 +90,7 @@ void SimulatorPanel::buildUi()
         m_profile->addItem(shipped.name);
         m_profile->setItemData(m_profile->count() - 1, shipped.description, Qt::ToolTipRole);
     }
+    m_profile->setCurrentIndex(qMax(0, m_profile->findText(QStringLiteral("rosrao-gamma"))));
     startRow->addWidget(m_profile);
     m_browse = new QToolButton(this);
     m_browse->setText(tr("..."));
@@ -126,9 +129,9 @@ void SimulatorPanel::buildUi()
     m_runsView->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_runsView->setSelectionMode(QAbstractItemView::SingleSelection);
     m_runsView->verticalHeader()->hide();
-    m_runsView->horizontalHeader()->setStretchLastSection(true);
+    m_runsView->verticalHeader()->setDefaultSectionSize(m_runsView->fontMetrics().height() + 6);
+    m_runsView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_runsView->horizontalHeader()->setSectionResizeMode(SimRunListModel::EndpointColumn, QHeaderView::Stretch);
-    m_runsView->horizontalHeader()->setSectionResizeMode(SimRunListModel::ProfileColumn, QHeaderView::ResizeToContents);
     splitter->addWidget(m_runsView);
 
     m_tabs = new QTabWidget(splitter);
@@ -177,6 +180,12 @@ void SimulatorPanel::buildUi()
     m_trafficView->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_trafficView->setWordWrap(false);
     m_trafficView->horizontalHeader()->setStretchLastSection(true);
+    // Widths for what the columns hold: a time, a URL, a peer address, a function's name, the
+    // outcome's sentence and two frames.
+    const int digit = m_trafficView->fontMetrics().horizontalAdvance(QLatin1Char('0'));
+    const int widths[] = {9, 26, 17, 5, 28, 50, 36};
+    for (int column = 0; column < int(std::size(widths)); ++column)
+        m_trafficView->setColumnWidth(column, widths[column] * digit);
     trafficLayout->addWidget(m_trafficView, 1);
     auto *trafficRow = new QHBoxLayout;
     m_trafficNote = new QLabel(trafficPage);
