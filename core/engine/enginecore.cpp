@@ -6,6 +6,7 @@
 #include "transport/monotonicclock.h"
 #include "transport/seriallink.h"
 
+#include <QtCore/QMetaMethod>
 #include <QtCore/QVarLengthArray>
 
 #include <algorithm>
@@ -422,9 +423,24 @@ void EngineCore::record(Transaction transaction, quint64 tag)
                 listener->onRecord(transaction, tag);
         }
     }
-    emit recorded(transaction, tag);
+    if (m_recordedReceivers.load(std::memory_order_relaxed) > 0)
+        emit recorded(transaction, tag);
     m_batch.append(std::move(transaction));
     scheduleBatch();
+}
+
+void EngineCore::connectNotify(const QMetaMethod &signal)
+{
+    if (signal == QMetaMethod::fromSignal(&EngineCore::recorded))
+        m_recordedReceivers.fetch_add(1, std::memory_order_relaxed);
+}
+
+void EngineCore::disconnectNotify(const QMetaMethod &signal)
+{
+    // An invalid method (everything disconnected at once) does not say which: the count stays,
+    // and recorded() goes on being emitted, which is only slower.
+    if (signal == QMetaMethod::fromSignal(&EngineCore::recorded))
+        m_recordedReceivers.fetch_sub(1, std::memory_order_relaxed);
 }
 
 void EngineCore::addRecordListener(RecordListener *listener)

@@ -90,6 +90,12 @@ signals:
     void progress(const mbscope::EngineProgress &progress);
     void linkMessage(const QString &message);
 
+protected:
+    // recorded() is emitted only while something is connected to it (its emission with no
+    // receiver was ~100 instructions per transaction).
+    void connectNotify(const QMetaMethod &signal) override;
+    void disconnectNotify(const QMetaMethod &signal) override;
+
 private:
     struct Outgoing {
         RequestItem item;
@@ -193,6 +199,7 @@ private:
     QList<RequestItem> m_answered; // recently answered requests, for second answers
     quint16 m_nextTransactionId = 1;
     std::atomic<quint64> m_nextId{0};
+    std::atomic<int> m_recordedReceivers{0};
 
     QTimer m_deadlineTimer;
     qint64 m_deadlineArmedNs = 0; // the deadline m_deadlineTimer fires for, while it is active

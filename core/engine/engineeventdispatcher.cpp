@@ -4,6 +4,7 @@
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QEvent>
+#include <QtCore/QMetaMethod>
 #include <QtCore/QSocketNotifier>
 #include <QtCore/QVarLengthArray>
 
@@ -67,13 +68,15 @@ EngineEventDispatcher::~EngineEventDispatcher()
 bool EngineEventDispatcher::processEvents(QEventLoop::ProcessEventsFlags flags)
 {
     m_interrupted.store(false, std::memory_order_relaxed);
-    emit awake();
+    const bool observed = m_turnObservers.load(std::memory_order_relaxed) > 0;
+    if (observed)
+        emit awake();
     QCoreApplication::sendPostedEvents();
 
     const bool includeTimers = !flags.testFlag(QEventLoop::X11ExcludeTimers);
     const bool includeNotifiers = !flags.testFlag(QEventLoop::ExcludeSocketNotifiers);
     const bool mayWait = flags.testFlag(QEventLoop::WaitForMoreEvents) && !m_interrupted.load(std::memory_order_relaxed);
-    if (mayWait)
+    if (mayWait && observed)
         emit aboutToBlock();
     if (m_interrupted.load(std::memory_order_relaxed))
         return false;
@@ -274,6 +277,22 @@ EngineEventDispatcher::Timer *EngineEventDispatcher::findTimer(int timerId)
             return &t;
     }
     return nullptr;
+}
+
+void EngineEventDispatcher::connectNotify(const QMetaMethod &signal)
+{
+    if (signal == QMetaMethod::fromSignal(&QAbstractEventDispatcher::awake)
+        || signal == QMetaMethod::fromSignal(&QAbstractEventDispatcher::aboutToBlock))
+        m_turnObservers.fetch_add(1, std::memory_order_relaxed);
+}
+
+void EngineEventDispatcher::disconnectNotify(const QMetaMethod &signal)
+{
+    // An invalid method (everything disconnected at once) does not say which: the count stays,
+    // and the signals go on being emitted, which is only slower.
+    if (signal == QMetaMethod::fromSignal(&QAbstractEventDispatcher::awake)
+        || signal == QMetaMethod::fromSignal(&QAbstractEventDispatcher::aboutToBlock))
+        m_turnObservers.fetch_sub(1, std::memory_order_relaxed);
 }
 
 void EngineEventDispatcher::wakeUp()

@@ -194,6 +194,36 @@ private slots:
         QCOMPARE(writes.load(), 1);
     }
 
+    // awake() and aboutToBlock() are emitted once something listens (and only then: the
+    // dispatcher skips them otherwise), and stop when it goes.
+    void turnSignals()
+    {
+        DispatcherThread t;
+        std::atomic<int> awake{0};
+        std::atomic<int> blocking{0};
+        QMetaObject::Connection a;
+        QMetaObject::Connection b;
+        t.run([&] {
+            auto *dispatcher = QAbstractEventDispatcher::instance();
+            a = connect(dispatcher, &QAbstractEventDispatcher::awake, dispatcher, [&] { ++awake; }, Qt::DirectConnection);
+            b = connect(dispatcher, &QAbstractEventDispatcher::aboutToBlock, dispatcher, [&] { ++blocking; },
+                        Qt::DirectConnection);
+        });
+        for (int i = 0; i < 5; ++i)
+            t.run([] {}); // a turn each
+        QTRY_VERIFY_WITH_TIMEOUT(awake.load() >= 5 && blocking.load() >= 5, kWaitMs);
+        t.run([&] {
+            disconnect(a);
+            disconnect(b);
+        });
+        const int awakeBefore = awake.load();
+        const int blockingBefore = blocking.load();
+        for (int i = 0; i < 5; ++i)
+            t.run([] {});
+        QCOMPARE(awake.load(), awakeBefore);
+        QCOMPARE(blocking.load(), blockingBefore);
+    }
+
     // deleteLater() in the thread deletes the object.
     void deferredDelete()
     {
