@@ -1,6 +1,7 @@
 #include "mainwindow.h"
 
 #include "analysisdock.h"
+#include "appicon.h"
 #include "connectionbar.h"
 #include "decodepanel.h"
 #include "linkcontroller.h"
@@ -24,6 +25,7 @@
 #include <QtGui/QCloseEvent>
 #include <QtGui/QAction>
 #include <QtGui/QKeySequence>
+#include <QtWidgets/QApplication>
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMenuBar>
 #include <QtWidgets/QMessageBox>
@@ -41,6 +43,9 @@ MainWindow::MainWindow(QWidget *parent)
     , m_simulator(new EmbeddedSimulator(this))
 {
     setWindowTitle(QStringLiteral("mbscope"));
+    setWindowIcon(applicationIcon());
+    if (QApplication::windowIcon().isNull())
+        QApplication::setWindowIcon(windowIcon()); // dialogs and other windows
     buildUi();
     buildDocks();
     connectPanels();

@@ -5,6 +5,7 @@
 #include "requestcomposer.h"
 
 #include <QtGui/QAction>
+#include <QtWidgets/QApplication>
 #include <QtWidgets/QMenu>
 #include <QtWidgets/QMenuBar>
 #include <QtWidgets/QStatusBar>
@@ -20,6 +21,7 @@ class TestMainWindow : public QObject
 private Q_SLOTS:
     void assemblesThePanels();
     void menus();
+    void windowIcon();
 };
 
 void TestMainWindow::assemblesThePanels()
@@ -55,6 +57,25 @@ void TestMainWindow::menus()
     QVERIFY(actions.contains(QStringLiteral("&Send")));
     QVERIFY(actions.contains(QStringLiteral("&Quit")));
     QVERIFY(actions.contains(QStringLiteral("&About mbscope")));
+}
+
+// The icon is set at run time (packaging/icons/mbscope.svg compiled in): the window's and the
+// application's, for its dialogs, rendered at the desktop's sizes.
+void TestMainWindow::windowIcon()
+{
+    MainWindow window;
+    const QIcon icon = window.windowIcon();
+    QVERIFY(!icon.isNull());
+    QVERIFY(!QApplication::windowIcon().isNull());
+    for (const int size : {16, 32, 48, 256}) {
+        const QImage image = icon.pixmap(size, size).toImage();
+        QCOMPARE(image.size(), QSize(size, size));
+        // The rounded corner is transparent; the blue data block sits below the middle.
+        QVERIFY(image.pixelColor(0, 0).alpha() < 255);
+        const QColor data = image.pixelColor(size / 2, size * 3 / 4);
+        QVERIFY2(data.alpha() == 255 && data.blue() > data.red() + 60,
+                 qPrintable(QStringLiteral("%1 px: %2 where the data block is").arg(size).arg(data.name(QColor::HexArgb))));
+    }
 }
 
 QTEST_MAIN(TestMainWindow)
