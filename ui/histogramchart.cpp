@@ -3,6 +3,7 @@
 #include <QtCore/QCoreApplication>
 #include <qcustomplot.h>
 
+#include <cmath>
 #include <iterator>
 
 namespace mbscope {
@@ -19,6 +20,11 @@ QString tr(const char *text)
 }
 
 } // namespace
+
+QColor HistogramChart::seriesColour(qsizetype k)
+{
+    return kColours[std::size_t(k) % std::size(kColours)];
+}
 
 // Microseconds for a loopback's sub-millisecond latencies, milliseconds for devices.
 HistogramChart::Unit HistogramChart::unitFor(double maxNs)
@@ -123,11 +129,18 @@ bool HistogramChart::draw(QCustomPlot &plot, const QList<Series> &series, const 
         auto *line = new QCPItemStraightLine(&plot);
         line->point1->setCoords(x, 0);
         line->point2->setCoords(x, 1);
-        line->setPen(QPen(QColor(90, 90, 90), 1, Qt::DashLine));
+        const QColor colour = markers.at(k).colour;
+        line->setPen(QPen(colour.isValid() ? colour : QColor(90, 90, 90), 1, Qt::DashLine));
         auto *label = new QCPItemText(&plot);
         label->position->setCoords(x, double(highest) * (1.19 - 0.07 * double(k)) + 1);
-        label->setPositionAlignment(Qt::AlignLeft | Qt::AlignVCenter);
-        label->setPadding(QMargins(4, 0, 0, 0));
+        // A line in the right third gets its label on its left, inside the plot.
+        const QCPRange shown = plot.xAxis->range();
+        const double where = logarithmic ? std::log(x / shown.lower) / std::log(shown.upper / shown.lower)
+                                         : (x - shown.lower) / shown.size();
+        const bool leftOfLine = where > 0.7;
+        label->setPositionAlignment((leftOfLine ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignVCenter);
+        label->setPadding(leftOfLine ? QMargins(0, 0, 4, 0) : QMargins(4, 0, 0, 0));
+        label->setColor(colour.isValid() ? colour : QColor(Qt::black));
         label->setText(markers.at(k).label);
         label->setFont(QFont(QStringLiteral("Sans"), 9));
     }

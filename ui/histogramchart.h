@@ -2,6 +2,7 @@
 
 #include <QtCore/QList>
 #include <QtCore/QString>
+#include <QtGui/QColor>
 
 #include <vector>
 
@@ -27,7 +28,10 @@ public:
     struct Marker {
         QString label;
         double valueNs = 0;
+        QColor colour; // the line's and the label's; by default a grey line and a black label
     };
+    // The colour series k is drawn in (markers of a series use it too).
+    [[nodiscard]] static QColor seriesColour(qsizetype k);
     // The unit the latency axis is shown in, chosen from the largest edge.
     struct Unit {
         double ns;

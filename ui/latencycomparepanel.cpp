@@ -49,10 +49,17 @@ LatencyComparePanel::LatencyComparePanel(LatencyRuns *runs, QWidget *parent)
     m_plot->setObjectName(QStringLiteral("latencyComparePlot"));
     m_plot->setMinimumSize(300, 200);
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
-    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    // The legend below the axes: inside them it would cover the markers' labels.
+    auto *legendRow = new QCPLayoutGrid;
+    m_plot->plotLayout()->addElement(1, 0, legendRow);
+    legendRow->setMargins(QMargins(5, 0, 5, 5));
+    legendRow->addElement(0, 0, m_plot->legend);
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    m_plot->plotLayout()->setRowStretchFactor(1, 0.001);
     m_table->setObjectName(QStringLiteral("latencyCompareTable"));
     m_table->setModel(m_model);
     m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setAlternatingRowColors(true);
     m_table->addAction(m_csv);
@@ -189,11 +196,10 @@ void LatencyComparePanel::redraw()
             series.append({tr("%1 (%2 answered)").arg(sideTitle(m_sides[k])).arg(latency.count()), h.edgesNs(), h.counts(),
                            h.isLogarithmic()});
             if (!latency.isEmpty())
-                markers.append({tr("median %1: %2 %3")
-                                    .arg(k == 0 ? tr("first") : tr("second"),
-                                         QLocale().toString(double(latency.medianNs()) / unit.ns, 'f', unit.ns >= 1e6 ? 3 : 1),
+                markers.append({tr("median %1 %2")
+                                    .arg(QLocale().toString(double(latency.medianNs()) / unit.ns, 'f', unit.ns >= 1e6 ? 3 : 1),
                                          unit.name),
-                                double(latency.medianNs())});
+                                double(latency.medianNs()), HistogramChart::seriesColour(k)});
         }
     }
     HistogramChart::draw(*m_plot, series, markers);

@@ -36,6 +36,7 @@ LatencyHistogramPanel::LatencyHistogramPanel(LatencyRuns *runs, QWidget *parent)
     m_table->setObjectName(QStringLiteral("latencyStatisticsTable"));
     m_table->setModel(m_model);
     m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setAlternatingRowColors(true);
     m_table->addAction(m_csv);
@@ -204,11 +205,11 @@ void LatencyHistogramPanel::redraw()
         const HistogramChart::Unit unit = HistogramChart::unitFor(m_histogram.edgesNs().back());
         const auto at = [&unit](qint64 ns) { return QLocale().toString(double(ns) / unit.ns, 'f', unit.ns >= 1e6 ? 3 : 1); };
         markers = {
-            {tr("min %1 %2").arg(at(latency.minNs()), unit.name), double(latency.minNs())},
-            {tr("median %1 %2").arg(at(latency.medianNs()), unit.name), double(latency.medianNs())},
-            {tr("p95 %1 %2").arg(at(latency.percentileNs(95)), unit.name), double(latency.percentileNs(95))},
-            {tr("p99 %1 %2").arg(at(latency.percentileNs(99)), unit.name), double(latency.percentileNs(99))},
-            {tr("max %1 %2").arg(at(latency.maxNs()), unit.name), double(latency.maxNs())},
+            {tr("min %1 %2").arg(at(latency.minNs()), unit.name), double(latency.minNs()), QColor()},
+            {tr("median %1 %2").arg(at(latency.medianNs()), unit.name), double(latency.medianNs()), QColor()},
+            {tr("p95 %1 %2").arg(at(latency.percentileNs(95)), unit.name), double(latency.percentileNs(95)), QColor()},
+            {tr("p99 %1 %2").arg(at(latency.percentileNs(99)), unit.name), double(latency.percentileNs(99)), QColor()},
+            {tr("max %1 %2").arg(at(latency.maxNs()), unit.name), double(latency.maxNs()), QColor()},
         };
     }
     m_drawing = true;
