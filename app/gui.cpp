@@ -1,6 +1,7 @@
 // The window: what `mbscope` runs without a subcommand.
 #include "commands.h"
 
+#include "linkcontroller.h"
 #include "requestcomposer.h"
 #include "mainwindow.h"
 #include "sessioncontroller.h"
@@ -13,6 +14,7 @@
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMessageBox>
+#include <QtWidgets/QSpinBox>
 
 #include <cstdio>
 #include <cstring>
@@ -62,7 +64,10 @@ bool raiseDock(MainWindow &window, const QString &name)
 // Renders the window once it is laid out and, on a first run, once the simulator's answer to
 // the ready request is shown (or a few seconds passed), then quits: docs and GUI smoke tests use
 // it with QT_QPA_PLATFORM=offscreen, so no display is needed.
-void scheduleScreenshot(QApplication &app, MainWindow &window, const QString &path, bool waitForAnswer)
+// With pollCount > 0 the ready request is polled that many times, 20 ms apart, instead of sent
+// once, and the window is rendered when the poll ends: the traffic list, the register table and
+// the analysis dock then have something to show.
+void scheduleScreenshot(QApplication &app, MainWindow &window, const QString &path, bool waitForAnswer, int pollCount)
 {
     auto shoot = [&app, &window, path] {
         if (!saveScreenshot(window, path)) {
@@ -74,6 +79,16 @@ void scheduleScreenshot(QApplication &app, MainWindow &window, const QString &pa
     };
     if (!waitForAnswer) {
         QTimer::singleShot(0, &window, shoot);
+        return;
+    }
+    if (pollCount > 0) {
+        // The analysis plots redraw in batches: a short wait after the poll lets the last one in.
+        QObject::connect(window.controller(), &LinkController::pollFinished, &window,
+                         [shoot] { QTimer::singleShot(400, shoot); }, Qt::SingleShotConnection);
+        QTimer::singleShot(kScreenshotAnswerWaitMs + pollCount * 100, &window, shoot);
+        window.composer()->intervalSpin()->setValue(20);
+        window.composer()->countSpin()->setValue(pollCount);
+        QTimer::singleShot(0, &window, [&window] { window.composer()->togglePoll(); });
         return;
     }
     QObject::connect(window.answerView(), &TransactionView::transactionShown, &window,
@@ -139,9 +154,13 @@ int runGui(QApplication &app)
     const QCommandLineOption dockOption(QStringLiteral("dock"),
                                         QStringLiteral("Show and raise the dock NAME (traffic, registers, ...) at start."),
                                         QStringLiteral("NAME"));
-    parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption, beforeSendOption, dockOption});
+    const QCommandLineOption pollOption(QStringLiteral("screenshot-poll"),
+                                        QStringLiteral("With --screenshot: poll the first run's request COUNT times, "
+                                                       "20 ms apart, and render when the poll ends."),
+                                        QStringLiteral("COUNT"));
+    parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption, beforeSendOption, dockOption, pollOption});
     if (!parser.parse(QCoreApplication::arguments())) {
-        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--dock NAME]\n",
+        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT] [--dock NAME]\n",
                      qPrintable(parser.errorText()));
         return ExitUsage;
     }
@@ -206,8 +225,18 @@ int runGui(QApplication &app)
 
     if (parser.isSet(dockOption) && !raiseDock(window, parser.value(dockOption)))
         return ExitUsage;
+    int pollCount = 0;
+    if (parser.isSet(pollOption)) {
+        bool countOk = false;
+        pollCount = parser.value(pollOption).toInt(&countOk);
+        if (!countOk || pollCount < 1 || pollCount > 10000) {
+            std::fprintf(stderr, "mbscope: --screenshot-poll '%s' is not a count from 1 to 10000\n",
+                         qPrintable(parser.value(pollOption)));
+            return ExitUsage;
+        }
+    }
     if (!screenshot.isEmpty())
-        scheduleScreenshot(app, window, screenshot, simulated && !parser.isSet(beforeSendOption));
+        scheduleScreenshot(app, window, screenshot, simulated && !parser.isSet(beforeSendOption), simulated ? pollCount : 0);
 
     bool ok = false;
     const int quitAfterMs = qEnvironmentVariableIntValue("MBSCOPE_QUIT_AFTER_MS", &ok);
