@@ -109,6 +109,7 @@ void RegisterTableModel::setAnswer(const ReadAnswer &answer)
         m_answer = answer;
         m_changed = changed;
         m_hasAnswer = true;
+        m_layouts.clear();
         endResetModel();
         Q_EMIT layoutOfValuesChanged();
     }
@@ -124,6 +125,7 @@ void RegisterTableModel::clear()
     m_answer = ReadAnswer();
     m_hasAnswer = false;
     m_changed.clear();
+    m_layouts.clear();
     m_lastProblem.clear();
     endResetModel();
     Q_EMIT layoutOfValuesChanged();
@@ -220,6 +222,7 @@ void RegisterTableModel::setProfile(const UnitProfile &unit, const QString &prof
     beginResetModel();
     m_profile = unit;
     m_profileName = profileName;
+    m_layouts.clear();
     endResetModel();
     Q_EMIT layoutOfValuesChanged();
 }
@@ -229,6 +232,7 @@ void RegisterTableModel::clearProfile()
     beginResetModel();
     m_profile.reset();
     m_profileName.clear();
+    m_layouts.clear();
     endResetModel();
     Q_EMIT layoutOfValuesChanged();
 }
@@ -267,6 +271,25 @@ const TableEntry *RegisterTableModel::entryAt(int row) const
     return m_profile->entryAt(simTableOf(m_answer.table), m_answer.address + row);
 }
 
+const QList<WideValueLayout::Value> &RegisterTableModel::valueLayout(int width) const
+{
+    auto it = m_layouts.find(width);
+    if (it == m_layouts.end()) {
+        WideValueLayout::EntryAt wideEntryAt;
+        if (m_profile && !m_answer.isBits()) {
+            const SimTable table = simTableOf(m_answer.table);
+            wideEntryAt = [this, table](int address) -> std::optional<WideValueLayout::Entry> {
+                const TableEntry *entry = m_profile->entryAt(table, address);
+                if (!entry || entry->width() < 2)
+                    return std::nullopt;
+                return WideValueLayout::Entry{entry->address, entry->address + entry->count};
+            };
+        }
+        it = m_layouts.insert(width, WideValueLayout::lay(m_answer.address, m_answer.count(), width, wideEntryAt));
+    }
+    return *it;
+}
+
 QString RegisterTableModel::rowWhere(int row) const
 {
     const int address = m_answer.address + row;
@@ -289,14 +312,16 @@ RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIn
     }
     const RegisterFormat format = m_formats.at(valueIndex);
     const int width = format.registerCount();
-    cell.firstRow = row - row % width;
+    const WideValueLayout::Value value = valueLayout(width).at(row);
+    cell.firstRow = qMax(value.start, 0);
     cell.continuation = cell.firstRow != row;
-    cell.span = cell.continuation ? 0 : qMin(width, m_answer.count() - row);
-    cell.complete = cell.firstRow + width <= m_answer.count();
+    cell.span = cell.continuation ? 0 : value.end - cell.firstRow;
+    cell.complete = value.start >= 0 && value.end - value.start == width;
     if (wanted == CellText::None)
         return cell;
 
-    const QString firstRef = ReadAnswer::referenceText(m_answer.reference(cell.firstRow));
+    // The value's own first register, also when the answer begins inside it.
+    const QString firstRef = ReadAnswer::referenceText(m_answer.reference(value.start));
     if (cell.continuation) {
         if (wanted == CellText::Display)
             cell.text = tr("\u2191 %1 from %2").arg(format.typeName(), firstRef);
@@ -311,8 +336,20 @@ RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIn
     if (!cell.complete) {
         if (wanted == CellText::Display)
             cell.text = tr("(%1 of %2 registers)").arg(cell.span).arg(width);
-        else
+        else if (value.start < 0)
+            cell.text = tr("%1 needs %2 registers from %3; the answer begins %4 registers into it")
+                            .arg(format.name())
+                            .arg(width)
+                            .arg(firstRef)
+                            .arg(-value.start);
+        else if (value.start + width > m_answer.count())
             cell.text = tr("%1 needs %2 registers from %3; the answer ends after %4")
+                            .arg(format.name())
+                            .arg(width)
+                            .arg(firstRef)
+                            .arg(cell.span);
+        else
+            cell.text = tr("%1 needs %2 registers from %3; the profile's next value begins after %4")
                             .arg(format.name())
                             .arg(width)
                             .arg(firstRef)
@@ -320,7 +357,9 @@ RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIn
         return cell;
     }
     if (wanted == CellText::Display) {
-        cell.text = m_answer.valueAt(row, format)->toText();
+        const RegisterValueResult decoded = RegisterValue::fromRegisters(
+            std::span<const quint16>(m_answer.registers.constData() + row, size_t(width)), format);
+        cell.text = decoded.ok ? decoded.value.toText() : decoded.error;
         return cell;
     }
     QString raw;
@@ -378,8 +417,11 @@ bool RegisterTableModel::isChanged(int row, int column) const
     int first = row;
     int width = 1;
     if (const int vi = valueIndexOf(column); vi >= 0) {
-        width = m_answer.isBits() ? 1 : m_formats.at(vi).registerCount();
-        first = row - row % width;
+        if (!m_answer.isBits()) {
+            const WideValueLayout::Value value = valueLayout(m_formats.at(vi).registerCount()).at(row);
+            first = value.start;
+            width = value.end - value.start;
+        }
     } else if (column == scaledColumn()) {
         const TableEntry *entry = entryAt(row);
         if (!entry)

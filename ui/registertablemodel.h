@@ -6,9 +6,11 @@
 #include "protocol/registerformat.h"
 #include "protocol/tablewrite.h"
 #include "sim/deviceprofile.h"
+#include "widevaluelayout.h"
 
 #include <QtCore/QAbstractTableModel>
 #include <QtCore/QByteArray>
+#include <QtCore/QHash>
 #include <QtCore/QList>
 #include <QtCore/QString>
 #include <QtCore/QTimer>
@@ -22,8 +24,10 @@ namespace mbscope {
 //   Address | Modicon reference | Name (from a profile) | one column per value format | Scaled
 // Each value column has its own RegisterFormat (u16, i16, hex, bin, ascii, 32/64-bit integers and
 // floats in the four orders). A value wider than one register stands on the row of its first
-// register (counted from the first register of the answer) with SpanRole saying how many rows it
-// covers; the rows it covers say which value they belong to. Bit tables have one value column.
+// register with SpanRole saying how many rows it covers; the rows it covers say which value they
+// belong to. Where the profile has a multi-register value the column's values start at its
+// address (WideValueLayout), elsewhere from the first register of the answer. Bit tables have one
+// value column.
 //
 // Values that changed since the previous answer are marked (ChangedRole, a background colour)
 // until the next answer or until the highlight duration has passed.
@@ -119,6 +123,8 @@ private:
     enum class CellText : quint8 { None, Display, ToolTip };
     [[nodiscard]] ValueCell valueCell(int row, int valueIndex, CellText wanted) const;
     [[nodiscard]] const TableEntry *entryAt(int row) const;
+    // The values of a column of width registers, per row (cached until the rows or profile change).
+    [[nodiscard]] const QList<WideValueLayout::Value> &valueLayout(int width) const;
     [[nodiscard]] QString nameText(int row) const;
     [[nodiscard]] QString scaledText(int row) const;
     [[nodiscard]] QString rowWhere(int row) const;
@@ -140,6 +146,7 @@ private:
     QString m_lastProblem;
     int m_highlightMs = 3000;
     QTimer m_highlightTimer;
+    mutable QHash<int, QList<WideValueLayout::Value>> m_layouts; // by value width
 };
 
 } // namespace mbscope

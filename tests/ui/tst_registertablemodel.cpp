@@ -121,6 +121,25 @@ UnitProfile scaledProfile()
     return *r.profile.unit(1);
 }
 
+// Wide values that do not start on the answer's first register: a status word, a float at 1-2,
+// a double at 3-6, a counter at 7.
+UnitProfile wideProfile()
+{
+    const QByteArray json = R"({"name": "wide", "units": [{"id": 1, "tables": {"holding": [
+        {"address": 0, "name": "status", "type": "u16"},
+        {"address": 1, "name": "voltage", "type": "f32-abcd", "unit": "V", "value": 230.5},
+        {"address": 3, "name": "energy", "type": "f64", "unit": "kWh", "value": 3},
+        {"address": 7, "name": "count", "type": "u16"}
+    ]}}]})";
+    const ProfileLoadResult r = ProfileLoader::parse(json, QStringLiteral("wide"));
+    if (!r.ok)
+        qFatal("wide profile: %s", qPrintable(r.errorText()));
+    return *r.profile.unit(1);
+}
+
+// Registers 0-7 of that profile: 7, 230.5 (43668000), 3.0 (4008000000000000), 42.
+const QList<quint16> kWideRegisters{7, 0x4366, 0x8000, 0x4008, 0, 0, 0, 42};
+
 QString text(const RegisterTableModel &model, int row, int column)
 {
     return model.index(row, column).data().toString();
@@ -138,6 +157,8 @@ private Q_SLOTS:
     void formats_data();
     void formats();
     void spans();
+    void wideValuesFollowTheProfile_data();
+    void wideValuesFollowTheProfile();
     void references_data();
     void references();
     void bitTables();
@@ -295,6 +316,68 @@ void TestRegisterTableModel::spans()
     // Rows inside a value cannot be edited: the value is edited on its first register.
     QVERIFY(!(model.index(1, RegisterTableModel::FirstValueColumn + 1).flags() & Qt::ItemIsEditable));
     QVERIFY(model.index(2, RegisterTableModel::FirstValueColumn + 1).flags() & Qt::ItemIsEditable);
+}
+
+void TestRegisterTableModel::wideValuesFollowTheProfile_data()
+{
+    QTest::addColumn<QString>("format");
+    QTest::addColumn<int>("address"); // of the read
+    QTest::addColumn<int>("count");
+    QTest::addColumn<int>("row");
+    QTest::addColumn<int>("span");     // SpanRole on the row
+    QTest::addColumn<QString>("shown"); // the cell's text
+    QTest::addColumn<QString>("tip");   // in its tooltip
+
+    const QString f32 = QStringLiteral("f32-abcd");
+    const QString f64 = QStringLiteral("f64");
+    // From the answer's first register f32 would read 0007 4366 and 8000 4093: the profile's
+    // float starts at 1, so register 0 stands alone and 1-2 make 230.5.
+    QTest::newRow("f32: status alone, cut by the float") << f32 << 0 << 8 << 0 << 1 << u"(1 of 2 registers)"_s
+                                                         << u"the profile's next value begins after 1"_s;
+    QTest::newRow("f32: the float on its address") << f32 << 0 << 8 << 1 << 2 << u"230.5"_s << u"40002-40003"_s;
+    QTest::newRow("f32: inside the float") << f32 << 0 << 8 << 2 << 0 << u"\u2191 f32 from 40002"_s << QString();
+    QTest::newRow("f32: first half of the double") << f32 << 0 << 8 << 3 << 2 << u"2.125"_s << u"40004-40005"_s;
+    QTest::newRow("f32: the answer ends") << f32 << 0 << 8 << 7 << 1 << u"(1 of 2 registers)"_s
+                                          << u"the answer ends after 1"_s;
+    QTest::newRow("f64: the double on its address") << f64 << 0 << 8 << 3 << 4 << u"3"_s << u"40004-40007"_s;
+    QTest::newRow("f64: float cut by the double") << f64 << 0 << 8 << 1 << 2 << u"(2 of 4 registers)"_s
+                                                  << u"the profile's next value begins after 2"_s;
+    // A read that begins inside the float: its second register is no value of its own.
+    QTest::newRow("f32: answer begins inside the float") << f32 << 2 << 5 << 0 << 1 << u"(1 of 2 registers)"_s
+                                                         << u"from 40002; the answer begins 1 registers into it"_s;
+    QTest::newRow("f32: after the cut, the double") << f32 << 2 << 5 << 1 << 2 << u"2.125"_s << u"40004-40005"_s;
+    QTest::newRow("f64 from the double's second register") << f64 << 4 << 4 << 0 << 3 << u"(3 of 4 registers)"_s
+                                                           << u"from 40004; the answer begins 1 registers into it"_s;
+}
+
+void TestRegisterTableModel::wideValuesFollowTheProfile()
+{
+    QFETCH(QString, format);
+    QFETCH(int, address);
+    QFETCH(int, count);
+    QFETCH(int, row);
+    QFETCH(int, span);
+    QFETCH(QString, shown);
+    QFETCH(QString, tip);
+    RegisterTableModel model;
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    model.setValueFormats({::format(format)});
+    model.setProfile(wideProfile(), u"wide"_s);
+    QVERIFY(model.update(readRequestPdu(0x03, address, count), readRegistersPdu(0x03, address, kWideRegisters.mid(address, count))));
+    const QModelIndex cell = model.index(row, RegisterTableModel::FirstValueColumn);
+    QCOMPARE(cell.data(RegisterTableModel::SpanRole).toInt(), span);
+    QCOMPARE(cell.data().toString(), shown);
+    const QString tooltip = cell.data(Qt::ToolTipRole).toString();
+    QVERIFY2(tooltip.contains(tip), qPrintable(tooltip));
+    // Only a whole value is edited, on its first register.
+    const bool whole = span > 0 && !shown.startsWith(QLatin1Char('('));
+    QCOMPARE(bool(cell.flags() & Qt::ItemIsEditable), whole);
+    // Without the profile the values count from the answer's first register again.
+    model.clearProfile();
+    QVERIFY(model.update(readRequestPdu(0x03, address, count), readRegistersPdu(0x03, address, kWideRegisters.mid(address, count))));
+    const int width = ::format(format).registerCount();
+    QCOMPARE(model.index(row, RegisterTableModel::FirstValueColumn).data(RegisterTableModel::SpanRole).toInt(),
+             row % width == 0 ? qMin(width, count - row) : 0);
 }
 
 void TestRegisterTableModel::references_data()
