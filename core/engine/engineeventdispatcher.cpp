@@ -1,5 +1,6 @@
 #include "engineeventdispatcher.h"
 
+#include "transport/directsocketnotifier.h"
 #include "transport/monotonicclock.h"
 
 #include <QtCore/QCoreApplication>
@@ -114,9 +115,11 @@ void EngineEventDispatcher::rebuildPollList()
 {
     m_pollList.clear();
     m_pollList.push_back(pollfd{m_wakeFd, POLLIN, 0});
-    for (QSocketNotifier *notifier : m_notifiers)
+    m_polled.clear();
+    for (QSocketNotifier *notifier : m_notifiers) {
         m_pollList.push_back(pollfd{int(notifier->socket()), polledEvents(notifier->type()), 0});
-    m_polled = m_notifiers;
+        m_polled.push_back(Polled{notifier, dynamic_cast<DirectSocketNotifier *>(notifier)});
+    }
     m_pollListStale = false;
 }
 
@@ -124,12 +127,13 @@ int EngineEventDispatcher::activateNotifiers()
 {
     // The notifiers to wake, taken before any handler runs: a handler may disable, enable or
     // delete notifiers (its own too). m_polled matches m_pollList until the next rebuild.
-    QVarLengthArray<QSocketNotifier *, 8> woken;
+    QVarLengthArray<Polled, 8> woken;
     for (size_t i = 1; i < m_pollList.size(); ++i) {
         const short revents = m_pollList[i].revents;
         if (revents == 0)
             continue;
-        QSocketNotifier *notifier = m_polled[i - 1];
+        const Polled &polled = m_polled[i - 1];
+        QSocketNotifier *notifier = polled.notifier;
         if (revents & POLLNVAL) {
             if (std::find(m_notifiers.cbegin(), m_notifiers.cend(), notifier) != m_notifiers.cend()) {
                 qWarning("mbscope: the engine's event dispatcher: descriptor %d is not open; its notifier is disabled",
@@ -139,14 +143,18 @@ int EngineEventDispatcher::activateNotifiers()
             continue;
         }
         if (revents & wakingEvents(notifier->type()))
-            woken.append(notifier);
+            woken.append(polled);
     }
     int activated = 0;
-    for (QSocketNotifier *notifier : woken) {
-        if (std::find(m_notifiers.cbegin(), m_notifiers.cend(), notifier) == m_notifiers.cend())
+    for (const Polled &polled : woken) {
+        if (std::find(m_notifiers.cbegin(), m_notifiers.cend(), polled.notifier) == m_notifiers.cend())
             continue; // disabled or deleted by an earlier handler
-        QEvent event(QEvent::SockAct);
-        QCoreApplication::sendEvent(notifier, &event);
+        if (polled.direct) {
+            polled.direct->activate();
+        } else {
+            QEvent event(QEvent::SockAct);
+            QCoreApplication::sendEvent(polled.notifier, &event);
+        }
         ++activated;
     }
     return activated;

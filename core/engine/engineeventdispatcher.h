@@ -10,13 +10,16 @@
 
 namespace mbscope {
 
+class DirectSocketNotifier;
+
 // The event dispatcher of the engine's thread (TransactionEngine sets it before the thread
 // starts): one ppoll() over the enabled socket notifiers and a wake-up eventfd, timers kept in a
 // short list, posted events sent at each turn. The engine's thread holds a link's notifiers, a few
 // timers and the calls posted to it, and turns once per transaction; Qt's general dispatchers
 // (GLib's main context, or Qt's own on Unix) spent about 2,500 instructions per turn on sources,
 // locks and pollfd lists rebuilt each time, more than a quarter of the engine's work per
-// transaction (issue 3). This one keeps its pollfd list until a notifier changes.
+// transaction (issue 3). This one keeps its pollfd list until a notifier changes, and calls a
+// DirectSocketNotifier's activate() itself instead of sending it an event.
 //
 // Timers fire at their due time rounded to the millisecond or better (every timer is treated as
 // precise); a timer does not fire again while its own timer event is still running (a nested
@@ -70,7 +73,11 @@ private:
     std::vector<Timer> m_timers;
     std::vector<QSocketNotifier *> m_notifiers;
     std::vector<pollfd> m_pollList; // the wake-up descriptor first, then one per notifier
-    std::vector<QSocketNotifier *> m_polled; // the notifiers of m_pollList, in its order
+    struct Polled {
+        QSocketNotifier *notifier = nullptr;
+        DirectSocketNotifier *direct = nullptr; // the same notifier when it handles activation itself
+    };
+    std::vector<Polled> m_polled; // the notifiers of m_pollList, in its order
     bool m_pollListStale = true;
 };
 

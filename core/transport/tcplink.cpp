@@ -1,9 +1,8 @@
 #include "tcplink.h"
 
+#include "directsocketnotifier.h"
 #include "monotonicclock.h"
 
-#include <QtCore/QEvent>
-#include <QtCore/QSocketNotifier>
 #include <QtNetwork/QHostAddress>
 #include <QtNetwork/QTcpSocket>
 
@@ -24,27 +23,18 @@ constexpr qsizetype kReceiveChunk = 64 * 1024;
 
 } // namespace
 
-// A socket notifier that calls its link's handler directly: the event dispatcher's activation
-// reaches the link without QSocketNotifier's activated() signals (two per activation).
-class TcpLink::DescriptorNotifier final : public QSocketNotifier
+// The link's read and write notifiers call its handlers directly.
+class TcpLink::DescriptorNotifier final : public DirectSocketNotifier
 {
 public:
     DescriptorNotifier(Type type, TcpLink *link, void (TcpLink::*handler)())
-        : QSocketNotifier(type, link)
+        : DirectSocketNotifier(type, link)
         , m_link(link)
         , m_handler(handler)
     {
     }
 
-protected:
-    bool event(QEvent *e) override
-    {
-        if (e->type() == QEvent::SockAct) {
-            (m_link->*m_handler)();
-            return true;
-        }
-        return QSocketNotifier::event(e);
-    }
+    void activate() override { (m_link->*m_handler)(); }
 
 private:
     TcpLink *m_link;

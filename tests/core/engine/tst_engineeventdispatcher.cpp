@@ -1,4 +1,5 @@
 #include "engine/engineeventdispatcher.h"
+#include "transport/directsocketnotifier.h"
 
 #include <QtCore/QPointer>
 #include <QtCore/QScopeGuard>
@@ -43,6 +44,41 @@ public:
 private:
     QThread m_thread;
     QObject m_context;
+};
+
+// Counts its activations; an event filter on it counts the SockAct events it is sent.
+class CountingNotifier final : public DirectSocketNotifier
+{
+public:
+    CountingNotifier(int fd, QObject *parent)
+        : DirectSocketNotifier(QSocketNotifier::Read, parent)
+        , m_fd(fd)
+    {
+        setSocket(fd);
+        setEnabled(true);
+    }
+    void activate() override
+    {
+        char buffer[64];
+        (void)::read(m_fd, buffer, sizeof buffer);
+        ++activations;
+    }
+    std::atomic<int> activations{0};
+
+private:
+    int m_fd;
+};
+
+class EventCounter final : public QObject
+{
+public:
+    bool eventFilter(QObject *, QEvent *e) override
+    {
+        if (e->type() == QEvent::SockAct)
+            ++events;
+        return false;
+    }
+    std::atomic<int> events{0};
 };
 
 } // namespace
@@ -222,6 +258,46 @@ private slots:
             t.run([] {});
         QCOMPARE(awake.load(), awakeBefore);
         QCOMPARE(blocking.load(), blockingBefore);
+    }
+
+    // A DirectSocketNotifier is activated by a direct call, without an event (its event filter
+    // sees none); under Qt's own dispatcher the event reaches the same activate().
+    void directNotifiers_data()
+    {
+        QTest::addColumn<bool>("engineDispatcher");
+        QTest::newRow("engine dispatcher") << true;
+        QTest::newRow("Qt's dispatcher") << false;
+    }
+    void directNotifiers()
+    {
+        QFETCH(bool, engineDispatcher);
+        int fds[2];
+        QCOMPARE(::socketpair(AF_UNIX, SOCK_STREAM | SOCK_NONBLOCK, 0, fds), 0);
+        auto closeFds = qScopeGuard([&] {
+            ::close(fds[0]);
+            ::close(fds[1]);
+        });
+        QThread thread;
+        if (engineDispatcher)
+            thread.setEventDispatcher(new EngineEventDispatcher);
+        thread.start();
+        QObject context;
+        context.moveToThread(&thread);
+        CountingNotifier *notifier = nullptr;
+        EventCounter counter;
+        counter.moveToThread(&thread);
+        auto stop = qScopeGuard([&] { // before the objects of the thread go
+            thread.quit();
+            thread.wait();
+        });
+        QMetaObject::invokeMethod(&context, [&] {
+            notifier = new CountingNotifier(fds[0], &context);
+            notifier->installEventFilter(&counter);
+        }, Qt::BlockingQueuedConnection);
+        QCOMPARE(::write(fds[1], "x", 1), ssize_t(1));
+        QTRY_COMPARE_WITH_TIMEOUT(notifier->activations.load(), 1, kWaitMs);
+        QCOMPARE(counter.events.load(), engineDispatcher ? 0 : 1);
+        QMetaObject::invokeMethod(&context, [&] { delete notifier; }, Qt::BlockingQueuedConnection);
     }
 
     // deleteLater() in the thread deletes the object.
