@@ -4,12 +4,14 @@
 #include "appicon.h"
 #include "connectionbar.h"
 #include "decodepanel.h"
+#include "latencyanalysis.h"
 #include "linkcontroller.h"
 #include "linkstatuswidget.h"
 #include "noticebanner.h"
 #include "preferencesdialog.h"
 #include "rawrequesteditor.h"
 #include "registertable.h"
+#include "replaycontroller.h"
 #include "requestcomposer.h"
 #include "savedrequests.h"
 #include "sessioncontroller.h"
@@ -54,6 +56,9 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_session, &SessionController::titleChanged, this, &QMainWindow::setWindowTitle);
     // Replay and test plans: the Session menu and the Replay and Test plan docks beside Traffic.
     m_sessionTools = new SessionTools(this, m_controller, m_session, m_traffic, m_trafficDock);
+    // The Latency histogram and Compare tabs of the Analysis dock; an opened capture is shown there too.
+    m_latency = new LatencyAnalysis(m_analysis, m_controller, this);
+    connect(m_sessionTools->replay(), &ReplayController::captureAnalysed, m_latency, &LatencyAnalysis::showTransactions);
     createMenus();
     statusBar()->showMessage(tr("Ready"), 3000);
     resize(1400, 900);

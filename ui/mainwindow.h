@@ -15,6 +15,7 @@ namespace mbscope {
 class AnalysisDock;
 class ConnectionBar;
 class DecodePanel;
+class LatencyAnalysis;
 class LinkController;
 class LinkStatusWidget;
 class NoticeBanner;
@@ -59,6 +60,7 @@ public:
     [[nodiscard]] SessionController *session() const { return m_session; }
     // The bottom dock whose tabs hold the analysis panels (histogram, trends, sweep...).
     [[nodiscard]] AnalysisDock *analysisDock() const { return m_analysis; }
+    [[nodiscard]] LatencyAnalysis *latencyAnalysis() const { return m_latency; }
     [[nodiscard]] SessionTools *sessionTools() const { return m_sessionTools; }
 
     // Window geometry and dock layout kept in QSettings ("window/geometry", "window/state"):
@@ -97,6 +99,7 @@ private:
     QDockWidget *m_registersDock = nullptr;
     AnalysisDock *m_analysis = nullptr;
     QDockWidget *m_analysisDock = nullptr;
+    LatencyAnalysis *m_latency = nullptr;
     SessionController *m_session = nullptr;
     SessionTools *m_sessionTools = nullptr;
     bool m_layoutRestored = false; // the docks' sizes came from QSettings: the first show keeps them
