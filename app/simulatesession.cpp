@@ -46,8 +46,9 @@ bool isRequest(SimLogEntry::Verdict v)
 SimulateSession::SimulateSession(QTextStream &out, const Options &options, QObject *parent)
     : QObject(parent), m_out(out), m_options(options)
 {
-    connect(&m_sim, &Simulator::logged, this, &SimulateSession::onLogged);
-    m_sim.setFaultHook([this](const SimExchange &exchange) { return onExchange(exchange); });
+    connect(&m_recorder, &SimFaultPlanRecorder::recorded, this, [this](const SimTrafficRecord &record) {
+        finish(record.entry, record.plan ? &*record.plan : nullptr);
+    });
     connect(&m_summaryTimer, &QTimer::timeout, this, [this] {
         m_out << QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")) << "  " << summary() << Qt::endl;
     });
@@ -56,7 +57,6 @@ SimulateSession::SimulateSession(QTextStream &out, const Options &options, QObje
 SimulateSession::~SimulateSession()
 {
     stop();
-    m_sim.setFaultHook({});
 }
 
 bool SimulateSession::load(const DeviceProfile &profile, const std::optional<FaultRuleSet> &faults, QString *error)
@@ -121,7 +121,6 @@ void SimulateSession::stop()
 {
     m_summaryTimer.stop();
     m_driver.stop();
-    m_plan.reset();
     m_sim.closeAll();
     if (m_log.isOpen())
         m_log.close();
@@ -160,26 +159,6 @@ QString SimulateSession::summary() const
         .arg(c.connections)
         .arg(open)
         .arg(c.refused);
-}
-
-void SimulateSession::onLogged(const SimLogEntry &entry)
-{
-    // An entry with an answer is the request the fault hook has just seen (handleFrame calls the
-    // hook, then logs): its plan says what was really sent. Entries without an answer (silence,
-    // malformed frames, connection events) never went through the hook.
-    std::optional<FaultPlan> plan;
-    if (!entry.response.isEmpty())
-        plan.swap(m_plan);
-    m_plan.reset();
-    finish(entry, plan ? &*plan : nullptr);
-}
-
-FaultPlan SimulateSession::onExchange(const SimExchange &exchange)
-{
-    const FaultContext context = FaultContext::forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu,
-                                                          exchange.responseDelayNs);
-    m_plan = m_injector.plan(context);
-    return *m_plan;
 }
 
 void SimulateSession::finish(const SimLogEntry &entry, const FaultPlan *plan)

@@ -4,6 +4,7 @@
 #include "sim/faultinjector.h"
 #include "sim/faultplan.h"
 #include "sim/generatordriver.h"
+#include "sim/simfaultplanrecorder.h"
 #include "sim/simlogentry.h"
 #include "sim/simulator.h"
 
@@ -24,9 +25,8 @@ namespace mbscope::app {
 // FaultInjector as its fault hook, and the observers that print one line per request (or a
 // periodic summary) and write the JSON-lines traffic log.
 //
-// The Simulator reports a request (logged) before its fault hook decides what is sent, so an
-// answered request is held until the hook has spoken: then its line says "dropped by fault" or
-// which faults changed the answer.
+// Each request comes with the fault plan made for its answer (SimFaultPlanRecorder): its line
+// says "dropped by fault" or which faults changed the answer.
 class SimulateSession : public QObject
 {
     Q_OBJECT
@@ -68,8 +68,6 @@ private:
         quint64 refused = 0;
     };
 
-    void onLogged(const SimLogEntry &entry);
-    FaultPlan onExchange(const SimExchange &exchange);
     void finish(const SimLogEntry &entry, const FaultPlan *plan);
     void count(const SimLogEntry &entry, const FaultPlan *plan);
     void printLine(const SimLogEntry &entry, const FaultPlan *plan);
@@ -85,9 +83,8 @@ private:
     FaultInjector m_injector;
     GeneratorDriver m_driver;
     QList<SimUnit *> m_units;
-    // The plan the fault hook made for the request being handled: Simulator::handleFrame asks
-    // the hook first, then logs the request with its answer.
-    std::optional<FaultPlan> m_plan;
+    // The injector as the fault hook, each request paired with the plan made for its answer.
+    SimFaultPlanRecorder m_recorder{&m_sim, &m_injector};
     QHash<QString, Framing> m_framings;
     QFile m_log;
     QTimer m_summaryTimer;

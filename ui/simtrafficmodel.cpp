@@ -86,8 +86,8 @@ int SimTrafficModel::columnCount(const QModelIndex &parent) const
 
 int SimTrafficModel::exceptionCodeOf(const SimTrafficRecord &record)
 {
-    const QByteArray &answer = record.planned ? record.sent : record.entry.response;
-    if (answer.isEmpty() || record.dropped)
+    const QByteArray answer = record.sentBytes();
+    if (answer.isEmpty())
         return 0;
     const AduParts parts = AduBuilder::parse(answer, record.framing);
     if (parts.pdu.size() >= 2 && (quint8(parts.pdu.at(0)) & 0x80) != 0)
@@ -111,7 +111,7 @@ QString SimTrafficModel::outcomeText(const SimTrafficRecord &record) const
     using V = SimLogEntry::Verdict;
     const SimLogEntry &entry = record.entry;
     const QString faults = entry.faults.join(QStringLiteral(", "));
-    if (record.dropped)
+    if (record.isDropped())
         return tr("no answer: dropped by fault rule %1").arg(faults);
     QString text;
     const int exception = exceptionCodeOf(record);
@@ -133,7 +133,7 @@ QString SimTrafficModel::outcomeText(const SimTrafficRecord &record) const
     }
     if (!faults.isEmpty())
         text = tr("%1, changed by fault rule %2").arg(text, faults);
-    if (record.closedAfter)
+    if (record.plan && record.plan->closeAfter)
         text = tr("%1, then the connection closed").arg(text);
     return text;
 }
@@ -154,13 +154,13 @@ QVariant SimTrafficModel::data(const QModelIndex &index, int role) const
         case FunctionColumn: return functionText(record);
         case OutcomeColumn: return outcomeText(record);
         case RequestColumn: return hexOf(entry.request);
-        case SentColumn: return hexOf(record.planned ? record.sent : entry.response);
+        case SentColumn: return hexOf(record.sentBytes());
         default: return {};
         }
     case Qt::ToolTipRole:
         if (index.column() == OutcomeColumn || index.column() == SentColumn) {
-            if (record.planned && record.delayNs > 0)
-                return tr("%1; sent %2 ms after the request").arg(outcomeText(record)).arg(double(record.delayNs) / 1e6, 0, 'f', 1);
+            if (const qint64 delay = record.delayNs(); delay > 0)
+                return tr("%1; sent %2 ms after the request").arg(outcomeText(record)).arg(double(delay) / 1e6, 0, 'f', 1);
             return outcomeText(record);
         }
         return {};

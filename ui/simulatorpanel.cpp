@@ -65,6 +65,7 @@ SimulatorPanel::SimulatorPanel(QWidget *parent)
 
 SimulatorPanel::~SimulatorPanel()
 {
+    disconnect(m_runs, nullptr, this, nullptr); // no reselection while the panel goes
     for (const QPointer<SimulatorHost> &host : std::as_const(m_owned)) {
         if (host) {
             disconnect(host, nullptr, this, nullptr);

@@ -25,11 +25,12 @@ SimFaultPlanRecorder::~SimFaultPlanRecorder()
 
 void SimFaultPlanRecorder::onLogged(const SimLogEntry &entry)
 {
-    std::optional<FaultPlan> plan;
+    SimTrafficRecord record;
+    record.entry = entry;
     if (!entry.response.isEmpty())
-        plan.swap(m_plan);
+        record.plan.swap(m_plan);
     m_plan.reset();
-    Q_EMIT recorded(SimTrafficRecord::of(entry, plan ? &*plan : nullptr));
+    Q_EMIT recorded(record);
 }
 
 } // namespace mbscope

@@ -2,22 +2,26 @@
 
 namespace mbscope {
 
-SimTrafficRecord SimTrafficRecord::of(const SimLogEntry &entry, const FaultPlan *plan)
+QByteArray SimTrafficRecord::sentBytes() const
 {
-    SimTrafficRecord record;
-    record.entry = entry;
     if (!plan)
-        return record;
-    record.planned = true;
-    record.dropped = plan->drop || plan->closeBefore;
-    record.closedAfter = plan->closeAfter;
-    if (record.dropped)
-        return record;
-    for (const ResponseChunk &chunk : plan->chunks) {
-        record.sent += chunk.bytes;
-        record.delayNs += chunk.delayNs;
+        return entry.response;
+    if (isDropped())
+        return {};
+    QByteArray sent;
+    for (const ResponseChunk &chunk : plan->chunks)
+        sent += chunk.bytes;
+    return sent;
+}
+
+qint64 SimTrafficRecord::delayNs() const
+{
+    qint64 total = 0;
+    if (plan) {
+        for (const ResponseChunk &chunk : plan->chunks)
+            total += chunk.delayNs;
     }
-    return record;
+    return total;
 }
 
 } // namespace mbscope

@@ -7,23 +7,27 @@
 #include <QtCore/QByteArray>
 #include <QtCore/QMetaType>
 
+#include <optional>
+
 namespace mbscope {
 
-// One line of the simulator's own traffic: what came in (SimLogEntry) together with what the
-// fault plan made of the answer. The Simulator logs a request right after its fault hook has
-// planned the answer, so the record pairs the two (SimFaultPlanRecorder).
+// One line of the simulator's own traffic: what came in (SimLogEntry) together with the fault
+// plan made for its answer. The Simulator logs a request right after its fault hook has planned
+// the answer, so the record pairs the two (SimFaultPlanRecorder).
 struct SimTrafficRecord {
     SimLogEntry entry;
     Framing framing = Framing::Tcp; // the endpoint's, to read the frames
-    bool planned = false;   // the answer went through the fault hook (entry.response is set)
-    bool dropped = false;   // the plan sent nothing (drop) or closed the connection instead
-    bool closedAfter = false;
-    QByteArray sent;        // the bytes the plan wrote, all chunks (empty when dropped)
-    qint64 delayNs = 0;     // the plan's delays, summed
+    // The plan the answer went through; none when the request never reached the fault hook
+    // (silence, malformed frames, connection events).
+    std::optional<FaultPlan> plan;
 
-    [[nodiscard]] bool isFaulted() const { return dropped || !entry.faults.isEmpty(); }
-    // entry with plan (nullptr: the request never reached the hook: silence, malformed, events).
-    [[nodiscard]] static SimTrafficRecord of(const SimLogEntry &entry, const FaultPlan *plan);
+    // The plan sent nothing (drop) or closed the connection instead of answering.
+    [[nodiscard]] bool isDropped() const { return plan && (plan->drop || plan->closeBefore); }
+    [[nodiscard]] bool isFaulted() const { return isDropped() || !entry.faults.isEmpty(); }
+    // The bytes that left: the plan's chunks, or the answer as built when there was no plan.
+    [[nodiscard]] QByteArray sentBytes() const;
+    // The plan's delays, summed (0 without a plan).
+    [[nodiscard]] qint64 delayNs() const;
 };
 
 } // namespace mbscope
