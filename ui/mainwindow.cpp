@@ -15,6 +15,7 @@
 #include "requestcomposer.h"
 #include "savedrequests.h"
 #include "sessioncontroller.h"
+#include "simulatorpanel.h"
 #include "sessiontools.h"
 #include "trafficmodel.h"
 #include "trafficmonitor.h"
@@ -243,6 +244,14 @@ void MainWindow::buildDocks()
     m_analysisDock->setWidget(m_analysis);
     addDockWidget(Qt::BottomDockWidgetArea, m_analysisDock);
     tabifyDockWidget(m_registersDock, m_analysisDock);
+
+    m_simulatorPanel = new SimulatorPanel(this);
+    m_simulatorPanel->setObjectName(QStringLiteral("simulatorPanel"));
+    m_simulatorDock = new QDockWidget(tr("Simulator"), this);
+    m_simulatorDock->setObjectName(QStringLiteral("simulatorDock"));
+    m_simulatorDock->setWidget(m_simulatorPanel);
+    addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
+    tabifyDockWidget(m_analysisDock, m_simulatorDock);
     m_trafficDock->raise();
 }
 
@@ -258,6 +267,10 @@ void MainWindow::connectDocks()
     // Answers to reads (a poll's, a single send's) fill the register table; its edits are sent.
     connect(m_controller, &LinkController::latestTransaction, this, &MainWindow::showInRegisterTable);
     connect(m_registers, &RegisterTable::writeRequested, this, &MainWindow::sendWrite);
+    // The first-run simulator is one of the simulator panel's entries.
+    connect(m_simulator, &EmbeddedSimulator::hostStarted, m_simulatorPanel, [this](SimulatorHost *host) {
+        m_simulatorPanel->addRunning(host, m_simulator->profileName(), true);
+    });
 }
 
 void MainWindow::showInRegisterTable(const Transaction &transaction)
@@ -346,6 +359,7 @@ void MainWindow::createMenus()
     view->addAction(m_trafficDock->toggleViewAction());
     view->addAction(m_registersDock->toggleViewAction());
     view->addAction(m_analysisDock->toggleViewAction());
+    view->addAction(m_simulatorDock->toggleViewAction());
     QAction *find = view->addAction(tr("&Find in traffic"), this, [this] {
         m_trafficDock->show();
         m_trafficDock->raise();

@@ -23,6 +23,7 @@ class RegisterTable;
 class RequestComposer;
 class SessionController;
 class SessionTools;
+class SimulatorPanel;
 class TrafficMonitor;
 class TransactionView;
 
@@ -62,6 +63,7 @@ public:
     [[nodiscard]] AnalysisDock *analysisDock() const { return m_analysis; }
     [[nodiscard]] LatencyAnalysis *latencyAnalysis() const { return m_latency; }
     [[nodiscard]] SessionTools *sessionTools() const { return m_sessionTools; }
+    [[nodiscard]] SimulatorPanel *simulatorPanel() const { return m_simulatorPanel; }
 
     // Window geometry and dock layout kept in QSettings ("window/geometry", "window/state"):
     // restoreLayout() puts back what the last close saved; false when nothing was saved.
@@ -102,6 +104,8 @@ private:
     LatencyAnalysis *m_latency = nullptr;
     SessionController *m_session = nullptr;
     SessionTools *m_sessionTools = nullptr;
+    SimulatorPanel *m_simulatorPanel = nullptr;
+    QDockWidget *m_simulatorDock = nullptr;
     bool m_layoutRestored = false; // the docks' sizes came from QSettings: the first show keeps them
     bool m_fitted = false; // panel proportions set on the first show, then left to the user
 };
