@@ -154,6 +154,68 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(rec.received, all, kWaitMs);
     }
 
+    // A peer that does not read fills the kernel's buffers: writes are still taken whole, the
+    // rest leaves when the peer reads, each write is reported once, in order, once all of it has
+    // left, and the bytes arrive intact and in order.
+    void writesLargerThanTheKernelTakes_data()
+    {
+        QTest::addColumn<int>("writes");
+        QTest::addColumn<int>("bytesEach");
+        QTest::newRow("4 x 1 MiB") << 4 << 1024 * 1024;
+        QTest::newRow("64 x 64 KiB") << 64 << 64 * 1024;
+    }
+    void writesLargerThanTheKernelTakes()
+    {
+        QFETCH(int, writes);
+        QFETCH(int, bytesEach);
+        const int listener = ::socket(AF_INET, SOCK_STREAM, 0);
+        QVERIFY(listener >= 0);
+        auto closeListener = qScopeGuard([&] { ::close(listener); });
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        // A small receive buffer (inherited by the accepted socket; no autotuning then): the
+        // link's writes outgrow what the kernel holds whatever the system's defaults.
+        const int small = 64 * 1024;
+        QCOMPARE(::setsockopt(listener, SOL_SOCKET, SO_RCVBUF, &small, sizeof small), 0);
+        QCOMPARE(::bind(listener, reinterpret_cast<sockaddr *>(&address), sizeof address), 0);
+        QCOMPARE(::listen(listener, 1), 0);
+        socklen_t length = sizeof address;
+        QCOMPARE(::getsockname(listener, reinterpret_cast<sockaddr *>(&address), &length), 0);
+        auto link = makeLink(QStringLiteral("tcp://127.0.0.1:%1").arg(ntohs(address.sin_port)));
+        Recorder rec(link.get());
+        link->open();
+        QTRY_COMPARE_WITH_TIMEOUT(rec.opened, 1, kWaitMs);
+        const int peer = ::accept4(listener, nullptr, nullptr, SOCK_NONBLOCK);
+        QVERIFY(peer >= 0);
+        auto closePeer = qScopeGuard([&] { ::close(peer); });
+
+        QByteArray sent;
+        for (int w = 0; w < writes; ++w) {
+            QByteArray chunk(bytesEach, Qt::Uninitialized);
+            for (int i = 0; i < bytesEach; ++i)
+                chunk[i] = char((w * 131 + i) & 0xFF);
+            QVERIFY(link->write(chunk));
+            sent += chunk;
+        }
+        QVERIFY2(rec.writtenNs.size() < writes, "the kernel took everything: the test proves nothing");
+        QByteArray got;
+        char buffer[65536];
+        // Read as it comes, letting the link send the rest between reads.
+        QDeadlineTimer deadline(kWaitMs);
+        while (got.size() < sent.size() && !deadline.hasExpired()) {
+            const ssize_t n = ::recv(peer, buffer, sizeof buffer, 0);
+            if (n > 0)
+                got.append(buffer, n);
+            else
+                QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        }
+        QVERIFY(got == sent);
+        QTRY_COMPARE_WITH_TIMEOUT(rec.writtenNs.size(), writes, kWaitMs);
+        QVERIFY(std::is_sorted(rec.writtenNs.begin(), rec.writtenNs.end()));
+        QVERIFY(rec.errors.isEmpty());
+    }
+
     void closeAndReopen()
     {
         Peer peer;
