@@ -6,6 +6,8 @@
 #include <QtCore/QCoreApplication>
 
 #ifdef MBSCOPE_HAVE_UI
+#include "latencytimegraphs.h"
+
 #include <QtWidgets/QApplication>
 #include <qcustomplot.h>
 #endif
@@ -57,23 +59,19 @@ bool TimeSeriesPlot::write(const QString &path, const QString &title, const Late
     plot.legend->setVisible(true);
     plot.legend->setFont(QFont(QStringLiteral("Sans"), 9));
 
-    const auto addDots = [&](const std::vector<double> &x, const QVector<double> &y, const QString &name, const QColor &colour,
-                             QCPScatterStyle::ScatterShape shape, double size) {
-        auto *graph = plot.addGraph();
-        graph->setName(name);
-        graph->setLineStyle(QCPGraph::lsNone);
-        graph->setScatterStyle(QCPScatterStyle(shape, colour, colour, size));
-        graph->setData(toVector(x, 1), y, true);
-    };
-    addDots(series.okSeconds, toVector(series.okLatencyNs, unit), QStringLiteral("answered (%1)").arg(series.okSeconds.size()),
-            QColor(31, 119, 180), QCPScatterStyle::ssDisc, 3);
-    if (!series.exceptionSeconds.empty())
-        addDots(series.exceptionSeconds, toVector(series.exceptionLatencyNs, unit),
-                QStringLiteral("exceptions (%1)").arg(series.exceptionSeconds.size()), QColor(255, 127, 14), QCPScatterStyle::ssDisc, 4);
-    if (!series.failedSeconds.empty())
-        addDots(series.failedSeconds, QVector<double>(qsizetype(series.failedSeconds.size()), 0.0),
-                QStringLiteral("no usable answer (%1), drawn at 0").arg(series.failedSeconds.size()), QColor(214, 39, 40),
-                QCPScatterStyle::ssCross, 7);
+    // The window's latency-over-time panel draws the same graphs; names stay English here (the
+    // command line is never translated) and a graph with no points is left out of the legend.
+    const LatencyTimeGraphs graphs = LatencyTimeGraphs::addTo(&plot);
+    graphs.answered->setName(QStringLiteral("answered (%1)").arg(series.okSeconds.size()));
+    graphs.answered->setData(toVector(series.okSeconds, 1), toVector(series.okLatencyNs, unit), true);
+    graphs.exceptions->setName(QStringLiteral("exceptions (%1)").arg(series.exceptionSeconds.size()));
+    graphs.exceptions->setData(toVector(series.exceptionSeconds, 1), toVector(series.exceptionLatencyNs, unit), true);
+    graphs.failed->setName(QStringLiteral("no usable answer (%1), drawn at 0").arg(series.failedSeconds.size()));
+    graphs.failed->setData(toVector(series.failedSeconds, 1), QVector<double>(qsizetype(series.failedSeconds.size()), 0.0), true);
+    if (series.exceptionSeconds.empty())
+        plot.removeGraph(graphs.exceptions);
+    if (series.failedSeconds.empty())
+        plot.removeGraph(graphs.failed);
     plot.rescaleAxes();
     plot.yAxis->setRangeLower(0);
     plot.yAxis->setRangeUpper(std::max(plot.yAxis->range().upper * 1.1, 1.0));

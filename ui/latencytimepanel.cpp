@@ -34,7 +34,10 @@ LatencyTimePanel::LatencyTimePanel(QWidget *parent)
     const auto milliseconds = [](double ms) { return tr("%1 ms").arg(ms, 0, 'f', 3); };
     m_cursor->setValueFormatter(m_graphs.answered, milliseconds);
     m_cursor->setValueFormatter(m_graphs.exceptions, milliseconds);
-    m_cursor->setValueFormatter(m_graphs.failed, [](double) { return tr("no usable answer"); });
+    m_cursor->setValueFormatter(m_graphs.failed, [](double) { return QString(); });
+    m_cursor->setLabel(m_graphs.answered, tr("answered"));
+    m_cursor->setLabel(m_graphs.exceptions, tr("exception"));
+    m_cursor->setLabel(m_graphs.failed, tr("no usable answer (timeout or bad answer)"));
 
     m_follow->setCheckable(true);
     m_follow->setChecked(true);
@@ -147,6 +150,13 @@ void LatencyTimePanel::redrawNow()
 void LatencyTimePanel::redraw()
 {
     m_graphs.nameWithCounts(m_graphs.answered->dataCount(), m_graphs.exceptions->dataCount(), m_graphs.failed->dataCount());
+    // Only what happened is in the legend: most polls have no exceptions, some no failures.
+    for (QCPGraph *graph : {m_graphs.exceptions, m_graphs.failed}) {
+        if (graph->dataCount() > 0)
+            graph->addToLegend();
+        else
+            graph->removeFromLegend();
+    }
     m_summary->setText(summary());
     if (m_following)
         fitAxes();

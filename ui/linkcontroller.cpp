@@ -99,6 +99,21 @@ bool LinkController::startPoll(const QByteArray &bytes, int intervalMs, quint64 
     return true;
 }
 
+bool LinkController::startSweep(const QByteArray &bytes, const QList<int> &intervalsMs, quint64 count)
+{
+    if (!m_engine || bytes.isEmpty() || intervalsMs.isEmpty())
+        return false;
+    SweepSettings settings;
+    settings.poll.items = {RequestItem::forLink(bytes, m_url)};
+    settings.poll.count = count;
+    for (const int ms : intervalsMs)
+        settings.intervalsNs.append(qint64(qMax(0, ms)) * 1000000);
+    m_engine->startSweep(settings);
+    m_polling = true;
+    Q_EMIT pollingChanged(true);
+    return true;
+}
+
 void LinkController::stopPoll()
 {
     if (!m_engine || !m_polling)
@@ -158,6 +173,7 @@ void LinkController::onProgress(const EngineProgress &progress)
 {
     m_counters = m_countersBefore + progress.counters;
     Q_EMIT countersChanged(m_counters);
+    Q_EMIT progressChanged(progress);
 }
 
 void LinkController::onLinkMessage(const QString &message)

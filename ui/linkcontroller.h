@@ -53,6 +53,9 @@ public:
     quint64 send(const QByteArray &bytes);
     // Sends bytes every intervalMs (0: back to back), count times (0: until stopPoll()).
     bool startPoll(const QByteArray &bytes, int intervalMs, quint64 count);
+    // Polls bytes count times at each interval in turn (TransactionEngine::startSweep); the
+    // PollReport at the end has one run per interval. stopPoll() stops it.
+    bool startSweep(const QByteArray &bytes, const QList<int> &intervalsMs, quint64 count);
     void stopPoll();
 
     // One line for the status bar: "Poll finished: 20 transactions, 20 ok, 0 failed; latency min
@@ -69,6 +72,8 @@ Q_SIGNALS:
     // The newest transaction of each batch: what the decode view shows.
     void latestTransaction(const mbscope::Transaction &transaction);
     void countersChanged(const mbscope::EngineCounters &counters);
+    // The engine's progress with each batch: the run of a sweep and the cycle in it.
+    void progressChanged(const mbscope::EngineProgress &progress);
     void pollingChanged(bool polling);
     void pollFinished(const mbscope::PollReport &report);
 

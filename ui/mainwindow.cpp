@@ -20,6 +20,7 @@
 #include "trafficmodel.h"
 #include "trafficmonitor.h"
 #include "transactionview.h"
+#include "trendpanels.h"
 
 #include "protocol/adubuilder.h"
 
@@ -60,6 +61,8 @@ MainWindow::MainWindow(QWidget *parent)
     // The Latency histogram and Compare tabs of the Analysis dock; an opened capture is shown there too.
     m_latency = new LatencyAnalysis(m_analysis, m_controller, this);
     connect(m_sessionTools->replay(), &ReplayController::captureAnalysed, m_latency, &LatencyAnalysis::showTransactions);
+    // Latency over time, Register trends and Sweep tabs; a sweep polls the composer's request.
+    m_trends = new TrendPanels(m_analysis, m_controller, m_registers, [this] { return m_composer->bytes(); }, this);
     createMenus();
     statusBar()->showMessage(tr("Ready"), 3000);
     resize(1400, 900);
@@ -316,8 +319,10 @@ bool MainWindow::startWithSimulator(const QString &url)
     m_composer->rawEditor()->editor()->setFocus();
     if (const std::optional<LinkUrl> target = m_connectionBar->url())
         m_controller->connectTo(*target);
-    if (const UnitProfile *unit = m_simulator->profile().unit(1))
+    if (const UnitProfile *unit = m_simulator->profile().unit(1)) {
         m_registers->setProfile(*unit, m_simulator->profile().name);
+        m_trends->setProfile(*unit, m_simulator->profile().name);
+    }
     m_session->markClean(); // the first run's target and request are where an untitled session starts
 
     QString notice = tr("<b>Connected to mbscope's built-in simulator</b>, not to a device: a RosRao gamma detector "

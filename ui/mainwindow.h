@@ -25,6 +25,7 @@ class SessionController;
 class SessionTools;
 class SimulatorPanel;
 class TrafficMonitor;
+class TrendPanels;
 class TransactionView;
 
 // The window only assembles: the connection bar, the composer, the answer and decode views, the
@@ -62,6 +63,7 @@ public:
     // The bottom dock whose tabs hold the analysis panels (histogram, trends, sweep...).
     [[nodiscard]] AnalysisDock *analysisDock() const { return m_analysis; }
     [[nodiscard]] LatencyAnalysis *latencyAnalysis() const { return m_latency; }
+    [[nodiscard]] TrendPanels *trendPanels() const { return m_trends; }
     [[nodiscard]] SessionTools *sessionTools() const { return m_sessionTools; }
     [[nodiscard]] SimulatorPanel *simulatorPanel() const { return m_simulatorPanel; }
 
@@ -102,6 +104,7 @@ private:
     AnalysisDock *m_analysis = nullptr;
     QDockWidget *m_analysisDock = nullptr;
     LatencyAnalysis *m_latency = nullptr;
+    TrendPanels *m_trends = nullptr;
     SessionController *m_session = nullptr;
     SessionTools *m_sessionTools = nullptr;
     SimulatorPanel *m_simulatorPanel = nullptr;

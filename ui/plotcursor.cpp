@@ -48,6 +48,11 @@ void PlotCursor::setValueFormatter(QCPGraph *graph, Formatter formatter)
     m_valueFormats.insert(graph, std::move(formatter));
 }
 
+void PlotCursor::setLabel(QCPGraph *graph, const QString &label)
+{
+    m_labels.insert(graph, label);
+}
+
 void PlotCursor::setX(double x)
 {
     m_pinned = true;
@@ -108,7 +113,8 @@ QString PlotCursor::readout() const
             continue;
         const auto format = m_valueFormats.constFind(graph);
         const QString text = format != m_valueFormats.constEnd() && *format ? (*format)(value) : number(value);
-        lines.append(tr("%1: %2").arg(graph->name(), text));
+        const QString label = m_labels.value(graph, graph->name());
+        lines.append(text.isEmpty() ? label : tr("%1: %2").arg(label, text));
     }
     return lines.join(QLatin1Char('\n'));
 }

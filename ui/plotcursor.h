@@ -35,6 +35,9 @@ public:
     // How x and a graph's y read ("12.300 s", "-12.5 degC"); numbers to 6 digits otherwise.
     void setXFormatter(Formatter formatter) { m_xFormat = std::move(formatter); }
     void setValueFormatter(QCPGraph *graph, Formatter formatter);
+    // The name the readout gives a graph when its legend name says more ("answered (120)");
+    // a graph whose formatter gives an empty text reads as its label alone ("timeout").
+    void setLabel(QCPGraph *graph, const QString &label);
 
     // Places and pins the cursor at x (plot coordinates), as a click does.
     void setX(double x);
@@ -65,6 +68,7 @@ private:
     QCPItemText *m_text;
     Formatter m_xFormat;
     QHash<const QCPGraph *, Formatter> m_valueFormats;
+    QHash<const QCPGraph *, QString> m_labels;
     double m_x = 0;
     bool m_shown = false;
     bool m_pinned = false;

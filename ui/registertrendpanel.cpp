@@ -221,7 +221,7 @@ QCPGraph *RegisterTrendPanel::graphFor(int index)
     if (row.graph)
         return row.graph;
     row.graph = m_plot->addGraph();
-    const QColor colour = seriesColour(index);
+    const QColor colour = seriesColour(m_plot->graphCount() - 1); // in the order they were chosen
     row.graph->setPen(QPen(colour, 1.5));
     row.graph->setLineStyle(QCPGraph::lsStepLeft); // a polled value holds until the next answer
     row.graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, colour, colour, 3));

@@ -150,6 +150,12 @@ void TestLatencyTimePanel::pollWithDropsMarksTimeouts()
     panel.cursor()->setX(firstMark);
     panel.plot()->replot();
     QVERIFY2(panel.cursor()->readout().contains(QLatin1String("no usable answer")), qPrintable(panel.cursor()->readout()));
+    // On an answered point it reads the latency.
+    const auto answeredPoint = panel.graphs().answered->data()->constBegin();
+    panel.cursor()->setX(answeredPoint->key);
+    panel.plot()->replot();
+    const QString expected = QStringLiteral("answered: %1 ms").arg(answeredPoint->value, 0, 'f', 3);
+    QVERIFY2(panel.cursor()->readout().contains(expected), qPrintable(panel.cursor()->readout()));
     QVERIFY(guitest::saveShot(&panel, QStringLiteral("latency-over-time.png")));
 }
 
