@@ -6,6 +6,7 @@
 // tabs go to the test output.
 #include "embeddedsimulator.h"
 #include "guitestsupport.h"
+#include "mainwindow.h"
 #include "simfaultform.h"
 #include "simregistermodel.h"
 #include "simrunlistmodel.h"
@@ -22,7 +23,9 @@
 #include <QtTest/QSignalSpy>
 #include <QtTest/QtTest>
 #include <QtWidgets/QComboBox>
+#include <QtWidgets/QDockWidget>
 #include <QtWidgets/QDoubleSpinBox>
+#include <QtWidgets/QMenuBar>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
 #include <QtWidgets/QTabWidget>
@@ -161,6 +164,7 @@ private Q_SLOTS:
     void builtInSimulatorIsOneEntry();
     void trafficListKeepsItsBound();
     void badInputIsRefusedSayingWhy();
+    void windowListsTheFirstRunSimulator();
     void screenshots();
 };
 
@@ -381,6 +385,31 @@ void TestSimulatorPanel::badInputIsRefusedSayingWhy()
     QCOMPARE(refused.count(), 2);
     QVERIFY2(refused.at(0).at(0).toString().contains(QLatin1String("'70000'")), qPrintable(refused.at(0).at(0).toString()));
     QVERIFY2(refused.at(0).at(0).toString().contains(QLatin1String("121")), qPrintable(refused.at(0).at(0).toString()));
+}
+
+void TestSimulatorPanel::windowListsTheFirstRunSimulator()
+{
+    MainWindow window;
+    QVERIFY(window.startWithSimulator(QStringLiteral("rtu-tcp://127.0.0.1:0")));
+    SimulatorPanel *panel = window.simulatorPanel();
+    QVERIFY(panel);
+    QCOMPARE(panel->runsModel()->rowCount(), 1);
+    QVERIFY(panel->runsModel()->isBuiltIn(0));
+    QCOMPARE(panel->currentHost(), window.simulator()->host());
+    // The dock has its toggle in the View menu.
+    auto *dock = window.findChild<QDockWidget *>(QStringLiteral("simulatorDock"));
+    QVERIFY(dock);
+    bool inViewMenu = false;
+    for (QAction *menuAction : window.menuBar()->actions()) {
+        if (menuAction->text() == QLatin1String("&View") && menuAction->menu())
+            inViewMenu = menuAction->menu()->actions().contains(dock->toggleViewAction());
+    }
+    QVERIFY(inViewMenu);
+    // A fault switched in the window's panel reaches the window's own link: exception 06.
+    addRuleThroughForm(panel->faultForm(), FaultRule::Kind::Exception, 0x03, 0x06, 0);
+    Client client(window.simulator()->started().url);
+    QVERIFY(client.isConnected());
+    QCOMPARE(int(client.classify(client.exchange(readSettings()))), int(Seen::Exception06));
 }
 
 void TestSimulatorPanel::screenshots()
