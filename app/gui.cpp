@@ -6,6 +6,7 @@
 #include "mainwindow.h"
 #include "sessioncontroller.h"
 #include "transactionview.h"
+#include "translationloader.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QRegularExpression>
@@ -158,9 +159,14 @@ int runGui(QApplication &app)
                                         QStringLiteral("With --screenshot: poll the first run's request COUNT times, "
                                                        "20 ms apart, and render when the poll ends."),
                                         QStringLiteral("COUNT"));
-    parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption, beforeSendOption, dockOption, pollOption});
+    const QCommandLineOption langOption(QStringLiteral("lang"),
+                                        QStringLiteral("Language of the window for this run: id (Bahasa Indonesia), en "
+                                                       "(English) or system; without it, the choice in Preferences."),
+                                        QStringLiteral("CODE"));
+    parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption, beforeSendOption, dockOption, pollOption,
+                       langOption});
     if (!parser.parse(QCoreApplication::arguments())) {
-        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT] [--dock NAME]\n",
+        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT] [--dock NAME] [--lang CODE]\n",
                      qPrintable(parser.errorText()));
         return ExitUsage;
     }
@@ -196,6 +202,18 @@ int runGui(QApplication &app)
     // QSettings (recent targets, saved requests) under ~/.config/mbscope/.
     if (QCoreApplication::organizationName().isEmpty())
         QCoreApplication::setOrganizationName(QStringLiteral("mbscope"));
+    // The language: --lang, else Preferences, else the system's (LANG=id_ID.UTF-8 gives Indonesian).
+    TranslationLoader::Choice language = TranslationLoader::storedChoice();
+    if (parser.isSet(langOption)) {
+        const std::optional<TranslationLoader::Choice> asked = TranslationLoader::parse(parser.value(langOption));
+        if (!asked) {
+            std::fprintf(stderr, "mbscope: --lang '%s' is not a language mbscope speaks: use id, en or system\n",
+                         qPrintable(parser.value(langOption)));
+            return ExitUsage;
+        }
+        language = *asked;
+    }
+    TranslationLoader::install(app, TranslationLoader::localeFor(language));
     MainWindow window;
     // A screenshot or an asked size is reproducible: the layout the last close saved is not used.
     if (!screenshot.isEmpty() || parser.isSet(sizeOption) || !window.restoreLayout())

@@ -1,5 +1,6 @@
 #include "decodepanel.h"
 
+#include "dissectionsummary.h"
 #include "fieldtreemodel.h"
 #include "fieldtreeview.h"
 #include "hexerrormark.h"
@@ -230,7 +231,7 @@ void DecodePanel::showDissection(const Dissection &dissection)
     const Severity worst = dissection.fields.worstSeverity();
     setVerdict(dissection.isValid() ? tr("Valid:") : tr("Invalid:"),
                worst >= Severity::Warning ? SeverityStyle::textColor(worst) : palette().color(QPalette::WindowText));
-    m_summaryLabel->setText(dissection.summary());
+    m_summaryLabel->setText(DissectionSummary::text(dissection));
 
     const QString framingReason = dissection.framingReason.isEmpty() ? tr("as chosen") : dissection.framingReason;
     const QString directionReason = dissection.directionReason.isEmpty() ? tr("as chosen") : dissection.directionReason;

@@ -1,5 +1,6 @@
 #include "decodeview.h"
 
+#include "dissectionsummary.h"
 #include "exchangeformat.h"
 #include "frameinspector.h"
 #include "severitystyle.h"
@@ -156,7 +157,7 @@ void DecodeView::updateHeader()
     parts << QStringLiteral("<b style=\"color:%1\">%2</b>")
                  .arg(color.name(), TrafficStyle::verdictText(e.verdict).toHtmlEscaped());
     if (!main.fields.isEmpty())
-        parts << main.summary().toHtmlEscaped();
+        parts << DissectionSummary::text(main).toHtmlEscaped();
     if (!latency.isEmpty())
         parts << tr("latency %1").arg(latency);
     if (e.transactionId != 0)

@@ -262,7 +262,7 @@ void dissectDeviceIdResponse(const PduContext &ctx)
 
 void dissectEncapsulatedInterface(const PduContext &ctx)
 {
-    static const Slot layout[] = {{"modbus.mei_type", "MEI type", 1, ValueFormat::Hex, "MEI type"}};
+    static const Slot layout[] = {{"modbus.mei_type", QT_TRANSLATE_NOOP("mbscope::Field", "MEI type"), 1, ValueFormat::Hex, "MEI type"}};
     int m = -1;
     if (!addFixed(ctx, ctx.parent, 1, layout, 1, &m, 2, true))
         return;

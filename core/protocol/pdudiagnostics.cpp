@@ -238,7 +238,7 @@ void dissectDiagnostics(const PduContext &ctx)
     const int fc = functionField(ctx);
     ctx.tree.flag(fc, Severity::Info,
                   QStringLiteral("serial line only: V1.1b3 6.8 defines Diagnostics for serial line devices"));
-    static const Slot layout[] = {{"modbus.subfunction", "Sub-function", 2, ValueFormat::Hex, "sub-function and data"}};
+    static const Slot layout[] = {{"modbus.subfunction", QT_TRANSLATE_NOOP("mbscope::Field", "Sub-function"), 2, ValueFormat::Hex, "sub-function and data"}};
     int s = -1;
     if (!addFixed(ctx, ctx.parent, 1, layout, 1, &s, 3, true))
         return;

@@ -53,7 +53,7 @@ void addReferences(const PduContext &ctx, quint8 function, int first)
         const quint64 address = f.value;
         const bool five = address <= 9998;
         const quint64 reference = quint64(table) * (five ? 10000 : 100000) + address + 1;
-        ctx.tree.add(i, "modbus.reference", "Modicon reference", f.offset, 2, reference,
+        ctx.tree.add(i, "modbus.reference", QT_TRANSLATE_NOOP("mbscope::Field", "Modicon reference"), f.offset, 2, reference,
                      five ? ValueFormat::Reference5 : ValueFormat::Reference6, meaning);
     }
 }
@@ -63,15 +63,15 @@ void addReferences(const PduContext &ctx, quint8 function, int first)
 void dissect(const PduContext &ctx)
 {
     if (ctx.length <= 0) {
-        const int f = ctx.add("modbus.function_code", "Function code", 0, 0);
+        const int f = ctx.add("modbus.function_code", QT_TRANSLATE_NOOP("mbscope::Field", "Function code"), 0, 0);
         ctx.tree.flag(f, Severity::Error, QStringLiteral("missing: the PDU is empty, a function code byte was expected"));
         return;
     }
     const quint8 code = ctx.function();
     const FunctionKind kind = functionKind(code);
     const quint8 base = kind == FunctionKind::Exception ? quint8(code & 0x7F) : code;
-    const int f = ctx.add("modbus.function_code", "Function code", 0, 1, code, ValueFormat::Hex,
-                          kind == FunctionKind::Exception ? "Exception response" : functionName(code));
+    const int f = ctx.add("modbus.function_code", QT_TRANSLATE_NOOP("mbscope::Field", "Function code"), 0, 1, code, ValueFormat::Hex,
+                          kind == FunctionKind::Exception ? QT_TRANSLATE_NOOP("mbscope::Field", "Exception response") : functionName(code));
     if (kind == FunctionKind::Exception) {
         dissectException(ctx);
         return;
@@ -146,7 +146,7 @@ void dissectException(const PduContext &ctx)
                       QStringLiteral("exception for function %1, which the specification does not assign").arg(hexByte(base)));
         break;
     }
-    const int r = ctx.add("modbus.request_function_code", "Function in error", 0, 1, base, ValueFormat::Hex, functionName(base));
+    const int r = ctx.add("modbus.request_function_code", QT_TRANSLATE_NOOP("mbscope::Field", "Function in error"), 0, 1, base, ValueFormat::Hex, functionName(base));
     if (ctx.hasRequest() && ctx.requestByte(0) != base) {
         ctx.tree.flag(r, Severity::Error,
                       QStringLiteral("does not match the request: the request's function code is %1, the exception is for %2")
@@ -156,7 +156,7 @@ void dissectException(const PduContext &ctx)
         ctx.tree.flag(f, Severity::Error, QStringLiteral("an exception code (0x80 set) can only appear in a response"));
     }
     static const checks::Slot layout[] = {
-        {"modbus.exception_code", "Exception code", 1, ValueFormat::Hex, "exception code"},
+        {"modbus.exception_code", QT_TRANSLATE_NOOP("mbscope::Field", "Exception code"), 1, ValueFormat::Hex, "exception code"},
     };
     int e = -1;
     if (!checks::addFixed(ctx, ctx.parent, 1, layout, 1, &e, 2, false))

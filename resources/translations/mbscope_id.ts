@@ -70,7 +70,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../app/gui.cpp" line="+197"/>
+        <location filename="../../app/gui.cpp" line="+234"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
@@ -532,7 +532,7 @@
 <context>
     <name>mbscope::DecodePanel</name>
     <message>
-        <location filename="../../ui/decodepanel.cpp" line="+57"/>
+        <location filename="../../ui/decodepanel.cpp" line="+58"/>
         <source>Type or paste a frame as hex: 01 03 00 79 00 16 15 DD</source>
         <translation>Ketik atau tempel frame sebagai hex: 01 03 00 79 00 16 15 DD</translation>
     </message>
@@ -652,7 +652,7 @@
 <context>
     <name>mbscope::DecodeView</name>
     <message>
-        <location filename="../../ui/decodeview.cpp" line="+39"/>
+        <location filename="../../ui/decodeview.cpp" line="+40"/>
         <source>Copy</source>
         <translation>Salin</translation>
     </message>
@@ -737,6 +737,99 @@
         <location line="+2"/>
         <source>transaction %1</source>
         <translation>transaksi %1</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::DissectionSummary</name>
+    <message>
+        <location filename="../../ui/dissectionsummary.cpp" line="+22"/>
+        <source>Frame</source>
+        <translation>Frame</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 request</source>
+        <translation>permintaan %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 response</source>
+        <translation>respons %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1, unit %2</source>
+        <translation>%1, unit %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: no function code</source>
+        <translation>%1: tanpa kode fungsi</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 exception</source>
+        <translation>%1: exception %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1, %2 from address %3</source>
+        <translation>%1, %2 mulai alamat %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1, address %2</source>
+        <translation>%1, alamat %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1, address %2 = %3</source>
+        <translation>%1, alamat %2 = %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1, 1 register value</source>
+        <translation>%1, 1 nilai register</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1, %2 register values</source>
+        <translation>%1, %2 nilai register</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1, 1 bit</source>
+        <translation>%1, 1 bit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1, %2 bits</source>
+        <translation>%1, %2 bit</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>[1 error]</source>
+        <translation>[1 error]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>[%1 errors]</source>
+        <translation>[%1 error]</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>[1 warning]</source>
+        <translation>[1 peringatan]</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>[%1 warnings]</source>
+        <translation>[%1 peringatan]</translation>
     </message>
 </context>
 <context>
@@ -1054,6 +1147,7 @@
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudissector.cpp" line="+74"/>
         <source>Exception response</source>
         <translation>Respons exception</translation>
     </message>
@@ -1482,7 +1576,12 @@
         <translation>Masih ada objek berikutnya: minta lagi mulai dari ID objek berikutnya</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+56"/>
+        <source>MEI type</source>
+        <translation>Tipe MEI</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Read Device Identification</source>
         <translation>Baca Identifikasi Perangkat</translation>
     </message>
@@ -1566,6 +1665,11 @@
         <location line="+1"/>
         <source>Padding</source>
         <translation>Pengisi</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>Sub-function</source>
+        <translation>Sub-fungsi</translation>
     </message>
     <message>
         <location filename="../../core/protocol/pdufilerecord.cpp" line="-123"/>
@@ -1871,6 +1975,27 @@
         <source>unknown reason</source>
         <translation>alasan tidak diketahui</translation>
     </message>
+    <message>
+        <location filename="../../core/protocol/pdudissector.cpp" line="-18"/>
+        <source>Modicon reference</source>
+        <translation>Referensi Modicon</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+7"/>
+        <source>Function code</source>
+        <translation>Kode fungsi</translation>
+    </message>
+    <message>
+        <location line="+76"/>
+        <source>Function in error</source>
+        <translation>Fungsi yang error</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Exception code</source>
+        <translation>Kode exception</translation>
+    </message>
 </context>
 <context>
     <name>mbscope::FieldTreeModel</name>
@@ -1928,7 +2053,7 @@
 <context>
     <name>mbscope::FrameInspector</name>
     <message>
-        <location filename="../../ui/frameinspector.cpp" line="+108"/>
+        <location filename="../../ui/frameinspector.cpp" line="+130"/>
         <source>No frame</source>
         <translation>Tidak ada frame</translation>
     </message>
@@ -1936,7 +2061,7 @@
 <context>
     <name>mbscope::HexView</name>
     <message>
-        <location filename="../../ui/hexview.cpp" line="+337"/>
+        <location filename="../../ui/hexview.cpp" line="+379"/>
         <source>Offset %1 (0x%2): 0x%3 = %4</source>
         <translation>Offset %1 (0x%2): 0x%3 = %4</translation>
     </message>
@@ -1944,7 +2069,7 @@
 <context>
     <name>mbscope::HistogramChart</name>
     <message>
-        <location filename="../../ui/histogramchart.cpp" line="+60"/>
+        <location filename="../../ui/histogramchart.cpp" line="+66"/>
         <source>latency (%1)</source>
         <translation>latensi (%1)</translation>
     </message>
@@ -1980,7 +2105,7 @@
 <context>
     <name>mbscope::LatencyComparePanel</name>
     <message>
-        <location filename="../../ui/latencycomparepanel.cpp" line="+64"/>
+        <location filename="../../ui/latencycomparepanel.cpp" line="+71"/>
         <source>A run (current poll, reference, capture) and a request item, or all of its transactions</source>
         <translation>Satu run (polling saat ini, referensi, capture) dan satu item permintaan, atau semua transaksinya</translation>
     </message>
@@ -2011,24 +2136,14 @@
     </message>
     <message>
         <location line="+3"/>
-        <source>median %1: %2 %3</source>
-        <translation>median %1: %2 %3</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>first</source>
-        <translation>pertama</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>second</source>
-        <translation>kedua</translation>
+        <source>median %1 %2</source>
+        <translation>median %1 %2</translation>
     </message>
 </context>
 <context>
     <name>mbscope::LatencyHistogramPanel</name>
     <message>
-        <location filename="../../ui/latencyhistogrampanel.cpp" line="+45"/>
+        <location filename="../../ui/latencyhistogrampanel.cpp" line="+46"/>
         <source>Which run to show: the current poll, the kept reference or an opened capture</source>
         <translation>Run mana yang ditampilkan: polling saat ini, referensi yang disimpan, atau capture yang dibuka</translation>
     </message>
@@ -2295,9 +2410,19 @@
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>no usable answer</source>
-        <translation>tanpa jawaban yang bisa dipakai</translation>
+        <location line="+4"/>
+        <source>answered</source>
+        <translation>dijawab</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>exception</source>
+        <translation>exception</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>no usable answer (timeout or bad answer)</source>
+        <translation>tanpa jawaban yang bisa dipakai (waktu habis atau jawaban buruk)</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2404,7 +2529,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/mainwindow.cpp" line="+58"/>
+        <location filename="../../ui/mainwindow.cpp" line="+66"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -2449,7 +2574,7 @@
         <translation>Terkirim: %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>&lt;b&gt;Connected to mbscope&apos;s built-in simulator&lt;/b&gt;, not to a device: a RosRao gamma detector (profile &lt;code&gt;%1&lt;/code&gt;) answering on &lt;code&gt;%2&lt;/code&gt;. Press &lt;b&gt;Send&lt;/b&gt; to read its 22 registers. To talk to a real device, press &lt;b&gt;Disconnect&lt;/b&gt;, choose its link type, host and port (or serial port) and press &lt;b&gt;Connect&lt;/b&gt;.</source>
         <translation>&lt;b&gt;Tersambung ke simulator bawaan mbscope&lt;/b&gt;, bukan ke perangkat: detektor gamma RosRao (profil &lt;code&gt;%1&lt;/code&gt;) yang menjawab di &lt;code&gt;%2&lt;/code&gt;. Tekan &lt;b&gt;Kirim&lt;/b&gt; untuk membaca 22 register-nya. Untuk berbicara dengan perangkat sungguhan, tekan &lt;b&gt;Putuskan&lt;/b&gt;, pilih jenis link, host dan port (atau port serial)-nya, lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt;.</translation>
     </message>
@@ -2506,7 +2631,7 @@
     <message>
         <location line="+4"/>
         <source>&amp;Help</source>
-        <translation>Ban&amp;tuan</translation>
+        <translation>Ba&amp;ntuan</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2559,15 +2684,13 @@
         <source>The session&apos;s target %1 is not a target: %2</source>
         <translation>Target sesi %1 bukan target: %2</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location line="+50"/>
-        <source>%n step(s): %1 passed, %2 failed, %3 errors, %4 skipped in %5 s against %6.</source>
-        <translation>
-            <numerusform>%n langkah: %1 lulus, %2 gagal, %3 error, %4 dilewati dalam %5 s terhadap %6.</numerusform>
-        </translation>
+        <source>Steps: %1; passed %2, failed %3, errors %4, skipped %5; %6 s against %7.</source>
+        <translation>Langkah: %1; lulus %2, gagal %3, error %4, dilewati %5; %6 s terhadap %7.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%1 The link failed: %2</source>
         <translation>%1 Link gagal: %2</translation>
     </message>
@@ -2702,12 +2825,10 @@
         <source>waits %1 ms</source>
         <translation>menunggu %1 ms</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location line="+2"/>
-        <source>repeats %n time(s)</source>
-        <translation>
-            <numerusform>diulang %n kali</numerusform>
-        </translation>
+        <source>repeats, times: %1</source>
+        <translation>diulang, kali: %1</translation>
     </message>
     <message>
         <location line="+62"/>
@@ -2743,7 +2864,7 @@
 <context>
     <name>mbscope::PlotCursor</name>
     <message>
-        <location filename="../../ui/plotcursor.cpp" line="+111"/>
+        <location filename="../../ui/plotcursor.cpp" line="+117"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3221,7 +3342,7 @@
         <translation>jawaban tidak ditampilkan: transaksi berakhir dengan %1: %2</translation>
     </message>
     <message>
-        <location line="+197"/>
+        <location line="+220"/>
         <source>register %1 (PDU address %2)</source>
         <translation>register %1 (alamat PDU %2)</translation>
     </message>
@@ -3246,7 +3367,7 @@
         <translation>0  OFF</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>↑ %1 from %2</source>
         <translation>↑ %1 dari %2</translation>
     </message>
@@ -3257,17 +3378,27 @@
     </message>
     <message>
         <location line="+9"/>
-        <location line="+49"/>
+        <location line="+63"/>
         <source>(%1 of %2 registers)</source>
         <translation>(%1 dari %2 register)</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-61"/>
+        <source>%1 needs %2 registers from %3; the answer begins %4 registers into it</source>
+        <translation>%1 memerlukan %2 register mulai %3; jawaban baru dimulai %4 register di dalamnya</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>%1 needs %2 registers from %3; the answer ends after %4</source>
         <translation>%1 memerlukan %2 register mulai %3; jawaban berakhir setelah %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+6"/>
+        <source>%1 needs %2 registers from %3; the profile&apos;s next value begins after %4</source>
+        <translation>%1 memerlukan %2 register mulai %3; nilai berikutnya di profil dimulai setelah %4</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>%1 registers %2-%3</source>
         <translation>%1 register %2-%3</translation>
     </message>
@@ -3284,7 +3415,7 @@
         <translation> (register %1 dari %2)</translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+67"/>
         <source>The profile names no value at this address</source>
         <translation>Profil tidak menamai nilai apa pun di alamat ini</translation>
     </message>
@@ -3542,15 +3673,13 @@ Klik kanan untuk mengganti format</translation>
         <source>%1 cannot be read: %2</source>
         <translation>%1 tidak dapat dibaca: %2</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location line="+9"/>
-        <source>%1 (%2): %n transaction(s), %3 ok, %4 failed</source>
-        <translation>
-            <numerusform>%1 (%2): %n transaksi, %3 ok, %4 gagal</numerusform>
-        </translation>
+        <source>%1 (%2): transactions %3, ok %4, failed %5</source>
+        <translation>%1 (%2): transaksi %3, ok %4, gagal %5</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1; latency median %2 ms, p95 %3 ms, max %4 ms</source>
         <translation>%1; latensi median %2 ms, p95 %3 ms, maks %4 ms</translation>
     </message>
@@ -3614,12 +3743,10 @@ Klik kanan untuk mengganti format</translation>
         <source>Not serving.</source>
         <translation>Tidak melayani.</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location line="+2"/>
-        <source>Serving the recorded answers of %1 on %2 (%n distinct request(s)): %3 answers served, %4 silences kept, %5 requests never recorded.</source>
-        <translation>
-            <numerusform>Melayani jawaban terekam dari %1 di %2 (%n permintaan berbeda): %3 jawaban dilayani, %4 diam dipertahankan, %5 permintaan tidak pernah terekam.</numerusform>
-        </translation>
+        <source>Serving the recorded answers of %1 on %2 (distinct requests: %3). Answers served: %4, silences kept: %5, requests never recorded: %6.</source>
+        <translation>Melayani jawaban terekam dari %1 di %2 (permintaan berbeda: %3). Jawaban dilayani: %4, diam dipertahankan: %5, permintaan tidak pernah terekam: %6.</translation>
     </message>
 </context>
 <context>
@@ -3660,24 +3787,23 @@ Klik kanan untuk mengganti format</translation>
         <translation>latensi</translation>
     </message>
     <message>
-        <location line="+62"/>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+65"/>
         <source>No answers replayed yet.</source>
         <translation>Belum ada jawaban yang di-replay.</translation>
     </message>
-    <message numerus="yes">
-        <location line="+1"/>
-        <source>%n answer(s) replayed, %1 differ: %2.</source>
-        <translation>
-            <numerusform>%n jawaban di-replay, %1 berbeda: %2.</numerusform>
-        </translation>
+    <message>
+        <location line="-3"/>
+        <source>%1: %2</source>
+        <comment>what differs: how many</comment>
+        <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+4"/>
+        <source>Answers replayed: %1, differing: %2 (%3).</source>
+        <translation>Jawaban di-replay: %1, berbeda: %2 (%3).</translation>
+    </message>
+    <message>
+        <location line="+68"/>
         <source>#</source>
         <translation>#</translation>
     </message>
@@ -3729,12 +3855,10 @@ Klik kanan untuk mengganti format</translation>
         <source>Captures and sessions (*.pcap *.pcapng *.cap *.json *.journal);;All files (*)</source>
         <translation>Capture dan sesi (*.pcap *.pcapng *.cap *.json *.journal);;Semua berkas (*)</translation>
     </message>
-    <message numerus="yes">
+    <message>
         <location line="+11"/>
-        <source>Replaying %n recorded request(s) to the target…</source>
-        <translation>
-            <numerusform>Me-replay %n permintaan terekam ke target…</numerusform>
-        </translation>
+        <source>Replaying the recorded requests to the target (%1 in all)…</source>
+        <translation>Me-replay permintaan terekam ke target (%1 seluruhnya)…</translation>
     </message>
     <message>
         <location line="+17"/>
@@ -4262,7 +4386,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+9"/>
         <source>&amp;New session</source>
-        <translation>Sesi &amp;baru</translation>
+        <translation>Sesi ba&amp;ru</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4869,7 +4993,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimulatorPanel</name>
     <message>
-        <location filename="../../ui/simulatorpanel.cpp" line="+36"/>
+        <location filename="../../ui/simulatorpanel.cpp" line="+38"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
@@ -4909,7 +5033,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>ASCII serial</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>Profile:</source>
         <translation>Profil:</translation>
     </message>
@@ -4919,7 +5043,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Profil bawaan, atau path berkas profil (docs/profiles.md).</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>...</source>
         <translation>...</translation>
     </message>
@@ -4974,7 +5098,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Gangguan</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>&amp;Clear</source>
         <translation>&amp;Kosongkan</translation>
     </message>
@@ -5036,7 +5160,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SweepPanel</name>
     <message>
-        <location filename="../../ui/sweeppanel.cpp" line="+44"/>
+        <location filename="../../ui/sweeppanel.cpp" line="+43"/>
         <source>&amp;Start sweep</source>
         <translation>&amp;Mulai sweep</translation>
     </message>
@@ -5056,17 +5180,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Transaksi (siklus polling) di setiap interval</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>Export table as &amp;CSV…</source>
-        <translation>Ekspor tabel sebagai &amp;CSV…</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Save the sweep&apos;s table as comma-separated values</source>
-        <translation>Simpan tabel sweep sebagai nilai yang dipisahkan koma</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+13"/>
         <source>Intervals (ms):</source>
         <translation>Interval (ms):</translation>
     </message>
@@ -5102,7 +5216,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>latensi p95 (ms)</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+59"/>
         <source>interval %1 of %2 is empty: write milliseconds between the commas</source>
         <translation>interval %1 dari %2 kosong: tulis milidetik di antara koma</translation>
     </message>
@@ -5112,12 +5226,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>interval %1 (&apos;%2&apos;) bukan bilangan bulat milidetik dari 0 sampai 3600000</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-14"/>
         <source>no intervals: write them in milliseconds, separated by commas (100, 200, 300)</source>
         <translation>tidak ada interval: tulis dalam milidetik, dipisahkan koma (100, 200, 300)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+27"/>
         <source>Not started: %1</source>
         <translation>Tidak dimulai: %1</translation>
     </message>
@@ -5160,26 +5274,6 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>Sweep finished: %1 intervals</source>
         <translation>Sweep selesai: %1 interval</translation>
-    </message>
-    <message>
-        <location line="+41"/>
-        <source>Export sweep table</source>
-        <translation>Ekspor tabel sweep</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>CSV files (*.csv)</source>
-        <translation>Berkas CSV (*.csv)</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Table saved to %1</source>
-        <translation>Tabel disimpan ke %1</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Table not saved: %1</source>
-        <translation>Tabel tidak disimpan: %1</translation>
     </message>
 </context>
 <context>
