@@ -21,7 +21,9 @@ Histogram layout(qint64 minNs, qint64 maxNs, qint64 total, LatencyBinning::Scale
         const int perDecade = std::clamp(int(std::ceil(double(target) / decades)), 1, 1000);
         return Histogram::logarithmic(perDecade, low, high);
     }
-    // Widths 1, 2, 5 x 10^k ns, never narrower than 1 us: as Histogram::autoFixed chooses them.
+    // Widths 1, 2, 5 x 10^k ns, never narrower than 1 us, about sqrt(n) bins: the layout
+    // Histogram::autoFixed chooses for n values (what `poll --json` reports), found from the range
+    // alone so that the sorted values can be counted with Histogram::addSorted.
     qint64 width = 1000;
     for (int step = 0;; ++step) {
         const qint64 bins = maxNs / width - minNs / width + 1;
@@ -51,9 +53,8 @@ QList<Histogram> LatencyBinning::binCommon(const QList<std::span<const qint64>> 
     for (const std::span<const qint64> &one : values) {
         if (one.empty())
             continue;
-        const auto [lowest, highest] = std::minmax_element(one.begin(), one.end());
-        minNs = std::min(minNs, *lowest);
-        maxNs = std::max(maxNs, *highest);
+        minNs = std::min(minNs, one.front());
+        maxNs = std::max(maxNs, one.back());
         total += qint64(one.size());
     }
     QList<Histogram> histograms;
@@ -61,8 +62,7 @@ QList<Histogram> LatencyBinning::binCommon(const QList<std::span<const qint64>> 
     const Histogram empty = total == 0 ? Histogram() : layout(std::max<qint64>(0, minNs), std::max<qint64>(0, maxNs), total, scale, maxBins);
     for (const std::span<const qint64> &one : values) {
         Histogram h = empty;
-        for (const qint64 v : one)
-            h.add(v);
+        h.addSorted(one);
         histograms.append(h);
     }
     return histograms;

@@ -17,12 +17,15 @@ class LatencyBinning
 public:
     enum class Scale : quint8 { Linear, Logarithmic };
 
-    // The most bins a panel shows: enough for a shape, few enough to read.
-    static constexpr int kMaxBins = 60;
+    // The most bins a panel shows: enough for a shape, few enough to read; as many as the
+    // engine's automatic bins (HistogramSpec::automatic), so linear bins are those of `poll --json`.
+    static constexpr int kMaxBins = 50;
 
-    // One histogram of values (ascending or not) in the scale's bins; no bins when values is empty.
+    // One histogram of values in ascending order (LatencySamples::sorted()) in the scale's bins,
+    // about sqrt(n) of them; no bins when values is empty. Linear bins are those
+    // Histogram::autoFixed chooses. Counted by binary search: O(bins x log n), not O(n).
     [[nodiscard]] static Histogram bin(std::span<const qint64> values, Scale scale, int maxBins = kMaxBins);
-    // One histogram per list of values, all on the same bins (covering every list's range).
+    // One histogram per ascending list of values, all on the same bins (covering every list's range).
     [[nodiscard]] static QList<Histogram> binCommon(const QList<std::span<const qint64>> &values, Scale scale,
                                                     int maxBins = kMaxBins);
 };

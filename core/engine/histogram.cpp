@@ -161,6 +161,27 @@ void Histogram::add(qint64 valueNs)
         ++m_counts[std::size_t(bin)];
 }
 
+void Histogram::addSorted(std::span<const qint64> ascending)
+{
+    m_total += ascending.size();
+    if (m_counts.empty()) {
+        m_overflow += ascending.size();
+        return;
+    }
+    // The first value at or above an edge: bins are [edge, next edge), as in binOf().
+    const auto from = [&ascending](auto begin, double edge) {
+        return std::lower_bound(begin, ascending.end(), edge, [](qint64 v, double e) { return double(v) < e; });
+    };
+    auto start = from(ascending.begin(), m_edges.front());
+    m_underflow += quint64(start - ascending.begin());
+    for (std::size_t bin = 0; bin < m_counts.size(); ++bin) {
+        const auto end = from(start, m_edges[bin + 1]);
+        m_counts[bin] += quint64(end - start);
+        start = end;
+    }
+    m_overflow += quint64(ascending.end() - start);
+}
+
 void Histogram::clear()
 {
     std::fill(m_counts.begin(), m_counts.end(), 0);

@@ -3,6 +3,8 @@
 #include <QtCore/QJsonArray>
 #include <QtTest/QtTest>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 using namespace mbscope;
@@ -229,6 +231,42 @@ private slots:
         QCOMPARE(json.value(QStringLiteral("counts")).toArray(), (QJsonArray{1, 2}));
         QCOMPARE(json.value(QStringLiteral("underflow")).toInt(), 0);
         QCOMPARE(json.value(QStringLiteral("overflow")).toInt(), 1);
+    }
+
+    // addSorted() counts ascending values as add() counts them one by one: values on edges,
+    // below the first and at or above the last edge included.
+    void addSortedAgreesWithAdd_data()
+    {
+        QTest::addColumn<bool>("logarithmic");
+        QTest::newRow("fixed") << false;
+        QTest::newRow("logarithmic") << true;
+    }
+
+    void addSortedAgreesWithAdd()
+    {
+        QFETCH(bool, logarithmic);
+        Histogram one = logarithmic ? Histogram::logarithmic(7, 1000, 3000000) : Histogram::fixed(700, 1000, 300000);
+        Histogram sorted = one;
+        std::vector<qint64> values;
+        for (const double edge : one.edgesNs()) {
+            const auto e = qint64(std::ceil(edge));
+            values.insert(values.end(), {e - 1, e, e, e + 1});
+        }
+        for (qint64 v = 0; v < 4000000; v += 997)
+            values.push_back(v);
+        std::sort(values.begin(), values.end());
+        for (const qint64 v : values)
+            one.add(v);
+        sorted.addSorted(values);
+        QCOMPARE(sorted.counts(), one.counts());
+        QCOMPARE(sorted.underflow(), one.underflow());
+        QCOMPARE(sorted.overflow(), one.overflow());
+        QCOMPARE(sorted.total(), quint64(values.size()));
+        QVERIFY(one.underflow() > 0);
+        QVERIFY(one.overflow() > 0);
+        Histogram none;
+        none.addSorted(values);
+        QCOMPARE(none.overflow(), quint64(values.size()));
     }
 };
 
