@@ -89,7 +89,7 @@ QString PlanResultModel::expectedText(const PlanStep &step)
     case PlanStep::Kind::Wait:
         return tr("waits %1 ms").arg(step.waitMs);
     case PlanStep::Kind::Repeat:
-        return tr("repeats %n time(s)", nullptr, step.times);
+        return tr("repeats, times: %1").arg(step.times);
     }
     return QString();
 }

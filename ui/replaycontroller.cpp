@@ -110,8 +110,9 @@ void ReplayController::onLoaded(const std::shared_ptr<Loaded> &loaded)
     m_transactionCount = loaded->transactions.size();
     m_statistics = loaded->statistics;
     const LatencySamples &latency = m_statistics.latency();
-    m_summary = tr("%1 (%2): %n transaction(s), %3 ok, %4 failed", nullptr, int(m_transactionCount))
+    m_summary = tr("%1 (%2): transactions %3, ok %4, failed %5")
                     .arg(m_title, report.kindName())
+                    .arg(m_transactionCount)
                     .arg(m_statistics.ok())
                     .arg(m_statistics.failed());
     if (!latency.isEmpty())
@@ -220,9 +221,10 @@ QString ReplayController::servingText() const
     if (!m_server->isServing())
         return tr("Not serving.");
     const ReplayResponder::Counters c = m_server->counters();
-    return tr("Serving the recorded answers of %1 on %2 (%n distinct request(s)): %3 answers served, %4 silences kept, %5 requests never recorded.",
-              nullptr, int(m_server->distinctRequests()))
+    return tr("Serving the recorded answers of %1 on %2 (distinct requests: %3). Answers served: %4, silences kept: %5, "
+              "requests never recorded: %6.")
         .arg(m_title, m_server->boundUrl().toString())
+        .arg(m_server->distinctRequests())
         .arg(c.served)
         .arg(c.silences)
         .arg(c.unrecorded);

@@ -39,7 +39,7 @@ bool ReplayDifferencesModel::isLatencyChange(qint64 recordedNs, qint64 nowNs)
 {
     if (recordedNs < 0 || nowNs < 0)
         return false;
-    constexpr qint64 kSlackNs = 5'000'000;
+    constexpr qint64 kSlackNs = 10'000'000;
     if (std::llabs(nowNs - recordedNs) < kSlackNs)
         return false;
     return nowNs > 2 * recordedNs || recordedNs > 2 * nowNs;
@@ -150,11 +150,12 @@ QString ReplayDifferencesModel::countsText() const
     QStringList parts;
     for (std::size_t k = 0; k < kKindCount; ++k) {
         if (m_counts[k] > 0)
-            parts.append(tr("%1 %2").arg(m_counts[k]).arg(kindName(Kind(k))));
+            parts.append(tr("%1: %2", "what differs: how many").arg(kindName(Kind(k))).arg(m_counts[k]));
     }
     if (parts.isEmpty())
         return tr("No answers replayed yet.");
-    return tr("%n answer(s) replayed, %1 differ: %2.", nullptr, int(replayed()))
+    return tr("Answers replayed: %1, differing: %2 (%3).")
+        .arg(replayed())
         .arg(differed())
         .arg(parts.join(QStringLiteral(", ")));
 }

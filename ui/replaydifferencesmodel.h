@@ -49,7 +49,7 @@ public:
     [[nodiscard]] static Kind classify(const ReplayOutcome &outcome, const Transaction &recorded, Framing recordedFraming,
                                        Framing nowFraming);
     // An answer whose values match but which came more than twice as fast or as slow as
-    // recorded, and at least 5 ms apart (a device's jitter on a loaded bench stays within that).
+    // recorded, and at least 10 ms apart (a device's jitter on a loaded bench mostly stays within that).
     [[nodiscard]] static bool isLatencyChange(qint64 recordedNs, qint64 nowNs);
 
     int rowCount(const QModelIndex &parent = {}) const override;

@@ -34,11 +34,14 @@ ReplayPanel::ReplayPanel(ReplayController *controller, QWidget *parent)
     connect(m_controller, &ReplayController::sourceOpened, this, [this](const QString &summary) {
         m_source->setText(m_controller->sourcePath());
         m_analysis->setText(summary);
+        // The ports the capture was read with, also when the controller was told them directly.
+        m_mbapPorts->setText(CapturePorts::format(m_controller->captureOptions().mbapPorts));
+        m_rtuPorts->setText(CapturePorts::format(m_controller->captureOptions().rtuPorts));
         showMessage(QString(), false);
     });
     connect(m_controller, &ReplayController::sourceFailed, this, [this](const QString &message) { showMessage(message, true); });
     connect(m_controller, &ReplayController::replayStarted, this, [this] {
-        m_counts->setText(tr("Replaying %n recorded request(s) to the target…", nullptr, int(m_controller->script()->size())));
+        m_counts->setText(tr("Replaying the recorded requests to the target (%1 in all)…").arg(m_controller->script()->size()));
     });
     connect(m_controller, &ReplayController::outcomeReplayed, this,
             [this] { m_counts->setText(m_controller->differences()->countsText()); });
