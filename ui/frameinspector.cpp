@@ -15,9 +15,11 @@ namespace mbscope {
 namespace {
 
 // Room beyond the hint goes to the tree: its rows carry names, values and problems, while the hex
-// view needs only its fixed 16-byte width.
+// view lays out 16, 8 or 4 bytes a line in what it gets.
 constexpr int kTreeStretch = 1;
 constexpr int kHexStretch = 0;
+// The hex view's share of the width, between its narrowest (4 bytes a line) and widest (16).
+constexpr int kHexSharePercent = 40;
 
 } // namespace
 
@@ -52,6 +54,7 @@ FrameInspector::FrameInspector(QWidget *parent)
     m_tree->setSelectionMode(QAbstractItemView::SingleSelection);
     m_hex = new HexView(this);
     m_hex->setObjectName(QStringLiteral("hexView"));
+    m_hex->setBytesPerLine(0);
 
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->addWidget(m_tree);
@@ -59,6 +62,7 @@ FrameInspector::FrameInspector(QWidget *parent)
     m_splitter->setStretchFactor(0, kTreeStretch);
     m_splitter->setStretchFactor(1, kHexStretch);
     m_splitter->setChildrenCollapsible(false);
+    connect(m_splitter, &QSplitter::splitterMoved, this, [this] { m_splitterMoved = true; });
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -101,6 +105,24 @@ void FrameInspector::setDissection(const Dissection &dissection)
     m_note->setVisible(!dissection.note.isEmpty());
     m_placeholder->hide();
     m_splitter->show();
+    fitSplitter();
+}
+
+void FrameInspector::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    fitSplitter();
+}
+
+void FrameInspector::fitSplitter()
+{
+    // The splitter alone would give the hex view its 16-byte width first and squeeze the tree
+    // to a sliver in a window under ~1100 px; the tree is what people read.
+    const int total = width() - m_splitter->handleWidth();
+    if (m_splitterMoved || total <= 0)
+        return;
+    const int hex = qBound(m_hex->minimumSizeHint().width(), total * kHexSharePercent / 100, m_hex->sizeHint().width());
+    m_splitter->setSizes({total - hex, hex});
 }
 
 void FrameInspector::clear()

@@ -46,7 +46,12 @@ public:
 Q_SIGNALS:
     void fieldSelected(int field);
 
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+
 private:
+    // Shares the width between tree and bytes until the user moves the handle.
+    void fitSplitter();
     void onTreeSelection();
     void onBytesPicked(int offset, int length);
 
@@ -57,6 +62,7 @@ private:
     FieldTreeModel *m_model = nullptr;
     FieldTreeView *m_tree = nullptr;
     HexView *m_hex = nullptr;
+    bool m_splitterMoved = false; // by the user: the split is theirs from then on
 };
 
 } // namespace mbscope

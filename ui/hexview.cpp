@@ -53,7 +53,11 @@ void HexView::clear()
 
 void HexView::setBytesPerLine(int count)
 {
-    m_bytesPerLine = count <= 8 ? 8 : 16;
+    m_fitBytesPerLine = count <= 0;
+    if (m_fitBytesPerLine)
+        fitBytesPerLine();
+    else
+        m_bytesPerLine = count <= 4 ? 4 : count <= 8 ? 8 : 16;
     updateMetrics();
     updateGeometry();
     viewport()->update();
@@ -96,6 +100,35 @@ int HexView::asciiX(int column) const
     return hexX(m_bytesPerLine) + m_charWidth + column * m_charWidth;
 }
 
+int HexView::contentWidth(int perLine) const
+{
+    // As hexX and asciiX lay a line out, for another count of bytes.
+    const int margin = m_charWidth / 2;
+    return margin + (m_offsetDigits + 2) * m_charWidth + perLine * 3 * m_charWidth + (perLine >= kGroup ? m_charWidth : 0)
+        + m_charWidth + perLine * m_charWidth + margin;
+}
+
+void HexView::fitBytesPerLine()
+{
+    // Against the width with a vertical scroll bar, shown or not, so that the bar coming and going
+    // with the line count cannot flip the choice back and forth.
+    const int room = width() - 2 * frameWidth() - verticalScrollBar()->sizeHint().width();
+    int perLine = 4;
+    for (const int candidate : {16, 8}) {
+        if (contentWidth(candidate) <= room) {
+            perLine = candidate;
+            break;
+        }
+    }
+    if (perLine == m_bytesPerLine)
+        return;
+    m_bytesPerLine = perLine;
+    updateScrollBars();
+    if (m_selLength > 0)
+        ensureVisible(m_selOffset);
+    viewport()->update();
+}
+
 void HexView::updateMetrics()
 {
     const QFontMetrics fm(font());
@@ -103,6 +136,8 @@ void HexView::updateMetrics()
     m_lineHeight = fm.height() + 2;
     m_ascent = fm.ascent() + 1;
     m_offsetDigits = m_bytes.size() > 0xFFFF ? 8 : 4;
+    if (m_fitBytesPerLine)
+        fitBytesPerLine();
     updateScrollBars();
 }
 
@@ -180,12 +215,17 @@ QSize HexView::sizeHint() const
 {
     const int frame = 2 * frameWidth();
     const int lines = qBound(2, lineCount(), kHintLines);
+    if (m_fitBytesPerLine) // the widest it would use
+        return {contentWidth(16) + frame + verticalScrollBar()->sizeHint().width(), lines * m_lineHeight + frame};
     return {asciiX(m_bytesPerLine) + m_charWidth / 2 + frame + verticalScrollBar()->sizeHint().width(),
             lines * m_lineHeight + frame};
 }
 
 QSize HexView::minimumSizeHint() const
 {
+    // Fitting: four bytes a line with their characters, nothing cut off.
+    if (m_fitBytesPerLine)
+        return {contentWidth(4) + 2 * frameWidth() + verticalScrollBar()->sizeHint().width(), 2 * m_lineHeight + 2 * frameWidth()};
     return {hexX(kGroup) + 2 * frameWidth(), 2 * m_lineHeight + 2 * frameWidth()};
 }
 
@@ -247,6 +287,8 @@ void HexView::paintEvent(QPaintEvent *)
 void HexView::resizeEvent(QResizeEvent *event)
 {
     QAbstractScrollArea::resizeEvent(event);
+    if (m_fitBytesPerLine)
+        fitBytesPerLine();
     updateScrollBars();
 }
 

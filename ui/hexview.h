@@ -33,9 +33,12 @@ public:
     [[nodiscard]] const QByteArray &bytes() const { return m_bytes; }
     void clear();
 
-    // 8 or 16 (the default): a short frame reads best on one or two lines.
+    // 4, 8 or 16 (the default): a short frame reads best on one or two lines. 0: as many of
+    // 16, 8 or 4 as fit the width with the ASCII column (the decode view's panes, which must
+    // leave room to the field tree in a narrow window).
     void setBytesPerLine(int count);
     [[nodiscard]] int bytesPerLine() const { return m_bytesPerLine; }
+    [[nodiscard]] bool fitsBytesPerLine() const { return m_fitBytesPerLine; }
 
     // Highlights [offset, offset + length) and scrolls it into view; length 0 clears. Does not
     // emit bytesPicked: that is for what the user does.
@@ -75,6 +78,9 @@ private:
     void pick(int anchor, int current);
     void ensureVisible(int offset);
     [[nodiscard]] int lineCount() const;
+    // Width of the offset, hex and ASCII columns with perLine bytes a line, in pixels.
+    [[nodiscard]] int contentWidth(int perLine) const;
+    void fitBytesPerLine();
     [[nodiscard]] int hexX(int column) const;
     [[nodiscard]] int asciiX(int column) const;
     [[nodiscard]] QColor markAt(int offset) const;
@@ -82,6 +88,7 @@ private:
     QByteArray m_bytes;
     QList<Mark> m_marks;
     int m_bytesPerLine = 16;
+    bool m_fitBytesPerLine = false;
     int m_selOffset = 0;
     int m_selLength = 0;
     int m_anchor = -1; // the byte a drag started on

@@ -13,6 +13,8 @@
 #include "protocol/dissector.h"
 
 #include <QtWidgets/QLabel>
+#include <QtWidgets/QScrollBar>
+#include <QtWidgets/QSplitter>
 #include <QtTest/QAbstractItemModelTester>
 #include <QtTest/QtTest>
 
@@ -81,6 +83,8 @@ private Q_SLOTS:
     void dragSelectsFieldCoveringTheRange();
     void problemsTintTheirBytes();
     void placeholderInsteadOfAFrame();
+    void narrowKeepsTheTreeReadable_data();
+    void narrowKeepsTheTreeReadable();
     void screenshot();
 };
 
@@ -230,6 +234,47 @@ void TestFrameInspector::placeholderInsteadOfAFrame()
     QCOMPARE(label->text(), QStringLiteral("No answer: timeout"));
     QCOMPARE(m_inspector->model()->rowCount(), 0);
     QCOMPARE(m_inspector->selectedField(), -1);
+}
+
+void TestFrameInspector::narrowKeepsTheTreeReadable_data()
+{
+    QTest::addColumn<int>("width");
+    QTest::addColumn<int>("bytesPerLine");
+    // The Answer pane of a 1000 px window is about 520 px wide, of a 1400 px one about 880.
+    QTest::newRow("420 px") << 420 << 4;
+    QTest::newRow("520 px (1000 px window)") << 520 << 4;
+    QTest::newRow("880 px (1400 px window)") << 880 << 8;
+    QTest::newRow("1400 px") << 1400 << 16;
+}
+
+// In a narrow window the field tree keeps most of the width and the hex view lays out fewer bytes
+// a line, all of them visible; a split the user chose is kept.
+void TestFrameInspector::narrowKeepsTheTreeReadable()
+{
+    QFETCH(int, width);
+    QFETCH(int, bytesPerLine);
+    // The RosRao answer: 49 bytes (tests/data/published-frames.json).
+    show(QByteArray::fromHex("01032C041A00000000000000FA000103E8271000040004005003201F400000000000000000000000000000000000001572"),
+         int(Framing::Rtu), int(Direction::Response));
+    QCOMPARE(m_inspector->hexView()->bytes().size(), 49);
+    m_inspector->resize(width, 300);
+    QCoreApplication::processEvents();
+    HexView *hex = m_inspector->hexView();
+    QTreeView *tree = m_inspector->treeView();
+    QVERIFY2(tree->width() >= width / 2, qPrintable(QStringLiteral("tree %1 px of %2").arg(tree->width()).arg(width)));
+    QCOMPARE(hex->bytesPerLine(), bytesPerLine);
+    QCOMPARE(hex->horizontalScrollBar()->maximum(), 0); // nothing of a line is cut off
+    QVERIFY(hex->viewport()->rect().contains(hex->byteRect(bytesPerLine - 1, HexView::Area::Ascii)));
+    QVERIFY(guitest::saveShot(m_inspector, QStringLiteral("frameinspector-%1px.png").arg(width)));
+    // A split the user moved stays theirs when the window changes.
+    auto *splitter = m_inspector->findChild<QSplitter *>();
+    QVERIFY(splitter);
+    splitter->setSizes({width / 4, width - width / 4});
+    emit splitter->splitterMoved(width / 4, 1);
+    const int chosen = tree->width();
+    m_inspector->resize(width + 40, 300);
+    QCoreApplication::processEvents();
+    QVERIFY2(qAbs(tree->width() - chosen) <= 40, qPrintable(QStringLiteral("tree %1 px, chosen %2").arg(tree->width()).arg(chosen)));
 }
 
 void TestFrameInspector::screenshot()
