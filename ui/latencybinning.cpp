@@ -40,8 +40,6 @@ Histogram layout(qint64 minNs, qint64 maxNs, qint64 total, LatencyBinning::Scale
 
 Histogram LatencyBinning::bin(std::span<const qint64> values, Scale scale, int maxBins)
 {
-    if (scale == Scale::Linear)
-        return Histogram::autoFixed(values, maxBins);
     return binCommon({values}, scale, maxBins).constFirst();
 }
 
