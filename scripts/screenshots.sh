@@ -54,6 +54,7 @@ window answer
 dock traffic traffic --screenshot-poll 100
 dock registers registers --screenshot-poll 100
 dock analysis analysis --screenshot-poll 100
+dock simulator simulator --screenshot-poll 100
 # The example session opened: its test plan, ready to run.
 dock test-plan "test plan" --session "$here/docs/examples/rosrao-gamma.mbscope.json"
 
