@@ -182,9 +182,9 @@ void SimulatorPanel::buildUi()
     m_trafficView->setWordWrap(false);
     m_trafficView->horizontalHeader()->setStretchLastSection(true);
     // Widths for what the columns hold: a time, a URL, a peer address, a function's name, the
-    // outcome's sentence and two frames.
+    // outcome's sentence (its whole text in the tooltip) and two frames.
     const int digit = m_trafficView->fontMetrics().horizontalAdvance(QLatin1Char('0'));
-    const int widths[] = {9, 26, 17, 5, 28, 50, 36};
+    const int widths[] = {8, 20, 14, 5, 22, 50, 30};
     for (int column = 0; column < int(std::size(widths)); ++column)
         m_trafficView->setColumnWidth(column, widths[column] * digit);
     trafficLayout->addWidget(m_trafficView, 1);
