@@ -62,6 +62,7 @@ LatencyComparePanel::LatencyComparePanel(LatencyRuns *runs, QWidget *parent)
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setAlternatingRowColors(true);
+    m_table->setMinimumWidth(400); // the figures and their values in view beside the plot
     m_table->addAction(m_csv);
     m_table->setContextMenuPolicy(Qt::ActionsContextMenu);
 

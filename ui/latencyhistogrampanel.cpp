@@ -39,6 +39,7 @@ LatencyHistogramPanel::LatencyHistogramPanel(LatencyRuns *runs, QWidget *parent)
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setAlternatingRowColors(true);
+    m_table->setMinimumWidth(300); // the figures and their values in view beside the plot
     m_table->addAction(m_csv);
     m_table->setContextMenuPolicy(Qt::ActionsContextMenu);
 
