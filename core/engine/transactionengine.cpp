@@ -75,19 +75,30 @@ std::optional<Transaction> TransactionEngine::sendAndWait(const RequestItem &ite
     QEventLoop loop;
     std::optional<Transaction> result;
     quint64 id = 0;
-    const auto connection = connect(this, &TransactionEngine::transactionsFinished, &loop,
-                                    [&](const QList<Transaction> &batch) {
-                                        for (const Transaction &t : batch) {
-                                            if (t.id == id && t.status != TransactionStatus::Late) {
-                                                result = t;
-                                                loop.quit();
-                                            }
-                                        }
-                                    });
+    // The record comes at once through recorded(); the batch that carries it to the observers
+    // would follow only when due (EngineOptions::batchIntervalMs), which a plan's back-to-back
+    // sends would wait out every time. So the batch is flushed now, and the wait ends when it
+    // arrives: whoever watches transactionsFinished has the transaction when this returns.
+    const auto recordedConnection = connect(m_core, &EngineCore::recorded, &loop, [&](const Transaction &t, quint64) {
+        if (t.id == id && t.status != TransactionStatus::Late) {
+            result = t;
+            QMetaObject::invokeMethod(m_core, &EngineCore::flushBatch, Qt::QueuedConnection);
+        }
+    });
+    const auto batchConnection = connect(this, &TransactionEngine::transactionsFinished, &loop,
+                                         [&](const QList<Transaction> &batch) {
+                                             for (const Transaction &t : batch) {
+                                                 if (t.id == id && t.status != TransactionStatus::Late) {
+                                                     result = t;
+                                                     loop.quit();
+                                                 }
+                                             }
+                                         });
     id = send(item);
     QTimer::singleShot(waitMs, &loop, &QEventLoop::quit);
     loop.exec();
-    disconnect(connection);
+    disconnect(recordedConnection);
+    disconnect(batchConnection);
     return result;
 }
 

@@ -54,6 +54,7 @@ private slots:
     void broadcastWaitsTheLinkTurnaround();
     void answerBeforeWriteReport();
     void manySends();
+    void sendAndWaitDoesNotWaitForTheBatch();
     void trafficLog();
 };
 
@@ -79,6 +80,20 @@ void tst_EngineFlow::closesMidFrame()
     QVERIFY(h.waitFor([&] { return h.progress.counters.connects == 2; }));
     QCOMPARE(h.progress.counters.skippedBytes, quint64(9));
     QCOMPARE(h.progress.counters.linkErrors, quint64(1));
+}
+
+// A plan's send steps come one after the other: each must return with its answer, not when the
+// observers' batch is next due (with batches a minute apart, the old wait gave up empty-handed).
+void tst_EngineFlow::sendAndWaitDoesNotWaitForTheBatch()
+{
+    EngineOptions options;
+    options.batchIntervalMs = 60000;
+    EngineHarness h(QStringLiteral("tcp://peer:502"), mbapServer("0304000a000b"), options);
+    for (quint16 tid = 1; tid <= 3; ++tid) {
+        const std::optional<Transaction> t = h.engine.sendAndWait(h.item(mbap("0300000002", tid, 1)), 5000);
+        QVERIFY2(t.has_value(), "sendAndWait returned without the transaction");
+        QCOMPARE(t->status, TransactionStatus::Ok);
+    }
 }
 
 void tst_EngineFlow::linkRefusedThenReconnects()
