@@ -51,12 +51,14 @@ void TestMainWindow::menus()
                 actions << a->text();
         }
     }
-    QCOMPARE(titles, (QStringList{QStringLiteral("&File"), QStringLiteral("&Request"), QStringLiteral("&View"),
-                                  QStringLiteral("&Tools"), QStringLiteral("&Help")}));
+    QCOMPARE(titles, (QStringList{QStringLiteral("&File"), QStringLiteral("&Request"), QStringLiteral("&Session"),
+                                  QStringLiteral("&View"), QStringLiteral("&Tools"), QStringLiteral("&Help")}));
     QVERIFY(actions.contains(QStringLiteral("&Find in traffic")));
     QVERIFY(actions.contains(QStringLiteral("&Send")));
     QVERIFY(actions.contains(QStringLiteral("&Quit")));
     QVERIFY(actions.contains(QStringLiteral("&About mbscope")));
+    QVERIFY(actions.contains(QStringLiteral("&Replay to the target")));
+    QVERIFY(actions.contains(QStringLiteral("Run the test &plan")));
 }
 
 // The icon is set at run time (packaging/icons/mbscope.svg compiled in): the window's and the
