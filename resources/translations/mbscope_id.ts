@@ -274,7 +274,7 @@
 <context>
     <name>mbscope::ConnectionBar</name>
     <message>
-        <location filename="../../ui/connectionbar.cpp" line="+31"/>
+        <location filename="../../ui/connectionbar.cpp" line="+32"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
@@ -325,7 +325,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+38"/>
+        <location line="+40"/>
         <source>P&amp;ort:</source>
         <translation>P&amp;ort:</translation>
     </message>
@@ -2529,7 +2529,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/mainwindow.cpp" line="+66"/>
+        <location filename="../../ui/mainwindow.cpp" line="+67"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -2564,7 +2564,12 @@
         <translation>Analisis</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+8"/>
+        <source>Simulator</source>
+        <translation>Simulator</translation>
+    </message>
+    <message>
+        <location line="+42"/>
         <source>Not sent (%1): connect first</source>
         <translation>Tidak terkirim (%1): sambungkan dulu</translation>
     </message>
@@ -2609,7 +2614,7 @@
         <translation>&amp;Tampilan</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Find in traffic</source>
         <translation>&amp;Cari di lalu lintas</translation>
     </message>
@@ -3856,7 +3861,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Capture dan sesi (*.pcap *.pcapng *.cap *.json *.journal);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>Replaying the recorded requests to the target (%1 in all)…</source>
         <translation>Me-replay permintaan terekam ke target (%1 seluruhnya)…</translation>
     </message>
