@@ -1,6 +1,7 @@
 #include "connectionbar.h"
 
 #include "hexerrormark.h"
+#include "serialportcombo.h"
 #include "tlsfilesfield.h"
 
 #include <QtCore/QSettings>
@@ -83,7 +84,9 @@ void ConnectionBar::buildUi()
     networkRow->addWidget(m_portSpin);
 
     // Serial target
-    m_serialPortCombo = new QComboBox(this);
+    auto *ports = new SerialPortCombo(this);
+    ports->setRefresh([this] { refreshSerialPorts(); });
+    m_serialPortCombo = ports;
     m_serialPortCombo->setObjectName(QStringLiteral("serialPortCombo"));
     m_serialPortCombo->setEditable(true);
     m_serialPortCombo->setMinimumContentsLength(14);

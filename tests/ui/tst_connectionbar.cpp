@@ -6,6 +6,7 @@
 
 #include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
+#include <QtSerialPort/QSerialPortInfo>
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QLineEdit>
@@ -35,6 +36,7 @@ private Q_SLOTS:
     void setUrlRoundTrip();
     void connectAndDisconnectSignals();
     void recentTargets();
+    void serialListIsReadAgainWhenOpened();
     void tlsUrlCarriesTheFiles();
     void tlsFileProblemsAreNamed_data();
     void tlsFileProblemsAreNamed();
@@ -234,6 +236,25 @@ void setTlsFiles(ConnectionBar &bar, const QString &cert, const QString &key, co
 }
 
 } // namespace
+
+void TestConnectionBar::serialListIsReadAgainWhenOpened()
+{
+    ConnectionBar bar;
+    chooseKind(bar, LinkKind::Rtu);
+    bar.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&bar));
+    auto *combo = bar.findChild<QComboBox *>(QStringLiteral("serialPortCombo"));
+    QVERIFY(combo);
+    // A port that was listed once and is gone (an adapter pulled out) leaves the list when it opens;
+    // what the user typed stays.
+    combo->addItem(QStringLiteral("/dev/ttyGONE0"));
+    combo->setCurrentText(QStringLiteral("/dev/ttyUSB7"));
+    combo->showPopup();
+    QCOMPARE(combo->findText(QStringLiteral("/dev/ttyGONE0")), -1);
+    QCOMPARE(combo->count(), int(QSerialPortInfo::availablePorts().size()));
+    QCOMPARE(combo->currentText(), QStringLiteral("/dev/ttyUSB7"));
+    combo->hidePopup();
+}
 
 void TestConnectionBar::tlsUrlCarriesTheFiles()
 {
