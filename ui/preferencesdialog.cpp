@@ -20,7 +20,12 @@ PreferencesDialog::PreferencesDialog(QWidget *parent)
     m_language->setObjectName(QStringLiteral("languageBox"));
     // Each language is named in its own words, as language pickers do: whoever cannot read the
     // current one still finds theirs.
-    const QString system = tr("System language (%1)").arg(QLocale::system().nativeLanguageName());
+    // The language System gives here: Indonesian for an Indonesian locale, English otherwise (the
+    // sources; also for the C locale, which has no language name).
+    const QString systemGives = TranslationLoader::localeFor(TranslationLoader::Choice::System).language() == QLocale::Indonesian
+        ? QStringLiteral("Bahasa Indonesia")
+        : QStringLiteral("English");
+    const QString system = tr("System language (%1)").arg(systemGives);
     m_language->addItem(system, QVariant::fromValue(int(TranslationLoader::Choice::System)));
     m_language->addItem(QStringLiteral("English"), QVariant::fromValue(int(TranslationLoader::Choice::English)));
     m_language->addItem(QStringLiteral("Bahasa Indonesia"), QVariant::fromValue(int(TranslationLoader::Choice::Indonesian)));
