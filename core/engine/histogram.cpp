@@ -140,13 +140,10 @@ int Histogram::binOf(qint64 valueNs) const
         const qint64 bin = (valueNs - m_lowNs) / m_widthNs;
         return int(std::min<qint64>(bin, n - 1));
     }
-    auto bin = int(std::floor(m_binsPerDecade * std::log10(v / double(m_lowNs))));
-    bin = std::clamp(bin, 0, n - 1);
-    while (bin + 1 < n && v >= m_edges[std::size_t(bin + 1)])
-        ++bin;
-    while (bin > 0 && v < m_edges[std::size_t(bin)])
-        --bin;
-    return bin;
+    // A binary search over the edges: a few comparisons, where a logarithm (and the correction
+    // of its rounding at the edges) cost about ten times as much per value.
+    const auto above = std::upper_bound(m_edges.begin(), m_edges.end(), v);
+    return std::clamp(int(above - m_edges.begin()) - 1, 0, n - 1);
 }
 
 void Histogram::add(qint64 valueNs)
