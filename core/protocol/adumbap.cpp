@@ -35,7 +35,7 @@ void dissectMbap(Dissection &out, const RequestInfo &request)
         tree.flag(tid, Severity::Error, QStringLiteral("does not match the request's transaction id %1").arg(request.transactionId));
 
     const int pid = tree.add(-1, "mbap.protocol_id", QT_TRANSLATE_NOOP("mbscope::Field", "Protocol id"), 2, 2, u16(2), ValueFormat::Decimal,
-                             u16(2) == 0 ? "Modbus" : nullptr);
+                             u16(2) == 0 ? QT_TRANSLATE_NOOP("mbscope::Field", "Modbus") : nullptr);
     if (u16(2) != 0)
         tree.flag(pid, Severity::Error, QStringLiteral("protocol id %1 is not Modbus: the MBAP header carries 0 for Modbus").arg(u16(2)));
 

@@ -41,25 +41,25 @@ struct SubFunction {
 SubFunction subFunction(quint16 code)
 {
     switch (code) {
-    case 0x00: return {"Return Query Data", "Echo data", Kind::Echo};
-    case 0x01: return {"Restart Communications Option", "Restart option", Kind::Restart};
-    case 0x02: return {"Return Diagnostic Register", "Diagnostic register", Kind::Register};
-    case 0x03: return {"Change ASCII Input Delimiter", "ASCII input delimiter", Kind::Delimiter};
-    case 0x04: return {"Force Listen Only Mode", "Data", Kind::ListenOnly};
-    case 0x0A: return {"Clear Counters and Diagnostic Register", "Data", Kind::Clear};
-    case 0x0B: return {"Return Bus Message Count", "Bus message count", Kind::Counter};
-    case 0x0C: return {"Return Bus Communication Error Count", "Bus communication error count", Kind::Counter};
-    case 0x0D: return {"Return Bus Exception Error Count", "Bus exception error count", Kind::Counter};
-    case 0x0E: return {"Return Server Message Count", "Server message count", Kind::Counter};
-    case 0x0F: return {"Return Server No Response Count", "Server no response count", Kind::Counter};
-    case 0x10: return {"Return Server NAK Count", "Server NAK count", Kind::Counter};
-    case 0x11: return {"Return Server Busy Count", "Server busy count", Kind::Counter};
-    case 0x12: return {"Return Bus Character Overrun Count", "Bus character overrun count", Kind::Counter};
-    case 0x14: return {"Clear Overrun Counter and Flag", "Data", Kind::Clear};
+    case 0x00: return {QT_TRANSLATE_NOOP("mbscope::Field", "Return Query Data"), QT_TRANSLATE_NOOP("mbscope::Field", "Echo data"), Kind::Echo};
+    case 0x01: return {QT_TRANSLATE_NOOP("mbscope::Field", "Restart Communications Option"), QT_TRANSLATE_NOOP("mbscope::Field", "Restart option"), Kind::Restart};
+    case 0x02: return {QT_TRANSLATE_NOOP("mbscope::Field", "Return Diagnostic Register"), QT_TRANSLATE_NOOP("mbscope::Field", "Diagnostic register"), Kind::Register};
+    case 0x03: return {QT_TRANSLATE_NOOP("mbscope::Field", "Change ASCII Input Delimiter"), QT_TRANSLATE_NOOP("mbscope::Field", "ASCII input delimiter"), Kind::Delimiter};
+    case 0x04: return {QT_TRANSLATE_NOOP("mbscope::Field", "Force Listen Only Mode"), QT_TRANSLATE_NOOP("mbscope::Field", "Data"), Kind::ListenOnly};
+    case 0x0A: return {QT_TRANSLATE_NOOP("mbscope::Field", "Clear Counters and Diagnostic Register"), QT_TRANSLATE_NOOP("mbscope::Field", "Data"), Kind::Clear};
+    case 0x0B: return {QT_TRANSLATE_NOOP("mbscope::Field", "Return Bus Message Count"), QT_TRANSLATE_NOOP("mbscope::Field", "Bus message count"), Kind::Counter};
+    case 0x0C: return {QT_TRANSLATE_NOOP("mbscope::Field", "Return Bus Communication Error Count"), QT_TRANSLATE_NOOP("mbscope::Field", "Bus communication error count"), Kind::Counter};
+    case 0x0D: return {QT_TRANSLATE_NOOP("mbscope::Field", "Return Bus Exception Error Count"), QT_TRANSLATE_NOOP("mbscope::Field", "Bus exception error count"), Kind::Counter};
+    case 0x0E: return {QT_TRANSLATE_NOOP("mbscope::Field", "Return Server Message Count"), QT_TRANSLATE_NOOP("mbscope::Field", "Server message count"), Kind::Counter};
+    case 0x0F: return {QT_TRANSLATE_NOOP("mbscope::Field", "Return Server No Response Count"), QT_TRANSLATE_NOOP("mbscope::Field", "Server no response count"), Kind::Counter};
+    case 0x10: return {QT_TRANSLATE_NOOP("mbscope::Field", "Return Server NAK Count"), QT_TRANSLATE_NOOP("mbscope::Field", "Server NAK count"), Kind::Counter};
+    case 0x11: return {QT_TRANSLATE_NOOP("mbscope::Field", "Return Server Busy Count"), QT_TRANSLATE_NOOP("mbscope::Field", "Server busy count"), Kind::Counter};
+    case 0x12: return {QT_TRANSLATE_NOOP("mbscope::Field", "Return Bus Character Overrun Count"), QT_TRANSLATE_NOOP("mbscope::Field", "Bus character overrun count"), Kind::Counter};
+    case 0x14: return {QT_TRANSLATE_NOOP("mbscope::Field", "Clear Overrun Counter and Flag"), QT_TRANSLATE_NOOP("mbscope::Field", "Data"), Kind::Clear};
     // V1.1b3 reserves these; older Modicon documents gave them the meanings quoted.
-    case 0x13: return {"Reserved (legacy Modicon: Return IOP Overrun Count)", "Data", Kind::Reserved};
-    case 0x15: return {"Reserved (legacy Modicon: Get/Clear Modbus Plus Statistics)", "Data", Kind::Reserved};
-    default: return {"Reserved sub-function", "Data", Kind::Reserved};
+    case 0x13: return {QT_TRANSLATE_NOOP("mbscope::Field", "Reserved (legacy Modicon: Return IOP Overrun Count)"), QT_TRANSLATE_NOOP("mbscope::Field", "Data"), Kind::Reserved};
+    case 0x15: return {QT_TRANSLATE_NOOP("mbscope::Field", "Reserved (legacy Modicon: Get/Clear Modbus Plus Statistics)"), QT_TRANSLATE_NOOP("mbscope::Field", "Data"), Kind::Reserved};
+    default: return {QT_TRANSLATE_NOOP("mbscope::Field", "Reserved sub-function"), QT_TRANSLATE_NOOP("mbscope::Field", "Data"), Kind::Reserved};
     }
 }
 

@@ -20,19 +20,19 @@ void addReferences(const PduContext &ctx, quint8 function, int first)
     switch (function) {
     case 0x01: case 0x05: case 0x0F:
         table = 0;
-        meaning = "(coil 0xxxx, numbered from 1: PDU address + 1)";
+        meaning = QT_TRANSLATE_NOOP("mbscope::Field", "(coil 0xxxx, numbered from 1: PDU address + 1)");
         break;
     case 0x02:
         table = 1;
-        meaning = "(discrete input 1xxxx, numbered from 1: PDU address + 1)";
+        meaning = QT_TRANSLATE_NOOP("mbscope::Field", "(discrete input 1xxxx, numbered from 1: PDU address + 1)");
         break;
     case 0x04:
         table = 3;
-        meaning = "(input register 3xxxx, numbered from 1: PDU address + 1)";
+        meaning = QT_TRANSLATE_NOOP("mbscope::Field", "(input register 3xxxx, numbered from 1: PDU address + 1)");
         break;
     case 0x03: case 0x06: case 0x10: case 0x16: case 0x17:
         table = 4;
-        meaning = "(holding register 4xxxx, numbered from 1: PDU address + 1)";
+        meaning = QT_TRANSLATE_NOOP("mbscope::Field", "(holding register 4xxxx, numbered from 1: PDU address + 1)");
         break;
     default:
         return;

@@ -75,7 +75,7 @@ void dissectReadFifoQueue(const PduContext &ctx)
                                      "(2 for the FIFO count + 2 per value)")
                           .arg(QString::number(byteCount), QString::number(count), QString::number(2 + 2 * count)));
     }
-    registerBlock(ctx, ctx.parent, 5, 3, 3 + byteCount, "FIFO entry", -1);
+    registerBlock(ctx, ctx.parent, 5, 3, 3 + byteCount, QT_TRANSLATE_NOOP("mbscope::Field", "FIFO entry"), -1);
     trailing(ctx, qMax(5, 3 + byteCount));
 }
 

@@ -940,7 +940,12 @@
         <translation>Panjang</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-6"/>
+        <source>Modbus</source>
+        <translation>Modbus</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>no unit behind a gateway (0xFF is the usual value for a direct TCP server)</source>
         <translation>tidak ada unit di balik gateway (0xFF adalah nilai yang lazim untuk server TCP langsung)</translation>
     </message>
@@ -967,76 +972,91 @@
     </message>
     <message>
         <location filename="../../core/protocol/diagnosticrules.cpp" line="+33"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+44"/>
         <source>Return Query Data</source>
         <translation>Kembalikan Data Query</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Restart Communications Option</source>
         <translation>Opsi Restart Komunikasi</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Diagnostic Register</source>
         <translation>Kembalikan Register Diagnostik</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Change ASCII Input Delimiter</source>
         <translation>Ubah Delimiter Input ASCII</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Force Listen Only Mode</source>
         <translation>Paksa Mode Hanya-Dengar</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Clear Counters and Diagnostic Register</source>
         <translation>Kosongkan Penghitung dan Register Diagnostik</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Bus Message Count</source>
         <translation>Kembalikan Jumlah Pesan Bus</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Bus Communication Error Count</source>
         <translation>Kembalikan Jumlah Error Komunikasi Bus</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Bus Exception Error Count</source>
         <translation>Kembalikan Jumlah Error Exception Bus</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Server Message Count</source>
         <translation>Kembalikan Jumlah Pesan Server</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Server No Response Count</source>
         <translation>Kembalikan Jumlah Tanpa Respons Server</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Server NAK Count</source>
         <translation>Kembalikan Jumlah NAK Server</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Server Busy Count</source>
         <translation>Kembalikan Jumlah Server Sibuk</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Bus Character Overrun Count</source>
         <translation>Kembalikan Jumlah Overrun Karakter Bus</translation>
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Clear Overrun Counter and Flag</source>
         <translation>Kosongkan Penghitung dan Flag Overrun</translation>
     </message>
@@ -1299,6 +1319,12 @@
     </message>
     <message>
         <location line="+38"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="-10"/>
+        <location line="+1"/>
+        <location line="+9"/>
+        <location line="+2"/>
+        <location line="+1"/>
+        <location line="+1"/>
         <source>Data</source>
         <translation>Data</translation>
     </message>
@@ -1596,7 +1622,7 @@
         <translation>Tipe MEI cadangan</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+84"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+22"/>
         <source>BS (backspace)</source>
         <translation>BS (backspace)</translation>
     </message>
@@ -1641,13 +1667,79 @@
         <translation>bukan karakter ASCII</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="-52"/>
+        <location line="+117"/>
         <location line="+7"/>
         <source>Echo data</source>
         <translation>Data gema</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="-123"/>
+        <source>Restart option</source>
+        <translation>Opsi restart</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Diagnostic register</source>
+        <translation>Register diagnostik</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Bus message count</source>
+        <translation>Jumlah pesan bus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bus communication error count</source>
+        <translation>Jumlah error komunikasi bus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bus exception error count</source>
+        <translation>Jumlah error exception bus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Server message count</source>
+        <translation>Jumlah pesan server</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Server no response count</source>
+        <translation>Jumlah tanpa respons server</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Server NAK count</source>
+        <translation>Jumlah NAK server</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Server busy count</source>
+        <translation>Jumlah server sibuk</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Bus character overrun count</source>
+        <translation>Jumlah overrun karakter bus</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Reserved (legacy Modicon: Return IOP Overrun Count)</source>
+        <translation>Cadangan (Modicon lama: Return IOP Overrun Count)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reserved (legacy Modicon: Get/Clear Modbus Plus Statistics)</source>
+        <translation>Cadangan (Modicon lama: Get/Clear Modbus Plus Statistics)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reserved sub-function</source>
+        <translation>Sub-fungsi cadangan</translation>
+    </message>
+    <message>
+        <location line="+121"/>
         <source>Restart, keep the communications event log</source>
         <translation>Restart, simpan log event komunikasi</translation>
     </message>
@@ -1657,7 +1749,8 @@
         <translation>Restart dan kosongkan log event komunikasi</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="-138"/>
+        <location line="+150"/>
         <source>ASCII input delimiter</source>
         <translation>Delimiter input ASCII</translation>
     </message>
@@ -1763,6 +1856,11 @@
         <location line="+34"/>
         <source>FIFO count</source>
         <translation>Jumlah FIFO</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>FIFO entry</source>
+        <translation>Isi FIFO</translation>
     </message>
     <message>
         <location filename="../../core/protocol/pdureadbits.cpp" line="+17"/>
@@ -1976,7 +2074,27 @@
         <translation>alasan tidak diketahui</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdudissector.cpp" line="-18"/>
+        <location filename="../../core/protocol/pdudissector.cpp" line="-51"/>
+        <source>(coil 0xxxx, numbered from 1: PDU address + 1)</source>
+        <translation>(coil 0xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(discrete input 1xxxx, numbered from 1: PDU address + 1)</source>
+        <translation>(discrete input 1xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(input register 3xxxx, numbered from 1: PDU address + 1)</source>
+        <translation>(input register 3xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(holding register 4xxxx, numbered from 1: PDU address + 1)</source>
+        <translation>(holding register 4xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Modicon reference</source>
         <translation>Referensi Modicon</translation>
     </message>
@@ -2105,7 +2223,7 @@
 <context>
     <name>mbscope::LatencyComparePanel</name>
     <message>
-        <location filename="../../ui/latencycomparepanel.cpp" line="+71"/>
+        <location filename="../../ui/latencycomparepanel.cpp" line="+72"/>
         <source>A run (current poll, reference, capture) and a request item, or all of its transactions</source>
         <translation>Satu run (polling saat ini, referensi, capture) dan satu item permintaan, atau semua transaksinya</translation>
     </message>
@@ -2143,7 +2261,7 @@
 <context>
     <name>mbscope::LatencyHistogramPanel</name>
     <message>
-        <location filename="../../ui/latencyhistogrampanel.cpp" line="+46"/>
+        <location filename="../../ui/latencyhistogrampanel.cpp" line="+47"/>
         <source>Which run to show: the current poll, the kept reference or an opened capture</source>
         <translation>Run mana yang ditampilkan: polling saat ini, referensi yang disimpan, atau capture yang dibuka</translation>
     </message>
@@ -2953,7 +3071,7 @@
         <translation>Preferensi</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>System language (%1)</source>
         <translation>Bahasa sistem (%1)</translation>
     </message>

@@ -9,10 +9,20 @@
 #include <QtCore/QProcess>
 #include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QTranslator>
 #include <QtCore/QXmlStreamReader>
 #include <QtTest/QTest>
 
+#include "protocol/dissector.h"
+#include "protocol/functioncode.h"
+#include "protocol/modiconreference.h"
+#include "protocol/registerformat.h"
+#include "protocol/streamframe.h"
+
+using namespace mbscope;
+
 #include <algorithm>
+#include <cstring>
 
 namespace {
 
@@ -177,6 +187,7 @@ private Q_SLOTS:
     void everyStringTranslated_data();
     void everyStringTranslated();
     void noStaleEntries();
+    void coreTextsAreMarked();
 
 private:
     QTemporaryDir m_dir;
@@ -305,6 +316,104 @@ void TestTranslations::noStaleEntries()
     }
     qInfo("%lld strings found in the sources, %lld entries in mbscope_id.ts, %d stale", qlonglong(m_found.size()),
           qlonglong(m_committed.size()), stale);
+}
+
+// The core's static strings reach the window only through QT_TRANSLATE_NOOP("mbscope::Field"):
+// one written without the marker is in no .ts and stays English. Every field name and meaning of
+// frames of every function code (requests and responses, whole and cut short, with patterned
+// data) and every name the core hands out must be in the compiled translation.
+void TestTranslations::coreTextsAreMarked()
+{
+    QTranslator translator;
+    QVERIFY2(translator.load(QStringLiteral(":/translations/mbscope_id.qm")), "no :/translations/mbscope_id.qm");
+    QMap<QString, QString> unmarked; // text -> where it was seen
+    // ASCII control character names (NUL, STX, DC2) are the same in every language.
+    static const QRegularExpression mnemonic(QStringLiteral("^[A-Z]{2,3}[0-9]?$"));
+    const auto check = [&](const char *text, const QString &where) {
+        if (text && *text && translator.translate("mbscope::Field", text).isEmpty() && !unmarked.contains(QLatin1String(text))
+            && !mnemonic.match(QLatin1String(text)).hasMatch())
+            unmarked.insert(QLatin1String(text), where);
+    };
+    int fields = 0;
+    for (int code = 0; code < 256; ++code) {
+        for (int length = 0; length <= 12; ++length) {
+            for (const char fill : {'\x00', '\x01', '\x04', '\xFF'}) {
+                QByteArray pdu(1 + length, fill);
+                pdu[0] = char(code);
+                if (length > 0)
+                    pdu[1] = char(length - 1); // a byte count that fits
+                for (const Direction direction : {Direction::Request, Direction::Response}) {
+                    DissectOptions options;
+                    options.framing = Framing::Pdu;
+                    options.direction = direction;
+                    const Dissection d = Dissector::dissect(pdu, options);
+                    for (const Field &f : d.fields.fields()) {
+                        ++fields;
+                        const QString where = QStringLiteral("field %1 of PDU %2").arg(QLatin1String(f.key),
+                                                                                   QString::fromLatin1(pdu.toHex(' ')));
+                        check(f.name, where);
+                        // The comm event log's texts are put together from flags at compile time
+                        // (pducommevents.cpp): no one string to mark; they stay English.
+                        if (std::strcmp(f.key, "modbus.event") != 0)
+                            check(f.meaning, where);
+                    }
+                }
+            }
+        }
+    }
+    // Diagnostics (08): every sub-function, asked and answered.
+    for (int sub = 0; sub <= 0x16; ++sub) {
+        for (const Direction direction : {Direction::Request, Direction::Response}) {
+            DissectOptions options;
+            options.framing = Framing::Pdu;
+            options.direction = direction;
+            const QByteArray pdu = QByteArray::fromHex("0800") + char(sub) + QByteArray::fromHex("0000");
+            const Dissection d = Dissector::dissect(pdu, options);
+            for (const Field &f : d.fields.fields()) {
+                check(f.name, QStringLiteral("field %1 of diagnostics %2").arg(QLatin1String(f.key)).arg(sub));
+                check(f.meaning, QStringLiteral("field %1 of diagnostics %2").arg(QLatin1String(f.key)).arg(sub));
+            }
+        }
+    }
+    for (const QByteArray &hex : {QByteArrayLiteral("01030000000AC5CD"), QByteArrayLiteral("0103000000"),
+                                  QByteArrayLiteral("000100000006010300000001"), QByteArrayLiteral("F7830215")}) {
+        for (const Framing framing : {Framing::Rtu, Framing::Tcp, Framing::Ascii, Framing::Auto}) {
+            DissectOptions options;
+            options.framing = framing;
+            const Dissection d = Dissector::dissect(QByteArray::fromHex(hex), options);
+            for (const Field &f : d.fields.fields()) {
+                check(f.name, QStringLiteral("field %1 of %2").arg(QLatin1String(f.key), QLatin1String(hex)));
+                check(f.meaning, QStringLiteral("field %1 of %2").arg(QLatin1String(f.key), QLatin1String(hex)));
+            }
+        }
+    }
+    for (int code = 0; code < 256; ++code) {
+        check(functionName(quint8(code)), QStringLiteral("functionName(%1)").arg(code));
+        check(exceptionName(quint8(code)), QStringLiteral("exceptionName(%1)").arg(code));
+        check(exceptionMeaning(quint8(code)), QStringLiteral("exceptionMeaning(%1)").arg(code));
+    }
+    for (const ModbusTable table : {ModbusTable::Coils, ModbusTable::DiscreteInputs, ModbusTable::InputRegisters,
+                                    ModbusTable::HoldingRegisters})
+        check(ModiconReference::tableName(table), QStringLiteral("ModiconReference::tableName"));
+    for (int type = 0; type <= int(RegisterType::Float64); ++type) {
+        for (const RegisterOrder order : {RegisterOrder::ABCD, RegisterOrder::CDAB, RegisterOrder::BADC, RegisterOrder::DCBA}) {
+            const RegisterFormat format(RegisterType(type), order);
+            check(format.typeDescription(), QStringLiteral("RegisterFormat::typeDescription"));
+            check(format.orderWords(), QStringLiteral("RegisterFormat::orderWords"));
+        }
+    }
+    for (int reason = 0; reason <= int(SkipReason::Incomplete); ++reason)
+        check(skipReasonName(SkipReason(reason)), QStringLiteral("skipReasonName(%1)").arg(reason));
+
+    QStringList failures;
+    for (auto it = unmarked.cbegin(); it != unmarked.cend(); ++it)
+        failures << QStringLiteral("\"%1\" (%2)").arg(it.key(), it.value());
+    for (const QString &failure : std::as_const(failures))
+        qWarning("not marked with QT_TRANSLATE_NOOP(\"mbscope::Field\", ...) or not translated: %s", qPrintable(failure));
+    QVERIFY2(fields > 10000, qPrintable(QStringLiteral("only %1 fields dissected").arg(fields)));
+    QVERIFY2(failures.isEmpty(), qPrintable(QStringLiteral("%1 core text(s) the window cannot translate, listed above; the first: %2")
+                                                .arg(failures.size())
+                                                .arg(failures.value(0))));
 }
 
 QTEST_GUILESS_MAIN(TestTranslations)
