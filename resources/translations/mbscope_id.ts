@@ -1671,7 +1671,7 @@
         <location line="+117"/>
         <location line="+7"/>
         <source>Echo data</source>
-        <translation>Data gema</translation>
+        <translation>Data echo</translation>
     </message>
     <message>
         <location line="-123"/>
@@ -5085,7 +5085,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>Peer</source>
-        <translation>Lawan</translation>
+        <translation>Klien</translation>
     </message>
     <message>
         <location line="+1"/>
