@@ -36,7 +36,7 @@ PlanPanel::PlanPanel(PlanController *controller, DocumentSource document, QWidge
     row->addWidget(m_exportButton);
     layout->addLayout(row);
 
-    m_summary = new QLabel(tr("Open a session with a test plan, then run it."), this);
+    m_summary = new QLabel(this);
     m_summary->setWordWrap(true);
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_summary);
@@ -62,6 +62,23 @@ PlanPanel::PlanPanel(PlanController *controller, DocumentSource document, QWidge
     connect(m_controller, &PlanController::finished, this, [this](const QString &summary, bool passed) { setSummary(summary, !passed); });
     connect(m_controller, &PlanController::runningChanged, this, &PlanPanel::updateState);
     updateState();
+    showDocumentHint();
+}
+
+void PlanPanel::showDocumentHint()
+{
+    if (m_controller->isRunning() || m_controller->lastResult().has_value())
+        return;
+    const SessionDocument document = m_document();
+    if (document.plan.empty()) {
+        m_summary->setText(tr("This session has no test plan. Open a session with one (File > Open), then run it."));
+    } else {
+        const QString name = document.name.isEmpty() ? tr("The session's plan") : tr("The plan of %1").arg(document.name);
+        m_summary->setText(tr("%1 has %n step(s). Press Run plan to run it against the connected device.", nullptr,
+                              int(document.plan.size()))
+                               .arg(name));
+    }
+    m_summary->setStyleSheet(QString());
 }
 
 void PlanPanel::run()

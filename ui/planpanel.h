@@ -31,6 +31,9 @@ public:
 
     void run();
     void exportJUnit();
+    // Says what the session now open holds (its plan's name and steps, or that it has none),
+    // unless a run is going on or its results are shown.
+    void showDocumentHint();
     [[nodiscard]] QTableView *resultsView() const { return m_table; }
     [[nodiscard]] QString summaryText() const;
 

@@ -39,6 +39,8 @@ SessionTools::SessionTools(QMainWindow *window, LinkController *link, SessionCon
             return document;
         },
         window);
+    // A session opened (or a new one) changes the title: the plan panel says what it now holds.
+    connect(session, &SessionController::titleChanged, m_planPanel, &PlanPanel::showDocumentHint);
     m_replayDock = new QDockWidget(tr("Replay"), window);
     m_replayDock->setObjectName(QStringLiteral("replayDock"));
     m_replayDock->setWidget(m_replayPanel);

@@ -105,6 +105,8 @@ void TestPlanPanel::runFromTheWindow()
     panel.resize(1200, 260);
     const QString junit = m_dir.filePath(QStringLiteral("%1.xml").arg(QLatin1String(QTest::currentDataTag())));
     panel.setFileChooser([junit] { return junit; });
+    // Before a run, the panel says what the open session's plan holds.
+    QVERIFY2(panel.summaryText().contains(QLatin1String("has 3 step(s)")), qPrintable(panel.summaryText()));
 
     QSignalSpy finished(&controller, &PlanController::finished);
     panel.run();
@@ -163,6 +165,15 @@ void TestPlanPanel::refusesWithoutAPlan()
     QVERIFY2(error.contains(QStringLiteral("Connect to a device")), qPrintable(error));
     QVERIFY(!controller.exportJUnit(m_dir.filePath(QStringLiteral("none.xml")), &error));
     QVERIFY2(error.contains(QStringLiteral("Run the plan")), qPrintable(error));
+
+    // A session without a plan is said to have none, and a session opened later is looked at again.
+    SessionDocument shown = empty;
+    PlanPanel panel(&controller, [&shown] { return shown; });
+    QVERIFY2(panel.summaryText().contains(QLatin1String("no test plan")), qPrintable(panel.summaryText()));
+    shown = *loaded.document;
+    shown.name = QStringLiteral("acceptance");
+    panel.showDocumentHint();
+    QVERIFY2(panel.summaryText().contains(QLatin1String("The plan of acceptance has 3 step(s)")), qPrintable(panel.summaryText()));
 }
 
 QTEST_MAIN(TestPlanPanel)
