@@ -1,5 +1,7 @@
 #include "simtrafficmodel.h"
 
+#include "coretext.h"
+
 #include "protocol/adubuilder.h"
 #include "protocol/functioncode.h"
 
@@ -103,7 +105,7 @@ QString SimTrafficModel::functionText(const SimTrafficRecord &record) const
     if (parts.pdu.isEmpty())
         return {};
     const quint8 code = quint8(parts.pdu.at(0));
-    return tr("%1 %2").arg(hexByte(code), QLatin1String(functionName(code)));
+    return tr("%1 %2").arg(hexByte(code), fieldText(functionName(code)));
 }
 
 QString SimTrafficModel::outcomeText(const SimTrafficRecord &record) const
