@@ -10,6 +10,7 @@
 
 #include <QtCore/QtEndian>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -41,20 +42,28 @@ struct Order {
     [[nodiscard]] quint64 u64(const uchar *p) const { return bigEndian ? qFromBigEndian<quint64>(p) : qFromLittleEndian<quint64>(p); }
 };
 
+// Time stamps are kept between 1970 and 2^62 ns (about 146 years) later: a damaged file's stamps
+// (or offsets) beyond that are clamped, so that differences between any two stay in range.
+constexpr qint64 kLatestNs = qint64(1) << 62;
+constexpr qint64 kLatestSeconds = kLatestNs / 1000000000LL;
+
 qint64 toNs(quint64 units, const Interface &iface)
 {
     const quint64 perSecond = iface.unitsPerSecond;
-    qint64 ns = 0;
-    if (perSecond == 1000000000ULL) {
-        ns = qint64(units);
-    } else if (1000000000ULL % perSecond == 0) {
-        ns = qint64(units * (1000000000ULL / perSecond));
-    } else {
-        const quint64 seconds = units / perSecond;
-        const quint64 rest = units % perSecond;
-        ns = qint64(seconds * 1000000000ULL) + qint64(std::llround(static_cast<long double>(rest) * 1e9L / static_cast<long double>(perSecond)));
-    }
-    return ns + iface.offsetSeconds * 1000000000LL;
+    const quint64 seconds = units / perSecond;
+    const quint64 rest = units % perSecond;
+    if (seconds > quint64(kLatestSeconds))
+        return kLatestNs;
+    qint64 restNs = 0;
+    if (perSecond == 1000000000ULL)
+        restNs = qint64(rest);
+    else if (1000000000ULL % perSecond == 0)
+        restNs = qint64(rest * (1000000000ULL / perSecond));
+    else
+        restNs = qint64(std::llround(static_cast<long double>(rest) * 1e9L / static_cast<long double>(perSecond)));
+    const qint64 offsetSeconds = std::clamp<qint64>(iface.offsetSeconds, -kLatestSeconds, kLatestSeconds);
+    const qint64 ns = qint64(seconds) * 1000000000LL + restNs + offsetSeconds * 1000000000LL;
+    return std::clamp<qint64>(ns, 0, kLatestNs);
 }
 
 // if_tsresol: the most significant bit picks the base (0: 10^-n, 1: 2^-n). Resolutions finer

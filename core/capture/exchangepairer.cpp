@@ -246,7 +246,10 @@ void ExchangePairer::expire(qint64 nowNs)
     for (Slot &s : m_slots) {
         if (s.done)
             continue;
-        if (nowNs - s.exchange.transaction.sentNs <= m_timeoutNs)
+        // A damaged capture's times can be anything: the difference is taken so that it cannot
+        // overflow (a clock going backwards has not expired anything).
+        const qint64 sentNs = s.exchange.transaction.sentNs;
+        if (nowNs <= sentNs || quint64(nowNs) - quint64(sentNs) <= quint64(m_timeoutNs))
             break;
         timeOut(s, QStringLiteral("no answer within %1 ms").arg(double(m_timeoutNs) / 1e6));
     }
