@@ -1,6 +1,6 @@
 #include "captureinput.h"
 
-#include "durations.h"
+#include "time/duration.h"
 
 #include "capture/captureports.h"
 #include "session/capturesourcepath.h"
@@ -58,8 +58,8 @@ bool CaptureInput::read(const QCommandLineParser &parser, CaptureOptions *option
     if (parser.isSet(m_rtuPort) && !parsePorts(parser.values(m_rtuPort), "rtu-port", &options->rtuPorts, error))
         return false;
     const DurationResult timeout = parseDuration(parser.value(m_timeout));
-    if (!timeout.ok || timeout.ns <= 0) {
-        *error = QStringLiteral("--timeout: %1").arg(timeout.ok ? QStringLiteral("must be more than 0") : timeout.error);
+    if (!timeout.ok() || timeout.ns <= 0) {
+        *error = QStringLiteral("--timeout: %1").arg(timeout.ok() ? QStringLiteral("must be more than 0") : timeout.error);
         return false;
     }
     options->timeoutNs = timeout.ns;

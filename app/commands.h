@@ -1,5 +1,9 @@
 #pragma once
 
+// The dispatcher: which subcommand runs, or the window. What subcommands share is cli.h.
+
+#include "cli.h"
+
 #include <QtCore/QStringList>
 
 #ifdef MBSCOPE_HAVE_UI
@@ -20,14 +24,5 @@ int runGui(QApplication &app);
 // management), so the option is taken out of argv before QApplication exists; runGui opens it.
 void takeSessionArgument(int &argc, char *argv[]);
 #endif
-
-// A subcommand's --help text with its real usage line ("Usage: mbscope poll [options]") instead of
-// the executable's path that QCommandLineParser puts there.
-[[nodiscard]] QString subcommandHelp(const QString &helpText, const char *name);
-
-// Exit statuses shared by every subcommand.
-// A link error (nothing reached the device: refused, no such host or port) ends a command as a
-// usage error does: the command could not do what it was asked.
-enum ExitStatus { ExitOk = 0, ExitFailure = 1, ExitUsage = 2, ExitLinkError = 2 };
 
 } // namespace mbscope::app

@@ -1,6 +1,6 @@
 #include "exchangecommand.h"
 
-#include "commands.h"
+#include "cli.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QTextStream>

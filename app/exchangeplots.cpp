@@ -3,7 +3,7 @@
 #include "histogramplot.h"
 #include "transactionreport.h"
 
-#include "engine/histogram.h"
+#include "exchange/histogram.h"
 
 #include <QtCore/QFileInfo>
 

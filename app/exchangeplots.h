@@ -3,7 +3,7 @@
 #include "timeseriesplot.h"
 
 #include "capture/captureexchange.h"
-#include "engine/statistics.h"
+#include "exchange/statistics.h"
 
 #include <QtCore/QString>
 

@@ -1,7 +1,7 @@
 #include "exportcommand.h"
 
 #include "captureinput.h"
-#include "commands.h"
+#include "cli.h"
 #include "exchangeplots.h"
 #include "plotfile.h"
 

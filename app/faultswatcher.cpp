@@ -1,7 +1,7 @@
 #include "faultswatcher.h"
 
 #include "sim/faultinjector.h"
-#include "sim/profileloader.h"
+#include "profile/profileloader.h"
 
 #include <QtCore/QFileInfo>
 #include <QtCore/QFileSystemWatcher>

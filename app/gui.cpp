@@ -1,12 +1,12 @@
 // The window: what `mbscope` runs without a subcommand.
 #include "commands.h"
 
-#include "linkcontroller.h"
-#include "requestcomposer.h"
-#include "mainwindow.h"
-#include "sessioncontroller.h"
-#include "transactionview.h"
-#include "translationloader.h"
+#include "link/linkcontroller.h"
+#include "compose/requestcomposer.h"
+#include "shell/mainwindow.h"
+#include "session/sessioncontroller.h"
+#include "decode/transactionview.h"
+#include "shell/translationloader.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QRegularExpression>

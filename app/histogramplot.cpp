@@ -8,7 +8,7 @@
 #include <cstring>
 
 #ifdef MBSCOPE_HAVE_UI
-#include "histogramchart.h"
+#include "common/histogramchart.h"
 
 #include <QtWidgets/QApplication>
 #include <qcustomplot.h>

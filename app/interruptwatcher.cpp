@@ -71,7 +71,7 @@ void InterruptWatcher::onReadable()
     if (m_interrupted)
         return;
     m_interrupted = true;
-    emit interrupted();
+    Q_EMIT interrupted();
 }
 
 #else

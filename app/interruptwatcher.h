@@ -22,7 +22,7 @@ public:
     // The signal that arrived (SIGINT or SIGTERM), 0 before one did.
     [[nodiscard]] int signalNumber() const { return m_signal; }
 
-signals:
+Q_SIGNALS:
     void interrupted();
 
 private:

@@ -1,7 +1,7 @@
 #include "plotfile.h"
 
 #ifdef MBSCOPE_HAVE_UI
-#include "plotsaver.h"
+#include "common/plotsaver.h"
 #endif
 
 namespace mbscope::app {

@@ -1,6 +1,6 @@
 #include "pollcommand.h"
 
-#include "commands.h"
+#include "cli.h"
 #include "polloptions.h"
 #include "pollresults.h"
 #include "pollrunner.h"

@@ -1,6 +1,6 @@
 #include "polloptions.h"
 
-#include "durations.h"
+#include "time/duration.h"
 #include "histogramplot.h"
 
 #include <QtCore/QCommandLineParser>
@@ -80,7 +80,7 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
         out.settings.intervalsNs = list.ns;
     } else {
         const DurationResult interval = parseDuration(parser.value(m_interval));
-        if (!interval.ok) {
+        if (!interval.ok()) {
             err << prefix << "--interval: " << interval.error << '\n';
             return false;
         }
@@ -99,7 +99,7 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
     }
     if (parser.isSet(m_duration)) {
         const DurationResult duration = parseDuration(parser.value(m_duration));
-        if (!duration.ok) {
+        if (!duration.ok()) {
             err << prefix << "--duration: " << duration.error << '\n';
             return false;
         }

@@ -1,11 +1,11 @@
 #include "pollresults.h"
 
-#include "commands.h"
-#include "durations.h"
+#include "cli.h"
+#include "time/duration.h"
 #include "histogramplot.h"
 #include "transactionreport.h"
 
-#include "engine/histogram.h"
+#include "exchange/histogram.h"
 #include "protocol/functioncode.h"
 
 #include <QtCore/QJsonArray>

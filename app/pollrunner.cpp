@@ -1,6 +1,6 @@
 #include "pollrunner.h"
 
-#include "durations.h"
+#include "time/duration.h"
 #include "interruptwatcher.h"
 #include "transactionreport.h"
 

@@ -1,8 +1,8 @@
 #include "replaycommand.h"
 
 #include "captureinput.h"
-#include "commands.h"
-#include "durations.h"
+#include "cli.h"
+#include "time/duration.h"
 #include "interruptwatcher.h"
 #include "replayserve.h"
 
@@ -113,8 +113,8 @@ int runReplay(const QStringList &arguments)
     qint64 durationMs = 0;
     if (parser.isSet(durationOpt)) {
         const DurationResult d = parseDuration(parser.value(durationOpt));
-        if (!d.ok || d.ns <= 0) {
-            err << "mbscope replay: --duration: " << (d.ok ? QStringLiteral("must be more than 0") : d.error) << '\n';
+        if (!d.ok() || d.ns <= 0) {
+            err << "mbscope replay: --duration: " << (d.ok() ? QStringLiteral("must be more than 0") : d.error) << '\n';
             return ExitUsage;
         }
         durationMs = std::max<qint64>(1, d.ns / 1'000'000);

@@ -1,6 +1,6 @@
 #include "replayserve.h"
 
-#include "commands.h"
+#include "cli.h"
 #include "interruptwatcher.h"
 
 #include "replay/replayscript.h"

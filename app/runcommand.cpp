@@ -1,6 +1,6 @@
 #include "runcommand.h"
 
-#include "commands.h"
+#include "cli.h"
 #include "interruptwatcher.h"
 
 #include "session/junitreport.h"

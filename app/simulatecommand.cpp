@@ -1,14 +1,15 @@
 #include "simulatecommand.h"
 
+#include "time/duration.h"
+
 #include "faultswatcher.h"
 #include "simulatesession.h"
 
-#include "sim/profileloader.h"
+#include "profile/profileloader.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QCoreApplication>
 #include <QtCore/QEventLoop>
-#include <QtCore/QRegularExpression>
 #include <QtCore/QSocketNotifier>
 #include <QtCore/QTextStream>
 #include <QtCore/QTimer>
@@ -78,25 +79,6 @@ private:
     struct sigaction m_oldTerm = {};
 };
 
-// "60s", "500ms", "2m", "1h", "1.5s"; a bare number is seconds. -1 when unreadable.
-qint64 parseDurationMs(const QString &text)
-{
-    static const QRegularExpression re(QStringLiteral("^\\s*(\\d+(?:\\.\\d+)?)\\s*(ms|s|m|min|h)?\\s*$"));
-    const QRegularExpressionMatch m = re.match(text);
-    if (!m.hasMatch())
-        return -1;
-    const double value = m.captured(1).toDouble();
-    const QString unit = m.captured(2);
-    double factor = 1000;
-    if (unit == QLatin1String("ms"))
-        factor = 1;
-    else if (unit == QLatin1String("m") || unit == QLatin1String("min"))
-        factor = 60000;
-    else if (unit == QLatin1String("h"))
-        factor = 3600000;
-    return qint64(value * factor);
-}
-
 void listProfiles(QTextStream &out)
 {
     const QList<ShippedProfile> profiles = ProfileLoader::shippedProfiles();
@@ -141,7 +123,7 @@ int runSimulate(const QStringList &arguments)
                                        QStringLiteral("Write every frame as a JSON line (t, direction, endpoint, peer, unit, hex, verdict)."),
                                        QStringLiteral("FILE"));
     const QCommandLineOption durationOption(QStringLiteral("duration"),
-                                            QStringLiteral("Stop after this long (60s, 500ms, 2m, 1h)."), QStringLiteral("TIME"));
+                                            QStringLiteral("Stop after this long (60s, 500ms, 2min, 1h; a bare number is milliseconds)."), QStringLiteral("TIME"));
     const QCommandLineOption quietOption(QStringLiteral("quiet"), QStringLiteral("A summary every 10 s instead of one line per request."));
     const QCommandLineOption seedOption(QStringLiteral("seed"),
                                         QStringLiteral("Seed of the value generators and fault rules (default: the profile's and faults file's)."),
@@ -171,10 +153,11 @@ int runSimulate(const QStringList &arguments)
 
     qint64 durationMs = 0;
     if (parser.isSet(durationOption)) {
-        durationMs = parseDurationMs(parser.value(durationOption));
-        if (durationMs <= 0) {
-            err << "mbscope simulate: --duration '" << parser.value(durationOption)
-                << "' is not a duration (expected e.g. 60s, 500ms, 2m, 1h)\n";
+        const DurationResult d = parseDuration(parser.value(durationOption));
+        durationMs = d.ns / Duration::Millisecond;
+        if (!d.ok() || durationMs <= 0) {
+            err << "mbscope simulate: --duration: " << (d.ok() ? QStringLiteral("'%1' is less than 1 ms").arg(parser.value(durationOption)) : d.error)
+                << '\n';
             return kExitUsage;
         }
     }

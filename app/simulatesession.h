@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sim/deviceprofile.h"
+#include "profile/deviceprofile.h"
 #include "sim/faultinjector.h"
 #include "sim/faultplan.h"
 #include "sim/generatordriver.h"

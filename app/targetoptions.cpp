@@ -1,6 +1,6 @@
 #include "targetoptions.h"
 
-#include "durations.h"
+#include "time/duration.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QTextStream>
@@ -55,7 +55,7 @@ bool TargetOptions::read(const QCommandLineParser &parser, const QString &comman
     out.timeoutMs = out.url.responseTimeoutMs >= 0 ? out.url.responseTimeoutMs : kDefaultTimeoutMs;
     if (parser.isSet(m_timeout)) {
         const DurationResult d = parseDuration(parser.value(m_timeout));
-        if (!d.ok) {
+        if (!d.ok()) {
             err << prefix << "--timeout: " << d.error << '\n';
             return false;
         }

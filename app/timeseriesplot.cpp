@@ -6,7 +6,7 @@
 #include <QtCore/QCoreApplication>
 
 #ifdef MBSCOPE_HAVE_UI
-#include "latencytimegraphs.h"
+#include "analysis/latencytimegraphs.h"
 
 #include <QtWidgets/QApplication>
 #include <qcustomplot.h>

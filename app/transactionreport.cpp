@@ -1,6 +1,6 @@
 #include "transactionreport.h"
 
-#include "commands.h"
+#include "cli.h"
 
 #include "protocol/dissectionformat.h"
 #include "protocol/dissector.h"

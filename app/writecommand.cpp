@@ -1,6 +1,6 @@
 #include "writecommand.h"
 
-#include "commands.h"
+#include "cli.h"
 #include "deviceexchange.h"
 #include "exchangecommand.h"
 #include "requestoptions.h"

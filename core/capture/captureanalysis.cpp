@@ -1,6 +1,6 @@
 #include "captureanalysis.h"
 
-#include "engine/responsematcher.h"
+#include "exchange/responsematcher.h"
 #include "protocol/functioncode.h"
 
 #include <QtCore/QJsonArray>

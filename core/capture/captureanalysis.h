@@ -2,7 +2,7 @@
 
 #include "capture/captureexchange.h"
 #include "capture/exchangesource.h"
-#include "engine/statistics.h"
+#include "exchange/statistics.h"
 
 #include <QtCore/QJsonObject>
 #include <QtCore/QString>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "engine/transaction.h"
+#include "exchange/transaction.h"
 #include "protocol/framing.h"
 
 namespace mbscope {

@@ -1,6 +1,6 @@
 #include "exchangepairer.h"
 
-#include "engine/responsematcher.h"
+#include "exchange/responsematcher.h"
 #include "protocol/dissector.h"
 #include "protocol/functioncode.h"
 

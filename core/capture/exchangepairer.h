@@ -2,7 +2,7 @@
 
 #include "capture/captureexchange.h"
 #include "capture/capturedframe.h"
-#include "engine/responseverdict.h"
+#include "exchange/responseverdict.h"
 #include "protocol/dissection.h"
 
 #include <QtCore/QHash>

@@ -6,7 +6,7 @@
 #include "capture/captureoptions.h"
 #include "capture/exchangepairer.h"
 #include "capture/modbusframeextractor.h"
-#include "engine/trafficjournal.h"
+#include "traffic/trafficjournal.h"
 
 #include <QtCore/QString>
 #include <QtCore/QStringList>

@@ -1,6 +1,6 @@
 #include "journalexchangereader.h"
 
-#include "engine/responseverdict.h"
+#include "exchange/responseverdict.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QFile>

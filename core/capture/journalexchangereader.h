@@ -2,7 +2,7 @@
 
 #include "capture/captureexchange.h"
 #include "capture/capturedframe.h"
-#include "engine/trafficjournal.h"
+#include "traffic/trafficjournal.h"
 
 #include <QtCore/QString>
 

@@ -1,6 +1,6 @@
 #include "enginecore.h"
 
-#include "trafficlog.h"
+#include "traffic/trafficlog.h"
 
 #include "protocol/streamframer.h"
 #include "transport/monotonicclock.h"
@@ -424,7 +424,7 @@ void EngineCore::record(Transaction transaction, quint64 tag)
         }
     }
     if (m_recordedReceivers.load(std::memory_order_relaxed) > 0)
-        emit recorded(transaction, tag);
+        Q_EMIT recorded(transaction, tag);
     m_batch.append(std::move(transaction));
     scheduleBatch();
 }
@@ -468,15 +468,15 @@ void EngineCore::flushBatch()
     m_lastBatchNs = monotonicNowNs();
     if (!m_batch.isEmpty()) {
         const qsizetype size = m_batch.size();
-        emit transactionsFinished(std::exchange(m_batch, {}));
+        Q_EMIT transactionsFinished(std::exchange(m_batch, {}));
         // The observers keep the list that was sent; the next one is likely as long, and growing
         // a list of records copies them at every step.
         m_batch.reserve(size);
     }
     if (!m_unmatched.isEmpty())
-        emit unmatchedFrames(std::exchange(m_unmatched, {}), m_url.toString());
+        Q_EMIT unmatchedFrames(std::exchange(m_unmatched, {}), m_url.toString());
     m_progress.counters = m_counters;
-    emit progress(m_progress);
+    Q_EMIT progress(m_progress);
 }
 
 } // namespace mbscope

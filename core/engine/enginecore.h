@@ -5,11 +5,11 @@
 #include "engineprogress.h"
 #include "linkframing.h"
 #include "recordlistener.h"
-#include "requestitem.h"
-#include "responsematcher.h"
-#include "responseverdict.h"
-#include "trafficentry.h"
-#include "transaction.h"
+#include "exchange/requestitem.h"
+#include "exchange/responsematcher.h"
+#include "exchange/responseverdict.h"
+#include "exchange/trafficentry.h"
+#include "exchange/transaction.h"
 
 #include "transport/link.h"
 #include "transport/linkreceiver.h"
@@ -78,7 +78,7 @@ public:
     void flushBatch();
     void scheduleBatch();
 
-signals:
+Q_SIGNALS:
     // In the engine thread, as soon as a record is made, after the record listeners (direct
     // connections only).
     void recorded(const mbscope::Transaction &transaction, quint64 tag);

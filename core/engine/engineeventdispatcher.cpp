@@ -71,14 +71,14 @@ bool EngineEventDispatcher::processEvents(QEventLoop::ProcessEventsFlags flags)
     m_interrupted.store(false, std::memory_order_relaxed);
     const bool observed = m_turnObservers.load(std::memory_order_relaxed) > 0;
     if (observed)
-        emit awake();
+        Q_EMIT awake();
     QCoreApplication::sendPostedEvents();
 
     const bool includeTimers = !flags.testFlag(QEventLoop::X11ExcludeTimers);
     const bool includeNotifiers = !flags.testFlag(QEventLoop::ExcludeSocketNotifiers);
     const bool mayWait = flags.testFlag(QEventLoop::WaitForMoreEvents) && !m_interrupted.load(std::memory_order_relaxed);
     if (mayWait && observed)
-        emit aboutToBlock();
+        Q_EMIT aboutToBlock();
     if (m_interrupted.load(std::memory_order_relaxed))
         return false;
 

@@ -59,7 +59,7 @@ void EngineCore::onLinkError(const LinkError &error)
     const bool wasOpening = m_opening;
     m_opening = false;
     m_deferPump = true;
-    emit linkMessage(error.message);
+    Q_EMIT linkMessage(error.message);
     m_linkLost = true;
     const qint64 held = flushPartial();
     m_linkLost = false;
@@ -95,7 +95,7 @@ void EngineCore::onClosed(const QString &reason)
         problem += QStringLiteral(" (after %1 bytes of an unfinished answer)").arg(held);
     if (!m_inFlight.isEmpty() || wasOpening) {
         ++m_counters.linkErrors;
-        emit linkMessage(problem);
+        Q_EMIT linkMessage(problem);
     }
     resetFramer();
     if (wasOpening && m_inFlight.isEmpty())

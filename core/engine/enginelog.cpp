@@ -1,6 +1,6 @@
 #include "enginecore.h"
 
-#include "trafficlog.h"
+#include "traffic/trafficlog.h"
 
 #include "transport/monotonicclock.h"
 

@@ -153,7 +153,7 @@ void Poller::finish()
     m_run.elapsedNs = m_started ? now - m_startNs : 0;
     m_run.counters = m_core->counters() - m_countersAtStart;
     updateProgress(now);
-    emit finished();
+    Q_EMIT finished();
 }
 
 } // namespace mbscope

@@ -32,7 +32,7 @@ public:
     [[nodiscard]] const PollRun &run() const { return m_run; }
     [[nodiscard]] bool isFinished() const { return m_finished; }
 
-signals:
+Q_SIGNALS:
     void finished();
 
 private:

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "engineprogress.h"
-#include "statisticsset.h"
+#include "exchange/statisticsset.h"
 
 #include <QtCore/QList>
 #include <QtCore/QMetaType>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "requestitem.h"
+#include "exchange/requestitem.h"
 
 #include <QtCore/QList>
 #include <QtCore/QMetaType>

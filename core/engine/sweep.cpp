@@ -43,7 +43,7 @@ void Sweep::startRun()
         m_finished = true;
         m_core->progressState().polling = false;
         m_core->flushBatch(); // every record reaches observers before the report
-        emit finished(m_report);
+        Q_EMIT finished(m_report);
         return;
     }
     PollSettings poll = m_settings.poll;

@@ -26,7 +26,7 @@ public:
     [[nodiscard]] const PollReport &report() const { return m_report; }
     [[nodiscard]] bool isFinished() const { return m_finished; }
 
-signals:
+Q_SIGNALS:
     void finished(const mbscope::PollReport &report);
 
 private:

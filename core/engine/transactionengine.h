@@ -4,9 +4,9 @@
 #include "engineprogress.h"
 #include "pollreport.h"
 #include "pollsettings.h"
-#include "requestitem.h"
-#include "trafficentry.h"
-#include "transaction.h"
+#include "exchange/requestitem.h"
+#include "exchange/trafficentry.h"
+#include "exchange/transaction.h"
 
 #include "transport/linkurl.h"
 
@@ -71,7 +71,7 @@ public:
     // Closes the link now; requests in flight end as link errors.
     void closeLink();
 
-signals:
+Q_SIGNALS:
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
     // Frames read that answer no request (unsolicited, duplicates, garbage the framer skipped),
     // batched with the transactions, just after them (a duplicate follows the answer it copies);

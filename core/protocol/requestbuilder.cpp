@@ -1,5 +1,5 @@
 // Request builders for the data access functions (V1.1b3, 6.1-6.6, 6.11, 6.12, 6.14-6.18).
-// The diagnostics, encapsulated interface and raw builders are in requestbuilderother.cpp.
+// The diagnostics, encapsulated interface and raw builders are in requestbuilderdiagnostics.cpp.
 #include "requestbuilder.h"
 
 #include "pdubuilder.h"

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "engine/statistics.h"
+#include "exchange/statistics.h"
 #include "replay/replayoutcome.h"
 
 #include <QtCore/QJsonObject>

@@ -1,6 +1,6 @@
 #include "replay/replayrunner.h"
 
-#include "engine/requestitem.h"
+#include "exchange/requestitem.h"
 #include "engine/transactionengine.h"
 #include "protocol/adubuilder.h"
 #include "replay/replayscript.h"

@@ -2,7 +2,7 @@
 
 #include "capture/captureoptions.h"
 #include "capture/exchangesource.h"
-#include "engine/statistics.h"
+#include "exchange/statistics.h"
 #include "replay/replayexchange.h"
 
 #include <QtCore/QList>

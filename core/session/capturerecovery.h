@@ -1,7 +1,7 @@
 #pragma once
 
-#include "engine/trafficentry.h"
-#include "engine/trafficjournal.h"
+#include "exchange/trafficentry.h"
+#include "traffic/trafficjournal.h"
 
 #include <QtCore/QList>
 #include <QtCore/QString>

@@ -1,6 +1,6 @@
 #include "session/planrunner.h"
 
-#include "engine/requestitem.h"
+#include "exchange/requestitem.h"
 #include "engine/transactionengine.h"
 #include "protocol/hextext.h"
 #include "session/expectationcheck.h"

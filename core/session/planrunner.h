@@ -1,6 +1,6 @@
 #pragma once
 
-#include "engine/transaction.h"
+#include "exchange/transaction.h"
 #include "session/planresult.h"
 #include "session/sessiondocument.h"
 #include "transport/linkurl.h"

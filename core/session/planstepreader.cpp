@@ -2,10 +2,10 @@
 
 #include "protocol/hextext.h"
 #include "session/sessionrequestreader.h"
-#include "sim/jsonreader.h"
+#include "json/jsonreader.h"
+#include "time/duration.h"
 
 #include <QtCore/QJsonObject>
-#include <QtCore/QRegularExpression>
 
 namespace mbscope {
 
@@ -198,20 +198,17 @@ bool PlanStepReader::readWait(const QJsonValue &value, const QString &path, qint
         *ms = v.value_or(0);
         return v.has_value();
     }
-    static const QRegularExpression pattern(QStringLiteral("^\\s*([0-9]+(?:\\.[0-9]+)?)\\s*(ms|s|min)\\s*$"));
-    const QRegularExpressionMatch m = value.isString() ? pattern.match(value.toString()) : QRegularExpressionMatch();
-    if (!m.hasMatch()) {
+    const DurationResult d = value.isString() ? parseDuration(value.toString()) : DurationResult{};
+    if (d.problem == DurationResult::Problem::TooLong || (d.ok() && d.ns / Duration::Millisecond > kMaxWaitMs)) {
+        m_reader.error(path, QStringLiteral("%1 is beyond a day").arg(value.toString()));
+        return false;
+    }
+    if (!d.ok()) {
         m_reader.error(path, QStringLiteral("expected a duration such as 500 (ms), \"500 ms\", \"2 s\" or \"1 min\", found %1")
                                  .arg(JsonReader::describe(value)));
         return false;
     }
-    const double scale = m.captured(2) == QLatin1String("ms") ? 1 : m.captured(2) == QLatin1String("s") ? 1000 : 60000;
-    const double total = m.captured(1).toDouble() * scale;
-    if (total > double(kMaxWaitMs)) {
-        m_reader.error(path, QStringLiteral("%1 is beyond a day").arg(value.toString()));
-        return false;
-    }
-    *ms = qint64(total);
+    *ms = d.ns / Duration::Millisecond;
     return true;
 }
 

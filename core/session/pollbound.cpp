@@ -1,6 +1,8 @@
 #include "session/pollbound.h"
 
-#include "engine/statistics.h"
+#include "time/duration.h"
+
+#include "exchange/statistics.h"
 
 #include <QtCore/QStringList>
 
@@ -130,20 +132,15 @@ PollBound::Parsed PollBound::parse(QStringView input)
         b.value = number;
         break;
     case Kind::Latency: {
-        double scale = 0;
-        if (unit == QLatin1String("ns"))
-            scale = 1;
-        else if (unit == QLatin1String("us") || unit == QStringLiteral("\u00b5s"))
-            scale = 1e3;
-        else if (unit == QLatin1String("ms"))
-            scale = 1e6;
-        else if (unit == QLatin1String("s"))
-            scale = 1e9;
-        if (unit.isEmpty())
-            return fail(QStringLiteral("%1 is a latency: give a unit after %2 (ns, us, ms or s)").arg(b.figure, numberText));
-        if (scale == 0)
-            return fail(QStringLiteral("'%1' is not a unit of time: expected ns, us, ms or s").arg(unit));
-        b.value = number * scale;
+        // The one duration grammar (time/duration.h), with the unit required.
+        const DurationResult d = parseDuration(QStringView(text).mid(numberStart), Duration::UnitRequired);
+        if (d.problem == DurationResult::Problem::UnitMissing)
+            return fail(QStringLiteral("%1 is a latency: give a unit after %2 (ns, us, ms, s, min or h)").arg(b.figure, numberText));
+        if (d.problem == DurationResult::Problem::TooLong)
+            return fail(QStringLiteral("%1 %2 is beyond a year").arg(numberText, unit));
+        if (!d.ok())
+            return fail(QStringLiteral("'%1' is not a unit of time: expected ns, us, ms, s, min or h").arg(unit));
+        b.value = double(d.ns);
         break;
     }
     }

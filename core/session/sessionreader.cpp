@@ -2,8 +2,8 @@
 
 #include "session/planstepreader.h"
 #include "session/sessionrequestreader.h"
-#include "sim/jsonreader.h"
-#include "sim/profileloader.h"
+#include "json/jsonreader.h"
+#include "profile/profileloader.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QDir>

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "session/sessiondocument.h"
-#include "sim/profileproblem.h"
+#include "json/profileproblem.h"
 
 #include <QtCore/QByteArray>
 #include <QtCore/QList>

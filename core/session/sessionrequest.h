@@ -1,6 +1,6 @@
 #pragma once
 
-#include "engine/requestitem.h"
+#include "exchange/requestitem.h"
 
 #include <QtCore/QList>
 #include <QtCore/QString>

@@ -1,6 +1,6 @@
 #include "session/sessionrequestreader.h"
 
-#include "sim/jsonreader.h"
+#include "json/jsonreader.h"
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonObject>

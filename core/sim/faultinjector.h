@@ -1,9 +1,9 @@
 #pragma once
 
 #include "protocol/framing.h"
-#include "sim/delayspec.h"
+#include "profile/delayspec.h"
 #include "sim/faultplan.h"
-#include "sim/faultrule.h"
+#include "profile/faultrule.h"
 #include "sim/simrandom.h"
 
 #include <QtCore/QByteArray>

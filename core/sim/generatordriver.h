@@ -1,7 +1,7 @@
 #pragma once
 
-#include "sim/deviceprofile.h"
-#include "sim/scaledvalue.h"
+#include "profile/deviceprofile.h"
+#include "profile/scaledvalue.h"
 #include "sim/valuegenerator.h"
 
 #include <QtCore/QList>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sim/deviceprofile.h"
+#include "profile/deviceprofile.h"
 
 #include <QtCore/QList>
 #include <QtCore/QString>

@@ -1,6 +1,6 @@
 #include "sim/simulator.h"
 
-#include "engine/trafficlog.h"
+#include "traffic/trafficlog.h"
 #include "protocol/adubuilder.h"
 #include "sim/simdatagramendpoint.h"
 #include "sim/simprocessor.h"

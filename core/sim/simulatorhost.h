@@ -1,7 +1,7 @@
 #pragma once
 
-#include "sim/deviceprofile.h"
-#include "sim/faultrule.h"
+#include "profile/deviceprofile.h"
+#include "profile/faultrule.h"
 #include "sim/simtrafficrecord.h"
 #include "sim/simvalueupdate.h"
 #include "transport/linkurl.h"

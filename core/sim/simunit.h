@@ -2,7 +2,7 @@
 
 #include "sim/simcounters.h"
 #include "sim/simrange.h"
-#include "sim/simtable.h"
+#include "profile/simtable.h"
 
 #include <QtCore/QByteArray>
 #include <QtCore/QList>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sim/simtable.h"
+#include "profile/simtable.h"
 
 #include <QtCore/QList>
 #include <QtCore/QMetaType>

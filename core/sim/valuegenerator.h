@@ -1,6 +1,6 @@
 #pragma once
 
-#include "sim/generatorspec.h"
+#include "profile/generatorspec.h"
 #include "sim/simrandom.h"
 
 namespace mbscope {

@@ -35,7 +35,7 @@ void Link::reportError(LinkError::Kind kind, const QString &what)
 {
     m_lastError.kind = kind;
     m_lastError.message = m_url.toString() + QStringLiteral(": ") + what;
-    emit errorOccurred(m_lastError);
+    Q_EMIT errorOccurred(m_lastError);
 }
 
 void Link::setClosed(const QString &reason)
@@ -43,14 +43,14 @@ void Link::setClosed(const QString &reason)
     const State was = m_state;
     m_state = State::Closed;
     if (was != State::Closed)
-        emit closed(reason);
+        Q_EMIT closed(reason);
 }
 
 void Link::reportLoss(LinkError::Kind kind, const QString &what)
 {
     m_state = State::Closed;
     reportError(kind, what);
-    emit closed(m_lastError.message);
+    Q_EMIT closed(m_lastError.message);
 }
 
 QString Link::osAnswer(const QString &errorString)

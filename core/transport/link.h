@@ -86,7 +86,7 @@ public:
     // rtu-udp; SerialLink for rtu and ascii; TlsLink for tls), closed. The caller owns it.
     [[nodiscard]] static Link *create(const LinkUrl &url, QObject *parent = nullptr);
 
-signals:
+Q_SIGNALS:
     void opened();
     void closed(const QString &reason);
     void bytesWritten(qint64 lastByteNs);
@@ -107,14 +107,14 @@ protected:
         if (m_receiver)
             m_receiver->linkBytesReceived(bytes, firstByteNs, lastByteNs);
         else
-            emit bytesReceived(bytes, firstByteNs, lastByteNs);
+            Q_EMIT bytesReceived(bytes, firstByteNs, lastByteNs);
     }
     void deliverWritten(qint64 lastByteNs)
     {
         if (m_receiver)
             m_receiver->linkBytesWritten(lastByteNs);
         else
-            emit bytesWritten(lastByteNs);
+            Q_EMIT bytesWritten(lastByteNs);
     }
     // Records and emits an error; the message is prefixed with the URL ("tcp://h:502: ...").
     void reportError(LinkError::Kind kind, const QString &what);

@@ -1,5 +1,7 @@
 #include "linkurl.h"
 
+#include "time/duration.h"
+
 #include <QtCore/QList>
 #include <QtCore/QSet>
 #include <QtCore/QUrl>
@@ -80,40 +82,12 @@ bool isHostNameCharacter(QChar c)
         || c == u'_';
 }
 
-// "3000ms", "3s", "250us", "10" (in defaultUnitNs). Returns nanoseconds, or nullopt.
-std::optional<qint64> parseDuration(QStringView text, qint64 defaultUnitNs)
+// A URL's durations in the one grammar (time/duration.h); the key names which one is wrong.
+QString durationError(const QString &key, const QString &value, const DurationResult &d, const QString &range)
 {
-    struct Unit {
-        const char16_t *suffix;
-        qint64 ns;
-    };
-    static constexpr Unit kUnits[] = {{u"ns", 1}, {u"us", 1000}, {u"\u00b5s", 1000}, {u"ms", 1000000}, {u"s", 1000000000}};
-    qint64 unit = defaultUnitNs;
-    QStringView digits = text;
-    for (const Unit &u : kUnits) {
-        if (text.endsWith(QStringView(u.suffix), Qt::CaseInsensitive)) {
-            unit = u.ns;
-            digits = text.chopped(QStringView(u.suffix).size());
-            break;
-        }
-    }
-    if (digits.isEmpty() || digits.size() > 18)
-        return std::nullopt;
-    for (QChar c : digits) {
-        if (c < u'0' || c > u'9')
-            return std::nullopt;
-    }
-    // Beyond 10^18 ns (31 years) every caller says "out of range"; clamping avoids overflow.
-    constexpr qint64 kHuge = 1'000'000'000'000'000'000LL;
-    const qint64 value = digits.toLongLong();
-    return value > kHuge / unit ? kHuge : value * unit;
-}
-
-QString durationError(const QString &key, const QString &value)
-{
-    return QStringLiteral("%1 '%2' is not a duration: expected a whole number with an optional unit ns, us, ms or s "
-                          "(e.g. %1=3000ms)")
-        .arg(key, value);
+    if (d.problem == DurationResult::Problem::TooLong)
+        return QStringLiteral("%1 '%2' is out of range: %3").arg(key, value, range);
+    return QStringLiteral("%1 %2").arg(key, d.error);
 }
 
 std::optional<int> parseHexByte(QStringView text)
@@ -231,26 +205,28 @@ QString applyOption(const QString &key, const QString &value, LinkUrl &url)
         *out = int(n);
         return {};
     };
-    auto milliseconds = [&](qint64 defaultUnitNs, int low, int *out) -> QString {
-        const auto ns = parseDuration(value, defaultUnitNs);
-        if (!ns)
-            return durationError(key, value);
-        if (*ns % 1000000 != 0)
+    auto milliseconds = [&](qint64 bareUnitNs, int low, int *out) -> QString {
+        const QString range = QStringLiteral("expected %1 ms to 24 h").arg(low);
+        const DurationResult d = parseDuration(value, bareUnitNs);
+        if (!d.ok())
+            return durationError(key, value, d, range);
+        if (d.ns % Duration::Millisecond != 0)
             return QStringLiteral("%1 '%2' is not a whole number of milliseconds").arg(key, value);
-        if (*ns / 1000000 < low || *ns / 1000000 > kMaxTimeoutMs)
-            return QStringLiteral("%1 '%2' is out of range: expected %3 ms to 24 h").arg(key, value).arg(low);
-        *out = int(*ns / 1000000);
+        if (d.ns / Duration::Millisecond < low || d.ns / Duration::Millisecond > kMaxTimeoutMs)
+            return QStringLiteral("%1 '%2' is out of range: %3").arg(key, value, range);
+        *out = int(d.ns / Duration::Millisecond);
         return {};
     };
-    auto turnaround = [&](qint64 defaultUnitNs) -> QString {
-        const auto ns = parseDuration(value, defaultUnitNs);
-        if (!ns)
-            return durationError(key, value);
-        if (*ns % 1000 != 0)
+    auto turnaround = [&](qint64 bareUnitNs) -> QString {
+        const QString range = QStringLiteral("expected at most 10 s");
+        const DurationResult d = parseDuration(value, bareUnitNs);
+        if (!d.ok())
+            return durationError(key, value, d, range);
+        if (d.ns % Duration::Microsecond != 0)
             return QStringLiteral("%1 '%2' is not a whole number of microseconds").arg(key, value);
-        if (*ns / 1000 > kMaxTurnaroundUs)
-            return QStringLiteral("%1 '%2' is out of range: expected at most 10 s").arg(key, value);
-        url.serial.turnaroundUs = int(*ns / 1000);
+        if (d.ns / Duration::Microsecond > kMaxTurnaroundUs)
+            return QStringLiteral("%1 '%2' is out of range: %3").arg(key, value, range);
+        url.serial.turnaroundUs = int(d.ns / Duration::Microsecond);
         return {};
     };
 
@@ -277,13 +253,13 @@ QString applyOption(const QString &key, const QString &value, LinkUrl &url)
         return {};
     }
     if (key == u"turnaround")
-        return turnaround(1000000);
+        return turnaround(Duration::Millisecond);
     if (key == u"turnaround_us")
-        return turnaround(1000);
+        return turnaround(Duration::Microsecond);
     if (key == u"connect_timeout")
-        return milliseconds(1000000, 1, &url.connectTimeoutMs);
+        return milliseconds(Duration::Millisecond, 1, &url.connectTimeoutMs);
     if (key == u"timeout")
-        return milliseconds(1000000, 1, &url.responseTimeoutMs);
+        return milliseconds(Duration::Millisecond, 1, &url.responseTimeoutMs);
     if (key == u"cert" || key == u"key" || key == u"ca") {
         if (value.isEmpty())
             return QStringLiteral("%1 is empty: expected the path of a PEM file").arg(key);

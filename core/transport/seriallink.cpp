@@ -182,7 +182,7 @@ void SerialLink::startOpen()
     m_lineFreeNs = 0;
     m_readErrors = 0;
     setState(State::Open);
-    emit opened();
+    Q_EMIT opened();
 }
 
 void SerialLink::close()

@@ -42,15 +42,12 @@ private:
 };
 
 TcpLink::TcpLink(const LinkUrl &url, QObject *parent)
-    : Link(url, parent)
+    : NetworkLink(url, parent)
     , m_readNotifier(new DescriptorNotifier(QSocketNotifier::Read, this, &TcpLink::onReadable))
     , m_writeNotifier(new DescriptorNotifier(QSocketNotifier::Write, this, &TcpLink::onWritable))
-    , m_connectTimer(this) // a child, so that moveToThread() takes it along
 {
     m_readNotifier->setEnabled(false);
     m_writeNotifier->setEnabled(false);
-    m_connectTimer.setSingleShot(true);
-    connect(&m_connectTimer, &QTimer::timeout, this, &TcpLink::onConnectTimeout);
 }
 
 TcpLink::~TcpLink()
@@ -58,18 +55,9 @@ TcpLink::~TcpLink()
     teardown();
 }
 
-void TcpLink::open()
-{
-    if (state() != State::Closed)
-        return;
-    setState(State::Opening);
-    // Opening goes on after open() returns, so that every outcome is signalled the same way.
-    QMetaObject::invokeMethod(this, &TcpLink::startOpen, Qt::QueuedConnection);
-}
-
 void TcpLink::startOpen()
 {
-    if (state() != State::Opening || m_socket)
+    if (m_socket)
         return;
     if (const Failure failure = prepare(); failure.kind != LinkError::Kind::None) {
         setState(State::Closed);
@@ -90,7 +78,7 @@ void TcpLink::startOpen()
         if (!m_inWrite)
             reportWritten();
     });
-    m_connectTimer.start(url().connectTimeoutMs);
+    startConnectTimer();
     startConnecting();
 }
 
@@ -146,22 +134,14 @@ qintptr TcpLink::socketDescriptor() const
 
 void TcpLink::establish()
 {
-    m_connectTimer.stop();
+    stopConnectTimer();
     setState(State::Open);
-    emit opened();
-}
-
-void TcpLink::close()
-{
-    if (state() == State::Closed)
-        return;
-    teardown();
-    setClosed(QStringLiteral("closed on request"));
+    Q_EMIT opened();
 }
 
 void TcpLink::teardown()
 {
-    m_connectTimer.stop();
+    stopConnectTimer();
     m_marks.clear();
     m_where.clear();
     if (m_fd >= 0) {
@@ -457,7 +437,7 @@ void TcpLink::onDisconnected()
 
 void TcpLink::onConnectTimeout()
 {
-    if (state() != State::Opening || !m_socket)
+    if (!m_socket)
         return;
     const int ms = url().connectTimeoutMs;
     QString what;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "link.h"
+#include "networklink.h"
 
 #include <QtCore/QList>
 #include <QtCore/QTimer>
@@ -28,15 +28,13 @@ namespace mbscope {
 // Received bytes carry the clock read just before the recv() that took them.
 // TLS keeps its QSslSocket throughout (its bytes must go through the TLS layer).
 // A new socket is made at each open(), so that nothing of a lost connection leaks into the next.
-class TcpLink : public Link
+class TcpLink : public NetworkLink
 {
     Q_OBJECT
 public:
     explicit TcpLink(const LinkUrl &url, QObject *parent = nullptr);
     ~TcpLink() override;
 
-    void open() override;
-    void close() override;
     bool write(const QByteArray &bytes) override;
 
     // The descriptor the link reads and writes while open (plain TCP), or its socket's; -1 when
@@ -70,8 +68,8 @@ protected:
 private:
     class DescriptorNotifier;
 
-    void startOpen();
-    void teardown();
+    void startOpen() override;
+    void teardown() override;
     void fail(const Failure &failure);
     // Plain TCP once connected: a duplicate of the socket's descriptor replaces the QTcpSocket.
     [[nodiscard]] bool takeDescriptor();
@@ -85,7 +83,7 @@ private:
     void onReadyRead();
     void onSocketError(QAbstractSocket::SocketError error);
     void onDisconnected();
-    void onConnectTimeout();
+    void onConnectTimeout() override;
 
     QTcpSocket *m_socket = nullptr; // while opening, and throughout for TLS
     int m_fd = -1;                  // plain TCP once open
@@ -93,7 +91,6 @@ private:
     DescriptorNotifier *m_writeNotifier;
     QByteArray m_unsent;            // written bytes the kernel has not taken yet (descriptor)
     QString m_where;                // where(), kept when the QTcpSocket goes
-    QTimer m_connectTimer;
     QList<qint64> m_marks;  // m_submitted at the end of each write not yet reported
     qint64 m_submitted = 0; // bytes given to the socket since open()
     bool m_inWrite = false;

@@ -8,11 +8,8 @@
 namespace mbscope {
 
 UdpLink::UdpLink(const LinkUrl &url, QObject *parent)
-    : Link(url, parent)
-    , m_connectTimer(this) // a child, so that moveToThread() takes it along
+    : NetworkLink(url, parent)
 {
-    m_connectTimer.setSingleShot(true);
-    connect(&m_connectTimer, &QTimer::timeout, this, &UdpLink::onConnectTimeout);
 }
 
 UdpLink::~UdpLink()
@@ -20,41 +17,25 @@ UdpLink::~UdpLink()
     teardown();
 }
 
-void UdpLink::open()
-{
-    if (state() != State::Closed)
-        return;
-    setState(State::Opening);
-    QMetaObject::invokeMethod(this, &UdpLink::startOpen, Qt::QueuedConnection);
-}
-
 void UdpLink::startOpen()
 {
-    if (state() != State::Opening || m_socket)
+    if (m_socket)
         return;
     m_socket = new QUdpSocket(this);
     connect(m_socket, &QAbstractSocket::connected, this, [this] {
-        m_connectTimer.stop();
+        stopConnectTimer();
         setState(State::Open);
-        emit opened();
+        Q_EMIT opened();
     });
     connect(m_socket, &QIODevice::readyRead, this, &UdpLink::onReadyRead);
     connect(m_socket, &QAbstractSocket::errorOccurred, this, &UdpLink::onSocketError);
-    m_connectTimer.start(url().connectTimeoutMs);
+    startConnectTimer();
     m_socket->connectToHost(url().host, url().port);
-}
-
-void UdpLink::close()
-{
-    if (state() == State::Closed)
-        return;
-    teardown();
-    setClosed(QStringLiteral("closed on request"));
 }
 
 void UdpLink::teardown()
 {
-    m_connectTimer.stop();
+    stopConnectTimer();
     if (!m_socket)
         return;
     QUdpSocket *socket = m_socket;
@@ -146,7 +127,7 @@ void UdpLink::onSocketError(QAbstractSocket::SocketError error)
 
 void UdpLink::onConnectTimeout()
 {
-    if (state() != State::Opening || !m_socket)
+    if (!m_socket)
         return;
     const QString what = QStringLiteral("looking up host '%1' took longer than %2 ms (connect timeout)")
                              .arg(url().host)

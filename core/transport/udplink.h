@@ -1,8 +1,7 @@
 #pragma once
 
-#include "link.h"
+#include "networklink.h"
 
-#include <QtCore/QTimer>
 #include <QtNetwork/QAbstractSocket>
 
 QT_BEGIN_NAMESPACE
@@ -19,7 +18,7 @@ namespace mbscope {
 // comes as a Refused error and the link stays open.
 // bytesWritten(t) is emitted inside write(): the kernel has taken the whole datagram.
 // Zero-length datagrams are not reported (no frame fits in them).
-class UdpLink final : public Link
+class UdpLink final : public NetworkLink
 {
     Q_OBJECT
 public:
@@ -28,20 +27,17 @@ public:
 
     [[nodiscard]] bool isDatagram() const override { return true; }
 
-    void open() override;
-    void close() override;
     bool write(const QByteArray &bytes) override;
 
 private:
-    void startOpen();
-    void teardown();
+    void startOpen() override;
+    void teardown() override;
     void onReadyRead();
     void onSocketError(QAbstractSocket::SocketError error);
-    void onConnectTimeout();
+    void onConnectTimeout() override;
     [[nodiscard]] QString where() const;
 
     QUdpSocket *m_socket = nullptr;
-    QTimer m_connectTimer;
 };
 
 } // namespace mbscope

@@ -6,7 +6,7 @@
 
 #include "capture/capturefilewriter.h"
 #include "capture/exchangepcapexporter.h"
-#include "engine/trafficjournal.h"
+#include "traffic/trafficjournal.h"
 #include "protocol/adubuilder.h"
 
 #include <QtCore/QFile>

@@ -5,8 +5,8 @@
 
 #include "clitest.h"
 
-#include "engine/requestitem.h"
-#include "engine/trafficlog.h"
+#include "exchange/requestitem.h"
+#include "traffic/trafficlog.h"
 #include "engine/transactionengine.h"
 #include "protocol/adubuilder.h"
 #include "transport/linkurl.h"

@@ -14,13 +14,13 @@
 // time. Figures are printed, never asserted.
 //
 // Usage: bench_histogram [--samples N] [--repeat R]
-#include "histogramchart.h"
-#include "latencybinning.h"
-#include "latencyhistogrampanel.h"
-#include "latencyruns.h"
+#include "common/histogramchart.h"
+#include "analysis/latencybinning.h"
+#include "analysis/latencyhistogrampanel.h"
+#include "analysis/latencyruns.h"
 
-#include "engine/histogram.h"
-#include "engine/statistics.h"
+#include "exchange/histogram.h"
+#include "exchange/statistics.h"
 
 #include <QtCore/QElapsedTimer>
 #include <QtWidgets/QApplication>

@@ -7,7 +7,7 @@
 //   CRC-32 and one write(2) per batch, no disk) and journaled to a file.
 // - Recover: reading a journal back, frames per second.
 // Frame: the RosRao request 01 03 00 79 00 16 15 DD (tests/data/published-frames.json).
-#include "engine/trafficlog.h"
+#include "traffic/trafficlog.h"
 
 #include <QtCore/QTemporaryDir>
 

@@ -3,8 +3,8 @@
 #include "peer_datamap.h"
 
 #include "engine/engineoptions.h"
-#include "engine/requestitem.h"
-#include "engine/trafficlog.h"
+#include "exchange/requestitem.h"
+#include "traffic/trafficlog.h"
 #include "engine/transactionengine.h"
 #include "protocol/adubuilder.h"
 #include "transport/linkurl.h"

@@ -22,7 +22,7 @@
 #include "protocol/rtuframer.h"
 #include "sim/faultinjector.h"
 #include "sim/profileapplier.h"
-#include "sim/profileloader.h"
+#include "profile/profileloader.h"
 #include "sim/simendpoint.h"
 #include "sim/simexchange.h"
 #include "sim/simulator.h"

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "engine/engineprogress.h"
-#include "engine/requestitem.h"
-#include "engine/transaction.h"
+#include "exchange/requestitem.h"
+#include "exchange/transaction.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QByteArray>

@@ -4,7 +4,7 @@
 
 #include "enginetesting.h"
 
-#include "engine/trafficlog.h"
+#include "traffic/trafficlog.h"
 
 #include <QtTest/QtTest>
 

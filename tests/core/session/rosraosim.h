@@ -4,10 +4,10 @@
 // chooses), with its value generators running: the device the session tests run plans against.
 // The profile is read from the source tree (core tests do not link the compiled-in resources).
 
-#include "sim/deviceprofile.h"
+#include "profile/deviceprofile.h"
 #include "sim/generatordriver.h"
 #include "sim/profileapplier.h"
-#include "sim/profileloader.h"
+#include "profile/profileloader.h"
 #include "sim/simendpoint.h"
 #include "sim/simulator.h"
 #include "sim/simunit.h"

@@ -3,7 +3,7 @@
 
 #include "session/pollbound.h"
 
-#include "engine/statistics.h"
+#include "exchange/statistics.h"
 
 #include <QtTest/QtTest>
 
@@ -62,8 +62,8 @@ void TestPollBound::refuses_data()
     QTest::addColumn<QString>("text");
     QTest::addColumn<QString>("error");
 
-    QTest::newRow("no unit") << "p95 < 20" << "'p95 < 20': p95 is a latency: give a unit after 20 (ns, us, ms or s)";
-    QTest::newRow("bad unit") << "p95 < 20 parsecs" << "'p95 < 20 parsecs': 'parsecs' is not a unit of time: expected ns, us, ms or s";
+    QTest::newRow("no unit") << "p95 < 20" << "'p95 < 20': p95 is a latency: give a unit after 20 (ns, us, ms, s, min or h)";
+    QTest::newRow("bad unit") << "p95 < 20 parsecs" << "'p95 < 20 parsecs': 'parsecs' is not a unit of time: expected ns, us, ms, s, min or h";
     QTest::newRow("unknown figure") << "p9x < 2 ms" << "'p9x < 2 ms': 'p9x' is not a percentile: expected p0 to p100, such as p95 or p99.9";
     QTest::newRow("typo") << "timeout == 0"
                           << "'timeout == 0': unknown figure 'timeout': expected one of count, ok, failed, exceptions, timeouts, "

@@ -9,8 +9,8 @@
 #include "session/sessionreader.h"
 #include "session/sessionwriter.h"
 
-#include "engine/requestitem.h"
-#include "engine/trafficlog.h"
+#include "exchange/requestitem.h"
+#include "traffic/trafficlog.h"
 #include "engine/transactionengine.h"
 #include "protocol/adubuilder.h"
 #include "protocol/dissector.h"

@@ -2,7 +2,7 @@
 // udp and rtu-udp on loopback ports the OS chooses; many clients at once, gateway units,
 // unknown units (0B or silence), broadcast, malformed requests, limits, idle timeout, faults.
 
-#include "engine/trafficlog.h"
+#include "traffic/trafficlog.h"
 #include "protocol/adubuilder.h"
 #include "protocol/requestbuilder.h"
 #include "protocol/responsebuilder.h"

@@ -7,7 +7,7 @@
 #include "protocol/responsebuilder.h"
 #include "sim/faultinjector.h"
 #include "sim/profileapplier.h"
-#include "sim/profileloader.h"
+#include "profile/profileloader.h"
 #include "sim/simendpoint.h"
 #include "sim/simfaulthook.h"
 #include "sim/simulator.h"

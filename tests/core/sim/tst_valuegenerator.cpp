@@ -1,6 +1,6 @@
 #include "sim/generatordriver.h"
 #include "sim/profileapplier.h"
-#include "sim/profileloader.h"
+#include "profile/profileloader.h"
 #include "sim/simrandom.h"
 #include "sim/simunit.h"
 #include "sim/valuegenerator.h"

@@ -1,0 +1,33 @@
+#include "deviceprofile.h"
+
+namespace mbscope {
+
+QList<TableEntry> UnitProfile::entriesOf(SimTable table) const
+{
+    QList<TableEntry> out;
+    for (const TableEntry &entry : entries) {
+        if (entry.table == table)
+            out.append(entry);
+    }
+    return out;
+}
+
+const TableEntry *UnitProfile::entryAt(SimTable table, int address) const
+{
+    for (const TableEntry &entry : entries) {
+        if (entry.table == table && address >= entry.address && address < entry.end())
+            return &entry;
+    }
+    return nullptr;
+}
+
+const UnitProfile *DeviceProfile::unit(quint8 id) const
+{
+    for (const UnitProfile &u : units) {
+        if (u.id == id)
+            return &u;
+    }
+    return nullptr;
+}
+
+} // namespace mbscope

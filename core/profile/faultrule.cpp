@@ -1,0 +1,57 @@
+#include "faultrule.h"
+
+#include <QtCore/QStringList>
+
+namespace mbscope {
+
+namespace {
+
+struct KindName {
+    FaultRule::Kind kind;
+    const char *name;
+};
+
+constexpr KindName kKindNames[] = {
+    {FaultRule::Kind::Delay, "delay"},
+    {FaultRule::Kind::Drop, "drop"},
+    {FaultRule::Kind::WrongChecksum, "wrongChecksum"},
+    {FaultRule::Kind::WrongTransactionId, "wrongTransactionId"},
+    {FaultRule::Kind::WrongUnit, "wrongUnit"},
+    {FaultRule::Kind::Exception, "exception"},
+    {FaultRule::Kind::FewerRegisters, "fewerRegisters"},
+    {FaultRule::Kind::Chunks, "chunks"},
+    {FaultRule::Kind::Trickle, "trickle"},
+    {FaultRule::Kind::Junk, "junk"},
+    {FaultRule::Kind::Duplicate, "duplicate"},
+    {FaultRule::Kind::Close, "close"},
+};
+
+} // namespace
+
+QString FaultRule::kindName(Kind kind)
+{
+    for (const KindName &k : kKindNames) {
+        if (k.kind == kind)
+            return QString::fromLatin1(k.name);
+    }
+    return QString();
+}
+
+std::optional<FaultRule::Kind> FaultRule::kindFromName(QStringView name)
+{
+    for (const KindName &k : kKindNames) {
+        if (name == QLatin1String(k.name))
+            return k.kind;
+    }
+    return std::nullopt;
+}
+
+QString FaultRule::kindNames()
+{
+    QStringList names;
+    for (const KindName &k : kKindNames)
+        names.append(QString::fromLatin1(k.name));
+    return names.join(QStringLiteral(", "));
+}
+
+} // namespace mbscope

@@ -1,0 +1,280 @@
+#include "faultrulereader.h"
+
+#include "protocol/hextext.h"
+#include "json/jsonreader.h"
+
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonObject>
+
+namespace mbscope {
+
+namespace {
+
+constexpr double kMaxDelayMs = 3600.0 * 1000.0; // an hour: anything longer is a typing error
+constexpr int kMaxJunk = 4096;
+
+std::optional<DelaySpec::Kind> delayKind(QStringView name)
+{
+    for (auto kind : {DelaySpec::Kind::Fixed, DelaySpec::Kind::Uniform, DelaySpec::Kind::Normal,
+                      DelaySpec::Kind::Exponential}) {
+        if (name == DelaySpec::kindName(kind))
+            return kind;
+    }
+    return std::nullopt;
+}
+
+// A list of small integers, or one integer: "units": [1, 3] or "units": 1.
+QList<quint8> readByteList(JsonReader &reader, const QJsonObject &o, const QString &path, const char *key,
+                           qint64 min)
+{
+    QList<quint8> out;
+    const QJsonValue v = o.value(QLatin1String(key));
+    const QString at = JsonReader::member(path, key);
+    if (v.isUndefined())
+        return out;
+    if (!v.isArray()) {
+        if (const auto n = reader.integerValue(v, at, min, 255))
+            out.append(quint8(*n));
+        return out;
+    }
+    const QJsonArray a = v.toArray();
+    if (a.isEmpty())
+        reader.error(at, QStringLiteral("the list is empty: leave '%1' out to match every value").arg(QLatin1String(key)));
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        if (const auto n = reader.integerValue(a.at(i), JsonReader::element(at, i), min, 255))
+            out.append(quint8(*n));
+    }
+    return out;
+}
+
+// "before": 7 (random bytes) or "before": "DE AD BE EF" (these bytes).
+void readJunk(JsonReader &reader, const QJsonObject &o, const QString &path, const char *key, QByteArray *bytes,
+              int *count)
+{
+    const QJsonValue v = o.value(QLatin1String(key));
+    const QString at = JsonReader::member(path, key);
+    if (v.isUndefined())
+        return;
+    if (v.isString()) {
+        const HexTextResult hex = HexText::parse(v.toString());
+        if (!hex.ok)
+            reader.error(at, QStringLiteral("expected hex bytes such as \"DE AD BE EF\": %1").arg(hex.error.message));
+        else
+            *bytes = hex.bytes;
+        return;
+    }
+    if (const auto n = reader.integerValue(v, at, 0, kMaxJunk))
+        *count = int(*n);
+}
+
+} // namespace
+
+std::optional<DelaySpec> FaultRuleReader::readDelay(JsonReader &reader, const QJsonValue &value, const QString &path)
+{
+    if (value.isDouble()) {
+        const auto ms = reader.numberValue(value, path, 0, kMaxDelayMs);
+        if (!ms)
+            return std::nullopt;
+        return DelaySpec::fixed(*ms);
+    }
+    if (!value.isObject()) {
+        reader.error(path, QStringLiteral("expected milliseconds or an object such as "
+                                          "{\"distribution\": \"normal\", \"meanMs\": 4, \"stddevMs\": 1}, found %1")
+                               .arg(JsonReader::describe(value)));
+        return std::nullopt;
+    }
+    const QJsonObject o = value.toObject();
+    const int before = reader.problemCount();
+    if (!reader.require(o, path, "distribution"))
+        return std::nullopt;
+    const auto name = reader.string(o, path, "distribution");
+    if (!name)
+        return std::nullopt;
+    const auto kind = delayKind(*name);
+    if (!kind) {
+        reader.error(JsonReader::member(path, "distribution"),
+                     QStringLiteral("'%1' is not a distribution: expected fixed, uniform, normal or exponential").arg(*name));
+        return std::nullopt;
+    }
+    DelaySpec spec;
+    spec.kind = *kind;
+    switch (*kind) {
+    case DelaySpec::Kind::Fixed:
+        reader.checkKeys(o, path, {"distribution", "ms"});
+        if (reader.require(o, path, "ms"))
+            spec.ms = reader.number(o, path, "ms", 0, kMaxDelayMs).value_or(0);
+        break;
+    case DelaySpec::Kind::Uniform:
+        reader.checkKeys(o, path, {"distribution", "minMs", "maxMs"});
+        if (reader.require(o, path, "minMs") && reader.require(o, path, "maxMs")) {
+            spec.minMs = reader.number(o, path, "minMs", 0, kMaxDelayMs).value_or(0);
+            spec.maxMs = reader.number(o, path, "maxMs", 0, kMaxDelayMs).value_or(0);
+            if (spec.maxMs < spec.minMs)
+                reader.error(JsonReader::member(path, "maxMs"),
+                             QStringLiteral("%1 is below minMs %2").arg(JsonReader::numberText(spec.maxMs),
+                                                                        JsonReader::numberText(spec.minMs)));
+        }
+        break;
+    case DelaySpec::Kind::Normal:
+    case DelaySpec::Kind::Exponential:
+        if (*kind == DelaySpec::Kind::Normal) {
+            reader.checkKeys(o, path, {"distribution", "meanMs", "stddevMs", "minMs", "maxMs"});
+            if (reader.require(o, path, "stddevMs"))
+                spec.stddevMs = reader.number(o, path, "stddevMs", 0, kMaxDelayMs).value_or(0);
+        } else {
+            reader.checkKeys(o, path, {"distribution", "meanMs", "minMs", "maxMs"});
+        }
+        if (reader.require(o, path, "meanMs"))
+            spec.meanMs = reader.number(o, path, "meanMs", 0, kMaxDelayMs).value_or(0);
+        spec.minMs = reader.number(o, path, "minMs", 0, kMaxDelayMs).value_or(0);
+        spec.maxMs = reader.number(o, path, "maxMs", 0, kMaxDelayMs).value_or(-1);
+        if (o.contains(QLatin1String("maxMs")) && spec.maxMs >= 0 && spec.maxMs < spec.minMs)
+            reader.error(JsonReader::member(path, "maxMs"),
+                         QStringLiteral("%1 is below minMs %2").arg(JsonReader::numberText(spec.maxMs),
+                                                                    JsonReader::numberText(spec.minMs)));
+        break;
+    }
+    if (reader.problemCount() != before)
+        return std::nullopt;
+    return spec;
+}
+
+std::optional<FaultRule> FaultRuleReader::readRule(JsonReader &reader, const QJsonValue &value, const QString &path)
+{
+    const auto o = reader.objectValue(value, path);
+    if (!o)
+        return std::nullopt;
+    const int before = reader.problemCount();
+    if (!reader.require(*o, path, "kind"))
+        return std::nullopt;
+    const auto name = reader.string(*o, path, "kind");
+    if (!name)
+        return std::nullopt;
+    const auto kind = FaultRule::kindFromName(*name);
+    if (!kind) {
+        reader.error(JsonReader::member(path, "kind"),
+                     QStringLiteral("'%1' is not a fault: expected one of %2").arg(*name, FaultRule::kindNames()));
+        return std::nullopt;
+    }
+
+    FaultRule rule;
+    rule.kind = *kind;
+    using K = FaultRule::Kind;
+    switch (*kind) {
+    case K::Delay:
+        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "delay"});
+        if (reader.require(*o, path, "delay")) {
+            if (const auto d = readDelay(reader, o->value(QLatin1String("delay")), JsonReader::member(path, "delay")))
+                rule.delay = *d;
+        }
+        break;
+    case K::Drop:
+    case K::WrongChecksum:
+        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability"});
+        break;
+    case K::WrongTransactionId:
+    case K::WrongUnit:
+        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "delta"});
+        rule.delta = int(reader.integer(*o, path, "delta", 1, *kind == K::WrongUnit ? 255 : 65535).value_or(1));
+        break;
+    case K::Exception:
+        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "code"});
+        rule.exceptionCode = quint8(reader.integer(*o, path, "code", 1, 255).value_or(4));
+        break;
+    case K::FewerRegisters:
+        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "fewer"});
+        rule.fewer = int(reader.integer(*o, path, "fewer", 1, 125).value_or(1));
+        break;
+    case K::Chunks:
+        reader.checkKeys(*o, path,
+                         {"kind", "name", "units", "functions", "addresses", "probability", "chunkBytes", "gapMs"});
+        rule.chunkBytes = int(reader.integer(*o, path, "chunkBytes", 1, 65535).value_or(4));
+        rule.gapMs = reader.number(*o, path, "gapMs", 0, kMaxDelayMs).value_or(10);
+        break;
+    case K::Trickle:
+        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "gapMs"});
+        rule.gapMs = reader.number(*o, path, "gapMs", 0, kMaxDelayMs).value_or(20);
+        break;
+    case K::Junk:
+        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "before", "after"});
+        readJunk(reader, *o, path, "before", &rule.junkBefore, &rule.junkBeforeCount);
+        readJunk(reader, *o, path, "after", &rule.junkAfter, &rule.junkAfterCount);
+        if (!o->contains(QLatin1String("before")) && !o->contains(QLatin1String("after")))
+            reader.error(path, QStringLiteral("junk needs 'before' or 'after' (a byte count or hex bytes)"));
+        break;
+    case K::Duplicate:
+        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "copies", "gapMs"});
+        rule.copies = int(reader.integer(*o, path, "copies", 1, 16).value_or(1));
+        rule.gapMs = reader.number(*o, path, "gapMs", 0, kMaxDelayMs).value_or(0);
+        break;
+    case K::Close: {
+        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "when"});
+        const QString when = reader.string(*o, path, "when").value_or(QStringLiteral("after"));
+        if (when == QLatin1String("before"))
+            rule.closeWhen = FaultRule::CloseWhen::Before;
+        else if (when == QLatin1String("midway"))
+            rule.closeWhen = FaultRule::CloseWhen::Midway;
+        else if (when == QLatin1String("after"))
+            rule.closeWhen = FaultRule::CloseWhen::After;
+        else
+            reader.error(JsonReader::member(path, "when"),
+                         QStringLiteral("'%1' is not a moment: expected before, midway or after").arg(when));
+        break;
+    }
+    }
+
+    rule.name = reader.string(*o, path, "name").value_or(QString());
+    rule.units = readByteList(reader, *o, path, "units", 0);
+    rule.functions = readByteList(reader, *o, path, "functions", 1);
+    rule.probability = reader.number(*o, path, "probability", 0, 1).value_or(1);
+
+    const QJsonValue addresses = o->value(QLatin1String("addresses"));
+    const QString at = JsonReader::member(path, "addresses");
+    if (addresses.isArray()) {
+        const QJsonArray a = addresses.toArray();
+        if (a.size() != 2) {
+            reader.error(at, QStringLiteral("expected [first, last] (two addresses), found %1 values").arg(a.size()));
+        } else {
+            const auto first = reader.integerValue(a.at(0), JsonReader::element(at, 0), 0, 65535);
+            const auto last = reader.integerValue(a.at(1), JsonReader::element(at, 1), 0, 65535);
+            if (first && last && *last < *first)
+                reader.error(JsonReader::element(at, 1), QStringLiteral("%1 is below the first address %2").arg(*last).arg(*first));
+            else if (first && last) {
+                rule.firstAddress = int(*first);
+                rule.lastAddress = int(*last);
+            }
+        }
+    } else if (!addresses.isUndefined()) {
+        if (const auto n = reader.integerValue(addresses, at, 0, 65535)) {
+            rule.firstAddress = int(*n);
+            rule.lastAddress = int(*n);
+        }
+    }
+
+    if (reader.problemCount() != before)
+        return std::nullopt;
+    return rule;
+}
+
+FaultRuleSet FaultRuleReader::readRuleSet(JsonReader &reader, const QJsonValue &value, const QString &path,
+                                          quint64 defaultSeed)
+{
+    FaultRuleSet set;
+    set.seed = defaultSeed;
+    const auto o = reader.objectValue(value, path);
+    if (!o)
+        return set;
+    reader.checkKeys(*o, path, {"$schema", "description", "seed", "rules"});
+    if (const auto seed = reader.integer(*o, path, "seed", 0, qint64(9007199254740991LL)))
+        set.seed = quint64(*seed);
+    if (const auto rules = reader.array(*o, path, "rules")) {
+        const QString at = JsonReader::member(path, "rules");
+        for (qsizetype i = 0; i < rules->size(); ++i) {
+            if (const auto rule = readRule(reader, rules->at(i), JsonReader::element(at, i)))
+                set.rules.append(*rule);
+        }
+    }
+    return set;
+}
+
+} // namespace mbscope

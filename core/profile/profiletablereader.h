@@ -1,0 +1,35 @@
+#pragma once
+
+#include "deviceprofile.h"
+
+#include <QtCore/QJsonValue>
+#include <QtCore/QString>
+
+#include <optional>
+
+namespace mbscope {
+
+class JsonReader;
+
+// Reads the "tables" object of a unit in a device profile (format in docs/profiles.md): the
+// entries of each table with their types, scaling, initial values and generators, and checks
+// that entries do not overlap and that copy generators name an existing value.
+class ProfileTableReader
+{
+public:
+    // Appends the entries to unit->entries, sorted by table then address.
+    static void readTables(JsonReader &reader, const QJsonValue &value, const QString &path, UnitProfile *unit);
+
+    // "coils", "discrete", "input", "holding": the keys of "tables" and of a copy's "table".
+    [[nodiscard]] static const char *tableKey(SimTable table);
+    [[nodiscard]] static std::optional<SimTable> tableFromKey(QStringView key);
+
+private:
+    static std::optional<TableEntry> readEntry(JsonReader &reader, const QJsonValue &value, const QString &path,
+                                               SimTable table);
+    static bool readInitialValues(JsonReader &reader, const QJsonObject &o, const QString &path, TableEntry *entry);
+    static std::optional<GeneratorSpec> readGenerator(JsonReader &reader, const QJsonValue &value,
+                                                      const QString &path, const TableEntry &entry);
+};
+
+} // namespace mbscope

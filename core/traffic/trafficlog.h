@@ -1,0 +1,104 @@
+#pragma once
+
+#include "exchange/trafficentry.h"
+#include "trafficjournal.h"
+
+#include <QtCore/QList>
+#include <QtCore/QString>
+#include <QtCore/QStringList>
+
+#include <memory>
+#include <vector>
+
+namespace mbscope {
+
+// Every frame in and out of the engine, in order: in memory up to a bound (the oldest frames are
+// dropped first, and counted), and journaled to disk in batches (trafficjournal.h) so that a
+// crash loses at most the batch not yet written.
+//
+// Memory: frames live in 64 KiB chunks, each filled from the front with 24-byte records and from
+// the back with the frames' bytes, so a logged 8-byte frame costs 32 bytes plus its share of a
+// chunk's unused middle (measured: about 32 bytes per frame, tst_trafficlog and
+// bench_trafficlog). append() makes no system call and, once the log is full and recycling its
+// oldest chunk, no allocation: a chunk is allocated per ~2,000 small frames while the log grows.
+//
+// Threads: the engine's thread owns the log and calls append(); nothing else may touch it while
+// it does. Views (TrafficEntry) are valid until the next append; copy() makes owning frames to
+// hand to another thread.
+class TrafficLog
+{
+public:
+    struct Limits {
+        quint64 maxEntries = 1'000'000;
+        // Bytes of records and frames kept: 24 + frame size per entry. The allocation is this
+        // plus at most one chunk's slack (64 KiB).
+        quint64 maxBytes = quint64(256) << 20;
+    };
+
+    TrafficLog();
+    explicit TrafficLog(const Limits &limits);
+    ~TrafficLog();
+    TrafficLog(const TrafficLog &) = delete;
+    TrafficLog &operator=(const TrafficLog &) = delete;
+
+    // Smaller limits drop the oldest entries at once.
+    void setLimits(const Limits &limits);
+    [[nodiscard]] const Limits &limits() const { return m_limits; }
+
+    // Starts journaling every frame appended from now on (see TrafficJournalWriter::open), with
+    // the links named so far.
+    bool openJournal(const QString &path, const TrafficJournalWriter::Options &options = {},
+                     bool overwrite = false, QString *error = nullptr);
+    void closeJournal(); // writes the pending batch
+    [[nodiscard]] const TrafficJournalWriter &journal() const { return m_journal; }
+
+    // A short id for a link's name ("tcp://192.168.1.10:502"); the same name gives the same id.
+    [[nodiscard]] quint16 addLink(const QString &name);
+    [[nodiscard]] QString linkName(quint16 link) const;
+    [[nodiscard]] const QStringList &links() const { return m_links; }
+
+    // Logs one frame; returns its sequence number.
+    quint64 append(qint64 tNs, TrafficDirection direction, quint16 link, TrafficVerdict verdict,
+                   quint64 transactionId, QByteArrayView bytes);
+    // The engine calls this from a timer so a quiet link's last frames reach the disk within the
+    // batch time.
+    void flushIfDue(qint64 nowNs) { m_journal.flushIfDue(nowNs); }
+    void flush() { m_journal.flush(); }
+
+    [[nodiscard]] quint64 size() const { return m_size; }                       // entries in memory
+    [[nodiscard]] quint64 appended() const { return m_next; }                   // ever logged
+    [[nodiscard]] quint64 dropped() const { return m_next - m_size; }           // evicted from memory
+    [[nodiscard]] quint64 firstSequence() const { return m_next - m_size; }     // oldest in memory
+    [[nodiscard]] quint64 retainedBytes() const { return m_retainedBytes; }
+    // firstSequence() <= sequence < appended(); otherwise an entry with no bytes and the given
+    // sequence, verdict Garbage.
+    [[nodiscard]] TrafficEntry at(quint64 sequence) const;
+    // Up to maxCount entries from fromSequence (clamped to what is in memory), as owning frames.
+    [[nodiscard]] QList<TrafficFrame> copy(quint64 fromSequence, qsizetype maxCount) const;
+
+    // Bytes this log holds on the heap: chunks (capacity), their index, the spare chunk, the
+    // journal's batch buffer and the link names.
+    [[nodiscard]] std::size_t memoryBytes() const;
+
+    static constexpr std::size_t kChunkBytes = 64 * 1024;
+
+private:
+    struct Record;
+    struct Chunk;
+
+    [[nodiscard]] Chunk *chunkFor(std::size_t bytes);
+    void evictOldest();
+    [[nodiscard]] TrafficEntry entryAt(const Chunk &chunk, quint32 index) const;
+
+    Limits m_limits;
+    std::vector<std::unique_ptr<Chunk>> m_chunks; // oldest first
+    std::unique_ptr<Chunk> m_spare;
+    quint32 m_headSkip = 0; // entries of the first chunk already dropped
+    quint64 m_size = 0;
+    quint64 m_next = 0;
+    quint64 m_retainedBytes = 0;
+    QStringList m_links;
+    TrafficJournalWriter m_journal;
+};
+
+} // namespace mbscope

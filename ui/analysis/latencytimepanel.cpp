@@ -1,0 +1,155 @@
+#include "latencytimepanel.h"
+
+#include "common/plotcursor.h"
+#include "common/plotexportmenu.h"
+#include "common/plotfollower.h"
+
+#include <QtGui/QAction>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QToolBar>
+#include <QtWidgets/QVBoxLayout>
+#include <qcustomplot.h>
+
+#include <algorithm>
+
+namespace mbscope {
+
+LatencyTimePanel::LatencyTimePanel(QWidget *parent)
+    : QWidget(parent)
+    , m_plot(new QCustomPlot(this))
+    , m_graphs(LatencyTimeGraphs::addTo(m_plot))
+    , m_cursor(new PlotCursor(m_plot))
+    , m_export(new PlotExportMenu(m_plot, QStringLiteral("latency-over-time")))
+    , m_summary(new QLabel(this))
+    , m_follower(new PlotFollower(m_plot, kRedrawMs, this))
+{
+    m_plot->setObjectName(QStringLiteral("latencyTimePlot"));
+    m_plot->setMinimumSize(300, 200);
+    m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    m_plot->xAxis->setLabel(tr("time since the first request (s)"));
+    m_plot->yAxis->setLabel(tr("latency (ms)"));
+    m_plot->legend->setVisible(true);
+    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    m_graphs.nameWithCounts(0, 0, 0);
+    m_cursor->setXFormatter([](double x) { return tr("t = %1 s").arg(x, 0, 'f', 3); });
+    const auto milliseconds = [](double ms) { return tr("%1 ms").arg(ms, 0, 'f', 3); };
+    m_cursor->setValueFormatter(m_graphs.answered, milliseconds);
+    m_cursor->setValueFormatter(m_graphs.exceptions, milliseconds);
+    m_cursor->setValueFormatter(m_graphs.failed, [](double) { return QString(); });
+    m_cursor->setLabel(m_graphs.answered, tr("answered"));
+    m_cursor->setLabel(m_graphs.exceptions, tr("exception"));
+    m_cursor->setLabel(m_graphs.failed, tr("no usable answer (timeout or bad answer)"));
+
+    m_follower->setFit([this] { fitAxes(); });
+    m_follower->setRedraw([this] { redraw(); });
+    m_follower->followAction()->setToolTip(tr("Keep every transaction in view as new ones arrive"));
+    m_follower->clearAction()->setToolTip(tr("Forget the points shown; new transactions start a new time axis"));
+    connect(m_follower->clearAction(), &QAction::triggered, this, &LatencyTimePanel::clear);
+
+    auto *tools = new QToolBar(this);
+    tools->addAction(m_follower->followAction());
+    tools->addAction(m_follower->clearAction());
+    tools->addSeparator();
+    tools->addAction(m_export->saveAction());
+    tools->addAction(m_export->copyAction());
+    tools->addSeparator();
+    tools->addWidget(m_summary);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(tools);
+    layout->addWidget(m_plot, 1);
+    clear();
+}
+
+void LatencyTimePanel::addTransactions(const QList<Transaction> &transactions)
+{
+    QList<double> answeredKeys, answeredValues, exceptionKeys, exceptionValues, failedKeys;
+    for (const Transaction &t : transactions) {
+        if (t.status == TransactionStatus::Late || t.status == TransactionStatus::Broadcast || t.sentNs == 0)
+            continue;
+        if (m_startNs == 0)
+            m_startNs = t.sentNs;
+        const double seconds = double(t.sentNs - m_startNs) / 1e9;
+        m_lastSeconds = std::max(m_lastSeconds, seconds);
+        if (t.status == TransactionStatus::Ok || t.status == TransactionStatus::Exception) {
+            const double ms = double(t.latencyNs()) / 1e6;
+            m_maxLatencyMs = std::max(m_maxLatencyMs, ms);
+            (t.status == TransactionStatus::Ok ? answeredKeys : exceptionKeys).append(seconds);
+            (t.status == TransactionStatus::Ok ? answeredValues : exceptionValues).append(ms);
+        } else {
+            failedKeys.append(seconds);
+        }
+    }
+    // Send times only grow within a poll, so the points go on the end of the sorted data.
+    if (!answeredKeys.isEmpty())
+        m_graphs.answered->addData(answeredKeys, answeredValues, true);
+    if (!exceptionKeys.isEmpty())
+        m_graphs.exceptions->addData(exceptionKeys, exceptionValues, true);
+    if (!failedKeys.isEmpty())
+        m_graphs.failed->addData(failedKeys, QList<double>(failedKeys.size(), 0.0), true);
+    m_follower->scheduleRedraw();
+}
+
+void LatencyTimePanel::clear()
+{
+    m_graphs.answered->data()->clear();
+    m_graphs.exceptions->data()->clear();
+    m_graphs.failed->data()->clear();
+    m_startNs = 0;
+    m_lastSeconds = 0;
+    m_maxLatencyMs = 0;
+    m_cursor->hide();
+    m_follower->setFollowing(true);
+    redraw();
+}
+
+void LatencyTimePanel::setFollowing(bool following)
+{
+    m_follower->setFollowing(following);
+}
+
+bool LatencyTimePanel::isFollowing() const
+{
+    return m_follower->isFollowing();
+}
+
+QString LatencyTimePanel::summary() const
+{
+    const int answered = m_graphs.answered->dataCount();
+    const int exceptions = m_graphs.exceptions->dataCount();
+    const int failed = m_graphs.failed->dataCount();
+    return tr("%1 transactions: %2 answered, %3 exceptions, %4 without a usable answer")
+        .arg(answered + exceptions + failed)
+        .arg(answered)
+        .arg(exceptions)
+        .arg(failed);
+}
+
+void LatencyTimePanel::redrawNow()
+{
+    m_follower->redrawNow();
+}
+
+void LatencyTimePanel::redraw()
+{
+    m_graphs.nameWithCounts(m_graphs.answered->dataCount(), m_graphs.exceptions->dataCount(), m_graphs.failed->dataCount());
+    // Only what happened is in the legend: most polls have no exceptions, some no failures.
+    for (QCPGraph *graph : {m_graphs.exceptions, m_graphs.failed}) {
+        if (graph->dataCount() > 0)
+            graph->addToLegend();
+        else
+            graph->removeFromLegend();
+    }
+    m_summary->setText(summary());
+    m_follower->fitIfFollowing();
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void LatencyTimePanel::fitAxes()
+{
+    m_plot->xAxis->setRange(0, std::max(m_lastSeconds * 1.02, 1.0));
+    m_plot->yAxis->setRange(0, std::max(m_maxLatencyMs * 1.1, 1.0));
+}
+
+} // namespace mbscope

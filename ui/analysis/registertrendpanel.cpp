@@ -1,0 +1,375 @@
+#include "registertrendpanel.h"
+
+#include "compose/addressfield.h"
+#include "common/plotcursor.h"
+#include "common/plotexportmenu.h"
+#include "common/plotfollower.h"
+#include "registers/registertable.h"
+#include "registers/registertablemodel.h"
+
+#include "protocol/adubuilder.h"
+
+#include <QtGui/QAction>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QFormLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QListWidget>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSplitter>
+#include <QtWidgets/QTableView>
+#include <QtWidgets/QToolBar>
+#include <QtWidgets/QVBoxLayout>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <iterator>
+
+namespace mbscope {
+
+namespace {
+
+QColor seriesColour(int index)
+{
+    static const QColor colours[] = {QColor(31, 119, 180), QColor(255, 127, 14), QColor(44, 160, 44),
+                                     QColor(214, 39, 40),  QColor(148, 103, 189), QColor(140, 86, 75),
+                                     QColor(227, 119, 194), QColor(127, 127, 127), QColor(188, 189, 34),
+                                     QColor(23, 190, 207)};
+    return colours[index % int(std::size(colours))];
+}
+
+} // namespace
+
+RegisterTrendPanel::RegisterTrendPanel(QWidget *parent)
+    : QWidget(parent)
+    , m_list(new QListWidget(this))
+    , m_address(new AddressField(this))
+    , m_table(new QComboBox(this))
+    , m_format(new QComboBox(this))
+    , m_message(new QLabel(this))
+    , m_plot(new QCustomPlot(this))
+    , m_cursor(new PlotCursor(m_plot))
+    , m_export(new PlotExportMenu(m_plot, QStringLiteral("register-trends")))
+    , m_follower(new PlotFollower(m_plot, kRedrawMs, this))
+    , m_addSelected(new QAction(tr("Add &selected register"), this))
+{
+    m_list->setObjectName(QStringLiteral("trendRegisters"));
+    m_list->setToolTip(tr("Checked registers are plotted against time"));
+    m_table->addItem(tr("Holding registers"), int(ModbusTable::HoldingRegisters));
+    m_table->addItem(tr("Input registers"), int(ModbusTable::InputRegisters));
+    m_table->addItem(tr("Coils"), int(ModbusTable::Coils));
+    m_table->addItem(tr("Discrete inputs"), int(ModbusTable::DiscreteInputs));
+    connect(m_table, &QComboBox::currentIndexChanged, this,
+            [this]() { m_address->setTable(ModbusTable(m_table->currentData().toInt())); });
+    for (const RegisterFormat &format : RegisterFormat::all()) {
+        if (format.type() != RegisterType::Ascii)
+            m_format->addItem(format.name());
+    }
+    auto *add = new QPushButton(tr("&Add"), this);
+    add->setToolTip(tr("Plot the register at this address, read with this format"));
+    connect(add, &QPushButton::clicked, this, &RegisterTrendPanel::addFromFields);
+    m_message->setWordWrap(true);
+    m_message->setObjectName(QStringLiteral("trendMessage"));
+
+    auto *left = new QWidget(this);
+    auto *fields = new QFormLayout;
+    fields->addRow(tr("Table:"), m_table);
+    fields->addRow(tr("Address:"), m_address);
+    fields->addRow(tr("Format:"), m_format);
+    auto *leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->addWidget(m_list, 1);
+    leftLayout->addLayout(fields);
+    leftLayout->addWidget(add);
+    leftLayout->addWidget(m_message);
+
+    m_plot->setObjectName(QStringLiteral("registerTrendPlot"));
+    m_plot->setMinimumSize(300, 200);
+    m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    m_plot->xAxis->setLabel(tr("time since the first answer (s)"));
+    m_plot->yAxis->setLabel(tr("scaled value"));
+    m_plot->legend->setVisible(true);
+    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    m_cursor->setXFormatter([](double x) { return tr("t = %1 s").arg(x, 0, 'f', 3); });
+
+    m_follower->setFit([this] { fitAxes(); });
+    m_follower->setRedraw([this] { redraw(); });
+    m_follower->followAction()->setToolTip(tr("Keep every value in view as new answers arrive"));
+    m_follower->clearAction()->setToolTip(tr("Forget the values plotted; the registers stay chosen"));
+    connect(m_follower->clearAction(), &QAction::triggered, this, &RegisterTrendPanel::clear);
+    m_addSelected->setToolTip(tr("Plot the register selected in the Registers table, in the format of its column"));
+    m_addSelected->setEnabled(false);
+    connect(m_addSelected, &QAction::triggered, this, &RegisterTrendPanel::addSelectedFromTable);
+
+    auto *tools = new QToolBar(this);
+    tools->addAction(m_follower->followAction());
+    tools->addAction(m_follower->clearAction());
+    tools->addAction(m_addSelected);
+    tools->addSeparator();
+    tools->addAction(m_export->saveAction());
+    tools->addAction(m_export->copyAction());
+    auto *right = new QWidget(this);
+    auto *rightLayout = new QVBoxLayout(right);
+    rightLayout->setContentsMargins(0, 0, 0, 0);
+    rightLayout->addWidget(tools);
+    rightLayout->addWidget(m_plot, 1);
+
+    auto *split = new QSplitter(this);
+    split->addWidget(left);
+    split->addWidget(right);
+    split->setStretchFactor(1, 1);
+    split->setSizes({220, 600});
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(split);
+
+    connect(m_list, &QListWidget::itemChanged, this, &RegisterTrendPanel::onItemChanged);
+}
+
+void RegisterTrendPanel::setProfile(const UnitProfile &unit, const QString &profileName)
+{
+    // Series of the previous profile that are plotted stay; the others leave the list.
+    QList<Row> kept;
+    for (const Row &row : std::as_const(m_rows)) {
+        if (row.graph)
+            kept.append(row);
+    }
+    m_rows = kept;
+    m_filling = true;
+    m_list->clear();
+    for (const Row &row : std::as_const(m_rows)) {
+        auto *item = new QListWidgetItem(row.series.label(), m_list);
+        item->setToolTip(row.series.description());
+        item->setCheckState(row.graph->visible() ? Qt::Checked : Qt::Unchecked);
+    }
+    m_filling = false;
+    for (const TrendSeries &series : TrendSeries::fromProfile(unit, profileName)) {
+        const bool known = std::any_of(m_rows.cbegin(), m_rows.cend(),
+                                       [&](const Row &row) { return row.series.sameRegister(series); });
+        if (known)
+            continue;
+        m_filling = true;
+        auto *item = new QListWidgetItem(series.label(), m_list);
+        item->setToolTip(series.description());
+        item->setCheckState(Qt::Unchecked);
+        m_filling = false;
+        m_rows.append(Row{series, nullptr});
+    }
+}
+
+void RegisterTrendPanel::setRegisterTable(RegisterTable *table)
+{
+    m_registerTable = table;
+    m_addSelected->setEnabled(table != nullptr);
+}
+
+int RegisterTrendPanel::addSeries(const TrendSeries &series)
+{
+    for (int i = 0; i < m_rows.size(); ++i) {
+        if (m_rows.at(i).series.sameRegister(series)) {
+            setSeriesShown(i, true);
+            return i;
+        }
+    }
+    m_filling = true;
+    auto *item = new QListWidgetItem(series.label(), m_list);
+    item->setToolTip(series.description());
+    item->setCheckState(Qt::Unchecked);
+    m_filling = false;
+    m_rows.append(Row{series, nullptr});
+    const int index = int(m_rows.size()) - 1;
+    setSeriesShown(index, true);
+    return index;
+}
+
+void RegisterTrendPanel::setSeriesShown(int index, bool shown)
+{
+    m_list->item(index)->setCheckState(shown ? Qt::Checked : Qt::Unchecked); // onItemChanged does the rest
+}
+
+void RegisterTrendPanel::onItemChanged(QListWidgetItem *item)
+{
+    if (m_filling)
+        return;
+    const int index = m_list->row(item);
+    if (index < 0 || index >= m_rows.size())
+        return;
+    const bool shown = item->checkState() == Qt::Checked;
+    QCPGraph *graph = shown ? graphFor(index) : m_rows.at(index).graph;
+    if (!graph)
+        return;
+    graph->setVisible(shown);
+    if (shown)
+        graph->addToLegend();
+    else
+        graph->removeFromLegend();
+    redraw();
+}
+
+QCPGraph *RegisterTrendPanel::graphFor(int index)
+{
+    Row &row = m_rows[index];
+    if (row.graph)
+        return row.graph;
+    row.graph = m_plot->addGraph();
+    const QColor colour = seriesColour(m_plot->graphCount() - 1); // in the order they were chosen
+    row.graph->setPen(QPen(colour, 1.5));
+    row.graph->setLineStyle(QCPGraph::lsStepLeft); // a polled value holds until the next answer
+    row.graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, colour, colour, 3));
+    row.graph->setName(row.series.label());
+    const QString unit = row.series.unit;
+    m_cursor->setValueFormatter(row.graph, [unit](double value) {
+        return unit.isEmpty() ? QString::number(value, 'g', 7) : tr("%1 %2").arg(QString::number(value, 'g', 7), unit);
+    });
+    return row.graph;
+}
+
+bool RegisterTrendPanel::addSelectedFromTable()
+{
+    if (!m_registerTable) {
+        showMessage(tr("No register table to take a register from"));
+        return false;
+    }
+    const RegisterTableModel *model = m_registerTable->model();
+    const QModelIndex current = m_registerTable->view()->currentIndex();
+    if (!model->hasAnswer() || !current.isValid()) {
+        showMessage(tr("Select a register in the Registers table first"));
+        return false;
+    }
+    TrendSeries series;
+    series.table = model->answer().table;
+    series.address = current.data(RegisterTableModel::AddressRole).toInt();
+    const int valueIndex = model->valueIndexOf(current.column());
+    series.format = valueIndex >= 0 ? model->formatOfColumn(current.column()) : RegisterFormat();
+    // The profile's meaning when the register is one of its entries in that format.
+    for (const Row &row : std::as_const(m_rows)) {
+        if (row.series.table == series.table && row.series.address == series.address
+            && (valueIndex < 0 || row.series.format == series.format)) {
+            series = row.series;
+            break;
+        }
+    }
+    const int index = addSeries(series);
+    showMessage(tr("Plotting %1").arg(m_rows.at(index).series.label()));
+    return true;
+}
+
+void RegisterTrendPanel::addFromFields()
+{
+    const std::optional<int> address = m_address->address();
+    if (!address) {
+        showMessage(tr("Not added: the address is wrong: %1").arg(m_address->error()));
+        return;
+    }
+    const RegisterFormatResult format = RegisterFormat::parse(m_format->currentText());
+    if (!format.ok) {
+        showMessage(tr("Not added: %1").arg(format.error));
+        return;
+    }
+    TrendSeries series;
+    series.table = ModbusTable(m_table->currentData().toInt());
+    series.address = *address;
+    series.format = format.format;
+    if (series.address + series.format.registerCount() > 0x10000) {
+        showMessage(tr("Not added: a %1 at PDU address %2 would go past the last address (65535)")
+                        .arg(series.format.name())
+                        .arg(series.address));
+        return;
+    }
+    const int index = addSeries(series);
+    showMessage(tr("Plotting %1").arg(m_rows.at(index).series.label()));
+}
+
+void RegisterTrendPanel::addTransactions(const QList<Transaction> &transactions)
+{
+    bool added = false;
+    for (const Transaction &t : transactions) {
+        if (!t.isOk())
+            continue;
+        const AduParts request = AduBuilder::parse(t.request, m_framing);
+        const AduParts response = AduBuilder::parse(t.response, m_framing);
+        const ReadAnswerResult read = ReadAnswer::fromPdus(request.pdu, response.pdu);
+        if (!read.ok)
+            continue; // not a read, or an answer the register table reports
+        if (m_startNs == 0)
+            m_startNs = t.sentNs;
+        const double seconds = double(t.doneNs - m_startNs) / 1e9;
+        for (Row &row : m_rows) {
+            if (!row.graph || (row.series.unitId >= 0 && row.series.unitId != request.unitId))
+                continue;
+            if (const std::optional<double> value = row.series.valueIn(read.answer)) {
+                row.graph->addData(seconds, *value);
+                m_lastSeconds = std::max(m_lastSeconds, seconds);
+                added = true;
+            }
+        }
+    }
+    if (added)
+        m_follower->scheduleRedraw();
+}
+
+void RegisterTrendPanel::clear()
+{
+    for (const Row &row : std::as_const(m_rows)) {
+        if (row.graph)
+            row.graph->data()->clear();
+    }
+    m_startNs = 0;
+    m_lastSeconds = 0;
+    m_cursor->hide();
+    m_follower->setFollowing(true);
+    redraw();
+}
+
+void RegisterTrendPanel::setFollowing(bool following)
+{
+    m_follower->setFollowing(following);
+}
+
+bool RegisterTrendPanel::isFollowing() const
+{
+    return m_follower->isFollowing();
+}
+
+QString RegisterTrendPanel::message() const
+{
+    return m_message->text();
+}
+
+void RegisterTrendPanel::showMessage(const QString &text)
+{
+    m_message->setText(text);
+}
+
+void RegisterTrendPanel::redrawNow()
+{
+    m_follower->redrawNow();
+}
+
+void RegisterTrendPanel::redraw()
+{
+    m_follower->fitIfFollowing();
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void RegisterTrendPanel::fitAxes()
+{
+    QCPRange values;
+    bool any = false;
+    for (const Row &row : std::as_const(m_rows)) {
+        if (!row.graph || !row.graph->visible())
+            continue;
+        bool found = false;
+        const QCPRange range = row.graph->getValueRange(found);
+        if (!found)
+            continue;
+        values = any ? QCPRange(std::min(values.lower, range.lower), std::max(values.upper, range.upper)) : range;
+        any = true;
+    }
+    if (!any)
+        values = QCPRange(0, 1);
+    const double margin = values.size() > 0 ? values.size() * 0.08 : std::max(std::abs(values.lower) * 0.1, 1.0);
+    m_plot->xAxis->setRange(0, std::max(m_lastSeconds * 1.02, 1.0));
+    m_plot->yAxis->setRange(values.lower - margin, values.upper + margin);
+}
+
+} // namespace mbscope

@@ -1,0 +1,200 @@
+#include "linkcontroller.h"
+
+#include "engine/pollsettings.h"
+#include "exchange/requestitem.h"
+#include "exchange/statistics.h"
+#include "engine/transactionengine.h"
+
+namespace mbscope {
+
+namespace {
+
+EngineCounters operator+(EngineCounters a, const EngineCounters &b)
+{
+    a.requestsSent += b.requestsSent;
+    a.transactions += b.transactions;
+    a.retries += b.retries;
+    a.late += b.late;
+    a.unsolicitedFrames += b.unsolicitedFrames;
+    a.duplicateFrames += b.duplicateFrames;
+    a.skippedRuns += b.skippedRuns;
+    a.skippedBytes += b.skippedBytes;
+    a.bytesIn += b.bytesIn;
+    a.bytesOut += b.bytesOut;
+    a.connects += b.connects;
+    a.linkErrors += b.linkErrors;
+    a.abandoned += b.abandoned;
+    a.cycles += b.cycles;
+    a.overruns += b.overruns;
+    return a;
+}
+
+} // namespace
+
+LinkController::LinkController(QObject *parent)
+    : QObject(parent)
+{
+    qRegisterMetaType<mbscope::Transaction>();
+    qRegisterMetaType<QList<mbscope::Transaction>>();
+    qRegisterMetaType<QList<mbscope::TrafficFrame>>();
+    qRegisterMetaType<mbscope::EngineProgress>();
+    qRegisterMetaType<mbscope::PollReport>();
+}
+
+LinkController::~LinkController() = default;
+
+void LinkController::resetEngine()
+{
+    // A fresh engine per target: its link, framer and matcher start clean, and a poll of the old
+    // target cannot deliver answers that look like the new one's.
+    m_countersBefore = m_counters;
+    m_engine = std::make_unique<TransactionEngine>();
+    connect(m_engine.get(), &TransactionEngine::transactionsFinished, this, &LinkController::onTransactions);
+    connect(m_engine.get(), &TransactionEngine::unmatchedFrames, this, &LinkController::unmatchedFrames);
+    connect(m_engine.get(), &TransactionEngine::progress, this, &LinkController::onProgress);
+    connect(m_engine.get(), &TransactionEngine::linkMessage, this, &LinkController::onLinkMessage);
+    connect(m_engine.get(), &TransactionEngine::finished, this, &LinkController::onPollFinished);
+}
+
+void LinkController::connectTo(const LinkUrl &url)
+{
+    if (m_polling)
+        stopPoll();
+    resetEngine();
+    m_url = url;
+    m_engine->setTarget(url);
+    setState(State::Ready, tr("%1: the link opens with the first request").arg(url.toString()));
+}
+
+void LinkController::disconnectLink()
+{
+    if (!m_engine)
+        return;
+    if (m_polling)
+        stopPoll();
+    m_engine->closeLink();
+    m_countersBefore = m_counters;
+    m_engine.reset();
+    setState(State::Disconnected, tr("Not connected"));
+}
+
+quint64 LinkController::send(const QByteArray &bytes)
+{
+    if (!m_engine || bytes.isEmpty())
+        return 0;
+    return m_engine->send(RequestItem::forLink(bytes, m_url));
+}
+
+bool LinkController::startPoll(const QByteArray &bytes, int intervalMs, quint64 count)
+{
+    if (!m_engine || bytes.isEmpty())
+        return false;
+    PollSettings settings;
+    settings.items = {RequestItem::forLink(bytes, m_url)};
+    settings.intervalNs = qint64(qMax(0, intervalMs)) * 1000000;
+    settings.count = count;
+    m_engine->startPoll(settings);
+    m_polling = true;
+    Q_EMIT pollingChanged(true);
+    return true;
+}
+
+bool LinkController::startSweep(const QByteArray &bytes, const QList<int> &intervalsMs, quint64 count)
+{
+    if (!m_engine || bytes.isEmpty() || intervalsMs.isEmpty())
+        return false;
+    SweepSettings settings;
+    settings.poll.items = {RequestItem::forLink(bytes, m_url)};
+    settings.poll.count = count;
+    for (const int ms : intervalsMs)
+        settings.intervalsNs.append(qint64(qMax(0, ms)) * 1000000);
+    m_engine->startSweep(settings);
+    m_polling = true;
+    Q_EMIT pollingChanged(true);
+    return true;
+}
+
+void LinkController::stopPoll()
+{
+    if (!m_engine || !m_polling)
+        return;
+    m_engine->stop();
+}
+
+QString LinkController::describe(const PollReport &report)
+{
+    quint64 count = 0;
+    quint64 ok = 0;
+    quint64 failed = 0;
+    qint64 minNs = 0;
+    qint64 maxNs = 0;
+    double weightedMeanNs = 0;
+    qint64 answered = 0;
+    for (const PollRun &run : report.runs) {
+        const Statistics &s = run.statistics.overall();
+        count += s.count();
+        ok += s.ok();
+        failed += s.failed();
+        const LatencySamples &latency = s.latency();
+        if (latency.isEmpty())
+            continue;
+        minNs = answered == 0 ? latency.minNs() : qMin(minNs, latency.minNs());
+        maxNs = qMax(maxNs, latency.maxNs());
+        weightedMeanNs += latency.meanNs() * double(latency.count());
+        answered += latency.count();
+    }
+    QString text = tr("Poll %1: %2 transactions, %3 ok, %4 failed")
+                       .arg(report.stopped ? tr("stopped") : tr("finished"))
+                       .arg(count)
+                       .arg(ok)
+                       .arg(failed);
+    if (answered > 0)
+        text += tr("; latency min %1 ms, mean %2 ms, max %3 ms")
+                    .arg(double(minNs) / 1e6, 0, 'f', 2)
+                    .arg(weightedMeanNs / double(answered) / 1e6, 0, 'f', 2)
+                    .arg(double(maxNs) / 1e6, 0, 'f', 2);
+    return text;
+}
+
+void LinkController::onTransactions(const QList<Transaction> &transactions)
+{
+    if (transactions.isEmpty())
+        return;
+    Q_EMIT transactionsFinished(transactions);
+    const Transaction &latest = transactions.constLast();
+    if (latest.status == TransactionStatus::LinkError)
+        setState(State::Failed, latest.problem.isEmpty() ? m_message : latest.problem);
+    else if (latest.status != TransactionStatus::Broadcast)
+        setState(State::Connected, m_url.toString());
+    Q_EMIT latestTransaction(latest);
+}
+
+void LinkController::onProgress(const EngineProgress &progress)
+{
+    m_counters = m_countersBefore + progress.counters;
+    Q_EMIT countersChanged(m_counters);
+    Q_EMIT progressChanged(progress);
+}
+
+void LinkController::onLinkMessage(const QString &message)
+{
+    setState(State::Failed, message);
+}
+
+void LinkController::onPollFinished(const PollReport &report)
+{
+    m_polling = false;
+    Q_EMIT pollingChanged(false);
+    Q_EMIT pollFinished(report);
+}
+
+void LinkController::setState(State state, const QString &message)
+{
+    if (state == m_state && message == m_message)
+        return;
+    m_state = state;
+    m_message = message;
+    Q_EMIT stateChanged(state, message);
+}
+
+} // namespace mbscope

@@ -1,0 +1,97 @@
+#pragma once
+
+#include "engine/engineprogress.h"
+#include "engine/pollreport.h"
+#include "exchange/trafficentry.h"
+#include "exchange/transaction.h"
+#include "transport/linkurl.h"
+
+#include <QtCore/QByteArray>
+#include <QtCore/QList>
+#include <QtCore/QObject>
+
+#include <memory>
+
+namespace mbscope {
+
+class TransactionEngine;
+
+// Between the window's widgets and the TransactionEngine: owns the engine (and with it the engine
+// thread), turns "send these bytes" and "poll these bytes" into RequestItems for the connected
+// link, and reports what happened as plain signals. No widget code, so tests drive it directly
+// and MainWindow only connects it to the panels.
+//
+// The engine opens the link on the first request, so "connected" means: the target is set, and
+// (once a request went out) the link opened; a link failure puts the controller into Failed with
+// the link's own words until the next request succeeds or the user connects elsewhere.
+class LinkController : public QObject
+{
+    Q_OBJECT
+public:
+    enum class State : quint8 {
+        Disconnected,
+        Ready,     // target set; the link opens on the first request
+        Connected, // the link opened and answers come back
+        Failed,    // the link failed; message() says why
+    };
+    Q_ENUM(State)
+
+    explicit LinkController(QObject *parent = nullptr);
+    ~LinkController() override;
+
+    void connectTo(const LinkUrl &url);
+    void disconnectLink();
+    [[nodiscard]] State state() const { return m_state; }
+    [[nodiscard]] bool isConnected() const { return m_state != State::Disconnected; }
+    [[nodiscard]] const LinkUrl &url() const { return m_url; }
+    [[nodiscard]] QString message() const { return m_message; }
+    [[nodiscard]] const EngineCounters &counters() const { return m_counters; }
+    [[nodiscard]] bool isPolling() const { return m_polling; }
+    [[nodiscard]] TransactionEngine *engine() const { return m_engine.get(); }
+
+    // Sends bytes exactly as given; returns the transaction id, 0 when not connected.
+    quint64 send(const QByteArray &bytes);
+    // Sends bytes every intervalMs (0: back to back), count times (0: until stopPoll()).
+    bool startPoll(const QByteArray &bytes, int intervalMs, quint64 count);
+    // Polls bytes count times at each interval in turn (TransactionEngine::startSweep); the
+    // PollReport at the end has one run per interval. stopPoll() stops it.
+    bool startSweep(const QByteArray &bytes, const QList<int> &intervalsMs, quint64 count);
+    void stopPoll();
+
+    // One line for the status bar: "Poll finished: 20 transactions, 20 ok, 0 failed; latency min
+    // 1.21 ms, mean 4.05 ms, max 11.80 ms".
+    [[nodiscard]] static QString describe(const PollReport &report);
+
+Q_SIGNALS:
+    void stateChanged(mbscope::LinkController::State state, const QString &message);
+    // Every transaction, in batches as the engine delivers them (at most ~30 a second).
+    void transactionsFinished(const QList<mbscope::Transaction> &transactions);
+    // Frames that answer no request (unsolicited, duplicates, garbage), batched as the engine
+    // delivers them; link: the target's URL. With transactionsFinished they are every frame in.
+    void unmatchedFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
+    // The newest transaction of each batch: what the decode view shows.
+    void latestTransaction(const mbscope::Transaction &transaction);
+    void countersChanged(const mbscope::EngineCounters &counters);
+    // The engine's progress with each batch: the run of a sweep and the cycle in it.
+    void progressChanged(const mbscope::EngineProgress &progress);
+    void pollingChanged(bool polling);
+    void pollFinished(const mbscope::PollReport &report);
+
+private:
+    void onTransactions(const QList<Transaction> &transactions);
+    void onProgress(const EngineProgress &progress);
+    void onLinkMessage(const QString &message);
+    void onPollFinished(const PollReport &report);
+    void setState(State state, const QString &message = {});
+    void resetEngine();
+
+    std::unique_ptr<TransactionEngine> m_engine;
+    LinkUrl m_url;
+    State m_state = State::Disconnected;
+    QString m_message;
+    EngineCounters m_counters;
+    EngineCounters m_countersBefore; // a new engine restarts at zero; the status bar keeps counting
+    bool m_polling = false;
+};
+
+} // namespace mbscope

@@ -1,0 +1,379 @@
+#include "sessioncontroller.h"
+
+#include "link/connectionbar.h"
+#include "compose/rawrequesteditor.h"
+#include "compose/requestcomposer.h"
+#include "compose/savedrequests.h"
+
+#include "protocol/hextext.h"
+#include "session/sessionreader.h"
+#include "session/sessionwriter.h"
+#include "transport/linkurl.h"
+
+#include <QtCore/QAbstractItemModel>
+#include <QtCore/QDir>
+#include <QtCore/QFileInfo>
+#include <QtCore/QSettings>
+#include <QtGui/QAction>
+#include <QtGui/QKeySequence>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QFileDialog>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QMainWindow>
+#include <QtWidgets/QMenu>
+#include <QtWidgets/QMessageBox>
+#include <QtWidgets/QSpinBox>
+
+namespace mbscope {
+
+namespace {
+
+const QString kRecentKey = QStringLiteral("session/recent");
+
+// The poll interval and count a new composer has; a document without a poll gets them back.
+constexpr int kDefaultIntervalMs = 500;
+
+} // namespace
+
+SessionController::SessionController(QMainWindow *window, ConnectionBar *bar, RequestComposer *composer)
+    : QObject(window)
+    , m_window(window)
+    , m_bar(bar)
+    , m_composer(composer)
+{
+    m_prompt = [this](const QString &fileName) {
+        const QMessageBox::StandardButton answer = QMessageBox::warning(
+            m_window, tr("Unsaved changes"),
+            tr("The session %1 has changes that are not saved.").arg(fileName),
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+        if (answer == QMessageBox::Save)
+            return Choice::Save;
+        return answer == QMessageBox::Discard ? Choice::Discard : Choice::Cancel;
+    };
+    m_report = [this](const QString &path, const QStringList &problems) {
+        QMessageBox box(QMessageBox::Warning, tr("Session not opened"),
+                        tr("%1 was not opened; nothing was changed.").arg(QDir::toNativeSeparators(path)),
+                        QMessageBox::Ok, m_window);
+        box.setInformativeText(problems.mid(0, 8).join(QLatin1Char('\n')));
+        box.setDetailedText(problems.join(QLatin1Char('\n')));
+        box.exec();
+    };
+    m_chooser = [this](bool forSave) {
+        const QString filter = tr("mbscope sessions (*.mbscope.json *.json);;All files (*)");
+        return forSave ? QFileDialog::getSaveFileName(m_window, tr("Save session"), m_path, filter)
+                       : QFileDialog::getOpenFileName(m_window, tr("Open session"), QFileInfo(m_path).path(), filter);
+    };
+    m_clean = currentDocument();
+    m_freshTarget = m_clean.target;
+    watchWidgets();
+}
+
+void SessionController::addMenuActions(QMenu *menu)
+{
+    QAction *newAction = menu->addAction(tr("&New session"), this, [this] { newSession(); });
+    newAction->setShortcut(QKeySequence::New);
+    QAction *openAction = menu->addAction(tr("&Open session…"), this, [this] {
+        if (!maybeSave())
+            return;
+        const QString path = m_chooser(false);
+        if (!path.isEmpty())
+            open(path);
+    });
+    openAction->setShortcut(QKeySequence::Open);
+    m_recentMenu = menu->addMenu(tr("Open &recent"));
+    connect(m_recentMenu, &QMenu::aboutToShow, this, &SessionController::rebuildRecentMenu);
+    rebuildRecentMenu();
+    menu->addSeparator();
+    QAction *saveAction = menu->addAction(tr("&Save session"), this, [this] { save(); });
+    saveAction->setShortcut(QKeySequence::Save);
+    QAction *saveAsAction = menu->addAction(tr("Save session &as…"), this, [this] {
+        const QString path = m_chooser(true);
+        if (!path.isEmpty())
+            saveAs(path);
+    });
+    saveAsAction->setShortcut(QKeySequence::SaveAs);
+}
+
+// Any edit of a field that goes into the document re-checks the modified flag: comparing the
+// document the widgets make with the clean one is cheap and cannot miss a field.
+void SessionController::watchWidgets()
+{
+    for (QLineEdit *edit : m_bar->findChildren<QLineEdit *>())
+        connect(edit, &QLineEdit::textChanged, this, &SessionController::updateModified);
+    for (QSpinBox *spin : m_bar->findChildren<QSpinBox *>())
+        connect(spin, &QSpinBox::valueChanged, this, &SessionController::updateModified);
+    for (QComboBox *combo : m_bar->findChildren<QComboBox *>())
+        connect(combo, &QComboBox::currentIndexChanged, this, &SessionController::updateModified);
+    connect(m_composer->rawEditor(), &RawRequestEditor::bytesChanged, this, &SessionController::updateModified);
+    connect(m_composer->intervalSpin(), &QSpinBox::valueChanged, this, &SessionController::updateModified);
+    connect(m_composer->countSpin(), &QSpinBox::valueChanged, this, &SessionController::updateModified);
+    QAbstractItemModel *saved = m_composer->rawEditor()->savedCombo()->model();
+    connect(saved, &QAbstractItemModel::rowsInserted, this, &SessionController::updateModified);
+    connect(saved, &QAbstractItemModel::rowsRemoved, this, &SessionController::updateModified);
+    connect(saved, &QAbstractItemModel::modelReset, this, &SessionController::updateModified);
+}
+
+SessionDocument SessionController::currentDocument() const
+{
+    SessionDocument d = m_base;
+    d.target.url.clear();
+    if (const std::optional<LinkUrl> url = m_bar->url())
+        d.target.url = url->toString();
+    d.target.timeoutMs = m_bar->timeoutMs() > 0 ? m_bar->timeoutMs() : -1;
+    d.requests.clear();
+    d.poll.reset();
+    const QString current = m_composer->rawEditor()->text().trimmed();
+    // The composer shows the opened document's polled request: unchanged, it keeps its name and
+    // the poll its list.
+    const SessionRequest *polled = basePolledRequest();
+    const bool samePolled = polled && HexText::parse(polled->hex).bytes == m_composer->rawEditor()->bytes();
+    if (!current.isEmpty() && m_composer->rawEditor()->isValid()) {
+        SessionRequest request;
+        request.name = QString::fromLatin1(kComposerRequest);
+        request.hex = current;
+        if (samePolled)
+            request = *polled;
+        d.requests.append(request);
+        // A poll "until stopped" has no end a document can hold (a saved poll ends): only the
+        // interval and count of a counted poll are kept.
+        if (m_composer->countSpin()->value() > 0) {
+            SessionPoll poll;
+            if (samePolled)
+                poll = *m_base.poll;
+            else
+                poll.requests = {request.name};
+            poll.intervalMs = m_composer->intervalSpin()->value();
+            poll.count = quint64(m_composer->countSpin()->value());
+            d.poll = poll;
+        }
+    }
+    const QList<SavedRequest> savedList = m_composer->rawEditor()->savedRequests();
+    auto savedNamed = [&savedList](const QString &name) -> const SavedRequest * {
+        for (const SavedRequest &saved : savedList) {
+            if (saved.name == name)
+                return &saved;
+        }
+        return nullptr;
+    };
+    // The opened document's requests keep their place (its plan may name them); exact bytes take
+    // the composer list's text, forms and completed PDUs stay as read.
+    for (SessionRequest request : m_base.requests) {
+        if (request.name == QLatin1String(kComposerRequest) || d.request(request.name))
+            continue;
+        const SavedRequest *saved = savedNamed(request.name);
+        if (saved && request.kind == SessionRequest::Kind::Hex && !request.complete)
+            request.hex = saved->hex;
+        if (request.hexBytes().ok() || request.kind == SessionRequest::Kind::Form)
+            d.requests.append(request);
+    }
+    for (const SavedRequest &saved : savedList) {
+        if (saved.name == QLatin1String(kComposerRequest) || d.request(saved.name))
+            continue; // the document's names are unique; the composer's request keeps its name
+        SessionRequest request;
+        request.name = saved.name;
+        request.hex = saved.hex;
+        if (request.hexBytes().ok())
+            d.requests.append(request);
+    }
+    return d;
+}
+
+const SessionRequest *SessionController::basePolledRequest() const
+{
+    if (!m_base.poll || m_base.poll->requests.isEmpty())
+        return nullptr;
+    const SessionRequest *request = m_base.request(m_base.poll->requests.constFirst());
+    return request && request->kind == SessionRequest::Kind::Hex && !request->complete ? request : nullptr;
+}
+
+void SessionController::apply(const SessionDocument &document)
+{
+    m_applying = true;
+    if (!document.target.url.isEmpty()) {
+        if (std::optional<LinkUrl> url = LinkUrl::parse(document.target.url).url) {
+            if (url->responseTimeoutMs < 0 && document.target.timeoutMs > 0)
+                url->responseTimeoutMs = document.target.timeoutMs;
+            m_bar->setUrl(*url);
+            m_composer->setFraming(url->framing());
+        }
+    }
+    // The named requests join the composer's list (kept in QSettings for every window): a name
+    // the list has already takes the document's bytes.
+    QList<SavedRequest> saved = SavedRequests::load();
+    bool savedChanged = false;
+    for (const SessionRequest &request : document.requests) {
+        if (request.name == QLatin1String(kComposerRequest) || request.kind != SessionRequest::Kind::Hex
+            || request.complete)
+            continue;
+        const SavedRequest entry{request.name, request.hex};
+        const auto it = std::find_if(saved.begin(), saved.end(), [&](const SavedRequest &s) { return s.name == entry.name; });
+        if (it == saved.end())
+            saved.append(entry);
+        else if (*it != entry)
+            *it = entry;
+        else
+            continue;
+        savedChanged = true;
+    }
+    if (savedChanged) {
+        SavedRequests::store(saved);
+        m_composer->rawEditor()->reloadSavedRequests();
+    }
+    const SessionRequest *current = document.request(QString::fromLatin1(kComposerRequest));
+    if (!current && &document == &m_base)
+        current = basePolledRequest();
+    m_composer->setRequestText(current ? current->hex : QString());
+    m_composer->showRawTab();
+    m_composer->intervalSpin()->setValue(document.poll ? int(document.poll->intervalMs) : kDefaultIntervalMs);
+    m_composer->countSpin()->setValue(document.poll ? int(document.poll->count) : 0);
+    m_applying = false;
+}
+
+bool SessionController::open(const QString &path)
+{
+    const SessionLoadResult loaded = SessionReader::load(path);
+    if (!loaded.ok()) {
+        QStringList problems;
+        for (const ProfileProblem &problem : loaded.problems) {
+            if (!problem.path.isEmpty())
+                problems << QStringLiteral("%1: %2").arg(problem.path, problem.message);
+            else if (problem.line > 0)
+                problems << tr("line %1, column %2: %3").arg(problem.line).arg(problem.column).arg(problem.message);
+            else
+                problems << problem.message;
+        }
+        report(path, problems);
+        return false;
+    }
+    m_lastProblems.clear();
+    m_base = *loaded.document;
+    apply(m_base);
+    setPath(QFileInfo(path).absoluteFilePath());
+    addRecent(m_path);
+    markClean();
+    return true;
+}
+
+bool SessionController::openWithPrompt(const QString &path)
+{
+    return maybeSave() && open(path);
+}
+
+bool SessionController::save()
+{
+    if (m_path.isEmpty()) {
+        const QString path = m_chooser(true);
+        return !path.isEmpty() && saveAs(path);
+    }
+    return saveAs(m_path);
+}
+
+bool SessionController::saveAs(const QString &path)
+{
+    const SessionDocument document = currentDocument();
+    QString error;
+    if (!SessionWriter::save(document, path, &error)) {
+        report(path, {error});
+        return false;
+    }
+    m_lastProblems.clear();
+    setPath(QFileInfo(path).absoluteFilePath());
+    addRecent(m_path);
+    m_clean = document;
+    updateModified();
+    return true;
+}
+
+bool SessionController::newSession()
+{
+    if (!maybeSave())
+        return false;
+    SessionDocument fresh;
+    fresh.target = m_freshTarget;
+    m_base = SessionDocument();
+    apply(fresh);
+    setPath(QString());
+    markClean();
+    return true;
+}
+
+bool SessionController::maybeSave()
+{
+    if (!m_modified)
+        return true;
+    switch (m_prompt(m_path.isEmpty() ? tr("(untitled)") : QFileInfo(m_path).fileName())) {
+    case Choice::Save:
+        return save();
+    case Choice::Discard:
+        return true;
+    case Choice::Cancel:
+        break;
+    }
+    return false;
+}
+
+void SessionController::markClean()
+{
+    m_clean = currentDocument();
+    updateModified();
+}
+
+void SessionController::updateModified()
+{
+    if (m_applying)
+        return;
+    const bool modified = currentDocument() != m_clean;
+    const bool changed = modified != m_modified;
+    m_modified = modified;
+    if (changed)
+        Q_EMIT titleChanged(windowTitle());
+}
+
+QString SessionController::windowTitle() const
+{
+    const QString star = m_modified ? QStringLiteral("*") : QString();
+    if (m_path.isEmpty())
+        return m_modified ? tr("untitled session%1 — mbscope").arg(star) : QStringLiteral("mbscope");
+    return tr("%1%2 — mbscope").arg(QFileInfo(m_path).fileName(), star);
+}
+
+void SessionController::setPath(const QString &path)
+{
+    m_path = path;
+    Q_EMIT titleChanged(windowTitle());
+}
+
+void SessionController::report(const QString &path, const QStringList &problems)
+{
+    m_lastProblems = problems;
+    m_report(path, problems);
+}
+
+QStringList SessionController::recentFiles() const
+{
+    return QSettings().value(kRecentKey).toStringList();
+}
+
+void SessionController::addRecent(const QString &path)
+{
+    QStringList recent = recentFiles();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent)
+        recent.removeLast();
+    QSettings().setValue(kRecentKey, recent);
+}
+
+void SessionController::rebuildRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList recent = recentFiles();
+    for (const QString &path : recent) {
+        QAction *action = m_recentMenu->addAction(QFileInfo(path).fileName(), this, [this, path] { openWithPrompt(path); });
+        action->setToolTip(QDir::toNativeSeparators(path));
+    }
+    if (recent.isEmpty())
+        m_recentMenu->addAction(tr("(none yet)"))->setEnabled(false);
+}
+
+} // namespace mbscope

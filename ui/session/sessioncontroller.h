@@ -1,0 +1,104 @@
+#pragma once
+
+#include "session/sessiondocument.h"
+#include "json/profileproblem.h"
+
+#include <QtCore/QObject>
+#include <QtCore/QString>
+#include <QtCore/QStringList>
+
+#include <functional>
+
+class QMainWindow;
+class QMenu;
+
+namespace mbscope {
+
+class ConnectionBar;
+class RequestComposer;
+
+// The window's session file: New, Open, Save, Save As and Open Recent. A session holds what the
+// widgets show (the connection bar's target and timeout, the composer's request, its poll
+// interval and count, the named requests); the document is made from the widgets when saved and
+// put back into them when opened. What the window does not show (the test plan, the profile, a
+// form request, the capture) is written back as it was read. Modified means the widgets differ from
+// what was last saved or opened. Every question to the user (save changes? which file? what was
+// wrong in it?) goes through a replaceable function, so tests answer without a modal dialog.
+class SessionController : public QObject
+{
+    Q_OBJECT
+public:
+    enum class Choice : quint8 { Save, Discard, Cancel };
+    // Asked before the session's changes would be lost; fileName is what the title shows.
+    using ChangesPrompt = std::function<Choice(const QString &fileName)>;
+    // Told why a file was not opened (or not saved): every problem with its JSON path.
+    using ProblemReport = std::function<void(const QString &path, const QStringList &problems)>;
+    // Asked for a file: forSave true for Save As. Empty: the user cancelled.
+    using FileChooser = std::function<QString(bool forSave)>;
+
+    static constexpr int kMaxRecent = 8;
+    // The name the composer's current request has in the document (the poll sends it).
+    static constexpr const char *kComposerRequest = "composer";
+
+    SessionController(QMainWindow *window, ConnectionBar *bar, RequestComposer *composer);
+
+    // New, Open…, Open Recent, Save, Save As… into menu.
+    void addMenuActions(QMenu *menu);
+
+    [[nodiscard]] SessionDocument currentDocument() const;
+    [[nodiscard]] bool isModified() const { return m_modified; }
+    [[nodiscard]] QString filePath() const { return m_path; }
+    [[nodiscard]] QStringList recentFiles() const;
+    // The problems of the last open or save that failed ("requests[0].hex: ...").
+    [[nodiscard]] QStringList lastProblems() const { return m_lastProblems; }
+    // The title the window shows: "bench.mbscope.json* — mbscope", "mbscope" for a fresh window.
+    [[nodiscard]] QString windowTitle() const;
+
+    void setChangesPrompt(ChangesPrompt prompt) { m_prompt = std::move(prompt); }
+    void setProblemReport(ProblemReport report) { m_report = std::move(report); }
+    void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
+
+    // Opens path: false (the problems reported, the widgets untouched) when it cannot be read.
+    // Does not ask about unsaved changes: openWithPrompt does.
+    bool open(const QString &path);
+    bool openWithPrompt(const QString &path);
+    bool save();
+    bool saveAs(const QString &path);
+    // A fresh untitled session (target and request as a new window has them), after asking.
+    bool newSession();
+    // Asks about unsaved changes; true when the caller may go on (saved, discarded, or none).
+    bool maybeSave();
+    // What the widgets show now is the session's clean state (after the window set them up).
+    void markClean();
+
+Q_SIGNALS:
+    void titleChanged(const QString &title);
+
+private:
+    void watchWidgets();
+    void updateModified();
+    void apply(const SessionDocument &document);
+    // The opened document's first polled request, when it is exact bytes the composer can show.
+    [[nodiscard]] const SessionRequest *basePolledRequest() const;
+    void addRecent(const QString &path);
+    void rebuildRecentMenu();
+    void setPath(const QString &path);
+    void report(const QString &path, const QStringList &problems);
+
+    QMainWindow *m_window;
+    ConnectionBar *m_bar;
+    RequestComposer *m_composer;
+    QMenu *m_recentMenu = nullptr;
+    QString m_path;
+    SessionDocument m_clean;
+    SessionDocument m_base; // the opened document: what the window does not show (plan, profile, ...) is saved back as read
+    SessionTarget m_freshTarget; // what New puts back: the connection bar of a new window
+    bool m_modified = false;
+    bool m_applying = false;
+    QStringList m_lastProblems;
+    ChangesPrompt m_prompt;
+    ProblemReport m_report;
+    FileChooser m_chooser;
+};
+
+} // namespace mbscope

@@ -1,0 +1,68 @@
+#include "linkstatuswidget.h"
+
+#include "common/severitystyle.h"
+
+#include <QtCore/QLocale>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+
+namespace mbscope {
+
+LinkStatusWidget::LinkStatusWidget(QWidget *parent)
+    : QWidget(parent)
+    , m_stateLabel(new QLabel(this))
+    , m_countersLabel(new QLabel(this))
+{
+    m_stateLabel->setObjectName(QStringLiteral("linkStateLabel"));
+    m_countersLabel->setObjectName(QStringLiteral("linkCountersLabel"));
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_stateLabel);
+    layout->addSpacing(16);
+    layout->addWidget(m_countersLabel);
+    setState(LinkController::State::Disconnected, {});
+    setCounters({});
+}
+
+void LinkStatusWidget::setState(LinkController::State state, const QString &message)
+{
+    QString word;
+    QColor colour = palette().color(QPalette::WindowText);
+    switch (state) {
+    case LinkController::State::Disconnected: word = tr("Not connected"); break;
+    case LinkController::State::Ready: word = tr("Ready"); colour = SeverityStyle::textColor(Severity::Info); break;
+    case LinkController::State::Connected: word = tr("Connected"); colour = QColor(0x1b, 0x7f, 0x2a); break;
+    case LinkController::State::Failed: word = tr("Link failed"); colour = SeverityStyle::textColor(Severity::Error); break;
+    }
+    // The state word is coloured; the detail (target or the link's words) stays readable text.
+    const QString detail = state == LinkController::State::Disconnected ? QString() : message;
+    m_stateLabel->setText(QStringLiteral("<b style=\"color:%1\">\u25CF %2</b>%3")
+                              .arg(colour.name(), word.toHtmlEscaped(),
+                                   detail.isEmpty() ? QString() : QStringLiteral("&nbsp; ") + detail.toHtmlEscaped()));
+    m_stateLabel->setToolTip(detail);
+}
+
+void LinkStatusWidget::setCounters(const EngineCounters &counters)
+{
+    const QLocale locale;
+    QString text = tr("TX %1 B  RX %2 B  \u00B7  %3")
+                       .arg(locale.toString(counters.bytesOut), locale.toString(counters.bytesIn),
+                            counters.requestsSent == 1 ? tr("1 request")
+                                                       : tr("%1 requests").arg(locale.toString(counters.requestsSent)));
+    if (counters.linkErrors > 0)
+        text += counters.linkErrors == 1 ? tr("  \u00B7  1 link error")
+                                         : tr("  \u00B7  %1 link errors").arg(locale.toString(counters.linkErrors));
+    m_countersLabel->setText(text);
+}
+
+QString LinkStatusWidget::stateText() const
+{
+    return m_stateLabel->text();
+}
+
+QString LinkStatusWidget::countersText() const
+{
+    return m_countersLabel->text();
+}
+
+} // namespace mbscope

@@ -1,0 +1,404 @@
+#include "mainwindow.h"
+
+#include "analysis/analysisdock.h"
+#include "common/appicon.h"
+#include "link/connectionbar.h"
+#include "decode/decodepanel.h"
+#include "analysis/latencyanalysis.h"
+#include "link/linkcontroller.h"
+#include "linkstatuswidget.h"
+#include "common/noticebanner.h"
+#include "preferencesdialog.h"
+#include "compose/rawrequesteditor.h"
+#include "registers/registertable.h"
+#include "session/replaycontroller.h"
+#include "compose/requestcomposer.h"
+#include "compose/savedrequests.h"
+#include "session/sessioncontroller.h"
+#include "sim/simulatorpanel.h"
+#include "sessiontools.h"
+#include "traffic/trafficmodel.h"
+#include "traffic/trafficmonitor.h"
+#include "decode/transactionview.h"
+#include "analysis/trendpanels.h"
+
+#include "protocol/adubuilder.h"
+
+#include <QtCore/QCoreApplication>
+#include <QtCore/QSettings>
+#include <QtGui/QCloseEvent>
+#include <QtGui/QAction>
+#include <QtGui/QKeySequence>
+#include <QtWidgets/QApplication>
+#include <QtWidgets/QDockWidget>
+#include <QtWidgets/QMenuBar>
+#include <QtWidgets/QMessageBox>
+#include <QtWidgets/QPlainTextEdit>
+#include <QtWidgets/QSplitter>
+#include <QtWidgets/QStatusBar>
+#include <QtWidgets/QTabWidget>
+#include <QtWidgets/QVBoxLayout>
+
+namespace mbscope {
+
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent)
+    , m_controller(new LinkController(this))
+    , m_simulator(new EmbeddedSimulator(this))
+{
+    setWindowTitle(QStringLiteral("mbscope"));
+    setWindowIcon(applicationIcon());
+    if (QApplication::windowIcon().isNull())
+        QApplication::setWindowIcon(windowIcon()); // dialogs and other windows
+    buildUi();
+    buildDocks();
+    connectPanels();
+    connectDocks();
+    m_session = new SessionController(this, m_connectionBar, m_composer);
+    connect(m_session, &SessionController::titleChanged, this, &QMainWindow::setWindowTitle);
+    // Replay and test plans: the Session menu and the Replay and Test plan docks beside Traffic.
+    m_sessionTools = new SessionTools(this, m_controller, m_session, m_traffic, m_trafficDock);
+    // The Latency histogram and Compare tabs of the Analysis dock; an opened capture is shown there too.
+    m_latency = new LatencyAnalysis(m_analysis, m_controller, this);
+    connect(m_sessionTools->replay(), &ReplayController::captureAnalysed, m_latency, &LatencyAnalysis::showTransactions);
+    // Latency over time, Register trends and Sweep tabs; a sweep polls the composer's request.
+    m_trends = new TrendPanels(m_analysis, m_controller, m_registers, [this] { return m_composer->bytes(); }, this);
+    createMenus();
+    statusBar()->showMessage(tr("Ready"), 3000);
+    resize(1400, 900);
+}
+
+MainWindow::~MainWindow()
+{
+    // The engine's link goes first, so the simulator does not log a client vanishing mid-request.
+    delete m_controller;
+    m_controller = nullptr;
+    m_simulator->stop();
+}
+
+void MainWindow::buildUi()
+{
+    m_connectionBar = new ConnectionBar(this);
+    m_connectionBar->setObjectName(QStringLiteral("connectionBar"));
+    m_banner = new NoticeBanner(this);
+    m_composer = new RequestComposer(this);
+    m_composer->setObjectName(QStringLiteral("requestComposer"));
+    m_answerView = new TransactionView(this);
+    m_answerView->setObjectName(QStringLiteral("answerView"));
+    m_decodePanel = new DecodePanel(this);
+    m_decodePanel->setObjectName(QStringLiteral("decodePanel"));
+
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("viewTabs"));
+    m_tabs->setDocumentMode(true);
+    m_tabs->addTab(m_answerView, tr("&Answer"));
+    m_tabs->addTab(m_decodePanel, tr("&Decode any frame"));
+
+    m_splitter = new QSplitter(Qt::Horizontal, this);
+    m_splitter->addWidget(m_composer);
+    m_splitter->addWidget(m_tabs);
+    m_splitter->setStretchFactor(0, 0);
+    m_splitter->setStretchFactor(1, 1);
+    m_splitter->setSizes({470, 930});
+    m_splitter->setChildrenCollapsible(false);
+
+    auto *central = new QWidget(this);
+    auto *layout = new QVBoxLayout(central);
+    layout->setContentsMargins(6, 4, 6, 4);
+    layout->addWidget(m_connectionBar);
+    layout->addWidget(m_banner);
+    layout->addWidget(m_splitter, 1);
+    setCentralWidget(central);
+
+    m_linkStatus = new LinkStatusWidget(this);
+    statusBar()->addPermanentWidget(m_linkStatus);
+
+    m_composer->setFraming(m_connectionBar->framing());
+    m_composer->setUnitId(m_connectionBar->unitId());
+}
+
+void MainWindow::connectPanels()
+{
+    ConnectionBar *bar = m_connectionBar;
+    LinkController *link = m_controller;
+    connect(bar, &ConnectionBar::connectRequested, link, &LinkController::connectTo);
+    connect(bar, &ConnectionBar::disconnectRequested, link, &LinkController::disconnectLink);
+    connect(bar, &ConnectionBar::framingChanged, m_composer, &RequestComposer::setFraming);
+    connect(bar, &ConnectionBar::unitIdChanged, m_composer, &RequestComposer::setUnitId);
+    connect(m_composer, &RequestComposer::unitIdSeen, bar, &ConnectionBar::setUnitId);
+
+    connect(link, &LinkController::stateChanged, this, [this, bar](LinkController::State state, const QString &message) {
+        const bool connected = state != LinkController::State::Disconnected;
+        bar->setConnected(connected);
+        // The traffic list names the link its frames travel on (set when the target is, before
+        // the first request: Connected comes only once the link answered).
+        if (state == LinkController::State::Ready)
+            m_traffic->model()->setCurrentLink(m_controller->url().toString());
+        m_composer->setLinkReady(connected);
+        m_linkStatus->setState(state, message);
+        // The banner speaks of the simulator only while the window is connected to it.
+        if (m_simulator->isRunning() && m_banner->isVisible()) {
+            if (state == LinkController::State::Disconnected)
+                m_banner->showNotice(tr("Disconnected. The built-in simulator still answers on <code>%1</code>: press "
+                                        "<b>Connect</b> to use it again, or choose a real device's link type, host "
+                                        "and port (or serial port) first.")
+                                         .arg(m_simulator->started().url.toString().toHtmlEscaped()));
+            else if (m_controller->url().port != m_simulator->started().url.port
+                     || m_controller->url().kind != m_simulator->started().url.kind)
+                m_banner->hide();
+        }
+        if (state == LinkController::State::Failed)
+            bar->showLinkFailure(message);
+        else if (state == LinkController::State::Connected) {
+            bar->clearError();
+            bar->addRecent(m_controller->url());
+        }
+    });
+    connect(link, &LinkController::countersChanged, m_linkStatus, &LinkStatusWidget::setCounters);
+    connect(link, &LinkController::pollingChanged, m_composer, &RequestComposer::setPolling);
+    connect(link, &LinkController::latestTransaction, this, [this](const Transaction &transaction) {
+        m_answerView->showTransaction(transaction, m_controller->url().framing());
+    });
+    connect(link, &LinkController::pollFinished, this, [this](const PollReport &report) {
+        m_answerView->flush();
+        statusBar()->showMessage(LinkController::describe(report), 15000);
+    });
+
+    connect(m_composer, &RequestComposer::sendRequested, this, [this](const QByteArray &bytes) {
+        m_tabs->setCurrentWidget(m_answerView);
+        m_controller->send(bytes);
+    });
+    connect(m_composer, &RequestComposer::pollRequested, this, [this](const QByteArray &bytes, int intervalMs, quint64 count) {
+        m_tabs->setCurrentWidget(m_answerView);
+        m_controller->startPoll(bytes, intervalMs, count);
+    });
+    connect(m_composer, &RequestComposer::stopPollRequested, link, &LinkController::stopPoll);
+}
+
+void MainWindow::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    if (!m_fitted) {
+        m_fitted = true;
+        fitPanelsToWindow();
+    }
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    if (!m_session->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    saveLayout();
+    QMainWindow::closeEvent(event);
+}
+
+bool MainWindow::restoreLayout()
+{
+    const QSettings settings;
+    const QByteArray geometry = settings.value(QStringLiteral("window/geometry")).toByteArray();
+    const QByteArray state = settings.value(QStringLiteral("window/state")).toByteArray();
+    const bool geometryRestored = !geometry.isEmpty() && restoreGeometry(geometry);
+    m_layoutRestored = !state.isEmpty() && restoreState(state);
+    return geometryRestored || m_layoutRestored;
+}
+
+void MainWindow::saveLayout() const
+{
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+}
+
+// The composer needs about 450 px for its poll row; the answer gets the rest. The docks take a
+// bit over a quarter of the height: enough rows of traffic to follow a poll, the answer's two
+// trees keep most of it.
+void MainWindow::fitPanelsToWindow()
+{
+    const int composerWidth = qBound(420, width() / 3, 520);
+    m_splitter->setSizes({composerWidth, qMax(200, m_splitter->width() - composerWidth)});
+    if (!m_layoutRestored)
+        resizeDocks({m_trafficDock}, {qBound(160, height() * 28 / 100, 320)}, Qt::Vertical);
+}
+
+void MainWindow::buildDocks()
+{
+    setDockOptions(dockOptions() | QMainWindow::AllowTabbedDocks);
+    m_traffic = new TrafficMonitor(this);
+    m_traffic->setObjectName(QStringLiteral("trafficMonitor"));
+    m_trafficDock = new QDockWidget(tr("Traffic"), this);
+    m_trafficDock->setObjectName(QStringLiteral("trafficDock"));
+    m_trafficDock->setWidget(m_traffic);
+    addDockWidget(Qt::BottomDockWidgetArea, m_trafficDock);
+
+    m_registers = new RegisterTable(this);
+    m_registers->setObjectName(QStringLiteral("registerTable"));
+    m_registersDock = new QDockWidget(tr("Registers"), this);
+    m_registersDock->setObjectName(QStringLiteral("registersDock"));
+    m_registersDock->setWidget(m_registers);
+    addDockWidget(Qt::BottomDockWidgetArea, m_registersDock);
+    tabifyDockWidget(m_trafficDock, m_registersDock);
+
+    m_analysis = new AnalysisDock(this);
+    m_analysis->setObjectName(QStringLiteral("analysis"));
+    m_analysisDock = new QDockWidget(tr("Analysis"), this);
+    m_analysisDock->setObjectName(QStringLiteral("analysisDock"));
+    m_analysisDock->setWidget(m_analysis);
+    addDockWidget(Qt::BottomDockWidgetArea, m_analysisDock);
+    tabifyDockWidget(m_registersDock, m_analysisDock);
+
+    m_simulatorPanel = new SimulatorPanel(this);
+    m_simulatorPanel->setObjectName(QStringLiteral("simulatorPanel"));
+    m_simulatorDock = new QDockWidget(tr("Simulator"), this);
+    m_simulatorDock->setObjectName(QStringLiteral("simulatorDock"));
+    m_simulatorDock->setWidget(m_simulatorPanel);
+    addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
+    tabifyDockWidget(m_analysisDock, m_simulatorDock);
+    m_trafficDock->raise();
+}
+
+void MainWindow::connectDocks()
+{
+    // Every transaction goes to the traffic list; a row picked there is shown in the Answer tab.
+    connect(m_controller, &LinkController::transactionsFinished, m_traffic, &TrafficMonitor::appendTransactions);
+    connect(m_controller, &LinkController::unmatchedFrames, m_traffic, &TrafficMonitor::appendLinkFrames);
+    connect(m_traffic, &TrafficMonitor::frameSelected, this, [this](const FrameExchange &exchange) {
+        m_tabs->setCurrentWidget(m_answerView);
+        m_answerView->showExchange(exchange);
+    });
+    // Answers to reads (a poll's, a single send's) fill the register table; its edits are sent.
+    connect(m_controller, &LinkController::latestTransaction, this, &MainWindow::showInRegisterTable);
+    connect(m_registers, &RegisterTable::writeRequested, this, &MainWindow::sendWrite);
+    // The first-run simulator is one of the simulator panel's entries.
+    connect(m_simulator, &EmbeddedSimulator::hostStarted, m_simulatorPanel, [this](SimulatorHost *host) {
+        m_simulatorPanel->addRunning(host, m_simulator->profileName(), true);
+    });
+}
+
+void MainWindow::showInRegisterTable(const Transaction &transaction)
+{
+    if (!transaction.isOk())
+        return;
+    const Framing framing = m_controller->url().framing();
+    const AduParts request = AduBuilder::parse(transaction.request, framing);
+    // Only reads (01-04, 17) have values to show; a write's answer would replace them with a complaint.
+    const quint8 function = request.pdu.isEmpty() ? 0 : quint8(request.pdu.at(0));
+    if ((function < 0x01 || function > 0x04) && function != 0x17)
+        return;
+    m_registers->showTransaction(transaction, framing);
+}
+
+void MainWindow::sendWrite(const QByteArray &pdu, const QString &description)
+{
+    if (!m_controller->isConnected()) {
+        statusBar()->showMessage(tr("Not sent (%1): connect first").arg(description), 5000);
+        return;
+    }
+    AduOptions options;
+    options.framing = m_controller->url().framing();
+    options.unitId = quint8(m_connectionBar->unitId());
+    options.transactionId = 1;
+    m_controller->send(AduBuilder::complete(pdu, options));
+    statusBar()->showMessage(tr("Sent: %1").arg(description), 5000);
+}
+
+bool MainWindow::startWithSimulator(const QString &url)
+{
+    const EmbeddedSimulator::Started started = m_simulator->start(QString::fromLatin1(kFirstRunProfile), url);
+    if (!started.ok) {
+        m_connectionBar->showError(started.error);
+        return false;
+    }
+    m_connectionBar->setUrl(started.url);
+    m_connectionBar->setUnitId(1);
+    m_composer->setFraming(started.url.framing());
+    const SavedRequest read = SavedRequests::rosRaoRead();
+    m_composer->rawEditor()->setText(read.hex);
+    m_composer->showRawTab();
+    m_composer->rawEditor()->editor()->setFocus();
+    if (const std::optional<LinkUrl> target = m_connectionBar->url())
+        m_controller->connectTo(*target);
+    if (const UnitProfile *unit = m_simulator->profile().unit(1)) {
+        m_registers->setProfile(*unit, m_simulator->profile().name);
+        m_trends->setProfile(*unit, m_simulator->profile().name);
+    }
+    m_session->markClean(); // the first run's target and request are where an untitled session starts
+
+    QString notice = tr("<b>Connected to mbscope's built-in simulator</b>, not to a device: a RosRao gamma detector "
+                        "(profile <code>%1</code>) answering on <code>%2</code>. Press <b>Send</b> to read its 22 "
+                        "registers. To talk to a real device, press <b>Disconnect</b>, choose its link type, host and "
+                        "port (or serial port) and press <b>Connect</b>.")
+                         .arg(QString::fromLatin1(kFirstRunProfile), started.url.toString().toHtmlEscaped());
+    if (!started.note.isEmpty())
+        notice += QStringLiteral("<br>") + started.note.toHtmlEscaped();
+    m_banner->showNotice(notice);
+    return true;
+}
+
+void MainWindow::createMenus()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    m_session->addMenuActions(file);
+    file->addSeparator();
+    // Closing the window (not quitting the application outright) asks about unsaved changes.
+    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+    quit->setMenuRole(QAction::QuitRole);
+
+    QMenu *request = menuBar()->addMenu(tr("&Request"));
+    request->addAction(m_composer->sendAction());
+    request->addAction(m_composer->pollAction());
+    request->addSeparator();
+    QAction *focusRaw = request->addAction(tr("&Edit raw bytes"), this, [this] {
+        m_composer->showRawTab();
+        m_composer->rawEditor()->editor()->setFocus();
+    });
+    focusRaw->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    QAction *form = request->addAction(tr("Build with the &form"), m_composer, &RequestComposer::showFormTab);
+    form->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+
+    m_sessionTools->addMenu(menuBar());
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_trafficDock->toggleViewAction());
+    view->addAction(m_registersDock->toggleViewAction());
+    view->addAction(m_analysisDock->toggleViewAction());
+    view->addAction(m_simulatorDock->toggleViewAction());
+    QAction *find = view->addAction(tr("&Find in traffic"), this, [this] {
+        m_trafficDock->show();
+        m_trafficDock->raise();
+        m_traffic->focusSearch();
+    });
+    find->setShortcut(QKeySequence::Find);
+
+    QMenu *tools = menuBar()->addMenu(tr("&Tools"));
+    QAction *preferences = tools->addAction(tr("&Preferences\u2026"), this, [this] {
+        PreferencesDialog dialog(this);
+        if (dialog.exec() == QDialog::Accepted && dialog.apply())
+            statusBar()->showMessage(tr("The new language is used when mbscope is started again."), 10000);
+    });
+    preferences->setMenuRole(QAction::PreferencesRole);
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    QAction *about = help->addAction(tr("&About mbscope"), this, &MainWindow::showAbout);
+    about->setMenuRole(QAction::AboutRole);
+}
+
+void MainWindow::showAbout()
+{
+    // mbscope links QCustomPlot, which is GPL-3.0; the whole program is therefore GPL-3.0-or-later.
+    QMessageBox::about(this, tr("About mbscope"),
+                       tr("<h3>mbscope %1</h3>"
+                          "<p>A bench for testing and analysing Modbus devices: send exactly the bytes "
+                          "you mean, see every field of the answer explained, measure how the device "
+                          "behaves.</p>"
+                          "<p>Licensed under the GNU General Public License, version 3 or (at your "
+                          "option) any later version (GPL-3.0-or-later). This program comes with "
+                          "ABSOLUTELY NO WARRANTY.</p>"
+                          "<p>Built with Qt %2 and QCustomPlot.</p>")
+                           .arg(QCoreApplication::applicationVersion().toHtmlEscaped(),
+                                QString::fromLatin1(qVersion())));
+}
+
+} // namespace mbscope
