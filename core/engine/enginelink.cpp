@@ -71,7 +71,7 @@ void EngineCore::onLinkError(const LinkError &error)
     QString problem = error.message;
     if (held > 0)
         problem += QStringLiteral(" (after %1 bytes of an unfinished answer)").arg(held);
-    if (wasOpening && m_inFlight.isEmpty())
+    if (wasOpening && m_scheduler.inFlight().isEmpty())
         failHead(problem);
     else
         failInFlight(problem);
@@ -93,12 +93,12 @@ void EngineCore::onClosed(const QString &reason)
     QString problem = QStringLiteral("%1: the link closed: %2").arg(m_url.toString(), reason);
     if (held > 0)
         problem += QStringLiteral(" (after %1 bytes of an unfinished answer)").arg(held);
-    if (!m_inFlight.isEmpty() || wasOpening) {
+    if (!m_scheduler.inFlight().isEmpty() || wasOpening) {
         ++m_counters.linkErrors;
         Q_EMIT linkMessage(problem);
     }
     resetFramer();
-    if (wasOpening && m_inFlight.isEmpty())
+    if (wasOpening && m_scheduler.inFlight().isEmpty())
         failHead(problem);
     else
         failInFlight(problem);
@@ -108,23 +108,16 @@ void EngineCore::onClosed(const QString &reason)
 
 void EngineCore::failInFlight(const QString &problem)
 {
-    while (!m_inFlight.isEmpty())
+    while (!m_scheduler.inFlight().isEmpty())
         finish(0, TransactionStatus::LinkError, problem);
 }
 
 void EngineCore::failHead(const QString &problem)
 {
-    if (m_queue.isEmpty())
+    if (!m_scheduler.hasQueued())
         return;
-    const Outgoing o = m_queue.takeFirst();
-    Transaction t;
-    t.id = o.id;
-    t.item = o.itemIndex;
-    t.attempt = o.attempt;
-    t.request = o.item.bytes;
-    t.status = TransactionStatus::LinkError;
-    t.problem = o.history + problem;
-    record(std::move(t), o.tag);
+    const InFlightRequest head = InFlightRequest::unsent(m_scheduler.takeHead());
+    record(head.toTransaction(TransactionStatus::LinkError, problem), head.out.tag);
 }
 
 } // namespace mbscope

@@ -1,7 +1,6 @@
 #include "enginecore.h"
 
 #include "protocol/framing.h"
-#include "protocol/rtuframer.h"
 #include "protocol/streamframer.h"
 #include "transport/monotonicclock.h"
 
@@ -46,15 +45,11 @@ void EngineCore::armSilence()
 
 void EngineCore::onSilence()
 {
-    if (m_framing.baud > 0) {
-        // Serial RTU: the framer itself checks that t3.5 has passed since the last byte
-        // (Serial Line V1.02, 2.5.1.1); a timer that fired early is armed again.
-        if (!static_cast<RtuFramer *>(m_framer.get())->onSilence(monotonicNowNs())) {
-            armSilence();
-            return;
-        }
-    } else {
-        m_framer->flushOnSilence();
+    // Serial RTU: the framer itself checks that t3.5 has passed since the last byte (Serial Line
+    // V1.02, 2.5.1.1); a timer that fired early is armed again.
+    if (!m_framer->onSilence(monotonicNowNs())) {
+        armSilence();
+        return;
     }
     processFramerOutput();
 }
@@ -122,24 +117,20 @@ void EngineCore::handleSkipped(const SkippedBytes &run, qint64 firstNs, qint64 l
     const bool cutByLoss = m_linkLost && run.reason == SkipReason::Incomplete;
     const bool rtuCandidate = !m_framing.delimited && m_framing.framing == Framing::Rtu && run.count() >= 4 && !cutByLoss
         && (run.reason == SkipReason::ChecksumMismatch || run.reason == SkipReason::Incomplete);
-    if (rtuCandidate) {
-        const FrameKeys keys = ResponseMatcher::keysOf(run.bytes, Framing::Rtu);
-        for (qsizetype i = 0; i < m_inFlight.size(); ++i) {
-            const Pending &p = m_inFlight.at(i);
-            if (p.out.item.broadcast || firstNs < p.writeStartNs || !ResponseMatcher::match(p.out.item, keys).matched())
-                continue;
-            ResponseVerdict::Result v = m_verdict->judge(run.bytes, p.sent);
-            if (v.status == TransactionStatus::Ok || v.status == TransactionStatus::Exception) {
-                v.status = TransactionStatus::Malformed;
-                v.problem = QStringLiteral("the answer's bytes could not be delimited as an RTU frame (%1)")
-                                .arg(QString::fromLatin1(skipReasonName(run.reason)));
-            }
-            logIncoming(run.bytes, firstNs, trafficVerdict(v.status), p.out.id);
-            finish(i, v.status, v.problem, run.bytes, firstNs, lastNs, v.exceptionCode);
-            return;
-        }
+    const qsizetype i = rtuCandidate ? m_router.routeSkipped(run.bytes, firstNs, m_scheduler.inFlight()) : -1;
+    if (i < 0) {
+        m_recorder->logIncoming(run.bytes, firstNs, TrafficVerdict::Garbage);
+        return;
     }
-    logIncoming(run.bytes, firstNs, TrafficVerdict::Garbage);
+    const InFlightRequest &p = m_scheduler.inFlight().at(i);
+    ResponseVerdict::Result v = m_verdict->judge(run.bytes, p.sent);
+    if (v.status == TransactionStatus::Ok || v.status == TransactionStatus::Exception) {
+        v.status = TransactionStatus::Malformed;
+        v.problem = QStringLiteral("the answer's bytes could not be delimited as an RTU frame (%1)")
+                        .arg(QString::fromLatin1(skipReasonName(run.reason)));
+    }
+    m_recorder->logIncoming(run.bytes, firstNs, trafficVerdict(v.status), p.out.id);
+    finish(i, v.status, v.problem, run.bytes, firstNs, lastNs, v.exceptionCode);
 }
 
 void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 lastNs)
@@ -149,147 +140,60 @@ void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 la
         // counts these bytes, not as a CRC error of a frame that never finished.
         ++m_counters.skippedRuns;
         m_counters.skippedBytes += quint64(frame.bytes.size());
-        logIncoming(frame.bytes, firstNs, TrafficVerdict::Garbage);
+        m_recorder->logIncoming(frame.bytes, firstNs, TrafficVerdict::Garbage);
         return;
     }
-    const FrameKeys keys = m_framing.delimited ? FrameKeys{} : ResponseMatcher::keysOf(frame.bytes, m_framing.framing);
-    // An answer cannot begin before its request was written: only requests written before the
-    // frame's first byte are candidates.
-    qsizetype candidate = -1;
-    int eligible = 0;
-    for (qsizetype i = 0; i < m_inFlight.size(); ++i) {
-        const Pending &p = m_inFlight.at(i);
-        if (firstNs < p.writeStartNs)
-            continue;
-        ++eligible;
-        if (candidate < 0)
-            candidate = i;
-        if (p.out.item.rule == MatchRule::Mbap && keys.valid && keys.transactionId == p.out.item.transactionId) {
-            candidate = i; // the transaction id names its request, whatever its place in the pipeline
-            eligible = 1;
-            break;
-        }
-    }
-    if (candidate >= 0 && eligible > 1 && m_inFlight.at(candidate).out.item.rule == MatchRule::Mbap)
-        candidate = -1; // several in flight and no transaction id matches: nobody's answer
-
-    if (candidate >= 0) {
-        const Pending &p = m_inFlight.at(candidate);
-        if (p.out.item.broadcast) {
-            const QString problem = QStringLiteral("an answer came to a broadcast (unit 0 is never answered: Serial Line V1.02, 2.1)");
-            logIncoming(frame.bytes, firstNs, TrafficVerdict::Unexpected, p.out.id);
-            finish(candidate, TransactionStatus::Unexpected, problem, frame.bytes, firstNs, lastNs);
-            return;
-        }
-        const ResponseMatcher::Result match = m_framing.delimited ? ResponseMatcher::Result{ResponseMatcher::Outcome::Match, {}}
-                                                                 : ResponseMatcher::match(p.out.item, keys);
-        if (match.matched()) {
-            answer(candidate, frame, firstNs, lastNs);
-            return;
-        }
-        if (duplicateFirst(keys) || tryLate(frame, keys, firstNs, lastNs)) {
-            if (m_duplicateSeen)
-                unsolicited(frame.bytes, firstNs);
-            return;
-        }
-        if (isDuplicate(keys)) {
-            ++m_counters.duplicateFrames;
-            unsolicited(frame.bytes, firstNs);
-            return;
-        }
-        logIncoming(frame.bytes, firstNs, TrafficVerdict::Unexpected, p.out.id);
-        finish(candidate, TransactionStatus::Unexpected, match.problem, frame.bytes, firstNs, lastNs);
+    ResponseRouter::Route route = m_router.route(m_router.keysOf(frame.bytes), firstNs, m_scheduler.inFlight());
+    using Kind = ResponseRouter::Route::Kind;
+    switch (route.kind) {
+    case Kind::Answer:
+        answer(route.index, frame, firstNs, lastNs);
         return;
-    }
-    if (duplicateFirst(keys) || tryLate(frame, keys, firstNs, lastNs)) {
-        if (m_duplicateSeen)
-            unsolicited(frame.bytes, firstNs);
+    case Kind::Unexpected:
+        m_recorder->logIncoming(frame.bytes, firstNs, TrafficVerdict::Unexpected, m_scheduler.inFlight().at(route.index).out.id);
+        finish(route.index, TransactionStatus::Unexpected, route.problem, frame.bytes, firstNs, lastNs);
         return;
-    }
-    if (isDuplicate(keys)) {
+    case Kind::Late:
+        recordLate(std::move(route.late), frame, firstNs, lastNs);
+        return;
+    case Kind::Duplicate:
         ++m_counters.duplicateFrames;
         unsolicited(frame.bytes, firstNs);
         return;
+    case Kind::Unsolicited:
+        unsolicited(frame.bytes, firstNs);
+        return;
     }
-    unsolicited(frame.bytes, firstNs);
-}
-
-bool EngineCore::duplicateFirst(const FrameKeys &keys)
-{
-    // On RTU and ASCII only unit and function code name an answer, so a second copy of the answer
-    // just received would also "match" any older timed-out request with the same keys. A serial
-    // exchange is strictly sequential: the copy of a newer answer is a duplicate, not a late
-    // answer to an older request. MBAP answers carry their transaction id and need no such rule.
-    m_duplicateSeen = false;
-    // Only when the latest request to end was answered: after a timeout the frame may well be
-    // that request's late answer.
-    const bool keyedById = m_framing.framing == Framing::Tcp || m_framing.framing == Framing::Udp;
-    if (keyedById || !m_lastEndAnswered || m_answered.isEmpty() || m_answered.last().rule == MatchRule::NextFrame
-        || !ResponseMatcher::match(m_answered.last(), keys).matched())
-        return false;
-    ++m_counters.duplicateFrames;
-    m_duplicateSeen = true;
-    return true;
 }
 
 void EngineCore::answer(qsizetype index, const StreamFrame &frame, qint64 firstNs, qint64 lastNs)
 {
-    const ResponseVerdict::Result v = m_verdict->judge(frame, m_inFlight.at(index).sent);
-    logIncoming(frame.bytes, firstNs, trafficVerdict(v.status), m_inFlight.at(index).out.id);
+    const InFlightRequest &p = m_scheduler.inFlight().at(index);
+    const ResponseVerdict::Result v = m_verdict->judge(frame, p.sent);
+    m_recorder->logIncoming(frame.bytes, firstNs, trafficVerdict(v.status), p.out.id);
     finish(index, v.status, v.problem, frame.bytes, firstNs, lastNs, v.exceptionCode);
 }
 
-bool EngineCore::tryLate(const StreamFrame &frame, const FrameKeys &keys, qint64 firstNs, qint64 lastNs)
+void EngineCore::recordLate(InFlightRequest late, const StreamFrame &frame, qint64 firstNs, qint64 lastNs)
 {
-    // The most recent timed-out request that this frame answers (and that was written before it).
-    for (qsizetype i = m_timedOut.size() - 1; i >= 0; --i) {
-        const Pending &p = m_timedOut.at(i);
-        if (firstNs < p.writeStartNs)
-            continue;
-        if (!m_framing.delimited && !ResponseMatcher::match(p.out.item, keys).matched())
-            continue;
-        const Pending late = m_timedOut.takeAt(i);
-        const ResponseVerdict::Result v = m_verdict->judge(frame, late.sent);
-        Transaction t;
-        t.id = late.out.id;
-        t.item = late.out.itemIndex;
-        t.attempt = late.out.attempt;
-        t.request = late.sent;
-        t.response = frame.bytes;
-        t.status = TransactionStatus::Late;
-        t.exceptionCode = v.exceptionCode;
-        t.sentNs = sentTime(late, firstNs);
-        t.firstByteNs = firstNs;
-        t.doneNs = lastNs;
-        t.transactionIdRewritten = late.rewritten;
-        t.problem = QStringLiteral("the answer came %1 ms after the request, %2 ms after its %3 ms timeout")
-                        .arg(msText(lastNs - t.sentNs), msText(lastNs - late.timedOutNs)).arg(late.out.item.timeoutMs);
-        if (v.status != TransactionStatus::Ok)
-            t.problem += QStringLiteral("; the answer itself: %1%2%3")
-                             .arg(transactionStatusName(v.status), v.problem.isEmpty() ? QString() : QStringLiteral(": "), v.problem);
-        logIncoming(frame.bytes, firstNs, TrafficVerdict::Late, late.out.id);
-        record(std::move(t), late.out.tag);
-        return true;
-    }
-    return false;
-}
-
-bool EngineCore::isDuplicate(const FrameKeys &keys) const
-{
-    if (m_framing.delimited || !keys.valid)
-        return false;
-    for (const RequestItem &item : m_answered) {
-        if (item.rule != MatchRule::NextFrame && ResponseMatcher::match(item, keys).matched())
-            return true;
-    }
-    return false;
+    const ResponseVerdict::Result v = m_verdict->judge(frame, late.sent);
+    // The request's earlier attempts were told with its timeout record; this one tells the answer.
+    late.out.history.clear();
+    const qint64 sentNs = late.sentTime(firstNs);
+    QString problem = QStringLiteral("the answer came %1 ms after the request, %2 ms after its %3 ms timeout")
+                          .arg(msText(lastNs - sentNs), msText(lastNs - late.timedOutNs)).arg(late.out.item.timeoutMs);
+    if (v.status != TransactionStatus::Ok)
+        problem += QStringLiteral("; the answer itself: %1%2%3")
+                       .arg(transactionStatusName(v.status), v.problem.isEmpty() ? QString() : QStringLiteral(": "), v.problem);
+    m_recorder->logIncoming(frame.bytes, firstNs, TrafficVerdict::Late, late.out.id);
+    record(late.toTransaction(TransactionStatus::Late, problem, frame.bytes, firstNs, lastNs, v.exceptionCode), late.out.tag);
 }
 
 void EngineCore::unsolicited(const QByteArray &bytes, qint64 firstNs)
 {
     ++m_counters.unsolicitedFrames;
-    logIncoming(bytes, firstNs, TrafficVerdict::Unsolicited);
-    scheduleBatch();
+    m_recorder->logIncoming(bytes, firstNs, TrafficVerdict::Unsolicited);
+    m_recorder->scheduleBatch();
 }
 
 } // namespace mbscope

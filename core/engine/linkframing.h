@@ -21,7 +21,7 @@ struct LinkFraming {
     // Quiet time after the last byte after which bytes the framer still holds are ended (RTU
     // only: t3.5 on serial lines, EngineOptions::streamSilenceMs over TCP); 0: never.
     qint64 silenceNs = 0;
-    int baud = 0;                   // serial RTU: for RtuFramer::onSilence
+    int baud = 0;                   // serial RTU: the framer waits out t3.5 (RtuFramer::onSilence)
 
     [[nodiscard]] static LinkFraming of(const LinkUrl &url, const EngineOptions &options);
     [[nodiscard]] std::unique_ptr<StreamFramer> createFramer(const LinkUrl &url) const;

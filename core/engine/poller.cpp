@@ -16,8 +16,8 @@ Poller::Poller(EngineCore *core, const PollSettings &settings, quint64 tag, QObj
     m_timer.setSingleShot(true);
     m_timer.setTimerType(Qt::PreciseTimer);
     connect(&m_timer, &QTimer::timeout, this, [this] { advance(false); });
-    m_core->addRecordListener(this);
-    m_listenedTo = m_core;
+    m_core->recorder()->addRecordListener(this);
+    m_listenedTo = m_core->recorder();
     m_run.intervalNs = settings.intervalNs;
     QStringList names;
     for (const RequestItem &item : settings.items)
@@ -140,7 +140,7 @@ void Poller::updateProgress(qint64 nowNs)
     p.elapsedNs = nowNs - m_startNs;
     p.ok = m_run.statistics.overall().ok();
     p.failed = m_run.statistics.overall().failed();
-    m_core->scheduleBatch();
+    m_core->recorder()->scheduleBatch();
 }
 
 void Poller::finish()

@@ -11,6 +11,7 @@
 namespace mbscope {
 
 class EngineCore;
+class EngineRecorder;
 struct Transaction;
 
 // One poll run in the engine's thread: the items submitted in cycles (PollSettings says how),
@@ -47,7 +48,7 @@ private:
     EngineCore *m_core;
     // The engine may go first (a sweep, and its poller, are the engine's children): only a
     // living engine is told that this listener leaves.
-    QPointer<EngineCore> m_listenedTo;
+    QPointer<EngineRecorder> m_listenedTo;
     PollSettings m_settings;
     quint64 m_tag;
     PollRun m_run;

@@ -42,7 +42,7 @@ void Sweep::startRun()
     if (m_stopping || m_next >= m_settings.intervalsNs.size()) {
         m_finished = true;
         m_core->progressState().polling = false;
-        m_core->flushBatch(); // every record reaches observers before the report
+        m_core->recorder()->flushBatch(); // every record reaches observers before the report
         Q_EMIT finished(m_report);
         return;
     }

@@ -21,9 +21,9 @@ TransactionEngine::TransactionEngine(QObject *parent)
     m_thread.setObjectName(QStringLiteral("mbscope engine"));
     m_core->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_core, &QObject::deleteLater);
-    connect(m_core, &EngineCore::transactionsFinished, this, &TransactionEngine::transactionsFinished);
-    connect(m_core, &EngineCore::unmatchedFrames, this, &TransactionEngine::unmatchedFrames);
-    connect(m_core, &EngineCore::progress, this, &TransactionEngine::progress);
+    connect(m_core->recorder(), &EngineRecorder::transactionsFinished, this, &TransactionEngine::transactionsFinished);
+    connect(m_core->recorder(), &EngineRecorder::unmatchedFrames, this, &TransactionEngine::unmatchedFrames);
+    connect(m_core->recorder(), &EngineRecorder::progress, this, &TransactionEngine::progress);
     connect(m_core, &EngineCore::linkMessage, this, &TransactionEngine::linkMessage);
     // The engine thread's own dispatcher, lighter per turn than Qt's (see EngineEventDispatcher).
     m_thread.setEventDispatcher(new EngineEventDispatcher);
@@ -61,6 +61,11 @@ void TransactionEngine::setTrafficLog(TrafficLog *log)
     QMetaObject::invokeMethod(m_core, [core = m_core, log] { core->setTrafficLog(log); }, Qt::BlockingQueuedConnection);
 }
 
+void TransactionEngine::flushTrafficLog()
+{
+    QMetaObject::invokeMethod(m_core, [core = m_core] { core->recorder()->flushLog(); }, Qt::BlockingQueuedConnection);
+}
+
 quint64 TransactionEngine::send(const RequestItem &item)
 {
     const quint64 id = m_core->reserveId();
@@ -79,10 +84,10 @@ std::optional<Transaction> TransactionEngine::sendAndWait(const RequestItem &ite
     // would follow only when due (EngineOptions::batchIntervalMs), which a plan's back-to-back
     // sends would wait out every time. So the batch is flushed now, and the wait ends when it
     // arrives: whoever watches transactionsFinished has the transaction when this returns.
-    const auto recordedConnection = connect(m_core, &EngineCore::recorded, &loop, [&](const Transaction &t, quint64) {
+    const auto recordedConnection = connect(m_core->recorder(), &EngineRecorder::recorded, &loop, [&](const Transaction &t, quint64) {
         if (t.id == id && t.status != TransactionStatus::Late) {
             result = t;
-            QMetaObject::invokeMethod(m_core, &EngineCore::flushBatch, Qt::QueuedConnection);
+            QMetaObject::invokeMethod(m_core->recorder(), &EngineRecorder::flushBatch, Qt::QueuedConnection);
         }
     });
     const auto batchConnection = connect(this, &TransactionEngine::transactionsFinished, &loop,

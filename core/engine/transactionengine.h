@@ -52,6 +52,8 @@ public:
     // Every frame in and out and every transaction go to the log; it is used from the engine
     // thread from now on (until setTrafficLog(nullptr) returns), so it must outlive that.
     void setTrafficLog(TrafficLog *log);
+    // Writes the traffic log's pending journal batch now (waits for the engine thread).
+    void flushTrafficLog();
 
     // Queues one request; returns the id its Transaction will carry (Transaction::id).
     quint64 send(const RequestItem &item);

@@ -38,7 +38,7 @@ public:
     //
     // Flushes when t3.5 has passed since the last byte was fed (needs a baud rate and timestamps);
     // without them it flushes at once. Returns whether it flushed.
-    bool onSilence(qint64 nowNs);
+    bool onSilence(qint64 nowNs) override;
     void setBaudRate(int baud) { m_baud = baud; }
     [[nodiscard]] int baudRate() const { return m_baud; }
 

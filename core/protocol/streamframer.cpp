@@ -47,6 +47,13 @@ void StreamFramer::flushOnSilence()
     compact();
 }
 
+bool StreamFramer::onSilence(qint64 nowNs)
+{
+    Q_UNUSED(nowNs);
+    flushOnSilence();
+    return true;
+}
+
 void StreamFramer::flushPending()
 {
     if (pendingSize() > 0)

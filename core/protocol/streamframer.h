@@ -22,6 +22,9 @@ public:
     // The link was quiet (RTU: t3.5; others: a timeout or a closed connection). Pending bytes are
     // reported as Incomplete, except that RtuFramer may emit them as a frame (see there).
     void flushOnSilence();
+    // The link has been quiet since the last byte, at nowNs: flushes, unless the framing says
+    // the silence is not long enough yet (RtuFramer with a baud rate: t3.5). Whether it flushed.
+    virtual bool onSilence(qint64 nowNs);
     // Forget pending bytes and queued output; stream offsets start again at 0 (a new connection).
     void reset();
 

@@ -98,13 +98,9 @@ void SimSerialEndpoint::onReadyRead()
 
 void SimSerialEndpoint::onSilence()
 {
-    if (auto *rtu = dynamic_cast<RtuFramer *>(m_framer.get())) {
-        if (!rtu->onSilence(monotonicNowNs())) {
-            m_silence.start(1); // the timer fired a little early
-            return;
-        }
-    } else {
-        m_framer->flushOnSilence();
+    if (!m_framer->onSilence(monotonicNowNs())) {
+        m_silence.start(1); // the timer fired a little early
+        return;
     }
     drain();
 }

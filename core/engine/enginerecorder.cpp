@@ -1,0 +1,158 @@
+#include "enginerecorder.h"
+
+#include "traffic/trafficlog.h"
+#include "transport/monotonicclock.h"
+
+#include <QtCore/QMetaMethod>
+
+#include <utility>
+
+namespace mbscope {
+
+EngineRecorder::EngineRecorder(const EngineCounters *counters, EngineProgress *progress, QObject *parent)
+    : QObject(parent)
+    , m_counters(counters)
+    , m_progress(progress)
+    , m_batchTimer(this)
+    , m_journalTimer(this)
+{
+    m_batchTimer.setSingleShot(true);
+    m_batchTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_batchTimer, &QTimer::timeout, this, &EngineRecorder::flushBatch);
+    m_journalTimer.setInterval(50);
+    connect(&m_journalTimer, &QTimer::timeout, this, [this] {
+        if (m_log)
+            m_log->flushIfDue(monotonicNowNs());
+    });
+}
+
+void EngineRecorder::setTrafficLog(TrafficLog *log)
+{
+    if (m_log && m_log != log)
+        m_log->flush();
+    m_log = log;
+    attachLog();
+}
+
+void EngineRecorder::setLink(const QString &url)
+{
+    m_link = url;
+    attachLog();
+}
+
+void EngineRecorder::flushLog()
+{
+    if (m_log)
+        m_log->flush();
+}
+
+void EngineRecorder::attachLog()
+{
+    if (!m_log) {
+        m_journalTimer.stop();
+        return;
+    }
+    m_logLink = m_log->addLink(m_link);
+    m_journalTimer.start();
+}
+
+void EngineRecorder::logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id)
+{
+    if (m_log)
+        m_log->append(ns, TrafficDirection::Out, m_logLink, TrafficVerdict::Sent, id, bytes);
+}
+
+void EngineRecorder::logIncoming(const QByteArray &bytes, qint64 firstNs, TrafficVerdict verdict, quint64 id)
+{
+    if (m_log)
+        m_log->append(firstNs, TrafficDirection::In, m_logLink, verdict, id, bytes);
+    // A frame that answers no request never reaches observers as a transaction: it goes in the
+    // next batch on its own, so a traffic view shows garbage and unsolicited frames too.
+    if (verdict == TrafficVerdict::Unsolicited || verdict == TrafficVerdict::Garbage) {
+        TrafficFrame frame;
+        frame.tNs = firstNs;
+        frame.transactionId = id;
+        frame.direction = TrafficDirection::In;
+        frame.verdict = verdict;
+        frame.bytes = bytes;
+        m_unmatched.append(std::move(frame));
+        scheduleBatch();
+    }
+}
+
+void EngineRecorder::record(Transaction transaction, quint64 tag)
+{
+    // A transaction whose answer was logged carries its verdict on that frame. One without an
+    // answer (timeout, link error, broadcast) is logged as an empty frame in with its verdict,
+    // so that the log holds every transaction's outcome.
+    if (m_log && transaction.response.isEmpty())
+        m_log->append(monotonicNowNs(), TrafficDirection::In, m_logLink, trafficVerdict(transaction.status), transaction.id, {});
+    if (m_listeners.size() == 1) {
+        m_listeners.constFirst()->onRecord(transaction, tag);
+    } else if (!m_listeners.isEmpty()) {
+        // A listener may go (or add another) while records are handed out: each one still
+        // listening gets this record once.
+        const QList<RecordListener *> listeners = m_listeners;
+        for (RecordListener *listener : listeners) {
+            if (m_listeners.contains(listener))
+                listener->onRecord(transaction, tag);
+        }
+    }
+    if (m_recordedReceivers.load(std::memory_order_relaxed) > 0)
+        Q_EMIT recorded(transaction, tag);
+    m_batch.append(std::move(transaction));
+    scheduleBatch();
+}
+
+void EngineRecorder::connectNotify(const QMetaMethod &signal)
+{
+    if (signal == QMetaMethod::fromSignal(&EngineRecorder::recorded))
+        m_recordedReceivers.fetch_add(1, std::memory_order_relaxed);
+}
+
+void EngineRecorder::disconnectNotify(const QMetaMethod &signal)
+{
+    // An invalid method (everything disconnected at once) does not say which: the count stays,
+    // and recorded() goes on being emitted, which is only slower.
+    if (signal == QMetaMethod::fromSignal(&EngineRecorder::recorded))
+        m_recordedReceivers.fetch_sub(1, std::memory_order_relaxed);
+}
+
+void EngineRecorder::addRecordListener(RecordListener *listener)
+{
+    if (!m_listeners.contains(listener))
+        m_listeners.append(listener);
+}
+
+void EngineRecorder::removeRecordListener(RecordListener *listener)
+{
+    m_listeners.removeAll(listener);
+}
+
+void EngineRecorder::scheduleBatch()
+{
+    if (m_batchTimer.isActive())
+        return;
+    // Round up: a timer that fires early would only be armed again.
+    const qint64 due = m_lastBatchNs + qint64(m_batchIntervalMs) * 1000000 - monotonicNowNs();
+    m_batchTimer.start(due <= 0 ? 0 : int(qMin<qint64>((due + 999999) / 1000000, 24LL * 3600 * 1000)));
+}
+
+void EngineRecorder::flushBatch()
+{
+    m_batchTimer.stop();
+    m_lastBatchNs = monotonicNowNs();
+    if (!m_batch.isEmpty()) {
+        const qsizetype size = m_batch.size();
+        Q_EMIT transactionsFinished(std::exchange(m_batch, {}));
+        // The observers keep the list that was sent; the next one is likely as long, and growing
+        // a list of records copies them at every step.
+        m_batch.reserve(size);
+    }
+    if (!m_unmatched.isEmpty())
+        Q_EMIT unmatchedFrames(std::exchange(m_unmatched, {}), m_link);
+    m_progress->counters = *m_counters;
+    Q_EMIT progress(*m_progress);
+}
+
+} // namespace mbscope

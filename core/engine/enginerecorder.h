@@ -1,0 +1,89 @@
+#pragma once
+
+#include "engineprogress.h"
+#include "recordlistener.h"
+
+#include "exchange/trafficentry.h"
+#include "exchange/transaction.h"
+
+#include <QtCore/QList>
+#include <QtCore/QObject>
+#include <QtCore/QTimer>
+
+#include <atomic>
+
+namespace mbscope {
+
+class TrafficLog;
+
+// Where the engine's records and frames go, in the engine's thread: the record listeners (the
+// poller) at once by a direct call, recorded() for whoever waits on one transaction, the traffic
+// log (journaled to disk within its batch time even on a quiet link) and, in batches of at most
+// one every batchIntervalMs, the observers in other threads: transactionsFinished(), then
+// unmatchedFrames(), then progress().
+class EngineRecorder : public QObject
+{
+    Q_OBJECT
+public:
+    // counters and progress: the engine's, published with each batch.
+    EngineRecorder(const EngineCounters *counters, EngineProgress *progress, QObject *parent);
+
+    void setBatchInterval(int ms) { m_batchIntervalMs = ms; }
+    // The log frames go to (nullptr: none), and the link they are logged under.
+    void setTrafficLog(TrafficLog *log);
+    void setLink(const QString &url);
+    // The log's pending journal batch to the disk now.
+    void flushLog();
+    [[nodiscard]] const QString &link() const { return m_link; }
+
+    void logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id);
+    // A frame in; one that answers no request (unsolicited, garbage) also goes to the next batch.
+    void logIncoming(const QByteArray &bytes, qint64 firstNs, TrafficVerdict verdict, quint64 id = 0);
+    // A record made: to the listeners, recorded(), the log (when no answer frame was logged) and
+    // the next batch.
+    void record(Transaction transaction, quint64 tag);
+
+    // Listeners get every record at once, by a direct call, before recorded() is emitted. A
+    // listener removes itself before it goes (it may do so from inside onRecord()).
+    void addRecordListener(RecordListener *listener);
+    void removeRecordListener(RecordListener *listener);
+
+    void scheduleBatch();
+    // Emits what is waiting for observers now (end of a poll), then the progress.
+    void flushBatch();
+
+Q_SIGNALS:
+    // In the engine thread, as soon as a record is made, after the record listeners (direct
+    // connections only).
+    void recorded(const mbscope::Transaction &transaction, quint64 tag);
+    void transactionsFinished(const QList<mbscope::Transaction> &transactions);
+    // Frames read that belong to no transaction (unsolicited, duplicates, garbage), in the same
+    // batches, just after them; link: the target's URL.
+    void unmatchedFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
+    void progress(const mbscope::EngineProgress &progress);
+
+protected:
+    // recorded() is emitted only while something is connected to it (its emission with no
+    // receiver was ~100 instructions per transaction).
+    void connectNotify(const QMetaMethod &signal) override;
+    void disconnectNotify(const QMetaMethod &signal) override;
+
+private:
+    void attachLog();
+
+    const EngineCounters *m_counters;
+    EngineProgress *m_progress;
+    TrafficLog *m_log = nullptr;
+    QString m_link;
+    quint16 m_logLink = 0;
+    QList<RecordListener *> m_listeners;
+    std::atomic<int> m_recordedReceivers{0};
+    QTimer m_batchTimer;
+    QTimer m_journalTimer;
+    int m_batchIntervalMs = 33;
+    qint64 m_lastBatchNs = 0;
+    QList<Transaction> m_batch;
+    QList<TrafficFrame> m_unmatched; // frames of no transaction, for the next batch
+};
+
+} // namespace mbscope
