@@ -56,6 +56,8 @@ bool TrafficLog::openJournal(const QString &path, const TrafficJournalWriter::Op
 {
     if (!m_journal.open(path, options, overwrite, error))
         return false;
+    m_journalOptions = options;
+    m_rotationError.clear();
     for (qsizetype i = 0; i < m_links.size(); ++i)
         m_journal.addLink(quint16(i), m_links.at(i));
     return true;
@@ -64,6 +66,22 @@ bool TrafficLog::openJournal(const QString &path, const TrafficJournalWriter::Op
 void TrafficLog::closeJournal()
 {
     m_journal.close();
+}
+
+void TrafficLog::setJournalRotation(qint64 maxBytes, std::function<QString(const QString &)> next)
+{
+    m_rotateBytes = next ? maxBytes : 0;
+    m_nextJournal = std::move(next);
+}
+
+void TrafficLog::rotateJournal()
+{
+    const QString closed = m_journal.path();
+    m_journal.close();
+    const QString next = m_nextJournal(closed);
+    QString error;
+    if (next.isEmpty() || !openJournal(next, m_journalOptions, false, &error))
+        m_rotationError = next.isEmpty() ? QStringLiteral("%1: no next journal part was given").arg(closed) : error;
 }
 
 quint16 TrafficLog::addLink(const QString &name)
@@ -122,8 +140,11 @@ quint64 TrafficLog::append(qint64 tNs, TrafficDirection direction, quint16 link,
     const quint64 sequence = m_next++;
     ++m_size;
     m_retainedBytes += sizeof(Record) + length;
-    if (m_journal.isOpen())
+    if (m_journal.isOpen()) {
         m_journal.addFrame(TrafficEntry{sequence, tNs, transactionId, link, direction, verdict, bytes});
+        if (m_rotateBytes > 0 && m_journal.bytesWritten() >= m_rotateBytes)
+            rotateJournal();
+    }
     while (m_size > 0 && (m_size > m_limits.maxEntries || m_retainedBytes > m_limits.maxBytes))
         evictOldest();
     return sequence;

@@ -7,6 +7,7 @@
 #include <QtCore/QString>
 #include <QtCore/QStringList>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -50,6 +51,12 @@ public:
     bool openJournal(const QString &path, const TrafficJournalWriter::Options &options = {},
                      bool overwrite = false, QString *error = nullptr);
     void closeJournal(); // writes the pending batch
+    // Journal parts: once the journal holds maxBytes, it is closed and the next frame goes to a
+    // new one at next(closedPath) (the link names are written again). 0 or no function: one
+    // journal, whatever its size. next returns an empty path to stop journaling.
+    void setJournalRotation(qint64 maxBytes, std::function<QString(const QString &closedPath)> next);
+    // Why journaling stopped at a rotation (the next part could not be created), or empty.
+    [[nodiscard]] const QString &rotationError() const { return m_rotationError; }
     [[nodiscard]] const TrafficJournalWriter &journal() const { return m_journal; }
 
     // A short id for a link's name ("tcp://192.168.1.10:502"); the same name gives the same id.
@@ -89,6 +96,7 @@ private:
     [[nodiscard]] Chunk *chunkFor(std::size_t bytes);
     void evictOldest();
     [[nodiscard]] TrafficEntry entryAt(const Chunk &chunk, quint32 index) const;
+    void rotateJournal();
 
     Limits m_limits;
     std::vector<std::unique_ptr<Chunk>> m_chunks; // oldest first
@@ -99,6 +107,10 @@ private:
     quint64 m_retainedBytes = 0;
     QStringList m_links;
     TrafficJournalWriter m_journal;
+    TrafficJournalWriter::Options m_journalOptions;
+    qint64 m_rotateBytes = 0;
+    std::function<QString(const QString &)> m_nextJournal;
+    QString m_rotationError;
 };
 
 } // namespace mbscope

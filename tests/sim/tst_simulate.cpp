@@ -85,7 +85,7 @@ void tst_Simulate::errors_data()
     QTest::newRow("faults content") << QStringList{QStringLiteral("--profile"), gamma, QStringLiteral("--faults"), QStringLiteral("FAULTS_CONTENT")}
                                     << QStringList{QStringLiteral("rules[1].kind"), QStringLiteral("explode")};
     QTest::newRow("bad duration") << QStringList{QStringLiteral("--profile"), gamma, QStringLiteral("--duration"), QStringLiteral("soon")}
-                                  << QStringList{QStringLiteral("--duration 'soon'")};
+                                  << QStringList{QStringLiteral("--duration: 'soon' is not a duration")};
 }
 
 void tst_Simulate::errors()

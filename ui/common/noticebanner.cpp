@@ -21,12 +21,17 @@ NoticeBanner::NoticeBanner(QWidget *parent)
     m_label->setObjectName(QStringLiteral("noticeText"));
     m_label->setWordWrap(true);
     m_label->setTextFormat(Qt::RichText);
-    m_label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_label->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::LinksAccessibleByMouse | Qt::LinksAccessibleByKeyboard);
+    m_label->setOpenExternalLinks(false);
+    connect(m_label, &QLabel::linkActivated, this, &NoticeBanner::linkActivated);
     auto *close = new QToolButton(this);
     close->setObjectName(QStringLiteral("noticeCloseButton"));
     close->setText(tr("Dismiss"));
     close->setAutoRaise(true);
-    connect(close, &QToolButton::clicked, this, &QWidget::hide);
+    connect(close, &QToolButton::clicked, this, [this] {
+        hide();
+        Q_EMIT dismissed();
+    });
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(10, 6, 6, 6);
     layout->addWidget(m_label, 1);

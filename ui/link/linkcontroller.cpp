@@ -5,6 +5,10 @@
 #include "exchange/statistics.h"
 #include "engine/transactionengine.h"
 
+#include <QtCore/QFile>
+#include <QtCore/QFileInfo>
+#include <QtCore/QSaveFile>
+
 namespace mbscope {
 
 namespace {
@@ -41,13 +45,72 @@ LinkController::LinkController(QObject *parent)
     qRegisterMetaType<mbscope::PollReport>();
 }
 
-LinkController::~LinkController() = default;
+LinkController::~LinkController()
+{
+    dropEngine();
+}
+
+void LinkController::dropEngine()
+{
+    m_engine.reset();
+    if (m_capture) {
+        m_capture->finish();
+        m_capture.reset();
+        Q_EMIT recordingChanged({}, {});
+    }
+}
+
+void LinkController::setRecording(bool enabled, const CaptureDirectory &directory, const RollingCapture::Policy &policy)
+{
+    m_recordingEnabled = enabled;
+    m_captures = directory;
+    m_capturePolicy = policy;
+}
+
+QString LinkController::recordingPath() const
+{
+    return m_capture ? m_capture->currentPath() : QString();
+}
+
+bool LinkController::keepRecordingAt(const QString &path, bool *copied, QString *error)
+{
+    *copied = false;
+    if (!m_capture || !m_engine) {
+        *error = tr("nothing is being recorded");
+        return false;
+    }
+    if (m_capture->moveTo(path, error)) {
+        Q_EMIT recordingChanged(m_capture->currentPath(), {});
+        return true;
+    }
+    if (QFile::exists(path))
+        return false;
+    // Another file system: the frames so far reach the file, then a copy of it goes to path
+    // (written beside it and renamed into place, so path is never half a journal).
+    m_engine->flushTrafficLog();
+    QFile source(m_capture->currentPath());
+    QSaveFile target(path);
+    if (!source.open(QIODevice::ReadOnly) || !target.open(QIODevice::WriteOnly)) {
+        *error = tr("cannot copy %1 to %2: %3").arg(source.fileName(), path,
+                                                     source.isOpen() ? target.errorString() : source.errorString());
+        return false;
+    }
+    while (!source.atEnd())
+        target.write(source.read(1 << 20));
+    if (!target.commit()) {
+        *error = tr("cannot copy %1 to %2: %3").arg(source.fileName(), path, target.errorString());
+        return false;
+    }
+    *copied = true;
+    return true;
+}
 
 void LinkController::resetEngine()
 {
     // A fresh engine per target: its link, framer and matcher start clean, and a poll of the old
     // target cannot deliver answers that look like the new one's.
     m_countersBefore = m_counters;
+    dropEngine();
     m_engine = std::make_unique<TransactionEngine>();
     connect(m_engine.get(), &TransactionEngine::transactionsFinished, this, &LinkController::onTransactions);
     connect(m_engine.get(), &TransactionEngine::unmatchedFrames, this, &LinkController::unmatchedFrames);
@@ -63,6 +126,16 @@ void LinkController::connectTo(const LinkUrl &url)
     resetEngine();
     m_url = url;
     m_engine->setTarget(url);
+    m_recordingProblem.clear();
+    if (m_recordingEnabled) {
+        m_capture = std::make_unique<RollingCapture>(m_captures, m_capturePolicy);
+        if (m_capture->start(url.toString(), &m_recordingProblem)) {
+            m_engine->setTrafficLog(m_capture->log());
+        } else {
+            m_capture.reset();
+        }
+        Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
+    }
     setState(State::Ready, tr("%1: the link opens with the first request").arg(url.toString()));
 }
 
@@ -74,7 +147,7 @@ void LinkController::disconnectLink()
         stopPoll();
     m_engine->closeLink();
     m_countersBefore = m_counters;
-    m_engine.reset();
+    dropEngine();
     setState(State::Disconnected, tr("Not connected"));
 }
 

@@ -4,6 +4,8 @@
 #include "engine/pollreport.h"
 #include "exchange/trafficentry.h"
 #include "exchange/transaction.h"
+#include "traffic/capturedirectory.h"
+#include "traffic/rollingcapture.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QByteArray>
@@ -58,6 +60,20 @@ public:
     bool startSweep(const QByteArray &bytes, const QList<int> &intervalsMs, quint64 count);
     void stopPoll();
 
+    // Recording, always on unless turned off: every connection's frames are journaled into the
+    // capture folder (RollingCapture) from connectTo() until the link goes. Applies from the next
+    // connection.
+    void setRecording(bool enabled, const CaptureDirectory &directory, const RollingCapture::Policy &policy);
+    [[nodiscard]] bool isRecordingEnabled() const { return m_recordingEnabled; }
+    // The journal being written, or empty (not connected, turned off, or it could not be made:
+    // recordingProblem() says why).
+    [[nodiscard]] QString recordingPath() const;
+    [[nodiscard]] const QString &recordingProblem() const { return m_recordingProblem; }
+    // Save: the journal being written moves to path and recording goes on into it; where it
+    // cannot be moved (another file system), what was recorded so far is copied there instead,
+    // atomically, and *copied is set. False with *error when neither could be done.
+    bool keepRecordingAt(const QString &path, bool *copied, QString *error);
+
     // One line for the status bar: "Poll finished: 20 transactions, 20 ok, 0 failed; latency min
     // 1.21 ms, mean 4.05 ms, max 11.80 ms".
     [[nodiscard]] static QString describe(const PollReport &report);
@@ -76,6 +92,8 @@ Q_SIGNALS:
     void progressChanged(const mbscope::EngineProgress &progress);
     void pollingChanged(bool polling);
     void pollFinished(const mbscope::PollReport &report);
+    // Recording started (path), stopped (empty path), or could not start (problem).
+    void recordingChanged(const QString &path, const QString &problem);
 
 private:
     void onTransactions(const QList<Transaction> &transactions);
@@ -84,6 +102,8 @@ private:
     void onPollFinished(const PollReport &report);
     void setState(State state, const QString &message = {});
     void resetEngine();
+    // The engine goes first (it writes into the recording's log), then the recording.
+    void dropEngine();
 
     std::unique_ptr<TransactionEngine> m_engine;
     LinkUrl m_url;
@@ -92,6 +112,11 @@ private:
     EngineCounters m_counters;
     EngineCounters m_countersBefore; // a new engine restarts at zero; the status bar keeps counting
     bool m_polling = false;
+    bool m_recordingEnabled = false;
+    CaptureDirectory m_captures;
+    RollingCapture::Policy m_capturePolicy;
+    std::unique_ptr<RollingCapture> m_capture;
+    QString m_recordingProblem;
 };
 
 } // namespace mbscope

@@ -270,13 +270,16 @@ bool SessionController::save()
 
 bool SessionController::saveAs(const QString &path)
 {
-    const SessionDocument document = currentDocument();
+    SessionDocument document = currentDocument();
+    if (m_beforeSave)
+        m_beforeSave(document, QFileInfo(path).absoluteFilePath());
     QString error;
     if (!SessionWriter::save(document, path, &error)) {
         report(path, {error});
         return false;
     }
     m_lastProblems.clear();
+    m_base.capture = document.capture; // the capture the file now names (the recording's journal)
     setPath(QFileInfo(path).absoluteFilePath());
     addRecent(m_path);
     m_clean = document;

@@ -57,6 +57,10 @@ public:
     void setChangesPrompt(ChangesPrompt prompt) { m_prompt = std::move(prompt); }
     void setProblemReport(ProblemReport report) { m_report = std::move(report); }
     void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
+    // Called by Save and Save As with the document about to be written and its path: the
+    // recording puts its journal beside it and names it in the document's capture.
+    using BeforeSave = std::function<void(SessionDocument &document, const QString &path)>;
+    void setBeforeSave(BeforeSave beforeSave) { m_beforeSave = std::move(beforeSave); }
 
     // Opens path: false (the problems reported, the widgets untouched) when it cannot be read.
     // Does not ask about unsaved changes: openWithPrompt does.
@@ -99,6 +103,7 @@ private:
     ChangesPrompt m_prompt;
     ProblemReport m_report;
     FileChooser m_chooser;
+    BeforeSave m_beforeSave;
 };
 
 } // namespace mbscope

@@ -9,6 +9,7 @@
 #include "linkstatuswidget.h"
 #include "common/noticebanner.h"
 #include "preferencesdialog.h"
+#include "session/recordingcontrol.h"
 #include "compose/rawrequesteditor.h"
 #include "registers/registertable.h"
 #include "session/replaycontroller.h"
@@ -63,6 +64,12 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_sessionTools->replay(), &ReplayController::captureAnalysed, m_latency, &LatencyAnalysis::showTransactions);
     // Latency over time, Register trends and Sweep tabs; a sweep polls the composer's request.
     m_trends = new TrendPanels(m_analysis, m_controller, m_registers, [this] { return m_composer->bytes(); }, this);
+    // Every connection recorded into the capture folder; a journal a crash left is offered back.
+    m_recording = new RecordingControl(m_controller, m_session, m_sessionTools->replay(), this);
+    connect(m_recording, &RecordingControl::message, this, [this](const QString &text) { statusBar()->showMessage(text, 10000); });
+    if (auto *layout = qobject_cast<QVBoxLayout *>(centralWidget()->layout()))
+        layout->insertWidget(layout->indexOf(m_banner) + 1, m_recording->recoveryBanner());
+    m_recording->offerRecovery();
     createMenus();
     statusBar()->showMessage(tr("Ready"), 3000);
     resize(1400, 900);
@@ -375,7 +382,16 @@ void MainWindow::createMenus()
     QMenu *tools = menuBar()->addMenu(tr("&Tools"));
     QAction *preferences = tools->addAction(tr("&Preferences\u2026"), this, [this] {
         PreferencesDialog dialog(this);
-        if (dialog.exec() == QDialog::Accepted && dialog.apply())
+        dialog.setRecordingSettings(m_recording->settings());
+        if (dialog.exec() != QDialog::Accepted)
+            return;
+        const RecordingSettings recording = dialog.recordingSettings();
+        if (!(recording == m_recording->settings())) {
+            recording.store();
+            m_recording->apply(recording);
+            statusBar()->showMessage(tr("Recording settings apply from the next connection."), 10000);
+        }
+        if (dialog.apply())
             statusBar()->showMessage(tr("The new language is used when mbscope is started again."), 10000);
     });
     preferences->setMenuRole(QAction::PreferencesRole);

@@ -19,6 +19,7 @@ class LatencyAnalysis;
 class LinkController;
 class LinkStatusWidget;
 class NoticeBanner;
+class RecordingControl;
 class RegisterTable;
 class RequestComposer;
 class SessionController;
@@ -65,6 +66,7 @@ public:
     [[nodiscard]] LatencyAnalysis *latencyAnalysis() const { return m_latency; }
     [[nodiscard]] TrendPanels *trendPanels() const { return m_trends; }
     [[nodiscard]] SessionTools *sessionTools() const { return m_sessionTools; }
+    [[nodiscard]] RecordingControl *recording() const { return m_recording; }
     [[nodiscard]] SimulatorPanel *simulatorPanel() const { return m_simulatorPanel; }
 
     // Window geometry and dock layout kept in QSettings ("window/geometry", "window/state"):
@@ -107,6 +109,7 @@ private:
     TrendPanels *m_trends = nullptr;
     SessionController *m_session = nullptr;
     SessionTools *m_sessionTools = nullptr;
+    RecordingControl *m_recording = nullptr;
     SimulatorPanel *m_simulatorPanel = nullptr;
     QDockWidget *m_simulatorDock = nullptr;
     bool m_layoutRestored = false; // the docks' sizes came from QSettings: the first show keeps them

@@ -1,6 +1,13 @@
 #include "preferencesdialog.h"
 
+#include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
+#include <QtWidgets/QFileDialog>
+#include <QtWidgets/QGroupBox>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QSpinBox>
+#include <QtWidgets/QToolButton>
 #include <QtWidgets/QDialogButtonBox>
 #include <QtWidgets/QFormLayout>
 #include <QtWidgets/QLabel>
@@ -13,6 +20,10 @@ PreferencesDialog::PreferencesDialog(QWidget *parent)
     : QDialog(parent)
     , m_language(new QComboBox(this))
     , m_note(new QLabel(this))
+    , m_record(new QCheckBox(tr("&Record all traffic of the window's connections"), this))
+    , m_folder(new QLineEdit(this))
+    , m_rotate(new QSpinBox(this))
+    , m_keep(new QSpinBox(this))
     , m_stored(TranslationLoader::storedChoice())
 {
     setObjectName(QStringLiteral("preferencesDialog"));
@@ -37,6 +48,40 @@ PreferencesDialog::PreferencesDialog(QWidget *parent)
 
     auto *form = new QFormLayout;
     form->addRow(tr("&Language:"), m_language);
+
+    m_record->setObjectName(QStringLiteral("recordBox"));
+    m_record->setToolTip(tr("Every frame in and out is written to a traffic journal as it happens, one per connection; "
+                            "a saved session keeps its journal beside it. analyze, export and replay read journals."));
+    m_folder->setObjectName(QStringLiteral("captureFolder"));
+    m_folder->setPlaceholderText(RecordingSettings::defaultFolder());
+    m_folder->setToolTip(tr("Where journals are written until a session is saved (empty: the default shown)"));
+    m_browse = new QToolButton(this);
+    m_browse->setText(tr("&Browse\u2026"));
+    connect(m_browse, &QToolButton::clicked, this, [this] {
+        const QString dir = QFileDialog::getExistingDirectory(this, tr("Capture folder"), m_folder->text());
+        if (!dir.isEmpty())
+            m_folder->setText(dir);
+    });
+    auto *folderRow = new QHBoxLayout;
+    folderRow->addWidget(m_folder, 1);
+    folderRow->addWidget(m_browse);
+    m_rotate->setObjectName(QStringLiteral("rotateMiB"));
+    m_rotate->setRange(1, 4096);
+    m_rotate->setToolTip(tr("A journal that reaches this size is closed and the recording goes on in a new part"));
+    m_keep->setObjectName(QStringLiteral("keepMiB"));
+    m_keep->setRange(16, 1 << 20);
+    m_keep->setSingleStep(256);
+    m_keep->setToolTip(tr("The oldest journals in the capture folder are deleted to stay under this size "
+                          "(never one being written, never one beside a saved session)"));
+    auto *recordingForm = new QFormLayout;
+    recordingForm->addRow(m_record);
+    recordingForm->addRow(tr("Capture &folder:"), folderRow);
+    recordingForm->addRow(tr("New journal &part every (MiB):"), m_rotate);
+    recordingForm->addRow(tr("&Keep at most (MiB):"), m_keep);
+    auto *recording = new QGroupBox(tr("Recording"), this);
+    recording->setLayout(recordingForm);
+    connect(m_record, &QCheckBox::toggled, this, &PreferencesDialog::updateRecordingEnabled);
+    setRecordingSettings(RecordingSettings::load());
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     connect(buttons, &QDialogButtonBox::accepted, this, [this] {
         apply();
@@ -48,6 +93,7 @@ PreferencesDialog::PreferencesDialog(QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addWidget(m_note);
+    layout->addWidget(recording);
     layout->addStretch(1);
     layout->addWidget(buttons);
     updateNote();
@@ -72,6 +118,31 @@ bool PreferencesDialog::apply()
     TranslationLoader::storeChoice(chosen);
     m_stored = chosen;
     return true;
+}
+
+void PreferencesDialog::setRecordingSettings(const RecordingSettings &settings)
+{
+    m_record->setChecked(settings.enabled);
+    m_folder->setText(settings.folder);
+    m_rotate->setValue(settings.rotateMiB);
+    m_keep->setValue(settings.keepMiB);
+    updateRecordingEnabled();
+}
+
+void PreferencesDialog::updateRecordingEnabled()
+{
+    for (QWidget *w : std::initializer_list<QWidget *>{m_folder, m_browse, m_rotate, m_keep})
+        w->setEnabled(m_record->isChecked());
+}
+
+RecordingSettings PreferencesDialog::recordingSettings() const
+{
+    RecordingSettings s;
+    s.enabled = m_record->isChecked();
+    s.folder = m_folder->text().trimmed();
+    s.rotateMiB = m_rotate->value();
+    s.keepMiB = m_keep->value();
+    return s;
 }
 
 void PreferencesDialog::updateNote()

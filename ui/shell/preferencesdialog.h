@@ -2,16 +2,23 @@
 
 #include "translationloader.h"
 
+#include "session/recordingsettings.h"
+
 #include <QtWidgets/QDialog>
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
+class QLineEdit;
+class QSpinBox;
+class QToolButton;
 
 namespace mbscope {
 
-// Edit > Preferences: the window's language (the system's, English or Bahasa Indonesia), kept in
+// Tools > Preferences: the window's language (the system's, English or Bahasa Indonesia), kept in
 // QSettings and used from the next start: every panel builds its texts once, so a live switch
-// would leave half the window in the old language.
+// would leave half the window in the old language. And the recording of traffic: on or off, the
+// capture folder, the size of a journal part and of the whole folder (RecordingSettings).
 class PreferencesDialog : public QDialog
 {
     Q_OBJECT
@@ -25,11 +32,20 @@ public:
     // Stores the choice; true when it differs from what was stored (a restart is needed).
     bool apply();
 
+    void setRecordingSettings(const RecordingSettings &settings);
+    [[nodiscard]] RecordingSettings recordingSettings() const;
+
 private:
     void updateNote();
+    void updateRecordingEnabled();
 
     QComboBox *m_language = nullptr;
     QLabel *m_note = nullptr;
+    QCheckBox *m_record = nullptr;
+    QLineEdit *m_folder = nullptr;
+    QToolButton *m_browse = nullptr;
+    QSpinBox *m_rotate = nullptr;
+    QSpinBox *m_keep = nullptr;
     TranslationLoader::Choice m_stored = TranslationLoader::Choice::System;
 };
 

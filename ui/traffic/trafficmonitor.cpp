@@ -94,7 +94,8 @@ void TrafficMonitor::buildUi()
     m_clearButton = new QToolButton(this);
     m_clearButton->setObjectName(QStringLiteral("clearButton"));
     m_clearButton->setText(tr("Clear"));
-    m_clearButton->setToolTip(tr("Empty the list (the traffic log and its journal keep every frame)"));
+    m_clearButton->setToolTip(tr("Empty the list (the connection's traffic journal keeps every frame, unless recording "
+                                 "is turned off in Preferences)"));
 
     m_searchEdit = new QLineEdit(this);
     m_searchEdit->setObjectName(QStringLiteral("searchEdit"));

@@ -1,0 +1,214 @@
+// The window records, always: a connection's frames reach a journal in the capture folder as they
+// happen, Save puts the journal beside the session and names it in the document, the Preferences
+// turn it off or change its policy, and a journal a crash left behind is offered back at the next
+// start with what came back.
+#include "guitestsupport.h"
+#include "link/linkcontroller.h"
+#include "session/replaycontroller.h"
+#include "session/sessioncontroller.h"
+#include "shell/sessiontools.h"
+#include "shell/mainwindow.h"
+#include "sim/embeddedsimulator.h"
+#include "common/noticebanner.h"
+#include "session/recordingcontrol.h"
+#include "session/recordingsettings.h"
+
+#include "session/sessionreader.h"
+#include "traffic/capturedirectory.h"
+#include "traffic/trafficjournal.h"
+
+#include <QtCore/QDir>
+#include <QtCore/QFile>
+#include <QtCore/QSettings>
+#include <QtCore/QSysInfo>
+#include <QtCore/QTemporaryDir>
+#include <QtTest/QSignalSpy>
+#include <QtTest/QtTest>
+
+using namespace mbscope;
+
+class TestRecording : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() { guitest::isolateSettings(); }
+    void init();
+    void connectionIsJournaled();
+    void turnedOffRecordsNothing();
+    void saveKeepsTheJournalBesideTheSession();
+    void crashLeftJournalIsOffered();
+
+private:
+    QTemporaryDir m_captures;
+};
+
+namespace {
+
+const QByteArray kRead = QByteArray::fromHex("01030079001615DD");
+
+LinkUrl startSimulator(EmbeddedSimulator &sim)
+{
+    const EmbeddedSimulator::Started started = sim.start(QStringLiteral("rosrao-gamma"), QStringLiteral("rtu-tcp://127.0.0.1:0"));
+    if (!started.ok)
+        qWarning("%s", qPrintable(started.error));
+    return started.url;
+}
+
+struct JournalCount {
+    quint64 out = 0;
+    quint64 ok = 0;
+    TrafficJournalRecovery recovery;
+};
+
+JournalCount countJournal(const QString &path)
+{
+    JournalCount c;
+    c.recovery = TrafficJournalReader::read(path, [&c](const TrafficEntry &e) {
+        c.out += e.direction == TrafficDirection::Out ? 1 : 0;
+        c.ok += e.verdict == TrafficVerdict::Ok ? 1 : 0;
+    });
+    return c;
+}
+
+} // namespace
+
+void TestRecording::init()
+{
+    QVERIFY(m_captures.isValid());
+    QDir(m_captures.path()).removeRecursively();
+    QDir().mkpath(m_captures.path());
+    RecordingSettings settings;
+    settings.folder = m_captures.path();
+    settings.store();
+}
+
+void TestRecording::connectionIsJournaled()
+{
+    EmbeddedSimulator sim;
+    const LinkUrl url = startSimulator(sim);
+    LinkController controller;
+    const RecordingSettings settings = RecordingSettings::load();
+    controller.setRecording(true, settings.directory(), settings.policy());
+    QSignalSpy recording(&controller, &LinkController::recordingChanged);
+    QSignalSpy latest(&controller, &LinkController::latestTransaction);
+    controller.connectTo(url);
+    QCOMPARE(recording.count(), 1);
+    const QString path = controller.recordingPath();
+    QVERIFY2(path.startsWith(m_captures.path()), qPrintable(path));
+    QVERIFY(QFileInfo(path).fileName().contains(QStringLiteral("rtu-tcp_127.0.0.1_")));
+    QVERIFY(QFile::exists(path + QStringLiteral(".open")));
+    for (int i = 0; i < 3; ++i) {
+        QVERIFY(controller.send(kRead) > 0);
+        QVERIFY(latest.wait(5000));
+    }
+    controller.disconnectLink();
+    QVERIFY(controller.recordingPath().isEmpty());
+    QVERIFY(!QFile::exists(path + QStringLiteral(".open")));
+    const JournalCount c = countJournal(path);
+    QVERIFY2(c.recovery.isClean(), qPrintable(c.recovery.message));
+    QCOMPARE(c.out, quint64(3));
+    QCOMPARE(c.ok, quint64(3));
+    QCOMPARE(c.recovery.links, QStringList{url.toString()});
+}
+
+void TestRecording::turnedOffRecordsNothing()
+{
+    EmbeddedSimulator sim;
+    const LinkUrl url = startSimulator(sim);
+    LinkController controller;
+    const RecordingSettings settings = RecordingSettings::load();
+    controller.setRecording(false, settings.directory(), settings.policy());
+    QSignalSpy latest(&controller, &LinkController::latestTransaction);
+    controller.connectTo(url);
+    QVERIFY(controller.send(kRead) > 0);
+    QVERIFY(latest.wait(5000));
+    QVERIFY(controller.recordingPath().isEmpty());
+    controller.disconnectLink();
+    QVERIFY(CaptureDirectory(m_captures.path()).journals().isEmpty());
+}
+
+void TestRecording::saveKeepsTheJournalBesideTheSession()
+{
+    QTemporaryDir sessions;
+    MainWindow window;
+    QVERIFY(window.startWithSimulator(QStringLiteral("rtu-tcp://127.0.0.1:0")));
+    LinkController *link = window.controller();
+    QSignalSpy latest(link, &LinkController::latestTransaction);
+    QVERIFY(link->send(kRead) > 0);
+    QVERIFY(latest.wait(5000));
+    const QString sessionPath = sessions.filePath(QStringLiteral("bench.mbscope.json"));
+    QVERIFY(window.session()->saveAs(sessionPath));
+    const QString journal = link->recordingPath();
+    QCOMPARE(QFileInfo(journal).absolutePath(), QFileInfo(sessionPath).absolutePath());
+    QVERIFY2(QFileInfo(journal).fileName().startsWith(QStringLiteral("bench-")), qPrintable(journal));
+    // The document names it, and nothing is left in the capture folder.
+    const SessionLoadResult read = SessionReader::load(sessionPath);
+    QVERIFY(read.document);
+    QVERIFY(read.document->capture);
+    QCOMPARE(read.document->capture->journal, QFileInfo(journal).fileName());
+    QVERIFY(CaptureDirectory(m_captures.path()).journals().isEmpty());
+    QVERIFY(!window.session()->isModified());
+    // Recording goes on into it; a second Save keeps it.
+    QVERIFY(link->send(kRead) > 0);
+    QVERIFY(latest.wait(5000));
+    QVERIFY(window.session()->save());
+    QCOMPARE(link->recordingPath(), journal);
+    link->disconnectLink();
+    const JournalCount c = countJournal(journal);
+    QVERIFY2(c.recovery.isClean(), qPrintable(c.recovery.message));
+    QCOMPARE(c.out, quint64(2));
+    // The session's capture opens as a capture (what File > Open capture and replay read).
+    ReplayController *replay = window.sessionTools()->replay();
+    QSignalSpy opened(replay, &ReplayController::sourceOpened);
+    QVERIFY(replay->openSource(sessionPath));
+    QVERIFY(opened.wait(10000));
+}
+
+void TestRecording::crashLeftJournalIsOffered()
+{
+    // A journal whose writer died: two requests and their answers, a marker naming a process
+    // that has ended, and a last batch cut short.
+    const QString path = CaptureDirectory(m_captures.path()).newJournalPath(QDateTime::currentDateTime().addSecs(-60),
+                                                                          QStringLiteral("tcp://127.0.0.1:502"));
+    {
+        TrafficJournalWriter writer;
+        QString error;
+        QVERIFY2(writer.open(path, {}, false, &error), qPrintable(error));
+        writer.addLink(0, u"tcp://127.0.0.1:502");
+        const QByteArray request = QByteArray::fromHex("000100000006010300000001");
+        const QByteArray answer = QByteArray::fromHex("00010000000501030200FF");
+        for (quint64 i = 0; i < 2; ++i) {
+            writer.addFrame(TrafficEntry{2 * i, 1000 + qint64(i), i + 1, 0, TrafficDirection::Out, TrafficVerdict::Sent, request});
+            writer.addFrame(TrafficEntry{2 * i + 1, 2000 + qint64(i), i + 1, 0, TrafficDirection::In, TrafficVerdict::Ok, answer});
+        }
+        writer.close();
+    }
+    {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::Append));
+        f.write("BTCH\x10\x00"); // a batch cut short by the kill
+    }
+    QFile marker(path + QStringLiteral(".open"));
+    QVERIFY(marker.open(QIODevice::WriteOnly));
+    marker.write("999999\n" + QSysInfo::machineHostName().toUtf8() + '\n');
+    marker.close();
+
+    MainWindow window;
+    NoticeBanner *banner = window.recording()->recoveryBanner();
+    QVERIFY(!banner->isHidden());
+    QVERIFY2(banner->text().contains(QStringLiteral("2 requests came back, 4 frames")), qPrintable(banner->text()));
+    QVERIFY2(banner->text().contains(QStringLiteral("cut short")), qPrintable(banner->text()));
+    // Opening it puts it in the traffic list, and it is offered no more.
+    QSignalSpy opened(window.sessionTools()->replay(), &ReplayController::sourceOpened);
+    Q_EMIT banner->linkActivated(QStringLiteral("open"));
+    QVERIFY(opened.wait(10000));
+    QVERIFY(banner->isHidden());
+    QVERIFY(!QFile::exists(marker.fileName()));
+    QVERIFY(CaptureDirectory(m_captures.path()).abandoned().isEmpty());
+    MainWindow again;
+    QVERIFY(again.recording()->recoveryBanner()->isHidden());
+}
+
+QTEST_MAIN(TestRecording)
+#include "tst_recording.moc"
