@@ -6,7 +6,7 @@ class QCustomPlot;
 
 namespace mbscope::app {
 
-// The CLI's side of PlotSaver (ui/plotsaver.h, shared with the window): a QCustomPlot saved in the
+// The CLI's side of PlotSaver (ui/common/plotsaver.h, shared with the window): a QCustomPlot saved in the
 // format its file name says; in a build without the GUI every plot is refused, saying why.
 class PlotFile
 {
