@@ -2,6 +2,7 @@
 
 #include "protocol/framing.h"
 
+#include <QtCore/QByteArrayView>
 #include <QtCore/QString>
 
 #include <unordered_map>
