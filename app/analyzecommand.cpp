@@ -26,8 +26,14 @@ int runAnalyze(const QStringList &arguments)
         "every frame is decoded, and the statistics are those poll prints: counts by outcome, latency percentiles, "
         "histogram. Latency is the capture time of the answer's last packet minus the request's.\n"
         "Example: mbscope analyze bench.pcapng --rtu-port 4001 --histogram latency.svg\n"
-        "A damaged file is analysed up to the damage, which is reported with its byte offset.\n"
-        "Exit status: 0 every transaction ok, 1 some failed or the file is damaged, 2 usage error or unreadable file."));
+        "A damaged file is analysed up to the damage, which is reported with its byte offset. Packets the capture lost "
+        "are counted as gaps (bytes never captured, per conversation and direction) and framing resumes at the next "
+        "frame, so only the exchanges whose packets were lost count as timeouts or unmatched answers.\n"
+        "Without --port and --rtu-port, a capture with no traffic on port 502 is searched for Modbus TCP and RTU over "
+        "TCP or UDP on any port, and what is found is analysed (stderr says which port). With them, the ports are "
+        "kept and an error names the ports where Modbus was found.\n"
+        "Exit status: 0 every transaction ok, 1 some failed, the file is damaged or it holds no Modbus traffic, "
+        "2 usage error (also: no Modbus on the ports given, but on others) or unreadable file."));
     parser.addHelpOption();
     const CaptureInput input;
     input.addTo(parser);
@@ -78,13 +84,31 @@ int runAnalyze(const QStringList &arguments)
 
     CaptureAnalysis analysis;
     ExchangePlots plots(parser.isSet(timeSeriesOpt));
-    const ExchangeSourceReport report = ExchangeSource::read(path, options, [&](const CaptureExchange &exchange) {
-        analysis.add(exchange);
-        plots.add(exchange);
-    });
+    const auto read = [&](const CaptureOptions &with) {
+        return ExchangeSource::read(path, with, [&](const CaptureExchange &exchange) {
+            analysis.add(exchange);
+            plots.add(exchange);
+        });
+    };
+    ExchangeSourceReport report = read(options);
     if (!report.isReadable()) {
         err << "mbscope analyze: " << path << ": " << report.error << '\n';
         return ExitUsage;
+    }
+    // No Modbus on the ports asked (so nothing was analysed yet): the ports where it was found
+    // instead, used when the ports were the defaults, offered when the user named them.
+    const CaptureInput::Fallback fallback = input.fallback(parser, options, report, QStringLiteral("analysed"));
+    switch (fallback.action) {
+    case CaptureInput::Fallback::Action::Retry:
+        err << "mbscope analyze: " << fallback.message << '\n';
+        report = read(fallback.options);
+        break;
+    case CaptureInput::Fallback::Action::Refuse:
+        err << "mbscope analyze: " << fallback.message << '\n';
+        return ExitUsage;
+    case CaptureInput::Fallback::Action::Nothing:
+    case CaptureInput::Fallback::Action::Keep:
+        break;
     }
     if (parser.isSet(jsonOpt))
         out << QJsonDocument(analysis.toJson(report)).toJson(QJsonDocument::Indented);
@@ -93,6 +117,8 @@ int runAnalyze(const QStringList &arguments)
     out.flush();
     if (!report.error.isEmpty())
         err << "mbscope analyze: " << path << ": " << report.error << "; everything before it was analysed\n";
+    if (fallback.action == CaptureInput::Fallback::Action::Nothing)
+        err << "mbscope analyze: " << fallback.message << '\n';
 
     int status = ExitOk;
     if (parser.isSet(histogramOpt) && !ExchangePlots::writeHistogram(parser.value(histogramOpt), path, analysis.statistics(), &error)) {
@@ -103,7 +129,8 @@ int runAnalyze(const QStringList &arguments)
         err << "mbscope analyze: --timeseries: " << error << '\n';
         status = ExitFailure;
     }
-    if (!report.error.isEmpty() || analysis.statistics().failed() > 0 || analysis.unmatchedResponses() > 0)
+    if (!report.error.isEmpty() || analysis.statistics().failed() > 0 || analysis.unmatchedResponses() > 0
+        || fallback.action == CaptureInput::Fallback::Action::Nothing)
         status = ExitFailure;
     return status;
 }

@@ -6,6 +6,7 @@
 #include "session/capturesourcepath.h"
 
 #include <QtCore/QCommandLineParser>
+#include <QtCore/QStringList>
 
 namespace mbscope::app {
 
@@ -64,6 +65,51 @@ bool CaptureInput::read(const QCommandLineParser &parser, CaptureOptions *option
     }
     options->timeoutNs = timeout.ns;
     return true;
+}
+
+CaptureInput::Fallback CaptureInput::fallback(const QCommandLineParser &parser, const CaptureOptions &options,
+                                              const ExchangeSourceReport &report, const QString &done) const
+{
+    Fallback f;
+    if (report.kind != ExchangeSourceReport::Kind::Capture || report.frames.modbusPackets > 0)
+        return f;
+    const QList<quint16> asked = options.mbapPorts + options.rtuPorts;
+    const QString where = QStringLiteral("no Modbus traffic on %1 %2")
+                              .arg(asked.size() == 1 ? QStringLiteral("port") : QStringLiteral("ports"), CapturePorts::format(asked));
+    if (report.otherModbusPorts.empty()) {
+        f.action = Fallback::Action::Nothing;
+        f.message = where + QStringLiteral(", and none that looks like Modbus TCP or RTU on any other port");
+        return f;
+    }
+    f.options = options;
+    f.options.mbapPorts.clear();
+    f.options.rtuPorts.clear();
+    QStringList found;
+    for (const ModbusPortFinder::Found &p : report.otherModbusPorts) {
+        QList<quint16> &ports = p.framing == Framing::Rtu ? f.options.rtuPorts : f.options.mbapPorts;
+        if (!ports.contains(p.port))
+            ports.append(p.port);
+        found.append(p.description());
+    }
+    QStringList optionText;
+    if (!f.options.mbapPorts.isEmpty())
+        optionText.append(QStringLiteral("--port ") + CapturePorts::format(f.options.mbapPorts).remove(QLatin1Char(' ')));
+    if (!f.options.rtuPorts.isEmpty())
+        optionText.append(QStringLiteral("--rtu-port ") + CapturePorts::format(f.options.rtuPorts).remove(QLatin1Char(' ')));
+    const QString foundText = found.size() == 1 ? found.constFirst()
+                                                : found.mid(0, found.size() - 1).join(QStringLiteral(", ")) + QStringLiteral(" and ") + found.constLast();
+    if (parser.isSet(m_port) || parser.isSet(m_rtuPort)) {
+        // Ports the user named are never overridden: the message offers the ones found.
+        f.action = Fallback::Action::Refuse;
+        f.message = QStringLiteral("%1; found %2: %3 to use %4").arg(where, foundText, optionText.join(QLatin1Char(' ')),
+                                                                     found.size() == 1 ? QStringLiteral("it") : QStringLiteral("them"));
+        return f;
+    }
+    f.action = Fallback::Action::Retry;
+    f.message = QStringLiteral("%1; found %2 and %3 %4 (%5 to say so)")
+                    .arg(where, foundText, done, found.size() == 1 ? QStringLiteral("that") : QStringLiteral("those"),
+                         optionText.join(QLatin1Char(' ')));
+    return f;
 }
 
 bool CaptureInput::resolve(const QString &source, QString *path, QString *error)

@@ -74,8 +74,11 @@ int runExport(const QStringList &arguments)
         "  --histogram, --timeseries: the latency histogram and latency over time as PNG, SVG or PDF.\n"
         "Use - as the file to write CSV or JSON lines to standard output.\n"
         "Example: mbscope export bench.mbscope.journal --csv bench.csv --pcap bench.pcapng\n"
-        "Exit status: 0 written, 1 written from a damaged source (up to the damage), 2 usage error, unreadable source or "
-        "an output that could not be written."));
+        "Without --port and --rtu-port, a capture with no traffic on port 502 is searched for Modbus on any port, as "
+        "analyze does.\n"
+        "Exit status: 0 written, 1 written from a damaged source (up to the damage) or one without Modbus traffic, "
+        "2 usage error (also: no Modbus on the ports given, but on others), unreadable source or an output that could "
+        "not be written."));
     parser.addHelpOption();
     const CaptureInput input;
     input.addTo(parser);
@@ -194,13 +197,29 @@ int runExport(const QStringList &arguments)
         analysis.add(e);
         plots.add(e);
     };
-    const ExchangeSourceReport report = ExchangeSource::read(path, options, onExchange, onConversation);
+    ExchangeSourceReport report = ExchangeSource::read(path, options, onExchange, onConversation);
     if (!report.isReadable()) {
         err << "mbscope export: " << path << ": " << report.error << '\n';
         return ExitUsage;
     }
+    // No Modbus on the ports asked, so nothing was written but the outputs' headers: as analyze.
+    const CaptureInput::Fallback fallback = input.fallback(parser, options, report, QStringLiteral("exported"));
+    switch (fallback.action) {
+    case CaptureInput::Fallback::Action::Retry:
+        err << "mbscope export: " << fallback.message << '\n';
+        report = ExchangeSource::read(path, fallback.options, onExchange, onConversation);
+        break;
+    case CaptureInput::Fallback::Action::Refuse:
+        err << "mbscope export: " << fallback.message << '\n';
+        return ExitUsage;
+    case CaptureInput::Fallback::Action::Nothing:
+        err << "mbscope export: " << fallback.message << '\n';
+        break;
+    case CaptureInput::Fallback::Action::Keep:
+        break;
+    }
 
-    int status = report.error.isEmpty() ? ExitOk : ExitFailure;
+    int status = report.error.isEmpty() && fallback.action != CaptureInput::Fallback::Action::Nothing ? ExitOk : ExitFailure;
     if (!report.error.isEmpty())
         err << "mbscope export: " << path << ": " << report.error << "; everything before it was exported\n";
     // What was written goes to stderr when a table goes to standard output.

@@ -88,6 +88,8 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
         source.insert(QStringLiteral("retransmitted_bytes"), double(f.retransmittedBytes));
         source.insert(QStringLiteral("lost_bytes"), double(f.lostBytes));
         source.insert(QStringLiteral("gaps"), double(f.gaps));
+        source.insert(QStringLiteral("joined_mid_stream"), double(f.joinedMidStream));
+        source.insert(QStringLiteral("cut_by_gap_bytes"), double(f.cutByGapBytes));
         source.insert(QStringLiteral("skipped_bytes"), double(f.skippedBytes));
         source.insert(QStringLiteral("skipped_runs"), double(f.skippedRuns));
     } else if (report.kind == ExchangeSourceReport::Kind::Journal) {
@@ -102,7 +104,7 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
     QJsonArray conversations;
     for (const CaptureConversation &c : report.conversations) {
         const ConversationCounts counts = c.id < m_conversations.size() ? m_conversations[c.id] : ConversationCounts{};
-        conversations.append(QJsonObject{
+        QJsonObject conversation{
             {QStringLiteral("client"), c.clientText()},
             {QStringLiteral("server"), c.serverText()},
             {QStringLiteral("transport"), c.udp ? QStringLiteral("udp") : QStringLiteral("tcp")},
@@ -113,7 +115,15 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
             {QStringLiteral("ok"), double(counts.ok)},
             {QStringLiteral("failed"), double(counts.failed)},
             {QStringLiteral("unmatched_responses"), double(counts.unmatched)},
-        });
+        };
+        if (!c.udp) {
+            conversation.insert(QStringLiteral("request_gaps"), double(c.requestGaps));
+            conversation.insert(QStringLiteral("request_bytes_lost"), double(c.requestBytesLost));
+            conversation.insert(QStringLiteral("response_gaps"), double(c.responseGaps));
+            conversation.insert(QStringLiteral("response_bytes_lost"), double(c.responseBytesLost));
+            conversation.insert(QStringLiteral("joined_mid_stream"), c.joinedMidStream);
+        }
+        conversations.append(conversation);
     }
     o.insert(QStringLiteral("conversations"), conversations);
     QJsonArray functions;
@@ -146,6 +156,12 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
                + QStringLiteral(": %1 transactions, %2 ok, %3 failed").arg(counts.transactions).arg(counts.ok).arg(counts.failed);
         if (counts.unmatched > 0)
             out += QStringLiteral(", %1 answers matching no request").arg(counts.unmatched);
+        if (c.requestGaps > 0)
+            out += QStringLiteral("; %1 gap(s) to the server, %2 byte(s) never captured").arg(c.requestGaps).arg(c.requestBytesLost);
+        if (c.responseGaps > 0)
+            out += QStringLiteral("; %1 gap(s) to the client, %2 byte(s) never captured").arg(c.responseGaps).arg(c.responseBytesLost);
+        if (c.joinedMidStream)
+            out += QStringLiteral("; joined mid-stream");
         out += QLatin1Char('\n');
     }
     if (report.conversations.empty())
@@ -190,6 +206,12 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
                                                                       "%5 malformed request(s)\n")
                                                             .arg(f.lostBytes).arg(f.gaps).arg(f.retransmittedBytes).arg(f.skippedBytes)
                                                             .arg(report.pairs.malformedRequests);
+        if (f.gaps > 0 || f.joinedMidStream > 0)
+            out += padded(QStringLiteral("gaps")) + QStringLiteral("%1 hole(s) in the capture (%2 byte(s) never captured, %3 byte(s) of frames they "
+                                                                   "cut passed over), %4 stream(s) joined mid-way: framing resumed at the "
+                                                                   "next frame, so only exchanges whose packets were lost are timeouts or "
+                                                                   "unmatched answers\n")
+                                                        .arg(f.gaps).arg(f.lostBytes).arg(f.cutByGapBytes).arg(f.joinedMidStream);
     }
     if (!report.problems.isEmpty()) {
         out += padded(QStringLiteral("problems")) + QStringLiteral("%1 found%2\n")

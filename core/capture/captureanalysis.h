@@ -33,9 +33,12 @@ public:
     // Statistics::toJson's keys at the top (the shape poll --json prints), then
     // "source": {"path", "format", "complete", "error", "packets", "modbus_packets", "frames",
     //            "requests", "responses", "unmatched_responses", "malformed_requests",
-    //            "retransmitted_bytes", "lost_bytes", "gaps", "skipped_bytes", ...},
+    //            "retransmitted_bytes", "lost_bytes", "gaps", "joined_mid_stream", "cut_by_gap_bytes",
+    //            "skipped_bytes", ...},
     // "span_ms", "conversations": [{"client", "server", "transport", "framing", "requests",
-    // "responses", "transactions", "ok", "failed"}], "functions": [{"function", "name",
+    // "responses", "transactions", "ok", "failed", "unmatched_responses", and for TCP
+    // "request_gaps", "request_bytes_lost", "response_gaps", "response_bytes_lost",
+    // "joined_mid_stream"}], "functions": [{"function", "name",
     // ...Statistics::toJson's keys}], "problems": [...], "problem_count".
     [[nodiscard]] QJsonObject toJson(const ExchangeSourceReport &report) const;
     // For a terminal: the source, its conversations, a table per function code, the

@@ -21,6 +21,12 @@ struct CaptureConversation {
     Framing framing = Framing::Tcp; // Tcp (MBAP over TCP), Udp (MBAP over UDP) or Rtu
     quint64 requests = 0;   // frames from the client
     quint64 responses = 0;  // frames from the server
+    // TCP: holes the capture has in each direction (lost packets), and the bytes never captured.
+    quint64 requestGaps = 0;
+    qint64 requestBytesLost = 0;
+    quint64 responseGaps = 0;
+    qint64 responseBytesLost = 0;
+    bool joinedMidStream = false; // the capture began after the connection did
 
     [[nodiscard]] QString clientText() const; // "192.168.1.5:50123", "[::1]:50123"
     [[nodiscard]] QString serverText() const;

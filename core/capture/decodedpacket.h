@@ -34,6 +34,7 @@ struct DecodedPacket {
     quint16 sourcePort = 0;
     quint16 destinationPort = 0;
     quint32 sequence = 0;  // TCP
+    quint32 acknowledgement = 0; // TCP, meaningful with the ACK flag: the peer's next byte expected
     quint8 tcpFlags = 0;   // TCP: FIN 0x01, SYN 0x02, RST 0x04, PSH 0x08, ACK 0x10
     // The transport payload present in the capture. truncated: the packet was cut by the snap
     // length before its payload ended, so payload holds only the first bytes.
@@ -45,6 +46,7 @@ struct DecodedPacket {
     static constexpr quint8 kFin = 0x01;
     static constexpr quint8 kSyn = 0x02;
     static constexpr quint8 kRst = 0x04;
+    static constexpr quint8 kAck = 0x10;
 };
 
 } // namespace mbscope

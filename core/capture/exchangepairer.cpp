@@ -50,6 +50,14 @@ void ExchangePairer::finish()
     emitReady();
 }
 
+void ExchangePairer::answersLost(quint32 id)
+{
+    Conversation &c = conversation(id);
+    while (!c.waitingInOrder.empty())
+        timeOut(slot(c.waitingInOrder.front()), QStringLiteral("no answer in the capture: the bytes a gap lost may have held it"));
+    emitReady();
+}
+
 void ExchangePairer::addRequest(const CapturedFrame &frame)
 {
     ++m_counters.requests;

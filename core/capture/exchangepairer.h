@@ -45,6 +45,10 @@ public:
     ExchangePairer &operator=(const ExchangePairer &) = delete;
 
     void add(const CapturedFrame &frame);
+    // The capture lost bytes of a conversation's answers (a gap in a TCP stream). RTU answers
+    // carry no id, so the requests waiting then are timeouts now: an answer after the gap is
+    // given to a request sent after it, not to the one whose answer the gap may have held.
+    void answersLost(quint32 conversation);
     // The capture ended: requests still waiting are timeouts.
     void finish();
 

@@ -18,6 +18,10 @@ ExchangeSourceReport readPackets(const QString &path, const std::function<Captur
     ModbusFrameExtractor extractor(options, [&pairer](const CapturedFrame &frame) { pairer.add(frame); });
     if (onConversation)
         extractor.setConversationSink(onConversation);
+    extractor.setGapSink([&pairer](quint32 conversation, Direction direction) {
+        if (direction == Direction::Response)
+            pairer.answersLost(conversation);
+    });
     report.file = reader([&extractor](const CapturePacket &packet) { extractor.add(packet); });
     extractor.finish();
     pairer.finish();
@@ -27,6 +31,7 @@ ExchangeSourceReport readPackets(const QString &path, const std::function<Captur
     report.frames = extractor.counters();
     report.pairs = pairer.counters();
     report.conversations = extractor.conversations();
+    report.otherModbusPorts = extractor.otherModbusPorts();
     report.problems = extractor.problems() + pairer.problems();
     report.problemCount = extractor.problemCount() + pairer.problemCount();
     return report;

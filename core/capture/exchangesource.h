@@ -31,6 +31,8 @@ struct ExchangeSourceReport {
     TrafficJournalRecovery journal;           // Journal
     quint64 journalGarbage = 0;
     std::vector<CaptureConversation> conversations;
+    // Capture: other ports whose traffic looks like Modbus (most packets first).
+    std::vector<ModbusPortFinder::Found> otherModbusPorts;
     QStringList problems;  // the first few, with packet numbers
     quint64 problemCount = 0;
 

@@ -143,6 +143,7 @@ void ModbusFrameExtractor::add(const CapturePacket &packet)
         toServer = true;
     } else if (!isRtuPort(d.sourcePort) && !isMbapPort(d.sourcePort)) {
         ++m_counters.otherPackets;
+        m_portFinder.add(d);
         return;
     }
     const quint16 serverPort = toServer ? d.destinationPort : d.sourcePort;
@@ -181,13 +182,20 @@ void ModbusFrameExtractor::add(const CapturePacket &packet)
             flow.framers[dir]->reset();
         }
     }
+    // The peer has every byte it acknowledges: a hole before them will never be filled.
+    if (flags & kAck)
+        flow.streams[1 - direction]->acknowledged(d.acknowledgement);
+    const int other = 1 - direction;
     if (!d.payload.isEmpty() && framing == Framing::Rtu) {
         // RTU has no length for every code: a pause, or the other side speaking, ends a frame.
-        const int other = 1 - direction;
         if (flow.framers[other]->pendingSize() > 0)
             flushDirection(flow, other);
         if (flow.framers[direction]->pendingSize() > 0 && m_timeNs - flow.lastFeedNs[direction] > m_options.rtuSilenceNs)
             flushDirection(flow, direction);
+    } else if (!d.payload.isEmpty() && flow.framers[other]->isSearching() && flow.framers[other]->pendingSize() > 0) {
+        // After a gap, a frame waiting for the next header to confirm it is confirmed by the
+        // other side speaking: Modbus answers a whole request, and a client reads a whole answer.
+        flushDirection(flow, other);
     }
     flow.streams[direction]->add(d.sequence, flags, d.payload);
     if (flags & (kFin | kRst)) {
@@ -203,15 +211,36 @@ void ModbusFrameExtractor::add(const CapturePacket &packet)
 void ModbusFrameExtractor::onStreamBytes(Flow &flow, int direction, qint64 gap, QByteArrayView bytes)
 {
     StreamFramer &framer = *flow.framers[direction];
-    if (gap > 0) {
+    const QString towards = direction == kToServer ? QStringLiteral("to the server") : QStringLiteral("to the client");
+    if (gap == TcpStreamReassembler::kJoinedMidStream) {
+        ++m_counters.joinedMidStream;
+        flow.info.joinedMidStream = true;
+        problem(m_packet, &flow, QStringLiteral("the capture began after the connection did: the bytes %1 are framed from "
+                                                "the first frame boundary found")
+                                     .arg(towards));
+        framer.restartAfterGap();
+    } else if (gap > 0) {
         ++m_counters.gaps;
         m_counters.lostBytes += gap;
-        problem(m_packet, &flow, QStringLiteral("%1 byte(s) %2 never captured (a lost packet, or a capture started "
-                                                "mid-stream): framing starts again after them")
+        ++(direction == kToServer ? flow.info.requestGaps : flow.info.responseGaps);
+        (direction == kToServer ? flow.info.requestBytesLost : flow.info.responseBytesLost) += gap;
+        problem(m_packet, &flow, QStringLiteral("%1 byte(s) %2 never captured (a packet the capture lost): framing "
+                                                "starts again at the next frame boundary")
                                      .arg(gap)
-                                     .arg(direction == kToServer ? QStringLiteral("to the server") : QStringLiteral("to the client")));
-        flushDirection(flow, direction);
-        framer.reset();
+                                     .arg(towards));
+        if (framer.isSearching()) {
+            // A frame waiting for the next header to confirm it is confirmed by the gap as by
+            // a silence.
+            flushDirection(flow, direction);
+        } else {
+            // The start of a frame the gap cut: not a frame, nor a device's fault.
+            collect(flow, direction);
+            m_counters.skippedBytes += framer.pendingSize();
+            m_counters.cutByGapBytes += framer.pendingSize();
+        }
+        framer.restartAfterGap();
+        if (m_gapSink)
+            m_gapSink(flow.info.id, direction == kToServer ? Direction::Request : Direction::Response);
     }
     framer.feed(bytes, m_timeNs);
     flow.lastFeedNs[direction] = m_timeNs;
@@ -254,6 +283,8 @@ void ModbusFrameExtractor::collect(Flow &flow, int direction)
             const SkippedBytes &s = skipped.at(k++);
             m_counters.skippedBytes += s.count();
             ++m_counters.skippedRuns;
+            if (s.reason == SkipReason::AfterGap)
+                m_counters.cutByGapBytes += s.count();
             problem(flow.lastPacket[direction], &flow, QStringLiteral("%1 byte(s) skipped (%2): %3")
                                                            .arg(s.count())
                                                            .arg(QLatin1String(skipReasonName(s.reason)),

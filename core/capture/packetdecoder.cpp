@@ -59,6 +59,7 @@ void decodeTransport(DecodedPacket &p, quint8 protocol, QByteArrayView t, quint3
         p.sourcePort = qFromBigEndian<quint16>(b);
         p.destinationPort = qFromBigEndian<quint16>(b + 2);
         p.sequence = qFromBigEndian<quint32>(b + 4);
+        p.acknowledgement = qFromBigEndian<quint32>(b + 8);
         p.tcpFlags = b[13];
         p.payloadLength = wireLength - headerLength;
         const qsizetype present = std::max<qsizetype>(0, std::min<qsizetype>(t.size(), wireLength) - headerLength);

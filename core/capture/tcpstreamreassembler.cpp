@@ -3,8 +3,9 @@
 namespace mbscope {
 
 namespace {
+constexpr quint8 kFin = 0x01;
 constexpr quint8 kSyn = 0x02;
-}
+} // namespace
 
 TcpStreamReassembler::TcpStreamReassembler(Sink sink, qsizetype maxBuffered)
     : m_sink(std::move(sink)), m_maxBuffered(maxBuffered)
@@ -14,6 +15,10 @@ TcpStreamReassembler::TcpStreamReassembler(Sink sink, qsizetype maxBuffered)
 void TcpStreamReassembler::reset()
 {
     m_started = false;
+    m_joinedMidStream = false;
+    m_announceMidStream = false;
+    m_finSeen = false;
+    m_fin = 0;
     m_next = 0;
     m_offset = 0;
     m_early.clear();
@@ -30,11 +35,18 @@ void TcpStreamReassembler::add(quint32 sequence, quint8 flags, QByteArrayView pa
         }
         sequence += 1;
     }
+    if (flags & kFin) {
+        // The FIN takes the sequence number after the payload (RFC 9293, 3.4).
+        m_finSeen = true;
+        m_fin = sequence + quint32(payload.size());
+    }
     if (payload.isEmpty())
         return;
     if (!m_started) {
         // A capture that began mid-connection: the first segment seen starts the stream.
         m_started = true;
+        m_joinedMidStream = true;
+        m_announceMidStream = true;
         m_next = sequence;
     }
     // Sequence numbers wrap at 2^32: the signed difference says before or after.
@@ -70,6 +82,29 @@ void TcpStreamReassembler::add(quint32 sequence, quint8 flags, QByteArrayView pa
     }
 }
 
+void TcpStreamReassembler::acknowledged(quint32 ack)
+{
+    if (!m_started)
+        return;
+    if (m_finSeen && ack == m_fin + 1)
+        ack = m_fin;
+    const qint64 diff = qint32(ack - m_next);
+    if (diff <= 0)
+        return;
+    const qint64 until = m_offset + diff;
+    while (!m_early.empty() && m_early.begin()->first < until) {
+        skipHole();
+        drain();
+    }
+    if (m_offset < until) {
+        const qint64 gap = until - m_offset;
+        m_lost += gap;
+        ++m_gaps;
+        deliverInOrder({}, gap);
+        drain();
+    }
+}
+
 void TcpStreamReassembler::finish()
 {
     while (!m_early.empty()) {
@@ -82,6 +117,10 @@ void TcpStreamReassembler::deliverInOrder(QByteArrayView bytes, qint64 gap)
 {
     m_offset += gap + bytes.size();
     m_next += quint32(gap + bytes.size());
+    if (m_announceMidStream) {
+        m_announceMidStream = false;
+        gap = kJoinedMidStream;
+    }
     m_sink(gap, bytes);
 }
 

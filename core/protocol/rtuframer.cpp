@@ -211,6 +211,7 @@ void RtuFramer::beginResync()
 void RtuFramer::endResync()
 {
     m_atBoundary = true;
+    m_afterGap = false;
     m_probes.clear();
     m_events.clear();
 }
@@ -253,7 +254,7 @@ bool RtuFramer::resynchronise()
         if (accepted >= 0) {
             const qsizetype length = m_probes.at(qsizetype(accepted - m_probeOrigin)).length;
             for (qint64 start = base; start < accepted; ++start)
-                skip(1, m_probes.at(qsizetype(start - m_probeOrigin)).reason, true);
+                skip(1, m_afterGap ? SkipReason::AfterGap : m_probes.at(qsizetype(start - m_probeOrigin)).reason, true);
             emitFrame(length);
             endResync();
             return true;
@@ -264,7 +265,7 @@ bool RtuFramer::resynchronise()
             const Decision &front = m_probes.at(qsizetype(pendingOffset() - m_probeOrigin));
             if (front.verdict != Verdict::Reject)
                 break;
-            skip(1, front.reason, true);
+            skip(1, m_afterGap ? SkipReason::AfterGap : front.reason, true);
         }
         const qsizetype dead = qsizetype(pendingOffset() - m_probeOrigin);
         if (dead >= 512) {
@@ -294,7 +295,7 @@ void RtuFramer::flushPending()
                               .arg(hexByte(quint8(bytes[1]))));
             }
         } else {
-            skip(bytes.size(), SkipReason::Incomplete, !m_atBoundary);
+            skip(bytes.size(), m_afterGap ? SkipReason::AfterGap : SkipReason::Incomplete, !m_atBoundary);
         }
     }
     m_crcScanned = 0;

@@ -30,6 +30,7 @@ public:
     explicit RtuFramer(Direction direction = Direction::Auto);
 
     [[nodiscard]] Direction direction() const { return m_direction; }
+    [[nodiscard]] bool isSearching() const override { return !m_atBoundary; }
 
     // flushOnSilence(): at a boundary, pending bytes become a frame: Unverified for a code without
     // a length rule, Truncated for a known code whose predicted length did not arrive (so that the
@@ -52,6 +53,13 @@ public:
 protected:
     void process() override;
     void resetState() override;
+    // After lost bytes no start is trusted: the resynchronisation's search for a valid CRC.
+    // Bytes passed over then are AfterGap: the rest of a frame the gap cut, not a bad frame.
+    void startSearch() override
+    {
+        beginResync();
+        m_afterGap = true;
+    }
     void flushPending() override;
 
 private:
@@ -78,6 +86,7 @@ private:
     Direction m_direction;
     int m_baud = 0;
     bool m_atBoundary = true; // false while resynchronising
+    bool m_afterGap = false;  // resynchronising after restartAfterGap()
     qsizetype m_crcScanned = 0; // lengths already tried for a code without a length rule
     // While resynchronising: the verdict for each start from m_probeOrigin on, the bytes delivered
     // so far (a stream offset), and when each waiting start must be judged again.

@@ -24,6 +24,7 @@ enum class SkipReason : quint8 {
     Abandoned,          // ASCII: a ':' inside a frame restarted it
     TooLong,            // ASCII: 513 characters without CR LF; RTU: 256 bytes without a valid CRC
     Incomplete,         // bytes of an unfinished frame dropped at a silence
+    AfterGap,           // after lost bytes (a capture's gap): the rest of the frame they cut, up to the next frame
 };
 
 [[nodiscard]] const char *skipReasonName(SkipReason reason);

@@ -20,6 +20,7 @@ const char *skipReasonName(SkipReason reason)
     case SkipReason::Abandoned: return QT_TRANSLATE_NOOP("mbscope::Field", "frame restarted by ':'");
     case SkipReason::TooLong: return QT_TRANSLATE_NOOP("mbscope::Field", "frame too long");
     case SkipReason::Incomplete: return QT_TRANSLATE_NOOP("mbscope::Field", "incomplete frame at silence");
+    case SkipReason::AfterGap: return QT_TRANSLATE_NOOP("mbscope::Field", "rest of a frame cut by a gap");
     }
     return QT_TRANSLATE_NOOP("mbscope::Field", "unknown reason");
 }
@@ -72,6 +73,12 @@ void StreamFramer::reset()
     m_frames.clear();
     m_skipped.clear();
     resetState();
+}
+
+void StreamFramer::restartAfterGap()
+{
+    reset();
+    startSearch();
 }
 
 QList<StreamFrame> StreamFramer::takeFrames()

@@ -27,6 +27,12 @@ public:
     virtual bool onSilence(qint64 nowNs);
     // Forget pending bytes and queued output; stream offsets start again at 0 (a new connection).
     void reset();
+    // Bytes were lost just before the next ones (a capture's gap, a stream joined mid-way): as
+    // reset(), then the next byte is not trusted to start a frame; the framing's own search finds
+    // the next boundary (MBAP: a header confirmed by the next one; RTU: a valid CRC).
+    void restartAfterGap();
+    // Still looking for a frame boundary after restartAfterGap().
+    [[nodiscard]] virtual bool isSearching() const { return false; }
 
     [[nodiscard]] QList<StreamFrame> takeFrames();
     [[nodiscard]] QList<SkippedBytes> takeSkipped();
@@ -49,6 +55,8 @@ protected:
     // Frame or skip as much of pending() as can be decided now.
     virtual void process() = 0;
     virtual void resetState() {}
+    // restartAfterGap(), after resetState(): enter the framing's search for a boundary.
+    virtual void startSearch() {}
     // Called by flushOnSilence(), with or without bytes pending; must consume them all.
     virtual void flushPending();
 

@@ -1,17 +1,21 @@
 // mbscope analyze and mbscope export as users run them, on captures and journals the test
 // writes with the core (so every expected figure is known): text and JSON, damaged files with
 // their messages and exit statuses, CSV / JSON lines / pcapng exports read back, plots in PNG,
-// SVG and PDF, and usage errors.
+// SVG and PDF, and usage errors; a long capture with one packet removed by editcap (Wireshark's),
+// and captures whose Modbus is on another port than the one asked.
 #include "clitest.h"
 
 #include "capture/capturefilewriter.h"
 #include "capture/exchangepcapexporter.h"
+#include "capture/packetsynthesizer.h"
 #include "traffic/trafficjournal.h"
 #include "protocol/adubuilder.h"
 
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
+#include <QtCore/QProcess>
+#include <QtCore/QStandardPaths>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
 
@@ -40,7 +44,7 @@ CaptureExchange exchange(Framing framing, const QByteArray &request, qint64 sent
 }
 
 // Three reads answered in 2, 3 and 4 ms (and, with failures, an exception and a timeout).
-bool writeCapture(const QString &path, bool failures, Framing framing = Framing::Tcp)
+bool writeCapture(const QString &path, bool failures, Framing framing = Framing::Tcp, quint16 serverPort = 0)
 {
     CaptureFileWriter writer;
     QString error;
@@ -52,7 +56,7 @@ bool writeCapture(const QString &path, bool failures, Framing framing = Framing:
     c.client.bytes = {192, 168, 1, 5};
     c.server.bytes = {192, 168, 1, 10};
     c.clientPort = 40000;
-    c.serverPort = framing == Framing::Rtu ? 4001 : 502;
+    c.serverPort = serverPort != 0 ? serverPort : framing == Framing::Rtu ? 4001 : 502;
     exporter.addConversation(c);
     for (int i = 0; i < 3; ++i) {
         const qint64 t = kStart + i * 100 * kMs;
@@ -67,6 +71,46 @@ bool writeCapture(const QString &path, bool failures, Framing framing = Framing:
         exporter.add(exchange(framing, mbap(11, "0300000001"), kStart + 500 * kMs, {}, 0));
     }
     exporter.finish();
+    return writer.close(&error);
+}
+
+// count reads of 2 registers, one every 100 ms, each answered in 3 ms: after the handshake (packets
+// 1..3), transaction i's request is packet 4 + 2i and its answer 5 + 2i.
+bool writeLongCapture(const QString &path, int count)
+{
+    CaptureFileWriter writer;
+    QString error;
+    if (!writer.open(path, CaptureFileWriter::formatFor(path), &error))
+        return false;
+    ExchangePcapExporter exporter(writer);
+    CaptureConversation c;
+    c.client.bytes = {192, 168, 1, 5};
+    c.server.bytes = {192, 168, 1, 10};
+    c.clientPort = 40000;
+    c.serverPort = 502;
+    exporter.addConversation(c);
+    for (int i = 0; i < count; ++i) {
+        const qint64 t = kStart + i * 100 * kMs;
+        exporter.add(exchange(Framing::Tcp, mbap(quint16(i), "0300640002"), t, mbap(quint16(i), "0304000a01f4"), t + 3 * kMs));
+    }
+    exporter.finish();
+    return writer.close(&error);
+}
+
+// UDP datagrams on port 5353 that look like nothing Modbus.
+bool writeOtherTraffic(const QString &path)
+{
+    CaptureFileWriter writer;
+    QString error;
+    if (!writer.open(path, CaptureFileWriter::formatFor(path), &error))
+        return false;
+    PacketSynthesizer::Endpoints e;
+    e.client.bytes = {192, 168, 1, 5};
+    e.server.bytes = {192, 168, 1, 10};
+    e.clientPort = 5353;
+    e.serverPort = 5353;
+    for (int i = 0; i < 4; ++i)
+        writer.write(kStart + i * kMs, PacketSynthesizer::udp(e, i % 2 == 0, QByteArrayView("hello, this is not modbus")));
     return writer.close(&error);
 }
 
@@ -96,6 +140,10 @@ private slots:
     void plots();
     void usageErrors_data();
     void usageErrors();
+    void lostPacket_data();
+    void lostPacket();
+    void otherPort_data();
+    void otherPort();
 
 private:
     QTemporaryDir m_dir;
@@ -366,6 +414,124 @@ void TestCliCapture::usageErrors()
     const CliResult r = runMbscope(arguments);
     QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
     QVERIFY2(r.errText().contains(message), r.describe().constData());
+}
+
+// A 1000-transaction capture with one packet taken out by editcap, as a user would: only the
+// transaction whose packet was lost fails; the gap is reported with its bytes and direction.
+void TestCliCapture::lostPacket_data()
+{
+    QTest::addColumn<int>("packet");
+    QTest::addColumn<int>("timeouts");
+    QTest::addColumn<int>("unmatched");
+    QTest::addColumn<int>("lostBytes");
+    QTest::addColumn<QString>("direction");
+
+    QTest::newRow("packet 42 (a request) lost") << 42 << 0 << 1 << 12 << QStringLiteral("request");
+    QTest::newRow("packet 41 (an answer) lost") << 41 << 1 << 0 << 13 << QStringLiteral("response");
+}
+
+void TestCliCapture::lostPacket()
+{
+    QFETCH(int, packet);
+    QFETCH(int, timeouts);
+    QFETCH(int, unmatched);
+    QFETCH(int, lostBytes);
+    QFETCH(QString, direction);
+    const QString editcap = QStandardPaths::findExecutable(QStringLiteral("editcap"));
+    if (editcap.isEmpty())
+        QSKIP("editcap (Wireshark's, Debian: wireshark-common) is not installed");
+    const QString whole = m_dir.filePath(QStringLiteral("long.pcapng"));
+    const QString cut = m_dir.filePath(QStringLiteral("long-without-%1.pcapng").arg(packet));
+    if (!QFile::exists(whole))
+        QVERIFY(writeLongCapture(whole, 1000));
+    QProcess p;
+    p.start(editcap, {whole, cut, QString::number(packet)});
+    QVERIFY(p.waitForFinished(60000));
+    QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, p.readAllStandardError().constData());
+
+    const CliResult r = runMbscope({QStringLiteral("analyze"), cut, QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 1, r.describe().constData());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), 1000 - (unmatched > 0 ? 1 : 0));
+    QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 999);
+    QCOMPARE(o.value(QStringLiteral("timeouts")).toInt(), timeouts);
+    const QJsonObject source = o.value(QStringLiteral("source")).toObject();
+    QCOMPARE(source.value(QStringLiteral("unmatched_responses")).toInt(), unmatched);
+    QCOMPARE(source.value(QStringLiteral("gaps")).toInt(), 1);
+    QCOMPARE(source.value(QStringLiteral("lost_bytes")).toInt(), lostBytes);
+    QCOMPARE(source.value(QStringLiteral("packets")).toInt(), 2002);
+    const QJsonObject conversation = o.value(QStringLiteral("conversations")).toArray().at(0).toObject();
+    QCOMPARE(conversation.value(direction + QStringLiteral("_gaps")).toInt(), 1);
+    QCOMPARE(conversation.value(direction + QStringLiteral("_bytes_lost")).toInt(), lostBytes);
+
+    const CliResult text = runMbscope({QStringLiteral("analyze"), cut});
+    QVERIFY2(text.outText().contains(QStringLiteral("1 gap(s) to the %1, %2 byte(s) never captured")
+                                         .arg(direction == QLatin1String("request") ? QStringLiteral("server") : QStringLiteral("client"))
+                                         .arg(lostBytes)),
+             text.describe().constData());
+}
+
+// Modbus on a port nobody named is found from its bytes: used (and said on stderr) when the
+// ports were left at their defaults, offered in an error when the user named others.
+void TestCliCapture::otherPort_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QString>("message");
+    QTest::addColumn<QString>("analysed"); // on stdout
+
+    const QString analyze = QStringLiteral("analyze");
+    QTest::newRow("modbus/tcp on 1502, no --port") << QStringLiteral("on1502.pcapng") << QStringList{analyze} << 0
+        << QStringLiteral("mbscope analyze: no Modbus traffic on port 502; found Modbus/TCP on port 1502 and analysed that "
+                          "(--port 1502 to say so)")
+        << QStringLiteral("192.168.1.10:1502 (Modbus TCP): 3 transactions, 3 ok");
+    QTest::newRow("modbus/tcp on 1502, --port 503") << QStringLiteral("on1502.pcapng")
+        << QStringList{analyze, QStringLiteral("--port"), QStringLiteral("503")} << 2
+        << QStringLiteral("mbscope analyze: no Modbus traffic on port 503; found Modbus/TCP on port 1502: --port 1502 to use it") << QString();
+    QTest::newRow("modbus/tcp on 1502, --port 1502") << QStringLiteral("on1502.pcapng")
+        << QStringList{analyze, QStringLiteral("--port"), QStringLiteral("1502")} << 0 << QString()
+        << QStringLiteral("3 transactions, 3 ok");
+    QTest::newRow("rtu over tcp on 4001, no --rtu-port") << QStringLiteral("rtu4001.pcapng") << QStringList{analyze} << 0
+        << QStringLiteral("no Modbus traffic on port 502; found RTU over TCP on port 4001 and analysed that (--rtu-port 4001 to say so)")
+        << QStringLiteral("(RTU over TCP): 3 transactions, 3 ok");
+    QTest::newRow("export: modbus/tcp on 1502") << QStringLiteral("on1502.pcapng")
+        << QStringList{QStringLiteral("export"), QStringLiteral("--csv"), QStringLiteral("-")} << 0
+        << QStringLiteral("mbscope export: no Modbus traffic on port 502; found Modbus/TCP on port 1502 and exported that "
+                          "(--port 1502 to say so)")
+        << QStringLiteral("192.168.1.10:1502");
+    QTest::newRow("nothing like modbus") << QStringLiteral("other.pcapng") << QStringList{analyze} << 1
+        << QStringLiteral("no Modbus traffic on port 502, and none that looks like Modbus TCP or RTU on any other port")
+        << QStringLiteral("none: no traffic on the Modbus ports");
+}
+
+void TestCliCapture::otherPort()
+{
+    QFETCH(QString, file);
+    QFETCH(QStringList, arguments);
+    QFETCH(int, exitCode);
+    QFETCH(QString, message);
+    QFETCH(QString, analysed);
+    const QString path = m_dir.filePath(file);
+    if (!QFile::exists(path)) {
+        if (file.startsWith(QLatin1String("on1502")))
+            QVERIFY(writeCapture(path, false, Framing::Tcp, 1502));
+        else if (file.startsWith(QLatin1String("rtu4001")))
+            QVERIFY(writeCapture(path, false, Framing::Rtu));
+        else
+            QVERIFY(writeOtherTraffic(path));
+    }
+    arguments.insert(1, path);
+    const CliResult r = runMbscope(arguments);
+    QVERIFY2(r.finished && r.exitCode == exitCode, r.describe().constData());
+    if (message.isEmpty())
+        QVERIFY2(r.err.isEmpty(), r.describe().constData());
+    else
+        QVERIFY2(r.errText().contains(message), r.describe().constData());
+    if (analysed.isEmpty())
+        QVERIFY2(r.out.isEmpty(), r.describe().constData());
+    else
+        QVERIFY2(r.outText().contains(analysed), r.describe().constData());
 }
 
 QTEST_GUILESS_MAIN(TestCliCapture)
