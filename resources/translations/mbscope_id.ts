@@ -2069,6 +2069,11 @@
         <translation>frame tidak lengkap saat jeda</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>rest of a frame cut by a gap</source>
+        <translation>sisa frame yang terpotong oleh celah</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>unknown reason</source>
         <translation>alasan tidak diketahui</translation>
@@ -3147,18 +3152,22 @@
         <translation>Folder capture</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+5"/>
-        <source> MiB</source>
-        <translation> MiB</translation>
+        <location line="+18"/>
+        <source>New journal &amp;part every (MiB):</source>
+        <translation>&amp;Bagian jurnal baru setiap (MiB):</translation>
     </message>
     <message>
-        <location line="-4"/>
+        <location line="+1"/>
+        <source>&amp;Keep at most (MiB):</source>
+        <translation>Simpan &amp;paling banyak (MiB):</translation>
+    </message>
+    <message>
+        <location line="-10"/>
         <source>A journal that reaches this size is closed and the recording goes on in a new part</source>
         <translation>Jurnal yang mencapai ukuran ini ditutup dan perekaman berlanjut di bagian baru</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>The oldest journals in the capture folder are deleted to stay under this size (never one being written, never one beside a saved session)</source>
         <translation>Jurnal tertua di folder capture dihapus agar tetap di bawah ukuran ini (tidak pernah yang sedang ditulis, tidak pernah yang di samping sesi tersimpan)</translation>
     </message>
@@ -3168,17 +3177,7 @@
         <translation>&amp;Folder capture:</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>New journal &amp;part every:</source>
-        <translation>&amp;Bagian jurnal baru setiap:</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>&amp;Keep at most:</source>
-        <translation>Simpan &amp;paling banyak:</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>Recording</source>
         <translation>Perekaman</translation>
     </message>
@@ -3389,7 +3388,7 @@
 <context>
     <name>mbscope::RecordingControl</name>
     <message>
-        <location filename="../../ui/traffic/recordingcontrol.cpp" line="+48"/>
+        <location filename="../../ui/session/recordingcontrol.cpp" line="+48"/>
         <source>Not recording: %1</source>
         <translation>Tidak merekam: %1</translation>
     </message>
