@@ -6,7 +6,7 @@
 #include "protocol/registerformat.h"
 #include "protocol/tablewrite.h"
 #include "profile/deviceprofile.h"
-#include "widevaluelayout.h"
+#include "protocol/widevaluelayout.h"
 
 #include <QtCore/QAbstractTableModel>
 #include <QtCore/QByteArray>
