@@ -4,27 +4,27 @@
 <context>
     <name>QGnomeTheme</name>
     <message>
-        <location filename="../../ui/translationloader.cpp" line="+35" />
+        <location filename="../../ui/shell/translationloader.cpp" line="+35"/>
         <source>&amp;OK</source>
         <translation>&amp;OK</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Save</source>
         <translation>&amp;Simpan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Cancel</source>
         <translation>&amp;Batal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Close</source>
         <translation>&amp;Tutup</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Close without Saving</source>
         <translation>Tutup tanpa Menyimpan</translation>
     </message>
@@ -32,37 +32,37 @@
 <context>
     <name>QLineEdit</name>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Undo</source>
         <translation>&amp;Urungkan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Redo</source>
         <translation>&amp;Ulangi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Potong</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Copy</source>
         <translation>&amp;Salin</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Paste</source>
         <translation>&amp;Tempel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Delete</source>
         <translation>Hapus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Select All</source>
         <translation>Pilih Semua</translation>
     </message>
@@ -70,12 +70,12 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../app/gui.cpp" line="+234" />
+        <location filename="../../app/gui.cpp" line="+234"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 was not opened:
 %2</source>
         <translation>%1 tidak dibuka:
@@ -85,92 +85,92 @@
 <context>
     <name>QPlatformTheme</name>
     <message>
-        <location filename="../../ui/translationloader.cpp" line="-29" />
+        <location filename="../../ui/shell/translationloader.cpp" line="-29"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Save</source>
         <translation>Simpan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Save All</source>
         <translation>Simpan Semua</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Open</source>
         <translation>Buka</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Yes</source>
         <translation>&amp;Ya</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Yes to &amp;All</source>
         <translation>Ya untuk &amp;Semua</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;No</source>
         <translation>&amp;Tidak</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>N&amp;o to All</source>
         <translation>T&amp;idak untuk Semua</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Abort</source>
         <translation>Batalkan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Retry</source>
         <translation>Coba Lagi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ignore</source>
         <translation>Abaikan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Close</source>
         <translation>Tutup</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cancel</source>
         <translation>Batal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Discard</source>
         <translation>Buang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Help</source>
         <translation>Bantuan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Apply</source>
         <translation>Terapkan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reset</source>
         <translation>Atur Ulang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Restore Defaults</source>
         <translation>Kembalikan Bawaan</translation>
     </message>
@@ -178,42 +178,42 @@
 <context>
     <name>QWidgetTextControl</name>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>&amp;Undo</source>
         <translation>&amp;Urungkan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Redo</source>
         <translation>&amp;Ulangi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cu&amp;t</source>
         <translation>&amp;Potong</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Copy</source>
         <translation>&amp;Salin</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Copy &amp;Link Location</source>
         <translation>Salin Lokasi &amp;Tautan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Paste</source>
         <translation>&amp;Tempel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Delete</source>
         <translation>Hapus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Select All</source>
         <translation>Pilih Semua</translation>
     </message>
@@ -221,52 +221,52 @@
 <context>
     <name>mbscope::AddressField</name>
     <message>
-        <location filename="../../ui/addressfield.cpp" line="+26" />
+        <location filename="../../ui/compose/addressfield.cpp" line="+26"/>
         <source>Decimal (0-based)</source>
         <translation>Desimal (mulai 0)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Hex (0-based)</source>
         <translation>Hex (mulai 0)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Modicon (1-based)</source>
         <translation>Modicon (mulai 1)</translation>
     </message>
     <message>
-        <location line="+114" />
+        <location line="+114"/>
         <source>type an address</source>
         <translation>ketik alamat</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>'%1' is not a decimal number (switch the notation to Hex for 0x... addresses)</source>
-        <translation>'%1' bukan bilangan desimal (ganti notasi ke Hex untuk alamat 0x...)</translation>
+        <location line="+6"/>
+        <source>&apos;%1&apos; is not a decimal number (switch the notation to Hex for 0x... addresses)</source>
+        <translation>&apos;%1&apos; bukan bilangan desimal (ganti notasi ke Hex untuk alamat 0x...)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>address %1 is out of range: PDU addresses are 0-65535</source>
         <translation>alamat %1 di luar rentang: alamat PDU adalah 0-65535</translation>
     </message>
     <message>
-        <location line="+9" />
-        <source>'%1' is not a hex number (0x0079 or 79)</source>
-        <translation>'%1' bukan bilangan hex (0x0079 atau 79)</translation>
+        <location line="+9"/>
+        <source>&apos;%1&apos; is not a hex number (0x0079 or 79)</source>
+        <translation>&apos;%1&apos; bukan bilangan hex (0x0079 atau 79)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>address 0x%1 is out of range: PDU addresses are 0x0000-0xFFFF</source>
         <translation>alamat 0x%1 di luar rentang: alamat PDU adalah 0x0000-0xFFFF</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>%1 is a reference to %2, but this function addresses %3 (%4xxxx)</source>
         <translation>%1 adalah referensi ke %2, tetapi fungsi ini mengalamati %3 (%4xxxx)</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+26"/>
         <source>PDU address %1 (0x%2), 0-based</source>
         <translation>Alamat PDU %1 (0x%2), mulai 0</translation>
     </message>
@@ -274,224 +274,224 @@
 <context>
     <name>mbscope::ConnectionBar</name>
     <message>
-        <location filename="../../ui/connectionbar.cpp" line="+32" />
+        <location filename="../../ui/link/connectionbar.cpp" line="+32"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Modbus TCP Security (TLS)</source>
         <translation>Modbus TCP Security (TLS)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>RTU over TCP</source>
         <translation>RTU lewat TCP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>ASCII over TCP</source>
         <translation>ASCII lewat TCP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Modbus UDP</source>
         <translation>Modbus UDP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>RTU over UDP</source>
         <translation>RTU lewat UDP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>RTU (serial)</source>
         <translation>RTU (serial)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>ASCII (serial)</source>
         <translation>ASCII (serial)</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+43"/>
         <source>host name or IP address</source>
         <translation>nama host atau alamat IP</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>&amp;Host:</source>
         <translation>&amp;Host:</translation>
     </message>
     <message>
-        <location line="+2" />
-        <location line="+40" />
+        <location line="+2"/>
+        <location line="+40"/>
         <source>P&amp;ort:</source>
         <translation>P&amp;ort:</translation>
     </message>
     <message>
-        <location line="-29" />
+        <location line="-29"/>
         <source>/dev/ttyUSB0</source>
         <translation>/dev/ttyUSB0</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Refresh</source>
         <translation>Segarkan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Look for serial ports again (after plugging in an adapter)</source>
         <translation>Cari port serial lagi (setelah adaptor dicolokkan)</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Even</source>
         <translation>Genap</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Odd</source>
         <translation>Ganjil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>None</source>
         <translation>Tidak ada</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>&amp;Baud:</source>
         <translation>&amp;Baud:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Pa&amp;rity:</source>
         <translation>Pa&amp;ritas:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Data:</source>
         <translation>Bit &amp;data:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Stop:</source>
         <translation>Bit &amp;stop:</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>Unit (slave) id put into built and completed requests; 0 is a broadcast on serial lines</source>
         <translation>ID unit (slave) yang dimasukkan ke permintaan yang dibuat dan dilengkapi; 0 adalah broadcast di jalur serial</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>How long to wait for an answer before the request counts as timed out</source>
         <translation>Berapa lama menunggu jawaban sebelum permintaan dianggap habis waktu</translation>
     </message>
     <message>
-        <location line="+2" />
-        <location line="+199" />
+        <location line="+2"/>
+        <location line="+214"/>
         <source>&amp;Connect</source>
         <translation>Sa&amp;mbungkan</translation>
     </message>
     <message>
-        <location line="-196" />
+        <location line="-211"/>
         <source>Disconnect</source>
         <translation>Putuskan</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Recent</source>
         <translation>Terakhir</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Targets connected to before</source>
         <translation>Target yang pernah disambungkan</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>&amp;Link:</source>
         <translation>&amp;Link:</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Timeout:</source>
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+66" />
+        <location line="+66"/>
         <source>No serial port found: plug in the adapter and press Refresh, or type the device path</source>
         <translation>Tidak ada port serial: colokkan adaptor lalu tekan Segarkan, atau ketik path perangkatnya</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Serial ports found: %1</source>
         <translation>Port serial yang ditemukan: %1</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>Choose a serial port: none was found. Plug in the adapter and press Refresh, or type its path (/dev/ttyUSB0).</source>
         <translation>Pilih port serial: tidak ada yang ditemukan. Colokkan adaptor lalu tekan Segarkan, atau ketik path-nya (/dev/ttyUSB0).</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Choose a serial port from the list (or type its path, e.g. /dev/ttyUSB0).</source>
         <translation>Pilih port serial dari daftar (atau ketik path-nya, mis. /dev/ttyUSB0).</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>Baud rate '%1' is not a number: choose one from the list (9600, 19200...).</source>
-        <translation>Baud rate '%1' bukan angka: pilih dari daftar (9600, 19200...).</translation>
+        <location line="+7"/>
+        <source>Baud rate &apos;%1&apos; is not a number: choose one from the list (9600, 19200...).</source>
+        <translation>Baud rate &apos;%1&apos; bukan angka: pilih dari daftar (9600, 19200...).</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>RTU needs 8 data bits (Serial Line V1.02, 2.5.1): set Data to 8.</source>
         <translation>RTU memerlukan 8 bit data (Serial Line V1.02, 2.5.1): atur Bit data ke 8.</translation>
     </message>
     <message>
-        <location line="+7" />
-        <source>Type the device's host name or IP address (for example 192.168.127.254).</source>
+        <location line="+7"/>
+        <source>Type the device&apos;s host name or IP address (for example 192.168.127.254).</source>
         <translation>Ketik nama host atau alamat IP perangkat (misalnya 192.168.127.254).</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>Host '%1' is not a host name or IP address: type only the address, the port goes in Port.</source>
-        <translation>Host '%1' bukan nama host atau alamat IP: ketik alamatnya saja, port diisi di Port.</translation>
+        <location line="+5"/>
+        <source>Host &apos;%1&apos; is not a host name or IP address: type only the address, the port goes in Port.</source>
+        <translation>Host &apos;%1&apos; bukan nama host atau alamat IP: ketik alamatnya saja, port diisi di Port.</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+19"/>
         <source>This target cannot be used: %1</source>
         <translation>Target ini tidak bisa dipakai: %1</translation>
     </message>
     <message>
-        <location line="+44" />
+        <location line="+59"/>
         <source>Dis&amp;connect</source>
         <translation>&amp;Putuskan</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>The link failed: %1. Check that the device is powered and reachable at this address, then send again (the link reopens), or press Disconnect to change the target.</source>
         <translation>Link gagal: %1. Pastikan perangkat menyala dan dapat dijangkau di alamat ini, lalu kirim lagi (link dibuka kembali), atau tekan Putuskan untuk mengganti target.</translation>
     </message>
     <message>
-        <location line="+54" />
-        <source>The recent target '%1' cannot be read: %2</source>
-        <translation>Target terakhir '%1' tidak dapat dibaca: %2</translation>
+        <location line="+54"/>
+        <source>The recent target &apos;%1&apos; cannot be read: %2</source>
+        <translation>Target terakhir &apos;%1&apos; tidak dapat dibaca: %2</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>(no recent targets yet)</source>
         <translation>(belum ada target terakhir)</translation>
     </message>
@@ -499,32 +499,32 @@
 <context>
     <name>mbscope::CsvExportAction</name>
     <message>
-        <location filename="../../ui/csvexportaction.cpp" line="+11" />
+        <location filename="../../ui/common/csvexportaction.cpp" line="+11"/>
         <source>Export table as &amp;CSV…</source>
         <translation>Ekspor tabel sebagai &amp;CSV…</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Save the table as comma-separated values</source>
         <translation>Simpan tabel sebagai nilai yang dipisahkan koma</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Export table</source>
         <translation>Ekspor tabel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>CSV file (*.csv)</source>
         <translation>Berkas CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Table saved to %1</source>
         <translation>Tabel disimpan ke %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Table not saved: %1</source>
         <translation>Tabel tidak disimpan: %1</translation>
     </message>
@@ -532,119 +532,119 @@
 <context>
     <name>mbscope::DecodePanel</name>
     <message>
-        <location filename="../../ui/decodepanel.cpp" line="+58" />
+        <location filename="../../ui/decode/decodepanel.cpp" line="+58"/>
         <source>Type or paste a frame as hex: 01 03 00 79 00 16 15 DD</source>
         <translation>Ketik atau tempel frame sebagai hex: 01 03 00 79 00 16 15 DD</translation>
     </message>
     <message>
-        <location line="+7" />
-        <location line="+9" />
+        <location line="+7"/>
+        <location line="+9"/>
         <source>Auto-detect</source>
         <translation>Deteksi otomatis</translation>
     </message>
     <message>
-        <location line="-8" />
+        <location line="-8"/>
         <source>RTU</source>
         <translation>RTU</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>ASCII</source>
         <translation>ASCII</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>TCP (MBAP)</source>
         <translation>TCP (MBAP)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>UDP (MBAP)</source>
         <translation>UDP (MBAP)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>PDU only</source>
         <translation>Hanya PDU</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Request</source>
         <translation>Permintaan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Response</source>
         <translation>Respons</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>optional: the request this response answers</source>
         <translation>opsional: permintaan yang dijawab respons ini</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>With the matching request, a response's byte count, echoed values and transaction id are checked against what was asked</source>
+        <location line="+1"/>
+        <source>With the matching request, a response&apos;s byte count, echoed values and transaction id are checked against what was asked</source>
         <translation>Dengan permintaan yang cocok, jumlah byte, nilai yang dikembalikan dan ID transaksi respons diperiksa terhadap yang diminta</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>&amp;Frame:</source>
         <translation>&amp;Frame:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Fr&amp;aming:</source>
         <translation>Fr&amp;aming:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Direction:</source>
         <translation>&amp;Arah:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Matching &amp;request:</source>
         <translation>&amp;Permintaan yang cocok:</translation>
     </message>
     <message>
-        <location line="+108" />
+        <location line="+108"/>
         <source>Frame</source>
         <translation>Frame</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>Matching request</source>
         <translation>Permintaan yang cocok</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+18"/>
         <source>Valid:</source>
         <translation>Valid:</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Invalid:</source>
         <translation>Tidak valid:</translation>
     </message>
     <message>
-        <location line="+4" />
-        <location line="+1" />
+        <location line="+4"/>
+        <location line="+1"/>
         <source>as chosen</source>
         <translation>sesuai pilihan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Framing %1: %2. Direction %3: %4.</source>
         <translation>Framing %1: %2. Arah %3: %4.</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>Type or paste a frame as hex; the fields appear as you type.</source>
         <translation>Ketik atau tempel frame sebagai hex; field-nya muncul sambil Anda mengetik.</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>(the tree shows the last input that could be read)</source>
         <translation>(pohon menampilkan input terakhir yang dapat dibaca)</translation>
     </message>
@@ -652,89 +652,89 @@
 <context>
     <name>mbscope::DecodeView</name>
     <message>
-        <location filename="../../ui/decodeview.cpp" line="+40" />
+        <location filename="../../ui/decode/decodeview.cpp" line="+40"/>
         <source>Copy</source>
         <translation>Salin</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Copy both frames: as text (as `mbscope decode` prints them), as JSON or as hex</source>
         <translation>Salin kedua frame: sebagai teks (seperti dicetak `mbscope decode`), sebagai JSON atau sebagai hex</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>Copy as &amp;text</source>
         <translation>Salin sebagai &amp;teks</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Copy as &amp;JSON</source>
         <translation>Salin sebagai &amp;JSON</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Copy as &amp;hex</source>
         <translation>Salin sebagai &amp;hex</translation>
     </message>
     <message>
-        <location line="+45" />
+        <location line="+45"/>
         <source>No request: this frame answers none that was sent (%1)</source>
         <translation>Tanpa permintaan: frame ini tidak menjawab permintaan yang dikirim (%1)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No request</source>
         <translation>Tanpa permintaan</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>No answer yet</source>
         <translation>Belum ada jawaban</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Broadcast: no answer is expected</source>
         <translation>Broadcast: tidak ada jawaban yang diharapkan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No answer: %1</source>
         <translation>Tidak ada jawaban: %1</translation>
     </message>
     <message>
-        <location line="+22" />
-        <location line="+13" />
+        <location line="+22"/>
+        <location line="+13"/>
         <source>Request</source>
         <translation>Permintaan</translation>
     </message>
     <message>
-        <location line="-12" />
-        <location line="+13" />
+        <location line="-12"/>
+        <location line="+13"/>
         <source>Response</source>
         <translation>Respons</translation>
     </message>
     <message>
-        <location line="-12" />
+        <location line="-12"/>
         <source>Select a frame in the traffic list, or send a request</source>
         <translation>Pilih frame di daftar lalu lintas, atau kirim permintaan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No exchange selected</source>
         <translation>Tidak ada pertukaran yang dipilih</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>after %1</source>
         <translation>setelah %1</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>latency %1</source>
         <translation>latensi %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>transaction %1</source>
         <translation>transaksi %1</translation>
     </message>
@@ -742,92 +742,92 @@
 <context>
     <name>mbscope::DissectionSummary</name>
     <message>
-        <location filename="../../ui/dissectionsummary.cpp" line="+22" />
+        <location filename="../../ui/decode/dissectionsummary.cpp" line="+22"/>
         <source>Frame</source>
         <translation>Frame</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>%1 request</source>
         <translation>permintaan %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 response</source>
         <translation>respons %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>%1, unit %2</source>
         <translation>%1, unit %2</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>%1: no function code</source>
         <translation>%1: tanpa kode fungsi</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>%1: %2 exception</source>
         <translation>%1: exception %2</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>%1, %2 from address %3</source>
         <translation>%1, %2 mulai alamat %3</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1, address %2</source>
         <translation>%1, alamat %2</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>%1, address %2 = %3</source>
         <translation>%1, alamat %2 = %3</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>%1, 1 register value</source>
         <translation>%1, 1 nilai register</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>%1, %2 register values</source>
         <translation>%1, %2 nilai register</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1, 1 bit</source>
         <translation>%1, 1 bit</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>%1, %2 bits</source>
         <translation>%1, %2 bit</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>[1 error]</source>
         <translation>[1 error]</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>[%1 errors]</source>
         <translation>[%1 error]</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>[1 warning]</source>
         <translation>[1 peringatan]</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>[%1 warnings]</source>
         <translation>[%1 peringatan]</translation>
     </message>
@@ -835,22 +835,22 @@
 <context>
     <name>mbscope::EmbeddedSimulator</name>
     <message>
-        <location filename="../../ui/embeddedsimulator.cpp" line="+25" />
-        <source>The simulator's profile '%1' cannot be loaded: %2</source>
-        <translation>Profil simulator '%1' tidak dapat dimuat: %2</translation>
+        <location filename="../../ui/sim/embeddedsimulator.cpp" line="+25"/>
+        <source>The simulator&apos;s profile &apos;%1&apos; cannot be loaded: %2</source>
+        <translation>Profil simulator &apos;%1&apos; tidak dapat dimuat: %2</translation>
     </message>
     <message>
-        <location line="+8" />
-        <source>The simulator's profile '%1' has no usable unit: %2</source>
-        <translation>Profil simulator '%1' tidak punya unit yang bisa dipakai: %2</translation>
+        <location line="+8"/>
+        <source>The simulator&apos;s profile &apos;%1&apos; has no usable unit: %2</source>
+        <translation>Profil simulator &apos;%1&apos; tidak punya unit yang bisa dipakai: %2</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Port %1 is in use by another program, so the simulator listens on port %2 instead.</source>
         <translation>Port %1 dipakai program lain, jadi simulator mendengarkan di port %2.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>The simulator cannot listen on %1: %2</source>
         <translation>Simulator tidak dapat mendengarkan di %1: %2</translation>
     </message>
@@ -858,1259 +858,1259 @@
 <context>
     <name>mbscope::Field</name>
     <message>
-        <location filename="../../core/protocol/aduascii.cpp" line="+71" />
+        <location filename="../../core/protocol/aduascii.cpp" line="+71"/>
         <source>Start</source>
         <translation>Awal</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Frame text</source>
         <translation>Teks frame</translation>
     </message>
     <message>
-        <location line="+5" />
-        <location line="+14" />
-        <location filename="../../core/protocol/adumbap.cpp" line="+27" />
-        <location line="+42" />
-        <location filename="../../core/protocol/adurtu.cpp" line="+37" />
-        <location line="+7" />
-        <location line="+38" />
-        <location filename="../../core/protocol/pduchecks.cpp" line="+12" />
+        <location line="+5"/>
+        <location line="+14"/>
+        <location filename="../../core/protocol/adumbap.cpp" line="+27"/>
+        <location line="+42"/>
+        <location filename="../../core/protocol/adurtu.cpp" line="+37"/>
+        <location line="+7"/>
+        <location line="+38"/>
+        <location filename="../../core/protocol/pduchecks.cpp" line="+12"/>
         <source>Missing bytes</source>
         <translation>Byte yang hilang</translation>
     </message>
     <message>
-        <location line="-10" />
-        <location filename="../../core/protocol/adumbap.cpp" line="-43" />
-        <location line="+27" />
-        <location filename="../../core/protocol/adurtu.cpp" line="-64" />
+        <location line="-10"/>
+        <location filename="../../core/protocol/adumbap.cpp" line="-43"/>
+        <location line="+27"/>
+        <location filename="../../core/protocol/adurtu.cpp" line="-64"/>
         <source>Unit id</source>
         <translation>ID unit</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/adurtu.cpp" line="-1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/adurtu.cpp" line="-1"/>
         <source>broadcast</source>
         <translation>broadcast</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location filename="../../core/protocol/adurtu.cpp" line="+0" />
+        <location line="+0"/>
+        <location filename="../../core/protocol/adurtu.cpp" line="+0"/>
         <source>reserved address</source>
         <translation>alamat cadangan</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>LRC</source>
         <translation>LRC</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location filename="../../core/protocol/adurtu.cpp" line="+49" />
+        <location line="+0"/>
+        <location filename="../../core/protocol/adurtu.cpp" line="+49"/>
         <source>(valid)</source>
         <translation>(valid)</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location filename="../../core/protocol/adurtu.cpp" line="+0" />
+        <location line="+0"/>
+        <location filename="../../core/protocol/adurtu.cpp" line="+0"/>
         <source>(wrong)</source>
         <translation>(salah)</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>End</source>
         <translation>Akhir</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/adumbap.cpp" line="-33" />
-        <location line="+13" />
+        <location filename="../../core/protocol/adumbap.cpp" line="-33"/>
+        <location line="+13"/>
         <source>Transaction id</source>
         <translation>ID transaksi</translation>
     </message>
     <message>
-        <location line="-11" />
-        <location line="+15" />
+        <location line="-11"/>
+        <location line="+15"/>
         <source>Protocol id</source>
         <translation>ID protokol</translation>
     </message>
     <message>
-        <location line="-13" />
-        <location line="+20" />
+        <location line="-13"/>
+        <location line="+20"/>
         <source>Length</source>
         <translation>Panjang</translation>
     </message>
     <message>
-        <location line="-6" />
+        <location line="-6"/>
         <source>Modbus</source>
         <translation>Modbus</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>no unit behind a gateway (0xFF is the usual value for a direct TCP server)</source>
         <translation>tidak ada unit di balik gateway (0xFF adalah nilai yang lazim untuk server TCP langsung)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>direct or broadcast</source>
         <translation>langsung atau broadcast</translation>
     </message>
     <message>
-        <location line="+8" />
-        <location filename="../../core/protocol/adurtu.cpp" line="+10" />
+        <location line="+8"/>
+        <location filename="../../core/protocol/adurtu.cpp" line="+10"/>
         <source>Trailing bytes</source>
         <translation>Byte berlebih di akhir</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/adurtu.cpp" line="-10" />
+        <location filename="../../core/protocol/adurtu.cpp" line="-10"/>
         <source>CRC</source>
         <translation>CRC</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+30"/>
         <source>Extra bytes</source>
         <translation>Byte tambahan</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/diagnosticrules.cpp" line="+33" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+44" />
+        <location filename="../../core/protocol/diagnosticrules.cpp" line="+33"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+44"/>
         <source>Return Query Data</source>
         <translation>Kembalikan Data Query</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Restart Communications Option</source>
         <translation>Opsi Restart Komunikasi</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Diagnostic Register</source>
         <translation>Kembalikan Register Diagnostik</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Change ASCII Input Delimiter</source>
         <translation>Ubah Delimiter Input ASCII</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Force Listen Only Mode</source>
         <translation>Paksa Mode Hanya-Dengar</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Clear Counters and Diagnostic Register</source>
         <translation>Kosongkan Penghitung dan Register Diagnostik</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Bus Message Count</source>
         <translation>Kembalikan Jumlah Pesan Bus</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Bus Communication Error Count</source>
         <translation>Kembalikan Jumlah Error Komunikasi Bus</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Bus Exception Error Count</source>
         <translation>Kembalikan Jumlah Error Exception Bus</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Server Message Count</source>
         <translation>Kembalikan Jumlah Pesan Server</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Server No Response Count</source>
         <translation>Kembalikan Jumlah Tanpa Respons Server</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Server NAK Count</source>
         <translation>Kembalikan Jumlah NAK Server</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Server Busy Count</source>
         <translation>Kembalikan Jumlah Server Sibuk</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Bus Character Overrun Count</source>
         <translation>Kembalikan Jumlah Overrun Karakter Bus</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Clear Overrun Counter and Flag</source>
         <translation>Kosongkan Penghitung dan Flag Overrun</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/functioncode.cpp" line="+29" />
+        <location filename="../../core/protocol/functioncode.cpp" line="+29"/>
         <source>Read Coils</source>
         <translation>Baca Coil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Read Discrete Inputs</source>
         <translation>Baca Discrete Input</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Read Holding Registers</source>
         <translation>Baca Holding Register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Read Input Registers</source>
         <translation>Baca Input Register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Write Single Coil</source>
         <translation>Tulis Satu Coil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Write Single Register</source>
         <translation>Tulis Satu Register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Read Exception Status</source>
         <translation>Baca Status Exception</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Diagnostics</source>
         <translation>Diagnostik</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Get Comm Event Counter</source>
         <translation>Ambil Penghitung Event Komunikasi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Get Comm Event Log</source>
         <translation>Ambil Log Event Komunikasi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Write Multiple Coils</source>
         <translation>Tulis Banyak Coil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Write Multiple Registers</source>
         <translation>Tulis Banyak Register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Report Server ID</source>
         <translation>Laporkan ID Server</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Read File Record</source>
         <translation>Baca Record File</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Write File Record</source>
         <translation>Tulis Record File</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Mask Write Register</source>
         <translation>Tulis Register dengan Mask</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Read/Write Multiple Registers</source>
         <translation>Baca/Tulis Banyak Register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Read FIFO Queue</source>
         <translation>Baca Antrean FIFO</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Encapsulated Interface Transport</source>
         <translation>Transport Antarmuka Terenkapsulasi</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>User-defined function</source>
         <translation>Fungsi buatan pengguna</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reserved function code</source>
         <translation>Kode fungsi cadangan</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdudissector.cpp" line="+74" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdudissector.cpp" line="+74"/>
         <source>Exception response</source>
         <translation>Respons exception</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Unassigned function code</source>
         <translation>Kode fungsi yang belum ditetapkan</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Illegal Function</source>
         <translation>Fungsi Tidak Sah</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Illegal Data Address</source>
         <translation>Alamat Data Tidak Sah</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Illegal Data Value</source>
         <translation>Nilai Data Tidak Sah</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Server Device Failure</source>
         <translation>Kegagalan Perangkat Server</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Acknowledge</source>
         <translation>Diterima (Acknowledge)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Server Device Busy</source>
         <translation>Perangkat Server Sibuk</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Negative Acknowledge</source>
         <translation>Ditolak (Negative Acknowledge)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Memory Parity Error</source>
         <translation>Error Paritas Memori</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Gateway Path Unavailable</source>
         <translation>Jalur Gateway Tidak Tersedia</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Gateway Target Device Failed to Respond</source>
         <translation>Perangkat Tujuan Gateway Tidak Menjawab</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Unknown exception code</source>
         <translation>Kode exception tidak dikenal</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Illegal Function: the function code is not supported by the device, or not allowed in its current state</source>
         <translation>Fungsi Tidak Sah: kode fungsi tidak didukung perangkat, atau tidak diizinkan dalam kondisinya saat ini</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Illegal Data Address: the address range is not available in the device</source>
         <translation>Alamat Data Tidak Sah: rentang alamat tidak tersedia di perangkat</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Illegal Data Value: a value in the request is not allowed, such as a quantity or length out of range</source>
         <translation>Nilai Data Tidak Sah: ada nilai dalam permintaan yang tidak diizinkan, misalnya jumlah atau panjang di luar rentang</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Server Device Failure: an unrecoverable error occurred while the device was performing the action</source>
         <translation>Kegagalan Perangkat Server: terjadi error yang tidak bisa dipulihkan saat perangkat menjalankan perintah</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Acknowledge: the device accepted the request but needs a long time to process it; poll it later</source>
         <translation>Diterima (Acknowledge): perangkat menerima permintaan tetapi butuh waktu lama untuk memprosesnya; tanyakan lagi nanti</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Server Device Busy: the device is processing a long-duration command; retry later</source>
         <translation>Perangkat Server Sibuk: perangkat sedang memproses perintah yang lama; coba lagi nanti</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Negative Acknowledge: the device cannot perform the program function (legacy Modicon code)</source>
         <translation>Ditolak (Negative Acknowledge): perangkat tidak dapat menjalankan fungsi program (kode Modicon lama)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Memory Parity Error: the device found a parity error in its extended file memory (function 20/21)</source>
         <translation>Error Paritas Memori: perangkat menemukan error paritas di memori file tambahannya (fungsi 20/21)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Gateway Path Unavailable: the gateway could not allocate a path to the target, it is misconfigured or overloaded</source>
         <translation>Jalur Gateway Tidak Tersedia: gateway tidak dapat menyediakan jalur ke tujuan, konfigurasinya salah atau bebannya berlebih</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Gateway Target Device Failed to Respond: the gateway got no answer from the target device</source>
         <translation>Perangkat Tujuan Gateway Tidak Menjawab: gateway tidak mendapat jawaban dari perangkat tujuan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Unassigned exception code: 0x09 is not defined by the Modbus specification</source>
         <translation>Kode exception yang belum ditetapkan: 0x09 tidak didefinisikan oleh spesifikasi Modbus</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Unknown exception code: the Modbus specification defines 0x01-0x08, 0x0A and 0x0B</source>
         <translation>Kode exception tidak dikenal: spesifikasi Modbus mendefinisikan 0x01-0x08, 0x0A dan 0x0B</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/modiconreference.cpp" line="+184" />
+        <location filename="../../core/protocol/modiconreference.cpp" line="+184"/>
         <source>coils</source>
         <translation>coil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>discrete inputs</source>
         <translation>discrete input</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>input registers</source>
         <translation>input register</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+2" />
+        <location line="+1"/>
+        <location line="+2"/>
         <source>holding registers</source>
         <translation>holding register</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pduchecks.cpp" line="+91" />
+        <location filename="../../core/protocol/pduchecks.cpp" line="+91"/>
         <source>Unexpected bytes</source>
         <translation>Byte tak terduga</translation>
     </message>
     <message>
-        <location line="+38" />
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="-10" />
-        <location line="+1" />
-        <location line="+9" />
-        <location line="+2" />
-        <location line="+1" />
-        <location line="+1" />
+        <location line="+38"/>
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="-10"/>
+        <location line="+1"/>
+        <location line="+9"/>
+        <location line="+2"/>
+        <location line="+1"/>
+        <location line="+1"/>
         <source>Data</source>
         <translation>Data</translation>
     </message>
     <message>
-        <location line="+68" />
-        <location filename="../../core/protocol/pdumultiplewrite.cpp" line="+17" />
-        <location line="+6" />
+        <location line="+68"/>
+        <location filename="../../core/protocol/pdumultiplewrite.cpp" line="+17"/>
+        <location line="+6"/>
         <source>Start address</source>
         <translation>Alamat awal</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location filename="../../core/protocol/pdumultiplewrite.cpp" line="-4" />
-        <location line="+6" />
+        <location line="+1"/>
+        <location filename="../../core/protocol/pdumultiplewrite.cpp" line="-4"/>
+        <location line="+6"/>
         <source>Quantity</source>
         <translation>Jumlah</translation>
     </message>
     <message>
-        <location line="+18" />
-        <location filename="../../core/protocol/pducommevents.cpp" line="+161" />
-        <location filename="../../core/protocol/pdufilerecord.cpp" line="+84" />
-        <location line="+67" />
-        <location filename="../../core/protocol/pdumaskfifo.cpp" line="+61" />
-        <location filename="../../core/protocol/pdumultiplewrite.cpp" line="+24" />
-        <location filename="../../core/protocol/pdureadbits.cpp" line="+23" />
-        <location filename="../../core/protocol/pdureportserverid.cpp" line="+25" />
+        <location line="+18"/>
+        <location filename="../../core/protocol/pducommevents.cpp" line="+161"/>
+        <location filename="../../core/protocol/pdufilerecord.cpp" line="+84"/>
+        <location line="+67"/>
+        <location filename="../../core/protocol/pdumaskfifo.cpp" line="+61"/>
+        <location filename="../../core/protocol/pdumultiplewrite.cpp" line="+24"/>
+        <location filename="../../core/protocol/pdureadbits.cpp" line="+23"/>
+        <location filename="../../core/protocol/pdureportserverid.cpp" line="+25"/>
         <source>Byte count</source>
         <translation>Jumlah byte</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Register</source>
         <translation>Register</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Register index</source>
         <translation>Indeks register</translation>
     </message>
     <message>
-        <location line="+25" />
-        <location filename="../../core/protocol/pducommevents.cpp" line="-29" />
-        <location filename="../../core/protocol/pdureportserverid.cpp" line="+22" />
-        <location line="+5" />
-        <location filename="../../core/protocol/pdusinglewrite.cpp" line="+33" />
+        <location line="+25"/>
+        <location filename="../../core/protocol/pducommevents.cpp" line="-29"/>
+        <location filename="../../core/protocol/pdureportserverid.cpp" line="+22"/>
+        <location line="+5"/>
+        <location filename="../../core/protocol/pdusinglewrite.cpp" line="+33"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location filename="../../core/protocol/pducommevents.cpp" line="+0" />
-        <location filename="../../core/protocol/pdureportserverid.cpp" line="-5" />
-        <location line="+3" />
-        <location filename="../../core/protocol/pdusinglewrite.cpp" line="+2" />
+        <location line="+0"/>
+        <location filename="../../core/protocol/pducommevents.cpp" line="+0"/>
+        <location filename="../../core/protocol/pdureportserverid.cpp" line="-5"/>
+        <location line="+3"/>
+        <location filename="../../core/protocol/pdusinglewrite.cpp" line="+2"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>Incomplete register</source>
         <translation>Register tidak lengkap</translation>
     </message>
     <message>
-        <location line="+22" />
+        <location line="+22"/>
         <source>Padding bits</source>
         <translation>Bit pengisi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>unused high bits of the last data byte</source>
         <translation>bit atas byte data terakhir yang tidak dipakai</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pducommevents.cpp" line="-28" />
+        <location filename="../../core/protocol/pducommevents.cpp" line="-28"/>
         <source>Ready: no previous command is in progress</source>
         <translation>Siap: tidak ada perintah sebelumnya yang sedang berjalan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Busy: a previous command is still being processed</source>
         <translation>Sibuk: perintah sebelumnya masih diproses</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>Exception status</source>
         <translation>Status exception</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>Output</source>
         <translation>Output</translation>
     </message>
     <message>
-        <location line="+13" />
-        <location line="+19" />
+        <location line="+13"/>
+        <location line="+19"/>
         <source>Status</source>
         <translation>Status</translation>
     </message>
     <message>
-        <location line="-18" />
-        <location line="+19" />
+        <location line="-18"/>
+        <location line="+19"/>
         <source>Event count</source>
         <translation>Jumlah event</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Message count</source>
         <translation>Jumlah pesan</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>Event</source>
         <translation>Event</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdudeviceid.cpp" line="+29" />
+        <location filename="../../core/protocol/pdudeviceid.cpp" line="+29"/>
         <source>Basic device identification (stream access)</source>
         <translation>Identifikasi perangkat dasar (akses stream)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Regular device identification (stream access)</source>
         <translation>Identifikasi perangkat reguler (akses stream)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Extended device identification (stream access)</source>
         <translation>Identifikasi perangkat diperluas (akses stream)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>One specific identification object (individual access)</source>
         <translation>Satu objek identifikasi tertentu (akses individual)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Undefined read device ID code</source>
         <translation>Kode baca ID perangkat tidak terdefinisi</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>VendorName</source>
         <translation>VendorName</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>ProductCode</source>
         <translation>ProductCode</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>MajorMinorRevision</source>
         <translation>MajorMinorRevision</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>VendorUrl</source>
         <translation>VendorUrl</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>ProductName</source>
         <translation>ProductName</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>ModelName</source>
         <translation>ModelName</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>UserApplicationName</source>
         <translation>UserApplicationName</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reserved object</source>
         <translation>Objek cadangan</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Private object (extended, device dependent)</source>
         <translation>Objek privat (diperluas, bergantung perangkat)</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Basic identification (stream access only)</source>
         <translation>Identifikasi dasar (hanya akses stream)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Regular identification (stream access only)</source>
         <translation>Identifikasi reguler (hanya akses stream)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Extended identification (stream access only)</source>
         <translation>Identifikasi diperluas (hanya akses stream)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Basic identification (stream access and individual access)</source>
         <translation>Identifikasi dasar (akses stream dan akses individual)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Regular identification (stream access and individual access)</source>
         <translation>Identifikasi reguler (akses stream dan akses individual)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Extended identification (stream access and individual access)</source>
         <translation>Identifikasi diperluas (akses stream dan akses individual)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Undefined conformity level</source>
         <translation>Tingkat kesesuaian tidak terdefinisi</translation>
     </message>
     <message>
-        <location line="+26" />
-        <location line="+80" />
+        <location line="+26"/>
+        <location line="+80"/>
         <source>Read device ID code</source>
         <translation>Kode baca ID perangkat</translation>
     </message>
     <message>
-        <location line="-79" />
-        <location line="+42" />
+        <location line="-79"/>
+        <location line="+42"/>
         <source>Object ID</source>
         <translation>ID objek</translation>
     </message>
     <message>
-        <location line="-3" />
+        <location line="-3"/>
         <source>Object</source>
         <translation>Objek</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+19"/>
         <source>Object length</source>
         <translation>Panjang objek</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Object value</source>
         <translation>Nilai objek</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+21"/>
         <source>Conformity level</source>
         <translation>Tingkat kesesuaian</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>More follows</source>
         <translation>Masih ada lanjutan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Next object ID</source>
         <translation>ID objek berikutnya</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Number of objects</source>
         <translation>Jumlah objek</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+34"/>
         <source>No more objects</source>
         <translation>Tidak ada objek lagi</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>More objects follow: ask again from the next object ID</source>
         <translation>Masih ada objek berikutnya: minta lagi mulai dari ID objek berikutnya</translation>
     </message>
     <message>
-        <location line="+56" />
+        <location line="+56"/>
         <source>MEI type</source>
         <translation>Tipe MEI</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>Read Device Identification</source>
         <translation>Baca Identifikasi Perangkat</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>CANopen General Reference</source>
         <translation>Referensi Umum CANopen</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Reserved MEI type</source>
         <translation>Tipe MEI cadangan</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+22" />
+        <location filename="../../core/protocol/pdudiagnostics.cpp" line="+22"/>
         <source>BS (backspace)</source>
         <translation>BS (backspace)</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>HT (tab)</source>
         <translation>HT (tab)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>LF (line feed, the default delimiter)</source>
         <translation>LF (line feed, delimiter bawaan)</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>FF (form feed)</source>
         <translation>FF (form feed)</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>CR (carriage return)</source>
         <translation>CR (carriage return)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>DC1 (XON)</source>
         <translation>DC1 (XON)</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>DC3 (XOFF)</source>
         <translation>DC3 (XOFF)</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>' ' (space)</source>
-        <translation>' ' (spasi)</translation>
+        <location line="+5"/>
+        <source>&apos; &apos; (space)</source>
+        <translation>&apos; &apos; (spasi)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>not an ASCII character</source>
         <translation>bukan karakter ASCII</translation>
     </message>
     <message>
-        <location line="-52" />
-        <location line="+117" />
-        <location line="+7" />
+        <location line="-52"/>
+        <location line="+117"/>
+        <location line="+7"/>
         <source>Echo data</source>
         <translation>Data echo</translation>
     </message>
     <message>
-        <location line="-123" />
+        <location line="-123"/>
         <source>Restart option</source>
         <translation>Opsi restart</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Diagnostic register</source>
         <translation>Register diagnostik</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Bus message count</source>
         <translation>Jumlah pesan bus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Bus communication error count</source>
         <translation>Jumlah error komunikasi bus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Bus exception error count</source>
         <translation>Jumlah error exception bus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Server message count</source>
         <translation>Jumlah pesan server</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Server no response count</source>
         <translation>Jumlah tanpa respons server</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Server NAK count</source>
         <translation>Jumlah NAK server</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Server busy count</source>
         <translation>Jumlah server sibuk</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Bus character overrun count</source>
         <translation>Jumlah overrun karakter bus</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Reserved (legacy Modicon: Return IOP Overrun Count)</source>
         <translation>Cadangan (Modicon lama: Return IOP Overrun Count)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reserved (legacy Modicon: Get/Clear Modbus Plus Statistics)</source>
         <translation>Cadangan (Modicon lama: Get/Clear Modbus Plus Statistics)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Reserved sub-function</source>
         <translation>Sub-fungsi cadangan</translation>
     </message>
     <message>
-        <location line="+121" />
+        <location line="+121"/>
         <source>Restart, keep the communications event log</source>
         <translation>Restart, simpan log event komunikasi</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Restart and clear the communications event log</source>
         <translation>Restart dan kosongkan log event komunikasi</translation>
     </message>
     <message>
-        <location line="-138" />
-        <location line="+150" />
+        <location line="-138"/>
+        <location line="+150"/>
         <source>ASCII input delimiter</source>
         <translation>Delimiter input ASCII</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Padding</source>
         <translation>Pengisi</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+43"/>
         <source>Sub-function</source>
         <translation>Sub-fungsi</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdufilerecord.cpp" line="-123" />
+        <location filename="../../core/protocol/pdufilerecord.cpp" line="-123"/>
         <source>file record</source>
         <translation>record file</translation>
     </message>
     <message>
-        <location line="+12" />
-        <location line="+184" />
+        <location line="+12"/>
+        <location line="+184"/>
         <source>Reference type</source>
         <translation>Tipe referensi</translation>
     </message>
     <message>
-        <location line="-183" />
+        <location line="-183"/>
         <source>File number</source>
         <translation>Nomor file</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Record number</source>
         <translation>Nomor record</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Record length</source>
         <translation>Panjang record</translation>
     </message>
     <message>
-        <location line="+59" />
+        <location line="+59"/>
         <source>Incomplete sub-request</source>
         <translation>Sub-permintaan tidak lengkap</translation>
     </message>
     <message>
-        <location line="+23" />
-        <location line="+125" />
+        <location line="+23"/>
+        <location line="+125"/>
         <source>Sub-request</source>
         <translation>Sub-permintaan</translation>
     </message>
     <message>
-        <location line="-62" />
-        <location line="+62" />
+        <location line="-62"/>
+        <location line="+62"/>
         <source>Sub-response</source>
         <translation>Sub-respons</translation>
     </message>
     <message>
-        <location line="-61" />
+        <location line="-61"/>
         <source>Sub-response length</source>
         <translation>Panjang sub-respons</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+38"/>
         <source>Record</source>
         <translation>Record</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Record index</source>
         <translation>Indeks record</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdumaskfifo.cpp" line="-46" />
+        <location filename="../../core/protocol/pdumaskfifo.cpp" line="-46"/>
         <source>Reference address</source>
         <translation>Alamat referensi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>AND mask</source>
         <translation>Mask AND</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>OR mask</source>
         <translation>Mask OR</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>FIFO pointer address</source>
         <translation>Alamat pointer FIFO</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>bits kept from the current contents (1 = keep)</source>
         <translation>bit yang dipertahankan dari isi saat ini (1 = pertahankan)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>bits set where the AND mask is 0: result = (current AND and_mask) OR (or_mask AND NOT and_mask)</source>
         <translation>bit yang di-set di posisi mask AND bernilai 0: hasil = (isi_saat_ini AND and_mask) OR (or_mask AND NOT and_mask)</translation>
     </message>
     <message>
-        <location line="+34" />
+        <location line="+34"/>
         <source>FIFO count</source>
         <translation>Jumlah FIFO</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>FIFO entry</source>
         <translation>Isi FIFO</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdureadbits.cpp" line="+17" />
+        <location filename="../../core/protocol/pdureadbits.cpp" line="+17"/>
         <source>Coil</source>
         <translation>Coil</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Discrete input</source>
         <translation>Discrete input</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Coil index</source>
         <translation>Indeks coil</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Input index</source>
         <translation>Indeks input</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdureadwrite.cpp" line="+17" />
+        <location filename="../../core/protocol/pdureadwrite.cpp" line="+17"/>
         <source>Read start address</source>
         <translation>Alamat awal baca</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Quantity to read</source>
         <translation>Jumlah yang dibaca</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Write start address</source>
         <translation>Alamat awal tulis</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Quantity to write</source>
         <translation>Jumlah yang ditulis</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+21"/>
         <source>Write byte count</source>
         <translation>Jumlah byte tulis</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdureportserverid.cpp" line="-24" />
+        <location filename="../../core/protocol/pdureportserverid.cpp" line="-24"/>
         <source>Server ID</source>
         <translation>ID server</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Run indicator status</source>
         <translation>Status indikator jalan</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>Additional data</source>
         <translation>Data tambahan</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdusinglewrite.cpp" line="-21" />
+        <location filename="../../core/protocol/pdusinglewrite.cpp" line="-21"/>
         <source>Output address</source>
         <translation>Alamat output</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Output value</source>
         <translation>Nilai output</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Register address</source>
         <translation>Alamat register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Register value</source>
         <translation>Nilai register</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+17"/>
         <source>illegal (neither ON nor OFF)</source>
         <translation>tidak sah (bukan ON maupun OFF)</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/registerformat.cpp" line="+14" />
+        <location filename="../../core/protocol/registerformat.cpp" line="+14"/>
         <source>unsigned 16-bit</source>
         <translation>16-bit tak bertanda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>signed 16-bit</source>
         <translation>16-bit bertanda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>16-bit hex</source>
         <translation>hex 16-bit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>16-bit binary</source>
         <translation>biner 16-bit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>ASCII, two characters per register</source>
         <translation>ASCII, dua karakter per register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>unsigned 32-bit</source>
         <translation>32-bit tak bertanda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>signed 32-bit</source>
         <translation>32-bit bertanda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>unsigned 64-bit</source>
         <translation>64-bit tak bertanda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>signed 64-bit</source>
         <translation>64-bit bertanda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>float32 (IEEE 754 single)</source>
         <translation>float32 (IEEE 754 presisi tunggal)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>float64 (IEEE 754 double)</source>
         <translation>float64 (IEEE 754 presisi ganda)</translation>
     </message>
     <message>
-        <location line="+33" />
+        <location line="+33"/>
         <source>big endian</source>
         <translation>big endian</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>word swap</source>
         <translation>tukar word</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+102" />
+        <location line="+0"/>
+        <location line="+102"/>
         <source>byte swap</source>
         <translation>tukar byte</translation>
     </message>
     <message>
-        <location line="-101" />
+        <location line="-101"/>
         <source>little endian</source>
         <translation>little endian</translation>
     </message>
     <message>
-        <location line="+101" />
+        <location line="+101"/>
         <source>high byte first</source>
         <translation>byte atas dulu</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/streamframer.cpp" line="+15" />
+        <location filename="../../core/protocol/streamframer.cpp" line="+15"/>
         <source>no frame start</source>
         <translation>tidak ada awal frame</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>invalid MBAP header</source>
         <translation>header MBAP tidak valid</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>CRC mismatch</source>
         <translation>CRC tidak cocok</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>impossible function code</source>
         <translation>kode fungsi yang mustahil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>function code without a length rule while resynchronising</source>
         <translation>kode fungsi tanpa aturan panjang saat sinkronisasi ulang</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>frame restarted by ':'</source>
-        <translation>frame dimulai ulang oleh ':'</translation>
+        <location line="+1"/>
+        <source>frame restarted by &apos;:&apos;</source>
+        <translation>frame dimulai ulang oleh &apos;:&apos;</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>frame too long</source>
         <translation>frame terlalu panjang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>incomplete frame at silence</source>
         <translation>frame tidak lengkap saat jeda</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>unknown reason</source>
         <translation>alasan tidak diketahui</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdudissector.cpp" line="-51" />
+        <location filename="../../core/protocol/pdudissector.cpp" line="-51"/>
         <source>(coil 0xxxx, numbered from 1: PDU address + 1)</source>
         <translation>(coil 0xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>(discrete input 1xxxx, numbered from 1: PDU address + 1)</source>
         <translation>(discrete input 1xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>(input register 3xxxx, numbered from 1: PDU address + 1)</source>
         <translation>(input register 3xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>(holding register 4xxxx, numbered from 1: PDU address + 1)</source>
         <translation>(holding register 4xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+21"/>
         <source>Modicon reference</source>
         <translation>Referensi Modicon</translation>
     </message>
     <message>
-        <location line="+10" />
-        <location line="+7" />
+        <location line="+10"/>
+        <location line="+7"/>
         <source>Function code</source>
         <translation>Kode fungsi</translation>
     </message>
     <message>
-        <location line="+76" />
+        <location line="+76"/>
         <source>Function in error</source>
         <translation>Fungsi yang error</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Exception code</source>
         <translation>Kode exception</translation>
     </message>
@@ -2118,52 +2118,52 @@
 <context>
     <name>mbscope::FieldTreeModel</name>
     <message>
-        <location filename="../../ui/fieldtreemodel.cpp" line="+225" />
+        <location filename="../../ui/decode/fieldtreemodel.cpp" line="+225"/>
         <source>Offset</source>
         <translation>Offset</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Bytes</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Field</source>
         <translation>Field</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Value</source>
         <translation>Nilai</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Problem</source>
         <translation>Masalah</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Byte offset of the field in the frame, counted from 0</source>
         <translation>Offset byte field di dalam frame, dihitung dari 0</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>The field's raw bytes as they appear in the frame</source>
+        <location line="+1"/>
+        <source>The field&apos;s raw bytes as they appear in the frame</source>
         <translation>Byte mentah field sebagaimana muncul di frame</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>The field's name; per-item fields show their register, coil or object address</source>
+        <location line="+1"/>
+        <source>The field&apos;s name; per-item fields show their register, coil or object address</source>
         <translation>Nama field; field per item menampilkan alamat register, coil atau objeknya</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The value and what it means</source>
         <translation>Nilai dan artinya</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>What is wrong with the field and what was expected</source>
         <translation>Apa yang salah pada field dan apa yang diharapkan</translation>
     </message>
@@ -2171,7 +2171,7 @@
 <context>
     <name>mbscope::FrameInspector</name>
     <message>
-        <location filename="../../ui/frameinspector.cpp" line="+130" />
+        <location filename="../../ui/decode/frameinspector.cpp" line="+130"/>
         <source>No frame</source>
         <translation>Tidak ada frame</translation>
     </message>
@@ -2179,7 +2179,7 @@
 <context>
     <name>mbscope::HexView</name>
     <message>
-        <location filename="../../ui/hexview.cpp" line="+379" />
+        <location filename="../../ui/decode/hexview.cpp" line="+379"/>
         <source>Offset %1 (0x%2): 0x%3 = %4</source>
         <translation>Offset %1 (0x%2): 0x%3 = %4</translation>
     </message>
@@ -2187,22 +2187,22 @@
 <context>
     <name>mbscope::HistogramChart</name>
     <message>
-        <location filename="../../ui/histogramchart.cpp" line="+66" />
+        <location filename="../../ui/common/histogramchart.cpp" line="+66"/>
         <source>latency (%1)</source>
         <translation>latensi (%1)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>transactions</source>
         <translation>transaksi</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>no answered transactions: no latency to show</source>
         <translation>tidak ada transaksi yang terjawab: tidak ada latensi untuk ditampilkan</translation>
     </message>
     <message>
-        <location line="+47" />
+        <location line="+47"/>
         <source>latency (%1), logarithmic</source>
         <translation>latensi (%1), logaritmik</translation>
     </message>
@@ -2210,12 +2210,12 @@
 <context>
     <name>mbscope::LatencyAnalysis</name>
     <message>
-        <location filename="../../ui/latencyanalysis.cpp" line="+19" />
+        <location filename="../../ui/analysis/latencyanalysis.cpp" line="+19"/>
         <source>Latency histogram</source>
         <translation>Histogram latensi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Compare</source>
         <translation>Bandingkan</translation>
     </message>
@@ -2223,37 +2223,37 @@
 <context>
     <name>mbscope::LatencyComparePanel</name>
     <message>
-        <location filename="../../ui/latencycomparepanel.cpp" line="+72" />
+        <location filename="../../ui/analysis/latencycomparepanel.cpp" line="+72"/>
         <source>A run (current poll, reference, capture) and a request item, or all of its transactions</source>
         <translation>Satu run (polling saat ini, referensi, capture) dan satu item permintaan, atau semua transaksinya</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Linear bins</source>
         <translation>Bin linear</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Logarithmic bins</source>
         <translation>Bin logaritmik</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>against</source>
         <translation>terhadap</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+62"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location line="+49" />
+        <location line="+49"/>
         <source>%1 (%2 answered)</source>
         <translation>%1 (%2 terjawab)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>median %1 %2</source>
         <translation>median %1 %2</translation>
     </message>
@@ -2261,87 +2261,87 @@
 <context>
     <name>mbscope::LatencyHistogramPanel</name>
     <message>
-        <location filename="../../ui/latencyhistogrampanel.cpp" line="+47" />
+        <location filename="../../ui/analysis/latencyhistogrampanel.cpp" line="+47"/>
         <source>Which run to show: the current poll, the kept reference or an opened capture</source>
         <translation>Run mana yang ditampilkan: polling saat ini, referensi yang disimpan, atau capture yang dibuka</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>All transactions, or those of one request item of the poll</source>
         <translation>Semua transaksi, atau transaksi satu item permintaan dari polling</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Linear bins</source>
         <translation>Bin linear</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Logarithmic bins</source>
         <translation>Bin logaritmik</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Bins of equal width, or bins a constant factor apart for a long tail</source>
         <translation>Bin dengan lebar sama, atau bin berjarak faktor tetap untuk ekor yang panjang</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>&amp;Keep as reference</source>
         <translation>&amp;Simpan sebagai referensi</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Keep the current poll's figures to compare later runs with (Compare tab)</source>
+        <location line="+1"/>
+        <source>Keep the current poll&apos;s figures to compare later runs with (Compare tab)</source>
         <translation>Simpan angka polling saat ini untuk dibandingkan dengan run berikutnya (tab Bandingkan)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Fit</source>
         <translation>&amp;Paskan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Show the whole histogram again after zooming or panning</source>
         <translation>Tampilkan lagi seluruh histogram setelah zoom atau geser</translation>
     </message>
     <message>
-        <location line="+123" />
+        <location line="+123"/>
         <source>Overall</source>
         <translation>Keseluruhan</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+25"/>
         <source>min %1 %2</source>
         <translation>min %1 %2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>median %1 %2</source>
         <translation>median %1 %2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>p95 %1 %2</source>
         <translation>p95 %1 %2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>p99 %1 %2</source>
         <translation>p99 %1 %2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>max %1 %2</source>
         <translation>maks %1 %2</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 transactions, %2 answered</source>
         <translation>%1 transaksi, %2 terjawab</translation>
     </message>
@@ -2349,27 +2349,27 @@
 <context>
     <name>mbscope::LatencyRuns</name>
     <message>
-        <location filename="../../ui/latencyruns.cpp" line="+53" />
+        <location filename="../../ui/analysis/latencyruns.cpp" line="+53"/>
         <source>Current poll</source>
         <translation>Polling saat ini</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Reference</source>
         <translation>Referensi</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Capture: %1</source>
         <translation>Capture: %1</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>overall</source>
         <translation>keseluruhan</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>item %1</source>
         <translation>item %1</translation>
     </message>
@@ -2377,107 +2377,107 @@
 <context>
     <name>mbscope::LatencyStatisticsModel</name>
     <message>
-        <location filename="../../ui/latencystatisticsmodel.cpp" line="+38" />
+        <location filename="../../ui/analysis/latencystatisticsmodel.cpp" line="+38"/>
         <source>Transactions</source>
         <translation>Transaksi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ok</source>
         <translation>Ok</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Exceptions</source>
         <translation>Exception</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Exception %1 %2</source>
         <translation>Exception %1 %2</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Timeouts</source>
         <translation>Waktu habis</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>CRC errors</source>
         <translation>Error CRC</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Malformed</source>
         <translation>Cacat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Unexpected</source>
         <translation>Tak terduga</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Late</source>
         <translation>Terlambat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Link errors</source>
         <translation>Error link</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Latency min</source>
         <translation>Latensi min</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Latency mean</source>
         <translation>Latensi rata-rata</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Latency median</source>
         <translation>Latensi median</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Latency p90</source>
         <translation>Latensi p90</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Latency p95</source>
         <translation>Latensi p95</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Latency p99</source>
         <translation>Latensi p99</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Latency max</source>
         <translation>Latensi maks</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Latency std. deviation</source>
         <translation>Simpangan baku latensi</translation>
     </message>
     <message>
-        <location line="+77" />
+        <location line="+77"/>
         <source>–</source>
         <translation>–</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>Figure</source>
         <translation>Besaran</translation>
     </message>
@@ -2485,17 +2485,17 @@
 <context>
     <name>mbscope::LatencyTimeGraphs</name>
     <message>
-        <location filename="../../ui/latencytimegraphs.cpp" line="+31" />
+        <location filename="../../ui/analysis/latencytimegraphs.cpp" line="+31"/>
         <source>answered (%1)</source>
         <translation>terjawab (%1)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>exceptions (%1)</source>
         <translation>exception (%1)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>no usable answer (%1), drawn at 0</source>
         <translation>tanpa jawaban yang bisa dipakai (%1), digambar di 0</translation>
     </message>
@@ -2503,62 +2503,52 @@
 <context>
     <name>mbscope::LatencyTimePanel</name>
     <message>
-        <location filename="../../ui/latencytimepanel.cpp" line="+23" />
-        <source>&amp;Follow</source>
-        <translation>&amp;Ikuti</translation>
-    </message>
-    <message>
-        <location line="+5" />
+        <location filename="../../ui/analysis/latencytimepanel.cpp" line="+29"/>
         <source>time since the first request (s)</source>
         <translation>waktu sejak permintaan pertama (s)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>latency (ms)</source>
         <translation>latensi (ms)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 ms</source>
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>answered</source>
         <translation>dijawab</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>exception</source>
         <translation>exception</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>no usable answer (timeout or bad answer)</source>
         <translation>tanpa jawaban yang bisa dipakai (waktu habis atau jawaban buruk)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Keep every transaction in view as new ones arrive</source>
         <translation>Jaga semua transaksi tetap terlihat saat transaksi baru masuk</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>C&amp;lear</source>
-        <translation>&amp;Kosongkan</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Forget the points shown; new transactions start a new time axis</source>
         <translation>Lupakan titik yang ditampilkan; transaksi baru memulai sumbu waktu baru</translation>
     </message>
     <message>
-        <location line="+89" />
+        <location line="+76"/>
         <source>%1 transactions: %2 answered, %3 exceptions, %4 without a usable answer</source>
         <translation>%1 transaksi: %2 terjawab, %3 exception, %4 tanpa jawaban yang bisa dipakai</translation>
     </message>
@@ -2566,32 +2556,32 @@
 <context>
     <name>mbscope::LinkController</name>
     <message>
-        <location filename="../../ui/linkcontroller.cpp" line="+66" />
+        <location filename="../../ui/link/linkcontroller.cpp" line="+66"/>
         <source>%1: the link opens with the first request</source>
         <translation>%1: link dibuka dengan permintaan pertama</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>Not connected</source>
         <translation>Tidak tersambung</translation>
     </message>
     <message>
-        <location line="+68" />
+        <location line="+68"/>
         <source>Poll %1: %2 transactions, %3 ok, %4 failed</source>
         <translation>Polling %1: %2 transaksi, %3 ok, %4 gagal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>stopped</source>
         <translation>dihentikan</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>finished</source>
         <translation>selesai</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>; latency min %1 ms, mean %2 ms, max %3 ms</source>
         <translation>; latensi min %1 ms, rata-rata %2 ms, maks %3 ms</translation>
     </message>
@@ -2599,47 +2589,47 @@
 <context>
     <name>mbscope::LinkStatusWidget</name>
     <message>
-        <location filename="../../ui/linkstatuswidget.cpp" line="+32" />
+        <location filename="../../ui/shell/linkstatuswidget.cpp" line="+32"/>
         <source>Not connected</source>
         <translation>Tidak tersambung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Connected</source>
         <translation>Tersambung</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Link failed</source>
         <translation>Link gagal</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>TX %1 B  RX %2 B  ·  %3</source>
         <translation>TX %1 B  RX %2 B  ·  %3</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>1 request</source>
         <translation>1 permintaan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 requests</source>
         <translation>%1 permintaan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>  ·  1 link error</source>
         <translation>  ·  1 error link</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>  ·  %1 link errors</source>
         <translation>  ·  %1 error link</translation>
     </message>
@@ -2647,127 +2637,127 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/mainwindow.cpp" line="+67" />
+        <location filename="../../ui/shell/mainwindow.cpp" line="+67"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+27"/>
         <source>&amp;Answer</source>
         <translation>&amp;Jawaban</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Decode any frame</source>
         <translation>&amp;Dekode frame apa saja</translation>
     </message>
     <message>
-        <location line="+47" />
-        <source>Disconnected. The built-in simulator still answers on &lt;code&gt;%1&lt;/code&gt;: press &lt;b&gt;Connect&lt;/b&gt; to use it again, or choose a real device's link type, host and port (or serial port) first.</source>
+        <location line="+47"/>
+        <source>Disconnected. The built-in simulator still answers on &lt;code&gt;%1&lt;/code&gt;: press &lt;b&gt;Connect&lt;/b&gt; to use it again, or choose a real device&apos;s link type, host and port (or serial port) first.</source>
         <translation>Terputus. Simulator bawaan masih menjawab di &lt;code&gt;%1&lt;/code&gt;: tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk memakainya lagi, atau pilih dulu jenis link, host dan port (atau port serial) perangkat sungguhan.</translation>
     </message>
     <message>
-        <location line="+88" />
+        <location line="+88"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Registers</source>
         <translation>Register</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Analysis</source>
         <translation>Analisis</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Simulator</source>
         <translation>Simulator</translation>
     </message>
     <message>
-        <location line="+42" />
+        <location line="+42"/>
         <source>Not sent (%1): connect first</source>
         <translation>Tidak terkirim (%1): sambungkan dulu</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Sent: %1</source>
         <translation>Terkirim: %1</translation>
     </message>
     <message>
-        <location line="+25" />
-        <source>&lt;b&gt;Connected to mbscope's built-in simulator&lt;/b&gt;, not to a device: a RosRao gamma detector (profile &lt;code&gt;%1&lt;/code&gt;) answering on &lt;code&gt;%2&lt;/code&gt;. Press &lt;b&gt;Send&lt;/b&gt; to read its 22 registers. To talk to a real device, press &lt;b&gt;Disconnect&lt;/b&gt;, choose its link type, host and port (or serial port) and press &lt;b&gt;Connect&lt;/b&gt;.</source>
+        <location line="+25"/>
+        <source>&lt;b&gt;Connected to mbscope&apos;s built-in simulator&lt;/b&gt;, not to a device: a RosRao gamma detector (profile &lt;code&gt;%1&lt;/code&gt;) answering on &lt;code&gt;%2&lt;/code&gt;. Press &lt;b&gt;Send&lt;/b&gt; to read its 22 registers. To talk to a real device, press &lt;b&gt;Disconnect&lt;/b&gt;, choose its link type, host and port (or serial port) and press &lt;b&gt;Connect&lt;/b&gt;.</source>
         <translation>&lt;b&gt;Tersambung ke simulator bawaan mbscope&lt;/b&gt;, bukan ke perangkat: detektor gamma RosRao (profil &lt;code&gt;%1&lt;/code&gt;) yang menjawab di &lt;code&gt;%2&lt;/code&gt;. Tekan &lt;b&gt;Kirim&lt;/b&gt; untuk membaca 22 register-nya. Untuk berbicara dengan perangkat sungguhan, tekan &lt;b&gt;Putuskan&lt;/b&gt;, pilih jenis link, host dan port (atau port serial)-nya, lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt;.</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>&amp;File</source>
         <translation>&amp;Berkas</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>&amp;Quit</source>
         <translation>&amp;Keluar</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>&amp;Request</source>
         <translation>&amp;Permintaan</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>&amp;Edit raw bytes</source>
         <translation>&amp;Sunting byte mentah</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Build with the &amp;form</source>
         <translation>Susun dengan &amp;formulir</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>&amp;View</source>
         <translation>&amp;Tampilan</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>&amp;Find in traffic</source>
         <translation>&amp;Cari di lalu lintas</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>&amp;Tools</source>
         <translation>&amp;Alat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferensi…</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>The new language is used when mbscope is started again.</source>
         <translation>Bahasa yang baru dipakai saat mbscope dijalankan lagi.</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>&amp;Help</source>
         <translation>Ba&amp;ntuan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;About mbscope</source>
         <translation>&amp;Tentang mbscope</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>About mbscope</source>
         <translation>Tentang mbscope</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&lt;h3&gt;mbscope %1&lt;/h3&gt;&lt;p&gt;A bench for testing and analysing Modbus devices: send exactly the bytes you mean, see every field of the answer explained, measure how the device behaves.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or (at your option) any later version (GPL-3.0-or-later). This program comes with ABSOLUTELY NO WARRANTY.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QCustomPlot.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;mbscope %1&lt;/h3&gt;&lt;p&gt;Meja uji untuk menguji dan menganalisis perangkat Modbus: kirim persis byte yang Anda maksud, lihat setiap field jawaban dijelaskan, ukur bagaimana perangkat berperilaku.&lt;/p&gt;&lt;p&gt;Dilisensikan di bawah GNU General Public License, versi 3 atau (sesuai pilihan Anda) versi yang lebih baru (GPL-3.0-or-later). Program ini datang TANPA JAMINAN APA PUN.&lt;/p&gt;&lt;p&gt;Dibuat dengan Qt %2 dan QCustomPlot.&lt;/p&gt;</translation>
     </message>
@@ -2775,7 +2765,7 @@
 <context>
     <name>mbscope::NoticeBanner</name>
     <message>
-        <location filename="../../ui/noticebanner.cpp" line="+27" />
+        <location filename="../../ui/common/noticebanner.cpp" line="+27"/>
         <source>Dismiss</source>
         <translation>Tutup</translation>
     </message>
@@ -2783,57 +2773,57 @@
 <context>
     <name>mbscope::PlanController</name>
     <message>
-        <location filename="../../ui/plancontroller.cpp" line="+41" />
+        <location filename="../../ui/session/plancontroller.cpp" line="+41"/>
         <source>The plan is already running.</source>
         <translation>Rencana uji sudah berjalan.</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>The session has no test plan: add a "plan" to the session document (see docs/sessions.md).</source>
-        <translation>Sesi ini tidak punya rencana uji: tambahkan "plan" ke dokumen sesi (lihat docs/sessions.md).</translation>
+        <location line="+2"/>
+        <source>The session has no test plan: add a &quot;plan&quot; to the session document (see docs/sessions.md).</source>
+        <translation>Sesi ini tidak punya rencana uji: tambahkan &quot;plan&quot; ke dokumen sesi (lihat docs/sessions.md).</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Stop the poll first: the plan's steps need the device to themselves.</source>
+        <location line="+2"/>
+        <source>Stop the poll first: the plan&apos;s steps need the device to themselves.</source>
         <translation>Hentikan polling dulu: langkah-langkah rencana uji perlu memakai perangkat sendirian.</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Connect to a device, or save a target in the session, to run the plan against.</source>
         <translation>Sambungkan ke perangkat, atau simpan target di sesi, untuk menjalankan rencana uji terhadapnya.</translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>The session's target %1 is not a target: %2</source>
+        <location line="+3"/>
+        <source>The session&apos;s target %1 is not a target: %2</source>
         <translation>Target sesi %1 bukan target: %2</translation>
     </message>
     <message>
-        <location line="+50" />
+        <location line="+50"/>
         <source>Steps: %1; passed %2, failed %3, errors %4, skipped %5; %6 s against %7.</source>
         <translation>Langkah: %1; lulus %2, gagal %3, error %4, dilewati %5; %6 s terhadap %7.</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>%1 The link failed: %2</source>
         <translation>%1 Link gagal: %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 Stopped before the end.</source>
         <translation>%1 Dihentikan sebelum selesai.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Passed. %1</source>
         <translation>Lulus. %1</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Failed. %1</source>
         <translation>Gagal. %1</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Run the plan before exporting its results.</source>
         <translation>Jalankan rencana uji sebelum mengekspor hasilnya.</translation>
     </message>
@@ -2841,68 +2831,69 @@
 <context>
     <name>mbscope::PlanPanel</name>
     <message>
-        <location filename="../../ui/planpanel.cpp" line="+20" />
+        <location filename="../../ui/session/planpanel.cpp" line="+20"/>
         <source>Export the results as JUnit XML</source>
         <translation>Ekspor hasil sebagai JUnit XML</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>JUnit XML (*.xml);;All files (*)</source>
         <translation>JUnit XML (*.xml);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Run plan</source>
         <translation>Jalankan rencana</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Run the session's test plan against the connected device (or the session's target)</source>
+        <location line="+1"/>
+        <source>Run the session&apos;s test plan against the connected device (or the session&apos;s target)</source>
         <translation>Jalankan rencana uji sesi terhadap perangkat yang tersambung (atau target sesi)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Stop</source>
         <translation>Hentikan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Export JUnit XML…</source>
         <translation>Ekspor JUnit XML…</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+28"/>
         <source>Running %1 against %2…</source>
         <translation>Menjalankan %1 terhadap %2…</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>the plan</source>
         <translation>rencana uji</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>This session has no test plan. Open a session with one (File &gt; Open), then run it.</source>
         <translation>Sesi ini tidak punya rencana uji. Buka sesi yang punya rencana uji (Berkas &gt; Buka), lalu jalankan.</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>The session's plan</source>
+        <location line="+2"/>
+        <source>The session&apos;s plan</source>
         <translation>Rencana uji sesi</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>The plan of %1</source>
         <translation>Rencana uji %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 has %n step(s). Press Run plan to run it against the connected device.</source>
         <translation>
-            <numerusform>%1 memiliki %n langkah. Tekan Jalankan rencana untuk menjalankannya terhadap perangkat yang tersambung.</numerusform></translation>
+            <numerusform>%1 memiliki %n langkah. Tekan Jalankan rencana untuk menjalankannya terhadap perangkat yang tersambung.</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+23"/>
         <source>%1 JUnit XML written to %2.</source>
         <translation>%1 JUnit XML ditulis ke %2.</translation>
     </message>
@@ -2910,92 +2901,92 @@
 <context>
     <name>mbscope::PlanResultModel</name>
     <message>
-        <location filename="../../ui/planresultmodel.cpp" line="+37" />
+        <location filename="../../ui/session/planresultmodel.cpp" line="+37"/>
         <source>PASS</source>
         <translation>LULUS</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>FAIL</source>
         <translation>GAGAL</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>ERROR</source>
         <translation>ERROR</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>SKIP</source>
         <translation>LEWATI</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+28"/>
         <source>no answer</source>
         <translation>tanpa jawaban</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>answer %1</source>
         <translation>jawaban %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 = %2</source>
         <translation>%1 = %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>exception 0x%1</source>
         <translation>exception 0x%1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>any answer</source>
         <translation>jawaban apa pun</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>the poll runs</source>
         <translation>polling berjalan</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>waits %1 ms</source>
         <translation>menunggu %1 ms</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>repeats, times: %1</source>
         <translation>diulang, kali: %1</translation>
     </message>
     <message>
-        <location line="+62" />
+        <location line="+62"/>
         <source>Result</source>
         <translation>Hasil</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Step</source>
         <translation>Langkah</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Expected</source>
         <translation>Diharapkan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>What came</source>
         <translation>Yang datang</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Why it failed</source>
         <translation>Mengapa gagal</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>ms</source>
         <translation>ms</translation>
     </message>
@@ -3003,7 +2994,7 @@
 <context>
     <name>mbscope::PlotCursor</name>
     <message>
-        <location filename="../../ui/plotcursor.cpp" line="+117" />
+        <location filename="../../ui/common/plotcursor.cpp" line="+117"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -3011,70 +3002,83 @@
 <context>
     <name>mbscope::PlotExportMenu</name>
     <message>
-        <location filename="../../ui/plotexportmenu.cpp" line="+18" />
+        <location filename="../../ui/common/plotexportmenu.cpp" line="+18"/>
         <source>&amp;Save plot as…</source>
         <translation>&amp;Simpan plot sebagai…</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Copy plot</source>
         <translation>Salin &amp;plot</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Save the plot as a PNG image, an SVG drawing or a PDF document</source>
         <translation>Simpan plot sebagai gambar PNG, gambar SVG atau dokumen PDF</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Copy the plot to the clipboard as an image</source>
         <translation>Salin plot ke clipboard sebagai gambar</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+26"/>
         <source>Save plot</source>
         <translation>Simpan plot</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Plot saved to %1</source>
         <translation>Plot disimpan ke %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Plot not saved: %1</source>
         <translation>Plot tidak disimpan: %1</translation>
     </message>
 </context>
 <context>
+    <name>mbscope::PlotFollower</name>
+    <message>
+        <location filename="../../ui/common/plotfollower.cpp" line="+11"/>
+        <source>&amp;Follow</source>
+        <translation>&amp;Ikuti</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>C&amp;lear</source>
+        <translation>&amp;Kosongkan</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::PlotSaver</name>
     <message>
-        <location filename="../../ui/plotsaver.cpp" line="+55" />
-        <source>'%1': this mbscope was built without Qt SVG (Debian: qt6-svg-dev), so it cannot write SVG; use .png or .pdf</source>
-        <translation>'%1': mbscope ini dibuat tanpa Qt SVG (Debian: qt6-svg-dev), jadi tidak dapat menulis SVG; pakai .png atau .pdf</translation>
+        <location filename="../../ui/common/plotsaver.cpp" line="+55"/>
+        <source>&apos;%1&apos;: this mbscope was built without Qt SVG (Debian: qt6-svg-dev), so it cannot write SVG; use .png or .pdf</source>
+        <translation>&apos;%1&apos;: mbscope ini dibuat tanpa Qt SVG (Debian: qt6-svg-dev), jadi tidak dapat menulis SVG; pakai .png atau .pdf</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>'%1': the plot's format comes from the file name, which must end in .png, .svg or .pdf</source>
-        <translation>'%1': format plot diambil dari nama berkas, yang harus berakhiran .png, .svg atau .pdf</translation>
+        <location line="+5"/>
+        <source>&apos;%1&apos;: the plot&apos;s format comes from the file name, which must end in .png, .svg or .pdf</source>
+        <translation>&apos;%1&apos;: format plot diambil dari nama berkas, yang harus berakhiran .png, .svg atau .pdf</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>PNG image (*.png)</source>
         <translation>Gambar PNG (*.png)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>SVG drawing (*.svg)</source>
         <translation>Gambar SVG (*.svg)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>PDF document (*.pdf)</source>
         <translation>Dokumen PDF (*.pdf)</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+19"/>
         <source>cannot write %1</source>
         <translation>tidak dapat menulis %1</translation>
     </message>
@@ -3082,32 +3086,32 @@
 <context>
     <name>mbscope::PreferencesDialog</name>
     <message>
-        <location filename="../../ui/preferencesdialog.cpp" line="+19" />
+        <location filename="../../ui/shell/preferencesdialog.cpp" line="+19"/>
         <source>Preferences</source>
         <translation>Preferensi</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>System language (%1)</source>
         <translation>Bahasa sistem (%1)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>The language of menus, panels and messages. The command line and JSON output stay English.</source>
         <translation>Bahasa menu, panel dan pesan. Baris perintah dan keluaran JSON tetap berbahasa Inggris.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>&amp;Language:</source>
         <translation>&amp;Bahasa:</translation>
     </message>
     <message>
-        <location line="+41" />
+        <location line="+41"/>
         <source>mbscope --lang id (or en) chooses the language for one run.</source>
         <translation>mbscope --lang id (atau en) memilih bahasa untuk satu kali jalan.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The new language is used when mbscope is started again.</source>
         <translation>Bahasa yang baru dipakai saat mbscope dijalankan lagi.</translation>
     </message>
@@ -3115,192 +3119,192 @@
 <context>
     <name>mbscope::RawRequestEditor</name>
     <message>
-        <location filename="../../ui/rawrequesteditor.cpp" line="+42" />
+        <location filename="../../ui/compose/rawrequesteditor.cpp" line="+42"/>
         <source>Add MBAP header</source>
         <translation>Tambahkan header MBAP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Add unit and CRC</source>
         <translation>Tambahkan unit dan CRC</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Add unit and LRC</source>
         <translation>Tambahkan unit dan LRC</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Complete</source>
         <translation>Lengkapi</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>Named requests: choose one to put its bytes in the editor</source>
         <translation>Permintaan bernama: pilih salah satu untuk menaruh byte-nya di editor</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Save as…</source>
         <translation>Simpan sebagai…</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Keep the bytes in the editor under a name</source>
         <translation>Simpan byte di editor dengan sebuah nama</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Delete</source>
         <translation>Hapus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Forget the chosen named request</source>
         <translation>Lupakan permintaan bernama yang dipilih</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>The bytes to send, as hex: 01 03 00 79 00 16 15 DD</source>
         <translation>Byte yang akan dikirim, sebagai hex: 01 03 00 79 00 16 15 DD</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+28"/>
         <source>&amp;Saved:</source>
         <translation>&amp;Tersimpan:</translation>
     </message>
     <message>
-        <location line="+101" />
+        <location line="+101"/>
         <source>not hex</source>
         <translation>bukan hex</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>1 byte</source>
         <translation>1 byte</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>%1 bytes</source>
         <translation>%1 byte</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Type the request as hex, choose a saved one, or build it in the Form tab.</source>
         <translation>Ketik permintaan sebagai hex, pilih yang tersimpan, atau susun di tab Formulir.</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>function %1 %2</source>
         <translation>fungsi %1 %2</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>CRC</source>
         <translation>CRC</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>LRC</source>
         <translation>LRC</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Not a whole %1 frame (%2). Send it as it is, or use “%3” if it is a PDU.</source>
         <translation>Bukan frame %1 yang utuh (%2). Kirim apa adanya, atau pakai “%3” jika ini PDU.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Unit %1 and a whole %2 request, but no CRC: use “Append CRC only” in the %3 menu, or send it as it is.</source>
         <translation>Unit %1 dan permintaan %2 yang utuh, tetapi tanpa CRC: pakai “Tambahkan CRC saja” di menu %3, atau kirim apa adanya.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>%1 frame: unit %2, %3, %4 correct.</source>
         <translation>Frame %1: unit %2, %3, %4 benar.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 frame: unit %2, %3, %4 %5 is wrong (expected %6); it is sent as typed.</source>
         <translation>Frame %1: unit %2, %3, %4 %5 salah (seharusnya %6); dikirim sesuai ketikan.</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Not a whole MBAP frame (%1). Send it as it is, or use “%2” if it is a PDU.</source>
         <translation>Bukan frame MBAP yang utuh (%1). Kirim apa adanya, atau pakai “%2” jika ini PDU.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>MBAP frame: transaction %1, unit %2, %3, length %4%5.</source>
         <translation>Frame MBAP: transaksi %1, unit %2, %3, panjang %4%5.</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source> (fits)</source>
         <translation> (sesuai)</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source> (does not fit the bytes: sent as typed)</source>
         <translation> (tidak sesuai dengan byte-nya: dikirim sesuai ketikan)</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Take the bytes as a PDU (function code first) and wrap them for this link, with the unit id of the connection bar; the added bytes are marked</source>
         <translation>Anggap byte sebagai PDU (kode fungsi lebih dulu) dan bungkus untuk link ini, dengan ID unit dari bilah koneksi; byte yang ditambahkan ditandai</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>%1 (the bytes are a PDU)</source>
         <translation>%1 (byte-nya adalah PDU)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Append CRC only (the bytes are unit + PDU)</source>
         <translation>Tambahkan CRC saja (byte-nya adalah unit + PDU)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Add LRC and delimiters only (the bytes are unit + PDU)</source>
         <translation>Tambahkan LRC dan delimiter saja (byte-nya adalah unit + PDU)</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+19"/>
         <source>Added the MBAP header (transaction 1, protocol 0, length %1, unit %2) in front of the PDU.</source>
         <translation>Header MBAP (transaksi 1, protokol 0, panjang %1, unit %2) ditambahkan di depan PDU.</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Added unit %1 in front and the CRC %2 at the end.</source>
         <translation>Unit %1 ditambahkan di depan dan CRC %2 di akhir.</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>Added ':' and unit %1 in front, and the LRC and CR LF at the end (as ASCII characters).</source>
-        <translation>':' dan unit %1 ditambahkan di depan, serta LRC dan CR LF di akhir (sebagai karakter ASCII).</translation>
+        <location line="+4"/>
+        <source>Added &apos;:&apos; and unit %1 in front, and the LRC and CR LF at the end (as ASCII characters).</source>
+        <translation>&apos;:&apos; dan unit %1 ditambahkan di depan, serta LRC dan CR LF di akhir (sebagai karakter ASCII).</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>Appended the CRC %1.</source>
         <translation>CRC %1 ditambahkan di akhir.</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>Added ':' in front, and the LRC and CR LF at the end (as ASCII characters).</source>
-        <translation>':' ditambahkan di depan, serta LRC dan CR LF di akhir (sebagai karakter ASCII).</translation>
+        <location line="+4"/>
+        <source>Added &apos;:&apos; in front, and the LRC and CR LF at the end (as ASCII characters).</source>
+        <translation>&apos;:&apos; ditambahkan di depan, serta LRC dan CR LF di akhir (sebagai karakter ASCII).</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+31"/>
         <source>(choose a named request)</source>
         <translation>(pilih permintaan bernama)</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Save request</source>
         <translation>Simpan permintaan</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Name of the request:</source>
         <translation>Nama permintaan:</translation>
     </message>
@@ -3308,152 +3312,152 @@
 <context>
     <name>mbscope::RegisterTable</name>
     <message>
-        <location filename="../../ui/registertable.cpp" line="+37" />
+        <location filename="../../ui/registers/registertable.cpp" line="+37"/>
         <source>AB (high byte first)</source>
         <translation>AB (byte atas dulu)</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>BA (byte swap)</source>
         <translation>BA (tukar byte)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 (big endian)</source>
         <translation>%1 (big endian)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 (word swap)</source>
         <translation>%1 (tukar word)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 (byte swap)</source>
         <translation>%1 (tukar byte)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 (little endian)</source>
         <translation>%1 (little endian)</translation>
     </message>
     <message>
-        <location line="+43" />
+        <location line="+43"/>
         <source>Write requested: %1</source>
         <translation>Penulisan diminta: %1</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+36"/>
         <source>What the registers of the current value column stand for</source>
         <translation>Arti register pada kolom nilai saat ini</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source> Order </source>
         <translation> Urutan </translation>
     </message>
     <message>
-        <location line="+3" />
-        <source>Word and byte order of the current value column: the order the value's bytes travel in, most significant named A</source>
+        <location line="+3"/>
+        <source>Word and byte order of the current value column: the order the value&apos;s bytes travel in, most significant named A</source>
         <translation>Urutan word dan byte kolom nilai saat ini: urutan byte nilai saat dikirim, yang paling signifikan dinamai A</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>+ Column</source>
         <translation>+ Kolom</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Add a value column showing the same registers in another format</source>
         <translation>Tambahkan kolom nilai yang menampilkan register yang sama dalam format lain</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Column</source>
         <translation>Kolom</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Remove the current value column</source>
         <translation>Hapus kolom nilai saat ini</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Write with </source>
         <translation>Tulis dengan </translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>The function an edited value is written with</source>
         <translation>Fungsi yang dipakai untuk menulis nilai yang disunting</translation>
     </message>
     <message>
-        <location line="+52" />
+        <location line="+52"/>
         <source>Column %1 </source>
         <translation>Kolom %1 </translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Profile: %1</source>
         <translation>Profil: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Profile: none</source>
         <translation>Profil: tidak ada</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Names, scaling and units come from the device profile %1</source>
         <translation>Nama, skala dan satuan diambil dari profil perangkat %1</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No device profile: no names or scaling</source>
         <translation>Tanpa profil perangkat: tanpa nama atau skala</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>read-only (%1)</source>
         <translation>hanya-baca (%1)</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>05 Write Single Coil</source>
         <translation>05 Tulis Satu Coil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>0F Write Multiple Coils</source>
         <translation>0F Tulis Banyak Coil</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>06 or 10 by width</source>
         <translation>06 atau 10 sesuai lebar</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>06 Write Single Register</source>
         <translation>06 Tulis Satu Register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>10 Write Multiple Registers</source>
         <translation>10 Tulis Banyak Register</translation>
     </message>
     <message>
-        <location line="+42" />
+        <location line="+42"/>
         <source>Column %1 format</source>
         <translation>Format kolom %1</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Order</source>
         <translation>Urutan</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>Use this order in every column</source>
         <translation>Pakai urutan ini di semua kolom</translation>
     </message>
@@ -3461,202 +3465,168 @@
 <context>
     <name>mbscope::RegisterTableModel</name>
     <message>
-        <location filename="../../ui/registertablemodel.cpp" line="+33" />
+        <location filename="../../ui/registers/registertablemodel.cpp" line="+21"/>
         <source>%1, %2 (%3)</source>
         <translation>%1, %2 (%3)</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+22"/>
+        <location line="+20"/>
         <source>answer not shown: %1</source>
         <translation>jawaban tidak ditampilkan: %1</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="-7"/>
         <source>answer not shown: the transaction ended with %1</source>
         <translation>jawaban tidak ditampilkan: transaksi berakhir dengan %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>answer not shown: the transaction ended with %1: %2</source>
         <translation>jawaban tidak ditampilkan: transaksi berakhir dengan %1: %2</translation>
     </message>
     <message>
-        <location line="+220" />
-        <source>register %1 (PDU address %2)</source>
-        <translation>register %1 (alamat PDU %2)</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>coil %1 (PDU address %2)</source>
-        <translation>coil %1 (alamat PDU %2)</translation>
-    </message>
-    <message>
-        <location line="+1" />
-        <source>discrete input %1 (PDU address %2)</source>
-        <translation>discrete input %1 (alamat PDU %2)</translation>
-    </message>
-    <message>
-        <location line="+10" />
+        <location line="+192"/>
         <source>1  ON</source>
         <translation>1  ON</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>0  OFF</source>
         <translation>0  OFF</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+2"/>
         <source>↑ %1 from %2</source>
         <translation>↑ %1 dari %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+13"/>
         <source>Register %1 is register %2 of the %3 registers of the %4 value at %5</source>
         <translation>Register %1 adalah register ke-%2 dari %3 register nilai %4 di %5</translation>
     </message>
     <message>
-        <location line="+9" />
-        <location line="+63" />
+        <location line="-11"/>
+        <location line="+65"/>
         <source>(%1 of %2 registers)</source>
         <translation>(%1 dari %2 register)</translation>
     </message>
     <message>
-        <location line="-61" />
+        <location line="-47"/>
         <source>%1 needs %2 registers from %3; the answer begins %4 registers into it</source>
         <translation>%1 memerlukan %2 register mulai %3; jawaban baru dimulai %4 register di dalamnya</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>%1 needs %2 registers from %3; the answer ends after %4</source>
         <translation>%1 memerlukan %2 register mulai %3; jawaban berakhir setelah %4</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>%1 needs %2 registers from %3; the profile's next value begins after %4</source>
+        <location line="+6"/>
+        <source>%1 needs %2 registers from %3; the profile&apos;s next value begins after %4</source>
         <translation>%1 memerlukan %2 register mulai %3; nilai berikutnya di profil dimulai setelah %4</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+13"/>
         <source>%1 registers %2-%3</source>
         <translation>%1 register %2-%3</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1
 %2, on the wire %3</source>
         <translation>%1
 %2, di jalur %3</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+8"/>
         <source> (register %1 of %2)</source>
         <translation> (register %1 dari %2)</translation>
     </message>
     <message>
-        <location line="+67" />
+        <location line="+54"/>
         <source>The profile names no value at this address</source>
         <translation>Profil tidak menamai nilai apa pun di alamat ini</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 as %2, value = raw × %3 + %4</source>
         <translation>%1 sebagai %2, nilai = mentah × %3 + %4</translation>
     </message>
     <message>
-        <location line="+91" />
+        <location line="+91"/>
         <source>PDU address</source>
         <translation>Alamat PDU</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Modicon (%1xxxx, from 1)</source>
         <translation>Modicon (%1xxxx, mulai 1)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Name</source>
         <translation>Nama</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Value</source>
         <translation>Nilai</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Scaled</source>
         <translation>Berskala</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>The 0-based address the request carries (V1.1b3, 4.4)</source>
         <translation>Alamat berbasis 0 yang dibawa permintaan (V1.1b3, 4.4)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Modicon reference: the table digit %1, then the 1-based element number (PDU address + 1)</source>
         <translation>Referensi Modicon: digit tabel %1, lalu nomor elemen berbasis 1 (alamat PDU + 1)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Names from the profile %1</source>
         <translation>Nama dari profil %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>No profile: no names</source>
         <translation>Tanpa profil: tanpa nama</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>%1
 Right-click to change the format</source>
         <translation>%1
 Klik kanan untuk mengganti format</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>The profile's format, scale, offset and unit: value = raw × scale + offset</source>
+        <location line="+2"/>
+        <source>The profile&apos;s format, scale, offset and unit: value = raw × scale + offset</source>
         <translation>Format, skala, offset dan satuan dari profil: nilai = mentah × skala + offset</translation>
     </message>
     <message>
-        <location line="+38" />
-        <source>'%1' is not a number: the scaled value of %2 takes a decimal number</source>
-        <translation>'%1' bukan angka: nilai berskala %2 harus berupa bilangan desimal</translation>
-    </message>
-    <message>
-        <location line="+6" />
-        <source>%1 %2 (raw = (value - %3) / %4): %5</source>
-        <translation>%1 %2 (mentah = (nilai - %3) / %4): %5</translation>
-    </message>
-    <message>
-        <location line="+28" />
+        <location line="+27"/>
         <source>%1: %2 are read-only; only coils and holding registers can be written</source>
         <translation>%1: %2 hanya-baca; hanya coil dan holding register yang bisa ditulis</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>%1: this cell cannot be written (edit a value's first register)</source>
+        <location line="+5"/>
+        <source>%1: this cell cannot be written (edit a value&apos;s first register)</source>
         <translation>%1: sel ini tidak bisa ditulis (sunting register pertama suatu nilai)</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>%1: '%2' is not a coil value: expected 1 or 0 (on/off, true/false)</source>
-        <translation>%1: '%2' bukan nilai coil: seharusnya 1 atau 0 (on/off, true/false)</translation>
-    </message>
-    <message>
-        <location line="+9" />
-        <source>%1, %2</source>
-        <translation>%1, %2</translation>
-    </message>
-    <message>
-        <location line="+18" />
+        <location line="+21"/>
         <source>no cell to write</source>
         <translation>tidak ada sel untuk ditulis</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>not written: %1</source>
         <translation>tidak ditulis: %1</translation>
     </message>
@@ -3664,226 +3634,255 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RegisterTrendPanel</name>
     <message>
-        <location filename="../../ui/registertrendpanel.cpp" line="+51" />
-        <source>&amp;Follow</source>
-        <translation>&amp;Ikuti</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location filename="../../ui/analysis/registertrendpanel.cpp" line="+53"/>
         <source>Add &amp;selected register</source>
         <translation>Tambahkan register yang &amp;dipilih</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Checked registers are plotted against time</source>
         <translation>Register yang dicentang diplot terhadap waktu</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Holding registers</source>
         <translation>Holding register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Input registers</source>
         <translation>Input register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Coils</source>
         <translation>Coil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Discrete inputs</source>
         <translation>Discrete input</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>&amp;Add</source>
         <translation>&amp;Tambah</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Plot the register at this address, read with this format</source>
         <translation>Plot register di alamat ini, dibaca dengan format ini</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Table:</source>
         <translation>Tabel:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Address:</source>
         <translation>Alamat:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Format:</source>
         <translation>Format:</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>time since the first answer (s)</source>
         <translation>waktu sejak jawaban pertama (s)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>scaled value</source>
         <translation>nilai berskala</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Keep every value in view as new answers arrive</source>
         <translation>Jaga semua nilai tetap terlihat saat jawaban baru masuk</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>C&amp;lear</source>
-        <translation>&amp;Kosongkan</translation>
-    </message>
-    <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Forget the values plotted; the registers stay chosen</source>
         <translation>Lupakan nilai yang diplot; register tetap terpilih</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Plot the register selected in the Registers table, in the format of its column</source>
         <translation>Plot register yang dipilih di tabel Register, dalam format kolomnya</translation>
     </message>
     <message>
-        <location line="+131" />
+        <location line="+122"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>No register table to take a register from</source>
         <translation>Tidak ada tabel register untuk diambil register-nya</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Select a register in the Registers table first</source>
         <translation>Pilih dulu register di tabel Register</translation>
     </message>
     <message>
-        <location line="+17" />
-        <location line="+27" />
+        <location line="+17"/>
+        <location line="+27"/>
         <source>Plotting %1</source>
         <translation>Memplot %1</translation>
     </message>
     <message>
-        <location line="-19" />
+        <location line="-19"/>
         <source>Not added: the address is wrong: %1</source>
         <translation>Tidak ditambahkan: alamatnya salah: %1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Not added: %1</source>
         <translation>Tidak ditambahkan: %1</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Not added: a %1 at PDU address %2 would go past the last address (65535)</source>
         <translation>Tidak ditambahkan: %1 di alamat PDU %2 akan melewati alamat terakhir (65535)</translation>
     </message>
 </context>
 <context>
+    <name>mbscope::RegisterWrite</name>
+    <message>
+        <location filename="../../ui/registers/registerwrite.cpp" line="+25"/>
+        <source>%1: &apos;%2&apos; is not a coil value: expected 1 or 0 (on/off, true/false)</source>
+        <translation>%1: &apos;%2&apos; bukan nilai coil: seharusnya 1 atau 0 (on/off, true/false)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+35"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="-12"/>
+        <source>&apos;%1&apos; is not a number: the scaled value of %2 takes a decimal number</source>
+        <translation>&apos;%1&apos; bukan angka: nilai berskala %2 harus berupa bilangan desimal</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 %2 (raw = (value - %3) / %4): %5</source>
+        <translation>%1 %2 (mentah = (nilai - %3) / %4): %5</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>register %1 (PDU address %2)</source>
+        <translation>register %1 (alamat PDU %2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>coil %1 (PDU address %2)</source>
+        <translation>coil %1 (alamat PDU %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>discrete input %1 (PDU address %2)</source>
+        <translation>discrete input %1 (alamat PDU %2)</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::ReplayController</name>
     <message>
-        <location filename="../../ui/replaycontroller.cpp" line="+65" />
+        <location filename="../../ui/session/replaycontroller.cpp" line="+65"/>
         <source>A capture is still being read.</source>
         <translation>Capture masih dibaca.</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>Stop the replay before opening another capture.</source>
         <translation>Hentikan replay sebelum membuka capture lain.</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+39"/>
         <source>%1 cannot be read: %2</source>
         <translation>%1 tidak dapat dibaca: %2</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>%1 (%2): transactions %3, ok %4, failed %5</source>
         <translation>%1 (%2): transaksi %3, ok %4, gagal %5</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>%1; latency median %2 ms, p95 %3 ms, max %4 ms</source>
         <translation>%1; latensi median %2 ms, p95 %3 ms, maks %4 ms</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>%1. The file is damaged: %2; everything before it was read.</source>
         <translation>%1. Berkasnya rusak: %2; semua yang sebelumnya sudah dibaca.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1. No Modbus requests were found on the ports looked at: set the Modbus TCP and RTU ports.</source>
         <translation>%1. Tidak ada permintaan Modbus di port yang diperiksa: atur port Modbus TCP dan RTU.</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>A replay is already running.</source>
         <translation>Replay sudah berjalan.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>The capture is still being read.</source>
         <translation>Capture masih dibaca.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Open a capture or a session with recorded requests first.</source>
         <translation>Buka dulu capture atau sesi yang berisi permintaan terekam.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Connect to the device to replay to first.</source>
         <translation>Sambungkan dulu ke perangkat tujuan replay.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Stop the poll first: a replay sends one request at a time, as they were recorded.</source>
         <translation>Hentikan polling dulu: replay mengirim satu permintaan per kali, sesuai rekamannya.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>%1 is a delimited link: it carries no Modbus framing to replay into.</source>
         <translation>%1 adalah link berdelimiter: tidak membawa framing Modbus untuk replay.</translation>
     </message>
     <message>
-        <location line="+46" />
+        <location line="+46"/>
         <source>The replay stopped: %1. %2</source>
         <translation>Replay berhenti: %1. %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Stopped after %1 of %2 requests. %3</source>
         <translation>Dihentikan setelah %1 dari %2 permintaan. %3</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>Open a capture or a session with recorded answers first.</source>
         <translation>Buka dulu capture atau sesi yang berisi jawaban terekam.</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>Not serving.</source>
         <translation>Tidak melayani.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Serving the recorded answers of %1 on %2 (distinct requests: %3). Answers served: %4, silences kept: %5, requests never recorded: %6.</source>
         <translation>Melayani jawaban terekam dari %1 di %2 (permintaan berbeda: %3). Jawaban dilayani: %4, diam dipertahankan: %5, permintaan tidak pernah terekam: %6.</translation>
     </message>
@@ -3891,93 +3890,93 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ReplayDifferencesModel</name>
     <message>
-        <location filename="../../ui/replaydifferencesmodel.cpp" line="+79" />
+        <location filename="../../ui/session/replaydifferencesmodel.cpp" line="+79"/>
         <source>the same</source>
         <translation>sama</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>values</source>
         <translation>nilai</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>bytes</source>
         <translation>byte</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>exception</source>
         <translation>exception</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>outcome</source>
         <translation>hasil</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>timeout</source>
         <translation>waktu habis</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>latency</source>
         <translation>latensi</translation>
     </message>
     <message>
-        <location line="+65" />
+        <location line="+65"/>
         <source>No answers replayed yet.</source>
         <translation>Belum ada jawaban yang di-replay.</translation>
     </message>
     <message>
-        <location line="-3" />
+        <location line="-3"/>
         <source>%1: %2</source>
         <comment>what differs: how many</comment>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Answers replayed: %1, differing: %2 (%3).</source>
         <translation>Jawaban di-replay: %1, berbeda: %2 (%3).</translation>
     </message>
     <message>
-        <location line="+68" />
+        <location line="+68"/>
         <source>#</source>
         <translation>#</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Request</source>
         <translation>Permintaan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Recorded answer</source>
         <translation>Jawaban terekam</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>New answer</source>
         <translation>Jawaban baru</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>What differs</source>
         <translation>Yang berbeda</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Differences</source>
         <translation>Perbedaan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Recorded ms</source>
         <translation>ms terekam</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Now ms</source>
         <translation>ms sekarang</translation>
     </message>
@@ -3985,158 +3984,158 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ReplayPanel</name>
     <message>
-        <location filename="../../ui/replaypanel.cpp" line="+29" />
+        <location filename="../../ui/session/replaypanel.cpp" line="+29"/>
         <source>Open a capture or a session</source>
         <translation>Buka capture atau sesi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Captures and sessions (*.pcap *.pcapng *.cap *.json *.journal);;All files (*)</source>
         <translation>Capture dan sesi (*.pcap *.pcapng *.cap *.json *.journal);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>Replaying the recorded requests to the target (%1 in all)…</source>
         <translation>Me-replay permintaan terekam ke target (%1 seluruhnya)…</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+17"/>
         <source>Open capture…</source>
         <translation>Buka capture…</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>A pcap or pcapng capture, a traffic journal, or a session document with captured traffic</source>
         <translation>Capture pcap atau pcapng, jurnal lalu lintas, atau dokumen sesi yang berisi lalu lintas terekam</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>No recording opened.</source>
         <translation>Belum ada rekaman yang dibuka.</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Server ports carrying Modbus TCP or Modbus UDP in a capture, separated by commas</source>
         <translation>Port server yang membawa Modbus TCP atau Modbus UDP di capture, dipisahkan koma</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>e.g. 4001</source>
         <translation>mis. 4001</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Server ports carrying RTU frames over TCP or UDP in a capture (a serial device server)</source>
         <translation>Port server yang membawa frame RTU lewat TCP atau UDP di capture (serial device server)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Modbus TCP ports</source>
         <translation>Port Modbus TCP</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>RTU ports</source>
         <translation>Port RTU</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>As recorded</source>
         <translation>Sesuai rekaman</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>2 times faster</source>
         <translation>2 kali lebih cepat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>10 times faster</source>
         <translation>10 kali lebih cepat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Back to back</source>
         <translation>Tanpa jeda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Replay to the target</source>
         <translation>Replay ke target</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Send the recorded requests to the connected device and compare each answer with the recorded one</source>
         <translation>Kirim permintaan terekam ke perangkat yang tersambung dan bandingkan setiap jawaban dengan jawaban terekam</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Stop</source>
         <translation>Hentikan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Show matching answers</source>
         <translation>Tampilkan jawaban yang sama</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Speed</source>
         <translation>Kecepatan</translation>
     </message>
     <message>
-        <location line="+30" />
+        <location line="+30"/>
         <source>Where the recording answers as a device: tcp://, rtu-tcp://, udp://, rtu://… (port 0: any free port)</source>
         <translation>Tempat rekaman menjawab sebagai perangkat: tcp://, rtu-tcp://, udp://, rtu://… (port 0: port bebas mana saja)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Answer other requests with exception 0B</source>
         <translation>Jawab permintaan lain dengan exception 0B</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Leave other requests unanswered</source>
         <translation>Biarkan permintaan lain tidak dijawab</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+92" />
+        <location line="+1"/>
+        <location line="+92"/>
         <source>Serve</source>
         <translation>Layani</translation>
     </message>
     <message>
-        <location line="-91" />
+        <location line="-91"/>
         <source>Answer with the recorded answers on this endpoint, matched by unit and request</source>
         <translation>Jawab dengan jawaban terekam di endpoint ini, dicocokkan menurut unit dan permintaan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Serve on</source>
         <translation>Layani di</translation>
     </message>
     <message>
-        <location line="+28" />
+        <location line="+28"/>
         <source>Modbus TCP ports: %1</source>
         <translation>Port Modbus TCP: %1</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>RTU ports: %1</source>
         <translation>Port RTU: %1</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Reading %1…</source>
         <translation>Membaca %1…</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+17"/>
         <source>Stopped serving.</source>
         <translation>Berhenti melayani.</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>Stop serving</source>
         <translation>Berhenti melayani</translation>
     </message>
@@ -4144,7 +4143,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ReplayServer</name>
     <message>
-        <location filename="../../ui/replayserver.cpp" line="+51" />
+        <location filename="../../ui/session/replayserver.cpp" line="+51"/>
         <source>Cannot serve the recording on %1: %2</source>
         <translation>Tidak dapat melayani rekaman di %1: %2</translation>
     </message>
@@ -4152,113 +4151,113 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RequestComposer</name>
     <message>
-        <location filename="../../ui/requestcomposer.cpp" line="+36" />
+        <location filename="../../ui/compose/requestcomposer.cpp" line="+38"/>
         <source>&amp;Raw</source>
         <translation>&amp;Mentah</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>F&amp;orm</source>
         <translation>&amp;Formulir</translation>
     </message>
     <message>
-        <location line="+3" />
-        <location line="+14" />
+        <location line="+3"/>
+        <location line="+14"/>
         <source>&amp;Send</source>
         <translation>&amp;Kirim</translation>
     </message>
     <message>
-        <location line="-10" />
-        <location line="+12" />
+        <location line="-10"/>
+        <location line="+12"/>
         <source>Send the request once (Ctrl+Return)</source>
         <translation>Kirim permintaan sekali (Ctrl+Return)</translation>
     </message>
     <message>
-        <location line="-9" />
-        <location line="+35" />
-        <location line="+108" />
-        <location line="+1" />
+        <location line="-9"/>
+        <location line="+35"/>
+        <location line="+139"/>
+        <location line="+1"/>
         <source>Start &amp;poll</source>
         <translation>Mulai &amp;polling</translation>
     </message>
     <message>
-        <location line="-130" />
+        <location line="-161"/>
         <source>&amp;Send  (Ctrl+Return)</source>
         <translation>&amp;Kirim  (Ctrl+Return)</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>back to back</source>
         <translation>tanpa jeda</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>From the start of one request to the start of the next; 0: as fast as the device answers</source>
         <translation>Dari awal satu permintaan ke awal permintaan berikutnya; 0: secepat perangkat menjawab</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>until stopped</source>
         <translation>sampai dihentikan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source> times</source>
         <translation> kali</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Send the request repeatedly (Ctrl+Shift+Return starts and stops)</source>
         <translation>Kirim permintaan berulang-ulang (Ctrl+Shift+Return memulai dan menghentikan)</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Poll</source>
         <translation>Polling</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Every</source>
         <translation>S&amp;etiap</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Count</source>
         <translation>&amp;Jumlah</translation>
     </message>
     <message>
-        <location line="+95" />
-        <location line="+1" />
+        <location line="+126"/>
+        <location line="+1"/>
         <source>Stop &amp;poll</source>
         <translation>Hentikan &amp;polling</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>Connect first (connection bar above).</source>
         <translation>Sambungkan dulu (bilah koneksi di atas).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Type a request (Raw) or build one (Form).</source>
         <translation>Ketik permintaan (Mentah) atau susun (Formulir).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Polling…</source>
         <translation>Polling…</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>1 byte ready.</source>
         <translation>1 byte siap.</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>%1 bytes ready.</source>
         <translation>%1 byte siap.</translation>
     </message>
@@ -4266,193 +4265,193 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RequestForm</name>
     <message>
-        <location filename="../../ui/requestform.cpp" line="+114" />
+        <location filename="../../ui/compose/requestform.cpp" line="+114"/>
         <source>Read Device Identification</source>
         <translation>Baca Identifikasi Perangkat</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>ON (FF 00); unchecked: OFF (00 00)</source>
         <translation>ON (FF 00); tidak dicentang: OFF (00 00)</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source> registers (1-121)</source>
         <translation> register (1-121)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Address</source>
         <translation>Alamat</translation>
     </message>
     <message>
-        <location line="+0" />
-        <location line="+161" />
+        <location line="+0"/>
+        <location line="+161"/>
         <source>Value</source>
         <translation>Nilai</translation>
     </message>
     <message>
-        <location line="-156" />
+        <location line="-156"/>
         <source>Register values: decimal (0-65535 or -32768..-1) or hex (0x1234); coils: tick for ON</source>
         <translation>Nilai register: desimal (0-65535 atau -32768..-1) atau hex (0x1234); coil: centang untuk ON</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>01 basic (stream)</source>
         <translation>01 dasar (stream)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>02 regular (stream)</source>
         <translation>02 reguler (stream)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>03 extended (stream)</source>
         <translation>03 diperluas (stream)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>04 one object</source>
         <translation>04 satu objek</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+21"/>
         <source>&amp;Function:</source>
         <translation>&amp;Fungsi:</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+106" />
+        <location line="+1"/>
+        <location line="+106"/>
         <source>&amp;Address:</source>
         <translation>&amp;Alamat:</translation>
     </message>
     <message>
-        <location line="-105" />
-        <location line="+113" />
+        <location line="-105"/>
+        <location line="+113"/>
         <source>&amp;Quantity:</source>
         <translation>&amp;Jumlah:</translation>
     </message>
     <message>
-        <location line="-112" />
+        <location line="-112"/>
         <source>Coil &amp;value:</source>
         <translation>&amp;Nilai coil:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Value:</source>
         <translation>&amp;Nilai:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>AND mask:</source>
         <translation>Mask AND:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>OR mask:</source>
         <translation>Mask OR:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Write address:</source>
         <translation>Alamat &amp;tulis:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Write q&amp;uantity:</source>
         <translation>J&amp;umlah tulis:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Read &amp;code:</source>
         <translation>&amp;Kode baca:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Object id:</source>
         <translation>ID &amp;objek:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Values:</source>
         <translation>Nilai:</translation>
     </message>
     <message>
-        <location line="+33" />
-        <location line="+190" />
+        <location line="+33"/>
+        <location line="+190"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="-190" />
-        <location line="+121" />
-        <location line="+69" />
+        <location line="-190"/>
+        <location line="+121"/>
+        <location line="+69"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="-129" />
+        <location line="-129"/>
         <source>Start &amp;address:</source>
         <translation>&amp;Alamat awal:</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Read &amp;address:</source>
         <translation>&amp;Alamat baca:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>FIFO pointer &amp;address:</source>
         <translation>&amp;Alamat pointer FIFO:</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Read &amp;quantity:</source>
         <translation>&amp;Jumlah baca:</translation>
     </message>
     <message>
-        <location line="+10" />
+        <location line="+10"/>
         <source>1-%1 %2 (V1.1b3)</source>
         <translation>1-%1 %2 (V1.1b3)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Coil</source>
         <translation>Coil</translation>
     </message>
     <message>
-        <location line="+72" />
-        <source>value in row %1: '%2' is not a register value (0-65535, -32768..-1 or 0x0000-0xFFFF)</source>
-        <translation>nilai di baris %1: '%2' bukan nilai register (0-65535, -32768..-1 atau 0x0000-0xFFFF)</translation>
+        <location line="+72"/>
+        <source>value in row %1: &apos;%2&apos; is not a register value (0-65535, -32768..-1 or 0x0000-0xFFFF)</source>
+        <translation>nilai di baris %1: &apos;%2&apos; bukan nilai register (0-65535, -32768..-1 atau 0x0000-0xFFFF)</translation>
     </message>
     <message>
-        <location line="+46" />
+        <location line="+46"/>
         <source>address: %1</source>
         <translation>alamat: %1</translation>
     </message>
     <message>
-        <location line="+22" />
-        <source>AND mask '%1' is not a 16-bit hex value (0x0000-0xFFFF)</source>
-        <translation>Mask AND '%1' bukan nilai hex 16-bit (0x0000-0xFFFF)</translation>
+        <location line="+22"/>
+        <source>AND mask &apos;%1&apos; is not a 16-bit hex value (0x0000-0xFFFF)</source>
+        <translation>Mask AND &apos;%1&apos; bukan nilai hex 16-bit (0x0000-0xFFFF)</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>OR mask '%1' is not a 16-bit hex value (0x0000-0xFFFF)</source>
-        <translation>Mask OR '%1' bukan nilai hex 16-bit (0x0000-0xFFFF)</translation>
+        <location line="+2"/>
+        <source>OR mask &apos;%1&apos; is not a 16-bit hex value (0x0000-0xFFFF)</source>
+        <translation>Mask OR &apos;%1&apos; bukan nilai hex 16-bit (0x0000-0xFFFF)</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>write address: %1</source>
         <translation>alamat tulis: %1</translation>
     </message>
     <message>
-        <location line="+15" />
+        <location line="+15"/>
         <source>function %1 has no form</source>
         <translation>fungsi %1 tidak punya formulir</translation>
     </message>
     <message>
-        <location line="+36" />
+        <location line="+36"/>
         <source>Bytes: %1  (%2, unit %3)</source>
         <translation>Byte: %1  (%2, unit %3)</translation>
     </message>
@@ -4460,27 +4459,27 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SavedRequests</name>
     <message>
-        <location filename="../../ui/savedrequests.cpp" line="+21" />
+        <location filename="../../ui/compose/savedrequests.cpp" line="+21"/>
         <source>RosRao read</source>
         <translation>Baca RosRao</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Read 10 holding registers from 0 (RTU, unit 1)</source>
         <translation>Baca 10 holding register mulai 0 (RTU, unit 1)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Read 16 coils from 0 (RTU, unit 1)</source>
         <translation>Baca 16 coil mulai 0 (RTU, unit 1)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Read 10 holding registers from 0 (TCP, unit 1)</source>
         <translation>Baca 10 holding register mulai 0 (TCP, unit 1)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Report server id (RTU, unit 1)</source>
         <translation>Laporkan ID server (RTU, unit 1)</translation>
     </message>
@@ -4488,87 +4487,87 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SessionController</name>
     <message>
-        <location filename="../../ui/sessioncontroller.cpp" line="+46" />
+        <location filename="../../ui/session/sessioncontroller.cpp" line="+38"/>
         <source>Unsaved changes</source>
         <translation>Perubahan belum disimpan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>The session %1 has changes that are not saved.</source>
         <translation>Sesi %1 punya perubahan yang belum disimpan.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 was not opened; nothing was changed.</source>
         <translation>%1 tidak dibuka; tidak ada yang diubah.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>mbscope sessions (*.mbscope.json *.json);;All files (*)</source>
         <translation>Sesi mbscope (*.mbscope.json *.json);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Save session</source>
         <translation>Simpan sesi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Open session</source>
         <translation>Buka sesi</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+12"/>
         <source>&amp;New session</source>
         <translation>Sesi ba&amp;ru</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Open session…</source>
         <translation>&amp;Buka sesi…</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Open &amp;recent</source>
         <translation>Buka yang &amp;terakhir</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>&amp;Save session</source>
         <translation>&amp;Simpan sesi</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Save session &amp;as…</source>
         <translation>Simpan sesi seb&amp;agai…</translation>
     </message>
     <message>
-        <location line="+152" />
+        <location line="+129"/>
         <source>line %1, column %2: %3</source>
         <translation>baris %1, kolom %2: %3</translation>
     </message>
     <message>
-        <location line="+63" />
+        <location line="+63"/>
         <source>(untitled)</source>
         <translation>(tanpa judul)</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>untitled session%1 — mbscope</source>
         <translation>sesi tanpa judul%1 — mbscope</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1%2 — mbscope</source>
         <translation>%1%2 — mbscope</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+39"/>
         <source>(none yet)</source>
         <translation>(belum ada)</translation>
     </message>
@@ -4576,57 +4575,57 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SessionTools</name>
     <message>
-        <location filename="../../ui/sessiontools.cpp" line="+44" />
+        <location filename="../../ui/shell/sessiontools.cpp" line="+44"/>
         <source>Replay</source>
         <translation>Replay</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Test plan</source>
         <translation>Rencana uji</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+27"/>
         <source>&amp;Session</source>
         <translation>Se&amp;si</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Open capture for analysis and replay…</source>
         <translation>&amp;Buka capture untuk analisis dan replay…</translation>
     </message>
     <message>
-        <location line="+4" />
-        <source>&amp;Analyse the session's capture</source>
+        <location line="+4"/>
+        <source>&amp;Analyse the session&apos;s capture</source>
         <translation>&amp;Analisis capture sesi</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>&amp;Replay to the target</source>
         <translation>&amp;Replay ke target</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>S&amp;top the replay</source>
         <translation>&amp;Hentikan replay</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Ser&amp;ve the recorded answers</source>
         <translation>&amp;Layani jawaban terekam</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Run the test &amp;plan</source>
         <translation>&amp;Jalankan rencana uji</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Stop the test p&amp;lan</source>
         <translation>H&amp;entikan rencana uji</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>E&amp;xport test results as JUnit XML…</source>
         <translation>E&amp;kspor hasil uji sebagai JUnit XML…</translation>
     </message>
@@ -4634,272 +4633,273 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimFaultForm</name>
     <message>
-        <location filename="../../ui/simfaultform.cpp" line="+38" />
+        <location filename="../../ui/sim/simfaultform.cpp" line="+38"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+24"/>
         <source>Delay the answer</source>
         <translation>Tunda jawaban</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Drop the answer</source>
         <translation>Buang jawaban</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Wrong CRC or LRC</source>
         <translation>CRC atau LRC salah</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Exception instead of the answer</source>
         <translation>Exception sebagai ganti jawaban</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Fault:</source>
         <translation>&amp;Gangguan:</translation>
     </message>
     <message>
-        <location line="+5" />
-        <location line="+243" />
+        <location line="+5"/>
+        <location line="+243"/>
         <source>any unit</source>
         <translation>unit apa pun</translation>
     </message>
     <message>
-        <location line="-242" />
+        <location line="-242"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
     <message>
-        <location line="+7" />
-        <location line="+236" />
+        <location line="+7"/>
+        <location line="+236"/>
         <source>any function</source>
         <translation>fungsi apa pun</translation>
     </message>
     <message>
-        <location line="-235" />
+        <location line="-235"/>
         <source>Function &amp;code:</source>
         <translation>&amp;Kode fungsi:</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>The share of matching answers the rule changes: 1 for every one, 0.1 for one in ten.</source>
         <translation>Porsi jawaban yang cocok yang diubah aturan ini: 1 untuk semuanya, 0.1 untuk satu dari sepuluh.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Probability:</source>
         <translation>&amp;Peluang:</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>fixed</source>
         <translation>tetap</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>uniform</source>
         <translation>seragam</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>normal</source>
         <translation>normal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>exponential</source>
         <translation>eksponensial</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Distribution:</source>
         <translation>&amp;Distribusi:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Delay:</source>
         <translation>Tunda:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Mean:</source>
         <translation>Rata-rata:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Standard deviation:</source>
         <translation>Simpangan baku:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>At least:</source>
         <translation>Minimal:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>At most:</source>
         <translation>Maksimal:</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>01 illegal function, 02 illegal data address, 03 illegal data value, 04 server device failure, 06 server device busy, 0B gateway target failed to respond.</source>
         <translation>01 fungsi tidak sah, 02 alamat data tidak sah, 03 nilai data tidak sah, 04 kegagalan perangkat server, 06 perangkat server sibuk, 0B perangkat tujuan gateway tidak menjawab.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>E&amp;xception code:</source>
         <translation>Kode e&amp;xception:</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Add rule</source>
         <translation>&amp;Tambah aturan</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>Adds the rule to those in force: the simulator's next request sees it.</source>
+        <location line="+2"/>
+        <source>Adds the rule to those in force: the simulator&apos;s next request sees it.</source>
         <translation>Menambahkan aturan ke aturan yang berlaku: permintaan berikutnya ke simulator sudah terkena.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Rules in force:</source>
         <translation>Aturan yang berlaku:</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>&amp;Remove</source>
         <translation>&amp;Hapus</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;No faults</source>
         <translation>Tanpa ga&amp;ngguan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Removes every rule: correct answers from the next request on.</source>
         <translation>Menghapus semua aturan: jawaban benar mulai permintaan berikutnya.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Load rules file...</source>
         <translation>&amp;Muat berkas aturan...</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Replaces the rules by those of a faults file (the format of mbscope simulate --faults).</source>
         <translation>Mengganti aturan dengan isi berkas gangguan (format mbscope simulate --faults).</translation>
     </message>
     <message>
-        <location line="+65" />
-        <source>Not added: a uniform delay needs 'At most' (%1 ms) at or above 'At least' (%2 ms).</source>
-        <translation>Tidak ditambahkan: tunda seragam memerlukan 'Maksimal' (%1 ms) sama dengan atau di atas 'Minimal' (%2 ms).</translation>
+        <location line="+65"/>
+        <source>Not added: a uniform delay needs &apos;At most&apos; (%1 ms) at or above &apos;At least&apos; (%2 ms).</source>
+        <translation>Tidak ditambahkan: tunda seragam memerlukan &apos;Maksimal&apos; (%1 ms) sama dengan atau di atas &apos;Minimal&apos; (%2 ms).</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Added: %1.</source>
         <translation>Ditambahkan: %1.</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+18"/>
         <source>No fault rules: the simulator answers correctly from the next request on.</source>
         <translation>Tanpa aturan gangguan: simulator menjawab dengan benar mulai permintaan berikutnya.</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>The rules file does not read; the rules in force stay:
 %1</source>
         <translation>Berkas aturan tidak dapat dibaca; aturan yang berlaku tetap:
 %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+4" />
+        <location line="+4"/>
         <source>%n rule(s) from %1, seed %2.</source>
         <translation>
-            <numerusform>%n aturan dari %1, seed %2.</numerusform></translation>
+            <numerusform>%n aturan dari %1, seed %2.</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Load fault rules</source>
         <translation>Muat aturan gangguan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Fault rules (*.json);;All files (*)</source>
         <translation>Aturan gangguan (*.json);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+25" />
+        <location line="+25"/>
         <source>(none: every answer is correct)</source>
         <translation>(tidak ada: setiap jawaban benar)</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>delay %1 ms</source>
         <translation>tunda %1 ms</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>delay uniform %1 to %2 ms</source>
         <translation>tunda seragam %1 sampai %2 ms</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>delay normal, mean %1 ms, standard deviation %2 ms</source>
         <translation>tunda normal, rata-rata %1 ms, simpangan baku %2 ms</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>delay exponential, mean %1 ms</source>
         <translation>tunda eksponensial, rata-rata %1 ms</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>drop the answer</source>
         <translation>buang jawaban</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>wrong CRC or LRC</source>
         <translation>CRC atau LRC salah</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>exception %1</source>
         <translation>exception %1</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>unit %1</source>
         <translation>unit %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>function %1</source>
         <translation>fungsi %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1 for %2, %3</source>
         <translation>%1 untuk %2, %3</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1, addresses %2 to %3</source>
         <translation>%1, alamat %2 sampai %3</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 (probability %2)</source>
         <translation>%1 (peluang %2)</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4907,105 +4907,105 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimRegisterModel</name>
     <message>
-        <location filename="../../ui/simregistermodel.cpp" line="+100" />
+        <location filename="../../ui/sim/simregistermodel.cpp" line="+100"/>
         <source>coil</source>
         <translation>coil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>discrete input</source>
         <translation>discrete input</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>input register</source>
         <translation>input register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>holding register</source>
         <translation>holding register</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>%1[%2]</source>
         <translation>%1[%2]</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1, register %2 of %3</source>
         <translation>%1, register %2 dari %3</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>%1 (unit: %2)</source>
         <translation>%1 (satuan: %2)</translation>
     </message>
     <message>
-        <location line="+16" />
+        <location line="+16"/>
         <source>%1 (0x%2)</source>
         <translation>%1 (0x%2)</translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+31"/>
         <source>Table</source>
         <translation>Tabel</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Address</source>
         <translation>Alamat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Name</source>
         <translation>Nama</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Value</source>
         <translation>Nilai</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Hex</source>
         <translation>Hex</translation>
     </message>
     <message>
-        <location line="+31" />
-        <source>'%1' is not a bit value for %2 %3: type 0 or 1.</source>
-        <translation>'%1' bukan nilai bit untuk %2 %3: ketik 0 atau 1.</translation>
+        <location line="+31"/>
+        <source>&apos;%1&apos; is not a bit value for %2 %3: type 0 or 1.</source>
+        <translation>&apos;%1&apos; bukan nilai bit untuk %2 %3: ketik 0 atau 1.</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>'%1' is not a register value for %2 %3: type 0 to 65535, or 0x0000 to 0xFFFF.</source>
-        <translation>'%1' bukan nilai register untuk %2 %3: ketik 0 sampai 65535, atau 0x0000 sampai 0xFFFF.</translation>
+        <location line="+1"/>
+        <source>&apos;%1&apos; is not a register value for %2 %3: type 0 to 65535, or 0x0000 to 0xFFFF.</source>
+        <translation>&apos;%1&apos; bukan nilai register untuk %2 %3: ketik 0 sampai 65535, atau 0x0000 sampai 0xFFFF.</translation>
     </message>
 </context>
 <context>
     <name>mbscope::SimRunListModel</name>
     <message>
-        <location filename="../../ui/simrunlistmodel.cpp" line="+111" />
+        <location filename="../../ui/sim/simrunlistmodel.cpp" line="+111"/>
         <source>%1 (built-in, first run)</source>
         <translation>%1 (bawaan, jalan pertama)</translation>
     </message>
     <message>
-        <location line="+19" />
+        <location line="+19"/>
         <source>Profile</source>
         <translation>Profil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Listening on</source>
         <translation>Mendengarkan di</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Requests</source>
         <translation>Permintaan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Faulted</source>
         <translation>Diganggu</translation>
     </message>
@@ -5013,117 +5013,117 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimTrafficModel</name>
     <message>
-        <location filename="../../ui/simtrafficmodel.cpp" line="+106" />
+        <location filename="../../ui/sim/simtrafficmodel.cpp" line="+108"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>no answer: dropped by fault rule %1</source>
         <translation>tanpa jawaban: dibuang oleh aturan gangguan %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>exception %1 (%2)</source>
         <translation>exception %1 (%2)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>answered</source>
         <translation>dijawab</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>no answer: %1</source>
         <translation>tanpa jawaban: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>unknown unit: %1</source>
         <translation>unit tidak dikenal: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>checksum error: %1</source>
         <translation>error checksum: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>malformed: %1</source>
         <translation>cacat: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>garbage: %1</source>
         <translation>sampah: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>connection opened</source>
         <translation>koneksi dibuka</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>connection refused: %1</source>
         <translation>koneksi ditolak: %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>connection closed: %1</source>
         <translation>koneksi ditutup: %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>%1, changed by fault rule %2</source>
         <translation>%1, diubah oleh aturan gangguan %2</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1, then the connection closed</source>
         <translation>%1, lalu koneksi ditutup</translation>
     </message>
     <message>
-        <location line="+26" />
+        <location line="+26"/>
         <source>%1; sent %2 ms after the request</source>
         <translation>%1; dikirim %2 ms setelah permintaan</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+21"/>
         <source>Time (s)</source>
         <translation>Waktu (s)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Endpoint</source>
         <translation>Endpoint</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Peer</source>
         <translation>Klien</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Unit</source>
         <translation>Unit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Function</source>
         <translation>Fungsi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Outcome</source>
         <translation>Hasil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Request</source>
         <translation>Permintaan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Sent</source>
         <translation>Terkirim</translation>
     </message>
@@ -5131,164 +5131,166 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimulatorPanel</name>
     <message>
-        <location filename="../../ui/simulatorpanel.cpp" line="+38" />
+        <location filename="../../ui/sim/simulatorpanel.cpp" line="+38"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>RTU over TCP</source>
         <translation>RTU lewat TCP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>ASCII over TCP</source>
         <translation>ASCII lewat TCP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Modbus UDP</source>
         <translation>Modbus UDP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>RTU over UDP</source>
         <translation>RTU lewat UDP</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Modbus TCP Security (TLS)</source>
         <translation>Modbus TCP Security (TLS)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Serial RTU</source>
         <translation>RTU serial</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Serial ASCII</source>
         <translation>ASCII serial</translation>
     </message>
     <message>
-        <location line="+38" />
+        <location line="+38"/>
         <source>Profile:</source>
         <translation>Profil:</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>A built-in profile, or the path of a profile file (docs/profiles.md).</source>
         <translation>Profil bawaan, atau path berkas profil (docs/profiles.md).</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>...</source>
         <translation>...</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Choose a profile file</source>
         <translation>Pilih berkas profil</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Listen on:</source>
         <translation>Dengarkan di:</translation>
     </message>
     <message>
-        <location line="+8" />
+        <location line="+8"/>
         <source>Where the simulator listens, as a URL: port 0 lets the system choose a free port.</source>
         <translation>Tempat simulator mendengarkan, sebagai URL: port 0 membiarkan sistem memilih port bebas.</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>&amp;Start</source>
         <translation>&amp;Mulai</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>S&amp;top</source>
         <translation>&amp;Hentikan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Stops the simulator selected in the list.</source>
         <translation>Menghentikan simulator yang dipilih di daftar.</translation>
     </message>
     <message>
-        <location line="+32" />
+        <location line="+32"/>
         <source>Unit:</source>
         <translation>Unit:</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Double-click a value to set it in the simulator (decimal, or hex with 0x).</source>
         <translation>Klik ganda sebuah nilai untuk mengaturnya di simulator (desimal, atau hex dengan 0x).</translation>
     </message>
     <message>
-        <location line="+17" />
+        <location line="+17"/>
         <source>&amp;Registers</source>
         <translation>&amp;Register</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>&amp;Faults</source>
         <translation>&amp;Gangguan</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+24"/>
         <source>&amp;Clear</source>
         <translation>&amp;Kosongkan</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>T&amp;raffic</source>
         <translation>&amp;Lalu lintas</translation>
     </message>
     <message>
-        <location line="+24" />
+        <location line="+24"/>
         <source>Set %1 %2 of unit %3 to %4.</source>
         <translation>%1 %2 unit %3 diatur ke %4.</translation>
     </message>
     <message numerus="yes">
-        <location line="+40" />
+        <location line="+40"/>
         <source>%n line(s), the newest %1 kept.</source>
         <translation>
-            <numerusform>%n baris, %1 terbaru disimpan.</numerusform></translation>
+            <numerusform>%n baris, %1 terbaru disimpan.</numerusform>
+        </translation>
     </message>
     <message numerus="yes">
-        <location line="+2" />
+        <location line="+2"/>
         <source>%n line(s); %1 older line(s) no longer shown (the newest %2 are kept).</source>
         <translation>
-            <numerusform>%n baris; %1 baris lama tidak ditampilkan lagi (%2 terbaru disimpan).</numerusform></translation>
+            <numerusform>%n baris; %1 baris lama tidak ditampilkan lagi (%2 terbaru disimpan).</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+31" />
+        <location line="+31"/>
         <source>Open a device profile</source>
         <translation>Buka profil perangkat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Device profiles (*.json);;All files (*)</source>
         <translation>Profil perangkat (*.json);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Choose a profile first: a built-in one from the list, or a profile file.</source>
         <translation>Pilih profil dulu: profil bawaan dari daftar, atau berkas profil.</translation>
     </message>
     <message>
-        <location line="+5" />
-        <source>The profile '%1' cannot be loaded: %2</source>
-        <translation>Profil '%1' tidak dapat dimuat: %2</translation>
+        <location line="+5"/>
+        <source>The profile &apos;%1&apos; cannot be loaded: %2</source>
+        <translation>Profil &apos;%1&apos; tidak dapat dimuat: %2</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>The simulator was not started on %1: %2</source>
         <translation>Simulator tidak dijalankan di %1: %2</translation>
     </message>
     <message>
-        <location line="+69" />
+        <location line="+69"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -5296,118 +5298,118 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SweepPanel</name>
     <message>
-        <location filename="../../ui/sweeppanel.cpp" line="+43" />
+        <location filename="../../ui/analysis/sweeppanel.cpp" line="+43"/>
         <source>&amp;Start sweep</source>
         <translation>&amp;Mulai sweep</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>S&amp;top</source>
         <translation>&amp;Hentikan</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>Poll intervals in milliseconds, separated by commas; each is run in turn</source>
         <translation>Interval polling dalam milidetik, dipisahkan koma; dijalankan bergiliran</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Transactions (poll cycles) at each interval</source>
         <translation>Transaksi (siklus polling) di setiap interval</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>Intervals (ms):</source>
         <translation>Interval (ms):</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Count per interval:</source>
         <translation>Jumlah per interval:</translation>
     </message>
     <message>
-        <location line="+14" />
+        <location line="+14"/>
         <source>poll interval (ms)</source>
         <translation>interval polling (ms)</translation>
     </message>
     <message>
-        <location line="+1" />
-        <location line="+5" />
+        <location line="+1"/>
+        <location line="+5"/>
         <source>error rate (%)</source>
         <translation>tingkat error (%)</translation>
     </message>
     <message>
-        <location line="-4" />
+        <location line="-4"/>
         <source>latency (ms)</source>
         <translation>latensi (ms)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>median latency (ms)</source>
         <translation>latensi median (ms)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>p95 latency (ms)</source>
         <translation>latensi p95 (ms)</translation>
     </message>
     <message>
-        <location line="+59" />
+        <location line="+59"/>
         <source>interval %1 of %2 is empty: write milliseconds between the commas</source>
         <translation>interval %1 dari %2 kosong: tulis milidetik di antara koma</translation>
     </message>
     <message>
-        <location line="+6" />
-        <source>interval %1 ('%2') is not a whole number of milliseconds from 0 to 3600000</source>
-        <translation>interval %1 ('%2') bukan bilangan bulat milidetik dari 0 sampai 3600000</translation>
+        <location line="+6"/>
+        <source>interval %1 (&apos;%2&apos;) is not a whole number of milliseconds from 0 to 3600000</source>
+        <translation>interval %1 (&apos;%2&apos;) bukan bilangan bulat milidetik dari 0 sampai 3600000</translation>
     </message>
     <message>
-        <location line="-14" />
+        <location line="-14"/>
         <source>no intervals: write them in milliseconds, separated by commas (100, 200, 300)</source>
         <translation>tidak ada interval: tulis dalam milidetik, dipisahkan koma (100, 200, 300)</translation>
     </message>
     <message>
-        <location line="+27" />
+        <location line="+27"/>
         <source>Not started: %1</source>
         <translation>Tidak dimulai: %1</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Not started: connect to a device first</source>
         <translation>Tidak dimulai: sambungkan ke perangkat dulu</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Not started: a poll is running; stop it first</source>
         <translation>Tidak dimulai: polling sedang berjalan; hentikan dulu</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Not started: there is no request to send (write one in the request composer)</source>
         <translation>Tidak dimulai: tidak ada permintaan untuk dikirim (tulis di penyusun permintaan)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>Not started: the link did not take the sweep</source>
         <translation>Tidak dimulai: link tidak menerima sweep</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>Sweeping %1 intervals, %2 transactions each</source>
         <translation>Sweep %1 interval, masing-masing %2 transaksi</translation>
     </message>
     <message>
-        <location line="+18" />
+        <location line="+18"/>
         <source>Interval %1 ms (%2 of %3): cycle %4 of %5</source>
         <translation>Interval %1 ms (%2 dari %3): siklus %4 dari %5</translation>
     </message>
     <message>
-        <location line="+21" />
+        <location line="+21"/>
         <source>Sweep stopped: %1 of %2 intervals run</source>
         <translation>Sweep dihentikan: %1 dari %2 interval dijalankan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Sweep finished: %1 intervals</source>
         <translation>Sweep selesai: %1 interval</translation>
     </message>
@@ -5415,62 +5417,62 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SweepTableModel</name>
     <message>
-        <location filename="../../ui/sweeptablemodel.cpp" line="+73" />
+        <location filename="../../ui/analysis/sweeptablemodel.cpp" line="+73"/>
         <source>Stopped before its count: the figures cover the part that ran</source>
         <translation>Dihentikan sebelum jumlahnya tercapai: angka mencakup bagian yang sudah berjalan</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>%1 (stopped)</source>
         <translation>%1 (dihentikan)</translation>
     </message>
     <message>
-        <location line="+23" />
+        <location line="+23"/>
         <source>Interval (ms)</source>
         <translation>Interval (ms)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Cycles</source>
         <translation>Siklus</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Transactions</source>
         <translation>Transaksi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>OK</source>
         <translation>OK</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Failed</source>
         <translation>Gagal</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Timeouts</source>
         <translation>Waktu habis</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Error rate (%)</source>
         <translation>Tingkat error (%)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Median (ms)</source>
         <translation>Median (ms)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>p95 (ms)</source>
         <translation>p95 (ms)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Max (ms)</source>
         <translation>Maks (ms)</translation>
     </message>
@@ -5478,8 +5480,8 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TableCsv</name>
     <message>
-        <location filename="../../ui/tablecsv.cpp" line="+54" />
-        <location line="+5" />
+        <location filename="../../ui/common/tablecsv.cpp" line="+54"/>
+        <location line="+5"/>
         <source>cannot write %1: %2</source>
         <translation>tidak dapat menulis %1: %2</translation>
     </message>
@@ -5487,97 +5489,97 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TlsFilesField</name>
     <message>
-        <location filename="../../ui/tlsfilesfield.cpp" line="+17" />
+        <location filename="../../ui/link/tlsfilesfield.cpp" line="+17"/>
         <source>C&amp;ertificate:</source>
         <translation>S&amp;ertifikat:</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>client certificate (PEM)</source>
         <translation>sertifikat klien (PEM)</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Choose this client's certificate (PEM)</source>
+        <location line="+1"/>
+        <source>Choose this client&apos;s certificate (PEM)</source>
         <translation>Pilih sertifikat klien ini (PEM)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Key:</source>
         <translation>&amp;Kunci:</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>its private key (PEM)</source>
         <translation>kunci privatnya (PEM)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Choose the private key of the client certificate (PEM, no passphrase)</source>
         <translation>Pilih kunci privat sertifikat klien (PEM, tanpa passphrase)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>C&amp;A:</source>
         <translation>C&amp;A:</translation>
     </message>
     <message>
-        <location line="+0" />
-        <source>device's CA (PEM; empty: system CAs)</source>
+        <location line="+0"/>
+        <source>device&apos;s CA (PEM; empty: system CAs)</source>
         <translation>CA perangkat (PEM; kosong: CA sistem)</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>Choose the CA certificate that signed the device's certificate (PEM)</source>
+        <location line="+1"/>
+        <source>Choose the CA certificate that signed the device&apos;s certificate (PEM)</source>
         <translation>Pilih sertifikat CA yang menandatangani sertifikat perangkat (PEM)</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>MODBUS/TCP Security (port 802) is mutual TLS: the device asks for this client's certificate and key, and its own certificate is checked against the CA file (or the system's CAs).</source>
+        <location line="+1"/>
+        <source>MODBUS/TCP Security (port 802) is mutual TLS: the device asks for this client&apos;s certificate and key, and its own certificate is checked against the CA file (or the system&apos;s CAs).</source>
         <translation>MODBUS/TCP Security (port 802) adalah TLS dua arah: perangkat meminta sertifikat dan kunci klien ini, dan sertifikat perangkat sendiri diperiksa terhadap berkas CA (atau CA sistem).</translation>
     </message>
     <message>
-        <location line="+20" />
+        <location line="+20"/>
         <source>PEM files (*.pem *.crt *.cer *.key);;All files (*)</source>
         <translation>Berkas PEM (*.pem *.crt *.cer *.key);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+38" />
-        <source>The %1 file '%2' does not exist: choose it with the … button beside the field.</source>
-        <translation>Berkas %1 '%2' tidak ada: pilih dengan tombol … di samping kolomnya.</translation>
+        <location line="+38"/>
+        <source>The %1 file &apos;%2&apos; does not exist: choose it with the … button beside the field.</source>
+        <translation>Berkas %1 &apos;%2&apos; tidak ada: pilih dengan tombol … di samping kolomnya.</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>The %1 file '%2' is a folder: choose the PEM file inside it.</source>
-        <translation>Berkas %1 '%2' adalah folder: pilih berkas PEM di dalamnya.</translation>
+        <location line="+2"/>
+        <source>The %1 file &apos;%2&apos; is a folder: choose the PEM file inside it.</source>
+        <translation>Berkas %1 &apos;%2&apos; adalah folder: pilih berkas PEM di dalamnya.</translation>
     </message>
     <message>
-        <location line="+2" />
-        <source>The %1 file '%2' cannot be read (permission denied): make it readable by your user.</source>
-        <translation>Berkas %1 '%2' tidak dapat dibaca (izin ditolak): buat agar dapat dibaca oleh user Anda.</translation>
+        <location line="+2"/>
+        <source>The %1 file &apos;%2&apos; cannot be read (permission denied): make it readable by your user.</source>
+        <translation>Berkas %1 &apos;%2&apos; tidak dapat dibaca (izin ditolak): buat agar dapat dibaca oleh user Anda.</translation>
     </message>
     <message>
-        <location line="+13" />
+        <location line="+13"/>
         <source>A private key was given without its certificate: choose the client certificate too (mutual TLS needs both).</source>
         <translation>Kunci privat diberikan tanpa sertifikatnya: pilih juga sertifikat klien (TLS dua arah memerlukan keduanya).</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>A certificate was given without its private key: choose the key file too (mutual TLS needs both).</source>
         <translation>Sertifikat diberikan tanpa kunci privatnya: pilih juga berkas kuncinya (TLS dua arah memerlukan keduanya).</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>certificate</source>
         <translation>sertifikat</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>private key</source>
         <translation>kunci privat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>CA certificate</source>
         <translation>sertifikat CA</translation>
     </message>
@@ -5585,97 +5587,97 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficModel</name>
     <message>
-        <location filename="../../ui/trafficmodel.cpp" line="+282" />
+        <location filename="../../ui/traffic/trafficmodel.cpp" line="+282"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Time (s)</source>
         <translation>Waktu (s)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Dir</source>
         <translation>Arah</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Link</source>
         <translation>Link</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Unit</source>
         <translation>Unit</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Function</source>
         <translation>Fungsi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Length</source>
         <translation>Panjang</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Latency</source>
         <translation>Latensi</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Verdict</source>
         <translation>Hasil</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Bytes</source>
         <translation>Byte</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Seconds since the first frame listed (monotonic clock)</source>
         <translation>Detik sejak frame pertama di daftar (jam monotonik)</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>From the request written to its answer</source>
         <translation>Dari permintaan ditulis sampai jawabannya</translation>
     </message>
     <message>
-        <location line="+1" />
-        <source>What became of the frame: a request is 'sent', its answer carries the verdict</source>
-        <translation>Apa yang terjadi pada frame: permintaan berstatus 'terkirim', jawabannya membawa hasilnya</translation>
+        <location line="+1"/>
+        <source>What became of the frame: a request is &apos;sent&apos;, its answer carries the verdict</source>
+        <translation>Apa yang terjadi pada frame: permintaan berstatus &apos;terkirim&apos;, jawabannya membawa hasilnya</translation>
     </message>
     <message>
-        <location line="+67" />
+        <location line="+67"/>
         <source>link %1</source>
         <translation>link %1</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>%1 Exception to %2</source>
         <translation>%1 Exception untuk %2</translation>
     </message>
     <message>
-        <location line="+50" />
+        <location line="+50"/>
         <source>No bytes</source>
         <translation>Tanpa byte</translation>
     </message>
     <message>
-        <location line="+6" />
+        <location line="+6"/>
         <source>Not an answer to any request sent</source>
         <translation>Bukan jawaban atas permintaan yang dikirim</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>Answers frame %1</source>
         <translation>Menjawab frame %1</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Answered in frame %1</source>
         <translation>Dijawab di frame %1</translation>
     </message>
@@ -5683,115 +5685,115 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficMonitor</name>
     <message>
-        <location filename="../../ui/trafficmonitor.cpp" line="+64" />
-        <location line="+5" />
-        <location line="+15" />
+        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+64"/>
+        <location line="+5"/>
+        <location line="+15"/>
         <source>any</source>
         <translation>semua</translation>
     </message>
     <message>
-        <location line="-19" />
+        <location line="-19"/>
         <source>Show only frames of this unit id</source>
         <translation>Tampilkan hanya frame dengan ID unit ini</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>Show only frames of this function code (its exception responses included)</source>
         <translation>Tampilkan hanya frame dengan kode fungsi ini (termasuk respons exception-nya)</translation>
     </message>
     <message>
-        <location line="+4" />
+        <location line="+4"/>
         <source>both</source>
         <translation>keduanya</translation>
     </message>
     <message>
-        <location line="+7" />
+        <location line="+7"/>
         <source>problems only</source>
         <translation>hanya masalah</translation>
     </message>
     <message>
-        <location line="+6" />
-        <location line="+116" />
+        <location line="+6"/>
+        <location line="+116"/>
         <source>Pause</source>
         <translation>Jeda</translation>
     </message>
     <message>
-        <location line="-114" />
+        <location line="-114"/>
         <source>Hold new frames back from the list; nothing is dropped, they appear on resume</source>
         <translation>Tahan frame baru dari daftar; tidak ada yang dibuang, frame muncul saat dilanjutkan</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Clear</source>
         <translation>Kosongkan</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Empty the list (the traffic log and its journal keep every frame)</source>
         <translation>Kosongkan daftar (log lalu lintas dan jurnalnya tetap menyimpan setiap frame)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>Find: hex bytes or text (Enter, F3)</source>
         <translation>Cari: byte hex atau teks (Enter, F3)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Find previous (Shift+F3)</source>
         <translation>Cari sebelumnya (Shift+F3)</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>Find next (F3)</source>
         <translation>Cari berikutnya (F3)</translation>
     </message>
     <message>
-        <location line="+9" />
+        <location line="+9"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>F&amp;unction:</source>
         <translation>F&amp;ungsi:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Di&amp;rection:</source>
         <translation>&amp;Arah:</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>&amp;Verdict:</source>
         <translation>&amp;Hasil:</translation>
     </message>
     <message>
-        <location line="+87" />
+        <location line="+87"/>
         <source>Resume</source>
         <translation>Lanjutkan</translation>
     </message>
     <message>
-        <location line="+98" />
+        <location line="+98"/>
         <source>No frame shown matches “%1”</source>
         <translation>Tidak ada frame yang cocok dengan “%1”</translation>
     </message>
     <message>
-        <location line="+12" />
+        <location line="+12"/>
         <source>%1 frames</source>
         <translation>%1 frame</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>, %1 shown</source>
         <translation>, %1 ditampilkan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source> · paused: %1 new frames held</source>
         <translation> · dijeda: %1 frame baru ditahan</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source> · %1 oldest dropped from the list</source>
         <translation> · %1 terlama dibuang dari daftar</translation>
     </message>
@@ -5799,72 +5801,72 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficStyle</name>
     <message>
-        <location filename="../../ui/trafficstyle.cpp" line="+37" />
+        <location filename="../../ui/common/trafficstyle.cpp" line="+37"/>
         <source>ok</source>
         <translation>ok</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>exception</source>
         <translation>exception</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>timeout</source>
         <translation>waktu habis</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>crc error</source>
         <translation>error CRC</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>malformed</source>
         <translation>cacat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>unexpected</source>
         <translation>tak terduga</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>link error</source>
         <translation>error link</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>broadcast</source>
         <translation>broadcast</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>late</source>
         <translation>terlambat</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>sent</source>
         <translation>terkirim</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>unsolicited</source>
         <translation>tak diminta</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>garbage</source>
         <translation>sampah</translation>
     </message>
     <message>
-        <location line="+11" />
+        <location line="+11"/>
         <source>out</source>
         <translation>keluar</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>in</source>
         <translation>masuk</translation>
     </message>
@@ -5872,7 +5874,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TransactionView</name>
     <message>
-        <location filename="../../ui/transactionview.cpp" line="+76" />
+        <location filename="../../ui/decode/transactionview.cpp" line="+76"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -5880,17 +5882,17 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrendPanels</name>
     <message>
-        <location filename="../../ui/trendpanels.cpp" line="+21" />
+        <location filename="../../ui/analysis/trendpanels.cpp" line="+21"/>
         <source>Latency over time</source>
         <translation>Latensi terhadap waktu</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Register trends</source>
         <translation>Tren register</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>Sweep</source>
         <translation>Sweep</translation>
     </message>
@@ -5898,42 +5900,42 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrendSeries</name>
     <message>
-        <location filename="../../ui/trendseries.cpp" line="+35" />
+        <location filename="../../ui/analysis/trendseries.cpp" line="+35"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
     <message>
-        <location line="+0" />
+        <location line="+0"/>
         <source>bit</source>
         <translation>bit</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
     <message>
-        <location line="+1" />
+        <location line="+1"/>
         <source>%1, %2 (%3)</source>
         <translation>%1, %2 (%3)</translation>
     </message>
     <message>
-        <location line="+5" />
+        <location line="+5"/>
         <source>%1, PDU address %2</source>
         <translation>%1, alamat PDU %2</translation>
     </message>
     <message>
-        <location line="+3" />
+        <location line="+3"/>
         <source>%1, %2, value = raw × %3 + %4</source>
         <translation>%1, %2, nilai = mentah × %3 + %4</translation>
     </message>
     <message>
-        <location line="+2" />
+        <location line="+2"/>
         <source>%1 (profile %2)</source>
         <translation>%1 (profil %2)</translation>
     </message>
     <message>
-        <location line="+39" />
+        <location line="+39"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
