@@ -6,8 +6,10 @@
 #include "protocol/adubuilder.h"
 #include "protocol/hextext.h"
 
+#include <QtCore/QAbstractItemModel>
 #include <QtGui/QAction>
 #include <QtGui/QKeySequence>
+#include <QtWidgets/QComboBox>
 #include <QtWidgets/QGroupBox>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
@@ -113,6 +115,37 @@ void RequestComposer::buildUi()
         if (m_tabs->currentWidget() == m_form)
             onFormChanged();
     });
+    // After the handlers above, so the state is read once the Form has followed.
+    connect(m_raw, &RawRequestEditor::bytesChanged, this, &RequestComposer::stateChanged);
+    connect(m_intervalSpin, &QSpinBox::valueChanged, this, &RequestComposer::stateChanged);
+    connect(m_countSpin, &QSpinBox::valueChanged, this, &RequestComposer::stateChanged);
+    QAbstractItemModel *saved = m_raw->savedCombo()->model();
+    connect(saved, &QAbstractItemModel::rowsInserted, this, &RequestComposer::stateChanged);
+    connect(saved, &QAbstractItemModel::rowsRemoved, this, &RequestComposer::stateChanged);
+    connect(saved, &QAbstractItemModel::modelReset, this, &RequestComposer::stateChanged);
+}
+
+RequestComposer::State RequestComposer::state() const
+{
+    State s;
+    s.requestText = m_raw->text();
+    s.request = bytes();
+    s.intervalMs = m_intervalSpin->value();
+    s.count = m_countSpin->value();
+    s.savedRequests = m_raw->savedRequests();
+    return s;
+}
+
+void RequestComposer::setState(const State &state)
+{
+    if (state.savedRequests != SavedRequests::load()) {
+        SavedRequests::store(state.savedRequests);
+        m_raw->reloadSavedRequests();
+    }
+    setRequestText(state.requestText);
+    showRawTab();
+    m_intervalSpin->setValue(state.intervalMs);
+    m_countSpin->setValue(state.count);
 }
 
 QByteArray RequestComposer::bytes() const

@@ -1,8 +1,11 @@
 #pragma once
 
 #include "protocol/framing.h"
+#include "savedrequests.h"
 
 #include <QtCore/QByteArray>
+#include <QtCore/QList>
+#include <QtCore/QString>
 #include <QtWidgets/QWidget>
 
 class QAction;
@@ -24,7 +27,25 @@ class RequestComposer : public QWidget
 {
     Q_OBJECT
 public:
+    // What a session keeps of the composer: the Raw request, the poll's interval and count, and
+    // the named requests. A default State is a new composer's.
+    struct State {
+        QString requestText;  // the Raw tab's text as typed
+        QByteArray request;   // its bytes; empty while the text is not hex (never set by setState)
+        int intervalMs = 500; // start to start
+        int count = 0;        // 0: until stopped
+        QList<SavedRequest> savedRequests;
+
+        friend bool operator==(const State &, const State &) = default;
+    };
+
     explicit RequestComposer(QWidget *parent = nullptr);
+
+    [[nodiscard]] State state() const;
+    // Shows state.requestText on the Raw tab (the Form follows when it can describe it) and sets
+    // the poll fields. The named requests are shared by every window through QSettings: a list
+    // that differs from what is kept there is stored.
+    void setState(const State &state);
 
     [[nodiscard]] RawRequestEditor *rawEditor() const { return m_raw; }
     [[nodiscard]] RequestForm *form() const { return m_form; }
@@ -57,6 +78,8 @@ Q_SIGNALS:
     void stopPollRequested();
     // A Raw request named a unit (the composer's form now uses it): the connection bar follows.
     void unitIdSeen(int unit);
+    // The request text, the poll fields or the named requests changed.
+    void stateChanged();
 
 private:
     void buildUi();

@@ -54,6 +54,19 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     buildUi();
     rebuildRecentMenu();
     onKindChanged();
+    watchFields();
+}
+
+// Every field, those of the TLS files and the serial port's editor included: a field added later
+// cannot be missed. Connected after the bar's own handlers, so the state is read once they ran.
+void ConnectionBar::watchFields()
+{
+    for (QLineEdit *edit : findChildren<QLineEdit *>())
+        connect(edit, &QLineEdit::textChanged, this, &ConnectionBar::stateChanged);
+    for (QSpinBox *spin : findChildren<QSpinBox *>())
+        connect(spin, &QSpinBox::valueChanged, this, &ConnectionBar::stateChanged);
+    for (QComboBox *combo : findChildren<QComboBox *>())
+        connect(combo, &QComboBox::currentIndexChanged, this, &ConnectionBar::stateChanged);
 }
 
 void ConnectionBar::buildUi()
@@ -328,6 +341,21 @@ void ConnectionBar::setUrl(const LinkUrl &url)
     if (url.responseTimeoutMs > 0)
         m_timeoutSpin->setValue(url.responseTimeoutMs);
     clearError();
+}
+
+ConnectionBar::State ConnectionBar::state()
+{
+    return State{url(), timeoutMs()};
+}
+
+void ConnectionBar::setState(const State &state)
+{
+    if (!state.target)
+        return;
+    LinkUrl target = *state.target;
+    if (target.responseTimeoutMs < 0 && state.timeoutMs > 0)
+        target.responseTimeoutMs = state.timeoutMs;
+    setUrl(target);
 }
 
 int ConnectionBar::unitId() const

@@ -29,7 +29,22 @@ class ConnectionBar : public QWidget
 public:
     static constexpr int kMaxRecent = 10;
 
+    // What a session keeps of the bar: the target and the timeout.
+    struct State {
+        std::optional<LinkUrl> target; // the target the fields make (timeout as ?timeout=), if any
+        int timeoutMs = 0;             // the timeout field, also when the fields make no target
+
+        friend bool operator==(const State &, const State &) = default;
+    };
+
     explicit ConnectionBar(QWidget *parent = nullptr);
+
+    // The fields as a state. Like url(), a target the fields cannot make is refused in place
+    // (errorText()), so a window that follows the state (its session) says at once what is wrong.
+    [[nodiscard]] State state();
+    // Fills the fields from state.target, with timeoutMs as its timeout when the URL gives none.
+    // A state without a target (a session that names none) leaves the fields as they are.
+    void setState(const State &state);
 
     // The target as the fields say, with the timeout as ?timeout=; nullopt with errorText() set.
     [[nodiscard]] std::optional<LinkUrl> url();
@@ -63,12 +78,15 @@ Q_SIGNALS:
     void disconnectRequested();
     void framingChanged(mbscope::Framing framing);
     void unitIdChanged(int unit);
+    // Any field changed (the state may differ: a session compares).
+    void stateChanged();
 
 private:
     void buildUi();
     void onConnectClicked();
     void onKindChanged();
     void rebuildRecentMenu();
+    void watchFields();
     [[nodiscard]] LinkKind kind() const;
 
     QComboBox *m_kindCombo = nullptr;

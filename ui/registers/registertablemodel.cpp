@@ -1,13 +1,12 @@
 #include "registertablemodel.h"
 
+#include "registerwrite.h"
+
 #include "common/coretext.h"
 
-#include "protocol/adubuilder.h"
 #include "protocol/hexformat.h"
 #include "protocol/registervalue.h"
-#include "profile/scaledvalue.h"
 
-#include <QtCore/QLocale>
 #include <QtGui/QBrush>
 #include <QtGui/QColor>
 #include <QtGui/QFontDatabase>
@@ -15,17 +14,6 @@
 namespace mbscope {
 
 namespace {
-
-SimTable simTableOf(ModbusTable table)
-{
-    switch (table) {
-    case ModbusTable::Coils: return SimTable::Coils;
-    case ModbusTable::DiscreteInputs: return SimTable::DiscreteInputs;
-    case ModbusTable::InputRegisters: return SimTable::InputRegisters;
-    case ModbusTable::HoldingRegisters: return SimTable::HoldingRegisters;
-    }
-    return SimTable::HoldingRegisters;
-}
 
 // RegisterFormat::description in the window's language: "float32 (IEEE 754 single), word swap (CDAB)".
 QString describe(const RegisterFormat &format)
@@ -39,15 +27,6 @@ const QColor kChangedBackground(255, 226, 140);
 const QColor kContinuationText(128, 128, 128);
 
 } // namespace
-
-// What a value column shows on one row.
-struct RegisterTableModel::ValueCell {
-    QString text;         // the display text or the tooltip, as asked
-    int firstRow = 0;     // the row of the value's first register
-    int span = 1;         // rows the value covers (0 on the rows after its first)
-    bool continuation = false;
-    bool complete = true; // all the value's registers are in the answer
-};
 
 RegisterTableModel::RegisterTableModel(QObject *parent)
     : QAbstractTableModel(parent),
@@ -79,37 +58,34 @@ bool RegisterTableModel::updateFromTransaction(const Transaction &transaction, F
         Q_EMIT answerRefused(m_lastProblem);
         return false;
     }
-    return update(AduBuilder::parse(transaction.request, framing).pdu,
-                  AduBuilder::parse(transaction.response, framing).pdu);
+    const ReadAnswerResult r = ReadAnswerRows::answerOf(transaction, framing);
+    if (!r.ok) {
+        m_lastProblem = tr("answer not shown: %1").arg(r.error);
+        Q_EMIT answerRefused(m_lastProblem);
+        return false;
+    }
+    setAnswer(r.answer);
+    return true;
 }
 
 void RegisterTableModel::setAnswer(const ReadAnswer &answer)
 {
-    const bool sameRows = m_hasAnswer && answer.table == m_answer.table && answer.address == m_answer.address
-        && answer.count() == m_answer.count();
-    // Compared by address, so a change of range still marks the values that changed.
-    QList<bool> changed(answer.count(), false);
-    if (m_hasAnswer && answer.table == m_answer.table) {
-        for (int i = 0; i < answer.count(); ++i) {
-            const int old = answer.address + i - m_answer.address;
-            if (old < 0 || old >= m_answer.count())
-                continue;
-            changed[i] = answer.isBits() ? answer.bits.at(i) != m_answer.bits.at(old)
-                                         : answer.registers.at(i) != m_answer.registers.at(old);
-        }
-    }
+    const ReadAnswer &previous = m_rows.answer();
+    const bool sameRows = m_hasAnswer && answer.table == previous.table && answer.address == previous.address
+        && answer.count() == previous.count();
+    const QList<bool> changed =
+        m_hasAnswer ? ReadAnswerRows::changedRows(previous, answer) : QList<bool>(answer.count(), false);
     m_lastProblem.clear();
     if (sameRows) {
-        m_answer = answer;
+        m_rows.setAnswer(answer);
         m_changed = changed;
         if (rowCount() > 0)
             Q_EMIT dataChanged(index(0, 0), index(rowCount() - 1, columnCount() - 1));
     } else {
         beginResetModel();
-        m_answer = answer;
+        m_rows.setAnswer(answer);
         m_changed = changed;
         m_hasAnswer = true;
-        m_layouts.clear();
         endResetModel();
         Q_EMIT layoutOfValuesChanged();
     }
@@ -122,10 +98,9 @@ void RegisterTableModel::setAnswer(const ReadAnswer &answer)
 void RegisterTableModel::clear()
 {
     beginResetModel();
-    m_answer = ReadAnswer();
+    m_rows.setAnswer(ReadAnswer());
     m_hasAnswer = false;
     m_changed.clear();
-    m_layouts.clear();
     m_lastProblem.clear();
     endResetModel();
     Q_EMIT layoutOfValuesChanged();
@@ -151,7 +126,7 @@ void RegisterTableModel::setValueFormat(int valueIndex, RegisterFormat format)
 
 void RegisterTableModel::addValueColumn(RegisterFormat format)
 {
-    if (m_answer.isBits() && m_hasAnswer) {
+    if (m_rows.isBits() && m_hasAnswer) {
         m_formats.append(format); // bit tables show one value column whatever the formats
         return;
     }
@@ -167,7 +142,7 @@ void RegisterTableModel::removeValueColumn(int valueIndex)
     // The last value column stays: a table without values shows nothing.
     if (valueIndex < 0 || valueIndex >= m_formats.size() || m_formats.size() == 1)
         return;
-    if (m_answer.isBits() && m_hasAnswer) {
+    if (m_rows.isBits() && m_hasAnswer) {
         m_formats.removeAt(valueIndex);
         return;
     }
@@ -202,7 +177,7 @@ void RegisterTableModel::valueColumnsChanged()
 
 int RegisterTableModel::valueColumnCount() const
 {
-    return m_hasAnswer && m_answer.isBits() ? 1 : int(m_formats.size());
+    return m_hasAnswer && m_rows.isBits() ? 1 : int(m_formats.size());
 }
 
 int RegisterTableModel::valueIndexOf(int column) const
@@ -220,9 +195,8 @@ RegisterFormat RegisterTableModel::formatOfColumn(int column) const
 void RegisterTableModel::setProfile(const UnitProfile &unit, const QString &profileName)
 {
     beginResetModel();
-    m_profile = unit;
+    m_rows.setProfile(unit);
     m_profileName = profileName;
-    m_layouts.clear();
     endResetModel();
     Q_EMIT layoutOfValuesChanged();
 }
@@ -230,9 +204,8 @@ void RegisterTableModel::setProfile(const UnitProfile &unit, const QString &prof
 void RegisterTableModel::clearProfile()
 {
     beginResetModel();
-    m_profile.reset();
+    m_rows.setProfile(std::nullopt);
     m_profileName.clear();
-    m_layouts.clear();
     endResetModel();
     Q_EMIT layoutOfValuesChanged();
 }
@@ -256,7 +229,7 @@ void RegisterTableModel::clearHighlights()
 
 int RegisterTableModel::rowCount(const QModelIndex &parent) const
 {
-    return parent.isValid() || !m_hasAnswer ? 0 : m_answer.count();
+    return parent.isValid() || !m_hasAnswer ? 0 : m_rows.rowCount();
 }
 
 int RegisterTableModel::columnCount(const QModelIndex &parent) const
@@ -264,170 +237,103 @@ int RegisterTableModel::columnCount(const QModelIndex &parent) const
     return parent.isValid() ? 0 : FirstValueColumn + valueColumnCount() + 1;
 }
 
-const TableEntry *RegisterTableModel::entryAt(int row) const
+RowValue RegisterTableModel::valueAt(int row, int valueIndex) const
 {
-    if (!m_profile)
-        return nullptr;
-    return m_profile->entryAt(simTableOf(m_answer.table), m_answer.address + row);
+    return m_rows.valueAt(row, m_formats.at(valueIndex));
 }
 
-const QList<WideValueLayout::Value> &RegisterTableModel::valueLayout(int width) const
+// Text is made only for the role asked: views ask per painted cell.
+QString RegisterTableModel::valueText(int row, const RowValue &value) const
 {
-    auto it = m_layouts.find(width);
-    if (it == m_layouts.end()) {
-        WideValueLayout::EntryAt wideEntryAt;
-        if (m_profile && !m_answer.isBits()) {
-            const SimTable table = simTableOf(m_answer.table);
-            wideEntryAt = [this, table](int address) -> std::optional<WideValueLayout::Entry> {
-                const TableEntry *entry = m_profile->entryAt(table, address);
-                if (!entry || entry->width() < 2)
-                    return std::nullopt;
-                return WideValueLayout::Entry{entry->address, entry->address + entry->count};
-            };
-        }
-        it = m_layouts.insert(width, WideValueLayout::lay(m_answer.address, m_answer.count(), width, wideEntryAt));
-    }
-    return *it;
+    if (m_rows.isBits())
+        return m_rows.raw(row) ? tr("1  ON") : tr("0  OFF");
+    if (value.continuation)
+        return tr("\u2191 %1 from %2").arg(value.format.typeName(), ReadAnswer::referenceText(m_rows.reference(value.start)));
+    if (!value.isComplete())
+        return tr("(%1 of %2 registers)").arg(value.span()).arg(value.width());
+    return value.value ? value.value->toText() : QString();
 }
 
-QString RegisterTableModel::rowWhere(int row) const
+QString RegisterTableModel::valueToolTip(int row, const RowValue &value) const
 {
-    const int address = m_answer.address + row;
-    const QString reference = ReadAnswer::referenceText(m_answer.reference(row));
-    if (!m_answer.isBits())
-        return tr("register %1 (PDU address %2)").arg(reference).arg(address);
-    return m_answer.table == ModbusTable::Coils ? tr("coil %1 (PDU address %2)").arg(reference).arg(address)
-                                                : tr("discrete input %1 (PDU address %2)").arg(reference).arg(address);
-}
-
-RegisterTableModel::ValueCell RegisterTableModel::valueCell(int row, int valueIndex, CellText wanted) const
-{
-    // The layout is arithmetic; text is made only for the role asked (views ask per painted cell).
-    ValueCell cell;
-    cell.firstRow = row;
-    if (m_answer.isBits()) {
-        if (wanted == CellText::Display)
-            cell.text = m_answer.bits.at(row) ? tr("1  ON") : tr("0  OFF");
-        return cell;
-    }
-    const RegisterFormat format = m_formats.at(valueIndex);
-    const int width = format.registerCount();
-    const WideValueLayout::Value value = valueLayout(width).at(row);
-    cell.firstRow = qMax(value.start, 0);
-    cell.continuation = cell.firstRow != row;
-    cell.span = cell.continuation ? 0 : value.end - cell.firstRow;
-    cell.complete = value.start >= 0 && value.end - value.start == width;
-    if (wanted == CellText::None)
-        return cell;
-
+    const RegisterFormat format = value.format;
+    const int width = value.width();
     // The value's own first register, also when the answer begins inside it.
-    const QString firstRef = ReadAnswer::referenceText(m_answer.reference(value.start));
-    if (cell.continuation) {
-        if (wanted == CellText::Display)
-            cell.text = tr("\u2191 %1 from %2").arg(format.typeName(), firstRef);
-        else
-            cell.text = tr("Register %1 is register %2 of the %3 registers of the %4 value at %5")
-                            .arg(ReadAnswer::referenceText(m_answer.reference(row)))
-                            .arg(row - cell.firstRow + 1)
-                            .arg(width)
-                            .arg(format.name(), firstRef);
-        return cell;
-    }
-    if (!cell.complete) {
-        if (wanted == CellText::Display)
-            cell.text = tr("(%1 of %2 registers)").arg(cell.span).arg(width);
-        else if (value.start < 0)
-            cell.text = tr("%1 needs %2 registers from %3; the answer begins %4 registers into it")
-                            .arg(format.name())
-                            .arg(width)
-                            .arg(firstRef)
-                            .arg(-value.start);
-        else if (value.start + width > m_answer.count())
-            cell.text = tr("%1 needs %2 registers from %3; the answer ends after %4")
-                            .arg(format.name())
-                            .arg(width)
-                            .arg(firstRef)
-                            .arg(cell.span);
-        else
-            cell.text = tr("%1 needs %2 registers from %3; the profile's next value begins after %4")
-                            .arg(format.name())
-                            .arg(width)
-                            .arg(firstRef)
-                            .arg(cell.span);
-        return cell;
-    }
-    if (wanted == CellText::Display) {
-        const RegisterValueResult decoded = RegisterValue::fromRegisters(
-            std::span<const quint16>(m_answer.registers.constData() + row, size_t(width)), format);
-        cell.text = decoded.ok ? decoded.value.toText() : decoded.error;
-        return cell;
+    const QString firstRef = ReadAnswer::referenceText(m_rows.reference(value.start));
+    if (value.continuation)
+        return tr("Register %1 is register %2 of the %3 registers of the %4 value at %5")
+            .arg(ReadAnswer::referenceText(m_rows.reference(row)))
+            .arg(row - value.firstRow() + 1)
+            .arg(width)
+            .arg(format.name(), firstRef);
+    switch (value.gap) {
+    case RowValue::Gap::BeginsBefore:
+        return tr("%1 needs %2 registers from %3; the answer begins %4 registers into it")
+            .arg(format.name())
+            .arg(width)
+            .arg(firstRef)
+            .arg(-value.start);
+    case RowValue::Gap::EndsAfter:
+        return tr("%1 needs %2 registers from %3; the answer ends after %4")
+            .arg(format.name())
+            .arg(width)
+            .arg(firstRef)
+            .arg(value.span());
+    case RowValue::Gap::CutByProfile:
+        return tr("%1 needs %2 registers from %3; the profile's next value begins after %4")
+            .arg(format.name())
+            .arg(width)
+            .arg(firstRef)
+            .arg(value.span());
+    case RowValue::Gap::None:
+        break;
     }
     QString raw;
     for (int i = row; i < row + width; ++i)
-        raw += (raw.isEmpty() ? QString() : QStringLiteral(" ")) + hexDigits(m_answer.registers.at(i), 4);
+        raw += (raw.isEmpty() ? QString() : QStringLiteral(" ")) + hexDigits(quint16(m_rows.raw(i)), 4);
     const QString span = width == 1
         ? firstRef
         : tr("%1 registers %2-%3").arg(width).arg(firstRef,
-                                                             ReadAnswer::referenceText(m_answer.reference(row + width - 1)));
-    cell.text = tr("%1\n%2, on the wire %3").arg(describe(format), span, raw);
-    return cell;
+                                                             ReadAnswer::referenceText(m_rows.reference(row + width - 1)));
+    return tr("%1\n%2, on the wire %3").arg(describe(format), span, raw);
 }
 
 QString RegisterTableModel::nameText(int row) const
 {
-    const TableEntry *entry = entryAt(row);
-    if (!entry)
-        return {};
-    const int offset = m_answer.address + row - entry->address;
-    const int width = entry->width();
-    QString name = entry->name;
-    if (entry->valueCount() > 1)
-        name += QStringLiteral("[%1]").arg(offset / width);
-    if (offset % width != 0)
-        name += tr(" (register %1 of %2)").arg(offset % width + 1).arg(width);
+    const RowEntry entry = m_rows.entryAt(row);
+    QString name = entry.name();
+    if (entry.entry && !entry.isFirstRegister())
+        name += tr(" (register %1 of %2)").arg(entry.registerIndex + 1).arg(entry.width());
     return name;
 }
 
 QString RegisterTableModel::scaledText(int row) const
 {
-    const TableEntry *entry = entryAt(row);
-    if (!entry || m_answer.isBits())
+    const RowEntry entry = m_rows.entryAt(row);
+    if (!entry.entry || m_rows.isBits())
         return {};
-    const int offset = m_answer.address + row - entry->address;
-    const int width = entry->width();
-    if (offset % width != 0)
+    if (!entry.isFirstRegister())
         return QStringLiteral("\u2191");
-    if (row + width > m_answer.count())
-        return tr("(%1 of %2 registers)").arg(m_answer.count() - row).arg(width);
-    const std::span<const quint16> words(m_answer.registers.constData() + row, size_t(width));
-    QString text;
-    if (entry->scale == 1 && entry->offset == 0) {
-        // Unscaled: the format's own text, exact (hex, ascii and 64-bit integers included).
-        text = RegisterValue::fromRegisters(words, entry->format).value.toText();
-    } else {
-        const ScaledValue scaled{entry->format, entry->scale, entry->offset};
-        // Twelve significant digits hide the binary fraction of a decimal scale (1050 * 0.1).
-        text = QLocale::c().toString(scaled.decode(words), 'g', 12);
-    }
-    return entry->unit.isEmpty() ? text : text + QLatin1Char(' ') + entry->unit;
+    if (!entry.complete)
+        return tr("(%1 of %2 registers)").arg(m_rows.rowCount() - row).arg(entry.width());
+    return m_rows.scaledText(row);
 }
-
 bool RegisterTableModel::isChanged(int row, int column) const
 {
     int first = row;
     int width = 1;
     if (const int vi = valueIndexOf(column); vi >= 0) {
-        if (!m_answer.isBits()) {
-            const WideValueLayout::Value value = valueLayout(m_formats.at(vi).registerCount()).at(row);
+        if (!m_rows.isBits()) {
+            const RowValue value = valueAt(row, vi);
             first = value.start;
             width = value.end - value.start;
         }
     } else if (column == scaledColumn()) {
-        const TableEntry *entry = entryAt(row);
-        if (!entry)
+        const RowEntry entry = m_rows.entryAt(row);
+        if (!entry.entry)
             return false;
-        width = entry->width();
-        first = row - (m_answer.address + row - entry->address) % width;
+        width = entry.width();
+        first = row - entry.registerIndex;
     } else {
         return false;
     }
@@ -441,17 +347,17 @@ bool RegisterTableModel::isChanged(int row, int column) const
 QVariant RegisterTableModel::toolTip(int row, int column) const
 {
     if (column == ReferenceColumn)
-        return m_answer.reference(row).describe();
+        return m_rows.reference(row).describe();
     if (column == NameColumn) {
-        const TableEntry *entry = entryAt(row);
+        const TableEntry *entry = m_rows.entryAt(row).entry;
         return entry ? QVariant(entry->description) : QVariant();
     }
     if (const int vi = valueIndexOf(column); vi >= 0)
-        return m_answer.isBits() ? QVariant() : QVariant(valueCell(row, vi, CellText::ToolTip).text);
+        return m_rows.isBits() ? QVariant() : QVariant(valueToolTip(row, valueAt(row, vi)));
     if (column == scaledColumn()) {
-        const TableEntry *entry = entryAt(row);
+        const TableEntry *entry = m_rows.entryAt(row).entry;
         if (!entry)
-            return m_profile ? tr("The profile names no value at this address") : QVariant();
+            return hasProfile() ? tr("The profile names no value at this address") : QVariant();
         return tr("%1 as %2, value = raw \u00d7 %3 + %4")
             .arg(entry->name, entry->format.name())
             .arg(entry->scale)
@@ -462,16 +368,17 @@ QVariant RegisterTableModel::toolTip(int row, int column) const
 
 bool RegisterTableModel::isEditableCell(int row, int column) const
 {
-    if (!ModiconReference::isWritable(m_answer.table))
+    if (!ModiconReference::isWritable(m_rows.answer().table))
         return false;
     if (const int vi = valueIndexOf(column); vi >= 0) {
-        const ValueCell cell = valueCell(row, vi, CellText::None);
-        return m_answer.isBits() || (!cell.continuation && cell.complete);
+        if (m_rows.isBits())
+            return true;
+        const RowValue value = valueAt(row, vi);
+        return !value.continuation && value.isComplete();
     }
-    if (column == scaledColumn() && !m_answer.isBits()) {
-        const TableEntry *entry = entryAt(row);
-        return entry && (m_answer.address + row - entry->address) % entry->width() == 0
-            && row + entry->width() <= m_answer.count();
+    if (column == scaledColumn() && !m_rows.isBits()) {
+        const RowEntry entry = m_rows.entryAt(row);
+        return entry.entry && entry.complete;
     }
     return false;
 }
@@ -487,28 +394,27 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
     case Qt::DisplayRole:
     case Qt::EditRole:
         if (column == AddressColumn)
-            return ReadAnswer::addressText(m_answer.address + row);
+            return ReadAnswer::addressText(m_rows.address(row));
         if (column == ReferenceColumn)
-            return ReadAnswer::referenceText(m_answer.reference(row));
+            return ReadAnswer::referenceText(m_rows.reference(row));
         if (column == NameColumn)
             return nameText(row);
         if (vi >= 0) {
-            const ValueCell cell = valueCell(row, vi, CellText::Display);
-            if (role == Qt::EditRole && m_answer.isBits())
-                return m_answer.bits.at(row) ? QStringLiteral("1") : QStringLiteral("0");
-            return cell.text;
+            if (role == Qt::EditRole && m_rows.isBits())
+                return m_rows.raw(row) ? QStringLiteral("1") : QStringLiteral("0");
+            return valueText(row, m_rows.isBits() ? RowValue() : valueAt(row, vi));
         }
         return scaledText(row);
     case Qt::ToolTipRole:
         return toolTip(row, column);
     case Qt::CheckStateRole:
-        if (vi >= 0 && m_answer.isBits())
-            return m_answer.bits.at(row) ? Qt::Checked : Qt::Unchecked;
+        if (vi >= 0 && m_rows.isBits())
+            return m_rows.raw(row) ? Qt::Checked : Qt::Unchecked;
         return {};
     case Qt::BackgroundRole:
         return isChanged(row, column) ? QVariant(QBrush(kChangedBackground)) : QVariant();
     case Qt::ForegroundRole:
-        if (vi >= 0 && !m_answer.isBits() && valueCell(row, vi, CellText::None).continuation)
+        if (vi >= 0 && !m_rows.isBits() && valueAt(row, vi).continuation)
             return QBrush(kContinuationText);
         return {};
     case Qt::FontRole:
@@ -520,17 +426,17 @@ QVariant RegisterTableModel::data(const QModelIndex &index, int role) const
             return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
         return QVariant::fromValue(Qt::AlignLeft | Qt::AlignVCenter);
     case AddressRole:
-        return m_answer.address + row;
+        return m_rows.address(row);
     case ChangedRole:
         return isChanged(row, column);
     case SpanRole:
         if (vi >= 0)
-            return valueCell(row, vi, CellText::None).span;
+            return m_rows.isBits() ? 1 : valueAt(row, vi).span();
         return 1;
     case RawRole:
-        return m_answer.isBits() ? int(m_answer.bits.at(row)) : int(m_answer.registers.at(row));
+        return m_rows.raw(row);
     case FormatRole:
-        return vi >= 0 ? QVariant(m_answer.isBits() ? QStringLiteral("bit") : m_formats.at(vi).name()) : QVariant();
+        return vi >= 0 ? QVariant(m_rows.isBits() ? QStringLiteral("bit") : m_formats.at(vi).name()) : QVariant();
     default:
         return {};
     }
@@ -540,7 +446,7 @@ QVariant RegisterTableModel::headerData(int section, Qt::Orientation orientation
 {
     if (orientation != Qt::Horizontal)
         return role == Qt::DisplayRole ? QVariant(section + 1) : QVariant();
-    const int digit = ModiconReference::tableDigit(m_answer.table);
+    const int digit = ModiconReference::tableDigit(m_rows.answer().table);
     if (role == Qt::DisplayRole) {
         if (section == AddressColumn)
             return tr("PDU address");
@@ -549,7 +455,7 @@ QVariant RegisterTableModel::headerData(int section, Qt::Orientation orientation
         if (section == NameColumn)
             return tr("Name");
         if (const int vi = valueIndexOf(section); vi >= 0)
-            return m_hasAnswer && m_answer.isBits() ? tr("Value") : m_formats.at(vi).name();
+            return m_hasAnswer && m_rows.isBits() ? tr("Value") : m_formats.at(vi).name();
         if (section == scaledColumn())
             return tr("Scaled");
         return {};
@@ -562,10 +468,10 @@ QVariant RegisterTableModel::headerData(int section, Qt::Orientation orientation
                       "(PDU address + 1)")
                 .arg(digit);
         if (section == NameColumn)
-            return m_profile ? tr("Names from the profile %1").arg(m_profileName)
+            return hasProfile() ? tr("Names from the profile %1").arg(m_profileName)
                              : tr("No profile: no names");
         if (const int vi = valueIndexOf(section); vi >= 0)
-            return m_answer.isBits() ? QVariant()
+            return m_rows.isBits() ? QVariant()
                                      : QVariant(tr("%1\nRight-click to change the format").arg(describe(m_formats.at(vi))));
         if (section == scaledColumn())
             return tr("The profile's format, scale, offset and unit: value = raw \u00d7 scale + offset");
@@ -580,56 +486,10 @@ Qt::ItemFlags RegisterTableModel::flags(const QModelIndex &index) const
     Qt::ItemFlags f = Qt::ItemIsSelectable | Qt::ItemIsEnabled | Qt::ItemNeverHasChildren;
     if (isEditableCell(index.row(), index.column())) {
         f |= Qt::ItemIsEditable;
-        if (m_answer.isBits())
+        if (m_rows.isBits())
             f |= Qt::ItemIsUserCheckable;
     }
     return f;
-}
-
-std::optional<QList<quint16>> RegisterTableModel::wordsFromText(int row, int column, const QString &text,
-                                                                QString *error) const
-{
-    const QString trimmed = text.trimmed();
-    if (column == scaledColumn()) {
-        const TableEntry *entry = entryAt(row);
-        QString number = trimmed;
-        if (!entry->unit.isEmpty() && number.endsWith(entry->unit))
-            number = number.chopped(entry->unit.size()).trimmed();
-        if (entry->scale == 1 && entry->offset == 0) {
-            const RegisterValueResult v = RegisterValue::fromText(number, entry->format);
-            if (!v.ok) {
-                *error = entry->format.name() + QLatin1String(": ") + v.error;
-                return std::nullopt;
-            }
-            return v.value.registers();
-        }
-        bool ok = false;
-        const double value = QLocale::c().toDouble(number, &ok);
-        if (!ok) {
-            *error = tr("'%1' is not a number: the scaled value of %2 takes a decimal number")
-                         .arg(trimmed, entry->name);
-            return std::nullopt;
-        }
-        const RegisterValueResult v = ScaledValue{entry->format, entry->scale, entry->offset}.encode(value);
-        if (!v.ok) {
-            *error = tr("%1 %2 (raw = (value - %3) / %4): %5")
-                         .arg(entry->name, entry->format.name())
-                         .arg(entry->offset)
-                         .arg(entry->scale)
-                         .arg(v.error);
-            return std::nullopt;
-        }
-        return v.value.registers();
-    }
-    const RegisterFormat format = formatOfColumn(column);
-    // Spaces are characters in ASCII ("A " is 0x4120); elsewhere they only surround the number.
-    const RegisterValueResult v =
-        RegisterValue::fromText(format.type() == RegisterType::Ascii ? text : trimmed, format);
-    if (!v.ok) {
-        *error = format.name() + QLatin1String(": ") + v.error;
-        return std::nullopt;
-    }
-    return v.value.registers();
 }
 
 TableWriteResult RegisterTableModel::writeFor(const QModelIndex &index, const QString &text) const
@@ -639,38 +499,27 @@ TableWriteResult RegisterTableModel::writeFor(const QModelIndex &index, const QS
         return result;
     const int row = index.row();
     const int column = index.column();
-    if (!ModiconReference::isWritable(m_answer.table)) {
+    const ModbusTable table = m_rows.answer().table;
+    if (!ModiconReference::isWritable(table)) {
         result.error = tr("%1: %2 are read-only; only coils and holding registers can be written")
-                           .arg(rowWhere(row), fieldText(ModiconReference::tableName(m_answer.table)));
+                           .arg(RegisterWrite::where(m_rows, row), fieldText(ModiconReference::tableName(table)));
         return result;
     }
     if (!isEditableCell(row, column)) {
-        result.error = tr("%1: this cell cannot be written (edit a value's first register)").arg(rowWhere(row));
+        result.error = tr("%1: this cell cannot be written (edit a value's first register)").arg(RegisterWrite::where(m_rows, row));
         return result;
     }
-    if (m_answer.isBits()) {
-        const std::optional<bool> on = TableWrite::coilFromText(text);
-        if (!on) {
-            result.error = tr("%1: '%2' is not a coil value: expected 1 or 0 (on/off, true/false)")
-                               .arg(rowWhere(row), text.trimmed());
-            return result;
-        }
-        return TableWrite::coil(m_answer.address + row, *on, m_writeChoice);
-    }
-    QString error;
-    const std::optional<QList<quint16>> words = wordsFromText(row, column, text, &error);
-    if (!words) {
-        result.error = tr("%1, %2").arg(rowWhere(row), error);
-        return result;
-    }
-    result = TableWrite::registers(m_answer.address + row, *words, m_writeChoice);
-    return result;
+    if (m_rows.isBits())
+        return RegisterWrite::coil(m_rows, row, text, m_writeChoice);
+    if (column == scaledColumn())
+        return RegisterWrite::scaled(m_rows, row, text, m_writeChoice);
+    return RegisterWrite::value(m_rows, row, formatOfColumn(column), text, m_writeChoice);
 }
 
 bool RegisterTableModel::setData(const QModelIndex &index, const QVariant &value, int role)
 {
     QString text;
-    if (role == Qt::CheckStateRole && m_answer.isBits())
+    if (role == Qt::CheckStateRole && m_rows.isBits())
         text = value.toInt() == Qt::Checked ? QStringLiteral("1") : QStringLiteral("0");
     else if (role == Qt::EditRole)
         text = value.toString();

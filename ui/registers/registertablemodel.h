@@ -6,21 +6,20 @@
 #include "protocol/registerformat.h"
 #include "protocol/tablewrite.h"
 #include "profile/deviceprofile.h"
-#include "widevaluelayout.h"
+#include "profile/readanswerrows.h"
 
 #include <QtCore/QAbstractTableModel>
 #include <QtCore/QByteArray>
-#include <QtCore/QHash>
 #include <QtCore/QList>
 #include <QtCore/QString>
 #include <QtCore/QTimer>
 
-#include <optional>
 
 namespace mbscope {
 
 // The values of one table (coils, discrete inputs, input or holding registers) as the latest
-// read answer gave them: one row per PDU address. Columns:
+// read answer gave them: one row per PDU address, a thin adapter over the core's ReadAnswerRows,
+// which decodes; this model words it, marks changes and turns edits into writes. Columns:
 //   Address | Modicon reference | Name (from a profile) | one column per value format | Scaled
 // Each value column has its own RegisterFormat (u16, i16, hex, bin, ascii, 32/64-bit integers and
 // floats in the four orders). A value wider than one register stands on the row of its first
@@ -33,7 +32,7 @@ namespace mbscope {
 // until the next answer or until the highlight duration has passed.
 //
 // Editing a value in a writable table (coils, holding registers) never changes the model: it
-// builds the write request with the function the user chose (setWriteChoice) and emits
+// builds the write request (RegisterWrite) with the function the user chose (setWriteChoice) and emits
 // writeRequested; the next answer shows what the device made of it. Bad input is refused with
 // editRefused saying what and where.
 class RegisterTableModel : public QAbstractTableModel
@@ -67,7 +66,7 @@ public:
     void setAnswer(const ReadAnswer &answer);
     void clear();
     [[nodiscard]] bool hasAnswer() const { return m_hasAnswer; }
-    [[nodiscard]] const ReadAnswer &answer() const { return m_answer; }
+    [[nodiscard]] const ReadAnswer &answer() const { return m_rows.answer(); }
     [[nodiscard]] QString lastProblem() const { return m_lastProblem; }
 
     // Value columns, one format each (bit tables ignore them and show one value column).
@@ -89,7 +88,7 @@ public:
     void setProfile(const UnitProfile &unit, const QString &profileName);
     void clearProfile();
     [[nodiscard]] QString profileName() const { return m_profileName; }
-    [[nodiscard]] bool hasProfile() const { return m_profile.has_value(); }
+    [[nodiscard]] bool hasProfile() const { return m_rows.profile().has_value(); }
 
     void setWriteChoice(WriteChoice choice) { m_writeChoice = choice; }
     [[nodiscard]] WriteChoice writeChoice() const { return m_writeChoice; }
@@ -119,34 +118,26 @@ Q_SIGNALS:
     void layoutOfValuesChanged();
 
 private:
-    struct ValueCell;
-    enum class CellText : quint8 { None, Display, ToolTip };
-    [[nodiscard]] ValueCell valueCell(int row, int valueIndex, CellText wanted) const;
-    [[nodiscard]] const TableEntry *entryAt(int row) const;
-    // The values of a column of width registers, per row (cached until the rows or profile change).
-    [[nodiscard]] const QList<WideValueLayout::Value> &valueLayout(int width) const;
+    [[nodiscard]] RowValue valueAt(int row, int valueIndex) const;
+    [[nodiscard]] QString valueText(int row, const RowValue &value) const;
+    [[nodiscard]] QString valueToolTip(int row, const RowValue &value) const;
     [[nodiscard]] QString nameText(int row) const;
     [[nodiscard]] QString scaledText(int row) const;
-    [[nodiscard]] QString rowWhere(int row) const;
     [[nodiscard]] bool isChanged(int row, int column) const;
     [[nodiscard]] QVariant toolTip(int row, int column) const;
     [[nodiscard]] bool isEditableCell(int row, int column) const;
-    [[nodiscard]] std::optional<QList<quint16>> wordsFromText(int row, int column, const QString &text,
-                                                              QString *error) const;
     void refuse(const QString &message);
     void valueColumnsChanged();
 
-    ReadAnswer m_answer;
+    ReadAnswerRows m_rows; // the answer and the profile
     bool m_hasAnswer = false;
     QList<bool> m_changed;           // per row, from the latest answer
     QList<RegisterFormat> m_formats; // value columns
-    std::optional<UnitProfile> m_profile;
     QString m_profileName;
     WriteChoice m_writeChoice = WriteChoice::Automatic;
     QString m_lastProblem;
     int m_highlightMs = 3000;
     QTimer m_highlightTimer;
-    mutable QHash<int, QList<WideValueLayout::Value>> m_layouts; // by value width
 };
 
 } // namespace mbscope

@@ -1,7 +1,6 @@
 #include "sessioncontroller.h"
 
 #include "link/connectionbar.h"
-#include "compose/rawrequesteditor.h"
 #include "compose/requestcomposer.h"
 #include "compose/savedrequests.h"
 
@@ -10,28 +9,21 @@
 #include "session/sessionwriter.h"
 #include "transport/linkurl.h"
 
-#include <QtCore/QAbstractItemModel>
 #include <QtCore/QDir>
 #include <QtCore/QFileInfo>
 #include <QtCore/QSettings>
 #include <QtGui/QAction>
 #include <QtGui/QKeySequence>
-#include <QtWidgets/QComboBox>
 #include <QtWidgets/QFileDialog>
-#include <QtWidgets/QLineEdit>
 #include <QtWidgets/QMainWindow>
 #include <QtWidgets/QMenu>
 #include <QtWidgets/QMessageBox>
-#include <QtWidgets/QSpinBox>
 
 namespace mbscope {
 
 namespace {
 
 const QString kRecentKey = QStringLiteral("session/recent");
-
-// The poll interval and count a new composer has; a document without a poll gets them back.
-constexpr int kDefaultIntervalMs = 500;
 
 } // namespace
 
@@ -65,7 +57,10 @@ SessionController::SessionController(QMainWindow *window, ConnectionBar *bar, Re
     };
     m_clean = currentDocument();
     m_freshTarget = m_clean.target;
-    watchWidgets();
+    // Any change of what goes into the document re-checks the modified flag: comparing the
+    // document the panels make with the clean one is cheap and cannot miss a field.
+    connect(m_bar, &ConnectionBar::stateChanged, this, &SessionController::updateModified);
+    connect(m_composer, &RequestComposer::stateChanged, this, &SessionController::updateModified);
 }
 
 void SessionController::addMenuActions(QMenu *menu)
@@ -94,40 +89,21 @@ void SessionController::addMenuActions(QMenu *menu)
     saveAsAction->setShortcut(QKeySequence::SaveAs);
 }
 
-// Any edit of a field that goes into the document re-checks the modified flag: comparing the
-// document the widgets make with the clean one is cheap and cannot miss a field.
-void SessionController::watchWidgets()
-{
-    for (QLineEdit *edit : m_bar->findChildren<QLineEdit *>())
-        connect(edit, &QLineEdit::textChanged, this, &SessionController::updateModified);
-    for (QSpinBox *spin : m_bar->findChildren<QSpinBox *>())
-        connect(spin, &QSpinBox::valueChanged, this, &SessionController::updateModified);
-    for (QComboBox *combo : m_bar->findChildren<QComboBox *>())
-        connect(combo, &QComboBox::currentIndexChanged, this, &SessionController::updateModified);
-    connect(m_composer->rawEditor(), &RawRequestEditor::bytesChanged, this, &SessionController::updateModified);
-    connect(m_composer->intervalSpin(), &QSpinBox::valueChanged, this, &SessionController::updateModified);
-    connect(m_composer->countSpin(), &QSpinBox::valueChanged, this, &SessionController::updateModified);
-    QAbstractItemModel *saved = m_composer->rawEditor()->savedCombo()->model();
-    connect(saved, &QAbstractItemModel::rowsInserted, this, &SessionController::updateModified);
-    connect(saved, &QAbstractItemModel::rowsRemoved, this, &SessionController::updateModified);
-    connect(saved, &QAbstractItemModel::modelReset, this, &SessionController::updateModified);
-}
-
 SessionDocument SessionController::currentDocument() const
 {
     SessionDocument d = m_base;
-    d.target.url.clear();
-    if (const std::optional<LinkUrl> url = m_bar->url())
-        d.target.url = url->toString();
-    d.target.timeoutMs = m_bar->timeoutMs() > 0 ? m_bar->timeoutMs() : -1;
+    const ConnectionBar::State bar = m_bar->state();
+    d.target.url = bar.target ? bar.target->toString() : QString();
+    d.target.timeoutMs = bar.timeoutMs > 0 ? bar.timeoutMs : -1;
     d.requests.clear();
     d.poll.reset();
-    const QString current = m_composer->rawEditor()->text().trimmed();
+    const RequestComposer::State composer = m_composer->state();
+    const QString current = composer.requestText.trimmed();
     // The composer shows the opened document's polled request: unchanged, it keeps its name and
     // the poll its list.
     const SessionRequest *polled = basePolledRequest();
-    const bool samePolled = polled && HexText::parse(polled->hex).bytes == m_composer->rawEditor()->bytes();
-    if (!current.isEmpty() && m_composer->rawEditor()->isValid()) {
+    const bool samePolled = polled && HexText::parse(polled->hex).bytes == composer.request;
+    if (!current.isEmpty() && !composer.request.isEmpty()) {
         SessionRequest request;
         request.name = QString::fromLatin1(kComposerRequest);
         request.hex = current;
@@ -136,18 +112,18 @@ SessionDocument SessionController::currentDocument() const
         d.requests.append(request);
         // A poll "until stopped" has no end a document can hold (a saved poll ends): only the
         // interval and count of a counted poll are kept.
-        if (m_composer->countSpin()->value() > 0) {
+        if (composer.count > 0) {
             SessionPoll poll;
             if (samePolled)
                 poll = *m_base.poll;
             else
                 poll.requests = {request.name};
-            poll.intervalMs = m_composer->intervalSpin()->value();
-            poll.count = quint64(m_composer->countSpin()->value());
+            poll.intervalMs = composer.intervalMs;
+            poll.count = quint64(composer.count);
             d.poll = poll;
         }
     }
-    const QList<SavedRequest> savedList = m_composer->rawEditor()->savedRequests();
+    const QList<SavedRequest> &savedList = composer.savedRequests;
     auto savedNamed = [&savedList](const QString &name) -> const SavedRequest * {
         for (const SavedRequest &saved : savedList) {
             if (saved.name == name)
@@ -190,17 +166,17 @@ void SessionController::apply(const SessionDocument &document)
 {
     m_applying = true;
     if (!document.target.url.isEmpty()) {
-        if (std::optional<LinkUrl> url = LinkUrl::parse(document.target.url).url) {
-            if (url->responseTimeoutMs < 0 && document.target.timeoutMs > 0)
-                url->responseTimeoutMs = document.target.timeoutMs;
-            m_bar->setUrl(*url);
+        if (const std::optional<LinkUrl> url = LinkUrl::parse(document.target.url).url) {
+            m_bar->setState({url, document.target.timeoutMs});
             m_composer->setFraming(url->framing());
         }
     }
-    // The named requests join the composer's list (kept in QSettings for every window): a name
-    // the list has already takes the document's bytes.
-    QList<SavedRequest> saved = SavedRequests::load();
-    bool savedChanged = false;
+    // The named requests join the composer's list, merged into what QSettings holds now (another
+    // window may have added some since this one read it): a name the list has already takes the
+    // document's bytes.
+    RequestComposer::State composer;
+    composer.savedRequests = SavedRequests::load();
+    QList<SavedRequest> &saved = composer.savedRequests;
     for (const SessionRequest &request : document.requests) {
         if (request.name == QLatin1String(kComposerRequest) || request.kind != SessionRequest::Kind::Hex
             || request.complete)
@@ -209,23 +185,19 @@ void SessionController::apply(const SessionDocument &document)
         const auto it = std::find_if(saved.begin(), saved.end(), [&](const SavedRequest &s) { return s.name == entry.name; });
         if (it == saved.end())
             saved.append(entry);
-        else if (*it != entry)
-            *it = entry;
         else
-            continue;
-        savedChanged = true;
-    }
-    if (savedChanged) {
-        SavedRequests::store(saved);
-        m_composer->rawEditor()->reloadSavedRequests();
+            *it = entry;
     }
     const SessionRequest *current = document.request(QString::fromLatin1(kComposerRequest));
     if (!current && &document == &m_base)
         current = basePolledRequest();
-    m_composer->setRequestText(current ? current->hex : QString());
-    m_composer->showRawTab();
-    m_composer->intervalSpin()->setValue(document.poll ? int(document.poll->intervalMs) : kDefaultIntervalMs);
-    m_composer->countSpin()->setValue(document.poll ? int(document.poll->count) : 0);
+    composer.requestText = current ? current->hex : QString();
+    // A document without a poll gets a new composer's interval and count back.
+    if (document.poll) {
+        composer.intervalMs = int(document.poll->intervalMs);
+        composer.count = int(document.poll->count);
+    }
+    m_composer->setState(composer);
     m_applying = false;
 }
 

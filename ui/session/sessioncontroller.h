@@ -18,10 +18,10 @@ class ConnectionBar;
 class RequestComposer;
 
 // The window's session file: New, Open, Save, Save As and Open Recent. A session holds what the
-// widgets show (the connection bar's target and timeout, the composer's request, its poll
-// interval and count, the named requests); the document is made from the widgets when saved and
-// put back into them when opened. What the window does not show (the test plan, the profile, a
-// form request, the capture) is written back as it was read. Modified means the widgets differ from
+// panels show (the connection bar's target and timeout, the composer's request, its poll
+// interval and count, the named requests); the document is made from the panels' states
+// (ConnectionBar::State, RequestComposer::State) when saved and put back into them when opened. What the window does not show (the test plan, the profile, a
+// form request, the capture) is written back as it was read. Modified means the panels differ from
 // what was last saved or opened. Every question to the user (save changes? which file? what was
 // wrong in it?) goes through a replaceable function, so tests answer without a modal dialog.
 class SessionController : public QObject
@@ -62,7 +62,7 @@ public:
     using BeforeSave = std::function<void(SessionDocument &document, const QString &path)>;
     void setBeforeSave(BeforeSave beforeSave) { m_beforeSave = std::move(beforeSave); }
 
-    // Opens path: false (the problems reported, the widgets untouched) when it cannot be read.
+    // Opens path: false (the problems reported, the panels untouched) when it cannot be read.
     // Does not ask about unsaved changes: openWithPrompt does.
     bool open(const QString &path);
     bool openWithPrompt(const QString &path);
@@ -72,14 +72,13 @@ public:
     bool newSession();
     // Asks about unsaved changes; true when the caller may go on (saved, discarded, or none).
     bool maybeSave();
-    // What the widgets show now is the session's clean state (after the window set them up).
+    // What the panels show now is the session's clean state (after the window set them up).
     void markClean();
 
 Q_SIGNALS:
     void titleChanged(const QString &title);
 
 private:
-    void watchWidgets();
     void updateModified();
     void apply(const SessionDocument &document);
     // The opened document's first polled request, when it is exact bytes the composer can show.
