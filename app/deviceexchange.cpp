@@ -7,10 +7,12 @@
 
 namespace mbscope::app {
 
-QList<Transaction> exchange(const TargetSettings &target, const QList<PlannedRequest> &requests)
+QList<Transaction> exchange(const TargetSettings &target, const QList<PlannedRequest> &requests, TrafficLog *log)
 {
     TransactionEngine engine;
     engine.setTarget(target.url);
+    if (log)
+        engine.setTrafficLog(log);
     QList<Transaction> records;
     for (const PlannedRequest &r : requests) {
         std::optional<Transaction> t = engine.sendAndWait(r.item);
@@ -27,6 +29,8 @@ QList<Transaction> exchange(const TargetSettings &target, const QList<PlannedReq
         if (t->status == TransactionStatus::LinkError)
             break;
     }
+    if (log)
+        engine.setTrafficLog(nullptr); // the last frames reach the journal
     return records;
 }
 

@@ -4,13 +4,19 @@
 
 #include <QtCore/QList>
 
+namespace mbscope {
+class TrafficLog;
+}
+
 namespace mbscope::app {
 
 struct PlannedRequest;
 struct TargetSettings;
 
 // Sends requests one after the other through a TransactionEngine and waits for each record
-// (send, read and write). Stops after a link error: nothing more would reach the device.
-[[nodiscard]] QList<Transaction> exchange(const TargetSettings &target, const QList<PlannedRequest> &requests);
+// (send, read and write). Stops after a link error: nothing more would reach the device. Every
+// frame goes to log when there is one (--record).
+[[nodiscard]] QList<Transaction> exchange(const TargetSettings &target, const QList<PlannedRequest> &requests,
+                                          TrafficLog *log = nullptr);
 
 } // namespace mbscope::app

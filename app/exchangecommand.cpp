@@ -17,9 +17,11 @@ std::optional<int> parseExchangeCommand(const ExchangeCommandSpec &spec, const Q
     const TargetOptions targetOptions;
     const RequestOptions requestOptions(spec.requestGroups);
     const QCommandLineOption jsonOpt(QStringLiteral("json"), spec.jsonHelp);
+    const RecordOptions recordOptions;
     targetOptions.addTo(parser);
     requestOptions.addTo(parser);
     parser.addOption(jsonOpt);
+    recordOptions.addTo(parser);
     if (!parser.parse(arguments)) {
         err << "mbscope " << command << ": " << parser.errorText() << '\n';
         return ExitUsage;
@@ -34,7 +36,8 @@ std::optional<int> parseExchangeCommand(const ExchangeCommandSpec &spec, const Q
         return ExitUsage;
     }
     if (!targetOptions.read(parser, command, input.target, err)
-        || !requestOptions.read(parser, command, input.target, input.plan, err))
+        || !requestOptions.read(parser, command, input.target, input.plan, err)
+        || !recordOptions.read(parser, command, input.record, err))
         return ExitUsage;
     input.json = parser.isSet(jsonOpt);
     return std::nullopt;

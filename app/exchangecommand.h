@@ -1,5 +1,6 @@
 #pragma once
 
+#include "recordoptions.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
 
@@ -12,7 +13,8 @@ class QTextStream;
 
 namespace mbscope::app {
 
-// The front that the one-shot exchange commands (send, read, write) share: their options, --help,
+// The front that the one-shot exchange commands (send, read, write) share: their options (with
+// --record FILE and --force), --help,
 // no positional arguments, and the target and requests read from the options.
 struct ExchangeCommandSpec {
     const char *name = "";  // "send"
@@ -25,6 +27,7 @@ struct ExchangeCommandSpec {
 struct ExchangeCommandInput {
     TargetSettings target;
     RequestPlan plan;
+    RecordSettings record;
     bool json = false;
 };
 

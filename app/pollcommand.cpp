@@ -4,8 +4,13 @@
 #include "polloptions.h"
 #include "pollresults.h"
 #include "pollrunner.h"
+#include "polltranscript.h"
+#include "recordoptions.h"
+
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QCommandLineParser>
+#include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QTextStream>
 
@@ -56,8 +61,41 @@ int runPollOrSweep(const QStringList &arguments, bool sweep)
     if (!options.read(parser, config, err))
         return ExitUsage;
 
+    PollTranscript transcript(config.plan, config.target.url.framing(), out);
+    transcript.setPrintValues(config.printValues);
+    if (!config.csvPath.isEmpty()) {
+        QString error;
+        if (!transcript.openCsv(config.csvPath, &error)) {
+            err << "mbscope " << name << ": --csv: " << error << '\n';
+            return ExitUsage;
+        }
+    }
+    TrafficRecording recording;
+    TrafficMetadata metadata = clientMetadata(QString::fromLatin1(name), arguments, config.target, config.plan);
+    metadata.settings.insert(QStringLiteral("pipeline"), config.engine.pipelineDepth);
+    if (sweep) {
+        QJsonArray intervals;
+        for (qint64 ns : config.settings.intervalsNs)
+            intervals.append(double(ns) / 1e6);
+        metadata.settings.insert(QStringLiteral("intervals_ms"), intervals);
+    } else {
+        metadata.settings.insert(QStringLiteral("interval_ms"), double(config.settings.poll.intervalNs) / 1e6);
+    }
+    if (config.settings.poll.count > 0)
+        metadata.settings.insert(QStringLiteral("count"), double(config.settings.poll.count));
+    if (config.settings.poll.durationNs > 0)
+        metadata.settings.insert(QStringLiteral("duration_ms"), double(config.settings.poll.durationNs) / 1e6);
+    if (!openRecording(recording, config.record, metadata, QString::fromLatin1(name), err))
+        return ExitUsage;
+
     PollRunner runner(config.target, config.engine);
+    if (recording.isOpen())
+        runner.setTrafficLog(recording.log());
+    if (transcript.isActive())
+        runner.setTranscript(&transcript);
     const PollOutcome outcome = runner.run(config.settings, sweep);
+    transcript.close();
+    finishRecording(recording, err);
     const PollResults results(config, outcome);
     if (outcome.linkFailed) {
         err << "mbscope " << name << ": " << outcome.linkMessage << '\n';

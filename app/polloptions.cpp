@@ -50,6 +50,14 @@ PollOptions::PollOptions(bool sweep)
                   QStringLiteral("Draw the latency histogram into a PNG file (no display needed)."),
                   QStringLiteral("file.png"))
     , m_json(QStringLiteral("json"), QStringLiteral("Print the statistics as JSON."))
+    , m_print(QStringLiteral("print"),
+              QStringLiteral("Print as they come: values (one line per answer: time, request, status, latency and the values "
+                             "in the --format(s) given), before the statistics."),
+              QStringLiteral("what"))
+    , m_csv(QStringLiteral("csv"),
+            QStringLiteral("Write one CSV row per transaction as it happens: time, item, status, latency_ms, then the values "
+                           "(a column per --format)."),
+            QStringLiteral("file"))
 {
 }
 
@@ -59,6 +67,9 @@ void PollOptions::addTo(QCommandLineParser &parser) const
     m_requests.addTo(parser);
     parser.addOption(m_sweep ? m_intervals : m_interval);
     parser.addOptions({m_count, m_duration, m_pipeline, m_stats, m_histogram, m_json});
+    if (!m_sweep)
+        parser.addOptions({m_print, m_csv});
+    m_record.addTo(parser);
 }
 
 bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextStream &err) const
@@ -153,6 +164,32 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
     }
     out.stats = parser.isSet(m_stats);
     out.json = parser.isSet(m_json);
+    if (!m_sweep && parser.isSet(m_print)) {
+        for (const QString &what : parser.values(m_print)) {
+            if (what != QLatin1String("values")) {
+                err << prefix << "--print '" << what << "': expected values (each answer's values as it comes)\n";
+                return false;
+            }
+        }
+        if (out.json) {
+            err << prefix << "--print values writes text lines, --json one JSON document: give one of them (--csv FILE "
+                << "keeps every answer's values with --json)\n";
+            return false;
+        }
+        out.printValues = true;
+    }
+    if (!m_sweep && parser.isSet(m_csv)) {
+        const QString path = parser.value(m_csv);
+        const QFileInfo file(path);
+        if (path.isEmpty() || file.isDir() || !QFileInfo(file.absolutePath()).isDir()) {
+            err << prefix << "--csv '" << path << "': " << (path.isEmpty() || file.isDir() ? "not a file name" : "the folder does not exist")
+                << ": expected e.g. --csv poll.csv\n";
+            return false;
+        }
+        out.csvPath = path;
+    }
+    if (!m_record.read(parser, m_command, out.record, err))
+        return false;
 
     if (!m_requests.read(parser, m_command, out.target, out.plan, err))
         return false;

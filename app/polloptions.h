@@ -1,5 +1,6 @@
 #pragma once
 
+#include "recordoptions.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
 
@@ -23,13 +24,16 @@ struct PollConfig {
     bool stats = false;       // --stats: the detailed statistics
     bool json = false;
     QString histogramPath;    // --histogram FILE.png; empty: none
+    RecordSettings record;    // --record FILE [--force]
+    bool printValues = false; // poll --print values
+    QString csvPath;          // poll --csv FILE; empty: none
 };
 
 // The options poll and sweep share, and the one each has alone:
-//   poll:   --interval DURATION (default 1s; 0: back to back)
+//   poll:   --interval DURATION (default 1s; 0: back to back), --print values, --csv FILE
 //   sweep:  --intervals D1,D2,... (required)
 //   both:   --count N (cycles per interval) | --duration DURATION, --pipeline N, --stats,
-//           --histogram FILE.png, --json, the target options and the request options
+//           --histogram FILE.png, --json, --record FILE [--force], the target options and the request options
 //           (--hex ... | --function/--address/--quantity | --coils/--registers).
 class PollOptions
 {
@@ -52,6 +56,9 @@ private:
     QCommandLineOption m_stats;
     QCommandLineOption m_histogram;
     QCommandLineOption m_json;
+    QCommandLineOption m_print;
+    QCommandLineOption m_csv;
+    RecordOptions m_record;
 };
 
 } // namespace mbscope::app

@@ -2,6 +2,7 @@
 
 #include "time/duration.h"
 #include "interruptwatcher.h"
+#include "polltranscript.h"
 #include "transactionreport.h"
 
 #include "engine/transactionengine.h"
@@ -39,12 +40,17 @@ PollOutcome PollRunner::run(const SweepSettings &settings, bool sweep)
         finished = true;
         loop.quit();
     });
+    if (m_log)
+        m_engine->setTrafficLog(m_log);
     if (sweep)
         m_engine->startSweep(settings);
     else
         m_engine->startPoll(settings.poll);
     if (!finished)
         loop.exec();
+    // The engine's last batch of frames reaches the journal, and the log is the caller's again.
+    if (m_log)
+        m_engine->setTrafficLog(nullptr);
     m_line.clear();
     outcome.interrupted = m_interrupted;
     outcome.linkFailed = m_linkFailed;
@@ -54,6 +60,10 @@ PollOutcome PollRunner::run(const SweepSettings &settings, bool sweep)
 
 void PollRunner::onTransactions(const QList<Transaction> &transactions)
 {
+    if (m_transcript) {
+        m_line.clear();
+        m_transcript->add(transactions);
+    }
     for (const Transaction &t : transactions) {
         if (t.status == TransactionStatus::Late)
             continue;

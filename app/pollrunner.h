@@ -11,12 +11,15 @@
 #include <QtCore/QString>
 
 namespace mbscope {
+class TrafficLog;
 class TransactionEngine;
 struct EngineProgress;
 struct Transaction;
 }
 
 namespace mbscope::app {
+
+class PollTranscript;
 
 struct PollOutcome {
     PollReport report;
@@ -36,6 +39,11 @@ public:
     PollRunner(const TargetSettings &target, const EngineOptions &options, QObject *parent = nullptr);
     ~PollRunner() override;
 
+    // Every frame goes to log (--record), from the start of run() until it returns; every
+    // transaction to the transcript (--print values, --csv) as its batch arrives.
+    void setTrafficLog(TrafficLog *log) { m_log = log; }
+    void setTranscript(PollTranscript *transcript) { m_transcript = transcript; }
+
     // Blocks (running an event loop) until the poll or sweep ends.
     [[nodiscard]] PollOutcome run(const SweepSettings &settings, bool sweep);
 
@@ -45,6 +53,8 @@ private:
 
     TargetSettings m_target;
     TransactionEngine *m_engine;
+    TrafficLog *m_log = nullptr;
+    PollTranscript *m_transcript = nullptr;
     ProgressLine m_line;
     bool m_sweep = false;
     bool m_sawAnswer = false;

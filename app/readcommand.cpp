@@ -3,12 +3,15 @@
 #include "cli.h"
 #include "deviceexchange.h"
 #include "exchangecommand.h"
+#include "recordoptions.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
 #include "transactionreport.h"
 #include "valuetable.h"
 
 #include "protocol/adubuilder.h"
+
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QJsonDocument>
 #include <QtCore/QTextStream>
@@ -38,7 +41,11 @@ int runRead(const QStringList &arguments)
     const RequestPlan &plan = input.plan;
 
     const PlannedRequest &request = plan.requests.constFirst();
-    const QList<Transaction> records = exchange(target, plan.requests);
+    TrafficRecording recording;
+    if (!openRecording(recording, input.record, clientMetadata(QStringLiteral("read"), arguments, target, plan), QStringLiteral("read"), err))
+        return ExitUsage;
+    const QList<Transaction> records = exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr);
+    finishRecording(recording, err);
     const Transaction &t = records.constFirst();
     ValueTable values;
     if (t.status == TransactionStatus::Ok) {

@@ -4,12 +4,14 @@
 #include "cli.h"
 #include "time/duration.h"
 #include "interruptwatcher.h"
+#include "recordoptions.h"
 #include "replayserve.h"
 
 #include "protocol/hextext.h"
 #include "replay/replayrunner.h"
 #include "replay/replayscript.h"
 #include "session/sessionreader.h"
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QJsonDocument>
@@ -44,7 +46,7 @@ int runReplay(const QStringList &arguments)
     parser.setApplicationDescription(QStringLiteral(
         "Replays recorded Modbus traffic: a session document (its captured traffic), a traffic journal, or a pcap/pcapng "
         "capture (read as analyze reads it).\n"
-        "With a target (--target, default the session's): re-sends the recorded requests at the recorded pacing and "
+        "With a target (--target, default the session's, else the one a journal recorded): re-sends the recorded requests at the recorded pacing and "
         "compares each answer with the recorded one field by field (dissector keys, as a plan's expectations name them: "
         "modbus.register_value@0x007D), an exception against a normal answer, a missing answer; then the latency "
         "recorded and now (median, p95).\n"
@@ -52,6 +54,7 @@ int runReplay(const QStringList &arguments)
         "MBAP transaction id aside); a request recorded several times gets its answers in turn, cycling.\n"
         "Example: mbscope replay bench.mbscope.json --speed max\n"
         "Example: mbscope replay bench.mbscope.journal --serve rtu-tcp://127.0.0.1:4001\n"
+        "--record FILE journals what the replay sent and got (with --serve: what it served).\n"
         "Exit status: 0 every answer matched (or --serve stopped), 1 some differed, 2 usage error, unreadable source or link failure."));
     parser.addHelpOption();
     const CaptureInput input;
@@ -74,6 +77,8 @@ int runReplay(const QStringList &arguments)
                                          QStringLiteral("With --serve, stop after this long (default: until Ctrl-C)."), QStringLiteral("duration"));
     const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the result as JSON."));
     parser.addOptions({targetOpt, speedOpt, serveOpt, unrecordedOpt, durationOpt, jsonOpt});
+    const RecordOptions recordOptions;
+    recordOptions.addTo(parser);
     parser.addPositionalArgument(QStringLiteral("source"),
                                  QStringLiteral("A session document with a capture, a traffic journal, or a .pcap/.pcapng file."));
     if (!parser.parse(arguments)) {
@@ -110,6 +115,9 @@ int runReplay(const QStringList &arguments)
         err << "mbscope replay: --unrecorded '" << unrecorded << "': expected exception or ignore\n";
         return ExitUsage;
     }
+    RecordSettings record;
+    if (!recordOptions.read(parser, QStringLiteral("replay"), record, err))
+        return ExitUsage;
     qint64 durationMs = 0;
     if (parser.isSet(durationOpt)) {
         const DurationResult d = parseDuration(parser.value(durationOpt));
@@ -157,19 +165,42 @@ int runReplay(const QStringList &arguments)
         serve.speed = speed;
         serve.durationMs = durationMs;
         serve.json = parser.isSet(jsonOpt);
+        serve.record = record;
+        serve.arguments = arguments;
         return serveReplay(script, source, serve, out, err);
     }
 
-    const QString url = parser.isSet(targetOpt) ? parser.value(targetOpt) : sessionTarget.url;
+    // Without --target or a session's: the target the journal recorded (trafficmetadata.h).
+    TrafficMetadata recorded;
+    bool hasMetadata = false;
+    if (script.report().kind == ExchangeSourceReport::Kind::Journal && !script.report().journal.metadata.isEmpty()) {
+        QString metadataError;
+        hasMetadata = TrafficMetadata::fromJson(script.report().journal.metadata, &recorded, &metadataError);
+    }
+    QString url = parser.isSet(targetOpt) ? parser.value(targetOpt) : sessionTarget.url;
+    const bool recordedTarget = url.isEmpty() && hasMetadata && !recorded.target.isEmpty();
+    if (recordedTarget)
+        url = recorded.target;
     if (url.isEmpty()) {
-        err << "mbscope replay: no target: give --target URL"
-            << (path != source ? " or save one in the session (target.url)" : " (a capture or journal names none)")
-            << ", or --serve URL to be the device\n";
+        QString why;
+        if (path != source)
+            why = QStringLiteral(" or save one in the session (target.url)");
+        else if (script.report().kind == ExchangeSourceReport::Kind::Capture)
+            why = QStringLiteral(" (a capture names none)");
+        else if (hasMetadata && recorded.role == TrafficMetadata::Role::Server)
+            why = QStringLiteral(" (the journal recorded mbscope %1 serving %2: it names no device to replay to)")
+                      .arg(recorded.command, recorded.listen.join(QStringLiteral(", ")));
+        else
+            why = QStringLiteral(" (the journal records no target: it was written before journals carried one)");
+        err << "mbscope replay: no target: give --target URL" << why << ", or --serve URL to be the device\n";
         return ExitUsage;
     }
     const LinkUrl::Result parsed = LinkUrl::parse(url);
     if (!parsed.url) {
-        err << "mbscope replay: " << (parser.isSet(targetOpt) ? QStringLiteral("--target") : QStringLiteral("%1: target.url").arg(source))
+        err << "mbscope replay: "
+            << (parser.isSet(targetOpt) ? QStringLiteral("--target")
+                                        : recordedTarget ? QStringLiteral("%1: the recorded target").arg(source)
+                                                         : QStringLiteral("%1: target.url").arg(source))
             << ": " << parsed.error << '\n';
         return ExitUsage;
     }
@@ -186,17 +217,34 @@ int runReplay(const QStringList &arguments)
         timeoutMs = int(std::max<qint64>(1, options.timeoutNs / 1'000'000));
     else if (sessionTarget.timeoutMs > 0)
         timeoutMs = sessionTarget.timeoutMs;
+    else if (recordedTarget && recorded.settings.value(QStringLiteral("timeout_ms")).toInt() > 0)
+        timeoutMs = recorded.settings.value(QStringLiteral("timeout_ms")).toInt();
 
     const bool asJson = parser.isSet(jsonOpt);
+    if (recordedTarget && asJson)
+        err << "mbscope replay: no --target: replaying to " << parsed.url->toString() << ", the target " << source << " recorded\n";
     if (!asJson) {
-        out << "replaying " << script.size() << " recorded requests of " << source << " to " << parsed.url->toString() << ", "
+        out << "replaying " << script.size() << " recorded requests of " << source << " to " << parsed.url->toString()
+            << (recordedTarget ? " (the target the journal recorded; --target replays elsewhere)" : "") << ", "
             << (speed > 0 ? (speed == 1.0 ? QStringLiteral("at the recorded pacing") : QStringLiteral("%1 times faster").arg(speed))
                           : QStringLiteral("back to back"))
             << "\n\n";
         out.flush();
     }
+    TrafficRecording recording;
+    TrafficMetadata metadata = commandMetadata(QStringLiteral("replay"), arguments);
+    metadata.target = parsed.url->toString();
+    metadata.settings.insert(QStringLiteral("source"), source);
+    metadata.settings.insert(QStringLiteral("speed"), speed);
+    if (timeoutMs > 0)
+        metadata.settings.insert(QStringLiteral("timeout_ms"), timeoutMs);
+    metadata.settings.insert(QStringLiteral("requests"), double(script.size()));
+    if (!openRecording(recording, record, metadata, QStringLiteral("replay"), err))
+        return ExitUsage;
     ReplayRunner runner(script, *parsed.url, EngineOptions{}, timeoutMs);
     runner.setSpeed(speed);
+    if (recording.isOpen())
+        runner.setTrafficLog(recording.log());
     InterruptWatcher interrupt;
     QObject::connect(&interrupt, &InterruptWatcher::interrupted, &interrupt, [&runner] { runner.stop(); });
     QString linkProblem;
@@ -206,11 +254,14 @@ int runReplay(const QStringList &arguments)
             runner.stop();
         }
     });
+    if (recording.isOpen())
+        runner.setTrafficLog(nullptr);
     if (asJson)
         out << QJsonDocument(result.toJson(script)).toJson(QJsonDocument::Indented);
     else
         out << result.summary(script);
     out.flush();
+    finishRecording(recording, err);
     if (!linkProblem.isEmpty()) {
         err << "mbscope replay: " << linkProblem << '\n';
         return ExitLinkError;

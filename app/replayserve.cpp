@@ -6,6 +6,7 @@
 #include "replay/replayscript.h"
 #include "sim/simendpoint.h"
 #include "sim/simulator.h"
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QEventLoop>
 #include <QtCore/QJsonDocument>
@@ -30,6 +31,16 @@ int serveReplay(const ReplayScript &script, const QString &source, const ReplayS
         return ExitUsage;
     }
     const QString bound = endpoint->name();
+    TrafficRecording recording;
+    TrafficMetadata metadata = commandMetadata(QStringLiteral("replay"), options.arguments);
+    metadata.role = TrafficMetadata::Role::Server;
+    metadata.listen = {bound};
+    metadata.settings.insert(QStringLiteral("source"), source);
+    metadata.settings.insert(QStringLiteral("speed"), options.speed);
+    if (!openRecording(recording, options.record, metadata, QStringLiteral("replay"), err))
+        return ExitUsage;
+    if (recording.isOpen())
+        sim.setTrafficLog(recording.log());
     QStringList units;
     for (quint8 id : script.unitIds())
         units.append(QString::number(id));
@@ -59,6 +70,8 @@ int serveReplay(const ReplayScript &script, const QString &source, const ReplayS
     loop.exec();
     sim.closeAll();
     sim.setFaultHook({});
+    sim.setTrafficLog(nullptr);
+    finishRecording(recording, err);
 
     const ReplayResponder::Counters &c = responder.counters();
     if (options.json) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "recordoptions.h"
+
 #include "replay/replayresponder.h"
 
 #include <QtCore/QString>
@@ -20,6 +22,8 @@ struct ReplayServeOptions {
     double speed = 1.0; // recorded latency divided by it; 0: at once
     qint64 durationMs = 0;
     bool json = false;
+    RecordSettings record;  // --record: what was served
+    QStringList arguments;  // the command line, for the recording's metadata
 };
 int serveReplay(const ReplayScript &script, const QString &source, const ReplayServeOptions &options, QTextStream &out,
                 QTextStream &err);

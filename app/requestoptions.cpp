@@ -219,6 +219,19 @@ bool RequestOptions::readHex(const QCommandLineParser &parser, const TargetSetti
                                "they are is in the bytes");
         return false;
     }
+    // A poll prints the values of the answers to --hex reads too (--print values), so --format
+    // counts for them.
+    if (m_groups & Read) {
+        out.formats.clear();
+        for (const QString &name : parser.value(m_format).split(QLatin1Char(','))) {
+            const RegisterFormatResult f = RegisterFormat::parse(name);
+            if (!f.ok) {
+                error = QStringLiteral("--format: ") + f.error;
+                return false;
+            }
+            out.formats.append(f.format);
+        }
+    }
     const QStringList texts = parser.values(m_hex);
     if (!m_repeatHex && texts.size() > 1) {
         error = QStringLiteral("--hex is given %1 times: give the bytes once").arg(texts.size());

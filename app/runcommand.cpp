@@ -2,10 +2,13 @@
 
 #include "cli.h"
 #include "interruptwatcher.h"
+#include "recordoptions.h"
 
+#include "session/capturerecovery.h"
 #include "session/junitreport.h"
 #include "session/planrunner.h"
 #include "session/sessionreader.h"
+#include "traffic/trafficrecording.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QCommandLineParser>
@@ -65,6 +68,8 @@ int runRun(const QStringList &arguments)
         "repeats steps. Prints each step with pass or fail and why.\n"
         "Example: mbscope run docs/examples/rosrao-gamma.mbscope.json --target rtu-tcp://127.0.0.1:4001 --junit results.xml\n"
         "Ctrl-C stops the run: the steps left are reported skipped, and the JUnit file is still written.\n"
+        "--record FILE journals every frame of the run; --record-capture journals it into the file the session's "
+        "capture.journal names, beside the document, so that analyze, export and replay of the session read this run.\n"
         "Exit status: 0 every step passed, 1 a step failed (or the run was interrupted), 2 usage, document or link error."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("SESSION"), QStringLiteral("The session document holding the plan."));
@@ -75,7 +80,12 @@ int runRun(const QStringList &arguments)
     const QCommandLineOption junit(QStringLiteral("junit"), QStringLiteral("Write the results as JUnit XML to FILE (for CI)."),
                                    QStringLiteral("FILE"));
     const QCommandLineOption json(QStringLiteral("json"), QStringLiteral("Print the results as JSON instead of text."));
-    parser.addOptions({target, junit, json});
+    const QCommandLineOption recordCapture(QStringLiteral("record-capture"),
+                                           QStringLiteral("Journal the run into the session's capture (the file capture.journal "
+                                                          "names, beside the document); refused when it exists, unless --force."));
+    parser.addOptions({target, junit, json, recordCapture});
+    const RecordOptions recordOptions;
+    recordOptions.addTo(parser);
     if (!parser.parse(arguments)) {
         err << "mbscope run: " << parser.errorText() << '\n';
         return ExitUsage;
@@ -93,6 +103,16 @@ int runRun(const QStringList &arguments)
         return ExitUsage;
     }
     const QString path = positional.constFirst();
+    RecordSettings record;
+    if (parser.isSet(recordCapture)) {
+        if (parser.isSet(QStringLiteral("record"))) {
+            err << "mbscope run: --record FILE and --record-capture exclude each other: record into a file, or into the session's capture\n";
+            return ExitUsage;
+        }
+        record.overwrite = parser.isSet(QStringLiteral("force"));
+    } else if (!recordOptions.read(parser, QStringLiteral("run"), record, err)) {
+        return ExitUsage;
+    }
     const SessionLoadResult loaded = SessionReader::load(path);
     if (!loaded.ok()) {
         err << "mbscope run: cannot open the session (" << loaded.problems.size()
@@ -120,6 +140,39 @@ int runRun(const QStringList &arguments)
     SessionDocument named = document;
     if (named.name.isEmpty())
         named.name = QFileInfo(path).completeBaseName();
+    if (parser.isSet(recordCapture)) {
+        record.path = CaptureRecovery::journalPath(document, path);
+        if (record.path.isEmpty()) {
+            err << "mbscope run: --record-capture: " << path << " names no capture: add \"capture\": {\"journal\": \""
+                << QFileInfo(path).completeBaseName().section(QLatin1Char('.'), 0, 0) << ".mbscope.journal\"} to it, or give --record FILE\n";
+            return ExitUsage;
+        }
+        if (QFileInfo::exists(record.path) && !record.overwrite) {
+            err << "mbscope run: --record-capture: the session's capture " << record.path
+                << " exists: a journal is never overwritten (--force replaces it, --record FILE records elsewhere)\n";
+            return ExitUsage;
+        }
+    }
+    TrafficRecording recording;
+    TrafficMetadata metadata = commandMetadata(QStringLiteral("run"), arguments);
+    metadata.target = parsed.url->toString();
+    metadata.settings.insert(QStringLiteral("session"), QFileInfo(path).absoluteFilePath());
+    metadata.settings.insert(QStringLiteral("plan"), named.name);
+    for (const SessionRequest &request : document.requests) {
+        const SessionRequest::Bytes wire = request.wireBytes(*parsed.url, 1);
+        if (wire.ok())
+            metadata.requests.append(TrafficMetadataRequest{request.name, QString(), wire.bytes});
+    }
+    if (document.profile.kind == SessionProfile::Kind::Reference) {
+        metadata.profileName = document.profile.reference;
+        metadata.profileSource = QStringLiteral("session");
+    } else if (document.profile.kind == SessionProfile::Kind::Inline) {
+        metadata.profileName = document.profile.profile.value(QStringLiteral("name")).toString();
+        metadata.profileSource = QStringLiteral("session (inline)");
+    }
+    if (!openRecording(recording, record, metadata, QStringLiteral("run"), err))
+        return ExitUsage;
+
     const bool asJson = parser.isSet(json);
     if (!asJson) {
         out << "plan     " << named.name << " (" << path << "), " << countSteps(named.plan) << " steps\n"
@@ -127,6 +180,8 @@ int runRun(const QStringList &arguments)
         out.flush();
     }
     PlanRunner runner(named, *parsed.url, document.target);
+    if (recording.isOpen())
+        runner.setTrafficLog(recording.log());
     InterruptWatcher interrupt;
     QObject::connect(&interrupt, &InterruptWatcher::interrupted, &interrupt, [&runner] { runner.stop(); });
     const PlanResult result = runner.run([&](const StepResult &step) {
@@ -134,6 +189,9 @@ int runRun(const QStringList &arguments)
             printStep(out, step);
     });
 
+    if (recording.isOpen())
+        runner.setTrafficLog(nullptr);
+    finishRecording(recording, err);
     if (asJson) {
         out << QJsonDocument(result.toJson()).toJson(QJsonDocument::Indented);
     } else {

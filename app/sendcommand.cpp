@@ -3,9 +3,12 @@
 #include "cli.h"
 #include "deviceexchange.h"
 #include "exchangecommand.h"
+#include "recordoptions.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
 #include "transactionreport.h"
+
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QJsonDocument>
 #include <QtCore/QTextStream>
@@ -33,7 +36,11 @@ int runSend(const QStringList &arguments)
     const TargetSettings &target = input.target;
     const RequestPlan &plan = input.plan;
 
-    const QList<Transaction> records = exchange(target, plan.requests);
+    TrafficRecording recording;
+    if (!openRecording(recording, input.record, clientMetadata(QStringLiteral("send"), arguments, target, plan), QStringLiteral("send"), err))
+        return ExitUsage;
+    const QList<Transaction> records = exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr);
+    finishRecording(recording, err);
     const Transaction &t = records.constFirst();
     if (input.json) {
         QJsonObject o = TransactionReport::json(t, target.url);

@@ -3,13 +3,17 @@
 #include "time/duration.h"
 
 #include "faultswatcher.h"
+#include "recordoptions.h"
 #include "simulatesession.h"
 
 #include "profile/profileloader.h"
+#include "sim/simendpoint.h"
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QCoreApplication>
 #include <QtCore/QEventLoop>
+#include <QtCore/QFileInfo>
 #include <QtCore/QSocketNotifier>
 #include <QtCore/QTextStream>
 #include <QtCore/QTimer>
@@ -107,6 +111,8 @@ int runSimulate(const QStringList &arguments)
         "Serves a device profile as a Modbus server until Ctrl-C (or --duration), printing one line per request "
         "(or a summary every 10 s with --quiet) and a summary at the end.\n"
         "Profiles: a shipped one by name (see --list-profiles) or a JSON file (docs/profiles.md).\n"
+        "--record FILE journals every request and answer (both directions, with the fault rules that shaped each answer) "
+        "for analyze, export and replay.\n"
         "Exit status: 0 after a clean stop, 2 for unusable options (unknown profile, bad URL, port in use, bad faults file)."));
     parser.addHelpOption();
     const QCommandLineOption profileOption(QStringLiteral("profile"), QStringLiteral("Profile name or JSON file."),
@@ -119,9 +125,11 @@ int runSimulate(const QStringList &arguments)
     const QCommandLineOption faultsOption(QStringLiteral("faults"),
                                           QStringLiteral("Fault rules file ({\"seed\": N, \"rules\": [...]}); replaces the profile's rules, and is read again whenever it is saved while the simulator runs."),
                                           QStringLiteral("FILE"));
-    const QCommandLineOption logOption(QStringLiteral("log"),
-                                       QStringLiteral("Write every frame as a JSON line (t, direction, endpoint, peer, unit, hex, verdict)."),
-                                       QStringLiteral("FILE"));
+    // --log FILE wrote JSON lines nothing else read; --record FILE replaced it (a journal that
+    // analyze, export --jsonl and replay read). Kept hidden to say so.
+    QCommandLineOption logOption(QStringLiteral("log"), QStringLiteral("Replaced by --record."), QStringLiteral("FILE"));
+    logOption.setFlags(QCommandLineOption::HiddenFromHelp);
+    const RecordOptions recordOptions;
     const QCommandLineOption durationOption(QStringLiteral("duration"),
                                             QStringLiteral("Stop after this long (60s, 500ms, 2min, 1h; a bare number is milliseconds)."), QStringLiteral("TIME"));
     const QCommandLineOption quietOption(QStringLiteral("quiet"), QStringLiteral("A summary every 10 s instead of one line per request."));
@@ -129,7 +137,8 @@ int runSimulate(const QStringList &arguments)
                                         QStringLiteral("Seed of the value generators and fault rules (default: the profile's and faults file's)."),
                                         QStringLiteral("N"));
     const QCommandLineOption listOption(QStringLiteral("list-profiles"), QStringLiteral("List the shipped profiles and exit."));
-    parser.addOptions({profileOption, listenOption, faultsOption, logOption, durationOption, quietOption, seedOption, listOption});
+    parser.addOptions({profileOption, listenOption, faultsOption, durationOption, quietOption, seedOption, listOption, logOption});
+    recordOptions.addTo(parser);
     if (!parser.parse(arguments)) {
         err << "mbscope simulate: " << parser.errorText() << '\n';
         return kExitUsage;
@@ -146,6 +155,14 @@ int runSimulate(const QStringList &arguments)
         err << "mbscope simulate: unexpected argument '" << parser.positionalArguments().first() << "'\n";
         return kExitUsage;
     }
+    if (parser.isSet(logOption)) {
+        err << "mbscope simulate: --log was replaced by --record FILE: a traffic journal (analyze, export and replay read "
+            << "it; mbscope export FILE --jsonl OUT writes JSON lines)\n";
+        return kExitUsage;
+    }
+    RecordSettings record;
+    if (!recordOptions.read(parser, QStringLiteral("simulate"), record, err))
+        return kExitUsage;
     if (!parser.isSet(profileOption)) {
         err << "mbscope simulate: --profile NAME|FILE is required; shipped profiles: " << knownProfileNames() << '\n';
         return kExitUsage;
@@ -217,14 +234,24 @@ int runSimulate(const QStringList &arguments)
         err << "mbscope simulate: profile '" << profile.name << "': " << error << '\n';
         return kExitUsage;
     }
-    if (parser.isSet(logOption) && !session.openLog(parser.value(logOption), &error)) {
-        err << "mbscope simulate: " << error << '\n';
-        return kExitUsage;
-    }
     if (!session.listen(urls, &error)) {
         err << "mbscope simulate: " << error << '\n';
         return kExitUsage;
     }
+    TrafficRecording recording;
+    TrafficMetadata metadata = commandMetadata(QStringLiteral("simulate"), arguments);
+    metadata.role = TrafficMetadata::Role::Server;
+    for (SimEndpoint *endpoint : session.simulator().endpoints())
+        metadata.listen.append(endpoint->name());
+    metadata.profileName = profile.name;
+    metadata.profileSource = profile.source;
+    metadata.settings.insert(QStringLiteral("seed"), QString::number(profile.seed));
+    if (parser.isSet(faultsOption))
+        metadata.settings.insert(QStringLiteral("faults_file"), QFileInfo(parser.value(faultsOption)).absoluteFilePath());
+    if (!openRecording(recording, record, metadata, QStringLiteral("simulate"), err))
+        return kExitUsage;
+    if (recording.isOpen())
+        session.setTrafficLog(recording.log());
 
     out << "simulating " << profile.name << " (" << profile.source << ", seed " << profile.seed << ")\n";
     for (const QString &line : session.endpointDescriptions())
@@ -246,7 +273,9 @@ int runSimulate(const QStringList &arguments)
     session.start();
     loop.exec();
     session.stop();
+    session.setTrafficLog(nullptr);
     out << (interrupted ? "interrupted: " : "stopped: ") << session.summary() << Qt::endl;
+    finishRecording(recording, err);
     return kExitOk;
 }
 

@@ -6,12 +6,8 @@
 #include "sim/simendpoint.h"
 #include "sim/simexchange.h"
 #include "sim/simunit.h"
-#include "transport/monotonicclock.h"
 
 #include <QtCore/QDateTime>
-#include <QtCore/QJsonArray>
-#include <QtCore/QJsonDocument>
-#include <QtCore/QJsonObject>
 #include <QtCore/QRegularExpression>
 #include <QtCore/QTextStream>
 
@@ -20,11 +16,6 @@
 namespace mbscope::app {
 
 namespace {
-
-QString hexOf(const QByteArray &bytes)
-{
-    return QString::fromLatin1(bytes.toHex(' ').toUpper());
-}
 
 QString joinIds(const QList<quint8> &ids)
 {
@@ -98,19 +89,13 @@ bool SimulateSession::listen(const QStringList &urls, QString *error)
     return true;
 }
 
-bool SimulateSession::openLog(const QString &path, QString *error)
+void SimulateSession::setTrafficLog(TrafficLog *log)
 {
-    m_log.setFileName(path);
-    if (!m_log.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-        *error = QStringLiteral("cannot write the log '%1': %2").arg(path, m_log.errorString());
-        return false;
-    }
-    return true;
+    m_sim.setTrafficLog(log);
 }
 
 void SimulateSession::start()
 {
-    m_startNs = monotonicNowNs();
     m_elapsed.start();
     m_driver.start();
     if (m_options.quiet && m_options.summaryIntervalMs > 0)
@@ -122,8 +107,6 @@ void SimulateSession::stop()
     m_summaryTimer.stop();
     m_driver.stop();
     m_sim.closeAll();
-    if (m_log.isOpen())
-        m_log.close();
 }
 
 QStringList SimulateSession::endpointDescriptions() const
@@ -166,8 +149,6 @@ void SimulateSession::finish(const SimLogEntry &entry, const FaultPlan *plan)
     count(entry, plan);
     if (!m_options.quiet)
         printLine(entry, plan);
-    if (m_log.isOpen())
-        writeLog(entry, plan);
 }
 
 void SimulateSession::count(const SimLogEntry &entry, const FaultPlan *plan)
@@ -202,11 +183,6 @@ Framing SimulateSession::framingOf(const QString &endpoint) const
     return m_framings.value(endpoint, Framing::Tcp);
 }
 
-double SimulateSession::secondsSinceStart(qint64 ns) const
-{
-    return double(ns - m_startNs) / 1e9;
-}
-
 QString SimulateSession::verdictText(const SimLogEntry &entry, const FaultPlan *plan) const
 {
     using V = SimLogEntry::Verdict;
@@ -236,13 +212,6 @@ QString SimulateSession::verdictText(const SimLogEntry &entry, const FaultPlan *
     return text;
 }
 
-QString SimulateSession::logVerdict(const SimLogEntry &entry, const FaultPlan *plan) const
-{
-    if (plan && (plan->drop || plan->closeBefore))
-        return QStringLiteral("dropped_by_fault");
-    return QLatin1String(SimLogEntry::verdictName(entry.verdict));
-}
-
 void SimulateSession::printLine(const SimLogEntry &entry, const FaultPlan *plan)
 {
     const QString time = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss.zzz"));
@@ -260,53 +229,6 @@ void SimulateSession::printLine(const SimLogEntry &entry, const FaultPlan *plan)
     if (!what.isEmpty())
         m_out << "  " << what;
     m_out << "  " << verdictText(entry, plan) << Qt::endl;
-}
-
-void SimulateSession::writeLog(const SimLogEntry &entry, const FaultPlan *plan)
-{
-    if (entry.request.isEmpty() && entry.response.isEmpty())
-        return; // connection events are not frames
-    const QString verdict = logVerdict(entry, plan);
-    auto write = [this](const QJsonObject &object) {
-        m_log.write(QJsonDocument(object).toJson(QJsonDocument::Compact));
-        m_log.write("\n");
-    };
-    QJsonObject in;
-    in[QStringLiteral("t")] = secondsSinceStart(entry.tNs);
-    in[QStringLiteral("direction")] = QStringLiteral("in");
-    in[QStringLiteral("endpoint")] = entry.endpoint;
-    in[QStringLiteral("peer")] = entry.peer;
-    if (entry.unitId >= 0)
-        in[QStringLiteral("unit")] = entry.unitId;
-    in[QStringLiteral("hex")] = hexOf(entry.request);
-    in[QStringLiteral("verdict")] = verdict;
-    if (!entry.reason.isEmpty())
-        in[QStringLiteral("reason")] = entry.reason;
-    write(in);
-    if (entry.response.isEmpty() || (plan && (plan->drop || plan->closeBefore)))
-        return;
-    // What leaves: the plan's bytes (the answer as the faults changed it), at the planned time.
-    QByteArray sent = entry.response;
-    qint64 delayNs = 0;
-    if (plan) {
-        sent.clear();
-        for (const ResponseChunk &chunk : plan->chunks) {
-            sent += chunk.bytes;
-            delayNs += chunk.delayNs;
-        }
-    }
-    QJsonObject out;
-    out[QStringLiteral("t")] = secondsSinceStart(entry.tNs + delayNs);
-    out[QStringLiteral("direction")] = QStringLiteral("out");
-    out[QStringLiteral("endpoint")] = entry.endpoint;
-    out[QStringLiteral("peer")] = entry.peer;
-    if (entry.unitId >= 0)
-        out[QStringLiteral("unit")] = entry.unitId;
-    out[QStringLiteral("hex")] = hexOf(sent);
-    out[QStringLiteral("verdict")] = verdict;
-    if (plan && !plan->faults.isEmpty())
-        out[QStringLiteral("faults")] = QJsonArray::fromStringList(plan->faults);
-    write(out);
 }
 
 } // namespace mbscope::app

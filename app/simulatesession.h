@@ -9,7 +9,6 @@
 #include "sim/simulator.h"
 
 #include <QtCore/QElapsedTimer>
-#include <QtCore/QFile>
 #include <QtCore/QHash>
 #include <QtCore/QObject>
 #include <QtCore/QStringList>
@@ -19,11 +18,15 @@
 
 class QTextStream;
 
+namespace mbscope {
+class TrafficLog;
+}
+
 namespace mbscope::app {
 
 // What `mbscope simulate` runs: a Simulator with a profile's units and generators, a
 // FaultInjector as its fault hook, and the observers that print one line per request (or a
-// periodic summary) and write the JSON-lines traffic log.
+// periodic summary), and the traffic log that --record journals.
 //
 // Each request comes with the fault plan made for its answer (SimFaultPlanRecorder): its line
 // says "dropped by fault" or which faults changed the answer.
@@ -44,7 +47,9 @@ public:
     bool load(const DeviceProfile &profile, const std::optional<FaultRuleSet> &faults, QString *error);
     // Binds every URL; false with *error naming the URL at fault (and what to do about it).
     bool listen(const QStringList &urls, QString *error);
-    bool openLog(const QString &path, QString *error);
+    // Every frame in and out, and the fault plan of every answer, to log (simulate --record);
+    // nullptr stops.
+    void setTrafficLog(TrafficLog *log);
     void start();
     void stop();
 
@@ -71,11 +76,8 @@ private:
     void finish(const SimLogEntry &entry, const FaultPlan *plan);
     void count(const SimLogEntry &entry, const FaultPlan *plan);
     void printLine(const SimLogEntry &entry, const FaultPlan *plan);
-    void writeLog(const SimLogEntry &entry, const FaultPlan *plan);
     [[nodiscard]] QString verdictText(const SimLogEntry &entry, const FaultPlan *plan) const;
-    [[nodiscard]] QString logVerdict(const SimLogEntry &entry, const FaultPlan *plan) const;
     [[nodiscard]] Framing framingOf(const QString &endpoint) const;
-    [[nodiscard]] double secondsSinceStart(qint64 ns) const;
 
     QTextStream &m_out;
     Options m_options;
@@ -86,10 +88,8 @@ private:
     // The injector as the fault hook, each request paired with the plan made for its answer.
     SimFaultPlanRecorder m_recorder{&m_sim, &m_injector};
     QHash<QString, Framing> m_framings;
-    QFile m_log;
     QTimer m_summaryTimer;
     QElapsedTimer m_elapsed;
-    qint64 m_startNs = 0;
     Counts m_counts;
 };
 

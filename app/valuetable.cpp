@@ -67,6 +67,24 @@ ValueTable ValueTable::fromReadResponse(quint8 functionCode, int address, int qu
     return t;
 }
 
+QStringList ValueTable::valueTexts(RegisterFormat format) const
+{
+    QStringList texts;
+    for (qsizetype i = 0; i + format.registerCount() <= registers.size(); i += format.registerCount()) {
+        const auto v = valueAt(registers, i, format);
+        texts.append(v ? v->toText() : QString());
+    }
+    return texts;
+}
+
+QStringList ValueTable::bitTexts() const
+{
+    QStringList texts;
+    for (bool bit : bits)
+        texts.append(bit ? QStringLiteral("1") : QStringLiteral("0"));
+    return texts;
+}
+
 QString ValueTable::text() const
 {
     QList<QStringList> rows;

@@ -28,6 +28,11 @@ struct ValueTable {
                                                      const QByteArray &responsePdu,
                                                      const QList<RegisterFormat> &formats);
 
+    // The values one after the other, as poll --print values shows them: bits as 1/0; registers
+    // in the format, one value per registerCount() registers from the first.
+    [[nodiscard]] QStringList valueTexts(RegisterFormat format) const;
+    [[nodiscard]] QStringList bitTexts() const;
+
     // Aligned columns with a heading line.
     [[nodiscard]] QString text() const;
     // [{"address", "reference", "value"} for bits; {"address", "reference", "raw", "<format>": value...}

@@ -3,10 +3,13 @@
 #include "cli.h"
 #include "deviceexchange.h"
 #include "exchangecommand.h"
+#include "recordoptions.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
 #include "transactionreport.h"
 #include "valuetable.h"
+
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
@@ -37,7 +40,11 @@ int runWrite(const QStringList &arguments)
     const TargetSettings &target = input.target;
     const RequestPlan &plan = input.plan;
 
-    const QList<Transaction> records = exchange(target, plan.requests);
+    TrafficRecording recording;
+    if (!openRecording(recording, input.record, clientMetadata(QStringLiteral("write"), arguments, target, plan), QStringLiteral("write"), err))
+        return ExitUsage;
+    const QList<Transaction> records = exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr);
+    finishRecording(recording, err);
     int status = ExitOk;
     for (const Transaction &t : records)
         status = qMax(status, TransactionReport::exitStatus(t));

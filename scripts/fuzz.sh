@@ -35,12 +35,12 @@ cmake -S "$root" -B "$build" -G Ninja \
     -DCMAKE_CXX_FLAGS="$flags" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
     -DMBSCOPE_FUZZ=ON -DMBSCOPE_WERROR=OFF -DMBSCOPE_BUILD_UI=OFF -DMBSCOPE_BENCH=OFF >/dev/null
-cmake --build "$build" --target fuzz_dissector fuzz_framers fuzz_simserver fuzz_capture fuzz_session -j"$jobs"
+cmake --build "$build" --target fuzz_dissector fuzz_framers fuzz_simserver fuzz_capture fuzz_session fuzz_journal -j"$jobs"
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 status=0
-for name in dissector framers simserver capture session; do
+for name in dissector framers simserver capture session journal; do
     work=$build/tests/fuzz/corpus-$name
     mkdir -p "$work"
     log=$build/tests/fuzz/fuzz_$name.log

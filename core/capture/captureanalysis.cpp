@@ -1,9 +1,12 @@
 #include "captureanalysis.h"
 
+#include "traffic/trafficmetadata.h"
+
 #include "exchange/responsematcher.h"
 #include "protocol/functioncode.h"
 
 #include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
 
 namespace mbscope {
 
@@ -97,6 +100,11 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
         source.insert(QStringLiteral("batches"), double(report.journal.batches));
         source.insert(QStringLiteral("garbage_frames"), double(report.journalGarbage));
         source.insert(QStringLiteral("recovery"), report.journal.message);
+        source.insert(QStringLiteral("version"), double(report.journal.version));
+        source.insert(QStringLiteral("notes"), double(report.journal.notes));
+        // What the journal says it recorded (trafficmetadata.h), as written; null when it says nothing.
+        const QJsonDocument metadata = QJsonDocument::fromJson(report.journal.metadata);
+        source.insert(QStringLiteral("metadata"), metadata.isObject() ? QJsonValue(metadata.object()) : QJsonValue());
     }
     o.insert(QStringLiteral("source"), source);
     o.insert(QStringLiteral("span_ms"), double(m_lastNs - m_firstNs) / 1e6);
@@ -149,6 +157,16 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
     out += QStringLiteral(", %1 s of traffic)\n").arg(QString::number(double(m_lastNs - m_firstNs) / 1e9, 'f', 3));
     if (!report.error.isEmpty())
         out += padded(QStringLiteral("damaged")) + report.error + QStringLiteral("; everything before it is analysed\n");
+    if (report.kind == ExchangeSourceReport::Kind::Journal && !report.journal.metadata.isEmpty()) {
+        TrafficMetadata metadata;
+        QString problem;
+        if (TrafficMetadata::fromJson(report.journal.metadata, &metadata, &problem)) {
+            for (const QString &line : metadata.summaryLines())
+                out += line + QLatin1Char('\n');
+        } else {
+            out += padded(QStringLiteral("metadata")) + problem + QLatin1Char('\n');
+        }
+    }
 
     for (const CaptureConversation &c : report.conversations) {
         const ConversationCounts counts = c.id < m_conversations.size() ? m_conversations[c.id] : ConversationCounts{};

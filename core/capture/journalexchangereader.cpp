@@ -1,6 +1,7 @@
 #include "journalexchangereader.h"
 
 #include "exchange/responseverdict.h"
+#include "traffic/trafficmetadata.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QFile>
@@ -118,7 +119,17 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
             onConversation(result.conversations.back());
     }
 
-    result.recovery = TrafficJournalReader::read(path, [&](const TrafficEntry &e) {
+    // A server's journal (mbscope simulate, replay --serve) holds its requests In and its
+    // answers Out: read as its clients saw them, so that one pairing serves both.
+    TrafficMetadata metadata;
+    QString metadataError;
+    const bool server = !names.metadata.isEmpty() && TrafficMetadata::fromJson(names.metadata, &metadata, &metadataError)
+                        && metadata.role == TrafficMetadata::Role::Server;
+
+    result.recovery = TrafficJournalReader::read(path, [&](const TrafficEntry &entry) {
+        TrafficEntry e = entry;
+        if (server)
+            e.direction = e.direction == TrafficDirection::In ? TrafficDirection::Out : TrafficDirection::In;
         const QByteArray bytes = e.bytes.toByteArray();
         if (e.verdict == TrafficVerdict::Garbage) {
             ++result.garbageFrames;

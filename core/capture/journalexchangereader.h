@@ -21,6 +21,9 @@ namespace mbscope {
 // Times: the journal's monotonic ns turned into wall-clock ns through its header. A request is
 // stamped when it was written, an answer when its first byte was read (what the journal keeps),
 // so latencies from a journal can be a frame's transmission time shorter than the engine's.
+//
+// A server's journal (its metadata's role, trafficmetadata.h) is read as its clients saw it:
+// requests are what came in, answers what went out.
 class JournalExchangeReader
 {
 public:

@@ -28,6 +28,11 @@ ReplayRunner::ReplayRunner(const ReplayScript &script, const LinkUrl &target, co
     m_engine->setTarget(target, options);
 }
 
+void ReplayRunner::setTrafficLog(TrafficLog *log)
+{
+    m_engine->setTrafficLog(log);
+}
+
 ReplayRunner::~ReplayRunner() = default;
 
 QByteArray ReplayRunner::wireBytes(const ReplayScript &script, qsizetype index, Framing framing)

@@ -14,6 +14,7 @@ class QEventLoop;
 namespace mbscope {
 
 class ReplayScript;
+class TrafficLog;
 class TransactionEngine;
 
 // Re-sends a ReplayScript's requests to a live target through the TransactionEngine, one at a
@@ -38,6 +39,9 @@ public:
 
     // 1: recorded pacing; 10: ten times faster; 0: no waiting at all.
     void setSpeed(double speed) { m_speed = speed; }
+    // Every frame in and out goes to log (--record) until setTrafficLog(nullptr), which also
+    // writes the engine's last frames to the log's journal (TransactionEngine::setTrafficLog).
+    void setTrafficLog(TrafficLog *log);
     [[nodiscard]] ReplayResult run(const Observer &observer = {});
     // From a Ctrl-C handler's event: stops after the request in flight.
     void stop();

@@ -39,6 +39,11 @@ PlanRunner::PlanRunner(const SessionDocument &document, const LinkUrl &url, cons
     m_engine->setTarget(url, options);
 }
 
+void PlanRunner::setTrafficLog(TrafficLog *log)
+{
+    m_engine->setTrafficLog(log);
+}
+
 PlanRunner::~PlanRunner() = default;
 
 PlanResult PlanRunner::run(const StepObserver &observer)

@@ -13,6 +13,7 @@ class QEventLoop;
 
 namespace mbscope {
 
+class TrafficLog;
 class TransactionEngine;
 struct RequestItem;
 
@@ -32,6 +33,9 @@ public:
     PlanRunner(const PlanRunner &) = delete;
     PlanRunner &operator=(const PlanRunner &) = delete;
 
+    // Every frame in and out goes to log (--record) until setTrafficLog(nullptr), which also
+    // writes the engine's last frames to the log's journal (TransactionEngine::setTrafficLog).
+    void setTrafficLog(TrafficLog *log);
     [[nodiscard]] PlanResult run(const StepObserver &observer = {});
     // Ends the run early (Ctrl-C): a poll in progress stops, a wait ends, a send finishes; the
     // steps left are reported skipped and the result says it was interrupted. Call it from the

@@ -111,11 +111,11 @@ void SimConnection::drain()
         const StreamFrame &frame = frames.at(f++);
         const qint64 received = frame.lastByteNs != 0 ? frame.lastByteNs : monotonicNowNs();
         const FaultPlan plan = m_simulator->handleFrame(m_endpoint, frame.bytes, frame.status, m_peer, received);
-        m_responder.enqueue(plan, received, [this](const QByteArray &answer) {
+        m_responder.enqueue(plan, received, [this, id = plan.trafficId](const QByteArray &answer) {
             if (m_socket->state() != QAbstractSocket::ConnectedState)
                 return;
             m_socket->write(answer);
-            m_simulator->noteSent(m_endpoint, answer);
+            m_simulator->noteSent(m_endpoint, answer, id);
         });
     }
 }

@@ -64,11 +64,11 @@ void SimDatagramEndpoint::onReadyRead()
                              + QLatin1Char(':') + QString::number(port);
         // A datagram holds one whole frame (or it is malformed): no framer, no silence.
         const FaultPlan plan = simulator()->handleFrame(this, datagram.data(), FrameStatus::Valid, peer, received);
-        m_responder.enqueue(plan, received, [this, address, port](const QByteArray &answer) {
+        m_responder.enqueue(plan, received, [this, address, port, id = plan.trafficId](const QByteArray &answer) {
             if (!m_socket)
                 return;
             m_socket->writeDatagram(answer, address, port);
-            simulator()->noteSent(this, answer);
+            simulator()->noteSent(this, answer, id);
         });
     }
 }

@@ -120,11 +120,11 @@ void SimSerialEndpoint::drain()
         const StreamFrame &frame = frames.at(f++);
         const qint64 received = frame.lastByteNs != 0 ? frame.lastByteNs : monotonicNowNs();
         const FaultPlan plan = simulator()->handleFrame(this, frame.bytes, frame.status, device, received);
-        m_responder.enqueue(plan, received, [this](const QByteArray &answer) {
+        m_responder.enqueue(plan, received, [this, id = plan.trafficId](const QByteArray &answer) {
             if (!m_port || !m_port->isOpen())
                 return;
             m_port->write(answer);
-            simulator()->noteSent(this, answer);
+            simulator()->noteSent(this, answer, id);
         });
     }
 }

@@ -10,6 +10,10 @@
 #include "transport/linkurl.h"
 #include "transport/monotonicclock.h"
 
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
+
 namespace mbscope {
 
 namespace {
@@ -294,7 +298,8 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
     } else {
         plan.chunks.append(ResponseChunk{answer, delayNs});
     }
-    log(endpoint, peer, unitId, adu, answer, verdict, reply.note, plan.faults);
+    plan.trafficId = log(endpoint, peer, unitId, adu, answer, verdict, reply.note, plan.faults);
+    noteFaultPlan(endpoint, plan);
     return plan;
 }
 
@@ -318,10 +323,41 @@ void Simulator::noteConnection(SimEndpoint *endpoint, const QString &peer, SimLo
     log(endpoint, peer, -1, {}, {}, verdict, reason);
 }
 
-void Simulator::noteSent(SimEndpoint *endpoint, const QByteArray &bytes)
+void Simulator::noteSent(SimEndpoint *endpoint, const QByteArray &bytes, quint64 trafficId)
 {
-    if (m_trafficLog)
-        m_trafficLog->append(monotonicNowNs(), TrafficDirection::Out, trafficLink(endpoint), TrafficVerdict::Ok, 0, bytes);
+    if (!m_trafficLog)
+        return;
+    // An exception answer says so in its function code (V1.1b3, 7: code + 0x80).
+    const AduParts parts = AduBuilder::parse(bytes, endpoint->framing());
+    const bool exception = !parts.pdu.isEmpty() && (quint8(parts.pdu.at(0)) & 0x80) != 0;
+    m_trafficLog->append(monotonicNowNs(), TrafficDirection::Out, trafficLink(endpoint),
+                         exception ? TrafficVerdict::Exception : TrafficVerdict::Ok, trafficId, bytes);
+}
+
+void Simulator::noteFaultPlan(SimEndpoint *endpoint, const FaultPlan &plan)
+{
+    if (!m_trafficLog || plan.trafficId == 0)
+        return;
+    const bool silent = plan.drop || plan.closeBefore;
+    if (silent)
+        m_trafficLog->append(monotonicNowNs(), TrafficDirection::Out, trafficLink(endpoint), TrafficVerdict::Timeout,
+                             plan.trafficId, {});
+    if (plan.faults.isEmpty())
+        return;
+    QJsonObject note{{QStringLiteral("faults"), QJsonArray::fromStringList(plan.faults)}};
+    if (plan.drop)
+        note.insert(QStringLiteral("drop"), true);
+    if (plan.closeBefore || plan.closeAfter)
+        note.insert(QStringLiteral("close"), plan.closeBefore ? QStringLiteral("before") : QStringLiteral("after"));
+    if (!silent) {
+        qint64 delayNs = 0;
+        for (const ResponseChunk &chunk : plan.chunks)
+            delayNs += chunk.delayNs;
+        note.insert(QStringLiteral("chunks"), plan.chunks.size());
+        note.insert(QStringLiteral("delay_ms"), double(delayNs) / 1e6);
+    }
+    m_trafficLog->annotate(trafficLink(endpoint), plan.trafficId, monotonicNowNs(),
+                           QJsonDocument(note).toJson(QJsonDocument::Compact));
 }
 
 quint16 Simulator::trafficLink(const SimEndpoint *endpoint)
@@ -332,9 +368,9 @@ quint16 Simulator::trafficLink(const SimEndpoint *endpoint)
     return *it;
 }
 
-void Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
-                    const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
-                    const QStringList &faults)
+quint64 Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
+                       const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
+                       const QStringList &faults)
 {
     SimLogEntry entry;
     entry.tNs = monotonicNowNs();
@@ -346,9 +382,22 @@ void Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, QByt
     entry.verdict = verdict;
     entry.reason = reason;
     entry.faults = faults;
-    if (m_trafficLog && !request.isEmpty())
-        m_trafficLog->append(entry.tNs, TrafficDirection::In, trafficLink(endpoint), trafficVerdictOf(verdict), 0, request);
+    quint64 id = 0;
+    if (m_trafficLog && !request.isEmpty()) {
+        const TrafficVerdict traffic = trafficVerdictOf(verdict);
+        // Skipped bytes are not a request: no id, no outcome.
+        id = traffic == TrafficVerdict::Garbage ? 0 : ++m_lastTrafficId;
+        const quint16 link = trafficLink(endpoint);
+        m_trafficLog->append(entry.tNs, TrafficDirection::In, link, traffic, id, request);
+        // A request left unanswered: what its client saw, in the engine's way (an empty record).
+        if (id != 0 && response.isEmpty())
+            m_trafficLog->append(entry.tNs, TrafficDirection::Out, link,
+                                 verdict == SimLogEntry::Verdict::NoAnswer && unitId == 0 ? TrafficVerdict::Broadcast
+                                                                                         : TrafficVerdict::Timeout,
+                                 id, {});
+    }
     Q_EMIT logged(entry);
+    return id;
 }
 
 } // namespace mbscope

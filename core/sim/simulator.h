@@ -71,6 +71,11 @@ public:
     void setFaultHook(FaultHook hook) { m_faultHook = std::move(hook); }
     [[nodiscard]] bool hasFaultHook() const { return bool(m_faultHook); }
     // Frames in and out are appended to log (not owned; nullptr stops). Same thread only.
+    // Directions are the simulator's: a request comes In, its answer goes Out; each request
+    // gets a transaction id of its own (1, 2, 3...) that its answer's frames carry, an
+    // unanswered one an empty Out record (verdict Timeout, or Broadcast), and the fault plan
+    // that shaped an answer a note (TrafficLog::annotate): {"faults": [...], "drop": true,
+    // "close": "before"|"after", "chunks": N, "delay_ms": D}.
     void setTrafficLog(TrafficLog *log);
 
     // ---- The request path (used by the endpoints; public for tests and fuzzing) ----
@@ -84,7 +89,8 @@ public:
     // Connection events and bytes sent, for the logs.
     void noteConnection(SimEndpoint *endpoint, const QString &peer, SimLogEntry::Verdict verdict,
                         const QString &reason);
-    void noteSent(SimEndpoint *endpoint, const QByteArray &bytes);
+    // trafficId: FaultPlan::trafficId of the request answered (0: none).
+    void noteSent(SimEndpoint *endpoint, const QByteArray &bytes, quint64 trafficId = 0);
 
 Q_SIGNALS:
     // Every request, answer and connection event, as it happens.
@@ -96,9 +102,11 @@ private:
         std::unique_ptr<SimProcessor> processor;
     };
     [[nodiscard]] QList<Slot *> slotsOf(const SimEndpoint *endpoint);
-    void log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
-             const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
-             const QStringList &faults = {});
+    // Returns the traffic id the request was logged with (0: no traffic log, or no request).
+    quint64 log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
+                const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
+                const QStringList &faults = {});
+    void noteFaultPlan(SimEndpoint *endpoint, const FaultPlan &plan);
     [[nodiscard]] quint16 trafficLink(const SimEndpoint *endpoint);
 
     std::map<quint8, Slot> m_units;
@@ -106,6 +114,7 @@ private:
     FaultHook m_faultHook;
     TrafficLog *m_trafficLog = nullptr;
     QHash<const SimEndpoint *, quint16> m_trafficLinks;
+    quint64 m_lastTrafficId = 0;
 };
 
 } // namespace mbscope

@@ -20,12 +20,15 @@ namespace {
 
 constexpr char kFileMagic[8] = {'M', 'B', 'S', 'C', 'T', 'L', 'O', 'G'};
 constexpr char kBatchMagic[4] = {'B', 'T', 'C', 'H'};
-constexpr quint32 kVersion = 1;
+constexpr quint32 kVersion = 2;
+constexpr quint32 kOldestVersion = 1;
 constexpr std::size_t kFileHeaderSize = 40;
 constexpr std::size_t kBatchHeaderSize = 32;
 constexpr std::size_t kRecordHeaderSize = 28;
 constexpr quint8 kKindFrame = 1;
 constexpr quint8 kKindLink = 2;
+constexpr quint8 kKindMetadata = 3;
+constexpr quint8 kKindNote = 4;
 
 // CRC-32/ISO-HDLC, slicing by 8 (eight table lookups per 8 bytes): about 1-2 GB/s, so the
 // checksum of a batch costs a few ns per logged frame on the engine's thread.
@@ -89,6 +92,7 @@ bool TrafficJournalWriter::open(const QString &path, const Options &options, boo
     m_options = options;
     m_options.batchEntries = std::max(1, options.batchEntries);
     m_batches = m_frames = m_lost = 0;
+    m_transactions = m_batchTransactions = m_lastTransactionId = 0;
     m_bytes = 0;
     m_file.setFileName(path);
     QIODevice::OpenMode mode = QIODevice::WriteOnly | QIODevice::Unbuffered;
@@ -121,6 +125,22 @@ bool TrafficJournalWriter::open(const QString &path, const Options &options, boo
         m_capacity = wanted;
     }
     startBatch();
+    if (!options.metadata.isEmpty()) {
+        char *p = reserve(kRecordHeaderSize + std::size_t(options.metadata.size()));
+        std::memset(p, 0, kRecordHeaderSize);
+        p[0] = char(kKindMetadata);
+        qToLittleEndian<quint32>(quint32(options.metadata.size()), p + 8);
+        qToLittleEndian<qint64>(monotonicNowNs(), p + 12);
+        std::memcpy(p + kRecordHeaderSize, options.metadata.constData(), std::size_t(options.metadata.size()));
+        ++m_batchRecords;
+        flush();
+        if (!m_error.isEmpty()) {
+            if (error)
+                *error = m_error;
+            m_file.close();
+            return false;
+        }
+    }
     return true;
 }
 
@@ -170,6 +190,22 @@ void TrafficJournalWriter::addLink(quint16 link, QStringView name)
     ++m_batchRecords;
 }
 
+void TrafficJournalWriter::addNote(quint16 link, quint64 transactionId, qint64 tNs, QByteArrayView json)
+{
+    if (!m_file.isOpen() || !m_error.isEmpty())
+        return;
+    char *p = reserve(kRecordHeaderSize + std::size_t(json.size()));
+    std::memset(p, 0, kRecordHeaderSize);
+    p[0] = char(kKindNote);
+    qToLittleEndian<quint16>(link, p + 4);
+    qToLittleEndian<quint32>(quint32(json.size()), p + 8);
+    qToLittleEndian<qint64>(tNs, p + 12);
+    qToLittleEndian<quint64>(transactionId, p + 20);
+    if (!json.isEmpty())
+        std::memcpy(p + kRecordHeaderSize, json.data(), std::size_t(json.size()));
+    ++m_batchRecords;
+}
+
 void TrafficJournalWriter::addFrame(const TrafficEntry &entry)
 {
     if (!m_file.isOpen())
@@ -194,6 +230,10 @@ void TrafficJournalWriter::addFrame(const TrafficEntry &entry)
     if (m_batchFrames == 0) {
         m_batchFirstSequence = entry.sequence;
         m_batchFirstNs = entry.tNs;
+    }
+    if (entry.transactionId > m_lastTransactionId) {
+        m_lastTransactionId = entry.transactionId;
+        ++m_batchTransactions;
     }
     ++m_batchFrames;
     ++m_batchRecords;
@@ -229,6 +269,7 @@ void TrafficJournalWriter::flush()
         m_error = QStringLiteral("%1: write failed after %2 batches: %3")
                       .arg(m_file.fileName(), grouped(qint64(m_batches)), m_file.errorString());
         m_lost += m_batchFrames;
+        m_batchTransactions = 0;
         startBatch();
         return;
     }
@@ -238,6 +279,8 @@ void TrafficJournalWriter::flush()
 #endif
     m_bytes += written;
     m_frames += m_batchFrames;
+    m_transactions += m_batchTransactions;
+    m_batchTransactions = 0;
     ++m_batches;
     startBatch();
 }
@@ -250,7 +293,7 @@ TrafficJournalRecovery TrafficJournalReader::readAll(const QString &path, QList<
     });
 }
 
-TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sink &sink)
+TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sink &sink, const NoteSink &notes)
 {
     TrafficJournalRecovery r;
     QFile file(path);
@@ -284,16 +327,20 @@ TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sin
     }
     const auto version = readLe<quint32>(data + 8);
     const auto headerSize = readLe<quint32>(data + 12);
-    if (version != kVersion || headerSize < kFileHeaderSize || headerSize > size) {
-        r.message = QStringLiteral("%1: journal version %2 (header %3 bytes) is not one this mbscope reads (version %4)")
-                        .arg(path, QString::number(version), QString::number(headerSize), QString::number(kVersion));
+    if (version < kOldestVersion || version > kVersion || headerSize < kFileHeaderSize || headerSize > size) {
+        r.message = QStringLiteral("%1: journal version %2 (header %3 bytes) is not one this mbscope reads (versions %4 to %5)")
+                        .arg(path, QString::number(version), QString::number(headerSize), QString::number(kOldestVersion),
+                             QString::number(kVersion));
         return r;
     }
+    r.version = version;
+    const quint8 lastKind = version >= 2 ? kKindNote : kKindLink;
     r.wallClockMs = readLe<qint64>(data + 16);
     r.monotonicNs = readLe<qint64>(data + 24);
 
     std::size_t at = headerSize;
     quint64 nextSequence = 0;
+    bool sawFrames = false;
     QString trouble;
     r.ending = TrafficJournalRecovery::Ending::Clean;
     while (at < size) {
@@ -325,7 +372,7 @@ TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sin
                                QString::number(expectedCrc, 16).toUpper().rightJustified(8, QLatin1Char('0')));
             break;
         }
-        if (r.batches > 0 && firstSequence != nextSequence) {
+        if (sawFrames && frames > 0 && firstSequence != nextSequence) {
             r.ending = TrafficJournalRecovery::Ending::Corrupt;
             trouble = QStringLiteral("its first frame is number %1, %2 was next").arg(firstSequence).arg(nextSequence);
             break;
@@ -336,7 +383,7 @@ TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sin
         while (off + kRecordHeaderSize <= payload) {
             const std::size_t length = readLe<quint32>(p + off + 8);
             const auto kind = quint8(p[off]);
-            if ((kind != kKindFrame && kind != kKindLink) || length > payload - off - kRecordHeaderSize)
+            if (kind < kKindFrame || kind > lastKind || length > payload - off - kRecordHeaderSize)
                 break;
             seenFrames += kind == kKindFrame ? 1 : 0;
             ++seenRecords;
@@ -353,10 +400,19 @@ TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sin
             const char *rec = p + off;
             const std::size_t length = readLe<quint32>(rec + 8);
             const auto link = readLe<quint16>(rec + 4);
-            if (quint8(rec[0]) == kKindLink) {
+            const auto kind = quint8(rec[0]);
+            if (kind == kKindLink) {
                 while (r.links.size() <= link)
                     r.links.append(QString());
                 r.links[link] = QString::fromUtf8(rec + kRecordHeaderSize, qsizetype(length));
+            } else if (kind == kKindMetadata) {
+                if (r.metadata.isEmpty())
+                    r.metadata = QByteArray(rec + kRecordHeaderSize, qsizetype(length));
+            } else if (kind == kKindNote) {
+                ++r.notes;
+                if (notes)
+                    notes(TrafficJournalNote{link, readLe<quint64>(rec + 20), readLe<qint64>(rec + 12),
+                                             QByteArrayView(rec + kRecordHeaderSize, qsizetype(length))});
             } else if (sink) {
                 TrafficEntry e;
                 e.sequence = sequence;
@@ -368,11 +424,14 @@ TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sin
                 e.bytes = QByteArrayView(rec + kRecordHeaderSize, qsizetype(length));
                 sink(e);
             }
-            sequence += quint8(rec[0]) == kKindFrame ? 1 : 0;
+            sequence += kind == kKindFrame ? 1 : 0;
             off += kRecordHeaderSize + length;
         }
         r.frames += frames;
-        nextSequence = firstSequence + frames;
+        if (frames > 0) {
+            nextSequence = firstSequence + frames;
+            sawFrames = true;
+        }
         ++r.batches;
         at += kBatchHeaderSize + payload;
         r.goodBytes = qint64(at);

@@ -21,12 +21,13 @@ namespace mbscope {
 // a digit) is not, so text would need a checksum per line anyway. A length + CRC-32 per batch
 // makes recovery exact and costs one 28-byte header per frame and 32 bytes per batch.
 //
-// Format, version 1. All integers little-endian; CRC-32 is CRC-32/ISO-HDLC (zlib's crc32:
-// reflected polynomial 0xEDB88320, initial and final XOR 0xFFFFFFFF, check "123456789" = 0xCBF43926).
+// Format, version 2 (version 1 is read as well: it is version 2 without metadata and note
+// records). All integers little-endian; CRC-32 is CRC-32/ISO-HDLC (zlib's crc32: reflected
+// polynomial 0xEDB88320, initial and final XOR 0xFFFFFFFF, check "123456789" = 0xCBF43926).
 //
 //   file header, 40 bytes:
 //     0  8  magic "MBSCTLOG"
-//     8  4  version (1)
+//     8  4  version (2; 1 before metadata and notes)
 //    12  4  header size (40)
 //    16  8  wall clock when the journal was opened, ms since 1970-01-01 UTC
 //    24  8  monotonicNowNs() at the same moment: t_wall = wall + (tNs - monotonic) / 1e6
@@ -36,22 +37,29 @@ namespace mbscope {
 //     0  4  magic "BTCH"
 //     4  4  payload size in bytes
 //     8  4  frames in the batch
-//    12  4  records in the batch (frames + link names)
-//    16  8  sequence number of the batch's first frame (TrafficEntry::sequence)
+//    12  4  records in the batch (frames, link names, metadata, notes)
+//    16  8  sequence number of the batch's first frame (TrafficEntry::sequence); a batch
+//           without frames (0 frames) says 0 here and does not count in the sequence check
 //    24  4  CRC-32 of the payload
 //    28  4  CRC-32 of bytes 0-27 of this header
 //    32     payload: records back to back, each
-//              0  1  kind: 1 frame, 2 link name
+//              0  1  kind: 1 frame, 2 link name, 3 metadata (version 2), 4 note (version 2)
 //              1  1  direction (TrafficDirection)      } frames only,
-//              2  1  verdict (TrafficVerdict)          } 0 for link names
+//              2  1  verdict (TrafficVerdict)          } 0 for the other kinds
 //              3  1  reserved (0)
-//              4  2  link id
+//              4  2  link id (frames, link names, notes; 0 for metadata)
 //              6  2  reserved (0)
 //              8  4  length of the bytes that follow
 //             12  8  tNs (monotonic ns; 0 for link names)
-//             20  8  transaction id (0 for link names)
-//             28  n  the frame's bytes, or the link's name in UTF-8
+//             20  8  transaction id (frames and notes; 0 for link names and metadata)
+//             28  n  the frame's bytes, the link's name in UTF-8, or a JSON object in UTF-8
 //   A link name record comes before the first frame that uses its id.
+//   Metadata (version 2): the first batch of a journal opened with Options::metadata holds only
+//   the metadata record, and is written at once, so a journal killed before its first frame
+//   still says what it was recording: a JSON object (trafficmetadata.h: the command, target,
+//   profile, requests, version, host, start time). A reader keeps the first one.
+//   Note (version 2): a JSON object about the transaction with the record's id on the record's
+//   link, e.g. the simulator's fault rules that shaped an answer: {"faults": ["slow", ...]}.
 //
 // Each batch is written with one write(2) (QFile unbuffered) when it holds batchEntries frames or
 // its first frame is batchNs old, whichever comes first (or it reaches 256 MiB), and on close. That reaches the kernel's
@@ -64,6 +72,9 @@ public:
         int batchEntries = 1024;
         qint64 batchNs = 100'000'000; // 100 ms
         bool sync = false;
+        // A JSON object (UTF-8) written as the journal's first record, flushed at once; none
+        // when empty (the journal is then still version 2, without metadata).
+        QByteArray metadata;
     };
 
     TrafficJournalWriter();
@@ -79,6 +90,9 @@ public:
     [[nodiscard]] QString path() const { return m_file.fileName(); }
 
     void addLink(quint16 link, QStringView name);
+    // A note on a transaction (a JSON object in UTF-8): it goes into the pending batch, in order
+    // with the frames, and is not a frame (not counted, no sequence number).
+    void addNote(quint16 link, quint64 transactionId, qint64 tNs, QByteArrayView json);
     // Copies the entry into the pending batch (no system call, no allocation once the batch
     // buffer has grown to a batch's size); writes the batch when it is full or old enough.
     void addFrame(const TrafficEntry &entry);
@@ -91,6 +105,9 @@ public:
     [[nodiscard]] const QString &error() const { return m_error; }
     [[nodiscard]] quint64 batchesWritten() const { return m_batches; }
     [[nodiscard]] quint64 framesWritten() const { return m_frames; }
+    // Distinct transactions among the frames written: a frame whose transaction id is above
+    // every id before it starts one (retries share their id; late answers carry an old one).
+    [[nodiscard]] quint64 transactionsWritten() const { return m_transactions; }
     [[nodiscard]] quint64 framesLost() const { return m_lost; }
     [[nodiscard]] quint64 framesPending() const { return m_batchFrames; }
     [[nodiscard]] qint64 bytesWritten() const { return m_bytes; }
@@ -114,6 +131,9 @@ private:
     quint64 m_batches = 0;
     quint64 m_frames = 0;
     quint64 m_lost = 0;
+    quint64 m_transactions = 0;
+    quint64 m_batchTransactions = 0;
+    quint64 m_lastTransactionId = 0;
     qint64 m_bytes = 0;
     QString m_error;
 };
@@ -135,6 +155,9 @@ struct TrafficJournalRecovery {
     qint64 wallClockMs = 0; // from the header
     qint64 monotonicNs = 0;
     QStringList links;      // by link id; empty names for ids never named
+    quint32 version = 0;    // of the file's format (1 or 2)
+    QByteArray metadata;    // the first metadata record's JSON (UTF-8); empty when none
+    quint64 notes = 0;
     // "recovered 12,000 frames in 120 batches; the last batch was cut short at byte 480,123 and
     // is dropped (it began at byte 470,040)"
     QString message;
@@ -142,13 +165,23 @@ struct TrafficJournalRecovery {
     [[nodiscard]] bool isClean() const { return ending == Ending::Clean; }
 };
 
+// A note record as read: the transaction it is about and its JSON text.
+struct TrafficJournalNote {
+    quint16 link = 0;
+    quint64 transactionId = 0;
+    qint64 tNs = 0;
+    QByteArrayView json; // valid during the call only
+};
+
 class TrafficJournalReader
 {
 public:
     using Sink = std::function<void(const TrafficEntry &)>;
+    using NoteSink = std::function<void(const TrafficJournalNote &)>;
     // Reads every frame of every complete, checked batch, in order, into sink (which may be
-    // empty to only count). A batch is delivered only once all of it has been checked.
-    [[nodiscard]] static TrafficJournalRecovery read(const QString &path, const Sink &sink);
+    // empty to only count), and the notes into notes. A batch is delivered only once all of it
+    // has been checked.
+    [[nodiscard]] static TrafficJournalRecovery read(const QString &path, const Sink &sink, const NoteSink &notes = {});
     [[nodiscard]] static TrafficJournalRecovery readAll(const QString &path, QList<TrafficFrame> *frames);
 };
 

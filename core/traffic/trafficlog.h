@@ -64,6 +64,13 @@ public:
     [[nodiscard]] QString linkName(quint16 link) const;
     [[nodiscard]] const QStringList &links() const { return m_links; }
 
+    // A note on a transaction for the journal only (trafficjournal.h, record kind 4): nothing is
+    // kept in memory, and without a journal it goes nowhere.
+    void annotate(quint16 link, quint64 transactionId, qint64 tNs, QByteArrayView json)
+    {
+        m_journal.addNote(link, transactionId, tNs, json);
+    }
+
     // Logs one frame; returns its sequence number.
     quint64 append(qint64 tNs, TrafficDirection direction, quint16 link, TrafficVerdict verdict,
                    quint64 transactionId, QByteArrayView bytes);

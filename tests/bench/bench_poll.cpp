@@ -3,7 +3,9 @@
 // other:
 //   - a raw C socket loop (blocking send/recv of a fixed 12-byte request): the floor;
 //   - libmodbus's client (modbus_read_registers in a loop): the baseline the issue names;
-//   - mbscope's engine, sequential, with every frame logged to a traffic log (and once without);
+//   - mbscope's engine, sequential: every frame journaled to a file as `--record` does (row
+//     "logged"), logged in memory only ("memory"), and not logged at all ("unlogged"), so that
+//     what recording costs reads off one table;
 //   - mbscope's engine with N = 4 and 8 requests in flight (Messaging on TCP/IP V1.0b, 4.2).
 // Each prints transactions/s and latency percentiles; nothing is asserted (figures, not tests).
 // Latency is each client's own: the raw loop and libmodbus time from before send() to after the
@@ -37,7 +39,7 @@
 // during a busy second.
 //
 //   bench_poll [--count N] [--warmup N] [--quantity Q] [--cpu C | --no-pin] [--pipeline 4,8]
-//              [--server one|batch|both] [--rounds R] [--rows raw,libmodbus,logged,unlogged]
+//              [--server one|batch|both] [--rounds R] [--rows raw,libmodbus,logged,memory,unlogged]
 //
 // --rows picks the non-pipelined clients (default: all; --pipeline "" drops the pipelined ones),
 // to profile one alone, e.g. instructions per transaction of the engine's thread:
@@ -91,6 +93,7 @@ struct Options {
     bool raw = true;
     bool libmodbus = true;
     bool logged = true;
+    bool memory = true;
     bool unlogged = true;
 };
 
@@ -119,7 +122,7 @@ bool parse(const QStringList &args, Options *o)
             o->oneByOne = v != QLatin1String("batch");
             o->batch = v != QLatin1String("one");
         } else if (a == QLatin1String("--rows")) {
-            o->raw = o->libmodbus = o->logged = o->unlogged = false;
+            o->raw = o->libmodbus = o->logged = o->memory = o->unlogged = false;
             for (const QString &row : v.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
                 if (row == QLatin1String("raw"))
                     o->raw = true;
@@ -127,6 +130,8 @@ bool parse(const QStringList &args, Options *o)
                     o->libmodbus = true;
                 else if (row == QLatin1String("logged"))
                     o->logged = true;
+                else if (row == QLatin1String("memory"))
+                    o->memory = true;
                 else if (row == QLatin1String("unlogged"))
                     o->unlogged = true;
                 else
@@ -195,22 +200,25 @@ bool runTable(const Options &options, const QStringList &serverArgs, const char 
     const size_t libmodbusRow = clients.size();
     if (options.libmodbus)
         clients.emplace_back(pollLibmodbus);
-    auto engineRow = [](bool logTraffic, int depth) {
-        return [logTraffic, depth](const PollPlan &roundPlan) {
+    using Log = EnginePollSettings::Log;
+    auto engineRow = [](Log log, int depth) {
+        return [log, depth](const PollPlan &roundPlan) {
             EnginePollSettings engine;
             engine.plan = roundPlan;
-            engine.logTraffic = logTraffic;
+            engine.log = log;
             engine.pipelineDepth = depth;
             return pollEngine(engine);
         };
     };
     const size_t sequentialRow = clients.size();
     if (options.logged)
-        clients.emplace_back(engineRow(true, 1));
+        clients.emplace_back(engineRow(Log::Journal, 1));
+    if (unloggedRow && options.memory)
+        clients.emplace_back(engineRow(Log::Memory, 1));
     if (unloggedRow && options.unlogged)
-        clients.emplace_back(engineRow(false, 1));
+        clients.emplace_back(engineRow(Log::Off, 1));
     for (int depth : options.pipelines)
-        clients.emplace_back(engineRow(true, depth));
+        clients.emplace_back(engineRow(Log::Journal, depth));
 
     std::vector<PollFigures> rows(clients.size());
     PollPlan roundPlan = plan;
@@ -242,7 +250,7 @@ int main(int argc, char **argv)
         if (!parse(args, &options)) {
             std::fprintf(stderr, "usage: bench_poll [--count N] [--warmup N] [--quantity Q] [--cpu C | --no-pin] "
                                  "[--pipeline 4,8] [--server one|batch|both] [--rounds R] "
-                                 "[--rows raw,libmodbus,logged,unlogged]\n");
+                                 "[--rows raw,libmodbus,logged,memory,unlogged]\n");
             return 2;
         }
     }

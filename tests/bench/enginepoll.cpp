@@ -5,6 +5,7 @@
 #include "engine/engineoptions.h"
 #include "exchange/requestitem.h"
 #include "traffic/trafficlog.h"
+#include "traffic/trafficrecording.h"
 #include "engine/transactionengine.h"
 #include "protocol/adubuilder.h"
 #include "transport/linkurl.h"
@@ -55,24 +56,42 @@ PollFigures pollEngine(const EnginePollSettings &s)
     options.pipelineDepth = s.pipelineDepth;
     engine.setTarget(url, options);
     QTemporaryDir dir;
-    std::unique_ptr<TrafficLog> log;
-    if (s.logTraffic) {
-        log = std::make_unique<TrafficLog>();
+    std::unique_ptr<TrafficLog> memory;
+    std::unique_ptr<TrafficRecording> recording;
+    TrafficLog *log = nullptr;
+    if (s.log == EnginePollSettings::Log::Memory) {
+        memory = std::make_unique<TrafficLog>();
+        log = memory.get();
+    } else if (s.log == EnginePollSettings::Log::Journal) {
+        recording = std::make_unique<TrafficRecording>();
+        TrafficMetadata metadata = TrafficMetadata::forCommand(QStringLiteral("bench_poll"), {}, QStringLiteral("bench"));
+        metadata.target = url.toString();
+        metadata.requests = {TrafficMetadataRequest{item.name, {}, item.bytes}};
         QString error;
-        if (!dir.isValid() || !log->openJournal(dir.filePath(QStringLiteral("traffic.journal")), {}, false, &error)) {
+        if (!dir.isValid() || !recording->open(dir.filePath(QStringLiteral("traffic.mbscope.journal")), metadata, false, &error))
             f.note = QStringLiteral("no journal: ") + error;
-        }
-        engine.setTrafficLog(log.get());
+        log = recording->log();
     }
+    if (log)
+        engine.setTrafficLog(log);
     if (s.plan.warmup > 0)
         (void)runPoll(engine, item, s.plan.warmup);
+    // Bytes on disk per frame: what the measured poll added to the journal.
+    const qint64 bytesBefore = recording ? recording->bytes() : 0;
+    const quint64 framesBefore = recording ? recording->frames() + recording->log()->journal().framesPending() : 0;
     const std::optional<PollReport> report = runPoll(engine, item, s.plan.count);
-    if (log) {
+    if (log)
         engine.setTrafficLog(nullptr);
-        if (f.note.isEmpty())
-            f.note = QStringLiteral("traffic log on: %1 frames, %2 journaled").arg(log->appended()).arg(
-                log->journal().isOpen() ? QStringLiteral("all") : QStringLiteral("none"));
-        log->closeJournal();
+    if (recording) {
+        recording->close();
+        if (f.note.isEmpty()) {
+            const quint64 frames = recording->frames() - framesBefore;
+            f.note = QStringLiteral("journaled (--record): %1 frames, %2 B/frame on disk")
+                         .arg(frames)
+                         .arg(frames > 0 ? double(recording->bytes() - bytesBefore) / double(frames) : 0.0, 0, 'f', 1);
+        }
+    } else if (memory) {
+        f.note = QStringLiteral("logged in memory, no journal: %1 frames").arg(memory->appended());
     } else {
         f.note = QStringLiteral("traffic log off");
     }

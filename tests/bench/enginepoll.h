@@ -5,9 +5,13 @@
 namespace mbscope::bench {
 
 struct EnginePollSettings {
+    // Where every frame goes: nowhere; a TrafficLog in memory only (the window's log without a
+    // journal); a TrafficRecording journaling to a file, as a command's --record does (the
+    // metadata first, a small in-memory window, a batch write per 1,024 frames or 100 ms).
+    enum class Log { Off, Memory, Journal };
     PollPlan plan;
-    bool logTraffic = true; // every frame into a TrafficLog journaled to a file, as the CLI does
-    int pipelineDepth = 1;  // requests in flight (EngineOptions::pipelineDepth)
+    Log log = Log::Journal;
+    int pipelineDepth = 1; // requests in flight (EngineOptions::pipelineDepth)
 };
 
 // mbscope's TransactionEngine polling the same request back to back (interval 0) through a

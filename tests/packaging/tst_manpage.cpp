@@ -19,7 +19,7 @@ const QString kCommands = QStringLiteral("COMMANDS");
 // Sections that describe options shared by several commands; each command's section says which
 // of them it takes.
 const QStringList kSharedOptionSections{QStringLiteral("TARGET OPTIONS"), QStringLiteral("REQUEST OPTIONS"),
-                                        QStringLiteral("POLL OPTIONS")};
+                                        QStringLiteral("POLL OPTIONS"), QStringLiteral("RECORD OPTIONS")};
 
 bool isHelpOption(const QString &name)
 {

@@ -5,6 +5,8 @@
 #include "peerprocess.h"
 #include "simcli.h"
 
+#include "traffic/trafficjournal.h"
+
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QEventLoop>
 #include <QtCore/QFile>
@@ -12,6 +14,7 @@
 #include <QtCore/QJsonObject>
 #include <QtCore/QProcess>
 #include <QtCore/QRegularExpression>
+#include <QtCore/QSet>
 #include <QtCore/QStandardPaths>
 #include <QtCore/QTemporaryDir>
 #include <QtCore/QTimer>
@@ -25,6 +28,10 @@
 
 using namespace mbscope::testpeers;
 using namespace mbscope::simtest;
+using mbscope::TrafficDirection;
+using mbscope::TrafficEntry;
+using mbscope::TrafficJournalReader;
+using mbscope::TrafficJournalRecovery;
 
 namespace {
 
@@ -167,9 +174,9 @@ void tst_Simulate::pymodbus()
                       .arg(dir.filePath(QStringLiteral("server.pem")), dir.filePath(QStringLiteral("server.key")),
                            dir.filePath(QStringLiteral("ca.pem")));
     }
-    const QString logPath = dir.filePath(QStringLiteral("traffic.jsonl"));
+    const QString logPath = dir.filePath(QStringLiteral("traffic.mbscope.journal"));
     SimCli sim;
-    QVERIFY2(sim.start({QStringLiteral("--profile"), profile, QStringLiteral("--listen"), listen, QStringLiteral("--log"), logPath},
+    QVERIFY2(sim.start({QStringLiteral("--profile"), profile, QStringLiteral("--listen"), listen, QStringLiteral("--record"), logPath},
                        1, &why),
              qPrintable(why));
     QVERIFY2(sim.listening().first().startsWith(serial ? scheme + QStringLiteral("://") + pty.ourEnd()
@@ -191,22 +198,27 @@ void tst_Simulate::pymodbus()
     QVERIFY2(out.contains("exception 0"), out.constData());
     QVERIFY2(out.contains("interrupted: "), out.constData());
 
-    // The traffic log: one JSON object per frame, requests in and answers out, in pairs.
-    QFile log(logPath);
-    QVERIFY(log.open(QIODevice::ReadOnly));
+    // The recording (--record): requests in and answers out, in pairs, each answer carrying its
+    // request's transaction id; the endpoint named, the journal clean.
     int in = 0;
     int outFrames = 0;
-    for (const QByteArray &line : log.readAll().split('\n')) {
-        if (line.isEmpty())
-            continue;
-        const QJsonObject o = QJsonDocument::fromJson(line).object();
-        QVERIFY2(!o.isEmpty(), line.constData());
-        QVERIFY(o.contains(QStringLiteral("t")) && o.contains(QStringLiteral("peer")) && o.contains(QStringLiteral("verdict")));
-        QVERIFY(!o.value(QStringLiteral("hex")).toString().isEmpty());
-        (o.value(QStringLiteral("direction")).toString() == QLatin1String("in") ? in : outFrames)++;
-    }
+    bool paired = true;
+    QSet<quint64> requests;
+    const TrafficJournalRecovery journal = TrafficJournalReader::read(logPath, [&](const TrafficEntry &e) {
+        if (e.direction == TrafficDirection::In) {
+            ++in;
+            requests.insert(e.transactionId);
+        } else if (!e.bytes.isEmpty()) {
+            ++outFrames;
+            paired = paired && requests.contains(e.transactionId);
+        }
+    });
+    QVERIFY2(journal.isClean(), qPrintable(journal.message));
+    QCOMPARE(journal.links.size(), 1);
+    QVERIFY(journal.metadata.contains("\"role\":\"server\""));
     QVERIFY(in > 5);
     QCOMPARE(outFrames, in);
+    QVERIFY(paired);
 }
 
 void tst_Simulate::mbpollTcp()

@@ -1,0 +1,103 @@
+#include "recordoptions.h"
+
+#include "requestoptions.h"
+#include "targetoptions.h"
+
+#include "traffic/trafficrecording.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QDir>
+#include <QtCore/QFileInfo>
+#include <QtCore/QTextStream>
+
+namespace mbscope::app {
+
+RecordOptions::RecordOptions()
+    : m_record(QStringLiteral("record"),
+               QStringLiteral("Journal every frame sent and received to FILE, a crash-safe traffic journal that starts with "
+                              "this command, its target and requests (analyze, export and replay read it)."),
+               QStringLiteral("FILE"))
+    , m_force(QStringLiteral("force"), QStringLiteral("Let --record replace an existing file (a journal is evidence: kept "
+                                                      "unless this is given)."))
+{
+}
+
+void RecordOptions::addTo(QCommandLineParser &parser) const
+{
+    parser.addOptions({m_record, m_force});
+}
+
+bool RecordOptions::read(const QCommandLineParser &parser, const QString &command, RecordSettings &out, QTextStream &err) const
+{
+    const QString prefix = QStringLiteral("mbscope %1: ").arg(command);
+    out.overwrite = parser.isSet(m_force);
+    if (!parser.isSet(m_record)) {
+        if (out.overwrite) {
+            err << prefix << "--force applies to --record FILE: there is no journal to replace\n";
+            return false;
+        }
+        return true;
+    }
+    const QString path = parser.value(m_record);
+    const QFileInfo file(path);
+    // Said now, not after a 60 s poll.
+    if (path.isEmpty() || file.isDir()) {
+        err << prefix << "--record '" << path << "' is not a file name: expected e.g. --record poll.mbscope.journal\n";
+        return false;
+    }
+    if (file.exists() && !out.overwrite) {
+        err << prefix << "--record: " << QDir::toNativeSeparators(file.absoluteFilePath())
+            << " exists: a journal is never overwritten (give another name, or --force to replace it)\n";
+        return false;
+    }
+    if (!QFileInfo(file.absolutePath()).isDir()) {
+        err << prefix << "--record: cannot write " << QDir::toNativeSeparators(file.absoluteFilePath())
+            << ": the folder does not exist\n";
+        return false;
+    }
+    out.path = path;
+    return true;
+}
+
+TrafficMetadata commandMetadata(const QString &command, const QStringList &arguments)
+{
+    // The subcommand's arguments start with its name (QCommandLineParser's program name).
+    return TrafficMetadata::forCommand(command, arguments.mid(1), QStringLiteral(MBSCOPE_VERSION));
+}
+
+TrafficMetadata clientMetadata(const QString &command, const QStringList &arguments, const TargetSettings &target,
+                               const RequestPlan &plan)
+{
+    TrafficMetadata m = commandMetadata(command, arguments);
+    m.role = TrafficMetadata::Role::Client;
+    m.target = target.url.toString();
+    for (const PlannedRequest &r : plan.requests)
+        m.requests.append(TrafficMetadataRequest{r.item.name, r.description, r.item.bytes});
+    m.settings.insert(QStringLiteral("timeout_ms"), target.timeoutMs);
+    m.settings.insert(QStringLiteral("retries"), target.retries);
+    return m;
+}
+
+bool openRecording(TrafficRecording &recording, const RecordSettings &settings, const TrafficMetadata &metadata,
+                   const QString &command, QTextStream &err)
+{
+    if (!settings.isSet())
+        return true;
+    QString error;
+    if (!recording.open(settings.path, metadata, settings.overwrite, &error)) {
+        err << "mbscope " << command << ": --record: " << error << '\n';
+        return false;
+    }
+    return true;
+}
+
+void finishRecording(TrafficRecording &recording, QTextStream &err)
+{
+    if (!recording.isOpen())
+        return;
+    recording.close();
+    err << recording.summary() << '\n';
+    err.flush();
+}
+
+} // namespace mbscope::app
