@@ -1,5 +1,9 @@
 #include "rollingcapture.h"
 
+#include "trafficmetadata.h"
+
+#include <QtCore/QCoreApplication>
+
 #include <QtCore/QFile>
 #include <QtCore/QFileInfo>
 #include <QtCore/QMutexLocker>
@@ -46,7 +50,13 @@ bool RollingCapture::start(const QString &target, QString *error)
     const QString path = m_directory.newJournalPath(m_start, m_target, m_part);
     if (!CaptureDirectory::markOpen(path, error))
         return false;
-    if (!m_log.openJournal(path, {}, false, error)) {
+    // What the journal holds, for analyze and replay of it alone: the window, its target.
+    TrafficMetadata metadata = TrafficMetadata::forCommand(QStringLiteral("window"), QCoreApplication::arguments().mid(1),
+                                                           QCoreApplication::applicationVersion());
+    metadata.target = target;
+    TrafficJournalWriter::Options options;
+    options.metadata = metadata.toUtf8();
+    if (!m_log.openJournal(path, options, false, error)) {
         CaptureDirectory::markClosed(path);
         return false;
     }
