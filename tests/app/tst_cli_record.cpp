@@ -107,6 +107,7 @@ private slots:
     void killedPollRecovered();
     void simulateRecords();
     void exchangeCommandsRecord();
+    void runRecordsIntoTheSessionsCapture();
     void existingJournalRefused();
     void pollPrintsValuesAndCsv();
 
@@ -345,6 +346,35 @@ void TestCliRecord::exchangeCommandsRecord()
     QCOMPARE(metadata.value(QStringLiteral("command")).toString(), QStringLiteral("send"));
     QCOMPARE(metadata.value(QStringLiteral("requests")).toArray().at(0).toObject().value(QStringLiteral("hex")).toString(),
              QStringLiteral("00 01 00 00 00 06 01 03 00 79 00 02"));
+}
+
+void TestCliRecord::runRecordsIntoTheSessionsCapture()
+{
+    // A plan of one read, its session naming a capture beside it: run --record-capture fills it,
+    // a second run refuses to overwrite it, and analyze of the session reads the run.
+    const QString session = m_dir.filePath(QStringLiteral("plan.mbscope.json"));
+    QFile file(session);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "mbscope-session", "version": 1, "name": "one read",
+  "requests": [{"name": "settings", "function": 3, "unit": 1, "address": "0x0079", "quantity": 13}],
+  "capture": {"journal": "plan.mbscope.journal"},
+  "plan": [{"name": "read the settings", "send": "settings", "expect": {"fields": {"modbus.register_value@0x0079": 1050}}}]})");
+    file.close();
+    const QStringList run{QStringLiteral("run"), session, QStringLiteral("--target"), m_sim.url(), QStringLiteral("--record-capture")};
+    const CliResult first = runMbscope(run);
+    QVERIFY2(first.exitCode == 0, first.describe().constData());
+    const QString journal = m_dir.filePath(QStringLiteral("plan.mbscope.journal"));
+    QCOMPARE(recordedTransactions(first.err, journal), 1);
+    const CliResult again = runMbscope(run);
+    QCOMPARE(again.exitCode, 2);
+    QVERIFY2(again.errText().contains(QStringLiteral("exists: a journal is never overwritten")), again.describe().constData());
+    const CliResult a = runMbscope({QStringLiteral("analyze"), session, QStringLiteral("--json")});
+    QVERIFY2(a.exitCode == 0, a.describe().constData());
+    const QJsonObject metadata = a.json().value(QStringLiteral("source")).toObject().value(QStringLiteral("metadata")).toObject();
+    QCOMPARE(metadata.value(QStringLiteral("command")).toString(), QStringLiteral("run"));
+    QCOMPARE(metadata.value(QStringLiteral("requests")).toArray().at(0).toObject().value(QStringLiteral("name")).toString(),
+             QStringLiteral("settings"));
+    QCOMPARE(a.json().value(QStringLiteral("count")).toInt(), 1);
 }
 
 void TestCliRecord::existingJournalRefused()
