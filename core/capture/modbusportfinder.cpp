@@ -46,7 +46,7 @@ bool ModbusPortFinder::isRtuPayload(QByteArrayView payload)
 {
     if (payload.size() < 4 || payload.size() > 256 || !plausibleFunction(quint8(payload[1])))
         return false;
-    const quint16 crc = crc16Modbus(payload.first(payload.size() - 2));
+    const quint16 crc = checksum::crc16Modbus(payload.first(payload.size() - 2));
     return quint8(payload[payload.size() - 2]) == (crc & 0xff) && quint8(payload[payload.size() - 1]) == crc >> 8;
 }
 

@@ -314,7 +314,7 @@
         <translation>ASCII (serial)</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+43"/>
         <source>host name or IP address</source>
         <translation>nama host atau alamat IP</translation>
     </message>
@@ -396,12 +396,12 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+199"/>
+        <location line="+214"/>
         <source>&amp;Connect</source>
         <translation>Sa&amp;mbungkan</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location line="-211"/>
         <source>Disconnect</source>
         <translation>Putuskan</translation>
     </message>
@@ -476,7 +476,7 @@
         <translation>Target ini tidak bisa dipakai: %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+59"/>
         <source>Dis&amp;connect</source>
         <translation>&amp;Putuskan</translation>
     </message>
@@ -3591,17 +3591,18 @@
 <context>
     <name>mbscope::RegisterTableModel</name>
     <message>
-        <location filename="../../ui/registers/registertablemodel.cpp" line="+33"/>
+        <location filename="../../ui/registers/registertablemodel.cpp" line="+21"/>
         <source>%1, %2 (%3)</source>
         <translation>%1, %2 (%3)</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+22"/>
+        <location line="+20"/>
         <source>answer not shown: %1</source>
         <translation>jawaban tidak ditampilkan: %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-7"/>
         <source>answer not shown: the transaction ended with %1</source>
         <translation>jawaban tidak ditampilkan: transaksi berakhir dengan %1</translation>
     </message>
@@ -3611,22 +3612,7 @@
         <translation>jawaban tidak ditampilkan: transaksi berakhir dengan %1: %2</translation>
     </message>
     <message>
-        <location line="+220"/>
-        <source>register %1 (PDU address %2)</source>
-        <translation>register %1 (alamat PDU %2)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>coil %1 (PDU address %2)</source>
-        <translation>coil %1 (alamat PDU %2)</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>discrete input %1 (PDU address %2)</source>
-        <translation>discrete input %1 (alamat PDU %2)</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+192"/>
         <source>1  ON</source>
         <translation>1  ON</translation>
     </message>
@@ -3636,23 +3622,23 @@
         <translation>0  OFF</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+2"/>
         <source>↑ %1 from %2</source>
         <translation>↑ %1 dari %2</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+13"/>
         <source>Register %1 is register %2 of the %3 registers of the %4 value at %5</source>
         <translation>Register %1 adalah register ke-%2 dari %3 register nilai %4 di %5</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <location line="+63"/>
+        <location line="-11"/>
+        <location line="+65"/>
         <source>(%1 of %2 registers)</source>
         <translation>(%1 dari %2 register)</translation>
     </message>
     <message>
-        <location line="-61"/>
+        <location line="-47"/>
         <source>%1 needs %2 registers from %3; the answer begins %4 registers into it</source>
         <translation>%1 memerlukan %2 register mulai %3; jawaban baru dimulai %4 register di dalamnya</translation>
     </message>
@@ -3667,7 +3653,7 @@
         <translation>%1 memerlukan %2 register mulai %3; nilai berikutnya di profil dimulai setelah %4</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+13"/>
         <source>%1 registers %2-%3</source>
         <translation>%1 register %2-%3</translation>
     </message>
@@ -3679,12 +3665,12 @@
 %2, di jalur %3</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+8"/>
         <source> (register %1 of %2)</source>
         <translation> (register %1 dari %2)</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+54"/>
         <source>The profile names no value at this address</source>
         <translation>Profil tidak menamai nilai apa pun di alamat ini</translation>
     </message>
@@ -3751,17 +3737,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Format, skala, offset dan satuan dari profil: nilai = mentah × skala + offset</translation>
     </message>
     <message>
-        <location line="+38"/>
-        <source>&apos;%1&apos; is not a number: the scaled value of %2 takes a decimal number</source>
-        <translation>&apos;%1&apos; bukan angka: nilai berskala %2 harus berupa bilangan desimal</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1 %2 (raw = (value - %3) / %4): %5</source>
-        <translation>%1 %2 (mentah = (nilai - %3) / %4): %5</translation>
-    </message>
-    <message>
-        <location line="+28"/>
+        <location line="+27"/>
         <source>%1: %2 are read-only; only coils and holding registers can be written</source>
         <translation>%1: %2 hanya-baca; hanya coil dan holding register yang bisa ditulis</translation>
     </message>
@@ -3771,17 +3747,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1: sel ini tidak bisa ditulis (sunting register pertama suatu nilai)</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>%1: &apos;%2&apos; is not a coil value: expected 1 or 0 (on/off, true/false)</source>
-        <translation>%1: &apos;%2&apos; bukan nilai coil: seharusnya 1 atau 0 (on/off, true/false)</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>%1, %2</source>
-        <translation>%1, %2</translation>
-    </message>
-    <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>no cell to write</source>
         <translation>tidak ada sel untuk ditulis</translation>
     </message>
@@ -3913,6 +3879,45 @@ Klik kanan untuk mengganti format</translation>
         <location line="+8"/>
         <source>Not added: a %1 at PDU address %2 would go past the last address (65535)</source>
         <translation>Tidak ditambahkan: %1 di alamat PDU %2 akan melewati alamat terakhir (65535)</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::RegisterWrite</name>
+    <message>
+        <location filename="../../ui/registers/registerwrite.cpp" line="+25"/>
+        <source>%1: &apos;%2&apos; is not a coil value: expected 1 or 0 (on/off, true/false)</source>
+        <translation>%1: &apos;%2&apos; bukan nilai coil: seharusnya 1 atau 0 (on/off, true/false)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+35"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="-12"/>
+        <source>&apos;%1&apos; is not a number: the scaled value of %2 takes a decimal number</source>
+        <translation>&apos;%1&apos; bukan angka: nilai berskala %2 harus berupa bilangan desimal</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 %2 (raw = (value - %3) / %4): %5</source>
+        <translation>%1 %2 (mentah = (nilai - %3) / %4): %5</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>register %1 (PDU address %2)</source>
+        <translation>register %1 (alamat PDU %2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>coil %1 (PDU address %2)</source>
+        <translation>coil %1 (alamat PDU %2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>discrete input %1 (PDU address %2)</source>
+        <translation>discrete input %1 (alamat PDU %2)</translation>
     </message>
 </context>
 <context>
@@ -4272,7 +4277,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RequestComposer</name>
     <message>
-        <location filename="../../ui/compose/requestcomposer.cpp" line="+36"/>
+        <location filename="../../ui/compose/requestcomposer.cpp" line="+38"/>
         <source>&amp;Raw</source>
         <translation>&amp;Mentah</translation>
     </message>
@@ -4296,13 +4301,13 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="-9"/>
         <location line="+35"/>
-        <location line="+108"/>
+        <location line="+139"/>
         <location line="+1"/>
         <source>Start &amp;poll</source>
         <translation>Mulai &amp;polling</translation>
     </message>
     <message>
-        <location line="-130"/>
+        <location line="-161"/>
         <source>&amp;Send  (Ctrl+Return)</source>
         <translation>&amp;Kirim  (Ctrl+Return)</translation>
     </message>
@@ -4352,7 +4357,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Jumlah</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+126"/>
         <location line="+1"/>
         <source>Stop &amp;poll</source>
         <translation>Hentikan &amp;polling</translation>
@@ -4608,7 +4613,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SessionController</name>
     <message>
-        <location filename="../../ui/session/sessioncontroller.cpp" line="+46"/>
+        <location filename="../../ui/session/sessioncontroller.cpp" line="+38"/>
         <source>Unsaved changes</source>
         <translation>Perubahan belum disimpan</translation>
     </message>
@@ -4643,7 +4648,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Buka sesi</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>&amp;New session</source>
         <translation>Sesi ba&amp;ru</translation>
     </message>
@@ -4668,7 +4673,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Simpan sesi seb&amp;agai…</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+129"/>
         <source>line %1, column %2: %3</source>
         <translation>baris %1, kolom %2: %3</translation>
     </message>

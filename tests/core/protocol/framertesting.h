@@ -30,6 +30,7 @@ inline const char *reasonToken(mbscope::SkipReason reason)
     case SkipReason::Abandoned: return "abandoned";
     case SkipReason::TooLong: return "toolong";
     case SkipReason::Incomplete: return "incomplete";
+    case SkipReason::AfterGap: return "aftergap";
     }
     return "?";
 }
