@@ -86,6 +86,7 @@ void EngineCore::setTarget(const LinkUrl &url, const EngineOptions &options)
     m_verdict = std::make_unique<ResponseVerdict>(m_framing.framing, m_framing.delimited);
     m_stamps.clear();
     m_router.reset(m_framing, options.lateWindow);
+    updateBroadcastWait();
     m_recorder->setBatchInterval(options.batchIntervalMs);
     m_recorder->setLink(m_url.toString());
 }
@@ -195,11 +196,10 @@ void EngineCore::writeStaged()
     m_recorder->scheduleBatch();
 }
 
-qint64 EngineCore::broadcastWaitNs() const
+void EngineCore::updateBroadcastWait()
 {
-    // Serial Line V1.02, 2.4.1.
     const qint64 linkTurnaround = m_link ? m_link->turnaroundNs() : 0;
-    return linkTurnaround > 0 ? linkTurnaround : qint64(m_options.broadcastTurnaroundMs) * 1000000;
+    m_broadcastWaitNs = linkTurnaround > 0 ? linkTurnaround : qint64(m_options.broadcastTurnaroundMs) * 1000000;
 }
 
 void EngineCore::onBytesWritten(qint64 lastByteNs)

@@ -101,8 +101,10 @@ private:
     void finish(qsizetype index, TransactionStatus status, const QString &problem,
                 const QByteArray &response = {}, qint64 firstNs = 0, qint64 lastNs = 0, quint8 exceptionCode = 0);
     void record(Transaction transaction, quint64 tag);
-    // The wait after a broadcast: the link's RS485 turnaround when its URL gives one, else the engine's.
-    [[nodiscard]] qint64 broadcastWaitNs() const;
+    // The wait after a broadcast: the link's RS485 turnaround when its URL gives one, else the
+    // engine's (Serial Line V1.02, 2.4.1). Worked out once per link, not per request.
+    [[nodiscard]] qint64 broadcastWaitNs() const { return m_broadcastWaitNs; }
+    void updateBroadcastWait();
 
     // LinkReceiver: the link calls these directly (links that emit signals reach the same slots).
     void linkBytesReceived(const QByteArray &bytes, qint64 firstNs, qint64 lastNs) override { onBytesReceived(bytes, firstNs, lastNs); }
@@ -127,6 +129,7 @@ private:
     LinkFactory m_factory;
     Link *m_link = nullptr;
     bool m_opening = false;
+    qint64 m_broadcastWaitNs = 0;
     std::unique_ptr<StreamFramer> m_framer;
     std::unique_ptr<ResponseVerdict> m_verdict;
     ChunkStamps m_stamps;

@@ -29,6 +29,7 @@ void EngineCore::ensureLink()
             return;
         }
         m_link->setReceiver(this);
+        updateBroadcastWait();
         connect(m_link, &Link::opened, this, &EngineCore::onOpened);
         connect(m_link, &Link::closed, this, &EngineCore::onClosed);
         connect(m_link, &Link::errorOccurred, this, &EngineCore::onLinkError);

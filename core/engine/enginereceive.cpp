@@ -143,7 +143,7 @@ void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 la
         m_recorder->logIncoming(frame.bytes, firstNs, TrafficVerdict::Garbage);
         return;
     }
-    ResponseRouter::Route route = m_router.route(m_router.keysOf(frame.bytes), firstNs, m_scheduler.inFlight());
+    const ResponseRouter::Route route = m_router.route(m_router.keysOf(frame.bytes), firstNs, m_scheduler.inFlight());
     using Kind = ResponseRouter::Route::Kind;
     switch (route.kind) {
     case Kind::Answer:
@@ -151,10 +151,10 @@ void EngineCore::handleFrame(const StreamFrame &frame, qint64 firstNs, qint64 la
         return;
     case Kind::Unexpected:
         m_recorder->logIncoming(frame.bytes, firstNs, TrafficVerdict::Unexpected, m_scheduler.inFlight().at(route.index).out.id);
-        finish(route.index, TransactionStatus::Unexpected, route.problem, frame.bytes, firstNs, lastNs);
+        finish(route.index, TransactionStatus::Unexpected, m_router.problem(), frame.bytes, firstNs, lastNs);
         return;
     case Kind::Late:
-        recordLate(std::move(route.late), frame, firstNs, lastNs);
+        recordLate(m_router.takeLate(), frame, firstNs, lastNs);
         return;
     case Kind::Duplicate:
         ++m_counters.duplicateFrames;

@@ -51,28 +51,29 @@ ResponseRouter::Route ResponseRouter::route(const FrameKeys &keys, qint64 firstN
         return unmatched(keys, firstNs);
 
     const InFlightRequest &p = inFlight.at(candidate);
-    if (p.out.item.broadcast)
-        return {Route::Kind::Unexpected, candidate,
-                QStringLiteral("an answer came to a broadcast (unit 0 is never answered: Serial Line V1.02, 2.1)"), {}};
+    if (p.out.item.broadcast) {
+        m_problem = QStringLiteral("an answer came to a broadcast (unit 0 is never answered: Serial Line V1.02, 2.1)");
+        return {Route::Kind::Unexpected, candidate};
+    }
     const ResponseMatcher::Result match = m_framing.delimited ? ResponseMatcher::Result{ResponseMatcher::Outcome::Match, {}}
                                                              : ResponseMatcher::match(p.out.item, keys);
     if (match.matched())
-        return {Route::Kind::Answer, candidate, {}, {}};
-    Route other = unmatched(keys, firstNs);
+        return {Route::Kind::Answer, candidate};
+    const Route other = unmatched(keys, firstNs);
     if (other.kind != Route::Kind::Unsolicited)
         return other;
-    return {Route::Kind::Unexpected, candidate, match.problem, {}};
+    m_problem = match.problem;
+    return {Route::Kind::Unexpected, candidate};
 }
 
 ResponseRouter::Route ResponseRouter::unmatched(const FrameKeys &keys, qint64 firstNs)
 {
     if (isSecondCopyOfLatest(keys))
-        return {Route::Kind::Duplicate, -1, {}, {}};
-    Route late{Route::Kind::Late, -1, {}, {}};
-    if (takeLate(keys, firstNs, &late.late))
-        return late;
+        return {Route::Kind::Duplicate, -1};
+    if (findLate(keys, firstNs))
+        return {Route::Kind::Late, -1};
     if (isDuplicate(keys))
-        return {Route::Kind::Duplicate, -1, {}, {}};
+        return {Route::Kind::Duplicate, -1};
     return {};
 }
 
@@ -100,7 +101,7 @@ bool ResponseRouter::isSecondCopyOfLatest(const FrameKeys &keys) const
         && ResponseMatcher::match(m_answered.last(), keys).matched();
 }
 
-bool ResponseRouter::takeLate(const FrameKeys &keys, qint64 firstNs, InFlightRequest *late)
+bool ResponseRouter::findLate(const FrameKeys &keys, qint64 firstNs)
 {
     // The most recent timed-out request that this frame answers (and that was written before it).
     for (qsizetype i = m_timedOut.size() - 1; i >= 0; --i) {
@@ -109,7 +110,7 @@ bool ResponseRouter::takeLate(const FrameKeys &keys, qint64 firstNs, InFlightReq
             continue;
         if (!m_framing.delimited && !ResponseMatcher::match(p.out.item, keys).matched())
             continue;
-        *late = m_timedOut.takeAt(i);
+        m_late = m_timedOut.takeAt(i);
         return true;
     }
     return false;

@@ -29,9 +29,9 @@ public:
         };
         Kind kind = Kind::Unsolicited;
         qsizetype index = -1;
-        QString problem;
-        InFlightRequest late;
     };
+    // Two words, returned in registers: what goes with an Unexpected or a Late route is taken
+    // from the router (problem(), takeLate()), so the answer of every frame costs nothing more.
 
     void reset(const LinkFraming &framing, int lateWindow);
     // Forgets what timed out and what was answered (a new target).
@@ -40,6 +40,10 @@ public:
     // The keys of a frame in this framing (none for delimited framing).
     [[nodiscard]] FrameKeys keysOf(QByteArrayView frame) const;
     [[nodiscard]] Route route(const FrameKeys &keys, qint64 firstNs, const QList<InFlightRequest> &inFlight);
+    // Unexpected: which key differs, and what the request expected.
+    [[nodiscard]] const QString &problem() const { return m_problem; }
+    // Late: the request it answers, taken out of the router.
+    [[nodiscard]] InFlightRequest takeLate() { return std::move(m_late); }
     // An RTU answer the framer skipped (wrong CRC, cut short) may still name a request in flight
     // by its unit and function: its index, or -1.
     [[nodiscard]] qsizetype routeSkipped(QByteArrayView bytes, qint64 firstNs, const QList<InFlightRequest> &inFlight) const;
@@ -48,7 +52,7 @@ public:
     void answered(const RequestItem &item);
 
 private:
-    [[nodiscard]] bool takeLate(const FrameKeys &keys, qint64 firstNs, InFlightRequest *late);
+    [[nodiscard]] bool findLate(const FrameKeys &keys, qint64 firstNs);
     [[nodiscard]] bool isSecondCopyOfLatest(const FrameKeys &keys) const;
     [[nodiscard]] bool isDuplicate(const FrameKeys &keys) const;
     [[nodiscard]] Route unmatched(const FrameKeys &keys, qint64 firstNs);
@@ -58,6 +62,8 @@ private:
     QList<InFlightRequest> m_timedOut; // newest last, at most m_lateWindow
     QList<RequestItem> m_answered;     // recently answered requests, for second answers
     bool m_lastEndAnswered = false;    // the latest request to end was answered (not timed out)
+    QString m_problem;                 // of the last Unexpected route
+    InFlightRequest m_late;            // of the last Late route, until taken
 };
 
 } // namespace mbscope
