@@ -1,5 +1,9 @@
 #include "journalexchangereader.h"
 
+#include <QtCore/qnumeric.h>
+
+#include <algorithm>
+
 #include "exchange/responseverdict.h"
 #include "traffic/trafficmetadata.h"
 #include "transport/linkurl.h"
@@ -53,6 +57,12 @@ bool JournalExchangeReader::isJournal(QByteArrayView firstBytes)
     return firstBytes.startsWith("MBSCTLOG");
 }
 
+namespace {
+
+constexpr qint64 kMaxWallNs = qint64(1) << 62;
+
+} // namespace
+
 JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, const Sink &sink,
                                                           const std::function<void(const CaptureConversation &)> &onConversation)
 {
@@ -66,12 +76,23 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
         if (file.open(QIODevice::ReadOnly)) {
             const QByteArray header = file.read(40);
             if (header.size() == 40) {
-                wallNs = qFromLittleEndian<qint64>(header.constData() + 16) * 1000000LL;
+                // A damaged header (fuzz_journal found one) must not overflow: wall-clock times
+                // are kept within 1970 .. 1970 + 2^62 ns, as capture time stamps are.
+                const qint64 wallMs = qFromLittleEndian<qint64>(header.constData() + 16);
+                wallNs = std::clamp<qint64>(wallMs, 0, kMaxWallNs / 1000000) * 1000000;
                 monotonicNs = qFromLittleEndian<qint64>(header.constData() + 24);
             }
         }
     }
-    const auto wall = [&](qint64 tNs) { return wallNs + (tNs - monotonicNs); };
+    const auto wall = [&](qint64 tNs) {
+        qint64 delta = 0;
+        if (qSubOverflow(tNs, monotonicNs, &delta))
+            delta = tNs > monotonicNs ? kMaxWallNs : -kMaxWallNs;
+        qint64 ns = 0;
+        if (qAddOverflow(wallNs, delta, &ns))
+            ns = delta > 0 ? kMaxWallNs : 0;
+        return std::clamp<qint64>(ns, 0, kMaxWallNs);
+    };
 
     std::deque<Slot> queue;
     quint64 firstSlot = 1;

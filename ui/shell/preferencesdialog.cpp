@@ -75,7 +75,11 @@ PreferencesDialog::PreferencesDialog(QWidget *parent)
                           "(never one being written, never one beside a saved session)"));
     auto *recordingForm = new QFormLayout;
     recordingForm->addRow(m_record);
-    recordingForm->addRow(tr("Capture &folder:"), folderRow);
+    // A row made of a layout has no buddy of its own: the label is given the line edit, so that
+    // its Alt+F works and the & is not shown.
+    auto *folderLabel = new QLabel(tr("Capture &folder:"), this);
+    folderLabel->setBuddy(m_folder);
+    recordingForm->addRow(folderLabel, folderRow);
     recordingForm->addRow(tr("New journal &part every (MiB):"), m_rotate);
     recordingForm->addRow(tr("&Keep at most (MiB):"), m_keep);
     auto *recording = new QGroupBox(tr("Recording"), this);
