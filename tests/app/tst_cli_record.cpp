@@ -28,58 +28,6 @@ using namespace mbscope::testcli;
 
 namespace {
 
-// `mbscope simulate` (or another long-running subcommand): started, its "listening URL" line
-// read, stopped with SIGINT as Ctrl-C stops it.
-class Background
-{
-public:
-    ~Background() { stop(); }
-    bool start(const QStringList &arguments, QString *error)
-    {
-        m_process = std::make_unique<QProcess>();
-        m_process->start(mbscopePath(), arguments);
-        if (!m_process->waitForStarted(30000)) {
-            *error = QStringLiteral("cannot start mbscope: ") + m_process->errorString();
-            return false;
-        }
-        QByteArray seen;
-        while (m_process->waitForReadyRead(30000)) {
-            seen += m_process->readAllStandardOutput();
-            const qsizetype at = seen.indexOf("listening ");
-            const qsizetype end = at < 0 ? -1 : seen.indexOf('\n', at);
-            if (end > at) {
-                m_url = QString::fromUtf8(seen.mid(at + 10, end - at - 10)).section(QLatin1Char(' '), 0, 0);
-                m_out = seen;
-                return true;
-            }
-        }
-        *error = QStringLiteral("no 'listening' line from mbscope %1: %2 %3")
-                     .arg(arguments.join(QLatin1Char(' ')), QString::fromUtf8(seen), QString::fromUtf8(m_process->readAllStandardError()));
-        return false;
-    }
-    [[nodiscard]] QString url() const { return m_url; }
-    // Standard output and error once stopped.
-    QByteArray stop(QByteArray *err = nullptr)
-    {
-        if (m_process && m_process->state() != QProcess::NotRunning) {
-            ::kill(pid_t(m_process->processId()), SIGINT);
-            if (!m_process->waitForFinished(10000))
-                m_process->kill();
-            m_out += m_process->readAllStandardOutput();
-            m_err += m_process->readAllStandardError();
-        }
-        if (err)
-            *err = m_err;
-        return m_out;
-    }
-
-private:
-    std::unique_ptr<QProcess> m_process;
-    QString m_url;
-    QByteArray m_out;
-    QByteArray m_err;
-};
-
 // The rosrao-gamma settings block of unit 1 (V1.1b3 6.3: 22 holding registers at 0x0079), as
 // tst_cli_replay reads it: no live value in it.
 const QStringList kSettingsRead = {QStringLiteral("--unit"), QStringLiteral("1"), QStringLiteral("--function"), QStringLiteral("3"),
