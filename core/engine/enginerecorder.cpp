@@ -56,28 +56,37 @@ void EngineRecorder::attachLog()
     m_journalTimer.start();
 }
 
-void EngineRecorder::logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id)
+void EngineRecorder::setFramesPublished(bool published)
+{
+    m_framesPublished.store(published, std::memory_order_relaxed);
+}
+
+void EngineRecorder::logFrame(qint64 tNs, TrafficDirection direction, TrafficVerdict verdict, quint64 id,
+                              const QByteArray &bytes)
 {
     if (m_log)
-        m_log->append(ns, TrafficDirection::Out, m_logLink, TrafficVerdict::Sent, id, bytes);
+        m_log->append(tNs, direction, m_logLink, verdict, id, bytes);
+    if (!m_framesPublished.load(std::memory_order_relaxed))
+        return;
+    TrafficFrame frame;
+    frame.sequence = m_framesLogged++;
+    frame.tNs = tNs;
+    frame.transactionId = id;
+    frame.direction = direction;
+    frame.verdict = verdict;
+    frame.bytes = bytes; // shared, not copied
+    m_frames.append(std::move(frame));
+    scheduleBatch();
+}
+
+void EngineRecorder::logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id)
+{
+    logFrame(ns, TrafficDirection::Out, TrafficVerdict::Sent, id, bytes);
 }
 
 void EngineRecorder::logIncoming(const QByteArray &bytes, qint64 firstNs, TrafficVerdict verdict, quint64 id)
 {
-    if (m_log)
-        m_log->append(firstNs, TrafficDirection::In, m_logLink, verdict, id, bytes);
-    // A frame that answers no request never reaches observers as a transaction: it goes in the
-    // next batch on its own, so a traffic view shows garbage and unsolicited frames too.
-    if (verdict == TrafficVerdict::Unsolicited || verdict == TrafficVerdict::Garbage) {
-        TrafficFrame frame;
-        frame.tNs = firstNs;
-        frame.transactionId = id;
-        frame.direction = TrafficDirection::In;
-        frame.verdict = verdict;
-        frame.bytes = bytes;
-        m_unmatched.append(std::move(frame));
-        scheduleBatch();
-    }
+    logFrame(firstNs, TrafficDirection::In, verdict, id, bytes);
 }
 
 void EngineRecorder::record(Transaction transaction, quint64 tag)
@@ -85,8 +94,8 @@ void EngineRecorder::record(Transaction transaction, quint64 tag)
     // A transaction whose answer was logged carries its verdict on that frame. One without an
     // answer (timeout, link error, broadcast) is logged as an empty frame in with its verdict,
     // so that the log holds every transaction's outcome.
-    if (m_log && transaction.response.isEmpty())
-        m_log->append(monotonicNowNs(), TrafficDirection::In, m_logLink, trafficVerdict(transaction.status), transaction.id, {});
+    if (transaction.response.isEmpty() && (m_log || m_framesPublished.load(std::memory_order_relaxed)))
+        logFrame(monotonicNowNs(), TrafficDirection::In, trafficVerdict(transaction.status), transaction.id, {});
     if (m_listeners.size() == 1) {
         m_listeners.constFirst()->onRecord(transaction, tag);
     } else if (!m_listeners.isEmpty()) {
@@ -149,8 +158,8 @@ void EngineRecorder::flushBatch()
         // a list of records copies them at every step.
         m_batch.reserve(size);
     }
-    if (!m_unmatched.isEmpty())
-        Q_EMIT unmatchedFrames(std::exchange(m_unmatched, {}), m_link);
+    if (!m_frames.isEmpty())
+        Q_EMIT framesLogged(std::exchange(m_frames, {}), m_link);
     m_progress->counters = *m_counters;
     Q_EMIT progress(*m_progress);
 }

@@ -36,8 +36,11 @@ public:
     void flushLog();
     [[nodiscard]] const QString &link() const { return m_link; }
 
+    // Whether every frame logged also goes to observers, in framesLogged() batches (off by
+    // default: the copies cost a list entry per frame). Any thread.
+    void setFramesPublished(bool published);
+
     void logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id);
-    // A frame in; one that answers no request (unsolicited, garbage) also goes to the next batch.
     void logIncoming(const QByteArray &bytes, qint64 firstNs, TrafficVerdict verdict, quint64 id = 0);
     // A record made: to the listeners, recorded(), the log (when no answer frame was logged) and
     // the next batch.
@@ -57,9 +60,11 @@ Q_SIGNALS:
     // connections only).
     void recorded(const mbscope::Transaction &transaction, quint64 tag);
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
-    // Frames read that belong to no transaction (unsolicited, duplicates, garbage), in the same
-    // batches, just after them; link: the target's URL.
-    void unmatchedFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
+    // When frames are published: every frame logged since the last batch, just after the
+    // transactions, exactly as the traffic log holds them (requests when written, answers with
+    // their verdicts, an empty frame in for a transaction that got no answer, unsolicited frames
+    // and garbage); sequence counts the frames published; link: the target's URL.
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void progress(const mbscope::EngineProgress &progress);
 
 protected:
@@ -70,6 +75,7 @@ protected:
 
 private:
     void attachLog();
+    void logFrame(qint64 tNs, TrafficDirection direction, TrafficVerdict verdict, quint64 id, const QByteArray &bytes);
 
     const EngineCounters *m_counters;
     EngineProgress *m_progress;
@@ -83,7 +89,9 @@ private:
     int m_batchIntervalMs = 33;
     qint64 m_lastBatchNs = 0;
     QList<Transaction> m_batch;
-    QList<TrafficFrame> m_unmatched; // frames of no transaction, for the next batch
+    std::atomic<bool> m_framesPublished{false};
+    quint64 m_framesLogged = 0;
+    QList<TrafficFrame> m_frames; // logged since the last batch, when published
 };
 
 } // namespace mbscope

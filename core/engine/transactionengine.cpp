@@ -4,6 +4,7 @@
 #include "engineeventdispatcher.h"
 #include "sweep.h"
 
+#include <QtCore/QCoreApplication>
 #include <QtCore/QEventLoop>
 #include <QtCore/QTimer>
 
@@ -22,7 +23,7 @@ TransactionEngine::TransactionEngine(QObject *parent)
     m_core->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, m_core, &QObject::deleteLater);
     connect(m_core->recorder(), &EngineRecorder::transactionsFinished, this, &TransactionEngine::transactionsFinished);
-    connect(m_core->recorder(), &EngineRecorder::unmatchedFrames, this, &TransactionEngine::unmatchedFrames);
+    connect(m_core->recorder(), &EngineRecorder::framesLogged, this, &TransactionEngine::framesLogged);
     connect(m_core->recorder(), &EngineRecorder::progress, this, &TransactionEngine::progress);
     connect(m_core, &EngineCore::linkMessage, this, &TransactionEngine::linkMessage);
     // The engine thread's own dispatcher, lighter per turn than Qt's (see EngineEventDispatcher).
@@ -59,6 +60,17 @@ void TransactionEngine::setTarget(const LinkUrl &url, const EngineOptions &optio
 void TransactionEngine::setTrafficLog(TrafficLog *log)
 {
     QMetaObject::invokeMethod(m_core, [core = m_core, log] { core->setTrafficLog(log); }, Qt::BlockingQueuedConnection);
+}
+
+void TransactionEngine::setFramesPublished(bool published)
+{
+    m_core->recorder()->setFramesPublished(published);
+}
+
+void TransactionEngine::deliverPending()
+{
+    QMetaObject::invokeMethod(m_core->recorder(), &EngineRecorder::flushBatch, Qt::BlockingQueuedConnection);
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::MetaCall);
 }
 
 void TransactionEngine::flushTrafficLog()

@@ -52,6 +52,12 @@ public:
     // Every frame in and out and every transaction go to the log; it is used from the engine
     // thread from now on (until setTrafficLog(nullptr) returns), so it must outlive that.
     void setTrafficLog(TrafficLog *log);
+    // framesLogged() batches on or off (off by default).
+    void setFramesPublished(bool published);
+    // Emits the batches waiting in the engine thread now (transactions, frames, progress) and
+    // delivers them to receivers in the calling thread before it returns: for a caller that is
+    // about to stop listening (waits for the engine thread).
+    void deliverPending();
     // Writes the traffic log's pending journal batch now (waits for the engine thread).
     void flushTrafficLog();
 
@@ -75,10 +81,10 @@ public:
 
 Q_SIGNALS:
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
-    // Frames read that answer no request (unsolicited, duplicates, garbage the framer skipped),
-    // batched with the transactions, just after them (a duplicate follows the answer it copies);
-    // link: the target's URL. Late answers and unexpected frames come as transactions instead.
-    void unmatchedFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
+    // With setFramesPublished(true): every frame in and out as the traffic log holds it, with
+    // the engine's verdicts and transaction ids (which pair an answer with its request), batched
+    // with the transactions, just after them; link: the target's URL (EngineRecorder::framesLogged).
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void progress(const mbscope::EngineProgress &progress);
     void finished(const mbscope::PollReport &report);
     // What the link said when it failed or closed with requests in flight.

@@ -44,6 +44,15 @@ void PlanRunner::setTrafficLog(TrafficLog *log)
     m_engine->setTrafficLog(log);
 }
 
+void PlanRunner::setFramesObserver(FramesObserver observer)
+{
+    m_framesObserved = bool(observer);
+    m_engine->setFramesPublished(m_framesObserved);
+    QObject::disconnect(m_engine.get(), &TransactionEngine::framesLogged, nullptr, nullptr);
+    if (m_framesObserved)
+        QObject::connect(m_engine.get(), &TransactionEngine::framesLogged, m_engine.get(), std::move(observer));
+}
+
 PlanRunner::~PlanRunner() = default;
 
 PlanResult PlanRunner::run(const StepObserver &observer)
@@ -58,6 +67,8 @@ PlanResult PlanRunner::run(const StepObserver &observer)
     runSteps(m_document.plan, QStringLiteral("plan"), QString());
     m_result.elapsedNs = monotonicNowNs() - start;
     m_engine->closeLink();
+    if (m_framesObserved)
+        m_engine->deliverPending();
     return m_result;
 }
 

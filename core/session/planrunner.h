@@ -1,5 +1,6 @@
 #pragma once
 
+#include "exchange/trafficentry.h"
 #include "exchange/transaction.h"
 #include "session/planresult.h"
 #include "session/sessiondocument.h"
@@ -36,6 +37,11 @@ public:
     // Every frame in and out goes to log (--record) until setTrafficLog(nullptr), which also
     // writes the engine's last frames to the log's journal (TransactionEngine::setTrafficLog).
     void setTrafficLog(TrafficLog *log);
+    // Every frame in and out, as the engine logs it (TransactionEngine::framesLogged), handed to
+    // observer in batches in the runner's thread while the plan runs; the last batch before run()
+    // returns. For a window's traffic list.
+    using FramesObserver = std::function<void(const QList<TrafficFrame> &frames, const QString &link)>;
+    void setFramesObserver(FramesObserver observer);
     [[nodiscard]] PlanResult run(const StepObserver &observer = {});
     // Ends the run early (Ctrl-C): a poll in progress stops, a wait ends, a send finishes; the
     // steps left are reported skipped and the result says it was interrupted. Call it from the
@@ -60,6 +66,7 @@ private:
     std::unique_ptr<TransactionEngine> m_engine;
     std::optional<Transaction> m_last; // the answer of the last send, for expect steps
     StepObserver m_observer;
+    bool m_framesObserved = false;
     PlanResult m_result;
     quint16 m_transactionId = 1;
     QEventLoop *m_waitLoop = nullptr; // the wait step's, while one runs

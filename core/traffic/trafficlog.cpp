@@ -200,6 +200,34 @@ TrafficEntry TrafficLog::at(quint64 sequence) const
     return entryAt(chunk, quint32(sequence - chunk.firstSequence));
 }
 
+void TrafficLog::visit(quint64 from, bool forward, const std::function<bool(const TrafficEntry &)> &visitor) const
+{
+    if (from < firstSequence() || from >= m_next)
+        return;
+    const auto it = std::upper_bound(m_chunks.begin(), m_chunks.end(), from,
+                                     [](quint64 s, const std::unique_ptr<Chunk> &c) { return s < c->firstSequence; });
+    auto chunk = std::size_t(it - m_chunks.begin()) - 1;
+    auto index = qint64(from - m_chunks[chunk]->firstSequence);
+    for (;;) {
+        const Chunk &c = *m_chunks[chunk];
+        const qint64 first = chunk == 0 ? qint64(m_headSkip) : 0;
+        for (; index >= first && index < qint64(c.count); index += forward ? 1 : -1) {
+            if (!visitor(entryAt(c, quint32(index))))
+                return;
+        }
+        if (forward ? chunk + 1 >= m_chunks.size() : chunk == 0)
+            return;
+        chunk += forward ? 1 : std::size_t(-1);
+        index = forward ? 0 : qint64(m_chunks[chunk]->count) - 1;
+    }
+}
+
+void TrafficLog::dropOldest(quint64 count)
+{
+    for (quint64 i = 0; i < count && m_size > 0; ++i)
+        evictOldest();
+}
+
 QList<TrafficFrame> TrafficLog::copy(quint64 fromSequence, qsizetype maxCount) const
 {
     QList<TrafficFrame> frames;

@@ -219,6 +219,69 @@
     </message>
 </context>
 <context>
+    <name>TrafficSaver</name>
+    <message>
+        <location filename="../../ui/traffic/trafficsaver.cpp" line="+78"/>
+        <source>Traffic journal (*.mbscope.journal)</source>
+        <translation>Jurnal lalu lintas (*.mbscope.journal)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Wireshark capture, pcapng (*.pcapng)</source>
+        <translation>Tangkapan Wireshark, pcapng (*.pcapng)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wireshark capture, pcap (*.pcap)</source>
+        <translation>Tangkapan Wireshark, pcap (*.pcap)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>CSV, a row per transaction (*.csv)</source>
+        <translation>CSV, satu baris per transaksi (*.csv)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>JSON lines, an object per transaction (*.jsonl)</source>
+        <translation>Baris JSON, satu objek per transaksi (*.jsonl)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Traffic not saved to %1: %2</source>
+        <translation>Lalu lintas tidak disimpan ke %1: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 frame(s) saved to %2</source>
+        <translation>%1 frame disimpan ke %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 frame(s) saved to %2 as %3 packet(s)</source>
+        <translation>%1 frame disimpan ke %2 sebagai %3 paket</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 frame(s) saved to %2 as %3 transaction(s)</source>
+        <translation>%1 frame disimpan ke %2 sebagai %3 transaksi</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>. Wireshark decodes the RTU frames with: %1</source>
+        <translation>. Wireshark mendekode frame RTU dengan: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>no room for a temporary journal: %1</source>
+        <translation>tidak ada tempat untuk jurnal sementara: %1</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>cannot move %1 to %2</source>
+        <translation>tidak dapat memindahkan %1 ke %2</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::AddressField</name>
     <message>
         <location filename="../../ui/compose/addressfield.cpp" line="+26"/>
@@ -2561,7 +2624,7 @@
 <context>
     <name>mbscope::LinkController</name>
     <message>
-        <location filename="../../ui/link/linkcontroller.cpp" line="+79"/>
+        <location filename="../../ui/link/linkcontroller.cpp" line="+110"/>
         <source>nothing is being recorded</source>
         <translation>tidak ada yang sedang direkam</translation>
     </message>
@@ -2572,7 +2635,7 @@
         <translation>tidak dapat menyalin %1 ke %2: %3</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>%1: the link opens with the first request</source>
         <translation>%1: link dibuka dengan permintaan pertama</translation>
     </message>
@@ -2693,7 +2756,7 @@
         <translation>Simulator</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+41"/>
         <source>Not sent (%1): connect first</source>
         <translation>Tidak terkirim (%1): sambungkan dulu</translation>
     </message>
@@ -2713,7 +2776,7 @@
         <translation>&amp;Berkas</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>&amp;Quit</source>
         <translation>&amp;Keluar</translation>
     </message>
@@ -2819,7 +2882,7 @@
         <translation>Target sesi %1 bukan target: %2</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+51"/>
         <source>Steps: %1; passed %2, failed %3, errors %4, skipped %5; %6 s against %7.</source>
         <translation>Langkah: %1; lulus %2, gagal %3, error %4, dilewati %5; %6 s terhadap %7.</translation>
     </message>
@@ -3152,7 +3215,7 @@
         <translation>Folder capture</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+22"/>
         <source>New journal &amp;part every (MiB):</source>
         <translation>&amp;Bagian jurnal baru setiap (MiB):</translation>
     </message>
@@ -3162,7 +3225,7 @@
         <translation>Simpan &amp;paling banyak (MiB):</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-14"/>
         <source>A journal that reaches this size is closed and the recording goes on in a new part</source>
         <translation>Jurnal yang mencapai ukuran ini ditutup dan perekaman berlanjut di bagian baru</translation>
     </message>
@@ -3172,12 +3235,12 @@
         <translation>Jurnal tertua di folder capture dihapus agar tetap di bawah ukuran ini (tidak pernah yang sedang ditulis, tidak pernah yang di samping sesi tersimpan)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Capture &amp;folder:</source>
         <translation>&amp;Folder capture:</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Recording</source>
         <translation>Perekaman</translation>
     </message>
@@ -4711,7 +4774,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Rencana uji</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+37"/>
         <source>&amp;Session</source>
         <translation>Se&amp;si</translation>
     </message>
@@ -5713,7 +5776,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficModel</name>
     <message>
-        <location filename="../../ui/traffic/trafficmodel.cpp" line="+282"/>
+        <location filename="../../ui/traffic/trafficmodel.cpp" line="+401"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
@@ -5769,8 +5832,8 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>From the request written to its answer</source>
-        <translation>Dari permintaan ditulis sampai jawabannya</translation>
+        <source>From the request&apos;s write to the first byte of its answer, as the recording keeps them; the Analysis dock measures from the request&apos;s last byte to the answer&apos;s last byte</source>
+        <translation>Dari penulisan permintaan sampai byte pertama jawabannya, seperti yang disimpan rekaman; dok Analisis mengukur dari byte terakhir permintaan sampai byte terakhir jawaban</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5783,7 +5846,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>link %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+13"/>
         <source>%1 Exception to %2</source>
         <translation>%1 Exception untuk %2</translation>
     </message>
@@ -5811,7 +5874,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficMonitor</name>
     <message>
-        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+64"/>
+        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+71"/>
         <location line="+5"/>
         <location line="+15"/>
         <source>any</source>
@@ -5839,12 +5902,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+117"/>
+        <location line="+201"/>
         <source>Pause</source>
         <translation>Jeda</translation>
     </message>
     <message>
-        <location line="-115"/>
+        <location line="-199"/>
         <source>Hold new frames back from the list; nothing is dropped, they appear on resume</source>
         <translation>Tahan frame baru dari daftar; tidak ada yang dibuang, frame muncul saat dilanjutkan</translation>
     </message>
@@ -5859,7 +5922,22 @@ Klik kanan untuk mengganti format</translation>
         <translation>Kosongkan daftar (jurnal lalu lintas sambungan menyimpan setiap frame, kecuali perekaman dimatikan di Preferensi)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+3"/>
+        <source>Save &amp;Traffic As…</source>
+        <translation>Simpan &amp;Lalu Lintas Sebagai…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the frames listed (all, or what the filter shows) as a traffic journal, a Wireshark capture (pcapng, pcap), CSV or JSON lines</source>
+        <translation>Simpan frame yang terdaftar (semua, atau yang ditampilkan filter) sebagai jurnal lalu lintas, tangkapan Wireshark (pcapng, pcap), CSV atau baris JSON</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Save…</source>
+        <translation>Simpan…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Find: hex bytes or text (Enter, F3)</source>
         <translation>Cari: byte hex atau teks (Enter, F3)</translation>
     </message>
@@ -5894,7 +5972,38 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Hasil:</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+67"/>
+        <source>nothing to save: the list is empty</source>
+        <translation>tidak ada yang disimpan: daftar kosong</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <location line="+43"/>
+        <source>Save Traffic</source>
+        <translation>Simpan Lalu Lintas</translation>
+    </message>
+    <message>
+        <location line="-42"/>
+        <source>The filter shows %1 of the %2 frames listed. Save which?</source>
+        <translation>Filter menampilkan %1 dari %2 frame yang terdaftar. Simpan yang mana?</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;All frames</source>
+        <translation>&amp;Semua frame</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Shown frames</source>
+        <translation>Frame yang &amp;ditampilkan</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Save Traffic As</source>
+        <translation>Simpan Lalu Lintas Sebagai</translation>
+    </message>
+    <message>
+        <location line="+74"/>
         <source>Resume</source>
         <translation>Lanjutkan</translation>
     </message>

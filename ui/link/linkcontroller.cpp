@@ -60,6 +60,37 @@ void LinkController::dropEngine()
     }
 }
 
+void LinkController::countFrames(const QList<TrafficFrame> &frames)
+{
+    EngineCounters add;
+    for (const TrafficFrame &frame : frames) {
+        if (frame.direction == TrafficDirection::Out) {
+            ++add.requestsSent;
+            add.bytesOut += quint64(frame.bytes.size());
+        } else {
+            add.bytesIn += quint64(frame.bytes.size());
+        }
+    }
+    m_countersBefore = m_countersBefore + add;
+    m_counters = m_counters + add;
+    Q_EMIT countersChanged(m_counters);
+}
+
+void LinkController::countTransactions(const QList<Transaction> &transactions)
+{
+    EngineCounters add;
+    for (const Transaction &t : transactions) {
+        if (t.status != TransactionStatus::Late) {
+            ++add.requestsSent;
+            add.bytesOut += quint64(t.request.size());
+        }
+        add.bytesIn += quint64(t.response.size());
+    }
+    m_countersBefore = m_countersBefore + add;
+    m_counters = m_counters + add;
+    Q_EMIT countersChanged(m_counters);
+}
+
 void LinkController::setRecording(bool enabled, const CaptureDirectory &directory, const RollingCapture::Policy &policy)
 {
     m_recordingEnabled = enabled;
@@ -113,7 +144,8 @@ void LinkController::resetEngine()
     dropEngine();
     m_engine = std::make_unique<TransactionEngine>();
     connect(m_engine.get(), &TransactionEngine::transactionsFinished, this, &LinkController::onTransactions);
-    connect(m_engine.get(), &TransactionEngine::unmatchedFrames, this, &LinkController::unmatchedFrames);
+    connect(m_engine.get(), &TransactionEngine::framesLogged, this, &LinkController::framesLogged);
+    m_engine->setFramesPublished(true);
     connect(m_engine.get(), &TransactionEngine::progress, this, &LinkController::onProgress);
     connect(m_engine.get(), &TransactionEngine::linkMessage, this, &LinkController::onLinkMessage);
     connect(m_engine.get(), &TransactionEngine::finished, this, &LinkController::onPollFinished);

@@ -48,6 +48,10 @@ public:
     [[nodiscard]] const LinkUrl &url() const { return m_url; }
     [[nodiscard]] QString message() const { return m_message; }
     [[nodiscard]] const EngineCounters &counters() const { return m_counters; }
+    // Traffic another engine had with the device (a test plan's, a replay's): the status bar's
+    // requests and bytes count it too.
+    void countFrames(const QList<mbscope::TrafficFrame> &frames);
+    void countTransactions(const QList<mbscope::Transaction> &transactions);
     [[nodiscard]] bool isPolling() const { return m_polling; }
     [[nodiscard]] TransactionEngine *engine() const { return m_engine.get(); }
 
@@ -82,9 +86,9 @@ Q_SIGNALS:
     void stateChanged(mbscope::LinkController::State state, const QString &message);
     // Every transaction, in batches as the engine delivers them (at most ~30 a second).
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
-    // Frames that answer no request (unsolicited, duplicates, garbage), batched as the engine
-    // delivers them; link: the target's URL. With transactionsFinished they are every frame in.
-    void unmatchedFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
+    // Every frame in and out as the engine logs it (TransactionEngine::framesLogged), batched as
+    // the engine delivers them; link: the target's URL.
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     // The newest transaction of each batch: what the decode view shows.
     void latestTransaction(const mbscope::Transaction &transaction);
     void countersChanged(const mbscope::EngineCounters &counters);

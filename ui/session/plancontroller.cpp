@@ -67,6 +67,7 @@ bool PlanController::run(const SessionDocument &document, QString *error)
     connect(m_thread, &QThread::started, m_worker, &PlanWorker::run);
     connect(m_worker, &PlanWorker::stepFinished, this, &PlanController::onStep);
     connect(m_worker, &PlanWorker::finished, this, &PlanController::onFinished);
+    connect(m_worker, &PlanWorker::framesLogged, this, &PlanController::framesLogged);
     m_thread->start();
     Q_EMIT started(document.name, url.toString());
     Q_EMIT runningChanged(true);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "sessionmetatypes.h"
+#include "exchange/trafficentry.h"
 #include "session/planresult.h"
 #include "session/sessiondocument.h"
 
@@ -45,6 +46,8 @@ Q_SIGNALS:
     void stepFinished(const mbscope::StepResult &step);
     void finished(const QString &summary, bool passed);
     void runningChanged(bool running);
+    // The frames of the plan's run, as its engine logs them, for the traffic list.
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
 
 private:
     void onStep(const StepResult &step);

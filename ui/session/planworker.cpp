@@ -16,6 +16,7 @@ PlanWorker::~PlanWorker() = default;
 void PlanWorker::run()
 {
     PlanRunner runner(m_document, m_url, m_document.target);
+    runner.setFramesObserver([this](const QList<TrafficFrame> &frames, const QString &link) { Q_EMIT framesLogged(frames, link); });
     m_runner = &runner;
     if (m_stopRequested) {
         m_runner = nullptr;

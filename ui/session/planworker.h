@@ -1,6 +1,7 @@
 #pragma once
 
 #include "sessionmetatypes.h"
+#include "exchange/trafficentry.h"
 #include "session/planresult.h"
 #include "session/sessiondocument.h"
 #include "transport/linkurl.h"
@@ -28,6 +29,8 @@ public Q_SLOTS:
 Q_SIGNALS:
     void stepFinished(const mbscope::StepResult &step);
     void finished(const mbscope::PlanResult &result);
+    // Every frame the plan's engine sends and reads, batched (PlanRunner::setFramesObserver).
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
 
 private:
     SessionDocument m_document;

@@ -268,8 +268,7 @@ void MainWindow::buildDocks()
 void MainWindow::connectDocks()
 {
     // Every transaction goes to the traffic list; a row picked there is shown in the Answer tab.
-    connect(m_controller, &LinkController::transactionsFinished, m_traffic, &TrafficMonitor::appendTransactions);
-    connect(m_controller, &LinkController::unmatchedFrames, m_traffic, &TrafficMonitor::appendLinkFrames);
+    connect(m_controller, &LinkController::framesLogged, m_traffic, &TrafficMonitor::appendLinkFrames);
     connect(m_traffic, &TrafficMonitor::frameSelected, this, [this](const FrameExchange &exchange) {
         m_tabs->setCurrentWidget(m_answerView);
         m_answerView->showExchange(exchange);
@@ -347,6 +346,8 @@ void MainWindow::createMenus()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
     m_session->addMenuActions(file);
+    file->addSeparator();
+    file->addAction(m_traffic->saveAction());
     file->addSeparator();
     // Closing the window (not quitting the application outright) asks about unsaved changes.
     QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);

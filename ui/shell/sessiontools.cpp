@@ -63,7 +63,17 @@ SessionTools::SessionTools(QMainWindow *window, LinkController *link, SessionCon
         m_traffic->model()->setCurrentLink(m_link->isConnected() ? m_link->url().toString() : QString());
         status(m_replay->sourceSummary());
     });
-    connect(m_replay, &ReplayController::transactionsReplayed, m_traffic, &TrafficMonitor::appendTransactions);
+    // What a replay or a test plan sends and gets is traffic with the device like any other: listed
+    // and counted in the status bar.
+    connect(m_replay, &ReplayController::transactionsReplayed, this, [this](const QList<Transaction> &transactions) {
+        m_traffic->model()->setCurrentLink(m_link->url().toString());
+        m_traffic->appendTransactions(transactions);
+        m_link->countTransactions(transactions);
+    });
+    connect(m_plan, &PlanController::framesLogged, this, [this](const QList<TrafficFrame> &frames, const QString &url) {
+        m_traffic->appendLinkFrames(frames, url);
+        m_link->countFrames(frames);
+    });
     connect(m_replay, &ReplayController::sourceFailed, this, &SessionTools::status);
     connect(m_replay, &ReplayController::replayFinished, this, &SessionTools::status);
     connect(m_plan, &PlanController::finished, this, [this](const QString &summary) { status(summary); });

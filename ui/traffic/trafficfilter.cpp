@@ -18,16 +18,16 @@ bool TrafficFilter::acceptsAll() const
     return unit < 0 && function < 0 && direction < 0 && (verdicts & kAllVerdicts) == kAllVerdicts;
 }
 
-bool TrafficFilter::accepts(const TrafficStore::Row &row) const
+bool TrafficFilter::accepts(const TrafficEntry &frame, const FrameKeys &keys) const
 {
-    if (direction >= 0 && int(row.direction) != direction)
+    if (direction >= 0 && int(frame.direction) != direction)
         return false;
-    if (!showsVerdict(row.verdict))
+    if (!showsVerdict(frame.verdict))
         return false;
-    if (unit >= 0 && (!row.hasUnit() || row.unit != unit))
+    if (unit >= 0 && (!keys.valid || keys.unit != unit))
         return false;
     // An exception response carries the function code with its high bit set (V1.1b3, 7).
-    if (function >= 0 && (!row.hasFunction() || (row.function & 0x7F) != (function & 0x7F)))
+    if (function >= 0 && (!keys.valid || (keys.functionCode & 0x7F) != (function & 0x7F)))
         return false;
     return true;
 }

@@ -1,6 +1,7 @@
 #pragma once
 
-#include "trafficstore.h"
+#include "exchange/responsematcher.h"
+#include "exchange/trafficentry.h"
 
 namespace mbscope {
 
@@ -19,7 +20,8 @@ public:
     void setVerdict(TrafficVerdict verdict, bool shown);
     [[nodiscard]] bool showsVerdict(TrafficVerdict verdict) const;
     [[nodiscard]] bool acceptsAll() const;
-    [[nodiscard]] bool accepts(const TrafficStore::Row &row) const;
+    // A frame with its unit and function code (for an empty frame in: its request's).
+    [[nodiscard]] bool accepts(const TrafficEntry &frame, const FrameKeys &keys) const;
 
     friend bool operator==(const TrafficFilter &, const TrafficFilter &) = default;
 };

@@ -14,25 +14,48 @@
 #include <QtGui/QFontDatabase>
 
 #include <algorithm>
+#include <limits>
 
 namespace mbscope {
 
+namespace {
+
+TrafficLog::Limits unbounded()
+{
+    TrafficLog::Limits limits;
+    limits.maxEntries = std::numeric_limits<quint64>::max();
+    limits.maxBytes = std::numeric_limits<quint64>::max();
+    return limits;
+}
+
+// Statuses whose frame in is empty: no answer, so no latency.
+bool answered(const TrafficEntry &frame)
+{
+    return frame.direction == TrafficDirection::In && !frame.bytes.isEmpty();
+}
+
+} // namespace
+
 TrafficModel::TrafficModel(QObject *parent)
     : QAbstractTableModel(parent)
+    , m_log(std::make_unique<TrafficLog>(unbounded()))
+    , m_pairs(std::size_t(kPairCacheSize))
     , m_monoFont(QFontDatabase::systemFont(QFontDatabase::FixedFont))
 {
 }
 
+TrafficModel::~TrafficModel() = default;
+
 void TrafficModel::setLinkName(quint16 link, const QString &url)
 {
-    m_store.setLinkName(link, url);
+    m_links.setName(link, url);
     if (rowCount() > 0)
         Q_EMIT dataChanged(index(0, LinkColumn), index(rowCount() - 1, LinkColumn));
 }
 
 void TrafficModel::setCurrentLink(const QString &url)
 {
-    m_currentLink = m_store.linkId(url);
+    m_currentLink = m_links.idOf(url);
     m_hasCurrentLink = true;
 }
 
@@ -52,10 +75,14 @@ void TrafficModel::rebuildShown()
     std::vector<quint32>().swap(m_shown);
     if (!m_filtered)
         return;
-    for (qsizetype i = 0; i < m_published; ++i) {
-        if (m_filter.accepts(m_store.row(i)))
-            m_shown.push_back(quint32(i));
-    }
+    const quint64 first = m_log->firstSequence();
+    m_log->visit(first, true, [&](const TrafficEntry &e) {
+        if (e.sequence >= m_publishedEnd)
+            return false;
+        if (m_filter.accepts(e, keysAt(qsizetype(e.sequence - first))))
+            m_shown.push_back(quint32(e.sequence - first));
+        return true;
+    });
 }
 
 void TrafficModel::setPaused(bool paused)
@@ -75,6 +102,13 @@ void TrafficModel::setRowLimit(qsizetype limit)
     Q_EMIT countsChanged();
 }
 
+void TrafficModel::setByteLimit(quint64 bytes)
+{
+    m_byteLimit = std::max<quint64>(bytes, 4096);
+    enforceLimit();
+    Q_EMIT countsChanged();
+}
+
 qsizetype TrafficModel::storeRow(int row) const
 {
     if (row < 0 || row >= rowCount())
@@ -84,7 +118,8 @@ qsizetype TrafficModel::storeRow(int row) const
 
 int TrafficModel::rowOfStoreRow(qsizetype storeRow) const
 {
-    if (storeRow < 0 || storeRow >= m_published)
+    const qsizetype published = qsizetype(m_publishedEnd - m_log->firstSequence());
+    if (storeRow < 0 || storeRow >= published)
         return -1;
     if (!m_filtered)
         return int(storeRow);
@@ -92,101 +127,183 @@ int TrafficModel::rowOfStoreRow(qsizetype storeRow) const
     return it != m_shown.end() && *it == quint32(storeRow) ? int(it - m_shown.begin()) : -1;
 }
 
+TrafficEntry TrafficModel::frameAt(qsizetype storeRow) const
+{
+    return m_log->at(sequenceOf(storeRow));
+}
+
+qsizetype TrafficModel::pairedRow(qsizetype storeRow) const
+{
+    const TrafficEntry frame = frameAt(storeRow);
+    if (frame.transactionId == 0 || frame.sequence < m_log->firstSequence())
+        return -1;
+    const quint64 first = m_log->firstSequence();
+    PairSlot &slot = m_pairs[std::size_t(frame.sequence % quint64(kPairCacheSize))];
+    if (slot.key == frame.sequence + 1)
+        return slot.paired >= first ? qsizetype(slot.paired - first) : -1;
+    // Out: the next frame in of the transaction, unless the request was sent again first (a
+    // retry: the answer is the last attempt's). In: the latest frame out of the transaction.
+    const bool out = frame.direction == TrafficDirection::Out;
+    qint64 found = -1;
+    int seen = 0;
+    const quint64 from = out ? frame.sequence + 1 : frame.sequence - 1;
+    if (out ? from < m_log->appended() : frame.sequence > first) {
+        m_log->visit(from, out, [&](const TrafficEntry &e) {
+            if (++seen > kPairWindow)
+                return false;
+            if (e.link != frame.link || e.transactionId != frame.transactionId)
+                return true;
+            if (e.direction == TrafficDirection::Out && out)
+                return false;
+            if (e.direction == (out ? TrafficDirection::In : TrafficDirection::Out))
+                found = qint64(e.sequence);
+            return found < 0;
+        });
+    }
+    if (found < 0)
+        return -1;
+    slot = PairSlot{frame.sequence + 1, quint64(found)};
+    return qsizetype(quint64(found) - first);
+}
+
+qint64 TrafficModel::latencyNs(qsizetype storeRow) const
+{
+    const TrafficEntry answer = frameAt(storeRow);
+    if (!answered(answer))
+        return -1;
+    const qsizetype request = pairedRow(storeRow);
+    return request < 0 ? -1 : std::max<qint64>(0, answer.tNs - frameAt(request).tNs);
+}
+
+FrameKeys TrafficModel::keysAt(qsizetype storeRow) const
+{
+    const TrafficEntry frame = frameAt(storeRow);
+    if (frame.verdict == TrafficVerdict::Garbage) // bytes the framer skipped: no unit, no function
+        return {};
+    if (frame.direction == TrafficDirection::In && frame.bytes.isEmpty()) {
+        const qsizetype request = pairedRow(storeRow);
+        return request >= 0 ? m_links.keysOf(frameAt(request)) : FrameKeys{};
+    }
+    return m_links.keysOf(frame);
+}
+
+void TrafficModel::keep(qint64 tNs, TrafficDirection direction, quint16 link, TrafficVerdict verdict,
+                        quint64 transactionId, QByteArrayView bytes)
+{
+    if (!m_hasOrigin) {
+        m_originNs = tNs;
+        m_hasOrigin = true;
+    }
+    m_log->append(tNs, direction, link, verdict, transactionId, bytes);
+}
+
+void TrafficModel::appended()
+{
+    enforceLimit();
+    publish();
+    Q_EMIT countsChanged();
+}
+
 void TrafficModel::appendFrames(const QList<TrafficFrame> &frames)
 {
     if (frames.isEmpty())
         return;
-    if (!m_hasOrigin) {
-        m_originNs = frames.first().tNs;
-        m_hasOrigin = true;
-    }
     for (const TrafficFrame &f : frames)
-        m_store.append(f.tNs, f.direction, f.link, f.verdict, f.transactionId, f.bytes);
-    enforceLimit();
-    publish();
-    Q_EMIT countsChanged();
+        keep(f.tNs, f.direction, f.link, f.verdict, f.transactionId, f.bytes);
+    appended();
 }
 
 void TrafficModel::appendLinkFrames(const QList<TrafficFrame> &frames, const QString &link)
 {
     if (frames.isEmpty())
         return;
-    const quint16 id = m_store.linkId(link);
-    QList<TrafficFrame> named = frames;
-    for (TrafficFrame &frame : named)
-        frame.link = id;
-    appendFrames(named);
+    const quint16 id = m_links.idOf(link);
+    for (const TrafficFrame &f : frames)
+        keep(f.tNs, f.direction, id, f.verdict, f.transactionId, f.bytes);
+    appended();
 }
 
-// A transaction becomes the two frames the traffic log would hold: the request out and the answer
-// in, or an empty frame in carrying the verdict when nothing came (timeout, link error, broadcast),
-// as the engine logs them. A late answer's request is already listed, under its timeout.
+// A transaction becomes the frames its engine's traffic log holds: the request out (when its last
+// byte was written) and the answer in (when its first byte came), or an empty frame in carrying
+// the verdict when nothing came (timeout, link error, broadcast). A late answer's request is
+// already listed, under its timeout.
 void TrafficModel::appendTransactions(const QList<Transaction> &transactions)
 {
     if (transactions.isEmpty())
         return;
     if (!m_hasCurrentLink)
         setCurrentLink(QString());
-    if (!m_hasOrigin) {
-        m_originNs = transactions.first().sentNs;
-        m_hasOrigin = true;
-    }
     for (const Transaction &t : transactions) {
         if (t.status != TransactionStatus::Late)
-            m_store.append(t.sentNs, TrafficDirection::Out, m_currentLink, TrafficVerdict::Sent, t.id, t.request);
+            keep(t.sentNs, TrafficDirection::Out, m_currentLink, TrafficVerdict::Sent, t.id, t.request);
         const TrafficVerdict verdict = trafficVerdict(t.status);
         if (!t.response.isEmpty())
-            m_store.append(t.firstByteNs > 0 ? t.firstByteNs : t.doneNs, TrafficDirection::In, m_currentLink, verdict,
-                           t.id, t.response, t.latencyNs());
+            keep(t.firstByteNs > 0 ? t.firstByteNs : t.doneNs, TrafficDirection::In, m_currentLink, verdict, t.id,
+                 t.response);
         else
-            m_store.append(t.doneNs > 0 ? t.doneNs : t.sentNs, TrafficDirection::In, m_currentLink, verdict, t.id, {});
+            keep(t.doneNs > 0 ? t.doneNs : t.sentNs, TrafficDirection::In, m_currentLink, verdict, t.id, {});
     }
-    enforceLimit();
-    publish();
-    Q_EMIT countsChanged();
+    appended();
 }
 
 void TrafficModel::publish()
 {
-    if (m_paused || m_published == m_store.size())
+    if (m_paused || m_publishedEnd == m_log->appended())
         return;
-    const qsizetype from = m_published;
-    const qsizetype to = m_store.size();
+    const quint64 first = m_log->firstSequence();
+    const quint64 from = m_publishedEnd;
+    const quint64 to = m_log->appended();
     if (!m_filtered) {
-        beginInsertRows({}, int(from), int(to - 1));
-        m_published = to;
+        beginInsertRows({}, int(from - first), int(to - first - 1));
+        m_publishedEnd = to;
         endInsertRows();
         return;
     }
     std::vector<quint32> accepted;
-    for (qsizetype i = from; i < to; ++i) {
-        if (m_filter.accepts(m_store.row(i)))
-            accepted.push_back(quint32(i));
-    }
-    m_published = to;
+    m_log->visit(from, true, [&](const TrafficEntry &e) {
+        if (m_filter.accepts(e, keysAt(qsizetype(e.sequence - first))))
+            accepted.push_back(quint32(e.sequence - first));
+        return true;
+    });
+    m_publishedEnd = to;
     if (accepted.empty())
         return;
-    const int first = int(m_shown.size());
-    beginInsertRows({}, first, first + int(accepted.size()) - 1);
+    const int firstRow = int(m_shown.size());
+    beginInsertRows({}, firstRow, firstRow + int(accepted.size()) - 1);
     m_shown.insert(m_shown.end(), accepted.begin(), accepted.end());
     endInsertRows();
 }
 
-// Rows are dropped a tenth of the limit at a time, so the cost of moving the rest is paid rarely.
+// Rows are dropped a tenth of a limit at a time, so the cost of moving the rest is paid rarely.
 void TrafficModel::enforceLimit()
 {
-    if (m_store.size() <= m_rowLimit)
+    const auto size = qsizetype(m_log->size());
+    qsizetype drop = 0;
+    if (size > m_rowLimit)
+        drop = size - m_rowLimit + m_rowLimit / 10;
+    if (m_log->retainedBytes() > m_byteLimit) {
+        const quint64 target = m_byteLimit - m_byteLimit / 10;
+        quint64 bytes = m_log->retainedBytes();
+        qsizetype count = 0;
+        m_log->visit(m_log->firstSequence(), true, [&](const TrafficEntry &e) {
+            bytes -= 24 + quint64(e.bytes.size());
+            ++count;
+            return bytes > target;
+        });
+        drop = std::max(drop, count);
+    }
+    if (drop <= 0)
         return;
-    const qsizetype drop = m_store.size() - m_rowLimit + m_rowLimit / 10;
-    const qsizetype publishedDropped = std::min(drop, m_published);
+    const qsizetype published = qsizetype(m_publishedEnd - m_log->firstSequence());
+    const qsizetype publishedDropped = std::min(drop, published);
     const int shownDropped = m_filtered
         ? int(std::lower_bound(m_shown.begin(), m_shown.end(), quint32(publishedDropped)) - m_shown.begin())
         : int(publishedDropped);
     if (shownDropped > 0)
         beginRemoveRows({}, 0, shownDropped - 1);
-    m_store.removeFront(drop);
-    m_published -= publishedDropped;
-    m_dropped += quint64(drop);
+    m_log->dropOldest(quint64(drop));
+    if (m_publishedEnd < m_log->firstSequence())
+        m_publishedEnd = m_log->firstSequence();
     if (m_filtered) {
         m_shown.erase(m_shown.begin(), m_shown.begin() + shownDropped);
         for (quint32 &row : m_shown)
@@ -199,10 +316,10 @@ void TrafficModel::enforceLimit()
 void TrafficModel::clear()
 {
     beginResetModel();
-    m_store.clear();
+    m_log = std::make_unique<TrafficLog>(unbounded());
+    std::fill(m_pairs.begin(), m_pairs.end(), PairSlot{});
     std::vector<quint32>().swap(m_shown);
-    m_published = 0;
-    m_dropped = 0;
+    m_publishedEnd = 0;
     m_hasOrigin = false;
     endResetModel();
     Q_EMIT countsChanged();
@@ -214,27 +331,27 @@ FrameExchange TrafficModel::exchangeAt(int row) const
     const qsizetype s = storeRow(row);
     if (s < 0)
         return e;
-    const TrafficStore::Row &r = m_store.row(s);
-    const qsizetype paired = m_store.pairedRow(s);
-    e.selected = r.direction;
-    e.framing = m_store.linkFraming(r.link);
-    e.link = m_store.linkName(r.link);
-    e.transactionId = r.transactionId;
-    if (r.direction == TrafficDirection::Out) {
-        e.request = m_store.bytes(s).toByteArray();
+    const TrafficEntry frame = frameAt(s);
+    const qsizetype paired = pairedRow(s);
+    e.selected = frame.direction;
+    e.framing = m_links.framing(frame.link);
+    e.link = m_links.name(frame.link);
+    e.transactionId = frame.transactionId;
+    e.latencyNs = frame.direction == TrafficDirection::In ? latencyNs(s) : paired >= 0 ? latencyNs(paired) : -1;
+    if (frame.direction == TrafficDirection::Out) {
+        e.request = frame.bytes.toByteArray();
         if (paired >= 0) {
-            e.response = m_store.bytes(paired).toByteArray();
-            e.verdict = m_store.row(paired).verdict;
-            e.latencyNs = m_store.latencyNs(paired);
+            const TrafficEntry answer = frameAt(paired);
+            e.response = answer.bytes.toByteArray();
+            e.verdict = answer.verdict;
         } else {
-            e.verdict = r.verdict;
+            e.verdict = frame.verdict;
         }
     } else {
-        e.response = m_store.bytes(s).toByteArray();
-        e.verdict = r.verdict;
-        e.latencyNs = m_store.latencyNs(s);
+        e.response = frame.bytes.toByteArray();
+        e.verdict = frame.verdict;
         if (paired >= 0)
-            e.request = m_store.bytes(paired).toByteArray();
+            e.request = frameAt(paired).bytes.toByteArray();
     }
     return e;
 }
@@ -244,13 +361,14 @@ int TrafficModel::findNext(const QString &query, int fromRow, bool forward) cons
     const int n = rowCount();
     if (n == 0)
         return -1;
-    const TrafficSearch search(query, m_store);
+    const TrafficSearch search(query, m_links);
     if (search.isEmpty())
         return -1;
     int row = fromRow < 0 ? (forward ? n - 1 : 0) : fromRow;
     for (int k = 0; k < n; ++k) {
         row = forward ? (row + 1) % n : (row - 1 + n) % n;
-        if (search.matches(storeRow(row)))
+        const qsizetype s = storeRow(row);
+        if (search.matches(frameAt(s), keysAt(s)))
             return row;
     }
     return -1;
@@ -258,14 +376,15 @@ int TrafficModel::findNext(const QString &query, int fromRow, bool forward) cons
 
 std::size_t TrafficModel::memoryBytes() const
 {
-    return m_store.memoryBytes() + m_shown.capacity() * sizeof(quint32);
+    return m_log->memoryBytes() + m_links.memoryBytes() + m_shown.capacity() * sizeof(quint32)
+        + m_pairs.capacity() * sizeof(PairSlot);
 }
 
 int TrafficModel::rowCount(const QModelIndex &parent) const
 {
     if (parent.isValid())
         return 0;
-    return m_filtered ? int(m_shown.size()) : int(m_published);
+    return m_filtered ? int(m_shown.size()) : int(m_publishedEnd - m_log->firstSequence());
 }
 
 int TrafficModel::columnCount(const QModelIndex &parent) const
@@ -294,7 +413,7 @@ QVariant TrafficModel::headerData(int section, Qt::Orientation orientation, int 
     } else if (role == Qt::ToolTipRole) {
         switch (Column(section)) {
         case TimeColumn: return tr("Seconds since the first frame listed (monotonic clock)");
-        case LatencyColumn: return tr("From the request written to its answer");
+        case LatencyColumn: return tr("From the request's write to the first byte of its answer, as the recording keeps them; the Analysis dock measures from the request's last byte to the answer's last byte");
         case VerdictColumn: return tr("What became of the frame: a request is 'sent', its answer carries the verdict");
         default: break;
         }
@@ -308,7 +427,7 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
         return {};
     const qsizetype s = storeRow(index.row());
     const int column = index.column();
-    const TrafficStore::Row &r = m_store.row(s);
+    const TrafficEntry r = frameAt(s);
     switch (role) {
     case Qt::DisplayRole:
         return displayText(s, column);
@@ -338,13 +457,13 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
     case TransactionIdRole:
         return qulonglong(r.transactionId);
     case LatencyNsRole:
-        return qlonglong(m_store.latencyNs(s));
+        return qlonglong(latencyNs(s));
     case TimeNsRole:
         return qlonglong(r.tNs);
     case StoreRowRole:
         return qlonglong(s);
     case BytesRole:
-        return m_store.bytes(s).toByteArray();
+        return r.bytes.toByteArray();
     default:
         return {};
     }
@@ -352,36 +471,40 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
 
 QVariant TrafficModel::displayText(qsizetype s, int column) const
 {
-    const TrafficStore::Row &r = m_store.row(s);
+    const TrafficEntry r = frameAt(s);
     switch (Column(column)) {
     case NumberColumn:
-        return QString::number(m_dropped + quint64(s) + 1);
+        return QString::number(r.sequence + 1);
     case TimeColumn:
         return QString::number(double(r.tNs - m_originNs) / 1e9, 'f', 6);
     case DirectionColumn:
         return TrafficStyle::directionText(r.direction);
     case LinkColumn: {
-        const QString name = m_store.linkName(r.link);
+        const QString name = m_links.name(r.link);
         return name.isEmpty() ? tr("link %1").arg(r.link) : name;
     }
-    case UnitColumn:
-        return r.hasUnit() ? QVariant(QString::number(r.unit)) : QVariant();
+    case UnitColumn: {
+        const FrameKeys keys = keysAt(s);
+        return keys.valid ? QVariant(QString::number(keys.unit)) : QVariant();
+    }
     case FunctionColumn: {
-        if (!r.hasFunction())
+        const FrameKeys keys = keysAt(s);
+        if (!keys.valid)
             return {};
+        const quint8 function = keys.functionCode;
         // An exception response is its request's code with the high bit set (V1.1b3, 7).
-        if (r.function & 0x80)
-            return tr("%1 Exception to %2").arg(hexByte(r.function), fieldText(functionName(r.function & 0x7F)));
-        return hexByte(r.function) + QLatin1Char(' ') + fieldText(functionName(r.function));
+        if (function & 0x80)
+            return tr("%1 Exception to %2").arg(hexByte(function), fieldText(functionName(function & 0x7F)));
+        return hexByte(function) + QLatin1Char(' ') + fieldText(functionName(function));
     }
     case LengthColumn:
-        return QString::number(r.length);
+        return QString::number(r.bytes.size());
     case LatencyColumn:
-        return ExchangeFormat::latencyText(m_store.latencyNs(s));
+        return ExchangeFormat::latencyText(latencyNs(s));
     case VerdictColumn:
         return TrafficStyle::verdictText(r.verdict);
     case BytesColumn: {
-        const QByteArrayView bytes = m_store.bytes(s);
+        const QByteArrayView bytes = r.bytes;
         if (bytes.size() <= kBytesShown)
             return HexText::format(bytes);
         return HexText::format(bytes.first(kBytesShown)) + QStringLiteral(" \u2026");
@@ -394,7 +517,7 @@ QVariant TrafficModel::displayText(qsizetype s, int column) const
 
 QVariant TrafficModel::foreground(qsizetype s, int column) const
 {
-    const TrafficStore::Row &r = m_store.row(s);
+    const TrafficEntry r = frameAt(s);
     if (column == DirectionColumn)
         return TrafficStyle::directionColor(r.direction);
     if (column == VerdictColumn) {
@@ -409,28 +532,28 @@ QVariant TrafficModel::foreground(qsizetype s, int column) const
 // stand out while scrolling; warnings colour only their verdict.
 QVariant TrafficModel::background(qsizetype s) const
 {
-    const Severity severity = TrafficStyle::severity(m_store.row(s).verdict);
+    const Severity severity = TrafficStyle::severity(frameAt(s).verdict);
     return severity == Severity::Error ? QVariant(SeverityStyle::backgroundColor(severity)) : QVariant();
 }
 
 QString TrafficModel::toolTip(qsizetype s, int column) const
 {
-    const TrafficStore::Row &r = m_store.row(s);
+    const TrafficEntry r = frameAt(s);
     switch (column) {
     case BytesColumn: {
-        const QByteArrayView bytes = m_store.bytes(s);
+        const QByteArrayView bytes = r.bytes;
         HexText::FormatOptions options;
         options.bytesPerLine = 16;
         return bytes.isEmpty() ? tr("No bytes") : HexText::format(bytes, options);
     }
     case LatencyColumn:
     case VerdictColumn: {
-        const qsizetype paired = m_store.pairedRow(s);
+        const qsizetype paired = pairedRow(s);
         if (paired < 0)
             return r.direction == TrafficDirection::In && r.transactionId == 0 ? tr("Not an answer to any request sent")
                                                                                : QString();
-        return r.direction == TrafficDirection::In ? tr("Answers frame %1").arg(m_dropped + quint64(paired) + 1)
-                                                   : tr("Answered in frame %1").arg(m_dropped + quint64(paired) + 1);
+        return r.direction == TrafficDirection::In ? tr("Answers frame %1").arg(sequenceOf(paired) + 1)
+                                                   : tr("Answered in frame %1").arg(sequenceOf(paired) + 1);
     }
     default:
         return {};

@@ -2,30 +2,35 @@
 
 #include "common/frameexchange.h"
 #include "trafficfilter.h"
-#include "trafficstore.h"
+#include "trafficlinks.h"
 
 #include "exchange/trafficentry.h"
 #include "exchange/transaction.h"
+#include "traffic/trafficlog.h"
 
 #include <QtCore/QAbstractTableModel>
 #include <QtCore/QList>
 #include <QtGui/QFont>
 
+#include <memory>
 #include <vector>
 
 namespace mbscope {
 
-// Every frame in and out, as a table that stays smooth with millions of rows: frames are kept in
-// a TrafficStore (48 bytes a row plus the bytes), appended in one beginInsertRows per batch, and
-// cell text is made only in data(). Filtering keeps a vector of the shown rows' indexes (none
-// while everything is shown). Pausing holds new rows back from the views, never drops them.
+// Every frame in and out, as a table that stays smooth with millions of rows. The frames are the
+// engine's traffic log, kept in a TrafficLog of the list's own (the engine's lives in the engine
+// thread): the same frames, verdicts and transaction ids, about 32 bytes a small frame, appended
+// in one beginInsertRows per batch; cell text is made only in data(). An answer's request is the
+// latest frame out of its link with the answer's transaction id (the engine's pairing), looked up
+// when needed. Filtering keeps a vector of the shown rows' indexes (none while everything is
+// shown). Pausing holds new rows back from the views, never drops them.
 //
-// Feeds: appendFrames() takes the traffic log's frames (TrafficLog::copy, a journal read back),
-// which carry every frame, unsolicited and garbage ones included; appendTransactions() takes
-// TransactionEngine::transactionsFinished's batches and makes the request and answer rows of each
-// (a late answer adds only its answer row), and appendLinkFrames() the frames of no transaction
-// (TransactionEngine::unmatchedFrames), so the two make every frame. Feed the log's frames or
-// the engine's batches, not both, or frames show twice.
+// Feeds: appendLinkFrames() takes TransactionEngine::framesLogged's batches, appendFrames() a
+// traffic log's frames with its link ids (TrafficLog::copy, a journal read back). Engines that do
+// not publish their frames (a test plan's, a replay's) feed appendTransactions(): each
+// transaction becomes the frames its engine's log holds (the request out, then the answer in, or
+// an empty frame in with the verdict; a late answer only its answer). Feed an engine's frames or
+// its transactions, not both, or frames show twice.
 class TrafficModel : public QAbstractTableModel
 {
     Q_OBJECT
@@ -59,8 +64,13 @@ public:
 
     // Bytes shown in the Bytes column before "…"; the tooltip has them all.
     static constexpr int kBytesShown = 24;
+    // An answer's request is looked for this many frames back at most (deep pipelining, many
+    // links), so a lost request never costs a scan of the whole list.
+    static constexpr int kPairWindow = 4096;
+    static constexpr qsizetype kPairCacheSize = 8192;
 
     explicit TrafficModel(QObject *parent = nullptr);
+    ~TrafficModel() override;
 
     // Names the engine's link ids (TrafficLog::links) for frames fed by appendFrames.
     void setLinkName(quint16 link, const QString &url);
@@ -73,17 +83,31 @@ public:
     void setPaused(bool paused);
     [[nodiscard]] bool isPaused() const { return m_paused; }
     // Rows stored but not shown yet because the model is paused.
-    [[nodiscard]] qsizetype heldCount() const { return m_store.size() - m_published; }
+    [[nodiscard]] qsizetype heldCount() const { return qsizetype(m_log->appended() - m_publishedEnd); }
 
-    // At most this many frames are kept (default 5 million); beyond it the oldest tenth goes.
+    // At most this many frames (default 5 million) and bytes of frames and their records (default
+    // 1 GiB) are kept; beyond either the oldest tenth goes.
     void setRowLimit(qsizetype limit);
     [[nodiscard]] qsizetype rowLimit() const { return m_rowLimit; }
-    // Oldest rows dropped for the limit since the last clear.
-    [[nodiscard]] quint64 droppedCount() const { return m_dropped; }
+    void setByteLimit(quint64 bytes);
+    [[nodiscard]] quint64 byteLimit() const { return m_byteLimit; }
+    // Oldest rows dropped for the limits since the last clear.
+    [[nodiscard]] quint64 droppedCount() const { return m_log->firstSequence(); }
 
-    [[nodiscard]] const TrafficStore &store() const { return m_store; }
+    // The frames kept, shown or not (held, filtered out).
+    [[nodiscard]] qsizetype frameCount() const { return qsizetype(m_log->size()); }
+    [[nodiscard]] const TrafficLog &log() const { return *m_log; }
+    [[nodiscard]] const TrafficLinks &links() const { return m_links; }
+    // A row's frame by its index among the frames kept (0: the oldest kept).
     [[nodiscard]] qsizetype storeRow(int row) const; // -1 for an invalid row
     [[nodiscard]] int rowOfStoreRow(qsizetype storeRow) const; // -1 when filtered out or held
+    [[nodiscard]] TrafficEntry frameAt(qsizetype storeRow) const;
+    // The request an answer belongs to, or the answer a request got (-1: none known), and an
+    // answer's latency: its first byte read minus its request written (-1: none).
+    [[nodiscard]] qsizetype pairedRow(qsizetype storeRow) const;
+    [[nodiscard]] qint64 latencyNs(qsizetype storeRow) const;
+    // Unit and function code of a frame; an empty frame in (timeout, link error) has its request's.
+    [[nodiscard]] FrameKeys keysAt(qsizetype storeRow) const;
     // The frame of a row with the frame it pairs with, for the decode view.
     [[nodiscard]] FrameExchange exchangeAt(int row) const;
     // The next (or previous) shown row after fromRow matching query (TrafficSearch), wrapping
@@ -101,8 +125,7 @@ public:
 public Q_SLOTS:
     void appendFrames(const QList<mbscope::TrafficFrame> &frames);
     void appendTransactions(const QList<mbscope::Transaction> &transactions);
-    // Frames of one link named by its URL (TransactionEngine::unmatchedFrames): unsolicited,
-    // duplicate and garbage frames with their verdicts.
+    // Frames of one link named by its URL (TransactionEngine::framesLogged).
     void appendLinkFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void clear();
 
@@ -111,22 +134,35 @@ Q_SIGNALS:
     void countsChanged();
 
 private:
+    // A frame kept by the log (TrafficLog's own limits are off: the model drops whole tenths).
+    void keep(qint64 tNs, TrafficDirection direction, quint16 link, TrafficVerdict verdict, quint64 transactionId,
+              QByteArrayView bytes);
+    void appended();
     void publish();
     void rebuildShown();
     void enforceLimit();
+    [[nodiscard]] quint64 sequenceOf(qsizetype storeRow) const { return m_log->firstSequence() + quint64(storeRow); }
     [[nodiscard]] QVariant displayText(qsizetype storeRow, int column) const;
     [[nodiscard]] QVariant foreground(qsizetype storeRow, int column) const;
     [[nodiscard]] QVariant background(qsizetype storeRow) const;
     [[nodiscard]] QString toolTip(qsizetype storeRow, int column) const;
 
-    TrafficStore m_store;
+    std::unique_ptr<TrafficLog> m_log;
+    TrafficLinks m_links;
+    // Pairs found, so painting does not look them up again: a slot per frame sequence modulo
+    // the size (sequence + 1, 0: empty; the pair's sequence). Fixed size: it never grows.
+    struct PairSlot {
+        quint64 key = 0;
+        quint64 paired = 0;
+    };
+    mutable std::vector<PairSlot> m_pairs;
     TrafficFilter m_filter;
     std::vector<quint32> m_shown; // store rows shown, when the filter does not accept all
     bool m_filtered = false;
     bool m_paused = false;
-    qsizetype m_published = 0; // store rows the views have been told about
+    quint64 m_publishedEnd = 0; // the sequence after the last frame the views have been told about
     qsizetype m_rowLimit = 5'000'000;
-    quint64 m_dropped = 0;     // rows dropped for the limit since the last clear: numbers go on
+    quint64 m_byteLimit = quint64(1) << 30;
     qint64 m_originNs = 0;     // the Time column counts from the first frame
     bool m_hasOrigin = false;
     QFont m_monoFont;          // for the Bytes column

@@ -9,9 +9,16 @@
 #include "protocol/functioncode.h"
 #include "protocol/hexformat.h"
 
+#include <QtCore/QDir>
+#include <QtCore/QFileInfo>
+#include <QtCore/QStandardPaths>
+#include <QtGui/QAction>
 #include <QtGui/QKeySequence>
 #include <QtGui/QShortcut>
 #include <QtWidgets/QComboBox>
+#include <QtWidgets/QFileDialog>
+#include <QtWidgets/QMessageBox>
+#include <QtWidgets/QPushButton>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QHeaderView>
 #include <QtWidgets/QLabel>
@@ -97,6 +104,15 @@ void TrafficMonitor::buildUi()
     m_clearButton->setToolTip(tr("Empty the list (the connection's traffic journal keeps every frame, unless recording "
                                  "is turned off in Preferences)"));
 
+    m_saveAction = new QAction(tr("Save &Traffic As\u2026"), this);
+    m_saveAction->setObjectName(QStringLiteral("saveTrafficAction"));
+    m_saveAction->setToolTip(tr("Save the frames listed (all, or what the filter shows) as a traffic journal, a "
+                                "Wireshark capture (pcapng, pcap), CSV or JSON lines"));
+    auto *saveButton = new QToolButton(this);
+    saveButton->setObjectName(QStringLiteral("saveTrafficButton"));
+    saveButton->setDefaultAction(m_saveAction);
+    saveButton->setText(tr("Save\u2026"));
+
     m_searchEdit = new QLineEdit(this);
     m_searchEdit->setObjectName(QStringLiteral("searchEdit"));
     m_searchEdit->setClearButtonEnabled(true);
@@ -122,6 +138,7 @@ void TrafficMonitor::buildUi()
     filters->addSpacing(8);
     filters->addWidget(m_pauseButton);
     filters->addWidget(m_clearButton);
+    filters->addWidget(saveButton);
     filters->addSpacing(8);
     filters->addWidget(m_searchEdit, 1);
     filters->addWidget(previous);
@@ -166,6 +183,7 @@ void TrafficMonitor::buildUi()
     connect(m_verdictCombo, &QComboBox::currentIndexChanged, this, &TrafficMonitor::applyFilter);
     connect(m_pauseButton, &QToolButton::toggled, this, &TrafficMonitor::setPaused);
     connect(m_clearButton, &QToolButton::clicked, this, &TrafficMonitor::clear);
+    connect(m_saveAction, &QAction::triggered, this, &TrafficMonitor::saveTrafficAs);
     connect(m_searchEdit, &QLineEdit::returnPressed, this, &TrafficMonitor::findNext);
     connect(next, &QToolButton::clicked, this, &TrafficMonitor::findNext);
     connect(previous, &QToolButton::clicked, this, &TrafficMonitor::findPrevious);
@@ -178,6 +196,79 @@ void TrafficMonitor::buildUi()
     shortcut(QKeySequence::Find, &TrafficMonitor::focusSearch);
     shortcut(QKeySequence::FindNext, &TrafficMonitor::findNext);
     shortcut(QKeySequence::FindPrevious, &TrafficMonitor::findPrevious);
+}
+
+void TrafficMonitor::saveTrafficAs()
+{
+    if (m_model->frameCount() == 0) {
+        m_findMessage = tr("nothing to save: the list is empty");
+        updateStatus();
+        return;
+    }
+    const QLocale locale;
+    bool shownOnly = false;
+    const qsizetype listed = m_model->frameCount() - m_model->heldCount();
+    if (m_model->rowCount() != listed) {
+        QMessageBox ask(QMessageBox::Question, tr("Save Traffic"),
+                        tr("The filter shows %1 of the %2 frames listed. Save which?")
+                            .arg(locale.toString(m_model->rowCount()), locale.toString(qlonglong(m_model->frameCount()))),
+                        QMessageBox::Cancel, this);
+        ask.setObjectName(QStringLiteral("saveWhichFrames"));
+        QPushButton *all = ask.addButton(tr("&All frames"), QMessageBox::AcceptRole);
+        QPushButton *shown = ask.addButton(tr("&Shown frames"), QMessageBox::AcceptRole);
+        ask.setDefaultButton(all);
+        ask.exec();
+        if (ask.clickedButton() != all && ask.clickedButton() != shown)
+            return;
+        shownOnly = ask.clickedButton() == shown;
+    }
+    QFileDialog dialog(this, tr("Save Traffic As"));
+    dialog.setObjectName(QStringLiteral("saveTrafficDialog"));
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    dialog.setFileMode(QFileDialog::AnyFile);
+    dialog.setNameFilters(TrafficSaver::nameFilters());
+    if (m_lastSaveDirectory.isEmpty())
+        m_lastSaveDirectory = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    dialog.setDirectory(m_lastSaveDirectory);
+    dialog.selectFile(QStringLiteral("traffic") + TrafficSaver::suffix(TrafficSaver::Format::Journal));
+    connect(&dialog, &QFileDialog::filterSelected, &dialog, [&dialog](const QString &filter) {
+        // The name follows the format picked, so the file is found again under that filter.
+        const QStringList picked = dialog.selectedFiles();
+        if (picked.isEmpty())
+            return;
+        QString name = QFileInfo(picked.constFirst()).fileName();
+        const TrafficSaver::Format was = TrafficSaver::formatFor(name);
+        if (name.endsWith(TrafficSaver::suffix(was), Qt::CaseInsensitive))
+            name.chop(TrafficSaver::suffix(was).size());
+        dialog.selectFile(name + TrafficSaver::suffix(TrafficSaver::formatOfFilter(filter)));
+    });
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
+        return;
+    QString path = dialog.selectedFiles().constFirst();
+    const TrafficSaver::Format format = TrafficSaver::formatOfFilter(dialog.selectedNameFilter());
+    // A name without the format's ending gets it: the file shows under the same filter later.
+    if (!path.endsWith(TrafficSaver::suffix(format), Qt::CaseInsensitive)
+        && !(format == TrafficSaver::Format::JsonLines && path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)))
+        path += TrafficSaver::suffix(format);
+    m_lastSaveDirectory = QFileInfo(path).absolutePath();
+    const TrafficSaver::Result result = saveTo(path, format, shownOnly);
+    auto *box = new QMessageBox(result.ok ? QMessageBox::Information : QMessageBox::Warning, tr("Save Traffic"),
+                                result.summary(format, path), QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("trafficSavedMessage"));
+    box->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+TrafficSaver::Result TrafficMonitor::saveTo(const QString &path, TrafficSaver::Format format, bool shownOnly)
+{
+    const QStringList &links = m_model->links().names();
+    const TrafficSaver::Result result =
+        TrafficSaver::save(*m_model, shownOnly, path, format, links.isEmpty() ? QString() : links.constLast());
+    m_findMessage = result.summary(format, path);
+    updateStatus();
+    Q_EMIT saved(m_findMessage, result.ok);
+    return result;
 }
 
 void TrafficMonitor::appendFrames(const QList<TrafficFrame> &frames)
@@ -315,8 +406,8 @@ void TrafficMonitor::find(bool forward)
 void TrafficMonitor::updateStatus()
 {
     const QLocale locale;
-    QString text = tr("%1 frames").arg(locale.toString(qlonglong(m_model->store().size())));
-    if (m_model->rowCount() != m_model->store().size() - m_model->heldCount())
+    QString text = tr("%1 frames").arg(locale.toString(qlonglong(m_model->frameCount())));
+    if (m_model->rowCount() != m_model->frameCount() - m_model->heldCount())
         text += tr(", %1 shown").arg(locale.toString(m_model->rowCount()));
     if (m_model->isPaused())
         text += tr(" \u00B7 paused: %1 new frames held").arg(locale.toString(qlonglong(m_model->heldCount())));

@@ -1,12 +1,14 @@
 #pragma once
 
 #include "common/frameexchange.h"
+#include "trafficsaver.h"
 
 #include "exchange/trafficentry.h"
 #include "exchange/transaction.h"
 
 #include <QtWidgets/QWidget>
 
+class QAction;
 class QCheckBox;
 class QComboBox;
 class QLabel;
@@ -21,8 +23,9 @@ class TrafficModel;
 
 // The traffic list of the workbench: every frame in and out, newest at the bottom (followed while
 // the view is scrolled to the end), filters by unit, function, direction and verdict, pause,
-// clear and find (hex or text). Selecting a row emits the frame with its request or answer, for the
-// decode view.
+// clear, find (hex or text) and "Save Traffic As" (all frames or the rows shown, as a journal,
+// pcapng, pcap, CSV or JSON lines). Selecting a row emits the frame with its request or answer,
+// for the decode view.
 class TrafficMonitor : public QWidget
 {
     Q_OBJECT
@@ -32,6 +35,12 @@ public:
 
     [[nodiscard]] TrafficModel *model() const { return m_model; }
     [[nodiscard]] QTableView *view() const { return m_view; }
+
+    // "Save Traffic As…": for the File menu; the dock's Save button runs it too.
+    [[nodiscard]] QAction *saveAction() const { return m_saveAction; }
+    // Saves without asking (saveTrafficAs asks where, what and in which format, then calls it);
+    // the outcome is shown in the status line and emitted.
+    TrafficSaver::Result saveTo(const QString &path, TrafficSaver::Format format, bool shownOnly);
 
     [[nodiscard]] bool isPaused() const;
     // The shown row selected, or -1.
@@ -48,9 +57,15 @@ public Q_SLOTS:
     void focusSearch();
     void findNext();
     void findPrevious();
+    // Asks whether to save all frames or the rows shown (when a filter hides some), then for the
+    // file and its format, saves, and shows what was written (with the option Wireshark needs
+    // for RTU frames).
+    void saveTrafficAs();
 
 Q_SIGNALS:
     void frameSelected(const mbscope::FrameExchange &exchange);
+    // A save's outcome, one line (TrafficSaver::Result::summary).
+    void saved(const QString &summary, bool ok);
 
 private:
     void buildUi();
@@ -69,6 +84,8 @@ private:
     QComboBox *m_verdictCombo = nullptr;
     QToolButton *m_pauseButton = nullptr;
     QToolButton *m_clearButton = nullptr;
+    QAction *m_saveAction = nullptr;
+    QString m_lastSaveDirectory;
     QLineEdit *m_searchEdit = nullptr;
     QLabel *m_statusLabel = nullptr;
     QString m_findMessage; // the last find's outcome, shown until the next find or filter

@@ -16,8 +16,7 @@ char lower(char c)
 
 } // namespace
 
-TrafficSearch::TrafficSearch(const QString &query, const TrafficStore &store)
-    : m_store(store)
+TrafficSearch::TrafficSearch(const QString &query, const TrafficLinks &links)
 {
     const QString text = query.trimmed();
     m_empty = text.isEmpty();
@@ -32,24 +31,23 @@ TrafficSearch::TrafficSearch(const QString &query, const TrafficStore &store)
         m_verdictMatches[size_t(v)] = contains(QLatin1String(trafficVerdictName(TrafficVerdict(v))));
     for (int code = 0; code < 256; ++code)
         m_functionMatches[size_t(code)] = contains(QLatin1String(functionName(quint8(code)))) || contains(fieldText(functionName(quint8(code))));
-    const QStringList &links = store.linkNames();
-    m_linkMatches.resize(size_t(links.size()));
-    for (qsizetype i = 0; i < links.size(); ++i)
-        m_linkMatches[size_t(i)] = contains(links.at(i));
+    const QStringList &names = links.names();
+    m_linkMatches.resize(size_t(names.size()));
+    for (qsizetype i = 0; i < names.size(); ++i)
+        m_linkMatches[size_t(i)] = contains(names.at(i));
 }
 
-bool TrafficSearch::matches(qsizetype storeRow) const
+bool TrafficSearch::matches(const TrafficEntry &frame, const FrameKeys &keys) const
 {
     if (m_empty)
         return false;
-    const TrafficStore::Row &r = m_store.row(storeRow);
-    if (m_verdictMatches[size_t(r.verdict)])
+    if (m_verdictMatches[size_t(frame.verdict)])
         return true;
-    if (r.hasFunction() && m_functionMatches[r.function])
+    if (keys.valid && m_functionMatches[keys.functionCode])
         return true;
-    if (r.link < m_linkMatches.size() && m_linkMatches[r.link])
+    if (frame.link < m_linkMatches.size() && m_linkMatches[frame.link])
         return true;
-    const QByteArrayView bytes = m_store.bytes(storeRow);
+    const QByteArrayView bytes = frame.bytes;
     if (!m_hex.isEmpty() && bytes.indexOf(m_hex) >= 0)
         return true;
     // As characters, case-insensitive: ASCII frames are hex digits in either case.

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "trafficstore.h"
+#include "trafficlinks.h"
 
 #include <QtCore/QByteArray>
 #include <QtCore/QString>
@@ -18,14 +18,14 @@ namespace mbscope {
 class TrafficSearch
 {
 public:
-    TrafficSearch(const QString &query, const TrafficStore &store);
+    TrafficSearch(const QString &query, const TrafficLinks &links);
 
     [[nodiscard]] bool isEmpty() const { return m_empty; }
     [[nodiscard]] bool isHex() const { return !m_hex.isEmpty(); }
-    [[nodiscard]] bool matches(qsizetype storeRow) const;
+    // A frame with its unit and function code (for an empty frame in: its request's).
+    [[nodiscard]] bool matches(const TrafficEntry &frame, const FrameKeys &keys) const;
 
 private:
-    const TrafficStore &m_store;
     QByteArray m_hex;   // the query as bytes, when it reads as hex
     QByteArray m_latin; // the query as characters, lower case
     std::array<bool, kTrafficVerdictCount> m_verdictMatches{};

@@ -1,8 +1,9 @@
-// The traffic monitor fed as the window feeds it: TransactionEngine::transactionsFinished into
-// appendTransactions, against the embedded simulator (rosrao-gamma on rtu-tcp, a port from the
+// The traffic monitor fed as the window feeds it: TransactionEngine::framesLogged into
+// appendLinkFrames, against the embedded simulator (rosrao-gamma on rtu-tcp, a port from the
 // OS), then a device server that never answers. An answered read, an exception and a timeout
-// become their rows, each on its link, with real timestamps and latencies, and selecting a row
-// shows the exchange in a DecodeView.
+// become their rows, each on its link, with real timestamps and latencies; the rows are the
+// engine's own traffic log frame for frame (one store: the same frames, verdicts and transaction
+// ids), and selecting a row shows the exchange in a DecodeView.
 #include "decode/decodeview.h"
 #include "sim/embeddedsimulator.h"
 #include "guitestsupport.h"
@@ -11,6 +12,7 @@
 
 #include "exchange/requestitem.h"
 #include "engine/transactionengine.h"
+#include "traffic/trafficlog.h"
 
 #include <QtNetwork/QTcpServer>
 #include <QtTest/QAbstractItemModelTester>
@@ -55,13 +57,15 @@ void TestTrafficFeed::engineTransactionsBecomeRows()
 
     TrafficMonitor monitor;
     QAbstractItemModelTester tester(monitor.model(), QAbstractItemModelTester::FailureReportingMode::QtTest);
-    monitor.model()->setCurrentLink(url.toString());
     DecodeView decode;
     QObject::connect(&monitor, &TrafficMonitor::frameSelected, &decode, &DecodeView::showExchange);
 
+    TrafficLog log;
     TransactionEngine engine;
     engine.setTarget(url);
-    QObject::connect(&engine, &TransactionEngine::transactionsFinished, &monitor, &TrafficMonitor::appendTransactions);
+    engine.setTrafficLog(&log);
+    engine.setFramesPublished(true);
+    QObject::connect(&engine, &TransactionEngine::framesLogged, &monitor, &TrafficMonitor::appendLinkFrames);
 
     RequestItem read = RequestItem::forLink(kRosRaoRead, url);
     const std::optional<Transaction> answered = engine.sendAndWait(read);
@@ -78,9 +82,6 @@ void TestTrafficFeed::engineTransactionsBecomeRows()
     const LinkUrl::Result quiet = LinkUrl::parse(QStringLiteral("rtu-tcp://127.0.0.1:%1").arg(silent.serverPort()));
     QVERIFY2(quiet.url, qPrintable(quiet.error));
     engine.setTarget(*quiet.url);
-    // The first link's batch is in before the rows of the next link are named after it.
-    QTRY_COMPARE(monitor.model()->rowCount(), 4);
-    monitor.model()->setCurrentLink(quiet.url->toString());
     RequestItem nobody = RequestItem::forLink(withCrc(QByteArray::fromHex("630300790001")), *quiet.url);
     nobody.timeoutMs = 200;
     const std::optional<Transaction> timeout = engine.sendAndWait(nobody);
@@ -100,7 +101,23 @@ void TestTrafficFeed::engineTransactionsBecomeRows()
     QCOMPARE(text(1, TrafficModel::UnitColumn), QStringLiteral("1"));
     QCOMPARE(text(4, TrafficModel::UnitColumn), QStringLiteral("99"));
     QCOMPARE(text(5, TrafficModel::LengthColumn), QStringLiteral("0"));
-    QCOMPARE(model->data(model->index(1, 0), TrafficModel::LatencyNsRole).toLongLong() / 1000, answered->latencyNs() / 1000);
+    QCOMPARE(text(5, TrafficModel::UnitColumn), QStringLiteral("99")); // a timeout's unit is its request's
+
+    // The rows are the engine's log, frame for frame.
+    engine.setTrafficLog(nullptr);
+    QCOMPARE(log.size(), quint64(6));
+    for (int r = 0; r < 6; ++r) {
+        const TrafficEntry logged = log.at(quint64(r));
+        const TrafficEntry listed = model->frameAt(model->storeRow(r));
+        QCOMPARE(listed.tNs, logged.tNs);
+        QCOMPARE(listed.direction, logged.direction);
+        QCOMPARE(listed.verdict, logged.verdict);
+        QCOMPARE(listed.transactionId, logged.transactionId);
+        QCOMPARE(listed.bytes.toByteArray(), logged.bytes.toByteArray());
+        QCOMPARE(model->links().name(listed.link), log.linkName(logged.link));
+    }
+    // Latency as the log tells it: the request's write to the answer's first byte.
+    QCOMPARE(model->data(model->index(1, 0), TrafficModel::LatencyNsRole).toLongLong(), log.at(1).tNs - log.at(0).tNs);
     QVERIFY(answered->latencyNs() > 0);
 
     monitor.selectRow(1);

@@ -1,4 +1,4 @@
-// TrafficModel and its parts (TrafficStore, TrafficFilter, TrafficSearch): unit and function read
+// TrafficModel and its parts (TrafficLinks, TrafficFilter, TrafficSearch): unit and function read
 // per framing, answers paired with their requests (latency, the decode view's exchange), both
 // feeds (traffic log frames, engine transactions), filters, pause, clear, find, the row limit;
 // QAbstractItemModelTester watches every change. A million rows are appended in batches and
@@ -245,14 +245,17 @@ void TestTrafficModel::transactionsFeed()
         QCOMPARE(cell(*m_model, r, TrafficModel::VerdictColumn), verdicts.at(r));
         QCOMPARE(cell(*m_model, r, TrafficModel::LinkColumn), kRtuTcp);
     }
-    // The engine's latency (request written to the answer's last byte), not the first byte's.
-    QCOMPARE(cell(*m_model, 1, TrafficModel::LatencyColumn), QStringLiteral("3.250 ms"));
+    // As the engine's traffic log holds them: request written to the answer's first byte.
+    QCOMPARE(cell(*m_model, 1, TrafficModel::LatencyColumn), QStringLiteral("2.000 ms"));
+    // A timeout's row has no bytes: its unit and function are its request's.
+    QCOMPARE(cell(*m_model, 3, TrafficModel::UnitColumn), QStringLiteral("1"));
+    QCOMPARE(cell(*m_model, 3, TrafficModel::FunctionColumn), QStringLiteral("0x03 Read Holding Registers"));
     // The late answer belongs to the request listed under its timeout.
     const FrameExchange e = m_model->exchangeAt(4);
     QCOMPARE(e.request, kArduinoRequest);
     QCOMPARE(e.response, kArduinoResponse);
     QCOMPARE(e.verdict, TrafficVerdict::Late);
-    QCOMPARE(e.latencyNs, 1'191'000'000);
+    QCOMPARE(e.latencyNs, 1'190'000'000);
 }
 
 // The frames of a TrafficLog (what the engine logs, unsolicited and garbage included) as they
@@ -293,7 +296,8 @@ void TestTrafficModel::filter_data()
 
     QTest::newRow("all") << -1 << -1 << -1 << QList<int>{} << QList<int>{0, 1, 2, 3, 4, 5, 6, 7};
     QTest::newRow("unit 7") << 7 << -1 << -1 << QList<int>{} << QList<int>{6};
-    QTest::newRow("function 03 with its exception") << -1 << 3 << -1 << QList<int>{} << QList<int>{0, 1, 2, 4, 5, 6};
+    // The timeout (3) is its request's: unit 1, function 03.
+    QTest::newRow("function 03 with its exception") << -1 << 3 << -1 << QList<int>{} << QList<int>{0, 1, 2, 3, 4, 5, 6};
     QTest::newRow("in") << -1 << -1 << int(TrafficDirection::In) << QList<int>{} << QList<int>{1, 3, 5, 6, 7};
     QTest::newRow("timeout or exception")
         << -1 << -1 << -1 << QList<int>{int(TrafficVerdict::Timeout), int(TrafficVerdict::Exception)} << QList<int>{3, 5};
@@ -347,7 +351,7 @@ void TestTrafficModel::appendsWhileFiltered()
     // A batch with nothing shown inserts nothing.
     m_model->appendFrames({frame(1, TrafficDirection::Out, TrafficVerdict::Sent, 9, kRosRaoRequest)});
     QCOMPARE(inserted.size(), 2);
-    QCOMPARE(m_model->store().size(), 9);
+    QCOMPARE(m_model->frameCount(), 9);
 }
 
 void TestTrafficModel::pauseHoldsRowsBack()
@@ -369,7 +373,7 @@ void TestTrafficModel::clearEmpties()
     fillSample();
     m_model->clear();
     QCOMPARE(m_model->rowCount(), 0);
-    QCOMPARE(m_model->store().size(), 0);
+    QCOMPARE(m_model->frameCount(), 0);
     // The clock starts again at the first frame after a clear.
     m_model->appendFrames({frame(9'000'000'000, TrafficDirection::Out, TrafficVerdict::Sent, 1, kRosRaoRequest)});
     QCOMPARE(cell(*m_model, 0, TrafficModel::TimeColumn), QStringLiteral("0.000000"));
@@ -430,7 +434,7 @@ void TestTrafficModel::rowLimitDropsTheOldest()
     m_model->setFilter(f);
     QCOMPARE(m_model->rowCount(), 45);
     m_model->appendFrames(batch);
-    QCOMPARE(m_model->store().size(), 90 + 150 - 150);
+    QCOMPARE(m_model->frameCount(), 90 + 150 - 150);
     QCOMPARE(m_model->rowCount(), 45);
     for (int r = 0; r < m_model->rowCount(); ++r)
         QCOMPARE(m_model->data(m_model->index(r, 0), TrafficModel::BytesRole).toByteArray(), kArduinoResponse);
@@ -448,7 +452,6 @@ void TestTrafficModel::cellsAreFormattedLazily()
                     || c == TrafficModel::FunctionColumn || c == TrafficModel::LatencyColumn || c == TrafficModel::BytesColumn);
     }
     QCOMPARE(m_model->memoryBytes(), before);
-    QCOMPARE(sizeof(TrafficStore::Row), std::size_t(48));
 }
 
 void TestTrafficModel::millionRows()

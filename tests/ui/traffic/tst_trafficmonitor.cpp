@@ -143,9 +143,9 @@ void TestTrafficMonitor::filterControls_data()
     QTest::addColumn<int>("rows");
 
     QTest::newRow("all") << -1 << QString() << 0 << QStringLiteral("any") << 21;
-    QTest::newRow("unit 7 (a timeout frame has no unit)") << 7 << QString() << 0 << QStringLiteral("any") << 19;
+    QTest::newRow("unit 7 (a timeout frame has its request's)") << 7 << QString() << 0 << QStringLiteral("any") << 20;
     QTest::newRow("unit 1") << 1 << QString() << 0 << QStringLiteral("any") << 1;
-    QTest::newRow("function 0x03 and its exception") << -1 << QStringLiteral("0x03") << 0 << QStringLiteral("any") << 20;
+    QTest::newRow("function 0x03 and its exception") << -1 << QStringLiteral("0x03") << 0 << QStringLiteral("any") << 21;
     QTest::newRow("function 0x10") << -1 << QStringLiteral("0x10") << 0 << QStringLiteral("any") << 0;
     QTest::newRow("out") << -1 << QString() << 1 << QStringLiteral("any") << 10;
     QTest::newRow("in") << -1 << QString() << 2 << QStringLiteral("any") << 11;
