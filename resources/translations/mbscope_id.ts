@@ -266,7 +266,12 @@
         <translation>%1 adalah referensi ke %2, tetapi fungsi ini mengalamati %3 (%4xxxx)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+21"/>
+        <source>%1 looks like a Modicon reference; its PDU address is %2 (0x%3): choose Modicon (1-based) to type it as one</source>
+        <translation>%1 tampak seperti referensi Modicon; alamat PDU-nya %2 (0x%3): pilih Modicon (mulai 1) untuk mengetiknya sebagai referensi</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>PDU address %1 (0x%2), 0-based</source>
         <translation>Alamat PDU %1 (0x%2), mulai 0</translation>
     </message>
@@ -1061,7 +1066,7 @@
         <translation>Kosongkan Penghitung dan Flag Overrun</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/functioncode.cpp" line="+29"/>
+        <location filename="../../core/protocol/functioncode.cpp" line="+32"/>
         <source>Read Coils</source>
         <translation>Baca Coil</translation>
     </message>
@@ -1170,6 +1175,11 @@
         <location filename="../../core/protocol/pdudissector.cpp" line="+74"/>
         <source>Exception response</source>
         <translation>Respons exception</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invalid function code</source>
+        <translation>Kode fungsi tidak valid</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1292,7 +1302,7 @@
         <translation>Kode exception tidak dikenal: spesifikasi Modbus mendefinisikan 0x01-0x08, 0x0A dan 0x0B</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/modiconreference.cpp" line="+184"/>
+        <location filename="../../core/protocol/modiconreference.cpp" line="+197"/>
         <source>coils</source>
         <translation>coil</translation>
     </message>
@@ -2110,7 +2120,7 @@
         <translation>Kode fungsi</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+82"/>
         <source>Function in error</source>
         <translation>Fungsi yang error</translation>
     </message>
@@ -2118,6 +2128,11 @@
         <location line="+10"/>
         <source>Exception code</source>
         <translation>Kode exception</translation>
+    </message>
+    <message>
+        <location filename="../../core/protocol/dissector.cpp" line="+39"/>
+        <source>Frame too long</source>
+        <translation>Frame terlalu panjang</translation>
     </message>
 </context>
 <context>
@@ -2852,7 +2867,7 @@
 <context>
     <name>mbscope::PlanPanel</name>
     <message>
-        <location filename="../../ui/session/planpanel.cpp" line="+20"/>
+        <location filename="../../ui/session/planpanel.cpp" line="+22"/>
         <source>Export the results as JUnit XML</source>
         <translation>Ekspor hasil sebagai JUnit XML</translation>
     </message>
@@ -3152,7 +3167,7 @@
         <translation>Folder capture</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+22"/>
         <source>New journal &amp;part every (MiB):</source>
         <translation>&amp;Bagian jurnal baru setiap (MiB):</translation>
     </message>
@@ -3162,7 +3177,7 @@
         <translation>Simpan &amp;paling banyak (MiB):</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-14"/>
         <source>A journal that reaches this size is closed and the recording goes on in a new part</source>
         <translation>Jurnal yang mencapai ukuran ini ditutup dan perekaman berlanjut di bagian baru</translation>
     </message>
@@ -3172,12 +3187,12 @@
         <translation>Jurnal tertua di folder capture dihapus agar tetap di bawah ukuran ini (tidak pernah yang sedang ditulis, tidak pernah yang di samping sesi tersimpan)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Capture &amp;folder:</source>
         <translation>&amp;Folder capture:</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Recording</source>
         <translation>Perekaman</translation>
     </message>
