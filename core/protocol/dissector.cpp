@@ -30,13 +30,15 @@ AduLimit aduLimit(Framing framing)
     return {253, "a PDU is at most 253 bytes", "MODBUS Application Protocol V1.1b3, 4.1"};
 }
 
-void checkAduSize(FieldTree &tree, Framing framing)
+// n is the frame's size as it travels: for ASCII its characters, although the tree then holds
+// the decoded bytes (the field goes at their end).
+void checkAduSize(FieldTree &tree, Framing framing, int n)
 {
-    const int n = int(tree.frame().size());
     const AduLimit limit = aduLimit(framing);
     if (n <= limit.bytes)
         return;
-    const int f = tree.add(-1, "frame.too_long", QT_TRANSLATE_NOOP("mbscope::Field", "Frame too long"), limit.bytes, 0,
+    const int at = qMin(limit.bytes, int(tree.frame().size()));
+    const int f = tree.add(-1, "frame.too_long", QT_TRANSLATE_NOOP("mbscope::Field", "Frame too long"), at, 0,
                            quint64(n - limit.bytes), ValueFormat::Decimal);
     // An ASCII frame's bytes are its characters.
     const QString unit = framing == Framing::Ascii ? QStringLiteral("characters") : QStringLiteral("bytes");
@@ -47,6 +49,7 @@ void checkAduSize(FieldTree &tree, Framing framing)
 
 void runFraming(Dissection &out, const adu::RequestInfo &request)
 {
+    const int wireSize = int(out.fields.frame().size());
     switch (out.framing) {
     case Framing::Rtu: adu::dissectRtu(out, request); break;
     case Framing::Ascii: adu::dissectAscii(out, request); break;
@@ -55,7 +58,7 @@ void runFraming(Dissection &out, const adu::RequestInfo &request)
     case Framing::Pdu:
     case Framing::Auto: adu::dissectBarePdu(out, request); break;
     }
-    checkAduSize(out.fields, out.framing);
+    checkAduSize(out.fields, out.framing, wireSize);
 }
 
 bool rtuCrcValid(const QByteArray &b)

@@ -14,6 +14,7 @@
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QProcess>
+#include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
 #include <QtCore/QThread>
 #include <QtTest/QTest>
@@ -176,9 +177,12 @@ void TestCliReplay::replayReportsChangedValues()
                                           QStringLiteral("max"), QStringLiteral("--ignore"), QStringLiteral("modbus.register_value@0x007D")});
     QVERIFY2(ignored.finished && ignored.exitCode == 0, ignored.describe().constData());
     QVERIFY2(ignored.outText().contains(QStringLiteral("differed      0  (values 0, outcome 0, missing answers 0)")), ignored.describe().constData());
-    QVERIFY2(ignored.outText().contains(QStringLiteral("ignored       modbus.register_value@0x007D: differed in 3 answer(s), not counted; "
-                                                       "first modbus.register_value@0x007D: recorded 250, now 251 (request #1)")),
-             ignored.describe().constData());
+    // (The first replay's write put 250 back in unit 1: how many answers still differ depends on
+    // that state, not on --ignore; at least unit 3's does.)
+    static const QRegularExpression ignoredLine(QStringLiteral(
+        R"(\nignored       modbus\.register_value@0x007D: differed in [1-9][0-9]* answer\(s\), not counted; )"
+        R"(first modbus\.register_value@0x007D: recorded 250, now 251 \(request #[0-9]+\)\n)"));
+    QVERIFY2(ignoredLine.match(ignored.outText()).hasMatch(), ignored.describe().constData());
     // The decimal address selects the same field; JSON lists what was ignored.
     const CliResult json = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--target"), sim.url(), QStringLiteral("--speed"),
                                        QStringLiteral("max"), QStringLiteral("--ignore"), QStringLiteral("modbus.register_value@125"), QStringLiteral("--json")});
@@ -186,7 +190,8 @@ void TestCliReplay::replayReportsChangedValues()
     const QJsonArray list = json.json().value(QStringLiteral("ignored")).toArray();
     QCOMPARE(list.size(), 1);
     QCOMPARE(list.at(0).toObject().value(QStringLiteral("field")).toString(), QStringLiteral("modbus.register_value@125"));
-    QCOMPARE(list.at(0).toObject().value(QStringLiteral("answers")).toInt(), 3);
+    QVERIFY(list.at(0).toObject().value(QStringLiteral("answers")).toInt() >= 1);
+    QCOMPARE(json.json().value(QStringLiteral("values_differ")).toInt(), 0);
     // Another field ignored: the change is still a difference.
     const CliResult other = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--target"), sim.url(), QStringLiteral("--speed"),
                                         QStringLiteral("max"), QStringLiteral("--ignore"), QStringLiteral("modbus.register_value@0x007E")});
@@ -206,8 +211,7 @@ void TestCliReplay::replayReportsChangedValues()
     ignoring.close();
     const CliResult fromDocument = runMbscope({QStringLiteral("replay"), withIgnore, QStringLiteral("--target"), sim.url(), QStringLiteral("--speed"), QStringLiteral("max")});
     QVERIFY2(fromDocument.finished && fromDocument.exitCode == 0, fromDocument.describe().constData());
-    QVERIFY2(fromDocument.outText().contains(QStringLiteral("ignored       modbus.register_value@0x007D: differed in 3 answer(s)")),
-             fromDocument.describe().constData());
+    QVERIFY2(ignoredLine.match(fromDocument.outText()).hasMatch(), fromDocument.describe().constData());
 
     // Bad selectors: said where.
     const CliResult badOption = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--target"), sim.url(), QStringLiteral("--ignore"), QStringLiteral("register@0x7D")});

@@ -10,6 +10,7 @@
 #include "protocol/adubuilder.h"
 #include "protocol/hextext.h"
 
+#include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
@@ -79,7 +80,7 @@ void TestCliVerdicts::malformedRequestIsNoBroadcast()
     const CliResult r = runMbscope({QStringLiteral("send"), QStringLiteral("--target"), m_target, QStringLiteral("--hex"),
                                     QStringLiteral("00 01 00 00 00 06 01 03 00 79 00 01")});
     QVERIFY2(r.finished && r.exitCode == 1, r.describe().constData());
-    QVERIFY2(!r.outText().contains(QStringLiteral("broadcast:")), r.describe().constData());
+    QVERIFY2(!r.outText().contains(QStringLiteral("RESULT broadcast")), r.describe().constData());
     QVERIFY2(!r.outText().contains(QStringLiteral("no answer expected")), r.describe().constData());
     QVERIFY2(r.outText().contains(QStringLiteral("RESULT the request itself is malformed, ")), r.describe().constData());
     const CliResult json = runMbscope({QStringLiteral("send"), QStringLiteral("--target"), m_target, QStringLiteral("--hex"),
