@@ -3,6 +3,7 @@
 #include "analyzecommand.h"
 #include "decodecommand.h"
 #include "exportcommand.h"
+#include "jsonfailure.h"
 #include "simulatecommand.h"
 #include "pollcommand.h"
 #include "readcommand.h"
@@ -83,8 +84,14 @@ int runHeadless(const QStringList &arguments)
         return first.isEmpty() && !hasGui() ? ExitUsage : ExitOk;
     }
     for (const Subcommand &s : kSubcommands) {
-        if (first == QLatin1String(s.name))
+        if (first != QLatin1String(s.name))
+            continue;
+        if (!arguments.contains(QLatin1String("--json")))
             return s.run(arguments.mid(1));
+        // --json: standard output holds one JSON document, an error object when the command fails
+        // before printing its result.
+        JsonFailureReport report(first);
+        return report.finish(s.run(arguments.mid(1)));
     }
     err << "mbscope: unknown subcommand '" << first << "'\n";
     printUsage(err);

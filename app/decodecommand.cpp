@@ -26,13 +26,25 @@ QByteArray asciiFrameFromText(const QString &text)
     return frame;
 }
 
+// A serial analyser shows an ASCII frame as the hex of its characters ("3A 30 31 30 33 ... 0D 0A"):
+// hex whose first byte is ':' (0x3A) is that frame's bytes, not frame text starting with '3'.
+bool isAsciiFrameAsHex(const HexTextResult &parsed)
+{
+    return parsed.ok && parsed.bytes.startsWith(':');
+}
+
 bool readFrame(const QString &text, Framing framing, const QString &what, QByteArray &bytes, QTextStream &err)
 {
-    if (framing == Framing::Ascii || (framing == Framing::Auto && text.trimmed().startsWith(QLatin1Char(':')))) {
+    const bool startsWithColon = text.trimmed().startsWith(QLatin1Char(':'));
+    if (startsWithColon && (framing == Framing::Ascii || framing == Framing::Auto)) {
         bytes = asciiFrameFromText(text);
         return true;
     }
     const HexTextResult parsed = HexText::parse(text);
+    if (framing == Framing::Ascii) {
+        bytes = isAsciiFrameAsHex(parsed) ? parsed.bytes : asciiFrameFromText(text);
+        return true;
+    }
     if (!parsed.ok) {
         err << "mbscope decode: " << what << ": " << parsed.error.message << '\n';
         const QStringList lines = text.split(QLatin1Char('\n'));
@@ -56,7 +68,8 @@ int runDecode(const QStringList &arguments)
     parser.setApplicationDescription(QStringLiteral(
         "Explains a Modbus frame field by field: offset, bytes, value, meaning and every problem found.\n"
         "The frame is given as hex (\"01 03 00 79 00 16 15 DD\", \"0x01,0x03\", \"01-03\"...) in the arguments or on "
-        "standard input; an ASCII frame as its characters (\":070300C800042A\").\n"
+        "standard input; an ASCII frame as its characters (\":070300C800042A\") or as the hex of its characters "
+        "(\"3A 30 37 30 33 ... 0D 0A\", as a serial analyser shows it).\n"
         "Exit status: 0 valid frame, 1 frame with errors, 2 unusable input."));
     parser.addHelpOption();
     const QCommandLineOption framingOpt(QStringLiteral("framing"),

@@ -2,6 +2,7 @@
 
 #include "time/duration.h"
 #include "histogramplot.h"
+#include "outputpath.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QDir>
@@ -148,16 +149,10 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
             return false;
         }
         const QString path = parser.value(m_histogram);
-        const QFileInfo file(path);
-        const QFileInfo dir(file.absolutePath());
-        // Said now, not after a 60 s poll.
-        if (path.isEmpty() || file.isDir()) {
-            err << prefix << "--histogram '" << path << "' is not a file name: expected e.g. --histogram latency.png\n";
-            return false;
-        }
-        if (!dir.isDir() || !dir.isWritable() || (file.exists() && !file.isWritable())) {
-            err << prefix << "--histogram: cannot write " << QDir::toNativeSeparators(file.absoluteFilePath())
-                << (dir.isDir() ? ": permission denied\n" : ": the folder does not exist\n");
+        // Said now, not after a 60 s poll: the name, the folder and the format the name says.
+        const QString problem = OutputPath::plotProblem(QStringLiteral("--histogram"), path);
+        if (!problem.isEmpty()) {
+            err << prefix << problem << '\n';
             return false;
         }
         out.histogramPath = path;
@@ -180,10 +175,9 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
     }
     if (!m_sweep && parser.isSet(m_csv)) {
         const QString path = parser.value(m_csv);
-        const QFileInfo file(path);
-        if (path.isEmpty() || file.isDir() || !QFileInfo(file.absolutePath()).isDir()) {
-            err << prefix << "--csv '" << path << "': " << (path.isEmpty() || file.isDir() ? "not a file name" : "the folder does not exist")
-                << ": expected e.g. --csv poll.csv\n";
+        const QString problem = OutputPath::problem(QStringLiteral("--csv"), path, QStringLiteral("--csv poll.csv"));
+        if (!problem.isEmpty()) {
+            err << prefix << problem << '\n';
             return false;
         }
         out.csvPath = path;

@@ -1,5 +1,7 @@
 #include "progressline.h"
 
+#include "jsonfailure.h"
+
 #include <cstdio>
 
 #ifdef Q_OS_UNIX
@@ -26,7 +28,7 @@ int terminalColumns()
 ProgressLine::ProgressLine()
 {
 #ifdef Q_OS_UNIX
-    m_enabled = ::isatty(STDERR_FILENO) == 1;
+    m_enabled = JsonFailureReport::stderrWasTerminal();
 #endif
 }
 

@@ -14,6 +14,7 @@
 #include "traffic/trafficrecording.h"
 
 #include <QtCore/QJsonDocument>
+#include <QtCore/QJsonValue>
 #include <QtCore/QTextStream>
 
 namespace mbscope::app {
@@ -58,15 +59,20 @@ int runRead(const QStringList &arguments)
         o.insert(QStringLiteral("target"), target.url.toString());
         o.insert(QStringLiteral("description"), request.description);
         o.insert(QStringLiteral("values"), values.json());
+        const QString hint = addressHintFor(request, t.exceptionCode, t.status == TransactionStatus::Exception);
+        o.insert(QStringLiteral("hint"), hint.isEmpty() ? QJsonValue() : QJsonValue(hint));
         out << QJsonDocument(o).toJson(QJsonDocument::Indented);
     } else {
         out << TransactionReport::text(t, target.url);
+        const QString hint = addressHintFor(request, t.exceptionCode, t.status == TransactionStatus::Exception);
+        if (!hint.isEmpty())
+            out << "HINT " << hint << '\n';
         if (!values.isEmpty())
             out << "\nVALUES " << request.description << "\n" << values.text();
     }
     if (t.status == TransactionStatus::LinkError)
         err << "mbscope read: " << t.problem << '\n';
-    return TransactionReport::exitStatus(t);
+    return TransactionReport::exitStatus(t, target.url);
 }
 
 } // namespace mbscope::app

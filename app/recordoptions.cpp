@@ -1,5 +1,6 @@
 #include "recordoptions.h"
 
+#include "outputpath.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
 
@@ -50,9 +51,9 @@ bool RecordOptions::read(const QCommandLineParser &parser, const QString &comman
             << " exists: a journal is never overwritten (give another name, or --force to replace it)\n";
         return false;
     }
-    if (!QFileInfo(file.absolutePath()).isDir()) {
-        err << prefix << "--record: cannot write " << QDir::toNativeSeparators(file.absoluteFilePath())
-            << ": the folder does not exist\n";
+    const QString problem = OutputPath::problem(QStringLiteral("--record"), path, QStringLiteral("--record poll.mbscope.journal"));
+    if (!problem.isEmpty()) {
+        err << prefix << problem << '\n';
         return false;
     }
     out.path = path;

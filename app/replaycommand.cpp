@@ -53,6 +53,7 @@ int runReplay(const QStringList &arguments)
         "With --serve URL: a simulator on URL answers with the recorded answers, matched by unit and request PDU (the "
         "MBAP transaction id aside); a request recorded several times gets its answers in turn, cycling.\n"
         "Example: mbscope replay bench.mbscope.json --speed max\n"
+        "Example: mbscope replay bench.mbscope.json --ignore modbus.register_value@0x007D\n"
         "Example: mbscope replay bench.mbscope.journal --serve rtu-tcp://127.0.0.1:4001\n"
         "--record FILE journals what the replay sent and got (with --serve: what it served).\n"
         "Exit status: 0 every answer matched (or --serve stopped), 1 some differed, 2 usage error, unreadable source or link failure."));
@@ -75,8 +76,15 @@ int runReplay(const QStringList &arguments)
                                            QStringLiteral("exception|ignore"), QStringLiteral("exception"));
     const QCommandLineOption durationOpt(QStringLiteral("duration"),
                                          QStringLiteral("With --serve, stop after this long (default: until Ctrl-C)."), QStringLiteral("duration"));
+    const QCommandLineOption ignoreOpt(QStringLiteral("ignore"),
+                                       QStringLiteral("A field expected to change (a counter, a clock): its differences are "
+                                                      "reported as ignored, not counted. KEY@ADDRESS as the report names it "
+                                                      "(modbus.register_value@0x007D or @125), KEY[N], or KEY alone for every "
+                                                      "address; repeat the option or separate with commas. Added to the "
+                                                      "session's capture.ignore."),
+                                       QStringLiteral("field"));
     const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the result as JSON."));
-    parser.addOptions({targetOpt, speedOpt, serveOpt, unrecordedOpt, durationOpt, jsonOpt});
+    parser.addOptions({targetOpt, speedOpt, serveOpt, unrecordedOpt, durationOpt, ignoreOpt, jsonOpt});
     const RecordOptions recordOptions;
     recordOptions.addTo(parser);
     parser.addPositionalArgument(QStringLiteral("source"),
@@ -115,6 +123,21 @@ int runReplay(const QStringList &arguments)
         err << "mbscope replay: --unrecorded '" << unrecorded << "': expected exception or ignore\n";
         return ExitUsage;
     }
+    IgnoredFields ignore;
+    for (const QString &value : parser.values(ignoreOpt)) {
+        for (const QString &selector : value.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+            QString problem;
+            if (!ignore.add(selector, &problem)) {
+                err << "mbscope replay: --ignore: " << problem << '\n';
+                return ExitUsage;
+            }
+        }
+    }
+    if (!ignore.isEmpty() && parser.isSet(serveOpt)) {
+        err << "mbscope replay: --ignore applies to a replay to a device (it says which answers' fields to leave out of the "
+               "comparison); --serve compares nothing\n";
+        return ExitUsage;
+    }
     RecordSettings record;
     if (!recordOptions.read(parser, QStringLiteral("replay"), record, err))
         return ExitUsage;
@@ -138,8 +161,15 @@ int runReplay(const QStringList &arguments)
     SessionTarget sessionTarget;
     if (path != source) {
         const SessionLoadResult loaded = SessionReader::load(source);
-        if (loaded.ok())
+        if (loaded.ok()) {
             sessionTarget = loaded.document->target;
+            if (loaded.document->capture && !parser.isSet(serveOpt)) {
+                for (const QString &selector : loaded.document->capture->ignore) {
+                    QString problem;
+                    (void)ignore.add(selector, &problem); // the reader checked each selector
+                }
+            }
+        }
     }
     const ReplayScript script = ReplayScript::read(path, options);
     if (!script.report().isReadable()) {
@@ -243,6 +273,7 @@ int runReplay(const QStringList &arguments)
         return ExitUsage;
     ReplayRunner runner(script, *parsed.url, EngineOptions{}, timeoutMs);
     runner.setSpeed(speed);
+    runner.setIgnoredFields(ignore);
     if (recording.isOpen())
         runner.setTrafficLog(recording.log());
     InterruptWatcher interrupt;

@@ -77,6 +77,22 @@ bool built(const BuildResult &result, bool registers, QString &error)
     return false;
 }
 
+QString hintWithOption(int address)
+{
+    const QString hint = ModiconReference::addressHint(address);
+    if (hint.isEmpty())
+        return {};
+    return hint + QStringLiteral(": give --address %1").arg(ModiconReference::parse(QString::number(address)).reference.address());
+}
+
+// A refused address of 10001 or more is most often a manual's Modicon reference.
+void appendAddressHint(int address, QString &error)
+{
+    const QString hint = hintWithOption(address);
+    if (!hint.isEmpty())
+        error += QStringLiteral("\n") + hint;
+}
+
 QString hexName(const QByteArray &bytes)
 {
     HexText::FormatOptions options;
@@ -322,8 +338,10 @@ bool RequestOptions::readRead(const QCommandLineParser &parser, const TargetSett
     case 3: pdu = RequestBuilder::readHoldingRegisters(a, q); break;
     default: pdu = RequestBuilder::readInputRegisters(a, q); break;
     }
-    if (!built(pdu, registers, error))
+    if (!built(pdu, registers, error)) {
+        appendAddressHint(a, error);
         return false;
+    }
     AduOptions options;
     options.framing = url.framing();
     options.unitId = quint8(unit);
@@ -439,6 +457,7 @@ bool RequestOptions::readWrite(const QCommandLineParser &parser, const TargetSet
             if (!built(pdu, registers, error)) {
                 if (n > 1)
                     error = QStringLiteral("value %1 of %2: ").arg(i + 1).arg(n) + error;
+                appendAddressHint(a, error);
                 out.requests.clear();
                 return false;
             }
@@ -447,8 +466,10 @@ bool RequestOptions::readWrite(const QCommandLineParser &parser, const TargetSet
     } else {
         const BuildResult pdu = registers ? RequestBuilder::writeMultipleRegisters(a, words)
                                           : RequestBuilder::writeMultipleCoils(a, coils);
-        if (!built(pdu, registers, error))
+        if (!built(pdu, registers, error)) {
+            appendAddressHint(a, error);
             return false;
+        }
         plan(pdu, registers ? 0x10 : 0x0F, a, n);
     }
     out.summary = describeItems(registers ? 0x10 : 0x0F, unit, a, n,
@@ -482,6 +503,13 @@ FrameTextResult parseFrameText(const QString &text, bool asciiCharacters)
     result.bytes = parsed.bytes;
     result.ok = true;
     return result;
+}
+
+QString addressHintFor(const PlannedRequest &request, quint8 exceptionCode, bool exception)
+{
+    if (!exception || exceptionCode != quint8(ExceptionCode::IllegalDataAddress) || request.functionCode == 0)
+        return {};
+    return hintWithOption(request.address);
 }
 
 } // namespace mbscope::app

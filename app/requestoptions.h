@@ -86,4 +86,9 @@ struct FrameTextResult {
 };
 [[nodiscard]] FrameTextResult parseFrameText(const QString &text, bool asciiCharacters);
 
+// A built request to an address of 10001 or more answered with exception 02 (Illegal Data
+// Address): "40122 looks like a Modicon reference; its PDU address is 121 (0x0079): give
+// --address 121". Empty for every other request and answer.
+[[nodiscard]] QString addressHintFor(const PlannedRequest &request, quint8 exceptionCode, bool exception);
+
 } // namespace mbscope::app

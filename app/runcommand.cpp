@@ -2,6 +2,7 @@
 
 #include "cli.h"
 #include "interruptwatcher.h"
+#include "outputpath.h"
 #include "recordoptions.h"
 
 #include "session/capturerecovery.h"
@@ -19,14 +20,6 @@
 namespace mbscope::app {
 
 namespace {
-
-int countSteps(const std::vector<PlanStep> &steps)
-{
-    int n = 0;
-    for (const PlanStep &s : steps)
-        n += s.kind == PlanStep::Kind::Repeat ? s.times * countSteps(s.steps) : 1;
-    return n;
-}
 
 QString outcomeLabel(StepResult::Outcome outcome)
 {
@@ -103,6 +96,14 @@ int runRun(const QStringList &arguments)
         return ExitUsage;
     }
     const QString path = positional.constFirst();
+    if (parser.isSet(junit)) {
+        // Said before the first step, not after a run of minutes.
+        const QString problem = OutputPath::problem(QStringLiteral("--junit"), parser.value(junit), QStringLiteral("--junit results.xml"));
+        if (!problem.isEmpty()) {
+            err << "mbscope run: " << problem << '\n';
+            return ExitUsage;
+        }
+    }
     RecordSettings record;
     if (parser.isSet(recordCapture)) {
         if (parser.isSet(QStringLiteral("record"))) {
@@ -175,7 +176,7 @@ int runRun(const QStringList &arguments)
 
     const bool asJson = parser.isSet(json);
     if (!asJson) {
-        out << "plan     " << named.name << " (" << path << "), " << countSteps(named.plan) << " steps\n"
+        out << "plan     " << named.name << " (" << path << "), " << planStepCount(named.plan) << " steps\n"
             << "target   " << parsed.url->toString() << "\n\n";
         out.flush();
     }
@@ -184,10 +185,34 @@ int runRun(const QStringList &arguments)
         runner.setTrafficLog(recording.log());
     InterruptWatcher interrupt;
     QObject::connect(&interrupt, &InterruptWatcher::interrupted, &interrupt, [&runner] { runner.stop(); });
+    // Steps not run are each a result (JUnit lists each as skipped); the text shows the first of
+    // a run of them and how many follow, not thousands of lines for a long repeat.
+    int skippedInRow = 0;
+    const auto flushSkipped = [&] {
+        if (skippedInRow > 0)
+            out << "SKIP   ... and " << skippedInRow << " more " << (skippedInRow == 1 ? "step" : "steps") << " not run\n";
+        skippedInRow = 0;
+    };
+    bool listingSkips = false;
     const PlanResult result = runner.run([&](const StepResult &step) {
-        if (!asJson)
-            printStep(out, step);
+        if (asJson)
+            return;
+        if (step.outcome == StepResult::Outcome::Skipped && step.reasons.value(0).startsWith(QLatin1String("not run"))) {
+            if (!listingSkips) {
+                listingSkips = true;
+                printStep(out, step);
+                skippedInRow += step.runs - 1;
+            } else {
+                skippedInRow += step.runs;
+            }
+            return;
+        }
+        listingSkips = false;
+        flushSkipped();
+        printStep(out, step);
     });
+    if (!asJson)
+        flushSkipped();
 
     if (recording.isOpen())
         runner.setTrafficLog(nullptr);
@@ -195,7 +220,7 @@ int runRun(const QStringList &arguments)
     if (asJson) {
         out << QJsonDocument(result.toJson()).toJson(QJsonDocument::Indented);
     } else {
-        out << '\n' << result.steps.size() << " steps: " << result.count(StepResult::Outcome::Passed) << " passed, "
+        out << '\n' << result.total() << " steps: " << result.count(StepResult::Outcome::Passed) << " passed, "
             << result.count(StepResult::Outcome::Failed) << " failed, " << result.count(StepResult::Outcome::Error)
             << " errors, " << result.count(StepResult::Outcome::Skipped) << " skipped in "
             << QString::number(double(result.elapsedNs) / 1e9, 'f', 3) << " s\n";

@@ -51,7 +51,7 @@ int runSend(const QStringList &arguments)
     }
     if (t.status == TransactionStatus::LinkError)
         err << "mbscope send: " << t.problem << '\n';
-    return TransactionReport::exitStatus(t);
+    return TransactionReport::exitStatus(t, target.url);
 }
 
 } // namespace mbscope::app

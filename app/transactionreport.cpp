@@ -125,6 +125,9 @@ QString TransactionReport::text(const Transaction &t, const LinkUrl &url)
         out += QStringLiteral("RESPONSE none\n\n");
     }
     out += QStringLiteral("RESULT %1\n").arg(outcome(t));
+    const QString malformed = requestProblem(t, url);
+    if (!malformed.isEmpty())
+        out += QStringLiteral("RESULT %1\n").arg(malformed);
     return out;
 }
 
@@ -139,6 +142,8 @@ QJsonObject TransactionReport::json(const Transaction &t, const LinkUrl &url)
     o.insert(QStringLiteral("latency_us"), us(t.latencyNs()));
     o.insert(QStringLiteral("first_byte_us"), us(t.firstByteNs > 0 ? t.firstByteNs - t.sentNs : -1));
     o.insert(QStringLiteral("attempts"), t.attempt + 1);
+    const QString malformed = requestProblem(t, url);
+    o.insert(QStringLiteral("request_problem"), malformed.isEmpty() ? QJsonValue() : QJsonValue(malformed));
     o.insert(QStringLiteral("request"), frameJson(t.request, url, Direction::Request, {}));
     o.insert(QStringLiteral("response"),
              t.response.isEmpty() ? QJsonValue()
@@ -147,8 +152,29 @@ QJsonObject TransactionReport::json(const Transaction &t, const LinkUrl &url)
     return o;
 }
 
-int TransactionReport::exitStatus(const Transaction &t)
+QString TransactionReport::requestProblem(const Transaction &t, const LinkUrl &url)
 {
+    if (url.delimited.enabled || t.request.isEmpty())
+        return {};
+    const Dissection d = dissect(t.request, url, Direction::Request);
+    if (d.isValid())
+        return {};
+    int errors = 0;
+    QString first;
+    for (const Field &f : d.fields.fields()) {
+        if (f.severity != Severity::Error)
+            continue;
+        if (errors++ == 0)
+            first = QString::fromLatin1(f.key) + QStringLiteral(": ") + f.message;
+    }
+    return QStringLiteral("the request itself is malformed, %1 error(s) (%2)")
+        .arg(errors).arg(first);
+}
+
+int TransactionReport::exitStatus(const Transaction &t, const LinkUrl &url)
+{
+    if (t.status != TransactionStatus::LinkError && !requestProblem(t, url).isEmpty())
+        return ExitFailure;
     switch (t.status) {
     case TransactionStatus::Ok:
     case TransactionStatus::Broadcast:

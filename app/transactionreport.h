@@ -23,8 +23,12 @@ public:
     [[nodiscard]] static QJsonObject json(const Transaction &t, const LinkUrl &url);
 
     // 0 for ok (and a broadcast, which wants no answer), 2 for a link error (nothing reached the
-    // device), 1 for every other failure.
-    [[nodiscard]] static int exitStatus(const Transaction &t);
+    // device), 1 for every other failure, and 1 as well for a request mbscope judges malformed
+    // (its own dissection has errors) whatever came back.
+    [[nodiscard]] static int exitStatus(const Transaction &t, const LinkUrl &url);
+    // "the request itself is malformed: 1 error(s), 0 warning(s) (rtu.crc: ...)", or empty when the
+    // request is well formed or the link is delimited (no Modbus fields to judge).
+    [[nodiscard]] static QString requestProblem(const Transaction &t, const LinkUrl &url);
 };
 
 // "1.234 ms", "734.5 µs", "2.100 s".

@@ -13,6 +13,7 @@
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
+#include <QtCore/QJsonValue>
 #include <QtCore/QTextStream>
 
 namespace mbscope::app {
@@ -47,7 +48,7 @@ int runWrite(const QStringList &arguments)
     finishRecording(recording, err);
     int status = ExitOk;
     for (const Transaction &t : records)
-        status = qMax(status, TransactionReport::exitStatus(t));
+        status = qMax(status, TransactionReport::exitStatus(t, target.url));
 
     // What was asked, whatever came of it: the values table says what each request carried.
     ValueTable values;
@@ -66,6 +67,9 @@ int runWrite(const QStringList &arguments)
         for (qsizetype i = 0; i < records.size(); ++i) {
             QJsonObject o = TransactionReport::json(records.at(i), target.url);
             o.insert(QStringLiteral("description"), plan.requests.at(i).description);
+            const QString hint = addressHintFor(plan.requests.at(i), records.at(i).exceptionCode,
+                                                records.at(i).status == TransactionStatus::Exception);
+            o.insert(QStringLiteral("hint"), hint.isEmpty() ? QJsonValue() : QJsonValue(hint));
             transactions.append(o);
         }
         out << QJsonDocument(QJsonObject{{QStringLiteral("target"), target.url.toString()},
@@ -78,6 +82,10 @@ int runWrite(const QStringList &arguments)
                 out << (i > 0 ? "\n" : "") << "#" << (i + 1) << " of " << written << ": " << plan.requests.at(i).description
                     << "\n";
             out << TransactionReport::text(records.at(i), target.url);
+            const QString hint = addressHintFor(plan.requests.at(i), records.at(i).exceptionCode,
+                                                records.at(i).status == TransactionStatus::Exception);
+            if (!hint.isEmpty())
+                out << "HINT " << hint << '\n';
         }
         if (!complete)
             out << "\nstopped after " << records.size() << " of " << written << " requests: the link failed\n";

@@ -1,9 +1,22 @@
 #include "requestitem.h"
 
 #include "protocol/adubuilder.h"
+#include "protocol/dissector.h"
 #include "transport/linkurl.h"
 
 namespace mbscope {
+
+namespace {
+
+bool isWellFormedRequest(const QByteArray &bytes, Framing framing)
+{
+    DissectOptions options;
+    options.framing = framing;
+    options.direction = Direction::Request;
+    return Dissector::dissect(bytes, options).isValid();
+}
+
+} // namespace
 
 RequestItem RequestItem::fromBytes(const QByteArray &bytes, Framing framing, bool delimited, const QString &name)
 {
@@ -29,7 +42,10 @@ RequestItem RequestItem::fromBytes(const QByteArray &bytes, Framing framing, boo
     case Framing::Rtu:
     case Framing::Ascii:
         item.rule = MatchRule::UnitFunction;
-        item.broadcast = parts.unitId == 0;
+        // Only a well-formed frame to unit 0 is a broadcast: bytes mbscope judges malformed (MBAP
+        // bytes sent to an RTU link start with a transaction id whose high byte is often 0) wait
+        // for an answer like any request, and their verdict says what came back.
+        item.broadcast = parts.unitId == 0 && isWellFormedRequest(bytes, framing);
         break;
     case Framing::Pdu:
     case Framing::Auto:

@@ -8,16 +8,57 @@ namespace mbscope {
 
 namespace {
 
+// The largest frame each framing allows: a PDU is at most 253 bytes (V1.1b3, 4.1), so an RTU
+// ADU at most 256 (Serial Line V1.02, 2.5.1.1), an MBAP ADU at most 260 (Messaging on TCP/IP
+// V1.0b, 4.1) and an ASCII frame at most 513 characters (Serial Line V1.02, 2.5.2.1).
+struct AduLimit {
+    int bytes;
+    const char *what;
+    const char *where;
+};
+
+AduLimit aduLimit(Framing framing)
+{
+    switch (framing) {
+    case Framing::Rtu: return {256, "an RTU ADU is at most 256 bytes", "MODBUS over Serial Line V1.02, 2.5.1.1"};
+    case Framing::Ascii: return {513, "an ASCII frame is at most 513 characters", "MODBUS over Serial Line V1.02, 2.5.2.1"};
+    case Framing::Tcp:
+    case Framing::Udp: return {260, "an MBAP ADU is at most 260 bytes", "MODBUS Messaging on TCP/IP V1.0b, 4.1"};
+    case Framing::Pdu:
+    case Framing::Auto: break;
+    }
+    return {253, "a PDU is at most 253 bytes", "MODBUS Application Protocol V1.1b3, 4.1"};
+}
+
+// n is the frame's size as it travels: for ASCII its characters, although the tree then holds
+// the decoded bytes (the field goes at their end).
+void checkAduSize(FieldTree &tree, Framing framing, int n)
+{
+    const AduLimit limit = aduLimit(framing);
+    if (n <= limit.bytes)
+        return;
+    const int at = qMin(limit.bytes, int(tree.frame().size()));
+    const int f = tree.add(-1, "frame.too_long", QT_TRANSLATE_NOOP("mbscope::Field", "Frame too long"), at, 0,
+                           quint64(n - limit.bytes), ValueFormat::Decimal);
+    // An ASCII frame's bytes are its characters.
+    const QString unit = framing == Framing::Ascii ? QStringLiteral("characters") : QStringLiteral("bytes");
+    tree.flag(f, Severity::Error,
+              QStringLiteral("the frame is %1 %2; %3 (%4): %5 %2 too many")
+                  .arg(n).arg(unit, QLatin1String(limit.what), QLatin1String(limit.where)).arg(n - limit.bytes));
+}
+
 void runFraming(Dissection &out, const adu::RequestInfo &request)
 {
+    const int wireSize = int(out.fields.frame().size());
     switch (out.framing) {
-    case Framing::Rtu: adu::dissectRtu(out, request); return;
-    case Framing::Ascii: adu::dissectAscii(out, request); return;
+    case Framing::Rtu: adu::dissectRtu(out, request); break;
+    case Framing::Ascii: adu::dissectAscii(out, request); break;
     case Framing::Tcp:
-    case Framing::Udp: adu::dissectMbap(out, request); return;
+    case Framing::Udp: adu::dissectMbap(out, request); break;
     case Framing::Pdu:
-    case Framing::Auto: adu::dissectBarePdu(out, request); return;
+    case Framing::Auto: adu::dissectBarePdu(out, request); break;
     }
+    checkAduSize(out.fields, out.framing, wireSize);
 }
 
 bool rtuCrcValid(const QByteArray &b)

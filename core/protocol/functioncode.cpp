@@ -4,6 +4,9 @@ namespace mbscope {
 
 FunctionKind functionKind(quint8 code)
 {
+    // V1.1b3, 4.1: "Valid codes are in the range of 1 ... 255 decimal"; 0 is none of them.
+    if (code == 0x00)
+        return FunctionKind::Invalid;
     if (code >= 0x80)
         return FunctionKind::Exception;
     switch (code) {
@@ -51,6 +54,7 @@ const char *functionName(quint8 code)
     case FunctionKind::UserDefined: return QT_TRANSLATE_NOOP("mbscope::Field", "User-defined function");
     case FunctionKind::Reserved: return QT_TRANSLATE_NOOP("mbscope::Field", "Reserved function code");
     case FunctionKind::Exception: return QT_TRANSLATE_NOOP("mbscope::Field", "Exception response");
+    case FunctionKind::Invalid: return QT_TRANSLATE_NOOP("mbscope::Field", "Invalid function code");
     default: return QT_TRANSLATE_NOOP("mbscope::Field", "Unassigned function code");
     }
 }

@@ -43,6 +43,7 @@ enum class ExceptionCode : quint8 {
 };
 
 enum class FunctionKind : quint8 {
+    Invalid,     // 0: not a function code at all (V1.1b3, 4.1: valid codes are 1-255)
     Public,      // defined by the spec and decoded field by field
     UserDefined, // 65-72 and 100-110 (V1.1b3, 5.1): shown as raw data
     Reserved,    // reserved for legacy products or other uses (9, 10, 13, 14, 41, 42, 90, 91, 125-127)

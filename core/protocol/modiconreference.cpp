@@ -86,6 +86,19 @@ QString ModiconReference::describe() const
         + QLatin1String(" reach PDU addresses 0-9998 only)");
 }
 
+QString ModiconReference::addressHint(qint64 address)
+{
+    if (address < 10001 || address > 465536)
+        return {};
+    const ModiconReferenceResult r = parse(QString::number(address));
+    if (!r.ok)
+        return {};
+    return QStringLiteral("%1 looks like a Modicon reference; its PDU address is %2 (0x%3)")
+        .arg(address)
+        .arg(r.reference.address())
+        .arg(QString::number(r.reference.address(), 16).toUpper().rightJustified(4, QLatin1Char('0')));
+}
+
 ModiconReferenceResult ModiconReference::parse(QStringView text)
 {
     const QStringView t = text.trimmed();

@@ -64,6 +64,10 @@ public:
     [[nodiscard]] QString describe() const;
 
     [[nodiscard]] static ModiconReferenceResult parse(QStringView text);
+    // For a PDU address of 10001 or more that reads as a five- or six-digit reference, the mistake
+    // the guide describes (a manual's 40122 typed where the wire address 121 belongs):
+    // "40122 looks like a Modicon reference; its PDU address is 121 (0x0079)". Empty otherwise.
+    [[nodiscard]] static QString addressHint(qint64 address);
     // From a 1-based element number (1-65536), as a device manual lists it.
     [[nodiscard]] static ModiconReferenceResult fromNumber(ModbusTable table, int number);
 

@@ -113,6 +113,8 @@ void dissect(const PduContext &ctx)
         ctx.tree.flag(f, Severity::Info, QStringLiteral("user-defined function code (65-72, 100-110): its data is shown raw"));
     } else if (kind == FunctionKind::Reserved) {
         ctx.tree.flag(f, Severity::Warning, QStringLiteral("reserved function code: the Modbus specification reserves it for legacy products"));
+    } else if (kind == FunctionKind::Invalid) {
+        ctx.tree.flag(f, Severity::Error, QStringLiteral("function code 0 is not valid: valid codes are 1-255 (MODBUS Application Protocol V1.1b3, 4.1)"));
     } else {
         ctx.tree.flag(f, Severity::Warning, QStringLiteral("unassigned public function code: the Modbus specification does not define it"));
     }
@@ -140,6 +142,10 @@ void dissectException(const PduContext &ctx)
     case FunctionKind::Reserved:
         ctx.tree.flag(f, Severity::Warning,
                       QStringLiteral("exception for function %1, a reserved function code").arg(hexByte(base)));
+        break;
+    case FunctionKind::Invalid:
+        ctx.tree.flag(f, Severity::Error,
+                      QStringLiteral("exception for function 0x00, which is not a valid function code (V1.1b3, 4.1: valid codes are 1-255)"));
         break;
     default:
         ctx.tree.flag(f, Severity::Warning,

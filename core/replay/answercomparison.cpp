@@ -103,7 +103,7 @@ QString AnswerComparison::verdictName(Verdict verdict)
 }
 
 AnswerComparison::Result AnswerComparison::compare(const Transaction &recorded, Framing recordedFraming, const Transaction &now,
-                                                   Framing nowFraming)
+                                                   Framing nowFraming, const IgnoredFields &ignore)
 {
     Result result;
     const bool sameOutcome = recorded.status == now.status
@@ -127,18 +127,25 @@ AnswerComparison::Result AnswerComparison::compare(const Transaction &recorded, 
     QHash<QString, QString> afterByLabel;
     for (const LabelledValue &v : after)
         afterByLabel.insert(v.label, v.value);
+    const auto differ = [&result, &ignore](const QString &label, const QString &difference) {
+        const QString selector = ignore.isEmpty() ? QString() : ignore.selectorFor(label);
+        if (selector.isEmpty())
+            result.differences.append(difference);
+        else
+            result.ignored.append({selector, difference});
+    };
     QHash<QString, bool> beforeLabels;
     for (const LabelledValue &v : before) {
         beforeLabels.insert(v.label, true);
         const auto it = afterByLabel.constFind(v.label);
         if (it == afterByLabel.constEnd())
-            result.differences.append(QStringLiteral("%1: recorded %2, now absent").arg(v.label, v.value));
+            differ(v.label, QStringLiteral("%1: recorded %2, now absent").arg(v.label, v.value));
         else if (*it != v.value)
-            result.differences.append(QStringLiteral("%1: recorded %2, now %3").arg(v.label, v.value, *it));
+            differ(v.label, QStringLiteral("%1: recorded %2, now %3").arg(v.label, v.value, *it));
     }
     for (const LabelledValue &v : after) {
         if (!beforeLabels.contains(v.label))
-            result.differences.append(QStringLiteral("%1: recorded absent, now %2").arg(v.label, v.value));
+            differ(v.label, QStringLiteral("%1: recorded absent, now %2").arg(v.label, v.value));
     }
     if (!result.differences.isEmpty())
         result.verdict = Verdict::ValuesDiffer;

@@ -2,6 +2,7 @@
 
 #include "exchange/transaction.h"
 #include "protocol/framing.h"
+#include "replay/ignoredfields.h"
 
 #include <QtCore/QStringList>
 
@@ -26,11 +27,17 @@ public:
         // "modbus.register_value@0x007D: recorded 250, now 251", "recorded exception 0x02
         // (Illegal Data Address), now a normal answer", "no answer now (recorded a normal answer)"
         QStringList differences;
+        // Differences in fields the user said would change (--ignore): reported, never a verdict.
+        struct Ignored {
+            QString selector;   // the --ignore selector that covers it
+            QString difference; // as in differences
+        };
+        QList<Ignored> ignored;
         [[nodiscard]] bool matched() const { return verdict == Verdict::Match; }
     };
 
     [[nodiscard]] static Result compare(const Transaction &recorded, Framing recordedFraming, const Transaction &now,
-                                        Framing nowFraming);
+                                        Framing nowFraming, const IgnoredFields &ignore = {});
     // "match", "values differ", "outcome differs", "missing answer"
     [[nodiscard]] static QString verdictName(Verdict verdict);
     // "a normal answer", "exception 0x02 (Illegal Data Address)", "no answer", "crc_error: ..."

@@ -33,6 +33,14 @@ QString requestText(const ReplayExchange &e)
     return QStringLiteral("unit %1 %2 %3").arg(e.unitId).arg(QLatin1String(functionName(function)), HexText::format(e.requestPdu));
 }
 
+QJsonArray ignoredJson(const AnswerComparison::Result &comparison)
+{
+    QJsonArray out;
+    for (const AnswerComparison::Result::Ignored &i : comparison.ignored)
+        out.append(QJsonObject{{QStringLiteral("field"), i.selector}, {QStringLiteral("difference"), i.difference}});
+    return out;
+}
+
 } // namespace
 
 qsizetype ReplayResult::count(AnswerComparison::Verdict verdict) const
@@ -41,6 +49,25 @@ qsizetype ReplayResult::count(AnswerComparison::Verdict verdict) const
     for (const ReplayOutcome &o : outcomes)
         n += o.comparison.verdict == verdict ? 1 : 0;
     return n;
+}
+
+QList<ReplayResult::IgnoredCount> ReplayResult::ignoredCounts() const
+{
+    QList<IgnoredCount> counts;
+    for (const QString &selector : ignoredSelectors)
+        counts.append({selector, 0, {}});
+    for (const ReplayOutcome &o : outcomes) {
+        for (IgnoredCount &c : counts) {
+            for (const AnswerComparison::Result::Ignored &i : o.comparison.ignored) {
+                if (i.selector != c.selector)
+                    continue;
+                if (c.answers++ == 0)
+                    c.first = QStringLiteral("%1 (request #%2)").arg(i.difference).arg(o.index + 1);
+                break;
+            }
+        }
+    }
+    return counts;
 }
 
 QString ReplayResult::latencyLine() const
@@ -79,6 +106,8 @@ QString ReplayResult::summary(const ReplayScript &script, int maxListed) const
         text += QStringLiteral("#%1 %2: %3\n").arg(o.index + 1).arg(requestText(e), AnswerComparison::verdictName(o.comparison.verdict));
         for (const QString &d : o.comparison.differences)
             text += QStringLiteral("    %1\n").arg(d);
+        for (const AnswerComparison::Result::Ignored &i : o.comparison.ignored)
+            text += QStringLiteral("    %1 (ignored: --ignore %2)\n").arg(i.difference, i.selector);
     }
     if (listed > 0)
         text += QLatin1Char('\n');
@@ -92,6 +121,11 @@ QString ReplayResult::summary(const ReplayScript &script, int maxListed) const
                 .arg(count(AnswerComparison::Verdict::ValuesDiffer))
                 .arg(count(AnswerComparison::Verdict::OutcomeDiffers))
                 .arg(count(AnswerComparison::Verdict::MissingAnswer));
+    for (const IgnoredCount &c : ignoredCounts()) {
+        text += QStringLiteral("ignored       %1: ").arg(c.selector);
+        text += c.answers == 0 ? QStringLiteral("no answer differed there\n")
+                               : QStringLiteral("differed in %1 answer(s), not counted; first %2\n").arg(c.answers).arg(c.first);
+    }
     text += latencyLine() + QLatin1Char('\n');
     return text;
 }
@@ -109,7 +143,14 @@ QJsonObject ReplayResult::toJson(const ReplayScript &script) const
                                        {QStringLiteral("verdict"), AnswerComparison::verdictName(o.comparison.verdict)},
                                        {QStringLiteral("recorded"), HexText::format(e.recorded.response)},
                                        {QStringLiteral("now"), HexText::format(o.replayed.response)},
-                                       {QStringLiteral("differences"), QJsonArray::fromStringList(o.comparison.differences)}});
+                                       {QStringLiteral("differences"), QJsonArray::fromStringList(o.comparison.differences)},
+                                       {QStringLiteral("ignored"), ignoredJson(o.comparison)}});
+    }
+    QJsonArray ignored;
+    for (const IgnoredCount &c : ignoredCounts()) {
+        ignored.append(QJsonObject{{QStringLiteral("field"), c.selector},
+                                   {QStringLiteral("answers"), double(c.answers)},
+                                   {QStringLiteral("first"), c.first.isEmpty() ? QJsonValue() : QJsonValue(c.first)}});
     }
     return QJsonObject{{QStringLiteral("target"), target},
                        {QStringLiteral("requests"), double(script.size())},
@@ -121,6 +162,7 @@ QJsonObject ReplayResult::toJson(const ReplayScript &script) const
                        {QStringLiteral("interrupted"), interrupted},
                        {QStringLiteral("elapsed_ms"), double(elapsedNs) / 1e6},
                        {QStringLiteral("differences"), differences},
+                       {QStringLiteral("ignored"), ignored},
                        {QStringLiteral("latency_us"),
                         QJsonObject{{QStringLiteral("recorded"), latencyJson(recorded)}, {QStringLiteral("replayed"), latencyJson(replayed)}}}};
 }

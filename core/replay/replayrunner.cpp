@@ -71,6 +71,7 @@ ReplayResult ReplayRunner::run(const Observer &observer)
 {
     ReplayResult result;
     result.target = m_target.toString();
+    result.ignoredSelectors = m_ignore.selectors();
     const Framing framing = m_target.framing();
     const qint64 startNs = monotonicNowNs();
     for (qsizetype i = 0; i < m_script.size() && !m_stopped; ++i) {
@@ -92,7 +93,7 @@ ReplayResult ReplayRunner::run(const Observer &observer)
             outcome.replayed.status = TransactionStatus::Timeout;
             outcome.replayed.problem = QStringLiteral("the engine did not report the request in time");
         }
-        outcome.comparison = AnswerComparison::compare(e.recorded, e.framing, outcome.replayed, framing);
+        outcome.comparison = AnswerComparison::compare(e.recorded, e.framing, outcome.replayed, framing, m_ignore);
         result.recorded.add(e.recorded);
         result.replayed.add(outcome.replayed);
         result.outcomes.append(outcome);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "engine/engineoptions.h"
+#include "replay/ignoredfields.h"
 #include "replay/replayresult.h"
 #include "transport/linkurl.h"
 
@@ -39,6 +40,8 @@ public:
 
     // 1: recorded pacing; 10: ten times faster; 0: no waiting at all.
     void setSpeed(double speed) { m_speed = speed; }
+    // Fields expected to change (--ignore): their differences are reported as ignored.
+    void setIgnoredFields(const IgnoredFields &ignore) { m_ignore = ignore; }
     // Every frame in and out goes to log (--record) until setTrafficLog(nullptr), which also
     // writes the engine's last frames to the log's journal (TransactionEngine::setTrafficLog).
     void setTrafficLog(TrafficLog *log);
@@ -56,6 +59,7 @@ private:
     LinkUrl m_target;
     int m_timeoutMs;
     double m_speed = 1.0;
+    IgnoredFields m_ignore;
     bool m_stopped = false;
     QEventLoop *m_waitLoop = nullptr;
     std::unique_ptr<TransactionEngine> m_engine;

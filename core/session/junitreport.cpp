@@ -21,7 +21,8 @@ QByteArray JUnitReport::toXml(const PlanResult &result)
     xml.setAutoFormatting(true);
     xml.writeStartDocument();
     const QString suite = result.name.isEmpty() ? QStringLiteral("mbscope plan") : result.name;
-    const auto tests = QString::number(result.steps.size());
+    // Every run counts, a long repeat's skipped rest (one testcase) for all its runs.
+    const auto tests = QString::number(result.total());
     const auto failures = QString::number(result.count(StepResult::Outcome::Failed));
     const auto errors = QString::number(result.count(StepResult::Outcome::Error));
     const auto skipped = QString::number(result.count(StepResult::Outcome::Skipped));

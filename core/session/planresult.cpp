@@ -36,11 +36,27 @@ QString planStepKindName(PlanStep::Kind kind)
     return QStringLiteral("?");
 }
 
+int planStepCount(const std::vector<PlanStep> &steps)
+{
+    int n = 0;
+    for (const PlanStep &s : steps)
+        n += s.kind == PlanStep::Kind::Repeat ? s.times * planStepCount(s.steps) : 1;
+    return n;
+}
+
 int PlanResult::count(StepResult::Outcome outcome) const
 {
     int n = 0;
     for (const StepResult &s : steps)
-        n += s.outcome == outcome ? 1 : 0;
+        n += s.outcome == outcome ? s.runs : 0;
+    return n;
+}
+
+int PlanResult::total() const
+{
+    int n = 0;
+    for (const StepResult &s : steps)
+        n += s.runs;
     return n;
 }
 
@@ -57,6 +73,8 @@ QJsonObject PlanResult::toJson() const
         if (!s.detail.isEmpty())
             o.insert(QLatin1String("detail"), s.detail);
         o.insert(QLatin1String("elapsed_ms"), double(s.elapsedNs) / 1e6);
+        if (s.runs > 1)
+            o.insert(QLatin1String("runs"), s.runs);
         list.append(o);
     }
     QJsonObject counts;
@@ -69,6 +87,7 @@ QJsonObject PlanResult::toJson() const
     root.insert(QLatin1String("started"), started.toUTC().toString(Qt::ISODateWithMs));
     root.insert(QLatin1String("elapsed_ms"), double(elapsedNs) / 1e6);
     root.insert(QLatin1String("passed"), passed());
+    root.insert(QLatin1String("total"), total());
     root.insert(QLatin1String("counts"), counts);
     root.insert(QLatin1String("steps"), list);
     if (linkFailed)

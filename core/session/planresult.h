@@ -26,6 +26,9 @@ struct StepResult {
     QStringList reasons; // why it failed, or what was checked when it passed
     QString detail;      // what was exchanged: "sent 01 03 ..., answer 01 03 2C ... in 4.213 ms"
     qint64 elapsedNs = 0;
+    // The runs this result stands for: 1, except for the skipped rest of a repeat too long to
+    // list run by run (more than PlanResult::kListedSkips), reported as one result.
+    int runs = 1;
 
     [[nodiscard]] static const char *outcomeName(Outcome outcome); // "passed", "failed", "error", "skipped"
 };
@@ -35,17 +38,29 @@ struct PlanResult {
     QString target; // the URL run against
     QDateTime started;
     qint64 elapsedNs = 0;
+    int planned = 0;          // planStepCount(plan): steps.size() once the run ends, however it ends
     QList<StepResult> steps;
     bool linkFailed = false;
     QString linkMessage;
     bool interrupted = false; // stopped early (Ctrl-C): the steps left are skipped
 
+    // Skipped runs of a repeat are listed one by one up to this many; beyond, one result says how many.
+    static constexpr int kListedSkips = 10000;
+
+    // Runs with this outcome, and all runs (each result counted for its runs): the count the
+    // window, the CLI and JUnit show, planned however the run ended.
     [[nodiscard]] int count(StepResult::Outcome outcome) const;
-    [[nodiscard]] bool passed() const { return !linkFailed && !interrupted && count(StepResult::Outcome::Passed) == steps.size(); }
-    // {"plan", "target", "started", "elapsed_ms", "passed", "counts": {...}, "steps": [{"path",
-    //  "name", "kind", "outcome", "reasons", "detail", "elapsed_ms"}], "link_error", "interrupted"}
+    [[nodiscard]] int total() const;
+    [[nodiscard]] bool passed() const { return !linkFailed && !interrupted && count(StepResult::Outcome::Passed) == total(); }
+    // {"plan", "target", "started", "elapsed_ms", "passed", "total", "counts": {...}, "steps": [{"path",
+    //  "name", "kind", "outcome", "reasons", "detail", "elapsed_ms", "runs" (when more than 1)}],
+    //  "link_error", "interrupted"}
     [[nodiscard]] QJsonObject toJson() const;
 };
+
+// The steps a plan runs, each repetition of a repeat's steps counted: what a run reports, one
+// result each (passed, failed, error or skipped), in the window, the CLI and JUnit alike.
+[[nodiscard]] int planStepCount(const std::vector<PlanStep> &steps);
 
 [[nodiscard]] QString planStepKindName(PlanStep::Kind kind); // "send", "expect", "poll", "wait", "repeat"
 

@@ -62,6 +62,8 @@ PlanResult PlanRunner::run(const StepObserver &observer)
     m_result.name = m_document.name;
     m_result.target = m_url.toString();
     m_result.started = QDateTime::currentDateTimeUtc();
+    m_result.planned = planStepCount(m_document.plan);
+    m_result.interrupted = m_stopRequested;
     m_last.reset();
     const qint64 start = monotonicNowNs();
     runSteps(m_document.plan, QStringLiteral("plan"), QString());
@@ -74,6 +76,7 @@ PlanResult PlanRunner::run(const StepObserver &observer)
 
 void PlanRunner::stop()
 {
+    m_stopRequested = true;
     m_result.interrupted = true;
     m_engine->stop();
     if (m_waitLoop)
@@ -89,16 +92,42 @@ void PlanRunner::report(const StepResult &result)
 
 void PlanRunner::skip(const std::vector<PlanStep> &steps, std::size_t from, const QString &path, const QString &suffix)
 {
-    for (std::size_t i = from; i < steps.size(); ++i) {
+    for (std::size_t i = from; i < steps.size(); ++i)
+        skipStep(steps[i], QStringLiteral("%1[%2]").arg(path).arg(i), suffix, 1);
+}
+
+// Every run a full plan would have made is reported, a skipped one as skipped: the count of
+// results is planStepCount(plan) however the run ends (the window, the CLI and JUnit agree).
+void PlanRunner::skipStep(const PlanStep &step, const QString &path, const QString &suffix, int fromRepetition)
+{
+    if (step.kind == PlanStep::Kind::Repeat) {
+        const qint64 left = qint64(step.times - fromRepetition + 1) * planStepCount(step.steps);
+        if (left <= PlanResult::kListedSkips) {
+            for (int n = fromRepetition; n <= step.times; ++n)
+                skip(step.steps, 0, path + QStringLiteral(".steps"), suffix + QStringLiteral(" (%1/%2)").arg(n).arg(step.times));
+            return;
+        }
+        // A repeat may run millions of times: its rest is one result that counts every run.
         StepResult r;
-        r.path = QStringLiteral("%1[%2]").arg(path).arg(i);
-        r.name = steps[i].name + suffix;
-        r.kind = steps[i].kind;
+        r.path = path;
+        r.name = step.name + suffix + QStringLiteral(" (%1/%2 to %2/%2)").arg(fromRepetition).arg(step.times);
+        r.kind = step.kind;
         r.outcome = StepResult::Outcome::Skipped;
-        r.reasons.append(m_result.linkFailed ? QStringLiteral("not run: the link failed earlier")
-                                             : QStringLiteral("not run: the run was interrupted"));
+        r.runs = int(left);
+        r.reasons.append((m_result.linkFailed ? QStringLiteral("not run: the link failed earlier")
+                                              : QStringLiteral("not run: the run was interrupted"))
+                         + QStringLiteral(" (%1 runs)").arg(left));
         report(r);
+        return;
     }
+    StepResult r;
+    r.path = path;
+    r.name = step.name + suffix;
+    r.kind = step.kind;
+    r.outcome = StepResult::Outcome::Skipped;
+    r.reasons.append(m_result.linkFailed ? QStringLiteral("not run: the link failed earlier")
+                                         : QStringLiteral("not run: the run was interrupted"));
+    report(r);
 }
 
 void PlanRunner::runSteps(const std::vector<PlanStep> &steps, const QString &path, const QString &suffix)
@@ -118,15 +147,7 @@ void PlanRunner::runStep(const PlanStep &step, const QString &path, const QStrin
     if (step.kind == PlanStep::Kind::Repeat) {
         for (int n = 1; n <= step.times; ++n) {
             if (ended()) {
-                // One line for the repetitions left, however many (a repeat may run thousands).
-                StepResult r;
-                r.path = path;
-                r.name = step.name + suffix + QStringLiteral(" (%1/%2 to %2/%2)").arg(n).arg(step.times);
-                r.kind = step.kind;
-                r.outcome = StepResult::Outcome::Skipped;
-                r.reasons.append(m_result.linkFailed ? QStringLiteral("not run: the link failed earlier")
-                                                     : QStringLiteral("not run: the run was interrupted"));
-                report(r);
+                skipStep(step, path, suffix, n);
                 break;
             }
             runSteps(step.steps, path + QStringLiteral(".steps"), suffix + QStringLiteral(" (%1/%2)").arg(n).arg(step.times));
@@ -155,8 +176,9 @@ void PlanRunner::runStep(const PlanStep &step, const QString &path, const QStrin
         loop.exec();
         m_waitLoop = nullptr;
         if (m_result.interrupted) {
-            result.outcome = StepResult::Outcome::Failed;
-            result.reasons.append(QStringLiteral("interrupted after %1 ms").arg((monotonicNowNs() - start) / 1'000'000));
+            // Cut short by the user, not by the device: not run to the end, so skipped.
+            result.outcome = StepResult::Outcome::Skipped;
+            result.reasons.append(QStringLiteral("interrupted after %1 of %2 ms").arg((monotonicNowNs() - start) / 1'000'000).arg(step.waitMs));
         } else {
             result.reasons.append(QStringLiteral("waited %1 ms").arg(step.waitMs));
         }
@@ -261,7 +283,7 @@ void PlanRunner::runPoll(const PlanStep &step, StepResult &result)
     }
     const Statistics &stats = report->runs.constFirst().statistics.overall();
     if (m_result.interrupted) {
-        result.outcome = StepResult::Outcome::Failed;
+        result.outcome = StepResult::Outcome::Skipped;
         result.reasons.append(QStringLiteral("interrupted: the poll was stopped after %1 transactions").arg(stats.count()));
         return;
     }

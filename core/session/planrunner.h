@@ -55,6 +55,7 @@ private:
     void runExpect(const PlanStep &step, StepResult &result);
     void runPoll(const PlanStep &step, StepResult &result);
     void skip(const std::vector<PlanStep> &steps, std::size_t from, const QString &path, const QString &suffix);
+    void skipStep(const PlanStep &step, const QString &path, const QString &suffix, int fromRepetition);
     [[nodiscard]] bool ended() const { return m_result.linkFailed || m_result.interrupted; }
     void report(const StepResult &result);
     [[nodiscard]] std::optional<RequestItem> item(const SessionRequest &request, QString *error);
@@ -70,6 +71,7 @@ private:
     PlanResult m_result;
     quint16 m_transactionId = 1;
     QEventLoop *m_waitLoop = nullptr; // the wait step's, while one runs
+    bool m_stopRequested = false;     // stop() before run(): every step is reported skipped
 };
 
 } // namespace mbscope

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QtCore/QString>
+#include <QtCore/QStringList>
 
 namespace mbscope {
 
@@ -10,6 +11,9 @@ namespace mbscope {
 struct SessionCapture {
     QString journal; // a file name relative to the document's folder: "bench.mbscope.journal"
     QString notes;
+    // Fields of the answers a replay expects to change (a counter, a clock): replay reports their
+    // differences as ignored (FieldExpectation selectors: "modbus.register_value@0x007D").
+    QStringList ignore;
 
     friend bool operator==(const SessionCapture &, const SessionCapture &) = default;
 };

@@ -1,5 +1,6 @@
 #include "session/sessionreader.h"
 
+#include "session/fieldexpectation.h"
 #include "session/planstepreader.h"
 #include "session/sessionrequestreader.h"
 #include "json/jsonreader.h"
@@ -100,7 +101,7 @@ void readCapture(JsonReader &reader, const QJsonValue &value, std::optional<Sess
     const auto o = reader.objectValue(value, path);
     if (!o)
         return;
-    reader.checkKeys(*o, path, {"journal", "notes"});
+    reader.checkKeys(*o, path, {"journal", "notes", "ignore"});
     SessionCapture c;
     if (reader.require(*o, path, "journal")) {
         if (const auto journal = reader.string(*o, path, "journal")) {
@@ -116,6 +117,24 @@ void readCapture(JsonReader &reader, const QJsonValue &value, std::optional<Sess
         }
     }
     c.notes = reader.string(*o, path, "notes").value_or(QString());
+    if (const auto ignore = reader.array(*o, path, "ignore")) {
+        const QString at = JsonReader::member(path, "ignore");
+        for (qsizetype i = 0; i < ignore->size(); ++i) {
+            const QString element = JsonReader::element(at, i);
+            const QJsonValue v = ignore->at(i);
+            if (!v.isString()) {
+                reader.error(element, QStringLiteral("expected a field selector such as \"modbus.register_value@0x007D\", found %1")
+                                          .arg(JsonReader::describe(v)));
+                continue;
+            }
+            FieldExpectation parsed;
+            QString error;
+            if (!FieldExpectation::parseSelector(v.toString(), &parsed, &error))
+                reader.error(element, error);
+            else
+                c.ignore.append(v.toString());
+        }
+    }
     *capture = c;
 }
 

@@ -175,6 +175,8 @@ QJsonObject SessionWriter::toJson(const SessionDocument &d)
         c.insert(QLatin1String("journal"), d.capture->journal);
         if (!d.capture->notes.isEmpty())
             c.insert(QLatin1String("notes"), d.capture->notes);
+        if (!d.capture->ignore.isEmpty())
+            c.insert(QLatin1String("ignore"), QJsonArray::fromStringList(d.capture->ignore));
         root.insert(QLatin1String("capture"), c);
     }
     if (!d.plan.empty())

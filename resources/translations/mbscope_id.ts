@@ -329,7 +329,12 @@
         <translation>%1 adalah referensi ke %2, tetapi fungsi ini mengalamati %3 (%4xxxx)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+21"/>
+        <source>%1 looks like a Modicon reference; its PDU address is %2 (0x%3): choose Modicon (1-based) to type it as one</source>
+        <translation>%1 tampak seperti referensi Modicon; alamat PDU-nya %2 (0x%3): pilih Modicon (mulai 1) untuk mengetiknya sebagai referensi</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>PDU address %1 (0x%2), 0-based</source>
         <translation>Alamat PDU %1 (0x%2), mulai 0</translation>
     </message>
@@ -1124,7 +1129,7 @@
         <translation>Kosongkan Penghitung dan Flag Overrun</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/functioncode.cpp" line="+29"/>
+        <location filename="../../core/protocol/functioncode.cpp" line="+32"/>
         <source>Read Coils</source>
         <translation>Baca Coil</translation>
     </message>
@@ -1233,6 +1238,11 @@
         <location filename="../../core/protocol/pdudissector.cpp" line="+74"/>
         <source>Exception response</source>
         <translation>Respons exception</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Invalid function code</source>
+        <translation>Kode fungsi tidak valid</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1355,7 +1365,7 @@
         <translation>Kode exception tidak dikenal: spesifikasi Modbus mendefinisikan 0x01-0x08, 0x0A dan 0x0B</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/modiconreference.cpp" line="+184"/>
+        <location filename="../../core/protocol/modiconreference.cpp" line="+197"/>
         <source>coils</source>
         <translation>coil</translation>
     </message>
@@ -2173,7 +2183,7 @@
         <translation>Kode fungsi</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+82"/>
         <source>Function in error</source>
         <translation>Fungsi yang error</translation>
     </message>
@@ -2181,6 +2191,11 @@
         <location line="+10"/>
         <source>Exception code</source>
         <translation>Kode exception</translation>
+    </message>
+    <message>
+        <location filename="../../core/protocol/dissector.cpp" line="+39"/>
+        <source>Frame too long</source>
+        <translation>Frame terlalu panjang</translation>
     </message>
 </context>
 <context>
@@ -2915,7 +2930,7 @@
 <context>
     <name>mbscope::PlanPanel</name>
     <message>
-        <location filename="../../ui/session/planpanel.cpp" line="+20"/>
+        <location filename="../../ui/session/planpanel.cpp" line="+22"/>
         <source>Export the results as JUnit XML</source>
         <translation>Ekspor hasil sebagai JUnit XML</translation>
     </message>

@@ -21,7 +21,10 @@ QByteArray CliResult::describe() const
 
 QString mbscopePath()
 {
-    return QStringLiteral(MBSCOPE_EXECUTABLE);
+    // MBSCOPE_UNDER_TEST runs the same tests against another build (say, main's, to show that a
+    // new test fails there); the build's own executable otherwise.
+    const QString other = qEnvironmentVariable("MBSCOPE_UNDER_TEST");
+    return other.isEmpty() ? QStringLiteral(MBSCOPE_EXECUTABLE) : other;
 }
 
 CliResult runMbscope(const QStringList &arguments, int timeoutMs, const QProcessEnvironment &env)

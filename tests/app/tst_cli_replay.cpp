@@ -14,6 +14,7 @@
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QProcess>
+#include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
 #include <QtCore/QThread>
 #include <QtTest/QTest>
@@ -170,6 +171,60 @@ void TestCliReplay::replayReportsChangedValues()
     QVERIFY2(!text.contains(QStringLiteral("@0x007E")), r.describe().constData());
     // The write echoes its request, which did not change: it matches.
     QVERIFY2(!text.contains(QStringLiteral("#4 ")), r.describe().constData());
+
+    // A field expected to change, named as the report names it: reported as ignored, not counted.
+    const CliResult ignored = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--target"), sim.url(), QStringLiteral("--speed"),
+                                          QStringLiteral("max"), QStringLiteral("--ignore"), QStringLiteral("modbus.register_value@0x007D")});
+    QVERIFY2(ignored.finished && ignored.exitCode == 0, ignored.describe().constData());
+    QVERIFY2(ignored.outText().contains(QStringLiteral("differed      0  (values 0, outcome 0, missing answers 0)")), ignored.describe().constData());
+    // (The first replay's write put 250 back in unit 1: how many answers still differ depends on
+    // that state, not on --ignore; at least unit 3's does.)
+    static const QRegularExpression ignoredLine(QStringLiteral(
+        R"(\nignored       modbus\.register_value@0x007D: differed in [1-9][0-9]* answer\(s\), not counted; )"
+        R"(first modbus\.register_value@0x007D: recorded 250, now 251 \(request #[0-9]+\)\n)"));
+    QVERIFY2(ignoredLine.match(ignored.outText()).hasMatch(), ignored.describe().constData());
+    // The decimal address selects the same field; JSON lists what was ignored.
+    const CliResult json = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--target"), sim.url(), QStringLiteral("--speed"),
+                                       QStringLiteral("max"), QStringLiteral("--ignore"), QStringLiteral("modbus.register_value@125"), QStringLiteral("--json")});
+    QVERIFY2(json.finished && json.exitCode == 0, json.describe().constData());
+    const QJsonArray list = json.json().value(QStringLiteral("ignored")).toArray();
+    QCOMPARE(list.size(), 1);
+    QCOMPARE(list.at(0).toObject().value(QStringLiteral("field")).toString(), QStringLiteral("modbus.register_value@125"));
+    QVERIFY(list.at(0).toObject().value(QStringLiteral("answers")).toInt() >= 1);
+    QCOMPARE(json.json().value(QStringLiteral("values_differ")).toInt(), 0);
+    // Another field ignored: the change is still a difference.
+    const CliResult other = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--target"), sim.url(), QStringLiteral("--speed"),
+                                        QStringLiteral("max"), QStringLiteral("--ignore"), QStringLiteral("modbus.register_value@0x007E")});
+    QVERIFY2(other.finished && other.exitCode == 1, other.describe().constData());
+    QVERIFY2(other.outText().contains(QStringLiteral("ignored       modbus.register_value@0x007E: no answer differed there")), other.describe().constData());
+
+    // The same in the session document (capture.ignore).
+    QFile session(m_session);
+    QVERIFY(session.open(QIODevice::ReadOnly));
+    QByteArray document = session.readAll();
+    session.close();
+    const QString withIgnore = m_dir.filePath(QStringLiteral("ignoring.mbscope.json"));
+    QFile ignoring(withIgnore);
+    QVERIFY(ignoring.open(QIODevice::WriteOnly));
+    ignoring.write(QByteArray(document).replace(R"("journal": "recorded.mbscope.journal")",
+                                                R"("journal": "recorded.mbscope.journal", "ignore": ["modbus.register_value@0x007D"])"));
+    ignoring.close();
+    const CliResult fromDocument = runMbscope({QStringLiteral("replay"), withIgnore, QStringLiteral("--target"), sim.url(), QStringLiteral("--speed"), QStringLiteral("max")});
+    QVERIFY2(fromDocument.finished && fromDocument.exitCode == 0, fromDocument.describe().constData());
+    QVERIFY2(ignoredLine.match(fromDocument.outText()).hasMatch(), fromDocument.describe().constData());
+
+    // Bad selectors: said where.
+    const CliResult badOption = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--target"), sim.url(), QStringLiteral("--ignore"), QStringLiteral("register@0x7D")});
+    QVERIFY2(badOption.exitCode == 2 && badOption.errText().contains(QStringLiteral("--ignore: 'register@0x7D' is not a field selector")),
+             badOption.describe().constData());
+    QVERIFY(ignoring.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    ignoring.write(QByteArray(document).replace(R"("journal": "recorded.mbscope.journal")",
+                                                R"("journal": "recorded.mbscope.journal", "ignore": ["modbus.register_value@70000"])"));
+    ignoring.close();
+    const CliResult badDocument = runMbscope({QStringLiteral("replay"), withIgnore, QStringLiteral("--target"), sim.url()});
+    QVERIFY2(badDocument.exitCode == 2 && badDocument.errText().contains(QStringLiteral("capture.ignore[0]"))
+                 && badDocument.errText().contains(QStringLiteral("address 70000 is beyond 65535")),
+             badDocument.describe().constData());
 }
 
 void TestCliReplay::replayReportsLinkAndUsageErrors()

@@ -74,6 +74,7 @@ private slots:
     void usageAndLinkErrors_data();
     void usageAndLinkErrors();
     void interrupted();
+    void linkErrorCountsEveryStep();
 };
 
 void TestCliRun::initTestCase()
@@ -239,9 +240,43 @@ void TestCliRun::interrupted()
     QString error;
     const auto cases = junitCases(junit, &error);
     QVERIFY2(error.isEmpty(), qPrintable(error));
-    QVERIFY(cases.size() >= 2 && cases.size() < 16);
+    // One count everywhere: the 16 steps of a full run, those not run (or cut short) skipped,
+    // none failed for being interrupted.
+    QCOMPARE(cases.size(), 16);
     QCOMPARE(cases.constLast().second, QStringLiteral("skipped"));
-    QVERIFY2(cases.constLast().first.startsWith(QLatin1String("gate counts change")), qPrintable(cases.constLast().first));
+    QCOMPARE(cases.constLast().first, QStringLiteral("read the gate counts (3/3)"));
+    for (const auto &c : cases)
+        QVERIFY2(c.second != QLatin1String("failure"), qPrintable(c.first));
+    QVERIFY2(out.contains("\n16 steps: "), out.constData());
+}
+
+void TestCliRun::linkErrorCountsEveryStep()
+{
+    // The link refused at the first step: 1 error and the 15 others skipped, the same 16 as a
+    // full run, in the text, the JSON and the JUnit file.
+    const QString closed = QStringLiteral("rtu-tcp://127.0.0.1:%1").arg(closedPort());
+    const QString junit = m_dir.filePath(QStringLiteral("refused.xml"));
+    const CliResult r = runMbscope({QStringLiteral("run"), example(), QStringLiteral("--target"), closed, QStringLiteral("--junit"), junit});
+    QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("\n16 steps: 0 passed, 0 failed, 1 errors, 15 skipped in ")), r.out.constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("SKIP   ... and 14 more steps not run\n")), r.out.constData());
+    QString error;
+    const auto cases = junitCases(junit, &error);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
+    QCOMPARE(cases.size(), 16);
+    QCOMPARE(cases.at(0).second, QStringLiteral("error"));
+    QCOMPARE(cases.constLast().first, QStringLiteral("read the gate counts (3/3)"));
+    const CliResult json = runMbscope({QStringLiteral("run"), example(), QStringLiteral("--target"), closed, QStringLiteral("--json")});
+    QCOMPARE(json.json().value(QLatin1String("steps")).toArray().size(), 16);
+    QCOMPARE(json.json().value(QLatin1String("counts")).toObject().value(QLatin1String("skipped")).toInt(), 15);
+
+    // --junit into a folder that does not exist: refused before the first step.
+    const CliResult nowhere = runMbscope({QStringLiteral("run"), example(), QStringLiteral("--target"), m_target, QStringLiteral("--junit"),
+                                          m_dir.filePath(QStringLiteral("missing/results.xml"))});
+    QVERIFY2(nowhere.finished && nowhere.exitCode == 2, nowhere.describe().constData());
+    QVERIFY2(nowhere.errText().contains(QStringLiteral("--junit: cannot write ")) && nowhere.errText().contains(QStringLiteral("the folder does not exist")),
+             nowhere.describe().constData());
+    QVERIFY2(nowhere.out.isEmpty(), nowhere.describe().constData());
 }
 
 QTEST_GUILESS_MAIN(TestCliRun)

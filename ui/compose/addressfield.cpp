@@ -176,23 +176,44 @@ std::optional<int> AddressField::parse(QString *error) const
     return std::nullopt;
 }
 
+QString AddressField::referenceHint() const
+{
+    // The mistake the guide describes: a manual's 40122 typed as a PDU address (the device then
+    // answers exception 02, or the address is out of range).
+    if (m_shown != Notation::Decimal || !m_table)
+        return {};
+    bool ok = false;
+    const qlonglong value = m_edit->text().trimmed().toLongLong(&ok, 10);
+    if (!ok || ModiconReference::addressHint(value).isEmpty())
+        return {};
+    const ModiconReferenceResult ref = ModiconReference::parse(m_edit->text().trimmed());
+    return tr("%1 looks like a Modicon reference; its PDU address is %2 (0x%3): choose Modicon (1-based) to type it as one")
+        .arg(value)
+        .arg(ref.reference.address())
+        .arg(ref.reference.address(), 4, 16, QLatin1Char('0'));
+}
+
 void AddressField::updateBase()
 {
     QString why;
     const std::optional<int> value = parse(&why);
+    const QString hint = referenceHint();
     QPalette p = m_baseLabel->palette();
     if (!value) {
-        m_baseLabel->setText(why);
+        m_baseLabel->setText(hint.isEmpty() ? why : why + QLatin1Char('\n') + hint);
         p.setColor(QPalette::WindowText, SeverityStyle::textColor(Severity::Error));
         m_baseLabel->setPalette(p);
         return;
     }
-    p.setColor(QPalette::WindowText, palette().color(QPalette::PlaceholderText));
+    p.setColor(QPalette::WindowText, hint.isEmpty() ? palette().color(QPalette::PlaceholderText)
+                                                    : SeverityStyle::textColor(Severity::Warning));
     m_baseLabel->setPalette(p);
+    QString base;
     if (m_table)
-        m_baseLabel->setText(ModiconReference(*m_table, quint16(*value)).describe());
+        base = ModiconReference(*m_table, quint16(*value)).describe();
     else
-        m_baseLabel->setText(tr("PDU address %1 (0x%2), 0-based").arg(*value).arg(*value, 4, 16, QLatin1Char('0')));
+        base = tr("PDU address %1 (0x%2), 0-based").arg(*value).arg(*value, 4, 16, QLatin1Char('0'));
+    m_baseLabel->setText(hint.isEmpty() ? base : base + QLatin1Char('\n') + hint);
 }
 
 } // namespace mbscope

@@ -50,6 +50,8 @@ private:
     [[nodiscard]] QString format(int address) const;
     void onNotationChanged();
     void updateBase();
+    // Decimal text of 10001 or more that reads as a Modicon reference: what it would be as one.
+    [[nodiscard]] QString referenceHint() const;
 
     QLineEdit *m_edit = nullptr;
     QComboBox *m_notationCombo = nullptr;

@@ -103,7 +103,7 @@ void PlanController::onFinished(const PlanResult &result)
 QString PlanController::summaryOf(const PlanResult &result)
 {
     QString text = tr("Steps: %1; passed %2, failed %3, errors %4, skipped %5; %6 s against %7.")
-                       .arg(result.steps.size())
+                       .arg(result.total())
                        .arg(result.count(StepResult::Outcome::Passed))
                        .arg(result.count(StepResult::Outcome::Failed))
                        .arg(result.count(StepResult::Outcome::Error))

@@ -3,6 +3,8 @@
 #include "plancontroller.h"
 #include "planresultmodel.h"
 
+#include "session/planresult.h"
+
 #include <QtWidgets/QFileDialog>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QHeaderView>
@@ -75,7 +77,7 @@ void PlanPanel::showDocumentHint()
     } else {
         const QString name = document.name.isEmpty() ? tr("The session's plan") : tr("The plan of %1").arg(document.name);
         m_summary->setText(tr("%1 has %n step(s). Press Run plan to run it against the connected device.", nullptr,
-                              int(document.plan.size()))
+                              planStepCount(document.plan))
                                .arg(name));
     }
     m_summary->setStyleSheet(QString());

@@ -18,15 +18,8 @@ void PlanWorker::run()
     PlanRunner runner(m_document, m_url, m_document.target);
     runner.setFramesObserver([this](const QList<TrafficFrame> &frames, const QString &link) { Q_EMIT framesLogged(frames, link); });
     m_runner = &runner;
-    if (m_stopRequested) {
-        m_runner = nullptr;
-        PlanResult none;
-        none.name = m_document.name;
-        none.target = m_url.toString();
-        none.interrupted = true;
-        Q_EMIT finished(none);
-        return;
-    }
+    if (m_stopRequested)
+        runner.stop(); // stopped before it started: every step is reported skipped, as in the CLI
     const PlanResult result = runner.run([this](const StepResult &step) { Q_EMIT stepFinished(step); });
     m_runner = nullptr;
     Q_EMIT finished(result);

@@ -64,7 +64,11 @@ void tst_Matcher::keys_data()
     row("rtu", rtu("0300790016", 1), MatchRule::UnitFunction, 1, 3, 0, false);
     row("rtu", rtu("0600010003", 0), MatchRule::UnitFunction, 0, 6, 0, true);
     row("ascii", ascii("0300000001", 0x11), MatchRule::UnitFunction, 0x11, 3, 0, false);
-    row("ascii", ascii("0F00000003010500", 0), MatchRule::UnitFunction, 0, 0x0F, 0, true);
+    row("ascii", ascii("0F000000030105", 0), MatchRule::UnitFunction, 0, 0x0F, 0, true);
+    // Only a well-formed frame to unit 0 is a broadcast: one byte too many, or MBAP bytes read as
+    // RTU (transaction id 0x0001: "unit 0", no valid CRC), wait for an answer like any request.
+    row("ascii", ascii("0F00000003010500", 0), MatchRule::UnitFunction, 0, 0x0F, 0, false);
+    row("rtu", mbap("0300790001", 1, 1), MatchRule::UnitFunction, 0, 1, 0, false);
     // Too short for keys: the next frame answers it.
     row("tcp", hex("0001000000"), MatchRule::NextFrame, 0, 0, 0, false);
     row("rtu", hex("01"), MatchRule::NextFrame, 0, 0, 0, false);

@@ -31,6 +31,28 @@ class TestModiconReference : public QObject
 {
     Q_OBJECT
 private slots:
+    void addressHint_data()
+    {
+        // A PDU address of 10001 or more that reads as a reference (V1.1b3, 4.4): the guide's mistake.
+        QTest::addColumn<qint64>("address");
+        QTest::addColumn<QString>("hint");
+        QTest::newRow("40122") << qint64(40122) << QStringLiteral("40122 looks like a Modicon reference; its PDU address is 121 (0x0079)");
+        QTest::newRow("400122") << qint64(400122) << QStringLiteral("400122 looks like a Modicon reference; its PDU address is 121 (0x0079)");
+        QTest::newRow("10001") << qint64(10001) << QStringLiteral("10001 looks like a Modicon reference; its PDU address is 0 (0x0000)");
+        QTest::newRow("30301") << qint64(30301) << QStringLiteral("30301 looks like a Modicon reference; its PDU address is 300 (0x012C)");
+        QTest::newRow("465536") << qint64(465536) << QStringLiteral("465536 looks like a Modicon reference; its PDU address is 65535 (0xFFFF)");
+        QTest::newRow("10000: below") << qint64(10000) << QString();
+        QTest::newRow("121: an address") << qint64(121) << QString();
+        QTest::newRow("20000: no table 2") << qint64(20000) << QString();
+        QTest::newRow("40000: no element 0") << qint64(40000) << QString();
+        QTest::newRow("465537: beyond") << qint64(465537) << QString();
+    }
+    void addressHint()
+    {
+        QFETCH(qint64, address);
+        QFETCH(QString, hint);
+        QCOMPARE(ModiconReference::addressHint(address), hint);
+    }
     void parses_data()
     {
         QTest::addColumn<QString>("text");

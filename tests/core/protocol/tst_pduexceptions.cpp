@@ -97,9 +97,10 @@ private slots:
         rsp("99 01", "modbus.function_code=0x99 Exception response !warning | modbus.request_function_code=0x19 Unassigned "
             "function code | modbus.exception_code=0x01 Illegal Function: the function code is not supported by the device, "
             "or not allowed in its current state", "exception for function 0x19, which the specification does not assign");
-        rsp("80 01", "modbus.function_code=0x80 Exception response !warning | modbus.request_function_code=0x00 Unassigned "
+        // V1.1b3, 4.1: valid function codes are 1-255; an exception for code 0 answers no request.
+        rsp("80 01", "modbus.function_code=0x80 Exception response !error | modbus.request_function_code=0x00 Invalid "
             "function code | modbus.exception_code=0x01 Illegal Function: the function code is not supported by the device, "
-            "or not allowed in its current state", "exception for function 0x00");
+            "or not allowed in its current state", "exception for function 0x00, which is not a valid function code");
     }
     void exceptionProblems() { checkRow(); }
 
@@ -146,7 +147,11 @@ private slots:
             req(pdu.constData(), expected.constData(), "reserved function code");
             rsp(pdu.constData(), expected.constData(), "reserved function code");
         }
-        for (const char *fc : {"00", "12", "13", "19", "1A", "28", "2C", "40", "49", "63", "6F", "7C"}) {
+        // V1.1b3, 4.1: "Valid codes are in the range of 1 ... 255 decimal": 0 is an error, not a warning.
+        req("00 AA", "modbus.function_code=0x00 Invalid function code !error | modbus.data=AA",
+            "function code 0 is not valid: valid codes are 1-255 (MODBUS Application Protocol V1.1b3, 4.1)");
+        rsp("00 AA", "modbus.function_code=0x00 Invalid function code !error | modbus.data=AA", "function code 0 is not valid");
+        for (const char *fc : {"12", "13", "19", "1A", "28", "2C", "40", "49", "63", "6F", "7C"}) {
             const QByteArray pdu = QByteArray(fc) + " AA";
             const QByteArray expected = QByteArray("modbus.function_code=0x") + fc
                 + " Unassigned function code !warning | modbus.data=AA";

@@ -49,6 +49,8 @@ private slots:
     void compare_data();
     void compare();
     void verdictNames();
+    void ignoredFields_data();
+    void ignoredFields();
 };
 
 void TestAnswerComparison::compare_data()
@@ -125,6 +127,51 @@ void TestAnswerComparison::verdictNames()
     crc.status = TransactionStatus::CrcError;
     crc.problem = QStringLiteral("CRC 0x1234, expected 0x4321");
     QCOMPARE(AnswerComparison::describeOutcome(crc), QStringLiteral("crc_error (CRC 0x1234, expected 0x4321)"));
+}
+
+void TestAnswerComparison::ignoredFields_data()
+{
+    // Register 0x007A changes (a live count); the selectors that cover it, and those that do not.
+    QTest::addColumn<QStringList>("ignore");
+    QTest::addColumn<bool>("matched");
+    QTest::addColumn<int>("ignored");
+    QTest::newRow("nothing ignored") << QStringList{} << false << 0;
+    QTest::newRow("@0x007A") << QStringList{QStringLiteral("modbus.register_value@0x007A")} << true << 1;
+    QTest::newRow("@122 decimal") << QStringList{QStringLiteral("modbus.register_value@122")} << true << 1;
+    QTest::newRow("key alone, every address") << QStringList{QStringLiteral("modbus.register_value")} << true << 1;
+    QTest::newRow("another address") << QStringList{QStringLiteral("modbus.register_value@0x0079")} << false << 0;
+    QTest::newRow("another key") << QStringList{QStringLiteral("modbus.coil_value@0x007A")} << false << 0;
+}
+
+void TestAnswerComparison::ignoredFields()
+{
+    QFETCH(QStringList, ignore);
+    QFETCH(bool, matched);
+    QFETCH(int, ignored);
+    IgnoredFields fields;
+    for (const QString &selector : ignore) {
+        QString error;
+        QVERIFY2(fields.add(selector, &error), qPrintable(error));
+    }
+    const QByteArray read2("0300790002");
+    // 0x0079 is 1050 both times, 0x007A 250 then 251: only a difference is reported ignored.
+    const AnswerComparison::Result r = AnswerComparison::compare(exchange(Framing::Rtu, read2, "0304041a00fa"), Framing::Rtu,
+                                                                 exchange(Framing::Rtu, read2, "0304041a00fb"), Framing::Rtu, fields);
+    QCOMPARE(r.matched(), matched);
+    QCOMPARE(r.ignored.size() > 0, ignored > 0);
+    if (ignored > 0) {
+        QCOMPARE(r.ignored.size(), 1);
+        QCOMPARE(r.ignored.constFirst().difference, QStringLiteral("modbus.register_value@0x007A: recorded 250, now 251"));
+        QCOMPARE(r.ignored.constFirst().selector, ignore.constFirst());
+        QVERIFY(r.differences.isEmpty());
+    } else {
+        QCOMPARE(r.differences, QStringList{QStringLiteral("modbus.register_value@0x007A: recorded 250, now 251")});
+    }
+    // A selector that names no field is refused, saying why.
+    IgnoredFields bad;
+    QString error;
+    QVERIFY(!bad.add(QStringLiteral("register@0x7A"), &error));
+    QVERIFY2(error.contains(QLatin1String("is not a field selector")), qPrintable(error));
 }
 
 QTEST_GUILESS_MAIN(TestAnswerComparison)

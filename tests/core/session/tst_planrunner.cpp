@@ -89,6 +89,7 @@ private slots:
     void pollBounds();
     void junitReport();
     void linkError();
+    void interruptedWaitIsSkipped();
     void shippedExample();
 
 private:
@@ -260,7 +261,12 @@ void TestPlanRunner::linkError()
     QVERIFY(result.linkFailed);
     QVERIFY2(!result.linkMessage.isEmpty(), "a link error says what the link said");
     QCOMPARE(result.steps.size(), 4); // the repetitions left are one line, however many
-    QCOMPARE(result.steps.at(3).name, QStringLiteral("often"));
+    // ... that counts every run it stands for: the count is the planned one however the run ends.
+    QCOMPARE(result.planned, 1000003);
+    QCOMPARE(result.total(), 1000003);
+    QCOMPARE(result.steps.at(3).runs, 1000000);
+    QCOMPARE(result.count(StepResult::Outcome::Skipped), 1000002);
+    QCOMPARE(result.steps.at(3).name, QStringLiteral("often (1/1000000 to 1000000/1000000)"));
     QCOMPARE(result.steps.at(3).outcome, StepResult::Outcome::Skipped);
     QCOMPARE(result.steps.at(0).outcome, StepResult::Outcome::Error);
     QCOMPARE(result.steps.at(1).outcome, StepResult::Outcome::Skipped);
@@ -271,10 +277,39 @@ void TestPlanRunner::linkError()
 
     const JUnitSuite suite = readJUnit(JUnitReport::toXml(result));
     QCOMPARE(suite.attributes.value(QStringLiteral("errors")), QStringLiteral("1"));
-    QCOMPARE(suite.attributes.value(QStringLiteral("skipped")), QStringLiteral("3"));
+    QCOMPARE(suite.attributes.value(QStringLiteral("skipped")), QStringLiteral("1000002"));
+    QCOMPARE(suite.attributes.value(QStringLiteral("tests")), QStringLiteral("1000003"));
     QCOMPARE(suite.cases.at(0).element, QStringLiteral("error"));
     QCOMPARE(suite.cases.at(0).message, result.linkMessage);
     QCOMPARE(suite.cases.at(2).element, QStringLiteral("skipped"));
+}
+
+void TestPlanRunner::interruptedWaitIsSkipped()
+{
+    // Stopped (Ctrl-C, the window's Stop) during a wait: the wait is cut short, not failed, and
+    // every run left is reported skipped, so the count is the planned one.
+    const SessionDocument doc = document(kRequests, QStringLiteral(R"(
+        {"name": "first", "send": "read all"},
+        {"name": "settle", "wait": "30 s"},
+        {"name": "again", "repeat": 3, "steps": [{"name": "read", "send": "read all"}, {"name": "pause", "wait": 10}]})"));
+    PlanRunner runner(doc, m_sim.url(), SessionTarget{});
+    QTimer::singleShot(200, [&runner] { runner.stop(); });
+    const PlanResult result = runner.run();
+    QVERIFY(result.interrupted);
+    QCOMPARE(result.planned, 8);
+    QCOMPARE(result.total(), 8);
+    QCOMPARE(result.steps.size(), 8);
+    QCOMPARE(result.count(StepResult::Outcome::Failed), 0);
+    QCOMPARE(result.count(StepResult::Outcome::Passed), 1);
+    QCOMPARE(result.count(StepResult::Outcome::Skipped), 7);
+    QCOMPARE(result.steps.at(1).name, QStringLiteral("settle"));
+    QVERIFY2(result.steps.at(1).reasons.constFirst().startsWith(QLatin1String("interrupted after ")), qPrintable(result.steps.at(1).reasons.join(u';')));
+    QCOMPARE(result.steps.constLast().name, QStringLiteral("pause (3/3)"));
+    const JUnitSuite suite = readJUnit(JUnitReport::toXml(result));
+    QCOMPARE(suite.attributes.value(QStringLiteral("tests")), QStringLiteral("8"));
+    QCOMPARE(suite.attributes.value(QStringLiteral("failures")), QStringLiteral("0"));
+    QCOMPARE(suite.attributes.value(QStringLiteral("skipped")), QStringLiteral("7"));
+    QCOMPARE(suite.cases.size(), 8);
 }
 
 void TestPlanRunner::shippedExample()

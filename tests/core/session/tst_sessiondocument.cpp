@@ -164,8 +164,10 @@ void TestSessionDocument::roundTrip_data()
     }
     {
         SessionDocument d;
-        d.capture = SessionCapture{QStringLiteral("bench.mbscope.journal"), QStringLiteral("kill -9 at 12:00")};
+        d.capture = SessionCapture{QStringLiteral("bench.mbscope.journal"), QStringLiteral("kill -9 at 12:00"), {}};
         QTest::newRow("capture") << d;
+        d.capture->ignore = {QStringLiteral("modbus.register_value@0x0086"), QStringLiteral("modbus.byte_count")};
+        QTest::newRow("capture with fields replay ignores") << d;
     }
     {
         SessionDocument d = base();

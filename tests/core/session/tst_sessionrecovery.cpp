@@ -139,7 +139,7 @@ void TestSessionRecovery::killedPollRecovered()
     // The session that names the journal, reopened.
     SessionDocument doc;
     doc.name = QStringLiteral("killed poll");
-    doc.capture = SessionCapture{QStringLiteral("poll.mbscope.journal"), {}};
+    doc.capture = SessionCapture{QStringLiteral("poll.mbscope.journal"), {}, {}};
     const QString docPath = dir.filePath(QStringLiteral("poll.mbscope.json"));
     QString error;
     QVERIFY2(SessionWriter::save(doc, docPath, &error), qPrintable(error));

@@ -86,6 +86,8 @@ private Q_SLOTS:
     void addressNotations_data();
     void addressNotations();
     void wrongTableReferenceIsNamed();
+    void modiconReferenceTypedAsAddress_data();
+    void modiconReferenceTypedAsAddress();
     void badRegisterValueIsNamed();
     void rawTabIsNotRewrittenByLinkChanges();
     void valueTableModel();
@@ -263,6 +265,37 @@ void TestRequestForm::wrongTableReferenceIsNamed()
     QVERIFY(form.bytes().isEmpty());
     QVERIFY2(form.errorText().contains(QLatin1String("holding registers")), qPrintable(form.errorText()));
     QVERIFY2(form.errorText().contains(QLatin1String("coils")), qPrintable(form.errorText()));
+}
+
+void TestRequestForm::modiconReferenceTypedAsAddress_data()
+{
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<bool>("sendable");
+    QTest::addColumn<QString>("hint");
+    // Sendable (the device would answer exception 02), and refused (beyond 65535): both say it.
+    QTest::newRow("40122") << QStringLiteral("40122") << true
+                           << QStringLiteral("40122 looks like a Modicon reference; its PDU address is 121 (0x0079)");
+    QTest::newRow("400122") << QStringLiteral("400122") << false
+                            << QStringLiteral("400122 looks like a Modicon reference; its PDU address is 121 (0x0079)");
+    QTest::newRow("9999") << QStringLiteral("9999") << true << QString();
+    QTest::newRow("20000") << QStringLiteral("20000") << true << QString(); // 2xxxx is no table
+}
+
+void TestRequestForm::modiconReferenceTypedAsAddress()
+{
+    QFETCH(QString, text);
+    QFETCH(bool, sendable);
+    QFETCH(QString, hint);
+    RequestForm form;
+    form.setFunctionCode(0x03);
+    form.addressField()->setNotation(AddressField::Notation::Decimal);
+    form.addressField()->setText(text);
+    QCOMPARE(form.addressField()->address().has_value(), sendable);
+    const QString base = form.addressField()->baseText();
+    if (hint.isEmpty())
+        QVERIFY2(!base.contains(QLatin1String("Modicon reference;")), qPrintable(base));
+    else
+        QVERIFY2(base.contains(hint), qPrintable(base));
 }
 
 void TestRequestForm::badRegisterValueIsNamed()

@@ -60,6 +60,7 @@ private Q_SLOTS:
     void runFromTheWindow_data();
     void runFromTheWindow();
     void refusesWithoutAPlan();
+    void countsEveryRunOfTheExample();
 
 private:
     QTemporaryDir m_dir;
@@ -174,6 +175,35 @@ void TestPlanPanel::refusesWithoutAPlan()
     shown.name = QStringLiteral("acceptance");
     panel.showDocumentHint();
     QVERIFY2(panel.summaryText().contains(QLatin1String("The plan of acceptance has 3 step(s)")), qPrintable(panel.summaryText()));
+}
+
+void TestPlanPanel::countsEveryRunOfTheExample()
+{
+    // The shipped example: 11 steps in the document, one of them a repeat of 2 steps 3 times, so
+    // 16 runs; the window says 16 as mbscope run does ("16 steps"), and a run stopped at once
+    // reports each of the 16 as skipped (a stop is not a failure).
+    QFile example(QStringLiteral(MBSCOPE_TEST_DATA_DIR "/../../docs/examples/rosrao-gamma.mbscope.json"));
+    QVERIFY(example.open(QIODevice::ReadOnly));
+    const SessionLoadResult loaded = SessionReader::parse(example.readAll(), example.fileName());
+    QVERIFY2(loaded.ok(), qPrintable(loaded.errorText()));
+    QCOMPARE(loaded.document->plan.size(), std::size_t(11));
+    LinkController link;
+    link.connectTo(m_sim.started().url);
+    PlanController controller(&link);
+    PlanPanel panel(&controller, [&loaded] { return *loaded.document; });
+    QVERIFY2(panel.summaryText().contains(QLatin1String("has 16 step(s)")), qPrintable(panel.summaryText()));
+
+    QSignalSpy finished(&controller, &PlanController::finished);
+    panel.run();
+    controller.stop();
+    QVERIFY(finished.wait(kWaitMs));
+    QVERIFY(controller.lastResult().has_value());
+    const PlanResult &result = *controller.lastResult();
+    QCOMPARE(result.steps.size(), qsizetype(16));
+    QCOMPARE(result.planned, 16);
+    QCOMPARE(result.count(StepResult::Outcome::Failed), 0);
+    QCOMPARE(controller.results()->rowCount(), 16);
+    QVERIFY2(panel.summaryText().contains(QLatin1String("Steps: 16;")), qPrintable(panel.summaryText()));
 }
 
 QTEST_MAIN(TestPlanPanel)
