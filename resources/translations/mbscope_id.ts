@@ -2266,7 +2266,7 @@
 <context>
     <name>mbscope::LatencyHistogramPanel</name>
     <message>
-        <location filename="../../ui/analysis/latencyhistogrampanel.cpp" line="+47"/>
+        <location filename="../../ui/analysis/latencyhistogrampanel.cpp" line="+48"/>
         <source>Which run to show: the current poll, the kept reference or an opened capture</source>
         <translation>Run mana yang ditampilkan: polling saat ini, referensi yang disimpan, atau capture yang dibuka</translation>
     </message>
@@ -2350,6 +2350,31 @@
         <source>%1 transactions, %2 answered</source>
         <translation>%1 transaksi, %2 terjawab</translation>
     </message>
+    <message>
+        <location line="+5"/>
+        <source>; latency from the computed end of each request&apos;s transmission</source>
+        <translation>; latensi dihitung dari akhir transmisi tiap permintaan</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; latency from the computed end of transmission (%1) or the write (%2)</source>
+        <translation>; latensi dari akhir transmisi yang dihitung (%1) atau dari penulisan (%2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>; latency from each request&apos;s write</source>
+        <translation>; latensi dari penulisan tiap permintaan</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>; warning: %1 answers faster than the serial line</source>
+        <translation>; peringatan: %1 jawaban lebih cepat daripada saluran serial</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 answers came before the serial line could have carried the request and the answer at its baud rate: the link does not honour it (a pseudo terminal, or a USB adapter that buffers). Their latency is measured from the write.</source>
+        <translation>%1 jawaban tiba sebelum saluran serial sempat membawa permintaan dan jawabannya pada baud rate-nya: tautan ini tidak mematuhinya (terminal semu, atau adaptor USB yang menyangga). Latensinya diukur dari penulisan.</translation>
+    </message>
 </context>
 <context>
     <name>mbscope::LatencyRuns</name>
@@ -2432,7 +2457,12 @@
         <translation>Error link</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+7"/>
+        <source>Faster than the line (from the write)</source>
+        <translation>Lebih cepat daripada saluran (dari penulisan)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Latency min</source>
         <translation>Latensi min</translation>
     </message>
@@ -3152,7 +3182,7 @@
         <translation>Folder capture</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+22"/>
         <source>New journal &amp;part every (MiB):</source>
         <translation>&amp;Bagian jurnal baru setiap (MiB):</translation>
     </message>
@@ -3162,7 +3192,7 @@
         <translation>Simpan &amp;paling banyak (MiB):</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-14"/>
         <source>A journal that reaches this size is closed and the recording goes on in a new part</source>
         <translation>Jurnal yang mencapai ukuran ini ditutup dan perekaman berlanjut di bagian baru</translation>
     </message>
@@ -3172,12 +3202,12 @@
         <translation>Jurnal tertua di folder capture dihapus agar tetap di bawah ukuran ini (tidak pernah yang sedang ditulis, tidak pernah yang di samping sesi tersimpan)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Capture &amp;folder:</source>
         <translation>&amp;Folder capture:</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Recording</source>
         <translation>Perekaman</translation>
     </message>
