@@ -1,5 +1,6 @@
 #include "histogramplot.h"
 
+#include "platformnoise.h"
 #include "plotfile.h"
 
 #include <QtCore/QByteArray>
@@ -50,6 +51,7 @@ bool HistogramPlot::isRequested(int argc, char *argv[])
 
 void HistogramPlot::prepareOffscreenPlatform()
 {
+    PlatformNoise::suppress();
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", QByteArrayLiteral("offscreen"));
 }

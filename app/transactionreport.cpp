@@ -109,6 +109,24 @@ QString TransactionReport::outcome(const Transaction &t)
     return line;
 }
 
+QString TransactionReport::timingNote(const Transaction &t)
+{
+    if (t.latencyNs() < 0)
+        return {};
+    if (t.outranLine)
+        return QStringLiteral("warning: the answer came before the serial line could have carried the request (%1 on the line) "
+                              "and the answer at its baud rate: the link does not honour it (a pseudo terminal, or a USB "
+                              "adapter that buffers); latency measured from the write")
+            .arg(latencyText(t.transmitNs));
+    if (t.transmitNs > 0)
+        return QStringLiteral("latency from the computed end of the request's transmission: the write, %1%2 on the line "
+                              "(%3 bytes at the baud rate)")
+            .arg(t.lineQueuedNs > 0 ? QStringLiteral("%1 queued, then ").arg(latencyText(t.lineQueuedNs)) : QString(),
+                 latencyText(t.transmitNs))
+            .arg(t.request.size());
+    return QStringLiteral("latency from the request's write to the link");
+}
+
 QString TransactionReport::text(const Transaction &t, const LinkUrl &url)
 {
     QString out = QStringLiteral("REQUEST to %1, %2 bytes: %3\n").arg(url.toString()).arg(t.request.size()).arg(hexOf(t.request));
@@ -124,6 +142,8 @@ QString TransactionReport::text(const Transaction &t, const LinkUrl &url)
     } else if (t.status != TransactionStatus::Broadcast) {
         out += QStringLiteral("RESPONSE none\n\n");
     }
+    if (const QString timing = timingNote(t); !timing.isEmpty())
+        out += QStringLiteral("TIMING %1\n").arg(timing);
     out += QStringLiteral("RESULT %1\n").arg(outcome(t));
     const QString malformed = requestProblem(t, url);
     if (!malformed.isEmpty())
@@ -141,6 +161,10 @@ QJsonObject TransactionReport::json(const Transaction &t, const LinkUrl &url)
              t.status == TransactionStatus::Exception ? QJsonValue(int(t.exceptionCode)) : QJsonValue());
     o.insert(QStringLiteral("latency_us"), us(t.latencyNs()));
     o.insert(QStringLiteral("first_byte_us"), us(t.firstByteNs > 0 ? t.firstByteNs - t.sentNs : -1));
+    o.insert(QStringLiteral("latency_from"), t.latencyNs() < 0 ? QJsonValue()
+                                             : QJsonValue(t.measuredFromLineEnd() ? QStringLiteral("line_end") : QStringLiteral("write")));
+    o.insert(QStringLiteral("transmit_us"), t.transmitNs > 0 ? us(t.transmitNs) : QJsonValue());
+    o.insert(QStringLiteral("outran_line"), t.outranLine);
     o.insert(QStringLiteral("attempts"), t.attempt + 1);
     const QString malformed = requestProblem(t, url);
     o.insert(QStringLiteral("request_problem"), malformed.isEmpty() ? QJsonValue() : QJsonValue(malformed));

@@ -14,11 +14,16 @@ namespace mbscope::app {
 class TransactionReport
 {
 public:
-    // REQUEST / RESPONSE headings, each frame's table, then the outcome line.
+    // REQUEST / RESPONSE headings, each frame's table, the TIMING line, then the outcome line.
     [[nodiscard]] static QString text(const Transaction &t, const LinkUrl &url);
     // The outcome line alone: "ok: answered in 1.234 ms" or "timeout: no answer within 1000 ms".
     [[nodiscard]] static QString outcome(const Transaction &t);
-    // {"status", "problem", "exception_code", "latency_us", "first_byte_us", "attempts",
+    // What the latency is measured from ("latency from the request's write to the link", on a
+    // serial link the computed end of its transmission), or the warning that the answer outran
+    // the serial line; empty when there is no latency.
+    [[nodiscard]] static QString timingNote(const Transaction &t);
+    // {"status", "problem", "exception_code", "latency_us", "first_byte_us", "latency_from"
+    //  ("write", "line_end" or null), "transmit_us" (serial), "outran_line", "attempts",
     //  "request": {"hex", "length", "dissection"}, "response": {...} or null}
     [[nodiscard]] static QJsonObject json(const Transaction &t, const LinkUrl &url);
 

@@ -189,6 +189,7 @@ void EngineCore::writeStaged()
         if (i >= 0 && m_scheduler.inFlight().at(i).sentNs == 0 && serial->lineFreeNs() >= m_scheduler.inFlight().at(i).writeStartNs) {
             InFlightRequest &p = m_scheduler.inFlightAt(i);
             p.predictedSentNs = serial->lineFreeNs();
+            p.characterNs = SerialLink::lineCharacterNs(serial->url().serial);
             p.deadlineNs = serial->lineFreeNs() + WriteScheduler::waitNs(p.out.item, broadcastWaitNs());
         }
     }

@@ -179,7 +179,7 @@ void EngineCore::recordLate(InFlightRequest late, const StreamFrame &frame, qint
     const ResponseVerdict::Result v = m_verdict->judge(frame, late.sent);
     // The request's earlier attempts were told with its timeout record; this one tells the answer.
     late.out.history.clear();
-    const qint64 sentNs = late.sentTime(firstNs);
+    const qint64 sentNs = late.sentTime(firstNs, lastNs, frame.bytes.size());
     QString problem = QStringLiteral("the answer came %1 ms after the request, %2 ms after its %3 ms timeout")
                           .arg(msText(lastNs - sentNs), msText(lastNs - late.timedOutNs)).arg(late.out.item.timeoutMs);
     if (v.status != TransactionStatus::Ok)

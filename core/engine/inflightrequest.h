@@ -28,15 +28,23 @@ struct InFlightRequest {
     qint64 writeStartNs = 0;
     qint64 sentNs = 0;          // 0 until the link reports the write
     qint64 predictedSentNs = 0; // serial: when the link computes the last byte will have left
+    qint64 characterNs = 0;     // serial: one character on the line at the URL's settings; 0 otherwise
     qint64 deadlineNs = 0;
     qint64 timedOutNs = 0;      // for late answers
 
     // One that never reached the link (it failed before it could be written).
     [[nodiscard]] static InFlightRequest unsent(const OutgoingRequest &out);
 
-    // When the request left: the link's time for the last request byte, unless the answer began
-    // before it (firstNs; 0 when there is no answer).
-    [[nodiscard]] qint64 sentTime(qint64 firstNs) const;
+    // When the request left: the link's time for the last request byte, unless the answer came
+    // faster than the line allows after it (see outranLine); then the time of the write.
+    // firstNs, lastNs: the answer's first and last byte (0 when there is no answer).
+    [[nodiscard]] qint64 sentTime(qint64 firstNs, qint64 lastNs = 0, qsizetype responseBytes = 0) const;
+    // Serial: whether an answer arrived before the line could have carried the request and the
+    // answer at its baud rate (it began before the computed end of the request, or ended sooner
+    // than its own characters take, by more than one character's slack). The computed end is then
+    // not what happened: a pseudo terminal ignores the baud rate, a USB adapter may report
+    // bytes written while it still holds them.
+    [[nodiscard]] bool outranLine(qint64 firstNs, qint64 lastNs, qsizetype responseBytes) const;
 
     // The one place a record of this request is made, whatever ended it.
     [[nodiscard]] Transaction toTransaction(TransactionStatus status, const QString &problem,

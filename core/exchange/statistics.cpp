@@ -87,6 +87,12 @@ void Statistics::add(const Transaction &transaction)
     if (answered && transaction.doneNs > 0) {
         const qint64 ns = transaction.latencyNs();
         m_latency.add(ns);
+        if (transaction.measuredFromLineEnd())
+            ++m_fromLineEnd;
+        else
+            ++m_fromWrite;
+        if (transaction.outranLine)
+            ++m_outranLine;
         if (m_spec.kind != HistogramSpec::Kind::Auto)
             m_histogram.add(ns);
     }
@@ -106,6 +112,30 @@ double Statistics::errorRate() const
 {
     const quint64 wanted = m_count - m_broadcasts;
     return wanted == 0 ? 0.0 : double(failed()) / double(wanted);
+}
+
+QString Statistics::latencyOrigin() const
+{
+    if (m_fromLineEnd > 0 && m_fromWrite > 0)
+        return QStringLiteral("the computed end of the request's transmission (%1 answers), the write (%2)")
+            .arg(m_fromLineEnd)
+            .arg(m_fromWrite);
+    if (m_fromLineEnd > 0)
+        return QStringLiteral("the computed end of the request's transmission (the write + its characters at the baud rate)");
+    if (m_fromWrite > 0)
+        return QStringLiteral("the request's write to the link");
+    return {};
+}
+
+QString Statistics::outranLineWarning() const
+{
+    if (m_outranLine == 0)
+        return {};
+    return QStringLiteral("%1 of %2 answers came before the serial line could have carried the request and the answer "
+                          "at its baud rate: the link does not honour it (a pseudo terminal, or a USB adapter that buffers); "
+                          "those latencies are measured from the write")
+        .arg(m_outranLine)
+        .arg(m_latency.count());
 }
 
 Histogram Statistics::histogram() const
@@ -136,7 +166,7 @@ QJsonObject Statistics::toJson() const
     latency.insert(QStringLiteral("max"), figure(double(m_latency.maxNs())));
     latency.insert(QStringLiteral("stddev"), figure(m_latency.stddevNs()));
 
-    return QJsonObject{
+    QJsonObject out{
         {QStringLiteral("count"), double(m_count)},
         {QStringLiteral("ok"), double(m_ok)},
         {QStringLiteral("exceptions"), double(m_exceptions)},
@@ -150,7 +180,13 @@ QJsonObject Statistics::toJson() const
         {QStringLiteral("broadcasts"), double(m_broadcasts)},
         {QStringLiteral("latency_us"), latency},
         {QStringLiteral("histogram"), histogram().toJson()},
+        {QStringLiteral("outran_line"), double(m_outranLine)},
     };
+    if (m_fromLineEnd > 0 || m_fromWrite > 0)
+        out.insert(QStringLiteral("latency_from"), m_fromLineEnd == 0 ? QStringLiteral("write")
+                                                   : m_fromWrite == 0 ? QStringLiteral("line_end")
+                                                                      : QStringLiteral("mixed"));
+    return out;
 }
 
 QString Statistics::summary() const
@@ -200,6 +236,9 @@ QString Statistics::summary() const
                                 value(double(m_latency.percentileNs(95))), value(double(m_latency.percentileNs(99))),
                                 value(double(m_latency.maxNs())), value(m_latency.stddevNs()))
                            .arg(m_latency.count()));
+        lines.append(padded("latency from") + latencyOrigin() + QStringLiteral(" to the answer's last byte"));
+        if (m_outranLine > 0)
+            lines.append(padded("warning") + outranLineWarning());
     }
     return lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
 }

@@ -21,6 +21,9 @@ namespace mbscope {
 // - latency: doneNs - sentNs of the answered transactions, Ok and Exception (the device answered
 //   this request); a timeout has no latency, a late answer's is past its timeout and would only
 //   stretch the tail, a CRC error or malformed answer may not be the answer at all.
+// - what each latency is measured from: the write (network links, and serial answers that
+//   outran the line) or the computed end of the request's transmission (serial); outranLine()
+//   counts the serial answers that came before the line could have carried them (Transaction).
 // - the histogram counts the same latencies: O(1) per transaction with fixed or logarithmic bins;
 //   with HistogramSpec::Auto the bins are fitted to the stored latencies when asked.
 // Not thread-safe, const queries included (percentiles sort the stored latencies in place): the
@@ -49,6 +52,16 @@ public:
     // not get a good one. 0 when there were none.
     [[nodiscard]] double errorRate() const;
 
+    // Answered transactions by what their latency is measured from, and those that outran
+    // their serial line (measured from the write for that reason).
+    [[nodiscard]] quint64 measuredFromWrite() const { return m_fromWrite; }
+    [[nodiscard]] quint64 measuredFromLineEnd() const { return m_fromLineEnd; }
+    [[nodiscard]] quint64 outranLine() const { return m_outranLine; }
+    // "the write" / "the computed end of transmission" / both, for the output; empty without answers.
+    [[nodiscard]] QString latencyOrigin() const;
+    // The warning when answers outran their line; empty when none did.
+    [[nodiscard]] QString outranLineWarning() const;
+
     [[nodiscard]] const LatencySamples &latency() const { return m_latency; }
     [[nodiscard]] const HistogramSpec &histogramSpec() const { return m_spec; }
     // The latency histogram: the one kept up to date, or for Auto one fitted to the latencies now.
@@ -57,6 +70,7 @@ public:
     // {"count","ok","exceptions","timeouts","crc_errors","malformed","late","link_errors",
     //  "unexpected","broadcasts","exceptions_by_code":{"0x02":n,...},
     //  "latency_us":{"count","min","mean","median","p90","p95","p99","max","stddev"},
+    //  "latency_from":"write"|"line_end"|"mixed" (absent without answers),"outran_line":n,
     //  "histogram":{"bin_edges_us","counts","underflow","overflow"}}
     // Latency figures are microseconds (ns / 1000, not rounded); null when nothing was answered.
     [[nodiscard]] QJsonObject toJson() const;
@@ -82,6 +96,9 @@ private:
     quint64 m_late = 0;
     quint64 m_linkErrors = 0;
     quint64 m_broadcasts = 0;
+    quint64 m_fromWrite = 0;
+    quint64 m_fromLineEnd = 0;
+    quint64 m_outranLine = 0;
     std::array<quint64, 256> m_exceptionsByCode{};
 };
 

@@ -23,8 +23,14 @@ enum class TransactionStatus : quint8 {
 [[nodiscard]] QString transactionStatusName(TransactionStatus status); // "ok", "timeout", "crc_error"...
 
 // One exchange as the engine saw it. Timestamps are monotonic nanoseconds (monotonicNowNs):
-// sentNs when the last request byte was written, firstByteNs and doneNs when the first and the
-// last byte of the answer arrived (0 when there was no answer).
+// sentNs when the last request byte left, firstByteNs and doneNs when the first and the last
+// byte of the answer arrived (0 when there was no answer). The latency runs from sentNs to doneNs.
+//
+// What sentNs is: on network links, the moment the socket took the request (the write). On
+// serial links, the end of the request's transmission as computed from the write and the line's
+// settings (writeNs + the time queued behind earlier bytes + transmitNs), since the host cannot
+// see the last stop bit leave; unless the answer came faster than that line allows
+// (outranLine: a pseudo terminal or a buffering USB adapter), when it is the write (writeNs).
 struct Transaction {
     quint64 id = 0;          // engine-wide sequence number
     int item = -1;           // index of the request item in a poll, -1 for a single send
@@ -37,12 +43,21 @@ struct Transaction {
     qint64 sentNs = 0;
     qint64 firstByteNs = 0;
     qint64 doneNs = 0;
+    qint64 writeNs = 0;      // when the request was handed to the link (0: never written)
+    qint64 transmitNs = 0;   // serial: the request's computed time on the line at its baud rate; 0 otherwise
+    qint64 lineQueuedNs = 0; // serial: computed wait behind bytes written before it
+    // Serial: the answer arrived before the line could have carried the request and the answer
+    // (the link does not honour its baud rate); the latency is then measured from the write.
+    bool outranLine = false;
     // Pipelining only: the engine gave the request a transaction id of its own so that answers in
     // flight can be told apart; request holds the bytes actually sent.
     bool transactionIdRewritten = false;
 
     [[nodiscard]] qint64 latencyNs() const { return doneNs > 0 ? doneNs - sentNs : -1; }
     [[nodiscard]] bool isOk() const { return status == TransactionStatus::Ok; }
+    // Whether the latency runs from the computed end of transmission (serial links that honour
+    // their line) rather than from the write.
+    [[nodiscard]] bool measuredFromLineEnd() const { return transmitNs > 0 && !outranLine; }
 };
 
 } // namespace mbscope

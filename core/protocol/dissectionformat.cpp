@@ -38,7 +38,7 @@ QJsonObject jsonField(const FieldTree &tree, int i)
     o.insert(QStringLiteral("severity"), severityName(f.severity));
     o.insert(QStringLiteral("message"), f.message);
     QJsonArray children;
-    for (int c : tree.children(i))
+    for (int c = tree.firstChild(i); c >= 0; c = tree.nextSibling(c))
         children.append(jsonField(tree, c));
     o.insert(QStringLiteral("children"), children);
     return o;
@@ -59,7 +59,7 @@ struct Row {
 
 void collect(const FieldTree &tree, int parent, int depth, int maxRawBytes, QList<Row> &rows)
 {
-    for (int i : tree.children(parent)) {
+    for (int i = tree.firstChild(parent); i >= 0; i = tree.nextSibling(i)) {
         const Field &f = tree.at(i);
         Row r;
         r.offset = f.length > 0 ? QString::number(f.offset) : QStringLiteral("%1").arg(f.offset);
@@ -91,7 +91,7 @@ QJsonObject DissectionFormat::toJson(const Dissection &d)
     o.insert(QStringLiteral("summary"), d.summary());
     o.insert(QStringLiteral("valid"), d.isValid());
     QJsonArray fields;
-    for (int i : d.fields.children(-1))
+    for (int i = d.fields.firstChild(-1); i >= 0; i = d.fields.nextSibling(i))
         fields.append(jsonField(d.fields, i));
     o.insert(QStringLiteral("fields"), fields);
     return o;

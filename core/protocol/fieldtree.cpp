@@ -21,6 +21,8 @@ void FieldTree::reset(const QByteArray &frame)
 {
     m_frame = frame;
     m_fields.clear();
+    m_links.clear();
+    m_top = Links{};
 }
 
 int FieldTree::add(int parent, const char *key, const char *name, int offset, int length,
@@ -35,7 +37,17 @@ int FieldTree::add(int parent, const char *key, const char *name, int offset, in
     f.length = length;
     f.parent = parent;
     f.format = format;
-    return int(m_fields.size()) - 1;
+    const int index = int(m_fields.size()) - 1;
+    m_links.emplace_back();
+    if (parent < -1 || parent >= index)
+        return index; // no parent to list it under (the dissectors never do this)
+    Links &up = parent >= 0 ? m_links[size_t(parent)] : m_top;
+    if (up.lastChild >= 0)
+        m_links[size_t(up.lastChild)].nextSibling = index;
+    else
+        up.firstChild = index;
+    up.lastChild = index;
+    return index;
 }
 
 void FieldTree::flag(int index, Severity severity, const QString &message)
@@ -51,13 +63,16 @@ void FieldTree::flag(int index, Severity severity, const QString &message)
         f.message += QStringLiteral("; ") + message;
 }
 
+int FieldTree::firstChild(int parent) const
+{
+    return parent >= 0 ? m_links[size_t(parent)].firstChild : m_top.firstChild;
+}
+
 QList<int> FieldTree::children(int parent) const
 {
     QList<int> out;
-    for (int i = parent + 1; i < size(); ++i) {
-        if (m_fields[size_t(i)].parent == parent)
-            out.append(i);
-    }
+    for (int i = firstChild(parent); i >= 0; i = m_links[size_t(i)].nextSibling)
+        out.append(i);
     return out;
 }
 

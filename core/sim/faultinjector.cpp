@@ -2,6 +2,7 @@
 
 #include "protocol/adubuilder.h"
 #include "sim/faultbytes.h"
+#include "sim/simexchange.h"
 
 #include <QtCore/QMutexLocker>
 
@@ -78,6 +79,13 @@ FaultContext FaultContext::forRequest(Framing framing, const QByteArray &request
     default:
         break;
     }
+    return c;
+}
+
+FaultContext FaultContext::forExchange(const SimExchange &exchange)
+{
+    FaultContext c = forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu, exchange.responseDelayNs);
+    c.unit = exchange.routedUnitId;
     return c;
 }
 

@@ -14,10 +14,12 @@
 
 namespace mbscope {
 
+struct SimExchange;
+
 // What the fault injector is told about one answer.
 struct FaultContext {
     Framing framing = Framing::Tcp; // Rtu for rtu://, rtu-tcp and rtu-udp; Tcp for tcp and tls; Udp; Ascii
-    quint8 unit = 0;
+    quint8 unit = 0;                // the unit that answers (per-unit delays and rules follow it)
     quint8 function = 0;            // the request's function code
     int firstAddress = -1;          // the addresses the request touches; -1: none (07, 11, 2B...)
     int lastAddress = -1;
@@ -30,6 +32,10 @@ struct FaultContext {
     // the FIFO pointer address.
     [[nodiscard]] static FaultContext forRequest(Framing framing, const QByteArray &request,
                                                  const QByteArray &response, qint64 responseDelayNs = 0);
+    // The same for what the simulator made of a request, with unit the unit that answers
+    // (SimExchange::routedUnitId: unit 0 or 255 over MBAP is answered by the endpoint's first
+    // unit, whose response delay and fault rules apply).
+    [[nodiscard]] static FaultContext forExchange(const SimExchange &exchange);
 };
 
 // Decides what happens to each answer of the simulator: plan() turns the correct response ADU

@@ -16,6 +16,10 @@ struct SimExchange {
     QString peer;               // "127.0.0.1:53122", a serial device, ...
     Framing framing = Framing::Tcp; // Tcp or Udp (MBAP), Rtu or Ascii
     quint8 unitId = 0;          // as addressed in the request
+    // The unit that answers: unitId, or the endpoint's first unit for 0 and 0xFF on MBAP
+    // framings (V1.0b 4.4.1.1); every per-unit setting (response delay, fault rules by unit)
+    // follows it. unitId when no unit answers (exception 0B).
+    quint8 routedUnitId = 0;
     quint16 transactionId = 0;  // MBAP framings
     QByteArray requestAdu;      // the request as received
     QByteArray requestPdu;      // function code first

@@ -7,8 +7,7 @@ namespace mbscope {
 Simulator::FaultHook faultHookFor(FaultInjector *injector)
 {
     return [injector](const SimExchange &exchange) {
-        return injector->plan(FaultContext::forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu,
-                                                       exchange.responseDelayNs));
+        return injector->plan(FaultContext::forExchange(exchange));
     };
 }
 

@@ -7,7 +7,7 @@ namespace mbscope {
 class FaultInjector;
 
 // The Simulator's fault hook that asks injector for each answer's plan (FaultInjector::plan
-// with FaultContext::forRequest). The injector must outlive the simulator or be detached first
+// with FaultContext::forExchange). The injector must outlive the simulator or be detached first
 // (setFaultHook({})); its rules may change while the simulator runs.
 //
 //     FaultInjector injector;

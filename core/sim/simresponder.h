@@ -4,7 +4,7 @@
 
 #include <QtCore/QList>
 #include <QtCore/QObject>
-#include <QtCore/QTimer>
+#include <QtCore/QSocketNotifier>
 
 #include <functional>
 
@@ -13,6 +13,12 @@ namespace mbscope {
 // Executes FaultPlans on one output (a connection, a serial port, a datagram socket) with timers,
 // never blocking the event loop: each chunk is written delayNs after the previous one (the first
 // after the request arrived); closeBefore and closeAfter ask the owner to close the output.
+//
+// The timer is a timerfd armed at the due time on CLOCK_MONOTONIC (the clock of monotonicNowNs)
+// with nanosecond resolution, watched by a socket notifier: a QTimer counts whole milliseconds,
+// so answers left on millisecond ticks and a normal 4 +/- 1.5 ms response time came out as a
+// comb at 0.5 ms bins (issue 19). The timer fires 200 us before the due time and the thread
+// spins the rest, so the scheduler's wake-up latency does not make the answer late. Linux (timerfd).
 //
 // Ordered (streams, serial lines): plans run one after the other in arrival order, as a device
 // that answers one request at a time; a plan's first delay runs from its request's arrival but
@@ -27,6 +33,7 @@ public:
     using Writer = std::function<void(const QByteArray &bytes)>;
 
     explicit SimResponder(bool ordered, QObject *parent = nullptr);
+    ~SimResponder() override;
 
     // requestNs: monotonicNowNs() when the request's last byte arrived.
     void enqueue(const FaultPlan &plan, qint64 requestNs, Writer writer);
@@ -49,12 +56,17 @@ private:
     };
     void run();
     void arm();
+    void armAt(qint64 dueNs); // 0: disarm
+    // The earliest due time of what is pending (ordered: of the first plan); max when none.
+    [[nodiscard]] qint64 nextDueNs() const;
+    void onTimer();
     // Writes what is due of m_pending[index]; returns true when the plan is finished.
     bool advance(int index, qint64 nowNs, bool *closing);
 
     bool m_ordered;
     QList<Pending> m_pending;
-    QTimer m_timer;
+    int m_timerFd = -1;
+    QSocketNotifier m_notifier; // on m_timerFd
     bool m_running = false;
 };
 

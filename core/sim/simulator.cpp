@@ -287,6 +287,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         exchange.peer = peer;
         exchange.framing = framing;
         exchange.unitId = unitId;
+        exchange.routedUnitId = target ? target->unit->id() : unitId;
         exchange.transactionId = parts.transactionId;
         exchange.requestAdu = adu.toByteArray();
         exchange.requestPdu = parts.pdu;

@@ -2344,7 +2344,7 @@
 <context>
     <name>mbscope::LatencyHistogramPanel</name>
     <message>
-        <location filename="../../ui/analysis/latencyhistogrampanel.cpp" line="+47"/>
+        <location filename="../../ui/analysis/latencyhistogrampanel.cpp" line="+48"/>
         <source>Which run to show: the current poll, the kept reference or an opened capture</source>
         <translation>Run mana yang ditampilkan: polling saat ini, referensi yang disimpan, atau capture yang dibuka</translation>
     </message>
@@ -2428,6 +2428,31 @@
         <source>%1 transactions, %2 answered</source>
         <translation>%1 transaksi, %2 terjawab</translation>
     </message>
+    <message>
+        <location line="+5"/>
+        <source>; latency from the computed end of each request&apos;s transmission</source>
+        <translation>; latensi dihitung dari akhir transmisi tiap permintaan</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; latency from the computed end of transmission (%1) or the write (%2)</source>
+        <translation>; latensi dari akhir transmisi yang dihitung (%1) atau dari penulisan (%2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>; latency from each request&apos;s write</source>
+        <translation>; latensi dari penulisan tiap permintaan</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>; warning: %1 answers faster than the serial line</source>
+        <translation>; peringatan: %1 jawaban lebih cepat daripada saluran serial</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 answers came before the serial line could have carried the request and the answer at its baud rate: the link does not honour it (a pseudo terminal, or a USB adapter that buffers). Their latency is measured from the write.</source>
+        <translation>%1 jawaban tiba sebelum saluran serial sempat membawa permintaan dan jawabannya pada baud rate-nya: tautan ini tidak mematuhinya (terminal semu, atau adaptor USB yang menyangga). Latensinya diukur dari penulisan.</translation>
+    </message>
 </context>
 <context>
     <name>mbscope::LatencyRuns</name>
@@ -2510,7 +2535,12 @@
         <translation>Error link</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+7"/>
+        <source>Faster than the line (from the write)</source>
+        <translation>Lebih cepat daripada saluran (dari penulisan)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Latency min</source>
         <translation>Latensi min</translation>
     </message>

@@ -179,8 +179,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         rules.seed = seed + 1;
         injector.setRules(rules);
         sim.setFaultHook([&injector](const SimExchange &exchange) {
-            return injector.plan(FaultContext::forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu,
-                                                          exchange.responseDelayNs));
+            return injector.plan(FaultContext::forExchange(exchange));
         });
     }
     FuzzEndpoint endpoint(&sim, url);

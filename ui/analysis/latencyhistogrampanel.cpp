@@ -34,6 +34,7 @@ LatencyHistogramPanel::LatencyHistogramPanel(LatencyRuns *runs, QWidget *parent)
     m_plot->setMinimumSize(300, 200);
     m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
     m_table->setObjectName(QStringLiteral("latencyStatisticsTable"));
+    m_summary->setObjectName(QStringLiteral("latencySummary"));
     m_table->setModel(m_model);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -225,7 +226,28 @@ void LatencyHistogramPanel::redraw()
     m_drawing = false;
 
     m_model->setColumns({{tr("%1, %2").arg(m_runs->title(m_run), LatencyRuns::itemTitle(m_item)), &statistics}});
-    m_summary->setText(tr("%1 transactions, %2 answered").arg(statistics.count()).arg(latency.count()));
+    QString summary = tr("%1 transactions, %2 answered").arg(statistics.count()).arg(latency.count());
+    // What the latency is measured from, and a warning when a serial link does not keep to its
+    // baud rate (issue 19: answers over a pty came "under 1 ms" after a computed end of
+    // transmission the pty never honoured).
+    if (statistics.measuredFromLineEnd() > 0 && statistics.measuredFromWrite() == 0)
+        summary += tr("; latency from the computed end of each request's transmission");
+    else if (statistics.measuredFromLineEnd() > 0)
+        summary += tr("; latency from the computed end of transmission (%1) or the write (%2)")
+                       .arg(statistics.measuredFromLineEnd())
+                       .arg(statistics.measuredFromWrite());
+    else if (!latency.isEmpty())
+        summary += tr("; latency from each request's write");
+    QString warning;
+    if (statistics.outranLine() > 0) {
+        summary += tr("; warning: %1 answers faster than the serial line").arg(statistics.outranLine());
+        warning = tr("%1 answers came before the serial line could have carried the request and the answer at its baud "
+                     "rate: the link does not honour it (a pseudo terminal, or a USB adapter that buffers). Their "
+                     "latency is measured from the write.")
+                      .arg(statistics.outranLine());
+    }
+    m_summary->setText(summary);
+    m_summary->setToolTip(warning);
 }
 
 } // namespace mbscope

@@ -53,6 +53,14 @@ QList<LatencyStatisticsModel::Row> LatencyStatisticsModel::rowsFor(const QList<C
     counter(QStringLiteral("unexpected"), tr("Unexpected"), [](const Statistics &s) { return s.unexpected(); });
     counter(QStringLiteral("late"), tr("Late"), [](const Statistics &s) { return s.late(); });
     counter(QStringLiteral("link_errors"), tr("Link errors"), [](const Statistics &s) { return s.linkErrors(); });
+    // Serial answers that came before the line could have carried them (a pseudo terminal, a
+    // USB adapter that buffers): shown only when there are some, with their latency from the write.
+    const bool outran = std::any_of(columns.begin(), columns.end(), [](const Column &column) {
+        return column.statistics->outranLine() != 0;
+    });
+    if (outran)
+        counter(QStringLiteral("outran_line"), tr("Faster than the line (from the write)"),
+                [](const Statistics &s) { return s.outranLine(); });
 
     const auto latency = [&rows, &columns](const QString &key, const QString &name, auto figure) {
         Row row{key, name, true, {}};

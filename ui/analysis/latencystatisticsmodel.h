@@ -11,7 +11,7 @@ class Statistics;
 
 // The statistics table beside a latency histogram: one row per figure (transactions, ok,
 // exceptions and each exception code seen, timeouts, CRC errors, malformed, unexpected, late,
-// link errors, then latency min, mean, median, p90, p95, p99, max and standard deviation), the
+// link errors, answers faster than their serial line (when there are any), then latency min, mean, median, p90, p95, p99, max and standard deviation), the
 // figure's name in column 0 and one column per run shown (two side by side in Compare).
 //
 // The figures are taken when setColumns() is called (the panels do it on their redraw timer),
@@ -32,7 +32,7 @@ public:
     void setColumns(const QList<Column> &columns);
 
     // The row of a figure by its key ("count", "ok", "exceptions", "exception 0x02", "timeouts",
-    // "crc_errors", "malformed", "unexpected", "late", "link_errors", "latency_min", ...,
+    // "crc_errors", "malformed", "unexpected", "late", "link_errors", "outran_line", "latency_min", ...,
     // "latency_stddev"); -1 when there is no such row.
     [[nodiscard]] int rowOf(const QString &key) const;
     // The number in a row (by key) and run column (0 for the first run); invalid when absent.

@@ -9,6 +9,7 @@
 #include "sim/profileapplier.h"
 #include "profile/profileloader.h"
 #include "sim/simendpoint.h"
+#include "sim/simexchange.h"
 #include "sim/simfaulthook.h"
 #include "sim/simulator.h"
 #include "simclient.h"
@@ -16,6 +17,10 @@
 #include "transport/monotonicclock.h"
 
 #include <QtTest/QtTest>
+
+#include <algorithm>
+#include <functional>
+#include <optional>
 
 using namespace mbscope;
 using namespace mbscope::simtest;
@@ -50,6 +55,7 @@ private Q_SLOTS:
     void injectorRules();
     void rulesChangeWhileRunning();
     void rosraoProfile();
+    void directUnitFollowsRoutedUnit();
 };
 
 void TestSimulatorFaults::injectorRules()
@@ -152,6 +158,74 @@ void TestSimulatorFaults::rosraoProfile()
     QVERIFY(client.ask(AduBuilder::rtu(readHolding(0x79, 1), 3)));
     QCOMPARE(client.ask(AduBuilder::rtu(pduOf(RequestBuilder::readInputRegisters(0x79, 1)), 1)),
              AduBuilder::rtu(pduOf(ResponseBuilder::exception(0x04, 0x01)), 1));
+}
+
+namespace {
+
+// What a Modbus TCP client sees when it sends count requests to unit requestUnit of a simulator
+// with units 1 and 2: the response delay of each answer (as planned) and the answer to a write.
+struct RoutedRun {
+    QList<qint64> delaysNs;
+    std::optional<QByteArray> writeAnswer;
+};
+
+RoutedRun routedRun(quint8 requestUnit, int count)
+{
+    RoutedRun run;
+    Simulator sim;
+    if (!sim.adoptUnit(makeUnit(1)) || !sim.adoptUnit(makeUnit(2)))
+        qFatal("units refused");
+    FaultInjector injector;
+    DelaySpec normal;
+    normal.kind = DelaySpec::Kind::Normal;
+    normal.meanMs = 4;
+    normal.stddevMs = 1.5;
+    injector.setResponseDelay(1, normal);
+    injector.setResponseDelay(2, DelaySpec::fixed(7.5));
+    FaultRuleSet rules;
+    rules.seed = 5;
+    FaultRule busy = rule(FaultRule::Kind::Exception, {1}, {0x06});
+    busy.exceptionCode = 0x06;
+    rules.rules = {busy};
+    injector.setRules(rules);
+    sim.setFaultHook([&injector, &run](const SimExchange &exchange) {
+        FaultPlan plan = injector.plan(FaultContext::forExchange(exchange));
+        run.delaysNs.append(plan.chunks.isEmpty() ? -1 : plan.chunks.first().delayNs);
+        for (ResponseChunk &chunk : plan.chunks)
+            chunk.delayNs = 0; // what is planned is compared, the test need not wait for it
+        return plan;
+    });
+    SimEndpoint *endpoint = sim.listen(QStringLiteral("tcp://127.0.0.1:0"));
+    if (!endpoint)
+        qFatal("no endpoint");
+    StreamClient client(endpoint);
+    if (!client.waitConnected())
+        qFatal("not connected");
+    for (int i = 0; i < count; ++i) {
+        if (!client.ask(mbap(readHolding(0, 1), requestUnit, quint16(i))))
+            qFatal("no answer");
+    }
+    run.writeAnswer = client.ask(mbap(pduOf(RequestBuilder::writeSingleRegister(0, 5)), requestUnit, 999));
+    return run;
+}
+
+} // namespace
+
+// Messaging on TCP/IP V1.0b 4.4.1.1: unit 0 (and 0xFF) over MBAP is answered by the endpoint's
+// first unit, and everything that unit has follows it: its response time distribution (issue 19:
+// unit 0 of m221-plc got the fixed nominal delay, 7.29/7.51/9.13 ms against 5.37/7.84/12.17 ms)
+// and the fault rules written for it.
+void TestSimulatorFaults::directUnitFollowsRoutedUnit()
+{
+    const RoutedRun one = routedRun(1, 20);
+    QCOMPARE(one.delaysNs.size(), 21);
+    QVERIFY(std::adjacent_find(one.delaysNs.cbegin(), one.delaysNs.cend(), std::not_equal_to<>()) != one.delaysNs.cend());
+    QCOMPARE(one.writeAnswer, mbap(pduOf(ResponseBuilder::exception(0x06, 0x06)), 1, 999));
+    for (quint8 direct : {quint8(0), quint8(0xFF)}) {
+        const RoutedRun routed = routedRun(direct, 20);
+        QCOMPARE(routed.delaysNs, one.delaysNs);
+        QCOMPARE(routed.writeAnswer, mbap(pduOf(ResponseBuilder::exception(0x06, 0x06)), direct, 999));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestSimulatorFaults)

@@ -19,6 +19,7 @@
 #include <QtTest/QSignalSpy>
 #include <QtTest/QtTest>
 #include <QtWidgets/QComboBox>
+#include <QtWidgets/QLabel>
 #include <qcustomplot.h>
 
 #include <cmath>
@@ -40,6 +41,7 @@ private Q_SLOTS:
     void redrawsAreBatched();
     void captureIsShown();
     void statisticsModel();
+    void serialLineOutrun();
     void exports_data();
     void exports();
 };
@@ -336,6 +338,41 @@ void TestLatencyHistogram::statisticsModel()
     const QString csv = TableCsv::toCsv(model);
     QVERIFY2(csv.startsWith(QLatin1String("Figure,a,c\r\n")), qPrintable(csv));
     QVERIFY2(csv.contains(QLatin1String("\r\nTransactions,3,0\r\n")), qPrintable(csv));
+}
+
+// Serial answers that came before the line could have carried them (a pty, a buffering USB
+// adapter: issue 19) are measured from the write, and the window says so: a warning in the
+// summary (the explanation in its tooltip) and a row of the table.
+void TestLatencyHistogram::serialLineOutrun()
+{
+    LatencyRuns runs;
+    LatencyHistogramPanel panel(&runs);
+    auto *summary = panel.findChild<QLabel *>(QStringLiteral("latencySummary"));
+    QVERIFY(summary);
+    QList<Transaction> list;
+    for (int i = 0; i < 10; ++i) {
+        Transaction t = answered(10'000'000 + i * 1000);
+        t.writeNs = t.sentNs;
+        t.transmitNs = 8'333'333; // 8 bytes at 9600 baud
+        t.outranLine = i < 4;
+        list.append(t);
+    }
+    runs.addTransactions(list);
+    panel.redrawNow();
+    QVERIFY2(summary->text().contains(QLatin1String("latency from the computed end of transmission (6) or the write (4)")),
+             qPrintable(summary->text()));
+    QVERIFY2(summary->text().contains(QLatin1String("warning: 4 answers faster than the serial line")), qPrintable(summary->text()));
+    QVERIFY(summary->toolTip().contains(QLatin1String("pseudo terminal")));
+    QCOMPARE(panel.statisticsModel()->value(QStringLiteral("outran_line")).toULongLong(), quint64(4));
+
+    LatencyRuns network;
+    LatencyHistogramPanel plain(&network);
+    network.addTransactions(logSpread(10, 1e6, 2e6));
+    plain.redrawNow();
+    auto *plainSummary = plain.findChild<QLabel *>(QStringLiteral("latencySummary"));
+    QVERIFY(plainSummary->text().endsWith(QLatin1String("; latency from each request's write")));
+    QVERIFY(plainSummary->toolTip().isEmpty());
+    QCOMPARE(plain.statisticsModel()->rowOf(QStringLiteral("outran_line")), -1);
 }
 
 void TestLatencyHistogram::exports_data()
