@@ -71,12 +71,12 @@ QString MonitorReport::text(const BusMonitor &monitor, qint64 elapsedNs, Monitor
     const BusCounters &bus = monitor.bus();
     QString text = QStringLiteral("monitor       %1 (listen-only: nothing was sent)\n").arg(monitor.url().toString());
     text += QStringLiteral("stopped       after %1 s: %2\n").arg(QString::number(double(elapsedNs) / 1e9, 'f', 1), stopText(stop));
-    text += QStringLiteral("bus           %1 bytes  %2 frames  %3 requests  %4 answers\n")
+    text += QStringLiteral("bus           bytes %1  frames %2  requests %3  answers %4\n")
                 .arg(monitor.bytesSeen())
                 .arg(bus.frames)
                 .arg(bus.requests)
                 .arg(bus.responses);
-    text += QStringLiteral("damaged       %1 CRC errors  %2 truncated  %3 malformed  %4 bytes skipped  %5 unmatched answers\n")
+    text += QStringLiteral("damaged       crc errors %1  truncated %2  malformed %3  skipped bytes %4  unmatched answers %5\n")
                 .arg(bus.crcErrors)
                 .arg(bus.truncated)
                 .arg(bus.malformed)

@@ -21,7 +21,12 @@ qint64 answerTimeout(const LinkUrl &url, const BusMonitor::Options &options)
 BusMonitor::BusMonitor(const LinkUrl &url, const Options &options, QObject *parent)
     : QObject(parent)
     , m_url(url)
-    , m_framer(url.kind == LinkKind::Ascii || url.kind == LinkKind::AsciiTcp ? Framing::Ascii : Framing::Rtu, answerTimeout(url, options), [this](const CapturedFrame &frame) { m_pairer.add(frame); })
+    , m_framer(url.kind == LinkKind::Ascii || url.kind == LinkKind::AsciiTcp ? Framing::Ascii : Framing::Rtu, answerTimeout(url, options),
+               [this](const CapturedFrame &frame) {
+                   if (frame.direction == Direction::Response && frame.status == FrameStatus::Truncated)
+                       m_truncatedAnswers.insert(frame.packet);
+                   m_pairer.add(frame);
+               })
     , m_pairer(answerTimeout(url, options), [this](const CaptureExchange &exchange) { onExchange(exchange); })
 {
     m_link = Link::create(url, this);
@@ -140,6 +145,12 @@ void BusMonitor::onExchange(const CaptureExchange &exchange)
         && checksum::crc16Modbus(t.response) != 0) {
         t.status = TransactionStatus::CrcError;
         t.problem = QStringLiteral("the answer's CRC is wrong (the line damaged it)");
+    }
+    // An answer cut short fails its CRC too, but what the line did to it is lose its end.
+    if (seen.responsePacket != 0 && m_truncatedAnswers.remove(seen.responsePacket) && t.status == TransactionStatus::CrcError) {
+        t.status = TransactionStatus::Malformed;
+        t.problem = QStringLiteral("the answer was cut short: %1 bytes before the silence, and its CRC does not match")
+                        .arg(t.response.size());
     }
     if (seen.kind == CaptureExchange::Kind::Transaction)
         m_statistics.add(t);

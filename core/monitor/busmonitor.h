@@ -8,6 +8,7 @@
 #include "transport/linkurl.h"
 
 #include <QtCore/QObject>
+#include <QtCore/QSet>
 #include <QtCore/QStringList>
 #include <QtCore/QTimer>
 
@@ -91,6 +92,7 @@ private:
     BusFramer m_framer;
     ExchangePairer m_pairer;
     Statistics m_statistics;
+    QSet<quint64> m_truncatedAnswers; // frame numbers of answers a silence cut short
     TrafficLog *m_log = nullptr;
     quint16 m_logLink = 0;
     QTimer m_silenceTimer;

@@ -3,6 +3,7 @@
 // then runs a bus monitor whose exchanges reach the window as transactions, and never writes to
 // the line (the test holds the pty's other end and reads nothing back); the composer's Send and
 // Poll are off and say why.
+#include "compose/rawrequesteditor.h"
 #include "compose/requestcomposer.h"
 #include "link/connectionbar.h"
 #include "link/linkcontroller.h"
