@@ -182,6 +182,7 @@ int runMonitor(const QStringList &arguments)
     });
     QTimer durationTimer;
     durationTimer.setSingleShot(true);
+    durationTimer.setTimerType(Qt::PreciseTimer); // a coarse timer may end a 1 s run 50 ms early
     if (durationNs > 0) {
         QObject::connect(&monitor, &BusMonitor::opened, &durationTimer, [&] {
             durationTimer.start(std::chrono::milliseconds(qMax<qint64>(1, durationNs / 1'000'000)));

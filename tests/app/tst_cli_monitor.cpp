@@ -17,6 +17,8 @@
 #include <QtCore/QRegularExpression>
 #include <QtCore/QStandardPaths>
 #include <QtCore/QTemporaryDir>
+#include <QtNetwork/QTcpServer>
+#include <QtNetwork/QTcpSocket>
 #include <QtTest/QTest>
 
 #include <csignal>
@@ -141,6 +143,7 @@ private Q_SLOTS:
     void initTestCase();
     void rtuBusWithNoise();
     void asciiBus();
+    void deviceServerPort();
     void stopsOnInterrupt();
     void refusesWhatItCannotMonitor_data();
     void refusesWhatItCannotMonitor();
@@ -271,6 +274,46 @@ void TestCliMonitor::asciiBus()
     QVERIFY2(text.contains(QStringLiteral("crc errors 0  truncated 0")), qPrintable(text));
 }
 
+void TestCliMonitor::deviceServerPort()
+{
+    // A serial device server's port (rtu-tcp://): it sends what the line carries, a read, its
+    // answer and an exception to another read; the monitor connects, reads and writes nothing.
+    QTcpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    Monitor monitor;
+    QString error;
+    QVERIFY2(monitor.start({QStringLiteral("rtu-tcp://127.0.0.1:%1").arg(server.serverPort()), QStringLiteral("--count"), QStringLiteral("2"),
+                            QStringLiteral("--json")},
+                           &error),
+             qPrintable(error));
+    QVERIFY(server.waitForNewConnection(10000));
+    QTcpSocket *line = server.nextPendingConnection();
+    const auto frame = [](const char *hex) {
+        QByteArray bytes = QByteArray::fromHex(hex);
+        quint16 crc = 0xFFFF;
+        for (const char c : bytes) {
+            crc ^= quint8(c);
+            for (int bit = 0; bit < 8; ++bit)
+                crc = (crc & 1) ? quint16((crc >> 1) ^ 0xA001) : quint16(crc >> 1);
+        }
+        return bytes + char(crc & 0xff) + char(crc >> 8);
+    };
+    for (const QByteArray &bytes : {frame("010300000002"), frame("01030400450046"), frame("110300100001"), frame("118302")}) {
+        line->write(bytes);
+        QVERIFY(line->waitForBytesWritten(5000));
+        QTest::qWait(30);
+    }
+    QVERIFY2(monitor.wait(20000), monitor.describe().constData());
+    QVERIFY2(monitor.exitCode() == 1, monitor.describe().constData()); // an exception is a failure
+    const QJsonObject o = monitor.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), 2);
+    QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 1);
+    QCOMPARE(o.value(QStringLiteral("exceptions")).toInt(), 1);
+    QCOMPARE(o.value(QStringLiteral("bus")).toObject().value(QStringLiteral("silence_us")).toDouble(), 20000.0);
+    line->waitForReadyRead(200);
+    QCOMPARE(line->readAll(), QByteArray()); // listen-only: not one byte to the device server
+}
+
 void TestCliMonitor::stopsOnInterrupt()
 {
     // A quiet bus: Ctrl-C stops the monitor, which still prints its (empty) statistics.
@@ -284,6 +327,13 @@ void TestCliMonitor::stopsOnInterrupt()
     QVERIFY2(monitor.exitCode() == 0, monitor.describe().constData());
     QCOMPARE(monitor.json().value(QStringLiteral("stopped")).toString(), QStringLiteral("interrupted"));
     QCOMPARE(monitor.json().value(QStringLiteral("count")).toInt(), 0);
+
+    // --duration stops it by itself.
+    const CliResult timed = runMbscope({QStringLiteral("monitor"), serialUrl(QStringLiteral("rtu"), bus.monitor), QStringLiteral("--duration"),
+                                        QStringLiteral("300ms"), QStringLiteral("--json")},
+                                       30000);
+    QVERIFY2(timed.exitCode == 0, timed.describe().constData());
+    QCOMPARE(timed.json().value(QStringLiteral("stopped")).toString(), QStringLiteral("duration"));
 }
 
 void TestCliMonitor::refusesWhatItCannotMonitor_data()
