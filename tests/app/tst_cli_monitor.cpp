@@ -104,7 +104,8 @@ public:
     // Waits for it to end by itself (--count); false when it did not within timeoutMs.
     bool wait(int timeoutMs)
     {
-        const bool finished = m_process->waitForFinished(timeoutMs);
+        // Already ended while the test ran the event loop (waitForFinished() is false then).
+        const bool finished = m_process->state() == QProcess::NotRunning || m_process->waitForFinished(timeoutMs);
         m_out += m_process->readAllStandardOutput();
         m_err += m_process->readAllStandardError();
         return finished;
