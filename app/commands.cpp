@@ -4,6 +4,7 @@
 #include "decodecommand.h"
 #include "exportcommand.h"
 #include "jsonfailure.h"
+#include "monitorcommand.h"
 #include "simulatecommand.h"
 #include "pollcommand.h"
 #include "readcommand.h"
@@ -33,6 +34,7 @@ const Subcommand kSubcommands[] = {
     {"read", "read coils, inputs or registers and show the values in chosen formats", runRead},
     {"write", "write coils or holding registers", runWrite},
     {"poll", "send requests in cycles and print statistics: counts, latency percentiles, histogram", runPoll},
+    {"monitor", "listen to a bus another master drives, never sending: every exchange paired and measured", runMonitor},
     {"sweep", "poll at several intervals and print error rate and latency per interval", runSweep},
     {"run", "run a session's test plan against a device; pass/fail per step, JUnit XML for CI", runRun},
     {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},

@@ -17,9 +17,20 @@ ExchangePairer::Conversation &ExchangePairer::conversation(quint32 id)
     return *m_conversations[id];
 }
 
+namespace {
+
+// RTU and ASCII travel on a serial line (or tunnelled from one): one transaction at a time,
+// answers known by unit and function code, not by an id.
+bool isSerialFraming(Framing framing)
+{
+    return framing == Framing::Rtu || framing == Framing::Ascii;
+}
+
+} // namespace
+
 ResponseVerdict &ExchangePairer::verdictFor(Framing framing)
 {
-    const int index = framing == Framing::Rtu ? 2 : framing == Framing::Udp ? 1 : 0;
+    const int index = framing == Framing::Ascii ? 3 : framing == Framing::Rtu ? 2 : framing == Framing::Udp ? 1 : 0;
     if (!m_verdicts[index])
         m_verdicts[index] = std::make_unique<ResponseVerdict>(framing, false);
     return *m_verdicts[index];
@@ -47,6 +58,12 @@ void ExchangePairer::finish()
         if (!s.done)
             timeOut(s, QStringLiteral("no answer before the capture ended"));
     }
+    emitReady();
+}
+
+void ExchangePairer::advance(qint64 nowNs)
+{
+    expire(nowNs);
     emitReady();
 }
 
@@ -89,7 +106,7 @@ void ExchangePairer::addRequest(const CapturedFrame &frame)
 
     const FrameKeys keys = ResponseMatcher::keysOf(frame.bytes, frame.framing);
     Conversation &c = conversation(frame.conversation);
-    if (frame.framing == Framing::Rtu) {
+    if (isSerialFraming(frame.framing)) {
         if (keys.valid && keys.unit == 0) {
             t.status = TransactionStatus::Broadcast;
             s.done = true;
@@ -114,7 +131,7 @@ void ExchangePairer::addResponse(const CapturedFrame &frame)
         // Skipped bytes that may be an answer: only a waiting request can make them one.
         Conversation &c = conversation(frame.conversation);
         for (auto it = c.waitingInOrder.begin(); it != c.waitingInOrder.end(); ++it) {
-            const FrameKeys asked = ResponseMatcher::keysOf(slot(*it).exchange.transaction.request, Framing::Rtu);
+            const FrameKeys asked = ResponseMatcher::keysOf(slot(*it).exchange.transaction.request, frame.framing);
             if (!keys.valid || asked.unit != keys.unit || !ResponseMatcher::answersFunction(asked.functionCode, keys.functionCode))
                 continue;
             ++m_counters.responses;
@@ -131,7 +148,7 @@ void ExchangePairer::addResponse(const CapturedFrame &frame)
         return;
     }
     Conversation &c = conversation(frame.conversation);
-    if (frame.framing != Framing::Rtu) {
+    if (!isSerialFraming(frame.framing)) {
         const auto waiting = c.waitingById.find(keys.transactionId);
         if (waiting != c.waitingById.end()) {
             const quint64 index = waiting.value();
@@ -160,7 +177,7 @@ void ExchangePairer::addResponse(const CapturedFrame &frame)
         return;
     }
     for (auto it = c.waitingInOrder.begin(); it != c.waitingInOrder.end(); ++it) {
-        const FrameKeys asked = ResponseMatcher::keysOf(slot(*it).exchange.transaction.request, Framing::Rtu);
+        const FrameKeys asked = ResponseMatcher::keysOf(slot(*it).exchange.transaction.request, frame.framing);
         if (asked.unit != keys.unit || !ResponseMatcher::answersFunction(asked.functionCode, keys.functionCode))
             continue;
         const quint64 index = *it;
@@ -172,7 +189,7 @@ void ExchangePairer::addResponse(const CapturedFrame &frame)
         answer(index, frame, true, {});
         return;
     }
-    const FrameKeys previous = ResponseMatcher::keysOf(c.lastTimedOut.request, Framing::Rtu);
+    const FrameKeys previous = ResponseMatcher::keysOf(c.lastTimedOut.request, frame.framing);
     if (c.lastTimedOut.id != 0 && previous.valid && previous.unit == keys.unit
         && ResponseMatcher::answersFunction(previous.functionCode, keys.functionCode)) {
         const TimedOut request = c.lastTimedOut;
@@ -269,7 +286,7 @@ void ExchangePairer::timeOut(Slot &s, const QString &why)
     Conversation &c = conversation(s.exchange.conversation);
     const FrameKeys keys = ResponseMatcher::keysOf(t.request, s.exchange.framing);
     const TimedOut record{t.request, t.sentNs, s.exchange.requestPacket, t.id};
-    if (s.exchange.framing == Framing::Rtu) {
+    if (isSerialFraming(s.exchange.framing)) {
         for (auto it = c.waitingInOrder.begin(); it != c.waitingInOrder.end(); ++it) {
             if (*it == t.id) {
                 c.waitingInOrder.erase(it);

@@ -19,7 +19,7 @@ namespace mbscope {
 // (ResponseVerdict), without any device:
 // - MBAP (Modbus TCP and UDP): by transaction id within the conversation; an answer whose unit or
 //   function code does not fit its request is Unexpected (V1.0b, 4.4.1.2: the id is the key);
-// - RTU: the oldest waiting request with the answer's unit and function code (or its exception);
+// - RTU and ASCII: the oldest waiting request with the answer's unit and function code (or its exception);
 //   requests before it that were never answered are timeouts (a serial line answers one at a
 //   time); unit 0 is a broadcast, which expects no answer (Serial Line V1.02, 2.1).
 // A request unanswered for timeoutNs of capture time is a Timeout, and an answer that comes
@@ -49,6 +49,9 @@ public:
     // carry no id, so the requests waiting then are timeouts now: an answer after the gap is
     // given to a request sent after it, not to the one whose answer the gap may have held.
     void answersLost(quint32 conversation);
+    // Time has passed without a frame (a live bus gone quiet): requests waiting longer than the
+    // timeout are timeouts now.
+    void advance(qint64 nowNs);
     // The capture ended: requests still waiting are timeouts.
     void finish();
 
@@ -93,7 +96,7 @@ private:
     std::deque<Slot> m_slots;
     quint64 m_firstSlot = 1; // index of m_slots.front()
     std::vector<std::unique_ptr<Conversation>> m_conversations;
-    std::unique_ptr<ResponseVerdict> m_verdicts[3]; // Tcp, Udp, Rtu
+    std::unique_ptr<ResponseVerdict> m_verdicts[4]; // Tcp, Udp, Rtu, Ascii
     Dissection m_requestDissection;
     QStringList m_problems;
     quint64 m_problemCount = 0;

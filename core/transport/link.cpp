@@ -31,6 +31,15 @@ Link *Link::create(const LinkUrl &url, QObject *parent)
     return new TcpLink(url, parent);
 }
 
+bool Link::refuseWriteWhenListening(qsizetype byteCount)
+{
+    if (!m_listenOnly)
+        return false;
+    reportError(LinkError::Kind::Config,
+                QStringLiteral("%1 bytes not sent: the link is listen-only (a monitor never writes to the line)").arg(byteCount));
+    return true;
+}
+
 void Link::reportError(LinkError::Kind kind, const QString &what)
 {
     m_lastError.kind = kind;

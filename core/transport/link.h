@@ -82,6 +82,11 @@ public:
     // as test doubles may, still reach whoever is connected). Same thread only; nullptr: signals.
     void setReceiver(LinkReceiver *receiver) { m_receiver = receiver; }
 
+    // A listen-only link (the bus monitor) never sends a byte: a serial port is opened for reading
+    // only, and write() refuses (errorOccurred with Kind::Config) on every link. Set before open().
+    void setListenOnly(bool listenOnly) { m_listenOnly = listenOnly; }
+    [[nodiscard]] bool isListenOnly() const { return m_listenOnly; }
+
     // Creates the link a URL names (TcpLink for tcp, rtu-tcp and ascii-tcp; UdpLink for udp and
     // rtu-udp; SerialLink for rtu and ascii; TlsLink for tls), closed. The caller owns it.
     [[nodiscard]] static Link *create(const LinkUrl &url, QObject *parent = nullptr);
@@ -120,6 +125,8 @@ protected:
     void reportError(LinkError::Kind kind, const QString &what);
     // Closed from Open or Opening: sets the state and emits closed(reason) once.
     void setClosed(const QString &reason);
+    // write() on a listen-only link: reports why nothing is sent. True when the write must stop.
+    [[nodiscard]] bool refuseWriteWhenListening(qsizetype byteCount);
     // The open link was lost: state Closed, errorOccurred, then closed(message).
     void reportLoss(LinkError::Kind kind, const QString &what);
     // The operating system's answer as Qt words it ("Connection refused"), made to read inside a
@@ -131,6 +138,7 @@ private:
     State m_state = State::Closed;
     LinkError m_lastError;
     LinkReceiver *m_receiver = nullptr;
+    bool m_listenOnly = false;
 };
 
 } // namespace mbscope

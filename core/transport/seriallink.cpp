@@ -131,7 +131,10 @@ void SerialLink::startOpen()
     // whether the device is missing or forbidden (and which group may use it).
     const QByteArray path = QFile::encodeName(s.device);
     struct stat info {};
-    if (::stat(path.constData(), &info) != 0 || ::access(path.constData(), R_OK | W_OK) != 0) {
+    // Listen-only: read access is all the port needs, and the port is opened for reading only, so
+    // no byte can leave through it.
+    const int access = isListenOnly() ? R_OK : R_OK | W_OK;
+    if (::stat(path.constData(), &info) != 0 || ::access(path.constData(), access) != 0) {
         const int osError = errno;
         failWith(kindForErrno(osError), openFailureMessage(s.device, osError));
         return;
@@ -150,7 +153,7 @@ void SerialLink::startOpen()
                                         : QSerialPort::NoParity);
     m_port->setStopBits(s.stopBits == 2 ? QSerialPort::TwoStop : QSerialPort::OneStop);
     m_port->setFlowControl(QSerialPort::NoFlowControl);
-    if (!m_port->open(QIODevice::ReadWrite)) {
+    if (!m_port->open(isListenOnly() ? QIODevice::ReadOnly : QIODevice::ReadWrite)) {
         const QSerialPort::SerialPortError error = m_port->error();
         const QString os = osAnswer(m_port->errorString());
         switch (error) {
@@ -209,6 +212,8 @@ void SerialLink::teardown()
 
 bool SerialLink::write(const QByteArray &bytes)
 {
+    if (refuseWriteWhenListening(bytes.size()))
+        return false;
     if (state() != State::Open || !m_port) {
         reportError(LinkError::Kind::Closed,
                     QStringLiteral("cannot write %1 bytes: the link is not open").arg(bytes.size()));

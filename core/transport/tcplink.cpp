@@ -172,6 +172,8 @@ void TcpLink::fail(const Failure &failure)
 
 bool TcpLink::write(const QByteArray &bytes)
 {
+    if (refuseWriteWhenListening(bytes.size()))
+        return false;
     if (state() != State::Open || (!m_socket && m_fd < 0)) {
         reportError(LinkError::Kind::Closed,
                     QStringLiteral("cannot write %1 bytes: the link is not open").arg(bytes.size()));

@@ -47,6 +47,8 @@ void UdpLink::teardown()
 
 bool UdpLink::write(const QByteArray &bytes)
 {
+    if (refuseWriteWhenListening(bytes.size()))
+        return false;
     if (state() != State::Open || !m_socket) {
         reportError(LinkError::Kind::Closed,
                     QStringLiteral("cannot send %1 bytes: the link is not open").arg(bytes.size()));

@@ -342,7 +342,7 @@
 <context>
     <name>mbscope::ConnectionBar</name>
     <message>
-        <location filename="../../ui/link/connectionbar.cpp" line="+32"/>
+        <location filename="../../ui/link/connectionbar.cpp" line="+33"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
@@ -464,12 +464,22 @@
     </message>
     <message>
         <location line="+2"/>
-        <location line="+214"/>
+        <source>Listen &amp;only</source>
+        <translation>Hanya &amp;dengar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Monitor a bus another master drives: every exchange on the line is shown, paired and measured, and nothing is ever sent (serial links, RTU or ASCII over TCP)</source>
+        <translation>Pantau bus yang dikendalikan master lain: setiap pertukaran di jalur ditampilkan, dipasangkan, dan diukur, dan tidak ada yang pernah dikirim (tautan serial, RTU atau ASCII lewat TCP)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+226"/>
         <source>&amp;Connect</source>
         <translation>Sa&amp;mbungkan</translation>
     </message>
     <message>
-        <location line="-211"/>
+        <location line="-223"/>
         <source>Disconnect</source>
         <translation>Putuskan</translation>
     </message>
@@ -499,7 +509,7 @@
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+78"/>
         <source>No serial port found: plug in the adapter and press Refresh, or type the device path</source>
         <translation>Tidak ada port serial: colokkan adaptor lalu tekan Segarkan, atau ketik path perangkatnya</translation>
     </message>
@@ -549,12 +559,12 @@
         <translation>&amp;Putuskan</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+25"/>
         <source>The link failed: %1. Check that the device is powered and reachable at this address, then send again (the link reopens), or press Disconnect to change the target.</source>
         <translation>Link gagal: %1. Pastikan perangkat menyala dan dapat dijangkau di alamat ini, lalu kirim lagi (link dibuka kembali), atau tekan Putuskan untuk mengganti target.</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+58"/>
         <source>The recent target &apos;%1&apos; cannot be read: %2</source>
         <translation>Target terakhir &apos;%1&apos; tidak dapat dibaca: %2</translation>
     </message>
@@ -2685,7 +2695,18 @@
         <translation>%1: link dibuka dengan permintaan pertama</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+22"/>
+        <source>%1: listening only (nothing is sent)</source>
+        <translation>%1: hanya mendengar (tidak ada yang dikirim)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: opening to listen</source>
+        <translation>%1: membuka untuk mendengar</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <location line="+10"/>
         <source>Not connected</source>
         <translation>Tidak tersambung</translation>
     </message>
@@ -2776,7 +2797,7 @@
         <translation>&amp;Dekode frame apa saja</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+49"/>
         <source>Disconnected. The built-in simulator still answers on &lt;code&gt;%1&lt;/code&gt;: press &lt;b&gt;Connect&lt;/b&gt; to use it again, or choose a real device&apos;s link type, host and port (or serial port) first.</source>
         <translation>Terputus. Simulator bawaan masih menjawab di &lt;code&gt;%1&lt;/code&gt;: tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk memakainya lagi, atau pilih dulu jenis link, host dan port (atau port serial) perangkat sungguhan.</translation>
     </message>
@@ -4403,11 +4424,12 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="-10"/>
         <location line="+12"/>
+        <location line="+186"/>
         <source>Send the request once (Ctrl+Return)</source>
         <translation>Kirim permintaan sekali (Ctrl+Return)</translation>
     </message>
     <message>
-        <location line="-9"/>
+        <location line="-195"/>
         <location line="+35"/>
         <location line="+139"/>
         <location line="+1"/>
@@ -4446,11 +4468,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+3"/>
+        <location line="+159"/>
         <source>Send the request repeatedly (Ctrl+Shift+Return starts and stops)</source>
         <translation>Kirim permintaan berulang-ulang (Ctrl+Shift+Return memulai dan menghentikan)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-152"/>
         <source>Poll</source>
         <translation>Polling</translation>
     </message>
@@ -4471,7 +4494,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Hentikan &amp;polling</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+18"/>
+        <source>The link is listen-only: it monitors the bus and never sends. Disconnect and untick Listen only to send.</source>
+        <translation>Tautan ini hanya mendengar: ia memantau bus dan tidak pernah mengirim. Putuskan sambungan dan hapus centang Hanya dengar untuk mengirim.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Listen only: Send and Poll are off, nothing is sent to the bus.</source>
+        <translation>Hanya dengar: Kirim dan Polling nonaktif, tidak ada yang dikirim ke bus.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Connect first (connection bar above).</source>
         <translation>Sambungkan dulu (bilah koneksi di atas).</translation>
     </message>

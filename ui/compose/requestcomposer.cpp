@@ -225,14 +225,27 @@ void RequestComposer::setPolling(bool polling)
     updateActions();
 }
 
+void RequestComposer::setListenOnly(bool listenOnly)
+{
+    m_listenOnly = listenOnly;
+    updateActions();
+}
+
 void RequestComposer::updateActions()
 {
     const bool haveBytes = !bytes().isEmpty();
-    m_sendAction->setEnabled(m_linkReady && haveBytes && !m_polling);
+    const bool canSend = m_linkReady && !m_listenOnly;
+    m_sendAction->setEnabled(canSend && haveBytes && !m_polling);
     m_sendButton->setEnabled(m_sendAction->isEnabled());
-    m_pollAction->setEnabled(m_linkReady && (haveBytes || m_polling));
+    m_pollAction->setEnabled(canSend && (haveBytes || m_polling));
     m_pollButton->setEnabled(m_pollAction->isEnabled());
-    if (!m_linkReady)
+    const QString listening = tr("The link is listen-only: it monitors the bus and never sends. Disconnect and untick "
+                                 "Listen only to send.");
+    m_sendButton->setToolTip(m_listenOnly ? listening : tr("Send the request once (Ctrl+Return)"));
+    m_pollButton->setToolTip(m_listenOnly ? listening : tr("Send the request repeatedly (Ctrl+Shift+Return starts and stops)"));
+    if (m_listenOnly && m_linkReady)
+        m_sendHint->setText(tr("Listen only: Send and Poll are off, nothing is sent to the bus."));
+    else if (!m_linkReady)
         m_sendHint->setText(tr("Connect first (connection bar above)."));
     else if (!haveBytes)
         m_sendHint->setText(tr("Type a request (Raw) or build one (Form)."));
@@ -245,7 +258,7 @@ void RequestComposer::updateActions()
 void RequestComposer::send()
 {
     const QByteArray request = bytes();
-    if (request.isEmpty() || !m_linkReady || m_polling)
+    if (request.isEmpty() || !m_linkReady || m_listenOnly || m_polling)
         return;
     Q_EMIT sendRequested(request);
 }

@@ -66,6 +66,9 @@ public Q_SLOTS:
     void setUnitId(int unit);
     // Whether a link is there to send to (Send and Poll are enabled only then).
     void setLinkReady(bool ready);
+    // A listen-only link (the bus monitor): Send and Poll are off, and the hint and their tooltips
+    // say why.
+    void setListenOnly(bool listenOnly);
     void setPolling(bool polling);
     // Sends the current bytes (what Ctrl+Return does).
     void send();
@@ -100,6 +103,7 @@ private:
     Framing m_framing = Framing::Rtu;
     bool m_syncing = false;
     bool m_linkReady = false;
+    bool m_listenOnly = false;
     bool m_polling = false;
 };
 

@@ -7,6 +7,7 @@
 #include <QtCore/QSettings>
 #include <QtGui/QAction>
 #include <QtSerialPort/QSerialPortInfo>
+#include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
@@ -162,6 +163,11 @@ void ConnectionBar::buildUi()
     m_timeoutSpin->setSuffix(tr(" ms"));
     m_timeoutSpin->setToolTip(tr("How long to wait for an answer before the request counts as timed out"));
 
+    m_listenOnlyCheck = new QCheckBox(tr("Listen &only"), this);
+    m_listenOnlyCheck->setObjectName(QStringLiteral("listenOnlyCheck"));
+    m_listenOnlyCheck->setToolTip(tr("Monitor a bus another master drives: every exchange on the line is shown, paired "
+                                     "and measured, and nothing is ever sent (serial links, RTU or ASCII over TCP)"));
+
     m_connectButton = new QPushButton(tr("&Connect"), this);
     m_connectButton->setObjectName(QStringLiteral("connectButton"));
     m_connectButton->setDefault(false);
@@ -191,6 +197,7 @@ void ConnectionBar::buildUi()
     row->addWidget(m_unitSpin);
     row->addWidget(buddyLabel(tr("&Timeout:"), m_timeoutSpin, this));
     row->addWidget(m_timeoutSpin);
+    row->addWidget(m_listenOnlyCheck);
     row->addSpacing(8);
     row->addWidget(m_connectButton);
     row->addWidget(m_recentButton);
@@ -210,6 +217,16 @@ void ConnectionBar::buildUi()
         connect(edit, &QLineEdit::textEdited, this, &ConnectionBar::clearError);
 }
 
+namespace {
+
+// The links a bus monitor can listen on (BusMonitor::unsupportedReason).
+bool canListen(LinkKind kind)
+{
+    return kind == LinkKind::Rtu || kind == LinkKind::Ascii || kind == LinkKind::RtuTcp || kind == LinkKind::AsciiTcp;
+}
+
+} // namespace
+
 LinkKind ConnectionBar::kind() const
 {
     return LinkKind(m_kindCombo->currentData().toInt());
@@ -228,6 +245,7 @@ void ConnectionBar::onKindChanged()
     m_networkPage->setVisible(!serial);
     m_serialPage->setVisible(serial);
     m_tlsFiles->setVisible(kind() == LinkKind::Tls);
+    m_listenOnlyCheck->setEnabled(canListen(kind()) && !m_connected);
     // The port follows the link type while it is the other type's default: 802 is MODBUS/TCP
     // Security's port (5.1), 502 Modbus TCP's.
     if (kind() == LinkKind::Tls && m_portSpin->value() == 502)
@@ -380,6 +398,17 @@ void ConnectionBar::setConnected(bool connected)
     // The target of a live link is what the link uses: change it by disconnecting first.
     for (QWidget *w : std::initializer_list<QWidget *>{m_kindCombo, m_networkPage, m_serialPage, m_tlsFiles, m_timeoutSpin, m_recentButton})
         w->setEnabled(!connected);
+    m_listenOnlyCheck->setEnabled(!connected && canListen(kind()));
+}
+
+bool ConnectionBar::isListenOnly() const
+{
+    return m_listenOnlyCheck->isChecked() && canListen(kind());
+}
+
+void ConnectionBar::setListenOnly(bool listenOnly)
+{
+    m_listenOnlyCheck->setChecked(listenOnly);
 }
 
 void ConnectionBar::showError(const QString &message)
@@ -411,8 +440,12 @@ void ConnectionBar::onConnectClicked()
         Q_EMIT disconnectRequested();
         return;
     }
-    if (const std::optional<LinkUrl> target = url())
-        Q_EMIT connectRequested(*target);
+    if (const std::optional<LinkUrl> target = url()) {
+        if (isListenOnly())
+            Q_EMIT listenRequested(*target);
+        else
+            Q_EMIT connectRequested(*target);
+    }
 }
 
 void ConnectionBar::addRecent(const LinkUrl &url)

@@ -6,6 +6,7 @@
 
 #include <optional>
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -56,6 +57,12 @@ public:
     // The framing of the chosen link type (what "Complete" adds in the composer).
     [[nodiscard]] Framing framing() const;
 
+    // Listen only (the bus monitor): the next connection only listens to a bus another master
+    // drives, and never sends. Offered for the links a monitor can listen on (serial, rtu-tcp,
+    // ascii-tcp); false for the others whatever the box says.
+    [[nodiscard]] bool isListenOnly() const;
+    void setListenOnly(bool listenOnly);
+
     // The controller's view: connected (fields locked, button says Disconnect) or not.
     void setConnected(bool connected);
     [[nodiscard]] bool isConnected() const { return m_connected; }
@@ -76,6 +83,8 @@ public:
 Q_SIGNALS:
     void connectRequested(const mbscope::LinkUrl &url);
     void disconnectRequested();
+    // Connect with Listen only ticked: listen to the bus at url, never send.
+    void listenRequested(const mbscope::LinkUrl &url);
     void framingChanged(mbscope::Framing framing);
     void unitIdChanged(int unit);
     // Any field changed (the state may differ: a session compares).
@@ -101,6 +110,7 @@ private:
     QComboBox *m_stopBitsCombo = nullptr;
     QSpinBox *m_unitSpin = nullptr;
     QSpinBox *m_timeoutSpin = nullptr;
+    QCheckBox *m_listenOnlyCheck = nullptr;
     QPushButton *m_connectButton = nullptr;
     QToolButton *m_recentButton = nullptr;
     QLabel *m_errorLabel = nullptr;

@@ -1,5 +1,7 @@
 #include "linkcontroller.h"
 
+#include "buslistener.h"
+
 #include "engine/pollsettings.h"
 #include "exchange/requestitem.h"
 #include "exchange/statistics.h"
@@ -53,6 +55,7 @@ LinkController::~LinkController()
 void LinkController::dropEngine()
 {
     m_engine.reset();
+    m_listener.reset();
     if (m_capture) {
         m_capture->finish();
         m_capture.reset();
@@ -171,8 +174,53 @@ void LinkController::connectTo(const LinkUrl &url)
     setState(State::Ready, tr("%1: the link opens with the first request").arg(url.toString()));
 }
 
+void LinkController::listenTo(const LinkUrl &url)
+{
+    if (m_polling)
+        stopPoll();
+    m_countersBefore = m_counters;
+    dropEngine();
+    m_url = url;
+    m_recordingProblem.clear();
+    TrafficLog *log = nullptr;
+    if (m_recordingEnabled) {
+        m_capture = std::make_unique<RollingCapture>(m_captures, m_capturePolicy);
+        if (m_capture->start(url.toString(), &m_recordingProblem))
+            log = m_capture->log();
+        else
+            m_capture.reset();
+        Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
+    }
+    m_listener = std::make_unique<BusListener>(url, log);
+    connect(m_listener.get(), &BusListener::opened, this, [this] {
+        setState(State::Connected, tr("%1: listening only (nothing is sent)").arg(m_url.toString()));
+    });
+    connect(m_listener.get(), &BusListener::failed, this, &LinkController::onLinkMessage);
+    connect(m_listener.get(), &BusListener::transactionsObserved, this, &LinkController::onObserved);
+    connect(m_listener.get(), &BusListener::unmatchedObserved, this,
+            [this](const QList<TrafficFrame> &frames) { Q_EMIT unmatchedFrames(frames, m_url.toString()); });
+    setState(State::Ready, tr("%1: opening to listen").arg(url.toString()));
+    m_listener->start();
+}
+
+void LinkController::onObserved(const QList<Transaction> &transactions)
+{
+    if (transactions.isEmpty())
+        return;
+    m_counters.transactions += quint64(transactions.size());
+    Q_EMIT countersChanged(m_counters);
+    Q_EMIT transactionsFinished(transactions);
+    Q_EMIT latestTransaction(transactions.constLast());
+}
+
 void LinkController::disconnectLink()
 {
+    if (m_listener) {
+        m_countersBefore = m_counters;
+        dropEngine();
+        setState(State::Disconnected, tr("Not connected"));
+        return;
+    }
     if (!m_engine)
         return;
     if (m_polling)

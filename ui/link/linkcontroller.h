@@ -16,6 +16,7 @@
 
 namespace mbscope {
 
+class BusListener;
 class TransactionEngine;
 
 // Between the window's widgets and the TransactionEngine: owns the engine (and with it the engine
@@ -42,6 +43,11 @@ public:
     ~LinkController() override;
 
     void connectTo(const LinkUrl &url);
+    // Listen only (the bus monitor): no engine, nothing is ever sent; every exchange another
+    // master makes on the line comes out as transactionsFinished, unmatched answers as
+    // unmatchedFrames. send() and startPoll() refuse while listening.
+    void listenTo(const LinkUrl &url);
+    [[nodiscard]] bool isListening() const { return m_listener != nullptr; }
     void disconnectLink();
     [[nodiscard]] State state() const { return m_state; }
     [[nodiscard]] bool isConnected() const { return m_state != State::Disconnected; }
@@ -106,10 +112,12 @@ private:
     void onPollFinished(const PollReport &report);
     void setState(State state, const QString &message = {});
     void resetEngine();
-    // The engine goes first (it writes into the recording's log), then the recording.
+    void onObserved(const QList<Transaction> &transactions);
+    // The engine (or the listener) goes first (it writes into the recording's log), then the recording.
     void dropEngine();
 
     std::unique_ptr<TransactionEngine> m_engine;
+    std::unique_ptr<BusListener> m_listener;
     LinkUrl m_url;
     State m_state = State::Disconnected;
     QString m_message;

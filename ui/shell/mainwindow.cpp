@@ -129,6 +129,7 @@ void MainWindow::connectPanels()
     ConnectionBar *bar = m_connectionBar;
     LinkController *link = m_controller;
     connect(bar, &ConnectionBar::connectRequested, link, &LinkController::connectTo);
+    connect(bar, &ConnectionBar::listenRequested, link, &LinkController::listenTo);
     connect(bar, &ConnectionBar::disconnectRequested, link, &LinkController::disconnectLink);
     connect(bar, &ConnectionBar::framingChanged, m_composer, &RequestComposer::setFraming);
     connect(bar, &ConnectionBar::unitIdChanged, m_composer, &RequestComposer::setUnitId);
@@ -142,6 +143,7 @@ void MainWindow::connectPanels()
         if (state == LinkController::State::Ready)
             m_traffic->model()->setCurrentLink(m_controller->url().toString());
         m_composer->setLinkReady(connected);
+        m_composer->setListenOnly(m_controller->isListening());
         m_linkStatus->setState(state, message);
         // The banner speaks of the simulator only while the window is connected to it.
         if (m_simulator->isRunning() && m_banner->isVisible()) {
