@@ -128,18 +128,20 @@ void TrafficModel::appendTransactions(const QList<Transaction> &transactions)
     if (!m_hasCurrentLink)
         setCurrentLink(QString());
     if (!m_hasOrigin) {
-        m_originNs = transactions.first().sentNs;
+        m_originNs = transactions.first().sentNs != 0 ? transactions.first().sentNs : transactions.first().doneNs;
         m_hasOrigin = true;
     }
     for (const Transaction &t : transactions) {
+        // A request never written (the link would not open) has no send time: it is listed when it failed.
+        const qint64 outNs = t.sentNs != 0 ? t.sentNs : t.doneNs;
         if (t.status != TransactionStatus::Late)
-            m_store.append(t.sentNs, TrafficDirection::Out, m_currentLink, TrafficVerdict::Sent, t.id, t.request);
+            m_store.append(outNs, TrafficDirection::Out, m_currentLink, TrafficVerdict::Sent, t.id, t.request);
         const TrafficVerdict verdict = trafficVerdict(t.status);
         if (!t.response.isEmpty())
             m_store.append(t.firstByteNs > 0 ? t.firstByteNs : t.doneNs, TrafficDirection::In, m_currentLink, verdict,
                            t.id, t.response, t.latencyNs());
         else
-            m_store.append(t.doneNs > 0 ? t.doneNs : t.sentNs, TrafficDirection::In, m_currentLink, verdict, t.id, {});
+            m_store.append(t.doneNs > 0 ? t.doneNs : outNs, TrafficDirection::In, m_currentLink, verdict, t.id, {});
     }
     enforceLimit();
     publish();
