@@ -122,7 +122,7 @@ void RawRequestEditor::buildUi()
     m_noteLabel->hide();
 
     auto *savedRow = new QHBoxLayout;
-    auto *savedLabel = new QLabel(tr("&Saved:"), this);
+    auto *savedLabel = new QLabel(tr("Sav&ed:"), this);
     savedLabel->setBuddy(m_savedCombo);
     savedRow->addWidget(savedLabel);
     savedRow->addWidget(m_savedCombo, 1);
