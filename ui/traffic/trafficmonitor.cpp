@@ -115,10 +115,10 @@ void TrafficMonitor::buildUi()
         filters->addWidget(label);
         filters->addWidget(w);
     };
-    labelled(tr("&Unit:"), m_unitSpin);
-    labelled(tr("F&unction:"), m_functionCombo);
-    labelled(tr("Di&rection:"), m_directionCombo);
-    labelled(tr("&Verdict:"), m_verdictCombo);
+    labelled(tr("Unit:"), m_unitSpin);
+    labelled(tr("Function:"), m_functionCombo);
+    labelled(tr("Direction:"), m_directionCombo);
+    labelled(tr("Verdict:"), m_verdictCombo);
     filters->addSpacing(8);
     filters->addWidget(m_pauseButton);
     filters->addWidget(m_clearButton);
