@@ -110,10 +110,10 @@ void RequestComposer::buildUi()
     m_conversionText = new QLabel(m_conversionBar);
     m_conversionText->setWordWrap(true);
     m_conversionText->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    auto *convert = new QPushButton(tr("Con&vert"), m_conversionBar);
+    auto *convert = new QPushButton(tr("Convert"), m_conversionBar);
     convert->setObjectName(QStringLiteral("convertButton"));
     connect(convert, &QPushButton::clicked, this, &RequestComposer::acceptConversion);
-    auto *keep = new QPushButton(tr("&Keep as typed"), m_conversionBar);
+    auto *keep = new QPushButton(tr("Keep as typed"), m_conversionBar);
     keep->setObjectName(QStringLiteral("keepButton"));
     connect(keep, &QPushButton::clicked, this, &RequestComposer::keepAsTyped);
     auto *conversionLayout = new QVBoxLayout(m_conversionBar);

@@ -42,6 +42,7 @@
 #include <QtWidgets/QSpinBox>
 #include <QtWidgets/QSplitter>
 #include <QtWidgets/QStatusBar>
+#include <QtWidgets/QTabBar>
 #include <QtWidgets/QTabWidget>
 #include <QtWidgets/QVBoxLayout>
 
@@ -335,7 +336,7 @@ void MainWindow::focusNextDock()
     QList<QDockWidget *> docks;
     for (QDockWidget *dock : findChildren<QDockWidget *>()) {
         // Tabbed docks behind another are hidden, yet open: raising them brings them forward.
-        if (dock->toggleViewAction()->isChecked())
+        if (dock->isVisible() || !tabifiedDockWidgets(dock).isEmpty())
             docks.append(dock);
     }
     if (docks.isEmpty())
@@ -345,8 +346,24 @@ void MainWindow::focusNextDock()
         if (docks.at(i)->isAncestorOf(QApplication::focusWidget()))
             current = i;
     }
-    QDockWidget *next = docks.at((current + 1) % docks.size());
-    next->raise();
+    // The next dock that comes forward when raised (a closed one stays closed and is passed by).
+    QDockWidget *next = nullptr;
+    for (int step = 1; step <= docks.size() && !next; ++step) {
+        QDockWidget *candidate = docks.at((current + step) % docks.size());
+        // QMainWindow keeps each tabbed dock's pointer as its tab's data: choosing that tab
+        // brings the dock forward at once (raise() alone waits for the next layout pass).
+        for (QTabBar *tabs : findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
+            for (int i = 0; i < tabs->count(); ++i) {
+                if (tabs->tabData(i).value<quintptr>() == quintptr(candidate))
+                    tabs->setCurrentIndex(i);
+            }
+        }
+        candidate->raise();
+        if (candidate->isVisible())
+            next = candidate;
+    }
+    if (!next)
+        return;
     // The dock's first widget that takes the keyboard (the traffic list's filter, a table).
     QWidget *target = next->widget();
     for (QWidget *child : next->widget()->findChildren<QWidget *>()) {

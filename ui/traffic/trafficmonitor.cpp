@@ -108,6 +108,12 @@ void TrafficMonitor::buildUi()
     next->setText(QStringLiteral("\u25BC"));
     next->setToolTip(tr("Find next (F3)"));
 
+    // Narrow windows (1024 px) keep the whole filter row: the combos and the search give way.
+    for (QComboBox *combo : {m_functionCombo, m_directionCombo, m_verdictCombo}) {
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        combo->setMinimumContentsLength(8);
+    }
+    m_searchEdit->setMinimumWidth(120);
     auto *filters = new QHBoxLayout;
     const auto labelled = [this, filters](const QString &text, QWidget *w) {
         auto *label = new QLabel(text, this);

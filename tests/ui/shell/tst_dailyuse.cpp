@@ -291,6 +291,7 @@ void TestDailyUse::f6MovesBetweenDocks()
         for (QWidget *w = focus; w && !dock; w = w->parentWidget())
             dock = qobject_cast<QDockWidget *>(w);
         QVERIFY2(dock, focus->metaObject()->className());
+        qInfo() << "F6 ->" << dock->objectName() << focus->metaObject()->className() << focus->objectName();
         visited.insert(dock);
     }
     QVERIFY(visited.size() >= 3);
@@ -442,6 +443,14 @@ void TestDailyUse::smallScreens()
         for (QWidget *w : QList<QWidget *>{window.centralWidget(), window.connectionBar(), window.composer(),
                                            window.viewTabs()})
             qInfo() << w->objectName() << w->metaObject()->className() << w->minimumSizeHint() << w->minimumSize();
+        for (QWidget *w : window.composer()->findChildren<QWidget *>()) {
+            if (w->minimumSizeHint().width() > 300)
+                qInfo() << "composer child" << w->objectName() << w->metaObject()->className() << w->minimumSizeHint();
+        }
+        for (QWidget *w : window.viewTabs()->findChildren<QWidget *>()) {
+            if (w->minimumSizeHint().width() > 250)
+                qInfo() << "answer child" << w->objectName() << w->metaObject()->className() << w->minimumSizeHint();
+        }
         for (QDockWidget *dock : window.findChildren<QDockWidget *>())
             qInfo() << dock->objectName() << dock->minimumSizeHint() << dock->widget()->minimumSizeHint();
     }
