@@ -352,7 +352,7 @@ void MainWindow::focusNextDock()
         QDockWidget *candidate = docks.at((current + step) % docks.size());
         // QMainWindow keeps each tabbed dock's pointer as its tab's data: choosing that tab
         // brings the dock forward at once (raise() alone waits for the next layout pass).
-        for (QTabBar *tabs : findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
+        for (QTabBar *tabs : findChildren<QTabBar *>(QString(), Qt::FindDirectChildrenOnly)) {
             for (int i = 0; i < tabs->count(); ++i) {
                 if (tabs->tabData(i).value<quintptr>() == quintptr(candidate))
                     tabs->setCurrentIndex(i);
