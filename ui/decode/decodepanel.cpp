@@ -95,7 +95,7 @@ void DecodePanel::buildUi()
     // The window fits 1024 px: the combos give way rather than widen the Decode tab.
     for (QComboBox *combo : {m_framingCombo, m_directionCombo}) {
         combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-        combo->setMinimumContentsLength(10);
+        combo->setMinimumContentsLength(6);
     }
     auto *options = new QHBoxLayout;
     options->addWidget(m_framingCombo);
