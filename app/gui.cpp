@@ -237,7 +237,8 @@ int runGui(QApplication &app)
         if (!window.session()->open(sessionPath) && !screenshot.isEmpty())
             return ExitFailure;
     } else if (!parser.isSet(noSimulatorOption)) {
-        simulated = window.startWithSimulator();
+        // A screenshot is the first run as documented; a user's start is as Preferences says.
+        simulated = screenshot.isEmpty() ? window.startAsConfigured() : window.startWithSimulator();
     }
     window.show();
 

@@ -69,6 +69,9 @@ public:
     // How many requests may be in flight at once on this target.
     [[nodiscard]] int pipelineDepth() const;
     void closeLink();
+    // Opens the link now (Connect), instead of with the first request; linkOpened() or
+    // linkMessage() says how it went.
+    void openLink();
 
     [[nodiscard]] EngineCounters &counters() { return m_counters; }
     [[nodiscard]] EngineProgress &progressState() { return m_progress; }
@@ -77,6 +80,7 @@ public:
 
 Q_SIGNALS:
     void linkMessage(const QString &message);
+    void linkOpened();
 
 private:
     // enginelink.cpp: opening, errors and closing of the link

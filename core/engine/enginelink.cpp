@@ -1,6 +1,7 @@
 #include "enginecore.h"
 
 #include "protocol/streamframer.h"
+#include "transport/monotonicclock.h"
 
 namespace mbscope {
 
@@ -17,6 +18,15 @@ void EngineCore::closeLink()
     m_openTimer.stop();
     resetFramer();
     m_deferPump = false;
+}
+
+void EngineCore::openLink()
+{
+    if (m_link && m_link->state() == Link::State::Open) {
+        Q_EMIT linkOpened();
+        return;
+    }
+    ensureLink();
 }
 
 void EngineCore::ensureLink()
@@ -50,6 +60,7 @@ void EngineCore::onOpened()
     m_opening = false;
     m_openTimer.stop();
     resetFramer();
+    Q_EMIT linkOpened();
     schedulePump();
 }
 
@@ -118,7 +129,9 @@ void EngineCore::failHead(const QString &problem)
     if (!m_scheduler.hasQueued())
         return;
     const InFlightRequest head = InFlightRequest::unsent(m_scheduler.takeHead());
-    record(head.toTransaction(TransactionStatus::LinkError, problem), head.out.tag);
+    // Never written, so no send time; the moment it failed places it in the traffic list.
+    const qint64 failedNs = monotonicNowNs();
+    record(head.toTransaction(TransactionStatus::LinkError, problem, {}, 0, failedNs), head.out.tag);
 }
 
 } // namespace mbscope

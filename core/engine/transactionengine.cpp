@@ -26,6 +26,7 @@ TransactionEngine::TransactionEngine(QObject *parent)
     connect(m_core->recorder(), &EngineRecorder::framesLogged, this, &TransactionEngine::framesLogged);
     connect(m_core->recorder(), &EngineRecorder::progress, this, &TransactionEngine::progress);
     connect(m_core, &EngineCore::linkMessage, this, &TransactionEngine::linkMessage);
+    connect(m_core, &EngineCore::linkOpened, this, &TransactionEngine::linkOpened);
     // The engine thread's own dispatcher, lighter per turn than Qt's (see EngineEventDispatcher).
     m_thread.setEventDispatcher(new EngineEventDispatcher);
     m_thread.start();
@@ -173,6 +174,11 @@ std::optional<PollReport> TransactionEngine::waitForFinished(int waitMs)
     loop.exec();
     disconnect(connection);
     return result;
+}
+
+void TransactionEngine::openLink()
+{
+    QMetaObject::invokeMethod(m_core, [core = m_core] { core->openLink(); }, Qt::QueuedConnection);
 }
 
 void TransactionEngine::closeLink()

@@ -78,6 +78,9 @@ public:
     [[nodiscard]] std::optional<PollReport> waitForFinished(int waitMs = -1);
     // Closes the link now; requests in flight end as link errors.
     void closeLink();
+    // Opens the link now rather than with the first request: linkOpened() when it is open,
+    // linkMessage() with the link's words when it cannot be.
+    void openLink();
 
 Q_SIGNALS:
     void transactionsFinished(const QList<mbscope::Transaction> &transactions);
@@ -89,6 +92,7 @@ Q_SIGNALS:
     void finished(const mbscope::PollReport &report);
     // What the link said when it failed or closed with requests in flight.
     void linkMessage(const QString &message);
+    void linkOpened();
 
 private:
     void startRuns(const SweepSettings &settings, bool isSweep);

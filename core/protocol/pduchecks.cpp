@@ -341,8 +341,11 @@ void checkEcho(const PduContext &ctx, int firstField, bool strict)
             }
             continue;
         }
-        if (std::memcmp(frame.constData() + f.offset, ctx.request.data() + at, size_t(f.length)) == 0)
+        if (std::memcmp(frame.constData() + f.offset, ctx.request.data() + at, size_t(f.length)) == 0) {
+            // Said, not only implied by silence: a write's echo that matched is the answer's point.
+            ctx.tree.flag(i, Severity::Ok, QStringLiteral("matches the request"));
             continue;
+        }
         quint64 requested = 0;
         for (int k = 0; k < f.length && k < 8; ++k)
             requested = (requested << 8) | quint8(ctx.request.at(at + k));

@@ -387,13 +387,7 @@
         <translation>nama host atau alamat IP</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>&amp;Host:</source>
-        <translation>&amp;Host:</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <location line="+40"/>
+        <location line="+54"/>
         <source>P&amp;ort:</source>
         <translation>P&amp;ort:</translation>
     </message>
@@ -403,7 +397,17 @@
         <translation>/dev/ttyUSB0</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-13"/>
+        <source>H&amp;ost:</source>
+        <translation>H&amp;ost:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>Refresh</source>
         <translation>Segarkan</translation>
     </message>
@@ -505,7 +509,7 @@
     </message>
     <message>
         <location line="+2"/>
-        <source>&amp;Timeout:</source>
+        <source>Ti&amp;meout:</source>
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
@@ -556,7 +560,7 @@
     <message>
         <location line="+59"/>
         <source>Dis&amp;connect</source>
-        <translation>&amp;Putuskan</translation>
+        <translation>Putus&amp;kan</translation>
     </message>
     <message>
         <location line="+25"/>
@@ -2280,7 +2284,7 @@
 <context>
     <name>mbscope::HistogramChart</name>
     <message>
-        <location filename="../../ui/common/histogramchart.cpp" line="+66"/>
+        <location filename="../../ui/common/histogramchart.cpp" line="+68"/>
         <source>latency (%1)</source>
         <translation>latensi (%1)</translation>
     </message>
@@ -2405,31 +2409,36 @@
     </message>
     <message>
         <location line="+25"/>
-        <source>min %1 %2</source>
-        <translation>min %1 %2</translation>
+        <source>min</source>
+        <translation>min</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>median %1 %2</source>
-        <translation>median %1 %2</translation>
+        <source>median</source>
+        <translation>median</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>p95 %1 %2</source>
-        <translation>p95 %1 %2</translation>
+        <source>p95</source>
+        <translation>p95</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>p99 %1 %2</source>
-        <translation>p99 %1 %2</translation>
+        <source>p99</source>
+        <translation>p99</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>max %1 %2</source>
-        <translation>maks %1 %2</translation>
+        <source>max</source>
+        <translation>maks</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+9"/>
+        <source>%1 %2 %3</source>
+        <translation>%1 %2 %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
     </message>
@@ -2705,8 +2714,12 @@
         <translation>%1: membuka untuk mendengar</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <location line="+10"/>
+        <location line="+41"/>
+        <source>%1: connecting…</source>
+        <translation>%1: menyambungkan…</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Not connected</source>
         <translation>Tidak tersambung</translation>
     </message>
@@ -2740,8 +2753,8 @@
     </message>
     <message>
         <location line="+1"/>
-        <source>Ready</source>
-        <translation>Siap</translation>
+        <source>Connecting</source>
+        <translation>Menyambungkan</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2782,7 +2795,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+74"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+81"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -2802,7 +2815,7 @@
         <translation>Terputus. Simulator bawaan masih menjawab di &lt;code&gt;%1&lt;/code&gt;: tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk memakainya lagi, atau pilih dulu jenis link, host dan port (atau port serial) perangkat sungguhan.</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+97"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
@@ -2822,17 +2835,42 @@
         <translation>Simulator</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+83"/>
+        <source>%1 dock (F6: the next one)</source>
+        <translation>Dok %1 (F6: dok berikutnya)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Disconnected: the session names no target that can be used (%1)</source>
+        <translation>Terputus: sesi tidak menyebut target yang dapat dipakai (%1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Connecting to the session&apos;s target %1</source>
+        <translation>Menyambungkan ke target sesi %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Not sent (%1): connect first</source>
         <translation>Tidak terkirim (%1): sambungkan dulu</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+12"/>
+        <source>Sent: %1; reading it back</source>
+        <translation>Terkirim: %1; membacanya kembali</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Sent: %1</source>
         <translation>Terkirim: %1</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+33"/>
+        <source>Not connected: press Connect to use %1 again</source>
+        <translation>Tidak tersambung: tekan Sambungkan untuk memakai %1 lagi</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>&lt;b&gt;Connected to mbscope&apos;s built-in simulator&lt;/b&gt;, not to a device: a RosRao gamma detector (profile &lt;code&gt;%1&lt;/code&gt;) answering on &lt;code&gt;%2&lt;/code&gt;. Press &lt;b&gt;Send&lt;/b&gt; to read its 22 registers. To talk to a real device, press &lt;b&gt;Disconnect&lt;/b&gt;, choose its link type, host and port (or serial port) and press &lt;b&gt;Connect&lt;/b&gt;.</source>
         <translation>&lt;b&gt;Tersambung ke simulator bawaan mbscope&lt;/b&gt;, bukan ke perangkat: detektor gamma RosRao (profil &lt;code&gt;%1&lt;/code&gt;) yang menjawab di &lt;code&gt;%2&lt;/code&gt;. Tekan &lt;b&gt;Kirim&lt;/b&gt; untuk membaca 22 register-nya. Untuk berbicara dengan perangkat sungguhan, tekan &lt;b&gt;Putuskan&lt;/b&gt;, pilih jenis link, host dan port (atau port serial)-nya, lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt;.</translation>
     </message>
@@ -2872,7 +2910,12 @@
         <translation>&amp;Cari di lalu lintas</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+12"/>
+        <source>&amp;Next dock</source>
+        <translation>Dok &amp;berikutnya</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>&amp;Tools</source>
         <translation>&amp;Alat</translation>
     </message>
@@ -3236,7 +3279,7 @@
 <context>
     <name>mbscope::PreferencesDialog</name>
     <message>
-        <location filename="../../ui/shell/preferencesdialog.cpp" line="+23"/>
+        <location filename="../../ui/shell/preferencesdialog.cpp" line="+24"/>
         <source>&amp;Record all traffic of the window&apos;s connections</source>
         <translation>&amp;Rekam semua lalu lintas sambungan jendela</translation>
     </message>
@@ -3261,7 +3304,17 @@
         <translation>&amp;Bahasa:</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
+        <source>Start the built-in &amp;simulator and connect to it at every start</source>
+        <translation>Jalankan &amp;simulator bawaan dan sambungkan setiap kali mulai</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Off: only the first run does; later starts open the last session (or put back the last target, disconnected) and the last layout.</source>
+        <translation>Mati: hanya jalankan pertama yang melakukannya; mulai berikutnya membuka sesi terakhir (atau memasang kembali target terakhir, tidak tersambung) dan tata letak terakhir.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Every frame in and out is written to a traffic journal as it happens, one per connection; a saved session keeps its journal beside it. analyze, export and replay read journals.</source>
         <translation>Setiap frame masuk dan keluar ditulis ke jurnal lalu lintas saat terjadi, satu per sambungan; sesi yang disimpan menyimpan jurnalnya di sampingnya. analyze, export dan replay membaca jurnal.</translation>
     </message>
@@ -3311,7 +3364,7 @@
         <translation>Perekaman</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+76"/>
         <source>mbscope --lang id (or en) chooses the language for one run.</source>
         <translation>mbscope --lang id (atau en) memilih bahasa untuk satu kali jalan.</translation>
     </message>
@@ -3375,8 +3428,8 @@
     </message>
     <message>
         <location line="+28"/>
-        <source>&amp;Saved:</source>
-        <translation>&amp;Tersimpan:</translation>
+        <source>Sav&amp;ed:</source>
+        <translation>Ters&amp;impan:</translation>
     </message>
     <message>
         <location line="+101"/>
@@ -3954,7 +4007,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>nilai berskala</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>t = %1 s</source>
         <translation>t = %1 s</translation>
     </message>
@@ -3974,7 +4027,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Plot register yang dipilih di tabel Register, dalam format kolomnya</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+129"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -4406,23 +4459,12 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RequestComposer</name>
     <message>
-        <location filename="../../ui/compose/requestcomposer.cpp" line="+38"/>
-        <source>&amp;Raw</source>
-        <translation>&amp;Mentah</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>F&amp;orm</source>
-        <translation>&amp;Formulir</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <location line="+14"/>
+        <location filename="../../ui/compose/requestcomposer.cpp" line="+43"/>
         <source>&amp;Send</source>
         <translation>&amp;Kirim</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="+4"/>
         <location line="+12"/>
         <location line="+186"/>
         <source>Send the request once (Ctrl+Return)</source>
@@ -4431,15 +4473,26 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="-195"/>
         <location line="+35"/>
-        <location line="+139"/>
+        <location line="+236"/>
         <location line="+1"/>
         <source>Start &amp;poll</source>
-        <translation>Mulai &amp;polling</translation>
+        <translation>Mulai pollin&amp;g</translation>
     </message>
     <message>
-        <location line="-161"/>
-        <source>&amp;Send  (Ctrl+Return)</source>
-        <translation>&amp;Kirim  (Ctrl+Return)</translation>
+        <location line="-284"/>
+        <source>Ra&amp;w</source>
+        <translation>Menta&amp;h</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Form</source>
+        <translation>Formulir</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+7"/>
+        <source>Se&amp;nd  (Ctrl+Return)</source>
+        <translation>Ki&amp;rim  (Ctrl+Return)</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -4479,19 +4532,49 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>&amp;Every</source>
+        <source>Ever&amp;y</source>
         <translation>S&amp;etiap</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>&amp;Count</source>
-        <translation>&amp;Jumlah</translation>
+        <source>Count</source>
+        <translation>Jumlah</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+15"/>
+        <source>Convert</source>
+        <translation>Ubah</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Keep as typed</source>
+        <translation>Biarkan seperti diketik</translation>
+    </message>
+    <message>
+        <location line="+122"/>
+        <source>remove the check sum, add an MBAP header</source>
+        <translation>buang checksum, tambahkan header MBAP</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>remove the MBAP header, add the check sum</source>
+        <translation>buang header MBAP, tambahkan checksum</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the same unit and PDU in the new framing</source>
+        <translation>unit dan PDU yang sama dalam framing baru</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;b&gt;The Raw bytes are a %1 frame; the link now takes %2 frames.&lt;/b&gt; Sent as they are, the device would misread them. Convert (%3) sends:&lt;br&gt;&lt;code&gt;%4&lt;/code&gt;</source>
+        <translation>&lt;b&gt;Byte Mentah adalah frame %1; link sekarang memakai frame %2.&lt;/b&gt; Jika dikirim apa adanya, perangkat akan salah membacanya. Ubah (%3) mengirim:&lt;br&gt;&lt;code&gt;%4&lt;/code&gt;</translation>
+    </message>
+    <message>
+        <location line="+78"/>
         <location line="+1"/>
         <source>Stop &amp;poll</source>
-        <translation>Hentikan &amp;polling</translation>
+        <translation>Hentikan pollin&amp;g</translation>
     </message>
     <message>
         <location line="+18"/>
@@ -4507,6 +4590,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+2"/>
         <source>Connect first (connection bar above).</source>
         <translation>Sambungkan dulu (bilah koneksi di atas).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Convert the bytes for the new link, or keep them as typed.</source>
+        <translation>Ubah byte untuk link baru, atau biarkan seperti diketik.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4537,7 +4625,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Baca Identifikasi Perangkat</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>ON (FF 00); unchecked: OFF (00 00)</source>
         <translation>ON (FF 00); tidak dicentang: OFF (00 00)</translation>
     </message>
@@ -4789,7 +4877,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Buka sesi</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>&amp;New session</source>
         <translation>Sesi ba&amp;ru</translation>
     </message>
@@ -4814,12 +4902,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Simpan sesi seb&amp;agai…</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+134"/>
         <source>line %1, column %2: %3</source>
         <translation>baris %1, kolom %2: %3</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+73"/>
         <source>(untitled)</source>
         <translation>(tanpa judul)</translation>
     </message>
@@ -4926,30 +5014,90 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Wrong transaction id (MBAP)</source>
+        <translation>ID transaksi salah (MBAP)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wrong unit id</source>
+        <translation>ID unit salah</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fewer registers than asked</source>
+        <translation>Register lebih sedikit dari yang diminta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The answer in chunks</source>
+        <translation>Jawaban dalam potongan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The answer a byte at a time</source>
+        <translation>Jawaban byte demi byte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Junk bytes around the answer</source>
+        <translation>Byte sampah di sekitar jawaban</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The answer more than once</source>
+        <translation>Jawaban lebih dari sekali</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Close the connection</source>
+        <translation>Tutup sambungan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>&amp;Fault:</source>
         <translation>&amp;Gangguan:</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+243"/>
+        <location line="+354"/>
         <source>any unit</source>
         <translation>unit apa pun</translation>
     </message>
     <message>
-        <location line="-242"/>
+        <location line="-353"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+236"/>
+        <location line="+347"/>
         <source>any function</source>
         <translation>fungsi apa pun</translation>
     </message>
     <message>
-        <location line="-235"/>
+        <location line="-346"/>
         <source>Function &amp;code:</source>
         <translation>&amp;Kode fungsi:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>any</source>
+        <translation>semua</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Only requests that touch the addresses from here to &apos;to&apos; (any: every request).</source>
+        <translation>Hanya permintaan yang menyentuh alamat dari sini sampai &apos;sampai&apos; (semua: setiap permintaan).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>to</source>
+        <translation>sampai</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Addresses:</source>
+        <translation>Alamat:</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -5022,6 +5170,76 @@ Klik kanan untuk mengganti format</translation>
         <translation>Kode e&amp;xception:</translation>
     </message>
     <message>
+        <location line="+10"/>
+        <source>Added to the transaction id (modulo 65536) or the unit id (modulo 256)</source>
+        <translation>Ditambahkan ke ID transaksi (modulo 65536) atau ID unit (modulo 256)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Added to the id:</source>
+        <translation>Ditambahkan ke ID:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Registers (or bytes of coils) left out of a read&apos;s answer</source>
+        <translation>Register (atau byte coil) yang dihilangkan dari jawaban baca</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Fewer by:</source>
+        <translation>Kurang sebanyak:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bytes per chunk:</source>
+        <translation>Byte per potongan:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Between chunks, bytes or copies of the answer</source>
+        <translation>Di antara potongan, byte atau salinan jawaban</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gap:</source>
+        <translation>Jeda:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Random bytes before:</source>
+        <translation>Byte acak sebelum:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Random bytes after:</source>
+        <translation>Byte acak sesudah:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Extra copies:</source>
+        <translation>Salinan tambahan:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>before the answer</source>
+        <translation>sebelum jawaban</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>midway through the answer</source>
+        <translation>di tengah jawaban</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>after the answer</source>
+        <translation>sesudah jawaban</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Close:</source>
+        <translation>Tutup:</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>&amp;Add rule</source>
         <translation>&amp;Tambah aturan</translation>
@@ -5062,12 +5280,22 @@ Klik kanan untuk mengganti format</translation>
         <translation>Mengganti aturan dengan isi berkas gangguan (format mbscope simulate --faults).</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+98"/>
         <source>Not added: a uniform delay needs &apos;At most&apos; (%1 ms) at or above &apos;At least&apos; (%2 ms).</source>
         <translation>Tidak ditambahkan: tunda seragam memerlukan &apos;Maksimal&apos; (%1 ms) sama dengan atau di atas &apos;Minimal&apos; (%2 ms).</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
+        <source>Not added: the address range ends (%1) before it starts (%2).</source>
+        <translation>Tidak ditambahkan: rentang alamat berakhir (%1) sebelum dimulai (%2).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Not added: junk needs random bytes before or after the answer.</source>
+        <translation>Tidak ditambahkan: sampah memerlukan byte acak sebelum atau sesudah jawaban.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Added: %1.</source>
         <translation>Ditambahkan: %1.</translation>
     </message>
@@ -5141,7 +5369,57 @@ Klik kanan untuk mengganti format</translation>
         <translation>exception %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+1"/>
+        <source>transaction id + %1</source>
+        <translation>ID transaksi + %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unit id + %1</source>
+        <translation>ID unit + %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 fewer registers</source>
+        <translation>%1 register lebih sedikit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>chunks of %1 bytes, %2 ms apart</source>
+        <translation>potongan %1 byte, berjarak %2 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a byte every %1 ms</source>
+        <translation>satu byte setiap %1 ms</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>junk: %1 bytes before, %2 after</source>
+        <translation>sampah: %1 byte sebelum, %2 sesudah</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 extra copies, %2 ms apart</source>
+        <translation>%1 salinan tambahan, berjarak %2 ms</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>close before the answer</source>
+        <translation>tutup sebelum jawaban</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>close midway through the answer</source>
+        <translation>tutup di tengah jawaban</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>close after the answer</source>
+        <translation>tutup sesudah jawaban</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>unit %1</source>
         <translation>unit %1</translation>
     </message>
@@ -5469,16 +5747,31 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>&amp;Start</source>
-        <translation>&amp;Mulai</translation>
+        <source>Start</source>
+        <translation>Mulai</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>S&amp;top</source>
-        <translation>&amp;Hentikan</translation>
+        <source>Stop</source>
+        <translation>Hentikan</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+55"/>
+        <source>Registers</source>
+        <translation>Register</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Faults</source>
+        <translation>Gangguan</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Traffic</source>
+        <translation>Lalu lintas</translation>
+    </message>
+    <message>
+        <location line="-84"/>
         <source>Stops the simulator selected in the list.</source>
         <translation>Menghentikan simulator yang dipilih di daftar.</translation>
     </message>
@@ -5493,27 +5786,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Klik ganda sebuah nilai untuk mengaturnya di simulator (desimal, atau hex dengan 0x).</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>&amp;Registers</source>
-        <translation>&amp;Register</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>&amp;Faults</source>
-        <translation>&amp;Gangguan</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location line="+45"/>
         <source>&amp;Clear</source>
         <translation>&amp;Kosongkan</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>T&amp;raffic</source>
-        <translation>&amp;Lalu lintas</translation>
-    </message>
-    <message>
-        <location line="+24"/>
+        <location line="+27"/>
         <source>Set %1 %2 of unit %3 to %4.</source>
         <translation>%1 %2 unit %3 diatur ke %4.</translation>
     </message>
@@ -6030,24 +6308,24 @@ Klik kanan untuk mengganti format</translation>
         <translation>Cari berikutnya (F3)</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>&amp;Unit:</source>
-        <translation>&amp;Unit:</translation>
+        <location line="+15"/>
+        <source>Unit:</source>
+        <translation>Unit:</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>F&amp;unction:</source>
-        <translation>F&amp;ungsi:</translation>
+        <source>Function:</source>
+        <translation>Fungsi:</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Di&amp;rection:</source>
-        <translation>&amp;Arah:</translation>
+        <source>Direction:</source>
+        <translation>Arah:</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>&amp;Verdict:</source>
-        <translation>&amp;Hasil:</translation>
+        <source>Verdict:</source>
+        <translation>Hasil:</translation>
     </message>
     <message>
         <location line="+67"/>

@@ -21,8 +21,11 @@ LatencyAnalysis::LatencyAnalysis(AnalysisDock *dock, LinkController *link, QObje
     connect(link, &LinkController::transactionsFinished, m_runs, &LatencyRuns::addTransactions);
     // "The current poll": a new poll starts a new run (single sends before it are forgotten).
     connect(link, &LinkController::pollingChanged, m_runs, [this](bool polling) {
-        if (polling)
+        if (polling) {
             m_runs->clearCurrent();
+            // A live poll is what the user watches now: the histogram leaves an opened capture for it.
+            m_histogram->setRun(LatencyRuns::Current);
+        }
     });
 }
 

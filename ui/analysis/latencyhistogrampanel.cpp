@@ -1,5 +1,8 @@
 #include "latencyhistogrampanel.h"
 
+#include <iterator>
+#include <utility>
+
 #include "common/csvexportaction.h"
 #include "common/histogramchart.h"
 #include "latencystatisticsmodel.h"
@@ -206,13 +209,24 @@ void LatencyHistogramPanel::redraw()
         series.append({QString(), m_histogram.edgesNs(), m_histogram.counts(), m_histogram.isLogarithmic()});
         const HistogramChart::Unit unit = HistogramChart::unitFor(m_histogram.edgesNs().back());
         const auto at = [&unit](qint64 ns) { return QLocale().toString(double(ns) / unit.ns, 'f', unit.ns >= 1e6 ? 3 : 1); };
-        markers = {
-            {tr("min %1 %2").arg(at(latency.minNs()), unit.name), double(latency.minNs()), QColor()},
-            {tr("median %1 %2").arg(at(latency.medianNs()), unit.name), double(latency.medianNs()), QColor()},
-            {tr("p95 %1 %2").arg(at(latency.percentileNs(95)), unit.name), double(latency.percentileNs(95)), QColor()},
-            {tr("p99 %1 %2").arg(at(latency.percentileNs(99)), unit.name), double(latency.percentileNs(99)), QColor()},
-            {tr("max %1 %2").arg(at(latency.maxNs()), unit.name), double(latency.maxNs()), QColor()},
+        const std::pair<QString, qint64> marks[] = {
+            {tr("min"), latency.minNs()},
+            {tr("median"), latency.medianNs()},
+            {tr("p95"), latency.percentileNs(95)},
+            {tr("p99"), latency.percentileNs(99)},
+            {tr("max"), latency.maxNs()},
         };
+        // Marks at one latency share one label ("min = median = max 1.205 ms"): with one sample,
+        // or a few, five labels would be drawn over each other.
+        QStringList names;
+        for (size_t i = 0; i < std::size(marks); ++i) {
+            names << marks[i].first;
+            if (i + 1 < std::size(marks) && marks[i + 1].second == marks[i].second)
+                continue;
+            markers.append({tr("%1 %2 %3").arg(names.join(QStringLiteral(" = ")), at(marks[i].second), unit.name),
+                            double(marks[i].second), QColor()});
+            names.clear();
+        }
     }
     m_drawing = true;
     const QCPRange x = m_plot->xAxis->range();

@@ -88,7 +88,10 @@ RegisterTrendPanel::RegisterTrendPanel(QWidget *parent)
     m_plot->xAxis->setLabel(tr("time since the first answer (s)"));
     m_plot->yAxis->setLabel(tr("scaled value"));
     m_plot->legend->setVisible(true);
-    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    // Top left and see-through: the newest values arrive at the right edge and stay visible.
+    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignLeft);
+    m_plot->legend->setBrush(QColor(255, 255, 255, 150));
+    m_plot->legend->setBorderPen(QPen(QColor(0, 0, 0, 60)));
     m_cursor->setXFormatter([](double x) { return tr("t = %1 s").arg(x, 0, 'f', 3); });
 
     m_follower->setFit([this] { fitAxes(); });
@@ -216,6 +219,13 @@ QCPGraph *RegisterTrendPanel::graphFor(int index)
     row.graph->setLineStyle(QCPGraph::lsStepLeft); // a polled value holds until the next answer
     row.graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, colour, colour, 3));
     row.graph->setName(row.series.label());
+    // The register's history so far: ticking a box shows what was already read, not only what comes.
+    for (const Answer &answer : std::as_const(m_history)) {
+        if (row.series.unitId >= 0 && row.series.unitId != answer.unitId)
+            continue;
+        if (const std::optional<double> value = row.series.valueIn(answer.read))
+            row.graph->addData(answer.seconds, *value);
+    }
     const QString unit = row.series.unit;
     m_cursor->setValueFormatter(row.graph, [unit](double value) {
         return unit.isEmpty() ? QString::number(value, 'g', 7) : tr("%1 %2").arg(QString::number(value, 'g', 7), unit);
@@ -293,6 +303,8 @@ void RegisterTrendPanel::addTransactions(const QList<Transaction> &transactions)
         if (m_startNs == 0)
             m_startNs = t.sentNs;
         const double seconds = double(t.doneNs - m_startNs) / 1e9;
+        m_history.append(Answer{seconds, request.unitId, read.answer});
+        m_lastSeconds = std::max(m_lastSeconds, seconds);
         for (Row &row : m_rows) {
             if (!row.graph || (row.series.unitId >= 0 && row.series.unitId != request.unitId))
                 continue;
@@ -303,6 +315,8 @@ void RegisterTrendPanel::addTransactions(const QList<Transaction> &transactions)
             }
         }
     }
+    if (m_history.size() > kHistoryAnswers)
+        m_history.remove(0, m_history.size() - kHistoryAnswers);
     if (added)
         m_follower->scheduleRedraw();
 }
@@ -313,6 +327,7 @@ void RegisterTrendPanel::clear()
         if (row.graph)
             row.graph->data()->clear();
     }
+    m_history.clear();
     m_startNs = 0;
     m_lastSeconds = 0;
     m_cursor->hide();
@@ -355,6 +370,7 @@ void RegisterTrendPanel::fitAxes()
 {
     QCPRange values;
     bool any = false;
+    double firstSeconds = m_lastSeconds;
     for (const Row &row : std::as_const(m_rows)) {
         if (!row.graph || !row.graph->visible())
             continue;
@@ -363,12 +379,16 @@ void RegisterTrendPanel::fitAxes()
         if (!found)
             continue;
         values = any ? QCPRange(std::min(values.lower, range.lower), std::max(values.upper, range.upper)) : range;
+        firstSeconds = std::min(firstSeconds, row.graph->getKeyRange(found).lower);
         any = true;
     }
     if (!any)
         values = QCPRange(0, 1);
     const double margin = values.size() > 0 ? values.size() * 0.08 : std::max(std::abs(values.lower) * 0.1, 1.0);
-    m_plot->xAxis->setRange(0, std::max(m_lastSeconds * 1.02, 1.0));
+    // From the first point shown, not the session's first answer: a trend begun late fills the width.
+    const double from = any ? firstSeconds : 0;
+    const double span = std::max(m_lastSeconds - from, 1.0);
+    m_plot->xAxis->setRange(from - span * 0.01, from + span * 1.02);
     m_plot->yAxis->setRange(values.lower - margin, values.upper + margin);
 }
 

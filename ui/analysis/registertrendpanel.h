@@ -4,6 +4,7 @@
 
 #include "exchange/transaction.h"
 #include "protocol/framing.h"
+#include "protocol/readanswer.h"
 #include "profile/deviceprofile.h"
 
 #include <QtCore/QList>
@@ -27,7 +28,7 @@ class RegisterTable;
 
 // Register trends for the Analysis dock: chosen registers against time, from the answers to the
 // reads the window sends (a poll of 03 at 0x0079 gives one point per answer to every chosen
-// register it covers). The list on the left holds the profile's registers by name (checked ones
+// register it covers); a register ticked later is plotted from the answers already seen. The list on the left holds the profile's registers by name (checked ones
 // are plotted) and registers added by address with a format; values are scaled as the profile
 // says and the legend names them ("temperature, 40209 (degC)"). Zoom, pan, Follow and the cursor
 // work as in the LatencyTimePanel.
@@ -68,7 +69,15 @@ public:
     [[nodiscard]] QString message() const;
     void redrawNow();
 
+    // How many answers the panel keeps to plot a register ticked later (its history so far).
+    static constexpr int kHistoryAnswers = 20000;
+
 private:
+    struct Answer {
+        double seconds = 0;
+        int unitId = 0;
+        ReadAnswer read;
+    };
     struct Row {
         TrendSeries series;
         QCPGraph *graph = nullptr;
@@ -93,6 +102,7 @@ private:
     QAction *m_addSelected;
     RegisterTable *m_registerTable = nullptr;
     QList<Row> m_rows;
+    QList<Answer> m_history; // the reads answered since the last clear, newest last (bounded)
     Framing m_framing = Framing::Rtu;
     qint64 m_startNs = 0;
     double m_lastSeconds = 0;

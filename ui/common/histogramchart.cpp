@@ -1,5 +1,7 @@
 #include "histogramchart.h"
 
+#include <algorithm>
+
 #include <QtCore/QCoreApplication>
 #include <qcustomplot.h>
 
@@ -119,7 +121,8 @@ bool HistogramChart::draw(QCustomPlot &plot, const QList<Series> &series, const 
         plot.xAxis->setRange(lowNs / unit.ns / 1.1, highNs / unit.ns * 1.1);
         plot.xAxis->setLabel(tr("latency (%1), logarithmic").arg(unit.name));
     } else {
-        const double margin = (highNs - lowNs) * 0.02;
+        // One sample (or all alike) spans nothing: a range of zero width stacks the tick labels.
+        const double margin = highNs > lowNs ? (highNs - lowNs) * 0.02 : std::max(double(lowNs) * 0.1, unit.ns);
         plot.xAxis->setRange((lowNs - margin) / unit.ns, (highNs + margin) / unit.ns);
     }
     // Head room above the highest bar for the markers' labels.

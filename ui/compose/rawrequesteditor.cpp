@@ -71,6 +71,9 @@ void RawRequestEditor::buildUi()
 {
     const QFont mono = QFontDatabase::systemFont(QFontDatabase::FixedFont);
     m_savedCombo = new QComboBox(this);
+    // Long names do not widen the composer (the window fits 1024 px); the list opens wide enough.
+    m_savedCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_savedCombo->setMinimumContentsLength(14);
     m_savedCombo->setObjectName(QStringLiteral("savedRequestsCombo"));
     m_savedCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_savedCombo->setMinimumContentsLength(24);
@@ -122,7 +125,7 @@ void RawRequestEditor::buildUi()
     m_noteLabel->hide();
 
     auto *savedRow = new QHBoxLayout;
-    auto *savedLabel = new QLabel(tr("&Saved:"), this);
+    auto *savedLabel = new QLabel(tr("Sav&ed:"), this);
     savedLabel->setBuddy(m_savedCombo);
     savedRow->addWidget(savedLabel);
     savedRow->addWidget(m_savedCombo, 1);

@@ -35,32 +35,33 @@ void RequestComposer::buildUi()
     m_form->setObjectName(QStringLiteral("requestForm"));
     m_tabs = new QTabWidget(this);
     m_tabs->setObjectName(QStringLiteral("composerTabs"));
-    m_tabs->addTab(m_raw, tr("&Raw"));
-    m_tabs->addTab(m_form, tr("F&orm"));
+    m_tabs->addTab(m_raw, tr("Ra&w"));
+    m_tabs->addTab(m_form, tr("Form"));
 
-    // Ctrl+Return sends from anywhere in the composer, the hex editor included.
+    // Ctrl+Return sends and Ctrl+Shift+Return starts or stops the poll from anywhere in the window
+    // (the traffic list, the register table): a running poll is always one key from stopping.
     m_sendAction = new QAction(tr("&Send"), this);
     m_sendAction->setObjectName(QStringLiteral("sendAction"));
     m_sendAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Return));
-    m_sendAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_sendAction->setShortcutContext(Qt::WindowShortcut);
     m_sendAction->setToolTip(tr("Send the request once (Ctrl+Return)"));
     addAction(m_sendAction);
     connect(m_sendAction, &QAction::triggered, this, &RequestComposer::send);
     m_pollAction = new QAction(tr("Start &poll"), this);
     m_pollAction->setObjectName(QStringLiteral("pollAction"));
     m_pollAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Return));
-    m_pollAction->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+    m_pollAction->setShortcutContext(Qt::WindowShortcut);
     addAction(m_pollAction);
     connect(m_pollAction, &QAction::triggered, this, &RequestComposer::togglePoll);
 
-    m_sendButton = new QPushButton(tr("&Send"), this);
+    m_sendButton = new QPushButton(tr("Se&nd  (Ctrl+Return)"), this);
     m_sendButton->setObjectName(QStringLiteral("sendButton"));
     m_sendButton->setToolTip(tr("Send the request once (Ctrl+Return)"));
     QFont bold = m_sendButton->font();
     bold.setBold(true);
     m_sendButton->setFont(bold);
     m_sendButton->setMinimumWidth(m_sendButton->fontMetrics().horizontalAdvance(QStringLiteral("Send  (Ctrl+Return)")));
-    m_sendButton->setText(tr("&Send  (Ctrl+Return)"));
+    m_sendButton->setText(tr("Se&nd  (Ctrl+Return)"));
     connect(m_sendButton, &QPushButton::clicked, this, &RequestComposer::send);
     m_sendHint = new QLabel(this);
     m_sendHint->setObjectName(QStringLiteral("sendHintLabel"));
@@ -92,9 +93,9 @@ void RequestComposer::buildUi()
 
     auto *poll = new QGroupBox(tr("Poll"), this);
     auto *pollRow = new QHBoxLayout(poll);
-    auto *intervalLabel = new QLabel(tr("&Every"), poll);
+    auto *intervalLabel = new QLabel(tr("Ever&y"), poll);
     intervalLabel->setBuddy(m_intervalSpin);
-    auto *countLabel = new QLabel(tr("&Count"), poll);
+    auto *countLabel = new QLabel(tr("Count"), poll);
     countLabel->setBuddy(m_countSpin);
     pollRow->addWidget(intervalLabel);
     pollRow->addWidget(m_intervalSpin);
@@ -103,9 +104,32 @@ void RequestComposer::buildUi()
     pollRow->addStretch(1);
     pollRow->addWidget(m_pollButton);
 
+    // Offered when the link type changed under a typed frame: never send the old framing silently.
+    m_conversionBar = new QWidget(this);
+    m_conversionBar->setObjectName(QStringLiteral("conversionBar"));
+    m_conversionText = new QLabel(m_conversionBar);
+    m_conversionText->setWordWrap(true);
+    m_conversionText->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto *convert = new QPushButton(tr("Convert"), m_conversionBar);
+    convert->setObjectName(QStringLiteral("convertButton"));
+    connect(convert, &QPushButton::clicked, this, &RequestComposer::acceptConversion);
+    auto *keep = new QPushButton(tr("Keep as typed"), m_conversionBar);
+    keep->setObjectName(QStringLiteral("keepButton"));
+    connect(keep, &QPushButton::clicked, this, &RequestComposer::keepAsTyped);
+    auto *conversionLayout = new QVBoxLayout(m_conversionBar);
+    conversionLayout->setContentsMargins(0, 0, 0, 0);
+    conversionLayout->addWidget(m_conversionText);
+    auto *conversionButtons = new QHBoxLayout;
+    conversionButtons->addWidget(convert);
+    conversionButtons->addWidget(keep);
+    conversionButtons->addStretch(1);
+    conversionLayout->addLayout(conversionButtons);
+    m_conversionBar->hide();
+
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_tabs, 1);
+    layout->addWidget(m_conversionBar);
     layout->addLayout(sendRow);
     layout->addWidget(poll);
 
@@ -170,9 +194,80 @@ void RequestComposer::showFormTab()
 
 void RequestComposer::setFraming(Framing framing)
 {
+    const Framing before = m_framing;
     m_framing = framing;
     m_raw->setFraming(framing);
     m_form->setFraming(framing);
+    if (before != framing)
+        offerConversion(before);
+}
+
+namespace {
+
+bool isMbap(Framing framing)
+{
+    return framing == Framing::Tcp || framing == Framing::Udp;
+}
+
+} // namespace
+
+void RequestComposer::offerConversion(Framing from)
+{
+    dismissConversion();
+    const QByteArray typed = bytes();
+    if (typed.isEmpty() || m_syncing)
+        return;
+    // Only a whole, correct frame of the old framing is converted: anything else may be meant.
+    const AduParts parts = AduBuilder::parse(typed, from);
+    if (!parts.complete || parts.pdu.isEmpty() || !parts.error.isEmpty())
+        return;
+    if (!isMbap(from) && !parts.checksumValid())
+        return;
+    if (isMbap(from) == isMbap(m_framing) && from != Framing::Ascii && m_framing != Framing::Ascii)
+        return; // RTU and RTU over TCP, or MBAP on TCP and UDP: the same bytes
+    AduOptions options;
+    options.framing = m_framing;
+    options.unitId = parts.unitId;
+    options.transactionId = isMbap(from) ? parts.transactionId : 1;
+    const QByteArray converted = AduBuilder::complete(parts.pdu, options);
+    if (converted.isEmpty() || converted == typed)
+        return;
+    m_converted = converted;
+    QString change;
+    if (isMbap(m_framing))
+        change = tr("remove the check sum, add an MBAP header");
+    else if (isMbap(from))
+        change = tr("remove the MBAP header, add the check sum");
+    else
+        change = tr("the same unit and PDU in the new framing");
+    m_conversionText->setText(tr("<b>The Raw bytes are a %1 frame; the link now takes %2 frames.</b> Sent as they are, "
+                                 "the device would misread them. Convert (%3) sends:<br><code>%4</code>")
+                                  .arg(framingName(from).toUpper(), framingName(m_framing).toUpper(), change,
+                                       HexText::format(converted)));
+    m_conversionBar->show();
+    updateActions();
+}
+
+void RequestComposer::dismissConversion()
+{
+    if (m_converted.isEmpty() && m_conversionBar->isHidden())
+        return;
+    m_converted.clear();
+    m_conversionBar->hide();
+    updateActions();
+}
+
+void RequestComposer::acceptConversion()
+{
+    const QByteArray converted = m_converted;
+    dismissConversion();
+    if (!converted.isEmpty())
+        m_raw->setText(HexText::format(converted));
+}
+
+void RequestComposer::keepAsTyped()
+{
+    dismissConversion();
 }
 
 void RequestComposer::setUnitId(int unit)
@@ -183,6 +278,9 @@ void RequestComposer::setUnitId(int unit)
 
 void RequestComposer::onRawChanged(const QByteArray &bytes, bool valid)
 {
+    // The user edited the bytes: what they typed now is what they mean.
+    if (!m_converted.isEmpty() && bytes != m_converted)
+        dismissConversion();
     updateActions();
     if (m_syncing || !valid)
         return;
@@ -233,7 +331,7 @@ void RequestComposer::setListenOnly(bool listenOnly)
 
 void RequestComposer::updateActions()
 {
-    const bool haveBytes = !bytes().isEmpty();
+    const bool haveBytes = !bytes().isEmpty() && m_converted.isEmpty();
     const bool canSend = m_linkReady && !m_listenOnly;
     m_sendAction->setEnabled(canSend && haveBytes && !m_polling);
     m_sendButton->setEnabled(m_sendAction->isEnabled());
@@ -247,6 +345,8 @@ void RequestComposer::updateActions()
         m_sendHint->setText(tr("Listen only: Send and Poll are off, nothing is sent to the bus."));
     else if (!m_linkReady)
         m_sendHint->setText(tr("Connect first (connection bar above)."));
+    else if (!m_converted.isEmpty())
+        m_sendHint->setText(tr("Convert the bytes for the new link, or keep them as typed."));
     else if (!haveBytes)
         m_sendHint->setText(tr("Type a request (Raw) or build one (Form)."));
     else if (m_polling)
@@ -258,7 +358,7 @@ void RequestComposer::updateActions()
 void RequestComposer::send()
 {
     const QByteArray request = bytes();
-    if (request.isEmpty() || !m_linkReady || m_listenOnly || m_polling)
+    if (request.isEmpty() || !m_linkReady || m_listenOnly || m_polling || !m_converted.isEmpty())
         return;
     Q_EMIT sendRequested(request);
 }
@@ -270,7 +370,7 @@ void RequestComposer::togglePoll()
         return;
     }
     const QByteArray request = bytes();
-    if (request.isEmpty() || !m_linkReady)
+    if (request.isEmpty() || !m_linkReady || !m_converted.isEmpty())
         return;
     Q_EMIT pollRequested(request, m_intervalSpin->value(), quint64(m_countSpin->value()));
 }

@@ -61,6 +61,14 @@ public:
     void showRawTab();
     void showFormTab();
 
+    // After a change of link type, while the Raw bytes are a whole frame of the old framing: the
+    // same request framed for the new link (what Convert would put in Raw); empty otherwise.
+    // Send and Poll wait until the user converts or keeps the bytes as typed.
+    [[nodiscard]] QByteArray pendingConversion() const { return m_converted; }
+    void acceptConversion();
+    void keepAsTyped();
+    [[nodiscard]] QWidget *conversionBar() const { return m_conversionBar; }
+
 public Q_SLOTS:
     void setFraming(mbscope::Framing framing);
     void setUnitId(int unit);
@@ -89,6 +97,8 @@ private:
     void onRawChanged(const QByteArray &bytes, bool valid);
     void onFormChanged();
     void updateActions();
+    void offerConversion(Framing from);
+    void dismissConversion();
 
     QTabWidget *m_tabs = nullptr;
     RawRequestEditor *m_raw = nullptr;
@@ -100,6 +110,9 @@ private:
     QSpinBox *m_intervalSpin = nullptr;
     QSpinBox *m_countSpin = nullptr;
     QLabel *m_sendHint = nullptr;
+    QWidget *m_conversionBar = nullptr;
+    QLabel *m_conversionText = nullptr;
+    QByteArray m_converted;
     Framing m_framing = Framing::Rtu;
     bool m_syncing = false;
     bool m_linkReady = false;

@@ -112,7 +112,8 @@ void RequestForm::buildUi()
     m_function->setObjectName(QStringLiteral("functionCombo"));
     for (int code : functionCodes()) {
         const QString name = code == 0x2B ? tr("Read Device Identification") : fieldText(functionName(quint8(code)));
-        m_function->addItem(QStringLiteral("%1  %2").arg(hexDigits(code, 2), name), code);
+        // Hex and decimal both: "0x10 (16)" beside "0x16 (22)" cannot be misread.
+        m_function->addItem(QStringLiteral("0x%1 (%2)  %3").arg(hexDigits(code, 2)).arg(code).arg(name), code);
     }
 
     m_address = new AddressField(this);

@@ -92,6 +92,11 @@ void DecodePanel::buildUi()
     auto *requestLabel = new QLabel(tr("Matching &request:"), this);
     requestLabel->setBuddy(m_requestEdit);
 
+    // The window fits 1024 px: the combos give way rather than widen the Decode tab.
+    for (QComboBox *combo : {m_framingCombo, m_directionCombo}) {
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        combo->setMinimumContentsLength(6);
+    }
     auto *options = new QHBoxLayout;
     options->addWidget(m_framingCombo);
     options->addSpacing(12);

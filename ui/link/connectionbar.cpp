@@ -92,9 +92,9 @@ void ConnectionBar::buildUi()
     m_networkPage = network;
     auto *networkRow = new QHBoxLayout(network);
     networkRow->setContentsMargins(0, 0, 0, 0);
-    networkRow->addWidget(buddyLabel(tr("&Host:"), m_hostEdit, network));
+    networkRow->addWidget(buddyLabel(tr("H&ost:"), m_hostEdit, network));
     networkRow->addWidget(m_hostEdit, 1);
-    networkRow->addWidget(buddyLabel(tr("P&ort:"), m_portSpin, network));
+    networkRow->addWidget(buddyLabel(tr("Port:"), m_portSpin, network));
     networkRow->addWidget(m_portSpin);
 
     // Serial target
@@ -195,7 +195,7 @@ void ConnectionBar::buildUi()
     row->addSpacing(8);
     row->addWidget(buddyLabel(tr("&Unit:"), m_unitSpin, this));
     row->addWidget(m_unitSpin);
-    row->addWidget(buddyLabel(tr("&Timeout:"), m_timeoutSpin, this));
+    row->addWidget(buddyLabel(tr("Ti&meout:"), m_timeoutSpin, this));
     row->addWidget(m_timeoutSpin);
     row->addWidget(m_listenOnlyCheck);
     row->addSpacing(8);

@@ -151,6 +151,7 @@ void LinkController::resetEngine()
     m_engine->setFramesPublished(true);
     connect(m_engine.get(), &TransactionEngine::progress, this, &LinkController::onProgress);
     connect(m_engine.get(), &TransactionEngine::linkMessage, this, &LinkController::onLinkMessage);
+    connect(m_engine.get(), &TransactionEngine::linkOpened, this, [this] { setState(State::Connected, m_url.toString()); });
     connect(m_engine.get(), &TransactionEngine::finished, this, &LinkController::onPollFinished);
 }
 
@@ -171,7 +172,10 @@ void LinkController::connectTo(const LinkUrl &url)
         }
         Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
     }
-    setState(State::Ready, tr("%1: the link opens with the first request").arg(url.toString()));
+    // Connect opens the link now: a closed port or a missing serial device is said here, not at
+    // the first Send.
+    setState(State::Ready, tr("%1: connecting\u2026").arg(url.toString()));
+    m_engine->openLink();
 }
 
 void LinkController::listenTo(const LinkUrl &url)

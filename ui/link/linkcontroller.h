@@ -24,16 +24,17 @@ class TransactionEngine;
 // link, and reports what happened as plain signals. No widget code, so tests drive it directly
 // and MainWindow only connects it to the panels.
 //
-// The engine opens the link on the first request, so "connected" means: the target is set, and
-// (once a request went out) the link opened; a link failure puts the controller into Failed with
-// the link's own words until the next request succeeds or the user connects elsewhere.
+// connectTo() sets the target and opens the link at once (Ready while it opens, Connected when it
+// is open); a link failure puts the controller into Failed with the link's own words until the
+// next request succeeds or the user connects elsewhere. A link that closed opens again with the
+// next request.
 class LinkController : public QObject
 {
     Q_OBJECT
 public:
     enum class State : quint8 {
         Disconnected,
-        Ready,     // target set; the link opens on the first request
+        Ready,     // target set; the link is opening
         Connected, // the link opened and answers come back
         Failed,    // the link failed; message() says why
     };

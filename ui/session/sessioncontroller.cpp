@@ -55,6 +55,7 @@ SessionController::SessionController(QMainWindow *window, ConnectionBar *bar, Re
         return forSave ? QFileDialog::getSaveFileName(m_window, tr("Save session"), m_path, filter)
                        : QFileDialog::getOpenFileName(m_window, tr("Open session"), QFileInfo(m_path).path(), filter);
     };
+    m_savedAtOpen = m_composer->state().savedRequests;
     m_clean = currentDocument();
     m_freshTarget = m_clean.target;
     // Any change of what goes into the document re-checks the modified flag: comparing the
@@ -145,6 +146,8 @@ SessionDocument SessionController::currentDocument() const
     for (const SavedRequest &saved : savedList) {
         if (saved.name == QLatin1String(kComposerRequest) || d.request(saved.name))
             continue; // the document's names are unique; the composer's request keeps its name
+        if (m_savedAtOpen.contains(saved))
+            continue; // there before: a built-in preset or another session's, not this one's
         SessionRequest request;
         request.name = saved.name;
         request.hex = saved.hex;
@@ -198,6 +201,9 @@ void SessionController::apply(const SessionDocument &document)
         composer.count = int(document.poll->count);
     }
     m_composer->setState(composer);
+    m_savedAtOpen = m_composer->state().savedRequests;
+    for (const SessionRequest &request : document.requests) // the document's own stay in it
+        m_savedAtOpen.removeIf([&request](const SavedRequest &s) { return s.name == request.name; });
     m_applying = false;
 }
 
@@ -223,6 +229,7 @@ bool SessionController::open(const QString &path)
     setPath(QFileInfo(path).absoluteFilePath());
     addRecent(m_path);
     markClean();
+    Q_EMIT targetApplied();
     return true;
 }
 
@@ -240,8 +247,13 @@ bool SessionController::save()
     return saveAs(m_path);
 }
 
-bool SessionController::saveAs(const QString &path)
+bool SessionController::saveAs(const QString &chosenPath)
 {
+    // The Open dialog lists *.mbscope.json and *.json: a name without either gets the suffix, so
+    // the file saved is a file that can be opened again.
+    QString path = chosenPath;
+    if (!path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive))
+        path += QLatin1String(".mbscope.json");
     SessionDocument document = currentDocument();
     if (m_beforeSave)
         m_beforeSave(document, QFileInfo(path).absoluteFilePath());
@@ -269,6 +281,7 @@ bool SessionController::newSession()
     apply(fresh);
     setPath(QString());
     markClean();
+    Q_EMIT targetApplied();
     return true;
 }
 

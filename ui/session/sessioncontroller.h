@@ -2,6 +2,7 @@
 
 #include "session/sessiondocument.h"
 #include "json/profileproblem.h"
+#include "compose/savedrequests.h"
 
 #include <QtCore/QObject>
 #include <QtCore/QString>
@@ -77,6 +78,9 @@ public:
 
 Q_SIGNALS:
     void titleChanged(const QString &title);
+    // A session was opened (or New put a fresh one in place): its target is in the connection
+    // bar now, and the window connects to it, so what the bar shows is what Send uses.
+    void targetApplied();
 
 private:
     void updateModified();
@@ -96,6 +100,9 @@ private:
     SessionDocument m_clean;
     SessionDocument m_base; // the opened document: what the window does not show (plan, profile, ...) is saved back as read
     SessionTarget m_freshTarget; // what New puts back: the connection bar of a new window
+    // The composer's named requests when the session was opened (the built-in presets, other
+    // windows' requests, the document's own): Save writes only those added or changed since.
+    QList<SavedRequest> m_savedAtOpen;
     bool m_modified = false;
     bool m_applying = false;
     QStringList m_lastProblems;

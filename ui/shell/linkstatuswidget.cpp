@@ -30,7 +30,7 @@ void LinkStatusWidget::setState(LinkController::State state, const QString &mess
     QColor colour = palette().color(QPalette::WindowText);
     switch (state) {
     case LinkController::State::Disconnected: word = tr("Not connected"); break;
-    case LinkController::State::Ready: word = tr("Ready"); colour = SeverityStyle::textColor(Severity::Info); break;
+    case LinkController::State::Ready: word = tr("Connecting"); colour = SeverityStyle::textColor(Severity::Info); break;
     case LinkController::State::Connected: word = tr("Connected"); colour = QColor(0x1b, 0x7f, 0x2a); break;
     case LinkController::State::Failed: word = tr("Link failed"); colour = SeverityStyle::textColor(Severity::Error); break;
     }

@@ -12,6 +12,7 @@
 #include "session/recordingcontrol.h"
 #include "compose/rawrequesteditor.h"
 #include "registers/registertable.h"
+#include "registers/registertablemodel.h"
 #include "session/replaycontroller.h"
 #include "compose/requestcomposer.h"
 #include "compose/savedrequests.h"
@@ -26,17 +27,22 @@
 #include "protocol/adubuilder.h"
 
 #include <QtCore/QCoreApplication>
+#include <QtCore/QFileInfo>
 #include <QtCore/QSettings>
 #include <QtGui/QCloseEvent>
 #include <QtGui/QAction>
 #include <QtGui/QKeySequence>
+#include <QtGui/QShortcut>
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMenuBar>
 #include <QtWidgets/QMessageBox>
 #include <QtWidgets/QPlainTextEdit>
+#include <QtWidgets/QScrollArea>
+#include <QtWidgets/QSpinBox>
 #include <QtWidgets/QSplitter>
 #include <QtWidgets/QStatusBar>
+#include <QtWidgets/QTabBar>
 #include <QtWidgets/QTabWidget>
 #include <QtWidgets/QVBoxLayout>
 
@@ -57,6 +63,7 @@ MainWindow::MainWindow(QWidget *parent)
     connectDocks();
     m_session = new SessionController(this, m_connectionBar, m_composer);
     connect(m_session, &SessionController::titleChanged, this, &QMainWindow::setWindowTitle);
+    connect(m_session, &SessionController::targetApplied, this, &MainWindow::useSessionTarget);
     // Replay and test plans: the Session menu and the Replay and Test plan docks beside Traffic.
     m_sessionTools = new SessionTools(this, m_controller, m_session, m_traffic, m_trafficDock);
     // The Latency histogram and Compare tabs of the Analysis dock; an opened capture is shown there too.
@@ -70,6 +77,7 @@ MainWindow::MainWindow(QWidget *parent)
     if (auto *layout = qobject_cast<QVBoxLayout *>(centralWidget()->layout()))
         layout->insertWidget(layout->indexOf(m_banner) + 1, m_recording->recoveryBanner());
     m_recording->offerRecovery();
+    makeDocksScrollable();
     createMenus();
     statusBar()->showMessage(tr("Ready"), 3000);
     resize(1400, 900);
@@ -200,6 +208,15 @@ void MainWindow::closeEvent(QCloseEvent *event)
         return;
     }
     saveLayout();
+    // The next start opens this session again (none: the last target is put back).
+    QSettings settings;
+    settings.setValue(QStringLiteral("session/last"), m_session->filePath());
+    settings.setValue(QStringLiteral("composer/intervalMs"), m_composer->intervalSpin()->value());
+    settings.setValue(QStringLiteral("composer/count"), m_composer->countSpin()->value());
+    QStringList formats;
+    for (const RegisterFormat &format : m_registers->model()->valueFormats())
+        formats << format.name();
+    settings.setValue(QStringLiteral("registers/formats"), formats);
     QMainWindow::closeEvent(event);
 }
 
@@ -294,7 +311,87 @@ void MainWindow::showInRegisterTable(const Transaction &transaction)
     const quint8 function = request.pdu.isEmpty() ? 0 : quint8(request.pdu.at(0));
     if ((function < 0x01 || function > 0x04) && function != 0x17)
         return;
+    m_lastRead = transaction.request;
     m_registers->showTransaction(transaction, framing);
+}
+
+void MainWindow::makeDocksScrollable()
+{
+    // A panel taller than its dock scrolls instead of holding the whole window at its minimum
+    // height: tabbed docks share one area, sized by the tallest panel's minimum. The traffic list
+    // scrolls already.
+    for (QDockWidget *dock : findChildren<QDockWidget *>()) {
+        if (dock == m_trafficDock || qobject_cast<QScrollArea *>(dock->widget()))
+            continue;
+        auto *scroll = new QScrollArea(dock);
+        scroll->setObjectName(dock->objectName() + QStringLiteral("Scroll"));
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidgetResizable(true);
+        scroll->setWidget(dock->widget());
+        dock->setWidget(scroll);
+    }
+}
+
+void MainWindow::focusNextDock()
+{
+    QList<QDockWidget *> docks;
+    for (QDockWidget *dock : findChildren<QDockWidget *>()) {
+        // Tabbed docks behind another are hidden, yet open: raising them brings them forward.
+        if (dock->isVisible() || !tabifiedDockWidgets(dock).isEmpty())
+            docks.append(dock);
+    }
+    if (docks.isEmpty())
+        return;
+    int current = -1;
+    for (int i = 0; i < docks.size(); ++i) {
+        if (docks.at(i)->isAncestorOf(QApplication::focusWidget()))
+            current = i;
+    }
+    // The next dock that comes forward when raised (a closed one stays closed and is passed by).
+    QDockWidget *next = nullptr;
+    for (int step = 1; step <= docks.size() && !next; ++step) {
+        QDockWidget *candidate = docks.at((current + step) % docks.size());
+        // QMainWindow keeps each tabbed dock's pointer as its tab's data: choosing that tab
+        // brings the dock forward at once (raise() alone waits for the next layout pass).
+        for (QTabBar *tabs : findChildren<QTabBar *>(QString(), Qt::FindDirectChildrenOnly)) {
+            for (int i = 0; i < tabs->count(); ++i) {
+                if (tabs->tabData(i).value<quintptr>() == quintptr(candidate))
+                    tabs->setCurrentIndex(i);
+            }
+        }
+        candidate->raise();
+        if (candidate->isVisible())
+            next = candidate;
+    }
+    if (!next)
+        return;
+    // The dock's first widget that takes the keyboard (the traffic list's filter, a table).
+    QWidget *target = next->widget();
+    for (QWidget *child : next->widget()->findChildren<QWidget *>()) {
+        if ((child->focusPolicy() & Qt::TabFocus) && child->isVisibleTo(next)) {
+            target = child;
+            break;
+        }
+    }
+    target->setFocus(Qt::ShortcutFocusReason);
+    statusBar()->showMessage(tr("%1 dock (F6: the next one)").arg(next->windowTitle().remove(QLatin1Char('&'))), 3000);
+}
+
+void MainWindow::useSessionTarget()
+{
+    // The bar shows the session's target; sending anywhere else would put one link's framing on
+    // another (MBAP bytes read as RTU, an RTU frame as a broken MBAP header).
+    const std::optional<LinkUrl> target = m_connectionBar->url();
+    if (!target) {
+        if (m_controller->isConnected())
+            m_controller->disconnectLink();
+        statusBar()->showMessage(tr("Disconnected: the session names no target that can be used (%1)")
+                                     .arg(m_connectionBar->errorText()),
+                                 15000);
+        return;
+    }
+    m_controller->connectTo(*target);
+    statusBar()->showMessage(tr("Connecting to the session's target %1").arg(target->toString()), 10000);
 }
 
 void MainWindow::sendWrite(const QByteArray &pdu, const QString &description)
@@ -308,7 +405,50 @@ void MainWindow::sendWrite(const QByteArray &pdu, const QString &description)
     options.unitId = quint8(m_connectionBar->unitId());
     options.transactionId = 1;
     m_controller->send(AduBuilder::complete(pdu, options));
+    // The table shows what the device holds, not what was typed: the read it came from goes out
+    // again after the write (queued behind it), unless a poll reads it anyway.
+    if (!m_lastRead.isEmpty() && !m_controller->isPolling()) {
+        m_controller->send(m_lastRead);
+        statusBar()->showMessage(tr("Sent: %1; reading it back").arg(description), 5000);
+        return;
+    }
     statusBar()->showMessage(tr("Sent: %1").arg(description), 5000);
+}
+
+bool MainWindow::startAsConfigured(const QString &url)
+{
+    QSettings settings;
+    const bool firstRun = !settings.value(QStringLiteral("startup/started")).toBool();
+    settings.setValue(QStringLiteral("startup/started"), true);
+    if (firstRun || PreferencesDialog::startsSimulator())
+        return startWithSimulator(url);
+    // The poll interval and count as they were left (a session opened next sets its own).
+    if (settings.contains(QStringLiteral("composer/intervalMs"))) {
+        m_composer->intervalSpin()->setValue(settings.value(QStringLiteral("composer/intervalMs")).toInt());
+        m_composer->countSpin()->setValue(settings.value(QStringLiteral("composer/count")).toInt());
+    }
+    // The register table's value columns (formats and byte orders) as they were left.
+    QList<RegisterFormat> formats;
+    for (const QString &name : settings.value(QStringLiteral("registers/formats")).toStringList()) {
+        const RegisterFormatResult format = RegisterFormat::parse(name);
+        if (format.ok)
+            formats.append(format.format);
+    }
+    if (!formats.isEmpty())
+        m_registers->model()->setValueFormats(formats);
+    const QString last = settings.value(QStringLiteral("session/last")).toString();
+    if (!last.isEmpty() && QFileInfo::exists(last) && m_session->open(last))
+        return false;
+    const QStringList recent = m_connectionBar->recentTargets();
+    if (!recent.isEmpty()) {
+        if (const std::optional<LinkUrl> lastTarget = LinkUrl::parse(recent.constFirst()).url) {
+            m_connectionBar->setUrl(*lastTarget);
+            m_composer->setFraming(lastTarget->framing());
+            m_session->markClean();
+            statusBar()->showMessage(tr("Not connected: press Connect to use %1 again").arg(lastTarget->toString()), 15000);
+        }
+    }
+    return false;
 }
 
 bool MainWindow::startWithSimulator(const QString &url)
@@ -381,6 +521,15 @@ void MainWindow::createMenus()
         m_traffic->focusSearch();
     });
     find->setShortcut(QKeySequence::Find);
+    // The list's own Ctrl+F would make the window's ambiguous inside the dock, and Qt then fires
+    // neither: the window's action serves the dock too.
+    for (QShortcut *shortcut : m_traffic->findChildren<QShortcut *>()) {
+        if (shortcut->key() == QKeySequence(QKeySequence::Find))
+            shortcut->setEnabled(false);
+    }
+    QAction *nextDock = view->addAction(tr("&Next dock"), this, &MainWindow::focusNextDock);
+    nextDock->setObjectName(QStringLiteral("nextDockAction"));
+    nextDock->setShortcut(QKeySequence(Qt::Key_F6));
 
     QMenu *tools = menuBar()->addMenu(tr("&Tools"));
     QAction *preferences = tools->addAction(tr("&Preferences\u2026"), this, [this] {

@@ -48,6 +48,10 @@ public:
     // port when that one is taken), connected, with the RosRao read ready in the composer.
     // False (and the reason in the connection bar) when the simulator cannot start.
     bool startWithSimulator(const QString &url = QString::fromLatin1(kFirstRunUrl));
+    // A start without a session named: the first run (or every run, when Preferences says so)
+    // is startWithSimulator(url); a later one opens the session open at the last close, or puts
+    // back the last target, disconnected. True when the simulator was started.
+    bool startAsConfigured(const QString &url = QString::fromLatin1(kFirstRunUrl));
 
     [[nodiscard]] DecodePanel *decodePanel() const { return m_decodePanel; }
     [[nodiscard]] ConnectionBar *connectionBar() const { return m_connectionBar; }
@@ -85,6 +89,11 @@ private:
     void connectPanels();
     void connectDocks();
     void showInRegisterTable(const Transaction &transaction);
+    // After a session was opened: connect to the target its bar shows, or disconnect and say why.
+    void useSessionTarget();
+    // F6: focus moves to the next visible dock (tabbed docks are raised).
+    void focusNextDock();
+    void makeDocksScrollable();
     void sendWrite(const QByteArray &pdu, const QString &description);
     void createMenus();
     void showAbout();
@@ -112,6 +121,7 @@ private:
     RecordingControl *m_recording = nullptr;
     SimulatorPanel *m_simulatorPanel = nullptr;
     QDockWidget *m_simulatorDock = nullptr;
+    QByteArray m_lastRead; // the read whose answer the register table shows: sent again after a write
     bool m_layoutRestored = false; // the docks' sizes came from QSettings: the first show keeps them
     bool m_fitted = false; // panel proportions set on the first show, then left to the user
 };

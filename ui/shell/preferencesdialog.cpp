@@ -1,5 +1,6 @@
 #include "preferencesdialog.h"
 
+#include <QtCore/QSettings>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QFileDialog>
@@ -48,6 +49,12 @@ PreferencesDialog::PreferencesDialog(QWidget *parent)
 
     auto *form = new QFormLayout;
     form->addRow(tr("&Language:"), m_language);
+    m_simulator = new QCheckBox(tr("Start the built-in &simulator and connect to it at every start"), this);
+    m_simulator->setObjectName(QStringLiteral("startSimulatorBox"));
+    m_simulator->setToolTip(tr("Off: only the first run does; later starts open the last session (or put back the "
+                               "last target, disconnected) and the last layout."));
+    m_simulator->setChecked(startsSimulator());
+    form->addRow(m_simulator);
 
     m_record->setObjectName(QStringLiteral("recordBox"));
     m_record->setToolTip(tr("Every frame in and out is written to a traffic journal as it happens, one per connection; "
@@ -114,8 +121,14 @@ void PreferencesDialog::setLanguageChoice(TranslationLoader::Choice choice)
     m_language->setCurrentIndex(row < 0 ? 0 : row);
 }
 
+bool PreferencesDialog::startsSimulator()
+{
+    return QSettings().value(QLatin1String(kStartSimulatorKey), false).toBool();
+}
+
 bool PreferencesDialog::apply()
 {
+    QSettings().setValue(QLatin1String(kStartSimulatorKey), m_simulator->isChecked());
     const TranslationLoader::Choice chosen = languageChoice();
     if (chosen == m_stored)
         return false;

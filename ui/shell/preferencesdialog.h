@@ -29,8 +29,14 @@ public:
     void setLanguageChoice(TranslationLoader::Choice choice);
     [[nodiscard]] QComboBox *languageBox() const { return m_language; }
 
-    // Stores the choice; true when it differs from what was stored (a restart is needed).
+    // Stores the choices; true when the language differs from what was stored (a restart is needed).
     bool apply();
+
+    // "startup/simulator": every start launches the built-in simulator and connects to it. Off
+    // (the default), only the first run does; later starts put back the last session or target.
+    static constexpr const char *kStartSimulatorKey = "startup/simulator";
+    [[nodiscard]] static bool startsSimulator();
+    [[nodiscard]] QCheckBox *simulatorBox() const { return m_simulator; }
 
     void setRecordingSettings(const RecordingSettings &settings);
     [[nodiscard]] RecordingSettings recordingSettings() const;
@@ -42,6 +48,7 @@ private:
     QComboBox *m_language = nullptr;
     QLabel *m_note = nullptr;
     QCheckBox *m_record = nullptr;
+    QCheckBox *m_simulator = nullptr;
     QLineEdit *m_folder = nullptr;
     QToolButton *m_browse = nullptr;
     QSpinBox *m_rotate = nullptr;

@@ -63,6 +63,14 @@ void SimFaultForm::buildForm()
     m_kind->addItem(tr("Drop the answer"), int(FaultRule::Kind::Drop));
     m_kind->addItem(tr("Wrong CRC or LRC"), int(FaultRule::Kind::WrongChecksum));
     m_kind->addItem(tr("Exception instead of the answer"), int(FaultRule::Kind::Exception));
+    m_kind->addItem(tr("Wrong transaction id (MBAP)"), int(FaultRule::Kind::WrongTransactionId));
+    m_kind->addItem(tr("Wrong unit id"), int(FaultRule::Kind::WrongUnit));
+    m_kind->addItem(tr("Fewer registers than asked"), int(FaultRule::Kind::FewerRegisters));
+    m_kind->addItem(tr("The answer in chunks"), int(FaultRule::Kind::Chunks));
+    m_kind->addItem(tr("The answer a byte at a time"), int(FaultRule::Kind::Trickle));
+    m_kind->addItem(tr("Junk bytes around the answer"), int(FaultRule::Kind::Junk));
+    m_kind->addItem(tr("The answer more than once"), int(FaultRule::Kind::Duplicate));
+    m_kind->addItem(tr("Close the connection"), int(FaultRule::Kind::Close));
     m_form->addRow(tr("&Fault:"), m_kind);
 
     m_unit = new QSpinBox(formBox);
@@ -78,6 +86,24 @@ void SimFaultForm::buildForm()
     m_function->setPrefix(QStringLiteral("0x"));
     m_function->setSpecialValueText(tr("any function"));
     m_form->addRow(tr("Function &code:"), m_function);
+
+    // -1 is "any": a rule for an address range matches requests that touch it.
+    auto addressBox = [formBox](const QString &name) {
+        auto *box = new QSpinBox(formBox);
+        box->setObjectName(name);
+        box->setRange(-1, 65535);
+        box->setValue(-1);
+        box->setSpecialValueText(tr("any"));
+        return box;
+    };
+    m_firstAddress = addressBox(QStringLiteral("faultFirstAddress"));
+    m_lastAddress = addressBox(QStringLiteral("faultLastAddress"));
+    m_firstAddress->setToolTip(tr("Only requests that touch the addresses from here to 'to' (any: every request)."));
+    auto *addresses = new QHBoxLayout;
+    addresses->addWidget(m_firstAddress, 1);
+    addresses->addWidget(new QLabel(tr("to"), formBox));
+    addresses->addWidget(m_lastAddress, 1);
+    m_form->addRow(tr("Addresses:"), addresses);
 
     m_probability = new QDoubleSpinBox(formBox);
     m_probability->setObjectName(QStringLiteral("faultProbability"));
@@ -115,6 +141,38 @@ void SimFaultForm::buildForm()
     m_exceptionCode->setToolTip(tr("01 illegal function, 02 illegal data address, 03 illegal data value, 04 server "
                                    "device failure, 06 server device busy, 0B gateway target failed to respond."));
     m_form->addRow(tr("E&xception code:"), m_exceptionCode);
+
+    auto countBox = [formBox](const QString &name, int low, int high, int value) {
+        auto *box = new QSpinBox(formBox);
+        box->setObjectName(name);
+        box->setRange(low, high);
+        box->setValue(value);
+        return box;
+    };
+    m_delta = countBox(QStringLiteral("faultDelta"), 1, 65535, 1);
+    m_delta->setToolTip(tr("Added to the transaction id (modulo 65536) or the unit id (modulo 256)"));
+    m_form->addRow(tr("Added to the id:"), m_delta);
+    m_fewer = countBox(QStringLiteral("faultFewer"), 1, 125, 1);
+    m_fewer->setToolTip(tr("Registers (or bytes of coils) left out of a read's answer"));
+    m_form->addRow(tr("Fewer by:"), m_fewer);
+    m_chunkBytes = countBox(QStringLiteral("faultChunkBytes"), 1, 260, 4);
+    m_form->addRow(tr("Bytes per chunk:"), m_chunkBytes);
+    m_gapMs = msBox(formBox, 5, QStringLiteral("faultGapMs"));
+    m_gapMs->setToolTip(tr("Between chunks, bytes or copies of the answer"));
+    m_form->addRow(tr("Gap:"), m_gapMs);
+    m_junkBefore = countBox(QStringLiteral("faultJunkBefore"), 0, 256, 3);
+    m_form->addRow(tr("Random bytes before:"), m_junkBefore);
+    m_junkAfter = countBox(QStringLiteral("faultJunkAfter"), 0, 256, 0);
+    m_form->addRow(tr("Random bytes after:"), m_junkAfter);
+    m_copies = countBox(QStringLiteral("faultCopies"), 1, 100, 1);
+    m_form->addRow(tr("Extra copies:"), m_copies);
+    m_closeWhen = new QComboBox(formBox);
+    m_closeWhen->setObjectName(QStringLiteral("faultCloseWhen"));
+    m_closeWhen->addItem(tr("before the answer"), int(FaultRule::CloseWhen::Before));
+    m_closeWhen->addItem(tr("midway through the answer"), int(FaultRule::CloseWhen::Midway));
+    m_closeWhen->addItem(tr("after the answer"), int(FaultRule::CloseWhen::After));
+    m_closeWhen->setCurrentIndex(2);
+    m_form->addRow(tr("Close:"), m_closeWhen);
 
     m_add = new QPushButton(tr("&Add rule"), formBox);
     m_add->setObjectName(QStringLiteral("faultAdd"));
@@ -170,6 +228,15 @@ void SimFaultForm::updateFieldVisibility()
     m_form->setRowVisible(m_minMs, delay && distribution != DelaySpec::Kind::Fixed);
     m_form->setRowVisible(m_maxMs, delay && distribution != DelaySpec::Kind::Fixed);
     m_form->setRowVisible(m_exceptionCode, kind == FaultRule::Kind::Exception);
+    m_form->setRowVisible(m_delta, kind == FaultRule::Kind::WrongTransactionId || kind == FaultRule::Kind::WrongUnit);
+    m_form->setRowVisible(m_fewer, kind == FaultRule::Kind::FewerRegisters);
+    m_form->setRowVisible(m_chunkBytes, kind == FaultRule::Kind::Chunks);
+    m_form->setRowVisible(m_gapMs, kind == FaultRule::Kind::Chunks || kind == FaultRule::Kind::Trickle
+                                       || kind == FaultRule::Kind::Duplicate);
+    m_form->setRowVisible(m_junkBefore, kind == FaultRule::Kind::Junk);
+    m_form->setRowVisible(m_junkAfter, kind == FaultRule::Kind::Junk);
+    m_form->setRowVisible(m_copies, kind == FaultRule::Kind::Duplicate);
+    m_form->setRowVisible(m_closeWhen, kind == FaultRule::Kind::Close);
 }
 
 FaultRule SimFaultForm::formRule() const
@@ -195,6 +262,30 @@ FaultRule SimFaultForm::formRule() const
     }
     if (rule.kind == FaultRule::Kind::Exception)
         rule.exceptionCode = quint8(m_exceptionCode->value());
+    if (m_firstAddress->value() >= 0 || m_lastAddress->value() >= 0) {
+        rule.firstAddress = m_firstAddress->value() >= 0 ? m_firstAddress->value() : 0;
+        rule.lastAddress = m_lastAddress->value() >= 0 ? m_lastAddress->value() : 65535;
+    }
+    switch (rule.kind) {
+    case FaultRule::Kind::WrongTransactionId:
+    case FaultRule::Kind::WrongUnit: rule.delta = m_delta->value(); break;
+    case FaultRule::Kind::FewerRegisters: rule.fewer = m_fewer->value(); break;
+    case FaultRule::Kind::Chunks:
+        rule.chunkBytes = m_chunkBytes->value();
+        rule.gapMs = m_gapMs->value();
+        break;
+    case FaultRule::Kind::Trickle: rule.gapMs = m_gapMs->value(); break;
+    case FaultRule::Kind::Junk:
+        rule.junkBeforeCount = m_junkBefore->value();
+        rule.junkAfterCount = m_junkAfter->value();
+        break;
+    case FaultRule::Kind::Duplicate:
+        rule.copies = m_copies->value();
+        rule.gapMs = m_gapMs->value();
+        break;
+    case FaultRule::Kind::Close: rule.closeWhen = FaultRule::CloseWhen(m_closeWhen->currentData().toInt()); break;
+    default: break;
+    }
     return rule;
 }
 
@@ -204,6 +295,16 @@ void SimFaultForm::addFormRule()
     if (rule.kind == FaultRule::Kind::Delay && rule.delay.kind == DelaySpec::Kind::Uniform && rule.delay.maxMs < rule.delay.minMs) {
         m_message->setText(tr("Not added: a uniform delay needs 'At most' (%1 ms) at or above 'At least' (%2 ms).")
                                .arg(ms(rule.delay.maxMs), ms(rule.delay.minMs)));
+        return;
+    }
+    if (rule.hasAddressRange() && rule.lastAddress < rule.firstAddress) {
+        m_message->setText(tr("Not added: the address range ends (%1) before it starts (%2).")
+                               .arg(rule.lastAddress)
+                               .arg(rule.firstAddress));
+        return;
+    }
+    if (rule.kind == FaultRule::Kind::Junk && rule.junkBeforeCount == 0 && rule.junkAfterCount == 0) {
+        m_message->setText(tr("Not added: junk needs random bytes before or after the answer."));
         return;
     }
     FaultRuleSet rules = m_rules;
@@ -303,7 +404,25 @@ QString SimFaultForm::describe(const FaultRule &rule)
     case FaultRule::Kind::Drop: what = tr("drop the answer"); break;
     case FaultRule::Kind::WrongChecksum: what = tr("wrong CRC or LRC"); break;
     case FaultRule::Kind::Exception: what = tr("exception %1").arg(hexByte(rule.exceptionCode)); break;
-    default: what = FaultRule::kindName(rule.kind); break;
+    case FaultRule::Kind::WrongTransactionId: what = tr("transaction id + %1").arg(rule.delta); break;
+    case FaultRule::Kind::WrongUnit: what = tr("unit id + %1").arg(rule.delta); break;
+    case FaultRule::Kind::FewerRegisters: what = tr("%1 fewer registers").arg(rule.fewer); break;
+    case FaultRule::Kind::Chunks: what = tr("chunks of %1 bytes, %2 ms apart").arg(rule.chunkBytes).arg(ms(rule.gapMs)); break;
+    case FaultRule::Kind::Trickle: what = tr("a byte every %1 ms").arg(ms(rule.gapMs)); break;
+    case FaultRule::Kind::Junk: {
+        const int before = rule.junkBefore.isEmpty() ? rule.junkBeforeCount : int(rule.junkBefore.size());
+        const int after = rule.junkAfter.isEmpty() ? rule.junkAfterCount : int(rule.junkAfter.size());
+        what = tr("junk: %1 bytes before, %2 after").arg(before).arg(after);
+        break;
+    }
+    case FaultRule::Kind::Duplicate: what = tr("%1 extra copies, %2 ms apart").arg(rule.copies).arg(ms(rule.gapMs)); break;
+    case FaultRule::Kind::Close:
+        switch (rule.closeWhen) {
+        case FaultRule::CloseWhen::Before: what = tr("close before the answer"); break;
+        case FaultRule::CloseWhen::Midway: what = tr("close midway through the answer"); break;
+        case FaultRule::CloseWhen::After: what = tr("close after the answer"); break;
+        }
+        break;
     }
     QStringList units;
     for (quint8 unit : rule.units)

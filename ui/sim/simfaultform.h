@@ -14,9 +14,11 @@ class QSpinBox;
 
 namespace mbscope {
 
-// The fault rules of one running simulator, switched while clients poll: a form for the common
-// rules (a delay drawn from a distribution, dropped answers, a wrong CRC or LRC, an exception
-// code), each for a unit and a function code or for all, with a probability; the rules in force
+// The fault rules of one running simulator, switched while clients poll: a form for every kind of
+// the profile language (docs/profiles.md: delay drawn from a distribution, drop, wrong CRC or LRC,
+// wrong transaction id or unit, exception, fewer registers, chunks, trickle, junk, duplicate,
+// close) with its parameters, each for a unit, a function code and an address range or for all,
+// with a probability; the rules in force
 // as a list (remove one, remove all); and a rules file (the format of `mbscope simulate
 // --faults`, docs/profiles.md) that replaces them. Every change emits rulesChanged with the whole
 // set: the simulator's next request sees it. A file that does not read is reported with where it
@@ -67,6 +69,16 @@ private:
     QDoubleSpinBox *m_minMs = nullptr;
     QDoubleSpinBox *m_maxMs = nullptr;
     QSpinBox *m_exceptionCode = nullptr;
+    QSpinBox *m_firstAddress = nullptr;
+    QSpinBox *m_lastAddress = nullptr;
+    QSpinBox *m_delta = nullptr;
+    QSpinBox *m_fewer = nullptr;
+    QSpinBox *m_chunkBytes = nullptr;
+    QDoubleSpinBox *m_gapMs = nullptr;
+    QSpinBox *m_junkBefore = nullptr;
+    QSpinBox *m_junkAfter = nullptr;
+    QSpinBox *m_copies = nullptr;
+    QComboBox *m_closeWhen = nullptr;
     QPushButton *m_add = nullptr;
     QListWidget *m_list = nullptr;
     QPushButton *m_remove = nullptr;

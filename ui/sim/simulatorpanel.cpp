@@ -107,9 +107,9 @@ void SimulatorPanel::buildUi()
     m_url->setObjectName(QStringLiteral("simUrl"));
     m_url->setToolTip(tr("Where the simulator listens, as a URL: port 0 lets the system choose a free port."));
     startRow->addWidget(m_url, 1);
-    m_start = new QPushButton(tr("&Start"), this);
+    m_start = new QPushButton(tr("Start"), this);
     m_start->setObjectName(QStringLiteral("simStart"));
-    m_stop = new QPushButton(tr("S&top"), this);
+    m_stop = new QPushButton(tr("Stop"), this);
     m_stop->setObjectName(QStringLiteral("simStop"));
     m_stop->setToolTip(tr("Stops the simulator selected in the list."));
     startRow->addWidget(m_start);
@@ -164,11 +164,11 @@ void SimulatorPanel::buildUi()
     m_editMessage->setObjectName(QStringLiteral("simEditMessage"));
     m_editMessage->setWordWrap(true);
     registersLayout->addWidget(m_editMessage);
-    m_tabs->addTab(registersPage, tr("&Registers"));
+    m_tabs->addTab(registersPage, tr("Registers"));
 
     m_faults = new SimFaultForm(m_tabs);
     m_faults->setObjectName(QStringLiteral("simFaults"));
-    m_tabs->addTab(m_faults, tr("&Faults"));
+    m_tabs->addTab(m_faults, tr("Faults"));
 
     auto *trafficPage = new QWidget(m_tabs);
     auto *trafficLayout = new QVBoxLayout(trafficPage);
@@ -195,7 +195,7 @@ void SimulatorPanel::buildUi()
     auto *clear = new QPushButton(tr("&Clear"), trafficPage);
     trafficRow->addWidget(clear);
     trafficLayout->addLayout(trafficRow);
-    m_tabs->addTab(trafficPage, tr("T&raffic"));
+    m_tabs->addTab(trafficPage, tr("Traffic"));
 
     splitter->addWidget(m_tabs);
     splitter->setStretchFactor(0, 0);

@@ -234,14 +234,16 @@ void TrafficModel::appendTransactions(const QList<Transaction> &transactions)
     if (!m_hasCurrentLink)
         setCurrentLink(QString());
     for (const Transaction &t : transactions) {
+        // A request never written (the link would not open) has no send time: it is listed when it failed.
+        const qint64 outNs = t.sentNs != 0 ? t.sentNs : t.doneNs;
         if (t.status != TransactionStatus::Late)
-            keep(t.sentNs, TrafficDirection::Out, m_currentLink, TrafficVerdict::Sent, t.id, t.request);
+            keep(outNs, TrafficDirection::Out, m_currentLink, TrafficVerdict::Sent, t.id, t.request);
         const TrafficVerdict verdict = trafficVerdict(t.status);
         if (!t.response.isEmpty())
             keep(t.firstByteNs > 0 ? t.firstByteNs : t.doneNs, TrafficDirection::In, m_currentLink, verdict, t.id,
                  t.response);
         else
-            keep(t.doneNs > 0 ? t.doneNs : t.sentNs, TrafficDirection::In, m_currentLink, verdict, t.id, {});
+            keep(t.doneNs > 0 ? t.doneNs : outNs, TrafficDirection::In, m_currentLink, verdict, t.id, {});
     }
     appended();
 }

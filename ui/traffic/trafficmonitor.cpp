@@ -124,6 +124,12 @@ void TrafficMonitor::buildUi()
     next->setText(QStringLiteral("\u25BC"));
     next->setToolTip(tr("Find next (F3)"));
 
+    // Narrow windows (1024 px) keep the whole filter row: the combos and the search give way.
+    for (QComboBox *combo : {m_functionCombo, m_directionCombo, m_verdictCombo}) {
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        combo->setMinimumContentsLength(8);
+    }
+    m_searchEdit->setMinimumWidth(120);
     auto *filters = new QHBoxLayout;
     const auto labelled = [this, filters](const QString &text, QWidget *w) {
         auto *label = new QLabel(text, this);
@@ -131,10 +137,10 @@ void TrafficMonitor::buildUi()
         filters->addWidget(label);
         filters->addWidget(w);
     };
-    labelled(tr("&Unit:"), m_unitSpin);
-    labelled(tr("F&unction:"), m_functionCombo);
-    labelled(tr("Di&rection:"), m_directionCombo);
-    labelled(tr("&Verdict:"), m_verdictCombo);
+    labelled(tr("Unit:"), m_unitSpin);
+    labelled(tr("Function:"), m_functionCombo);
+    labelled(tr("Direction:"), m_directionCombo);
+    labelled(tr("Verdict:"), m_verdictCombo);
     filters->addSpacing(8);
     filters->addWidget(m_pauseButton);
     filters->addWidget(m_clearButton);

@@ -68,6 +68,7 @@ private slots:
     void requestMatching_data();
     void requestMatching();
     void exceptionResponse();
+    void writeEchoThatMatchesSaysSo();
     void detection_data();
     void detection();
     void jsonShape();
@@ -155,6 +156,24 @@ static void checkExpectations(const Dissection &d, const QJsonObject &expect)
         QCOMPARE(d.fields.valueText(i), text.section(QLatin1Char(','), 0, 0));
         QCOMPARE(d.fields.at(i).severity, Severity::Ok);
     }
+}
+
+// Issue 14, item 15: the echo check of a write said only when it failed; a match is said too.
+void TestDissector::writeEchoThatMatchesSaysSo()
+{
+    DissectOptions options;
+    options.framing = Framing::Rtu;
+    options.direction = Direction::Response;
+    options.request = QByteArray::fromHex("0106007F07D0BBBE"); // 06: 0x007F = 2000
+    const Dissection same = Dissector::dissect(QByteArray::fromHex("0106007F07D0BBBE"), options);
+    QVERIFY2(same.isValid(), qPrintable(problems(same)));
+    int said = 0;
+    for (const Field &f : same.fields.fields())
+        said += f.message == QLatin1String("matches the request") ? 1 : 0;
+    QVERIFY2(said >= 2, "the address and the value are said to match");
+    options.request = QByteArray::fromHex("0106007F03E8B8AC");
+    const Dissection other = Dissector::dissect(QByteArray::fromHex("0106007F07D0BBBE"), options);
+    QVERIFY(problems(other).contains(QLatin1String("does not match the request")));
 }
 
 void TestDissector::published()

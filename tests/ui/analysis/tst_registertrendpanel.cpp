@@ -27,6 +27,7 @@ private Q_SLOTS:
     void profileSeriesAreNamed();
     void trendOfAProfileRegister();
     void addedByAddressAndRefused();
+    void tickedLaterShowsTheHistory();
 };
 
 namespace {
@@ -198,6 +199,64 @@ void TestRegisterTrendPanel::addedByAddressAndRefused()
     QCOMPARE(panel.graphOf(index)->dataCount(), 1);
     QCOMPARE(panel.graphOf(index)->data()->constBegin()->value, 7.0);
     QCOMPARE(panel.graphOf(other)->dataCount(), 0);
+}
+
+
+namespace {
+
+// A read of quantity registers at address from unit 1 over RTU, answered with values, done at seconds.
+Transaction readAt(double seconds, int address, const QList<quint16> &values)
+{
+    QByteArray pdu = QByteArray::fromHex("03");
+    pdu.append(char(address >> 8)).append(char(address & 0xFF)).append(char(0)).append(char(values.size()));
+    QByteArray answer = QByteArray::fromHex("03");
+    answer.append(char(values.size() * 2));
+    for (const quint16 v : values)
+        answer.append(char(v >> 8)).append(char(v & 0xFF));
+    Transaction t;
+    t.status = TransactionStatus::Ok;
+    t.request = AduBuilder::rtu(pdu, 1);
+    t.response = AduBuilder::rtu(answer, 1);
+    t.sentNs = qint64((1000 + seconds) * 1e9);
+    t.firstByteNs = t.sentNs + 1000000;
+    t.doneNs = t.sentNs + 2000000;
+    return t;
+}
+
+} // namespace
+
+// Issue 14, item 10: a register ticked during a poll shows what was already read; the time axis
+// starts at its first point, not at the session's first answer; the legend lets the data through.
+void TestRegisterTrendPanel::tickedLaterShowsTheHistory()
+{
+    RegisterTrendPanel panel;
+    panel.setFraming(Framing::Rtu);
+    QList<Transaction> early;
+    for (int i = 0; i < 10; ++i)
+        early.append(readAt(i, 200, {quint16(i)}));
+    panel.addTransactions(early);
+    QList<Transaction> late;
+    for (int i = 20; i < 25; ++i)
+        late.append(readAt(i, 300, {quint16(i)}));
+    panel.addTransactions(late);
+
+    TrendSeries first;
+    first.table = ModbusTable::HoldingRegisters;
+    first.address = 200;
+    first.format = RegisterFormat::parse(QStringLiteral("u16")).format;
+    const int index = panel.addSeries(first);
+    QCOMPARE(panel.graphOf(index)->dataCount(), 10);
+
+    TrendSeries second = first;
+    second.address = 300;
+    panel.setSeriesShown(index, false);
+    const int other = panel.addSeries(second);
+    QCOMPARE(panel.graphOf(other)->dataCount(), 5);
+    panel.redrawNow();
+    QVERIFY2(panel.plot()->xAxis->range().lower > 15, qPrintable(QString::number(panel.plot()->xAxis->range().lower)));
+    QVERIFY(panel.plot()->xAxis->range().upper >= 24);
+    QVERIFY(panel.plot()->legend->brush().color().alpha() < 255);
+    QVERIFY(panel.plot()->axisRect()->insetLayout()->insetAlignment(0) & Qt::AlignLeft);
 }
 
 QTEST_MAIN(TestRegisterTrendPanel)

@@ -12,6 +12,7 @@
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QLineEdit>
+#include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
 #include <QtWidgets/QTableWidget>
 #include <QtTest/QSignalSpy>
@@ -91,6 +92,10 @@ private Q_SLOTS:
     void badRegisterValueIsNamed();
     void rawTabIsNotRewrittenByLinkChanges();
     void valueTableModel();
+    void quantityComesBackAfterSingleWrites();
+    void functionListShowsHexAndDecimal();
+    void quantityComesBackThroughTheComposer();
+    void linkChangeOffersConversion();
     void screenshot();
 };
 
@@ -348,6 +353,93 @@ void TestRequestForm::screenshot()
     composer.form()->setFunctionCode(0x03);
     composer.form()->addressField()->setNotation(AddressField::Notation::Modicon);
     QVERIFY(guitest::saveShot(&composer, QStringLiteral("composer-form-03-modicon.png")));
+}
+
+// Issue 14, item 2: after 05 or 06 the Quantity field came back neither for 10 nor for 03.
+void TestRequestForm::quantityComesBackAfterSingleWrites()
+{
+    RequestForm form;
+    form.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&form));
+    auto *combo = form.findChild<QComboBox *>(QStringLiteral("functionCombo"));
+    QVERIFY(combo);
+    for (const int code : {0x05, 0x10, 0x06, 0x03, 0x05, 0x17, 0x06, 0x0F}) {
+        combo->setCurrentIndex(combo->findData(code));
+        const bool wanted = code != 0x05 && code != 0x06;
+        QCOMPARE(form.quantitySpin()->isVisible(), wanted);
+        QCOMPARE(form.isFieldVisible(form.quantitySpin()), wanted);
+    }
+}
+
+// The same through the composer: 05 on the Form tab, a read loaded in Raw, back to the Form.
+void TestRequestForm::quantityComesBackThroughTheComposer()
+{
+    RequestComposer composer;
+    composer.setFraming(Framing::Rtu);
+    composer.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&composer));
+    composer.showFormTab();
+    auto *combo = composer.form()->findChild<QComboBox *>(QStringLiteral("functionCombo"));
+    combo->setCurrentIndex(combo->findData(0x05));
+    QVERIFY(!composer.form()->quantitySpin()->isVisible());
+    combo->setCurrentIndex(combo->findData(0x06));
+    composer.showRawTab();
+    composer.rawEditor()->setText(QStringLiteral("01 03 00 79 00 16 15 DD"));
+    composer.showFormTab();
+    QCOMPARE(composer.form()->functionCode(), 0x03);
+    QVERIFY(composer.form()->quantitySpin()->isVisible());
+    combo->setCurrentIndex(combo->findData(0x10));
+    QVERIFY(composer.form()->quantitySpin()->isVisible());
+}
+
+// Issue 14, item 15: "0x10 (16) Write Multiple Registers", never a bare "10" beside "16".
+void TestRequestForm::functionListShowsHexAndDecimal()
+{
+    RequestForm form;
+    auto *combo = form.findChild<QComboBox *>(QStringLiteral("functionCombo"));
+    QVERIFY(combo);
+    QVERIFY2(combo->itemText(combo->findData(0x10)).startsWith(QLatin1String("0x10 (16)")),
+             qPrintable(combo->itemText(combo->findData(0x10))));
+    QVERIFY(combo->itemText(combo->findData(0x16)).startsWith(QLatin1String("0x16 (22)")));
+    QVERIFY(combo->itemText(combo->findData(0x03)).startsWith(QLatin1String("0x03 (3)")));
+}
+
+// Issue 14, item 8: an RTU frame typed in Raw is not sent as is to a Modbus TCP link (where it
+// read as "MBAP ... unit 21, function DD"): the conversion is offered, shown, and Send waits.
+void TestRequestForm::linkChangeOffersConversion()
+{
+    RequestComposer composer;
+    composer.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&composer));
+    composer.setFraming(Framing::Rtu);
+    composer.setRequestText(QStringLiteral("01 03 00 79 00 16 15 DD"));
+    composer.setLinkReady(true);
+    QSignalSpy sent(&composer, &RequestComposer::sendRequested);
+    composer.setFraming(Framing::Tcp);
+    QCOMPARE(composer.pendingConversion(), hex("00 01 00 00 00 06 01 03 00 79 00 16"));
+    QVERIFY(composer.conversionBar()->isVisible());
+    composer.send();
+    QCOMPARE(sent.count(), 0);
+    QVERIFY(!composer.sendAction()->isEnabled());
+    auto *convert = composer.findChild<QPushButton *>(QStringLiteral("convertButton"));
+    QVERIFY(convert);
+    convert->click();
+    QCOMPARE(composer.bytes(), hex("00 01 00 00 00 06 01 03 00 79 00 16"));
+    QVERIFY(!composer.conversionBar()->isVisible());
+    composer.send();
+    QCOMPARE(sent.count(), 1);
+    // And back: the MBAP header goes, the CRC comes.
+    composer.setFraming(Framing::Rtu);
+    QCOMPARE(composer.pendingConversion(), hex("01 03 00 79 00 16 15 DD"));
+    composer.acceptConversion();
+    QCOMPARE(composer.bytes(), hex("01 03 00 79 00 16 15 DD"));
+    // Keep as typed sends the old bytes, on purpose.
+    composer.setFraming(Framing::Tcp);
+    composer.keepAsTyped();
+    QCOMPARE(composer.pendingConversion(), QByteArray());
+    composer.send();
+    QCOMPARE(sent.count(), 2);
+    QCOMPARE(sent.last().first().toByteArray(), hex("01 03 00 79 00 16 15 DD"));
 }
 
 QTEST_MAIN(TestRequestForm)

@@ -3,6 +3,7 @@
 #include "sim/embeddedsimulator.h"
 #include "guitestsupport.h"
 #include "link/linkcontroller.h"
+#include "traffic/trafficmodel.h"
 
 #include "exchange/statistics.h"
 
@@ -22,6 +23,9 @@ private Q_SLOTS:
     void pollSummary();
     void unknownProfileIsNamed();
     void takenPortIsSaid();
+    void connectOpensTheLink();
+    void closedPortFailsAtConnect();
+    void unsentRequestHasATime();
 };
 
 namespace {
@@ -116,6 +120,80 @@ void TestLinkController::takenPortIsSaid()
     QVERIFY(started.note.contains(QString::number(started.url.port)));
     sim.stop();
     QVERIFY(!sim.isRunning());
+}
+
+namespace {
+
+// A loopback port nothing listens on: taken from the OS, then let go.
+quint16 closedPort()
+{
+    QTcpServer server;
+    if (!server.listen(QHostAddress::LocalHost, 0))
+        return 0;
+    const quint16 port = server.serverPort();
+    server.close();
+    return port;
+}
+
+LinkUrl tcpUrl(quint16 port)
+{
+    LinkUrl url;
+    url.kind = LinkKind::Tcp;
+    url.host = QStringLiteral("127.0.0.1");
+    url.port = port;
+    return url;
+}
+
+} // namespace
+
+// Connect opens the link: Connected before any request went out.
+void TestLinkController::connectOpensTheLink()
+{
+    EmbeddedSimulator sim;
+    const LinkUrl url = simulatorUrl(sim);
+    LinkController controller;
+    controller.connectTo(url);
+    QTRY_COMPARE_WITH_TIMEOUT(controller.state(), LinkController::State::Connected, 5000);
+    QCOMPARE(controller.counters().requestsSent, quint64(0));
+}
+
+// A closed port is reported at Connect, in the link's words, not "ready" until the first Send.
+void TestLinkController::closedPortFailsAtConnect()
+{
+    const quint16 port = closedPort();
+    QVERIFY(port != 0);
+    LinkController controller;
+    controller.connectTo(tcpUrl(port));
+    QTRY_COMPARE_WITH_TIMEOUT(controller.state(), LinkController::State::Failed, 5000);
+    QVERIFY2(!controller.message().isEmpty(), "the failure says why");
+}
+
+// A request the link never took (it would not open) still has a time: when it failed. The traffic
+// list places it there, not thousands of seconds before the first row.
+void TestLinkController::unsentRequestHasATime()
+{
+    const quint16 port = closedPort();
+    LinkController controller;
+    TrafficModel model;
+    connect(&controller, &LinkController::transactionsFinished, &model, &TrafficModel::appendTransactions);
+    EmbeddedSimulator sim;
+    controller.connectTo(simulatorUrl(sim));
+    QSignalSpy latest(&controller, &LinkController::latestTransaction);
+    QVERIFY(controller.send(QByteArray::fromHex("01030079001615DD")) > 0);
+    QVERIFY(latest.wait(5000));
+    controller.connectTo(tcpUrl(port));
+    QTRY_COMPARE_WITH_TIMEOUT(controller.state(), LinkController::State::Failed, 5000);
+    latest.clear();
+    QVERIFY(controller.send(QByteArray::fromHex("000100000006010300790016")) > 0);
+    QVERIFY(latest.wait(5000));
+    const Transaction t = latest.first().first().value<Transaction>();
+    QCOMPARE(transactionStatusName(t.status), transactionStatusName(TransactionStatus::LinkError));
+    QVERIFY(t.doneNs > 0);
+    QTRY_VERIFY(model.rowCount() >= 4);
+    for (int row = 0; row < model.rowCount(); ++row) {
+        const QString time = model.index(row, TrafficModel::TimeColumn).data().toString();
+        QVERIFY2(!time.startsWith(QLatin1Char('-')) && !time.startsWith(QChar(0x2212)), qPrintable(time));
+    }
 }
 
 QTEST_MAIN(TestLinkController)

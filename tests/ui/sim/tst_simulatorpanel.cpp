@@ -158,6 +158,7 @@ private Q_SLOTS:
     void faultSwitchedWhileClientPolls_data();
     void faultSwitchedWhileClientPolls();
     void faultsFileReplacesRules();
+    void everyFaultKindWithItsParameters();
     void editedValueIsReadByClient();
     void clientWriteShowsInPanel();
     void generatorValuesArriveInBatches();
@@ -216,6 +217,67 @@ void TestSimulatorPanel::faultSwitchedWhileClientPolls()
         QCOMPARE(int(client.classify(answer)), int(Seen::Answer));
         QCOMPARE(client.parse(answer).pdu.toHex(), QByteArray("0304041a0000")); // 0x0079 = 1050, 0x007A = 0
     }
+}
+
+// Issue 14, item 13: the form offered 4 of the profile language's 12 fault kinds.
+void TestSimulatorPanel::everyFaultKindWithItsParameters()
+{
+    SimulatorPanel panel;
+    SimulatorHost *host = panel.startSimulator(QStringLiteral("rosrao-gamma"), u"tcp://127.0.0.1:0"_qs);
+    QVERIFY2(host, qPrintable(panel.message()));
+    SimFaultForm *form = panel.faultForm();
+    auto *kindBox = form->findChild<QComboBox *>(QStringLiteral("faultKind"));
+    QStringList names;
+    for (int i = 0; i < kindBox->count(); ++i)
+        names << FaultRule::kindName(FaultRule::Kind(kindBox->itemData(i).toInt()));
+    names.sort();
+    QStringList all = FaultRule::kindNames().split(QStringLiteral(", "));
+    all.sort();
+    QCOMPARE(names, all);
+
+    auto spin = [form](const char *name) { return form->findChild<QSpinBox *>(QLatin1String(name)); };
+    auto choose = [kindBox](FaultRule::Kind kind) { kindBox->setCurrentIndex(kindBox->findData(int(kind))); };
+    auto add = [form] { QTest::mouseClick(form->findChild<QPushButton *>(QStringLiteral("faultAdd")), Qt::LeftButton); };
+    choose(FaultRule::Kind::WrongUnit);
+    QVERIFY(form->findChild<QSpinBox *>(QStringLiteral("faultDelta"))->isVisibleTo(form));
+    spin("faultDelta")->setValue(2);
+    add();
+    choose(FaultRule::Kind::Duplicate);
+    spin("faultCopies")->setValue(3);
+    form->findChild<QDoubleSpinBox *>(QStringLiteral("faultGapMs"))->setValue(7);
+    add();
+    choose(FaultRule::Kind::Junk);
+    spin("faultJunkBefore")->setValue(0);
+    spin("faultJunkAfter")->setValue(5);
+    add();
+    choose(FaultRule::Kind::Close);
+    auto *when = form->findChild<QComboBox *>(QStringLiteral("faultCloseWhen"));
+    when->setCurrentIndex(when->findData(int(FaultRule::CloseWhen::Midway)));
+    spin("faultFirstAddress")->setValue(0x200);
+    spin("faultLastAddress")->setValue(0x210);
+    add();
+    const QList<FaultRule> rules = host->faultRules().rules;
+    QCOMPARE(rules.size(), 4);
+    QCOMPARE(rules.at(0).delta, 2);
+    QCOMPARE(rules.at(1).copies, 3);
+    QCOMPARE(rules.at(1).gapMs, 7.0);
+    QCOMPARE(rules.at(2).junkAfterCount, 5);
+    QCOMPARE(int(rules.at(3).closeWhen), int(FaultRule::CloseWhen::Midway));
+    QCOMPARE(rules.at(3).firstAddress, 0x200);
+    QCOMPARE(rules.at(3).lastAddress, 0x210);
+    QVERIFY2(SimFaultForm::describe(rules.at(1)).contains(QLatin1String("3 extra copies")), qPrintable(SimFaultForm::describe(rules.at(1))));
+
+    // One seen by a client: fewer registers, for the two asked only one comes back.
+    QTest::mouseClick(form->findChild<QPushButton *>(QStringLiteral("faultClear")), Qt::LeftButton);
+    spin("faultFirstAddress")->setValue(-1);
+    spin("faultLastAddress")->setValue(-1);
+    choose(FaultRule::Kind::FewerRegisters);
+    spin("faultFewer")->setValue(1);
+    add();
+    Client client(host->boundUrls().first());
+    QVERIFY(client.isConnected());
+    const QByteArray answer = client.exchange(readSettings(), 1, 3000);
+    QCOMPARE(client.parse(answer).pdu.toHex(), QByteArray("0302041a"));
 }
 
 void TestSimulatorPanel::faultsFileReplacesRules()
