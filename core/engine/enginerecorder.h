@@ -20,7 +20,7 @@ class TrafficLog;
 // poller) at once by a direct call, recorded() for whoever waits on one transaction, the traffic
 // log (journaled to disk within its batch time even on a quiet link) and, in batches of at most
 // one every batchIntervalMs, the observers in other threads: transactionsFinished(), then
-// unmatchedFrames(), then progress().
+// framesLogged() (when frames are published), then progress().
 class EngineRecorder : public QObject
 {
     Q_OBJECT

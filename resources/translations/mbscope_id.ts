@@ -468,8 +468,8 @@
     </message>
     <message>
         <location line="+2"/>
-        <source>Listen &amp;only</source>
-        <translation>Hanya &amp;dengar</translation>
+        <source>L&amp;isten</source>
+        <translation>Si&amp;mak</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -478,12 +478,12 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+226"/>
+        <location line="+224"/>
         <source>&amp;Connect</source>
         <translation>Sa&amp;mbungkan</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-221"/>
         <source>Disconnect</source>
         <translation>Putuskan</translation>
     </message>
@@ -503,7 +503,7 @@
         <translation>&amp;Link:</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
@@ -513,7 +513,7 @@
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+77"/>
         <source>No serial port found: plug in the adapter and press Refresh, or type the device path</source>
         <translation>Tidak ada port serial: colokkan adaptor lalu tekan Segarkan, atau ketik path perangkatnya</translation>
     </message>
@@ -690,7 +690,7 @@
         <translation>&amp;Permintaan yang cocok:</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+113"/>
         <source>Frame</source>
         <translation>Frame</translation>
     </message>
@@ -2207,7 +2207,7 @@
         <translation>Kode exception</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/dissector.cpp" line="+39"/>
+        <location filename="../../core/protocol/dissector.cpp" line="+41"/>
         <source>Frame too long</source>
         <translation>Frame terlalu panjang</translation>
     </message>
@@ -2358,7 +2358,7 @@
 <context>
     <name>mbscope::LatencyHistogramPanel</name>
     <message>
-        <location filename="../../ui/analysis/latencyhistogrampanel.cpp" line="+48"/>
+        <location filename="../../ui/analysis/latencyhistogrampanel.cpp" line="+51"/>
         <source>Which run to show: the current poll, the kept reference or an opened capture</source>
         <translation>Run mana yang ditampilkan: polling saat ini, referensi yang disimpan, atau capture yang dibuka</translation>
     </message>
@@ -2688,7 +2688,7 @@
 <context>
     <name>mbscope::LinkController</name>
     <message>
-        <location filename="../../ui/link/linkcontroller.cpp" line="+110"/>
+        <location filename="../../ui/link/linkcontroller.cpp" line="+113"/>
         <source>nothing is being recorded</source>
         <translation>tidak ada yang sedang direkam</translation>
     </message>
@@ -2699,12 +2699,7 @@
         <translation>tidak dapat menyalin %1 ke %2: %3</translation>
     </message>
     <message>
-        <location line="+39"/>
-        <source>%1: the link opens with the first request</source>
-        <translation>%1: link dibuka dengan permintaan pertama</translation>
-    </message>
-    <message>
-        <location line="+22"/>
+        <location line="+65"/>
         <source>%1: listening only (nothing is sent)</source>
         <translation>%1: hanya mendengar (tidak ada yang dikirim)</translation>
     </message>
@@ -2714,12 +2709,13 @@
         <translation>%1: membuka untuk mendengar</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="-29"/>
         <source>%1: connecting…</source>
         <translation>%1: menyambungkan…</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+48"/>
+        <location line="+10"/>
         <source>Not connected</source>
         <translation>Tidak tersambung</translation>
     </message>
@@ -2795,7 +2791,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+81"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+82"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -2835,7 +2831,7 @@
         <translation>Simulator</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+105"/>
         <source>%1 dock (F6: the next one)</source>
         <translation>Dok %1 (F6: dok berikutnya)</translation>
     </message>
@@ -3397,7 +3393,7 @@
         <translation>Lengkapi</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+35"/>
         <source>Named requests: choose one to put its bytes in the editor</source>
         <translation>Permintaan bernama: pilih salah satu untuk menaruh byte-nya di editor</translation>
     </message>
@@ -4466,12 +4462,12 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <location line="+12"/>
-        <location line="+186"/>
+        <location line="+283"/>
         <source>Send the request once (Ctrl+Return)</source>
         <translation>Kirim permintaan sekali (Ctrl+Return)</translation>
     </message>
     <message>
-        <location line="-195"/>
+        <location line="-292"/>
         <location line="+35"/>
         <location line="+236"/>
         <location line="+1"/>
@@ -4521,12 +4517,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+159"/>
+        <location line="+256"/>
         <source>Send the request repeatedly (Ctrl+Shift+Return starts and stops)</source>
         <translation>Kirim permintaan berulang-ulang (Ctrl+Shift+Return memulai dan menghentikan)</translation>
     </message>
     <message>
-        <location line="-152"/>
+        <location line="-249"/>
         <source>Poll</source>
         <translation>Polling</translation>
     </message>
@@ -4578,8 +4574,8 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+18"/>
-        <source>The link is listen-only: it monitors the bus and never sends. Disconnect and untick Listen only to send.</source>
-        <translation>Tautan ini hanya mendengar: ia memantau bus dan tidak pernah mengirim. Putuskan sambungan dan hapus centang Hanya dengar untuk mengirim.</translation>
+        <source>The link is listen-only: it monitors the bus and never sends. Disconnect and untick Listen to send.</source>
+        <translation>Tautan ini hanya mendengar: ia memantau bus dan tidak pernah mengirim. Putuskan sambungan dan hapus centang Simak untuk mengirim.</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -6132,7 +6128,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficModel</name>
     <message>
-        <location filename="../../ui/traffic/trafficmodel.cpp" line="+401"/>
+        <location filename="../../ui/traffic/trafficmodel.cpp" line="+403"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
@@ -6258,12 +6254,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+201"/>
+        <location line="+207"/>
         <source>Pause</source>
         <translation>Jeda</translation>
     </message>
     <message>
-        <location line="-199"/>
+        <location line="-205"/>
         <source>Hold new frames back from the list; nothing is dropped, they appear on resume</source>
         <translation>Tahan frame baru dari daftar; tidak ada yang dibuang, frame muncul saat dilanjutkan</translation>
     </message>

@@ -338,7 +338,7 @@ void RequestComposer::updateActions()
     m_pollAction->setEnabled(canSend && (haveBytes || m_polling));
     m_pollButton->setEnabled(m_pollAction->isEnabled());
     const QString listening = tr("The link is listen-only: it monitors the bus and never sends. Disconnect and untick "
-                                 "Listen only to send.");
+                                 "Listen to send.");
     m_sendButton->setToolTip(m_listenOnly ? listening : tr("Send the request once (Ctrl+Return)"));
     m_pollButton->setToolTip(m_listenOnly ? listening : tr("Send the request repeatedly (Ctrl+Shift+Return starts and stops)"));
     if (m_listenOnly && m_linkReady)

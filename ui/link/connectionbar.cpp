@@ -163,7 +163,7 @@ void ConnectionBar::buildUi()
     m_timeoutSpin->setSuffix(tr(" ms"));
     m_timeoutSpin->setToolTip(tr("How long to wait for an answer before the request counts as timed out"));
 
-    m_listenOnlyCheck = new QCheckBox(tr("Listen &only"), this);
+    m_listenOnlyCheck = new QCheckBox(tr("L&isten"), this);
     m_listenOnlyCheck->setObjectName(QStringLiteral("listenOnlyCheck"));
     m_listenOnlyCheck->setToolTip(tr("Monitor a bus another master drives: every exchange on the line is shown, paired "
                                      "and measured, and nothing is ever sent (serial links, RTU or ASCII over TCP)"));
@@ -192,13 +192,11 @@ void ConnectionBar::buildUi()
     row->addWidget(m_kindCombo);
     row->addWidget(m_networkPage);
     row->addWidget(m_serialPage);
-    row->addSpacing(8);
     row->addWidget(buddyLabel(tr("&Unit:"), m_unitSpin, this));
     row->addWidget(m_unitSpin);
     row->addWidget(buddyLabel(tr("Ti&meout:"), m_timeoutSpin, this));
     row->addWidget(m_timeoutSpin);
     row->addWidget(m_listenOnlyCheck);
-    row->addSpacing(8);
     row->addWidget(m_connectButton);
     row->addWidget(m_recentButton);
     row->addStretch(1);

@@ -202,7 +202,7 @@ void LinkController::listenTo(const LinkUrl &url)
     connect(m_listener.get(), &BusListener::failed, this, &LinkController::onLinkMessage);
     connect(m_listener.get(), &BusListener::transactionsObserved, this, &LinkController::onObserved);
     connect(m_listener.get(), &BusListener::unmatchedObserved, this,
-            [this](const QList<TrafficFrame> &frames) { Q_EMIT unmatchedFrames(frames, m_url.toString()); });
+            [this](const QList<TrafficFrame> &frames) { Q_EMIT framesLogged(frames, m_url.toString()); });
     setState(State::Ready, tr("%1: opening to listen").arg(url.toString()));
     m_listener->start();
 }

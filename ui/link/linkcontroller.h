@@ -46,7 +46,7 @@ public:
     void connectTo(const LinkUrl &url);
     // Listen only (the bus monitor): no engine, nothing is ever sent; every exchange another
     // master makes on the line comes out as transactionsFinished, unmatched answers as
-    // unmatchedFrames. send() and startPoll() refuse while listening.
+    // framesLogged. send() and startPoll() refuse while listening.
     void listenTo(const LinkUrl &url);
     [[nodiscard]] bool isListening() const { return m_listener != nullptr; }
     void disconnectLink();

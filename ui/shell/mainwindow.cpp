@@ -288,6 +288,13 @@ void MainWindow::connectDocks()
 {
     // Every transaction goes to the traffic list; a row picked there is shown in the Answer tab.
     connect(m_controller, &LinkController::framesLogged, m_traffic, &TrafficMonitor::appendLinkFrames);
+    // A listen-only link has no engine to log frames: its exchanges are listed as it pairs them.
+    connect(m_controller, &LinkController::transactionsFinished, this, [this](const QList<Transaction> &transactions) {
+        if (!m_controller->isListening())
+            return;
+        m_traffic->model()->setCurrentLink(m_controller->url().toString());
+        m_traffic->appendTransactions(transactions);
+    });
     connect(m_traffic, &TrafficMonitor::frameSelected, this, [this](const FrameExchange &exchange) {
         m_tabs->setCurrentWidget(m_answerView);
         m_answerView->showExchange(exchange);

@@ -127,9 +127,9 @@ void TrafficMonitor::buildUi()
     // Narrow windows (1024 px) keep the whole filter row: the combos and the search give way.
     for (QComboBox *combo : {m_functionCombo, m_directionCombo, m_verdictCombo}) {
         combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-        combo->setMinimumContentsLength(8);
+        combo->setMinimumContentsLength(6);
     }
-    m_searchEdit->setMinimumWidth(120);
+    m_searchEdit->setMinimumWidth(70);
     auto *filters = new QHBoxLayout;
     const auto labelled = [this, filters](const QString &text, QWidget *w) {
         auto *label = new QLabel(text, this);
@@ -141,11 +141,11 @@ void TrafficMonitor::buildUi()
     labelled(tr("Function:"), m_functionCombo);
     labelled(tr("Direction:"), m_directionCombo);
     labelled(tr("Verdict:"), m_verdictCombo);
-    filters->addSpacing(8);
+    filters->addSpacing(4);
     filters->addWidget(m_pauseButton);
     filters->addWidget(m_clearButton);
     filters->addWidget(saveButton);
-    filters->addSpacing(8);
+    filters->addSpacing(4);
     filters->addWidget(m_searchEdit, 1);
     filters->addWidget(previous);
     filters->addWidget(next);
