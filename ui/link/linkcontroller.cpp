@@ -146,6 +146,8 @@ void LinkController::resetEngine()
     m_countersBefore = m_counters;
     dropEngine();
     m_engine = std::make_unique<TransactionEngine>();
+    if (m_linkFactory)
+        m_engine->setLinkFactory(m_linkFactory);
     connect(m_engine.get(), &TransactionEngine::transactionsFinished, this, &LinkController::onTransactions);
     connect(m_engine.get(), &TransactionEngine::framesLogged, this, &LinkController::framesLogged);
     m_engine->setFramesPublished(true);

@@ -2,6 +2,7 @@
 
 #include "engine/engineprogress.h"
 #include "engine/pollreport.h"
+#include "engine/transactionengine.h"
 #include "exchange/trafficentry.h"
 #include "exchange/transaction.h"
 #include "traffic/capturedirectory.h"
@@ -17,7 +18,6 @@
 namespace mbscope {
 
 class BusListener;
-class TransactionEngine;
 
 // Between the window's widgets and the TransactionEngine: owns the engine (and with it the engine
 // thread), turns "send these bytes" and "poll these bytes" into RequestItems for the connected
@@ -48,6 +48,9 @@ public:
     // master makes on the line comes out as transactionsFinished, unmatched answers as
     // framesLogged. send() and startPoll() refuse while listening.
     void listenTo(const LinkUrl &url);
+    // How every engine from now on makes its links (default: Link::create); Connect opens the
+    // link at once, so a stand-in link (a test's) must be named before it.
+    void setLinkFactory(TransactionEngine::LinkFactory factory) { m_linkFactory = std::move(factory); }
     [[nodiscard]] bool isListening() const { return m_listener != nullptr; }
     void disconnectLink();
     [[nodiscard]] State state() const { return m_state; }
@@ -119,6 +122,7 @@ private:
 
     std::unique_ptr<TransactionEngine> m_engine;
     std::unique_ptr<BusListener> m_listener;
+    TransactionEngine::LinkFactory m_linkFactory;
     LinkUrl m_url;
     State m_state = State::Disconnected;
     QString m_message;
