@@ -7,56 +7,16 @@
 
 #include "capture/captureanalysis.h"
 #include "capture/capturefilewriter.h"
-#include "capture/exchangepcapexporter.h"
-#include "capture/exchangerow.h"
+#include "capture/exchangewriter.h"
 #include "capture/exchangesource.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QFile>
 #include <QtCore/QFileInfo>
-#include <QtCore/QJsonDocument>
 #include <QtCore/QTextStream>
 
-#include <memory>
-#include <optional>
-#include <vector>
 
 namespace mbscope::app {
-
-namespace {
-
-// A text output: a file, or standard output for "-".
-struct TextOutput {
-    QFile file;
-    std::unique_ptr<QTextStream> stream;
-    QString name;
-    quint64 rows = 0;
-
-    bool open(const QString &path, QString *error)
-    {
-        name = path;
-        const bool ok = path == QLatin1String("-") ? file.open(stdout, QIODevice::WriteOnly)
-                                                   : (file.setFileName(path), file.open(QIODevice::WriteOnly | QIODevice::Truncate));
-        if (!ok) {
-            *error = QStringLiteral("cannot create %1: %2").arg(path, file.errorString());
-            return false;
-        }
-        stream = std::make_unique<QTextStream>(&file);
-        stream->setEncoding(QStringConverter::Utf8);
-        return true;
-    }
-    bool close(QString *error)
-    {
-        stream->flush();
-        const bool ok = stream->status() == QTextStream::Ok && file.error() == QFileDevice::NoError;
-        if (!ok)
-            *error = QStringLiteral("cannot write %1: %2").arg(name, file.errorString());
-        file.close();
-        return ok;
-    }
-};
-
-} // namespace
 
 int runExport(const QStringList &arguments)
 {
@@ -145,55 +105,45 @@ int runExport(const QStringList &arguments)
         }
     }
 
-    TextOutput csv;
-    TextOutput jsonl;
-    CaptureFileWriter pcapWriter;
-    std::optional<ExchangePcapExporter> pcap;
-    if (parser.isSet(csvOpt)) {
-        if (!csv.open(parser.value(csvOpt), &error)) {
+    // One writer per output asked for, each as the window's Save Traffic As writes it.
+    struct Output {
+        const QCommandLineOption *option;
+        ExchangeWriter::Format format;
+        ExchangeWriter writer;
+        bool open = false;
+    };
+    const QString pcapFile = parser.value(pcapOpt);
+    Output written[] = {
+        {&csvOpt, ExchangeWriter::Format::Csv, {}, false},
+        {&jsonlOpt, ExchangeWriter::Format::JsonLines, {}, false},
+        {&pcapOpt,
+         CaptureFileWriter::formatFor(pcapFile) == CaptureFileWriter::Format::Pcap ? ExchangeWriter::Format::Pcap
+                                                                                    : ExchangeWriter::Format::Pcapng,
+         {}, false},
+    };
+    for (Output &o : written) {
+        if (!parser.isSet(*o.option))
+            continue;
+        if (!o.writer.open(parser.value(*o.option), o.format, &error)) {
             err << "mbscope export: " << error << '\n';
             return ExitUsage;
         }
-        *csv.stream << ExchangeRow::columns().join(QLatin1Char(',')) << '\n';
-    }
-    if (parser.isSet(jsonlOpt) && !jsonl.open(parser.value(jsonlOpt), &error)) {
-        err << "mbscope export: " << error << '\n';
-        return ExitUsage;
-    }
-    if (parser.isSet(pcapOpt)) {
-        const QString file = parser.value(pcapOpt);
-        if (!pcapWriter.open(file, CaptureFileWriter::formatFor(file), &error)) {
-            err << "mbscope export: " << error << '\n';
-            return ExitUsage;
-        }
-        pcap.emplace(pcapWriter);
+        o.open = true;
     }
 
-    std::vector<CaptureConversation> conversations;
     CaptureAnalysis analysis;
     ExchangePlots plots(parser.isSet(timeSeriesOpt));
     const auto onConversation = [&](const CaptureConversation &c) {
-        if (conversations.size() <= c.id)
-            conversations.resize(c.id + 1);
-        conversations[c.id] = c;
-        if (pcap)
-            pcap->addConversation(c);
+        for (Output &o : written) {
+            if (o.open)
+                o.writer.addConversation(c);
+        }
     };
     const auto onExchange = [&](const CaptureExchange &e) {
-        const CaptureConversation *c = e.conversation < conversations.size() ? &conversations[e.conversation] : nullptr;
-        if (csv.stream) {
-            QStringList cells = ExchangeRow::cells(e, c);
-            for (QString &cell : cells)
-                cell = ExchangeRow::csvCell(cell);
-            *csv.stream << cells.join(QLatin1Char(',')) << '\n';
-            ++csv.rows;
+        for (Output &o : written) {
+            if (o.open)
+                o.writer.add(e);
         }
-        if (jsonl.stream) {
-            *jsonl.stream << QJsonDocument(ExchangeRow::json(e, c)).toJson(QJsonDocument::Compact) << '\n';
-            ++jsonl.rows;
-        }
-        if (pcap)
-            pcap->add(e);
         analysis.add(e);
         plots.add(e);
     };
@@ -223,34 +173,27 @@ int runExport(const QStringList &arguments)
     if (!report.error.isEmpty())
         err << "mbscope export: " << path << ": " << report.error << "; everything before it was exported\n";
     // What was written goes to stderr when a table goes to standard output.
-    const bool toStdout = (csv.stream && csv.name == QLatin1String("-")) || (jsonl.stream && jsonl.name == QLatin1String("-"));
+    const bool toStdout = (parser.isSet(csvOpt) && parser.value(csvOpt) == QLatin1String("-"))
+        || (parser.isSet(jsonlOpt) && parser.value(jsonlOpt) == QLatin1String("-"));
     QTextStream &note = toStdout ? err : out;
-    if (csv.stream) {
-        if (!csv.close(&error)) {
+    for (Output &o : written) {
+        if (!o.open)
+            continue;
+        const QString file = parser.value(*o.option);
+        if (!o.writer.close(&error)) {
             err << "mbscope export: " << error << '\n';
             status = ExitUsage;
-        } else if (csv.name != QLatin1String("-")) {
-            note << "csv      " << csv.name << ": " << csv.rows << " row(s)\n";
-        }
-    }
-    if (jsonl.stream) {
-        if (!jsonl.close(&error)) {
-            err << "mbscope export: " << error << '\n';
-            status = ExitUsage;
-        } else if (jsonl.name != QLatin1String("-")) {
-            note << "jsonl    " << jsonl.name << ": " << jsonl.rows << " line(s)\n";
-        }
-    }
-    if (pcap) {
-        pcap->finish();
-        if (!pcapWriter.close(&error)) {
-            err << "mbscope export: " << error << '\n';
-            status = ExitUsage;
+        } else if (o.format == ExchangeWriter::Format::Csv) {
+            if (file != QLatin1String("-"))
+                note << "csv      " << file << ": " << o.writer.rows() << " row(s)\n";
+        } else if (o.format == ExchangeWriter::Format::JsonLines) {
+            if (file != QLatin1String("-"))
+                note << "jsonl    " << file << ": " << o.writer.rows() << " line(s)\n";
         } else {
-            note << "pcap     " << parser.value(pcapOpt) << ": " << pcap->packets() << " packet(s), "
-                 << (CaptureFileWriter::formatFor(parser.value(pcapOpt)) == CaptureFileWriter::Format::Pcap ? "pcap" : "pcapng") << '\n';
+            note << "pcap     " << file << ": " << o.writer.packets() << " packet(s), "
+                 << (o.format == ExchangeWriter::Format::Pcap ? "pcap" : "pcapng") << '\n';
             // Ports tshark does not know by itself (Wireshark: Analyze > Decode As...).
-            for (const QString &option : pcap->decodeOptions())
+            for (const QString &option : o.writer.decodeOptions())
                 note << "         " << option << '\n';
         }
     }

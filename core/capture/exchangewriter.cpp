@@ -20,8 +20,9 @@ bool ExchangeWriter::open(const QString &path, Format format, QString *error)
         m_pcap.emplace(m_capture);
         return true;
     }
-    m_file.setFileName(path);
-    if (!m_file.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
+    const bool ok = path == QLatin1String("-") ? m_file.open(stdout, QIODevice::WriteOnly)
+                                               : (m_file.setFileName(path), m_file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    if (!ok) {
         *error = QStringLiteral("cannot create %1: %2").arg(path, m_file.errorString());
         return false;
     }
@@ -72,7 +73,8 @@ bool ExchangeWriter::close(QString *error)
     m_text->flush();
     const bool ok = m_text->status() == QTextStream::Ok && m_file.error() == QFileDevice::NoError;
     if (!ok)
-        *error = QStringLiteral("cannot write %1: %2").arg(m_file.fileName(), m_file.errorString());
+        *error = QStringLiteral("cannot write %1: %2").arg(m_file.fileName().isEmpty() ? QStringLiteral("standard output") : m_file.fileName(),
+                                                            m_file.errorString());
     m_text.reset();
     m_file.close();
     return ok;

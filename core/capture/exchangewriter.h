@@ -27,7 +27,8 @@ public:
     ExchangeWriter(const ExchangeWriter &) = delete;
     ExchangeWriter &operator=(const ExchangeWriter &) = delete;
 
-    // Creates the file (replacing one there); false with *error naming the file and why.
+    // Creates the file (replacing one there; "-": standard output, for CSV and JSON lines); false
+    // with *error naming the file and why.
     bool open(const QString &path, Format format, QString *error);
     void addConversation(const CaptureConversation &conversation);
     void add(const CaptureExchange &exchange);
