@@ -14,6 +14,7 @@
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QMenu>
+#include <QtGui/QResizeEvent>
 #include <QtWidgets/QSplitter>
 #include <QtWidgets/QToolButton>
 #include <QtWidgets/QVBoxLayout>
@@ -65,13 +66,30 @@ void DecodeView::buildUi()
     m_splitter->addWidget(m_request);
     m_splitter->addWidget(m_response);
     m_splitter->setChildrenCollapsible(false);
-    // An answer has more fields than its request (a read returns the values asked for).
-    m_splitter->setStretchFactor(0, 2);
-    m_splitter->setStretchFactor(1, 3);
+    connect(m_splitter, &QSplitter::splitterMoved, this, [this] { m_splitterMoved = true; });
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(top);
     layout->addWidget(m_splitter, 1);
+}
+
+void DecodeView::resizeEvent(QResizeEvent *event)
+{
+    QWidget::resizeEvent(event);
+    fitSplitter();
+}
+
+// An answer has more fields than its request (a read returns the values asked for): the
+// response gets two thirds of the height, the request a third, until the user moves the handle.
+// Left to its size hints the splitter halves the room, and a 720 px window then showed six
+// rows of the answer's fields.
+void DecodeView::fitSplitter()
+{
+    const int total = m_splitter->height() - m_splitter->handleWidth();
+    if (m_splitterMoved || total <= 0)
+        return;
+    const int request = qMax(m_request->minimumSizeHint().height(), total / 3);
+    m_splitter->setSizes({request, qMax(0, total - request)});
 }
 
 const Dissection &DecodeView::requestDissection() const

@@ -49,9 +49,13 @@ public Q_SLOTS:
 Q_SIGNALS:
     void shown();
 
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+
 private:
     void buildUi();
     void updateHeader();
+    void fitSplitter();
 
     FrameExchange m_exchange;
     QLabel *m_header = nullptr;
@@ -59,6 +63,7 @@ private:
     QSplitter *m_splitter = nullptr;
     FrameInspector *m_request = nullptr;
     FrameInspector *m_response = nullptr;
+    bool m_splitterMoved = false;
 };
 
 } // namespace mbscope

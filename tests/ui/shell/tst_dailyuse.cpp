@@ -436,10 +436,6 @@ void TestDailyUse::smallScreens()
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     const QSize minimum = window.minimumSizeHint().expandedTo(window.minimumSize());
-    // Known gap (issue 14, item 5, left open): with the Listen box and the traffic list's Save
-    // button merged in, the docks' rows need about 1,060 px; they must wrap or tab to fit 1024.
-    if (minimum.width() > 1024)
-        QEXPECT_FAIL("", "the window's minimum width is over 1024 px since Listen and Save were added (issue 14, item 5)", Continue);
     QVERIFY2(minimum.width() <= 1024 && minimum.height() <= 700,
              qPrintable(QStringLiteral("minimum %1x%2").arg(minimum.width()).arg(minimum.height())));
     if (minimum.width() <= size.width() && minimum.height() <= size.height())
@@ -454,16 +450,13 @@ void TestDailyUse::smallScreens()
     QVERIFY2(guitest::saveShot(&window, QStringLiteral("dailyuse-%1x%2.png").arg(size.width()).arg(size.height())), "shot");
     qInfo("%dx%d: %d field rows, %d hex bytes a line", size.width(), size.height(), rows,
           response->hexView()->bytesPerLine());
-    // Not reached yet below 800 px high (6 and 7 rows, 4 hex bytes at 1024 wide): issue 14, item 5
-    // is open for the answer's room on small screens; the window itself fits.
-    if (size.height() >= 768) {
-        QVERIFY2(rows >= 8, qPrintable(QStringLiteral("%1 field rows shown").arg(rows)));
+    // The answer keeps eight rows of fields at every size (its decode view gives the response two
+    // thirds of the height: halved, a 720 px window showed six), and eight hex bytes a line
+    // where the window is wider than 1024 px.
+    QVERIFY2(rows >= 8, qPrintable(QStringLiteral("%1 field rows shown").arg(rows)));
+    if (size.width() > 1024)
         QVERIFY2(response->hexView()->bytesPerLine() >= 8,
                  qPrintable(QStringLiteral("%1 bytes a line").arg(response->hexView()->bytesPerLine())));
-    } else {
-        QEXPECT_FAIL("", "below 800 px high the answer does not keep eight field rows yet (issue 14, item 5)", Continue);
-        QVERIFY2(rows >= 8, qPrintable(QStringLiteral("%1 field rows shown").arg(rows)));
-    }
     // The docks keep a usable share: the traffic list is not squeezed out.
     QVERIFY(window.trafficMonitor()->view()->viewport()->height() >= 60);
 }
