@@ -26,6 +26,8 @@
 
 #include "protocol/adubuilder.h"
 
+#include <QtCore/QTimer>
+#include <QtCore/QHash>
 #include <QtCore/QCoreApplication>
 #include <QtCore/QFileInfo>
 #include <QtCore/QSettings>
@@ -45,6 +47,9 @@
 #include <QtWidgets/QTabBar>
 #include <QtWidgets/QTabWidget>
 #include <QtWidgets/QVBoxLayout>
+
+#include <algorithm>
+#include <climits>
 
 namespace mbscope {
 
@@ -349,38 +354,71 @@ void MainWindow::focusNextDock()
     }
     if (docks.isEmpty())
         return;
+    // In the order the user sees them: tab by tab, then the docks on their own by name.
+    // (findChildren's order is no order: raise() moves a dock to the end of it, which made F6
+    // go back and forth between the first two docks.)
+    QHash<QDockWidget *, int> rank;
+    int tabRank = 0;
+    for (QTabBar *tabs : findChildren<QTabBar *>(QString(), Qt::FindDirectChildrenOnly)) {
+        for (int i = 0; i < tabs->count(); ++i)
+            rank.insert(reinterpret_cast<QDockWidget *>(tabs->tabData(i).value<quintptr>()), tabRank++);
+    }
+    std::stable_sort(docks.begin(), docks.end(), [&rank](QDockWidget *a, QDockWidget *b) {
+        const int ra = rank.value(a, INT_MAX);
+        const int rb = rank.value(b, INT_MAX);
+        return ra != rb ? ra < rb : a->objectName() < b->objectName();
+    });
     int current = -1;
     for (int i = 0; i < docks.size(); ++i) {
         if (docks.at(i)->isAncestorOf(QApplication::focusWidget()))
             current = i;
     }
-    // The next dock that comes forward when raised (a closed one stays closed and is passed by).
+    // The next open dock (a closed one stays closed and is passed by). A dock tabbed behind
+    // another is open but hidden; it becomes visible only in the next layout pass after its tab
+    // is chosen, so "open" is its View menu check, not its visibility (which sent F6 back and
+    // forth between the first two docks).
     QDockWidget *next = nullptr;
     for (int step = 1; step <= docks.size() && !next; ++step) {
         QDockWidget *candidate = docks.at((current + step) % docks.size());
-        // QMainWindow keeps each tabbed dock's pointer as its tab's data: choosing that tab
-        // brings the dock forward at once (raise() alone waits for the next layout pass).
-        for (QTabBar *tabs : findChildren<QTabBar *>(QString(), Qt::FindDirectChildrenOnly)) {
-            for (int i = 0; i < tabs->count(); ++i) {
-                if (tabs->tabData(i).value<quintptr>() == quintptr(candidate))
-                    tabs->setCurrentIndex(i);
-            }
-        }
-        candidate->raise();
-        if (candidate->isVisible())
+        if (candidate->toggleViewAction()->isChecked())
             next = candidate;
     }
     if (!next)
         return;
-    // The dock's first widget that takes the keyboard (the traffic list's filter, a table).
-    QWidget *target = next->widget();
-    for (QWidget *child : next->widget()->findChildren<QWidget *>()) {
-        if ((child->focusPolicy() & Qt::TabFocus) && child->isVisibleTo(next)) {
-            target = child;
-            break;
+    // QMainWindow keeps each tabbed dock's pointer as its tab's data: choosing that tab brings
+    // the dock forward.
+    for (QTabBar *tabs : findChildren<QTabBar *>(QString(), Qt::FindDirectChildrenOnly)) {
+        for (int i = 0; i < tabs->count(); ++i) {
+            if (tabs->tabData(i).value<quintptr>() == quintptr(next))
+                tabs->setCurrentIndex(i);
         }
     }
-    target->setFocus(Qt::ShortcutFocusReason);
+    // The dock's first widget that takes the keyboard (the traffic list's filter, a table),
+    // once the dock is shown.
+    const auto focusDock = [](QDockWidget *dock) {
+        QWidget *target = dock->widget();
+        for (QWidget *child : dock->widget()->findChildren<QWidget *>()) {
+            if ((child->focusPolicy() & Qt::TabFocus) && child->isVisibleTo(dock)) {
+                target = child;
+                break;
+            }
+        }
+        target->setFocus(Qt::ShortcutFocusReason);
+    };
+    if (next->isVisible()) {
+        next->raise();
+        focusDock(next);
+    } else {
+        auto *once = new QObject(this);
+        connect(next, &QDockWidget::visibilityChanged, once, [once, next, focusDock](bool visible) {
+            if (!visible)
+                return;
+            focusDock(next);
+            once->deleteLater();
+        });
+        QTimer::singleShot(1000, once, &QObject::deleteLater); // never shown: forget it
+        next->raise();
+    }
     statusBar()->showMessage(tr("%1 dock (F6: the next one)").arg(next->windowTitle().remove(QLatin1Char('&'))), 3000);
 }
 
