@@ -9,6 +9,10 @@
 
 #include "protocol/adubuilder.h"
 
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
+#include <QtCore/QSettings>
 #include <QtGui/QAction>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QFormLayout>
@@ -35,6 +39,44 @@ QColor seriesColour(int index)
                                      QColor(227, 119, 194), QColor(127, 127, 127), QColor(188, 189, 34),
                                      QColor(23, 190, 207)};
     return colours[index % int(std::size(colours))];
+}
+
+// Where the plotted series are kept between runs (issue 14, item 3: trend choices survive a
+// restart): one JSON object a series.
+const QString kShownKey = QStringLiteral("trends/shown");
+
+QJsonObject seriesToJson(const TrendSeries &s)
+{
+    return QJsonObject{{QStringLiteral("unitId"), s.unitId},
+                       {QStringLiteral("table"), int(s.table)},
+                       {QStringLiteral("address"), s.address},
+                       {QStringLiteral("format"), s.format.name()},
+                       {QStringLiteral("scale"), s.scale},
+                       {QStringLiteral("offset"), s.offset},
+                       {QStringLiteral("name"), s.name},
+                       {QStringLiteral("unit"), s.unit},
+                       {QStringLiteral("profile"), s.profileName}};
+}
+
+std::optional<TrendSeries> seriesFromJson(const QJsonObject &o)
+{
+    const int table = o.value(QStringLiteral("table")).toInt(-1);
+    const int address = o.value(QStringLiteral("address")).toInt(-1);
+    const RegisterFormatResult format = RegisterFormat::parse(o.value(QStringLiteral("format")).toString());
+    if (table < int(ModbusTable::Coils) || table > int(ModbusTable::HoldingRegisters) || address < 0 || address > 0xFFFF
+        || !format.ok)
+        return std::nullopt;
+    TrendSeries s;
+    s.unitId = o.value(QStringLiteral("unitId")).toInt(-1);
+    s.table = ModbusTable(table);
+    s.address = address;
+    s.format = format.format;
+    s.scale = o.value(QStringLiteral("scale")).toDouble(1);
+    s.offset = o.value(QStringLiteral("offset")).toDouble(0);
+    s.name = o.value(QStringLiteral("name")).toString();
+    s.unit = o.value(QStringLiteral("unit")).toString();
+    s.profileName = o.value(QStringLiteral("profile")).toString();
+    return s;
 }
 
 } // namespace
@@ -126,6 +168,7 @@ RegisterTrendPanel::RegisterTrendPanel(QWidget *parent)
     layout->addWidget(split);
 
     connect(m_list, &QListWidget::itemChanged, this, &RegisterTrendPanel::onItemChanged);
+    restoreChoices();
 }
 
 void RegisterTrendPanel::setProfile(const UnitProfile &unit, const QString &profileName)
@@ -157,6 +200,38 @@ void RegisterTrendPanel::setProfile(const UnitProfile &unit, const QString &prof
         m_filling = false;
         m_rows.append(Row{series, nullptr});
     }
+    restoreChoices();
+}
+
+void RegisterTrendPanel::saveChoices() const
+{
+    if (m_restoring)
+        return;
+    QJsonArray shown;
+    for (const Row &row : m_rows) {
+        if (row.graph && row.graph->visible())
+            shown.append(seriesToJson(row.series));
+    }
+    QSettings().setValue(kShownKey, QString::fromUtf8(QJsonDocument(shown).toJson(QJsonDocument::Compact)));
+}
+
+void RegisterTrendPanel::restoreChoices()
+{
+    const QJsonArray saved = QJsonDocument::fromJson(QSettings().value(kShownKey).toString().toUtf8()).array();
+    m_restoring = true;
+    for (const QJsonValue &value : saved) {
+        const std::optional<TrendSeries> series = seriesFromJson(value.toObject());
+        if (!series)
+            continue;
+        const auto row = std::find_if(m_rows.cbegin(), m_rows.cend(),
+                                      [&](const Row &r) { return r.series.sameRegister(*series); });
+        // A profile's register comes back when its profile is listed; one added by address at once.
+        if (row != m_rows.cend())
+            setSeriesShown(int(std::distance(m_rows.cbegin(), row)), true);
+        else if (series->name.isEmpty())
+            addSeries(*series);
+    }
+    m_restoring = false;
 }
 
 void RegisterTrendPanel::setRegisterTable(RegisterTable *table)
@@ -205,6 +280,7 @@ void RegisterTrendPanel::onItemChanged(QListWidgetItem *item)
         graph->addToLegend();
     else
         graph->removeFromLegend();
+    saveChoices();
     redraw();
 }
 

@@ -84,6 +84,9 @@ private:
     };
 
     void addFromFields();
+    // The plotted series are kept in the settings and ticked again when listed.
+    void saveChoices() const;
+    void restoreChoices();
     void onItemChanged(QListWidgetItem *item);
     QCPGraph *graphFor(int index);
     void showMessage(const QString &text);
@@ -107,6 +110,7 @@ private:
     qint64 m_startNs = 0;
     double m_lastSeconds = 0;
     bool m_filling = false; // the list is being filled: item changes are ours
+    bool m_restoring = false;
 };
 
 } // namespace mbscope

@@ -11,6 +11,7 @@
 #include "profile/profileloader.h"
 
 #include <QtTest/QSignalSpy>
+#include <QtCore/QSettings>
 #include <QtTest/QtTest>
 #include <qcustomplot.h>
 
@@ -22,12 +23,14 @@ class TestRegisterTrendPanel : public QObject
 
 private Q_SLOTS:
     void initTestCase() { guitest::isolateSettings(); }
+    void init() { QSettings().remove(QStringLiteral("trends")); }
     void valueInAnswer_data();
     void valueInAnswer();
     void profileSeriesAreNamed();
     void trendOfAProfileRegister();
     void addedByAddressAndRefused();
     void tickedLaterShowsTheHistory();
+    void choicesSurviveARestart();
 };
 
 namespace {
@@ -227,6 +230,37 @@ Transaction readAt(double seconds, int address, const QList<quint16> &values)
 
 // Issue 14, item 10: a register ticked during a poll shows what was already read; the time axis
 // starts at its first point, not at the session's first answer; the legend lets the data through.
+// Issue 14, item 3: the series plotted when the window closed are plotted again at the next start,
+// a profile's as soon as its profile is listed, one added by address at once; unticked ones not.
+void TestRegisterTrendPanel::choicesSurviveARestart()
+{
+    const ProfileLoadResult loaded = ProfileLoader::load(QStringLiteral("conformance"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.errorText()));
+    TrendSeries byAddress;
+    byAddress.address = 0x0086;
+    byAddress.format = RegisterFormat(RegisterType::Int16);
+    {
+        RegisterTrendPanel first;
+        first.setProfile(*loaded.profile.unit(1), loaded.profile.name);
+        const int temperature = indexOfName(first, QStringLiteral("temperature"));
+        const int pressure = indexOfName(first, QStringLiteral("pressure"));
+        QVERIFY(temperature >= 0 && pressure >= 0);
+        first.setSeriesShown(temperature, true);
+        first.setSeriesShown(pressure, true);
+        first.setSeriesShown(pressure, false);
+        first.addSeries(byAddress);
+    }
+    RegisterTrendPanel next;
+    QCOMPARE(next.seriesCount(), 1);
+    QVERIFY(next.series(0).sameRegister(byAddress));
+    QVERIFY(next.graphOf(0) && next.graphOf(0)->visible());
+    next.setProfile(*loaded.profile.unit(1), loaded.profile.name);
+    const int temperature = indexOfName(next, QStringLiteral("temperature"));
+    const int pressure = indexOfName(next, QStringLiteral("pressure"));
+    QVERIFY(next.graphOf(temperature) && next.graphOf(temperature)->visible());
+    QVERIFY(!next.graphOf(pressure) || !next.graphOf(pressure)->visible());
+}
+
 void TestRegisterTrendPanel::tickedLaterShowsTheHistory()
 {
     RegisterTrendPanel panel;
