@@ -734,7 +734,7 @@
 <context>
     <name>mbscope::DecodeView</name>
     <message>
-        <location filename="../../ui/decode/decodeview.cpp" line="+40"/>
+        <location filename="../../ui/decode/decodeview.cpp" line="+41"/>
         <source>Copy</source>
         <translation>Salin</translation>
     </message>
@@ -759,7 +759,7 @@
         <translation>Salin sebagai &amp;hex</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+62"/>
         <source>No request: this frame answers none that was sent (%1)</source>
         <translation>Tanpa permintaan: frame ini tidak menjawab permintaan yang dikirim (%1)</translation>
     </message>
@@ -2699,7 +2699,7 @@
         <translation>tidak dapat menyalin %1 ke %2: %3</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+67"/>
         <source>%1: listening only (nothing is sent)</source>
         <translation>%1: hanya mendengar (tidak ada yang dikirim)</translation>
     </message>
@@ -2791,7 +2791,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+82"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+87"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -2831,7 +2831,7 @@
         <translation>Simulator</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+138"/>
         <source>%1 dock (F6: the next one)</source>
         <translation>Dok %1 (F6: dok berikutnya)</translation>
     </message>
@@ -3938,7 +3938,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RegisterTrendPanel</name>
     <message>
-        <location filename="../../ui/analysis/registertrendpanel.cpp" line="+53"/>
+        <location filename="../../ui/analysis/registertrendpanel.cpp" line="+95"/>
         <source>Add &amp;selected register</source>
         <translation>Tambahkan register yang &amp;dipilih</translation>
     </message>
@@ -4023,7 +4023,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Plot register yang dipilih di tabel Register, dalam format kolomnya</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+163"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -5672,7 +5672,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimulatorPanel</name>
     <message>
-        <location filename="../../ui/sim/simulatorpanel.cpp" line="+38"/>
+        <location filename="../../ui/sim/simulatorpanel.cpp" line="+45"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
@@ -5792,7 +5792,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 %2 unit %3 diatur ke %4.</translation>
     </message>
     <message numerus="yes">
-        <location line="+40"/>
+        <location line="+45"/>
         <source>%n line(s), the newest %1 kept.</source>
         <translation>
             <numerusform>%n baris, %1 terbaru disimpan.</numerusform>
@@ -5831,7 +5831,24 @@ Klik kanan untuk mengganti format</translation>
         <translation>Simulator tidak dijalankan di %1: %2</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+33"/>
+        <source>saved fault rules</source>
+        <translation>aturan gangguan tersimpan</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The fault rules saved at the last run do not read and were dropped: %1</source>
+        <translation>Aturan gangguan yang disimpan pada jalannya terakhir tidak terbaca dan dibuang: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+9"/>
+        <source>%n fault rule(s) of the last run are in force again (Faults tab: Remove all to clear them).</source>
+        <translation>
+            <numerusform>%n aturan gangguan dari jalannya terakhir berlaku lagi (tab Gangguan: Hapus semua untuk membersihkannya).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+51"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -3,6 +3,8 @@
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QDir>
+#include <QtCore/QSettings>
+#include <QtCore/QTemporaryDir>
 #include <QtCore/QStandardPaths>
 #include <QtGui/QPixmap>
 #include <QtWidgets/QWidget>
@@ -10,10 +12,16 @@
 
 namespace mbscope::guitest {
 
-// QSettings of a test never touch the user's: test mode paths and an organisation of their own.
+// QSettings of a test never touch the user's, nor another test program's: each test program
+// starts with empty settings in a folder of its own, removed when it ends. (They shared one file,
+// so what one program left, a fault rule of the built-in simulator, reached the others, in
+// whatever order CTest ran them.)
 inline void isolateSettings()
 {
     QStandardPaths::setTestModeEnabled(true);
+    static QTemporaryDir folder;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, folder.path());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, folder.path());
     QCoreApplication::setOrganizationName(QStringLiteral("mbscope-tests"));
     QCoreApplication::setApplicationName(QStringLiteral("mbscope-gui-tests"));
 }

@@ -5,9 +5,14 @@
 #include "simrunlistmodel.h"
 #include "simtrafficmodel.h"
 
+#include "json/jsonreader.h"
+#include "profile/faultrulereader.h"
+#include "profile/faultrulewriter.h"
 #include "profile/profileloader.h"
 #include "sim/simulatorhost.h"
 
+#include <QtCore/QJsonDocument>
+#include <QtCore/QSettings>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QFileDialog>
 #include <QtWidgets/QHBoxLayout>
@@ -26,6 +31,8 @@
 namespace mbscope {
 
 namespace {
+
+const QString kSavedFaultsKey = QStringLiteral("simulator/faultRules");
 
 struct FramingChoice {
     const char *label; // translated in the panel's context
@@ -228,8 +235,13 @@ void SimulatorPanel::buildUi()
     });
     connect(m_registers, &SimRegisterModel::editRefused, m_editMessage, &QLabel::setText);
     connect(m_faults, &SimFaultForm::rulesChanged, this, [this](const FaultRuleSet &rules) {
-        if (m_current)
-            m_current->setFaultRules(rules);
+        if (!m_current)
+            return;
+        m_current->setFaultRules(rules);
+        // The built-in simulator's rules are kept for the next start (issue 14, item 3).
+        if (m_runs->isBuiltIn(m_runs->rowOf(m_current)))
+            QSettings().setValue(kSavedFaultsKey,
+                                 QString::fromUtf8(QJsonDocument(FaultRuleWriter::toJson(rules)).toJson(QJsonDocument::Compact)));
     });
     connect(clear, &QPushButton::clicked, this, [this] {
         m_traffic->clear();
@@ -336,8 +348,38 @@ void SimulatorPanel::addRunning(SimulatorHost *host, const QString &label, bool 
         return;
     watch(host);
     m_runs->addHost(host, label, builtIn);
+    if (builtIn)
+        restoreSavedFaults(host);
     if (!m_current)
         selectHost(host);
+}
+
+// The fault rules the built-in simulator had when mbscope last closed are put back in force,
+// and the panel says so: a simulator that drops answers for a reason nobody remembers would be
+// worse than one that forgot its rules.
+void SimulatorPanel::restoreSavedFaults(SimulatorHost *host)
+{
+    const QString saved = QSettings().value(kSavedFaultsKey).toString();
+    if (saved.isEmpty())
+        return;
+    QList<ProfileProblem> problems;
+    JsonReader reader(&problems, tr("saved fault rules"));
+    QJsonParseError error;
+    const QJsonDocument document = QJsonDocument::fromJson(saved.toUtf8(), &error);
+    const FaultRuleSet rules = FaultRuleReader::readRuleSet(reader, document.object(), QString(), host->faultRules().seed);
+    if (error.error != QJsonParseError::NoError || !problems.isEmpty()) {
+        QSettings().remove(kSavedFaultsKey);
+        showMessage(tr("The fault rules saved at the last run do not read and were dropped: %1")
+                        .arg(problems.isEmpty() ? error.errorString() : ProfileProblem::join(problems)));
+        return;
+    }
+    if (rules.rules.isEmpty())
+        return;
+    host->setFaultRules(rules);
+    if (host == m_current)
+        m_faults->setRules(rules);
+    showMessage(tr("%n fault rule(s) of the last run are in force again (Faults tab: Remove all to clear them).", nullptr,
+                   int(rules.rules.size())));
 }
 
 void SimulatorPanel::watch(SimulatorHost *host)

@@ -60,6 +60,7 @@ public:
 private:
     void buildUi();
     void watch(SimulatorHost *host);
+    void restoreSavedFaults(SimulatorHost *host);
     void onStartClicked();
     void onFramingChosen();
     void onUrlEdited(const QString &text);

@@ -21,6 +21,7 @@
 #include <QtNetwork/QTcpSocket>
 #include <QtTest/QAbstractItemModelTester>
 #include <QtTest/QSignalSpy>
+#include <QtCore/QSettings>
 #include <QtTest/QtTest>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QDockWidget>
@@ -155,6 +156,7 @@ class TestSimulatorPanel : public QObject
 
 private Q_SLOTS:
     void initTestCase() { guitest::isolateSettings(); }
+    void init() { QSettings().remove(QStringLiteral("simulator/faultRules")); }
     void faultSwitchedWhileClientPolls_data();
     void faultSwitchedWhileClientPolls();
     void faultsFileReplacesRules();
@@ -163,6 +165,7 @@ private Q_SLOTS:
     void clientWriteShowsInPanel();
     void generatorValuesArriveInBatches();
     void builtInSimulatorIsOneEntry();
+    void builtInFaultsSurviveARestart();
     void trafficListKeepsItsBound();
     void badInputIsRefusedSayingWhy();
     void windowListsTheFirstRunSimulator();
@@ -405,6 +408,46 @@ void TestSimulatorPanel::builtInSimulatorIsOneEntry()
     QCOMPARE(panel.runsModel()->rowCount(), 0);
     QVERIFY(!panel.currentHost());
     QCOMPARE(panel.registerModel()->rowCount(), 0);
+}
+
+// Issue 14, item 3: the built-in simulator's fault rules are in force again at the next start,
+// and the panel says so; another simulator does not take them; Remove all clears them for good.
+void TestSimulatorPanel::builtInFaultsSurviveARestart()
+{
+    {
+        EmbeddedSimulator builtIn;
+        SimulatorPanel panel;
+        connect(&builtIn, &EmbeddedSimulator::hostStarted, &panel,
+                [&](SimulatorHost *host) { panel.addRunning(host, builtIn.profileName(), true); });
+        QVERIFY(builtIn.start(QStringLiteral("rosrao-gamma"), QStringLiteral("rtu-tcp://127.0.0.1:0")).ok);
+        addRuleThroughForm(panel.faultForm(), FaultRule::Kind::Exception, 0x03, 0x06, 0);
+        QCOMPARE(builtIn.host()->faultRules().rules.size(), 1);
+    }
+    EmbeddedSimulator builtIn;
+    SimulatorPanel panel;
+    connect(&builtIn, &EmbeddedSimulator::hostStarted, &panel,
+            [&](SimulatorHost *host) { panel.addRunning(host, builtIn.profileName(), true); });
+    QVERIFY(builtIn.start(QStringLiteral("rosrao-gamma"), QStringLiteral("rtu-tcp://127.0.0.1:0")).ok);
+    const FaultRuleSet rules = builtIn.host()->faultRules();
+    QCOMPARE(rules.rules.size(), 1);
+    QCOMPARE(rules.rules.first().kind, FaultRule::Kind::Exception);
+    QCOMPARE(rules.rules.first().exceptionCode, quint8(6));
+    QCOMPARE(panel.faultForm()->rules(), rules);
+    QVERIFY2(panel.message().contains(QLatin1String("in force again")), qPrintable(panel.message()));
+
+    SimulatorHost *other = panel.startSimulator(QStringLiteral("m221-plc"), QStringLiteral("tcp://127.0.0.1:0"));
+    QVERIFY2(other, qPrintable(panel.message()));
+    QVERIFY(other->faultRules().rules.isEmpty());
+    panel.stopSimulator(other);
+
+    QTest::mouseClick(panel.faultForm()->findChild<QPushButton *>(QStringLiteral("faultClear")), Qt::LeftButton);
+    QVERIFY(builtIn.host()->faultRules().rules.isEmpty());
+    EmbeddedSimulator again;
+    SimulatorPanel third;
+    connect(&again, &EmbeddedSimulator::hostStarted, &third,
+            [&](SimulatorHost *host) { third.addRunning(host, again.profileName(), true); });
+    QVERIFY(again.start(QStringLiteral("rosrao-gamma"), QStringLiteral("rtu-tcp://127.0.0.1:0")).ok);
+    QVERIFY(again.host()->faultRules().rules.isEmpty());
 }
 
 void TestSimulatorPanel::trafficListKeepsItsBound()
