@@ -5842,9 +5842,9 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message numerus="yes">
         <location line="+9"/>
-        <source>%n fault rule(s) of the last run are in force again (Faults tab: Remove all to clear them).</source>
+        <source>%n fault rule(s) of the last run are in force again (Faults tab: No faults clears them).</source>
         <translation>
-            <numerusform>%n aturan gangguan dari jalannya terakhir berlaku lagi (tab Gangguan: Hapus semua untuk membersihkannya).</numerusform>
+            <numerusform>%n aturan gangguan dari jalannya terakhir berlaku lagi (tab Gangguan: tombol Tanpa gangguan membersihkannya).</numerusform>
         </translation>
     </message>
     <message>

@@ -378,7 +378,7 @@ void SimulatorPanel::restoreSavedFaults(SimulatorHost *host)
     host->setFaultRules(rules);
     if (host == m_current)
         m_faults->setRules(rules);
-    showMessage(tr("%n fault rule(s) of the last run are in force again (Faults tab: Remove all to clear them).", nullptr,
+    showMessage(tr("%n fault rule(s) of the last run are in force again (Faults tab: No faults clears them).", nullptr,
                    int(rules.rules.size())));
 }
 
