@@ -56,6 +56,11 @@ QString WatchCsvLog::fileStem(const QString &name)
 
 QString WatchCsvLog::header(const WatchDefinition &watch)
 {
+    return columns(watch).join(QLatin1Char(','));
+}
+
+QStringList WatchCsvLog::columns(const WatchDefinition &watch)
+{
     // The columns are the values a full answer decodes into (a FIFO: its most values).
     const int words = watch.quantity * WatchBlock::wordsPerAddress(watch);
     const QList<WatchPointValue> layout = WatchDecoder::decode(watch, QList<quint16>(words, 0), QList<bool>(watch.quantity, false));
@@ -67,7 +72,7 @@ QString WatchCsvLog::header(const WatchDefinition &watch)
         columns.append(csvField(column));
     }
     columns.append(QStringLiteral("error"));
-    return columns.join(QLatin1Char(','));
+    return columns;
 }
 
 bool WatchCsvLog::open(const QList<WatchDefinition> &watches, QString *error)
@@ -137,8 +142,8 @@ bool WatchCsvLog::append(int watch, qint64 timeMs, const QString &status, const 
         row.append(csvField(t));
     if (texts.isEmpty()) {
         // A failed poll: the value columns are left empty.
-        const int columns = int(header(f.watch).count(QLatin1Char(','))) - 2;
-        for (int i = 0; i < columns; ++i)
+        const qsizetype valueColumns = columns(f.watch).size() - 3;
+        for (qsizetype i = 0; i < valueColumns; ++i)
             row.append(QString());
     }
     row.append(csvField(errorText));

@@ -40,6 +40,8 @@ public:
     [[nodiscard]] QStringList files() const { return m_files; }
     // The header row of a watch (names with units in brackets), without the line end.
     [[nodiscard]] static QString header(const WatchDefinition &watch);
+    // The header's columns, quoted where they must be: time, status, a value each, error.
+    [[nodiscard]] static QStringList columns(const WatchDefinition &watch);
     // A field quoted as RFC 4180 wants when it holds a comma, a quote or a line end.
     [[nodiscard]] static QString csvField(const QString &text);
     // The watch's name made safe for a file name ("gamma counts/2" -> "gamma_counts_2").
