@@ -5,7 +5,6 @@
 #include "protocol/registervalue.h"
 
 #include <QtCore/QHash>
-#include <QtCore/QLocale>
 
 namespace mbscope {
 
@@ -30,7 +29,9 @@ quint32 WatchDecoder::bitFieldValue(const WatchBitField &field, quint64 raw)
 
 QString WatchDecoder::numberText(double value)
 {
-    return QString::number(value, 'g', QLocale::FloatingPointShortest);
+    // Ten significant digits: a scale such as 0.0048876 leaves binary noise in the last digits of
+    // the product (0.32746919999999996), which no instrument measures.
+    return QString::number(value, 'g', 10);
 }
 
 QList<WatchPointValue> WatchDecoder::decode(const WatchDefinition &watch, const QList<quint16> &words,

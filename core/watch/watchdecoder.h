@@ -22,7 +22,7 @@ public:
     [[nodiscard]] static RegisterFormat effectiveFormat(const WatchDefinition &watch, const WatchPoint &point);
     // The value of a bit field of a raw register.
     [[nodiscard]] static quint32 bitFieldValue(const WatchBitField &field, quint64 raw);
-    // "123.4": the shortest text of a number that reads back to it.
+    // "123.4": a number with at most ten significant digits, no trailing zeros.
     [[nodiscard]] static QString numberText(double value);
 };
 
