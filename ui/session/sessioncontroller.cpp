@@ -258,7 +258,8 @@ bool SessionController::saveAs(const QString &chosenPath)
     if (m_beforeSave)
         m_beforeSave(document, QFileInfo(path).absoluteFilePath());
     QString error;
-    if (!SessionWriter::save(document, path, &error)) {
+    QString notice;
+    if (!SessionWriter::save(document, path, &error, &notice)) {
         report(path, {error});
         return false;
     }
@@ -268,6 +269,8 @@ bool SessionController::saveAs(const QString &chosenPath)
     addRecent(m_path);
     m_clean = document;
     updateModified();
+    if (!notice.isEmpty())
+        Q_EMIT saveNotice(notice);
     return true;
 }
 

@@ -81,6 +81,9 @@ Q_SIGNALS:
     // A session was opened (or New put a fresh one in place): its target is in the connection
     // bar now, and the window connects to it, so what the bar shows is what Send uses.
     void targetApplied();
+    // Something the user should know about a save that went well: a version 1 document written
+    // as version 2 (SessionWriter::save's notice, which older mbscope versions cannot open).
+    void saveNotice(const QString &text);
 
 private:
     void updateModified();

@@ -69,6 +69,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_session = new SessionController(this, m_connectionBar, m_composer);
     connect(m_session, &SessionController::titleChanged, this, &QMainWindow::setWindowTitle);
     connect(m_session, &SessionController::targetApplied, this, &MainWindow::useSessionTarget);
+    connect(m_session, &SessionController::saveNotice, this, [this](const QString &text) { statusBar()->showMessage(text, 15000); });
     // Replay and test plans: the Session menu and the Replay and Test plan docks beside Traffic.
     m_sessionTools = new SessionTools(this, m_controller, m_session, m_traffic, m_trafficDock);
     // The Latency histogram and Compare tabs of the Analysis dock; an opened capture is shown there too.

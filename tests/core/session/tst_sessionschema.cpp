@@ -64,16 +64,20 @@ void TestSessionSchema::writtenDocumentsValidate()
     QVERIFY2(rich.ok(), qPrintable(rich.errorText()));
     const SessionLoadResult example = SessionReader::load(sessiontest::sourceDir() + QStringLiteral("/docs/examples/rosrao-gamma.mbscope.json"));
     QVERIFY2(example.ok(), qPrintable(example.errorText()));
+    const SessionLoadResult watches = SessionReader::load(QStringLiteral(MBSCOPE_TEST_DATA_DIR "/sessions/watches.mbscope.json"));
+    QVERIFY2(watches.ok(), qPrintable(watches.errorText()));
     QStringList files;
     QString error;
     for (const auto &[name, doc] : {std::pair{QStringLiteral("rich.mbscope.json"), *rich.document},
                                     std::pair{QStringLiteral("example.mbscope.json"), *example.document},
+                                    std::pair{QStringLiteral("watches.mbscope.json"), *watches.document},
                                     std::pair{QStringLiteral("empty.mbscope.json"), SessionDocument{}}}) {
         files.append(dir.filePath(name));
         QVERIFY2(SessionWriter::save(doc, files.last(), &error), qPrintable(error));
     }
     files.append(sessiontest::sourceDir() + QStringLiteral("/docs/examples/rosrao-gamma.mbscope.json"));
     files.append(QStringLiteral(MBSCOPE_TEST_DATA_DIR "/sessions/everything.mbscope.json"));
+    files.append(QStringLiteral(MBSCOPE_TEST_DATA_DIR "/sessions/watches.mbscope.json"));
     const Validation v = validate(files);
     if (!v.available && v.error.isEmpty())
         QSKIP("python3-jsonschema is not installed (scripts/install-deps.sh --tests installs it)");
@@ -100,6 +104,7 @@ void TestSessionSchema::brokenDocumentsRefused_data()
     QTest::newRow("hex-and-function") << "hex-and-function" << "requests[0]";
     QTest::newRow("poll-without-end") << "poll-without-end" << "poll";
     QTest::newRow("bad-inline-profile") << "bad-inline-profile" << "profile";
+    QTest::newRow("bad-watches") << "bad-watches" << "watchLinks[0].gapMs";
 }
 
 void TestSessionSchema::brokenDocumentsRefused()

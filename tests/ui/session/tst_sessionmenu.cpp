@@ -18,6 +18,7 @@
 #include <QtCore/QTemporaryDir>
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QSpinBox>
+#include <QtWidgets/QStatusBar>
 #include <QtTest/QtTest>
 
 using namespace mbscope;
@@ -57,6 +58,8 @@ private Q_SLOTS:
     void recentFilesKeepTheLastEight();
     void savingKeepsWhatTheWindowDoesNotShow();
     void layoutIsRestored();
+    void versionOneSavedSaysUpgraded();
+    void watchesKeptWhenSaved();
     void trafficNamesTheConnectedLink();
 };
 
@@ -271,6 +274,43 @@ void TestSessionMenu::savingKeepsWhatTheWindowDoesNotShow()
         QCOMPARE(*written.document->request(request.name), request);
     }
     QCOMPARE(written.document->name, expected.name);
+}
+
+void TestSessionMenu::versionOneSavedSaysUpgraded()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("old.mbscope.json"));
+    {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("{\"format\": \"mbscope-session\", \"version\": 1, \"name\": \"before watches\"}");
+    }
+    MainWindow window;
+    QVERIFY(window.session()->open(path));
+    QSignalSpy notices(window.session(), &SessionController::saveNotice);
+    QVERIFY(window.session()->saveAs(path));
+    QCOMPARE(notices.size(), 1);
+    QVERIFY2(window.statusBar()->currentMessage().contains(QLatin1String("upgraded from session version 1 to 2")),
+             qPrintable(window.statusBar()->currentMessage()));
+    QCOMPARE(SessionReader::load(path).version, 2);
+    QVERIFY(window.session()->saveAs(path)); // version 2 now: nothing to say
+    QCOMPARE(notices.size(), 1);
+}
+
+void TestSessionMenu::watchesKeptWhenSaved()
+{
+    const QString example = QStringLiteral(MBSCOPE_TEST_DATA_DIR "/../../docs/examples/three-devices.mbscope.json");
+    const SessionLoadResult original = SessionReader::load(example);
+    QVERIFY2(original.ok(), qPrintable(original.errorText()));
+    QCOMPARE(original.document->watches.watches.size(), 3);
+    MainWindow window;
+    QVERIFY(window.session()->open(example));
+    QTemporaryDir dir;
+    const QString copy = dir.filePath(QStringLiteral("copy.mbscope.json"));
+    QVERIFY(window.session()->saveAs(copy));
+    const SessionLoadResult written = SessionReader::load(copy);
+    QVERIFY2(written.ok(), qPrintable(written.errorText()));
+    QCOMPARE(written.document->watches, original.document->watches);
 }
 
 void TestSessionMenu::layoutIsRestored()

@@ -1,0 +1,285 @@
+#include "watchcommand.h"
+
+#include "cli.h"
+#include "interruptwatcher.h"
+#include "watchreport.h"
+
+#include "fleet/watchrunner.h"
+#include "session/sessionreader.h"
+#include "time/duration.h"
+#include "watch/watchcsvlog.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QEventLoop>
+#include <QtCore/QFileInfo>
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QTextStream>
+#include <QtCore/QTimer>
+
+#include <memory>
+#include <optional>
+
+namespace mbscope::app {
+
+namespace {
+
+// Every option of `mbscope watch`, read in one place (the metrics and MQTT options join them here).
+struct WatchOptions {
+    QString session;
+    std::optional<QString> csvDirectory; // --csv DIR
+    std::optional<WatchLogSettings::Mode> csvMode;
+    qint64 durationNs = 0;
+    quint64 count = 0;                   // polls of every watch
+    bool json = false;
+    bool quiet = false;
+};
+
+// Parses the command line into options; false when the command should end now with *status
+// (help printed, or a usage error said on err).
+bool parseWatchOptions(const QStringList &arguments, WatchOptions *options, int *status, QTextStream &out, QTextStream &err)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Runs the watches of a session document headless: each watch (a block of a device: target, unit, function, "
+        "address, quantity, interval; docs/guide/watching.md) is polled at its own interval, the watches of one link "
+        "taking turns with the link's gap between requests, every link on its own engine so that a dead device stalls "
+        "no other link. A link that fails is opened again after a backoff (doubling from reconnectMinMs to "
+        "reconnectMaxMs), counted. One line per poll with the values named, scaled and with their units; rule events "
+        "as they fire and clear; errors and link changes on standard error; the counters of every watch at the end.\n"
+        "Example: mbscope watch bench.mbscope.json --csv logs --duration 1min\n"
+        "Ctrl-C or SIGTERM stops cleanly: the CSV files are flushed and the counters printed.\n"
+        "Exit status: 0 every poll answered, 1 some polls failed, 2 usage error or a session that cannot be read."));
+    parser.addHelpOption();
+    const QCommandLineOption csvOpt(QStringLiteral("csv"),
+                                    QStringLiteral("Log values to CSV files in DIR, one per watch (replaces the session's "
+                                                   "watchLog directory; rolling as the session says)."),
+                                    QStringLiteral("DIR"));
+    const QCommandLineOption csvModeOpt(QStringLiteral("csv-mode"),
+                                        QStringLiteral("poll: a row per poll (default); change: a row when a value changes."),
+                                        QStringLiteral("MODE"));
+    const QCommandLineOption durationOpt(QStringLiteral("duration"),
+                                         QStringLiteral("Stop after this long (60s, 500ms, 2min, 1h; a bare number is milliseconds)."),
+                                         QStringLiteral("TIME"));
+    const QCommandLineOption countOpt(QStringLiteral("count"), QStringLiteral("Stop once every watch has polled N times."),
+                                      QStringLiteral("N"));
+    const QCommandLineOption jsonOpt(QStringLiteral("json"),
+                                     QStringLiteral("JSON lines on standard output: {\"type\": \"sample\" | \"rule\" | \"link\" | "
+                                                    "\"summary\", ...}."));
+    const QCommandLineOption quietOpt(QStringLiteral("quiet"), QStringLiteral("No line per poll: rule events, errors and the counters."));
+    parser.addOptions({csvOpt, csvModeOpt, durationOpt, countOpt, jsonOpt, quietOpt});
+    parser.addPositionalArgument(QStringLiteral("session"), QStringLiteral("A session document with watches (*.mbscope.json)."));
+    *status = ExitUsage;
+    if (!parser.parse(arguments)) {
+        err << "mbscope watch: " << parser.errorText() << '\n';
+        return false;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << subcommandHelp(parser.helpText(), "watch");
+        *status = ExitOk;
+        return false;
+    }
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1) {
+        err << "mbscope watch: " << (positional.isEmpty() ? "no session given" : "one session at a time")
+            << ": mbscope watch SESSION.mbscope.json [options]\n";
+        return false;
+    }
+    options->session = positional.constFirst();
+    if (parser.isSet(csvOpt)) {
+        options->csvDirectory = parser.value(csvOpt);
+        if (options->csvDirectory->trimmed().isEmpty()) {
+            err << "mbscope watch: --csv: give a directory\n";
+            return false;
+        }
+    }
+    if (parser.isSet(csvModeOpt)) {
+        const QString mode = parser.value(csvModeOpt);
+        if (mode == QLatin1String("poll"))
+            options->csvMode = WatchLogSettings::Mode::EveryPoll;
+        else if (mode == QLatin1String("change"))
+            options->csvMode = WatchLogSettings::Mode::OnChange;
+        else {
+            err << "mbscope watch: --csv-mode '" << mode << "': expected poll or change\n";
+            return false;
+        }
+    }
+    if (parser.isSet(durationOpt)) {
+        const DurationResult d = parseDuration(parser.value(durationOpt));
+        if (!d.ok() || d.ns <= 0) {
+            err << "mbscope watch: --duration: " << (d.ok() ? QStringLiteral("'%1' is not above zero").arg(parser.value(durationOpt)) : d.error)
+                << '\n';
+            return false;
+        }
+        options->durationNs = d.ns;
+    }
+    if (parser.isSet(countOpt)) {
+        bool ok = false;
+        options->count = parser.value(countOpt).toULongLong(&ok);
+        if (!ok || options->count == 0) {
+            err << "mbscope watch: --count '" << parser.value(countOpt) << "' is not a whole number above zero\n";
+            return false;
+        }
+    }
+    options->json = parser.isSet(jsonOpt);
+    options->quiet = parser.isSet(quietOpt);
+    return true;
+}
+
+void printJson(QTextStream &out, const QJsonObject &o)
+{
+    out << QJsonDocument(o).toJson(QJsonDocument::Compact) << '\n';
+    out.flush();
+}
+
+} // namespace
+
+int runWatch(const QStringList &arguments)
+{
+    QTextStream out(stdout);
+    QTextStream err(stderr);
+    WatchOptions options;
+    int status = ExitOk;
+    if (!parseWatchOptions(arguments, &options, &status, out, err))
+        return status;
+
+    const SessionLoadResult loaded = SessionReader::load(options.session);
+    if (!loaded.ok()) {
+        err << "mbscope watch: the session cannot be used:\n" << loaded.errorText() << '\n';
+        return ExitUsage;
+    }
+    const SessionWatches watches = loaded.document->watches;
+    int enabled = 0;
+    for (const WatchDefinition &w : watches.watches)
+        enabled += w.enabled ? 1 : 0;
+    if (enabled == 0) {
+        err << "mbscope watch: " << options.session
+            << (watches.isEmpty() ? ": the session has no watches: add a \"watches\" section (docs/guide/watching.md)\n"
+                                  : ": every watch of the session is disabled (\"enabled\": false)\n");
+        return ExitUsage;
+    }
+
+    // CSV: --csv DIR (relative to the working directory), else the session's watchLog (relative
+    // to the document).
+    std::unique_ptr<WatchCsvLog> csv;
+    if (options.csvDirectory || (watches.log && watches.log->enabled)) {
+        WatchLogSettings log = watches.log.value_or(WatchLogSettings{});
+        QString base = QFileInfo(options.session).absolutePath();
+        if (options.csvDirectory) {
+            log.directory = *options.csvDirectory;
+            base = QString();
+        }
+        if (options.csvMode)
+            log.mode = *options.csvMode;
+        csv = std::make_unique<WatchCsvLog>(log, base);
+        QString error;
+        if (!csv->open(watches.watches, &error)) {
+            err << "mbscope watch: " << error << '\n';
+            return ExitUsage;
+        }
+    }
+
+    WatchRunner runner(watches);
+    QEventLoop loop;
+    InterruptWatcher interrupts;
+    bool stopping = false;
+    bool failed = false;
+    bool csvFailed = false;
+    const auto stop = [&] {
+        if (stopping)
+            return;
+        stopping = true;
+        runner.stop();
+    };
+    QObject::connect(&interrupts, &InterruptWatcher::interrupted, &loop, stop);
+    QObject::connect(&runner, &WatchRunner::stopped, &loop, &QEventLoop::quit);
+    QObject::connect(&runner, &WatchRunner::sampled, &loop, [&](const QList<WatchSample> &samples, const QList<WatchCounters> &) {
+        for (const WatchSample &s : samples) {
+            if (options.count > 0 && s.poll > options.count)
+                continue;
+            if (!s.isOk())
+                failed = true;
+            if (options.json)
+                printJson(out, WatchReport::sampleJson(s));
+            else if (!s.isOk())
+                err << "mbscope watch: " << WatchReport::errorLine(s) << '\n';
+            else if (!options.quiet)
+                out << WatchReport::sampleLine(s) << '\n';
+            if (csv) {
+                QString error;
+                if (!csv->append(s.watch, s.timeMs, watchSampleStatusName(s.status), s.values, s.error, &error) && !csvFailed) {
+                    csvFailed = true;
+                    err << "mbscope watch: " << error << " (logging stops; polling goes on)\n";
+                }
+            }
+        }
+        out.flush();
+        err.flush();
+        if (options.count > 0) {
+            bool done = true;
+            for (int i = 0; i < watches.watches.size(); ++i) {
+                if (watches.watches.at(i).enabled && runner.counters(i).polls < options.count)
+                    done = false;
+            }
+            if (done)
+                stop();
+        }
+    });
+    QObject::connect(&runner, &WatchRunner::ruleChanged, &loop, [&](const WatchRuleEvent &e) {
+        if (options.json)
+            printJson(out, WatchReport::ruleJson(e));
+        else
+            out << WatchReport::ruleLine(e) << '\n';
+        out.flush();
+    });
+    QObject::connect(&runner, &WatchRunner::linkStateChanged, &loop, [&](const WatchLinkState &s) {
+        if (options.json) {
+            printJson(out, WatchReport::linkJson(s));
+            return;
+        }
+        // Said: the wait after a failure (the poll's error line has said what failed) and the link
+        // coming back. Opening, a first open, down (always followed by the wait) and stopped are not.
+        if (s.state != WatchLinkState::State::Backoff && !(s.state == WatchLinkState::State::Up && s.failures > 0))
+            return;
+        err << "mbscope watch: " << WatchReport::linkLine(s) << '\n';
+        err.flush();
+    });
+    QTimer durationTimer;
+    durationTimer.setSingleShot(true);
+    durationTimer.setTimerType(Qt::PreciseTimer);
+    if (options.durationNs > 0) {
+        QObject::connect(&durationTimer, &QTimer::timeout, &loop, stop);
+        durationTimer.start(std::chrono::milliseconds(qMax<qint64>(1, options.durationNs / 1'000'000)));
+    }
+    if (!options.json && !options.quiet)
+        err << "mbscope watch: " << enabled << (enabled == 1 ? " watch" : " watches") << " from " << options.session
+            << "; Ctrl-C stops\n";
+    err.flush();
+    runner.start();
+    loop.exec();
+
+    if (csv)
+        csv->close();
+    if (options.json) {
+        QJsonArray counters;
+        for (const WatchCounters &c : runner.allCounters())
+            counters.append(WatchReport::countersJson(c));
+        QJsonObject summary;
+        summary.insert(QLatin1String("type"), QStringLiteral("summary"));
+        summary.insert(QLatin1String("watches"), counters);
+        if (csv)
+            summary.insert(QLatin1String("csv_files"), QJsonArray::fromStringList(csv->files()));
+        printJson(out, summary);
+    } else {
+        for (const WatchCounters &c : runner.allCounters()) {
+            if (watches.watches.at(c.watch).enabled)
+                out << WatchReport::countersLine(c) << '\n';
+        }
+        if (csv)
+            out << "CSV: " << csv->files().join(QLatin1String(", ")) << '\n';
+    }
+    out.flush();
+    return failed || csvFailed ? ExitFailure : ExitOk;
+}
+
+} // namespace mbscope::app
