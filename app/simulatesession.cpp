@@ -65,6 +65,8 @@ bool SimulateSession::load(const DeviceProfile &profile, const std::optional<Fau
         m_units.append(adopted);
     }
     ProfileApplier::configure(&m_injector, profile);
+    m_sim.setLimits(profile.limits);
+    m_endpointOptions = ProfileApplier::endpointOptions(profile);
     if (faults)
         m_injector.setRules(*faults);
     m_driver.attach(profile, m_units);
@@ -75,7 +77,7 @@ bool SimulateSession::listen(const QStringList &urls, QString *error)
 {
     for (const QString &url : urls) {
         QString why;
-        SimEndpoint *endpoint = m_sim.listen(url, {}, &why);
+        SimEndpoint *endpoint = m_sim.listen(url, m_endpointOptions, &why);
         if (!endpoint) {
             *error = why.isEmpty() ? url + QStringLiteral(": cannot listen") : why;
             if (why.contains(QLatin1String("in use"), Qt::CaseInsensitive))

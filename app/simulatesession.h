@@ -90,6 +90,7 @@ private:
     QHash<QString, Framing> m_framings;
     QTimer m_summaryTimer;
     QElapsedTimer m_elapsed;
+    SimEndpointOptions m_endpointOptions;
     Counts m_counts;
 };
 

@@ -2,6 +2,7 @@
 
 #include "protocol/registerformat.h"
 #include "delayspec.h"
+#include "devicelimits.h"
 #include "faultrule.h"
 #include "generatorspec.h"
 #include "simtable.h"
@@ -84,6 +85,7 @@ struct DeviceProfile {
     quint64 seed = 1;         // generators and fault rules derive their seeds from it
     QList<UnitProfile> units;
     FaultRuleSet faults;
+    DeviceLimits limits;      // "unknownUnit" and "limits"
 
     [[nodiscard]] const UnitProfile *unit(quint8 id) const;
 };

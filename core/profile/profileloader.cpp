@@ -1,5 +1,6 @@
 #include "profileloader.h"
 
+#include "devicelimitsreader.h"
 #include "faultrulereader.h"
 #include "json/jsonreader.h"
 #include "profileunitreader.h"
@@ -154,7 +155,8 @@ ProfileLoadResult ProfileLoader::parse(const QByteArray &json, const QString &so
         return result;
     JsonReader reader(&result.problems, source);
     const QString top;
-    reader.checkKeys(*root, top, {"$schema", "name", "description", "endpoints", "seed", "units", "faults"});
+    reader.checkKeys(*root, top, {"$schema", "name", "description", "endpoints", "seed", "units", "faults",
+                                    "unknownUnit", "limits"});
 
     DeviceProfile profile;
     profile.source = source;
@@ -199,6 +201,8 @@ ProfileLoadResult ProfileLoader::parse(const QByteArray &json, const QString &so
             }
         }
     }
+
+    profile.limits = DeviceLimitsReader::read(reader, *root);
 
     profile.faults.seed = profile.seed;
     if (root->contains(QLatin1String("faults"))) {

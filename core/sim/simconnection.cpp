@@ -41,6 +41,7 @@ SimConnection::SimConnection(Simulator *simulator, SimEndpoint *endpoint, QTcpSo
     , m_idle(this)
     , m_silence(this)
     , m_peer(peerOf(socket))
+    , m_connectedNs(monotonicNowNs())
 {
     socket->setParent(this);
     // Answers are small and must leave at once, not wait for Nagle's algorithm to gather more.
@@ -110,7 +111,8 @@ void SimConnection::drain()
         }
         const StreamFrame &frame = frames.at(f++);
         const qint64 received = frame.lastByteNs != 0 ? frame.lastByteNs : monotonicNowNs();
-        const FaultPlan plan = m_simulator->handleFrame(m_endpoint, frame.bytes, frame.status, m_peer, received);
+        const FaultPlan plan = m_simulator->handleFrame(m_endpoint, frame.bytes, frame.status, m_peer, received,
+                                                       m_connectedNs);
         m_responder.enqueue(plan, received, [this, id = plan.trafficId](const QByteArray &answer) {
             if (m_socket->state() != QAbstractSocket::ConnectedState)
                 return;

@@ -188,8 +188,39 @@ QList<Simulator::Slot *> Simulator::slotsOf(const SimEndpoint *endpoint)
     return out;
 }
 
+std::optional<SimReply> Simulator::limitReply(const QByteArray &pdu, qint64 receivedNs, bool *silent)
+{
+    *silent = false;
+    const quint8 function = quint8(pdu.at(0));
+    if (m_limits.minGapMs > 0 && m_lastTakenNs != 0) {
+        const double gapMs = double(receivedNs - m_lastTakenNs) / 1e6;
+        if (gapMs < m_limits.minGapMs) {
+            const QString note = QStringLiteral("%1 ms after the previous request, under the device's gap of %2 ms")
+                                     .arg(QString::number(gapMs, 'f', 1), QString::number(m_limits.minGapMs));
+            if (m_limits.tooSoon == DeviceLimits::TooSoon::Silent) {
+                *silent = true;
+                return SimReply::silent(note + QStringLiteral(": ignored"));
+            }
+            // V1.1b3 section 7: 06, server device busy.
+            return SimReply::exception(function, 0x06, note + QStringLiteral(": exception 06 (server device busy)"));
+        }
+    }
+    m_lastTakenNs = receivedNs;
+    // 01-04, 0F, 10 and 17 carry their (read) quantity in bytes 3-4 of the PDU.
+    if (const auto it = m_limits.maxQuantity.constFind(function); it != m_limits.maxQuantity.constEnd() && pdu.size() >= 5) {
+        const int quantity = quint8(pdu.at(3)) << 8 | quint8(pdu.at(4));
+        if (quantity > *it)
+            return SimReply::exception(function, 0x03, QStringLiteral("quantity %1 is over the device's limit of %2 for "
+                                                                      "function %3: exception 03 (illegal data value)")
+                                                           .arg(quantity)
+                                                           .arg(*it)
+                                                           .arg(QString::number(function, 16).toUpper().rightJustified(2, QLatin1Char('0'))));
+    }
+    return std::nullopt;
+}
+
 FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status,
-                                 const QString &peer, qint64 receivedNs)
+                                 const QString &peer, qint64 receivedNs, qint64 connectedNs)
 {
     FaultPlan silence;
     silence.drop = true;
@@ -231,6 +262,16 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         log(endpoint, peer, unitForLog, adu, {}, SimLogEntry::Verdict::Malformed, QStringLiteral("no function code: dropped"));
         return silence;
     }
+    if (m_limits.warmUpMs > 0) {
+        const qint64 since = connectedNs != 0 ? connectedNs : endpoint->startedNs();
+        const double upMs = double(receivedNs - since) / 1e6;
+        if (upMs < m_limits.warmUpMs) {
+            log(endpoint, peer, parts.unitId, adu, {}, SimLogEntry::Verdict::NoAnswer,
+                QStringLiteral("%1 ms after connecting, within the device's warm-up of %2 ms: ignored")
+                    .arg(QString::number(upMs, 'f', 1), QString::number(m_limits.warmUpMs)));
+            return silence;
+        }
+    }
     for (Slot *slot : units)
         SimProcessor::noteBusMessage(*slot->unit);
 
@@ -249,13 +290,17 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
     }
     if (!target && !serial && endpoint->options().directUnitIds && (unitId == 0 || unitId == 0xFF) && !units.isEmpty())
         target = units.first();
+    // Many TCP servers answer whatever unit id is asked as their one device.
+    if (!target && !endpoint->url().isSerial() && !units.isEmpty()
+        && endpoint->options().unknownUnit == SimEndpointOptions::UnknownUnit::FirstUnit)
+        target = units.first();
 
     SimReply reply;
     qint64 delayNs = 0;
     SimLogEntry::Verdict verdict = SimLogEntry::Verdict::Answered;
     if (!target) {
         auto policy = endpoint->options().unknownUnit;
-        if (policy == SimEndpointOptions::UnknownUnit::Auto)
+        if (policy == SimEndpointOptions::UnknownUnit::Auto || policy == SimEndpointOptions::UnknownUnit::FirstUnit)
             policy = endpoint->url().isSerial() ? SimEndpointOptions::UnknownUnit::Ignore
                                                 : SimEndpointOptions::UnknownUnit::Exception;
         if (policy == SimEndpointOptions::UnknownUnit::Ignore) {
@@ -267,6 +312,10 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         reply = SimReply::exception(quint8(parts.pdu[0]) & 0x7F, 0x0B,
                                     QStringLiteral("no unit %1 here: exception 0B (gateway target device failed to respond)").arg(unitId));
         verdict = SimLogEntry::Verdict::UnknownUnit;
+    } else if (bool limitSilent = false; const auto refused = limitReply(parts.pdu, receivedNs, &limitSilent)) {
+        reply = *refused;
+        delayNs = target->unit->responseDelayNs();
+        verdict = limitSilent ? SimLogEntry::Verdict::NoAnswer : SimLogEntry::Verdict::Exception;
     } else {
         reply = target->processor->process(parts.pdu, false);
         delayNs = target->unit->responseDelayNs();
