@@ -5,6 +5,7 @@
 #include "devicelimits.h"
 #include "faultrule.h"
 #include "generatorspec.h"
+#include "linerule.h"
 #include "simtable.h"
 
 #include <QtCore/QByteArray>
@@ -86,6 +87,7 @@ struct DeviceProfile {
     QList<UnitProfile> units;
     FaultRuleSet faults;
     DeviceLimits limits;      // "unknownUnit" and "limits"
+    LineTable delimited;      // "delimited": a non-Modbus protocol's requests and answers
 
     [[nodiscard]] const UnitProfile *unit(quint8 id) const;
 };

@@ -120,6 +120,16 @@ FaultContext FaultContext::forRequest(Framing framing, const QByteArray &request
 
 FaultContext FaultContext::forExchange(const SimExchange &exchange)
 {
+    if (exchange.delimited) {
+        FaultContext c;
+        c.framing = exchange.framing;
+        c.delimited = true;
+        c.unit = exchange.routedUnitId;
+        c.request = exchange.requestAdu;
+        c.response = exchange.responseAdu;
+        c.responseDelayNs = exchange.responseDelayNs;
+        return c;
+    }
     FaultContext c = forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu, exchange.responseDelayNs);
     c.unit = exchange.routedUnitId;
     return c;
@@ -190,6 +200,14 @@ bool FaultInjector::matches(const FaultRule &rule, const FaultContext &context)
     if (rule.hasValues && (!context.writes || context.written != rule.values))
         return false;
     using K = FaultRule::Kind;
+    if (context.delimited) {
+        switch (rule.kind) {
+        case K::WrongChecksum: case K::WrongTransactionId: case K::WrongUnit: case K::Exception: case K::FewerRegisters:
+            return false;
+        default:
+            return true;
+        }
+    }
     switch (rule.kind) {
     case K::WrongChecksum:
         return context.framing == Framing::Rtu || context.framing == Framing::Ascii;

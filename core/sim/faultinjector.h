@@ -19,6 +19,10 @@ struct SimExchange;
 // What the fault injector is told about one answer.
 struct FaultContext {
     Framing framing = Framing::Tcp; // Rtu for rtu://, rtu-tcp and rtu-udp; Tcp for tcp and tls; Udp; Ascii
+    // framing=delimited: the request and answer are a delimited protocol's frames, not Modbus; rules
+    // that change Modbus fields (exception, fewer registers, wrong unit, transaction id or
+    // checksum) do not apply, and function and addresses stay unset.
+    bool delimited = false;
     quint8 unit = 0;                // the unit that answers (per-unit delays and rules follow it)
     quint8 function = 0;            // the request's function code
     int firstAddress = -1;          // the addresses the request touches; -1: none (07, 11, 2B...)

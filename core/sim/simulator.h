@@ -1,6 +1,7 @@
 #pragma once
 
 #include "profile/devicelimits.h"
+#include "profile/linerule.h"
 #include "protocol/streamframe.h"
 #include "sim/faultplan.h"
 #include "sim/simendpointoptions.h"
@@ -76,6 +77,12 @@ public:
     void setLimits(const DeviceLimits &limits) { m_limits = limits; }
     [[nodiscard]] const DeviceLimits &limits() const { return m_limits; }
 
+    // ---- Delimited protocols ----
+    // The requests and answers of a non-Modbus protocol (LineTable), served on endpoints whose
+    // URL says framing=delimited; listen() refuses such an endpoint while the table is empty.
+    void setLineTable(const LineTable &table) { m_lineTable = table; }
+    [[nodiscard]] const LineTable &lineTable() const { return m_lineTable; }
+
     // ---- Faults and logs ----
     void setFaultHook(FaultHook hook) { m_faultHook = std::move(hook); }
     [[nodiscard]] bool hasFaultHook() const { return bool(m_faultHook); }
@@ -122,8 +129,15 @@ private:
     // A reply refusing the request by the device limits (gap, quantity), or nullopt to go on.
     [[nodiscard]] std::optional<SimReply> limitReply(const QByteArray &pdu, qint64 receivedNs, bool *silent);
 
+    FaultPlan handleLine(SimEndpoint *endpoint, QByteArrayView frame, FrameStatus status, const QString &peer,
+                         qint64 receivedNs, qint64 connectedNs);
+    // Whether a request at receivedNs falls in the warm-up (then logged as ignored).
+    bool warmingUp(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView adu, qint64 receivedNs,
+                   qint64 connectedNs);
+
     std::map<quint8, Slot> m_units;
     DeviceLimits m_limits;
+    LineTable m_lineTable;
     qint64 m_lastTakenNs = 0; // arrival of the last request the device took (minGapMs)
     QList<SimEndpoint *> m_endpoints;
     FaultHook m_faultHook;

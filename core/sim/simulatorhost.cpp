@@ -69,6 +69,7 @@ bool SimulatorHost::load(const DeviceProfile &profile, QString *error)
     }
     ProfileApplier::configure(m_injector.get(), profile);
     m_simulator->setLimits(profile.limits);
+    m_simulator->setLineTable(profile.delimited);
     m_driver->attach(profile, adopted);
     auto *recorder = new SimFaultPlanRecorder(m_simulator, m_injector.get(), m_anchor);
     connect(recorder, &SimFaultPlanRecorder::recorded, m_anchor,

@@ -65,6 +65,9 @@ private Q_SLOTS:
     void ownEngine();
     void unknownUnitFirst();
     void limitsFromProfile();
+    void delimitedOverTcp();
+    void delimitedOverSerial();
+    void delimitedNeedsATable();
 };
 
 // A read starting at 0x170 gets exception 06; a read of 0x160-0x17F, which meets 0x170, does not.
@@ -225,6 +228,75 @@ void tst_SimulateDevices::limitsFromProfile()
     QCOMPARE(answers.toHex(' '), QByteArray("00 01 00 00 00 05 01 03 02 00 00 00 02 00 00 00 03 01 83 06"));
     QCOMPARE(sim.stop(), 0);
     QVERIFY2(sim.output().contains("exception 06"), sim.output().constData());
+}
+
+// The SCADA lab's '$' ... '#' protocol (shipped profile scada-rs485) over TCP: mbscope's own
+// engine sends the published request and gets the published answer; a write switches a lamp and
+// a read shows it; pymodbus cannot speak it, so the raw socket is the other client.
+void tst_SimulateDevices::delimitedOverTcp()
+{
+    SimCli sim;
+    QString why;
+    QVERIFY2(sim.start(args({"--profile", "scada-rs485", "--listen", "tcp://127.0.0.1:0?framing=delimited&start=24&end=23"}), 1, &why),
+             qPrintable(why));
+    const QString target = QStringLiteral("tcp://127.0.0.1:%1?framing=delimited&start=24&end=23").arg(sim.port(0));
+    const Run read = runProcess(mbscopePath(), {QStringLiteral("send"), QStringLiteral("--target"), target, QStringLiteral("--hex"),
+                                                QStringLiteral("24 30 31 52 23")});
+    QVERIFY2(read.exitCode == 0, (read.out + read.err).constData());
+    QVERIFY2(read.out.contains("text  $01 293 295 363 353 342 335 329 347 0 1 0 0 0 1 0 0 #"), read.out.constData());
+
+    QTcpSocket socket;
+    socket.connectToHost(QStringLiteral("127.0.0.1"), sim.port(0));
+    QVERIFY(socket.waitForConnected(5000));
+    const auto ask = [&socket](const QByteArray &request) {
+        socket.write(request);
+        QByteArray answer;
+        QElapsedTimer clock;
+        clock.start();
+        while (!answer.endsWith('#') && clock.elapsed() < 5000) {
+            if (socket.waitForReadyRead(500))
+                answer += socket.readAll();
+        }
+        return answer;
+    };
+    // Lamps 0 1 0 0 0 1 0 0: bit 0 on, bit 1 off.
+    QCOMPARE(ask("$01WB01#"), QByteArray("$01WB01#"));
+    QCOMPARE(ask("$01WB10#"), QByteArray("$01WB10#"));
+    QCOMPARE(ask("$01R#"), QByteArray("$01 293 295 363 353 342 335 329 347 1 0 0 0 0 1 0 0 #"));
+    QCOMPARE(ask("$03R#"), QByteArray("$03 0 0 0 0 0 0 0 0 #"));
+    QCOMPARE(sim.stop(), 0);
+    QVERIFY2(sim.output().contains("$01R# -> $01 293 295"), sim.output().constData());
+}
+
+// The same protocol on a serial line (a socat pty pair), as the lab's RS485 bus.
+void tst_SimulateDevices::delimitedOverSerial()
+{
+    QString why;
+    if (!socatAvailable(&why))
+        QSKIP(qPrintable(why));
+    PtyPair pty;
+    QVERIFY2(pty.start(), qPrintable(pty.error()));
+    SimCli sim;
+    QVERIFY2(sim.start({QStringLiteral("--profile"), QStringLiteral("scada-rs485"), QStringLiteral("--listen"),
+                        QStringLiteral("rtu://%1?baud=9600&parity=N&framing=delimited&start=24&end=23").arg(pty.ourEnd())},
+                       1, &why),
+             qPrintable(why));
+    const Run read = runProcess(mbscopePath(), {QStringLiteral("send"), QStringLiteral("--target"),
+                                                QStringLiteral("rtu://%1?baud=9600&parity=N&framing=delimited&start=24&end=23")
+                                                    .arg(pty.peerEnd()),
+                                                QStringLiteral("--hex"), QStringLiteral("24 30 32 52 23")});
+    QVERIFY2(read.exitCode == 0, (read.out + read.err).constData());
+    QVERIFY2(read.out.contains("text  $02 293 295 363 353 342 335 329 347 0 1 0 0 0 1 0 0 #"), read.out.constData());
+    QCOMPARE(sim.stop(), 0);
+}
+
+// A delimited endpoint without a table of requests is refused with what to do.
+void tst_SimulateDevices::delimitedNeedsATable()
+{
+    const Run r = runSimulate(args({"--profile", "conformance", "--listen", "tcp://127.0.0.1:0?framing=delimited&end=23",
+                                    "--duration", "1s"}));
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("framing=delimited needs a profile with a 'delimited' table of requests and answers"), r.err.constData());
 }
 
 QTEST_GUILESS_MAIN(tst_SimulateDevices)

@@ -54,7 +54,7 @@ inline void addErrorRows()
     row("name a number", R"({"name": 5, "units": [{"id": 1}]})", "name", S("expected a string, found the number 5"));
     row("unknown top-level key", R"({"name": "t", "unit": [], "units": [{"id": 1}]})", "",
         S("unknown key 'unit': expected one of $schema, name, description, endpoints, seed, units, faults, unknownUnit, "
-          "limits"));
+          "limits, delimited"));
     row("units missing", R"({"name": "t"})", "", S("'units' is missing"));
     row("units empty", R"({"name": "t", "units": []})", "units", S("the list is empty: a profile has at least one unit"));
     row("units an object", R"({"name": "t", "units": {}})", "units", S("expected an array, found an object"));
@@ -261,6 +261,33 @@ inline void addErrorRows()
         S("function 0x06 has no quantity to limit: expected one of 0x01, 0x02, 0x03, 0x04, 0x0F, 0x10, 0x17"));
     row("limits quantity key", R"({"name": "t", "limits": {"maxQuantity": {"read": 1}}, "units": [{"id": 1}]})",
         "limits.maxQuantity.read", S("'read' is not a function code: expected hex text such as \"0x03\""));
+    // Delimited protocols
+    const auto line = [](const char *rules) {
+        return QByteArray(R"({"name": "t", "units": [{"id": 1}], "delimited": {"rules": [)") + rules + "]}}";
+    };
+    row("delimited rules empty", R"({"name": "t", "units": [{"id": 1}], "delimited": {"rules": []}})", "delimited.rules",
+        S("the list is empty: a delimited protocol needs at least one rule"));
+    row("delimited unknown key", R"({"name": "t", "units": [{"id": 1}], "delimited": {"rule": []}})", "delimited",
+        S("unknown key 'rule': expected one of unitCapture, rules"));
+    row("delimited bad pattern", line(R"({"request": "\$(?<unit>0[12]R#", "answer": "x"})"), "delimited.rules[0].request",
+        S("not a regular expression: missing closing parenthesis at character 17"));
+    row("delimited answer missing", line(R"({"request": "a"})"), "delimited.rules[0]",
+        S("'answer' is missing: give the answer's text, or null for no answer"));
+    row("delimited answer a number", line(R"({"request": "a", "answer": 5})"), "delimited.rules[0].answer",
+        S("expected the answer's text such as \"${unit} {holding:0-7} #\", or null, found the number 5"));
+    row("delimited unknown capture", line(R"({"request": "\\$(?<unit>0[12])R#", "answer": "${slave} #"})"),
+        "delimited.rules[0].answer", S("{slave} is not a capture of the request pattern: expected one of unit"));
+    row("delimited unknown table", line(R"({"request": "a", "answer": "{registers:0-7}"})"), "delimited.rules[0].answer",
+        S("character 1: 'registers' is not a table: expected coils, discrete, input or holding"));
+    row("delimited range reversed", line(R"({"request": "a", "answer": "{holding:7-0}"})"), "delimited.rules[0].answer",
+        S("character 1: range 7-0 ends before it starts"));
+    row("delimited brace open", line("{\"request\": \"a\", \"answer\": \"{holding:0\"}") /* a normal literal: moc counts braces in raw strings */, "delimited.rules[0].answer",
+        S("character 1: '{' is not closed (write {{ for a brace)"));
+    row("delimited write to input", line(R"({"request": "a", "answer": null, "writes": [{"table": "input", "address": 0, "value": 1}]})"),
+        "delimited.rules[0].writes[0].table", S("'input' cannot be written: expected coils or holding"));
+    row("delimited write value a table", line(R"({"request": "(?<b>.)W", "answer": null, "writes": [{"table": "coils", "address": "{b}", "value": "{coils:0}"}]})"),
+        "delimited.rules[0].writes[0].value", S("expected a capture such as {bit}, not a table's values"));
+
     row("limits warm-up text", R"({"name": "t", "limits": {"warmUpMs": "1s"}, "units": [{"id": 1}]})", "limits.warmUpMs",
         S("expected a number, found a string \"1s\""));
 }

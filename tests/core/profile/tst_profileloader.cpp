@@ -193,7 +193,7 @@ private slots:
     void shippedProfilesLoad_data()
     {
         QTest::addColumn<QString>("name");
-        for (const char *name : {"rosrao-gamma", "m221-plc", "arduino-rs485", "conformance", "libmodbus-unit-test"})
+        for (const char *name : {"rosrao-gamma", "m221-plc", "arduino-rs485", "conformance", "libmodbus-unit-test", "scada-rs485"})
             QTest::newRow(name) << QString::fromLatin1(name);
     }
     void shippedProfilesLoad()
