@@ -7,6 +7,7 @@
 #include <QtCore/QString>
 
 #include <optional>
+#include <utility>
 
 namespace mbscope {
 
@@ -28,7 +29,9 @@ struct FaultRule {
         Junk,               // bytes before and/or after the answer
         Duplicate,          // the answer, then `copies` more after gapMs each
         Close,              // connection closed before, midway through, or after the answer
+        Noise,              // line noise: bits of the request (then lost) and of the answer flipped
     };
+    enum class NoiseOn : quint8 { Both, Request, Answer };
     enum class CloseWhen : quint8 { Before, Midway, After };
 
     Kind kind = Kind::Drop;
@@ -43,6 +46,13 @@ struct FaultRule {
     QList<quint16> values;        // "values": the values it writes, exactly (when hasValues)
     bool hasValues = false;
     double probability = 1;
+    // Time-dependent firing (instead of probability): the chance by the interval since the
+    // previous request on the same endpoint, interpolated linearly between (ms, p) points and
+    // constant beyond them; or a turnaround time drawn for each request, the rule firing when the
+    // interval is shorter (a transceiver still switching from sending to receiving).
+    QList<std::pair<double, double>> byIntervalMs;
+    bool hasTurnaround = false;
+    DelaySpec turnaround;
 
     DelaySpec delay;              // Delay
     quint8 exceptionCode = 4;     // Exception (04: server device failure)
@@ -56,8 +66,13 @@ struct FaultRule {
     int junkAfterCount = 0;
     int copies = 1;               // Duplicate
     CloseWhen closeWhen = CloseWhen::After; // Close
+    double bitErrorRate = 0;      // Noise: each bit flips with this probability
+    NoiseOn noiseOn = NoiseOn::Both;
 
     [[nodiscard]] bool hasAddressRange() const { return firstAddress >= 0; }
+    [[nodiscard]] bool dependsOnTime() const { return !byIntervalMs.isEmpty() || hasTurnaround; }
+    // The byIntervalMs chance at an interval (negative: none before, the last point's chance).
+    [[nodiscard]] double probabilityAt(double intervalMs) const;
     [[nodiscard]] static QString kindName(Kind kind); // "wrongChecksum"
     [[nodiscard]] static std::optional<Kind> kindFromName(QStringView name);
     [[nodiscard]] static QString kindNames(); // "delay, drop, ..." for messages

@@ -158,6 +158,66 @@ void readValues(JsonReader &reader, const QJsonObject &o, const QString &path, F
     rule->hasValues = true;
 }
 
+// "probability": 0.1, {"byIntervalMs": [[100, 0.5], [400, 0.2]]} or {"turnaround": DELAY}.
+void readProbability(JsonReader &reader, const QJsonObject &o, const QString &path, FaultRule *rule)
+{
+    const QJsonValue v = o.value(QLatin1String("probability"));
+    const QString at = JsonReader::member(path, "probability");
+    if (v.isUndefined())
+        return;
+    if (!v.isObject()) {
+        if (v.isDouble()) {
+            rule->probability = reader.numberValue(v, at, 0, 1).value_or(1);
+        } else {
+            reader.error(at, QStringLiteral("expected a number 0-1, {\"byIntervalMs\": [[ms, p], ...]} or "
+                                            "{\"turnaround\": DELAY}, found %1")
+                                 .arg(JsonReader::describe(v)));
+        }
+        return;
+    }
+    const QJsonObject p = v.toObject();
+    if (!reader.checkKeys(p, at, {"byIntervalMs", "turnaround"}))
+        return;
+    if (p.contains(QLatin1String("byIntervalMs")) == p.contains(QLatin1String("turnaround"))) {
+        reader.error(at, QStringLiteral("give one of 'byIntervalMs' or 'turnaround'"));
+        return;
+    }
+    if (p.contains(QLatin1String("turnaround"))) {
+        if (const auto d = FaultRuleReader::readDelay(reader, p.value(QLatin1String("turnaround")),
+                                                      JsonReader::member(at, "turnaround"))) {
+            rule->turnaround = *d;
+            rule->hasTurnaround = true;
+        }
+        return;
+    }
+    const QString tableAt = JsonReader::member(at, "byIntervalMs");
+    const auto table = reader.array(p, at, "byIntervalMs");
+    if (!table)
+        return;
+    if (table->isEmpty())
+        reader.error(tableAt, QStringLiteral("the list is empty: expected [interval ms, probability] points"));
+    double previous = -1;
+    for (qsizetype i = 0; i < table->size(); ++i) {
+        const QString pointAt = JsonReader::element(tableAt, i);
+        const QJsonArray point = table->at(i).toArray();
+        if (!table->at(i).isArray() || point.size() != 2) {
+            reader.error(pointAt, QStringLiteral("expected [interval ms, probability], found %1").arg(JsonReader::describe(table->at(i))));
+            continue;
+        }
+        const auto ms = reader.numberValue(point.at(0), JsonReader::element(pointAt, 0), 0, kMaxDelayMs);
+        const auto chance = reader.numberValue(point.at(1), JsonReader::element(pointAt, 1), 0, 1);
+        if (!ms || !chance)
+            continue;
+        if (*ms <= previous) {
+            reader.error(JsonReader::element(pointAt, 0), QStringLiteral("%1 ms does not follow %2 ms: intervals go up")
+                                                              .arg(JsonReader::numberText(*ms), JsonReader::numberText(previous)));
+            continue;
+        }
+        previous = *ms;
+        rule->byIntervalMs.append({*ms, *chance});
+    }
+}
+
 } // namespace
 
 std::optional<DelaySpec> FaultRuleReader::readDelay(JsonReader &reader, const QJsonValue &value, const QString &path)
@@ -297,6 +357,22 @@ std::optional<FaultRule> FaultRuleReader::readRule(JsonReader &reader, const QJs
         rule.copies = int(reader.integer(*o, path, "copies", 1, 16).value_or(1));
         rule.gapMs = reader.number(*o, path, "gapMs", 0, kMaxDelayMs).value_or(0);
         break;
+    case K::Noise: {
+        reader.checkKeys(*o, path, ruleKeys({"bitErrorRate", "on"}));
+        if (reader.require(*o, path, "bitErrorRate"))
+            rule.bitErrorRate = reader.number(*o, path, "bitErrorRate", 0, 0.5).value_or(0);
+        const QString on = reader.string(*o, path, "on").value_or(QStringLiteral("both"));
+        if (on == QLatin1String("both"))
+            rule.noiseOn = FaultRule::NoiseOn::Both;
+        else if (on == QLatin1String("request"))
+            rule.noiseOn = FaultRule::NoiseOn::Request;
+        else if (on == QLatin1String("answer"))
+            rule.noiseOn = FaultRule::NoiseOn::Answer;
+        else
+            reader.error(JsonReader::member(path, "on"),
+                         QStringLiteral("'%1' is not a direction: expected both, request or answer").arg(on));
+        break;
+    }
     case K::Close: {
         reader.checkKeys(*o, path, ruleKeys({"when"}));
         const QString when = reader.string(*o, path, "when").value_or(QStringLiteral("after"));
@@ -316,7 +392,7 @@ std::optional<FaultRule> FaultRuleReader::readRule(JsonReader &reader, const QJs
     rule.name = reader.string(*o, path, "name").value_or(QString());
     rule.units = readByteList(reader, *o, path, "units", 0);
     rule.functions = readByteList(reader, *o, path, "functions", 1);
-    rule.probability = reader.number(*o, path, "probability", 0, 1).value_or(1);
+    readProbability(reader, *o, path, &rule);
 
     readMeets(reader, *o, path, &rule);
     rule.starts = readIntList(reader, *o, path, "start", 0, 65535);

@@ -128,10 +128,12 @@ FaultContext FaultContext::forExchange(const SimExchange &exchange)
         c.request = exchange.requestAdu;
         c.response = exchange.responseAdu;
         c.responseDelayNs = exchange.responseDelayNs;
+        c.intervalNs = exchange.intervalNs;
         return c;
     }
     FaultContext c = forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu, exchange.responseDelayNs);
     c.unit = exchange.routedUnitId;
+    c.intervalNs = exchange.intervalNs;
     return c;
 }
 
@@ -220,6 +222,20 @@ bool FaultInjector::matches(const FaultRule &rule, const FaultContext &context)
     }
 }
 
+bool FaultInjector::fires(const FaultRule &rule, const FaultContext &context, SimRandom &random)
+{
+    if (rule.hasTurnaround) {
+        // The transceiver needs this long to turn around; a request sooner than that after the
+        // previous one finds it still sending. The draw is made for every request, so that one
+        // without an interval does not shift the draws of those after it.
+        const qint64 turnaroundNs = rule.turnaround.sampleNs(random);
+        return context.intervalNs >= 0 && context.intervalNs < turnaroundNs;
+    }
+    if (!rule.byIntervalMs.isEmpty())
+        return random.chance(rule.probabilityAt(context.intervalNs < 0 ? -1.0 : double(context.intervalNs) / 1e6));
+    return random.chance(rule.probability);
+}
+
 FaultPlan FaultInjector::plan(const FaultContext &context)
 {
     QMutexLocker lock(&m_mutex);
@@ -230,7 +246,7 @@ FaultPlan FaultInjector::plan(const FaultContext &context)
     QList<qsizetype> fired;
     for (qsizetype i = 0; i < m_rules.rules.size(); ++i) {
         const FaultRule &rule = m_rules.rules.at(i);
-        if (matches(rule, context) && m_ruleRandom[size_t(i)].chance(rule.probability)) {
+        if (matches(rule, context) && fires(rule, context, m_ruleRandom[size_t(i)])) {
             fired.append(i);
             plan.faults.append(rule.name.isEmpty() ? FaultRule::kindName(rule.kind) : rule.name);
         }
@@ -257,10 +273,32 @@ FaultPlan FaultInjector::plan(const FaultContext &context)
     if (const auto it = m_delays.constFind(context.unit); it != m_delays.constEnd())
         delayNs = it->sampleNs(delayRandom(context.unit));
 
-    plan.drop = !firedOf(K::Drop).isEmpty();
+    // Noise on the request: a frame with any bit flipped is lost (its CRC or LRC fails; a
+    // delimited frame no longer reads as the request).
+    // A noise rule that changed nothing is not named among the plan's faults.
+    QList<const FaultRule *> noisy;
+    bool requestLost = false;
+    for (const FaultRule *rule : firedOf(K::Noise)) {
+        if (rule->noiseOn == FaultRule::NoiseOn::Answer)
+            continue;
+        const double bits = 8.0 * double(context.request.size());
+        if (randomOf(rule).chance(1.0 - std::pow(1.0 - rule->bitErrorRate, bits))) {
+            requestLost = true;
+            noisy.append(rule);
+        }
+    }
+    const auto quietNoise = [&] {
+        for (const FaultRule *rule : firedOf(K::Noise)) {
+            if (!noisy.contains(rule))
+                plan.faults.removeOne(rule->name.isEmpty() ? FaultRule::kindName(rule->kind) : rule->name);
+        }
+    };
+    plan.drop = !firedOf(K::Drop).isEmpty() || requestLost;
     plan.closeBefore = closeFired(FaultRule::CloseWhen::Before);
-    if (plan.drop || plan.closeBefore)
+    if (plan.drop || plan.closeBefore) {
+        quietNoise();
         return plan;
+    }
 
     // Content: the PDU and unit, then the bytes as sent.
     QByteArray adu = context.response;
@@ -289,6 +327,16 @@ FaultPlan FaultInjector::plan(const FaultContext &context)
         if (!changed.isEmpty())
             adu = changed;
     }
+
+    for (const FaultRule *rule : firedOf(K::Noise)) {
+        if (rule->noiseOn == FaultRule::NoiseOn::Request)
+            continue;
+        const QByteArray flipped = FaultBytes::flipBits(adu, rule->bitErrorRate, randomOf(rule));
+        if (flipped != adu && !noisy.contains(rule))
+            noisy.append(rule);
+        adu = flipped;
+    }
+    quietNoise();
 
     for (const FaultRule *rule : firedOf(K::Delay))
         delayNs = rule->delay.sampleNs(randomOf(rule));

@@ -38,6 +38,9 @@ struct FaultContext {
     QByteArray request;             // the request ADU
     QByteArray response;            // the correct response ADU
     qint64 responseDelayNs = 0;     // the unit's response time when no distribution is set for it
+    // Since the previous request arrived on the same endpoint (the bus); -1: none before. Rules
+    // with byIntervalMs or a turnaround fire by it.
+    qint64 intervalNs = -1;
 
     // unit, function and addresses read from the request ADU: 01-04, 0F, 10 start and quantity;
     // 05, 06, 16 the address; 17 from the lower start to the higher end of read and write; 18
@@ -64,7 +67,11 @@ struct FaultContext {
 // PDU and unit, checksum and length recomputed); wrong transaction id and wrong checksum (the
 // bytes as sent); delay (the last delay rule that fired replaces the unit's response time);
 // junk before/after; duplicates; close midway (the first half of the bytes, then close);
-// trickle or chunks (trickle wins); close after.
+// trickle or chunks (trickle wins); close after. Noise acts on the request first (a request with a
+// flipped bit is lost: no answer, as a slave discards a frame that fails its checks) and on the
+// answer after the content changes (its bytes as sent, so a CRC or BCC then fails as it would).
+// A rule with byIntervalMs or a turnaround fires by FaultContext::intervalNs instead of its
+// probability.
 class FaultInjector
 {
 public:
@@ -84,6 +91,10 @@ public:
     // start, quantity and written values, and what the fault needs: a checksum, an MBAP header,
     // a read answer...).
     [[nodiscard]] static bool matches(const FaultRule &rule, const FaultContext &context);
+
+    // Whether a matching rule fires on this answer: by its probability, its byIntervalMs table or
+    // its turnaround, drawing from random.
+    [[nodiscard]] static bool fires(const FaultRule &rule, const FaultContext &context, SimRandom &random);
 
 private:
     [[nodiscard]] SimRandom &delayRandom(quint8 unit);

@@ -28,6 +28,7 @@ struct SimExchange {
     QByteArray responseAdu;     // reply.pdu framed like the request (same unit and transaction id)
     qint64 responseDelayNs = 0; // the unit's response delay
     qint64 receivedNs = 0;      // monotonicNowNs() when the request's last byte arrived
+    qint64 intervalNs = -1;     // since the previous request arrived on the same endpoint; -1: none
 };
 
 } // namespace mbscope

@@ -164,6 +164,7 @@ void Simulator::closeEndpoint(SimEndpoint *endpoint)
         return;
     endpoint->stop();
     m_trafficLinks.remove(endpoint);
+    m_lastArrivalNs.remove(endpoint);
     endpoint->deleteLater();
 }
 
@@ -222,6 +223,14 @@ std::optional<SimReply> Simulator::limitReply(const QByteArray &pdu, qint64 rece
     return std::nullopt;
 }
 
+qint64 Simulator::intervalSince(const SimEndpoint *endpoint, qint64 receivedNs)
+{
+    auto it = m_lastArrivalNs.find(endpoint);
+    const qint64 interval = it == m_lastArrivalNs.end() ? -1 : receivedNs - *it;
+    m_lastArrivalNs.insert(endpoint, receivedNs);
+    return interval;
+}
+
 bool Simulator::warmingUp(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView adu, qint64 receivedNs,
                           qint64 connectedNs)
 {
@@ -248,6 +257,7 @@ FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, Fra
             QStringLiteral("%1 checksum wrong: discarded").arg(DelimitedFramer::checksumName(framing.checksum)));
         return silence;
     }
+    const qint64 intervalNs = intervalSince(endpoint, receivedNs);
     if (warmingUp(endpoint, peer, -1, frame, receivedNs, connectedNs))
         return silence;
     const QByteArrayView body = framing.checksum == DelimitedChecksum::None ? frame : frame.first(std::max<qsizetype>(0, frame.size() - 1));
@@ -285,6 +295,7 @@ FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, Fra
         exchange.responseAdu = bytes;
         exchange.responseDelayNs = delayNs;
         exchange.receivedNs = receivedNs;
+        exchange.intervalNs = intervalNs;
         exchange.reply = SimReply::normal(bytes);
         plan = m_faultHook(exchange);
     } else {
@@ -341,6 +352,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         log(endpoint, peer, unitForLog, adu, {}, SimLogEntry::Verdict::Malformed, QStringLiteral("no function code: dropped"));
         return silence;
     }
+    const qint64 intervalNs = intervalSince(endpoint, receivedNs);
     if (warmingUp(endpoint, peer, parts.unitId, adu, receivedNs, connectedNs))
         return silence;
     for (Slot *slot : units)
@@ -415,6 +427,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         exchange.responseAdu = answer;
         exchange.responseDelayNs = delayNs;
         exchange.receivedNs = receivedNs;
+        exchange.intervalNs = intervalNs;
         plan = m_faultHook(exchange);
     } else {
         plan.chunks.append(ResponseChunk{answer, delayNs});

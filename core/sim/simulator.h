@@ -139,6 +139,9 @@ private:
     DeviceLimits m_limits;
     LineTable m_lineTable;
     qint64 m_lastTakenNs = 0; // arrival of the last request the device took (minGapMs)
+    // Arrival of the last request on each endpoint: the interval time-dependent faults go by.
+    QHash<const SimEndpoint *, qint64> m_lastArrivalNs;
+    [[nodiscard]] qint64 intervalSince(const SimEndpoint *endpoint, qint64 receivedNs);
     QList<SimEndpoint *> m_endpoints;
     FaultHook m_faultHook;
     TrafficLog *m_trafficLog = nullptr;

@@ -25,6 +25,16 @@ QStringList args(std::initializer_list<const char *> list)
     return out;
 }
 
+// A faults file without rules: scada-rs485's noisy bus made quiet, for tests of the protocol.
+QString quietFaults(const QTemporaryDir &dir)
+{
+    const QString path = dir.filePath(QStringLiteral("quiet.json"));
+    QFile file(path);
+    if (file.open(QIODevice::WriteOnly))
+        file.write(R"({"rules": []})");
+    return path;
+}
+
 QString mbpollPath()
 {
     return QStandardPaths::findExecutable(QStringLiteral("mbpoll"));
@@ -235,9 +245,13 @@ void tst_SimulateDevices::limitsFromProfile()
 // a read shows it; pymodbus cannot speak it, so the raw socket is the other client.
 void tst_SimulateDevices::delimitedOverTcp()
 {
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
     SimCli sim;
     QString why;
-    QVERIFY2(sim.start(args({"--profile", "scada-rs485", "--listen", "tcp://127.0.0.1:0?framing=delimited&start=24&end=23"}), 1, &why),
+    QVERIFY2(sim.start(args({"--profile", "scada-rs485", "--listen", "tcp://127.0.0.1:0?framing=delimited&start=24&end=23"})
+                           << QStringLiteral("--faults") << quietFaults(dir),
+                       1, &why),
              qPrintable(why));
     const QString target = QStringLiteral("tcp://127.0.0.1:%1?framing=delimited&start=24&end=23").arg(sim.port(0));
     const Run read = runProcess(mbscopePath(), {QStringLiteral("send"), QStringLiteral("--target"), target, QStringLiteral("--hex"),
@@ -276,9 +290,12 @@ void tst_SimulateDevices::delimitedOverSerial()
         QSKIP(qPrintable(why));
     PtyPair pty;
     QVERIFY2(pty.start(), qPrintable(pty.error()));
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
     SimCli sim;
     QVERIFY2(sim.start({QStringLiteral("--profile"), QStringLiteral("scada-rs485"), QStringLiteral("--listen"),
-                        QStringLiteral("rtu://%1?baud=9600&parity=N&framing=delimited&start=24&end=23").arg(pty.ourEnd())},
+                        QStringLiteral("rtu://%1?baud=9600&parity=N&framing=delimited&start=24&end=23").arg(pty.ourEnd()),
+                        QStringLiteral("--faults"), quietFaults(dir)},
                        1, &why),
              qPrintable(why));
     const Run read = runProcess(mbscopePath(), {QStringLiteral("send"), QStringLiteral("--target"),

@@ -200,7 +200,7 @@ inline void addErrorRows()
     // Fault rules in a profile
     row("fault kind unknown", faults(R"({"kind": "explode"})"), "faults.rules[0].kind",
         S("'explode' is not a fault: expected one of delay, drop, wrongChecksum, wrongTransactionId, wrongUnit, exception, "
-          "fewerRegisters, chunks, trickle, junk, duplicate, close"));
+          "fewerRegisters, chunks, trickle, junk, duplicate, close, noise"));
     row("fault probability", faults(R"({"kind": "drop", "probability": 1.5})"), "faults.rules[0].probability",
         S("1.5 is beyond 1"));
     row("fault addresses reversed", faults(R"({"kind": "drop", "addresses": [10, 5]})"), "faults.rules[0].addresses[1]",
@@ -236,6 +236,30 @@ inline void addErrorRows()
         S("give 'meets' or its older name 'addresses', not both"));
     row("fault meets reversed", faults(R"({"kind": "drop", "meets": [10, 5]})"), "faults.rules[0].meets[1]",
         S("5 is below the first address 10"));
+
+    // Time-dependent faults and noise
+    row("fault probability text", faults(R"({"kind": "drop", "probability": "often"})"), "faults.rules[0].probability",
+        S("expected a number 0-1, {\"byIntervalMs\": [[ms, p], ...]} or {\"turnaround\": DELAY}, found a string \"often\""));
+    row("fault probability both", faults(R"({"kind": "drop", "probability": {"byIntervalMs": [[1, 1]], "turnaround": 5}})"),
+        "faults.rules[0].probability", S("give one of 'byIntervalMs' or 'turnaround'"));
+    row("fault probability unknown key", faults(R"({"kind": "drop", "probability": {"byGapMs": []}})"),
+        "faults.rules[0].probability", S("unknown key 'byGapMs': expected one of byIntervalMs, turnaround"));
+    row("fault interval table empty", faults(R"({"kind": "drop", "probability": {"byIntervalMs": []}})"),
+        "faults.rules[0].probability.byIntervalMs", S("the list is empty: expected [interval ms, probability] points"));
+    row("fault interval point", faults(R"({"kind": "drop", "probability": {"byIntervalMs": [100]}})"),
+        "faults.rules[0].probability.byIntervalMs[0]", S("expected [interval ms, probability], found the number 100"));
+    row("fault interval chance", faults(R"({"kind": "drop", "probability": {"byIntervalMs": [[100, 1.5]]}})"),
+        "faults.rules[0].probability.byIntervalMs[0][1]", S("1.5 is beyond 1"));
+    row("fault intervals down", faults(R"({"kind": "drop", "probability": {"byIntervalMs": [[200, 0.5], [100, 0.2]]}})"),
+        "faults.rules[0].probability.byIntervalMs[1][0]", S("100 ms does not follow 200 ms: intervals go up"));
+    row("fault turnaround", faults(R"({"kind": "drop", "probability": {"turnaround": {"distribution": "poisson"}}})"),
+        "faults.rules[0].probability.turnaround.distribution",
+        S("'poisson' is not a distribution: expected fixed, uniform, normal or exponential"));
+    row("noise without rate", faults(R"({"kind": "noise"})"), "faults.rules[0]", S("'bitErrorRate' is missing"));
+    row("noise rate too high", faults(R"({"kind": "noise", "bitErrorRate": 0.6})"), "faults.rules[0].bitErrorRate",
+        S("0.6 is beyond 0.5"));
+    row("noise direction", faults(R"({"kind": "noise", "bitErrorRate": 0.001, "on": "line"})"), "faults.rules[0].on",
+        S("'line' is not a direction: expected both, request or answer"));
 
     // Unknown units and device limits
     row("unknownUnit word", R"({"name": "t", "unknownUnit": "answer", "units": [{"id": 1}]})", "unknownUnit",

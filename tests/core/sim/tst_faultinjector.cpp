@@ -231,6 +231,9 @@ private slots:
     void filters();
     void exactFilters_data();
     void exactFilters();
+    void byInterval();
+    void turnaround();
+    void noise();
     void dropProportion();
     void delayDistributions_data();
     void delayDistributions();
@@ -359,6 +362,98 @@ void TestFaultInjector::exactFilters()
     const QByteArray request = AduBuilder::rtu(pdu, 1);
     const FaultContext context = FaultContext::forRequest(Framing::Rtu, request, hex(kRtuResponse), kUnitDelayNs);
     QCOMPARE(FaultInjector::matches(*r, context), fires);
+}
+
+// Time-dependent firing: the chance by the interval since the previous request, interpolated.
+void TestFaultInjector::byInterval()
+{
+    FaultRule r = rule(FaultRule::Kind::Drop);
+    r.byIntervalMs = {{100, 1.0}, {200, 0.0}};
+    QCOMPARE(r.probabilityAt(50), 1.0);
+    QCOMPARE(r.probabilityAt(150), 0.5);
+    QCOMPARE(r.probabilityAt(175), 0.25);
+    QCOMPARE(r.probabilityAt(1000), 0.0);
+    QCOMPARE(r.probabilityAt(-1), 0.0); // the first request: no interval, as after a long pause
+    FaultInjector injector;
+    injector.setRules(FaultRuleSet{11, {r}});
+    FaultContext c = rtuContext();
+    int fired = 0;
+    constexpr int n = 2000;
+    for (qint64 ms : {100, 90, 250, -1}) {
+        c.intervalNs = ms < 0 ? -1 : ms * 1'000'000;
+        const bool expected = ms >= 0 && ms <= 100;
+        for (int i = 0; i < 20; ++i)
+            QCOMPARE(injector.plan(c).drop, expected);
+    }
+    c.intervalNs = 150'000'000;
+    for (int i = 0; i < n; ++i)
+        fired += injector.plan(c).drop ? 1 : 0;
+    const double sigma = std::sqrt(n * 0.25);
+    QVERIFY2(std::abs(fired - n / 2) <= 4 * sigma, qPrintable(QStringLiteral("%1 of %2 at 150 ms").arg(fired).arg(n)));
+}
+
+// A turnaround time drawn per request: the rule fires when the interval is shorter.
+void TestFaultInjector::turnaround()
+{
+    FaultRule r = rule(FaultRule::Kind::Drop);
+    r.hasTurnaround = true;
+    r.turnaround = DelaySpec::fixed(50);
+    FaultInjector injector;
+    injector.setRules(FaultRuleSet{5, {r}});
+    FaultContext c = rtuContext();
+    c.intervalNs = 40'000'000;
+    QVERIFY(injector.plan(c).drop);
+    c.intervalNs = 60'000'000;
+    QVERIFY(!injector.plan(c).drop);
+    c.intervalNs = -1;
+    QVERIFY(!injector.plan(c).drop);
+    // Exponential, mean 100 ms: at 100 ms the chance is e^-1.
+    r.turnaround.kind = DelaySpec::Kind::Exponential;
+    r.turnaround.meanMs = 100;
+    r.turnaround.minMs = 0;
+    r.turnaround.maxMs = -1;
+    injector.setRules(FaultRuleSet{5, {r}});
+    c.intervalNs = 100'000'000;
+    constexpr int n = 4000;
+    int fired = 0;
+    for (int i = 0; i < n; ++i)
+        fired += injector.plan(c).drop ? 1 : 0;
+    const double p = std::exp(-1.0);
+    QVERIFY2(std::abs(fired - n * p) <= 4 * std::sqrt(n * p * (1 - p)), qPrintable(QStringLiteral("%1 of %2").arg(fired).arg(n)));
+}
+
+// Line noise: bits of the answer flipped as sent (an RTU CRC then fails), requests lost.
+void TestFaultInjector::noise()
+{
+    FaultRule r = rule(FaultRule::Kind::Noise);
+    r.name = QStringLiteral("hiss");
+    r.noiseOn = FaultRule::NoiseOn::Answer;
+    r.bitErrorRate = 0;
+    FaultPlan plan = planWith(r, rtuContext());
+    QCOMPARE(hexText(plan.chunks.at(0).bytes), QString::fromLatin1(kRtuResponse));
+    QVERIFY(plan.faults.isEmpty()); // fired, changed nothing: not named
+    r.bitErrorRate = 0.5;
+    plan = planWith(r, rtuContext());
+    const QByteArray sent = plan.chunks.at(0).bytes;
+    QCOMPARE(sent.size(), hex(kRtuResponse).size());
+    QVERIFY(sent != hex(kRtuResponse));
+    QCOMPARE(plan.faults, QStringList{QStringLiteral("hiss")});
+    const AduParts parts = AduBuilder::parse(sent, Framing::Rtu);
+    QVERIFY(!parts.complete || !parts.checksumValid() || parts.pdu != AduBuilder::parse(hex(kRtuResponse), Framing::Rtu).pdu);
+    // On requests: with half the bits flipped, every request is lost.
+    r.noiseOn = FaultRule::NoiseOn::Request;
+    for (int i = 0; i < 10; ++i)
+        QVERIFY(planWith(r, rtuContext()).drop);
+    // A rate of 1e-4 over the 64 bits of an 8-byte request loses about 0.64 % of them.
+    r.bitErrorRate = 1e-4;
+    FaultInjector injector;
+    injector.setRules(FaultRuleSet{3, {r}});
+    constexpr int n = 20000;
+    int lost = 0;
+    for (int i = 0; i < n; ++i)
+        lost += injector.plan(rtuContext()).drop ? 1 : 0;
+    const double p = 1 - std::pow(1 - 1e-4, 64);
+    QVERIFY2(std::abs(lost - n * p) <= 4 * std::sqrt(n * p * (1 - p)), qPrintable(QStringLiteral("%1 of %2 lost").arg(lost).arg(n)));
 }
 
 void TestFaultInjector::dropProportion()
