@@ -24,6 +24,7 @@ constexpr KindName kKindNames[] = {
     {FaultRule::Kind::Junk, "junk"},
     {FaultRule::Kind::Duplicate, "duplicate"},
     {FaultRule::Kind::Close, "close"},
+    {FaultRule::Kind::Noise, "noise"},
 };
 
 } // namespace
@@ -44,6 +45,24 @@ std::optional<FaultRule::Kind> FaultRule::kindFromName(QStringView name)
             return k.kind;
     }
     return std::nullopt;
+}
+
+double FaultRule::probabilityAt(double intervalMs) const
+{
+    if (byIntervalMs.isEmpty())
+        return probability;
+    if (intervalMs < 0 || intervalMs >= byIntervalMs.last().first)
+        return byIntervalMs.last().second;
+    if (intervalMs <= byIntervalMs.first().first)
+        return byIntervalMs.first().second;
+    for (qsizetype i = 1; i < byIntervalMs.size(); ++i) {
+        const auto &[x1, p1] = byIntervalMs.at(i);
+        if (intervalMs <= x1) {
+            const auto &[x0, p0] = byIntervalMs.at(i - 1);
+            return x1 == x0 ? p1 : p0 + (p1 - p0) * (intervalMs - x0) / (x1 - x0);
+        }
+    }
+    return byIntervalMs.last().second;
 }
 
 QString FaultRule::kindNames()

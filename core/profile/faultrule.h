@@ -7,12 +7,13 @@
 #include <QtCore/QString>
 
 #include <optional>
+#include <utility>
 
 namespace mbscope {
 
 // One fault injection rule (see docs/profiles.md, "Fault injection"). A rule matches a request
-// by unit, function code and address range (each optional: absent matches everything), then
-// fires with its probability. The effects of all the rules that fire on one answer combine
+// by unit, function code, the address range it meets, and exactly by start address, quantity and
+// written values (each optional: absent matches everything), then fires with its probability. The effects of all the rules that fire on one answer combine
 // (FaultInjector::plan says in which order).
 struct FaultRule {
     enum class Kind : quint8 {
@@ -28,16 +29,30 @@ struct FaultRule {
         Junk,               // bytes before and/or after the answer
         Duplicate,          // the answer, then `copies` more after gapMs each
         Close,              // connection closed before, midway through, or after the answer
+        Noise,              // line noise: bits of the request (then lost) and of the answer flipped
     };
+    enum class NoiseOn : quint8 { Both, Request, Answer };
     enum class CloseWhen : quint8 { Before, Midway, After };
 
     Kind kind = Kind::Drop;
     QString name;                 // optional label for logs
     QList<quint8> units;          // empty: every unit
     QList<quint8> functions;      // empty: every function code
-    int firstAddress = -1;        // address range [firstAddress, lastAddress]; -1: any request
+    // "meets": the request's addresses overlap [firstAddress, lastAddress]; -1: any request.
+    int firstAddress = -1;
     int lastAddress = -1;
+    QList<int> starts;            // "start": the request's start address is one of these; empty: any
+    QList<int> quantities;        // "quantity": its quantity is one of these; empty: any
+    QList<quint16> values;        // "values": the values it writes, exactly (when hasValues)
+    bool hasValues = false;
     double probability = 1;
+    // Time-dependent firing (instead of probability): the chance by the interval since the
+    // previous request on the same endpoint, interpolated linearly between (ms, p) points and
+    // constant beyond them; or a turnaround time drawn for each request, the rule firing when the
+    // interval is shorter (a transceiver still switching from sending to receiving).
+    QList<std::pair<double, double>> byIntervalMs;
+    bool hasTurnaround = false;
+    DelaySpec turnaround;
 
     DelaySpec delay;              // Delay
     quint8 exceptionCode = 4;     // Exception (04: server device failure)
@@ -51,8 +66,13 @@ struct FaultRule {
     int junkAfterCount = 0;
     int copies = 1;               // Duplicate
     CloseWhen closeWhen = CloseWhen::After; // Close
+    double bitErrorRate = 0;      // Noise: each bit flips with this probability
+    NoiseOn noiseOn = NoiseOn::Both;
 
     [[nodiscard]] bool hasAddressRange() const { return firstAddress >= 0; }
+    [[nodiscard]] bool dependsOnTime() const { return !byIntervalMs.isEmpty() || hasTurnaround; }
+    // The byIntervalMs chance at an interval (negative: none before, the last point's chance).
+    [[nodiscard]] double probabilityAt(double intervalMs) const;
     [[nodiscard]] static QString kindName(Kind kind); // "wrongChecksum"
     [[nodiscard]] static std::optional<Kind> kindFromName(QStringView name);
     [[nodiscard]] static QString kindNames(); // "delay, drop, ..." for messages

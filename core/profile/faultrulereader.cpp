@@ -67,6 +67,157 @@ void readJunk(JsonReader &reader, const QJsonObject &o, const QString &path, con
         *count = int(*n);
 }
 
+// The keys every rule may have (how it matches, how often it fires), then those of its kind.
+QList<const char *> ruleKeys(std::initializer_list<const char *> specific)
+{
+    QList<const char *> keys = {"kind", "name", "units", "functions", "meets", "addresses", "start", "quantity",
+                                "values", "probability"};
+    keys.append(QList<const char *>(specific));
+    return keys;
+}
+
+// "meets": [first, last] or one address; "addresses" is its older name.
+void readMeets(JsonReader &reader, const QJsonObject &o, const QString &path, FaultRule *rule)
+{
+    const bool meets = o.contains(QLatin1String("meets"));
+    if (meets && o.contains(QLatin1String("addresses"))) {
+        reader.error(JsonReader::member(path, "addresses"),
+                     QStringLiteral("give 'meets' or its older name 'addresses', not both"));
+        return;
+    }
+    const char *key = meets ? "meets" : "addresses";
+    const QJsonValue addresses = o.value(QLatin1String(key));
+    const QString at = JsonReader::member(path, key);
+    if (addresses.isArray()) {
+        const QJsonArray a = addresses.toArray();
+        if (a.size() != 2) {
+            reader.error(at, QStringLiteral("expected [first, last] (two addresses), found %1 values").arg(a.size()));
+        } else {
+            const auto first = reader.integerValue(a.at(0), JsonReader::element(at, 0), 0, 65535);
+            const auto last = reader.integerValue(a.at(1), JsonReader::element(at, 1), 0, 65535);
+            if (first && last && *last < *first)
+                reader.error(JsonReader::element(at, 1), QStringLiteral("%1 is below the first address %2").arg(*last).arg(*first));
+            else if (first && last) {
+                rule->firstAddress = int(*first);
+                rule->lastAddress = int(*last);
+            }
+        }
+    } else if (!addresses.isUndefined()) {
+        if (const auto n = reader.integerValue(addresses, at, 0, 65535)) {
+            rule->firstAddress = int(*n);
+            rule->lastAddress = int(*n);
+        }
+    }
+}
+
+// A list of whole numbers in [min, max], or one: "start": 368 or "start": [368, "0x0171"].
+QList<int> readIntList(JsonReader &reader, const QJsonObject &o, const QString &path, const char *key, qint64 min,
+                       qint64 max)
+{
+    QList<int> out;
+    const QJsonValue v = o.value(QLatin1String(key));
+    const QString at = JsonReader::member(path, key);
+    if (v.isUndefined())
+        return out;
+    if (!v.isArray()) {
+        if (const auto n = reader.integerValue(v, at, min, max))
+            out.append(int(*n));
+        return out;
+    }
+    const QJsonArray a = v.toArray();
+    if (a.isEmpty())
+        reader.error(at, QStringLiteral("the list is empty: leave '%1' out to match every value").arg(QLatin1String(key)));
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        if (const auto n = reader.integerValue(a.at(i), JsonReader::element(at, i), min, max))
+            out.append(int(*n));
+    }
+    return out;
+}
+
+// "values": [1, 0, 1] (the values a write carries, in order; coils as 0 and 1).
+void readValues(JsonReader &reader, const QJsonObject &o, const QString &path, FaultRule *rule)
+{
+    const QJsonValue v = o.value(QLatin1String("values"));
+    if (v.isUndefined())
+        return;
+    const QString at = JsonReader::member(path, "values");
+    if (!v.isArray()) {
+        reader.error(at, QStringLiteral("expected a list of the values written, such as [1, 0] or [\"0x1234\"], found %1")
+                             .arg(JsonReader::describe(v)));
+        return;
+    }
+    const QJsonArray a = v.toArray();
+    if (a.isEmpty() || a.size() > 123) {
+        reader.error(at, QStringLiteral("expected 1 to 123 values (a write carries at most 123 registers), found %1").arg(a.size()));
+        return;
+    }
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        if (const auto n = reader.integerValue(a.at(i), JsonReader::element(at, i), 0, 65535))
+            rule->values.append(quint16(*n));
+    }
+    rule->hasValues = true;
+}
+
+// "probability": 0.1, {"byIntervalMs": [[100, 0.5], [400, 0.2]]} or {"turnaround": DELAY}.
+void readProbability(JsonReader &reader, const QJsonObject &o, const QString &path, FaultRule *rule)
+{
+    const QJsonValue v = o.value(QLatin1String("probability"));
+    const QString at = JsonReader::member(path, "probability");
+    if (v.isUndefined())
+        return;
+    if (!v.isObject()) {
+        if (v.isDouble()) {
+            rule->probability = reader.numberValue(v, at, 0, 1).value_or(1);
+        } else {
+            reader.error(at, QStringLiteral("expected a number 0-1, {\"byIntervalMs\": [[ms, p], ...]} or "
+                                            "{\"turnaround\": DELAY}, found %1")
+                                 .arg(JsonReader::describe(v)));
+        }
+        return;
+    }
+    const QJsonObject p = v.toObject();
+    if (!reader.checkKeys(p, at, {"byIntervalMs", "turnaround"}))
+        return;
+    if (p.contains(QLatin1String("byIntervalMs")) == p.contains(QLatin1String("turnaround"))) {
+        reader.error(at, QStringLiteral("give one of 'byIntervalMs' or 'turnaround'"));
+        return;
+    }
+    if (p.contains(QLatin1String("turnaround"))) {
+        if (const auto d = FaultRuleReader::readDelay(reader, p.value(QLatin1String("turnaround")),
+                                                      JsonReader::member(at, "turnaround"))) {
+            rule->turnaround = *d;
+            rule->hasTurnaround = true;
+        }
+        return;
+    }
+    const QString tableAt = JsonReader::member(at, "byIntervalMs");
+    const auto table = reader.array(p, at, "byIntervalMs");
+    if (!table)
+        return;
+    if (table->isEmpty())
+        reader.error(tableAt, QStringLiteral("the list is empty: expected [interval ms, probability] points"));
+    double previous = -1;
+    for (qsizetype i = 0; i < table->size(); ++i) {
+        const QString pointAt = JsonReader::element(tableAt, i);
+        const QJsonArray point = table->at(i).toArray();
+        if (!table->at(i).isArray() || point.size() != 2) {
+            reader.error(pointAt, QStringLiteral("expected [interval ms, probability], found %1").arg(JsonReader::describe(table->at(i))));
+            continue;
+        }
+        const auto ms = reader.numberValue(point.at(0), JsonReader::element(pointAt, 0), 0, kMaxDelayMs);
+        const auto chance = reader.numberValue(point.at(1), JsonReader::element(pointAt, 1), 0, 1);
+        if (!ms || !chance)
+            continue;
+        if (*ms <= previous) {
+            reader.error(JsonReader::element(pointAt, 0), QStringLiteral("%1 ms does not follow %2 ms: intervals go up")
+                                                              .arg(JsonReader::numberText(*ms), JsonReader::numberText(previous)));
+            continue;
+        }
+        previous = *ms;
+        rule->byIntervalMs.append({*ms, *chance});
+    }
+}
+
 } // namespace
 
 std::optional<DelaySpec> FaultRuleReader::readDelay(JsonReader &reader, const QJsonValue &value, const QString &path)
@@ -162,7 +313,7 @@ std::optional<FaultRule> FaultRuleReader::readRule(JsonReader &reader, const QJs
     using K = FaultRule::Kind;
     switch (*kind) {
     case K::Delay:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "delay"});
+        reader.checkKeys(*o, path, ruleKeys({"delay"}));
         if (reader.require(*o, path, "delay")) {
             if (const auto d = readDelay(reader, o->value(QLatin1String("delay")), JsonReader::member(path, "delay")))
                 rule.delay = *d;
@@ -170,45 +321,60 @@ std::optional<FaultRule> FaultRuleReader::readRule(JsonReader &reader, const QJs
         break;
     case K::Drop:
     case K::WrongChecksum:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability"});
+        reader.checkKeys(*o, path, ruleKeys({}));
         break;
     case K::WrongTransactionId:
     case K::WrongUnit:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "delta"});
+        reader.checkKeys(*o, path, ruleKeys({"delta"}));
         rule.delta = int(reader.integer(*o, path, "delta", 1, *kind == K::WrongUnit ? 255 : 65535).value_or(1));
         break;
     case K::Exception:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "code"});
+        reader.checkKeys(*o, path, ruleKeys({"code"}));
         rule.exceptionCode = quint8(reader.integer(*o, path, "code", 1, 255).value_or(4));
         break;
     case K::FewerRegisters:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "fewer"});
+        reader.checkKeys(*o, path, ruleKeys({"fewer"}));
         rule.fewer = int(reader.integer(*o, path, "fewer", 1, 125).value_or(1));
         break;
     case K::Chunks:
-        reader.checkKeys(*o, path,
-                         {"kind", "name", "units", "functions", "addresses", "probability", "chunkBytes", "gapMs"});
+        reader.checkKeys(*o, path, ruleKeys({"chunkBytes", "gapMs"}));
         rule.chunkBytes = int(reader.integer(*o, path, "chunkBytes", 1, 65535).value_or(4));
         rule.gapMs = reader.number(*o, path, "gapMs", 0, kMaxDelayMs).value_or(10);
         break;
     case K::Trickle:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "gapMs"});
+        reader.checkKeys(*o, path, ruleKeys({"gapMs"}));
         rule.gapMs = reader.number(*o, path, "gapMs", 0, kMaxDelayMs).value_or(20);
         break;
     case K::Junk:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "before", "after"});
+        reader.checkKeys(*o, path, ruleKeys({"before", "after"}));
         readJunk(reader, *o, path, "before", &rule.junkBefore, &rule.junkBeforeCount);
         readJunk(reader, *o, path, "after", &rule.junkAfter, &rule.junkAfterCount);
         if (!o->contains(QLatin1String("before")) && !o->contains(QLatin1String("after")))
             reader.error(path, QStringLiteral("junk needs 'before' or 'after' (a byte count or hex bytes)"));
         break;
     case K::Duplicate:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "copies", "gapMs"});
+        reader.checkKeys(*o, path, ruleKeys({"copies", "gapMs"}));
         rule.copies = int(reader.integer(*o, path, "copies", 1, 16).value_or(1));
         rule.gapMs = reader.number(*o, path, "gapMs", 0, kMaxDelayMs).value_or(0);
         break;
+    case K::Noise: {
+        reader.checkKeys(*o, path, ruleKeys({"bitErrorRate", "on"}));
+        if (reader.require(*o, path, "bitErrorRate"))
+            rule.bitErrorRate = reader.number(*o, path, "bitErrorRate", 0, 0.5).value_or(0);
+        const QString on = reader.string(*o, path, "on").value_or(QStringLiteral("both"));
+        if (on == QLatin1String("both"))
+            rule.noiseOn = FaultRule::NoiseOn::Both;
+        else if (on == QLatin1String("request"))
+            rule.noiseOn = FaultRule::NoiseOn::Request;
+        else if (on == QLatin1String("answer"))
+            rule.noiseOn = FaultRule::NoiseOn::Answer;
+        else
+            reader.error(JsonReader::member(path, "on"),
+                         QStringLiteral("'%1' is not a direction: expected both, request or answer").arg(on));
+        break;
+    }
     case K::Close: {
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "when"});
+        reader.checkKeys(*o, path, ruleKeys({"when"}));
         const QString when = reader.string(*o, path, "when").value_or(QStringLiteral("after"));
         if (when == QLatin1String("before"))
             rule.closeWhen = FaultRule::CloseWhen::Before;
@@ -226,30 +392,12 @@ std::optional<FaultRule> FaultRuleReader::readRule(JsonReader &reader, const QJs
     rule.name = reader.string(*o, path, "name").value_or(QString());
     rule.units = readByteList(reader, *o, path, "units", 0);
     rule.functions = readByteList(reader, *o, path, "functions", 1);
-    rule.probability = reader.number(*o, path, "probability", 0, 1).value_or(1);
+    readProbability(reader, *o, path, &rule);
 
-    const QJsonValue addresses = o->value(QLatin1String("addresses"));
-    const QString at = JsonReader::member(path, "addresses");
-    if (addresses.isArray()) {
-        const QJsonArray a = addresses.toArray();
-        if (a.size() != 2) {
-            reader.error(at, QStringLiteral("expected [first, last] (two addresses), found %1 values").arg(a.size()));
-        } else {
-            const auto first = reader.integerValue(a.at(0), JsonReader::element(at, 0), 0, 65535);
-            const auto last = reader.integerValue(a.at(1), JsonReader::element(at, 1), 0, 65535);
-            if (first && last && *last < *first)
-                reader.error(JsonReader::element(at, 1), QStringLiteral("%1 is below the first address %2").arg(*last).arg(*first));
-            else if (first && last) {
-                rule.firstAddress = int(*first);
-                rule.lastAddress = int(*last);
-            }
-        }
-    } else if (!addresses.isUndefined()) {
-        if (const auto n = reader.integerValue(addresses, at, 0, 65535)) {
-            rule.firstAddress = int(*n);
-            rule.lastAddress = int(*n);
-        }
-    }
+    readMeets(reader, *o, path, &rule);
+    rule.starts = readIntList(reader, *o, path, "start", 0, 65535);
+    rule.quantities = readIntList(reader, *o, path, "quantity", 0, 65535);
+    readValues(reader, *o, path, &rule);
 
     if (reader.problemCount() != before)
         return std::nullopt;

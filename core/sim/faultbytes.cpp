@@ -1,5 +1,7 @@
 #include "sim/faultbytes.h"
 
+#include "sim/simrandom.h"
+
 #include "protocol/adubuilder.h"
 
 #include <algorithm>
@@ -149,6 +151,20 @@ QByteArray FaultBytes::fewerRegisters(QByteArrayView adu, Framing framing, int f
     if (pdu.isEmpty())
         return {};
     return rewrap(adu, framing, pdu, parts.unitId);
+}
+
+QByteArray FaultBytes::flipBits(QByteArrayView bytes, double bitErrorRate, SimRandom &random)
+{
+    QByteArray out = bytes.toByteArray();
+    if (bitErrorRate <= 0)
+        return out;
+    for (qsizetype i = 0; i < out.size(); ++i) {
+        for (int bit = 0; bit < 8; ++bit) {
+            if (random.chance(bitErrorRate))
+                out[i] = char(quint8(out.at(i)) ^ (1u << bit));
+        }
+    }
+    return out;
 }
 
 } // namespace mbscope

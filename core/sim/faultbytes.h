@@ -7,6 +7,8 @@
 
 namespace mbscope {
 
+class SimRandom;
+
 // The exact wire bytes of the faults that change an answer's content. Each alters only what the
 // fault names: the other fields stay consistent (lengths, byte counts, checksums recomputed), so
 // a client sees exactly one thing wrong. Every function returns an empty array when the fault
@@ -32,6 +34,9 @@ public:
     [[nodiscard]] static QByteArray fewerRegistersPdu(QByteArrayView pdu, int fewer);
 
     // The ADU rebuilt around a new PDU and unit, with the transaction and protocol id of adu.
+    // Line noise: each bit of bytes flipped with probability bitErrorRate, drawn from random (as
+    // sent: a CRC, LRC or BCC is not recomputed, so it fails as it would on a noisy line).
+    [[nodiscard]] static QByteArray flipBits(QByteArrayView bytes, double bitErrorRate, SimRandom &random);
     [[nodiscard]] static QByteArray rewrap(QByteArrayView adu, Framing framing, QByteArrayView pdu, quint8 unit);
 };
 

@@ -19,13 +19,28 @@ struct SimExchange;
 // What the fault injector is told about one answer.
 struct FaultContext {
     Framing framing = Framing::Tcp; // Rtu for rtu://, rtu-tcp and rtu-udp; Tcp for tcp and tls; Udp; Ascii
+    // framing=delimited: the request and answer are a delimited protocol's frames, not Modbus; rules
+    // that change Modbus fields (exception, fewer registers, wrong unit, transaction id or
+    // checksum) do not apply, and function and addresses stay unset.
+    bool delimited = false;
     quint8 unit = 0;                // the unit that answers (per-unit delays and rules follow it)
     quint8 function = 0;            // the request's function code
     int firstAddress = -1;          // the addresses the request touches; -1: none (07, 11, 2B...)
     int lastAddress = -1;
+    // The request's fields as written, for exact matching: the start address (01-06, 0F, 10, 16;
+    // 17 the read start; 18 the FIFO pointer), the quantity (01-04, 0F, 10; 17 the read
+    // quantity; 05 and 06 one), and the values written (05: 1 for FF00, 0 for 0000; 06 the
+    // register; 0F the bits as 0 and 1; 10 and 17 the registers; 16 the AND and OR masks).
+    int start = -1;
+    int quantity = -1;
+    QList<quint16> written;
+    bool writes = false;
     QByteArray request;             // the request ADU
     QByteArray response;            // the correct response ADU
     qint64 responseDelayNs = 0;     // the unit's response time when no distribution is set for it
+    // Since the previous request arrived on the same endpoint (the bus); -1: none before. Rules
+    // with byIntervalMs or a turnaround fire by it.
+    qint64 intervalNs = -1;
 
     // unit, function and addresses read from the request ADU: 01-04, 0F, 10 start and quantity;
     // 05, 06, 16 the address; 17 from the lower start to the higher end of read and write; 18
@@ -52,7 +67,11 @@ struct FaultContext {
 // PDU and unit, checksum and length recomputed); wrong transaction id and wrong checksum (the
 // bytes as sent); delay (the last delay rule that fired replaces the unit's response time);
 // junk before/after; duplicates; close midway (the first half of the bytes, then close);
-// trickle or chunks (trickle wins); close after.
+// trickle or chunks (trickle wins); close after. Noise acts on the request first (a request with a
+// flipped bit is lost: no answer, as a slave discards a frame that fails its checks) and on the
+// answer after the content changes (its bytes as sent, so a CRC or BCC then fails as it would).
+// A rule with byIntervalMs or a turnaround fires by FaultContext::intervalNs instead of its
+// probability.
 class FaultInjector
 {
 public:
@@ -68,9 +87,14 @@ public:
 
     [[nodiscard]] FaultPlan plan(const FaultContext &context);
 
-    // Whether rule could apply to this answer (unit, function, addresses, and what the fault
-    // needs: a checksum, an MBAP header, a read answer...).
+    // Whether rule could apply to this answer (unit, function, the addresses it meets, its exact
+    // start, quantity and written values, and what the fault needs: a checksum, an MBAP header,
+    // a read answer...).
     [[nodiscard]] static bool matches(const FaultRule &rule, const FaultContext &context);
+
+    // Whether a matching rule fires on this answer: by its probability, its byIntervalMs table or
+    // its turnaround, drawing from random.
+    [[nodiscard]] static bool fires(const FaultRule &rule, const FaultContext &context, SimRandom &random);
 
 private:
     [[nodiscard]] SimRandom &delayRandom(quint8 unit);

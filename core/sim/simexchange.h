@@ -21,12 +21,14 @@ struct SimExchange {
     // follows it. unitId when no unit answers (exception 0B).
     quint8 routedUnitId = 0;
     quint16 transactionId = 0;  // MBAP framings
+    bool delimited = false;     // a delimited protocol's frame (LineTable), not Modbus
     QByteArray requestAdu;      // the request as received
     QByteArray requestPdu;      // function code first
     SimReply reply;             // the unit's answer (reply.pdu: the response PDU)
     QByteArray responseAdu;     // reply.pdu framed like the request (same unit and transaction id)
     qint64 responseDelayNs = 0; // the unit's response delay
     qint64 receivedNs = 0;      // monotonicNowNs() when the request's last byte arrived
+    qint64 intervalNs = -1;     // since the previous request arrived on the same endpoint; -1: none
 };
 
 } // namespace mbscope

@@ -5050,28 +5050,33 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Line noise (flipped bits)</source>
+        <translation>Derau saluran (bit terbalik)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>&amp;Fault:</source>
         <translation>&amp;Gangguan:</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+354"/>
+        <location line="+372"/>
         <source>any unit</source>
         <translation>unit apa pun</translation>
     </message>
     <message>
-        <location line="-353"/>
+        <location line="-371"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+347"/>
+        <location line="+365"/>
         <source>any function</source>
         <translation>fungsi apa pun</translation>
     </message>
     <message>
-        <location line="-346"/>
+        <location line="-364"/>
         <source>Function &amp;code:</source>
         <translation>&amp;Kode fungsi:</translation>
     </message>
@@ -5236,6 +5241,16 @@ Klik kanan untuk mengganti format</translation>
         <translation>Tutup:</translation>
     </message>
     <message>
+        <location line="+7"/>
+        <source>Each bit of a request or answer flips with this probability: a request hit is lost, an answer hit fails its CRC or LRC.</source>
+        <translation>Setiap bit permintaan atau jawaban terbalik dengan peluang ini: permintaan yang terkena hilang, jawaban yang terkena gagal CRC atau LRC-nya.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bit error rate:</source>
+        <translation>Laju galat bit:</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>&amp;Add rule</source>
         <translation>&amp;Tambah aturan</translation>
@@ -5276,7 +5291,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Mengganti aturan dengan isi berkas gangguan (format mbscope simulate --faults).</translation>
     </message>
     <message>
-        <location line="+98"/>
+        <location line="+100"/>
         <source>Not added: a uniform delay needs &apos;At most&apos; (%1 ms) at or above &apos;At least&apos; (%2 ms).</source>
         <translation>Tidak ditambahkan: tunda seragam memerlukan &apos;Maksimal&apos; (%1 ms) sama dengan atau di atas &apos;Minimal&apos; (%2 ms).</translation>
     </message>
@@ -5415,6 +5430,21 @@ Klik kanan untuk mengganti format</translation>
         <translation>tutup sesudah jawaban</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>line noise, bit error rate %1</source>
+        <translation>derau saluran, laju galat bit %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line noise on requests, bit error rate %1</source>
+        <translation>derau saluran pada permintaan, laju galat bit %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>line noise on answers, bit error rate %1</source>
+        <translation>derau saluran pada jawaban, laju galat bit %1</translation>
+    </message>
+    <message>
         <location line="+10"/>
         <source>unit %1</source>
         <translation>unit %1</translation>
@@ -5435,12 +5465,37 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1, alamat %2 sampai %3</translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>%1, starting at %2</source>
+        <translation>%1, mulai di %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1, quantity %2</source>
+        <translation>%1, jumlah %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1, writing %2</source>
+        <translation>%1, menulis %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 (when the interval is under a turnaround of %2 ms on average)</source>
+        <translation>%1 (bila selang di bawah waktu balik rata-rata %2 ms)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 (probability by interval, %2)</source>
+        <translation>%1 (peluang menurut selang, %2)</translation>
+    </message>
+    <message>
         <location line="+2"/>
         <source>%1 (probability %2)</source>
         <translation>%1 (peluang %2)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -71,6 +71,7 @@ void SimFaultForm::buildForm()
     m_kind->addItem(tr("Junk bytes around the answer"), int(FaultRule::Kind::Junk));
     m_kind->addItem(tr("The answer more than once"), int(FaultRule::Kind::Duplicate));
     m_kind->addItem(tr("Close the connection"), int(FaultRule::Kind::Close));
+    m_kind->addItem(tr("Line noise (flipped bits)"), int(FaultRule::Kind::Noise));
     m_form->addRow(tr("&Fault:"), m_kind);
 
     m_unit = new QSpinBox(formBox);
@@ -173,6 +174,15 @@ void SimFaultForm::buildForm()
     m_closeWhen->addItem(tr("after the answer"), int(FaultRule::CloseWhen::After));
     m_closeWhen->setCurrentIndex(2);
     m_form->addRow(tr("Close:"), m_closeWhen);
+    m_bitErrorRate = new QDoubleSpinBox(formBox);
+    m_bitErrorRate->setObjectName(QStringLiteral("faultBitErrorRate"));
+    m_bitErrorRate->setRange(0, 0.5);
+    m_bitErrorRate->setDecimals(6);
+    m_bitErrorRate->setSingleStep(0.0001);
+    m_bitErrorRate->setValue(0.0001);
+    m_bitErrorRate->setToolTip(tr("Each bit of a request or answer flips with this probability: a request hit is lost, "
+                                  "an answer hit fails its CRC or LRC."));
+    m_form->addRow(tr("Bit error rate:"), m_bitErrorRate);
 
     m_add = new QPushButton(tr("&Add rule"), formBox);
     m_add->setObjectName(QStringLiteral("faultAdd"));
@@ -236,6 +246,7 @@ void SimFaultForm::updateFieldVisibility()
     m_form->setRowVisible(m_junkBefore, kind == FaultRule::Kind::Junk);
     m_form->setRowVisible(m_junkAfter, kind == FaultRule::Kind::Junk);
     m_form->setRowVisible(m_copies, kind == FaultRule::Kind::Duplicate);
+    m_form->setRowVisible(m_bitErrorRate, kind == FaultRule::Kind::Noise);
     m_form->setRowVisible(m_closeWhen, kind == FaultRule::Kind::Close);
 }
 
@@ -284,6 +295,7 @@ FaultRule SimFaultForm::formRule() const
         rule.gapMs = m_gapMs->value();
         break;
     case FaultRule::Kind::Close: rule.closeWhen = FaultRule::CloseWhen(m_closeWhen->currentData().toInt()); break;
+    case FaultRule::Kind::Noise: rule.bitErrorRate = m_bitErrorRate->value(); break;
     default: break;
     }
     return rule;
@@ -423,6 +435,13 @@ QString SimFaultForm::describe(const FaultRule &rule)
         case FaultRule::CloseWhen::After: what = tr("close after the answer"); break;
         }
         break;
+    case FaultRule::Kind::Noise:
+        switch (rule.noiseOn) {
+        case FaultRule::NoiseOn::Both: what = tr("line noise, bit error rate %1").arg(rule.bitErrorRate); break;
+        case FaultRule::NoiseOn::Request: what = tr("line noise on requests, bit error rate %1").arg(rule.bitErrorRate); break;
+        case FaultRule::NoiseOn::Answer: what = tr("line noise on answers, bit error rate %1").arg(rule.bitErrorRate); break;
+        }
+        break;
     }
     QStringList units;
     for (quint8 unit : rule.units)
@@ -435,8 +454,32 @@ QString SimFaultForm::describe(const FaultRule &rule)
     QString text = tr("%1 for %2, %3").arg(what, unitText, functionText);
     if (rule.hasAddressRange())
         text = tr("%1, addresses %2 to %3").arg(text).arg(rule.firstAddress).arg(rule.lastAddress);
-    if (rule.probability < 1)
+    const auto numbers = [](const QList<int> &list) {
+        QStringList out;
+        for (int n : list)
+            out << QString::number(n);
+        return out.join(QStringLiteral(", "));
+    };
+    if (!rule.starts.isEmpty())
+        text = tr("%1, starting at %2").arg(text, numbers(rule.starts));
+    if (!rule.quantities.isEmpty())
+        text = tr("%1, quantity %2").arg(text, numbers(rule.quantities));
+    if (rule.hasValues) {
+        QList<int> values;
+        for (quint16 v : rule.values)
+            values << v;
+        text = tr("%1, writing %2").arg(text, numbers(values));
+    }
+    if (rule.hasTurnaround) {
+        text = tr("%1 (when the interval is under a turnaround of %2 ms on average)").arg(text, ms(rule.turnaround.meanMs > 0 ? rule.turnaround.meanMs : rule.turnaround.ms));
+    } else if (!rule.byIntervalMs.isEmpty()) {
+        QStringList points;
+        for (const auto &[intervalMs, chance] : rule.byIntervalMs)
+            points << QStringLiteral("%1 ms: %2").arg(ms(intervalMs)).arg(chance);
+        text = tr("%1 (probability by interval, %2)").arg(text, points.join(QStringLiteral(", ")));
+    } else if (rule.probability < 1) {
         text = tr("%1 (probability %2)").arg(text).arg(rule.probability);
+    }
     if (!rule.name.isEmpty())
         text = tr("%1: %2").arg(rule.name, text);
     return text;

@@ -78,6 +78,7 @@ private:
     QSpinBox *m_junkBefore = nullptr;
     QSpinBox *m_junkAfter = nullptr;
     QSpinBox *m_copies = nullptr;
+    QDoubleSpinBox *m_bitErrorRate = nullptr;
     QComboBox *m_closeWhen = nullptr;
     QPushButton *m_add = nullptr;
     QListWidget *m_list = nullptr;

@@ -154,7 +154,8 @@ void TestSimulatorEndpoints::listenErrors_data()
     QTest::newRow("tls missing file") << QStringLiteral("tls://127.0.0.1:0?cert=/nonexistent.pem&key=/nonexistent.key")
                                       << QStringLiteral("cannot read the certificate file");
     QTest::newRow("serial missing") << QStringLiteral("rtu:///nonexistent/ttyX") << QStringLiteral("cannot open /nonexistent/ttyX");
-    QTest::newRow("delimited") << QStringLiteral("tcp://127.0.0.1:0?framing=delimited") << QStringLiteral("Modbus framings only");
+    QTest::newRow("delimited") << QStringLiteral("tcp://127.0.0.1:0?framing=delimited")
+                               << QStringLiteral("framing=delimited needs a profile with a 'delimited' table");
 }
 
 void TestSimulatorEndpoints::listenErrors()

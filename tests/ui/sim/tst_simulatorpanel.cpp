@@ -26,6 +26,7 @@
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QDoubleSpinBox>
+#include <QtWidgets/QListWidget>
 #include <QtWidgets/QMenuBar>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
@@ -161,6 +162,7 @@ private Q_SLOTS:
     void faultSwitchedWhileClientPolls();
     void faultsFileReplacesRules();
     void everyFaultKindWithItsParameters();
+    void profilesWithIssue15Keys();
     void editedValueIsReadByClient();
     void clientWriteShowsInPanel();
     void generatorValuesArriveInBatches();
@@ -309,6 +311,38 @@ void TestSimulatorPanel::faultsFileReplacesRules()
     QVERIFY2(panel.faultForm()->message().contains(QLatin1String("rules[0].kind")), qPrintable(panel.faultForm()->message()));
     QCOMPARE(host->faultRules().rules.size(), 1);
     QCOMPARE(int(client.classify(client.exchange(readSettings()))), int(Seen::Exception06));
+}
+
+// Issue 15: profiles with exact rules, an unknown-unit policy, time-dependent faults, noise and a
+// delimited protocol load in the panel, their rules are listed as they are, and a delimited
+// endpoint answers.
+void TestSimulatorPanel::profilesWithIssue15Keys()
+{
+    SimulatorPanel panel;
+    SimulatorHost *libmodbus = panel.startSimulator(QStringLiteral("libmodbus-unit-test"), QStringLiteral("tcp://127.0.0.1:0"));
+    QVERIFY2(libmodbus, qPrintable(panel.message()));
+    const QList<FaultRule> rules = libmodbus->faultRules().rules;
+    QCOMPARE(rules.size(), 5);
+    QVERIFY2(SimFaultForm::describe(rules.at(0)).contains(QLatin1String("starting at 368")), qPrintable(SimFaultForm::describe(rules.at(0))));
+    QVERIFY2(SimFaultForm::describe(rules.at(4)).contains(QLatin1String("quantity 2")), qPrintable(SimFaultForm::describe(rules.at(4))));
+    auto *list = panel.faultForm()->findChild<QListWidget *>(QStringLiteral("faultRules"));
+    QVERIFY(list);
+
+    SimulatorHost *scada = panel.startSimulator(QStringLiteral("scada-rs485"),
+                                                QStringLiteral("tcp://127.0.0.1:0?framing=delimited&start=24&end=23"));
+    QVERIFY2(scada, qPrintable(panel.message()));
+    const QList<FaultRule> bus = scada->faultRules().rules;
+    QCOMPARE(bus.size(), 2);
+    QVERIFY2(SimFaultForm::describe(bus.at(0)).contains(QLatin1String("turnaround of 100 ms")), qPrintable(SimFaultForm::describe(bus.at(0))));
+    QVERIFY2(SimFaultForm::describe(bus.at(1)).contains(QLatin1String("line noise on requests")), qPrintable(SimFaultForm::describe(bus.at(1))));
+    scada->setFaultRules({}); // a quiet bus, for one sure answer
+    QTcpSocket socket;
+    socket.connectToHost(QHostAddress::LocalHost, scada->boundUrls().first().port);
+    QVERIFY(socket.waitForConnected(5000));
+    socket.write("$01R#");
+    QByteArray answer;
+    QTRY_VERIFY_WITH_TIMEOUT((answer += socket.readAll()).endsWith('#'), 5000);
+    QCOMPARE(answer, QByteArray("$01 293 295 363 353 342 335 329 347 0 1 0 0 0 1 0 0 #"));
 }
 
 void TestSimulatorPanel::editedValueIsReadByClient()
