@@ -14,6 +14,43 @@ QJsonValue byteList(const QList<quint8> &values)
     return out;
 }
 
+QJsonValue intList(const QList<int> &values)
+{
+    QJsonArray out;
+    for (const int v : values)
+        out.append(v);
+    return out;
+}
+
+QJsonObject delayJson(const DelaySpec &d);
+
+// 0.25, {"byIntervalMs": [[ms, p], ...]} or {"turnaround": DELAY}.
+QJsonValue probabilityJson(const FaultRule &rule)
+{
+    if (rule.hasTurnaround)
+        return QJsonObject{{QStringLiteral("turnaround"), delayJson(rule.turnaround)}};
+    if (!rule.byIntervalMs.isEmpty()) {
+        QJsonArray table;
+        for (const auto &[ms, chance] : rule.byIntervalMs)
+            table.append(QJsonArray{ms, chance});
+        return QJsonObject{{QStringLiteral("byIntervalMs"), table}};
+    }
+    return rule.probability;
+}
+
+QString noiseOnName(FaultRule::NoiseOn on)
+{
+    switch (on) {
+    case FaultRule::NoiseOn::Request:
+        return QStringLiteral("request");
+    case FaultRule::NoiseOn::Answer:
+        return QStringLiteral("answer");
+    case FaultRule::NoiseOn::Both:
+        break;
+    }
+    return QStringLiteral("both");
+}
+
 QJsonObject delayJson(const DelaySpec &d)
 {
     QJsonObject o{{QStringLiteral("distribution"), DelaySpec::kindName(d.kind)}};
@@ -73,9 +110,19 @@ QJsonObject FaultRuleWriter::toJson(const FaultRule &rule)
     if (!rule.functions.isEmpty())
         o.insert(QStringLiteral("functions"), byteList(rule.functions));
     if (rule.hasAddressRange())
-        o.insert(QStringLiteral("addresses"), QJsonArray{rule.firstAddress, rule.lastAddress});
-    if (rule.probability != 1)
-        o.insert(QStringLiteral("probability"), rule.probability);
+        o.insert(QStringLiteral("meets"), QJsonArray{rule.firstAddress, rule.lastAddress});
+    if (!rule.starts.isEmpty())
+        o.insert(QStringLiteral("start"), intList(rule.starts));
+    if (!rule.quantities.isEmpty())
+        o.insert(QStringLiteral("quantity"), intList(rule.quantities));
+    if (rule.hasValues) {
+        QJsonArray values;
+        for (const quint16 v : rule.values)
+            values.append(int(v));
+        o.insert(QStringLiteral("values"), values);
+    }
+    if (rule.dependsOnTime() || rule.probability != 1)
+        o.insert(QStringLiteral("probability"), probabilityJson(rule));
 
     using K = FaultRule::Kind;
     switch (rule.kind) {
@@ -112,6 +159,10 @@ QJsonObject FaultRuleWriter::toJson(const FaultRule &rule)
         break;
     case K::Close:
         o.insert(QStringLiteral("when"), closeWhenName(rule.closeWhen));
+        break;
+    case K::Noise:
+        o.insert(QStringLiteral("bitErrorRate"), rule.bitErrorRate);
+        o.insert(QStringLiteral("on"), noiseOnName(rule.noiseOn));
         break;
     }
     return o;
