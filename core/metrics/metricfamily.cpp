@@ -65,6 +65,16 @@ void MetricFamily::remove(const QStringList &labelValues)
     m_series.erase(normalised(labelValues));
 }
 
+void MetricFamily::removeWhere(int labelIndex, const QString &value)
+{
+    for (auto it = m_series.begin(); it != m_series.end();) {
+        if (it->first.value(labelIndex) == value)
+            it = m_series.erase(it);
+        else
+            ++it;
+    }
+}
+
 const MetricSeries *MetricFamily::find(const QStringList &labelValues) const
 {
     const auto it = m_series.find(normalised(labelValues));

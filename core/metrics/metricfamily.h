@@ -45,6 +45,8 @@ public:
     // The series exists (0, or an empty histogram) without changing it when it already did.
     void touch(const QStringList &labelValues);
     void remove(const QStringList &labelValues);
+    // Every series whose label at labelIndex has this value ("all values of watch w").
+    void removeWhere(int labelIndex, const QString &value);
     void clear() { m_series.clear(); }
 
     [[nodiscard]] const std::map<QStringList, MetricSeries> &series() const { return m_series; }
