@@ -13,7 +13,7 @@ QString WatchMessage::addressKey(quint16 address)
 
 QString WatchMessage::timeText(qint64 msSinceEpoch)
 {
-    return QDateTime::fromMSecsSinceEpoch(msSinceEpoch, QTimeZone::UTC).toString(Qt::ISODateWithMs);
+    return QDateTime::fromMSecsSinceEpoch(msSinceEpoch, Qt::UTC).toString(Qt::ISODateWithMs);
 }
 
 QString WatchMessage::topicLevel(const QString &name)
