@@ -12,6 +12,7 @@
 #include "runcommand.h"
 #include "sendcommand.h"
 #include "sweepcommand.h"
+#include "watchcommand.h"
 #include "writecommand.h"
 
 #include <QtCore/QTextStream>
@@ -40,6 +41,7 @@ const Subcommand kSubcommands[] = {
     {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},
     {"analyze", "read a pcap, pcapng or traffic journal offline: pairs, decoded frames, statistics, histogram", runAnalyze},
     {"export", "write a capture or journal as CSV, JSON lines, pcapng for Wireshark, or latency plots", runExport},
+    {"watch", "run a session's watches as a service: CSV, Prometheus metrics, MQTT; SIGHUP reloads", runWatch},
     {"replay", "re-send a recording to a device and compare the answers, or serve it as a stand-in device", runReplay},
 };
 

@@ -144,7 +144,8 @@ QByteArray MetricsText::number(double value)
     if (std::isinf(value))
         return value > 0 ? QByteArrayLiteral("+Inf") : QByteArrayLiteral("-Inf");
     char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    // General notation (as Go's %g): 0.0005 stays "0.0005", 1e-09 and 1.5e+300 take an exponent.
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general);
     return QByteArray(buffer, result.ptr - buffer);
 }
 

@@ -148,6 +148,8 @@ void TestMetricsText::numbers_data()
     QTest::newRow("fraction") << 0.1 << QByteArray("0.1");
     QTest::newRow("negative") << -2.5 << QByteArray("-2.5");
     QTest::newRow("tiny") << 1e-9 << QByteArray("1e-09");
+    QTest::newRow("small") << 0.0005 << QByteArray("0.0005");
+    QTest::newRow("timestamp") << 1795673852.345 << QByteArray("1.795673852345e+09"); // as Go's client writes it
     QTest::newRow("huge") << 1.5e300 << QByteArray("1.5e+300");
     QTest::newRow("+Inf") << std::numeric_limits<double>::infinity() << QByteArray("+Inf");
     QTest::newRow("-Inf") << -std::numeric_limits<double>::infinity() << QByteArray("-Inf");
