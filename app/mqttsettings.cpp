@@ -13,6 +13,10 @@ std::optional<MqttSettings> MqttSettings::fromUrl(const QString &text, QString *
         *error = QStringLiteral("'%1' is not a URL (mqtt://HOST[:PORT][/PREFIX] or mqtts://...): %2").arg(text, url.errorString());
         return std::nullopt;
     }
+    if (url.hasFragment()) {
+        *error = QStringLiteral("'%1': the topic prefix may not hold the wildcards '+' or '#'").arg(text);
+        return std::nullopt;
+    }
     MqttSettings s;
     const QString scheme = url.scheme();
     if (scheme == QLatin1String("mqtts")) {

@@ -140,7 +140,7 @@ bool WatchService::start(QString *error)
 void WatchService::setWatches(const SessionWatches &watches)
 {
     m_metrics.reset(watches);
-    m_linkStates.clear();
+    m_downLinks.clear();
     if (m_mqtt)
         m_mqtt->setWatches(watches);
 }
@@ -159,26 +159,32 @@ QUrl WatchService::metricsUrl() const
 void WatchService::onLinkState(const WatchLinkState &state)
 {
     m_metrics.setLinkState(state);
-    const int previous = m_linkStates.value(state.target, -1);
-    m_linkStates.insert(state.target, int(state.state));
-    if (previous == int(state.state))
-        return;
-    const QString name = watchLinkStateName(state.state);
+    // A link that stays away cycles down, backoff, connecting, down...: said once when it goes,
+    // once when it is back, and each attempt at debug level.
+    const bool wasDown = m_downLinks.contains(state.target);
     switch (state.state) {
     case WatchLinkState::State::Up:
-        m_log.notice(QStringLiteral("link %1: up%2").arg(state.target,
-            state.reconnects > 0 ? QStringLiteral(" again (reconnect %1)").arg(state.reconnects) : QString()));
+        if (wasDown) {
+            m_downLinks.remove(state.target);
+            m_log.notice(QStringLiteral("link %1: up again (reconnect %2)").arg(state.target).arg(state.reconnects));
+        } else {
+            m_log.notice(QStringLiteral("link %1: up").arg(state.target));
+        }
         break;
     case WatchLinkState::State::Down:
-        m_log.warning(QStringLiteral("link %1: down: %2").arg(state.target, state.message));
+        if (!wasDown) {
+            m_downLinks.insert(state.target);
+            m_log.warning(QStringLiteral("link %1: down: %2").arg(state.target, state.message));
+        } else {
+            m_log.debug(QStringLiteral("link %1: still down: %2").arg(state.target, state.message));
+        }
         break;
     case WatchLinkState::State::Backoff:
-        m_log.info(QStringLiteral("link %1: %2, next attempt in %3 ms").arg(state.target,
-            state.message.isEmpty() ? name : state.message).arg(state.retryInMs));
+        m_log.debug(QStringLiteral("link %1: next attempt in %2 ms").arg(state.target).arg(state.retryInMs));
         break;
     case WatchLinkState::State::Connecting:
     case WatchLinkState::State::Stopped:
-        m_log.debug(QStringLiteral("link %1: %2").arg(state.target, name));
+        m_log.debug(QStringLiteral("link %1: %2").arg(state.target, watchLinkStateName(state.state)));
         break;
     }
 }

@@ -7,6 +7,7 @@
 #include "service/watchmetrics.h"
 
 #include <QtCore/QObject>
+#include <QtCore/QSet>
 #include <QtCore/QUrl>
 
 #include <memory>
@@ -64,7 +65,7 @@ private:
     WatchMetrics m_metrics;
     std::unique_ptr<MetricsEndpoint> m_endpoint;
     std::unique_ptr<WatchMqtt> m_mqtt;
-    QHash<QString, int> m_linkStates; // the last state logged per link, to log changes only
+    QSet<QString> m_downLinks; // links said to be down, until they are up again
 };
 
 } // namespace mbscope::app

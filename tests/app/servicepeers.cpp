@@ -122,6 +122,8 @@ double metricSum(const QByteArray &exposition, const QString &metric)
 
 bool ChildProcess::start(const QString &program, const QStringList &arguments, QString *error)
 {
+    stop();
+    m_output.clear();
     m_process = std::make_unique<QProcess>();
     m_process->setProcessChannelMode(QProcess::MergedChannels);
     m_process->start(program, arguments);

@@ -80,7 +80,7 @@ private Q_SLOTS:
     void refusedOptions();
 
 private:
-    [[nodiscard]] QString writeSession(const QString &target, bool second = false);
+    QString writeSession(const QString &target, bool second = false);
     bool startWatch(ChildProcess &watch, const QStringList &extra);
 
     std::unique_ptr<QTemporaryDir> m_dir;
