@@ -141,8 +141,9 @@ void MqttClient::stop(int timeoutMs)
         if (mosquitto_publish(m_mosq, &mid, m_statusTopic.constData(), int(kOffline.size()), kOffline.constData(), 1, true) ==
             MOSQ_ERR_SUCCESS) {
             m_goodbyeMid = mid;
+            // The acknowledgement may come before mid was stored above: the last one acknowledged counts too.
             const QDeadlineTimer deadline(timeoutMs);
-            while (!m_goodbyeSent.load() && !deadline.hasExpired() && m_connected.load())
+            while (!m_goodbyeSent.load() && m_lastAcked.load() != mid && !deadline.hasExpired() && m_connected.load())
                 QThread::msleep(5);
         }
     }
@@ -182,6 +183,7 @@ void MqttClient::onDisconnect(mosquitto *, void *self, int rc)
 void MqttClient::onPublish(mosquitto *, void *self, int mid)
 {
     auto *client = static_cast<MqttClient *>(self);
+    client->m_lastAcked = mid;
     if (mid == client->m_goodbyeMid.load())
         client->m_goodbyeSent = true;
 }

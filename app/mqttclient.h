@@ -62,6 +62,7 @@ private:
     std::atomic<bool> m_connected{false};
     std::atomic<int> m_goodbyeMid{-1};
     std::atomic<bool> m_goodbyeSent{false};
+    std::atomic<int> m_lastAcked{-1};
     std::atomic<quint64> m_published{0};
     std::atomic<quint64> m_dropped{0};
 };

@@ -76,6 +76,7 @@ private Q_SLOTS:
     void mqttWritesRefusedWithoutTheOption();
     void mqttWritesReachTheSimulator();
     void hangupReloadsTermStopsCleanly();
+    void guideExamples();
     void refusedOptions_data();
     void refusedOptions();
 
@@ -356,6 +357,75 @@ void TestCliWatchService::hangupReloadsTermStopsCleanly()
     QTRY_VERIFY_WITH_TIMEOUT(metricValue(httpGet(url).body, QStringLiteral("mbscope_watch_up"), {{QStringLiteral("watch"), QStringLiteral("second")}}) == 1.0,
                              10000);
 
+    QCOMPARE(watch.stop(SIGTERM), 0);
+}
+
+// docs/guide/fleet.md as written: its example session (the simulator's port put in), its PromQL
+// queries run by a real Prometheus scraping watch, its MQTT subscriber and write.
+void TestCliWatchService::guideExamples()
+{
+    const QString source = QStringLiteral(MBSCOPE_TEST_DATA_DIR "/../..");
+    QFile guide(source + QStringLiteral("/docs/guide/fleet.md"));
+    QVERIFY(guide.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(guide.readAll());
+    const qsizetype start = text.indexOf(QLatin1String("```promql\n"));
+    QVERIFY(start >= 0);
+    const qsizetype end = text.indexOf(QLatin1String("```"), start + 10);
+    QStringList queries;
+    for (const QString &line : text.mid(start + 10, end - start - 10).split(QLatin1Char('\n'))) {
+        if (!line.trimmed().isEmpty() && !line.trimmed().startsWith(QLatin1Char('#')))
+            queries.append(line.trimmed());
+    }
+    QVERIFY2(queries.size() >= 6, qPrintable(queries.join(QLatin1Char('\n'))));
+
+    QFile example(source + QStringLiteral("/docs/examples/fleet-bench.mbscope.json"));
+    QVERIFY(example.open(QIODevice::ReadOnly));
+    QByteArray session = example.readAll();
+    QVERIFY(session.contains("tcp://127.0.0.1:5020"));
+    session.replace("tcp://127.0.0.1:5020", m_simulator.url().toUtf8());
+    session.replace("\"$schema\": \"../session.schema.json\",", "");
+    m_session = m_dir->filePath(QStringLiteral("fleet-bench.mbscope.json"));
+    QFile copy(m_session);
+    QVERIFY(copy.open(QIODevice::WriteOnly));
+    copy.write(session);
+    copy.close();
+
+    Mosquitto broker;
+    QString error;
+    if (!broker.start(&error))
+        QSKIP(qPrintable(error));
+    Subscriber sub;
+    QVERIFY2(sub.start(broker.port(), QStringLiteral("lab/#"), &error), qPrintable(error));
+    ChildProcess watch;
+    QVERIFY(startWatch(watch, {QStringLiteral("--metrics"), QStringLiteral("127.0.0.1:0"), QStringLiteral("--mqtt"),
+                               QStringLiteral("mqtt://127.0.0.1:%1/lab/bench1").arg(broker.port()), QStringLiteral("--mqtt-writes")}));
+    const QString url = metricsUrlOf(watch);
+    QVERIFY2(!url.isEmpty(), watch.output().constData());
+    Prometheus prometheus;
+    if (!prometheus.start({QUrl(url).host() + QLatin1Char(':') + QString::number(QUrl(url).port())}, QStringLiteral("1s"), &error))
+        QSKIP(qPrintable(error));
+
+    // The subscriber's lines, and the write.
+    QVERIFY2(sub.waitFor(QStringLiteral("lab/bench1/status"), "online", 20000), watch.output().constData());
+    QVERIFY(sub.waitFor(QStringLiteral("lab/bench1/boiler"), "\"pressure\":100", 20000));
+    QVERIFY(sub.waitFor(QStringLiteral("lab/bench1/inputs"), "\"0x0007\":40014", 20000));
+    QVERIFY(sub.waitFor(QStringLiteral("lab/bench1/boiler/event"), "pressure above 95 kPa", 20000));
+    QVERIFY(publish(broker.port(), QStringLiteral("lab/bench1/boiler/set"), R"({"setpoint": 65})", &error));
+    QVERIFY(sub.waitFor(QStringLiteral("lab/bench1/boiler/set/result"), R"({"message":"written","ok":true,"point":"setpoint"})", 10000));
+    QVERIFY(sub.waitFor(QStringLiteral("lab/bench1/boiler"), "\"setpoint\":65", 10000));
+
+    // Every query of the guide is valid PromQL with an answer (but the two that look for trouble).
+    QVERIFY(prometheus.waitFor(QStringLiteral("count(mbscope_watch_latency_seconds_count) and count(rate(mbscope_watch_polls_total[5m]))"),
+                               [](double v) { return v >= 2; }, 60000));
+    for (const QString &query : std::as_const(queries)) {
+        const bool troubleOnly = query.contains(QLatin1String("last_success")) || query.contains(QLatin1String("exceptions_total"));
+        QString why;
+        QJsonObject data;
+        QTRY_VERIFY2_WITH_TIMEOUT((data = prometheus.query(query, &why), !data.isEmpty() &&
+                                   (troubleOnly || !data.value(QStringLiteral("result")).toArray().isEmpty())),
+                                  qPrintable(query + QStringLiteral(": ") + why), 20000);
+    }
+    QCOMPARE(prometheus.scalar(QStringLiteral(R"(mbscope_watch_value{watch="boiler", name="pressure"})")).value_or(-1), 100.0);
     QCOMPARE(watch.stop(SIGTERM), 0);
 }
 
