@@ -36,12 +36,12 @@ const Subcommand kSubcommands[] = {
     {"write", "write coils or holding registers", runWrite},
     {"poll", "send requests in cycles and print statistics: counts, latency percentiles, histogram", runPoll},
     {"monitor", "listen to a bus another master drives, never sending: every exchange paired and measured", runMonitor},
+    {"watch", "run a session's watches headless: many devices at once, CSV, Prometheus metrics, MQTT", runWatch},
     {"sweep", "poll at several intervals and print error rate and latency per interval", runSweep},
     {"run", "run a session's test plan against a device; pass/fail per step, JUnit XML for CI", runRun},
     {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},
     {"analyze", "read a pcap, pcapng or traffic journal offline: pairs, decoded frames, statistics, histogram", runAnalyze},
     {"export", "write a capture or journal as CSV, JSON lines, pcapng for Wireshark, or latency plots", runExport},
-    {"watch", "run a session's watches as a service: CSV, Prometheus metrics, MQTT; SIGHUP reloads", runWatch},
     {"replay", "re-send a recording to a device and compare the answers, or serve it as a stand-in device", runReplay},
 };
 

@@ -3,214 +3,342 @@
 #include "cli.h"
 #include "hangupwatcher.h"
 #include "interruptwatcher.h"
+#include "watchreport.h"
 #include "watchservice.h"
 
 #include "fleet/watchrunner.h"
 #include "session/sessionreader.h"
+#include "time/duration.h"
 #include "watch/watchcsvlog.h"
 
 #include <QtCore/QCommandLineParser>
-#include <QtCore/QCoreApplication>
-#include <QtCore/QDir>
 #include <QtCore/QEventLoop>
 #include <QtCore/QFileInfo>
-#include <QtCore/QSet>
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
 #include <QtCore/QTextStream>
 #include <QtCore/QTimer>
 
-#include <csignal>
 #include <memory>
+#include <optional>
 
 namespace mbscope::app {
 
 namespace {
 
-// The session's watches, or why not (said with where).
-std::optional<SessionWatches> loadWatches(const QString &path, QString *error)
-{
-    const SessionLoadResult loaded = SessionReader::load(path);
-    if (!loaded.ok()) {
-        *error = loaded.errorText();
-        return std::nullopt;
-    }
-    const SessionWatches &watches = loaded.document->watches;
-    bool any = false;
-    for (const WatchDefinition &w : watches.watches)
-        any = any || w.enabled;
-    if (!any) {
-        *error = QStringLiteral("%1: no enabled watches (the session's \"watches\" section, docs/sessions.md)").arg(path);
-        return std::nullopt;
-    }
-    return watches;
-}
+// Every option of `mbscope watch`, read in one place (the metrics and MQTT options join them here).
+struct WatchOptions {
+    QString session;
+    std::optional<QString> csvDirectory; // --csv DIR
+    std::optional<WatchLogSettings::Mode> csvMode;
+    qint64 durationNs = 0;
+    quint64 count = 0;                   // polls of every watch
+    bool json = false;
+    bool quiet = false;
+    WatchService::Options service; // --metrics, --mqtt..., --log-level
+};
 
-int linkCount(const SessionWatches &watches)
+// Parses the command line into options; false when the command should end now with *status
+// (help printed, or a usage error said on err).
+bool parseWatchOptions(const QStringList &arguments, WatchOptions *options, int *status, QTextStream &out, QTextStream &err)
 {
-    QSet<QString> targets;
-    for (const WatchDefinition &w : watches.watches) {
-        if (w.enabled)
-            targets.insert(w.target);
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Runs the watches of a session document headless: each watch (a block of a device: target, unit, function, "
+        "address, quantity, interval; docs/guide/watching.md) is polled at its own interval, the watches of one link "
+        "taking turns with the link's gap between requests, every link on its own engine so that a dead device stalls "
+        "no other link. A link that fails is opened again after a backoff (doubling from reconnectMinMs to "
+        "reconnectMaxMs), counted. One line per poll with the values named, scaled and with their units; rule events "
+        "as they fire and clear; errors and link changes on standard error; the counters of every watch at the end.\n"
+        "Example: mbscope watch bench.mbscope.json --csv logs --duration 1min\n"
+        "Ctrl-C or SIGTERM stops cleanly: the CSV files are flushed and the counters printed.\n"
+        "Exit status: 0 every poll answered, 1 some polls failed, 2 usage error or a session that cannot be read."));
+    parser.addHelpOption();
+    const QCommandLineOption csvOpt(QStringLiteral("csv"),
+                                    QStringLiteral("Log values to CSV files in DIR, one per watch (replaces the session's "
+                                                   "watchLog directory; rolling as the session says)."),
+                                    QStringLiteral("DIR"));
+    const QCommandLineOption csvModeOpt(QStringLiteral("csv-mode"),
+                                        QStringLiteral("poll: a row per poll (default); change: a row when a value changes."),
+                                        QStringLiteral("MODE"));
+    const QCommandLineOption durationOpt(QStringLiteral("duration"),
+                                         QStringLiteral("Stop after this long (60s, 500ms, 2min, 1h; a bare number is milliseconds)."),
+                                         QStringLiteral("TIME"));
+    const QCommandLineOption countOpt(QStringLiteral("count"), QStringLiteral("Stop once every watch has polled N times."),
+                                      QStringLiteral("N"));
+    const QCommandLineOption jsonOpt(QStringLiteral("json"),
+                                     QStringLiteral("JSON lines on standard output: {\"type\": \"sample\" | \"rule\" | \"link\" | "
+                                                    "\"summary\", ...}."));
+    const QCommandLineOption quietOpt(QStringLiteral("quiet"), QStringLiteral("No line per poll: rule events, errors and the counters."));
+    parser.addOptions({csvOpt, csvModeOpt, durationOpt, countOpt, jsonOpt, quietOpt});
+    WatchService::addOptions(parser);
+    parser.addPositionalArgument(QStringLiteral("session"), QStringLiteral("A session document with watches (*.mbscope.json)."));
+    *status = ExitUsage;
+    if (!parser.parse(arguments)) {
+        err << "mbscope watch: " << parser.errorText() << '\n';
+        return false;
     }
-    return int(targets.size());
-}
-
-// CSV logging: --csv DIR, else the session's watchLog when enabled (relative to the session).
-class CsvLogging
-{
-public:
-    CsvLogging(ServiceLog &log, QString directory, QString sessionDir)
-        : m_log(log), m_directory(std::move(directory)), m_sessionDir(std::move(sessionDir))
-    {
+    if (parser.isSet(QStringLiteral("help"))) {
+        out << subcommandHelp(parser.helpText(), "watch");
+        *status = ExitOk;
+        return false;
     }
-
-    bool open(const SessionWatches &watches, QString *error)
-    {
-        close();
-        m_watches = watches;
-        WatchLogSettings settings;
-        if (!m_directory.isEmpty()) {
-            settings = watches.log.value_or(WatchLogSettings{});
-            settings.directory = m_directory;
-        } else if (watches.log && watches.log->enabled) {
-            settings = *watches.log;
-        } else {
-            return true;
-        }
-        m_csv = std::make_unique<WatchCsvLog>(settings, m_sessionDir);
-        if (!m_csv->open(watches.watches, error)) {
-            m_csv.reset();
+    const QStringList positional = parser.positionalArguments();
+    if (positional.size() != 1) {
+        err << "mbscope watch: " << (positional.isEmpty() ? "no session given" : "one session at a time")
+            << ": mbscope watch SESSION.mbscope.json [options]\n";
+        return false;
+    }
+    options->session = positional.constFirst();
+    if (parser.isSet(csvOpt)) {
+        options->csvDirectory = parser.value(csvOpt);
+        if (options->csvDirectory->trimmed().isEmpty()) {
+            err << "mbscope watch: --csv: give a directory\n";
             return false;
         }
-        m_log.notice(QStringLiteral("CSV: a file per watch in %1").arg(m_csv->directory()));
-        return true;
     }
-
-    void append(const QList<WatchSample> &samples)
-    {
-        if (!m_csv)
-            return;
-        for (const WatchSample &s : samples) {
-            QString error;
-            if (!m_csv->append(s.watch, s.timeMs, watchSampleStatusName(s.status), s.values, s.error, &error) &&
-                error != m_lastError) {
-                m_log.error(QStringLiteral("CSV: %1").arg(error));
-                m_lastError = error;
-            }
+    if (parser.isSet(csvModeOpt)) {
+        const QString mode = parser.value(csvModeOpt);
+        if (mode == QLatin1String("poll"))
+            options->csvMode = WatchLogSettings::Mode::EveryPoll;
+        else if (mode == QLatin1String("change"))
+            options->csvMode = WatchLogSettings::Mode::OnChange;
+        else {
+            err << "mbscope watch: --csv-mode '" << mode << "': expected poll or change\n";
+            return false;
         }
     }
-
-    void close()
-    {
-        if (m_csv)
-            m_csv->close();
-        m_csv.reset();
+    if (parser.isSet(durationOpt)) {
+        const DurationResult d = parseDuration(parser.value(durationOpt));
+        if (!d.ok() || d.ns <= 0) {
+            err << "mbscope watch: --duration: " << (d.ok() ? QStringLiteral("'%1' is not above zero").arg(parser.value(durationOpt)) : d.error)
+                << '\n';
+            return false;
+        }
+        options->durationNs = d.ns;
     }
+    if (parser.isSet(countOpt)) {
+        bool ok = false;
+        options->count = parser.value(countOpt).toULongLong(&ok);
+        if (!ok || options->count == 0) {
+            err << "mbscope watch: --count '" << parser.value(countOpt) << "' is not a whole number above zero\n";
+            return false;
+        }
+    }
+    options->json = parser.isSet(jsonOpt);
+    options->quiet = parser.isSet(quietOpt);
+    QString error;
+    const std::optional<WatchService::Options> service = WatchService::readOptions(parser, options->session, &error);
+    if (!service) {
+        err << "mbscope watch: " << error << '\n';
+        return false;
+    }
+    options->service = *service;
+    return true;
+}
 
-private:
-    ServiceLog &m_log;
-    QString m_directory;
-    QString m_sessionDir;
-    SessionWatches m_watches;
-    std::unique_ptr<WatchCsvLog> m_csv;
-    QString m_lastError;
-};
+void printJson(QTextStream &out, const QJsonObject &o)
+{
+    out << QJsonDocument(o).toJson(QJsonDocument::Compact) << '\n';
+    out.flush();
+}
 
 } // namespace
 
 int runWatch(const QStringList &arguments)
 {
+    QTextStream out(stdout);
     QTextStream err(stderr);
-    QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
-        "Runs a session's watches headless until stopped (SIGTERM or Ctrl-C), as a service: values logged to CSV, served to "
-        "Prometheus, published to MQTT. SIGHUP reads the session again. One line per event on standard error, with its level.\n"
-        "Example: mbscope watch lab.mbscope.json --metrics 127.0.0.1:9464 --mqtt mqtt://broker.lan/lab1\n"
-        "Exit status: 0 after a clean stop, 2 for unusable options or a session that does not read."));
-    parser.addHelpOption();
-    parser.addPositionalArgument(QStringLiteral("session"), QStringLiteral("The session document (*.mbscope.json) whose watches run."));
-    parser.addOption({QStringLiteral("csv"),
-                      QStringLiteral("Log every watch's values to CSV, a file per watch in DIR (default: the session's watchLog, when enabled)."),
-                      QStringLiteral("DIR")});
-    WatchService::addOptions(parser);
-    if (!parser.parse(arguments)) {
-        err << "mbscope watch: " << parser.errorText() << '\n';
+    WatchOptions options;
+    int status = ExitOk;
+    if (!parseWatchOptions(arguments, &options, &status, out, err))
+        return status;
+
+    const SessionLoadResult loaded = SessionReader::load(options.session);
+    if (!loaded.ok()) {
+        err << "mbscope watch: the session cannot be used:\n" << loaded.errorText() << '\n';
         return ExitUsage;
     }
-    if (parser.isSet(QStringLiteral("help"))) {
-        QTextStream(stdout) << subcommandHelp(parser.helpText(), "watch");
-        return ExitOk;
-    }
-    if (parser.positionalArguments().size() != 1) {
-        err << "mbscope watch: name one session document (mbscope watch SESSION.mbscope.json)\n";
-        return ExitUsage;
-    }
-    const QString sessionPath = parser.positionalArguments().first();
-    QString error;
-    const std::optional<WatchService::Options> options = WatchService::readOptions(parser, sessionPath, &error);
-    if (!options) {
-        err << "mbscope watch: " << error << '\n';
-        return ExitUsage;
-    }
-    std::optional<SessionWatches> watches = loadWatches(sessionPath, &error);
-    if (!watches) {
-        err << "mbscope watch: " << error << '\n';
+    SessionWatches watches = loaded.document->watches;
+    int enabled = 0;
+    for (const WatchDefinition &w : watches.watches)
+        enabled += w.enabled ? 1 : 0;
+    if (enabled == 0) {
+        err << "mbscope watch: " << options.session
+            << (watches.isEmpty() ? ": the session has no watches: add a \"watches\" section (docs/guide/watching.md)\n"
+                                  : ": every watch of the session is disabled (\"enabled\": false)\n");
         return ExitUsage;
     }
 
-    WatchRunner runner(*watches);
-    WatchService service(runner, *options);
-    ServiceLog &log = service.log();
-    if (!service.start(&error)) {
-        err << "mbscope watch: " << error << '\n';
-        return ExitUsage;
-    }
-    CsvLogging csv(log, parser.value(QStringLiteral("csv")), QFileInfo(sessionPath).absolutePath());
-    if (!csv.open(*watches, &error)) {
-        err << "mbscope watch: --csv: " << error << '\n';
-        service.stop();
-        return ExitUsage;
-    }
-    QObject::connect(&runner, &WatchRunner::sampled, &runner,
-                     [&csv](const QList<WatchSample> &samples, const QList<WatchCounters> &) { csv.append(samples); });
-
-    const auto begin = [&](const SessionWatches &w) {
-        service.setWatches(w);
-        log.notice(QStringLiteral("watching %1 watches on %2 links from %3").arg(w.watches.size()).arg(linkCount(w)).arg(sessionPath));
+    // CSV: --csv DIR (relative to the working directory), else the session's watchLog (relative
+    // to the document). Opened again, for the new set of watches, when SIGHUP reloads the session.
+    std::unique_ptr<WatchCsvLog> csv;
+    const auto openCsv = [&](const SessionWatches &w, QString *error) {
+        if (csv)
+            csv->close();
+        csv.reset();
+        if (!options.csvDirectory && !(w.log && w.log->enabled))
+            return true;
+        WatchLogSettings log = w.log.value_or(WatchLogSettings{});
+        QString base = QFileInfo(options.session).absolutePath();
+        if (options.csvDirectory) {
+            log.directory = *options.csvDirectory;
+            base = QString();
+        }
+        if (options.csvMode)
+            log.mode = *options.csvMode;
+        csv = std::make_unique<WatchCsvLog>(log, base);
+        if (!csv->open(w.watches, error)) {
+            csv.reset();
+            return false;
+        }
+        return true;
     };
-    begin(*watches);
-    runner.start();
+    {
+        QString error;
+        if (!openCsv(watches, &error)) {
+            err << "mbscope watch: " << error << '\n';
+            return ExitUsage;
+        }
+    }
 
-    HangupWatcher hangup;
-    QObject::connect(&hangup, &HangupWatcher::hangup, &runner, [&] {
-        QString why;
-        std::optional<SessionWatches> again = loadWatches(sessionPath, &why);
-        if (!again) {
-            log.error(QStringLiteral("SIGHUP: the session does not read, the running watches stay: %1").arg(why));
+    WatchRunner runner(watches);
+    WatchService service(runner, options.service);
+    {
+        QString error;
+        if (!service.start(&error)) {
+            err << "mbscope watch: " << error << '\n';
+            return ExitUsage;
+        }
+    }
+    service.setWatches(watches);
+    QEventLoop loop;
+    InterruptWatcher interrupts;
+    bool stopping = false;
+    bool failed = false;
+    bool csvFailed = false;
+    const auto stop = [&] {
+        if (stopping)
+            return;
+        stopping = true;
+        runner.stop();
+    };
+    QObject::connect(&interrupts, &InterruptWatcher::interrupted, &loop, stop);
+    QObject::connect(&runner, &WatchRunner::stopped, &loop, &QEventLoop::quit);
+    QObject::connect(&runner, &WatchRunner::sampled, &loop, [&](const QList<WatchSample> &samples, const QList<WatchCounters> &) {
+        for (const WatchSample &s : samples) {
+            if (options.count > 0 && s.poll > options.count)
+                continue;
+            if (!s.isOk())
+                failed = true;
+            if (options.json)
+                printJson(out, WatchReport::sampleJson(s));
+            else if (!s.isOk())
+                err << "mbscope watch: " << WatchReport::errorLine(s) << '\n';
+            else if (!options.quiet)
+                out << WatchReport::sampleLine(s) << '\n';
+            if (csv) {
+                QString error;
+                if (!csv->append(s.watch, s.timeMs, watchSampleStatusName(s.status), s.values, s.error, &error) && !csvFailed) {
+                    csvFailed = true;
+                    err << "mbscope watch: " << error << " (logging stops; polling goes on)\n";
+                }
+            }
+        }
+        out.flush();
+        err.flush();
+        if (options.count > 0) {
+            bool done = true;
+            for (int i = 0; i < watches.watches.size(); ++i) {
+                if (watches.watches.at(i).enabled && runner.counters(i).polls < options.count)
+                    done = false;
+            }
+            if (done)
+                stop();
+        }
+    });
+    QObject::connect(&runner, &WatchRunner::ruleChanged, &loop, [&](const WatchRuleEvent &e) {
+        if (options.json)
+            printJson(out, WatchReport::ruleJson(e));
+        else
+            out << WatchReport::ruleLine(e) << '\n';
+        out.flush();
+    });
+    QObject::connect(&runner, &WatchRunner::linkStateChanged, &loop, [&](const WatchLinkState &s) {
+        if (options.json) {
+            printJson(out, WatchReport::linkJson(s));
             return;
         }
-        log.notice(QStringLiteral("SIGHUP: reading %1 again").arg(sessionPath));
-        // The runner's counters start anew, and so do the metrics and CSV files of the new set.
-        runner.setWatches(*again);
-        begin(*again);
-        if (!csv.open(*again, &why))
-            log.error(QStringLiteral("CSV: %1").arg(why));
+        // Said: the wait after a failure (the poll's error line has said what failed) and the link
+        // coming back. Opening, a first open, down (always followed by the wait) and stopped are not.
+        if (s.state != WatchLinkState::State::Backoff && !(s.state == WatchLinkState::State::Up && s.failures > 0))
+            return;
+        err << "mbscope watch: " << WatchReport::linkLine(s) << '\n';
+        err.flush();
     });
-
-    QEventLoop loop;
-    InterruptWatcher interrupt;
-    QObject::connect(&interrupt, &InterruptWatcher::interrupted, &loop, [&] {
-        log.notice(QStringLiteral("stopping (%1)").arg(interrupt.signalNumber() == SIGINT ? QStringLiteral("SIGINT") : QStringLiteral("SIGTERM")));
-        runner.stop();
-        // The runner says stopped() once every link is closed; a link stuck in a system call
-        // does not keep the service from stopping.
-        QTimer::singleShot(5000, &loop, &QEventLoop::quit);
+    // SIGHUP: the session read again; the runner restarts with the new watches (counters anew),
+    // and so do the metrics and the CSV files. A session that no longer reads changes nothing.
+    HangupWatcher hangup;
+    QObject::connect(&hangup, &HangupWatcher::hangup, &loop, [&] {
+        if (stopping)
+            return;
+        const SessionLoadResult again = SessionReader::load(options.session);
+        if (!again.ok()) {
+            service.log().error(QStringLiteral("SIGHUP: %1 does not read, the running watches stay:\n%2").arg(options.session, again.errorText()));
+            return;
+        }
+        int on = 0;
+        for (const WatchDefinition &w : again.document->watches.watches)
+            on += w.enabled ? 1 : 0;
+        if (on == 0) {
+            service.log().error(QStringLiteral("SIGHUP: %1 has no enabled watches, the running watches stay").arg(options.session));
+            return;
+        }
+        watches = again.document->watches;
+        runner.setWatches(watches);
+        service.setWatches(watches);
+        QString error;
+        if (!openCsv(watches, &error))
+            service.log().error(QStringLiteral("SIGHUP: CSV: %1 (logging stops; polling goes on)").arg(error));
+        service.log().notice(QStringLiteral("SIGHUP: %1 read again, %2 %3").arg(options.session).arg(on).arg(on == 1 ? QStringLiteral("watch") : QStringLiteral("watches")));
     });
-    QObject::connect(&runner, &WatchRunner::stopped, &loop, &QEventLoop::quit);
+    QTimer durationTimer;
+    durationTimer.setSingleShot(true);
+    durationTimer.setTimerType(Qt::PreciseTimer);
+    if (options.durationNs > 0) {
+        QObject::connect(&durationTimer, &QTimer::timeout, &loop, stop);
+        durationTimer.start(std::chrono::milliseconds(qMax<qint64>(1, options.durationNs / 1'000'000)));
+    }
+    if (!options.json && !options.quiet)
+        err << "mbscope watch: " << enabled << (enabled == 1 ? " watch" : " watches") << " from " << options.session
+            << "; Ctrl-C stops\n";
+    err.flush();
+    runner.start();
     loop.exec();
-    csv.close();
+
+    if (csv)
+        csv->close();
     service.stop();
-    log.notice(QStringLiteral("stopped"));
-    return ExitOk;
+    if (options.json) {
+        QJsonArray counters;
+        for (const WatchCounters &c : runner.allCounters())
+            counters.append(WatchReport::countersJson(c));
+        QJsonObject summary;
+        summary.insert(QLatin1String("type"), QStringLiteral("summary"));
+        summary.insert(QLatin1String("watches"), counters);
+        if (csv)
+            summary.insert(QLatin1String("csv_files"), QJsonArray::fromStringList(csv->files()));
+        printJson(out, summary);
+    } else {
+        for (const WatchCounters &c : runner.allCounters()) {
+            if (watches.watches.at(c.watch).enabled)
+                out << WatchReport::countersLine(c) << '\n';
+        }
+        if (csv)
+            out << "CSV: " << csv->files().join(QLatin1String(", ")) << '\n';
+    }
+    out.flush();
+    return failed || csvFailed ? ExitFailure : ExitOk;
 }
 
 } // namespace mbscope::app

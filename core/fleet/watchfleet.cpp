@@ -46,8 +46,15 @@ void WatchFleet::start(const SessionWatches &watches)
     for (const QString &target : std::as_const(targets)) {
         auto *poller = new WatchLinkPoller(linkSettings(watches, target), byTarget.value(target), this);
         connect(poller, &WatchLinkPoller::sampled, this, &WatchFleet::onSampled);
-        connect(poller, &WatchLinkPoller::ruleChanged, this, &WatchFleet::ruleChanged);
-        connect(poller, &WatchLinkPoller::linkStateChanged, this, &WatchFleet::linkStateChanged);
+        // Events go out after the samples before them, so that observers see them in order.
+        connect(poller, &WatchLinkPoller::ruleChanged, this, [this](const WatchRuleEvent &event) {
+            flush();
+            Q_EMIT ruleChanged(event);
+        });
+        connect(poller, &WatchLinkPoller::linkStateChanged, this, [this](const WatchLinkState &state) {
+            flush();
+            Q_EMIT linkStateChanged(state);
+        });
         connect(poller, &WatchLinkPoller::writeFinished, this, &WatchFleet::writeFinished);
         m_pollers.append(poller);
         for (const WatchLinkPoller::Watch &w : byTarget.value(target))

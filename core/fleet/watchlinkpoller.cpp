@@ -203,7 +203,7 @@ void WatchLinkPoller::onTimer()
         m_engine->openLink();
         break;
     case Phase::Connecting:
-        linkLost(QStringLiteral("%1: the link did not open").arg(m_settings.target));
+        failOpen(QStringLiteral("%1: the link did not open").arg(m_settings.target));
         break;
     case Phase::Busy:
     case Phase::Stopped:
@@ -248,7 +248,7 @@ void WatchLinkPoller::finishPoll(const Transaction &t)
     s.watchName = def.name;
     s.timeMs = nowMs();
     s.poll = ++e.polls;
-    s.latencyNs = t.latencyNs();
+    s.latencyNs = t.sentNs > 0 && t.doneNs > 0 ? t.latencyNs() : -1;
     s.exceptionCode = t.exceptionCode;
     // An Enron answer carries four bytes per register it was asked for, which the engine's
     // verdict (two per register) calls malformed: the watch reads it by its own rule.
@@ -342,6 +342,30 @@ void WatchLinkPoller::finishWrite(const Transaction &t)
     Q_EMIT writeFinished(w.id, w.watch, w.address, ok, message);
 }
 
+void WatchLinkPoller::failOpen(const QString &message)
+{
+    // An attempt to open the link again that failed is a poll lost for each watch of the link:
+    // it is counted and logged as one, so that an outage shows in the counters and the CSV rows.
+    const qint64 timeMs = nowMs();
+    for (Entry &e : m_entries) {
+        if (!e.watch.definition.enabled)
+            continue;
+        WatchSample s;
+        s.watch = e.watch.index;
+        s.watchName = e.watch.definition.name;
+        s.timeMs = timeMs;
+        s.poll = ++e.polls;
+        s.status = WatchSample::Status::Error;
+        s.error = message;
+        ++e.counters.polls;
+        ++e.counters.linkErrors;
+        e.counters.lastError = message;
+        e.counters.lastErrorMs = timeMs;
+        Q_EMIT sampled(s, e.counters);
+    }
+    linkLost(message);
+}
+
 void WatchLinkPoller::linkLost(const QString &message)
 {
     ++m_state.failures;
@@ -375,7 +399,7 @@ void WatchLinkPoller::onLinkMessage(const QString &message)
     m_state.message = message;
     if (m_phase == Phase::Connecting) {
         m_timer.stop();
-        linkLost(message);
+        failOpen(message);
     }
 }
 

@@ -27,7 +27,8 @@ class TransactionEngine;
 // The watch due first goes next (ties in the session's order), each at its own interval, start
 // to start; after each exchange the line is left idle for gapMs. A timeout costs only that turn.
 // After a link error no request is sent for a backoff that doubles from reconnectMinMs to
-// reconnectMaxMs, then the link is opened again; a link that opens again counts a reconnect.
+// reconnectMaxMs, then the link is opened again; a link that opens again counts a reconnect, and
+// an attempt that fails counts a failed poll (a link error) of each of the link's watches.
 // Lives in the runner's thread (WatchFleet), never the GUI's.
 class WatchLinkPoller : public QObject
 {
@@ -79,6 +80,7 @@ private:
     void finishPoll(const Transaction &t);
     void finishWrite(const Transaction &t);
     void linkLost(const QString &message);
+    void failOpen(const QString &message);
     void setState(WatchLinkState::State state, const QString &message = {}, int retryInMs = 0);
     [[nodiscard]] RequestItem requestFor(const QByteArray &pdu, quint8 unit);
     [[nodiscard]] int nextEntry() const;

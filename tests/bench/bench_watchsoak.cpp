@@ -119,7 +119,7 @@ int main(int argc, char *argv[])
 
     ChildProcess watch;
     if (!watch.start(mbscopePath(), {QStringLiteral("watch"), session, QStringLiteral("--metrics"), QStringLiteral("127.0.0.1:0"),
-                                     QStringLiteral("--log-level"), QStringLiteral("notice")},
+                                     QStringLiteral("--log-level"), QStringLiteral("notice"), QStringLiteral("--quiet")},
                      &error) ||
         !watch.waitForOutput("/metrics\n", 30000)) {
         std::fprintf(stderr, "bench_watchsoak: %s %s\n", qPrintable(error), watch.output().constData());

@@ -62,7 +62,7 @@ void TestSystemdUnit::sandbox_data()
     for (const char *line : {"DynamicUser=yes", "ProtectSystem=strict", "SupplementaryGroups=dialout", "ProtectHome=yes",
                              "ExecReload=/bin/kill -HUP $MAINPID", "KillSignal=SIGTERM", "Restart=on-failure",
                              "StateDirectory=mbscope-watch/%i", "EnvironmentFile=-/etc/mbscope/%i.env",
-                             "ExecStart=/usr/bin/mbscope watch /etc/mbscope/%i.mbscope.json $MBSCOPE_WATCH_OPTIONS"})
+                             "ExecStart=/usr/bin/mbscope watch /etc/mbscope/%i.mbscope.json --quiet $MBSCOPE_WATCH_OPTIONS", "SuccessExitStatus=1"})
         QTest::newRow(line) << QString::fromLatin1(line);
 }
 
