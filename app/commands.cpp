@@ -36,7 +36,7 @@ const Subcommand kSubcommands[] = {
     {"write", "write coils or holding registers", runWrite},
     {"poll", "send requests in cycles and print statistics: counts, latency percentiles, histogram", runPoll},
     {"monitor", "listen to a bus another master drives, never sending: every exchange paired and measured", runMonitor},
-    {"watch", "run a session's watches headless: many devices polled at once, values, rules, CSV logs", runWatch},
+    {"watch", "run a session's watches headless: many devices at once, CSV, Prometheus metrics, MQTT", runWatch},
     {"sweep", "poll at several intervals and print error rate and latency per interval", runSweep},
     {"run", "run a session's test plan against a device; pass/fail per step, JUnit XML for CI", runRun},
     {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},

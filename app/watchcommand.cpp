@@ -1,8 +1,10 @@
 #include "watchcommand.h"
 
 #include "cli.h"
+#include "hangupwatcher.h"
 #include "interruptwatcher.h"
 #include "watchreport.h"
+#include "watchservice.h"
 
 #include "fleet/watchrunner.h"
 #include "session/sessionreader.h"
@@ -33,6 +35,7 @@ struct WatchOptions {
     quint64 count = 0;                   // polls of every watch
     bool json = false;
     bool quiet = false;
+    WatchService::Options service; // --metrics, --mqtt..., --log-level
 };
 
 // Parses the command line into options; false when the command should end now with *status
@@ -68,6 +71,7 @@ bool parseWatchOptions(const QStringList &arguments, WatchOptions *options, int 
                                                     "\"summary\", ...}."));
     const QCommandLineOption quietOpt(QStringLiteral("quiet"), QStringLiteral("No line per poll: rule events, errors and the counters."));
     parser.addOptions({csvOpt, csvModeOpt, durationOpt, countOpt, jsonOpt, quietOpt});
+    WatchService::addOptions(parser);
     parser.addPositionalArgument(QStringLiteral("session"), QStringLiteral("A session document with watches (*.mbscope.json)."));
     *status = ExitUsage;
     if (!parser.parse(arguments)) {
@@ -123,6 +127,13 @@ bool parseWatchOptions(const QStringList &arguments, WatchOptions *options, int 
     }
     options->json = parser.isSet(jsonOpt);
     options->quiet = parser.isSet(quietOpt);
+    QString error;
+    const std::optional<WatchService::Options> service = WatchService::readOptions(parser, options->session, &error);
+    if (!service) {
+        err << "mbscope watch: " << error << '\n';
+        return false;
+    }
+    options->service = *service;
     return true;
 }
 
@@ -148,7 +159,7 @@ int runWatch(const QStringList &arguments)
         err << "mbscope watch: the session cannot be used:\n" << loaded.errorText() << '\n';
         return ExitUsage;
     }
-    const SessionWatches watches = loaded.document->watches;
+    SessionWatches watches = loaded.document->watches;
     int enabled = 0;
     for (const WatchDefinition &w : watches.watches)
         enabled += w.enabled ? 1 : 0;
@@ -160,10 +171,15 @@ int runWatch(const QStringList &arguments)
     }
 
     // CSV: --csv DIR (relative to the working directory), else the session's watchLog (relative
-    // to the document).
+    // to the document). Opened again, for the new set of watches, when SIGHUP reloads the session.
     std::unique_ptr<WatchCsvLog> csv;
-    if (options.csvDirectory || (watches.log && watches.log->enabled)) {
-        WatchLogSettings log = watches.log.value_or(WatchLogSettings{});
+    const auto openCsv = [&](const SessionWatches &w, QString *error) {
+        if (csv)
+            csv->close();
+        csv.reset();
+        if (!options.csvDirectory && !(w.log && w.log->enabled))
+            return true;
+        WatchLogSettings log = w.log.value_or(WatchLogSettings{});
         QString base = QFileInfo(options.session).absolutePath();
         if (options.csvDirectory) {
             log.directory = *options.csvDirectory;
@@ -172,14 +188,30 @@ int runWatch(const QStringList &arguments)
         if (options.csvMode)
             log.mode = *options.csvMode;
         csv = std::make_unique<WatchCsvLog>(log, base);
+        if (!csv->open(w.watches, error)) {
+            csv.reset();
+            return false;
+        }
+        return true;
+    };
+    {
         QString error;
-        if (!csv->open(watches.watches, &error)) {
+        if (!openCsv(watches, &error)) {
             err << "mbscope watch: " << error << '\n';
             return ExitUsage;
         }
     }
 
     WatchRunner runner(watches);
+    WatchService service(runner, options.service);
+    {
+        QString error;
+        if (!service.start(&error)) {
+            err << "mbscope watch: " << error << '\n';
+            return ExitUsage;
+        }
+    }
+    service.setWatches(watches);
     QEventLoop loop;
     InterruptWatcher interrupts;
     bool stopping = false;
@@ -244,6 +276,32 @@ int runWatch(const QStringList &arguments)
         err << "mbscope watch: " << WatchReport::linkLine(s) << '\n';
         err.flush();
     });
+    // SIGHUP: the session read again; the runner restarts with the new watches (counters anew),
+    // and so do the metrics and the CSV files. A session that no longer reads changes nothing.
+    HangupWatcher hangup;
+    QObject::connect(&hangup, &HangupWatcher::hangup, &loop, [&] {
+        if (stopping)
+            return;
+        const SessionLoadResult again = SessionReader::load(options.session);
+        if (!again.ok()) {
+            service.log().error(QStringLiteral("SIGHUP: %1 does not read, the running watches stay:\n%2").arg(options.session, again.errorText()));
+            return;
+        }
+        int on = 0;
+        for (const WatchDefinition &w : again.document->watches.watches)
+            on += w.enabled ? 1 : 0;
+        if (on == 0) {
+            service.log().error(QStringLiteral("SIGHUP: %1 has no enabled watches, the running watches stay").arg(options.session));
+            return;
+        }
+        watches = again.document->watches;
+        runner.setWatches(watches);
+        service.setWatches(watches);
+        QString error;
+        if (!openCsv(watches, &error))
+            service.log().error(QStringLiteral("SIGHUP: CSV: %1 (logging stops; polling goes on)").arg(error));
+        service.log().notice(QStringLiteral("SIGHUP: %1 read again, %2 %3").arg(options.session).arg(on).arg(on == 1 ? QStringLiteral("watch") : QStringLiteral("watches")));
+    });
     QTimer durationTimer;
     durationTimer.setSingleShot(true);
     durationTimer.setTimerType(Qt::PreciseTimer);
@@ -260,6 +318,7 @@ int runWatch(const QStringList &arguments)
 
     if (csv)
         csv->close();
+    service.stop();
     if (options.json) {
         QJsonArray counters;
         for (const WatchCounters &c : runner.allCounters())

@@ -10,11 +10,15 @@ build_pkgs=(
   qt6-l10n-tools libqcustomplot-dev libqcustomplot2.1-qt6 libgl-dev
   qt6-qpa-plugins qt6-svg-dev
   librsvg2-bin dpkg-dev
+  # the watch service: Prometheus endpoint and MQTT (Qt6HttpServer's CMake package needs qt6-websockets-dev,
+  # which Debian's qt6-httpserver-dev does not pull in)
+  qt6-httpserver-dev qt6-websockets-dev libmosquitto-dev
 )
 test_pkgs=(
   tshark socat libmodbus-dev mbpoll python3-pymodbus python3-serial python3-serial-asyncio python3-jsonschema
   xvfb clang libclang-rt-14-dev libbenchmark-dev xauth
   desktop-file-utils appstream
+  prometheus mosquitto mosquitto-clients
 )
 
 want=("${build_pkgs[@]}")

@@ -167,6 +167,7 @@ void TestPackage::containsFile_data()
         QStringLiteral("usr/share/doc/mbscope/copyright"),
         QStringLiteral("usr/share/doc/mbscope/changelog.gz"),
         QStringLiteral("usr/share/mbscope/profiles/rosrao-gamma.json"),
+        QStringLiteral("usr/lib/systemd/system/mbscope-watch@.service"),
     };
     for (const QString &path : paths)
         QTest::newRow(qPrintable(path)) << path;
