@@ -7,6 +7,7 @@
 #include "session/sessioncontroller.h"
 #include "decode/transactionview.h"
 #include "shell/translationloader.h"
+#include "common/theme.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QRegularExpression>
@@ -163,10 +164,17 @@ int runGui(QApplication &app)
                                         QStringLiteral("Language of the window for this run: id (Bahasa Indonesia), en "
                                                        "(English) or system; without it, the choice in Preferences."),
                                         QStringLiteral("CODE"));
+    const QCommandLineOption themeOption(QStringLiteral("theme"),
+                                         QStringLiteral("Colours of the window for this run: light, dark or system (the "
+                                                        "desktop's); without it, the choice in Preferences."),
+                                         QStringLiteral("NAME"));
+    const QCommandLineOption tabOption(QStringLiteral("tab"),
+                                       QStringLiteral("Show the tab NAME of the main area (answer, decode, watches) at start."),
+                                       QStringLiteral("NAME"));
     parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption, beforeSendOption, dockOption, pollOption,
-                       langOption});
+                       langOption, themeOption, tabOption});
     if (!parser.parse(QCoreApplication::arguments())) {
-        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT] [--dock NAME] [--lang CODE]\n",
+        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT] [--dock NAME] [--lang CODE] [--theme NAME] [--tab NAME]\n",
                      qPrintable(parser.errorText()));
         return ExitUsage;
     }
@@ -214,6 +222,18 @@ int runGui(QApplication &app)
         language = *asked;
     }
     TranslationLoader::install(app, TranslationLoader::localeFor(language));
+    // The colours: --theme, else Preferences, else the desktop's.
+    Theme::Choice theme = Theme::storedChoice();
+    if (parser.isSet(themeOption)) {
+        const std::optional<Theme::Choice> asked = Theme::parse(parser.value(themeOption));
+        if (!asked) {
+            std::fprintf(stderr, "mbscope: --theme '%s' is not a theme: use light, dark or system\n",
+                         qPrintable(parser.value(themeOption)));
+            return ExitUsage;
+        }
+        theme = *asked;
+    }
+    Theme::apply(theme);
     MainWindow window;
     // A screenshot or an asked size is reproducible: the layout the last close saved is not used.
     if (!screenshot.isEmpty() || parser.isSet(sizeOption) || !window.restoreLayout())
