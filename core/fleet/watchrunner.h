@@ -1,0 +1,75 @@
+#pragma once
+
+#include "fleet/watchcounters.h"
+#include "fleet/watchlinkstate.h"
+#include "fleet/watchsample.h"
+#include "watch/watchdefinition.h"
+#include "watch/watchruleevent.h"
+
+#include <QtCore/QList>
+#include <QtCore/QObject>
+#include <QtCore/QThread>
+
+namespace mbscope {
+
+class WatchFleet;
+
+// Runs a session's watches: an engine per distinct link URL, the watches of one link taking turns
+// in order with the link's gap between requests, each at its own interval; reconnects after a
+// link error with a backoff (WatchLinkSettings), counted. One link's dead device never stalls
+// another link, and on one link a timeout costs only its own turn (WatchLinkPoller).
+//
+// The pollers and engines live in threads of their own; every public method posts its work and
+// returns at once, so the GUI thread never waits on a device. Observers receive, in the thread
+// that owns the runner: samples in batches (at most ~30 a second) with the counters of the
+// watches they concern, rule events and link states as they happen, and write results.
+//
+//   WatchRunner runner(session.watches);
+//   connect(&runner, &WatchRunner::sampled, ...);
+//   runner.start();            // ... runner.stop(); stopped() follows once every link is closed
+class WatchRunner : public QObject
+{
+    Q_OBJECT
+public:
+    explicit WatchRunner(const SessionWatches &watches, QObject *parent = nullptr);
+    ~WatchRunner() override;
+
+    [[nodiscard]] const SessionWatches &watches() const { return m_watches; }
+    // Replaces the watches; running ones are stopped and the new ones started (counters anew).
+    void setWatches(const SessionWatches &watches);
+
+    void start();
+    // Stops every link (requests in flight abandoned); the last samples, then stopped(), follow.
+    void stop();
+    [[nodiscard]] bool isRunning() const { return m_running; }
+
+    // Writes words to a point marked writable of a watch (holding registers: 06 or 10, the
+    // point's registers in wire order; coils: 05, one word 0 or 1), before that link's next poll.
+    // Returns an id that writeFinished() carries; a refused write is said there too.
+    quint64 write(int watch, quint16 address, const QList<quint16> &words);
+
+    // The counters last received for a watch (index in watches()), zero before its first poll.
+    [[nodiscard]] WatchCounters counters(int watch) const;
+    [[nodiscard]] QList<WatchCounters> allCounters() const { return m_counters; }
+
+Q_SIGNALS:
+    // The polls since the last batch, in the order they ended, and the counters of their watches.
+    void sampled(const QList<mbscope::WatchSample> &samples, const QList<mbscope::WatchCounters> &counters);
+    void ruleChanged(const mbscope::WatchRuleEvent &event);
+    void linkStateChanged(const mbscope::WatchLinkState &state);
+    void writeFinished(quint64 id, int watch, quint16 address, bool ok, const QString &message);
+    void stopped();
+
+private:
+    void onSampled(const QList<WatchSample> &samples, const QList<WatchCounters> &counters);
+    void resetCounters();
+
+    SessionWatches m_watches;
+    QList<WatchCounters> m_counters;
+    QThread m_thread;
+    WatchFleet *m_fleet; // lives in m_thread
+    bool m_running = false;
+    quint64 m_nextWriteId = 0;
+};
+
+} // namespace mbscope
