@@ -6,6 +6,7 @@
 #include "session/sessionprofile.h"
 #include "session/sessionrequest.h"
 #include "session/sessiontarget.h"
+#include "watch/watchdefinition.h"
 
 #include <QtCore/QList>
 #include <QtCore/QString>
@@ -17,10 +18,12 @@ namespace mbscope {
 
 // A lab's work with a device, as one versioned JSON document (*.mbscope.json, format
 // "mbscope-session"; docs/session.schema.json): the target, the requests built, the poll and
-// sweep settings, the device profile, a reference to the captured traffic and a test plan.
+// sweep settings, the device profile, a reference to the captured traffic, a test plan and
+// (since version 2) the watches.
 // SessionReader reads it (every problem, with where it is), SessionWriter writes it atomically.
 struct SessionDocument {
-    static constexpr int kVersion = 1;                 // what this mbscope writes and reads
+    // What this mbscope writes; it reads this version and older. 2: the watches (issue 16).
+    static constexpr int kVersion = 2;
     static constexpr const char *kFormat = "mbscope-session";
 
     QString name;
@@ -32,6 +35,7 @@ struct SessionDocument {
     SessionProfile profile;
     std::optional<SessionCapture> capture;
     std::vector<PlanStep> plan;
+    SessionWatches watches;
 
     // The request of the given name, or nullptr.
     [[nodiscard]] const SessionRequest *request(const QString &requestName) const

@@ -6,6 +6,7 @@
 #include "json/jsonreader.h"
 #include "profile/profileloader.h"
 #include "transport/linkurl.h"
+#include "watch/watchreader.h"
 
 #include <QtCore/QDir>
 #include <QtCore/QFile>
@@ -224,6 +225,7 @@ SessionLoadResult SessionReader::parse(const QByteArray &json, const QString &so
                                                         .arg(SessionDocument::kVersion)
                                                         .arg(JsonReader::describe(v)));
         else if (const auto version = reader.integer(root, top, "version", 1, 1'000'000)) {
+            result.version = int(*version);
             if (*version > SessionDocument::kVersion) {
                 reader.error(QStringLiteral("version"),
                              QStringLiteral("this session was written by a newer mbscope (session version %1); this mbscope reads "
@@ -235,7 +237,7 @@ SessionLoadResult SessionReader::parse(const QByteArray &json, const QString &so
         }
     }
     reader.checkKeys(root, top, {"$schema", "format", "version", "name", "notes", "target", "requests", "poll", "sweep",
-                                 "profile", "capture", "plan"});
+                                 "profile", "capture", "plan", "watches", "watchLinks", "watchLog"});
 
     SessionDocument d;
     d.name = reader.string(root, top, "name").value_or(QString());
@@ -273,6 +275,7 @@ SessionLoadResult SessionReader::parse(const QByteArray &json, const QString &so
         PlanStepReader steps(reader, names);
         d.plan = steps.readSteps(*plan, QStringLiteral("plan"));
     }
+    d.watches = WatchReader::read(reader, root);
 
     if (result.problems.isEmpty())
         result.document = std::move(d);

@@ -14,6 +14,7 @@ namespace mbscope {
 struct SessionLoadResult {
     std::optional<SessionDocument> document; // set only when there is no problem: never half loaded
     QList<ProfileProblem> problems;          // every problem found, in document order
+    int version = 0;                         // the session version the document was written in
     [[nodiscard]] bool ok() const { return document.has_value(); }
     [[nodiscard]] QString errorText() const { return ProfileProblem::join(problems); }
 };

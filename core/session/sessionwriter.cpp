@@ -1,6 +1,9 @@
 #include "session/sessionwriter.h"
 
+#include "watch/watchwriter.h"
+
 #include <QtCore/QJsonArray>
+#include <QtCore/QFile>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QSaveFile>
 
@@ -181,6 +184,7 @@ QJsonObject SessionWriter::toJson(const SessionDocument &d)
     }
     if (!d.plan.empty())
         root.insert(QLatin1String("plan"), stepsJson(d.plan));
+    WatchWriter::write(d.watches, &root);
     return root;
 }
 
@@ -189,8 +193,30 @@ QByteArray SessionWriter::toBytes(const SessionDocument &document)
     return QJsonDocument(toJson(document)).toJson(QJsonDocument::Indented);
 }
 
-bool SessionWriter::save(const SessionDocument &document, const QString &path, QString *error)
+QString SessionWriter::upgradeNotice(int version)
 {
+    if (version <= 0 || version >= SessionDocument::kVersion)
+        return {};
+    return QStringLiteral("upgraded from session version %1 to %2 (watches); mbscope versions that read only version %1 "
+                          "no longer open it")
+        .arg(version)
+        .arg(SessionDocument::kVersion);
+}
+
+bool SessionWriter::save(const SessionDocument &document, const QString &path, QString *error, QString *notice)
+{
+    if (notice) {
+        // The version of the file being replaced, when it is a session document.
+        notice->clear();
+        QFile old(path);
+        if (old.open(QIODevice::ReadOnly) && old.size() < 64 * 1024 * 1024) {
+            const QJsonObject previous = QJsonDocument::fromJson(old.readAll()).object();
+            if (previous.value(QLatin1String("format")).toString() == QLatin1String(SessionDocument::kFormat))
+                *notice = upgradeNotice(previous.value(QLatin1String("version")).toInt());
+        }
+        if (!notice->isEmpty())
+            *notice = QStringLiteral("%1: %2").arg(path, *notice);
+    }
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
         if (error)

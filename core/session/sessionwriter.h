@@ -17,8 +17,14 @@ public:
     [[nodiscard]] static QByteArray toBytes(const SessionDocument &document); // indented JSON
     // Writes atomically (QSaveFile: a temporary file beside path, written, flushed and renamed
     // over path), so that a crash or a full disk while saving leaves the previous file intact.
-    // False with *error saying which file and what the OS said.
-    static bool save(const SessionDocument &document, const QString &path, QString *error = nullptr);
+    // False with *error saying which file and what the OS said. When the file it replaces is a
+    // session of an older version, *notice says that it was upgraded (and that older mbscope
+    // versions no longer open it); else it is left empty.
+    static bool save(const SessionDocument &document, const QString &path, QString *error = nullptr,
+                     QString *notice = nullptr);
+    // "upgraded from session version 1 to 2 ..." for a document read as version; empty when it
+    // is the current version already.
+    [[nodiscard]] static QString upgradeNotice(int version);
 };
 
 } // namespace mbscope

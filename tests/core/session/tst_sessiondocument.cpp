@@ -246,7 +246,7 @@ void TestSessionDocument::writtenDefaultsLeftOut()
 {
     const QJsonObject json = SessionWriter::toJson(base());
     QCOMPARE(json.value(QLatin1String("format")).toString(), QStringLiteral("mbscope-session"));
-    QCOMPARE(json.value(QLatin1String("version")).toInt(), 1);
+    QCOMPARE(json.value(QLatin1String("version")).toInt(), SessionDocument::kVersion);
     QCOMPARE(json.keys(), (QStringList{QStringLiteral("format"), QStringLiteral("requests"), QStringLiteral("version")}));
 }
 

@@ -1,0 +1,68 @@
+#pragma once
+
+#include "watch/watchdefinition.h"
+#include "watch/watchpointvalue.h"
+
+#include <QtCore/QFile>
+#include <QtCore/QList>
+#include <QtCore/QString>
+#include <QtCore/QStringList>
+
+#include <memory>
+#include <vector>
+
+namespace mbscope {
+
+// Logs the values of watches to CSV: a file per watch in one directory, named by the watch and
+// the time the file was started ("gamma-20261126-061500.csv"), a header row with the values'
+// names and units, then a row per poll (or, in OnChange mode, a row when a value or the poll's
+// status changes): the time (ISO 8601, UTC, ms), the status, the values as shown, the error.
+// A file is closed and a new one started when it passes rollBytes, or rollSeconds after it
+// started. Rows are flushed to the OS at least once a second and on flush() / close().
+class WatchCsvLog
+{
+public:
+    // directory: settings.directory resolved against baseDirectory when relative.
+    WatchCsvLog(const WatchLogSettings &settings, const QString &baseDirectory = {});
+    ~WatchCsvLog();
+
+    // Makes the directory; false with *error when it cannot.
+    bool open(const QList<WatchDefinition> &watches, QString *error = nullptr);
+    // One poll of watch index; status "ok", "timeout"...; values empty for a failed poll.
+    // False with *error when the file cannot be written (the caller says it, and carries on).
+    bool append(int watch, qint64 timeMs, const QString &status, const QList<WatchPointValue> &values,
+                const QString &errorText = {}, QString *error = nullptr);
+    void flush();
+    void close();
+
+    [[nodiscard]] QString directory() const { return m_directory; }
+    // The files written so far, oldest first (for the report and tests).
+    [[nodiscard]] QStringList files() const { return m_files; }
+    // The header row of a watch (names with units in brackets), without the line end.
+    [[nodiscard]] static QString header(const WatchDefinition &watch);
+    // A field quoted as RFC 4180 wants when it holds a comma, a quote or a line end.
+    [[nodiscard]] static QString csvField(const QString &text);
+    // The watch's name made safe for a file name ("gamma counts/2" -> "gamma_counts_2").
+    [[nodiscard]] static QString fileStem(const QString &name);
+
+private:
+    struct File {
+        WatchDefinition watch;
+        std::unique_ptr<QFile> file;
+        qint64 startedMs = 0;
+        qint64 bytes = 0;
+        QStringList lastValues;
+        QString lastStatus;
+        bool hasRow = false;
+    };
+
+    bool startFile(File &f, qint64 timeMs, QString *error);
+
+    WatchLogSettings m_settings;
+    QString m_directory;
+    std::vector<File> m_logs;
+    QStringList m_files;
+    qint64 m_lastFlushMs = 0;
+};
+
+} // namespace mbscope
