@@ -42,7 +42,7 @@ WatchWriteWords WatchValueWrite::words(const WatchDefinition &watch, int index, 
     if (point.scale == 1 && point.offset == 0) {
         value = RegisterValue::fromText(format.type() == RegisterType::Ascii ? text : number, format);
         if (!value.ok)
-            result.error = tr("%1, %2: %3").arg(where, format.name(), value.error);
+            result.error = QStringLiteral("%1, %2: %3").arg(where, format.name(), value.error);
     } else {
         bool ok = false;
         const double engineering = QLocale::c().toDouble(number, &ok);
@@ -55,7 +55,7 @@ WatchWriteWords WatchValueWrite::words(const WatchDefinition &watch, int index, 
         }
         value = ScaledValue{format, point.scale, point.offset}.encode(engineering);
         if (!value.ok)
-            result.error = tr("%1, %2: %3").arg(where, format.name(), value.error);
+            result.error = QStringLiteral("%1, %2: %3").arg(where, format.name(), value.error);
     }
     if (value.ok)
         result.words = value.value.registers();

@@ -488,7 +488,7 @@ void WatchWorkspace::onRule(const WatchRuleEvent &event)
         return;
     w->model()->applyRule(event);
     if (event.fired)
-        Q_EMIT message(tr("%1: %2").arg(event.watchName, event.message));
+        Q_EMIT message(QStringLiteral("%1: %2").arg(event.watchName, event.message));
 }
 
 void WatchWorkspace::onLinkState(const WatchLinkState &state)
