@@ -12,6 +12,7 @@
 #include "shell/translationloader.h"
 #include "watch/rulepalette.h"
 #include "watch/watchdialog.h"
+#include "watch/watchlogcontrol.h"
 #include "watch/watchtablemodel.h"
 #include "watch/watchwindow.h"
 #include "watch/watchworkspace.h"
@@ -23,6 +24,7 @@
 #include "profile/profileloader.h"
 #include "sim/simulatorhost.h"
 
+#include <QtCore/QDir>
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
@@ -163,6 +165,7 @@ private Q_SLOTS:
     void cleanup();
     void threeDevicesPolledAtOnce();
     void byKeyboardAlone();
+    void csvLogFromTheWindow();
     void screenshots_data();
     void screenshots();
 };
@@ -335,6 +338,57 @@ void TestWorkspace::byKeyboardAlone()
     window.composer()->setFocus();
     QTest::keyClick(window.composer(), Qt::Key_W, Qt::ControlModifier);
     QCOMPARE(workspace->count(), 1);
+}
+
+// Logging started from the Workspace menu writes a CSV file per watch while the watches run; the
+// log's settings are saved in the session and come back with it.
+void TestWorkspace::csvLogFromTheWindow()
+{
+    QString error;
+    QString url;
+    std::unique_ptr<SimulatorHost> plc = Devices::serve(QStringLiteral("m221-plc"), QStringLiteral("tcp://127.0.0.1:0"), &url, &error);
+    QVERIFY2(plc, qPrintable(error));
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("logged.mbscope.json"));
+    {
+        MainWindow window;
+        WatchWorkspace *workspace = window.watchWorkspace();
+        workspace->addWatch(plcWords(url));
+        workspace->addWatch(plcCoils(url));
+        workspace->logControl()->setSettingsEditor([](WatchLogSettings &settings) {
+            settings.directory = QStringLiteral("logs"); // beside the session file
+            settings.mode = WatchLogSettings::Mode::EveryPoll;
+            settings.enabled = true;
+            return true;
+        });
+        QVERIFY(window.session()->saveAs(path));
+        workspace->logControl()->logAction()->trigger();
+        QVERIFY(workspace->logControl()->logAction()->isChecked());
+        QVERIFY(window.session()->isModified());
+        QCOMPARE(workspace->logControl()->directory(), QDir(dir.path()).filePath(QStringLiteral("logs")));
+        workspace->startAll();
+        QVERIFY(workspace->logControl()->isLogging());
+        QTRY_VERIFY_WITH_TIMEOUT(everyWatchAnswered(workspace, 4), kWaitMs);
+        workspace->stopAll();
+        QVERIFY(!workspace->logControl()->isLogging());
+        QVERIFY(window.session()->save());
+    }
+    const QStringList files = QDir(dir.filePath(QStringLiteral("logs"))).entryList({QStringLiteral("*.csv")}, QDir::Files, QDir::Name);
+    QCOMPARE(files.size(), 2);
+    for (const QString &name : files) {
+        QFile csv(QDir(dir.filePath(QStringLiteral("logs"))).filePath(name));
+        QVERIFY(csv.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = csv.readAll().split('\n');
+        QVERIFY2(lines.size() >= 5, qPrintable(name)); // the header and a row per poll
+    }
+    MainWindow reopened;
+    QVERIFY(reopened.session()->open(path));
+    const std::optional<WatchLogSettings> log = reopened.watchWorkspace()->watches().log;
+    QVERIFY(log.has_value());
+    QCOMPARE(log->directory, QStringLiteral("logs"));
+    QVERIFY(log->enabled);
+    QVERIFY(reopened.watchWorkspace()->logControl()->logAction()->isChecked());
+    plc->stop();
 }
 
 void TestWorkspace::screenshots_data()
