@@ -6,7 +6,9 @@
 #include "shell/mainwindow.h"
 #include "session/sessioncontroller.h"
 #include "decode/transactionview.h"
+#include "watch/watchworkspace.h"
 #include "shell/translationloader.h"
+#include "common/theme.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QRegularExpression>
@@ -163,10 +165,20 @@ int runGui(QApplication &app)
                                         QStringLiteral("Language of the window for this run: id (Bahasa Indonesia), en "
                                                        "(English) or system; without it, the choice in Preferences."),
                                         QStringLiteral("CODE"));
+    const QCommandLineOption themeOption(QStringLiteral("theme"),
+                                         QStringLiteral("Colours of the window for this run: light, dark or system (the "
+                                                        "desktop's); without it, the choice in Preferences."),
+                                         QStringLiteral("NAME"));
+    const QCommandLineOption tabOption(QStringLiteral("tab"),
+                                       QStringLiteral("Show the tab NAME of the main area (answer, decode, watches) at start."),
+                                       QStringLiteral("NAME"));
+    const QCommandLineOption startWatchesOption(QStringLiteral("start-watches"),
+                                                QStringLiteral("Start the session's watches at start (Watches > Start all); "
+                                                               "with --screenshot, render a few seconds later."));
     parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption, beforeSendOption, dockOption, pollOption,
-                       langOption});
+                       langOption, themeOption, tabOption, startWatchesOption});
     if (!parser.parse(QCoreApplication::arguments())) {
-        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT] [--dock NAME] [--lang CODE]\n",
+        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT] [--dock NAME] [--lang CODE] [--theme NAME] [--tab NAME] [--start-watches]\n",
                      qPrintable(parser.errorText()));
         return ExitUsage;
     }
@@ -214,6 +226,18 @@ int runGui(QApplication &app)
         language = *asked;
     }
     TranslationLoader::install(app, TranslationLoader::localeFor(language));
+    // The colours: --theme, else Preferences, else the desktop's.
+    Theme::Choice theme = Theme::storedChoice();
+    if (parser.isSet(themeOption)) {
+        const std::optional<Theme::Choice> asked = Theme::parse(parser.value(themeOption));
+        if (!asked) {
+            std::fprintf(stderr, "mbscope: --theme '%s' is not a theme: use light, dark or system\n",
+                         qPrintable(parser.value(themeOption)));
+            return ExitUsage;
+        }
+        theme = *asked;
+    }
+    Theme::apply(theme);
     MainWindow window;
     // A screenshot or an asked size is reproducible: the layout the last close saved is not used.
     if (!screenshot.isEmpty() || parser.isSet(sizeOption) || !window.restoreLayout())
@@ -244,6 +268,14 @@ int runGui(QApplication &app)
 
     if (parser.isSet(dockOption) && !raiseDock(window, parser.value(dockOption)))
         return ExitUsage;
+    if (parser.isSet(tabOption) && !window.showTab(parser.value(tabOption))) {
+        std::fprintf(stderr, "mbscope: --tab '%s' names no tab of the main area (it has: answer, decode, watches)\n",
+                     qPrintable(parser.value(tabOption)));
+        return ExitUsage;
+    }
+    const bool startWatches = parser.isSet(startWatchesOption);
+    if (startWatches)
+        window.watchWorkspace()->startAll();
     int pollCount = 0;
     if (parser.isSet(pollOption)) {
         bool countOk = false;
@@ -254,8 +286,17 @@ int runGui(QApplication &app)
             return ExitUsage;
         }
     }
-    if (!screenshot.isEmpty())
+    if (!screenshot.isEmpty() && startWatches) {
+        // The watches' first answers, and a few more polls for the counters.
+        QTimer::singleShot(kScreenshotAnswerWaitMs, &window, [&app, &window, screenshot] {
+            const bool saved = saveScreenshot(window, screenshot);
+            if (!saved)
+                std::fprintf(stderr, "mbscope: cannot write the screenshot to %s\n", qPrintable(screenshot));
+            app.exit(saved ? ExitOk : ExitFailure);
+        });
+    } else if (!screenshot.isEmpty()) {
         scheduleScreenshot(app, window, screenshot, simulated && !parser.isSet(beforeSendOption), simulated ? pollCount : 0);
+    }
 
     bool ok = false;
     const int quitAfterMs = qEnvironmentVariableIntValue("MBSCOPE_QUIT_AFTER_MS", &ok);

@@ -75,6 +75,22 @@ echo "screenshots: poll-histogram.png"
 "$bin" sweep --target "$target" --hex "$read_all" --intervals 0,10,50 --count 100 --histogram "$out/sweep.png" >/dev/null
 echo "screenshots: sweep.png"
 
+# The Watches tab: the simulated M221 on a free port, the example watch session pointed at it,
+# its watches started; in the light and the dark theme.
+"$bin" simulate --profile m221-plc --listen tcp://127.0.0.1:0 --quiet >"$scratch/plc.out" 2>&1 &
+plc_pid=$!
+plc=
+for _ in $(seq 100); do
+    plc=$(sed -n 's/^listening \(tcp:[^ ]*\).*/\1/p' "$scratch/plc.out")
+    [[ -n $plc ]] && break
+    sleep 0.1
+done
+[[ -n $plc ]] || { echo "screenshots: the PLC simulator did not start:" >&2; cat "$scratch/plc.out" >&2; exit 1; }
+sed "s|tcp://127.0.0.1:5020|$plc|g" "$here/docs/examples/plc-watches.mbscope.json" >"$scratch/plc-watches.mbscope.json"
+window workspace --session "$scratch/plc-watches.mbscope.json" --tab watches --start-watches --theme light
+window workspace-dark --session "$scratch/plc-watches.mbscope.json" --tab watches --start-watches --theme dark
+kill -INT "$plc_pid" 2>/dev/null && wait "$plc_pid" 2>/dev/null || true
+
 if command -v pngquant >/dev/null; then
     pngquant --force --skip-if-larger --strip --ext .png -- "$out"/*.png || true
 elif command -v optipng >/dev/null; then

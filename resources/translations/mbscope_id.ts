@@ -70,7 +70,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../app/gui.cpp" line="+234"/>
+        <location filename="../../app/gui.cpp" line="+258"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
@@ -2791,7 +2791,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+87"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+85"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -2804,6 +2804,11 @@
         <location line="+1"/>
         <source>&amp;Decode any frame</source>
         <translation>&amp;Dekode frame apa saja</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Watches</source>
+        <translation>Pantauan</translation>
     </message>
     <message>
         <location line="+49"/>
@@ -2831,7 +2836,12 @@
         <translation>Simulator</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+58"/>
+        <source>The connection bar names no target: %1</source>
+        <translation>Bilah koneksi tidak menyebut target: %1</translation>
+    </message>
+    <message>
+        <location line="+88"/>
         <source>%1 dock (F6: the next one)</source>
         <translation>Dok %1 (F6: dok berikutnya)</translation>
     </message>
@@ -2896,7 +2906,12 @@
         <translation>Susun dengan &amp;formulir</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
+        <source>Wor&amp;kspace</source>
+        <translation>Da&amp;ftar pantau</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>&amp;View</source>
         <translation>&amp;Tampilan</translation>
     </message>
@@ -3275,7 +3290,7 @@
 <context>
     <name>mbscope::PreferencesDialog</name>
     <message>
-        <location filename="../../ui/shell/preferencesdialog.cpp" line="+24"/>
+        <location filename="../../ui/shell/preferencesdialog.cpp" line="+25"/>
         <source>&amp;Record all traffic of the window&apos;s connections</source>
         <translation>&amp;Rekam semua lalu lintas sambungan jendela</translation>
     </message>
@@ -3295,9 +3310,19 @@
         <translation>Bahasa menu, panel dan pesan. Baris perintah dan keluaran JSON tetap berbahasa Inggris.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
+        <source>The window&apos;s colours: the desktop&apos;s, or light or dark whatever the desktop uses. Rule colours in the watches stay readable in both.</source>
+        <translation>Warna jendela: warna desktop, atau terang atau gelap apa pun yang dipakai desktop. Warna aturan di pantauan tetap terbaca di keduanya.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Language:</source>
         <translation>&amp;Bahasa:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T&amp;heme:</source>
+        <translation>Te&amp;ma:</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3360,7 +3385,7 @@
         <translation>Perekaman</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+91"/>
         <source>mbscope --lang id (or en) chooses the language for one run.</source>
         <translation>mbscope --lang id (atau en) memilih bahasa untuk satu kali jalan.</translation>
     </message>
@@ -4808,6 +4833,24 @@ Klik kanan untuk mengganti format</translation>
     </message>
 </context>
 <context>
+    <name>mbscope::RulePalette</name>
+    <message>
+        <location filename="../../ui/watch/rulepalette.cpp" line="+73"/>
+        <source>alarm</source>
+        <translation>alarm</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>warning</source>
+        <translation>peringatan</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>info</source>
+        <translation>info</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::SavedRequests</name>
     <message>
         <location filename="../../ui/compose/savedrequests.cpp" line="+21"/>
@@ -4898,7 +4941,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Simpan sesi seb&amp;agai…</translation>
     </message>
     <message>
-        <location line="+134"/>
+        <location line="+138"/>
         <source>line %1, column %2: %3</source>
         <translation>baris %1, kolom %2: %3</translation>
     </message>
@@ -6100,6 +6143,24 @@ Klik kanan untuk mengganti format</translation>
     </message>
 </context>
 <context>
+    <name>mbscope::Theme</name>
+    <message>
+        <location filename="../../ui/common/theme.cpp" line="+114"/>
+        <source>Light</source>
+        <translation>Terang</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Dark</source>
+        <translation>Gelap</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Follow the desktop</source>
+        <translation>Ikuti desktop</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::TlsFilesField</name>
     <message>
         <location filename="../../ui/link/tlsfilesfield.cpp" line="+17"/>
@@ -6597,6 +6658,861 @@ Klik kanan untuk mengganti format</translation>
         <location line="+39"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchDialog</name>
+    <message>
+        <location filename="../../ui/watch/watchdialog.cpp" line="+49"/>
+        <source>Each address holds a 32-bit value (&amp;Enron/Daniel)</source>
+        <translation>Tiap alamat berisi nilai 32-bit (&amp;Enron/Daniel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Poll this watch (&amp;on)</source>
+        <translation>Polling pantauan ini (&amp;aktif)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Watch</source>
+        <translation>Pantauan</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The link URL: tcp://host:port, rtu-tcp://host:port, udp://host:port, rtu:///dev/ttyUSB0?baud=19200</source>
+        <translation>URL link: tcp://host:port, rtu-tcp://host:port, udp://host:port, rtu:///dev/ttyUSB0?baud=19200</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>01 Read coils</source>
+        <translation>01 Baca coil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>02 Read discrete inputs</source>
+        <translation>02 Baca input diskret</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>03 Read holding registers</source>
+        <translation>03 Baca holding register</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>04 Read input registers</source>
+        <translation>04 Baca input register</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>18 Read FIFO queue</source>
+        <translation>18 Baca antrean FIFO</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start to start; 0: as fast as the link allows</source>
+        <translation>Dari awal ke awal; 0: secepat yang dimungkinkan link</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nama:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Target:</source>
+        <translation>&amp;Target:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Unit:</source>
+        <translation>&amp;Unit:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Function:</source>
+        <translation>&amp;Fungsi:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Address:</source>
+        <translation>A&amp;lamat:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Quantity:</source>
+        <translation>&amp;Jumlah:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Interval:</source>
+        <translation>&amp;Interval:</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Add &amp;point</source>
+        <translation>Tambah &amp;titik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remo&amp;ve point</source>
+        <translation>&amp;Hapus titik</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Add &amp;rule</source>
+        <translation>Tambah at&amp;uran</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove ru&amp;le</source>
+        <translation>Hapus atu&amp;ran</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Poin&amp;ts</source>
+        <translation>Ti&amp;tik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rule&amp;s</source>
+        <translation>Atura&amp;n</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>Name: give the watch a name (used in CSV file names and logs)</source>
+        <translation>Nama: beri pantauan sebuah nama (dipakai di nama file CSV dan log)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Name: another watch is called &apos;%1&apos;</source>
+        <translation>Nama: pantauan lain sudah bernama &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Target: %1</source>
+        <translation>Target: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Address: %1</source>
+        <translation>Alamat: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Point at address %1 lies outside the watch&apos;s addresses %2 to %3</source>
+        <translation>Titik di alamat %1 berada di luar alamat pantauan %2 sampai %3</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchFactory</name>
+    <message>
+        <location filename="../../ui/watch/watchfactory.cpp" line="+79"/>
+        <source>The composer holds no request: build a read (01-04) first.</source>
+        <translation>Penyusun tidak berisi permintaan: buat dulu pembacaan (01-04).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The composer&apos;s request cannot be read: %1</source>
+        <translation>Permintaan penyusun tidak dapat dibaca: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The composer&apos;s request is function 0x%1: a watch reads (01-04, or the FIFO 18).</source>
+        <translation>Permintaan penyusun adalah fungsi 0x%1: pantauan membaca (01-04, atau FIFO 18).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The composer&apos;s request is %1 bytes long: a read needs its address and quantity.</source>
+        <translation>Permintaan penyusun panjangnya %1 byte: pembacaan perlu alamat dan jumlahnya.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>The composer&apos;s request reads %1 values: a watch reads 1 to %2.</source>
+        <translation>Permintaan penyusun membaca %1 nilai: pantauan membaca 1 sampai %2.</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchLogControl</name>
+    <message>
+        <location filename="../../ui/watch/watchlogcontrol.cpp" line="+17"/>
+        <source>&amp;Log values to CSV</source>
+        <translation>&amp;Catat nilai ke CSV</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CSV log settin&amp;gs…</source>
+        <translation>Pengaturan log CS&amp;V…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Log to CSV</source>
+        <translation>Catat ke CSV</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Write the watches&apos; values to CSV files while they run (one file per watch)</source>
+        <translation>Tulis nilai pantauan ke file CSV selama berjalan (satu file per pantauan)</translation>
+    </message>
+    <message>
+        <location line="+86"/>
+        <source>Not logging to CSV: %1</source>
+        <translation>Tidak mencatat ke CSV: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Logging the watches to CSV in %1</source>
+        <translation>Mencatat pantauan ke CSV di %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+11"/>
+        <source>CSV log closed: %n file(s) in %1</source>
+        <translation>
+            <numerusform>Log CSV ditutup: %n file di %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>The CSV log cannot be written: %1</source>
+        <translation>Log CSV tidak dapat ditulis: %1</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchLogDialog</name>
+    <message>
+        <location filename="../../ui/watch/watchlogdialog.cpp" line="+23"/>
+        <source>&amp;Log while the watches run</source>
+        <translation>&amp;Catat selama pantauan berjalan</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>CSV log of the watches</source>
+        <translation>Log CSV pantauan</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>One CSV file per watch goes here; a folder that is not absolute is beside the session file</source>
+        <translation>Satu file CSV per pantauan disimpan di sini; folder yang tidak absolut berada di samping file sesi</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Telusuri…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CSV log folder</source>
+        <translation>Folder log CSV</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>A row per poll</source>
+        <translation>Satu baris per polling</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A row when a value changed</source>
+        <translation>Satu baris saat sebuah nilai berubah</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+3"/>
+        <source>never</source>
+        <translation>tidak pernah</translation>
+    </message>
+    <message>
+        <location line="-2"/>
+        <source> MiB</source>
+        <translation> MiB</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> min</source>
+        <translation> mnt</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Folder:</source>
+        <translation>&amp;Folder:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Rows:</source>
+        <translation>&amp;Baris:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New file after (&amp;size):</source>
+        <translation>File baru setelah (&amp;ukuran):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New file after (&amp;age):</source>
+        <translation>File baru setelah (u&amp;mur):</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchPointTable</name>
+    <message>
+        <location filename="../../ui/watch/watchpointtable.cpp" line="+11"/>
+        <source>Address</source>
+        <translation>Alamat</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Name</source>
+        <translation>Nama</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Format</source>
+        <translation>Format</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Scale</source>
+        <translation>Skala</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Offset</source>
+        <translation>Offset</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Writable</source>
+        <translation>Dapat ditulis</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Address: the PDU address (0-based; 0x hex allowed). Format: u16, i16, u32-abcd, f32-cdab, ... Value = raw x scale + offset.</source>
+        <translation>Alamat: alamat PDU (mulai 0; hex 0x boleh). Format: u16, i16, u32-abcd, f32-cdab, ... Nilai = mentah x skala + offset.</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>point %1</source>
+        <translation>titik %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: address &apos;%2&apos; is not 0 to 65535</source>
+        <translation>%1: alamat &apos;%2&apos; tidak di antara 0 dan 65535</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1: scale &apos;%2&apos; is not a number other than 0</source>
+        <translation>%1: skala &apos;%2&apos; bukan angka selain 0</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: offset &apos;%2&apos; is not a number</source>
+        <translation>%1: offset &apos;%2&apos; bukan angka</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchProfileDialog</name>
+    <message>
+        <location filename="../../ui/watch/watchprofiledialog.cpp" line="+25"/>
+        <source>Watches from a device profile</source>
+        <translation>Pantauan dari profil perangkat</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A shipped profile&apos;s name, or the path of a profile file</source>
+        <translation>Nama profil bawaan, atau path file profil</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Telusuri…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Device profile</source>
+        <translation>Profil perangkat</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Profiles (*.json)</source>
+        <translation>Profil (*.json)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Profile:</source>
+        <translation>&amp;Profil:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Unit:</source>
+        <translation>&amp;Unit:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Target:</source>
+        <translation>&amp;Target:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Interval:</source>
+        <translation>&amp;Interval:</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchRuleTable</name>
+    <message>
+        <location filename="../../ui/watch/watchruletable.cpp" line="+24"/>
+        <source>Point</source>
+        <translation>Titik</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Condition</source>
+        <translation>Kondisi</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Low</source>
+        <translation>Bawah</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>High</source>
+        <translation>Atas</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>For polls</source>
+        <translation>Selama polling</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Severity</source>
+        <translation>Tingkat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Colour</source>
+        <translation>Warna</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Message</source>
+        <translation>Pesan</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>above: value &gt; high; below: value &lt; low; outside/inside: the range low..high; equal/not equal: low; bits: raw AND low (a mask) not 0. Colour: #RRGGBB, empty for the severity&apos;s.</source>
+        <translation>di atas: nilai &gt; atas; di bawah: nilai &lt; bawah; di luar/di dalam: rentang bawah..atas; sama/tidak sama: bawah; bit: mentah AND bawah (sebuah mask) bukan 0. Warna: #RRGGBB, kosong untuk warna tingkatnya.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>above</source>
+        <translation>di atas</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>below</source>
+        <translation>di bawah</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>outside</source>
+        <translation>di luar</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>inside</source>
+        <translation>di dalam</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>equal</source>
+        <translation>sama dengan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not equal</source>
+        <translation>tidak sama dengan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bits set</source>
+        <translation>bit menyala</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>rule %1</source>
+        <translation>aturan %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: name the point (its name or address)</source>
+        <translation>%1: sebutkan titiknya (nama atau alamatnya)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: low and high must be numbers</source>
+        <translation>%1: bawah dan atas harus angka</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: &apos;for polls&apos; must be 1 or more</source>
+        <translation>%1: &apos;selama polling&apos; harus 1 atau lebih</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: colour &apos;%2&apos; is not #RRGGBB</source>
+        <translation>%1: warna &apos;%2&apos; bukan #RRGGBB</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchTableModel</name>
+    <message>
+        <location filename="../../ui/watch/watchtablemodel.cpp" line="+196"/>
+        <source>Double-click or press F2 to write a new value</source>
+        <translation>Klik ganda atau tekan F2 untuk menulis nilai baru</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Address</source>
+        <translation>Alamat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reference</source>
+        <translation>Referensi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Name</source>
+        <translation>Nama</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Value</source>
+        <translation>Nilai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rule</source>
+        <translation>Aturan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Changed</source>
+        <translation>Berubah</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchValueWrite</name>
+    <message>
+        <location filename="../../ui/watch/watchvaluewrite.cpp" line="+22"/>
+        <source>%1: only points marked writable of a coil (01) or holding register (03) watch are written</source>
+        <translation>%1: hanya titik bertanda dapat ditulis dari pantauan coil (01) atau holding register (03) yang ditulis</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>address %1</source>
+        <translation>alamat %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (address %2)</source>
+        <translation>%1 (alamat %2)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: &apos;%2&apos; is not a coil value: expected 1 or 0 (on/off, true/false)</source>
+        <translation>%1: &apos;%2&apos; bukan nilai coil: diharapkan 1 atau 0 (on/off, true/false)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1: &apos;%2&apos; is not a number (the point is scaled: raw = (value - %3) / %4)</source>
+        <translation>%1: &apos;%2&apos; bukan angka (titik ini berskala: mentah = (nilai - %3) / %4)</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchWindow</name>
+    <message>
+        <location filename="../../ui/watch/watchwindow.cpp" line="+68"/>
+        <source>polls %1 · ok %2 · exceptions %3 · timeouts %4</source>
+        <translation>polling %1 · ok %2 · eksepsi %3 · timeout %4</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> · other errors %1</source>
+        <translation> · galat lain %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> · rules fired %1</source>
+        <translation> · aturan terpicu %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> · latency %1 ms</source>
+        <translation> · latensi %1 ms</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> · last error at %1: %2</source>
+        <translation> · galat terakhir pukul %1: %2</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>link: connecting</source>
+        <translation>link: menyambung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>link: up</source>
+        <translation>link: aktif</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>link: down (%1)</source>
+        <translation>link: putus (%1)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>link: down (%1), retry in %2 s</source>
+        <translation>link: putus (%1), coba lagi dalam %2 d</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>link: stopped</source>
+        <translation>link: berhenti</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>, reconnected %1×</source>
+        <translation>, tersambung ulang %1×</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::WatchWorkspace</name>
+    <message>
+        <location filename="../../ui/watch/watchworkspace.cpp" line="+65"/>
+        <source>No watches yet. A watch polls a block of a device at its own interval and shows its values with names, units and rule colours. Make one with Workspace → New watch (%1), from the composer&apos;s read request (%2) or from a device profile (%3); Start all (%4) polls them together.</source>
+        <translation>Belum ada pantauan. Sebuah pantauan mem-polling satu blok perangkat pada intervalnya sendiri dan menampilkan nilainya dengan nama, unit, dan warna aturan. Buat dengan Daftar pantau → Pantauan baru (%1), dari permintaan baca penyusun (%2) atau dari profil perangkat (%3); Mulai semua (%4) mem-polling semuanya bersama.</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>&amp;New watch…</source>
+        <translation>Pantauan &amp;baru…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>New watch</source>
+        <translation>Pantauan baru</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New watch from the composer&apos;s &amp;request</source>
+        <translation>Pantauan baru dari &amp;permintaan penyusun</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>From request</source>
+        <translation>Dari permintaan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New watches from a device &amp;profile…</source>
+        <translation>Pantauan baru dari p&amp;rofil perangkat…</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%n watch(es) made from %1</source>
+        <translation>
+            <numerusform>%n pantauan dibuat dari %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>From profile</source>
+        <translation>Dari profil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Edit watch…</source>
+        <translation>&amp;Ubah pantauan…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Duplicate watch</source>
+        <translation>&amp;Gandakan pantauan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Close watch</source>
+        <translation>&amp;Tutup pantauan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move watch &amp;left</source>
+        <translation>Geser pantauan ke &amp;kiri</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Move watch ri&amp;ght</source>
+        <translation>Geser pantauan ke ka&amp;nan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Start all</source>
+        <translation>&amp;Mulai semua</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>S&amp;top all</source>
+        <translation>&amp;Hentikan semua</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ne&amp;xt watch</source>
+        <translation>Pantauan ber&amp;ikutnya</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Write value…</source>
+        <translation>Tu&amp;lis nilai…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>C&amp;opy values</source>
+        <translation>&amp;Salin nilai</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>T&amp;abbed windows</source>
+        <translation>Jendela b&amp;ertab</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tabbed</source>
+        <translation>Bertab</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Watches as tabs, or as windows tiled side by side</source>
+        <translation>Pantauan sebagai tab, atau sebagai jendela berjajar</translation>
+    </message>
+    <message>
+        <location line="+109"/>
+        <source>%1 (off)</source>
+        <translation>%1 (mati)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1, unit %2, every %3 ms</source>
+        <translation>%1, unit %2, setiap %3 ms</translation>
+    </message>
+    <message>
+        <location line="+104"/>
+        <source>watch</source>
+        <translation>pantauan</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>No composer to take a request from.</source>
+        <translation>Tidak ada penyusun untuk diambil permintaannya.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Watch &apos;%1&apos; made from the composer&apos;s request</source>
+        <translation>Pantauan &apos;%1&apos; dibuat dari permintaan penyusun</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The profile %1 was not loaded: %2</source>
+        <translation>Profil %1 tidak dimuat: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The profile %1 has no unit %2 with registers or bits to watch</source>
+        <translation>Profil %1 tidak punya unit %2 dengan register atau bit untuk dipantau</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>No watches to start: make one first (Workspace → New watch)</source>
+        <translation>Tidak ada pantauan untuk dimulai: buat dulu (Daftar pantau → Pantauan baru)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Written: %1</source>
+        <translation>Ditulis: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Not written: %1</source>
+        <translation>Tidak ditulis: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+6"/>
+        <source>Polling %n watch(es)</source>
+        <translation>
+            <numerusform>Mem-polling %n pantauan</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Watches stopped</source>
+        <translation>Pantauan dihentikan</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>Choose a value in a watch&apos;s table to write</source>
+        <translation>Pilih nilai di tabel pantauan untuk ditulis</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Not writable: only points marked writable of a coil or holding register watch are written (Edit watch → Points → Writable)</source>
+        <translation>Tidak dapat ditulis: hanya titik bertanda dapat ditulis dari pantauan coil atau holding register yang ditulis (Ubah pantauan → Titik → Dapat ditulis)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Write %1</source>
+        <translation>Tulis %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New value of %1 (%2):</source>
+        <translation>Nilai baru %1 (%2):</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>No such value</source>
+        <translation>Nilai itu tidak ada</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Not written: start the watches first (Start all, %1)</source>
+        <translation>Tidak ditulis: mulai dulu pantauannya (Mulai semua, %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Writing %1 to %2</source>
+        <translation>Menulis %1 ke %2</translation>
     </message>
 </context>
 </TS>

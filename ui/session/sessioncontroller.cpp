@@ -93,6 +93,8 @@ void SessionController::addMenuActions(QMenu *menu)
 SessionDocument SessionController::currentDocument() const
 {
     SessionDocument d = m_base;
+    if (m_getWatches)
+        d.watches = m_getWatches();
     const ConnectionBar::State bar = m_bar->state();
     d.target.url = bar.target ? bar.target->toString() : QString();
     d.target.timeoutMs = bar.timeoutMs > 0 ? bar.timeoutMs : -1;
@@ -201,6 +203,8 @@ void SessionController::apply(const SessionDocument &document)
         composer.count = int(document.poll->count);
     }
     m_composer->setState(composer);
+    if (m_setWatches)
+        m_setWatches(document.watches);
     m_savedAtOpen = m_composer->state().savedRequests;
     for (const SessionRequest &request : document.requests) // the document's own stay in it
         m_savedAtOpen.removeIf([&request](const SavedRequest &s) { return s.name == request.name; });

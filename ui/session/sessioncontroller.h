@@ -1,6 +1,7 @@
 #pragma once
 
 #include "session/sessiondocument.h"
+#include "watch/watchdefinition.h"
 #include "json/profileproblem.h"
 #include "compose/savedrequests.h"
 
@@ -63,6 +64,16 @@ public:
     using BeforeSave = std::function<void(SessionDocument &document, const QString &path)>;
     void setBeforeSave(BeforeSave beforeSave) { m_beforeSave = std::move(beforeSave); }
 
+    // The watches of the window's workspace: read into the document when it is made (saved,
+    // compared for the modified flag) and put back when a session is opened or a new one made.
+    void setWatchesAccess(std::function<SessionWatches()> get, std::function<void(const SessionWatches &)> set)
+    {
+        m_getWatches = std::move(get);
+        m_setWatches = std::move(set);
+    }
+    // Something the document holds changed outside the panels the controller watches itself.
+    void refreshModified() { updateModified(); }
+
     // Opens path: false (the problems reported, the panels untouched) when it cannot be read.
     // Does not ask about unsaved changes: openWithPrompt does.
     bool open(const QString &path);
@@ -113,6 +124,8 @@ private:
     ProblemReport m_report;
     FileChooser m_chooser;
     BeforeSave m_beforeSave;
+    std::function<SessionWatches()> m_getWatches;
+    std::function<void(const SessionWatches &)> m_setWatches;
 };
 
 } // namespace mbscope

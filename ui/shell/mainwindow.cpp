@@ -23,6 +23,8 @@
 #include "traffic/trafficmonitor.h"
 #include "decode/transactionview.h"
 #include "analysis/trendpanels.h"
+#include "watch/watchfactory.h"
+#include "watch/watchworkspace.h"
 
 #include "protocol/adubuilder.h"
 
@@ -83,6 +85,7 @@ MainWindow::MainWindow(QWidget *parent)
     if (auto *layout = qobject_cast<QVBoxLayout *>(centralWidget()->layout()))
         layout->insertWidget(layout->indexOf(m_banner) + 1, m_recording->recoveryBanner());
     m_recording->offerRecovery();
+    buildWorkspace();
     makeDocksScrollable();
     createMenus();
     statusBar()->showMessage(tr("Ready"), 3000);
@@ -114,6 +117,10 @@ void MainWindow::buildUi()
     m_tabs->setDocumentMode(true);
     m_tabs->addTab(m_answerView, tr("&Answer"));
     m_tabs->addTab(m_decodePanel, tr("&Decode any frame"));
+    m_workspace = new WatchWorkspace(this);
+    // No accelerator: every letter of the word is taken in the window; Ctrl+F6 and the Watches
+    // menu bring the tab forward.
+    m_tabs->addTab(m_workspace, tr("Watches"));
 
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->addWidget(m_composer);
@@ -326,6 +333,47 @@ void MainWindow::showInRegisterTable(const Transaction &transaction)
         return;
     m_lastRead = transaction.request;
     m_registers->showTransaction(transaction, framing);
+}
+
+void MainWindow::buildWorkspace()
+{
+    // New watches start from what the window shows: the connection bar's target, the composer's
+    // read and its poll interval.
+    m_workspace->setTargetSource([this] {
+        const std::optional<LinkUrl> url = m_connectionBar->url();
+        return url ? url->toString() : QString();
+    });
+    m_workspace->setRequestSource([this](const QStringList &taken) {
+        const std::optional<LinkUrl> url = m_connectionBar->url();
+        if (!url) {
+            WatchFromRequest none;
+            none.error = tr("The connection bar names no target: %1").arg(m_connectionBar->errorText());
+            return none;
+        }
+        return WatchFactory::fromRequest(m_composer->bytes(), url->framing(), url->toString(),
+                                         m_composer->intervalSpin()->value(), taken);
+    });
+    connect(m_workspace, &WatchWorkspace::message, this, [this](const QString &text) { statusBar()->showMessage(text, 10000); });
+    // The watches are part of the session: saved with it, put back when one is opened.
+    m_session->setWatchesAccess([this] { return m_workspace->watches(); },
+                                [this](const SessionWatches &watches) { m_workspace->setWatches(watches); });
+    // A log directory that is not absolute is relative to the session document.
+    m_workspace->setSessionPathSource([this] { return m_session->filePath(); });
+    connect(m_workspace, &WatchWorkspace::changed, m_session, &SessionController::refreshModified);
+    m_session->markClean();
+}
+
+bool MainWindow::showTab(const QString &name)
+{
+    const QString key = name.trimmed().toLower();
+    QWidget *tab = key == QLatin1String("answer") ? static_cast<QWidget *>(m_answerView)
+        : key == QLatin1String("decode")          ? static_cast<QWidget *>(m_decodePanel)
+        : key == QLatin1String("watches")         ? static_cast<QWidget *>(m_workspace)
+                                                  : nullptr;
+    if (!tab)
+        return false;
+    m_tabs->setCurrentWidget(tab);
+    return true;
 }
 
 void MainWindow::makeDocksScrollable()
@@ -555,6 +603,18 @@ void MainWindow::createMenus()
     form->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
 
     m_sessionTools->addMenu(menuBar());
+
+    // "Watches" has no letter the window does not use already (nor the Indonesian words).
+    QMenu *watches = menuBar()->addMenu(tr("Wor&kspace"));
+    for (QAction *action : m_workspace->menuActions()) {
+        if (!action) {
+            watches->addSeparator();
+            continue;
+        }
+        watches->addAction(action);
+        // What the menu does happens in the Watches tab: it comes forward.
+        connect(action, &QAction::triggered, this, [this] { m_tabs->setCurrentWidget(m_workspace); });
+    }
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_trafficDock->toggleViewAction());

@@ -28,6 +28,7 @@ class SimulatorPanel;
 class TrafficMonitor;
 class TrendPanels;
 class TransactionView;
+class WatchWorkspace;
 
 // The window only assembles: the connection bar, the composer, the answer and decode views, the
 // status bar and the menus are their own classes; LinkController talks to the engine. Here they
@@ -72,6 +73,10 @@ public:
     [[nodiscard]] SessionTools *sessionTools() const { return m_sessionTools; }
     [[nodiscard]] RecordingControl *recording() const { return m_recording; }
     [[nodiscard]] SimulatorPanel *simulatorPanel() const { return m_simulatorPanel; }
+    // The Watches tab of the main area: the session's watch windows (ui/watch).
+    [[nodiscard]] WatchWorkspace *watchWorkspace() const { return m_workspace; }
+    // Shows the main area's tab: "answer", "decode" or "watches"; false for another name.
+    bool showTab(const QString &name);
 
     // Window geometry and dock layout kept in QSettings ("window/geometry", "window/state"):
     // restoreLayout() puts back what the last close saved; false when nothing was saved.
@@ -96,6 +101,7 @@ private:
     void makeDocksScrollable();
     void sendWrite(const QByteArray &pdu, const QString &description);
     void createMenus();
+    void buildWorkspace();
     void showAbout();
 
     LinkController *m_controller = nullptr;
@@ -121,6 +127,7 @@ private:
     RecordingControl *m_recording = nullptr;
     SimulatorPanel *m_simulatorPanel = nullptr;
     QDockWidget *m_simulatorDock = nullptr;
+    WatchWorkspace *m_workspace = nullptr;
     QByteArray m_lastRead; // the read whose answer the register table shows: sent again after a write
     bool m_layoutRestored = false; // the docks' sizes came from QSettings: the first show keeps them
     bool m_fitted = false; // panel proportions set on the first show, then left to the user

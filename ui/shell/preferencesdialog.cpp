@@ -20,6 +20,7 @@ namespace mbscope {
 PreferencesDialog::PreferencesDialog(QWidget *parent)
     : QDialog(parent)
     , m_language(new QComboBox(this))
+    , m_theme(new QComboBox(this))
     , m_note(new QLabel(this))
     , m_record(new QCheckBox(tr("&Record all traffic of the window's connections"), this))
     , m_folder(new QLineEdit(this))
@@ -47,8 +48,16 @@ PreferencesDialog::PreferencesDialog(QWidget *parent)
     m_note->setObjectName(QStringLiteral("languageNote"));
     m_note->setWordWrap(true);
 
+    m_theme->setObjectName(QStringLiteral("themeBox"));
+    for (Theme::Choice choice : {Theme::Choice::System, Theme::Choice::Light, Theme::Choice::Dark})
+        m_theme->addItem(Theme::displayName(choice), QVariant::fromValue(int(choice)));
+    m_theme->setToolTip(tr("The window's colours: the desktop's, or light or dark whatever the desktop uses. "
+                           "Rule colours in the watches stay readable in both."));
+    setThemeChoice(Theme::storedChoice());
+
     auto *form = new QFormLayout;
     form->addRow(tr("&Language:"), m_language);
+    form->addRow(tr("T&heme:"), m_theme);
     m_simulator = new QCheckBox(tr("Start the built-in &simulator and connect to it at every start"), this);
     m_simulator->setObjectName(QStringLiteral("startSimulatorBox"));
     m_simulator->setToolTip(tr("Off: only the first run does; later starts open the last session (or put back the "
@@ -121,6 +130,17 @@ void PreferencesDialog::setLanguageChoice(TranslationLoader::Choice choice)
     m_language->setCurrentIndex(row < 0 ? 0 : row);
 }
 
+Theme::Choice PreferencesDialog::themeChoice() const
+{
+    return Theme::Choice(m_theme->currentData().toInt());
+}
+
+void PreferencesDialog::setThemeChoice(Theme::Choice choice)
+{
+    const int row = m_theme->findData(QVariant::fromValue(int(choice)));
+    m_theme->setCurrentIndex(row < 0 ? 0 : row);
+}
+
 bool PreferencesDialog::startsSimulator()
 {
     return QSettings().value(QLatin1String(kStartSimulatorKey), false).toBool();
@@ -129,6 +149,10 @@ bool PreferencesDialog::startsSimulator()
 bool PreferencesDialog::apply()
 {
     QSettings().setValue(QLatin1String(kStartSimulatorKey), m_simulator->isChecked());
+    if (themeChoice() != Theme::storedChoice() || themeChoice() != Theme::current()) {
+        Theme::storeChoice(themeChoice());
+        Theme::apply(themeChoice());
+    }
     const TranslationLoader::Choice chosen = languageChoice();
     if (chosen == m_stored)
         return false;

@@ -2,6 +2,8 @@
 
 #include "translationloader.h"
 
+#include "common/theme.h"
+
 #include "session/recordingsettings.h"
 
 #include <QtWidgets/QDialog>
@@ -15,7 +17,8 @@ class QToolButton;
 
 namespace mbscope {
 
-// Tools > Preferences: the window's language (the system's, English or Bahasa Indonesia), kept in
+// Tools > Preferences: the window's theme (Theme: the desktop's colours, light or dark, applied
+// at once) and language (the system's, English or Bahasa Indonesia), kept in
 // QSettings and used from the next start: every panel builds its texts once, so a live switch
 // would leave half the window in the old language. And the recording of traffic: on or off, the
 // capture folder, the size of a journal part and of the whole folder (RecordingSettings).
@@ -29,7 +32,12 @@ public:
     void setLanguageChoice(TranslationLoader::Choice choice);
     [[nodiscard]] QComboBox *languageBox() const { return m_language; }
 
-    // Stores the choices; true when the language differs from what was stored (a restart is needed).
+    // The window's colours (Theme): applied at once when the dialog is accepted.
+    [[nodiscard]] Theme::Choice themeChoice() const;
+    void setThemeChoice(Theme::Choice choice);
+    [[nodiscard]] QComboBox *themeBox() const { return m_theme; }
+
+    // Stores the choices and applies the theme; true when the language differs from what was stored (a restart is needed).
     bool apply();
 
     // "startup/simulator": every start launches the built-in simulator and connects to it. Off
@@ -46,6 +54,7 @@ private:
     void updateRecordingEnabled();
 
     QComboBox *m_language = nullptr;
+    QComboBox *m_theme = nullptr;
     QLabel *m_note = nullptr;
     QCheckBox *m_record = nullptr;
     QCheckBox *m_simulator = nullptr;

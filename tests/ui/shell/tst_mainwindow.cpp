@@ -51,7 +51,7 @@ void TestMainWindow::menus()
                 actions << a->text();
         }
     }
-    QCOMPARE(titles, (QStringList{QStringLiteral("&File"), QStringLiteral("&Request"), QStringLiteral("&Session"),
+    QCOMPARE(titles, (QStringList{QStringLiteral("&File"), QStringLiteral("&Request"), QStringLiteral("&Session"), QStringLiteral("Wor&kspace"),
                                   QStringLiteral("&View"), QStringLiteral("&Tools"), QStringLiteral("&Help")}));
     QVERIFY(actions.contains(QStringLiteral("&Find in traffic")));
     QVERIFY(actions.contains(QStringLiteral("&Send")));

@@ -1,0 +1,579 @@
+#include "watchworkspace.h"
+
+#include "watchdialog.h"
+#include "watchlogcontrol.h"
+#include "watchprofiledialog.h"
+#include "watchtablemodel.h"
+#include "watchvaluewrite.h"
+#include "watchwindow.h"
+
+#include "fleet/watchrunner.h"
+#include "profile/profileloader.h"
+
+#include <QtGui/QAction>
+#include <QtGui/QClipboard>
+#include <QtGui/QGuiApplication>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QInputDialog>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QMdiArea>
+#include <QtWidgets/QMdiSubWindow>
+#include <QtWidgets/QMenu>
+#include <QtWidgets/QTableView>
+#include <QtWidgets/QToolBar>
+#include <QtWidgets/QVBoxLayout>
+
+namespace mbscope {
+
+WatchWorkspace::WatchWorkspace(QWidget *parent)
+    : QWidget(parent)
+    , m_area(new QMdiArea(this))
+    , m_hint(new QLabel(this))
+{
+    setObjectName(QStringLiteral("watchWorkspace"));
+    m_area->setObjectName(QStringLiteral("watchArea"));
+    m_area->setDocumentMode(true);
+    m_area->setTabsClosable(false);
+    m_area->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    m_area->setVerticalScrollBarPolicy(Qt::ScrollBarAsNeeded);
+    m_log = new WatchLogControl(this);
+    connect(m_log, &WatchLogControl::message, this, &WatchWorkspace::message);
+    connect(m_log, &WatchLogControl::settingsChanged, this, [this] {
+        m_watches.log = m_log->settings();
+        Q_EMIT changed();
+    });
+    createActions();
+
+    auto *bar = new QToolBar(this);
+    bar->setObjectName(QStringLiteral("watchToolBar"));
+    bar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    bar->addAction(m_newAction);
+    bar->addAction(m_fromRequestAction);
+    bar->addAction(m_fromProfileAction);
+    bar->addSeparator();
+    bar->addAction(m_startAction);
+    bar->addAction(m_stopAction);
+    bar->addSeparator();
+    bar->addAction(m_tabbedAction);
+    bar->addAction(m_log->logAction());
+
+    m_hint->setObjectName(QStringLiteral("watchHint"));
+    m_hint->setWordWrap(true);
+    m_hint->setAlignment(Qt::AlignCenter);
+    // The hint takes the room there is: its wrapped height must not raise the main area's minimum.
+    m_hint->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
+    m_hint->setText(tr("No watches yet. A watch polls a block of a device at its own interval and shows its values "
+                       "with names, units and rule colours. Make one with Workspace \u2192 New watch (%1), from the "
+                       "composer's read request (%2) or from a device profile (%3); Start all (%4) polls them together.")
+                        .arg(m_newAction->shortcut().toString(QKeySequence::NativeText),
+                             m_fromRequestAction->shortcut().toString(QKeySequence::NativeText),
+                             m_fromProfileAction->shortcut().toString(QKeySequence::NativeText),
+                             m_startAction->shortcut().toString(QKeySequence::NativeText)));
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->setSpacing(0);
+    layout->addWidget(bar);
+    layout->addWidget(m_hint);
+    layout->addWidget(m_area, 1);
+    setTabbed(true);
+    connect(m_area, &QMdiArea::subWindowActivated, this, &WatchWorkspace::updateActions);
+    updateActions();
+}
+
+WatchWorkspace::~WatchWorkspace()
+{
+    delete m_runner;
+    m_runner = nullptr;
+}
+
+void WatchWorkspace::createActions()
+{
+    auto make = [this](const QString &text, const QKeySequence &keys, auto slot) {
+        auto *action = new QAction(text, this);
+        action->setShortcut(keys);
+        connect(action, &QAction::triggered, this, slot);
+        return action;
+    };
+    m_newAction = make(tr("&New watch\u2026"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N), &WatchWorkspace::newWatch);
+    m_newAction->setObjectName(QStringLiteral("newWatchAction"));
+    m_newAction->setIconText(tr("New watch"));
+    m_fromRequestAction = make(tr("New watch from the composer's &request"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R), [this] {
+        QString error;
+        if (!addFromRequest(&error))
+            Q_EMIT message(error);
+    });
+    m_fromRequestAction->setIconText(tr("From request"));
+    m_fromProfileAction = make(tr("New watches from a device &profile\u2026"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), [this] {
+        WatchProfileDialog dialog(this);
+        dialog.setTarget(m_targetSource ? m_targetSource() : QString());
+        if (dialog.exec() != QDialog::Accepted)
+            return;
+        QString error;
+        const int made = addFromProfile(dialog.profile(), dialog.unit(), dialog.target(), dialog.intervalMs(), &error);
+        Q_EMIT message(made ? tr("%n watch(es) made from %1", nullptr, made).arg(dialog.profile()) : error);
+    });
+    m_fromProfileAction->setIconText(tr("From profile"));
+    m_editAction = make(tr("&Edit watch\u2026"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), &WatchWorkspace::editCurrent);
+    m_duplicateAction = make(tr("&Duplicate watch"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D), [this] { duplicateWatch(currentIndex()); });
+    m_closeAction = make(tr("&Close watch"), QKeySequence(Qt::CTRL | Qt::Key_W), [this] { removeWatch(currentIndex()); });
+    m_moveLeftAction = make(tr("Move watch &left"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_PageUp), [this] { moveWatch(currentIndex(), -1); });
+    m_moveRightAction = make(tr("Move watch ri&ght"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_PageDown), [this] { moveWatch(currentIndex(), 1); });
+    m_startAction = make(tr("&Start all"), QKeySequence(Qt::Key_F5), &WatchWorkspace::startAll);
+    m_startAction->setObjectName(QStringLiteral("startWatchesAction"));
+    m_stopAction = make(tr("S&top all"), QKeySequence(Qt::SHIFT | Qt::Key_F5), &WatchWorkspace::stopAll);
+    m_stopAction->setObjectName(QStringLiteral("stopWatchesAction"));
+    m_nextAction = make(tr("Ne&xt watch"), QKeySequence(Qt::CTRL | Qt::Key_F6), [this] {
+        m_area->activateNextSubWindow();
+        if (WatchWindow *w = window(currentIndex()))
+            w->view()->setFocus(Qt::ShortcutFocusReason);
+    });
+    m_nextAction->setObjectName(QStringLiteral("nextWatchAction"));
+    m_writeAction = make(tr("&Write value\u2026"), QKeySequence(Qt::CTRL | Qt::Key_E), &WatchWorkspace::writeCurrent);
+    m_writeAction->setObjectName(QStringLiteral("writeWatchValueAction"));
+    m_copyAction = make(tr("C&opy values"), QKeySequence(QKeySequence::Copy), [this] {
+        if (WatchWindow *w = window(currentIndex()))
+            QGuiApplication::clipboard()->setText(w->selectionText());
+    });
+    // What acts on the current watch (close, write, copy...) answers its keys only while the
+    // focus is in the workspace: Ctrl+W in the composer must not close a watch out of sight.
+    for (QAction *action : {m_editAction, m_duplicateAction, m_closeAction, m_moveLeftAction, m_moveRightAction,
+                            m_writeAction, m_copyAction}) {
+        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        addAction(action);
+    }
+    m_tabbedAction = new QAction(tr("T&abbed windows"), this);
+    m_tabbedAction->setIconText(tr("Tabbed"));
+    m_tabbedAction->setCheckable(true);
+    m_tabbedAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
+    m_tabbedAction->setToolTip(tr("Watches as tabs, or as windows tiled side by side"));
+    connect(m_tabbedAction, &QAction::toggled, this, &WatchWorkspace::setTabbed);
+}
+
+QList<QAction *> WatchWorkspace::menuActions() const
+{
+    return {m_newAction,   m_fromRequestAction, m_fromProfileAction, m_editAction,      m_duplicateAction,
+            nullptr,       m_startAction,       m_stopAction,        nullptr,           m_nextAction,
+            m_moveLeftAction, m_moveRightAction, m_closeAction,      nullptr,           m_writeAction,
+            m_copyAction,  nullptr,             m_tabbedAction,      m_log->logAction(), m_log->settingsAction()};
+}
+
+WatchWindow *WatchWorkspace::window(int index) const
+{
+    return index >= 0 && index < m_windows.size() ? m_windows.at(index) : nullptr;
+}
+
+int WatchWorkspace::currentIndex() const
+{
+    QMdiSubWindow *sub = m_area->currentSubWindow();
+    if (!sub)
+        sub = m_area->activeSubWindow();
+    for (int i = 0; i < m_windows.size(); ++i) {
+        if (sub && sub->widget() == m_windows.at(i))
+            return i;
+    }
+    return m_windows.isEmpty() ? -1 : 0;
+}
+
+void WatchWorkspace::setCurrentIndex(int index)
+{
+    if (WatchWindow *w = window(index)) {
+        if (auto *sub = qobject_cast<QMdiSubWindow *>(w->parentWidget()))
+            m_area->setActiveSubWindow(sub);
+    }
+}
+
+bool WatchWorkspace::isTabbed() const
+{
+    return m_area->viewMode() == QMdiArea::TabbedView;
+}
+
+void WatchWorkspace::setTabbed(bool tabbed)
+{
+    m_area->setViewMode(tabbed ? QMdiArea::TabbedView : QMdiArea::SubWindowView);
+    if (!tabbed) {
+        for (QMdiSubWindow *sub : m_area->subWindowList())
+            sub->showNormal();
+        m_area->tileSubWindows();
+    }
+    if (m_tabbedAction->isChecked() != tabbed)
+        m_tabbedAction->setChecked(tabbed);
+}
+
+QStringList WatchWorkspace::namesExcept(int index) const
+{
+    QStringList names;
+    for (int i = 0; i < m_watches.watches.size(); ++i) {
+        if (i != index)
+            names << m_watches.watches.at(i).name;
+    }
+    return names;
+}
+
+QMdiSubWindow *WatchWorkspace::addWindow(int index)
+{
+    auto *w = new WatchWindow;
+    w->model()->setDefinition(m_watches.watches.at(index));
+    connect(w, &WatchWindow::writeRequested, this, [this, w](int row) { requestWrite(int(m_windows.indexOf(w)), row); });
+    m_windows.insert(index, w);
+    QMdiSubWindow *sub = m_area->addSubWindow(w);
+    sub->setAttribute(Qt::WA_DeleteOnClose, false);
+    sub->setWindowIcon(QIcon(QPixmap(1, 1))); // no application icon in every tab
+    // The window's own keys (Ctrl+W, Ctrl+F4 in its system menu) would close the window and
+    // leave the watch: Close watch does both, and closing by the title bar's button goes there.
+    if (QMenu *menu = sub->systemMenu()) {
+        for (QAction *action : menu->actions())
+            action->setShortcut(QKeySequence());
+    }
+    sub->installEventFilter(this);
+    sub->show();
+    updateWindowTitle(index);
+    if (!isTabbed())
+        m_area->tileSubWindows();
+    return sub;
+}
+
+bool WatchWorkspace::eventFilter(QObject *watched, QEvent *event)
+{
+    if (event->type() == QEvent::Close) {
+        if (auto *sub = qobject_cast<QMdiSubWindow *>(watched)) {
+            const int index = int(m_windows.indexOf(qobject_cast<WatchWindow *>(sub->widget())));
+            if (index >= 0) {
+                event->ignore();
+                // Not from inside the window's own close handling: it is deleted by the removal.
+                QMetaObject::invokeMethod(this, [this, sub] {
+                    removeWatch(int(m_windows.indexOf(qobject_cast<WatchWindow *>(sub->widget()))));
+                }, Qt::QueuedConnection);
+                return true;
+            }
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void WatchWorkspace::updateWindowTitle(int index)
+{
+    const WatchDefinition &watch = m_watches.watches.at(index);
+    if (WatchWindow *w = window(index)) {
+        w->setWindowTitle(watch.enabled ? watch.name : tr("%1 (off)").arg(watch.name));
+        w->setToolTip(tr("%1, unit %2, every %3 ms").arg(watch.target).arg(watch.unit).arg(watch.intervalMs));
+    }
+}
+
+void WatchWorkspace::rebuildWindows()
+{
+    const int current = currentIndex();
+    for (QMdiSubWindow *sub : m_area->subWindowList()) {
+        m_area->removeSubWindow(sub);
+        sub->deleteLater();
+    }
+    m_windows.clear();
+    for (int i = 0; i < m_watches.watches.size(); ++i)
+        addWindow(i);
+    if (!isTabbed())
+        m_area->tileSubWindows();
+    setCurrentIndex(qMin(current, count() - 1));
+    updateActions();
+}
+
+void WatchWorkspace::setWatches(const SessionWatches &watches)
+{
+    stopAll();
+    m_watches = watches;
+    m_log->setSettings(watches.log.value_or(WatchLogSettings()));
+    rebuildWindows();
+}
+
+void WatchWorkspace::watchesEdited()
+{
+    if (m_runner && m_runner->isRunning()) {
+        m_runner->setWatches(m_watches);
+        m_log->start(m_watches); // the files follow the watches (and their indices)
+    }
+    updateActions();
+    Q_EMIT changed();
+}
+
+int WatchWorkspace::addWatch(const WatchDefinition &watch)
+{
+    m_watches.watches.append(watch);
+    const int index = count() - 1;
+    addWindow(index);
+    setCurrentIndex(index);
+    watchesEdited();
+    return index;
+}
+
+void WatchWorkspace::replaceWatch(int index, const WatchDefinition &watch)
+{
+    if (index < 0 || index >= count())
+        return;
+    m_watches.watches[index] = watch;
+    m_windows.at(index)->model()->setDefinition(watch);
+    updateWindowTitle(index);
+    watchesEdited();
+}
+
+void WatchWorkspace::removeWatch(int index)
+{
+    if (index < 0 || index >= count())
+        return;
+    m_watches.watches.removeAt(index);
+    WatchWindow *w = m_windows.takeAt(index);
+    if (auto *sub = qobject_cast<QMdiSubWindow *>(w->parentWidget())) {
+        m_area->removeSubWindow(sub);
+        sub->deleteLater();
+    }
+    if (!isTabbed())
+        m_area->tileSubWindows();
+    watchesEdited();
+}
+
+void WatchWorkspace::moveWatch(int index, int delta)
+{
+    const int to = index + delta;
+    if (index < 0 || index >= count() || to < 0 || to >= count())
+        return;
+    m_watches.watches.move(index, to);
+    rebuildWindows();
+    setCurrentIndex(to);
+    watchesEdited();
+}
+
+void WatchWorkspace::duplicateWatch(int index)
+{
+    if (index < 0 || index >= count())
+        return;
+    WatchDefinition copy = m_watches.watches.at(index);
+    copy.name = WatchFactory::uniqueName(copy.name, namesExcept());
+    addWatch(copy);
+}
+
+bool WatchWorkspace::runDialog(WatchDialog &dialog)
+{
+    if (m_dialogRunner)
+        return m_dialogRunner(dialog);
+    return dialog.exec() == QDialog::Accepted;
+}
+
+void WatchWorkspace::newWatch()
+{
+    WatchDialog dialog(this);
+    WatchDefinition watch;
+    watch.name = WatchFactory::uniqueName(tr("watch"), namesExcept());
+    watch.target = m_targetSource ? m_targetSource() : QString();
+    watch.quantity = 10;
+    dialog.setWatch(watch);
+    dialog.setTakenNames(namesExcept());
+    if (!runDialog(dialog))
+        return;
+    QStringList problems;
+    const WatchDefinition made = dialog.watch(&problems);
+    if (problems.isEmpty())
+        addWatch(made);
+}
+
+void WatchWorkspace::editCurrent()
+{
+    const int index = currentIndex();
+    if (index < 0)
+        return;
+    WatchDialog dialog(this);
+    dialog.setWatch(m_watches.watches.at(index));
+    dialog.setTakenNames(namesExcept(index));
+    if (!runDialog(dialog))
+        return;
+    QStringList problems;
+    const WatchDefinition edited = dialog.watch(&problems);
+    if (problems.isEmpty())
+        replaceWatch(index, edited);
+}
+
+void WatchWorkspace::setSessionPathSource(std::function<QString()> source)
+{
+    m_log->setSessionPathSource(std::move(source));
+}
+
+bool WatchWorkspace::addFromRequest(QString *error)
+{
+    if (!m_requestSource) {
+        *error = tr("No composer to take a request from.");
+        return false;
+    }
+    const WatchFromRequest made = m_requestSource(namesExcept());
+    if (!made.error.isEmpty()) {
+        *error = made.error;
+        return false;
+    }
+    addWatch(made.watch);
+    Q_EMIT message(tr("Watch '%1' made from the composer's request").arg(made.watch.name));
+    return true;
+}
+
+int WatchWorkspace::addFromProfile(const QString &profileName, int unit, const QString &target, int intervalMs, QString *error)
+{
+    const ProfileLoadResult loaded = ProfileLoader::load(profileName);
+    if (!loaded.ok) {
+        *error = tr("The profile %1 was not loaded: %2").arg(profileName, loaded.errorText());
+        return 0;
+    }
+    const QList<WatchDefinition> made = WatchFactory::fromProfile(loaded.profile, quint8(unit), target, intervalMs, namesExcept());
+    if (made.isEmpty()) {
+        *error = tr("The profile %1 has no unit %2 with registers or bits to watch").arg(profileName).arg(unit);
+        return 0;
+    }
+    for (const WatchDefinition &watch : made)
+        addWatch(watch);
+    return int(made.size());
+}
+
+void WatchWorkspace::startAll()
+{
+    if (m_watches.watches.isEmpty()) {
+        Q_EMIT message(tr("No watches to start: make one first (Workspace \u2192 New watch)"));
+        return;
+    }
+    delete m_runner;
+    m_runner = new WatchRunner(m_watches, this);
+    connect(m_runner, &WatchRunner::sampled, this, &WatchWorkspace::onSampled);
+    connect(m_runner, &WatchRunner::ruleChanged, this, &WatchWorkspace::onRule);
+    connect(m_runner, &WatchRunner::linkStateChanged, this, &WatchWorkspace::onLinkState);
+    connect(m_runner, &WatchRunner::writeFinished, this,
+            [this](quint64, int, quint16, bool ok, const QString &text) {
+                Q_EMIT message(ok ? tr("Written: %1").arg(text) : tr("Not written: %1").arg(text));
+            });
+    m_runner->start();
+    m_log->start(m_watches);
+    updateActions();
+    Q_EMIT runningChanged(true);
+    Q_EMIT message(tr("Polling %n watch(es)", nullptr, count()));
+}
+
+void WatchWorkspace::stopAll()
+{
+    if (!m_runner || !m_runner->isRunning())
+        return;
+    m_runner->stop();
+    m_log->watchesStopped();
+    updateActions();
+    Q_EMIT runningChanged(false);
+    Q_EMIT message(tr("Watches stopped"));
+}
+
+bool WatchWorkspace::isRunning() const
+{
+    return m_runner && m_runner->isRunning();
+}
+
+void WatchWorkspace::onSampled(const QList<WatchSample> &samples, const QList<WatchCounters> &counters)
+{
+    for (const WatchSample &sample : samples) {
+        WatchWindow *w = window(sample.watch);
+        // A batch posted before the watches changed: its indices are the old ones.
+        if (!w || m_watches.watches.at(sample.watch).name != sample.watchName)
+            continue;
+        w->model()->applySample(sample);
+    }
+    for (const WatchCounters &c : counters) {
+        if (WatchWindow *w = window(c.watch); w && m_watches.watches.at(c.watch).name == c.watchName)
+            w->setCounters(c);
+    }
+    m_log->append(samples);
+}
+
+void WatchWorkspace::onRule(const WatchRuleEvent &event)
+{
+    WatchWindow *w = window(event.watch);
+    if (!w || m_watches.watches.at(event.watch).name != event.watchName)
+        return;
+    w->model()->applyRule(event);
+    if (event.fired)
+        Q_EMIT message(QStringLiteral("%1: %2").arg(event.watchName, event.message));
+}
+
+void WatchWorkspace::onLinkState(const WatchLinkState &state)
+{
+    for (int i = 0; i < count(); ++i) {
+        if (m_watches.watches.at(i).target == state.target)
+            m_windows.at(i)->setLinkState(state);
+    }
+}
+
+void WatchWorkspace::writeCurrent()
+{
+    const int index = currentIndex();
+    WatchWindow *w = window(index);
+    if (!w || !w->view()->currentIndex().isValid()) {
+        Q_EMIT message(tr("Choose a value in a watch's table to write"));
+        return;
+    }
+    requestWrite(index, w->view()->currentIndex().row());
+}
+
+void WatchWorkspace::requestWrite(int index, int row)
+{
+    WatchWindow *w = window(index);
+    if (!w)
+        return;
+    const QModelIndex value = w->model()->index(row, WatchTableModel::ValueColumn);
+    if (!value.data(WatchTableModel::WritableRole).toBool()) {
+        Q_EMIT message(tr("Not writable: only points marked writable of a coil or holding register watch are written "
+                          "(Edit watch \u2192 Points \u2192 Writable)"));
+        return;
+    }
+    const QString name = w->model()->index(row, WatchTableModel::NameColumn).data().toString();
+    const QString current = w->model()->hasValue(row) ? value.data().toString() : QString();
+    const QString title = tr("Write %1").arg(name);
+    const QString label = tr("New value of %1 (%2):").arg(name, w->model()->index(row, WatchTableModel::AddressColumn).data().toString());
+    std::optional<QString> text;
+    if (m_textPrompt) {
+        text = m_textPrompt(title, label, current);
+    } else {
+        bool ok = false;
+        const QString typed = QInputDialog::getText(this, title, label, QLineEdit::Normal, current, &ok);
+        if (ok)
+            text = typed;
+    }
+    if (!text)
+        return;
+    QString error;
+    if (!writeValue(index, row, *text, &error))
+        Q_EMIT message(error);
+}
+
+bool WatchWorkspace::writeValue(int index, int row, const QString &text, QString *error)
+{
+    WatchWindow *w = window(index);
+    if (!w || row < 0 || row >= w->model()->rowCount()) {
+        *error = tr("No such value");
+        return false;
+    }
+    const int point = w->model()->valueAt(row).point;
+    const WatchWriteWords words = WatchValueWrite::words(m_watches.watches.at(index), point, text);
+    if (!words.error.isEmpty()) {
+        *error = words.error;
+        return false;
+    }
+    if (!isRunning()) {
+        *error = tr("Not written: start the watches first (Start all, %1)").arg(m_startAction->shortcut().toString(QKeySequence::NativeText));
+        return false;
+    }
+    m_runner->write(index, m_watches.watches.at(index).points.at(point).address, words.words);
+    Q_EMIT message(tr("Writing %1 to %2").arg(text.trimmed(), m_watches.watches.at(index).points.at(point).name));
+    return true;
+}
+
+void WatchWorkspace::updateActions()
+{
+    const bool any = count() > 0;
+    const bool running = isRunning();
+    m_hint->setVisible(!any);
+    m_area->setVisible(any);
+    for (QAction *action : {m_editAction, m_duplicateAction, m_closeAction, m_nextAction, m_writeAction, m_copyAction,
+                            m_moveLeftAction, m_moveRightAction})
+        action->setEnabled(any);
+    m_startAction->setEnabled(any);
+    m_stopAction->setEnabled(running);
+}
+
+} // namespace mbscope

@@ -1,0 +1,154 @@
+#pragma once
+
+#include "watchfactory.h"
+
+#include "watch/watchdefinition.h"
+
+#include <QtWidgets/QWidget>
+
+#include <functional>
+#include <optional>
+
+class QAction;
+class QLabel;
+class QMdiArea;
+class QMdiSubWindow;
+class QMenu;
+
+namespace mbscope {
+
+class WatchDialog;
+class WatchLogControl;
+class WatchRunner;
+class WatchWindow;
+struct WatchCounters;
+struct WatchLinkState;
+struct WatchRuleEvent;
+struct WatchSample;
+
+// The Watches tab: the session's watches, each in a window of an MDI area (tabbed or tiled, the
+// user's choice), polled together by a WatchRunner (core/fleet: an engine per link in its own
+// thread) when started. It keeps the definitions (SessionWatches, saved in the session) and the
+// actions of the Watches menu; the windows show what the runner reports.
+class WatchWorkspace : public QWidget
+{
+    Q_OBJECT
+public:
+    explicit WatchWorkspace(QWidget *parent = nullptr);
+    ~WatchWorkspace() override;
+
+    [[nodiscard]] const SessionWatches &watches() const { return m_watches; }
+    // The session's watches (opened or new): the windows are made anew, a running runner stopped.
+    void setWatches(const SessionWatches &watches);
+
+    [[nodiscard]] int count() const { return int(m_watches.watches.size()); }
+    [[nodiscard]] WatchWindow *window(int index) const;
+    [[nodiscard]] int currentIndex() const;
+    void setCurrentIndex(int index);
+    [[nodiscard]] QMdiArea *area() const { return m_area; }
+
+    int addWatch(const WatchDefinition &watch);
+    void replaceWatch(int index, const WatchDefinition &watch);
+    void removeWatch(int index);
+    void moveWatch(int index, int delta);
+    void duplicateWatch(int index);
+    // Names of every watch but index's.
+    [[nodiscard]] QStringList namesExcept(int index = -1) const;
+
+    // The composer's read as a watch (the shell knows the composer and the connection bar).
+    using RequestSource = std::function<WatchFromRequest(const QStringList &taken)>;
+    void setRequestSource(RequestSource source) { m_requestSource = std::move(source); }
+    // The connection bar's target: the default of new watches.
+    void setTargetSource(std::function<QString()> source) { m_targetSource = std::move(source); }
+    // The session document's path: a log directory that is not absolute is relative to it.
+    void setSessionPathSource(std::function<QString()> source);
+    bool addFromRequest(QString *error);
+    // A watch per group of entries of unit of the profile (a shipped name or a file); how many.
+    int addFromProfile(const QString &profile, int unit, const QString &target, int intervalMs, QString *error);
+
+    void startAll();
+    void stopAll();
+    [[nodiscard]] bool isRunning() const;
+    [[nodiscard]] WatchRunner *runner() const { return m_runner; }
+
+    // Writes text into row of watch index's table (a writable point): false with the reason.
+    bool writeValue(int index, int row, const QString &text, QString *error);
+
+    [[nodiscard]] bool isTabbed() const;
+    void setTabbed(bool tabbed);
+    [[nodiscard]] WatchLogControl *logControl() const { return m_log; }
+
+    // The Watches menu's actions, in order (separators as null).
+    [[nodiscard]] QList<QAction *> menuActions() const;
+    [[nodiscard]] QAction *newAction() const { return m_newAction; }
+    [[nodiscard]] QAction *fromRequestAction() const { return m_fromRequestAction; }
+    [[nodiscard]] QAction *fromProfileAction() const { return m_fromProfileAction; }
+    [[nodiscard]] QAction *startAction() const { return m_startAction; }
+    [[nodiscard]] QAction *stopAction() const { return m_stopAction; }
+    [[nodiscard]] QAction *nextAction() const { return m_nextAction; }
+    [[nodiscard]] QAction *writeAction() const { return m_writeAction; }
+    [[nodiscard]] QAction *tabbedAction() const { return m_tabbedAction; }
+    [[nodiscard]] QAction *closeAction() const { return m_closeAction; }
+    [[nodiscard]] QAction *copyAction() const { return m_copyAction; }
+
+    // How the workspace asks: a watch dialog (true: accepted), a value to write. Replaceable, so
+    // tests answer without a modal dialog.
+    using DialogRunner = std::function<bool(WatchDialog &dialog)>;
+    using TextPrompt = std::function<std::optional<QString>(const QString &title, const QString &label, const QString &current)>;
+    void setDialogRunner(DialogRunner runner) { m_dialogRunner = std::move(runner); }
+    void setTextPrompt(TextPrompt prompt) { m_textPrompt = std::move(prompt); }
+
+Q_SIGNALS:
+    // The definitions changed by the user (the session is modified).
+    void changed();
+    // A line for the status bar.
+    void message(const QString &text);
+    void runningChanged(bool running);
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+
+private:
+    void createActions();
+    void rebuildWindows();
+    QMdiSubWindow *addWindow(int index);
+    void updateWindowTitle(int index);
+    void updateActions();
+    void watchesEdited();
+    void newWatch();
+    void editCurrent();
+    void writeCurrent();
+    void requestWrite(int index, int row);
+    void onSampled(const QList<WatchSample> &samples, const QList<WatchCounters> &counters);
+    void onRule(const WatchRuleEvent &event);
+    void onLinkState(const WatchLinkState &state);
+    [[nodiscard]] bool runDialog(WatchDialog &dialog);
+
+    SessionWatches m_watches;
+    QMdiArea *m_area;
+    QLabel *m_hint;
+    QList<WatchWindow *> m_windows;
+    WatchRunner *m_runner = nullptr;
+    WatchLogControl *m_log = nullptr;
+    RequestSource m_requestSource;
+    std::function<QString()> m_targetSource;
+    DialogRunner m_dialogRunner;
+    TextPrompt m_textPrompt;
+
+    QAction *m_newAction = nullptr;
+    QAction *m_fromRequestAction = nullptr;
+    QAction *m_fromProfileAction = nullptr;
+    QAction *m_editAction = nullptr;
+    QAction *m_duplicateAction = nullptr;
+    QAction *m_closeAction = nullptr;
+    QAction *m_moveLeftAction = nullptr;
+    QAction *m_moveRightAction = nullptr;
+    QAction *m_startAction = nullptr;
+    QAction *m_stopAction = nullptr;
+    QAction *m_nextAction = nullptr;
+    QAction *m_writeAction = nullptr;
+    QAction *m_copyAction = nullptr;
+    QAction *m_tabbedAction = nullptr;
+};
+
+} // namespace mbscope
