@@ -80,7 +80,7 @@ QMap<QString, int> IncludeRules::coreLayers()
         {QStringLiteral("protocol"), 0}, {QStringLiteral("time"), 0},    {QStringLiteral("json"), 0},
         {QStringLiteral("transport"), 1}, {QStringLiteral("exchange"), 2}, {QStringLiteral("traffic"), 3},
         {QStringLiteral("engine"), 4},   {QStringLiteral("capture"), 4}, {QStringLiteral("profile"), 4},
-        {QStringLiteral("watch"), 4},    {QStringLiteral("fleet"), 5},
+        {QStringLiteral("watch"), 4},    {QStringLiteral("fleet"), 5},    {QStringLiteral("discovery"), 5},
         {QStringLiteral("sim"), 5},      {QStringLiteral("session"), 5}, {QStringLiteral("monitor"), 5},
         {QStringLiteral("replay"), 6},
     };
