@@ -218,11 +218,15 @@ int runScan(const QStringList &arguments)
     const QCommandLineOption profileOutOpt(QStringLiteral("profile-out"),
                                            QStringLiteral("--map: save the map as a device profile draft (docs/profiles.md)."),
                                            QStringLiteral("FILE"));
+    const QCommandLineOption stepOpt(QStringLiteral("step"),
+                                     QStringLiteral("--map: between blocks ask one address in N (default 1: every address; "
+                                                    "16 finds every block of 16 or more in a sixteenth of the requests)."),
+                                     QStringLiteral("N"));
     const QCommandLineOption maxRequestsOpt(QStringLiteral("max-requests"),
                                             QStringLiteral("--map: stop after this many requests (default 20000)."), QStringLiteral("N"));
     parser.addOptions({targetOpt, unitsOpt, allIdsOpt, functionOpt, addressOpt, quantityOpt, timeoutOpt, gapOpt, maxTimeOpt,
                        allOpt, jsonOpt, watchesOpt, mapOpt, addressesOpt, tablesOpt, noOptionalOpt, profileOutOpt,
-                       maxRequestsOpt});
+                       maxRequestsOpt, stepOpt});
     if (!parser.parse(arguments)) {
         err << "mbscope scan: " << parser.errorText() << '\n';
         return ExitUsage;
@@ -263,9 +267,10 @@ int runScan(const QStringList &arguments)
         MapScanSettings settings;
         qint64 unit = 1;
         qint64 maxRequests = settings.maxRequests;
+        qint64 step = 1;
         QList<qint64> tables{1, 2, 3, 4};
         if (!read.integer(mapOpt, 0, 255, &unit) || !read.range(addressesOpt, 0, 65535, &settings.firstAddress, &settings.lastAddress)
-            || !read.integers(tablesOpt, 1, 4, &tables) || !read.integer(maxRequestsOpt, 1, 10'000'000, &maxRequests))
+            || !read.integers(tablesOpt, 1, 4, &tables) || !read.integer(maxRequestsOpt, 1, 10'000'000, &maxRequests) || !read.integer(stepOpt, 1, 2000, &step))
             return ExitUsage;
         const QString profilePath = parser.value(profileOutOpt);
         if (!checkWritable(profilePath, err))
@@ -278,10 +283,11 @@ int runScan(const QStringList &arguments)
         settings.timeoutMs = int(timeoutMs);
         settings.gapMs = int(gapMs);
         settings.maxRequests = int(maxRequests);
+        settings.step = int(step);
         return runMap(common, settings, profilePath, out, err);
     }
 
-    for (const QCommandLineOption *mapOnly : {&addressesOpt, &tablesOpt, &noOptionalOpt, &profileOutOpt, &maxRequestsOpt}) {
+    for (const QCommandLineOption *mapOnly : {&addressesOpt, &tablesOpt, &noOptionalOpt, &profileOutOpt, &maxRequestsOpt, &stepOpt}) {
         if (parser.isSet(*mapOnly)) {
             err << "mbscope scan: --" << mapOnly->names().constFirst() << " belongs to --map UNIT\n";
             return ExitUsage;

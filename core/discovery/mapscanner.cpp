@@ -179,19 +179,39 @@ void MapScanner::mapTable(TableMap &table)
     const int specMax = table.function <= 2 ? 2000 : 125; // V1.1b3, 6.1-6.4
     table.maxQuantity = findMaxQuantity(table, specMax);
 
+    // Between blocks, one address every `step`; an address that answers may belong to a block that
+    // began after the last address asked, found by bisection: a read from x to the hit answers only
+    // when every address between exists.
+    const int step = qBound(1, m_settings.step, qMax(1, table.maxQuantity));
     int address = first;
+    int unknownFrom = first; // the first address not yet known to be missing
     ReadReply reply = probe;
     while (address <= table.searchedLast && mayContinue()) {
         report(m_tableIndex, address);
         if (address != first)
             reply = read(table.function, address, 1);
-        if (reply.reply == Reply::Ok) {
-            const MapBlock block = extendBlock(table, address, reply.values);
-            table.blocks.append(block);
-            address = block.last() + 1;
-        } else {
-            ++address;
+        if (reply.reply != Reply::Ok) {
+            unknownFrom = address + 1;
+            address = address == table.searchedLast ? address + 1 : qMin(address + step, table.searchedLast);
+            continue;
         }
+        int start = address;
+        QList<quint16> values = reply.values;
+        int lo = unknownFrom;
+        while (lo < start && mayContinue()) {
+            const int mid = (lo + start) / 2;
+            const ReadReply r = read(table.function, mid, address - mid + 1);
+            if (r.reply == Reply::Ok) {
+                start = mid;
+                values = r.values;
+            } else {
+                lo = mid + 1;
+            }
+        }
+        const MapBlock block = extendBlock(table, start, values);
+        table.blocks.append(block);
+        address = block.last() + 1;
+        unknownFrom = address;
     }
 }
 
@@ -201,11 +221,11 @@ MapBlock MapScanner::extendBlock(TableMap &table, int address, QList<quint16> fi
     block.address = quint16(address);
     block.values = std::move(firstValues);
     const int maxQ = qMax(1, table.maxQuantity);
-    // Galloping from the first address: 2, 4, 8... addresses until a read is refused or the
-    // largest quantity is reached.
+    // Galloping from the first address: twice the addresses known, then twice again, until a read
+    // is refused or the largest quantity is reached.
     int pos = address;
-    int known = 1; // addresses from pos known to exist, their values in block.values
-    int q = 2;
+    int known = int(block.values.size()); // addresses from pos known to exist, their values in block.values
+    int q = 2 * known;
     for (;;) {
         const int cap = qMin(maxQ, table.searchedLast - pos + 1);
         if (known >= cap) {
