@@ -92,6 +92,7 @@ QMap<QString, int> IncludeRules::uiTiers()
         {QStringLiteral("common"), 0},
         {QStringLiteral("link"), 1},     {QStringLiteral("compose"), 1},   {QStringLiteral("decode"), 1},
         {QStringLiteral("traffic"), 1},  {QStringLiteral("registers"), 1}, {QStringLiteral("sim"), 1},
+        {QStringLiteral("discovery"), 1},
         {QStringLiteral("analysis"), 2}, {QStringLiteral("session"), 2},
         {QStringLiteral("shell"), 3},
     };

@@ -23,6 +23,7 @@ class RecordingControl;
 class RegisterTable;
 class RequestComposer;
 class SessionController;
+class ScanDialog;
 class SessionTools;
 class SimulatorPanel;
 class TrafficMonitor;
@@ -58,6 +59,8 @@ public:
     [[nodiscard]] RequestComposer *composer() const { return m_composer; }
     [[nodiscard]] TransactionView *answerView() const { return m_answerView; }
     [[nodiscard]] LinkController *controller() const { return m_controller; }
+    // Tools > Scan (made on first use): for the workspace to take its watchesRequested().
+    [[nodiscard]] ScanDialog *scanDialog();
     [[nodiscard]] LinkStatusWidget *linkStatus() const { return m_linkStatus; }
     [[nodiscard]] NoticeBanner *banner() const { return m_banner; }
     [[nodiscard]] EmbeddedSimulator *simulator() const { return m_simulator; }
@@ -97,8 +100,10 @@ private:
     void sendWrite(const QByteArray &pdu, const QString &description);
     void createMenus();
     void showAbout();
+    void showScanDialog();
 
     LinkController *m_controller = nullptr;
+    ScanDialog *m_scanDialog = nullptr; // Tools > Scan, made when first asked for
     EmbeddedSimulator *m_simulator = nullptr;
     ConnectionBar *m_connectionBar = nullptr;
     NoticeBanner *m_banner = nullptr;
