@@ -4,6 +4,7 @@
 #include "interruptwatcher.h"
 #include "progressline.h"
 #include "scanoptions.h"
+#include "scanline.h"
 #include "scanreport.h"
 
 #include "discovery/mapscanner.h"
@@ -177,6 +178,8 @@ int runScan(const QStringList &arguments)
         "signal: galloping and bisection over blocks), the largest quantity each read function takes (exception 03), "
         "and which optional functions it answers (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E); --profile-out saves the map "
         "as a device profile draft that mbscope simulate --profile FILE serves.\n"
+        "With --line (a serial port) it tries baud rates, parities and stop bits with the read until CRC-valid answers "
+        "come back, and says what was tried and what worked.\n"
         "Examples: mbscope scan --target tcp://127.0.0.1:5020 --units 1-10\n"
         "          mbscope scan --target tcp://127.0.0.1:5020 --map 1 --profile-out draft.json\n"
         "Every scan is bounded (--max-time, --max-requests), shows its progress and the time left on a terminal, and "
@@ -224,6 +227,18 @@ int runScan(const QStringList &arguments)
                                      QStringLiteral("N"));
     const QCommandLineOption maxRequestsOpt(QStringLiteral("max-requests"),
                                             QStringLiteral("--map: stop after this many requests (default 20000)."), QStringLiteral("N"));
+    const QCommandLineOption lineOpt(QStringLiteral("line"),
+                                     QStringLiteral("Find a serial port's line settings: try baud rates, parities and stop bits "
+                                                    "with the read until CRC-valid answers come back."));
+    const QCommandLineOption baudsOpt(QStringLiteral("bauds"),
+                                      QStringLiteral("--line: baud rates to try (default 9600,19200,38400,57600,115200,4800,2400,1200)."),
+                                      QStringLiteral("LIST"));
+    const QCommandLineOption paritiesOpt(QStringLiteral("parities"), QStringLiteral("--line: parities to try (default E,N,O)."),
+                                         QStringLiteral("LIST"));
+    const QCommandLineOption stopBitsOpt(QStringLiteral("stop-bits"), QStringLiteral("--line: stop bits to try (default 1,2)."),
+                                         QStringLiteral("LIST"));
+    const QCommandLineOption firstOpt(QStringLiteral("first"), QStringLiteral("--line: stop at the first setting that answers."));
+    parser.addOptions({lineOpt, baudsOpt, paritiesOpt, stopBitsOpt, firstOpt});
     parser.addOptions({targetOpt, unitsOpt, allIdsOpt, functionOpt, addressOpt, quantityOpt, timeoutOpt, gapOpt, maxTimeOpt,
                        allOpt, jsonOpt, watchesOpt, mapOpt, addressesOpt, tablesOpt, noOptionalOpt, profileOutOpt,
                        maxRequestsOpt, stepOpt});
@@ -262,6 +277,66 @@ int runScan(const QStringList &arguments)
     qint64 gapMs = map ? 0 : 20;
     if (!read.durationMs(timeoutOpt, 1, 3600000, &timeoutMs) || !read.durationMs(gapOpt, 0, 3600000, &gapMs))
         return ExitUsage;
+
+    if (parser.isSet(lineOpt)) {
+        if (map) {
+            err << "mbscope scan: --line and --map are two scans: give one\n";
+            return ExitUsage;
+        }
+        LineScanSettings settings;
+        settings.url = common.url;
+        settings.maxDurationMs = common.maxTimeMs;
+        settings.timeoutMs = int(timeoutMs);
+        settings.stopAtFirst = parser.isSet(firstOpt);
+        QList<qint64> bauds;
+        QList<qint64> stops;
+        qint64 function = 3;
+        qint64 address = 0;
+        qint64 quantity = 1;
+        if (!read.integers(baudsOpt, 50, 4000000, &bauds) || !read.integers(stopBitsOpt, 1, 2, &stops)
+            || !read.integer(functionOpt, 1, 4, &function) || !read.integer(addressOpt, 0, 65535, &address)
+            || !read.integer(quantityOpt, 1, 125, &quantity))
+            return ExitUsage;
+        if (!bauds.isEmpty()) {
+            settings.bauds.clear();
+            for (const qint64 b : std::as_const(bauds))
+                settings.bauds.append(int(b));
+        }
+        if (!stops.isEmpty()) {
+            settings.stopBits.clear();
+            for (const qint64 b : std::as_const(stops))
+                settings.stopBits.append(int(b));
+        }
+        if (parser.isSet(paritiesOpt)) {
+            settings.parities.clear();
+            for (const QString &p : parser.value(paritiesOpt).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+                const QString u = p.trimmed().toUpper();
+                if (u != QLatin1String("N") && u != QLatin1String("E") && u != QLatin1String("O")) {
+                    err << "mbscope scan: --parities '" << p << "': expected N, E or O\n";
+                    return ExitUsage;
+                }
+                settings.parities.append(u.at(0).toLatin1());
+            }
+        }
+        if (parser.isSet(unitsOpt)) {
+            int first = 1;
+            int last = 1;
+            if (!read.range(unitsOpt, 1, 247, &first, &last))
+                return ExitUsage;
+            for (int u = first; u <= last; ++u)
+                settings.units.append(quint8(u));
+        }
+        settings.function = quint8(function);
+        settings.address = quint16(address);
+        settings.quantity = quint16(quantity);
+        return runLineScan(settings, common.json, out, err);
+    }
+    for (const QCommandLineOption *lineOnly : {&baudsOpt, &paritiesOpt, &stopBitsOpt, &firstOpt}) {
+        if (parser.isSet(*lineOnly)) {
+            err << "mbscope scan: --" << lineOnly->names().constFirst() << " belongs to --line\n";
+            return ExitUsage;
+        }
+    }
 
     if (map) {
         MapScanSettings settings;

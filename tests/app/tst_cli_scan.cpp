@@ -82,6 +82,7 @@ private slots:
     void badInput_data();
     void badInput();
     void mapDraftServedAgainAnswersTheSame();
+    void lineSettingsFound();
 
 private:
     QTemporaryDir m_dir;
@@ -332,6 +333,45 @@ void TestCliScan::mapDraftServedAgainAnswersTheSame()
         QCOMPARE(cloned.value(it.key()), it.value());
     }
     QCOMPARE(again.json().value(QStringLiteral("exception_status")).toInt(), 0x6D);
+}
+
+void TestCliScan::lineSettingsFound()
+{
+    // The simulator at 19200 8E1 behind tests/peers/line_harness.py, which relays only when the
+    // client's pty is set to the device's baud rate and stop bits (a pty carries no parity bit).
+    QString why;
+    if (!mbscope::testpeers::pymodbusAvailable(&why))
+        QSKIP(qPrintable(why));
+    PeerProcess line;
+    QVERIFY2(line.start(mbscope::testpeers::systemPython(), {mbscope::testpeers::peersDir() + QStringLiteral("/line_harness.py"),
+                                                             QStringLiteral("--baud"), QStringLiteral("19200"), QStringLiteral("--stop"), QStringLiteral("1")}),
+             qPrintable(line.error()));
+    const QString client = line.where().section(QLatin1Char(' '), 0, 0).section(QLatin1Char('='), 1);
+    const QString device = line.where().section(QLatin1Char(' '), 1, 1).section(QLatin1Char('='), 1);
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("arduino-rs485"), QStringLiteral("--listen"),
+                        QStringLiteral("rtu://%1?baud=19200&parity=E&stop=1").arg(device), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), QStringLiteral("rtu://") + client, QStringLiteral("--line"),
+                                    QStringLiteral("--bauds"), QStringLiteral("9600,19200,38400"), QStringLiteral("--units"), QStringLiteral("1"),
+                                    QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("tried")).toArray().size(), 3 * 3 * 2);
+    const QJsonArray working = o.value(QStringLiteral("working")).toArray();
+    QStringList settings;
+    for (const QJsonValue &w : working)
+        settings.append(w.toObject().value(QStringLiteral("setting")).toString());
+    QCOMPARE(settings, (QStringList{QStringLiteral("19200 8E1"), QStringLiteral("19200 8N1"), QStringLiteral("19200 8O1")}));
+    const CliResult text = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), QStringLiteral("rtu://") + client, QStringLiteral("--line"),
+                                       QStringLiteral("--bauds"), QStringLiteral("9600,19200"), QStringLiteral("--parities"), QStringLiteral("E"),
+                                       QStringLiteral("--stop-bits"), QStringLiteral("2,1"), QStringLiteral("--first")});
+    QVERIFY2(text.finished && text.exitCode == 0, text.describe());
+    QVERIFY2(text.outText().contains(QStringLiteral("answered: 19200 8E1 (unit 1)\n")), text.out.constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("\n9600 8E2        1          silent")), text.out.constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("4 trials")), text.out.constData());
 }
 
 QTEST_GUILESS_MAIN(TestCliScan)
