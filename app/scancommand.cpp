@@ -6,6 +6,7 @@
 #include "scanoptions.h"
 #include "scanline.h"
 #include "scanreport.h"
+#include "scantiming.h"
 
 #include "discovery/mapscanner.h"
 #include "discovery/profiledraft.h"
@@ -180,6 +181,8 @@ int runScan(const QStringList &arguments)
         "as a device profile draft that mbscope simulate --profile FILE serves.\n"
         "With --line (a serial port) it tries baud rates, parities and stop bits with the read until CRC-valid answers "
         "come back, and says what was tried and what worked.\n"
+        "With --timing UNIT it measures the unit's timing limits and prints settings ready to use (a watch link's "
+        "gapMs and timeoutMs, Telegraf's modbus input pause_between_requests and pause_after_connect).\n"
         "Examples: mbscope scan --target tcp://127.0.0.1:5020 --units 1-10\n"
         "          mbscope scan --target tcp://127.0.0.1:5020 --map 1 --profile-out draft.json\n"
         "Every scan is bounded (--max-time, --max-requests), shows its progress and the time left on a terminal, and "
@@ -238,7 +241,13 @@ int runScan(const QStringList &arguments)
     const QCommandLineOption stopBitsOpt(QStringLiteral("stop-bits"), QStringLiteral("--line: stop bits to try (default 1,2)."),
                                          QStringLiteral("LIST"));
     const QCommandLineOption firstOpt(QStringLiteral("first"), QStringLiteral("--line: stop at the first setting that answers."));
-    parser.addOptions({lineOpt, baudsOpt, paritiesOpt, stopBitsOpt, firstOpt});
+    const QCommandLineOption timingOpt(QStringLiteral("timing"),
+                                       QStringLiteral("Measure this unit's timing limits: first answer after connecting, shortest "
+                                                      "gap, largest read, pipelining, TCP clients at once; prints settings."),
+                                       QStringLiteral("UNIT"));
+    const QCommandLineOption clientsOpt(QStringLiteral("clients"), QStringLiteral("--timing: most TCP clients tried (default 16)."),
+                                        QStringLiteral("N"));
+    parser.addOptions({lineOpt, baudsOpt, paritiesOpt, stopBitsOpt, firstOpt, timingOpt, clientsOpt});
     parser.addOptions({targetOpt, unitsOpt, allIdsOpt, functionOpt, addressOpt, quantityOpt, timeoutOpt, gapOpt, maxTimeOpt,
                        allOpt, jsonOpt, watchesOpt, mapOpt, addressesOpt, tablesOpt, noOptionalOpt, profileOutOpt,
                        maxRequestsOpt, stepOpt});
@@ -278,6 +287,31 @@ int runScan(const QStringList &arguments)
     if (!read.durationMs(timeoutOpt, 1, 3600000, &timeoutMs) || !read.durationMs(gapOpt, 0, 3600000, &gapMs))
         return ExitUsage;
 
+    if (parser.isSet(timingOpt)) {
+        if (map || parser.isSet(lineOpt)) {
+            err << "mbscope scan: --timing, --map and --line are three scans: give one\n";
+            return ExitUsage;
+        }
+        TimingScanSettings settings;
+        settings.url = common.url;
+        qint64 unit = 1;
+        qint64 function = 3;
+        qint64 address = 0;
+        qint64 clients = settings.maxClients;
+        if (!read.integer(timingOpt, 0, 255, &unit) || !read.integer(functionOpt, 1, 4, &function)
+            || !read.integer(addressOpt, 0, 65535, &address) || !read.integer(clientsOpt, 1, 256, &clients))
+            return ExitUsage;
+        settings.unit = quint8(unit);
+        settings.function = quint8(function);
+        settings.address = quint16(address);
+        settings.maxClients = int(clients);
+        settings.timeoutMs = parser.isSet(timeoutOpt) ? int(timeoutMs) : 1000;
+        return runTimingScan(settings, common.json, out, err);
+    }
+    if (parser.isSet(clientsOpt)) {
+        err << "mbscope scan: --clients belongs to --timing UNIT\n";
+        return ExitUsage;
+    }
     if (parser.isSet(lineOpt)) {
         if (map) {
             err << "mbscope scan: --line and --map are two scans: give one\n";
