@@ -1,6 +1,7 @@
 #include "simulatesession.h"
 
 #include "protocol/adubuilder.h"
+#include "protocol/delimitedframer.h"
 #include "protocol/functioncode.h"
 #include "sim/profileapplier.h"
 #include "sim/simendpoint.h"
@@ -65,6 +66,9 @@ bool SimulateSession::load(const DeviceProfile &profile, const std::optional<Fau
         m_units.append(adopted);
     }
     ProfileApplier::configure(&m_injector, profile);
+    m_sim.setLimits(profile.limits);
+    m_sim.setLineTable(profile.delimited);
+    m_endpointOptions = ProfileApplier::endpointOptions(profile);
     if (faults)
         m_injector.setRules(*faults);
     m_driver.attach(profile, m_units);
@@ -75,7 +79,7 @@ bool SimulateSession::listen(const QStringList &urls, QString *error)
 {
     for (const QString &url : urls) {
         QString why;
-        SimEndpoint *endpoint = m_sim.listen(url, {}, &why);
+        SimEndpoint *endpoint = m_sim.listen(url, m_endpointOptions, &why);
         if (!endpoint) {
             *error = why.isEmpty() ? url + QStringLiteral(": cannot listen") : why;
             if (why.contains(QLatin1String("in use"), Qt::CaseInsensitive))
@@ -85,6 +89,8 @@ bool SimulateSession::listen(const QStringList &urls, QString *error)
             return false;
         }
         m_framings.insert(endpoint->name(), endpoint->framing());
+        if (endpoint->url().delimited.enabled)
+            m_delimited.insert(endpoint->name());
     }
     return true;
 }
@@ -216,7 +222,12 @@ void SimulateSession::printLine(const SimLogEntry &entry, const FaultPlan *plan)
 {
     const QString time = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss.zzz"));
     QString what;
-    if (isRequest(entry.verdict) && !entry.request.isEmpty()) {
+    if (isRequest(entry.verdict) && !entry.request.isEmpty() && m_delimited.contains(entry.endpoint)) {
+        // A delimited protocol's frames are shown as they are, the answer after an arrow.
+        what = DelimitedFramer::toText(entry.request);
+        if (!entry.response.isEmpty())
+            what += QStringLiteral(" -> ") + DelimitedFramer::toText(entry.response);
+    } else if (isRequest(entry.verdict) && !entry.request.isEmpty()) {
         const AduParts request = AduBuilder::parse(entry.request, framingOf(entry.endpoint));
         if (!request.pdu.isEmpty()) {
             const quint8 function = quint8(request.pdu.at(0));

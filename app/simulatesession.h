@@ -11,6 +11,7 @@
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QHash>
 #include <QtCore/QObject>
+#include <QtCore/QSet>
 #include <QtCore/QStringList>
 #include <QtCore/QTimer>
 
@@ -90,6 +91,8 @@ private:
     QHash<QString, Framing> m_framings;
     QTimer m_summaryTimer;
     QElapsedTimer m_elapsed;
+    SimEndpointOptions m_endpointOptions;
+    QSet<QString> m_delimited; // names of the endpoints serving a delimited protocol
     Counts m_counts;
 };
 

@@ -67,6 +67,11 @@ QString JsonReader::describe(const QJsonValue &value)
 bool JsonReader::checkKeys(const QJsonObject &object, const QString &path,
                            std::initializer_list<const char *> allowed)
 {
+    return checkKeys(object, path, QList<const char *>(allowed));
+}
+
+bool JsonReader::checkKeys(const QJsonObject &object, const QString &path, const QList<const char *> &allowed)
+{
     bool clean = true;
     for (auto it = object.begin(); it != object.end(); ++it) {
         bool known = false;

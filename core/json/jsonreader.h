@@ -40,6 +40,7 @@ public:
     // Refuses any key not listed: "units[0]: unknown key 'tabels': expected one of id, name, ...".
     // False when there was such a key.
     bool checkKeys(const QJsonObject &object, const QString &path, std::initializer_list<const char *> allowed);
+    bool checkKeys(const QJsonObject &object, const QString &path, const QList<const char *> &allowed);
     // "units[0]: 'id' is missing"; false when absent.
     bool require(const QJsonObject &object, const QString &path, const char *key);
 

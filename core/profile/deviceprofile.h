@@ -2,8 +2,10 @@
 
 #include "protocol/registerformat.h"
 #include "delayspec.h"
+#include "devicelimits.h"
 #include "faultrule.h"
 #include "generatorspec.h"
+#include "linerule.h"
 #include "simtable.h"
 
 #include <QtCore/QByteArray>
@@ -84,6 +86,8 @@ struct DeviceProfile {
     quint64 seed = 1;         // generators and fault rules derive their seeds from it
     QList<UnitProfile> units;
     FaultRuleSet faults;
+    DeviceLimits limits;      // "unknownUnit" and "limits"
+    LineTable delimited;      // "delimited": a non-Modbus protocol's requests and answers
 
     [[nodiscard]] const UnitProfile *unit(quint8 id) const;
 };

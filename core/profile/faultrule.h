@@ -11,8 +11,8 @@
 namespace mbscope {
 
 // One fault injection rule (see docs/profiles.md, "Fault injection"). A rule matches a request
-// by unit, function code and address range (each optional: absent matches everything), then
-// fires with its probability. The effects of all the rules that fire on one answer combine
+// by unit, function code, the address range it meets, and exactly by start address, quantity and
+// written values (each optional: absent matches everything), then fires with its probability. The effects of all the rules that fire on one answer combine
 // (FaultInjector::plan says in which order).
 struct FaultRule {
     enum class Kind : quint8 {
@@ -35,8 +35,13 @@ struct FaultRule {
     QString name;                 // optional label for logs
     QList<quint8> units;          // empty: every unit
     QList<quint8> functions;      // empty: every function code
-    int firstAddress = -1;        // address range [firstAddress, lastAddress]; -1: any request
+    // "meets": the request's addresses overlap [firstAddress, lastAddress]; -1: any request.
+    int firstAddress = -1;
     int lastAddress = -1;
+    QList<int> starts;            // "start": the request's start address is one of these; empty: any
+    QList<int> quantities;        // "quantity": its quantity is one of these; empty: any
+    QList<quint16> values;        // "values": the values it writes, exactly (when hasValues)
+    bool hasValues = false;
     double probability = 1;
 
     DelaySpec delay;              // Delay

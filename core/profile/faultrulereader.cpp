@@ -67,6 +67,97 @@ void readJunk(JsonReader &reader, const QJsonObject &o, const QString &path, con
         *count = int(*n);
 }
 
+// The keys every rule may have (how it matches, how often it fires), then those of its kind.
+QList<const char *> ruleKeys(std::initializer_list<const char *> specific)
+{
+    QList<const char *> keys = {"kind", "name", "units", "functions", "meets", "addresses", "start", "quantity",
+                                "values", "probability"};
+    keys.append(QList<const char *>(specific));
+    return keys;
+}
+
+// "meets": [first, last] or one address; "addresses" is its older name.
+void readMeets(JsonReader &reader, const QJsonObject &o, const QString &path, FaultRule *rule)
+{
+    const bool meets = o.contains(QLatin1String("meets"));
+    if (meets && o.contains(QLatin1String("addresses"))) {
+        reader.error(JsonReader::member(path, "addresses"),
+                     QStringLiteral("give 'meets' or its older name 'addresses', not both"));
+        return;
+    }
+    const char *key = meets ? "meets" : "addresses";
+    const QJsonValue addresses = o.value(QLatin1String(key));
+    const QString at = JsonReader::member(path, key);
+    if (addresses.isArray()) {
+        const QJsonArray a = addresses.toArray();
+        if (a.size() != 2) {
+            reader.error(at, QStringLiteral("expected [first, last] (two addresses), found %1 values").arg(a.size()));
+        } else {
+            const auto first = reader.integerValue(a.at(0), JsonReader::element(at, 0), 0, 65535);
+            const auto last = reader.integerValue(a.at(1), JsonReader::element(at, 1), 0, 65535);
+            if (first && last && *last < *first)
+                reader.error(JsonReader::element(at, 1), QStringLiteral("%1 is below the first address %2").arg(*last).arg(*first));
+            else if (first && last) {
+                rule->firstAddress = int(*first);
+                rule->lastAddress = int(*last);
+            }
+        }
+    } else if (!addresses.isUndefined()) {
+        if (const auto n = reader.integerValue(addresses, at, 0, 65535)) {
+            rule->firstAddress = int(*n);
+            rule->lastAddress = int(*n);
+        }
+    }
+}
+
+// A list of whole numbers in [min, max], or one: "start": 368 or "start": [368, "0x0171"].
+QList<int> readIntList(JsonReader &reader, const QJsonObject &o, const QString &path, const char *key, qint64 min,
+                       qint64 max)
+{
+    QList<int> out;
+    const QJsonValue v = o.value(QLatin1String(key));
+    const QString at = JsonReader::member(path, key);
+    if (v.isUndefined())
+        return out;
+    if (!v.isArray()) {
+        if (const auto n = reader.integerValue(v, at, min, max))
+            out.append(int(*n));
+        return out;
+    }
+    const QJsonArray a = v.toArray();
+    if (a.isEmpty())
+        reader.error(at, QStringLiteral("the list is empty: leave '%1' out to match every value").arg(QLatin1String(key)));
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        if (const auto n = reader.integerValue(a.at(i), JsonReader::element(at, i), min, max))
+            out.append(int(*n));
+    }
+    return out;
+}
+
+// "values": [1, 0, 1] (the values a write carries, in order; coils as 0 and 1).
+void readValues(JsonReader &reader, const QJsonObject &o, const QString &path, FaultRule *rule)
+{
+    const QJsonValue v = o.value(QLatin1String("values"));
+    if (v.isUndefined())
+        return;
+    const QString at = JsonReader::member(path, "values");
+    if (!v.isArray()) {
+        reader.error(at, QStringLiteral("expected a list of the values written, such as [1, 0] or [\"0x1234\"], found %1")
+                             .arg(JsonReader::describe(v)));
+        return;
+    }
+    const QJsonArray a = v.toArray();
+    if (a.isEmpty() || a.size() > 123) {
+        reader.error(at, QStringLiteral("expected 1 to 123 values (a write carries at most 123 registers), found %1").arg(a.size()));
+        return;
+    }
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        if (const auto n = reader.integerValue(a.at(i), JsonReader::element(at, i), 0, 65535))
+            rule->values.append(quint16(*n));
+    }
+    rule->hasValues = true;
+}
+
 } // namespace
 
 std::optional<DelaySpec> FaultRuleReader::readDelay(JsonReader &reader, const QJsonValue &value, const QString &path)
@@ -162,7 +253,7 @@ std::optional<FaultRule> FaultRuleReader::readRule(JsonReader &reader, const QJs
     using K = FaultRule::Kind;
     switch (*kind) {
     case K::Delay:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "delay"});
+        reader.checkKeys(*o, path, ruleKeys({"delay"}));
         if (reader.require(*o, path, "delay")) {
             if (const auto d = readDelay(reader, o->value(QLatin1String("delay")), JsonReader::member(path, "delay")))
                 rule.delay = *d;
@@ -170,45 +261,44 @@ std::optional<FaultRule> FaultRuleReader::readRule(JsonReader &reader, const QJs
         break;
     case K::Drop:
     case K::WrongChecksum:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability"});
+        reader.checkKeys(*o, path, ruleKeys({}));
         break;
     case K::WrongTransactionId:
     case K::WrongUnit:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "delta"});
+        reader.checkKeys(*o, path, ruleKeys({"delta"}));
         rule.delta = int(reader.integer(*o, path, "delta", 1, *kind == K::WrongUnit ? 255 : 65535).value_or(1));
         break;
     case K::Exception:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "code"});
+        reader.checkKeys(*o, path, ruleKeys({"code"}));
         rule.exceptionCode = quint8(reader.integer(*o, path, "code", 1, 255).value_or(4));
         break;
     case K::FewerRegisters:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "fewer"});
+        reader.checkKeys(*o, path, ruleKeys({"fewer"}));
         rule.fewer = int(reader.integer(*o, path, "fewer", 1, 125).value_or(1));
         break;
     case K::Chunks:
-        reader.checkKeys(*o, path,
-                         {"kind", "name", "units", "functions", "addresses", "probability", "chunkBytes", "gapMs"});
+        reader.checkKeys(*o, path, ruleKeys({"chunkBytes", "gapMs"}));
         rule.chunkBytes = int(reader.integer(*o, path, "chunkBytes", 1, 65535).value_or(4));
         rule.gapMs = reader.number(*o, path, "gapMs", 0, kMaxDelayMs).value_or(10);
         break;
     case K::Trickle:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "gapMs"});
+        reader.checkKeys(*o, path, ruleKeys({"gapMs"}));
         rule.gapMs = reader.number(*o, path, "gapMs", 0, kMaxDelayMs).value_or(20);
         break;
     case K::Junk:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "before", "after"});
+        reader.checkKeys(*o, path, ruleKeys({"before", "after"}));
         readJunk(reader, *o, path, "before", &rule.junkBefore, &rule.junkBeforeCount);
         readJunk(reader, *o, path, "after", &rule.junkAfter, &rule.junkAfterCount);
         if (!o->contains(QLatin1String("before")) && !o->contains(QLatin1String("after")))
             reader.error(path, QStringLiteral("junk needs 'before' or 'after' (a byte count or hex bytes)"));
         break;
     case K::Duplicate:
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "copies", "gapMs"});
+        reader.checkKeys(*o, path, ruleKeys({"copies", "gapMs"}));
         rule.copies = int(reader.integer(*o, path, "copies", 1, 16).value_or(1));
         rule.gapMs = reader.number(*o, path, "gapMs", 0, kMaxDelayMs).value_or(0);
         break;
     case K::Close: {
-        reader.checkKeys(*o, path, {"kind", "name", "units", "functions", "addresses", "probability", "when"});
+        reader.checkKeys(*o, path, ruleKeys({"when"}));
         const QString when = reader.string(*o, path, "when").value_or(QStringLiteral("after"));
         if (when == QLatin1String("before"))
             rule.closeWhen = FaultRule::CloseWhen::Before;
@@ -228,28 +318,10 @@ std::optional<FaultRule> FaultRuleReader::readRule(JsonReader &reader, const QJs
     rule.functions = readByteList(reader, *o, path, "functions", 1);
     rule.probability = reader.number(*o, path, "probability", 0, 1).value_or(1);
 
-    const QJsonValue addresses = o->value(QLatin1String("addresses"));
-    const QString at = JsonReader::member(path, "addresses");
-    if (addresses.isArray()) {
-        const QJsonArray a = addresses.toArray();
-        if (a.size() != 2) {
-            reader.error(at, QStringLiteral("expected [first, last] (two addresses), found %1 values").arg(a.size()));
-        } else {
-            const auto first = reader.integerValue(a.at(0), JsonReader::element(at, 0), 0, 65535);
-            const auto last = reader.integerValue(a.at(1), JsonReader::element(at, 1), 0, 65535);
-            if (first && last && *last < *first)
-                reader.error(JsonReader::element(at, 1), QStringLiteral("%1 is below the first address %2").arg(*last).arg(*first));
-            else if (first && last) {
-                rule.firstAddress = int(*first);
-                rule.lastAddress = int(*last);
-            }
-        }
-    } else if (!addresses.isUndefined()) {
-        if (const auto n = reader.integerValue(addresses, at, 0, 65535)) {
-            rule.firstAddress = int(*n);
-            rule.lastAddress = int(*n);
-        }
-    }
+    readMeets(reader, *o, path, &rule);
+    rule.starts = readIntList(reader, *o, path, "start", 0, 65535);
+    rule.quantities = readIntList(reader, *o, path, "quantity", 0, 65535);
+    readValues(reader, *o, path, &rule);
 
     if (reader.problemCount() != before)
         return std::nullopt;

@@ -1,7 +1,9 @@
 #include "profileloader.h"
 
+#include "devicelimitsreader.h"
 #include "faultrulereader.h"
 #include "json/jsonreader.h"
+#include "linetablereader.h"
 #include "profileunitreader.h"
 #include "transport/linkurl.h"
 
@@ -154,7 +156,8 @@ ProfileLoadResult ProfileLoader::parse(const QByteArray &json, const QString &so
         return result;
     JsonReader reader(&result.problems, source);
     const QString top;
-    reader.checkKeys(*root, top, {"$schema", "name", "description", "endpoints", "seed", "units", "faults"});
+    reader.checkKeys(*root, top, {"$schema", "name", "description", "endpoints", "seed", "units", "faults",
+                                    "unknownUnit", "limits", "delimited"});
 
     DeviceProfile profile;
     profile.source = source;
@@ -199,6 +202,10 @@ ProfileLoadResult ProfileLoader::parse(const QByteArray &json, const QString &so
             }
         }
     }
+
+    profile.limits = DeviceLimitsReader::read(reader, *root);
+    if (root->contains(QLatin1String("delimited")))
+        profile.delimited = LineTableReader::read(reader, root->value(QLatin1String("delimited")), QStringLiteral("delimited"));
 
     profile.faults.seed = profile.seed;
     if (root->contains(QLatin1String("faults"))) {

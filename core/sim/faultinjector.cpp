@@ -58,16 +58,52 @@ FaultContext FaultContext::forRequest(Framing framing, const QByteArray &request
         c.firstAddress = start;
         c.lastAddress = std::min(65535, start + std::max(count, 1) - 1);
     };
+    auto registers = [&c, &pdu](qsizetype at, int count) {
+        c.writes = true;
+        for (int i = 0; i < count && at + 2 * i + 1 < pdu.size(); ++i)
+            c.written.append(word(pdu, at + 2 * i));
+    };
+    if (pdu.size() >= 3 && c.function != 0x07 && c.function != 0x08 && c.function != 0x0B && c.function != 0x0C
+        && c.function != 0x11 && c.function != 0x14 && c.function != 0x15 && c.function != 0x2B)
+        c.start = word(pdu, 1);
     switch (c.function) {
     case 0x01: case 0x02: case 0x03: case 0x04: case 0x0F: case 0x10:
-        if (pdu.size() >= 5)
+        if (pdu.size() >= 5) {
             span(word(pdu, 1), word(pdu, 3));
+            c.quantity = word(pdu, 3);
+        }
+        if (c.function == 0x10 && c.quantity >= 0)
+            registers(6, c.quantity);
+        if (c.function == 0x0F && c.quantity >= 0) {
+            c.writes = true;
+            for (int i = 0; i < c.quantity && 6 + i / 8 < pdu.size(); ++i)
+                c.written.append(quint16((quint8(pdu.at(6 + i / 8)) >> (i % 8)) & 1));
+        }
         break;
-    case 0x05: case 0x06: case 0x16: case 0x18:
+    case 0x05: case 0x06:
+        if (pdu.size() >= 5) {
+            span(word(pdu, 1), 1);
+            c.quantity = 1;
+            const quint16 value = word(pdu, 3);
+            c.writes = true;
+            c.written.append(c.function == 0x05 && value == 0xFF00 ? quint16(1) : value);
+        }
+        break;
+    case 0x16:
+        if (pdu.size() >= 3)
+            span(word(pdu, 1), 1);
+        if (pdu.size() >= 7)
+            registers(3, 2);
+        break;
+    case 0x18:
         if (pdu.size() >= 3)
             span(word(pdu, 1), 1);
         break;
     case 0x17:
+        if (pdu.size() >= 5)
+            c.quantity = word(pdu, 3);
+        if (pdu.size() >= 9)
+            registers(10, word(pdu, 7));
         if (pdu.size() >= 9) {
             const int readStart = word(pdu, 1);
             const int writeStart = word(pdu, 5);
@@ -84,6 +120,16 @@ FaultContext FaultContext::forRequest(Framing framing, const QByteArray &request
 
 FaultContext FaultContext::forExchange(const SimExchange &exchange)
 {
+    if (exchange.delimited) {
+        FaultContext c;
+        c.framing = exchange.framing;
+        c.delimited = true;
+        c.unit = exchange.routedUnitId;
+        c.request = exchange.requestAdu;
+        c.response = exchange.responseAdu;
+        c.responseDelayNs = exchange.responseDelayNs;
+        return c;
+    }
     FaultContext c = forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu, exchange.responseDelayNs);
     c.unit = exchange.routedUnitId;
     return c;
@@ -147,7 +193,21 @@ bool FaultInjector::matches(const FaultRule &rule, const FaultContext &context)
     if (rule.hasAddressRange()
         && (context.firstAddress < 0 || context.lastAddress < rule.firstAddress || context.firstAddress > rule.lastAddress))
         return false;
+    if (!rule.starts.isEmpty() && !rule.starts.contains(context.start))
+        return false;
+    if (!rule.quantities.isEmpty() && !rule.quantities.contains(context.quantity))
+        return false;
+    if (rule.hasValues && (!context.writes || context.written != rule.values))
+        return false;
     using K = FaultRule::Kind;
+    if (context.delimited) {
+        switch (rule.kind) {
+        case K::WrongChecksum: case K::WrongTransactionId: case K::WrongUnit: case K::Exception: case K::FewerRegisters:
+            return false;
+        default:
+            return true;
+        }
+    }
     switch (rule.kind) {
     case K::WrongChecksum:
         return context.framing == Framing::Rtu || context.framing == Framing::Ascii;

@@ -19,10 +19,22 @@ struct SimExchange;
 // What the fault injector is told about one answer.
 struct FaultContext {
     Framing framing = Framing::Tcp; // Rtu for rtu://, rtu-tcp and rtu-udp; Tcp for tcp and tls; Udp; Ascii
+    // framing=delimited: the request and answer are a delimited protocol's frames, not Modbus; rules
+    // that change Modbus fields (exception, fewer registers, wrong unit, transaction id or
+    // checksum) do not apply, and function and addresses stay unset.
+    bool delimited = false;
     quint8 unit = 0;                // the unit that answers (per-unit delays and rules follow it)
     quint8 function = 0;            // the request's function code
     int firstAddress = -1;          // the addresses the request touches; -1: none (07, 11, 2B...)
     int lastAddress = -1;
+    // The request's fields as written, for exact matching: the start address (01-06, 0F, 10, 16;
+    // 17 the read start; 18 the FIFO pointer), the quantity (01-04, 0F, 10; 17 the read
+    // quantity; 05 and 06 one), and the values written (05: 1 for FF00, 0 for 0000; 06 the
+    // register; 0F the bits as 0 and 1; 10 and 17 the registers; 16 the AND and OR masks).
+    int start = -1;
+    int quantity = -1;
+    QList<quint16> written;
+    bool writes = false;
     QByteArray request;             // the request ADU
     QByteArray response;            // the correct response ADU
     qint64 responseDelayNs = 0;     // the unit's response time when no distribution is set for it
@@ -68,8 +80,9 @@ public:
 
     [[nodiscard]] FaultPlan plan(const FaultContext &context);
 
-    // Whether rule could apply to this answer (unit, function, addresses, and what the fault
-    // needs: a checksum, an MBAP header, a read answer...).
+    // Whether rule could apply to this answer (unit, function, the addresses it meets, its exact
+    // start, quantity and written values, and what the fault needs: a checksum, an MBAP header,
+    // a read answer...).
     [[nodiscard]] static bool matches(const FaultRule &rule, const FaultContext &context);
 
 private:

@@ -78,4 +78,20 @@ void ProfileApplier::configure(FaultInjector *injector, const DeviceProfile &pro
     injector->setRules(profile.faults);
 }
 
+SimEndpointOptions ProfileApplier::endpointOptions(const DeviceProfile &profile)
+{
+    SimEndpointOptions options;
+    using U = DeviceLimits::UnknownUnit;
+    switch (profile.limits.unknownUnit) {
+    case U::Auto: options.unknownUnit = SimEndpointOptions::UnknownUnit::Auto; break;
+    case U::FirstUnit: options.unknownUnit = SimEndpointOptions::UnknownUnit::FirstUnit; break;
+    case U::Exception: options.unknownUnit = SimEndpointOptions::UnknownUnit::Exception; break;
+    case U::Silent: options.unknownUnit = SimEndpointOptions::UnknownUnit::Ignore; break;
+    }
+    if (profile.limits.maxClients > 0)
+        options.maxConnections = profile.limits.maxClients;
+    options.dropOldestConnection = profile.limits.extraClients == DeviceLimits::ExtraClient::DropOldest;
+    return options;
+}
+
 } // namespace mbscope

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "profile/deviceprofile.h"
+#include "sim/simendpointoptions.h"
 
 #include <QtCore/QList>
 #include <QtCore/QString>
@@ -28,6 +29,8 @@ public:
                                                       QString *error = nullptr);
     // The profile's fault rules and each unit's response delay distribution.
     static void configure(FaultInjector *injector, const DeviceProfile &profile);
+    // What each endpoint serving the profile does with unknown unit ids and extra clients.
+    [[nodiscard]] static SimEndpointOptions endpointOptions(const DeviceProfile &profile);
 };
 
 } // namespace mbscope

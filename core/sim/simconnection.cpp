@@ -1,6 +1,7 @@
 #include "sim/simconnection.h"
 
 #include "protocol/asciiframer.h"
+#include "protocol/delimitedframer.h"
 #include "protocol/mbapframer.h"
 #include "protocol/rtuframer.h"
 #include "sim/simendpoint.h"
@@ -13,9 +14,11 @@ namespace mbscope {
 
 namespace {
 
-std::unique_ptr<StreamFramer> framerFor(Framing framing)
+std::unique_ptr<StreamFramer> framerFor(const LinkUrl &url)
 {
-    switch (framing) {
+    if (url.delimited.enabled)
+        return std::make_unique<DelimitedFramer>(url.delimited);
+    switch (url.framing()) {
     case Framing::Rtu: return std::make_unique<RtuFramer>(Direction::Request);
     case Framing::Ascii: return std::make_unique<AsciiFramer>();
     default: return std::make_unique<MbapFramer>();
@@ -36,11 +39,12 @@ SimConnection::SimConnection(Simulator *simulator, SimEndpoint *endpoint, QTcpSo
     , m_simulator(simulator)
     , m_endpoint(endpoint)
     , m_socket(socket)
-    , m_framer(framerFor(endpoint->framing()))
+    , m_framer(framerFor(endpoint->url()))
     , m_responder(true, this)
     , m_idle(this)
     , m_silence(this)
     , m_peer(peerOf(socket))
+    , m_connectedNs(monotonicNowNs())
 {
     socket->setParent(this);
     // Answers are small and must leave at once, not wait for Nagle's algorithm to gather more.
@@ -90,7 +94,7 @@ void SimConnection::drain()
 {
     // MBAP (Messaging on TCP/IP V1.0b, 3.1.3): a header that is not Modbus's means the stream
     // cannot be trusted any more; the connection is closed once the bytes are reported.
-    const bool mbap = m_endpoint->framing() == Framing::Tcp;
+    const bool mbap = m_endpoint->framing() == Framing::Tcp && !m_endpoint->url().delimited.enabled;
     if (mbap && m_framer->openSkippedRunSize() > 0)
         m_framer->flushOnSilence();
     const QList<StreamFrame> frames = m_framer->takeFrames();
@@ -110,7 +114,8 @@ void SimConnection::drain()
         }
         const StreamFrame &frame = frames.at(f++);
         const qint64 received = frame.lastByteNs != 0 ? frame.lastByteNs : monotonicNowNs();
-        const FaultPlan plan = m_simulator->handleFrame(m_endpoint, frame.bytes, frame.status, m_peer, received);
+        const FaultPlan plan = m_simulator->handleFrame(m_endpoint, frame.bytes, frame.status, m_peer, received,
+                                                       m_connectedNs);
         m_responder.enqueue(plan, received, [this, id = plan.trafficId](const QByteArray &answer) {
             if (m_socket->state() != QAbstractSocket::ConnectedState)
                 return;

@@ -47,6 +47,7 @@ private:
     QTimer m_idle;
     QTimer m_silence;
     QString m_peer;
+    qint64 m_connectedNs = 0;
     bool m_closing = false;
     bool m_finished = false;
 };

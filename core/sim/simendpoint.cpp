@@ -1,5 +1,7 @@
 #include "sim/simendpoint.h"
 
+#include "transport/monotonicclock.h"
+
 namespace mbscope {
 
 SimEndpoint::SimEndpoint(Simulator *simulator, const LinkUrl &url, const SimEndpointOptions &options)
@@ -17,6 +19,8 @@ void SimEndpoint::setBound(const LinkUrl &bound, bool listening)
 {
     m_boundUrl = bound;
     m_name = bound.toString();
+    if (listening && !m_listening)
+        m_startedNs = monotonicNowNs();
     m_listening = listening;
 }
 

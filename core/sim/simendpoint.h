@@ -26,6 +26,8 @@ public:
     [[nodiscard]] const SimEndpointOptions &options() const { return m_options; }
     [[nodiscard]] Framing framing() const { return m_url.framing(); }
     [[nodiscard]] bool isListening() const { return m_listening; }
+    // monotonicNowNs() when the endpoint started listening (a serial port: when it opened).
+    [[nodiscard]] qint64 startedNs() const { return m_startedNs; }
     [[nodiscard]] virtual int connectionCount() const { return 0; }
 
     // Binds / opens; false with *error set ("rtu-tcp://127.0.0.1:4001: address in use").
@@ -45,6 +47,7 @@ private:
     QString m_name;
     SimEndpointOptions m_options;
     bool m_listening = false;
+    qint64 m_startedNs = 0;
 };
 
 } // namespace mbscope

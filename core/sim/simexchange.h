@@ -21,6 +21,7 @@ struct SimExchange {
     // follows it. unitId when no unit answers (exception 0B).
     quint8 routedUnitId = 0;
     quint16 transactionId = 0;  // MBAP framings
+    bool delimited = false;     // a delimited protocol's frame (LineTable), not Modbus
     QByteArray requestAdu;      // the request as received
     QByteArray requestPdu;      // function code first
     SimReply reply;             // the unit's answer (reply.pdu: the response PDU)

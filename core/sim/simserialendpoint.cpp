@@ -1,6 +1,7 @@
 #include "sim/simserialendpoint.h"
 
 #include "protocol/asciiframer.h"
+#include "protocol/delimitedframer.h"
 #include "protocol/rtuframer.h"
 #include "sim/simulator.h"
 #include "transport/monotonicclock.h"
@@ -47,7 +48,9 @@ bool SimSerialEndpoint::start(QString *error)
         m_port = nullptr;
         return false;
     }
-    if (url().kind == LinkKind::Rtu) {
+    if (url().delimited.enabled) {
+        m_framer = std::make_unique<DelimitedFramer>(url().delimited);
+    } else if (url().kind == LinkKind::Rtu) {
         auto rtu = std::make_unique<RtuFramer>(Direction::Request);
         rtu->setBaudRate(s.baud);
         m_framer = std::move(rtu);
@@ -87,7 +90,7 @@ void SimSerialEndpoint::onReadyRead()
         m_silence.stop();
         return;
     }
-    if (url().kind == LinkKind::Rtu) {
+    if (url().kind == LinkKind::Rtu && !url().delimited.enabled) {
         // t3.5 after the last byte, rounded up to whole milliseconds (timers have no finer grain).
         const qint64 t35 = RtuFramer::t35Ns(url().serial.baud);
         m_silence.start(int(std::max<qint64>(1, (t35 + 999'999) / 1'000'000)));

@@ -148,7 +148,12 @@ void SimStreamEndpoint::onNewConnection()
     while (m_server->hasPendingConnections()) {
         QTcpSocket *socket = m_server->nextPendingConnection();
         const int limit = options().maxConnections;
-        if (limit > 0 && m_connections.size() >= limit) {
+        if (limit > 0 && m_connections.size() >= limit && options().dropOldestConnection) {
+            // Some gateways make room for a new client by dropping the one connected longest.
+            // It leaves the count at once; its finished() still deletes it once it is closed.
+            SimConnection *oldest = m_connections.takeFirst();
+            oldest->close(QStringLiteral("knocked off by a new client (%1 clients at most)").arg(limit));
+        } else if (limit > 0 && m_connections.size() >= limit) {
             simulator()->noteConnection(this, socket->peerAddress().toString() + QLatin1Char(':') + QString::number(socket->peerPort()),
                                         SimLogEntry::Verdict::ConnectionRefused,
                                         QStringLiteral("%1 clients connected, the limit: refused").arg(limit));

@@ -2,6 +2,8 @@
 
 #include "traffic/trafficlog.h"
 #include "protocol/adubuilder.h"
+#include "protocol/delimitedframer.h"
+#include "sim/lineresponder.h"
 #include "sim/simdatagramendpoint.h"
 #include "sim/simprocessor.h"
 #include "sim/simserialendpoint.h"
@@ -121,9 +123,10 @@ SimEndpoint *Simulator::listen(const QString &url, const SimEndpointOptions &opt
 
 SimEndpoint *Simulator::listen(const LinkUrl &url, const SimEndpointOptions &options, QString *error)
 {
-    if (url.delimited.enabled) {
+    if (url.delimited.enabled && m_lineTable.isEmpty()) {
         if (error)
-            *error = url.toString() + QStringLiteral(": the simulator serves Modbus framings only, not framing=delimited");
+            *error = url.toString() + QStringLiteral(": framing=delimited needs a profile with a 'delimited' table of requests "
+                                                     "and answers (docs/profiles.md, \"Delimited protocols\")");
         return nullptr;
     }
     SimEndpoint *endpoint = nullptr;
@@ -188,9 +191,116 @@ QList<Simulator::Slot *> Simulator::slotsOf(const SimEndpoint *endpoint)
     return out;
 }
 
-FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status,
-                                 const QString &peer, qint64 receivedNs)
+std::optional<SimReply> Simulator::limitReply(const QByteArray &pdu, qint64 receivedNs, bool *silent)
 {
+    *silent = false;
+    const quint8 function = quint8(pdu.at(0));
+    if (m_limits.minGapMs > 0 && m_lastTakenNs != 0) {
+        const double gapMs = double(receivedNs - m_lastTakenNs) / 1e6;
+        if (gapMs < m_limits.minGapMs) {
+            const QString note = QStringLiteral("%1 ms after the previous request, under the device's gap of %2 ms")
+                                     .arg(QString::number(gapMs, 'f', 1), QString::number(m_limits.minGapMs));
+            if (m_limits.tooSoon == DeviceLimits::TooSoon::Silent) {
+                *silent = true;
+                return SimReply::silent(note + QStringLiteral(": ignored"));
+            }
+            // V1.1b3 section 7: 06, server device busy.
+            return SimReply::exception(function, 0x06, note + QStringLiteral(": exception 06 (server device busy)"));
+        }
+    }
+    m_lastTakenNs = receivedNs;
+    // 01-04, 0F, 10 and 17 carry their (read) quantity in bytes 3-4 of the PDU.
+    if (const auto it = m_limits.maxQuantity.constFind(function); it != m_limits.maxQuantity.constEnd() && pdu.size() >= 5) {
+        const int quantity = quint8(pdu.at(3)) << 8 | quint8(pdu.at(4));
+        if (quantity > *it)
+            return SimReply::exception(function, 0x03, QStringLiteral("quantity %1 is over the device's limit of %2 for "
+                                                                      "function %3: exception 03 (illegal data value)")
+                                                           .arg(quantity)
+                                                           .arg(*it)
+                                                           .arg(QString::number(function, 16).toUpper().rightJustified(2, QLatin1Char('0'))));
+    }
+    return std::nullopt;
+}
+
+bool Simulator::warmingUp(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView adu, qint64 receivedNs,
+                          qint64 connectedNs)
+{
+    if (m_limits.warmUpMs <= 0)
+        return false;
+    const qint64 since = connectedNs != 0 ? connectedNs : endpoint->startedNs();
+    const double upMs = double(receivedNs - since) / 1e6;
+    if (upMs >= m_limits.warmUpMs)
+        return false;
+    log(endpoint, peer, unitId, adu, {}, SimLogEntry::Verdict::NoAnswer,
+        QStringLiteral("%1 ms after connecting, within the device's warm-up of %2 ms: ignored")
+            .arg(QString::number(upMs, 'f', 1), QString::number(m_limits.warmUpMs)));
+    return true;
+}
+
+FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, FrameStatus status, const QString &peer,
+                                qint64 receivedNs, qint64 connectedNs)
+{
+    FaultPlan silence;
+    silence.drop = true;
+    const DelimitedFraming &framing = endpoint->url().delimited;
+    if (status != FrameStatus::Valid) {
+        log(endpoint, peer, -1, frame, {}, SimLogEntry::Verdict::ChecksumError,
+            QStringLiteral("%1 checksum wrong: discarded").arg(DelimitedFramer::checksumName(framing.checksum)));
+        return silence;
+    }
+    if (warmingUp(endpoint, peer, -1, frame, receivedNs, connectedNs))
+        return silence;
+    const QByteArrayView body = framing.checksum == DelimitedChecksum::None ? frame : frame.first(std::max<qsizetype>(0, frame.size() - 1));
+    const QList<Slot *> units = slotsOf(endpoint);
+    const LineAnswer answer = LineResponder::respond(m_lineTable, body, [&units](int id) -> SimUnit * {
+        for (Slot *slot : units) {
+            if (id < 0 || slot->unit->id() == id)
+                return slot->unit.get();
+        }
+        return nullptr;
+    });
+    if (!answer.answers) {
+        log(endpoint, peer, answer.unitId, frame, {},
+            answer.unitMissing ? SimLogEntry::Verdict::UnknownUnit : SimLogEntry::Verdict::NoAnswer,
+            answer.note.isEmpty() ? answer.rule + QStringLiteral(": no answer") : answer.note);
+        return silence;
+    }
+    const qint64 delayNs = unit(quint8(answer.unitId)) ? unit(quint8(answer.unitId))->responseDelayNs() : 0;
+    if (bool limitSilent = false; const auto refused = limitReply(QByteArray(1, '\0'), receivedNs, &limitSilent)) {
+        // A delimited device has no exception answers: too soon means no answer.
+        log(endpoint, peer, answer.unitId, frame, {}, SimLogEntry::Verdict::NoAnswer, refused->note);
+        return silence;
+    }
+    const QByteArray bytes = DelimitedFramer::complete(framing, answer.bytes);
+    FaultPlan plan;
+    if (m_faultHook) {
+        SimExchange exchange;
+        exchange.endpoint = endpoint->name();
+        exchange.peer = peer;
+        exchange.framing = endpoint->framing();
+        exchange.delimited = true;
+        exchange.unitId = quint8(answer.unitId);
+        exchange.routedUnitId = quint8(answer.unitId);
+        exchange.requestAdu = frame.toByteArray();
+        exchange.responseAdu = bytes;
+        exchange.responseDelayNs = delayNs;
+        exchange.receivedNs = receivedNs;
+        exchange.reply = SimReply::normal(bytes);
+        plan = m_faultHook(exchange);
+    } else {
+        plan.chunks.append(ResponseChunk{bytes, delayNs});
+    }
+    const QString note = answer.note.isEmpty() ? answer.rule : answer.rule + QStringLiteral(": ") + answer.note;
+    plan.trafficId = log(endpoint, peer, answer.unitId, frame, bytes, SimLogEntry::Verdict::Answered, note, plan.faults);
+    noteFaultPlan(endpoint, plan);
+    return plan;
+}
+
+FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status,
+                                 const QString &peer, qint64 receivedNs, qint64 connectedNs)
+{
+    if (endpoint->url().delimited.enabled)
+        return handleLine(endpoint, adu, status, peer, receivedNs, connectedNs);
     FaultPlan silence;
     silence.drop = true;
     const Framing framing = endpoint->framing();
@@ -231,6 +341,8 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         log(endpoint, peer, unitForLog, adu, {}, SimLogEntry::Verdict::Malformed, QStringLiteral("no function code: dropped"));
         return silence;
     }
+    if (warmingUp(endpoint, peer, parts.unitId, adu, receivedNs, connectedNs))
+        return silence;
     for (Slot *slot : units)
         SimProcessor::noteBusMessage(*slot->unit);
 
@@ -249,13 +361,17 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
     }
     if (!target && !serial && endpoint->options().directUnitIds && (unitId == 0 || unitId == 0xFF) && !units.isEmpty())
         target = units.first();
+    // Many TCP servers answer whatever unit id is asked as their one device.
+    if (!target && !endpoint->url().isSerial() && !units.isEmpty()
+        && endpoint->options().unknownUnit == SimEndpointOptions::UnknownUnit::FirstUnit)
+        target = units.first();
 
     SimReply reply;
     qint64 delayNs = 0;
     SimLogEntry::Verdict verdict = SimLogEntry::Verdict::Answered;
     if (!target) {
         auto policy = endpoint->options().unknownUnit;
-        if (policy == SimEndpointOptions::UnknownUnit::Auto)
+        if (policy == SimEndpointOptions::UnknownUnit::Auto || policy == SimEndpointOptions::UnknownUnit::FirstUnit)
             policy = endpoint->url().isSerial() ? SimEndpointOptions::UnknownUnit::Ignore
                                                 : SimEndpointOptions::UnknownUnit::Exception;
         if (policy == SimEndpointOptions::UnknownUnit::Ignore) {
@@ -267,6 +383,10 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         reply = SimReply::exception(quint8(parts.pdu[0]) & 0x7F, 0x0B,
                                     QStringLiteral("no unit %1 here: exception 0B (gateway target device failed to respond)").arg(unitId));
         verdict = SimLogEntry::Verdict::UnknownUnit;
+    } else if (bool limitSilent = false; const auto refused = limitReply(parts.pdu, receivedNs, &limitSilent)) {
+        reply = *refused;
+        delayNs = target->unit->responseDelayNs();
+        verdict = limitSilent ? SimLogEntry::Verdict::NoAnswer : SimLogEntry::Verdict::Exception;
     } else {
         reply = target->processor->process(parts.pdu, false);
         delayNs = target->unit->responseDelayNs();

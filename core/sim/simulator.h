@@ -1,5 +1,7 @@
 #pragma once
 
+#include "profile/devicelimits.h"
+#include "profile/linerule.h"
 #include "protocol/streamframe.h"
 #include "sim/faultplan.h"
 #include "sim/simendpointoptions.h"
@@ -14,6 +16,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace mbscope {
 
@@ -67,6 +70,19 @@ public:
     void closeEndpoint(SimEndpoint *endpoint);
     void closeAll();
 
+    // ---- Device limits (DeviceLimits: the minimum gap, the largest quantities, the warm-up) ----
+    // The unknown-unit and client limits belong to the endpoints (SimEndpointOptions,
+    // ProfileApplier::endpointOptions). The gap is the device's, across every endpoint: it runs
+    // from the arrival of the last request the device took.
+    void setLimits(const DeviceLimits &limits) { m_limits = limits; }
+    [[nodiscard]] const DeviceLimits &limits() const { return m_limits; }
+
+    // ---- Delimited protocols ----
+    // The requests and answers of a non-Modbus protocol (LineTable), served on endpoints whose
+    // URL says framing=delimited; listen() refuses such an endpoint while the table is empty.
+    void setLineTable(const LineTable &table) { m_lineTable = table; }
+    [[nodiscard]] const LineTable &lineTable() const { return m_lineTable; }
+
     // ---- Faults and logs ----
     void setFaultHook(FaultHook hook) { m_faultHook = std::move(hook); }
     [[nodiscard]] bool hasFaultHook() const { return bool(m_faultHook); }
@@ -80,9 +96,10 @@ public:
 
     // ---- The request path (used by the endpoints; public for tests and fuzzing) ----
     // One frame cut by the endpoint's framer (or one datagram). Returns what to send: a plan
-    // with drop set for silence.
+    // with drop set for silence. connectedNs: when the client's connection opened (the warm-up
+    // runs from it); 0: when the endpoint started.
     FaultPlan handleFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status,
-                          const QString &peer, qint64 receivedNs);
+                          const QString &peer, qint64 receivedNs, qint64 connectedNs = 0);
     // Bytes the framer skipped: logged, and on serial framings counted (a CRC mismatch is a comm
     // error, a frame too long an overrun).
     void noteSkipped(SimEndpoint *endpoint, const SkippedBytes &skipped, const QString &peer);
@@ -109,7 +126,19 @@ private:
     void noteFaultPlan(SimEndpoint *endpoint, const FaultPlan &plan);
     [[nodiscard]] quint16 trafficLink(const SimEndpoint *endpoint);
 
+    // A reply refusing the request by the device limits (gap, quantity), or nullopt to go on.
+    [[nodiscard]] std::optional<SimReply> limitReply(const QByteArray &pdu, qint64 receivedNs, bool *silent);
+
+    FaultPlan handleLine(SimEndpoint *endpoint, QByteArrayView frame, FrameStatus status, const QString &peer,
+                         qint64 receivedNs, qint64 connectedNs);
+    // Whether a request at receivedNs falls in the warm-up (then logged as ignored).
+    bool warmingUp(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView adu, qint64 receivedNs,
+                   qint64 connectedNs);
+
     std::map<quint8, Slot> m_units;
+    DeviceLimits m_limits;
+    LineTable m_lineTable;
+    qint64 m_lastTakenNs = 0; // arrival of the last request the device took (minGapMs)
     QList<SimEndpoint *> m_endpoints;
     FaultHook m_faultHook;
     TrafficLog *m_trafficLog = nullptr;

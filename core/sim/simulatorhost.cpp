@@ -68,6 +68,8 @@ bool SimulatorHost::load(const DeviceProfile &profile, QString *error)
         }
     }
     ProfileApplier::configure(m_injector.get(), profile);
+    m_simulator->setLimits(profile.limits);
+    m_simulator->setLineTable(profile.delimited);
     m_driver->attach(profile, adopted);
     auto *recorder = new SimFaultPlanRecorder(m_simulator, m_injector.get(), m_anchor);
     connect(recorder, &SimFaultPlanRecorder::recorded, m_anchor,
@@ -102,7 +104,7 @@ std::optional<LinkUrl> SimulatorHost::listen(const LinkUrl &url, QString *error)
             *error = translated("Endpoints are added after loading a profile and before the simulator starts.");
         return std::nullopt;
     }
-    SimEndpoint *endpoint = m_simulator->listen(url, {}, error);
+    SimEndpoint *endpoint = m_simulator->listen(url, ProfileApplier::endpointOptions(m_profile), error);
     if (!endpoint)
         return std::nullopt;
     m_bound.append(endpoint->boundUrl());

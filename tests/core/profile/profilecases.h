@@ -53,7 +53,8 @@ inline void addErrorRows()
     row("name empty", R"({"name": " ", "units": [{"id": 1}]})", "name", S("the name is empty"));
     row("name a number", R"({"name": 5, "units": [{"id": 1}]})", "name", S("expected a string, found the number 5"));
     row("unknown top-level key", R"({"name": "t", "unit": [], "units": [{"id": 1}]})", "",
-        S("unknown key 'unit': expected one of $schema, name, description, endpoints, seed, units, faults"));
+        S("unknown key 'unit': expected one of $schema, name, description, endpoints, seed, units, faults, unknownUnit, "
+          "limits, delimited"));
     row("units missing", R"({"name": "t"})", "", S("'units' is missing"));
     row("units empty", R"({"name": "t", "units": []})", "units", S("the list is empty: a profile has at least one unit"));
     row("units an object", R"({"name": "t", "units": {}})", "units", S("expected an array, found an object"));
@@ -209,13 +210,86 @@ inline void addErrorRows()
     row("fault unit not in profile", faults(R"({"kind": "drop", "units": [1, 5]})"), "faults.rules[0].units[1]",
         S("unit 5 is not in this profile"));
     row("fault key of another kind", faults(R"({"kind": "drop", "code": 4})"), "faults.rules[0]",
-        S("unknown key 'code': expected one of kind, name, units, functions, addresses, probability"));
+        S("unknown key 'code': expected one of kind, name, units, functions, meets, addresses, start, quantity, values, "
+          "probability"));
     row("junk without bytes", faults(R"({"kind": "junk"})"), "faults.rules[0]",
         S("junk needs 'before' or 'after' (a byte count or hex bytes)"));
     row("close when", faults(R"({"kind": "close", "when": "soon"})"), "faults.rules[0].when",
         S("'soon' is not a moment: expected before, midway or after"));
     row("delay rule without delay", faults(R"({"kind": "delay"})"), "faults.rules[0]", S("'delay' is missing"));
     row("exception code 0", faults(R"({"kind": "exception", "code": 0})"), "faults.rules[0].code", S("0 is below 1"));
+
+    // Exact matching
+    row("fault start beyond 65535", faults(R"({"kind": "drop", "start": 65536})"), "faults.rules[0].start",
+        S("65536 is beyond 65535"));
+    row("fault start list empty", faults(R"({"kind": "drop", "start": []})"), "faults.rules[0].start",
+        S("the list is empty: leave 'start' out to match every value"));
+    row("fault quantity text", faults(R"({"kind": "drop", "quantity": "two"})"), "faults.rules[0].quantity",
+        S("expected a whole number or hex text such as \"0x0079\", found a string \"two\""));
+    row("fault values a number", faults(R"({"kind": "drop", "values": 5})"), "faults.rules[0].values",
+        S("expected a list of the values written, such as [1, 0] or [\"0x1234\"], found the number 5"));
+    row("fault values empty", faults(R"({"kind": "drop", "values": []})"), "faults.rules[0].values",
+        S("expected 1 to 123 values (a write carries at most 123 registers), found 0"));
+    row("fault value beyond a register", faults(R"({"kind": "drop", "values": [1, 70000]})"), "faults.rules[0].values[1]",
+        S("70000 is beyond 65535"));
+    row("fault meets and addresses", faults(R"({"kind": "drop", "meets": 1, "addresses": 1})"), "faults.rules[0].addresses",
+        S("give 'meets' or its older name 'addresses', not both"));
+    row("fault meets reversed", faults(R"({"kind": "drop", "meets": [10, 5]})"), "faults.rules[0].meets[1]",
+        S("5 is below the first address 10"));
+
+    // Unknown units and device limits
+    row("unknownUnit word", R"({"name": "t", "unknownUnit": "answer", "units": [{"id": 1}]})", "unknownUnit",
+        S("'answer' is not one of first, exception, silent, auto"));
+    row("limits unknown key", R"({"name": "t", "limits": {"gapMs": 5}, "units": [{"id": 1}]})", "limits",
+        S("unknown key 'gapMs': expected one of minGapMs, tooSoon, maxClients, extraClients, maxQuantity, warmUpMs"));
+    row("limits gap negative", R"({"name": "t", "limits": {"minGapMs": -1}, "units": [{"id": 1}]})", "limits.minGapMs",
+        S("-1 is below 0"));
+    row("limits tooSoon word", R"({"name": "t", "limits": {"minGapMs": 5, "tooSoon": "later"}, "units": [{"id": 1}]})",
+        "limits.tooSoon", S("'later' is not one of busy, silent"));
+    row("limits tooSoon without gap", R"({"name": "t", "limits": {"tooSoon": "silent"}, "units": [{"id": 1}]})",
+        "limits.tooSoon", S("'tooSoon' needs 'minGapMs' (the gap it is about)"));
+    row("limits clients 0", R"({"name": "t", "limits": {"maxClients": 0}, "units": [{"id": 1}]})", "limits.maxClients",
+        S("0 is below 1"));
+    row("limits extraClients word", R"({"name": "t", "limits": {"maxClients": 1, "extraClients": "queue"}, "units": [{"id": 1}]})",
+        "limits.extraClients", S("'queue' is not one of refuse, dropOldest"));
+    row("limits extraClients without max", R"({"name": "t", "limits": {"extraClients": "dropOldest"}, "units": [{"id": 1}]})",
+        "limits.extraClients", S("'extraClients' needs 'maxClients' (how many clients are too many)"));
+    row("limits quantity over the spec", R"({"name": "t", "limits": {"maxQuantity": {"0x03": 126}}, "units": [{"id": 1}]})",
+        "limits.maxQuantity.0x03", S("126 is beyond 125"));
+    row("limits quantity of 06", R"({"name": "t", "limits": {"maxQuantity": {"0x06": 1}}, "units": [{"id": 1}]})",
+        "limits.maxQuantity.0x06",
+        S("function 0x06 has no quantity to limit: expected one of 0x01, 0x02, 0x03, 0x04, 0x0F, 0x10, 0x17"));
+    row("limits quantity key", R"({"name": "t", "limits": {"maxQuantity": {"read": 1}}, "units": [{"id": 1}]})",
+        "limits.maxQuantity.read", S("'read' is not a function code: expected hex text such as \"0x03\""));
+    // Delimited protocols
+    const auto line = [](const char *rules) {
+        return QByteArray(R"({"name": "t", "units": [{"id": 1}], "delimited": {"rules": [)") + rules + "]}}";
+    };
+    row("delimited rules empty", R"({"name": "t", "units": [{"id": 1}], "delimited": {"rules": []}})", "delimited.rules",
+        S("the list is empty: a delimited protocol needs at least one rule"));
+    row("delimited unknown key", R"({"name": "t", "units": [{"id": 1}], "delimited": {"rule": []}})", "delimited",
+        S("unknown key 'rule': expected one of unitCapture, rules"));
+    row("delimited bad pattern", line(R"({"request": "\$(?<unit>0[12]R#", "answer": "x"})"), "delimited.rules[0].request",
+        S("not a regular expression: missing closing parenthesis at character 17"));
+    row("delimited answer missing", line(R"({"request": "a"})"), "delimited.rules[0]",
+        S("'answer' is missing: give the answer's text, or null for no answer"));
+    row("delimited answer a number", line(R"({"request": "a", "answer": 5})"), "delimited.rules[0].answer",
+        S("expected the answer's text such as \"${unit} {holding:0-7} #\", or null, found the number 5"));
+    row("delimited unknown capture", line(R"({"request": "\\$(?<unit>0[12])R#", "answer": "${slave} #"})"),
+        "delimited.rules[0].answer", S("{slave} is not a capture of the request pattern: expected one of unit"));
+    row("delimited unknown table", line(R"({"request": "a", "answer": "{registers:0-7}"})"), "delimited.rules[0].answer",
+        S("character 1: 'registers' is not a table: expected coils, discrete, input or holding"));
+    row("delimited range reversed", line(R"({"request": "a", "answer": "{holding:7-0}"})"), "delimited.rules[0].answer",
+        S("character 1: range 7-0 ends before it starts"));
+    row("delimited brace open", line("{\"request\": \"a\", \"answer\": \"{holding:0\"}") /* a normal literal: moc counts braces in raw strings */, "delimited.rules[0].answer",
+        S("character 1: '{' is not closed (write {{ for a brace)"));
+    row("delimited write to input", line(R"({"request": "a", "answer": null, "writes": [{"table": "input", "address": 0, "value": 1}]})"),
+        "delimited.rules[0].writes[0].table", S("'input' cannot be written: expected coils or holding"));
+    row("delimited write value a table", line(R"({"request": "(?<b>.)W", "answer": null, "writes": [{"table": "coils", "address": "{b}", "value": "{coils:0}"}]})"),
+        "delimited.rules[0].writes[0].value", S("expected a capture such as {bit}, not a table's values"));
+
+    row("limits warm-up text", R"({"name": "t", "limits": {"warmUpMs": "1s"}, "units": [{"id": 1}]})", "limits.warmUpMs",
+        S("expected a number, found a string \"1s\""));
 }
 
 inline void addEncodingRows()

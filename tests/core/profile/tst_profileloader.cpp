@@ -193,7 +193,7 @@ private slots:
     void shippedProfilesLoad_data()
     {
         QTest::addColumn<QString>("name");
-        for (const char *name : {"rosrao-gamma", "m221-plc", "arduino-rs485", "conformance"})
+        for (const char *name : {"rosrao-gamma", "m221-plc", "arduino-rs485", "conformance", "libmodbus-unit-test", "scada-rs485"})
             QTest::newRow(name) << QString::fromLatin1(name);
     }
     void shippedProfilesLoad()
@@ -504,7 +504,7 @@ void TestProfileLoader::documentedExamples()
         blocks.append(text.mid(start, end - start));
         at = end + 3;
     }
-    QCOMPARE(blocks.size(), 2);
+    QVERIFY(blocks.size() >= 3);
     const ProfileLoadResult profile = ProfileLoader::parse(blocks.at(0), QStringLiteral("profiles.md"));
     QVERIFY2(profile.ok, qPrintable(profile.errorText()));
     QCOMPARE(profile.profile.units.at(0).entries.size(), 5);
@@ -512,6 +512,16 @@ void TestProfileLoader::documentedExamples()
     const FaultRulesLoadResult faults = ProfileLoader::parseFaults(blocks.at(1), QStringLiteral("profiles.md"));
     QVERIFY2(faults.ok, qPrintable(faults.errorText()));
     QCOMPARE(faults.rules.rules.size(), 4);
+    // Every further example: a profile when it has units, else a faults file.
+    for (qsizetype i = 2; i < blocks.size(); ++i) {
+        if (blocks.at(i).contains("\"units\"")) {
+            const ProfileLoadResult r = ProfileLoader::parse(blocks.at(i), QStringLiteral("profiles.md block %1").arg(i));
+            QVERIFY2(r.ok, qPrintable(r.errorText()));
+        } else {
+            const FaultRulesLoadResult r = ProfileLoader::parseFaults(blocks.at(i), QStringLiteral("profiles.md block %1").arg(i));
+            QVERIFY2(r.ok, qPrintable(r.errorText()));
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(TestProfileLoader)

@@ -1,7 +1,11 @@
 #include "faultcases.h"
+#include "json/jsonreader.h"
+#include "profile/faultrulereader.h"
+#include "protocol/adubuilder.h"
 #include "sim/faultbytes.h"
 #include "sim/faultinjector.h"
 
+#include <QtCore/QJsonDocument>
 #include <QtCore/QThread>
 #include <QtTest/QtTest>
 
@@ -225,6 +229,8 @@ private slots:
     void combined();
     void filters_data();
     void filters();
+    void exactFilters_data();
+    void exactFilters();
     void dropProportion();
     void delayDistributions_data();
     void delayDistributions();
@@ -305,6 +311,56 @@ void TestFaultInjector::filters()
 }
 
 // A drop probability observed over many answers, within five standard errors of a proportion.
+// Exact matching (start, quantity, values) against "meets" (overlap), request by request, as the
+// libmodbus unit-test server needs them: a rule for start 0x170 must not fire on a read of
+// 0x160-0x17F, which meets it. Requests are RTU, unit 1 (CRCs computed by the builder).
+void TestFaultInjector::exactFilters_data()
+{
+    QTest::addColumn<QByteArray>("pdu");
+    QTest::addColumn<QString>("rule"); // the rule's matching keys, as a profile writes them
+    QTest::addColumn<bool>("fires");
+    const auto row = [](const char *name, const char *pdu, const char *rule, bool fires) {
+        QTest::newRow(name) << hex(pdu) << QString::fromLatin1(rule) << fires;
+    };
+    row("start 0x170, read at 0x170", "03 01 70 00 01", R"("start": "0x0170")", true);
+    row("start 0x170, read of 0x160-0x17F", "03 01 60 00 20", R"("start": "0x0170")", false);
+    row("meets 0x170, read of 0x160-0x17F", "03 01 60 00 20", R"("meets": "0x0170")", true);
+    row("meets 0x170, read of 0x171", "03 01 71 00 01", R"("meets": "0x0170")", false);
+    row("addresses (older name of meets)", "03 01 60 00 20", R"("addresses": ["0x0170", "0x0171"])", true);
+    row("quantity 2, read of 2", "03 01 60 00 02", R"("quantity": 2)", true);
+    row("quantity 2, read of 3", "03 01 60 00 03", R"("quantity": 2)", false);
+    row("quantity 2 or 3, read of 3", "03 01 60 00 03", R"("quantity": [2, 3])", true);
+    row("start and quantity, both", "03 01 60 00 02", R"("start": 352, "quantity": 2)", true);
+    row("start and quantity, start differs", "03 01 61 00 02", R"("start": 352, "quantity": 2)", false);
+    row("06 value 0x1234", "06 00 10 12 34", R"("values": ["0x1234"])", true);
+    row("06 value 0x1235", "06 00 10 12 35", R"("values": ["0x1234"])", false);
+    row("05 coil on", "05 00 03 FF 00", R"("values": [1])", true);
+    row("05 coil off", "05 00 03 00 00", R"("values": [1])", false);
+    row("10 two registers", "10 00 00 00 02 04 00 01 00 02", R"("values": [1, 2])", true);
+    row("10 one register differs", "10 00 00 00 02 04 00 01 00 03", R"("values": [1, 2])", false);
+    row("10 fewer values than the rule", "10 00 00 00 01 02 00 01", R"("values": [1, 2])", false);
+    row("0F bits 1 0 1", "0F 00 00 00 03 01 05", R"("values": [1, 0, 1])", true);
+    row("0F bits 1 1 1", "0F 00 00 00 03 01 07", R"("values": [1, 0, 1])", false);
+    row("values on a read never match", "03 00 00 00 01", R"("values": [1])", false);
+    row("17 read start and quantity", "17 00 10 00 02 00 20 00 01 02 00 07", R"("start": 16, "quantity": 2, "values": [7])", true);
+    row("16 masks", "16 00 04 00 F2 00 25", R"("values": ["0x00F2", "0x0025"])", true);
+}
+
+void TestFaultInjector::exactFilters()
+{
+    QFETCH(QByteArray, pdu);
+    QFETCH(QString, rule);
+    QFETCH(bool, fires);
+    QList<ProfileProblem> problems;
+    JsonReader reader(&problems, QStringLiteral("test"));
+    const QJsonDocument doc = QJsonDocument::fromJson(QStringLiteral("{\"kind\": \"drop\", %1}").arg(rule).toUtf8());
+    const auto r = FaultRuleReader::readRule(reader, doc.object(), QStringLiteral("rule"));
+    QVERIFY2(r.has_value(), qPrintable(ProfileProblem::join(problems)));
+    const QByteArray request = AduBuilder::rtu(pdu, 1);
+    const FaultContext context = FaultContext::forRequest(Framing::Rtu, request, hex(kRtuResponse), kUnitDelayNs);
+    QCOMPARE(FaultInjector::matches(*r, context), fires);
+}
+
 void TestFaultInjector::dropProportion()
 {
     for (const double p : {0.1, 0.5, 0.02}) {
