@@ -16,6 +16,20 @@
 
 namespace mbscope {
 
+namespace {
+
+// An answer that says the device served the request: data, or an exception about the request
+// itself. Busy (06), acknowledge (05) and the gateway's 0A/0B say it did not.
+bool served(const Transaction &t)
+{
+    if (t.status == TransactionStatus::Ok)
+        return true;
+    return t.status == TransactionStatus::Exception && t.exceptionCode != 0x05 && t.exceptionCode != 0x06
+        && t.exceptionCode != 0x0A && t.exceptionCode != 0x0B;
+}
+
+} // namespace
+
 QString TimingScanSettings::problem() const
 {
     if (url.delimited.enabled)
@@ -68,11 +82,12 @@ std::optional<TimingReport> TimingScanner::run(const TimingScanSettings &setting
     gaps(report);
     if (!m_stopRequested)
         largestRead(report);
+    // The probe channel's connection would count among the clients: the rest opens its own.
+    m_channel->closeLink();
     if (!m_stopRequested)
         pipelining(report);
     if (!m_stopRequested)
         clients(report);
-    m_channel->closeLink();
     return report;
 }
 
@@ -87,8 +102,7 @@ void TimingScanner::warmup(TimingReport &report)
         const std::optional<ProbeChannel::Answer> a = m_channel->ask(m_settings.unit, readPdu(1), qMin(m_settings.timeoutMs, 500));
         if (!a)
             return;
-        const TransactionStatus s = a->transaction.status;
-        if (s == TransactionStatus::Ok || s == TransactionStatus::Exception) {
+        if (served(a->transaction)) {
             report.firstAnswerMs = clock.elapsed();
             report.maxLatencyUs = qMax(report.maxLatencyUs, a->transaction.latencyNs() / 1000);
             return;
@@ -110,7 +124,7 @@ void TimingScanner::gaps(TimingReport &report)
             const std::optional<ProbeChannel::Answer> a = m_channel->ask(m_settings.unit, readPdu(1), m_settings.timeoutMs);
             if (!a)
                 return;
-            if (a->transaction.status == TransactionStatus::Ok || a->transaction.status == TransactionStatus::Exception) {
+            if (served(a->transaction)) {
                 ++trial.ok;
                 trial.maxLatencyUs = qMax(trial.maxLatencyUs, a->transaction.latencyNs() / 1000);
             } else {
@@ -171,7 +185,29 @@ QList<Transaction> collect(TransactionEngine &engine, const QSet<quint64> &ids, 
     return out;
 }
 
+// Opens the engine's link and waits until it is open, then settleMs more (the device's warm-up
+// and its gap: what a new connection must wait before it is answered at all).
+void openAndSettle(TransactionEngine &engine, int connectMs, qint64 settleMs)
+{
+    QEventLoop loop;
+    QObject::connect(&engine, &TransactionEngine::linkOpened, &loop, &QEventLoop::quit);
+    QObject::connect(&engine, &TransactionEngine::linkMessage, &loop, &QEventLoop::quit);
+    QTimer::singleShot(connectMs, &loop, &QEventLoop::quit);
+    engine.openLink();
+    loop.exec();
+    if (settleMs > 0) {
+        QEventLoop wait;
+        QTimer::singleShot(int(settleMs), &wait, &QEventLoop::quit);
+        wait.exec();
+    }
+}
+
 } // namespace
+
+qint64 TimingScanner::settleMs(const TimingReport &report) const
+{
+    return (report.warmupFailures > 0 ? report.firstAnswerMs : 0) + report.recommendedGapMs();
+}
 
 void TimingScanner::pipelining(TimingReport &report)
 {
@@ -183,6 +219,7 @@ void TimingScanner::pipelining(TimingReport &report)
     options.pipelineDepth = m_settings.pipelineDepth;
     options.batchIntervalMs = 1;
     engine.setTarget(m_settings.url, options);
+    openAndSettle(engine, m_settings.url.connectTimeoutMs, settleMs(report));
     QSet<quint64> ids;
     for (int i = 0; i < m_settings.pipelineDepth; ++i) {
         RequestItem item = RequestItem::forLink(AduBuilder::mbap(readPdu(1), m_settings.unit, quint16(i + 1)), m_settings.url);
@@ -192,7 +229,7 @@ void TimingScanner::pipelining(TimingReport &report)
     const QList<Transaction> done = collect(engine, ids, m_settings.timeoutMs * 2 + m_settings.url.connectTimeoutMs);
     report.pipelineSent = m_settings.pipelineDepth;
     for (const Transaction &t : done)
-        report.pipelineOk += t.status == TransactionStatus::Ok || t.status == TransactionStatus::Exception ? 1 : 0;
+        report.pipelineOk += served(t) ? 1 : 0;
 }
 
 void TimingScanner::clients(TimingReport &report)
@@ -208,12 +245,13 @@ void TimingScanner::clients(TimingReport &report)
         EngineOptions options;
         options.batchIntervalMs = 1;
         engine->setTarget(m_settings.url, options);
+        openAndSettle(*engine, m_settings.url.connectTimeoutMs, settleMs(report));
         RequestItem item = RequestItem::forLink(AduBuilder::complete(readPdu(1), AduOptions{m_settings.url.framing(), m_settings.unit, 1, 0}),
                                                 m_settings.url);
         item.timeoutMs = m_settings.timeoutMs;
         const std::optional<Transaction> t = engine->sendAndWait(item);
         report.clientsTried = k;
-        if (!t || (t->status != TransactionStatus::Ok && t->status != TransactionStatus::Exception))
+        if (!t || !served(*t))
             break;
         report.clientsServed = k;
         engines.push_back(std::move(engine));

@@ -78,6 +78,8 @@ private:
     void clients(TimingReport &report);
     void largestRead(TimingReport &report);
     [[nodiscard]] QByteArray readPdu(int quantity) const;
+    // How long a new connection waits before its first request: the warm-up seen, and the gap.
+    [[nodiscard]] qint64 settleMs(const TimingReport &report) const;
 
     ProbeChannel *m_channel;
     TimingScanSettings m_settings;

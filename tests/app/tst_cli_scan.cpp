@@ -83,6 +83,7 @@ private slots:
     void badInput();
     void mapDraftServedAgainAnswersTheSame();
     void lineSettingsFound();
+    void timingLimitsFound();
 
 private:
     QTemporaryDir m_dir;
@@ -372,6 +373,38 @@ void TestCliScan::lineSettingsFound()
     QVERIFY2(text.outText().contains(QStringLiteral("answered: 19200 8E1 (unit 1)\n")), text.out.constData());
     QVERIFY2(text.outText().contains(QStringLiteral("\n9600 8E2        1          silent")), text.out.constData());
     QVERIFY2(text.outText().contains(QStringLiteral("4 trials")), text.out.constData());
+}
+
+void TestCliScan::timingLimitsFound()
+{
+    // The simulator's device limits (docs/profiles.md, Device limits): 50 ms between requests
+    // (busy, 06, when sooner), two clients, 16 registers a read, 500 ms of warm-up per connection.
+    QFile profile(m_dir.filePath(QStringLiteral("slow.json")));
+    QVERIFY(profile.open(QIODevice::WriteOnly));
+    profile.write(R"({"name": "slow", "limits": {"minGapMs": 50, "tooSoon": "busy", "maxClients": 2,
+                      "maxQuantity": {"0x03": 16}, "warmUpMs": 500},
+                      "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})");
+    profile.close();
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), profile.fileName(), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--timing"), QStringLiteral("1"),
+                                    QStringLiteral("--clients"), QStringLiteral("4"), QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("warmup_failures")).toInt(), 1);
+    QVERIFY2(o.value(QStringLiteral("first_answer_ms")).toDouble() >= 500, r.out.constData());
+    QCOMPARE(o.value(QStringLiteral("shortest_clean_gap_ms")).toInt(), 50);
+    QCOMPARE(o.value(QStringLiteral("largest_quantity")).toInt(), 16);
+    QCOMPARE(o.value(QStringLiteral("clients_served")).toInt(), 2);
+    QCOMPARE(o.value(QStringLiteral("clients_tried")).toInt(), 3);
+    QVERIFY(o.value(QStringLiteral("pipeline_ok")).toInt() < o.value(QStringLiteral("pipeline_sent")).toInt());
+    QCOMPARE(o.value(QStringLiteral("recommended")).toObject().value(QStringLiteral("gap_ms")).toInt(), 100);
+    QCOMPARE(o.value(QStringLiteral("recommended")).toObject().value(QStringLiteral("telegraf_pause_between_requests")).toString(),
+             QStringLiteral("100ms"));
 }
 
 QTEST_GUILESS_MAIN(TestCliScan)
