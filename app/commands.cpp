@@ -10,6 +10,7 @@
 #include "readcommand.h"
 #include "replaycommand.h"
 #include "runcommand.h"
+#include "scancommand.h"
 #include "sendcommand.h"
 #include "sweepcommand.h"
 #include "watchcommand.h"
@@ -38,6 +39,7 @@ const Subcommand kSubcommands[] = {
     {"monitor", "listen to a bus another master drives, never sending: every exchange paired and measured", runMonitor},
     {"watch", "run a session's watches headless: many devices at once, CSV, Prometheus metrics, MQTT", runWatch},
     {"sweep", "poll at several intervals and print error rate and latency per interval", runSweep},
+    {"scan", "find what is on a link: unit ids that answer, a unit's register map (as a profile draft), limits", runScan},
     {"run", "run a session's test plan against a device; pass/fail per step, JUnit XML for CI", runRun},
     {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},
     {"analyze", "read a pcap, pcapng or traffic journal offline: pairs, decoded frames, statistics, histogram", runAnalyze},

@@ -74,6 +74,15 @@ read_all="01 03 00 79 00 16 15 DD"
 echo "screenshots: poll-histogram.png"
 "$bin" sweep --target "$target" --hex "$read_all" --intervals 0,10,50 --count 100 --histogram "$out/sweep.png" >/dev/null
 echo "screenshots: sweep.png"
+# Tools > Scan: the dialog after a scan of the simulated detector's ids 1-6, rendered by its GUI test.
+scan_test=$build/tests/ui/tst_scandialog
+if [[ -x $scan_test ]]; then
+    MBSCOPE_SCAN_SCREENSHOT="$out/scan.png" "$scan_test" scanListsEveryId >"$scratch/scan.out" 2>&1 \
+        || { echo "screenshots: tst_scandialog failed:" >&2; cat "$scratch/scan.out" >&2; exit 1; }
+    echo "screenshots: scan.png"
+else
+    echo "screenshots: scan.png skipped: $scan_test is not built"
+fi
 
 # The Watches tab: the simulated M221 on a free port, the example watch session pointed at it,
 # its watches started; in the light and the dark theme.

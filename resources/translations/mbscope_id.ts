@@ -81,6 +81,16 @@
         <translation>%1 tidak dibuka:
 %2</translation>
     </message>
+    <message>
+        <location filename="../../ui/discovery/scandialog.cpp" line="+39"/>
+        <source>%1 s</source>
+        <translation>%1 dtk</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 min %2 s</source>
+        <translation>%1 mnt %2 dtk</translation>
+    </message>
 </context>
 <context>
     <name>QPlatformTheme</name>
@@ -2932,6 +2942,16 @@
     </message>
     <message>
         <location line="+1"/>
+        <source>&amp;Scan for units…</source>
+        <translation>Pi&amp;ndai unit…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ask every unit id of a link the same read and list what each did</source>
+        <translation>Tanyai setiap id unit pada satu link dengan pembacaan yang sama dan tampilkan apa yang dilakukan masing-masing</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferensi…</translation>
     </message>
@@ -4876,6 +4896,270 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>Report server id (RTU, unit 1)</source>
         <translation>Laporkan ID server (RTU, unit 1)</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::ScanDialog</name>
+    <message>
+        <location filename="../../ui/discovery/scandialog.cpp" line="+15"/>
+        <location line="+1"/>
+        <source> ms</source>
+        <translation> md</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Start</source>
+        <translation>&amp;Mulai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;top</source>
+        <translation>&amp;Hentikan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Copy as watches (JSON)</source>
+        <translation>&amp;Salin sebagai pantauan (JSON)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Add as watches</source>
+        <translation>&amp;Tambahkan sebagai pantauan</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Scan for units</source>
+        <translation>Pindai unit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The link to scan. The scan opens a connection of its own; the window&apos;s connection is left alone.</source>
+        <translation>Link yang dipindai. Pemindaian membuka koneksinya sendiri; koneksi jendela tidak diganggu.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>01 Read Coils</source>
+        <translation>01 Baca Coil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>02 Read Discrete Inputs</source>
+        <translation>02 Baca Input Diskret</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>03 Read Holding Registers</source>
+        <translation>03 Baca Register Holding</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>04 Read Input Registers</source>
+        <translation>04 Baca Register Input</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Every id is asked this read: a scan never writes.</source>
+        <translation>Setiap id ditanyai pembacaan ini: pemindaian tidak pernah menulis.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>1-247 on a serial line or a serial device server; 0 and 248-255 only over Modbus TCP.</source>
+        <translation>1-247 pada jalur serial atau server perangkat serial; 0 dan 248-255 hanya lewat Modbus TCP.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How long each id may take to answer.</source>
+        <translation>Berapa lama setiap id boleh menjawab.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Quiet time between one answer (or timeout) and the next request.</source>
+        <translation>Waktu hening antara satu jawaban (atau batas waktu) dan permintaan berikutnya.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>to</source>
+        <translation>sampai</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>address</source>
+        <translation>alamat</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>quantity</source>
+        <translation>jumlah</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>gap</source>
+        <translation>jeda</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Target:</source>
+        <translation>&amp;Tujuan:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Unit ids:</source>
+        <translation>Id &amp;unit:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Read:</source>
+        <translation>&amp;Baca:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T&amp;imeout:</source>
+        <translation>Batas &amp;waktu:</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Watch definitions of the selected found units (or of every found unit) as JSON on the clipboard.</source>
+        <translation>Definisi pantauan unit terpilih yang ditemukan (atau semua unit yang ditemukan) sebagai JSON di papan klip.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add watches of the selected found units (or of every found unit) to the window&apos;s watches.</source>
+        <translation>Tambahkan pantauan unit terpilih yang ditemukan (atau semua unit yang ditemukan) ke pantauan jendela.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Asks every id the read above, one at a time, and says what each did.</source>
+        <translation>Menanyai setiap id dengan pembacaan di atas, satu per satu, dan menyebutkan apa yang dilakukan masing-masing.</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Give the link to scan, e.g. tcp://192.168.1.10:502.</source>
+        <translation>Berikan link yang akan dipindai, mis. tcp://192.168.1.10:502.</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>%1 of %2 ids asked, %3 found, about %4 left</source>
+        <translation>%1 dari %2 id ditanyai, %3 ditemukan, sekitar %4 lagi</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Scan complete</source>
+        <translation>Pemindaian selesai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stopped</source>
+        <translation>Dihentikan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time limit reached</source>
+        <translation>Batas waktu tercapai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Request limit reached</source>
+        <translation>Batas permintaan tercapai</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The link failed: %1</source>
+        <translation>Link gagal: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2 of %3 ids asked in %4, %5 found.</source>
+        <translation>%1: %2 dari %3 id ditanyai dalam %4, %5 ditemukan.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+47"/>
+        <source>%n watch definition(s) copied to the clipboard.</source>
+        <translation>
+            <numerusform>%n definisi pantauan disalin ke papan klip.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::ScanResultModel</name>
+    <message>
+        <location filename="../../ui/discovery/scanresultmodel.cpp" line="+34"/>
+        <source>answers</source>
+        <translation>menjawab</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>exception</source>
+        <translation>eksepsi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gateway: no path (0A)</source>
+        <translation>gateway: tidak ada jalur (0A)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>gateway: no answer behind it (0B)</source>
+        <translation>gateway: tak ada jawaban di belakangnya (0B)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>silent</source>
+        <translation>diam</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>answered with another id</source>
+        <translation>menjawab dengan id lain</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>garbage</source>
+        <translation>sampah</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>echo of the request</source>
+        <translation>gema permintaan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>link error</source>
+        <translation>galat link</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>exception %1: %2</source>
+        <translation>eksepsi %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the answer carried unit %1</source>
+        <translation>jawaban membawa unit %1</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>%1 ms</source>
+        <translation>%1 md</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Result</source>
+        <translation>Hasil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latency</source>
+        <translation>Latensi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Detail</source>
+        <translation>Rincian</translation>
     </message>
 </context>
 <context>

@@ -81,7 +81,7 @@ QMap<QString, int> IncludeRules::coreLayers()
         {QStringLiteral("metrics"), 0},
         {QStringLiteral("transport"), 1}, {QStringLiteral("exchange"), 2}, {QStringLiteral("traffic"), 3},
         {QStringLiteral("engine"), 4},   {QStringLiteral("capture"), 4}, {QStringLiteral("profile"), 4},
-        {QStringLiteral("watch"), 4},    {QStringLiteral("fleet"), 5},
+        {QStringLiteral("watch"), 4},    {QStringLiteral("fleet"), 5},    {QStringLiteral("discovery"), 5},
         {QStringLiteral("sim"), 5},      {QStringLiteral("session"), 5}, {QStringLiteral("monitor"), 5},
         {QStringLiteral("replay"), 6},   {QStringLiteral("service"), 6},
     };
@@ -93,6 +93,7 @@ QMap<QString, int> IncludeRules::uiTiers()
         {QStringLiteral("common"), 0},
         {QStringLiteral("link"), 1},     {QStringLiteral("compose"), 1},   {QStringLiteral("decode"), 1},
         {QStringLiteral("traffic"), 1},  {QStringLiteral("registers"), 1}, {QStringLiteral("sim"), 1},
+        {QStringLiteral("discovery"), 1},
         {QStringLiteral("analysis"), 2}, {QStringLiteral("session"), 2}, {QStringLiteral("watch"), 2},
         {QStringLiteral("shell"), 3},
     };

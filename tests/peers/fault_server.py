@@ -35,6 +35,8 @@ prints "SERVED N NAME" (N counts requests from 1) so tests can tell when a slow 
   bad-crc           the answer with its CRC inverted (rtu-tcp only)
   exception [CODE=2]  an exception response with CODE
   short             a read answer holding one register fewer than asked (byte count consistent)
+  echo              the request's own bytes sent back, whatever its unit (a 2-wire adapter that
+                    hears itself)
 
 The process exits when its standard input closes (the test that started it died) or after --lifetime
 seconds.
@@ -49,7 +51,7 @@ TABLE_SIZE = 10000  # PEER_TABLE_SIZE
 GARBAGE = bytes([0xDE, 0xAD, 0xBE, 0xEF, 0x55, 0xAA, 0x13])
 DEFAULT_PARAM = {"trickle": 20, "garbage": 7, "delay": 1500, "exception": 2}
 FAULTS = ("none", "close", "silent", "trickle", "garbage", "wrong-tid", "wrong-unit",
-          "wrong-function", "twice", "delay", "bad-crc", "exception", "short")
+          "wrong-function", "twice", "delay", "bad-crc", "exception", "short", "echo")
 
 
 def holding_register(address):
@@ -219,6 +221,10 @@ class Connection(asyncio.Protocol):
         faults = self.server.faults
         faults.served += 1
         number = faults.served
+        if faults.standing[0] == "echo" and faults.once is None:
+            self.transport.write(frame)
+            say(f"SERVED {number} echo")
+            return
         if unit != self.server.unit:
             say(f"SERVED {number} ignored-unit")  # an armed fault waits for a request it may answer
             return

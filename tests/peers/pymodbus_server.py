@@ -16,7 +16,8 @@ Network modes bind 127.0.0.1 on --port (0, the default, lets the system choose) 
 
 The data map is the one in peer_datamap.h (keep both in step): PEER_TABLE_SIZE items per table;
 coil(a) = a % 3 == 0, discrete input(a) = a % 2 == 1, holding register(a) = 1000 + 3a, input
-register(a) = 40000 + 2a. Only unit --unit (default 1) exists: pymodbus ignores requests for any other unit (no answer, on
+register(a) = 40000 + 2a. Only unit --unit (default 1; a comma-separated list gives several units,
+each with the same map) exists: pymodbus ignores requests for any other unit (no answer, on
 every framing).
 Serial modes (and rtu-tcp) with --broadcast execute unit-0 requests on the unit without answering.
 
@@ -88,7 +89,7 @@ def make_context(unit):
         ir=block(input_register),
         zero_mode=True,
     )
-    return ModbusServerContext(slaves={unit: slave}, single=False)
+    return ModbusServerContext(slaves={u: slave for u in unit}, single=False)
 
 
 def announce(where):
@@ -185,7 +186,7 @@ def main():
     parser.add_argument("--device", help="serial device or pty for rtu and ascii")
     parser.add_argument("--baud", type=int, default=115200)
     parser.add_argument("--parity", default="N", choices=["N", "E", "O"])
-    parser.add_argument("--unit", type=int, default=1)
+    parser.add_argument("--unit", type=lambda text: [int(u) for u in text.split(",")], default=[1])
     parser.add_argument("--broadcast", action="store_true", help="execute unit 0 requests silently")
     parser.add_argument("--lifetime", type=float, default=900.0, help="exit after this many seconds")
     parser.add_argument("--no-stdin-watch", action="store_true", help="keep running when stdin closes")

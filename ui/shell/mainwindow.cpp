@@ -4,6 +4,7 @@
 #include "common/appicon.h"
 #include "link/connectionbar.h"
 #include "decode/decodepanel.h"
+#include "discovery/scandialog.h"
 #include "analysis/latencyanalysis.h"
 #include "link/linkcontroller.h"
 #include "linkstatuswidget.h"
@@ -638,6 +639,10 @@ void MainWindow::createMenus()
     nextDock->setShortcut(QKeySequence(Qt::Key_F6));
 
     QMenu *tools = menuBar()->addMenu(tr("&Tools"));
+    QAction *scan = tools->addAction(tr("&Scan for units\u2026"), this, &MainWindow::showScanDialog);
+    scan->setObjectName(QStringLiteral("scanAction"));
+    scan->setToolTip(tr("Ask every unit id of a link the same read and list what each did"));
+    tools->addSeparator();
     QAction *preferences = tools->addAction(tr("&Preferences\u2026"), this, [this] {
         PreferencesDialog dialog(this);
         dialog.setRecordingSettings(m_recording->settings());
@@ -673,6 +678,28 @@ void MainWindow::showAbout()
                           "<p>Built with Qt %2 and QCustomPlot.</p>")
                            .arg(QCoreApplication::applicationVersion().toHtmlEscaped(),
                                 QString::fromLatin1(qVersion())));
+}
+
+ScanDialog *MainWindow::scanDialog()
+{
+    if (!m_scanDialog)
+        m_scanDialog = new ScanDialog(this);
+    return m_scanDialog;
+}
+
+void MainWindow::showScanDialog()
+{
+    ScanDialog *dialog = scanDialog();
+    // The window's target, when it has one: the connected link, else what the connection bar makes.
+    if (!dialog->isRunning()) {
+        if (m_controller->isConnected())
+            dialog->setTarget(m_controller->url());
+        else if (const ConnectionBar::State state = m_connectionBar->state(); state.target)
+            dialog->setTarget(*state.target);
+    }
+    dialog->show();
+    dialog->raise();
+    dialog->activateWindow();
 }
 
 } // namespace mbscope

@@ -23,6 +23,7 @@ class RecordingControl;
 class RegisterTable;
 class RequestComposer;
 class SessionController;
+class ScanDialog;
 class SessionTools;
 class SimulatorPanel;
 class TrafficMonitor;
@@ -59,6 +60,8 @@ public:
     [[nodiscard]] RequestComposer *composer() const { return m_composer; }
     [[nodiscard]] TransactionView *answerView() const { return m_answerView; }
     [[nodiscard]] LinkController *controller() const { return m_controller; }
+    // Tools > Scan (made on first use): for the workspace to take its watchesRequested().
+    [[nodiscard]] ScanDialog *scanDialog();
     [[nodiscard]] LinkStatusWidget *linkStatus() const { return m_linkStatus; }
     [[nodiscard]] NoticeBanner *banner() const { return m_banner; }
     [[nodiscard]] EmbeddedSimulator *simulator() const { return m_simulator; }
@@ -103,8 +106,10 @@ private:
     void createMenus();
     void buildWorkspace();
     void showAbout();
+    void showScanDialog();
 
     LinkController *m_controller = nullptr;
+    ScanDialog *m_scanDialog = nullptr; // Tools > Scan, made when first asked for
     EmbeddedSimulator *m_simulator = nullptr;
     ConnectionBar *m_connectionBar = nullptr;
     NoticeBanner *m_banner = nullptr;

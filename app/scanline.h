@@ -1,0 +1,13 @@
+#pragma once
+
+#include "discovery/linescanner.h"
+
+class QTextStream;
+
+namespace mbscope::app {
+
+// mbscope scan --line: the serial settings scan run, printed as a table of what was tried (runs of
+// the same result grouped) and what worked, or as JSON.
+int runLineScan(const LineScanSettings &settings, bool json, QTextStream &out, QTextStream &err);
+
+} // namespace mbscope::app

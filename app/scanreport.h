@@ -1,0 +1,30 @@
+#pragma once
+
+#include "discovery/registermap.h"
+#include "discovery/scanprogress.h"
+#include "discovery/unitprobe.h"
+#include "discovery/unitscansettings.h"
+
+#include <QtCore/QJsonObject>
+#include <QtCore/QList>
+#include <QtCore/QString>
+
+namespace mbscope::app {
+
+// What mbscope scan prints: the table of a unit scan and of a register map, and their JSON.
+class ScanReport
+{
+public:
+    [[nodiscard]] static QString unitsText(const UnitScanSettings &settings, const QList<UnitProbe> &probes,
+                                           const ScanProgress &progress, ScanEnd end, bool all);
+    [[nodiscard]] static QJsonObject unitsJson(const UnitScanSettings &settings, const QList<UnitProbe> &probes,
+                                               const ScanProgress &progress, ScanEnd end);
+    [[nodiscard]] static QString mapText(const RegisterMap &map, ScanEnd end, qint64 elapsedMs);
+    [[nodiscard]] static QJsonObject mapJson(const RegisterMap &map, ScanEnd end, qint64 elapsedMs);
+    // "1m 05s", "12.3 s", "850 ms"
+    [[nodiscard]] static QString durationText(qint64 ms);
+    // The live line: "ids 37/247  found 2  12 s, about 48 s left  (Ctrl-C stops)"
+    [[nodiscard]] static QString progressText(const QString &what, const ScanProgress &progress);
+};
+
+} // namespace mbscope::app

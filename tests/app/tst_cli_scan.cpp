@@ -1,0 +1,411 @@
+// mbscope scan as users run it (issue 18): the unit scan against the simulator behind a gateway
+// (units that answer, give 0A, answer with another id, stay silent, send a wrong CRC, refuse the
+// function, and ids nobody has: 0B), against a test peer that echoes every request, against a
+// pymodbus server with several units; Ctrl-C and --max-time end a scan with what it found; the
+// register map of the `conformance` simulator saved as a profile draft, served again by
+// `mbscope simulate --profile FILE`, maps to the same blocks with the same values.
+
+#include "clitest.h"
+
+#include <QtCore/QDir>
+#include <QtCore/QElapsedTimer>
+#include <QtCore/QFile>
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QTemporaryDir>
+#include <QtTest/QTest>
+
+using namespace mbscope::testcli;
+using mbscope::testpeers::PeerProcess;
+
+namespace {
+
+// Six units behind one rtu-tcp endpoint, each made to do one thing by a fault rule
+// (docs/profiles.md, Fault injection); ids 7 and up have no unit: the endpoint answers 0B.
+const char kGatewayProfile[] = R"({
+  "name": "scan-gateway",
+  "units": [
+    {"id": 1, "tables": {"holding": [{"address": 0, "count": 10, "values": [11, 12]}]}},
+    {"id": 2, "tables": {"holding": [{"address": 0, "count": 10}]}},
+    {"id": 3, "tables": {"holding": [{"address": 0, "count": 10}]}},
+    {"id": 4, "tables": {"holding": [{"address": 0, "count": 10}]}},
+    {"id": 5, "tables": {"holding": [{"address": 0, "count": 10}]}},
+    {"id": 6, "functions": ["0x04"], "tables": {"input": [{"address": 0, "count": 10}]}}
+  ],
+  "faults": {"rules": [
+    {"kind": "exception", "units": [2], "code": "0x0A"},
+    {"kind": "wrongUnit", "units": [3], "delta": 4},
+    {"kind": "drop", "units": [4]},
+    {"kind": "wrongChecksum", "units": [5]}
+  ]}
+})";
+
+QMap<int, QJsonObject> unitsByID(const QJsonObject &scan)
+{
+    QMap<int, QJsonObject> out;
+    for (const QJsonValue &v : scan.value(QStringLiteral("units")).toArray())
+        out.insert(v.toObject().value(QStringLiteral("unit")).toInt(), v.toObject());
+    return out;
+}
+
+// The blocks of a --map --json result: "function first-last" -> values.
+QMap<QString, QJsonArray> blocksOf(const QJsonObject &map)
+{
+    QMap<QString, QJsonArray> out;
+    for (const QJsonValue &t : map.value(QStringLiteral("tables")).toArray()) {
+        const int function = t.toObject().value(QStringLiteral("function")).toInt();
+        for (const QJsonValue &b : t.toObject().value(QStringLiteral("blocks")).toArray()) {
+            const QJsonObject o = b.toObject();
+            out.insert(QStringLiteral("%1 %2-%3").arg(function).arg(o.value(QStringLiteral("first")).toInt()).arg(o.value(QStringLiteral("last")).toInt()),
+                       o.value(QStringLiteral("values")).toArray());
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+class TestCliScan : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase();
+    void unitsBehindAGateway();
+    void tableGroupsRunsAndJsonHasEveryId();
+    void echoIsNamed_data();
+    void echoIsNamed();
+    void pymodbusSeveralUnits();
+    void watchesWritten();
+    void ctrlCStopsWithWhatWasFound();
+    void maxTimeBoundsTheScan();
+    void badInput_data();
+    void badInput();
+    void mapDraftServedAgainAnswersTheSame();
+    void lineSettingsFound();
+    void timingLimitsFound();
+
+private:
+    QTemporaryDir m_dir;
+    Background m_gateway;
+};
+
+void TestCliScan::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    QFile profile(m_dir.filePath(QStringLiteral("gateway.json")));
+    QVERIFY(profile.open(QIODevice::WriteOnly));
+    profile.write(kGatewayProfile);
+    profile.close();
+    QString error;
+    QVERIFY2(m_gateway.start({QStringLiteral("simulate"), QStringLiteral("--profile"), profile.fileName(), QStringLiteral("--listen"),
+                              QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                             &error),
+             qPrintable(error));
+}
+
+void TestCliScan::unitsBehindAGateway()
+{
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), m_gateway.url(), QStringLiteral("--units"),
+                                    QStringLiteral("1-9"), QStringLiteral("--timeout"), QStringLiteral("300ms"), QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QJsonObject scan = r.json();
+    QCOMPARE(scan.value(QStringLiteral("asked")).toInt(), 9);
+    QCOMPARE(scan.value(QStringLiteral("found")).toInt(), 2); // 1 answers, 6 refuses 03 with 01
+    QCOMPARE(scan.value(QStringLiteral("end")).toString(), QStringLiteral("completed"));
+    const QMap<int, QJsonObject> units = unitsByID(scan);
+    const auto result = [&](int unit) { return units.value(unit).value(QStringLiteral("result")).toString(); };
+    QCOMPARE(result(1), QStringLiteral("answers"));
+    QCOMPARE(units.value(1).value(QStringLiteral("response")).toString().left(11), QStringLiteral("01 03 02 00"));
+    QCOMPARE(result(2), QStringLiteral("gateway_path_unavailable"));
+    QCOMPARE(units.value(2).value(QStringLiteral("exception_code")).toInt(), 0x0A);
+    QCOMPARE(result(3), QStringLiteral("wrong_unit"));
+    QCOMPARE(units.value(3).value(QStringLiteral("answered_unit")).toInt(), 7);
+    QCOMPARE(result(4), QStringLiteral("silent"));
+    QCOMPARE(result(5), QStringLiteral("garbage"));
+    QVERIFY2(units.value(5).value(QStringLiteral("problem")).toString().contains(QStringLiteral("CRC")), r.out.constData());
+    QCOMPARE(result(6), QStringLiteral("exception"));
+    QCOMPARE(units.value(6).value(QStringLiteral("exception_code")).toInt(), 0x01);
+    for (int unit = 7; unit <= 9; ++unit) {
+        QCOMPARE(result(unit), QStringLiteral("gateway_target_failed"));
+        QCOMPARE(units.value(unit).value(QStringLiteral("exception_code")).toInt(), 0x0B);
+    }
+}
+
+void TestCliScan::tableGroupsRunsAndJsonHasEveryId()
+{
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), m_gateway.url(), QStringLiteral("--units"),
+                                    QStringLiteral("1-20"), QStringLiteral("--gap"), QStringLiteral("0")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QString text = r.outText();
+    QVERIFY2(text.contains(QRegularExpression(QStringLiteral("\\n1 +answers"))), r.out.constData());
+    QVERIFY2(text.contains(QRegularExpression(QStringLiteral("\\n7-20 +gateway_target_failed +- +\\(14 ids\\) exception 0B"))), r.out.constData());
+    QVERIFY2(text.contains(QStringLiteral("20 of 20 ids asked")), r.out.constData());
+    QVERIFY2(text.contains(QStringLiteral("found 2 device(s); completed")), r.out.constData());
+    const CliResult all = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), m_gateway.url(), QStringLiteral("--units"),
+                                      QStringLiteral("7-9"), QStringLiteral("--all")});
+    QVERIFY2(all.outText().contains(QRegularExpression(QStringLiteral("\\n8 +gateway_target_failed"))), all.out.constData());
+    QCOMPARE(all.exitCode, 1); // nothing found
+}
+
+void TestCliScan::echoIsNamed_data()
+{
+    QTest::addColumn<QString>("mode");
+    QTest::newRow("rtu-tcp") << QStringLiteral("rtu-tcp");
+    QTest::newRow("tcp") << QStringLiteral("tcp");
+}
+
+void TestCliScan::echoIsNamed()
+{
+    QFETCH(QString, mode);
+    QString why;
+    if (!mbscope::testpeers::pymodbusAvailable(&why))
+        QSKIP(qPrintable(why));
+    PeerProcess peer;
+    QVERIFY2(peer.start(mbscope::testpeers::systemPython(),
+                        {mbscope::testpeers::peersDir() + QStringLiteral("/fault_server.py"), mode, QStringLiteral("--fault"), QStringLiteral("echo")}),
+             qPrintable(peer.error()));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), QStringLiteral("%1://%2").arg(mode, peer.where()),
+                                    QStringLiteral("--units"), QStringLiteral("1-3"), QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 1, r.describe()); // an echo is nobody
+    const QMap<int, QJsonObject> units = unitsByID(r.json());
+    for (int unit = 1; unit <= 3; ++unit) {
+        QCOMPARE(units.value(unit).value(QStringLiteral("result")).toString(), QStringLiteral("echo"));
+        QCOMPARE(units.value(unit).value(QStringLiteral("response")), units.value(unit).value(QStringLiteral("request")));
+    }
+}
+
+void TestCliScan::pymodbusSeveralUnits()
+{
+    QString why;
+    if (!mbscope::testpeers::pymodbusAvailable(&why))
+        QSKIP(qPrintable(why));
+    PeerProcess peer;
+    QVERIFY2(peer.start(mbscope::testpeers::systemPython(), {mbscope::testpeers::peersDir() + QStringLiteral("/pymodbus_server.py"),
+                                                             QStringLiteral("tcp"), QStringLiteral("--unit"), QStringLiteral("3,7,12")}),
+             qPrintable(peer.error()));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), QStringLiteral("tcp://") + peer.where(),
+                                    QStringLiteral("--units"), QStringLiteral("1-15"), QStringLiteral("--timeout"), QStringLiteral("150ms"),
+                                    QStringLiteral("--gap"), QStringLiteral("0"), QStringLiteral("--function"), QStringLiteral("4"),
+                                    QStringLiteral("--address"), QStringLiteral("10"), QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QMap<int, QJsonObject> units = unitsByID(r.json());
+    QCOMPARE(units.size(), 15);
+    for (int unit = 1; unit <= 15; ++unit) {
+        const bool present = unit == 3 || unit == 7 || unit == 12;
+        QCOMPARE(units.value(unit).value(QStringLiteral("result")).toString(),
+                 present ? QStringLiteral("answers") : QStringLiteral("silent"));
+    }
+    // 04 at 10: input register 40000 + 2 x 10 (peer_datamap.h) = 0x9C54
+    QVERIFY(units.value(7).value(QStringLiteral("response")).toString().endsWith(QStringLiteral("04 02 9C 54")));
+}
+
+void TestCliScan::watchesWritten()
+{
+    const QString path = m_dir.filePath(QStringLiteral("watches.json"));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), m_gateway.url(), QStringLiteral("--units"),
+                                    QStringLiteral("1-2"), QStringLiteral("--address"), QStringLiteral("0"), QStringLiteral("--quantity"),
+                                    QStringLiteral("2"), QStringLiteral("--watches"), path});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonArray watches = QJsonDocument::fromJson(file.readAll()).array();
+    QCOMPARE(watches.size(), 1); // unit 2 answers 0A: no watch
+    const QJsonObject w = watches.first().toObject();
+    QCOMPARE(w.value(QStringLiteral("unit")).toInt(), 1);
+    QCOMPARE(w.value(QStringLiteral("function")).toInt(), 3);
+    QCOMPARE(w.value(QStringLiteral("quantity")).toInt(), 2);
+    QCOMPARE(w.value(QStringLiteral("target")).toString(), m_gateway.url());
+}
+
+void TestCliScan::ctrlCStopsWithWhatWasFound()
+{
+    QProcess scan;
+    // Ids 4-247: unit 4 is dropped, then 0B answers come fast; the timeout keeps 4 slow, the gap the rest.
+    scan.start(mbscopePath(), {QStringLiteral("scan"), QStringLiteral("--target"), m_gateway.url(), QStringLiteral("--gap"),
+                               QStringLiteral("100ms"), QStringLiteral("--json")});
+    QVERIFY(scan.waitForStarted());
+    QTest::qWait(1500);
+    ::kill(pid_t(scan.processId()), SIGINT);
+    QVERIFY(scan.waitForFinished(10000));
+    const QJsonObject o = QJsonDocument::fromJson(scan.readAllStandardOutput()).object();
+    QCOMPARE(o.value(QStringLiteral("end")).toString(), QStringLiteral("stopped"));
+    const int asked = o.value(QStringLiteral("asked")).toInt();
+    QVERIFY2(asked >= 1 && asked < 247, qPrintable(QString::number(asked)));
+    QCOMPARE(o.value(QStringLiteral("units")).toArray().size(), asked);
+    QCOMPARE(o.value(QStringLiteral("found")).toInt(), 2);
+}
+
+void TestCliScan::maxTimeBoundsTheScan()
+{
+    QString why;
+    if (!mbscope::testpeers::pymodbusAvailable(&why))
+        QSKIP(qPrintable(why));
+    PeerProcess peer; // unit 1 only: the others are silent
+    QVERIFY2(peer.start(mbscope::testpeers::systemPython(), {mbscope::testpeers::peersDir() + QStringLiteral("/pymodbus_server.py"), QStringLiteral("tcp")}),
+             qPrintable(peer.error()));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), QStringLiteral("tcp://") + peer.where(),
+                                    QStringLiteral("--timeout"), QStringLiteral("100ms"), QStringLiteral("--max-time"), QStringLiteral("700ms"),
+                                    QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("end")).toString(), QStringLiteral("time_limit"));
+    QVERIFY(o.value(QStringLiteral("asked")).toInt() < 247);
+    QVERIFY(o.value(QStringLiteral("asked")).toInt() >= 1);
+}
+
+void TestCliScan::badInput_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QString>("message");
+    QTest::newRow("no target") << QStringList{} << QStringLiteral("no --target given");
+    QTest::newRow("unit 0 on rtu") << QStringList{QStringLiteral("--units"), QStringLiteral("0-5")}
+                                   << QStringLiteral("unit 0 is the broadcast address on rtu framing");
+    QTest::newRow("ids reversed") << QStringList{QStringLiteral("--units"), QStringLiteral("9-2")}
+                                  << QStringLiteral("--units '9-2': the first is above the last");
+    QTest::newRow("id 300") << QStringList{QStringLiteral("--units"), QStringLiteral("1-300")}
+                            << QStringLiteral("--units 300 is out of range: expected 0 to 255");
+    QTest::newRow("a write") << QStringList{QStringLiteral("--function"), QStringLiteral("6")}
+                             << QStringLiteral("--function 6 is out of range: expected 1 to 4");
+    QTest::newRow("map option alone") << QStringList{QStringLiteral("--profile-out"), QStringLiteral("x.json")}
+                                      << QStringLiteral("--profile-out belongs to --map UNIT");
+    QTest::newRow("bad gap") << QStringList{QStringLiteral("--gap"), QStringLiteral("fast")} << QStringLiteral("--gap: ");
+}
+
+void TestCliScan::badInput()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QString, message);
+    QStringList args{QStringLiteral("scan")};
+    if (!arguments.isEmpty() || QTest::currentDataTag() != QLatin1String("no target"))
+        args << QStringLiteral("--target") << m_gateway.url();
+    const CliResult r = runMbscope(args + arguments);
+    QVERIFY2(r.finished && r.exitCode == 2, r.describe());
+    QVERIFY2(r.errText().contains(message), r.describe());
+    QVERIFY(r.out.isEmpty());
+}
+
+void TestCliScan::mapDraftServedAgainAnswersTheSame()
+{
+    Background original;
+    QString error;
+    QVERIFY2(original.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                             QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                            &error),
+             qPrintable(error));
+    const QString draft = m_dir.filePath(QStringLiteral("conformance-draft.json"));
+    const QStringList mapArgs{QStringLiteral("--map"), QStringLiteral("1"), QStringLiteral("--addresses"), QStringLiteral("0-599"), QStringLiteral("--json")};
+    const CliResult scanned = runMbscope(QStringList{QStringLiteral("scan"), QStringLiteral("--target"), original.url()} + mapArgs
+                                         + QStringList{QStringLiteral("--profile-out"), draft});
+    QVERIFY2(scanned.finished && scanned.exitCode == 0, scanned.describe());
+    const QJsonObject first = scanned.json();
+    const QMap<QString, QJsonArray> blocks = blocksOf(first);
+    // conformance (docs/profiles.md): tables 0-99, typed holding registers from 200, a read-only block 300-309, live inputs 500-501
+    QCOMPARE(blocks.keys(), (QStringList{QStringLiteral("1 0-99"), QStringLiteral("2 0-99"), QStringLiteral("3 0-99"), QStringLiteral("3 200-217"),
+                                         QStringLiteral("3 300-309"), QStringLiteral("4 0-99"), QStringLiteral("4 500-501")}));
+    QCOMPARE(blocks.value(QStringLiteral("3 0-99")).at(5).toInt(), 1000 + 3 * 5);
+    for (const QJsonValue &t : first.value(QStringLiteral("tables")).toArray()) {
+        const int function = t.toObject().value(QStringLiteral("function")).toInt();
+        QCOMPARE(t.toObject().value(QStringLiteral("max_quantity")).toInt(), function <= 2 ? 2000 : 125);
+        QVERIFY2(t.toObject().value(QStringLiteral("requests")).toInt() < 700, "fewer requests than addresses searched");
+    }
+    bool answers2B = false;
+    for (const QJsonValue &f : first.value(QStringLiteral("functions")).toArray()) {
+        const QJsonObject o = f.toObject();
+        if (o.value(QStringLiteral("function")).toInt() == 0x2B)
+            answers2B = o.value(QStringLiteral("answer")).toString() == QLatin1String("answers");
+        QVERIFY(o.value(QStringLiteral("function")).toInt() != 0x15 || o.value(QStringLiteral("answer")).toString() == QLatin1String("not_probed"));
+    }
+    QVERIFY(answers2B);
+    QCOMPARE(first.value(QStringLiteral("exception_status")).toInt(), 0x6D);
+
+    Background clone;
+    QVERIFY2(clone.start({QStringLiteral("simulate"), QStringLiteral("--profile"), draft, QStringLiteral("--listen"),
+                          QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                         &error),
+             qPrintable(error));
+    const CliResult again = runMbscope(QStringList{QStringLiteral("scan"), QStringLiteral("--target"), clone.url()} + mapArgs);
+    QVERIFY2(again.finished && again.exitCode == 0, again.describe());
+    const QMap<QString, QJsonArray> cloned = blocksOf(again.json());
+    QCOMPARE(cloned.keys(), blocks.keys());
+    for (auto it = blocks.cbegin(); it != blocks.cend(); ++it) {
+        if (it.key() == QLatin1String("4 500-501"))
+            continue; // live in the original (seconds, a sine): the draft keeps the values read
+        QCOMPARE(cloned.value(it.key()), it.value());
+    }
+    QCOMPARE(again.json().value(QStringLiteral("exception_status")).toInt(), 0x6D);
+}
+
+void TestCliScan::lineSettingsFound()
+{
+    // The simulator at 19200 8E1 behind tests/peers/line_harness.py, which relays only when the
+    // client's pty is set to the device's baud rate and stop bits (a pty carries no parity bit).
+    QString why;
+    if (!mbscope::testpeers::pymodbusAvailable(&why))
+        QSKIP(qPrintable(why));
+    PeerProcess line;
+    QVERIFY2(line.start(mbscope::testpeers::systemPython(), {mbscope::testpeers::peersDir() + QStringLiteral("/line_harness.py"),
+                                                             QStringLiteral("--baud"), QStringLiteral("19200"), QStringLiteral("--stop"), QStringLiteral("1")}),
+             qPrintable(line.error()));
+    const QString client = line.where().section(QLatin1Char(' '), 0, 0).section(QLatin1Char('='), 1);
+    const QString device = line.where().section(QLatin1Char(' '), 1, 1).section(QLatin1Char('='), 1);
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("arduino-rs485"), QStringLiteral("--listen"),
+                        QStringLiteral("rtu://%1?baud=19200&parity=E&stop=1").arg(device), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), QStringLiteral("rtu://") + client, QStringLiteral("--line"),
+                                    QStringLiteral("--bauds"), QStringLiteral("9600,19200,38400"), QStringLiteral("--units"), QStringLiteral("1"),
+                                    QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("tried")).toArray().size(), 3 * 3 * 2);
+    const QJsonArray working = o.value(QStringLiteral("working")).toArray();
+    QStringList settings;
+    for (const QJsonValue &w : working)
+        settings.append(w.toObject().value(QStringLiteral("setting")).toString());
+    QCOMPARE(settings, (QStringList{QStringLiteral("19200 8E1"), QStringLiteral("19200 8N1"), QStringLiteral("19200 8O1")}));
+    const CliResult text = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), QStringLiteral("rtu://") + client, QStringLiteral("--line"),
+                                       QStringLiteral("--bauds"), QStringLiteral("9600,19200"), QStringLiteral("--parities"), QStringLiteral("E"),
+                                       QStringLiteral("--stop-bits"), QStringLiteral("2,1"), QStringLiteral("--first")});
+    QVERIFY2(text.finished && text.exitCode == 0, text.describe());
+    QVERIFY2(text.outText().contains(QStringLiteral("answered: 19200 8E1 (unit 1)\n")), text.out.constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("\n9600 8E2        1          silent")), text.out.constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("4 trials")), text.out.constData());
+}
+
+void TestCliScan::timingLimitsFound()
+{
+    // The simulator's device limits (docs/profiles.md, Device limits): 50 ms between requests
+    // (busy, 06, when sooner), two clients, 16 registers a read, 500 ms of warm-up per connection.
+    QFile profile(m_dir.filePath(QStringLiteral("slow.json")));
+    QVERIFY(profile.open(QIODevice::WriteOnly));
+    profile.write(R"({"name": "slow", "limits": {"minGapMs": 50, "tooSoon": "busy", "maxClients": 2,
+                      "maxQuantity": {"0x03": 16}, "warmUpMs": 500},
+                      "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})");
+    profile.close();
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), profile.fileName(), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--timing"), QStringLiteral("1"),
+                                    QStringLiteral("--clients"), QStringLiteral("4"), QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("warmup_failures")).toInt(), 1);
+    QVERIFY2(o.value(QStringLiteral("first_answer_ms")).toDouble() >= 500, r.out.constData());
+    QCOMPARE(o.value(QStringLiteral("shortest_clean_gap_ms")).toInt(), 50);
+    QCOMPARE(o.value(QStringLiteral("largest_quantity")).toInt(), 16);
+    QCOMPARE(o.value(QStringLiteral("clients_served")).toInt(), 2);
+    QCOMPARE(o.value(QStringLiteral("clients_tried")).toInt(), 3);
+    QVERIFY(o.value(QStringLiteral("pipeline_ok")).toInt() < o.value(QStringLiteral("pipeline_sent")).toInt());
+    QCOMPARE(o.value(QStringLiteral("recommended")).toObject().value(QStringLiteral("gap_ms")).toInt(), 100);
+    QCOMPARE(o.value(QStringLiteral("recommended")).toObject().value(QStringLiteral("telegraf_pause_between_requests")).toString(),
+             QStringLiteral("100ms"));
+}
+
+QTEST_GUILESS_MAIN(TestCliScan)
+#include "tst_cli_scan.moc"

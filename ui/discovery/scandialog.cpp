@@ -1,0 +1,309 @@
+#include "scandialog.h"
+
+#include "scanresultmodel.h"
+
+#include "discovery/scanwatches.h"
+#include "discovery/unitscanner.h"
+
+#include <QtGui/QClipboard>
+#include <QtGui/QGuiApplication>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QDialogButtonBox>
+#include <QtWidgets/QFormLayout>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QHeaderView>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QProgressBar>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSpinBox>
+#include <QtWidgets/QTableView>
+#include <QtWidgets/QVBoxLayout>
+
+namespace mbscope {
+
+namespace {
+
+QSpinBox *spin(QWidget *parent, const char *name, int low, int high, int value, const QString &suffix = {})
+{
+    auto *box = new QSpinBox(parent);
+    box->setObjectName(QLatin1String(name));
+    box->setRange(low, high);
+    box->setValue(value);
+    box->setSuffix(suffix);
+    return box;
+}
+
+QString secondsText(qint64 ms)
+{
+    return ms < 60000 ? QObject::tr("%1 s").arg(QString::number(double(ms) / 1000.0, 'f', 1))
+                      : QObject::tr("%1 min %2 s").arg(ms / 60000).arg((ms / 1000) % 60);
+}
+
+} // namespace
+
+ScanDialog::ScanDialog(QWidget *parent)
+    : QDialog(parent)
+    , m_scanner(new UnitScanner(this))
+    , m_model(new ScanResultModel(this))
+    , m_target(new QLineEdit(this))
+    , m_first(spin(this, "scanFirstUnit", 0, 255, 1))
+    , m_last(spin(this, "scanLastUnit", 0, 255, 247))
+    , m_function(new QComboBox(this))
+    , m_address(spin(this, "scanAddress", 0, 65535, 0))
+    , m_quantity(spin(this, "scanQuantity", 1, 125, 1))
+    , m_timeout(spin(this, "scanTimeout", 1, 60000, 200, tr(" ms")))
+    , m_gap(spin(this, "scanGap", 0, 60000, 20, tr(" ms")))
+    , m_start(new QPushButton(tr("&Start"), this))
+    , m_stop(new QPushButton(tr("S&top"), this))
+    , m_copy(new QPushButton(tr("&Copy as watches (JSON)"), this))
+    , m_add(new QPushButton(tr("&Add as watches"), this))
+    , m_progress(new QProgressBar(this))
+    , m_status(new QLabel(this))
+    , m_table(new QTableView(this))
+{
+    setObjectName(QStringLiteral("scanDialog"));
+    setWindowTitle(tr("Scan for units"));
+    m_target->setObjectName(QStringLiteral("scanTarget"));
+    m_target->setPlaceholderText(QStringLiteral("tcp://192.168.1.10:502, rtu-tcp://host:4001, rtu:///dev/ttyUSB0?baud=9600"));
+    m_target->setToolTip(tr("The link to scan. The scan opens a connection of its own; the window's connection is left alone."));
+    m_function->setObjectName(QStringLiteral("scanFunction"));
+    m_function->addItem(tr("01 Read Coils"), 1);
+    m_function->addItem(tr("02 Read Discrete Inputs"), 2);
+    m_function->addItem(tr("03 Read Holding Registers"), 3);
+    m_function->addItem(tr("04 Read Input Registers"), 4);
+    m_function->setCurrentIndex(2);
+    m_function->setToolTip(tr("Every id is asked this read: a scan never writes."));
+    m_first->setToolTip(tr("1-247 on a serial line or a serial device server; 0 and 248-255 only over Modbus TCP."));
+    m_timeout->setToolTip(tr("How long each id may take to answer."));
+    m_gap->setToolTip(tr("Quiet time between one answer (or timeout) and the next request."));
+
+    auto *ids = new QHBoxLayout;
+    ids->addWidget(m_first);
+    ids->addWidget(new QLabel(tr("to"), this));
+    ids->addWidget(m_last);
+    ids->addStretch();
+    auto *read = new QHBoxLayout;
+    read->addWidget(m_function);
+    read->addWidget(new QLabel(tr("address"), this));
+    read->addWidget(m_address);
+    read->addWidget(new QLabel(tr("quantity"), this));
+    read->addWidget(m_quantity);
+    read->addStretch();
+    auto *timing = new QHBoxLayout;
+    timing->addWidget(m_timeout);
+    timing->addWidget(new QLabel(tr("gap"), this));
+    timing->addWidget(m_gap);
+    timing->addStretch();
+    auto *form = new QFormLayout;
+    form->addRow(tr("&Target:"), m_target);
+    // A row of several fields: the label's mnemonic goes to the first of them.
+    const auto row = [this, form](const QString &text, QWidget *buddy, QLayout *fields) {
+        auto *label = new QLabel(text, this);
+        label->setBuddy(buddy);
+        form->addRow(label, fields);
+    };
+    row(tr("&Unit ids:"), m_first, ids);
+    row(tr("&Read:"), m_function, read);
+    row(tr("T&imeout:"), m_timeout, timing);
+
+    m_start->setObjectName(QStringLiteral("scanStart"));
+    m_stop->setObjectName(QStringLiteral("scanStop"));
+    m_progress->setObjectName(QStringLiteral("scanProgress"));
+    m_status->setObjectName(QStringLiteral("scanStatus"));
+    m_status->setWordWrap(true);
+    auto *run = new QHBoxLayout;
+    run->addWidget(m_start);
+    run->addWidget(m_stop);
+    run->addWidget(m_progress, 1);
+
+    m_table->setObjectName(QStringLiteral("scanResults"));
+    m_table->setModel(m_model);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->verticalHeader()->hide();
+    m_table->setWordWrap(false);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setColumnWidth(ScanResultModel::UnitColumn, 50);
+    m_table->setColumnWidth(ScanResultModel::ResultColumn, 220);
+    m_table->setColumnWidth(ScanResultModel::LatencyColumn, 80);
+
+    m_copy->setObjectName(QStringLiteral("scanCopyWatches"));
+    m_copy->setToolTip(tr("Watch definitions of the selected found units (or of every found unit) as JSON on the clipboard."));
+    m_add->setObjectName(QStringLiteral("scanAddWatches"));
+    m_add->setToolTip(tr("Add watches of the selected found units (or of every found unit) to the window's watches."));
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    buttons->addButton(m_copy, QDialogButtonBox::ActionRole);
+    buttons->addButton(m_add, QDialogButtonBox::ActionRole);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addLayout(run);
+    layout->addWidget(m_status);
+    layout->addWidget(m_table, 1);
+    layout->addWidget(buttons);
+    resize(640, 520);
+
+    connect(m_start, &QPushButton::clicked, this, &ScanDialog::start);
+    connect(m_stop, &QPushButton::clicked, this, &ScanDialog::stop);
+    connect(m_copy, &QPushButton::clicked, this, &ScanDialog::copyWatches);
+    connect(m_add, &QPushButton::clicked, this, [this] { Q_EMIT watchesRequested(watches()); });
+    connect(buttons, &QDialogButtonBox::rejected, this, &ScanDialog::reject);
+    connect(m_scanner, &UnitScanner::probed, m_model, &ScanResultModel::append);
+    connect(m_scanner, &UnitScanner::progressChanged, this, &ScanDialog::onProgress);
+    connect(m_scanner, &UnitScanner::finished, this, &ScanDialog::onFinished);
+    connect(m_model, &QAbstractItemModel::rowsInserted, this, &ScanDialog::updateButtons);
+    connect(m_model, &QAbstractItemModel::modelReset, this, &ScanDialog::updateButtons);
+    m_status->setText(tr("Asks every id the read above, one at a time, and says what each did."));
+    updateButtons();
+}
+
+ScanDialog::~ScanDialog()
+{
+    m_scanner->stop();
+}
+
+void ScanDialog::setTarget(const LinkUrl &url)
+{
+    m_target->setText(url.toString());
+    if (url.isSerial() || url.framing() == Framing::Rtu || url.framing() == Framing::Ascii) {
+        m_first->setValue(qMax(1, m_first->value()));
+        m_last->setValue(qMin(247, m_last->value()));
+    }
+}
+
+bool ScanDialog::isRunning() const
+{
+    return m_scanner->isRunning();
+}
+
+void ScanDialog::showProblem(const QString &text)
+{
+    m_status->setText(QStringLiteral("<span style=\"color:#c0392b\">%1</span>").arg(text.toHtmlEscaped()));
+}
+
+std::optional<UnitScanSettings> ScanDialog::settings()
+{
+    const LinkUrl::Result parsed = LinkUrl::parse(m_target->text().trimmed());
+    if (!parsed.url) {
+        showProblem(m_target->text().trimmed().isEmpty() ? tr("Give the link to scan, e.g. tcp://192.168.1.10:502.")
+                                                         : parsed.error);
+        return std::nullopt;
+    }
+    UnitScanSettings s;
+    s.url = *parsed.url;
+    s.firstUnit = m_first->value();
+    s.lastUnit = m_last->value();
+    s.function = quint8(m_function->currentData().toInt());
+    s.address = quint16(m_address->value());
+    s.quantity = quint16(m_quantity->value());
+    s.timeoutMs = m_timeout->value();
+    s.gapMs = m_gap->value();
+    if (const QString problem = s.problem(); !problem.isEmpty()) {
+        showProblem(problem);
+        return std::nullopt;
+    }
+    return s;
+}
+
+void ScanDialog::start()
+{
+    if (isRunning())
+        return;
+    const std::optional<UnitScanSettings> s = settings();
+    if (!s)
+        return;
+    m_running = *s;
+    m_model->clear();
+    m_progress->setRange(0, s->idCount());
+    m_progress->setValue(0);
+    m_scanner->start(*s);
+    updateButtons();
+}
+
+void ScanDialog::stop()
+{
+    m_scanner->stop();
+}
+
+void ScanDialog::reject()
+{
+    m_scanner->stop();
+    QDialog::reject();
+}
+
+void ScanDialog::onProgress(const ScanProgress &p)
+{
+    m_progress->setValue(p.done);
+    if (!isRunning())
+        return;
+    m_status->setText(tr("%1 of %2 ids asked, %3 found, about %4 left")
+                          .arg(p.done)
+                          .arg(p.total)
+                          .arg(p.found)
+                          .arg(secondsText(p.remainingMs)));
+}
+
+void ScanDialog::onFinished(ScanEnd end)
+{
+    const ScanProgress p = m_scanner->progress();
+    QString how;
+    switch (end) {
+    case ScanEnd::Completed: how = tr("Scan complete"); break;
+    case ScanEnd::Stopped: how = tr("Stopped"); break;
+    case ScanEnd::TimeLimit: how = tr("Time limit reached"); break;
+    case ScanEnd::RequestLimit: how = tr("Request limit reached"); break;
+    case ScanEnd::LinkError:
+        how = tr("The link failed: %1").arg(m_scanner->results().isEmpty() ? QString() : m_scanner->results().constLast().problem);
+        break;
+    }
+    m_status->setText(tr("%1: %2 of %3 ids asked in %4, %5 found.")
+                          .arg(how)
+                          .arg(p.done)
+                          .arg(p.total)
+                          .arg(secondsText(p.elapsedMs))
+                          .arg(p.found));
+    updateButtons();
+    Q_EMIT scanFinished(end);
+}
+
+void ScanDialog::updateButtons()
+{
+    const bool running = isRunning();
+    m_start->setEnabled(!running);
+    m_stop->setEnabled(running);
+    bool found = false;
+    for (const UnitProbe &p : m_model->probes())
+        found = found || p.kind == UnitProbeKind::Answers;
+    m_copy->setEnabled(found);
+    m_add->setEnabled(found);
+    for (QWidget *w : {static_cast<QWidget *>(m_target), static_cast<QWidget *>(m_first), static_cast<QWidget *>(m_last),
+                       static_cast<QWidget *>(m_function), static_cast<QWidget *>(m_address), static_cast<QWidget *>(m_quantity),
+                       static_cast<QWidget *>(m_timeout), static_cast<QWidget *>(m_gap)})
+        w->setEnabled(!running);
+}
+
+QList<WatchDefinition> ScanDialog::watches() const
+{
+    QList<int> rows;
+    for (const QModelIndex &index : m_table->selectionModel()->selectedRows())
+        rows.append(index.row());
+    std::sort(rows.begin(), rows.end());
+    QList<WatchDefinition> out;
+    const QList<UnitProbe> &probes = m_model->probes();
+    if (rows.isEmpty()) {
+        for (int i = 0; i < probes.size(); ++i)
+            rows.append(i);
+    }
+    for (const int row : std::as_const(rows))
+        out += ScanWatches::fromProbe(m_running, probes.at(row));
+    return out;
+}
+
+void ScanDialog::copyWatches()
+{
+    const QList<WatchDefinition> list = watches();
+    QGuiApplication::clipboard()->setText(QString::fromUtf8(ScanWatches::toJson(list)));
+    m_status->setText(tr("%n watch definition(s) copied to the clipboard.", nullptr, int(list.size())));
+}
+
+} // namespace mbscope

@@ -1,0 +1,83 @@
+#pragma once
+
+#include "discovery/scanprogress.h"
+#include "discovery/unitscansettings.h"
+
+#include "watch/watchdefinition.h"
+
+#include <QtCore/QList>
+#include <QtWidgets/QDialog>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTableView;
+
+namespace mbscope {
+
+class ScanResultModel;
+class UnitScanner;
+
+// Tools > Scan: asks every unit id of a range the same harmless read (core/discovery's
+// UnitScanner, with an engine of its own: the window's connection is left alone) and lists what
+// each did, with a progress bar, the time left and Stop. Found units become watches: "Copy as
+// watches (JSON)" puts them on the clipboard, and watchesRequested() hands them to whoever shows
+// watches (the window's workspace).
+class ScanDialog : public QDialog
+{
+    Q_OBJECT
+public:
+    explicit ScanDialog(QWidget *parent = nullptr);
+    ~ScanDialog() override;
+
+    // The link to scan (the window's current target); the text field can change it.
+    void setTarget(const LinkUrl &url);
+    // The settings the fields make; nullopt, with the reason shown, when they make none.
+    [[nodiscard]] std::optional<UnitScanSettings> settings();
+    [[nodiscard]] bool isRunning() const;
+    [[nodiscard]] ScanResultModel *model() const { return m_model; }
+    // Watches of the selected found units, or of every found unit when none is selected.
+    [[nodiscard]] QList<WatchDefinition> watches() const;
+
+public Q_SLOTS:
+    void start();
+    void stop();
+    void copyWatches();
+
+Q_SIGNALS:
+    void watchesRequested(const QList<mbscope::WatchDefinition> &watches);
+    void scanFinished(mbscope::ScanEnd end);
+
+protected:
+    void reject() override;
+
+private:
+    void onProgress(const ScanProgress &progress);
+    void onFinished(ScanEnd end);
+    void updateButtons();
+    void showProblem(const QString &text);
+
+    UnitScanner *m_scanner;
+    ScanResultModel *m_model;
+    QLineEdit *m_target;
+    QSpinBox *m_first;
+    QSpinBox *m_last;
+    QComboBox *m_function;
+    QSpinBox *m_address;
+    QSpinBox *m_quantity;
+    QSpinBox *m_timeout;
+    QSpinBox *m_gap;
+    QPushButton *m_start;
+    QPushButton *m_stop;
+    QPushButton *m_copy;
+    QPushButton *m_add;
+    QProgressBar *m_progress;
+    QLabel *m_status;
+    QTableView *m_table;
+    UnitScanSettings m_running;
+};
+
+} // namespace mbscope
