@@ -2801,7 +2801,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+85"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+92"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -2851,7 +2851,7 @@
         <translation>Bilah koneksi tidak menyebut target: %1</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+121"/>
         <source>%1 dock (F6: the next one)</source>
         <translation>Dok %1 (F6: dok berikutnya)</translation>
     </message>
@@ -2984,6 +2984,13 @@
         <location line="+1"/>
         <source>&lt;h3&gt;mbscope %1&lt;/h3&gt;&lt;p&gt;A bench for testing and analysing Modbus devices: send exactly the bytes you mean, see every field of the answer explained, measure how the device behaves.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or (at your option) any later version (GPL-3.0-or-later). This program comes with ABSOLUTELY NO WARRANTY.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QCustomPlot.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;mbscope %1&lt;/h3&gt;&lt;p&gt;Meja uji untuk menguji dan menganalisis perangkat Modbus: kirim persis byte yang Anda maksud, lihat setiap field jawaban dijelaskan, ukur bagaimana perangkat berperilaku.&lt;/p&gt;&lt;p&gt;Dilisensikan di bawah GNU General Public License, versi 3 atau (sesuai pilihan Anda) versi yang lebih baru (GPL-3.0-or-later). Program ini datang TANPA JAMINAN APA PUN.&lt;/p&gt;&lt;p&gt;Dibuat dengan Qt %2 dan QCustomPlot.&lt;/p&gt;</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+30"/>
+        <source>%n watch(es) added from the scan: Workspace &gt; Start all (F5) polls them.</source>
+        <translation>
+            <numerusform>%n pantauan ditambahkan dari pindaian: Daftar pantau &gt; Mulai semua (F5) membacanya.</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5230,7 +5237,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>baris %1, kolom %2: %3</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+76"/>
         <source>(untitled)</source>
         <translation>(tanpa judul)</translation>
     </message>

@@ -682,8 +682,27 @@ void MainWindow::showAbout()
 
 ScanDialog *MainWindow::scanDialog()
 {
-    if (!m_scanDialog)
+    if (!m_scanDialog) {
         m_scanDialog = new ScanDialog(this);
+        // "Add as watches": the units found become watch windows of the workspace, each name
+        // made unique in the session ("unit 3" again becomes "unit 3 (2)").
+        connect(m_scanDialog, &ScanDialog::watchesRequested, this, [this](const QList<WatchDefinition> &found) {
+            QStringList taken;
+            for (const WatchDefinition &w : m_workspace->watches().watches)
+                taken.append(w.name);
+            for (WatchDefinition watch : found) {
+                const QString base = watch.name;
+                for (int n = 2; taken.contains(watch.name); ++n)
+                    watch.name = QStringLiteral("%1 (%2)").arg(base).arg(n);
+                taken.append(watch.name);
+                m_workspace->addWatch(watch);
+            }
+            m_tabs->setCurrentWidget(m_workspace);
+            statusBar()->showMessage(tr("%n watch(es) added from the scan: Workspace > Start all (F5) polls them.", nullptr,
+                                        int(found.size())),
+                                     10000);
+        });
+    }
     return m_scanDialog;
 }
 

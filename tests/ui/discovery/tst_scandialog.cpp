@@ -6,6 +6,8 @@
 #include "discovery/scandialog.h"
 #include "discovery/scanresultmodel.h"
 #include "shell/mainwindow.h"
+#include <QtWidgets/QStatusBar>
+#include "watch/watchworkspace.h"
 #include "sim/embeddedsimulator.h"
 #include "link/connectionbar.h"
 
@@ -143,6 +145,27 @@ void TestScanDialog::toolsMenuOpensIt()
     QCOMPARE(settings->url.port, m_url.port);
     QCOMPARE(settings->url.kind, m_url.kind);
     QCOMPARE(settings->lastUnit, 247);
+
+    // "Add as watches" puts the units found in the workspace, twice under names of their own.
+    QSignalSpy finished(dialog, &ScanDialog::scanFinished);
+    dialog->findChild<QSpinBox *>(QStringLiteral("scanLastUnit"))->setValue(5);
+    dialog->findChild<QSpinBox *>(QStringLiteral("scanAddress"))->setValue(0x79);
+    dialog->findChild<QSpinBox *>(QStringLiteral("scanQuantity"))->setValue(4);
+    dialog->start();
+    QVERIFY(finished.wait(20000));
+    QVERIFY(dialog->model()->rowCount() > 0);
+    const int found = int(dialog->watches().size());
+    QVERIFY(found >= 1);
+    auto *add = dialog->findChild<QPushButton *>(QStringLiteral("scanAddWatches"));
+    QTest::mouseClick(add, Qt::LeftButton);
+    QTest::mouseClick(add, Qt::LeftButton);
+    QCOMPARE(window.watchWorkspace()->count(), 2 * found);
+    QStringList names;
+    for (const WatchDefinition &w : window.watchWorkspace()->watches().watches)
+        names.append(w.name);
+    names.removeDuplicates();
+    QCOMPARE(int(names.size()), 2 * found);
+    QVERIFY(window.statusBar()->currentMessage().contains(QLatin1String("from the scan")));
     dialog->close();
 }
 
