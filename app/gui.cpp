@@ -173,7 +173,7 @@ int runGui(QApplication &app)
                                        QStringLiteral("Show the tab NAME of the main area (answer, decode, watches) at start."),
                                        QStringLiteral("NAME"));
     const QCommandLineOption startWatchesOption(QStringLiteral("start-watches"),
-                                                QStringLiteral("Start the session's watches at start (Watches > Start all); "
+                                                QStringLiteral("Start the session's watches at start (Workspace > Start all); "
                                                                "with --screenshot, render a few seconds later."));
     parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption, beforeSendOption, dockOption, pollOption,
                        langOption, themeOption, tabOption, startWatchesOption});
