@@ -7015,8 +7015,8 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>&amp;Target:</source>
-        <translation>&amp;Target:</translation>
+        <source>Tar&amp;get:</source>
+        <translation>Tar&amp;get:</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -7056,22 +7056,22 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+18"/>
         <source>Add &amp;rule</source>
-        <translation>Tambah at&amp;uran</translation>
+        <translation>Tam&amp;bah aturan</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Remove ru&amp;le</source>
-        <translation>Hapus atu&amp;ran</translation>
+        <translation>Hapu&amp;s aturan</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Poin&amp;ts</source>
-        <translation>Ti&amp;tik</translation>
+        <translation>Titi&amp;k</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rule&amp;s</source>
-        <translation>Atura&amp;n</translation>
+        <translation>Atu&amp;ran</translation>
     </message>
     <message>
         <location line="+52"/>

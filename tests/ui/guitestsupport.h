@@ -8,6 +8,14 @@
 #include <QtCore/QStandardPaths>
 #include <QtGui/QPixmap>
 #include <QtWidgets/QWidget>
+#include <QtGui/QAction>
+#include <QtWidgets/QTabBar>
+#include <QtWidgets/QMenuBar>
+#include <QtWidgets/QMainWindow>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QGroupBox>
+#include <QtWidgets/QAbstractButton>
+#include <QtCore/QMultiMap>
 #include <QtTest/QTest>
 
 namespace mbscope::guitest {
@@ -44,6 +52,68 @@ inline bool saveShot(QWidget *widget, const QString &fileName)
     const bool ok = widget->grab().save(path, "PNG");
     qInfo("screenshot: %s", qPrintable(path));
     return ok;
+}
+
+// The letter after a single '&' (an accelerator), or a null QChar.
+inline QChar mnemonic(const QString &text)
+{
+    for (qsizetype i = 0; i + 1 < text.size(); ++i) {
+        if (text.at(i) != QLatin1Char('&'))
+            continue;
+        if (text.at(i + 1) == QLatin1Char('&')) {
+            ++i;
+            continue;
+        }
+        return text.at(i + 1).toLower();
+    }
+    return {};
+}
+
+// Every accelerator the shown window answers to with Alt: the menu bar's titles, and the visible
+// buttons, labels with buddies, group boxes and tabs. Each maps to where it is, for the message.
+inline QMultiMap<QChar, QString> visibleMnemonics(QWidget *window)
+{
+    QMultiMap<QChar, QString> found;
+    auto add = [&found](const QString &text, const QString &where) {
+        const QChar letter = mnemonic(text);
+        if (!letter.isNull())
+            found.insert(letter, QStringLiteral("%1 \"%2\"").arg(where, text));
+    };
+    if (auto *main = qobject_cast<QMainWindow *>(window)) {
+        for (QAction *action : main->menuBar()->actions())
+            add(action->text(), QStringLiteral("menu"));
+    }
+    for (QWidget *w : window->findChildren<QWidget *>()) {
+        if (!w->isVisible() || w->window() != window)
+            continue;
+        if (auto *button = qobject_cast<QAbstractButton *>(w))
+            add(button->text(), QStringLiteral("button"));
+        else if (auto *label = qobject_cast<QLabel *>(w); label && label->buddy())
+            add(label->text(), QStringLiteral("label"));
+        else if (auto *box = qobject_cast<QGroupBox *>(w); box && box->isCheckable())
+            add(box->title(), QStringLiteral("group"));
+        else if (auto *tabs = qobject_cast<QTabBar *>(w)) {
+            for (int i = 0; i < tabs->count(); ++i) {
+                if (tabs->isTabVisible(i) && tabs->isTabEnabled(i))
+                    add(tabs->tabText(i), QStringLiteral("tab"));
+            }
+        }
+    }
+    return found;
+}
+
+
+// The letters more than one visible control of window answers to, with who owns them.
+inline QStringList mnemonicClashes(QWidget *window)
+{
+    const QMultiMap<QChar, QString> found = visibleMnemonics(window);
+    QStringList clashes;
+    for (const QChar letter : found.uniqueKeys()) {
+        const QStringList owners = found.values(letter);
+        if (owners.size() > 1)
+            clashes << QStringLiteral("Alt+%1: %2").arg(letter.toUpper(), owners.join(QLatin1String(", ")));
+    }
+    return clashes;
 }
 
 } // namespace mbscope::guitest

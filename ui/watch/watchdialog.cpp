@@ -77,7 +77,7 @@ WatchDialog::WatchDialog(QWidget *parent)
 
     auto *form = new QFormLayout;
     form->addRow(tr("&Name:"), m_name);
-    form->addRow(tr("&Target:"), m_target);
+    form->addRow(tr("Tar&get:"), m_target);
     form->addRow(tr("&Unit:"), m_unit);
     form->addRow(tr("&Function:"), m_function);
     auto *addressLabel = new QLabel(tr("&Address:"), this);

@@ -148,57 +148,6 @@ void TestDailyUse::resavedExampleIsWhatWasLoaded()
     QCOMPARE(names(after), names(before));
 }
 
-namespace {
-
-// The letter after a single '&' (an accelerator), or a null QChar.
-QChar mnemonic(const QString &text)
-{
-    for (qsizetype i = 0; i + 1 < text.size(); ++i) {
-        if (text.at(i) != QLatin1Char('&'))
-            continue;
-        if (text.at(i + 1) == QLatin1Char('&')) {
-            ++i;
-            continue;
-        }
-        return text.at(i + 1).toLower();
-    }
-    return {};
-}
-
-// Every accelerator the shown window answers to with Alt: the menu bar's titles, and the visible
-// buttons, labels with buddies, group boxes and tabs. Each maps to where it is, for the message.
-QMultiMap<QChar, QString> visibleMnemonics(QWidget *window)
-{
-    QMultiMap<QChar, QString> found;
-    auto add = [&found](const QString &text, const QString &where) {
-        const QChar letter = mnemonic(text);
-        if (!letter.isNull())
-            found.insert(letter, QStringLiteral("%1 \"%2\"").arg(where, text));
-    };
-    if (auto *main = qobject_cast<QMainWindow *>(window)) {
-        for (QAction *action : main->menuBar()->actions())
-            add(action->text(), QStringLiteral("menu"));
-    }
-    for (QWidget *w : window->findChildren<QWidget *>()) {
-        if (!w->isVisible() || w->window() != window)
-            continue;
-        if (auto *button = qobject_cast<QAbstractButton *>(w))
-            add(button->text(), QStringLiteral("button"));
-        else if (auto *label = qobject_cast<QLabel *>(w); label && label->buddy())
-            add(label->text(), QStringLiteral("label"));
-        else if (auto *box = qobject_cast<QGroupBox *>(w); box && box->isCheckable())
-            add(box->title(), QStringLiteral("group"));
-        else if (auto *tabs = qobject_cast<QTabBar *>(w)) {
-            for (int i = 0; i < tabs->count(); ++i) {
-                if (tabs->isTabVisible(i) && tabs->isTabEnabled(i))
-                    add(tabs->tabText(i), QStringLiteral("tab"));
-            }
-        }
-    }
-    return found;
-}
-
-} // namespace
 
 void TestDailyUse::mnemonicsAreUnique_data()
 {
@@ -218,7 +167,7 @@ void TestDailyUse::mnemonicsAreUnique()
         QVERIFY(window.startWithSimulator(kAnyPort));
         window.show();
         QVERIFY(QTest::qWaitForWindowExposed(&window));
-        const QMultiMap<QChar, QString> found = visibleMnemonics(&window);
+        const QMultiMap<QChar, QString> found = guitest::visibleMnemonics(&window);
         QStringList clashes;
         for (const QChar letter : found.uniqueKeys()) {
             const QStringList owners = found.values(letter);

@@ -6,8 +6,11 @@
 #include "compose/addressfield.h"
 
 #include "guitestsupport.h"
+#include "shell/translationloader.h"
 
+#include <QtWidgets/QApplication>
 #include <QtWidgets/QCheckBox>
+#include <QtWidgets/QTabWidget>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QLineEdit>
@@ -66,6 +69,8 @@ private Q_SLOTS:
     void namesEveryProblem();
     void okIsRefusedWhileSomethingIsWrong();
     void enronHalvesTheQuantityLimit();
+    void accessKeysAreUnique_data();
+    void accessKeysAreUnique();
 };
 
 void TestWatchDialog::readsBackWhatWasSet()
@@ -123,6 +128,35 @@ void TestWatchDialog::enronHalvesTheQuantityLimit()
     dialog.functionBox()->setCurrentIndex(dialog.functionBox()->findData(1));
     QVERIFY(!dialog.enronBox()->isEnabled());
     QCOMPARE(dialog.quantitySpin()->maximum(), 2000);
+}
+
+void TestWatchDialog::accessKeysAreUnique_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::newRow("English") << QStringLiteral("en");
+    QTest::newRow("Indonesian") << QStringLiteral("id");
+}
+
+// Each Alt+letter of the dialog reaches one control, in both languages, on both tabs ("&Target"
+// and "Poin&ts" both took T; in Indonesian T, U and N were each taken twice or three times).
+void TestWatchDialog::accessKeysAreUnique()
+{
+    QFETCH(QString, language);
+    TranslationLoader::install(*qApp, TranslationLoader::localeFor(*TranslationLoader::parse(language)));
+    {
+        WatchDialog dialog;
+        dialog.setWatch(sample());
+        dialog.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+        auto *tabs = dialog.findChild<QTabWidget *>();
+        QVERIFY(tabs);
+        for (int i = 0; i < tabs->count(); ++i) {
+            tabs->setCurrentIndex(i);
+            const QStringList clashes = guitest::mnemonicClashes(&dialog);
+            QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
+        }
+    }
+    TranslationLoader::install(*qApp, TranslationLoader::localeFor(TranslationLoader::Choice::English));
 }
 
 QTEST_MAIN(TestWatchDialog)
