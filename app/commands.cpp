@@ -53,7 +53,14 @@ void printUsage(QTextStream &out)
         << "Without a subcommand mbscope opens its window.\n\nSubcommands:\n";
     for (const Subcommand &s : kSubcommands)
         out << "  " << QString::fromLatin1(s.name).leftJustified(10) << s.summary << '\n';
-    out << "\nRun 'mbscope SUBCOMMAND --help' for a subcommand's options.\n";
+    out << "\nWindow options (without a subcommand; the man page says more):\n"
+        << "  --session FILE   open a session document       --lang CODE    id, en or system\n"
+        << "  --theme NAME     light, dark or system          --tab NAME     answer, decode or watches\n"
+        << "  --dock NAME      show a dock at start           --start-watches  start the session's watches\n"
+        << "  --no-simulator   start without the built-in simulator\n"
+        << "  --screenshot FILE [--size WxH] [--screenshot-before-send] [--screenshot-poll COUNT]\n"
+        << "                   render the window to a PNG and quit\n"
+        << "\nRun 'mbscope SUBCOMMAND --help' for a subcommand's options.\n";
 }
 
 } // namespace
@@ -85,7 +92,7 @@ int runHeadless(const QStringList &arguments)
         out << "mbscope " << MBSCOPE_VERSION << '\n';
         return ExitOk;
     }
-    if (first.isEmpty() || first == QLatin1String("--help") || first == QLatin1String("-h") || first == QLatin1String("help")) {
+    if (first.isEmpty() || first == QLatin1String("--help") || first == QLatin1String("--help-all") || first == QLatin1String("-h") || first == QLatin1String("help")) {
         printUsage(out);
         return first.isEmpty() && !hasGui() ? ExitUsage : ExitOk;
     }

@@ -17,7 +17,8 @@ int main(int argc, char *argv[])
     const char *first = argc > 1 ? argv[1] : nullptr;
     const bool subcommand = first && first[0] != '-' && mbscope::app::isSubcommand(first);
     const bool wantsHelp = first && (std::strcmp(first, "--help") == 0 || std::strcmp(first, "-h") == 0
-                                     || std::strcmp(first, "--version") == 0 || std::strcmp(first, "help") == 0);
+                                     || std::strcmp(first, "--help-all") == 0 || std::strcmp(first, "--version") == 0
+                                     || std::strcmp(first, "help") == 0);
 #ifdef MBSCOPE_HAVE_UI
     // poll and sweep draw --histogram with QCustomPlot, a widget: they need a QApplication, on
     // the offscreen platform so that no display is needed (or used) to write a PNG.

@@ -5,6 +5,7 @@
 #include <QtCore/QFileInfo>
 #include <QtCore/QSysInfo>
 #include <QtCore/QThread>
+#include <QtCore/QTimer>
 
 #include <mosquitto.h>
 
@@ -101,20 +102,55 @@ bool MqttClient::start(const MqttSettings &settings, const QString &statusTopic,
             }
         }
     }
-    // connect_async fails at once only when the host cannot be resolved or the socket not made;
-    // a refused connection is retried by the network thread like any later loss.
-    rc = mosquitto_connect_async(m_mosq, settings.host.toUtf8().constData(), settings.port, settings.keepAliveSeconds);
+    // A broker that is not there yet (refused, unreachable) makes connect_async fail at once, and
+    // libmosquitto's network thread then never tries again: the first connection is retried here,
+    // with the same backoff as a later loss (1 s doubling to 30 s), each failure said.
+    m_host = settings.host.toUtf8();
+    m_port = settings.port;
+    m_keepAlive = settings.keepAliveSeconds;
+    rc = mosquitto_connect_async(m_mosq, m_host.constData(), m_port, m_keepAlive);
     if (rc != MOSQ_ERR_SUCCESS && rc != MOSQ_ERR_ERRNO) {
         *error = QStringLiteral("MQTT broker %1: %2").arg(settings.displayUrl(), errorText(rc));
         return false;
     }
-    rc = mosquitto_loop_start(m_mosq);
+    m_running = true;
+    if (rc == MOSQ_ERR_ERRNO) {
+        // Said after start() returns, so that the caller's "connecting" line comes first.
+        const QString reason = QString::fromLocal8Bit(strerror(errno));
+        QTimer::singleShot(0, this, [this, reason] { scheduleFirstConnect(reason); });
+        return true;
+    }
+    return startLoop(error);
+}
+
+bool MqttClient::startLoop(QString *error)
+{
+    const int rc = mosquitto_loop_start(m_mosq);
     if (rc != MOSQ_ERR_SUCCESS) {
-        *error = QStringLiteral("cannot start the MQTT network thread: %1").arg(errorText(rc));
+        if (error)
+            *error = QStringLiteral("cannot start the MQTT network thread: %1").arg(errorText(rc));
         return false;
     }
-    m_running = true;
+    m_looping = true;
     return true;
+}
+
+void MqttClient::scheduleFirstConnect(const QString &reason)
+{
+    Q_EMIT unreachable(reason, m_retryMs);
+    QTimer::singleShot(m_retryMs, this, [this] {
+        if (!m_mosq || !m_running)
+            return;
+        const int rc = mosquitto_connect_async(m_mosq, m_host.constData(), m_port, m_keepAlive);
+        if (rc == MOSQ_ERR_SUCCESS) {
+            QString error;
+            if (!startLoop(&error))
+                Q_EMIT connectionLost(error);
+            return;
+        }
+        m_retryMs = qMin(m_retryMs * 2, kMaxRetryMs);
+        scheduleFirstConnect(rc == MOSQ_ERR_ERRNO ? QString::fromLocal8Bit(strerror(errno)) : errorText(rc));
+    });
 }
 
 bool MqttClient::publish(const QString &topic, const QByteArray &payload, int qos, bool retain)
@@ -149,8 +185,9 @@ void MqttClient::stop(int timeoutMs)
     }
     // A DISCONNECT tells the broker to drop the will: the "offline" above said goodbye already.
     mosquitto_disconnect(m_mosq);
-    if (m_running)
+    if (m_looping)
         mosquitto_loop_stop(m_mosq, false);
+    m_looping = false;
     m_running = false;
     mosquitto_destroy(m_mosq);
     m_mosq = nullptr;

@@ -47,6 +47,8 @@ Q_SIGNALS:
     void connectionLost(const QString &reason);
     // The broker answered the connect with a refusal (bad user or password, not authorised).
     void refused(const QString &reason);
+    // The first connection failed (no broker listening yet, host unreachable); tried again in retryMs.
+    void unreachable(const QString &reason, int retryMs);
     void messageReceived(const QString &topic, const QByteArray &payload);
 
 private:
@@ -55,8 +57,17 @@ private:
     static void onPublish(mosquitto *mosq, void *self, int mid);
     static void onMessage(mosquitto *mosq, void *self, const mosquitto_message *message);
 
+    bool startLoop(QString *error);
+    void scheduleFirstConnect(const QString &reason);
+
+    static constexpr int kMaxRetryMs = 30000;
     mosquitto *m_mosq = nullptr;
     bool m_running = false;
+    bool m_looping = false; // libmosquitto's network thread runs
+    QByteArray m_host;
+    int m_port = 1883;
+    int m_keepAlive = 60;
+    int m_retryMs = 1000;
     QByteArray m_statusTopic;
     QList<QByteArray> m_subscriptions;
     std::atomic<bool> m_connected{false};

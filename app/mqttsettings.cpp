@@ -27,7 +27,7 @@ std::optional<MqttSettings> MqttSettings::fromUrl(const QString &text, QString *
         return std::nullopt;
     }
     if (!url.userInfo().isEmpty()) {
-        *error = QStringLiteral("'%1': no user or password in the URL (a command line is visible to every user): "
+        *error = QStringLiteral("'%1': the URL carries a user or password (shown removed here); refused, since a command line is visible to every user: "
                                 "put them in a file named by --mqtt-credentials, or in MBSCOPE_MQTT_USERNAME and MBSCOPE_MQTT_PASSWORD")
                      .arg(url.toString(QUrl::RemoveUserInfo));
         return std::nullopt;

@@ -27,6 +27,11 @@ WatchMqtt::WatchMqtt(WatchRunner &runner, ServiceLog &log, Options options, QObj
     connect(&m_client, &MqttClient::connectionLost, this, [this](const QString &reason) {
         m_log.warning(QStringLiteral("MQTT: connection to %1 lost (%2); reconnecting").arg(m_options.settings.displayUrl(), reason));
     });
+    connect(&m_client, &MqttClient::unreachable, this, [this](const QString &reason, int retryMs) {
+        m_log.warning(QStringLiteral("MQTT: cannot reach %1 (%2); trying again in %3 s")
+                          .arg(m_options.settings.displayUrl(), reason)
+                          .arg(retryMs / 1000.0));
+    });
     connect(&m_client, &MqttClient::refused, this, [this](const QString &reason) {
         m_log.error(QStringLiteral("MQTT: %1 refused the connection: %2").arg(m_options.settings.displayUrl(), reason));
     });

@@ -315,11 +315,11 @@ bool Prometheus::waitFor(const QString &promql, const std::function<bool(double)
     return false;
 }
 
-bool Mosquitto::start(QString *error)
+bool Mosquitto::start(QString *error, quint16 port)
 {
     if (!haveProgram(QStringLiteral("mosquitto"), QStringLiteral("mosquitto"), error))
         return false;
-    m_port = closedPort();
+    m_port = port != 0 ? port : closedPort();
     QFile config(m_dir.filePath(QStringLiteral("mosquitto.conf")));
     if (!config.open(QIODevice::WriteOnly))
         return false;

@@ -100,7 +100,8 @@ class Mosquitto
 {
 public:
     ~Mosquitto() { stop(); }
-    bool start(QString *error);
+    // On port, or on a free one when 0.
+    bool start(QString *error, quint16 port = 0);
     void stop() { m_child.stop(); }
     [[nodiscard]] quint16 port() const { return m_port; }
     [[nodiscard]] QString url(const QString &prefix) const;

@@ -46,6 +46,8 @@ private slots:
     void readOverSerialPty();
     void help_data();
     void help();
+    void topLevelHelp_data();
+    void topLevelHelp();
 };
 
 QString TestCliExchange::target(const QString &mode, QString *error)
@@ -479,6 +481,25 @@ void TestCliExchange::help()
     QVERIFY2(r.exitCode == 0, r.describe());
     QVERIFY2(r.outText().startsWith(QStringLiteral("Usage: mbscope %1 [options]\n").arg(command)), r.describe());
     for (const char *expected : {"--target <url>", "--timeout <duration>", "--json", "Exit status: 0"})
+        QVERIFY2(r.outText().contains(QLatin1String(expected)), r.describe());
+}
+
+void TestCliExchange::topLevelHelp_data()
+{
+    QTest::addColumn<QString>("option");
+    QTest::newRow("--help") << QStringLiteral("--help");
+    QTest::newRow("--help-all") << QStringLiteral("--help-all"); // opened the window, and hung offscreen
+    QTest::newRow("-h") << QStringLiteral("-h");
+}
+
+// The top-level help lists the subcommands and the window's own options, and never opens the window.
+void TestCliExchange::topLevelHelp()
+{
+    QFETCH(QString, option);
+    const CliResult r = runMbscope({option});
+    QVERIFY2(r.exitCode == 0, r.describe());
+    QVERIFY2(r.outText().startsWith(QLatin1String("Usage: mbscope [SUBCOMMAND] [OPTIONS]")), r.describe());
+    for (const char *expected : {"  watch ", "  scan ", "--theme NAME", "--tab NAME", "--start-watches", "--screenshot FILE"})
         QVERIFY2(r.outText().contains(QLatin1String(expected)), r.describe());
 }
 

@@ -15,6 +15,8 @@
 #include <QtCore/QProcess>
 #include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QStandardPaths>
+#include <QtCore/QFileInfo>
 #include <QtTest/QtTest>
 
 #include <csignal>
@@ -73,6 +75,7 @@ private Q_SLOTS:
     void metricsEndpoint();
     void prometheusScrapesAndSeesTheOutage();
     void mqttMessagesStatusAndLastWill();
+    void mqttBrokerThatComesLater();
     void mqttWritesRefusedWithoutTheOption();
     void mqttWritesReachTheSimulator();
     void hangupReloadsTermStopsCleanly();
@@ -265,6 +268,26 @@ void TestCliWatchService::mqttMessagesStatusAndLastWill()
     QVERIFY2(after.start(broker.port(), QStringLiteral("svc/lab/status"), &error), qPrintable(error));
     const std::optional<Subscriber::Message> will = after.waitFor(QStringLiteral("svc/lab/status"), "offline", 10000);
     QVERIFY(will && will->retained);
+}
+
+// A broker that is not there when watch starts: watch says so and tries again until it is, then
+// publishes (libmosquitto's own thread never retries a first connection that failed).
+void TestCliWatchService::mqttBrokerThatComesLater()
+{
+    if (QStandardPaths::findExecutable(QStringLiteral("mosquitto")).isEmpty()
+        && !QFileInfo::exists(QStringLiteral("/usr/sbin/mosquitto")))
+        QSKIP("mosquitto is not installed (scripts/install-deps.sh --tests installs it)");
+    const quint16 port = closedPort();
+    ChildProcess watch;
+    QVERIFY(startWatch(watch, {QStringLiteral("--mqtt"), QStringLiteral("mqtt://127.0.0.1:%1/later").arg(port)}));
+    QVERIFY2(watch.waitForOutput("cannot reach", 10000), watch.output().constData());
+    Mosquitto broker;
+    QString error;
+    QVERIFY2(broker.start(&error, port), qPrintable(error));
+    Subscriber status;
+    QVERIFY2(status.start(port, QStringLiteral("later/status"), &error), qPrintable(error));
+    QVERIFY2(status.waitFor(QStringLiteral("later/status"), "online", 20000), watch.output().constData());
+    QVERIFY2(watch.waitForOutput("MQTT: connected to", 10000), watch.output().constData());
 }
 
 void TestCliWatchService::mqttWritesRefusedWithoutTheOption()
