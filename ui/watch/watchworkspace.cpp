@@ -1,5 +1,7 @@
 #include "watchworkspace.h"
 
+#include <QtCore/QTimer>
+
 #include "watchdialog.h"
 #include "watchlogcontrol.h"
 #include "watchprofiledialog.h"
@@ -282,6 +284,22 @@ void WatchWorkspace::setWatches(const SessionWatches &watches)
     m_watches = watches;
     m_log->setSettings(watches.log.value_or(WatchLogSettings()));
     rebuildWindows();
+    // A session opens with its first watch in front (the MDI area left the last one added there);
+    // a hidden area does not take the choice, so it is made again when the area is shown.
+    if (count() > 0) {
+        setCurrentIndex(0);
+        m_frontWhenShown = isVisible() ? -1 : 0;
+    }
+}
+
+void WatchWorkspace::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    if (m_frontWhenShown >= 0) {
+        const int index = m_frontWhenShown;
+        m_frontWhenShown = -1;
+        QTimer::singleShot(0, this, [this, index] { setCurrentIndex(index); });
+    }
 }
 
 void WatchWorkspace::watchesEdited()

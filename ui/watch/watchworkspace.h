@@ -107,8 +107,10 @@ Q_SIGNALS:
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
 
 private:
+    int m_frontWhenShown = -1; // the watch to bring in front once the area is shown (a hidden one ignores it)
     void createActions();
     void rebuildWindows();
     QMdiSubWindow *addWindow(int index);

@@ -275,6 +275,10 @@ void TestWorkspace::threeDevicesPolledAtOnce()
     QVERIFY(reopened.session()->open(path));
     QCOMPARE(reopened.watchWorkspace()->count(), int(saved.watches.size()));
     QCOMPARE(reopened.watchWorkspace()->watches().watches, saved.watches);
+    reopened.viewTabs()->setCurrentWidget(reopened.watchWorkspace());
+    reopened.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&reopened));
+    QTRY_COMPARE(reopened.watchWorkspace()->currentIndex(), 0); // the first watch in front, not the last
     QVERIFY(!reopened.session()->isModified());
     reopened.watchWorkspace()->moveWatch(0, 1);
     QVERIFY(reopened.session()->isModified());
