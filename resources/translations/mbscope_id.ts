@@ -81,16 +81,6 @@
         <translation>%1 tidak dibuka:
 %2</translation>
     </message>
-    <message>
-        <location filename="../../ui/discovery/scandialog.cpp" line="+39"/>
-        <source>%1 s</source>
-        <translation>%1 dtk</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>%1 min %2 s</source>
-        <translation>%1 mnt %2 dtk</translation>
-    </message>
 </context>
 <context>
     <name>QPlatformTheme</name>
@@ -226,6 +216,19 @@
         <location line="+1"/>
         <source>Select All</source>
         <translation>Pilih Semua</translation>
+    </message>
+</context>
+<context>
+    <name>ScanForm</name>
+    <message>
+        <location filename="../../ui/discovery/scanform.cpp" line="+19"/>
+        <source>%1 s</source>
+        <translation>%1 dtk</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 min %2 s</source>
+        <translation>%1 mnt %2 dtk</translation>
     </message>
 </context>
 <context>
@@ -2994,6 +2997,346 @@
     </message>
 </context>
 <context>
+    <name>mbscope::MapResultTree</name>
+    <message>
+        <location filename="../../ui/discovery/mapresulttree.cpp" line="+39"/>
+        <source>answers</source>
+        <translation>menjawab</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>exception 01: not supported</source>
+        <translation>eksepsi 01: tidak didukung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>exception %1: known, refused</source>
+        <translation>eksepsi %1: dikenal, ditolak</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>silent</source>
+        <translation>diam</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not asked</source>
+        <translation>tidak ditanyakan</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Table or function</source>
+        <translation>Tabel atau fungsi</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Found</source>
+        <translation>Ditemukan</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Detail</source>
+        <translation>Rincian</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>01 Coils</source>
+        <translation>01 Coil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>02 Discrete inputs</source>
+        <translation>02 Input diskret</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>03 Holding registers</source>
+        <translation>03 Register holding</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>04 Input registers</source>
+        <translation>04 Register input</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+21"/>
+        <source>addresses %1-%2 searched, %n request(s)</source>
+        <translation>
+            <numerusform>alamat %1–%2 dicari, %n permintaan</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not answered (exception 01 or silence)</source>
+        <translation>tidak dijawab (eksepsi 01 atau diam)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no address answered</source>
+        <translation>tidak ada alamat yang menjawab</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n block(s)</source>
+        <translation>
+            <numerusform>%n blok</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, largest read %1</source>
+        <translation>, baca terbesar %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1-%2 (0x%3-0x%4)</source>
+        <translation>%1–%2 (0x%3–0x%4)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n address(es)</source>
+        <translation>
+            <numerusform>%n alamat</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Optional functions</source>
+        <translation>Fungsi opsional</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 of %2 known</source>
+        <translation>%1 dari %2 dikenal</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Exception status (07)</source>
+        <translation>Status eksepsi (07)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Server id (11)</source>
+        <translation>Id server (11)</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::MapScanDialog</name>
+    <message>
+        <location filename="../../ui/discovery/mapscandialog.cpp" line="+36"/>
+        <source>&amp;Optional functions (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)</source>
+        <translation>Fungsi &amp;opsional (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source> ms</source>
+        <translation> md</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Start</source>
+        <translation>&amp;Mulai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sto&amp;p</source>
+        <translation>&amp;Hentikan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save profile &amp;draft…</source>
+        <translation>Simpan &amp;draf profil…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Add as watches</source>
+        <translation>&amp;Tambahkan sebagai pantauan</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Map a unit&apos;s registers</source>
+        <translation>Petakan register sebuah unit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The link of the unit. The scan opens a connection of its own.</source>
+        <translation>Link unit tersebut. Pemindaian membuka sambungannya sendiri.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Between blocks, ask one address in this many: 1 finds every address, 16 every block of 16 addresses or more in about a sixteenth of the requests. A block found is mapped whole.</source>
+        <translation>Di antara blok, tanyakan satu alamat dari sekian: 1 menemukan setiap alamat, 16 menemukan setiap blok 16 alamat atau lebih dengan sekitar seperenam belas permintaan. Blok yang ditemukan dipetakan utuh.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The scan stops after this many requests.</source>
+        <translation>Pemindaian berhenti setelah permintaan sebanyak ini.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>to</source>
+        <translation>sampai</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>step</source>
+        <translation>langkah</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>0&amp;1 Coils</source>
+        <translation>0&amp;1 Coil</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>0&amp;2 Discrete inputs</source>
+        <translation>0&amp;2 Input diskret</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>0&amp;3 Holding</source>
+        <translation>0&amp;3 Holding (register)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>0&amp;4 Input</source>
+        <translation>0&amp;4 Input (register)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>gap</source>
+        <translation>jeda</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>at most</source>
+        <translation>paling banyak</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>requests</source>
+        <translation>permintaan</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Target:</source>
+        <translation>Tu&amp;juan:</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Unit:</source>
+        <translation>&amp;Unit:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Add&amp;resses:</source>
+        <translation>&amp;Alamat:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Tables:</source>
+        <translation>Tabel:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>T&amp;imeout:</source>
+        <translation>Batas &amp;waktu:</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Save the map as a device profile that mbscope simulate --profile serves: the unit cloned into the simulator, to test against without the hardware.</source>
+        <translation>Simpan peta sebagai profil perangkat yang dilayani mbscope simulate --profile: unit itu dikloning ke simulator, untuk diuji tanpa perangkat kerasnya.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Add a watch per block found to the window&apos;s watches.</source>
+        <translation>Tambahkan satu pantauan per blok yang ditemukan ke pantauan jendela.</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Reads every table&apos;s addresses (exception 02 says an address is missing). Never writes.</source>
+        <translation>Membaca alamat setiap tabel (eksepsi 02 berarti alamat itu tidak ada). Tidak pernah menulis.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Give the link of the unit, e.g. tcp://192.168.1.10:502.</source>
+        <translation>Berikan link unit tersebut, mis. tcp://192.168.1.10:502.</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Choose a table or the optional functions: there is nothing to scan.</source>
+        <translation>Pilih sebuah tabel atau fungsi opsional: tidak ada yang bisa dipindai.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Mapping unit %1…</source>
+        <translation>Memetakan unit %1…</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Map complete</source>
+        <translation>Peta selesai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stopped</source>
+        <translation>Dihentikan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Time limit reached</source>
+        <translation>Batas waktu tercapai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Request limit reached</source>
+        <translation>Batas permintaan tercapai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The link failed</source>
+        <translation>Link gagal</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The link failed: %1 cannot be reached.</source>
+        <translation>Link gagal: %1 tidak dapat dijangkau.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>%1: %n address(es) found in %2 requests.</source>
+        <translation>
+            <numerusform>%1: %n alamat ditemukan dalam %2 permintaan.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 of %2 addresses searched, about %3 left</source>
+        <translation>%1 dari %2 alamat dicari, sekitar %3 lagi</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Cannot save %1: %2</source>
+        <translation>Tidak dapat menyimpan %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Saved %1: mbscope simulate --profile %1 serves this unit.</source>
+        <translation>Tersimpan %1: mbscope simulate --profile %1 melayani unit ini.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Save profile draft</source>
+        <translation>Simpan draf profil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device profiles (*.json)</source>
+        <translation>Profil perangkat (*.json)</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::NoticeBanner</name>
     <message>
         <location filename="../../ui/common/noticebanner.cpp" line="+29"/>
@@ -4908,7 +5251,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/scandialog.cpp" line="+15"/>
+        <location filename="../../ui/discovery/scandialog.cpp" line="+37"/>
         <location line="+1"/>
         <source> ms</source>
         <translation> md</translation>
@@ -4920,7 +5263,7 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>S&amp;top</source>
+        <source>Sto&amp;p</source>
         <translation>&amp;Hentikan</translation>
     </message>
     <message>
@@ -4932,6 +5275,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>&amp;Add as watches</source>
         <translation>&amp;Tambahkan sebagai pantauan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Map unit…</source>
+        <translation>&amp;Petakan unit…</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -5006,7 +5354,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <source>&amp;Target:</source>
-        <translation>&amp;Tujuan:</translation>
+        <translation>Tu&amp;juan:</translation>
     </message>
     <message>
         <location line="+7"/>
@@ -5032,6 +5380,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+2"/>
         <source>Add watches of the selected found units (or of every found unit) to the window&apos;s watches.</source>
         <translation>Tambahkan pantauan unit terpilih yang ditemukan (atau semua unit yang ditemukan) ke pantauan jendela.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Find which addresses the selected unit has, the largest read it takes and its optional functions; save the map as a profile the simulator serves.</source>
+        <translation>Temukan alamat yang dimiliki unit terpilih, baca terbesar yang diterimanya, dan fungsi opsionalnya; simpan peta sebagai profil yang dilayani simulator.</translation>
     </message>
     <message>
         <location line="+23"/>
@@ -5079,7 +5432,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1: %2 dari %3 id ditanyai dalam %4, %5 ditemukan.</translation>
     </message>
     <message numerus="yes">
-        <location line="+47"/>
+        <location line="+76"/>
         <source>%n watch definition(s) copied to the clipboard.</source>
         <translation>
             <numerusform>%n definisi pantauan disalin ke papan klip.</numerusform>
@@ -7602,7 +7955,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchWorkspace</name>
     <message>
-        <location filename="../../ui/watch/watchworkspace.cpp" line="+65"/>
+        <location filename="../../ui/watch/watchworkspace.cpp" line="+67"/>
         <source>No watches yet. A watch polls a block of a device at its own interval and shows its values with names, units and rule colours. Make one with Workspace → New watch (%1), from the composer&apos;s read request (%2) or from a device profile (%3); Start all (%4) polls them together.</source>
         <translation>Belum ada pantauan. Sebuah pantauan mem-polling satu blok perangkat pada intervalnya sendiri dan menampilkan nilainya dengan nama, unit, dan warna aturan. Buat dengan Daftar pantau → Pantauan baru (%1), dari permintaan baca penyusun (%2) atau dari profil perangkat (%3); Mulai semua (%4) mem-polling semuanya bersama.</translation>
     </message>
@@ -7719,7 +8072,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1, unit %2, setiap %3 ms</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+120"/>
         <source>watch</source>
         <translation>pantauan</translation>
     </message>

@@ -1,6 +1,8 @@
 #include "scandialog.h"
 
+#include "mapscandialog.h"
 #include "scanresultmodel.h"
+#include "scanform.h"
 
 #include "discovery/scanwatches.h"
 #include "discovery/unitscanner.h"
@@ -22,42 +24,23 @@
 
 namespace mbscope {
 
-namespace {
-
-QSpinBox *spin(QWidget *parent, const char *name, int low, int high, int value, const QString &suffix = {})
-{
-    auto *box = new QSpinBox(parent);
-    box->setObjectName(QLatin1String(name));
-    box->setRange(low, high);
-    box->setValue(value);
-    box->setSuffix(suffix);
-    return box;
-}
-
-QString secondsText(qint64 ms)
-{
-    return ms < 60000 ? QObject::tr("%1 s").arg(QString::number(double(ms) / 1000.0, 'f', 1))
-                      : QObject::tr("%1 min %2 s").arg(ms / 60000).arg((ms / 1000) % 60);
-}
-
-} // namespace
-
 ScanDialog::ScanDialog(QWidget *parent)
     : QDialog(parent)
     , m_scanner(new UnitScanner(this))
     , m_model(new ScanResultModel(this))
     , m_target(new QLineEdit(this))
-    , m_first(spin(this, "scanFirstUnit", 0, 255, 1))
-    , m_last(spin(this, "scanLastUnit", 0, 255, 247))
+    , m_first(ScanForm::spinBox(this, "scanFirstUnit", 0, 255, 1))
+    , m_last(ScanForm::spinBox(this, "scanLastUnit", 0, 255, 247))
     , m_function(new QComboBox(this))
-    , m_address(spin(this, "scanAddress", 0, 65535, 0))
-    , m_quantity(spin(this, "scanQuantity", 1, 125, 1))
-    , m_timeout(spin(this, "scanTimeout", 1, 60000, 200, tr(" ms")))
-    , m_gap(spin(this, "scanGap", 0, 60000, 20, tr(" ms")))
+    , m_address(ScanForm::spinBox(this, "scanAddress", 0, 65535, 0))
+    , m_quantity(ScanForm::spinBox(this, "scanQuantity", 1, 125, 1))
+    , m_timeout(ScanForm::spinBox(this, "scanTimeout", 1, 60000, 200, tr(" ms")))
+    , m_gap(ScanForm::spinBox(this, "scanGap", 0, 60000, 20, tr(" ms")))
     , m_start(new QPushButton(tr("&Start"), this))
-    , m_stop(new QPushButton(tr("S&top"), this))
+    , m_stop(new QPushButton(tr("Sto&p"), this))
     , m_copy(new QPushButton(tr("&Copy as watches (JSON)"), this))
     , m_add(new QPushButton(tr("&Add as watches"), this))
+    , m_map(new QPushButton(tr("&Map unit\u2026"), this))
     , m_progress(new QProgressBar(this))
     , m_status(new QLabel(this))
     , m_table(new QTableView(this))
@@ -134,6 +117,10 @@ ScanDialog::ScanDialog(QWidget *parent)
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     buttons->addButton(m_copy, QDialogButtonBox::ActionRole);
     buttons->addButton(m_add, QDialogButtonBox::ActionRole);
+    m_map->setObjectName(QStringLiteral("scanMapUnit"));
+    m_map->setToolTip(tr("Find which addresses the selected unit has, the largest read it takes and its optional functions; "
+                         "save the map as a profile the simulator serves."));
+    buttons->addButton(m_map, QDialogButtonBox::ActionRole);
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -147,6 +134,7 @@ ScanDialog::ScanDialog(QWidget *parent)
     connect(m_stop, &QPushButton::clicked, this, &ScanDialog::stop);
     connect(m_copy, &QPushButton::clicked, this, &ScanDialog::copyWatches);
     connect(m_add, &QPushButton::clicked, this, [this] { Q_EMIT watchesRequested(watches()); });
+    connect(m_map, &QPushButton::clicked, this, &ScanDialog::mapSelectedUnit);
     connect(buttons, &QDialogButtonBox::rejected, this, &ScanDialog::reject);
     connect(m_scanner, &UnitScanner::probed, m_model, &ScanResultModel::append);
     connect(m_scanner, &UnitScanner::progressChanged, this, &ScanDialog::onProgress);
@@ -240,7 +228,7 @@ void ScanDialog::onProgress(const ScanProgress &p)
                           .arg(p.done)
                           .arg(p.total)
                           .arg(p.found)
-                          .arg(secondsText(p.remainingMs)));
+                          .arg(ScanForm::duration(p.remainingMs)));
 }
 
 void ScanDialog::onFinished(ScanEnd end)
@@ -260,7 +248,7 @@ void ScanDialog::onFinished(ScanEnd end)
                           .arg(how)
                           .arg(p.done)
                           .arg(p.total)
-                          .arg(secondsText(p.elapsedMs))
+                          .arg(ScanForm::duration(p.elapsedMs))
                           .arg(p.found));
     updateButtons();
     Q_EMIT scanFinished(end);
@@ -276,6 +264,7 @@ void ScanDialog::updateButtons()
         found = found || p.kind == UnitProbeKind::Answers;
     m_copy->setEnabled(found);
     m_add->setEnabled(found);
+    m_map->setEnabled(found && !running);
     for (QWidget *w : {static_cast<QWidget *>(m_target), static_cast<QWidget *>(m_first), static_cast<QWidget *>(m_last),
                        static_cast<QWidget *>(m_function), static_cast<QWidget *>(m_address), static_cast<QWidget *>(m_quantity),
                        static_cast<QWidget *>(m_timeout), static_cast<QWidget *>(m_gap)})
@@ -297,6 +286,34 @@ QList<WatchDefinition> ScanDialog::watches() const
     for (const int row : std::as_const(rows))
         out += ScanWatches::fromProbe(m_running, probes.at(row));
     return out;
+}
+
+MapScanDialog *ScanDialog::mapSelectedUnit()
+{
+    const QList<UnitProbe> &probes = m_model->probes();
+    int row = -1;
+    for (const QModelIndex &index : m_table->selectionModel()->selectedRows()) {
+        if (probes.at(index.row()).kind == UnitProbeKind::Answers) {
+            row = index.row();
+            break;
+        }
+    }
+    for (int i = 0; row < 0 && i < probes.size(); ++i) {
+        if (probes.at(i).kind == UnitProbeKind::Answers)
+            row = i;
+    }
+    if (row < 0)
+        return nullptr;
+    if (!m_mapDialog) {
+        m_mapDialog = new MapScanDialog(this);
+        connect(m_mapDialog, &MapScanDialog::watchesRequested, this, &ScanDialog::watchesRequested);
+    }
+    if (!m_mapDialog->isRunning())
+        m_mapDialog->setTarget(m_running.url, quint8(probes.at(row).unit));
+    m_mapDialog->show();
+    m_mapDialog->raise();
+    m_mapDialog->activateWindow();
+    return m_mapDialog;
 }
 
 void ScanDialog::copyWatches()

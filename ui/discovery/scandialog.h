@@ -18,6 +18,7 @@ class QTableView;
 
 namespace mbscope {
 
+class MapScanDialog;
 class ScanResultModel;
 class UnitScanner;
 
@@ -46,6 +47,8 @@ public Q_SLOTS:
     void start();
     void stop();
     void copyWatches();
+    // Opens Map a unit's registers on the selected found unit (the first found without a selection).
+    MapScanDialog *mapSelectedUnit();
 
 Q_SIGNALS:
     void watchesRequested(const QList<mbscope::WatchDefinition> &watches);
@@ -74,6 +77,8 @@ private:
     QPushButton *m_stop;
     QPushButton *m_copy;
     QPushButton *m_add;
+    QPushButton *m_map;
+    MapScanDialog *m_mapDialog = nullptr;
     QProgressBar *m_progress;
     QLabel *m_status;
     QTableView *m_table;

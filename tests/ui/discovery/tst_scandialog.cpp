@@ -1,11 +1,18 @@
 // Tools > Scan (ScanDialog) offscreen against the embedded simulator (rosrao-gamma: units 1 and 3
 // behind an rtu-tcp device server, 0B for the rest): the list fills as ids are asked, the progress
 // bar follows, Stop ends a scan, found units become watches (clipboard JSON and
-// watchesRequested()), and the window's Tools menu opens the dialog on its current target.
+// watchesRequested()), and the window's Tools menu opens the dialog on its current target. "Map
+// unit" maps a found unit's registers, and the map saved as a profile draft is served by a second
+// simulator that maps the same.
 
+#include "discovery/mapresulttree.h"
+#include "discovery/mapscandialog.h"
 #include "discovery/scandialog.h"
 #include "discovery/scanresultmodel.h"
+#include "profile/profileloader.h"
+#include "guitestsupport.h"
 #include "shell/mainwindow.h"
+#include "shell/translationloader.h"
 #include <QtWidgets/QStatusBar>
 #include "watch/watchworkspace.h"
 #include "sim/embeddedsimulator.h"
@@ -16,10 +23,14 @@
 #include <QtCore/QJsonObject>
 #include <QtGui/QAction>
 #include <QtGui/QClipboard>
+#include <QtCore/QTemporaryDir>
 #include <QtTest/QAbstractItemModelTester>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
 #include <QtWidgets/QApplication>
+#include <QtWidgets/QCheckBox>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
 #include <QtWidgets/QProgressBar>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
@@ -37,6 +48,9 @@ private slots:
     void stopEndsTheScan();
     void badTargetIsSaid();
     void toolsMenuOpensIt();
+    void mapUnitClonesIt();
+    void accessKeysAreUnique_data();
+    void accessKeysAreUnique();
 
 private:
     EmbeddedSimulator m_sim;
@@ -167,6 +181,121 @@ void TestScanDialog::toolsMenuOpensIt()
     QCOMPARE(int(names.size()), 2 * found);
     QVERIFY(window.statusBar()->currentMessage().contains(QLatin1String("from the scan")));
     dialog->close();
+}
+
+// Maps unit 1's holding registers 100-160 through the dialog's fields and Start button.
+static RegisterMap mapThroughDialog(MapScanDialog *map)
+{
+    map->findChild<QSpinBox *>(QStringLiteral("mapFirstAddress"))->setValue(100);
+    map->findChild<QSpinBox *>(QStringLiteral("mapLastAddress"))->setValue(160);
+    for (const int table : {1, 2, 4})
+        map->findChild<QCheckBox *>(QStringLiteral("mapTable%1").arg(table))->setChecked(false);
+    map->findChild<QCheckBox *>(QStringLiteral("mapOptional"))->setChecked(false);
+    QSignalSpy finished(map, &MapScanDialog::scanFinished);
+    // The scan runs to its end inside the click (local event loops keep the dialog live).
+    QTest::mouseClick(map->findChild<QPushButton *>(QStringLiteral("mapStart")), Qt::LeftButton);
+    if (finished.isEmpty() && !finished.wait(30000))
+        return {};
+    return map->map().value_or(RegisterMap{});
+}
+
+void TestScanDialog::mapUnitClonesIt()
+{
+    ScanDialog dialog;
+    dialog.setTarget(m_url);
+    dialog.findChild<QSpinBox *>(QStringLiteral("scanLastUnit"))->setValue(3);
+    dialog.findChild<QSpinBox *>(QStringLiteral("scanAddress"))->setValue(0x79);
+    auto *mapButton = dialog.findChild<QPushButton *>(QStringLiteral("scanMapUnit"));
+    QVERIFY(!mapButton->isEnabled()); // nothing found yet
+    QSignalSpy finished(&dialog, &ScanDialog::scanFinished);
+    dialog.show();
+    dialog.start();
+    QVERIFY(finished.wait(20000));
+    QVERIFY(mapButton->isEnabled());
+    dialog.findChild<QTableView *>(QStringLiteral("scanResults"))->selectRow(2); // unit 3
+    QTest::mouseClick(mapButton, Qt::LeftButton);
+    auto *map = dialog.findChild<MapScanDialog *>();
+    QVERIFY(map && map->isVisible());
+    QCOMPARE(map->settings()->unit, quint8(3));
+    QCOMPARE(map->settings()->url.port, m_url.port);
+    QVERIFY(!map->findChild<QPushButton *>(QStringLiteral("mapSaveDraft"))->isEnabled());
+
+    const RegisterMap found = mapThroughDialog(map);
+    QCOMPARE(found.unit, quint8(3));
+    const TableMap *holding = found.table(3);
+    QVERIFY(holding);
+    QCOMPARE(holding->blocks.size(), 1);
+    QCOMPARE(int(holding->blocks.first().address), 0x79);
+    QCOMPARE(holding->blocks.first().last(), 0x8E); // settings, gate counts and results
+    QCOMPARE(holding->blocks.first().values.first(), quint16(1050));
+    auto *tree = map->findChild<MapResultTree *>();
+    QCOMPARE(tree->topLevelItemCount(), 1);
+    QCOMPARE(tree->topLevelItem(0)->childCount(), 1);
+    QVERIFY(tree->topLevelItem(0)->child(0)->text(MapResultTree::ItemColumn).startsWith(QLatin1String("121-142")));
+    QVERIFY(map->findChild<QLabel *>(QStringLiteral("mapStatus"))->text().contains(QLatin1String("22")));
+
+    // A watch per block, through the scan dialog to whoever shows watches.
+    QSignalSpy requested(&dialog, &ScanDialog::watchesRequested);
+    QTest::mouseClick(map->findChild<QPushButton *>(QStringLiteral("mapAddWatches")), Qt::LeftButton);
+    QCOMPARE(requested.size(), 1);
+    const QList<WatchDefinition> watches = requested.first().first().value<QList<WatchDefinition>>();
+    QCOMPARE(watches.size(), 1);
+    QCOMPARE(watches.first().unit, quint8(3));
+    QCOMPARE(watches.first().address, quint16(0x79));
+    QCOMPARE(watches.first().quantity, quint16(22));
+
+    // The draft is a profile: loaded, served, and mapped the same.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("clone.json"));
+    QVERIFY(map->saveDraft(path));
+    const ProfileLoadResult loaded = ProfileLoader::loadFile(path);
+    QVERIFY2(loaded.ok, qPrintable(loaded.errorText()));
+    EmbeddedSimulator clone;
+    const EmbeddedSimulator::Started started = clone.start(path, QStringLiteral("tcp://127.0.0.1:0"));
+    QVERIFY2(started.ok, qPrintable(started.error));
+    map->setTarget(started.url, 3);
+    const RegisterMap again = mapThroughDialog(map);
+    QVERIFY(again.table(3));
+    QCOMPARE(again.table(3)->blocks.size(), 1);
+    QCOMPARE(int(again.table(3)->blocks.first().address), 0x79);
+    QCOMPARE(again.table(3)->blocks.first().last(), 0x8E);
+    QCOMPARE(again.table(3)->blocks.first().values.first(), quint16(1050));
+
+    if (const QString shot = qEnvironmentVariable("MBSCOPE_MAP_SCREENSHOT"); !shot.isEmpty())
+        map->grab().save(shot);
+
+    // A bad field is said, and nothing runs.
+    map->findChild<QLineEdit *>(QStringLiteral("mapTarget"))->setText(QStringLiteral("nowhere"));
+    QVERIFY(!map->settings());
+    QVERIFY(map->findChild<QLabel *>(QStringLiteral("mapStatus"))->text().contains(QLatin1String("scheme")));
+}
+
+void TestScanDialog::accessKeysAreUnique_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::newRow("English") << QStringLiteral("en");
+    QTest::newRow("Indonesian") << QStringLiteral("id");
+}
+
+// Each Alt+letter of both scan dialogs reaches one control, in both languages (in Indonesian
+// "&Tujuan" and "&Tambahkan sebagai pantauan" both took T).
+void TestScanDialog::accessKeysAreUnique()
+{
+    QFETCH(QString, language);
+    TranslationLoader::install(*qApp, TranslationLoader::localeFor(*TranslationLoader::parse(language)));
+    {
+        ScanDialog scan;
+        scan.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&scan));
+        QStringList clashes = guitest::mnemonicClashes(&scan);
+        QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
+        MapScanDialog map;
+        map.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&map));
+        clashes = guitest::mnemonicClashes(&map);
+        QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
+    }
+    TranslationLoader::install(*qApp, TranslationLoader::localeFor(TranslationLoader::Choice::English));
 }
 
 QTEST_MAIN(TestScanDialog)

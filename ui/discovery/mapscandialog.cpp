@@ -1,0 +1,293 @@
+#include "mapscandialog.h"
+
+#include "mapresulttree.h"
+#include "scanform.h"
+
+#include "discovery/mapscanner.h"
+#include "discovery/profiledraft.h"
+#include "discovery/scanwatches.h"
+
+#include <QtCore/QDir>
+#include <QtCore/QFileInfo>
+#include <QtCore/QSaveFile>
+#include <QtWidgets/QCheckBox>
+#include <QtWidgets/QDialogButtonBox>
+#include <QtWidgets/QFileDialog>
+#include <QtWidgets/QFormLayout>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QProgressBar>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSpinBox>
+#include <QtWidgets/QVBoxLayout>
+
+namespace mbscope {
+
+MapScanDialog::MapScanDialog(QWidget *parent)
+    : QDialog(parent)
+    , m_scanner(new MapScanner(this))
+    , m_tree(new MapResultTree(this))
+    , m_target(new QLineEdit(this))
+    , m_unit(ScanForm::spinBox(this, "mapUnit", 0, 255, 1))
+    , m_first(ScanForm::spinBox(this, "mapFirstAddress", 0, 65535, 0))
+    , m_last(ScanForm::spinBox(this, "mapLastAddress", 0, 65535, 999))
+    , m_step(ScanForm::spinBox(this, "mapStep", 1, 2000, 1))
+    , m_optional(new QCheckBox(tr("&Optional functions (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)"), this))
+    , m_timeout(ScanForm::spinBox(this, "mapTimeout", 1, 60000, 500, tr(" ms")))
+    , m_gap(ScanForm::spinBox(this, "mapGap", 0, 60000, 0, tr(" ms")))
+    , m_maxRequests(ScanForm::spinBox(this, "mapMaxRequests", 1, 1000000, 20000))
+    , m_start(new QPushButton(tr("&Start"), this))
+    , m_stop(new QPushButton(tr("Sto&p"), this))
+    , m_save(new QPushButton(tr("Save profile &draft\u2026"), this))
+    , m_add(new QPushButton(tr("&Add as watches"), this))
+    , m_progress(new QProgressBar(this))
+    , m_status(new QLabel(this))
+{
+    setObjectName(QStringLiteral("mapScanDialog"));
+    setWindowTitle(tr("Map a unit's registers"));
+    m_target->setObjectName(QStringLiteral("mapTarget"));
+    m_target->setToolTip(tr("The link of the unit. The scan opens a connection of its own."));
+    m_step->setToolTip(tr("Between blocks, ask one address in this many: 1 finds every address, 16 every block of "
+                          "16 addresses or more in about a sixteenth of the requests. A block found is mapped whole."));
+    m_optional->setObjectName(QStringLiteral("mapOptional"));
+    m_optional->setChecked(true);
+    m_maxRequests->setToolTip(tr("The scan stops after this many requests."));
+    m_maxRequests->setGroupSeparatorShown(true);
+
+    auto *addresses = new QHBoxLayout;
+    addresses->addWidget(m_first);
+    addresses->addWidget(new QLabel(tr("to"), this));
+    addresses->addWidget(m_last);
+    addresses->addWidget(new QLabel(tr("step"), this));
+    addresses->addWidget(m_step);
+    addresses->addStretch();
+    auto *tables = new QHBoxLayout;
+    const QStringList tableTexts{tr("0&1 Coils"), tr("0&2 Discrete inputs"), tr("0&3 Holding"), tr("0&4 Input")};
+    for (int i = 0; i < tableTexts.size(); ++i) {
+        auto *box = new QCheckBox(tableTexts.at(i), this);
+        box->setObjectName(QStringLiteral("mapTable%1").arg(i + 1));
+        box->setChecked(true);
+        tables->addWidget(box);
+        m_tables.append(box);
+    }
+    tables->addStretch();
+    auto *timing = new QHBoxLayout;
+    timing->addWidget(m_timeout);
+    timing->addWidget(new QLabel(tr("gap"), this));
+    timing->addWidget(m_gap);
+    timing->addWidget(new QLabel(tr("at most"), this));
+    timing->addWidget(m_maxRequests);
+    timing->addWidget(new QLabel(tr("requests"), this));
+    timing->addStretch();
+
+    auto *form = new QFormLayout;
+    form->addRow(tr("&Target:"), m_target);
+    const auto row = [this, form](const QString &text, QWidget *buddy, QLayout *fields) {
+        auto *label = new QLabel(text, this);
+        label->setBuddy(buddy);
+        form->addRow(label, fields);
+    };
+    auto *unitRow = new QHBoxLayout;
+    unitRow->addWidget(m_unit);
+    unitRow->addStretch();
+    row(tr("&Unit:"), m_unit, unitRow);
+    row(tr("Add&resses:"), m_first, addresses);
+    form->addRow(tr("Tables:"), tables);
+    form->addRow(QString(), m_optional);
+    row(tr("T&imeout:"), m_timeout, timing);
+
+    m_start->setObjectName(QStringLiteral("mapStart"));
+    m_stop->setObjectName(QStringLiteral("mapStop"));
+    m_progress->setObjectName(QStringLiteral("mapProgress"));
+    m_status->setObjectName(QStringLiteral("mapStatus"));
+    m_status->setWordWrap(true);
+    auto *run = new QHBoxLayout;
+    run->addWidget(m_start);
+    run->addWidget(m_stop);
+    run->addWidget(m_progress, 1);
+
+    m_save->setObjectName(QStringLiteral("mapSaveDraft"));
+    m_save->setToolTip(tr("Save the map as a device profile that mbscope simulate --profile serves: "
+                          "the unit cloned into the simulator, to test against without the hardware."));
+    m_add->setObjectName(QStringLiteral("mapAddWatches"));
+    m_add->setToolTip(tr("Add a watch per block found to the window's watches."));
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    buttons->addButton(m_save, QDialogButtonBox::ActionRole);
+    buttons->addButton(m_add, QDialogButtonBox::ActionRole);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addLayout(run);
+    layout->addWidget(m_status);
+    layout->addWidget(m_tree, 1);
+    layout->addWidget(buttons);
+    resize(720, 560);
+
+    connect(m_start, &QPushButton::clicked, this, &MapScanDialog::start);
+    connect(m_stop, &QPushButton::clicked, this, &MapScanDialog::stop);
+    connect(m_save, &QPushButton::clicked, this, &MapScanDialog::chooseDraftFile);
+    connect(m_add, &QPushButton::clicked, this, [this] { Q_EMIT watchesRequested(watches()); });
+    connect(buttons, &QDialogButtonBox::rejected, this, &MapScanDialog::reject);
+    connect(m_scanner, &MapScanner::progressChanged, this, &MapScanDialog::onProgress);
+    m_status->setText(tr("Reads every table's addresses (exception 02 says an address is missing). Never writes."));
+    updateButtons();
+}
+
+MapScanDialog::~MapScanDialog()
+{
+    m_scanner->stop();
+}
+
+void MapScanDialog::setTarget(const LinkUrl &url, quint8 unit)
+{
+    m_target->setText(url.toString());
+    m_unit->setValue(unit);
+}
+
+void MapScanDialog::showProblem(const QString &text)
+{
+    m_status->setText(QStringLiteral("<span style=\"color:#c0392b\">%1</span>").arg(text.toHtmlEscaped()));
+}
+
+std::optional<MapScanSettings> MapScanDialog::settings()
+{
+    const LinkUrl::Result parsed = LinkUrl::parse(m_target->text().trimmed());
+    if (!parsed.url) {
+        showProblem(m_target->text().trimmed().isEmpty() ? tr("Give the link of the unit, e.g. tcp://192.168.1.10:502.")
+                                                         : parsed.error);
+        return std::nullopt;
+    }
+    MapScanSettings s;
+    s.url = *parsed.url;
+    s.unit = quint8(m_unit->value());
+    s.firstAddress = m_first->value();
+    s.lastAddress = m_last->value();
+    s.step = m_step->value();
+    s.functions.clear();
+    for (int i = 0; i < m_tables.size(); ++i) {
+        if (m_tables.at(i)->isChecked())
+            s.functions.append(quint8(i + 1));
+    }
+    s.optionalFunctions = m_optional->isChecked();
+    s.timeoutMs = m_timeout->value();
+    s.gapMs = m_gap->value();
+    s.maxRequests = m_maxRequests->value();
+    if (s.functions.isEmpty() && !s.optionalFunctions) {
+        showProblem(tr("Choose a table or the optional functions: there is nothing to scan."));
+        return std::nullopt;
+    }
+    if (const QString problem = s.problem(); !problem.isEmpty()) {
+        showProblem(problem);
+        return std::nullopt;
+    }
+    return s;
+}
+
+void MapScanDialog::start()
+{
+    if (m_running)
+        return;
+    const std::optional<MapScanSettings> s = settings();
+    if (!s)
+        return;
+    m_running = true;
+    m_map.reset();
+    m_tree->clear();
+    m_progress->setRange(0, 0);
+    updateButtons();
+    m_status->setText(tr("Mapping unit %1\u2026").arg(s->unit));
+    const std::optional<RegisterMap> map = m_scanner->run(*s);
+    m_running = false;
+    const ScanEnd end = m_scanner->end();
+    if (map) {
+        m_map = map;
+        m_mapTarget = s->url.toString();
+        m_tree->showMap(*map);
+    }
+    const int found = map ? MapResultTree::addressCount(*map) : 0;
+    m_progress->setRange(0, 1);
+    m_progress->setValue(1);
+    QString how;
+    switch (end) {
+    case ScanEnd::Completed: how = tr("Map complete"); break;
+    case ScanEnd::Stopped: how = tr("Stopped"); break;
+    case ScanEnd::TimeLimit: how = tr("Time limit reached"); break;
+    case ScanEnd::RequestLimit: how = tr("Request limit reached"); break;
+    case ScanEnd::LinkError: how = tr("The link failed"); break;
+    }
+    if (end == ScanEnd::LinkError && found == 0)
+        showProblem(tr("The link failed: %1 cannot be reached.").arg(s->url.toString()));
+    else
+        m_status->setText(tr("%1: %n address(es) found in %2 requests.", nullptr, found)
+                              .arg(how)
+                              .arg(map ? map->requests : 0));
+    updateButtons();
+    Q_EMIT scanFinished(end);
+}
+
+void MapScanDialog::stop()
+{
+    m_scanner->stop();
+}
+
+void MapScanDialog::reject()
+{
+    m_scanner->stop();
+    QDialog::reject();
+}
+
+void MapScanDialog::onProgress(const ScanProgress &p)
+{
+    if (!m_running)
+        return;
+    m_progress->setRange(0, qMax(1, p.total));
+    m_progress->setValue(p.done);
+    m_status->setText(tr("%1 of %2 addresses searched, about %3 left")
+                          .arg(p.done)
+                          .arg(p.total)
+                          .arg(ScanForm::duration(p.remainingMs)));
+}
+
+QList<WatchDefinition> MapScanDialog::watches() const
+{
+    return m_map ? ScanWatches::fromMap(m_mapTarget, *m_map) : QList<WatchDefinition>{};
+}
+
+bool MapScanDialog::saveDraft(const QString &path)
+{
+    if (!m_map)
+        return false;
+    QSaveFile file(path);
+    const QByteArray json = ProfileDraft::toJson(*m_map, QFileInfo(path).completeBaseName(), m_mapTarget);
+    if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit()) {
+        showProblem(tr("Cannot save %1: %2").arg(QDir::toNativeSeparators(path), file.errorString()));
+        return false;
+    }
+    m_status->setText(tr("Saved %1: mbscope simulate --profile %1 serves this unit.").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
+void MapScanDialog::chooseDraftFile()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save profile draft"), QStringLiteral("unit-%1.json").arg(m_map ? m_map->unit : 1),
+                                                      tr("Device profiles (*.json)"));
+    if (!path.isEmpty())
+        saveDraft(path);
+}
+
+void MapScanDialog::updateButtons()
+{
+    m_start->setEnabled(!m_running);
+    m_stop->setEnabled(m_running);
+    const bool blocks = m_map && MapResultTree::addressCount(*m_map) > 0;
+    m_save->setEnabled(m_map.has_value() && !m_running);
+    m_add->setEnabled(blocks && !m_running);
+    QList<QWidget *> fields{m_target, m_unit, m_first, m_last, m_step, m_optional, m_timeout, m_gap, m_maxRequests};
+    for (QCheckBox *box : std::as_const(m_tables))
+        fields.append(box);
+    for (QWidget *w : std::as_const(fields))
+        w->setEnabled(!m_running);
+}
+
+} // namespace mbscope

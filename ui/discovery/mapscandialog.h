@@ -1,0 +1,87 @@
+#pragma once
+
+#include "discovery/mapscansettings.h"
+#include "discovery/registermap.h"
+#include "discovery/scanprogress.h"
+
+#include "watch/watchdefinition.h"
+
+#include <QtCore/QList>
+#include <QtWidgets/QDialog>
+
+#include <optional>
+
+class QCheckBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace mbscope {
+
+class MapResultTree;
+class MapScanner;
+
+// Scan > Map unit: which addresses of each table a unit has, the largest read each function takes
+// and which optional functions it answers (core/discovery's MapScanner: reads only, bounded by a
+// request count), shown as a tree. The map becomes a device profile draft that `mbscope simulate
+// --profile` serves ("Save profile draft"), or a watch per block (watchesRequested()).
+class MapScanDialog : public QDialog
+{
+    Q_OBJECT
+public:
+    explicit MapScanDialog(QWidget *parent = nullptr);
+    ~MapScanDialog() override;
+
+    void setTarget(const LinkUrl &url, quint8 unit);
+    // The settings the fields make; nullopt, with the reason shown, when they make none.
+    [[nodiscard]] std::optional<MapScanSettings> settings();
+    [[nodiscard]] bool isRunning() const { return m_running; }
+    [[nodiscard]] const std::optional<RegisterMap> &map() const { return m_map; }
+    [[nodiscard]] QList<WatchDefinition> watches() const;
+    // Writes the map as a profile draft to path; false, with the reason shown, when it cannot.
+    bool saveDraft(const QString &path);
+
+public Q_SLOTS:
+    // Runs the scan to its end (local event loops: the dialog stays live, Stop works).
+    void start();
+    void stop();
+
+Q_SIGNALS:
+    void watchesRequested(const QList<mbscope::WatchDefinition> &watches);
+    void scanFinished(mbscope::ScanEnd end);
+
+protected:
+    void reject() override;
+
+private:
+    void onProgress(const ScanProgress &progress);
+    void chooseDraftFile();
+    void updateButtons();
+    void showProblem(const QString &text);
+
+    MapScanner *m_scanner;
+    MapResultTree *m_tree;
+    QLineEdit *m_target;
+    QSpinBox *m_unit;
+    QSpinBox *m_first;
+    QSpinBox *m_last;
+    QSpinBox *m_step;
+    QList<QCheckBox *> m_tables; // 01-04
+    QCheckBox *m_optional;
+    QSpinBox *m_timeout;
+    QSpinBox *m_gap;
+    QSpinBox *m_maxRequests;
+    QPushButton *m_start;
+    QPushButton *m_stop;
+    QPushButton *m_save;
+    QPushButton *m_add;
+    QProgressBar *m_progress;
+    QLabel *m_status;
+    bool m_running = false;
+    std::optional<RegisterMap> m_map;
+    QString m_mapTarget;
+};
+
+} // namespace mbscope
