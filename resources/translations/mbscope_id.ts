@@ -5251,7 +5251,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/scandialog.cpp" line="+37"/>
+        <location filename="../../ui/discovery/scandialog.cpp" line="+38"/>
         <location line="+1"/>
         <source> ms</source>
         <translation> md</translation>
@@ -5280,6 +5280,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>&amp;Map unit…</source>
         <translation>&amp;Petakan unit…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timi&amp;ng…</source>
+        <translation>Ukur wa&amp;ktu…</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -5387,7 +5392,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Temukan alamat yang dimiliki unit terpilih, baca terbesar yang diterimanya, dan fungsi opsionalnya; simpan peta sebagai profil yang dilayani simulator.</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+4"/>
+        <source>Measure how the selected unit copes with being asked: the shortest gap between requests, pipelining, clients at once, the largest read; with the settings that follow.</source>
+        <translation>Ukur ketahanan unit terpilih saat ditanya: jeda terpendek antarpermintaan, pipelining, klien sekaligus, baca terbesar; beserta pengaturan yang disarankan.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Asks every id the read above, one at a time, and says what each did.</source>
         <translation>Menanyai setiap id dengan pembacaan di atas, satu per satu, dan menyebutkan apa yang dilakukan masing-masing.</translation>
     </message>
@@ -5432,7 +5442,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1: %2 dari %3 id ditanyai dalam %4, %5 ditemukan.</translation>
     </message>
     <message numerus="yes">
-        <location line="+76"/>
+        <location line="+95"/>
         <source>%n watch definition(s) copied to the clipboard.</source>
         <translation>
             <numerusform>%n definisi pantauan disalin ke papan klip.</numerusform>
@@ -6802,6 +6812,319 @@ Klik kanan untuk mengganti format</translation>
         <location line="+3"/>
         <source>Follow the desktop</source>
         <translation>Ikuti desktop</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::TimingResultTree</name>
+    <message>
+        <location filename="../../ui/discovery/timingresulttree.cpp" line="+11"/>
+        <location line="+47"/>
+        <location line="+8"/>
+        <location line="+13"/>
+        <location line="+1"/>
+        <location line="+1"/>
+        <source>%1 ms</source>
+        <translation>%1 md</translation>
+    </message>
+    <message>
+        <location line="-52"/>
+        <source>Measurement</source>
+        <translation>Pengukuran</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Hasil</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>First answer after connecting</source>
+        <translation>Jawaban pertama setelah tersambung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none within %1 ms</source>
+        <translation>tidak ada dalam %1 md</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 ms (%2 failed before it)</source>
+        <translation>%1 md (%2 gagal sebelumnya)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Gaps between requests</source>
+        <translation>Jeda antarpermintaan</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+0"/>
+        <source>%n tried, longest first</source>
+        <translation>
+            <numerusform>%n dicoba, terpanjang lebih dulu</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 ok, %2 failed, slowest %3</source>
+        <translation>%1 ok, %2 gagal, paling lambat %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Shortest gap without errors</source>
+        <translation>Jeda terpendek tanpa galat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none of those tried</source>
+        <translation>tidak satu pun yang dicoba</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Largest read answered</source>
+        <translation>Baca terbesar yang dijawab</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 at address %2 (an answer PDU of %3 bytes)</source>
+        <translation>%1 di alamat %2 (PDU jawaban %3 bita)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pipelined requests</source>
+        <translation>Permintaan pipelined</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 of %2 answered: pipelining works</source>
+        <translation>%1 dari %2 dijawab: pipelining berfungsi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 of %2 answered: send one at a time</source>
+        <translation>%1 dari %2 dijawab: kirim satu per satu</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>TCP clients served at once</source>
+        <translation>Klien TCP dilayani sekaligus</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (all tried; there may be room for more)</source>
+        <translation>%1 (semua yang dicoba; mungkin masih muat lebih banyak)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 (client %2 was not served)</source>
+        <translation>%1 (klien %2 tidak dilayani)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Recommended</source>
+        <translation>Disarankan</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>twice the shortest clean gap, three times the slowest answer</source>
+        <translation>dua kali jeda bersih terpendek, tiga kali jawaban paling lambat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Gap between requests</source>
+        <translation>Jeda antarpermintaan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timeout</source>
+        <translation>Batas waktu</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Pause after connecting</source>
+        <translation>Jeda setelah tersambung</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::TimingScanDialog</name>
+    <message>
+        <location filename="../../ui/discovery/timingscandialog.cpp" line="+29"/>
+        <source> ms</source>
+        <translation> md</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Start</source>
+        <translation>&amp;Mulai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sto&amp;p</source>
+        <translation>&amp;Hentikan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Copy settings</source>
+        <translation>&amp;Salin pengaturan</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Time a unit</source>
+        <translation>Ukur waktu sebuah unit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The link of the unit. The scan opens connections of its own.</source>
+        <translation>Link unit tersebut. Pemindaian membuka sambungannya sendiri.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>01 Read Coils</source>
+        <translation>01 Baca Coil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>02 Read Discrete Inputs</source>
+        <translation>02 Baca Input Diskret</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>03 Read Holding Registers</source>
+        <translation>03 Baca Register Holding</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>04 Read Input Registers</source>
+        <translation>04 Baca Register Input</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The read asked throughout: a timing scan never writes.</source>
+        <translation>Baca yang ditanyakan sepanjang pemindaian: pengukuran waktu tidak pernah menulis.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Quiet times between requests to try, in milliseconds, from the longest down; the scan stops going shorter once errors start.</source>
+        <translation>Waktu hening antarpermintaan yang dicoba, dalam milidetik, dari yang terpanjang; pemindaian berhenti memendekkan begitu galat mulai muncul.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Requests asked at each gap.</source>
+        <translation>Permintaan yang ditanyakan pada setiap jeda.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Modbus TCP: requests sent without waiting for answers.</source>
+        <translation>Modbus TCP: permintaan dikirim tanpa menunggu jawaban.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP links: connections held open at once, each asked in turn.</source>
+        <translation>Link TCP: sambungan yang dibuka sekaligus, masing-masing ditanya bergiliran.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>address</source>
+        <translation>alamat</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>ms, asked</source>
+        <translation>md, ditanya</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>times each</source>
+        <translation>kali masing-masing</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>pipelined, up to</source>
+        <translation>pipelined, hingga</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>clients at once</source>
+        <translation>klien sekaligus</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Target:</source>
+        <translation>Tu&amp;juan:</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Unit:</source>
+        <translation>&amp;Unit:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Gaps:</source>
+        <translation>Je&amp;da:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP &amp;requests:</source>
+        <translation>&amp;Permintaan TCP:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T&amp;imeout:</source>
+        <translation>Batas &amp;waktu:</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The recommended settings as text: a watch link&apos;s gapMs and timeoutMs, mbscope&apos;s --timeout and Telegraf&apos;s modbus input.</source>
+        <translation>Pengaturan yang disarankan sebagai teks: gapMs dan timeoutMs link pantauan, --timeout mbscope, dan input modbus Telegraf.</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Measuring: %1…</source>
+        <translation>Mengukur: %1…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Asks the read again and again, at shorter and shorter gaps, and says what the unit stood. Never writes.</source>
+        <translation>Menanyakan baca itu berulang-ulang, dengan jeda makin pendek, dan mengatakan apa yang sanggup dilayani unit. Tidak pernah menulis.</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Give the link of the unit, e.g. tcp://192.168.1.10:502.</source>
+        <translation>Berikan link unit tersebut, mis. tcp://192.168.1.10:502.</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Gaps: &quot;%1&quot; is not a number of milliseconds from 0 to 60000.</source>
+        <translation>Jeda: &quot;%1&quot; bukan bilangan milidetik dari 0 sampai 60000.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Gaps: give at least one, e.g. 100, 20, 0.</source>
+        <translation>Jeda: berikan paling sedikit satu, mis. 100, 20, 0.</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Stopped before the first answer: nothing was measured.</source>
+        <translation>Dihentikan sebelum jawaban pertama: tidak ada yang diukur.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>No good answer from unit %1 on %2: nothing to time.</source>
+        <translation>Tidak ada jawaban baik dari unit %1 di %2: tidak ada yang bisa diukur.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stopped: the measurements after it were not made.</source>
+        <translation>Dihentikan: pengukuran sesudahnya tidak dilakukan.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Done: a gap of %1 ms and a timeout of %2 ms are recommended.</source>
+        <translation>Selesai: disarankan jeda %1 md dan batas waktu %2 md.</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>The recommended settings are on the clipboard.</source>
+        <translation>Pengaturan yang disarankan ada di papan klip.</translation>
     </message>
 </context>
 <context>

@@ -3,6 +3,7 @@
 #include "mapscandialog.h"
 #include "scanresultmodel.h"
 #include "scanform.h"
+#include "timingscandialog.h"
 
 #include "discovery/scanwatches.h"
 #include "discovery/unitscanner.h"
@@ -41,6 +42,7 @@ ScanDialog::ScanDialog(QWidget *parent)
     , m_copy(new QPushButton(tr("&Copy as watches (JSON)"), this))
     , m_add(new QPushButton(tr("&Add as watches"), this))
     , m_map(new QPushButton(tr("&Map unit\u2026"), this))
+    , m_timing(new QPushButton(tr("Timi&ng\u2026"), this))
     , m_progress(new QProgressBar(this))
     , m_status(new QLabel(this))
     , m_table(new QTableView(this))
@@ -121,6 +123,10 @@ ScanDialog::ScanDialog(QWidget *parent)
     m_map->setToolTip(tr("Find which addresses the selected unit has, the largest read it takes and its optional functions; "
                          "save the map as a profile the simulator serves."));
     buttons->addButton(m_map, QDialogButtonBox::ActionRole);
+    m_timing->setObjectName(QStringLiteral("scanTimeUnit"));
+    m_timing->setToolTip(tr("Measure how the selected unit copes with being asked: the shortest gap between requests, "
+                            "pipelining, clients at once, the largest read; with the settings that follow."));
+    buttons->addButton(m_timing, QDialogButtonBox::ActionRole);
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -135,6 +141,7 @@ ScanDialog::ScanDialog(QWidget *parent)
     connect(m_copy, &QPushButton::clicked, this, &ScanDialog::copyWatches);
     connect(m_add, &QPushButton::clicked, this, [this] { Q_EMIT watchesRequested(watches()); });
     connect(m_map, &QPushButton::clicked, this, &ScanDialog::mapSelectedUnit);
+    connect(m_timing, &QPushButton::clicked, this, &ScanDialog::timeSelectedUnit);
     connect(buttons, &QDialogButtonBox::rejected, this, &ScanDialog::reject);
     connect(m_scanner, &UnitScanner::probed, m_model, &ScanResultModel::append);
     connect(m_scanner, &UnitScanner::progressChanged, this, &ScanDialog::onProgress);
@@ -265,6 +272,7 @@ void ScanDialog::updateButtons()
     m_copy->setEnabled(found);
     m_add->setEnabled(found);
     m_map->setEnabled(found && !running);
+    m_timing->setEnabled(found && !running);
     for (QWidget *w : {static_cast<QWidget *>(m_target), static_cast<QWidget *>(m_first), static_cast<QWidget *>(m_last),
                        static_cast<QWidget *>(m_function), static_cast<QWidget *>(m_address), static_cast<QWidget *>(m_quantity),
                        static_cast<QWidget *>(m_timeout), static_cast<QWidget *>(m_gap)})
@@ -288,20 +296,23 @@ QList<WatchDefinition> ScanDialog::watches() const
     return out;
 }
 
-MapScanDialog *ScanDialog::mapSelectedUnit()
+int ScanDialog::chosenFoundRow() const
 {
     const QList<UnitProbe> &probes = m_model->probes();
-    int row = -1;
     for (const QModelIndex &index : m_table->selectionModel()->selectedRows()) {
-        if (probes.at(index.row()).kind == UnitProbeKind::Answers) {
-            row = index.row();
-            break;
-        }
+        if (probes.at(index.row()).kind == UnitProbeKind::Answers)
+            return index.row();
     }
-    for (int i = 0; row < 0 && i < probes.size(); ++i) {
+    for (int i = 0; i < probes.size(); ++i) {
         if (probes.at(i).kind == UnitProbeKind::Answers)
-            row = i;
+            return i;
     }
+    return -1;
+}
+
+MapScanDialog *ScanDialog::mapSelectedUnit()
+{
+    const int row = chosenFoundRow();
     if (row < 0)
         return nullptr;
     if (!m_mapDialog) {
@@ -309,11 +320,26 @@ MapScanDialog *ScanDialog::mapSelectedUnit()
         connect(m_mapDialog, &MapScanDialog::watchesRequested, this, &ScanDialog::watchesRequested);
     }
     if (!m_mapDialog->isRunning())
-        m_mapDialog->setTarget(m_running.url, quint8(probes.at(row).unit));
+        m_mapDialog->setTarget(m_running.url, quint8(m_model->probes().at(row).unit));
     m_mapDialog->show();
     m_mapDialog->raise();
     m_mapDialog->activateWindow();
     return m_mapDialog;
+}
+
+TimingScanDialog *ScanDialog::timeSelectedUnit()
+{
+    const int row = chosenFoundRow();
+    if (row < 0)
+        return nullptr;
+    if (!m_timingDialog)
+        m_timingDialog = new TimingScanDialog(this);
+    if (!m_timingDialog->isRunning())
+        m_timingDialog->setTarget(m_running.url, quint8(m_model->probes().at(row).unit), m_running.function, m_running.address);
+    m_timingDialog->show();
+    m_timingDialog->raise();
+    m_timingDialog->activateWindow();
+    return m_timingDialog;
 }
 
 void ScanDialog::copyWatches()

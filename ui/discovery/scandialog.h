@@ -19,6 +19,7 @@ class QTableView;
 namespace mbscope {
 
 class MapScanDialog;
+class TimingScanDialog;
 class ScanResultModel;
 class UnitScanner;
 
@@ -49,6 +50,9 @@ public Q_SLOTS:
     void copyWatches();
     // Opens Map a unit's registers on the selected found unit (the first found without a selection).
     MapScanDialog *mapSelectedUnit();
+    // Opens Time a unit on the selected found unit (the first found without a selection), asking
+    // the read the scan asked.
+    TimingScanDialog *timeSelectedUnit();
 
 Q_SIGNALS:
     void watchesRequested(const QList<mbscope::WatchDefinition> &watches);
@@ -78,7 +82,10 @@ private:
     QPushButton *m_copy;
     QPushButton *m_add;
     QPushButton *m_map;
+    QPushButton *m_timing;
     MapScanDialog *m_mapDialog = nullptr;
+    TimingScanDialog *m_timingDialog = nullptr;
+    [[nodiscard]] int chosenFoundRow() const;
     QProgressBar *m_progress;
     QLabel *m_status;
     QTableView *m_table;

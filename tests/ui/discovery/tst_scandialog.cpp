@@ -8,6 +8,8 @@
 #include "discovery/mapresulttree.h"
 #include "discovery/mapscandialog.h"
 #include "discovery/scandialog.h"
+#include "discovery/timingresulttree.h"
+#include "discovery/timingscandialog.h"
 #include "discovery/scanresultmodel.h"
 #include "profile/profileloader.h"
 #include "guitestsupport.h"
@@ -49,6 +51,7 @@ private slots:
     void badTargetIsSaid();
     void toolsMenuOpensIt();
     void mapUnitClonesIt();
+    void timingOfAFoundUnit();
     void accessKeysAreUnique_data();
     void accessKeysAreUnique();
 
@@ -270,6 +273,61 @@ void TestScanDialog::mapUnitClonesIt()
     QVERIFY(map->findChild<QLabel *>(QStringLiteral("mapStatus"))->text().contains(QLatin1String("scheme")));
 }
 
+// Timing on a found unit: the read the scan asked, measured through the dialog's Start, the
+// recommended settings on the clipboard; a gap that is not a number is said.
+void TestScanDialog::timingOfAFoundUnit()
+{
+    ScanDialog dialog;
+    dialog.setTarget(m_url);
+    dialog.findChild<QSpinBox *>(QStringLiteral("scanLastUnit"))->setValue(2);
+    dialog.findChild<QSpinBox *>(QStringLiteral("scanAddress"))->setValue(0x79);
+    auto *timingButton = dialog.findChild<QPushButton *>(QStringLiteral("scanTimeUnit"));
+    QVERIFY(!timingButton->isEnabled());
+    QSignalSpy scanned(&dialog, &ScanDialog::scanFinished);
+    dialog.show();
+    dialog.start();
+    QVERIFY(scanned.wait(20000));
+    QTest::mouseClick(timingButton, Qt::LeftButton);
+    auto *timing = dialog.findChild<TimingScanDialog *>();
+    QVERIFY(timing && timing->isVisible());
+    std::optional<TimingScanSettings> s = timing->settings();
+    QVERIFY(s);
+    QCOMPARE(s->unit, quint8(1));
+    QCOMPARE(s->address, quint16(0x79));
+    QCOMPARE(s->function, quint8(3));
+
+    auto *gaps = timing->findChild<QLineEdit *>(QStringLiteral("timingGaps"));
+    gaps->setText(QStringLiteral("20, x"));
+    QVERIFY(!timing->settings());
+    QVERIFY(timing->findChild<QLabel *>(QStringLiteral("timingStatus"))->text().contains(QLatin1String("is not a number")));
+    gaps->setText(QStringLiteral("0, 20"));
+    timing->findChild<QSpinBox *>(QStringLiteral("timingPerGap"))->setValue(5);
+    timing->findChild<QSpinBox *>(QStringLiteral("timingClients"))->setValue(3);
+    auto *copy = timing->findChild<QPushButton *>(QStringLiteral("timingCopySettings"));
+    QVERIFY(!copy->isEnabled());
+    QSignalSpy finished(timing, &TimingScanDialog::scanFinished);
+    QTest::mouseClick(timing->findChild<QPushButton *>(QStringLiteral("timingStart")), Qt::LeftButton);
+    QVERIFY(!finished.isEmpty() || finished.wait(60000));
+    QVERIFY(timing->report());
+    const TimingReport &r = *timing->report();
+    QVERIFY(r.firstAnswerMs >= 0);
+    QVERIFY(!r.gaps.isEmpty());
+    QCOMPARE(r.gaps.first().gapMs, 20); // longest first, whatever order typed
+    QCOMPARE(r.gaps.first().ok, 5);
+    QCOMPARE(r.largestQuantity, 22); // 0x79-0x8E: the 22 registers from the address on
+    QCOMPARE(r.clientsTried, 3);
+    auto *tree = timing->findChild<TimingResultTree *>();
+    QVERIFY(!tree->findItems(QStringLiteral("Recommended"), Qt::MatchExactly).isEmpty());
+    QVERIFY(timing->findChild<QLabel *>(QStringLiteral("timingStatus"))->text().contains(QLatin1String("recommended")));
+    QVERIFY(copy->isEnabled());
+    QTest::mouseClick(copy, Qt::LeftButton);
+    const QString copied = QGuiApplication::clipboard()->text();
+    QVERIFY2(copied.contains(QStringLiteral("\"gapMs\": %1").arg(r.recommendedGapMs())), qPrintable(copied));
+    QVERIFY(copied.contains(QLatin1String("pause_between_requests")));
+    if (const QString shot = qEnvironmentVariable("MBSCOPE_TIMING_SCREENSHOT"); !shot.isEmpty())
+        timing->grab().save(shot);
+}
+
 void TestScanDialog::accessKeysAreUnique_data()
 {
     QTest::addColumn<QString>("language");
@@ -293,6 +351,11 @@ void TestScanDialog::accessKeysAreUnique()
         map.show();
         QVERIFY(QTest::qWaitForWindowExposed(&map));
         clashes = guitest::mnemonicClashes(&map);
+        QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
+        TimingScanDialog timing;
+        timing.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&timing));
+        clashes = guitest::mnemonicClashes(&timing);
         QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
     }
     TranslationLoader::install(*qApp, TranslationLoader::localeFor(TranslationLoader::Choice::English));

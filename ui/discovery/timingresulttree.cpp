@@ -1,0 +1,88 @@
+#include "timingresulttree.h"
+
+#include <QtWidgets/QHeaderView>
+
+namespace mbscope {
+
+namespace {
+
+QString milliseconds(qint64 us)
+{
+    return TimingResultTree::tr("%1 ms").arg(QString::number(double(us) / 1000.0, 'f', 2));
+}
+
+QTreeWidgetItem *row(QTreeWidgetItem *parent, const QString &measure, const QString &result)
+{
+    auto *item = new QTreeWidgetItem(parent);
+    item->setText(TimingResultTree::MeasureColumn, measure);
+    item->setText(TimingResultTree::ResultColumn, result);
+    return item;
+}
+
+} // namespace
+
+TimingResultTree::TimingResultTree(QWidget *parent)
+    : QTreeWidget(parent)
+{
+    setObjectName(QStringLiteral("timingResults"));
+    setColumnCount(ColumnCount);
+    setHeaderLabels({tr("Measurement"), tr("Result")});
+    setUniformRowHeights(true);
+    header()->setStretchLastSection(true);
+    setColumnWidth(MeasureColumn, 260);
+}
+
+QString TimingResultTree::settingsText(const TimingReport &r)
+{
+    const int gap = r.recommendedGapMs();
+    const int timeout = r.recommendedTimeoutMs();
+    return QStringLiteral("mbscope watch link:    \"gapMs\": %1, \"timeoutMs\": %2\n"
+                          "mbscope poll/read:     --timeout %2ms\n"
+                          "Telegraf inputs.modbus: timeout = \"%2ms\"\n"
+                          "  [inputs.modbus.workarounds] pause_between_requests = \"%1ms\", pause_after_connect = \"%3ms\"\n")
+        .arg(gap)
+        .arg(timeout)
+        .arg(r.warmupFailures > 0 ? r.firstAnswerMs : 0);
+}
+
+void TimingResultTree::showReport(const TimingScanSettings &s, const TimingReport &r)
+{
+    clear();
+    QTreeWidgetItem *root = invisibleRootItem();
+    row(root, tr("First answer after connecting"),
+        r.firstAnswerMs < 0 ? tr("none within %1 ms").arg(s.warmupLimitMs)
+                            : tr("%1 ms (%2 failed before it)").arg(r.firstAnswerMs).arg(r.warmupFailures));
+    if (!r.gaps.isEmpty()) {
+        QTreeWidgetItem *gaps = row(root, tr("Gaps between requests"), tr("%n tried, longest first", nullptr, int(r.gaps.size())));
+        for (const TimingReport::GapTrial &g : r.gaps) {
+            QTreeWidgetItem *trial = row(gaps, tr("%1 ms").arg(g.gapMs),
+                                         tr("%1 ok, %2 failed, slowest %3").arg(g.ok).arg(g.failed).arg(milliseconds(g.maxLatencyUs)));
+            if (g.failed > 0)
+                trial->setForeground(ResultColumn, QColor(0xc0, 0x39, 0x2b));
+        }
+        gaps->setExpanded(true);
+    }
+    row(root, tr("Shortest gap without errors"),
+        r.shortestCleanGapMs < 0 ? tr("none of those tried") : tr("%1 ms").arg(r.shortestCleanGapMs));
+    if (r.largestQuantity > 0)
+        row(root, tr("Largest read answered"),
+            tr("%1 at address %2 (an answer PDU of %3 bytes)").arg(r.largestQuantity).arg(s.address).arg(r.largestAnswerPdu));
+    if (r.pipelineSent > 0)
+        row(root, tr("Pipelined requests"),
+            r.pipelineOk == r.pipelineSent ? tr("%1 of %2 answered: pipelining works").arg(r.pipelineOk).arg(r.pipelineSent)
+                                           : tr("%1 of %2 answered: send one at a time").arg(r.pipelineOk).arg(r.pipelineSent));
+    if (r.clientsTried > 0)
+        row(root, tr("TCP clients served at once"),
+            r.clientsServed == s.maxClients ? tr("%1 (all tried; there may be room for more)").arg(r.clientsServed)
+                                            : tr("%1 (client %2 was not served)").arg(r.clientsServed).arg(r.clientsTried));
+    QTreeWidgetItem *settings = row(root, tr("Recommended"), tr("twice the shortest clean gap, three times the slowest answer"));
+    row(settings, tr("Gap between requests"), tr("%1 ms").arg(r.recommendedGapMs()));
+    row(settings, tr("Timeout"), tr("%1 ms").arg(r.recommendedTimeoutMs()));
+    row(settings, tr("Pause after connecting"), tr("%1 ms").arg(r.warmupFailures > 0 ? r.firstAnswerMs : 0));
+    settings->setExpanded(true);
+    QFont bold = settings->font(MeasureColumn);
+    bold.setBold(true);
+    settings->setFont(MeasureColumn, bold);
+}
+
+} // namespace mbscope

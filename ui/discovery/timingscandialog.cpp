@@ -1,0 +1,250 @@
+#include "timingscandialog.h"
+
+#include "scanform.h"
+#include "timingresulttree.h"
+
+#include <QtGui/QClipboard>
+#include <QtGui/QGuiApplication>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QDialogButtonBox>
+#include <QtWidgets/QFormLayout>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QProgressBar>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSpinBox>
+#include <QtWidgets/QVBoxLayout>
+
+namespace mbscope {
+
+TimingScanDialog::TimingScanDialog(QWidget *parent)
+    : QDialog(parent)
+    , m_scanner(new TimingScanner(this))
+    , m_tree(new TimingResultTree(this))
+    , m_target(new QLineEdit(this))
+    , m_unit(ScanForm::spinBox(this, "timingUnit", 0, 255, 1))
+    , m_function(new QComboBox(this))
+    , m_address(ScanForm::spinBox(this, "timingAddress", 0, 65535, 0))
+    , m_timeout(ScanForm::spinBox(this, "timingTimeout", 1, 60000, 1000, tr(" ms")))
+    , m_gaps(new QLineEdit(QStringLiteral("200, 100, 50, 20, 10, 5, 2, 1, 0"), this))
+    , m_perGap(ScanForm::spinBox(this, "timingPerGap", 1, 10000, 20))
+    , m_pipeline(ScanForm::spinBox(this, "timingPipeline", 1, 64, 8))
+    , m_clients(ScanForm::spinBox(this, "timingClients", 1, 256, 16))
+    , m_start(new QPushButton(tr("&Start"), this))
+    , m_stop(new QPushButton(tr("Sto&p"), this))
+    , m_copy(new QPushButton(tr("&Copy settings"), this))
+    , m_progress(new QProgressBar(this))
+    , m_status(new QLabel(this))
+{
+    setObjectName(QStringLiteral("timingScanDialog"));
+    setWindowTitle(tr("Time a unit"));
+    m_target->setObjectName(QStringLiteral("timingTarget"));
+    m_target->setToolTip(tr("The link of the unit. The scan opens connections of its own."));
+    m_function->setObjectName(QStringLiteral("timingFunction"));
+    m_function->addItem(tr("01 Read Coils"), 1);
+    m_function->addItem(tr("02 Read Discrete Inputs"), 2);
+    m_function->addItem(tr("03 Read Holding Registers"), 3);
+    m_function->addItem(tr("04 Read Input Registers"), 4);
+    m_function->setCurrentIndex(2);
+    m_function->setToolTip(tr("The read asked throughout: a timing scan never writes."));
+    m_gaps->setObjectName(QStringLiteral("timingGaps"));
+    m_gaps->setToolTip(tr("Quiet times between requests to try, in milliseconds, from the longest down; "
+                          "the scan stops going shorter once errors start."));
+    m_perGap->setToolTip(tr("Requests asked at each gap."));
+    m_pipeline->setToolTip(tr("Modbus TCP: requests sent without waiting for answers."));
+    m_clients->setToolTip(tr("TCP links: connections held open at once, each asked in turn."));
+
+    auto *unitRow = new QHBoxLayout;
+    unitRow->addWidget(m_unit);
+    unitRow->addWidget(m_function);
+    unitRow->addWidget(new QLabel(tr("address"), this));
+    unitRow->addWidget(m_address);
+    unitRow->addStretch();
+    auto *gapRow = new QHBoxLayout;
+    gapRow->addWidget(m_gaps, 1);
+    gapRow->addWidget(new QLabel(tr("ms, asked"), this));
+    gapRow->addWidget(m_perGap);
+    gapRow->addWidget(new QLabel(tr("times each"), this));
+    auto *linkRow = new QHBoxLayout;
+    linkRow->addWidget(m_pipeline);
+    linkRow->addWidget(new QLabel(tr("pipelined, up to"), this));
+    linkRow->addWidget(m_clients);
+    linkRow->addWidget(new QLabel(tr("clients at once"), this));
+    linkRow->addStretch();
+    auto *timeoutRow = new QHBoxLayout;
+    timeoutRow->addWidget(m_timeout);
+    timeoutRow->addStretch();
+
+    auto *form = new QFormLayout;
+    form->addRow(tr("&Target:"), m_target);
+    const auto row = [this, form](const QString &text, QWidget *buddy, QLayout *fields) {
+        auto *label = new QLabel(text, this);
+        label->setBuddy(buddy);
+        form->addRow(label, fields);
+    };
+    row(tr("&Unit:"), m_unit, unitRow);
+    row(tr("&Gaps:"), m_gaps, gapRow);
+    row(tr("TCP &requests:"), m_pipeline, linkRow);
+    row(tr("T&imeout:"), m_timeout, timeoutRow);
+
+    m_start->setObjectName(QStringLiteral("timingStart"));
+    m_stop->setObjectName(QStringLiteral("timingStop"));
+    m_progress->setObjectName(QStringLiteral("timingProgress"));
+    m_progress->setRange(0, 1);
+    m_status->setObjectName(QStringLiteral("timingStatus"));
+    m_status->setWordWrap(true);
+    auto *run = new QHBoxLayout;
+    run->addWidget(m_start);
+    run->addWidget(m_stop);
+    run->addWidget(m_progress, 1);
+
+    m_copy->setObjectName(QStringLiteral("timingCopySettings"));
+    m_copy->setToolTip(tr("The recommended settings as text: a watch link's gapMs and timeoutMs, mbscope's --timeout "
+                          "and Telegraf's modbus input."));
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    buttons->addButton(m_copy, QDialogButtonBox::ActionRole);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addLayout(run);
+    layout->addWidget(m_status);
+    layout->addWidget(m_tree, 1);
+    layout->addWidget(buttons);
+    resize(720, 560);
+
+    connect(m_start, &QPushButton::clicked, this, &TimingScanDialog::start);
+    connect(m_stop, &QPushButton::clicked, this, &TimingScanDialog::stop);
+    connect(m_copy, &QPushButton::clicked, this, &TimingScanDialog::copySettings);
+    connect(buttons, &QDialogButtonBox::rejected, this, &TimingScanDialog::reject);
+    connect(m_scanner, &TimingScanner::step, this, [this](const QString &what) {
+        if (m_running)
+            m_status->setText(tr("Measuring: %1\u2026").arg(what));
+    });
+    m_status->setText(tr("Asks the read again and again, at shorter and shorter gaps, and says what the unit stood. Never writes."));
+    updateButtons();
+}
+
+TimingScanDialog::~TimingScanDialog()
+{
+    m_scanner->stop();
+}
+
+void TimingScanDialog::setTarget(const LinkUrl &url, quint8 unit, quint8 function, quint16 address)
+{
+    m_target->setText(url.toString());
+    m_unit->setValue(unit);
+    m_function->setCurrentIndex(qMax(0, m_function->findData(int(function))));
+    m_address->setValue(address);
+}
+
+void TimingScanDialog::showProblem(const QString &text)
+{
+    m_status->setText(QStringLiteral("<span style=\"color:#c0392b\">%1</span>").arg(text.toHtmlEscaped()));
+}
+
+std::optional<TimingScanSettings> TimingScanDialog::settings()
+{
+    const LinkUrl::Result parsed = LinkUrl::parse(m_target->text().trimmed());
+    if (!parsed.url) {
+        showProblem(m_target->text().trimmed().isEmpty() ? tr("Give the link of the unit, e.g. tcp://192.168.1.10:502.")
+                                                         : parsed.error);
+        return std::nullopt;
+    }
+    TimingScanSettings s;
+    s.url = *parsed.url;
+    s.unit = quint8(m_unit->value());
+    s.function = quint8(m_function->currentData().toInt());
+    s.address = quint16(m_address->value());
+    s.timeoutMs = m_timeout->value();
+    s.requestsPerGap = m_perGap->value();
+    s.pipelineDepth = m_pipeline->value();
+    s.maxClients = m_clients->value();
+    s.gapsMs.clear();
+    const QStringList parts = m_gaps->text().split(QLatin1Char(','), Qt::SkipEmptyParts);
+    for (const QString &part : parts) {
+        bool ok = false;
+        const int gap = part.trimmed().toInt(&ok);
+        if (!ok || gap < 0 || gap > 60000) {
+            showProblem(tr("Gaps: \"%1\" is not a number of milliseconds from 0 to 60000.").arg(part.trimmed()));
+            return std::nullopt;
+        }
+        s.gapsMs.append(gap);
+    }
+    if (s.gapsMs.isEmpty()) {
+        showProblem(tr("Gaps: give at least one, e.g. 100, 20, 0."));
+        return std::nullopt;
+    }
+    std::sort(s.gapsMs.begin(), s.gapsMs.end(), std::greater<int>());
+    if (const QString problem = s.problem(); !problem.isEmpty()) {
+        showProblem(problem);
+        return std::nullopt;
+    }
+    return s;
+}
+
+void TimingScanDialog::start()
+{
+    if (m_running)
+        return;
+    const std::optional<TimingScanSettings> s = settings();
+    if (!s)
+        return;
+    m_running = true;
+    m_report.reset();
+    m_tree->clear();
+    m_progress->setRange(0, 0);
+    updateButtons();
+    const std::optional<TimingReport> report = m_scanner->run(*s);
+    m_running = false;
+    const bool stopped = m_scanner->wasStopped();
+    m_progress->setRange(0, 1);
+    m_progress->setValue(1);
+    if (report) {
+        m_report = report;
+        m_tree->showReport(*s, *report);
+    }
+    if (stopped && (!report || report->firstAnswerMs < 0))
+        m_status->setText(tr("Stopped before the first answer: nothing was measured."));
+    else if (!report || report->firstAnswerMs < 0)
+        showProblem(tr("No good answer from unit %1 on %2: nothing to time.").arg(s->unit).arg(s->url.toString()));
+    else if (stopped)
+        m_status->setText(tr("Stopped: the measurements after it were not made."));
+    else
+        m_status->setText(tr("Done: a gap of %1 ms and a timeout of %2 ms are recommended.")
+                              .arg(report->recommendedGapMs())
+                              .arg(report->recommendedTimeoutMs()));
+    updateButtons();
+    Q_EMIT scanFinished(stopped);
+}
+
+void TimingScanDialog::stop()
+{
+    m_scanner->stop();
+}
+
+void TimingScanDialog::reject()
+{
+    m_scanner->stop();
+    QDialog::reject();
+}
+
+void TimingScanDialog::copySettings()
+{
+    if (!m_report)
+        return;
+    QGuiApplication::clipboard()->setText(TimingResultTree::settingsText(*m_report));
+    m_status->setText(tr("The recommended settings are on the clipboard."));
+}
+
+void TimingScanDialog::updateButtons()
+{
+    m_start->setEnabled(!m_running);
+    m_stop->setEnabled(m_running);
+    m_copy->setEnabled(m_report.has_value() && m_report->firstAnswerMs >= 0 && !m_running);
+    for (QWidget *w : std::initializer_list<QWidget *>{m_target, m_unit, m_function, m_address, m_timeout, m_gaps, m_perGap,
+                                                       m_pipeline, m_clients})
+        w->setEnabled(!m_running);
+}
+
+} // namespace mbscope

@@ -1,0 +1,73 @@
+#pragma once
+
+#include "discovery/timingscanner.h"
+
+#include <QtWidgets/QDialog>
+
+#include <optional>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+
+namespace mbscope {
+
+class TimingResultTree;
+
+// Scan > Timing: how a unit copes with being asked (core/discovery's TimingScanner, reads only):
+// how long after connecting it answers, the shortest gap between requests before errors start,
+// pipelined MBAP requests, TCP clients at once and the largest read; with the settings that
+// follow, copied to the clipboard for a watch link, mbscope's options or Telegraf.
+class TimingScanDialog : public QDialog
+{
+    Q_OBJECT
+public:
+    explicit TimingScanDialog(QWidget *parent = nullptr);
+    ~TimingScanDialog() override;
+
+    void setTarget(const LinkUrl &url, quint8 unit, quint8 function, quint16 address);
+    // The settings the fields make; nullopt, with the reason shown, when they make none.
+    [[nodiscard]] std::optional<TimingScanSettings> settings();
+    [[nodiscard]] bool isRunning() const { return m_running; }
+    [[nodiscard]] const std::optional<TimingReport> &report() const { return m_report; }
+
+public Q_SLOTS:
+    // Runs the scan to its end (local event loops: the dialog stays live, Stop works).
+    void start();
+    void stop();
+    void copySettings();
+
+Q_SIGNALS:
+    void scanFinished(bool stopped);
+
+protected:
+    void reject() override;
+
+private:
+    void updateButtons();
+    void showProblem(const QString &text);
+
+    TimingScanner *m_scanner;
+    TimingResultTree *m_tree;
+    QLineEdit *m_target;
+    QSpinBox *m_unit;
+    QComboBox *m_function;
+    QSpinBox *m_address;
+    QSpinBox *m_timeout;
+    QLineEdit *m_gaps;
+    QSpinBox *m_perGap;
+    QSpinBox *m_pipeline;
+    QSpinBox *m_clients;
+    QPushButton *m_start;
+    QPushButton *m_stop;
+    QPushButton *m_copy;
+    QProgressBar *m_progress;
+    QLabel *m_status;
+    bool m_running = false;
+    std::optional<TimingReport> m_report;
+};
+
+} // namespace mbscope
