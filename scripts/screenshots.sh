@@ -74,17 +74,18 @@ read_all="01 03 00 79 00 16 15 DD"
 echo "screenshots: poll-histogram.png"
 "$bin" sweep --target "$target" --hex "$read_all" --intervals 0,10,50 --count 100 --histogram "$out/sweep.png" >/dev/null
 echo "screenshots: sweep.png"
-# Tools > Scan: the dialog after a scan of the simulated detector's ids 1-6, Map unit on unit 3
-# and Timing on unit 1, rendered by their GUI tests.
+# Tools > Scan: the dialog after a scan of the simulated detector's ids 1-6, Map unit on unit 3,
+# Timing on unit 1 and Serial settings on the simulated Arduino behind a pty pair, rendered by
+# their GUI tests.
 scan_test=$build/tests/ui/tst_scandialog
 if [[ -x $scan_test ]]; then
     MBSCOPE_SCAN_SCREENSHOT="$out/scan.png" MBSCOPE_MAP_SCREENSHOT="$out/scan-map.png" \
-        MBSCOPE_TIMING_SCREENSHOT="$out/scan-timing.png" \
-        "$scan_test" scanListsEveryId mapUnitClonesIt timingOfAFoundUnit >"$scratch/scan.out" 2>&1 \
+        MBSCOPE_TIMING_SCREENSHOT="$out/scan-timing.png" MBSCOPE_LINE_SCREENSHOT="$out/scan-line.png" \
+        "$scan_test" scanListsEveryId mapUnitClonesIt timingOfAFoundUnit serialSettingsFound >"$scratch/scan.out" 2>&1 \
         || { echo "screenshots: tst_scandialog failed:" >&2; cat "$scratch/scan.out" >&2; exit 1; }
-    echo "screenshots: scan.png scan-map.png scan-timing.png"
+    echo "screenshots: scan.png scan-map.png scan-timing.png scan-line.png"
 else
-    echo "screenshots: scan.png, scan-map.png and scan-timing.png skipped: $scan_test is not built"
+    echo "screenshots: scan.png, scan-map.png, scan-timing.png and scan-line.png skipped: $scan_test is not built"
 fi
 
 # The Watches tab: the simulated M221 on a free port, the example watch session pointed at it,

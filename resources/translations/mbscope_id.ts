@@ -2699,6 +2699,216 @@
     </message>
 </context>
 <context>
+    <name>mbscope::LineScanDialog</name>
+    <message>
+        <location filename="../../ui/discovery/linescandialog.cpp" line="+51"/>
+        <source> ms</source>
+        <translation> md</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop at the &amp;first setting that answers</source>
+        <translation>Berhenti pada pengaturan &amp;pertama yang menjawab</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Start</source>
+        <translation>&amp;Mulai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sto&amp;p</source>
+        <translation>&amp;Hentikan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Use this setting</source>
+        <translation>&amp;Gunakan pengaturan ini</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Find a serial line&apos;s settings</source>
+        <translation>Cari pengaturan jalur serial</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The serial port, as rtu:///dev/ttyUSB0 or ascii:///dev/ttyUSB0: its line settings are the ones tried.</source>
+        <translation>Port serial, sebagai rtu:///dev/ttyUSB0 atau ascii:///dev/ttyUSB0: pengaturan jalurnya yang dicoba.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Baud rates to try, in this order.</source>
+        <translation>Laju baud yang dicoba, dengan urutan ini.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>empty: 1 on every setting, then 2-247</source>
+        <translation>kosong: 1 pada setiap pengaturan, lalu 2-247</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unit ids asked on every setting, e.g. 1 or 1, 17. Give the id when you know it: without one the scan is long.</source>
+        <translation>Id unit yang ditanya pada setiap pengaturan, mis. 1 atau 1, 17. Berikan id-nya bila Anda tahu: tanpa id pemindaian lama.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How long each request waits, plus the time the request and a long answer take on the line at each rate.</source>
+        <translation>Berapa lama setiap permintaan menunggu, ditambah waktu yang dipakai permintaan dan jawaban panjang di jalur pada setiap laju.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Even</source>
+        <translation>Ge&amp;nap</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;None</source>
+        <translation>&amp;Tanpa</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Odd</source>
+        <translation>Ganji&amp;l</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>1 stop bit</source>
+        <translation>1 bit stop</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>2 stop bits</source>
+        <translation>2 bit stop</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Target:</source>
+        <translation>Tu&amp;juan:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Baud rates:</source>
+        <translation>Laju &amp;baud:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parity, stop bits:</source>
+        <translation>Paritas, bit stop:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unit i&amp;ds:</source>
+        <translation>I&amp;d unit:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T&amp;imeout:</source>
+        <translation>Batas &amp;waktu:</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Setting</source>
+        <translation>Pengaturan</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Unit</source>
+        <translation>Unit</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Hasil</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Put the port with the selected setting that worked (or the first) in the unit scan&apos;s target.</source>
+        <translation>Pasang port dengan pengaturan terpilih yang berhasil (atau yang pertama) sebagai tujuan pemindaian unit.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>The unit scan&apos;s target is now %1.</source>
+        <translation>Tujuan pemindaian unit sekarang %1.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 of %2 tried, %3 answered, about %4 left</source>
+        <translation>%1 dari %2 dicoba, %3 menjawab, sekitar %4 lagi</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Asks the read on every setting until CRC-valid answers come back. Never writes.</source>
+        <translation>Menanyakan baca itu pada setiap pengaturan sampai jawaban dengan CRC sah kembali. Tidak pernah menulis.</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Give the serial port, e.g. rtu:///dev/ttyUSB0.</source>
+        <translation>Berikan port serial, mis. rtu:///dev/ttyUSB0.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Baud rates: give at least one, e.g. 9600, 19200.</source>
+        <translation>Laju baud: berikan paling sedikit satu, mis. 9600, 19200.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Baud rates: &quot;%1&quot; is not a baud rate.</source>
+        <translation>Laju baud: &quot;%1&quot; bukan laju baud.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Unit ids: &quot;%1&quot; is not an id from 1 to 247.</source>
+        <translation>Id unit: &quot;%1&quot; bukan id dari 1 sampai 247.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Choose at least one parity and one stop-bit count.</source>
+        <translation>Pilih paling sedikit satu paritas dan satu jumlah bit stop.</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>works: %1</source>
+        <translation>berhasil: %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 (unit %2)</source>
+        <translation>%1 (unit %2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The port failed: %1</source>
+        <translation>Port gagal: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>No setting answered (%n tried).</source>
+        <translation>
+            <numerusform>Tidak ada pengaturan yang menjawab (%n dicoba).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Answered: %1.</source>
+        <translation>Menjawab: %1.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stopped. %1</source>
+        <translation>Dihentikan. %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Time limit reached. %1</source>
+        <translation>Batas waktu tercapai. %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Several parities answered: this line does not carry the parity bit (a pseudo terminal, or a converter that ignores it), so the device&apos;s parity cannot be told here.</source>
+        <translation>Beberapa paritas menjawab: jalur ini tidak membawa bit paritas (terminal semu, atau konverter yang mengabaikannya), jadi paritas perangkat tidak dapat ditentukan di sini.</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::LinkController</name>
     <message>
         <location filename="../../ui/link/linkcontroller.cpp" line="+113"/>
@@ -5251,7 +5461,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/scandialog.cpp" line="+38"/>
+        <location filename="../../ui/discovery/scandialog.cpp" line="+39"/>
         <location line="+1"/>
         <source> ms</source>
         <translation> md</translation>
@@ -5285,6 +5495,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>Timi&amp;ng…</source>
         <translation>Ukur wa&amp;ktu…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Seria&amp;l settings…</source>
+        <translation>Pengaturan seria&amp;l…</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -5397,7 +5612,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Ukur ketahanan unit terpilih saat ditanya: jeda terpendek antarpermintaan, pipelining, klien sekaligus, baca terbesar; beserta pengaturan yang disarankan.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+4"/>
+        <source>On a serial port: try baud rates, parities and stop bits with the read above until a unit answers.</source>
+        <translation>Pada port serial: coba laju baud, paritas, dan bit stop dengan baca di atas sampai sebuah unit menjawab.</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Asks every id the read above, one at a time, and says what each did.</source>
         <translation>Menanyai setiap id dengan pembacaan di atas, satu per satu, dan menyebutkan apa yang dilakukan masing-masing.</translation>
     </message>
@@ -5442,7 +5662,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1: %2 dari %3 id ditanyai dalam %4, %5 ditemukan.</translation>
     </message>
     <message numerus="yes">
-        <location line="+95"/>
+        <location line="+114"/>
         <source>%n watch definition(s) copied to the clipboard.</source>
         <translation>
             <numerusform>%n definisi pantauan disalin ke papan klip.</numerusform>

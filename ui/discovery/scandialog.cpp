@@ -1,5 +1,6 @@
 #include "scandialog.h"
 
+#include "linescandialog.h"
 #include "mapscandialog.h"
 #include "scanresultmodel.h"
 #include "scanform.h"
@@ -43,6 +44,7 @@ ScanDialog::ScanDialog(QWidget *parent)
     , m_add(new QPushButton(tr("&Add as watches"), this))
     , m_map(new QPushButton(tr("&Map unit\u2026"), this))
     , m_timing(new QPushButton(tr("Timi&ng\u2026"), this))
+    , m_line(new QPushButton(tr("Seria&l settings\u2026"), this))
     , m_progress(new QProgressBar(this))
     , m_status(new QLabel(this))
     , m_table(new QTableView(this))
@@ -127,6 +129,9 @@ ScanDialog::ScanDialog(QWidget *parent)
     m_timing->setToolTip(tr("Measure how the selected unit copes with being asked: the shortest gap between requests, "
                             "pipelining, clients at once, the largest read; with the settings that follow."));
     buttons->addButton(m_timing, QDialogButtonBox::ActionRole);
+    m_line->setObjectName(QStringLiteral("scanLineSettings"));
+    m_line->setToolTip(tr("On a serial port: try baud rates, parities and stop bits with the read above until a unit answers."));
+    buttons->addButton(m_line, QDialogButtonBox::ActionRole);
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -142,6 +147,8 @@ ScanDialog::ScanDialog(QWidget *parent)
     connect(m_add, &QPushButton::clicked, this, [this] { Q_EMIT watchesRequested(watches()); });
     connect(m_map, &QPushButton::clicked, this, &ScanDialog::mapSelectedUnit);
     connect(m_timing, &QPushButton::clicked, this, &ScanDialog::timeSelectedUnit);
+    connect(m_line, &QPushButton::clicked, this, &ScanDialog::findLineSettings);
+    connect(m_target, &QLineEdit::textChanged, this, &ScanDialog::updateButtons);
     connect(buttons, &QDialogButtonBox::rejected, this, &ScanDialog::reject);
     connect(m_scanner, &UnitScanner::probed, m_model, &ScanResultModel::append);
     connect(m_scanner, &UnitScanner::progressChanged, this, &ScanDialog::onProgress);
@@ -273,6 +280,8 @@ void ScanDialog::updateButtons()
     m_add->setEnabled(found);
     m_map->setEnabled(found && !running);
     m_timing->setEnabled(found && !running);
+    const LinkUrl::Result target = LinkUrl::parse(m_target->text().trimmed());
+    m_line->setEnabled(!running && target.url && target.url->isSerial());
     for (QWidget *w : {static_cast<QWidget *>(m_target), static_cast<QWidget *>(m_first), static_cast<QWidget *>(m_last),
                        static_cast<QWidget *>(m_function), static_cast<QWidget *>(m_address), static_cast<QWidget *>(m_quantity),
                        static_cast<QWidget *>(m_timeout), static_cast<QWidget *>(m_gap)})
@@ -340,6 +349,23 @@ TimingScanDialog *ScanDialog::timeSelectedUnit()
     m_timingDialog->raise();
     m_timingDialog->activateWindow();
     return m_timingDialog;
+}
+
+LineScanDialog *ScanDialog::findLineSettings()
+{
+    const LinkUrl::Result target = LinkUrl::parse(m_target->text().trimmed());
+    if (!target.url || !target.url->isSerial())
+        return nullptr;
+    if (!m_lineDialog) {
+        m_lineDialog = new LineScanDialog(this);
+        connect(m_lineDialog, &LineScanDialog::settingChosen, this, [this](const LinkUrl &url) { m_target->setText(url.toString()); });
+    }
+    if (!m_lineDialog->isRunning())
+        m_lineDialog->setTarget(*target.url, quint8(m_function->currentData().toInt()), quint16(m_address->value()));
+    m_lineDialog->show();
+    m_lineDialog->raise();
+    m_lineDialog->activateWindow();
+    return m_lineDialog;
 }
 
 void ScanDialog::copyWatches()

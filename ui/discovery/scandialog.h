@@ -18,6 +18,7 @@ class QTableView;
 
 namespace mbscope {
 
+class LineScanDialog;
 class MapScanDialog;
 class TimingScanDialog;
 class ScanResultModel;
@@ -53,6 +54,9 @@ public Q_SLOTS:
     // Opens Time a unit on the selected found unit (the first found without a selection), asking
     // the read the scan asked.
     TimingScanDialog *timeSelectedUnit();
+    // Opens Find a serial line's settings on the target (a serial port); the setting chosen there
+    // becomes the target.
+    LineScanDialog *findLineSettings();
 
 Q_SIGNALS:
     void watchesRequested(const QList<mbscope::WatchDefinition> &watches);
@@ -83,6 +87,8 @@ private:
     QPushButton *m_add;
     QPushButton *m_map;
     QPushButton *m_timing;
+    QPushButton *m_line;
+    LineScanDialog *m_lineDialog = nullptr;
     MapScanDialog *m_mapDialog = nullptr;
     TimingScanDialog *m_timingDialog = nullptr;
     [[nodiscard]] int chosenFoundRow() const;

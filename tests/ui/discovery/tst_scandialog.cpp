@@ -6,6 +6,7 @@
 // simulator that maps the same.
 
 #include "discovery/mapresulttree.h"
+#include "discovery/linescandialog.h"
 #include "discovery/mapscandialog.h"
 #include "discovery/scandialog.h"
 #include "discovery/timingresulttree.h"
@@ -25,7 +26,9 @@
 #include <QtCore/QJsonObject>
 #include <QtGui/QAction>
 #include <QtGui/QClipboard>
+#include <QtCore/QProcess>
 #include <QtCore/QTemporaryDir>
+#include <QtWidgets/QTreeWidget>
 #include <QtTest/QAbstractItemModelTester>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
@@ -52,6 +55,7 @@ private slots:
     void toolsMenuOpensIt();
     void mapUnitClonesIt();
     void timingOfAFoundUnit();
+    void serialSettingsFound();
     void accessKeysAreUnique_data();
     void accessKeysAreUnique();
 
@@ -328,6 +332,79 @@ void TestScanDialog::timingOfAFoundUnit()
         timing->grab().save(shot);
 }
 
+// Serial settings: the simulated Arduino at 19200 8E1 behind tests/peers/line_harness.py (two
+// ptys relayed only when the client's baud rate and stop bits are the device's); the dialog finds
+// 19200 with every parity (a pty carries no parity bit, which it says), "Use this setting" makes
+// it the unit scan's target, and the unit scan then finds unit 1 through it.
+void TestScanDialog::serialSettingsFound()
+{
+    QProcess harness;
+    harness.start(QStringLiteral("/usr/bin/python3"),
+                  {QStringLiteral(MBSCOPE_TEST_DATA_DIR "/../peers/line_harness.py"), QStringLiteral("--baud"), QStringLiteral("19200"),
+                   QStringLiteral("--stop"), QStringLiteral("1")});
+    QVERIFY2(harness.waitForStarted(5000), qPrintable(harness.errorString()));
+    QTRY_VERIFY_WITH_TIMEOUT(harness.canReadLine(), 10000);
+    const QString where = QString::fromUtf8(harness.readLine()).trimmed(); // LISTENING client=A device=B
+    QVERIFY2(where.startsWith(QLatin1String("LISTENING")), qPrintable(where));
+    const QString client = where.section(QLatin1Char(' '), 1, 1).section(QLatin1Char('='), 1);
+    const QString device = where.section(QLatin1Char(' '), 2, 2).section(QLatin1Char('='), 1);
+    EmbeddedSimulator arduino;
+    const EmbeddedSimulator::Started started =
+        arduino.start(QStringLiteral("arduino-rs485"), QStringLiteral("rtu://%1?baud=19200&parity=E&stop=1").arg(device));
+    QVERIFY2(started.ok, qPrintable(started.error));
+
+    ScanDialog dialog;
+    auto *lineButton = dialog.findChild<QPushButton *>(QStringLiteral("scanLineSettings"));
+    dialog.setTarget(m_url);
+    QVERIFY(!lineButton->isEnabled()); // rtu-tcp is no serial port
+    dialog.setTarget(*LinkUrl::parse(QStringLiteral("rtu://") + client).url);
+    QVERIFY(lineButton->isEnabled());
+    dialog.show();
+    QTest::mouseClick(lineButton, Qt::LeftButton);
+    auto *line = dialog.findChild<LineScanDialog *>();
+    QVERIFY(line && line->isVisible());
+    line->findChild<QLineEdit *>(QStringLiteral("lineBauds"))->setText(QStringLiteral("9600, 19200, x"));
+    QVERIFY(!line->settings());
+    QVERIFY(line->findChild<QLabel *>(QStringLiteral("lineStatus"))->text().contains(QLatin1String("is not a baud rate")));
+    line->findChild<QLineEdit *>(QStringLiteral("lineBauds"))->setText(QStringLiteral("9600, 19200"));
+    line->findChild<QLineEdit *>(QStringLiteral("lineUnits"))->setText(QStringLiteral("1"));
+    auto *use = line->findChild<QPushButton *>(QStringLiteral("lineUseSetting"));
+    QVERIFY(!use->isEnabled());
+    QSignalSpy finished(line, &LineScanDialog::scanFinished);
+    QTest::mouseClick(line->findChild<QPushButton *>(QStringLiteral("lineStart")), Qt::LeftButton);
+    QVERIFY(!finished.isEmpty() || finished.wait(60000));
+    QCOMPARE(finished.first().first().value<ScanEnd>(), ScanEnd::Completed);
+    QCOMPARE(line->trials().size(), 2 * 3 * 2);
+    QCOMPARE(line->findChild<QTreeWidget *>(QStringLiteral("lineTrials"))->topLevelItemCount(), 12);
+    QStringList working;
+    for (const LineTrial &t : line->trials()) {
+        if (t.works())
+            working.append(t.settingText());
+    }
+    QCOMPARE(working, (QStringList{QStringLiteral("19200 8E1"), QStringLiteral("19200 8N1"), QStringLiteral("19200 8O1")}));
+    const QString status = line->findChild<QLabel *>(QStringLiteral("lineStatus"))->text();
+    QVERIFY2(status.contains(QLatin1String("19200 8E1 (unit 1)")) && status.contains(QLatin1String("parity bit")), qPrintable(status));
+    if (const QString shot = qEnvironmentVariable("MBSCOPE_LINE_SCREENSHOT"); !shot.isEmpty()) {
+        QTest::qWait(50); // the status line's new height laid out
+        line->grab().save(shot);
+    }
+
+    QTest::mouseClick(use, Qt::LeftButton);
+    const std::optional<UnitScanSettings> s = dialog.settings();
+    QVERIFY(s);
+    QCOMPARE(s->url.serial.baud, 19200);
+    QCOMPARE(s->url.serial.parity, 'E');
+    QCOMPARE(s->url.serial.stopBits, 1);
+    line->close();
+    dialog.findChild<QSpinBox *>(QStringLiteral("scanLastUnit"))->setValue(2);
+    QSignalSpy scanned(&dialog, &ScanDialog::scanFinished);
+    dialog.start();
+    QVERIFY(scanned.wait(20000));
+    QCOMPARE(dialog.model()->probes().first().kind, UnitProbeKind::Answers);
+    harness.closeWriteChannel();
+    harness.waitForFinished(5000);
+}
+
 void TestScanDialog::accessKeysAreUnique_data()
 {
     QTest::addColumn<QString>("language");
@@ -351,6 +428,11 @@ void TestScanDialog::accessKeysAreUnique()
         map.show();
         QVERIFY(QTest::qWaitForWindowExposed(&map));
         clashes = guitest::mnemonicClashes(&map);
+        QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
+        LineScanDialog line;
+        line.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&line));
+        clashes = guitest::mnemonicClashes(&line);
         QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QLatin1Char('\n'))));
         TimingScanDialog timing;
         timing.show();
