@@ -221,7 +221,27 @@
 <context>
     <name>ScanForm</name>
     <message>
-        <location filename="../../ui/discovery/scanform.cpp" line="+19"/>
+        <location filename="../../ui/discovery/scanform.cpp" line="+26"/>
+        <source>01 Read Coils</source>
+        <translation>01 Baca Coil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>02 Read Discrete Inputs</source>
+        <translation>02 Baca Input Diskret</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>03 Read Holding Registers</source>
+        <translation>03 Baca Register Holding</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>04 Read Input Registers</source>
+        <translation>04 Baca Register Input</translation>
+    </message>
+    <message>
+        <location line="+36"/>
         <source>%1 s</source>
         <translation>%1 dtk</translation>
     </message>
@@ -2806,7 +2826,7 @@
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
         <source>Setting</source>
         <translation>Pengaturan</translation>
     </message>
@@ -2841,7 +2861,7 @@
         <translation>Menanyakan baca itu pada setiap pengaturan sampai jawaban dengan CRC sah kembali. Tidak pernah menulis.</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+18"/>
         <source>Give the serial port, e.g. rtu:///dev/ttyUSB0.</source>
         <translation>Berikan port serial, mis. rtu:///dev/ttyUSB0.</translation>
     </message>
@@ -3434,7 +3454,7 @@
         <translation>Tu&amp;juan:</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+4"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
@@ -3454,7 +3474,7 @@
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+9"/>
         <source>Save the map as a device profile that mbscope simulate --profile serves: the unit cloned into the simulator, to test against without the hardware.</source>
         <translation>Simpan peta sebagai profil perangkat yang dilayani mbscope simulate --profile: unit itu dikloning ke simulator, untuk diuji tanpa perangkat kerasnya.</translation>
     </message>
@@ -3469,12 +3489,12 @@
         <translation>Membaca alamat setiap tabel (eksepsi 02 berarti alamat itu tidak ada). Tidak pernah menulis.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+17"/>
         <source>Give the link of the unit, e.g. tcp://192.168.1.10:502.</source>
         <translation>Berikan link unit tersebut, mis. tcp://192.168.1.10:502.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>Choose a table or the optional functions: there is nothing to scan.</source>
         <translation>Pilih sebuah tabel atau fungsi opsional: tidak ada yang bisa dipindai.</translation>
     </message>
@@ -5512,27 +5532,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Link yang dipindai. Pemindaian membuka koneksinya sendiri; koneksi jendela tidak diganggu.</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>01 Read Coils</source>
-        <translation>01 Baca Coil</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>02 Read Discrete Inputs</source>
-        <translation>02 Baca Input Diskret</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>03 Read Holding Registers</source>
-        <translation>03 Baca Register Holding</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>04 Read Input Registers</source>
-        <translation>04 Baca Register Input</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>Every id is asked this read: a scan never writes.</source>
         <translation>Setiap id ditanyai pembacaan ini: pemindaian tidak pernah menulis.</translation>
     </message>
@@ -5577,7 +5577,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Tu&amp;juan:</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+2"/>
         <source>&amp;Unit ids:</source>
         <translation>Id &amp;unit:</translation>
     </message>
@@ -5592,7 +5592,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+19"/>
         <source>Watch definitions of the selected found units (or of every found unit) as JSON on the clipboard.</source>
         <translation>Definisi pantauan unit terpilih yang ditemukan (atau semua unit yang ditemukan) sebagai JSON di papan klip.</translation>
     </message>
@@ -5622,12 +5622,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Menanyai setiap id dengan pembacaan di atas, satu per satu, dan menyebutkan apa yang dilakukan masing-masing.</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+25"/>
         <source>Give the link to scan, e.g. tcp://192.168.1.10:502.</source>
         <translation>Berikan link yang akan dipindai, mis. tcp://192.168.1.10:502.</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+50"/>
         <source>%1 of %2 ids asked, %3 found, about %4 left</source>
         <translation>%1 dari %2 id ditanyai, %3 ditemukan, sekitar %4 lagi</translation>
     </message>
@@ -7197,27 +7197,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Link unit tersebut. Pemindaian membuka sambungannya sendiri.</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>01 Read Coils</source>
-        <translation>01 Baca Coil</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>02 Read Discrete Inputs</source>
-        <translation>02 Baca Input Diskret</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>03 Read Holding Registers</source>
-        <translation>03 Baca Register Holding</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>04 Read Input Registers</source>
-        <translation>04 Baca Register Input</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>The read asked throughout: a timing scan never writes.</source>
         <translation>Baca yang ditanyakan sepanjang pemindaian: pengukuran waktu tidak pernah menulis.</translation>
     </message>
@@ -7272,7 +7252,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Tu&amp;juan:</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+1"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
@@ -7292,7 +7272,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+10"/>
         <source>The recommended settings as text: a watch link&apos;s gapMs and timeoutMs, mbscope&apos;s --timeout and Telegraf&apos;s modbus input.</source>
         <translation>Pengaturan yang disarankan sebagai teks: gapMs dan timeoutMs link pantauan, --timeout mbscope, dan input modbus Telegraf.</translation>
     </message>
@@ -7307,12 +7287,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Menanyakan baca itu berulang-ulang, dengan jeda makin pendek, dan mengatakan apa yang sanggup dilayani unit. Tidak pernah menulis.</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+19"/>
         <source>Give the link of the unit, e.g. tcp://192.168.1.10:502.</source>
         <translation>Berikan link unit tersebut, mis. tcp://192.168.1.10:502.</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+18"/>
         <source>Gaps: &quot;%1&quot; is not a number of milliseconds from 0 to 60000.</source>
         <translation>Jeda: &quot;%1&quot; bukan bilangan milidetik dari 0 sampai 60000.</translation>
     </message>

@@ -100,10 +100,6 @@ LineScanDialog::LineScanDialog(QWidget *parent)
     m_progress->setObjectName(QStringLiteral("lineProgress"));
     m_status->setObjectName(QStringLiteral("lineStatus"));
     m_status->setWordWrap(true);
-    auto *run = new QHBoxLayout;
-    run->addWidget(m_start);
-    run->addWidget(m_stop);
-    run->addWidget(m_progress, 1);
 
     m_list->setObjectName(QStringLiteral("lineTrials"));
     m_list->setColumnCount(3);
@@ -121,7 +117,7 @@ LineScanDialog::LineScanDialog(QWidget *parent)
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
-    layout->addLayout(run);
+    layout->addLayout(ScanForm::runRow(m_start, m_stop, m_progress));
     layout->addWidget(m_status);
     layout->addWidget(m_list, 1);
     layout->addWidget(buttons);
@@ -163,33 +159,26 @@ void LineScanDialog::setTarget(const LinkUrl &url, quint8 function, quint16 addr
     m_ran.address = address;
 }
 
-void LineScanDialog::showProblem(const QString &text)
-{
-    m_status->setText(QStringLiteral("<span style=\"color:#c0392b\">%1</span>").arg(text.toHtmlEscaped()));
-}
-
 std::optional<LineScanSettings> LineScanDialog::settings()
 {
-    const LinkUrl::Result parsed = LinkUrl::parse(m_target->text().trimmed());
-    if (!parsed.url) {
-        showProblem(m_target->text().trimmed().isEmpty() ? tr("Give the serial port, e.g. rtu:///dev/ttyUSB0.") : parsed.error);
+    const std::optional<LinkUrl> url = ScanForm::target(m_target, m_status, tr("Give the serial port, e.g. rtu:///dev/ttyUSB0."));
+    if (!url)
         return std::nullopt;
-    }
     LineScanSettings s;
-    s.url = *parsed.url;
+    s.url = *url;
     s.function = m_ran.function;
     s.address = m_ran.address;
     QString bad;
     const std::optional<QList<int>> bauds = numberList(m_bauds->text(), 50, 4000000, &bad);
     if (!bauds || bauds->isEmpty()) {
-        showProblem(bauds ? tr("Baud rates: give at least one, e.g. 9600, 19200.")
+        ScanForm::showProblem(m_status, bauds ? tr("Baud rates: give at least one, e.g. 9600, 19200.")
                           : tr("Baud rates: \"%1\" is not a baud rate.").arg(bad));
         return std::nullopt;
     }
     s.bauds = *bauds;
     const std::optional<QList<int>> units = numberList(m_units->text(), 1, 247, &bad);
     if (!units) {
-        showProblem(tr("Unit ids: \"%1\" is not an id from 1 to 247.").arg(bad));
+        ScanForm::showProblem(m_status, tr("Unit ids: \"%1\" is not an id from 1 to 247.").arg(bad));
         return std::nullopt;
     }
     s.units.clear();
@@ -206,13 +195,13 @@ std::optional<LineScanSettings> LineScanDialog::settings()
             s.stopBits.append(i + 1);
     }
     if (s.parities.isEmpty() || s.stopBits.isEmpty()) {
-        showProblem(tr("Choose at least one parity and one stop-bit count."));
+        ScanForm::showProblem(m_status, tr("Choose at least one parity and one stop-bit count."));
         return std::nullopt;
     }
     s.timeoutMs = m_timeout->value();
     s.stopAtFirst = m_first->isChecked();
     if (const QString problem = s.problem(); !problem.isEmpty()) {
-        showProblem(problem);
+        ScanForm::showProblem(m_status, problem);
         return std::nullopt;
     }
     return s;
@@ -269,7 +258,7 @@ void LineScanDialog::summarise(ScanEnd end)
     m_progress->setRange(0, 1);
     m_progress->setValue(1);
     if (end == ScanEnd::LinkError && working.isEmpty()) {
-        showProblem(tr("The port failed: %1").arg(m_trials.isEmpty() ? m_ran.url.toString() : m_trials.constLast().probe.summary()));
+        ScanForm::showProblem(m_status, tr("The port failed: %1").arg(m_trials.isEmpty() ? m_ran.url.toString() : m_trials.constLast().probe.summary()));
         return;
     }
     QString text = working.isEmpty() ? tr("No setting answered (%n tried).", nullptr, int(m_trials.size()))

@@ -52,7 +52,6 @@ private:
     void onTried(const LineTrial &trial);
     void summarise(ScanEnd end);
     void updateButtons();
-    void showProblem(const QString &text);
 
     LineScanner *m_scanner;
     QTreeWidget *m_list;

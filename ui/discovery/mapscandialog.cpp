@@ -83,29 +83,20 @@ MapScanDialog::MapScanDialog(QWidget *parent)
 
     auto *form = new QFormLayout;
     form->addRow(tr("&Target:"), m_target);
-    const auto row = [this, form](const QString &text, QWidget *buddy, QLayout *fields) {
-        auto *label = new QLabel(text, this);
-        label->setBuddy(buddy);
-        form->addRow(label, fields);
-    };
     auto *unitRow = new QHBoxLayout;
     unitRow->addWidget(m_unit);
     unitRow->addStretch();
-    row(tr("&Unit:"), m_unit, unitRow);
-    row(tr("Add&resses:"), m_first, addresses);
+    ScanForm::addRow(this, form, tr("&Unit:"), m_unit, unitRow);
+    ScanForm::addRow(this, form, tr("Add&resses:"), m_first, addresses);
     form->addRow(tr("Tables:"), tables);
     form->addRow(QString(), m_optional);
-    row(tr("T&imeout:"), m_timeout, timing);
+    ScanForm::addRow(this, form, tr("T&imeout:"), m_timeout, timing);
 
     m_start->setObjectName(QStringLiteral("mapStart"));
     m_stop->setObjectName(QStringLiteral("mapStop"));
     m_progress->setObjectName(QStringLiteral("mapProgress"));
     m_status->setObjectName(QStringLiteral("mapStatus"));
     m_status->setWordWrap(true);
-    auto *run = new QHBoxLayout;
-    run->addWidget(m_start);
-    run->addWidget(m_stop);
-    run->addWidget(m_progress, 1);
 
     m_save->setObjectName(QStringLiteral("mapSaveDraft"));
     m_save->setToolTip(tr("Save the map as a device profile that mbscope simulate --profile serves: "
@@ -118,7 +109,7 @@ MapScanDialog::MapScanDialog(QWidget *parent)
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
-    layout->addLayout(run);
+    layout->addLayout(ScanForm::runRow(m_start, m_stop, m_progress));
     layout->addWidget(m_status);
     layout->addWidget(m_tree, 1);
     layout->addWidget(buttons);
@@ -145,21 +136,13 @@ void MapScanDialog::setTarget(const LinkUrl &url, quint8 unit)
     m_unit->setValue(unit);
 }
 
-void MapScanDialog::showProblem(const QString &text)
-{
-    m_status->setText(QStringLiteral("<span style=\"color:#c0392b\">%1</span>").arg(text.toHtmlEscaped()));
-}
-
 std::optional<MapScanSettings> MapScanDialog::settings()
 {
-    const LinkUrl::Result parsed = LinkUrl::parse(m_target->text().trimmed());
-    if (!parsed.url) {
-        showProblem(m_target->text().trimmed().isEmpty() ? tr("Give the link of the unit, e.g. tcp://192.168.1.10:502.")
-                                                         : parsed.error);
+    const std::optional<LinkUrl> url = ScanForm::target(m_target, m_status, tr("Give the link of the unit, e.g. tcp://192.168.1.10:502."));
+    if (!url)
         return std::nullopt;
-    }
     MapScanSettings s;
-    s.url = *parsed.url;
+    s.url = *url;
     s.unit = quint8(m_unit->value());
     s.firstAddress = m_first->value();
     s.lastAddress = m_last->value();
@@ -174,11 +157,11 @@ std::optional<MapScanSettings> MapScanDialog::settings()
     s.gapMs = m_gap->value();
     s.maxRequests = m_maxRequests->value();
     if (s.functions.isEmpty() && !s.optionalFunctions) {
-        showProblem(tr("Choose a table or the optional functions: there is nothing to scan."));
+        ScanForm::showProblem(m_status, tr("Choose a table or the optional functions: there is nothing to scan."));
         return std::nullopt;
     }
     if (const QString problem = s.problem(); !problem.isEmpty()) {
-        showProblem(problem);
+        ScanForm::showProblem(m_status, problem);
         return std::nullopt;
     }
     return s;
@@ -217,7 +200,7 @@ void MapScanDialog::start()
     case ScanEnd::LinkError: how = tr("The link failed"); break;
     }
     if (end == ScanEnd::LinkError && found == 0)
-        showProblem(tr("The link failed: %1 cannot be reached.").arg(s->url.toString()));
+        ScanForm::showProblem(m_status, tr("The link failed: %1 cannot be reached.").arg(s->url.toString()));
     else
         m_status->setText(tr("%1: %n address(es) found in %2 requests.", nullptr, found)
                               .arg(how)
@@ -261,7 +244,7 @@ bool MapScanDialog::saveDraft(const QString &path)
     QSaveFile file(path);
     const QByteArray json = ProfileDraft::toJson(*m_map, QFileInfo(path).completeBaseName(), m_mapTarget);
     if (!file.open(QIODevice::WriteOnly) || file.write(json) != json.size() || !file.commit()) {
-        showProblem(tr("Cannot save %1: %2").arg(QDir::toNativeSeparators(path), file.errorString()));
+        ScanForm::showProblem(m_status, tr("Cannot save %1: %2").arg(QDir::toNativeSeparators(path), file.errorString()));
         return false;
     }
     m_status->setText(tr("Saved %1: mbscope simulate --profile %1 serves this unit.").arg(QDir::toNativeSeparators(path)));

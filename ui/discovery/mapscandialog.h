@@ -59,7 +59,6 @@ private:
     void onProgress(const ScanProgress &progress);
     void chooseDraftFile();
     void updateButtons();
-    void showProblem(const QString &text);
 
     MapScanner *m_scanner;
     MapResultTree *m_tree;

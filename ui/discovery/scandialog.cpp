@@ -55,11 +55,7 @@ ScanDialog::ScanDialog(QWidget *parent)
     m_target->setPlaceholderText(QStringLiteral("tcp://192.168.1.10:502, rtu-tcp://host:4001, rtu:///dev/ttyUSB0?baud=9600"));
     m_target->setToolTip(tr("The link to scan. The scan opens a connection of its own; the window's connection is left alone."));
     m_function->setObjectName(QStringLiteral("scanFunction"));
-    m_function->addItem(tr("01 Read Coils"), 1);
-    m_function->addItem(tr("02 Read Discrete Inputs"), 2);
-    m_function->addItem(tr("03 Read Holding Registers"), 3);
-    m_function->addItem(tr("04 Read Input Registers"), 4);
-    m_function->setCurrentIndex(2);
+    ScanForm::addReadFunctions(m_function);
     m_function->setToolTip(tr("Every id is asked this read: a scan never writes."));
     m_first->setToolTip(tr("1-247 on a serial line or a serial device server; 0 and 248-255 only over Modbus TCP."));
     m_timeout->setToolTip(tr("How long each id may take to answer."));
@@ -85,24 +81,15 @@ ScanDialog::ScanDialog(QWidget *parent)
     auto *form = new QFormLayout;
     form->addRow(tr("&Target:"), m_target);
     // A row of several fields: the label's mnemonic goes to the first of them.
-    const auto row = [this, form](const QString &text, QWidget *buddy, QLayout *fields) {
-        auto *label = new QLabel(text, this);
-        label->setBuddy(buddy);
-        form->addRow(label, fields);
-    };
-    row(tr("&Unit ids:"), m_first, ids);
-    row(tr("&Read:"), m_function, read);
-    row(tr("T&imeout:"), m_timeout, timing);
+    ScanForm::addRow(this, form, tr("&Unit ids:"), m_first, ids);
+    ScanForm::addRow(this, form, tr("&Read:"), m_function, read);
+    ScanForm::addRow(this, form, tr("T&imeout:"), m_timeout, timing);
 
     m_start->setObjectName(QStringLiteral("scanStart"));
     m_stop->setObjectName(QStringLiteral("scanStop"));
     m_progress->setObjectName(QStringLiteral("scanProgress"));
     m_status->setObjectName(QStringLiteral("scanStatus"));
     m_status->setWordWrap(true);
-    auto *run = new QHBoxLayout;
-    run->addWidget(m_start);
-    run->addWidget(m_stop);
-    run->addWidget(m_progress, 1);
 
     m_table->setObjectName(QStringLiteral("scanResults"));
     m_table->setModel(m_model);
@@ -135,7 +122,7 @@ ScanDialog::ScanDialog(QWidget *parent)
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
-    layout->addLayout(run);
+    layout->addLayout(ScanForm::runRow(m_start, m_stop, m_progress));
     layout->addWidget(m_status);
     layout->addWidget(m_table, 1);
     layout->addWidget(buttons);
@@ -178,21 +165,13 @@ bool ScanDialog::isRunning() const
     return m_scanner->isRunning();
 }
 
-void ScanDialog::showProblem(const QString &text)
-{
-    m_status->setText(QStringLiteral("<span style=\"color:#c0392b\">%1</span>").arg(text.toHtmlEscaped()));
-}
-
 std::optional<UnitScanSettings> ScanDialog::settings()
 {
-    const LinkUrl::Result parsed = LinkUrl::parse(m_target->text().trimmed());
-    if (!parsed.url) {
-        showProblem(m_target->text().trimmed().isEmpty() ? tr("Give the link to scan, e.g. tcp://192.168.1.10:502.")
-                                                         : parsed.error);
+    const std::optional<LinkUrl> url = ScanForm::target(m_target, m_status, tr("Give the link to scan, e.g. tcp://192.168.1.10:502."));
+    if (!url)
         return std::nullopt;
-    }
     UnitScanSettings s;
-    s.url = *parsed.url;
+    s.url = *url;
     s.firstUnit = m_first->value();
     s.lastUnit = m_last->value();
     s.function = quint8(m_function->currentData().toInt());
@@ -201,7 +180,7 @@ std::optional<UnitScanSettings> ScanDialog::settings()
     s.timeoutMs = m_timeout->value();
     s.gapMs = m_gap->value();
     if (const QString problem = s.problem(); !problem.isEmpty()) {
-        showProblem(problem);
+        ScanForm::showProblem(m_status, problem);
         return std::nullopt;
     }
     return s;

@@ -69,7 +69,6 @@ private:
     void onProgress(const ScanProgress &progress);
     void onFinished(ScanEnd end);
     void updateButtons();
-    void showProblem(const QString &text);
 
     UnitScanner *m_scanner;
     ScanResultModel *m_model;

@@ -1,5 +1,12 @@
 #include "scanform.h"
 
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QFormLayout>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QProgressBar>
+#include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
 
 namespace mbscope {
@@ -12,6 +19,45 @@ QSpinBox *ScanForm::spinBox(QWidget *parent, const char *objectName, int low, in
     box->setValue(value);
     box->setSuffix(suffix);
     return box;
+}
+
+void ScanForm::addReadFunctions(QComboBox *box)
+{
+    box->addItem(tr("01 Read Coils"), 1);
+    box->addItem(tr("02 Read Discrete Inputs"), 2);
+    box->addItem(tr("03 Read Holding Registers"), 3);
+    box->addItem(tr("04 Read Input Registers"), 4);
+    box->setCurrentIndex(2);
+}
+
+void ScanForm::addRow(QWidget *parent, QFormLayout *form, const QString &label, QWidget *buddy, QLayout *fields)
+{
+    auto *text = new QLabel(label, parent);
+    text->setBuddy(buddy);
+    form->addRow(text, fields);
+}
+
+QHBoxLayout *ScanForm::runRow(QPushButton *start, QPushButton *stop, QProgressBar *progress)
+{
+    auto *row = new QHBoxLayout;
+    row->addWidget(start);
+    row->addWidget(stop);
+    row->addWidget(progress, 1);
+    return row;
+}
+
+void ScanForm::showProblem(QLabel *status, const QString &text)
+{
+    status->setText(QStringLiteral("<span style=\"color:#c0392b\">%1</span>").arg(text.toHtmlEscaped()));
+}
+
+std::optional<LinkUrl> ScanForm::target(const QLineEdit *target, QLabel *status, const QString &emptyHint)
+{
+    const QString text = target->text().trimmed();
+    const LinkUrl::Result parsed = LinkUrl::parse(text);
+    if (!parsed.url)
+        showProblem(status, text.isEmpty() ? emptyHint : parsed.error);
+    return parsed.url;
 }
 
 QString ScanForm::duration(qint64 ms)

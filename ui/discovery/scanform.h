@@ -1,20 +1,42 @@
 #pragma once
 
+#include "transport/linkurl.h"
+
 #include <QtCore/QCoreApplication>
 #include <QtCore/QString>
 
+#include <optional>
+
+class QComboBox;
+class QFormLayout;
+class QHBoxLayout;
+class QLabel;
+class QLayout;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
 class QSpinBox;
 class QWidget;
 
 namespace mbscope {
 
-// What the scan dialogs share: their number fields and how they say a duration.
+// What the scan dialogs share: their fields, rows and status line, and how they say a duration.
 class ScanForm
 {
     Q_DECLARE_TR_FUNCTIONS(ScanForm)
 public:
     [[nodiscard]] static QSpinBox *spinBox(QWidget *parent, const char *objectName, int low, int high, int value,
                                            const QString &suffix = {});
+    // The four reads (01-04), with the function code as item data; 03 chosen.
+    static void addReadFunctions(QComboBox *box);
+    // A form row of several fields whose label's mnemonic goes to buddy.
+    static void addRow(QWidget *parent, QFormLayout *form, const QString &label, QWidget *buddy, QLayout *fields);
+    // Start, Stop and the progress bar, side by side.
+    [[nodiscard]] static QHBoxLayout *runRow(QPushButton *start, QPushButton *stop, QProgressBar *progress);
+    // The status line in red: what is wrong.
+    static void showProblem(QLabel *status, const QString &text);
+    // The link typed in target; nullopt with the reason (or emptyHint for an empty field) shown.
+    [[nodiscard]] static std::optional<LinkUrl> target(const QLineEdit *target, QLabel *status, const QString &emptyHint);
     // "4.2 s" under a minute, "3 min 20 s" from one.
     [[nodiscard]] static QString duration(qint64 ms);
 };

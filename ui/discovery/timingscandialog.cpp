@@ -42,11 +42,7 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
     m_target->setObjectName(QStringLiteral("timingTarget"));
     m_target->setToolTip(tr("The link of the unit. The scan opens connections of its own."));
     m_function->setObjectName(QStringLiteral("timingFunction"));
-    m_function->addItem(tr("01 Read Coils"), 1);
-    m_function->addItem(tr("02 Read Discrete Inputs"), 2);
-    m_function->addItem(tr("03 Read Holding Registers"), 3);
-    m_function->addItem(tr("04 Read Input Registers"), 4);
-    m_function->setCurrentIndex(2);
+    ScanForm::addReadFunctions(m_function);
     m_function->setToolTip(tr("The read asked throughout: a timing scan never writes."));
     m_gaps->setObjectName(QStringLiteral("timingGaps"));
     m_gaps->setToolTip(tr("Quiet times between requests to try, in milliseconds, from the longest down; "
@@ -78,15 +74,10 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
 
     auto *form = new QFormLayout;
     form->addRow(tr("&Target:"), m_target);
-    const auto row = [this, form](const QString &text, QWidget *buddy, QLayout *fields) {
-        auto *label = new QLabel(text, this);
-        label->setBuddy(buddy);
-        form->addRow(label, fields);
-    };
-    row(tr("&Unit:"), m_unit, unitRow);
-    row(tr("&Gaps:"), m_gaps, gapRow);
-    row(tr("TCP &requests:"), m_pipeline, linkRow);
-    row(tr("T&imeout:"), m_timeout, timeoutRow);
+    ScanForm::addRow(this, form, tr("&Unit:"), m_unit, unitRow);
+    ScanForm::addRow(this, form, tr("&Gaps:"), m_gaps, gapRow);
+    ScanForm::addRow(this, form, tr("TCP &requests:"), m_pipeline, linkRow);
+    ScanForm::addRow(this, form, tr("T&imeout:"), m_timeout, timeoutRow);
 
     m_start->setObjectName(QStringLiteral("timingStart"));
     m_stop->setObjectName(QStringLiteral("timingStop"));
@@ -94,10 +85,6 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
     m_progress->setRange(0, 1);
     m_status->setObjectName(QStringLiteral("timingStatus"));
     m_status->setWordWrap(true);
-    auto *run = new QHBoxLayout;
-    run->addWidget(m_start);
-    run->addWidget(m_stop);
-    run->addWidget(m_progress, 1);
 
     m_copy->setObjectName(QStringLiteral("timingCopySettings"));
     m_copy->setToolTip(tr("The recommended settings as text: a watch link's gapMs and timeoutMs, mbscope's --timeout "
@@ -107,7 +94,7 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
-    layout->addLayout(run);
+    layout->addLayout(ScanForm::runRow(m_start, m_stop, m_progress));
     layout->addWidget(m_status);
     layout->addWidget(m_tree, 1);
     layout->addWidget(buttons);
@@ -138,21 +125,13 @@ void TimingScanDialog::setTarget(const LinkUrl &url, quint8 unit, quint8 functio
     m_address->setValue(address);
 }
 
-void TimingScanDialog::showProblem(const QString &text)
-{
-    m_status->setText(QStringLiteral("<span style=\"color:#c0392b\">%1</span>").arg(text.toHtmlEscaped()));
-}
-
 std::optional<TimingScanSettings> TimingScanDialog::settings()
 {
-    const LinkUrl::Result parsed = LinkUrl::parse(m_target->text().trimmed());
-    if (!parsed.url) {
-        showProblem(m_target->text().trimmed().isEmpty() ? tr("Give the link of the unit, e.g. tcp://192.168.1.10:502.")
-                                                         : parsed.error);
+    const std::optional<LinkUrl> url = ScanForm::target(m_target, m_status, tr("Give the link of the unit, e.g. tcp://192.168.1.10:502."));
+    if (!url)
         return std::nullopt;
-    }
     TimingScanSettings s;
-    s.url = *parsed.url;
+    s.url = *url;
     s.unit = quint8(m_unit->value());
     s.function = quint8(m_function->currentData().toInt());
     s.address = quint16(m_address->value());
@@ -166,18 +145,18 @@ std::optional<TimingScanSettings> TimingScanDialog::settings()
         bool ok = false;
         const int gap = part.trimmed().toInt(&ok);
         if (!ok || gap < 0 || gap > 60000) {
-            showProblem(tr("Gaps: \"%1\" is not a number of milliseconds from 0 to 60000.").arg(part.trimmed()));
+            ScanForm::showProblem(m_status, tr("Gaps: \"%1\" is not a number of milliseconds from 0 to 60000.").arg(part.trimmed()));
             return std::nullopt;
         }
         s.gapsMs.append(gap);
     }
     if (s.gapsMs.isEmpty()) {
-        showProblem(tr("Gaps: give at least one, e.g. 100, 20, 0."));
+        ScanForm::showProblem(m_status, tr("Gaps: give at least one, e.g. 100, 20, 0."));
         return std::nullopt;
     }
     std::sort(s.gapsMs.begin(), s.gapsMs.end(), std::greater<int>());
     if (const QString problem = s.problem(); !problem.isEmpty()) {
-        showProblem(problem);
+        ScanForm::showProblem(m_status, problem);
         return std::nullopt;
     }
     return s;
@@ -207,7 +186,7 @@ void TimingScanDialog::start()
     if (stopped && (!report || report->firstAnswerMs < 0))
         m_status->setText(tr("Stopped before the first answer: nothing was measured."));
     else if (!report || report->firstAnswerMs < 0)
-        showProblem(tr("No good answer from unit %1 on %2: nothing to time.").arg(s->unit).arg(s->url.toString()));
+        ScanForm::showProblem(m_status, tr("No good answer from unit %1 on %2: nothing to time.").arg(s->unit).arg(s->url.toString()));
     else if (stopped)
         m_status->setText(tr("Stopped: the measurements after it were not made."));
     else

@@ -48,7 +48,6 @@ protected:
 
 private:
     void updateButtons();
-    void showProblem(const QString &text);
 
     TimingScanner *m_scanner;
     TimingResultTree *m_tree;
