@@ -13,6 +13,7 @@
 #include <QtNetwork/QTcpSocket>
 
 #include <fcntl.h>
+#include <utility>
 
 namespace mbscope {
 
@@ -125,8 +126,11 @@ void SimConnection::drain()
     const bool mbap = m_endpoint->framing() == Framing::Tcp && !m_endpoint->url().delimited.enabled;
     if (mbap && m_framer->openSkippedRunSize() > 0)
         m_framer->flushOnSilence();
-    const QList<StreamFrame> frames = m_framer->takeFrames();
-    const QList<SkippedBytes> skipped = m_framer->takeSkipped();
+    // The lists are kept from one read to the next (StreamFramer::takeOutput): no list is
+    // allocated per request.
+    QList<StreamFrame> frames = std::exchange(m_frames, {});
+    QList<SkippedBytes> skipped = std::exchange(m_skipped, {});
+    m_framer->takeOutput(frames, skipped);
     // Frames and skipped runs in stream order.
     qsizetype f = 0;
     qsizetype s = 0;
@@ -135,7 +139,7 @@ void SimConnection::drain()
             m_simulator->noteSkipped(m_endpoint, skipped.at(s), m_peer);
             if (mbap) {
                 close(QStringLiteral("invalid MBAP header (protocol id not 0 or length outside 2-254): closed"));
-                return;
+                break;
             }
             ++s;
             continue;
@@ -154,6 +158,10 @@ void SimConnection::drain()
             m_simulator->noteSent(m_endpoint, answer, id);
         });
     }
+    frames.clear();
+    skipped.clear();
+    m_frames = std::move(frames);
+    m_skipped = std::move(skipped);
 }
 
 void SimConnection::close(const QString &reason)

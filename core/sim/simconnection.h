@@ -1,7 +1,9 @@
 #pragma once
 
+#include "protocol/streamframe.h"
 #include "sim/simresponder.h"
 
+#include <QtCore/QList>
 #include <QtCore/QObject>
 #include <QtCore/QString>
 #include <QtCore/QTimer>
@@ -47,6 +49,8 @@ private:
     QTcpSocket *m_socket = nullptr;  // TLS
     SimTcpStream *m_stream = nullptr; // plain TCP
     std::unique_ptr<StreamFramer> m_framer;
+    QList<StreamFrame> m_frames;   // drain()'s lists, kept between reads
+    QList<SkippedBytes> m_skipped;
     SimResponder m_responder;
     QTimer m_idle;
     QTimer m_silence;

@@ -93,6 +93,16 @@ void SimResponder::enqueue(const FaultPlan &plan, qint64 requestNs, Writer write
 {
     if (plan.drop && !plan.closeBefore && !plan.closeAfter)
         return;
+    // The usual answer (one chunk, nothing before it, nothing to wait for) leaves at once, as run()
+    // would send it, without a pending entry.
+    if (!m_running && m_pending.isEmpty() && !plan.drop && !plan.closeBefore && !plan.closeAfter && plan.chunks.size() == 1
+        && requestNs + plan.chunks.first().delayNs <= monotonicNowNs()) {
+        m_running = true; // a writer that re-enters queues behind this answer
+        writer(plan.chunks.first().bytes);
+        m_running = false;
+        arm();
+        return;
+    }
     Pending p;
     p.plan = plan;
     p.writer = std::move(writer);

@@ -17,11 +17,11 @@
 //
 //   bench_simthroughput [--clients 50] [--requests 1000] [--rounds 5] [--server-cpu 0]
 //                       [--client-cpu 1] [--no-pin] [--rows libmodbus,simulate,record]
-//                       [--mbscope PATH]
+//                       [--mbscope PATH] [--compare PATH]
 //
-// --mbscope runs another build of mbscope as the simulator (an older one, for before and after
-// figures in one run). scripts/bench-simthroughput.sh builds Release and runs it; docs in
-// docs/benchmarks.md with figures measured.
+// --mbscope runs another build of mbscope as the simulator; --compare adds a row "simulate
+// (compared)" served by another build (an older one: before and after figures in one run).
+// scripts/bench-simthroughput.sh builds Release and runs it; docs/benchmarks.md has figures.
 #include <QtCore/QCoreApplication>
 #include <QtCore/QDir>
 #include <QtCore/QElapsedTimer>
@@ -52,6 +52,7 @@ struct Options {
     bool simulate = true;
     bool record = false;
     QString mbscope = QStringLiteral(MBSCOPE_EXECUTABLE);
+    QString compare; // another mbscope, a row of its own
 };
 
 bool parse(const QStringList &args, Options *o)
@@ -78,6 +79,8 @@ bool parse(const QStringList &args, Options *o)
             o->clientCpu = v.toInt(&ok);
         else if (a == QLatin1String("--mbscope"))
             o->mbscope = v;
+        else if (a == QLatin1String("--compare"))
+            o->compare = v;
         else if (a == QLatin1String("--rows")) {
             o->libmodbus = o->simulate = o->record = false;
             for (const QString &row : v.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
@@ -96,7 +99,7 @@ bool parse(const QStringList &args, Options *o)
             return false;
     }
     return o->clients >= 1 && o->requests >= 1 && o->rounds >= 1 && o->serverCpu >= 0 && o->clientCpu >= 0
-           && (o->libmodbus || o->simulate || o->record);
+           && (o->libmodbus || o->simulate || o->record || !o->compare.isEmpty());
 }
 
 // A child process pinned to one CPU from before exec (the affinity taskset would set).
@@ -216,7 +219,7 @@ bool runClients(Server &server, const Options &o, int round)
     server.p99.push_back(m.captured(5).toDouble());
     server.cpu.push_back(cpu);
     const long long transactions = m.captured(1).toLongLong();
-    std::printf("round %d  %-18s %10.0f tx/s  p50 %7.1f us  p99 %8.1f us  server CPU %6.2f s (%5.1f us/tx)  errors %s\n",
+    std::printf("round %d  %-20s %10.0f tx/s  p50 %7.1f us  p99 %8.1f us  server CPU %6.2f s (%5.1f us/tx)  errors %s\n",
                 round, qPrintable(server.name), tps, m.captured(4).toDouble(), m.captured(5).toDouble(), cpu,
                 transactions > 0 ? cpu * 1e6 / double(transactions) : 0.0, qPrintable(m.captured(2)));
     std::fflush(stdout);
@@ -231,7 +234,7 @@ int main(int argc, char **argv)
     Options o;
     if (!parse(app.arguments(), &o)) {
         std::fprintf(stderr, "usage: bench_simthroughput [--clients N] [--requests M] [--rounds R] [--server-cpu C] "
-                             "[--client-cpu C] [--no-pin] [--rows libmodbus,simulate,record] [--mbscope PATH]\n");
+                             "[--client-cpu C] [--no-pin] [--rows libmodbus,simulate,record] [--mbscope PATH] [--compare PATH]\n");
         return 2;
     }
     const long cpus = sysconf(_SC_NPROCESSORS_ONLN);
@@ -260,6 +263,8 @@ int main(int argc, char **argv)
         return 2;
     if (o.simulate && !add(QStringLiteral("simulate"), o.mbscope, simulateArgs, simulateReady))
         return 2;
+    if (!o.compare.isEmpty() && !add(QStringLiteral("simulate (compared)"), o.compare, simulateArgs, simulateReady))
+        return 2;
     if (o.record
         && !add(QStringLiteral("simulate --record"), o.mbscope,
                 simulateArgs + QStringList{QStringLiteral("--record"), dir.filePath(QStringLiteral("bench.mbjournal"))},
@@ -284,7 +289,7 @@ int main(int argc, char **argv)
 
     const long long perRound = (long long)o.clients * o.requests;
     std::printf("\nmedians over %d round(s), %lld transactions each\n", o.rounds, perRound);
-    std::printf("%-18s %10s %9s %9s %12s %10s %12s %12s\n", "server", "tx/s", "p50 us", "p99 us", "server CPU s",
+    std::printf("%-20s %10s %9s %9s %12s %10s %12s %12s\n", "server", "tx/s", "p50 us", "p99 us", "server CPU s",
                 "CPU us/tx", "tx/s ratio", "CPU ratio");
     const Server *baseline = o.libmodbus ? servers.front().get() : nullptr;
     for (const auto &server : servers) {
@@ -297,7 +302,7 @@ int main(int argc, char **argv)
             if (median(baseline->cpu) > 0)
                 cpuRatio = QString::number(cpu / median(baseline->cpu), 'f', 2);
         }
-        std::printf("%-18s %10.0f %9.1f %9.1f %12.2f %10.1f %12s %12s\n", qPrintable(server->name), tps, median(server->p50),
+        std::printf("%-20s %10.0f %9.1f %9.1f %12.2f %10.1f %12s %12s\n", qPrintable(server->name), tps, median(server->p50),
                     median(server->p99), cpu, cpu * 1e6 / double(perRound), qPrintable(tpsRatio), qPrintable(cpuRatio));
     }
     if (baseline && servers.size() > 1)
