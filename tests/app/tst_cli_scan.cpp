@@ -261,7 +261,12 @@ void TestCliScan::badInput_data()
     QTest::addColumn<QString>("message");
     QTest::newRow("no target") << QStringList{} << QStringLiteral("no --target given");
     QTest::newRow("unit 0 on rtu") << QStringList{QStringLiteral("--units"), QStringLiteral("0-5")}
-                                   << QStringLiteral("unit 0 is the broadcast address on rtu framing");
+                                   << QStringLiteral("unit 0 is the broadcast address on rtu framing: nobody answers it (its "
+                                                     "unit ids are 1-247: start at 1)");
+    QTest::newRow("all ids on rtu") << QStringList{QStringLiteral("--all-ids")}
+                                    << QStringLiteral("--all-ids asks 0-255, which only an MBAP target (tcp://, tls://, udp://) "
+                                                      "has; on rtu framing the unit ids are 1-247 (0 is the broadcast, which no "
+                                                      "unit answers; 248-255 are reserved): leave --all-ids out to ask 1-247");
     QTest::newRow("ids reversed") << QStringList{QStringLiteral("--units"), QStringLiteral("9-2")}
                                   << QStringLiteral("--units '9-2': the first is above the last");
     QTest::newRow("id 300") << QStringList{QStringLiteral("--units"), QStringLiteral("1-300")}
