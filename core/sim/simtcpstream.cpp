@@ -104,7 +104,9 @@ bool SimTcpStream::write(QByteArrayView bytes)
             if (errno == EAGAIN || errno == EWOULDBLOCK)
                 break;
             closeNow();
-            Q_EMIT disconnected();
+            // Said from the event loop, as QTcpSocket says it: the writer may be the owner's
+            // answer queue in the middle of its work.
+            QMetaObject::invokeMethod(this, &SimTcpStream::disconnected, Qt::QueuedConnection);
             return false;
         }
         if (bytes.isEmpty())

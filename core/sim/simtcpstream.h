@@ -30,7 +30,7 @@ public:
     // side (or the connection failed) after these bytes.
     [[nodiscard]] QByteArray readAll(bool *ended);
     // Sends bytes now, or in order once the descriptor is writable. False when the connection
-    // is lost (disconnected() follows).
+    // is lost (disconnected() follows from the event loop, never inside this call).
     bool write(QByteArrayView bytes);
     // Closes once what is written has left (at once when nothing waits), then disconnected().
     void closeAfterWrites();
