@@ -12,6 +12,7 @@
 #include "discovery/profiledraft.h"
 #include "discovery/scanwatches.h"
 #include "discovery/unitscanner.h"
+#include "protocol/framing.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QCommandLineParser>
@@ -406,6 +407,14 @@ int runScan(const QStringList &arguments)
     if (parser.isSet(allIdsOpt)) {
         if (parser.isSet(unitsOpt)) {
             err << "mbscope scan: --units and --all-ids both say which ids: give one\n";
+            return ExitUsage;
+        }
+        if (const Framing framing = common.url.framing(); framing != Framing::Tcp && framing != Framing::Udp) {
+            // Serial Line V1.02, 2.2: 0 is the broadcast address (no unit answers it), 1-247 are
+            // the units' addresses, 248-255 are reserved. Only MBAP asks 0 and 255 (the server).
+            err << "mbscope scan: --all-ids asks 0-255, which only an MBAP target (tcp://, tls://, udp://) has; on "
+                << framingName(framing) << " framing the unit ids are 1-247 (0 is the broadcast, which no unit answers; "
+                << "248-255 are reserved): leave --all-ids out to ask 1-247\n";
             return ExitUsage;
         }
         settings.firstUnit = 0;

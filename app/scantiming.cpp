@@ -38,8 +38,11 @@ QString text(const TimingScanSettings &s, const TimingReport &r, bool stopped)
     if (r.clientsTried > 0)
         t += QStringLiteral("TCP clients served at once      %1%2\n")
                  .arg(r.clientsServed)
-                 .arg(r.clientsServed == s.maxClients ? QStringLiteral(" (all tried; there may be room for more)")
-                                                      : QStringLiteral(" (client %1 was not served)").arg(r.clientsTried));
+                 .arg(r.oldestDropped ? QStringLiteral(" (client %1 was served by closing client 1: the device knocks its oldest "
+                                                       "client off, as extraClients dropOldest)")
+                                            .arg(r.clientsTried)
+                      : r.clientsServed == s.maxClients ? QStringLiteral(" (all tried; there may be room for more)")
+                                                        : QStringLiteral(" (client %1 was not served)").arg(r.clientsTried));
     if (stopped)
         t += QStringLiteral("\nstopped (Ctrl-C): later measurements were not made\n");
     const int gap = r.recommendedGapMs();
@@ -75,6 +78,9 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, bool stoppe
         {QStringLiteral("pipeline_ok"), r.pipelineOk},
         {QStringLiteral("clients_tried"), r.clientsTried},
         {QStringLiteral("clients_served"), r.clientsServed},
+        {QStringLiteral("clients_extra"), r.clientsTried == 0 || r.clientsServed == r.clientsTried
+                                              ? QStringLiteral("not reached")
+                                              : (r.oldestDropped ? QStringLiteral("drop_oldest") : QStringLiteral("refuse"))},
         {QStringLiteral("stopped"), stopped},
         {QStringLiteral("recommended"),
          QJsonObject{{QStringLiteral("gap_ms"), r.recommendedGapMs()},

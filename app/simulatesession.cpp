@@ -202,6 +202,10 @@ QString SimulateSession::verdictText(const SimLogEntry &entry, const FaultPlan *
         const AduParts response = AduBuilder::parse(entry.response, framingOf(entry.endpoint));
         const quint8 code = response.pdu.size() >= 2 ? quint8(response.pdu.at(1)) : 0;
         text = QStringLiteral("exception %1 %2").arg(code, 2, 16, QLatin1Char('0')).arg(QLatin1String(exceptionName(code)));
+        // Why: a device limit with its figures ("refused by minGapMs: 4.1 ms after the last
+        // request taken, minGapMs is 50"), or what the unit found wrong in the request.
+        if (!entry.reason.isEmpty())
+            text += QStringLiteral(" (%1)").arg(entry.reason);
         break;
     }
     case V::NoAnswer: text = QStringLiteral("no answer (%1)").arg(entry.reason); break;
@@ -210,7 +214,12 @@ QString SimulateSession::verdictText(const SimLogEntry &entry, const FaultPlan *
     case V::Malformed: text = QStringLiteral("malformed: %1").arg(entry.reason); break;
     case V::Garbage: text = QStringLiteral("garbage: %1").arg(entry.reason); break;
     case V::ConnectionOpened: text = QStringLiteral("connection opened"); break;
-    case V::ConnectionRefused: text = QStringLiteral("connection refused: %1").arg(entry.reason); break;
+    case V::ConnectionRefused:
+        // "connection refused by maxClients: 2 client(s) connected already, maxClients is 2"
+        text = entry.reason.startsWith(QLatin1String("refused "))
+                   ? QStringLiteral("connection %1").arg(entry.reason)
+                   : QStringLiteral("connection refused: %1").arg(entry.reason);
+        break;
     case V::ConnectionClosed: text = QStringLiteral("connection closed (%1)").arg(entry.reason); break;
     }
     if (!faults.isEmpty())

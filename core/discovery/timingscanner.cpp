@@ -11,6 +11,7 @@
 #include <QtCore/QSet>
 #include <QtCore/QTimer>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -239,22 +240,49 @@ void TimingScanner::clients(TimingReport &report)
     Q_EMIT step(QStringLiteral("clients at once"));
     // One engine per client, each keeping its connection open: client k is asked while the
     // k - 1 before it are still connected.
-    std::vector<std::unique_ptr<TransactionEngine>> engines;
+    struct Held {
+        std::unique_ptr<TransactionEngine> engine;
+        int opened = 0; // connections made: more than one means the first was closed
+    };
+    std::vector<std::unique_ptr<Held>> held;
+    const QByteArray adu = AduBuilder::complete(readPdu(1), AduOptions{m_settings.url.framing(), m_settings.unit, 1, 0});
+    const auto ask = [&](Held &client) {
+        RequestItem item = RequestItem::forLink(adu, m_settings.url);
+        item.timeoutMs = m_settings.timeoutMs;
+        const std::optional<Transaction> t = client.engine->sendAndWait(item);
+        return t && served(*t);
+    };
     for (int k = 1; k <= m_settings.maxClients && !m_stopRequested; ++k) {
-        auto engine = std::make_unique<TransactionEngine>();
+        auto client = std::make_unique<Held>();
+        client->engine = std::make_unique<TransactionEngine>();
+        Held *c = client.get();
+        connect(c->engine.get(), &TransactionEngine::linkOpened, this, [c] { ++c->opened; });
         EngineOptions options;
         options.batchIntervalMs = 1;
-        engine->setTarget(m_settings.url, options);
-        openAndSettle(*engine, m_settings.url.connectTimeoutMs, settleMs(report));
-        RequestItem item = RequestItem::forLink(AduBuilder::complete(readPdu(1), AduOptions{m_settings.url.framing(), m_settings.unit, 1, 0}),
-                                                m_settings.url);
-        item.timeoutMs = m_settings.timeoutMs;
-        const std::optional<Transaction> t = engine->sendAndWait(item);
+        c->engine->setTarget(m_settings.url, options);
+        openAndSettle(*c->engine, m_settings.url.connectTimeoutMs, settleMs(report));
+        const bool servedNew = ask(*c);
         report.clientsTried = k;
-        if (!t || !served(*t))
+        if (!servedNew)
             break;
         report.clientsServed = k;
-        engines.push_back(std::move(engine));
+        held.push_back(std::move(client));
+        if (held.size() < 2)
+            continue;
+        // A gateway that makes room by closing the client connected longest (extraClients
+        // dropOldest) serves every new client: ask the oldest one again, after the gap the device
+        // needs. Its connection gone (the request fails, or the engine had to connect again),
+        // the one before this client was the last that fit.
+        QEventLoop wait;
+        QTimer::singleShot(std::max(20, report.recommendedGapMs()), &wait, &QEventLoop::quit);
+        wait.exec();
+        Held &oldest = *held.front();
+        const int openedBefore = oldest.opened;
+        if (!ask(oldest) || oldest.opened > openedBefore) {
+            report.clientsServed = k - 1;
+            report.oldestDropped = true;
+            break;
+        }
     }
 }
 

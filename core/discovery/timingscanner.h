@@ -44,6 +44,7 @@ struct TimingReport {
     int pipelineOk = 0;
     int clientsTried = 0;        // 0: not tried (not a TCP link)
     int clientsServed = 0;       // connections answered while all of them stayed open
+    bool oldestDropped = false;  // client clientsTried was served by closing the oldest (dropOldest)
     int largestQuantity = 0;     // the largest read quantity answered at address
     int largestAnswerPdu = 0;    // its answer's PDU size in bytes
 

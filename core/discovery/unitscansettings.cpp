@@ -11,7 +11,8 @@ QString UnitScanSettings::problem() const
     if (firstUnit > lastUnit)
         return QStringLiteral("the first unit id %1 is above the last %2").arg(firstUnit).arg(lastUnit);
     if (firstUnit == 0 && url.framing() != Framing::Tcp && url.framing() != Framing::Udp)
-        return QStringLiteral("unit 0 is the broadcast address on %1 framing: nobody answers it (start at 1)")
+        return QStringLiteral("unit 0 is the broadcast address on %1 framing: nobody answers it (its unit ids are 1-247: "
+                              "start at 1)")
             .arg(framingName(url.framing()));
     if (function < 1 || function > 4)
         return QStringLiteral("function %1 is not a read: a scan asks with 01, 02, 03 or 04").arg(function);

@@ -3,6 +3,8 @@
 #include "checksum.h"
 #include "hexformat.h"
 
+#include <cstring>
+
 namespace mbscope {
 
 namespace {
@@ -13,12 +15,6 @@ constexpr char kHexDigits[] = "0123456789ABCDEF";
 quint16 bigEndian16(QByteArrayView bytes, qsizetype at)
 {
     return quint16(quint8(bytes[at]) << 8 | quint8(bytes[at + 1]));
-}
-
-void appendBigEndian16(QByteArray &out, quint16 value)
-{
-    out.append(char(value >> 8));
-    out.append(char(value & 0xFF));
 }
 
 // The serial framings' payload: unit id then PDU, with room for the check bytes after it.
@@ -46,14 +42,18 @@ int AduBuilder::hexDigitValue(char c)
 
 QByteArray AduBuilder::mbap(QByteArrayView pdu, quint8 unitId, quint16 transactionId, quint16 protocolId)
 {
-    QByteArray out;
-    out.reserve(kMbapHeaderSize + pdu.size());
-    appendBigEndian16(out, transactionId);
-    appendBigEndian16(out, protocolId);
+    // Written in place (one allocation, no append per byte): the simulator frames every answer here.
+    QByteArray out(kMbapHeaderSize + pdu.size(), Qt::Uninitialized);
+    char *p = out.data();
     // The length field counts the unit id and the PDU (TCP/IP V1.0b, 3.1.3).
-    appendBigEndian16(out, quint16(qMin<qsizetype>(pdu.size() + 1, 0xFFFF)));
-    out.append(char(unitId));
-    out.append(pdu.data(), pdu.size());
+    const quint16 length = quint16(qMin<qsizetype>(pdu.size() + 1, 0xFFFF));
+    for (const quint16 field : {transactionId, protocolId, length}) {
+        *p++ = char(field >> 8);
+        *p++ = char(field & 0xFF);
+    }
+    *p++ = char(unitId);
+    if (!pdu.isEmpty())
+        std::memcpy(p, pdu.data(), size_t(pdu.size()));
     return out;
 }
 

@@ -5,10 +5,15 @@
 #include "protocol/mbapframer.h"
 #include "protocol/rtuframer.h"
 #include "sim/simendpoint.h"
+#include "sim/simtcpstream.h"
 #include "sim/simulator.h"
 #include "transport/monotonicclock.h"
 
+#include <QtNetwork/QSslSocket>
 #include <QtNetwork/QTcpSocket>
+
+#include <fcntl.h>
+#include <utility>
 
 namespace mbscope {
 
@@ -38,7 +43,6 @@ SimConnection::SimConnection(Simulator *simulator, SimEndpoint *endpoint, QTcpSo
     : QObject(parent)
     , m_simulator(simulator)
     , m_endpoint(endpoint)
-    , m_socket(socket)
     , m_framer(framerFor(endpoint->url()))
     , m_responder(true, this)
     , m_idle(this)
@@ -46,13 +50,28 @@ SimConnection::SimConnection(Simulator *simulator, SimEndpoint *endpoint, QTcpSo
     , m_peer(peerOf(socket))
     , m_connectedNs(monotonicNowNs())
 {
-    socket->setParent(this);
     // Answers are small and must leave at once, not wait for Nagle's algorithm to gather more.
     socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+    // A plain TCP connection is read and written on its descriptor (SimTcpStream: a third of the
+    // system calls per request); a duplicate of it, so that the QTcpSocket closing its own only
+    // drops that reference (no FIN, no RST). TLS stays with QSslSocket.
+    const int fd = qobject_cast<QSslSocket *>(socket) == nullptr && socket->socketDescriptor() >= 0
+                       ? ::fcntl(int(socket->socketDescriptor()), F_DUPFD_CLOEXEC, 0)
+                       : -1;
+    if (fd >= 0) {
+        socket->abort();
+        socket->deleteLater();
+        m_stream = new SimTcpStream(fd, this);
+        connect(m_stream, &SimTcpStream::readyRead, this, &SimConnection::onReadyRead);
+        connect(m_stream, &SimTcpStream::disconnected, this, &SimConnection::onDisconnected);
+    } else {
+        m_socket = socket;
+        socket->setParent(this);
+        connect(socket, &QTcpSocket::readyRead, this, &SimConnection::onReadyRead);
+        connect(socket, &QTcpSocket::disconnected, this, &SimConnection::onDisconnected);
+    }
     m_idle.setSingleShot(true);
     m_silence.setSingleShot(true);
-    connect(socket, &QTcpSocket::readyRead, this, &SimConnection::onReadyRead);
-    connect(socket, &QTcpSocket::disconnected, this, &SimConnection::onDisconnected);
     connect(&m_silence, &QTimer::timeout, this, &SimConnection::onSilence);
     connect(&m_idle, &QTimer::timeout, this, [this] {
         close(QStringLiteral("idle for %1 ms: closed").arg(m_endpoint->options().idleTimeoutMs));
@@ -61,27 +80,37 @@ SimConnection::SimConnection(Simulator *simulator, SimEndpoint *endpoint, QTcpSo
     if (m_endpoint->options().idleTimeoutMs > 0)
         m_idle.start(m_endpoint->options().idleTimeoutMs);
     // Bytes may have arrived with the connection (a TLS handshake followed by a request).
-    if (socket->bytesAvailable() > 0)
+    if (m_socket && m_socket->bytesAvailable() > 0)
         QMetaObject::invokeMethod(this, &SimConnection::onReadyRead, Qt::QueuedConnection);
 }
 
 SimConnection::~SimConnection() = default;
 
+bool SimConnection::isConnected() const
+{
+    return m_stream ? m_stream->isOpen() : m_socket->state() == QAbstractSocket::ConnectedState;
+}
+
 void SimConnection::onReadyRead()
 {
     if (m_closing)
         return;
-    const QByteArray bytes = m_socket->readAll();
-    if (bytes.isEmpty())
-        return;
-    if (m_endpoint->options().idleTimeoutMs > 0)
-        m_idle.start(m_endpoint->options().idleTimeoutMs);
-    m_framer->feed(bytes, monotonicNowNs());
-    drain();
-    if (!m_closing && m_framer->pendingSize() + m_framer->openSkippedRunSize() > 0)
-        m_silence.start(m_endpoint->options().streamSilenceMs);
-    else
-        m_silence.stop();
+    bool ended = false;
+    const QByteArray bytes = m_stream ? m_stream->readAll(&ended) : m_socket->readAll();
+    if (!bytes.isEmpty()) {
+        if (m_endpoint->options().idleTimeoutMs > 0)
+            m_idle.start(m_endpoint->options().idleTimeoutMs);
+        m_framer->feed(bytes, monotonicNowNs());
+        drain();
+        if (!m_closing && m_framer->pendingSize() + m_framer->openSkippedRunSize() > 0)
+            m_silence.start(m_endpoint->options().streamSilenceMs);
+        else if (m_silence.isActive())
+            m_silence.stop();
+    }
+    // The requests that came before the end are answered first (a client may send its last
+    // request and shut its side down).
+    if (ended && !m_closing)
+        m_stream->closeAfterWrites();
 }
 
 void SimConnection::onSilence()
@@ -97,8 +126,11 @@ void SimConnection::drain()
     const bool mbap = m_endpoint->framing() == Framing::Tcp && !m_endpoint->url().delimited.enabled;
     if (mbap && m_framer->openSkippedRunSize() > 0)
         m_framer->flushOnSilence();
-    const QList<StreamFrame> frames = m_framer->takeFrames();
-    const QList<SkippedBytes> skipped = m_framer->takeSkipped();
+    // The lists are kept from one read to the next (StreamFramer::takeOutput): no list is
+    // allocated per request.
+    QList<StreamFrame> frames = std::exchange(m_frames, {});
+    QList<SkippedBytes> skipped = std::exchange(m_skipped, {});
+    m_framer->takeOutput(frames, skipped);
     // Frames and skipped runs in stream order.
     qsizetype f = 0;
     qsizetype s = 0;
@@ -107,7 +139,7 @@ void SimConnection::drain()
             m_simulator->noteSkipped(m_endpoint, skipped.at(s), m_peer);
             if (mbap) {
                 close(QStringLiteral("invalid MBAP header (protocol id not 0 or length outside 2-254): closed"));
-                return;
+                break;
             }
             ++s;
             continue;
@@ -117,12 +149,19 @@ void SimConnection::drain()
         const FaultPlan plan = m_simulator->handleFrame(m_endpoint, frame.bytes, frame.status, m_peer, received,
                                                        m_connectedNs);
         m_responder.enqueue(plan, received, [this, id = plan.trafficId](const QByteArray &answer) {
-            if (m_socket->state() != QAbstractSocket::ConnectedState)
+            if (!isConnected())
                 return;
-            m_socket->write(answer);
+            if (m_stream)
+                m_stream->write(answer);
+            else
+                m_socket->write(answer);
             m_simulator->noteSent(m_endpoint, answer, id);
         });
     }
+    frames.clear();
+    skipped.clear();
+    m_frames = std::move(frames);
+    m_skipped = std::move(skipped);
 }
 
 void SimConnection::close(const QString &reason)
@@ -134,7 +173,11 @@ void SimConnection::close(const QString &reason)
     m_silence.stop();
     m_responder.clear();
     m_simulator->noteConnection(m_endpoint, m_peer, SimLogEntry::Verdict::ConnectionClosed, reason);
-    if (m_socket->state() == QAbstractSocket::UnconnectedState)
+    if (m_stream && !m_stream->isOpen())
+        onDisconnected();
+    else if (m_stream)
+        m_stream->closeAfterWrites(); // disconnected() follows once written bytes are out
+    else if (m_socket->state() == QAbstractSocket::UnconnectedState)
         onDisconnected();
     else
         m_socket->disconnectFromHost(); // disconnected() follows once written bytes are out

@@ -1,7 +1,9 @@
 #pragma once
 
+#include "protocol/streamframe.h"
 #include "sim/simresponder.h"
 
+#include <QtCore/QList>
 #include <QtCore/QObject>
 #include <QtCore/QString>
 #include <QtCore/QTimer>
@@ -13,12 +15,14 @@ class QTcpSocket;
 namespace mbscope {
 
 class SimEndpoint;
+class SimTcpStream;
 class Simulator;
 class StreamFramer;
 
 // One client of a stream endpoint (tcp, rtu-tcp, ascii-tcp, tls): its own framer (MBAP, RTU in
 // the request direction, or ASCII), its own responder (answers in request order), an idle timer
-// and a silence timer that ends unfinished frames.
+// and a silence timer that ends unfinished frames. Plain TCP is read and written on the
+// descriptor (SimTcpStream), TLS through its QSslSocket.
 class SimConnection : public QObject
 {
     Q_OBJECT
@@ -38,11 +42,15 @@ private:
     void onSilence();
     void onDisconnected();
     void drain();
+    [[nodiscard]] bool isConnected() const;
 
     Simulator *m_simulator;
     SimEndpoint *m_endpoint;
-    QTcpSocket *m_socket;
+    QTcpSocket *m_socket = nullptr;  // TLS
+    SimTcpStream *m_stream = nullptr; // plain TCP
     std::unique_ptr<StreamFramer> m_framer;
+    QList<StreamFrame> m_frames;   // drain()'s lists, kept between reads
+    QList<SkippedBytes> m_skipped;
     SimResponder m_responder;
     QTimer m_idle;
     QTimer m_silence;

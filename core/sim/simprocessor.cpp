@@ -192,10 +192,10 @@ SimReply SimProcessor::dispatch(quint8 functionCode, QByteArrayView pdu)
     if (m_unit->isBusy() && functionCode != 0x08 && functionCode != 0x0B && functionCode != 0x0C)
         return SimReply::exception(functionCode, 0x06, QStringLiteral("unit %1 is busy").arg(m_unit->id()));
     switch (functionCode) {
+    case 0x03:
+    case 0x04: return readRegisters(functionCode, pdu);
     case 0x01:
     case 0x02:
-    case 0x03:
-    case 0x04:
     case 0x05:
     case 0x06:
     case 0x0F:
@@ -245,6 +245,34 @@ SimReply SimProcessor::viaQt(quint8 functionCode, QByteArrayView pdu)
     bytes.reserve(1 + response.dataSize());
     bytes.append(char(functionCode));
     bytes.append(response.data());
+    return SimReply::normal(bytes);
+}
+
+SimReply SimProcessor::readRegisters(quint8 functionCode, QByteArrayView pdu)
+{
+    // QModbusServer's 03 and 04 (its readRegisters), without its answer encoded through
+    // QDataStream and QBuffer: about 6,000 instructions per read, a third of the simulator's own
+    // work per request under 50 clients (issue 15). Its checks in its order, its answers: a PDU
+    // that is not 5 bytes or a quantity outside 1-125 (V1.1b3 6.3/6.4) exception 03, addresses
+    // outside the map 02.
+    if (pdu.size() != 5)
+        return SimReply::exception(functionCode, 0x03, qtExceptionNote(functionCode, 0x03));
+    const int start = word(pdu, 1);
+    const int quantity = word(pdu, 3);
+    if (quantity < 1 || quantity > 0x7D)
+        return SimReply::exception(functionCode, 0x03, qtExceptionNote(functionCode, 0x03));
+    const QList<quint16> values =
+        m_unit->values(functionCode == 0x03 ? SimTable::HoldingRegisters : SimTable::InputRegisters, start, quantity);
+    if (values.isEmpty())
+        return SimReply::exception(functionCode, 0x02, qtExceptionNote(functionCode, 0x02));
+    QByteArray bytes(2 + 2 * quantity, Qt::Uninitialized);
+    char *out = bytes.data();
+    *out++ = char(functionCode);
+    *out++ = char(2 * quantity);
+    for (const quint16 v : values) {
+        *out++ = char(v >> 8);
+        *out++ = char(v & 0xFF);
+    }
     return SimReply::normal(bytes);
 }
 

@@ -52,6 +52,7 @@ public:
 private:
     SimReply dispatch(quint8 functionCode, QByteArrayView pdu);
     SimReply viaQt(quint8 functionCode, QByteArrayView pdu);
+    SimReply readRegisters(quint8 functionCode, QByteArrayView pdu); // 03, 04
     [[nodiscard]] std::optional<SimReply> checkWritable(quint8 functionCode, QByteArrayView pdu) const;
     SimReply readExceptionStatus(QByteArrayView pdu);
     SimReply diagnostics(QByteArrayView pdu);

@@ -7,6 +7,7 @@
 #include <QtCore/QSocketNotifier>
 
 #include <functional>
+#include <memory>
 
 namespace mbscope {
 
@@ -65,8 +66,9 @@ private:
 
     bool m_ordered;
     QList<Pending> m_pending;
-    int m_timerFd = -1;
-    QSocketNotifier m_notifier; // on m_timerFd
+    int m_timerFd = -1;                          // made on the first wait
+    std::unique_ptr<QSocketNotifier> m_notifier; // on m_timerFd
+    bool m_armed = false;
     bool m_running = false;
 };
 

@@ -152,11 +152,11 @@ void SimStreamEndpoint::onNewConnection()
             // Some gateways make room for a new client by dropping the one connected longest.
             // It leaves the count at once; its finished() still deletes it once it is closed.
             SimConnection *oldest = m_connections.takeFirst();
-            oldest->close(QStringLiteral("knocked off by a new client (%1 clients at most)").arg(limit));
+            oldest->close(QStringLiteral("knocked off by a new client: maxClients is %1, extraClients is dropOldest").arg(limit));
         } else if (limit > 0 && m_connections.size() >= limit) {
             simulator()->noteConnection(this, socket->peerAddress().toString() + QLatin1Char(':') + QString::number(socket->peerPort()),
                                         SimLogEntry::Verdict::ConnectionRefused,
-                                        QStringLiteral("%1 clients connected, the limit: refused").arg(limit));
+                                        QStringLiteral("refused by maxClients: %1 client(s) connected already, maxClients is %1").arg(limit));
             socket->abort();
             socket->deleteLater();
             continue;

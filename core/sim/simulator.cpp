@@ -199,14 +199,15 @@ std::optional<SimReply> Simulator::limitReply(const QByteArray &pdu, qint64 rece
     if (m_limits.minGapMs > 0 && m_lastTakenNs != 0) {
         const double gapMs = double(receivedNs - m_lastTakenNs) / 1e6;
         if (gapMs < m_limits.minGapMs) {
-            const QString note = QStringLiteral("%1 ms after the previous request, under the device's gap of %2 ms")
+            // Which limit refused it and by how much, as the CLI's line and the window's log show.
+            const QString note = QStringLiteral("refused by minGapMs: %1 ms after the last request taken, minGapMs is %2")
                                      .arg(QString::number(gapMs, 'f', 1), QString::number(m_limits.minGapMs));
             if (m_limits.tooSoon == DeviceLimits::TooSoon::Silent) {
                 *silent = true;
-                return SimReply::silent(note + QStringLiteral(": ignored"));
+                return SimReply::silent(note);
             }
             // V1.1b3 section 7: 06, server device busy.
-            return SimReply::exception(function, 0x06, note + QStringLiteral(": exception 06 (server device busy)"));
+            return SimReply::exception(function, 0x06, note);
         }
     }
     m_lastTakenNs = receivedNs;
@@ -214,8 +215,8 @@ std::optional<SimReply> Simulator::limitReply(const QByteArray &pdu, qint64 rece
     if (const auto it = m_limits.maxQuantity.constFind(function); it != m_limits.maxQuantity.constEnd() && pdu.size() >= 5) {
         const int quantity = quint8(pdu.at(3)) << 8 | quint8(pdu.at(4));
         if (quantity > *it)
-            return SimReply::exception(function, 0x03, QStringLiteral("quantity %1 is over the device's limit of %2 for "
-                                                                      "function %3: exception 03 (illegal data value)")
+            return SimReply::exception(function, 0x03, QStringLiteral("refused by maxQuantity: quantity %1 of function %3, "
+                                                                      "maxQuantity is %2")
                                                            .arg(quantity)
                                                            .arg(*it)
                                                            .arg(QString::number(function, 16).toUpper().rightJustified(2, QLatin1Char('0'))));
@@ -241,7 +242,7 @@ bool Simulator::warmingUp(SimEndpoint *endpoint, const QString &peer, int unitId
     if (upMs >= m_limits.warmUpMs)
         return false;
     log(endpoint, peer, unitId, adu, {}, SimLogEntry::Verdict::NoAnswer,
-        QStringLiteral("%1 ms after connecting, within the device's warm-up of %2 ms: ignored")
+        QStringLiteral("refused by warmUpMs: %1 ms after connecting, warmUpMs is %2")
             .arg(QString::number(upMs, 'f', 1), QString::number(m_limits.warmUpMs)));
     return true;
 }

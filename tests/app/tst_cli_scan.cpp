@@ -84,6 +84,7 @@ private slots:
     void mapDraftServedAgainAnswersTheSame();
     void lineSettingsFound();
     void timingLimitsFound();
+    void timingTellsDropOldestFromRefuse();
 
 private:
     QTemporaryDir m_dir;
@@ -260,7 +261,12 @@ void TestCliScan::badInput_data()
     QTest::addColumn<QString>("message");
     QTest::newRow("no target") << QStringList{} << QStringLiteral("no --target given");
     QTest::newRow("unit 0 on rtu") << QStringList{QStringLiteral("--units"), QStringLiteral("0-5")}
-                                   << QStringLiteral("unit 0 is the broadcast address on rtu framing");
+                                   << QStringLiteral("unit 0 is the broadcast address on rtu framing: nobody answers it (its "
+                                                     "unit ids are 1-247: start at 1)");
+    QTest::newRow("all ids on rtu") << QStringList{QStringLiteral("--all-ids")}
+                                    << QStringLiteral("--all-ids asks 0-255, which only an MBAP target (tcp://, tls://, udp://) "
+                                                      "has; on rtu framing the unit ids are 1-247 (0 is the broadcast, which no "
+                                                      "unit answers; 248-255 are reserved): leave --all-ids out to ask 1-247");
     QTest::newRow("ids reversed") << QStringList{QStringLiteral("--units"), QStringLiteral("9-2")}
                                   << QStringLiteral("--units '9-2': the first is above the last");
     QTest::newRow("id 300") << QStringList{QStringLiteral("--units"), QStringLiteral("1-300")}
@@ -405,6 +411,41 @@ void TestCliScan::timingLimitsFound()
     QCOMPARE(o.value(QStringLiteral("recommended")).toObject().value(QStringLiteral("gap_ms")).toInt(), 100);
     QCOMPARE(o.value(QStringLiteral("recommended")).toObject().value(QStringLiteral("telegraf_pause_between_requests")).toString(),
              QStringLiteral("100ms"));
+}
+
+// Two clients at most, the third refused or served by knocking the first off: the timing scan
+// tells the two apart (before, a dropOldest device showed every client tried as served).
+void TestCliScan::timingTellsDropOldestFromRefuse()
+{
+    for (const char *extra : {"refuse", "dropOldest"}) {
+        QFile profile(m_dir.filePath(QStringLiteral("clients-%1.json").arg(QLatin1String(extra))));
+        QVERIFY(profile.open(QIODevice::WriteOnly));
+        profile.write(QByteArray(R"({"name": "clients", "limits": {"maxClients": 2, "extraClients": ")") + extra
+                      + R"("}, "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})");
+        profile.close();
+        Background sim;
+        QString error;
+        QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), profile.fileName(), QStringLiteral("--listen"),
+                            QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                           &error),
+                 qPrintable(error));
+        const QStringList args{QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--timing"),
+                               QStringLiteral("1"), QStringLiteral("--clients"), QStringLiteral("5")};
+        const CliResult r = runMbscope(args + QStringList{QStringLiteral("--json")});
+        QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+        const QJsonObject o = r.json();
+        QCOMPARE(o.value(QStringLiteral("clients_served")).toInt(), 2);
+        QCOMPARE(o.value(QStringLiteral("clients_tried")).toInt(), 3);
+        const bool drops = QByteArray(extra) == "dropOldest";
+        QCOMPARE(o.value(QStringLiteral("clients_extra")).toString(), drops ? QStringLiteral("drop_oldest") : QStringLiteral("refuse"));
+        const CliResult text = runMbscope(args);
+        QVERIFY2(text.finished && text.exitCode == 0, text.describe());
+        QVERIFY2(text.outText().contains(drops ? QStringLiteral("TCP clients served at once      2 (client 3 was served by closing "
+                                                                "client 1: the device knocks its oldest client off, as "
+                                                                "extraClients dropOldest)\n")
+                                               : QStringLiteral("TCP clients served at once      2 (client 3 was not served)\n")),
+                 text.out.constData());
+    }
 }
 
 QTEST_GUILESS_MAIN(TestCliScan)

@@ -2,6 +2,7 @@
  * A libmodbus server for mbscope's integration tests and benchmark.
  *
  *   libmodbus_server tcp [--port N] [--batch]            MBAP on 127.0.0.1 (port 0: the system chooses)
+ *                        [--table-size N]               N items per table (default PEER_TABLE_SIZE)
  *   libmodbus_server rtu --device PATH [--baud 115200]   RTU on a serial device or pty, 8N1, unit 1
  *
  * Prints "LISTENING 127.0.0.1:PORT" (tcp) or "LISTENING PATH" (rtu) on stdout once ready, serves
@@ -33,12 +34,12 @@
 #include <time.h>
 #include <unistd.h>
 
-static modbus_mapping_t *make_mapping(void)
+static modbus_mapping_t *make_mapping(int size)
 {
-    modbus_mapping_t *map = modbus_mapping_new(PEER_TABLE_SIZE, PEER_TABLE_SIZE, PEER_TABLE_SIZE, PEER_TABLE_SIZE);
+    modbus_mapping_t *map = modbus_mapping_new(size, size, size, size);
     if (map == NULL)
         return NULL;
-    for (unsigned a = 0; a < PEER_TABLE_SIZE; ++a) {
+    for (unsigned a = 0; a < (unsigned)size; ++a) {
         map->tab_bits[a] = (uint8_t)peer_coil(a);
         map->tab_input_bits[a] = (uint8_t)peer_discrete_input(a);
         map->tab_registers[a] = peer_holding_register(a);
@@ -49,8 +50,8 @@ static modbus_mapping_t *make_mapping(void)
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: libmodbus_server tcp [--port N] [--batch] [--lifetime S]\n"
-                    "       libmodbus_server rtu --device PATH [--baud B] [--lifetime S]\n");
+    fprintf(stderr, "usage: libmodbus_server tcp [--port N] [--batch] [--table-size N] [--lifetime S]\n"
+                    "       libmodbus_server rtu --device PATH [--baud B] [--table-size N] [--lifetime S]\n");
     return 2;
 }
 
@@ -253,6 +254,7 @@ int main(int argc, char **argv)
     int baud = 115200;
     double lifetime = 900.0;
     int batch = 0;
+    int size = PEER_TABLE_SIZE;
     for (int i = 2; i < argc; ++i) {
         if (strcmp(argv[i], "--batch") == 0) {
             batch = 1;
@@ -266,12 +268,16 @@ int main(int argc, char **argv)
             device = argv[++i];
         else if (strcmp(argv[i], "--baud") == 0)
             baud = atoi(argv[++i]);
+        else if (strcmp(argv[i], "--table-size") == 0)
+            size = atoi(argv[++i]);
         else if (strcmp(argv[i], "--lifetime") == 0)
             lifetime = atof(argv[++i]);
         else
             return usage();
     }
-    modbus_mapping_t *map = make_mapping();
+    if (size < 1 || size > 65536)
+        return usage();
+    modbus_mapping_t *map = make_mapping(size);
     if (map == NULL) {
         fprintf(stderr, "libmodbus_server: modbus_mapping_new: %s\n", modbus_strerror(errno));
         return 1;

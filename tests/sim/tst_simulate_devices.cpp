@@ -8,6 +8,7 @@
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QFile>
 #include <QtCore/QStandardPaths>
+#include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
 #include <QtNetwork/QTcpSocket>
 #include <QtTest/QtTest>
@@ -75,6 +76,7 @@ private Q_SLOTS:
     void ownEngine();
     void unknownUnitFirst();
     void limitsFromProfile();
+    void limitRefusalsSayWhich();
     void delimitedOverTcp();
     void delimitedOverSerial();
     void delimitedNeedsATable();
@@ -238,6 +240,58 @@ void tst_SimulateDevices::limitsFromProfile()
     QCOMPARE(answers.toHex(' '), QByteArray("00 01 00 00 00 05 01 03 02 00 00 00 02 00 00 00 03 01 83 06"));
     QCOMPARE(sim.stop(), 0);
     QVERIFY2(sim.output().contains("exception 06"), sim.output().constData());
+}
+
+// Each request a device limit refuses says, on simulate's line, which limit and by how much: the
+// warm-up, the gap (two requests in one segment), the quantity and the client count.
+void tst_SimulateDevices::limitRefusalsSayWhich()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("limited.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"name": "limited", "limits": {"maxQuantity": {"0x03": 4}, "minGapMs": 50, "warmUpMs": 200, "maxClients": 1},
+                   "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 10}]}}]})");
+    file.close();
+    SimCli sim;
+    QString why;
+    QVERIFY2(sim.start({QStringLiteral("--profile"), path, QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0")}, 1, &why),
+             qPrintable(why));
+    QTcpSocket socket;
+    socket.connectToHost(QStringLiteral("127.0.0.1"), sim.port(0));
+    QVERIFY(socket.waitForConnected(5000));
+    socket.write(QByteArray::fromHex("000100000006010300000001")); // within the warm-up
+    QVERIFY(socket.waitForBytesWritten(5000));
+    QVERIFY2(sim.waitForOutput("refused by warmUpMs", 10000), sim.output().constData());
+    QTest::qWait(250);
+    socket.write(QByteArray::fromHex("000200000006010300000001" "000300000006010300000001")); // the second too soon
+    QVERIFY(socket.waitForBytesWritten(5000));
+    QVERIFY2(sim.waitForOutput("refused by minGapMs", 10000), sim.output().constData());
+    QTest::qWait(100);
+    socket.write(QByteArray::fromHex("000400000006010300000005")); // 5 registers, 4 at most
+    QVERIFY(socket.waitForBytesWritten(5000));
+    QVERIFY2(sim.waitForOutput("refused by maxQuantity", 10000), sim.output().constData());
+    QTcpSocket second;
+    second.connectToHost(QStringLiteral("127.0.0.1"), sim.port(0));
+    QVERIFY(second.waitForConnected(5000));
+    QVERIFY2(sim.waitForOutput("refused by maxClients", 10000), sim.output().constData());
+    QCOMPARE(sim.stop(), 0);
+    const QString out = QString::fromUtf8(sim.output());
+    const auto has = [&out](const QString &pattern) {
+        return QRegularExpression(pattern, QRegularExpression::MultilineOption).match(out).hasMatch();
+    };
+    QVERIFY2(has(QStringLiteral("unit 1  03 Read Holding Registers  no answer \\(refused by warmUpMs: [0-9.]+ ms after "
+                                "connecting, warmUpMs is 200\\)$")),
+             qPrintable(out));
+    QVERIFY2(has(QStringLiteral("03 Read Holding Registers  exception 06 Server Device Busy \\(refused by minGapMs: [0-9.]+ ms "
+                                "after the last request taken, minGapMs is 50\\)$")),
+             qPrintable(out));
+    QVERIFY2(has(QStringLiteral("03 Read Holding Registers  exception 03 Illegal Data Value \\(refused by maxQuantity: "
+                                "quantity 5 of function 03, maxQuantity is 4\\)$")),
+             qPrintable(out));
+    QVERIFY2(has(QStringLiteral("  connection refused by maxClients: 1 client\\(s\\) connected already, maxClients is 1$")),
+             qPrintable(out));
 }
 
 // The SCADA lab's '$' ... '#' protocol (shipped profile scada-rs485) over TCP: mbscope's own

@@ -73,8 +73,11 @@ void TimingResultTree::showReport(const TimingScanSettings &s, const TimingRepor
                                            : tr("%1 of %2 answered: send one at a time").arg(r.pipelineOk).arg(r.pipelineSent));
     if (r.clientsTried > 0)
         row(root, tr("TCP clients served at once"),
-            r.clientsServed == s.maxClients ? tr("%1 (all tried; there may be room for more)").arg(r.clientsServed)
-                                            : tr("%1 (client %2 was not served)").arg(r.clientsServed).arg(r.clientsTried));
+            r.oldestDropped ? tr("%1 (client %2 was served by closing client 1: the device knocks its oldest client off)")
+                                  .arg(r.clientsServed)
+                                  .arg(r.clientsTried)
+            : r.clientsServed == s.maxClients ? tr("%1 (all tried; there may be room for more)").arg(r.clientsServed)
+                                              : tr("%1 (client %2 was not served)").arg(r.clientsServed).arg(r.clientsTried));
     QTreeWidgetItem *settings = row(root, tr("Recommended"), tr("twice the shortest clean gap, three times the slowest answer"));
     row(settings, tr("Gap between requests"), tr("%1 ms").arg(r.recommendedGapMs()));
     row(settings, tr("Timeout"), tr("%1 ms").arg(r.recommendedTimeoutMs()));

@@ -150,7 +150,7 @@ void TestSimDeviceLimits::minGap()
     QCOMPARE(answerOf(ask(endpoint, tcp(readHolding(2, 1), 1), kT0 + 12 * kMs)), ok);
     QCOMPARE(answerOf(ask(endpoint, tcp(readHolding(2, 1), 1), kT0 + 12 * kMs + 9'900'000)), refused);
     QCOMPARE(answerOf(ask(endpoint, tcp(readHolding(2, 1), 1), kT0 + 22 * kMs)), ok);
-    QVERIFY2(m_log.at(1).reason.contains(QStringLiteral("5.0 ms after the previous request, under the device's gap of 10 ms")),
+    QVERIFY2(m_log.at(1).reason.contains(QStringLiteral("refused by minGapMs: 5.0 ms after the last request taken, minGapMs is 10")),
              qPrintable(m_log.at(1).reason));
 }
 
@@ -164,7 +164,7 @@ void TestSimDeviceLimits::maxQuantity()
     QVERIFY(endpoint);
     QCOMPARE(answerOf(ask(endpoint, tcp(readHolding(0, 16), 1), kT0)).left(5), QStringLiteral("03 20"));
     QCOMPARE(answerOf(ask(endpoint, tcp(readHolding(0, 17), 1), kT0)), QStringLiteral("83 03"));
-    QVERIFY2(m_log.last().reason.contains(QStringLiteral("quantity 17 is over the device's limit of 16 for function 03")),
+    QVERIFY2(m_log.last().reason.contains(QStringLiteral("refused by maxQuantity: quantity 17 of function 03, maxQuantity is 16")),
              qPrintable(m_log.last().reason));
     // Other functions keep the specification's limits: 01 of 32 coils.
     QCOMPARE(answerOf(ask(endpoint, tcp(pduOf(RequestBuilder::readCoils(0, 32)), 1), kT0)).left(5), QStringLiteral("01 04"));
@@ -181,7 +181,7 @@ void TestSimDeviceLimits::warmUp()
     QVERIFY(endpoint);
     const qint64 connected = kT0;
     QCOMPARE(answerOf(ask(endpoint, tcp(readHolding(2, 1), 1), connected + 100 * kMs, connected)), QStringLiteral("silent"));
-    QVERIFY2(m_log.last().reason.contains(QStringLiteral("100.0 ms after connecting, within the device's warm-up of 500 ms")),
+    QVERIFY2(m_log.last().reason.contains(QStringLiteral("refused by warmUpMs: 100.0 ms after connecting, warmUpMs is 500")),
              qPrintable(m_log.last().reason));
     QCOMPARE(answerOf(ask(endpoint, tcp(readHolding(2, 1), 1), connected + 499 * kMs, connected)), QStringLiteral("silent"));
     QCOMPARE(answerOf(ask(endpoint, tcp(readHolding(2, 1), 1), connected + 500 * kMs, connected)), QStringLiteral("03 02 00 14"));
@@ -212,7 +212,7 @@ void TestSimDeviceLimits::dropOldestClient()
     QCOMPARE(b.ask(tcp(readHolding(2, 1), 1, 8)), tcp(pduOf(ResponseBuilder::readHoldingRegisters({20})), 1, 8));
     bool knocked = false;
     for (const SimLogEntry &e : std::as_const(m_log))
-        knocked = knocked || e.reason == QStringLiteral("knocked off by a new client (2 clients at most)");
+        knocked = knocked || e.reason == QStringLiteral("knocked off by a new client: maxClients is 2, extraClients is dropOldest");
     QVERIFY(knocked);
 }
 
