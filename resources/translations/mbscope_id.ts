@@ -7040,14 +7040,14 @@ Klik kanan untuk mengganti format</translation>
         <location filename="../../ui/discovery/timingresulttree.cpp" line="+11"/>
         <location line="+47"/>
         <location line="+8"/>
-        <location line="+13"/>
+        <location line="+16"/>
         <location line="+1"/>
         <location line="+1"/>
         <source>%1 ms</source>
         <translation>%1 md</translation>
     </message>
     <message>
-        <location line="-52"/>
+        <location line="-55"/>
         <source>Measurement</source>
         <translation>Pengukuran</translation>
     </message>
@@ -7130,6 +7130,11 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>%1 (client %2 was served by closing client 1: the device knocks its oldest client off)</source>
+        <translation>%1 (klien %2 dilayani dengan menutup klien 1: perangkat menendang klien tertuanya)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>%1 (all tried; there may be room for more)</source>
         <translation>%1 (semua yang dicoba; mungkin masih muat lebih banyak)</translation>
     </message>
