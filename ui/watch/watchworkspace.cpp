@@ -55,6 +55,7 @@ WatchWorkspace::WatchWorkspace(QWidget *parent)
     bar->addSeparator();
     bar->addAction(m_startAction);
     bar->addAction(m_stopAction);
+    bar->addAction(m_pollThisAction);
     bar->addSeparator();
     bar->addAction(m_tabbedAction);
     bar->addAction(m_log->logAction());
@@ -140,6 +141,7 @@ void WatchWorkspace::createActions()
     m_pollThisAction = new QAction(tr("Poll t&his watch"), this);
     m_pollThisAction->setObjectName(QStringLiteral("pollThisWatchAction"));
     m_pollThisAction->setCheckable(true);
+    m_pollThisAction->setIconText(tr("Poll this watch"));
     m_pollThisAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F5));
     m_pollThisAction->setToolTip(tr("Start or stop the current watch alone; the others go on as they are"));
     // triggered, not toggled: updateActions() sets the check to what the runner does.

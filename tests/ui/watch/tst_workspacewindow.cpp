@@ -27,6 +27,7 @@
 #include <QtGui/QAction>
 #include <QtTest/QtTest>
 #include <QtWidgets/QComboBox>
+#include <QtWidgets/QDockWidget>
 #include <QtWidgets/QHeaderView>
 #include <QtWidgets/QMdiArea>
 #include <QtWidgets/QMdiSubWindow>
@@ -245,6 +246,8 @@ void TestWorkspaceWindow::watchValueTrended()
         QCOMPARE(trends->series(1).address, 2);
         QTRY_VERIFY_WITH_TIMEOUT(trends->graphOf(1)->dataCount() >= 2, kWaitMs);
         workspace->stopAll();
+        trends->redrawNow();
+        QVERIFY(guitest::saveShot(&window, QStringLiteral("workspace-trends.png")));
     }
     // A new window (a restart): the chosen watch values are plotted again.
     MainWindow again;
@@ -305,6 +308,14 @@ void TestWorkspaceWindow::latencyOfOneWatchOrLink()
              workspace->window(0)->counters().polls + workspace->window(1)->counters().polls);
     QCOMPARE(runs->statistics(LatencyRuns::Current, 1).count(), workspace->window(1)->counters().polls);
 
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    if (auto *dock = window.findChild<QDockWidget *>(QStringLiteral("analysisDock")))
+        dock->raise();
+    window.analysisDock()->showPanel(window.latencyAnalysis()->histogramPanel());
+    source->setChoice(2);
+    window.latencyAnalysis()->histogramPanel()->redrawNow();
+    QVERIFY(guitest::saveShot(&window, QStringLiteral("workspace-latency.png")));
     // Back to the bench: nothing of the watches.
     source->setChoice(0);
     QCOMPARE(runs->statistics(LatencyRuns::Current).overall().count(), quint64(0));
