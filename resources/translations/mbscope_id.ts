@@ -7736,7 +7736,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchWorkspace</name>
     <message>
-        <location filename="../../ui/watch/watchworkspace.cpp" line="+67"/>
+        <location filename="../../ui/watch/watchworkspace.cpp" line="+68"/>
         <source>No watches yet. A watch polls a block of a device at its own interval and shows its values with names, units and rule colours. Make one with Workspace → New watch (%1), from the composer&apos;s read request (%2) or from a device profile (%3); Start all (%4) polls them together.</source>
         <translation>Belum ada pantauan. Sebuah pantauan mem-polling satu blok perangkat pada intervalnya sendiri dan menampilkan nilainya dengan nama, unit, dan warna aturan. Buat dengan Daftar pantau → Pantauan baru (%1), dari permintaan baca penyusun (%2) atau dari profil perangkat (%3); Mulai semua (%4) mem-polling semuanya bersama.</translation>
     </message>
@@ -7833,7 +7833,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>P&amp;olling pantauan ini</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
+        <source>Poll this watch</source>
+        <translation>Polling pantauan ini</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Start or stop the current watch alone; the others go on as they are</source>
         <translation>Mulai atau hentikan pantauan ini saja; yang lain tetap seperti adanya</translation>
     </message>

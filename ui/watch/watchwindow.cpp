@@ -34,7 +34,7 @@ WatchWindow::WatchWindow(QWidget *parent)
     const QFontMetrics headerMetrics = m_view->horizontalHeader()->fontMetrics();
     const auto fit = [&](int column, const QString &sample) {
         const QString header = m_model->headerData(column, Qt::Horizontal, Qt::DisplayRole).toString();
-        m_view->setColumnWidth(column, std::max(metrics.horizontalAdvance(sample), headerMetrics.horizontalAdvance(header) + 12) + 16);
+        m_view->setColumnWidth(column, std::max(metrics.horizontalAdvance(sample) + 12, headerMetrics.horizontalAdvance(header) + 16));
     };
     fit(WatchTableModel::AddressColumn, QStringLiteral("65535 (0xFFFF)"));
     fit(WatchTableModel::ReferenceColumn, QStringLiteral("400000"));
