@@ -7693,7 +7693,7 @@ Klik kanan untuk mengganti format</translation>
         <translation> · galat terakhir pukul %1: %2</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+72"/>
         <source>link: connecting</source>
         <translation>link: menyambung</translation>
     </message>
@@ -7883,7 +7883,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1, unit %2, setiap %3 ms</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+134"/>
         <source>watch</source>
         <translation>pantauan</translation>
     </message>
@@ -7913,7 +7913,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Tidak ada pantauan untuk dimulai: buat dulu (Daftar pantau → Pantauan baru)</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+24"/>
         <source>Written: %1</source>
         <translation>Ditulis: %1</translation>
     </message>
@@ -7923,34 +7923,34 @@ Klik kanan untuk mengganti format</translation>
         <translation>Tidak ditulis: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="-12"/>
+        <location line="-15"/>
         <source>Polling %n watch(es)</source>
         <translation>
             <numerusform>Mem-polling %n pantauan</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+32"/>
         <source>Watches stopped</source>
         <translation>Pantauan dihentikan</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+43"/>
         <source>Polling watch &apos;%1&apos;</source>
         <translation>Mem-polling pantauan &apos;%1&apos;</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Watch &apos;%1&apos; stopped</source>
         <translation>Pantauan &apos;%1&apos; dihentikan</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+29"/>
         <source>Choose a value in a watch&apos;s table to trend</source>
         <translation>Pilih nilai di tabel pantauan untuk digambar trennya</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Choose a value in a watch&apos;s table to write</source>
         <translation>Pilih nilai di tabel pantauan untuk ditulis</translation>
     </message>

@@ -93,6 +93,46 @@ QString WatchWindow::countersText(const WatchCounters &c)
     return text;
 }
 
+WatchCounters WatchWindow::carried(const WatchCounters &before, const WatchCounters &now)
+{
+    WatchCounters c = now;
+    c.polls += before.polls;
+    c.ok += before.ok;
+    c.exceptions += before.exceptions;
+    for (auto it = before.exceptionsByCode.cbegin(); it != before.exceptionsByCode.cend(); ++it)
+        c.exceptionsByCode[it.key()] += it.value();
+    c.timeouts += before.timeouts;
+    c.crcErrors += before.crcErrors;
+    c.otherErrors += before.otherErrors;
+    c.linkErrors += before.linkErrors;
+    c.reconnects += before.reconnects;
+    c.ruleFirings += before.ruleFirings;
+    c.overruns += before.overruns;
+    if (now.lastErrorMs == 0) {
+        c.lastError = before.lastError;
+        c.lastErrorMs = before.lastErrorMs;
+    }
+    c.lastOkMs = std::max(before.lastOkMs, now.lastOkMs);
+    if (now.latencyCount == 0) {
+        c.lastLatencyNs = before.lastLatencyNs;
+        c.minLatencyNs = before.minLatencyNs;
+        c.maxLatencyNs = before.maxLatencyNs;
+    } else if (before.latencyCount > 0) {
+        c.minLatencyNs = std::min(before.minLatencyNs, now.minLatencyNs);
+        c.maxLatencyNs = std::max(before.maxLatencyNs, now.maxLatencyNs);
+    }
+    c.latencyCount = before.latencyCount + now.latencyCount;
+    if (c.latencyCount > 0)
+        c.meanLatencyNs = (before.meanLatencyNs * double(before.latencyCount) + now.meanLatencyNs * double(now.latencyCount))
+            / double(c.latencyCount);
+    if (c.latencyBuckets.isEmpty())
+        c.latencyBuckets = before.latencyBuckets;
+    else
+        for (int i = 0; i < std::min(c.latencyBuckets.size(), before.latencyBuckets.size()); ++i)
+            c.latencyBuckets[i] += before.latencyBuckets.at(i);
+    return c;
+}
+
 void WatchWindow::setCounters(const WatchCounters &counters)
 {
     m_lastCounters = counters;

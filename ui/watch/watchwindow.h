@@ -33,6 +33,9 @@ public:
     [[nodiscard]] bool isPolling() const { return m_polling; }
     // The watch's link as last reported (Stopped before the first report).
     [[nodiscard]] WatchLinkState::State linkState() const { return m_hasLink ? m_link.state : WatchLinkState::State::Stopped; }
+    // The counters of a watch whose runner was restarted (another watch started or stopped alone)
+    // carried on: before's counts plus now's, the last error and latency the newest.
+    [[nodiscard]] static WatchCounters carried(const WatchCounters &before, const WatchCounters &now);
     // The counters line as shown ("polls 12 · ok 11 · exceptions 0 · timeouts 1 · ...").
     [[nodiscard]] static QString countersText(const WatchCounters &counters);
     // The selected cells as tab-separated text (a header row first), for the clipboard.

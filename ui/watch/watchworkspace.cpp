@@ -354,6 +354,9 @@ void WatchWorkspace::showEvent(QShowEvent *event)
 void WatchWorkspace::watchesEdited()
 {
     if (m_runner && m_runner->isRunning()) {
+        // Edited definitions: their counters start anew.
+        m_carrying = false;
+        m_carried.clear();
         m_runner->setWatches(runnerWatches());
         m_log->start(m_watches); // the files follow the watches (and their indices)
     }
@@ -378,8 +381,11 @@ void WatchWorkspace::replaceWatch(int index, const WatchDefinition &watch)
 {
     if (index < 0 || index >= count())
         return;
-    const QString before = m_watches.watches.at(index).name;
-    if (before != watch.name && m_polled.remove(before))
+    const WatchDefinition &before = m_watches.watches.at(index);
+    if (before.name != watch.name && m_polled.remove(before.name))
+        m_polled.insert(watch.name);
+    // "Poll this watch" ticked in the dialog while the others poll: it polls too.
+    if (isRunning() && !before.enabled && watch.enabled)
         m_polled.insert(watch.name);
     m_watches.watches[index] = watch;
     m_windows.at(index)->model()->setDefinition(watch);
@@ -518,6 +524,9 @@ void WatchWorkspace::startAll()
 
 void WatchWorkspace::startRunner()
 {
+    m_carrying = false;
+    m_carried.clear();
+    m_lastCounters.clear();
     delete m_runner;
     m_runner = new WatchRunner(runnerWatches(), this);
     connect(m_runner, &WatchRunner::sampled, this, &WatchWorkspace::onSampled);
@@ -574,12 +583,15 @@ void WatchWorkspace::startWatch(int index)
         m_windows.at(index)->model()->setDefinition(watch);
         Q_EMIT changed();
     }
-    m_polled.insert(watch.name);
     if (isRunning()) {
-        // The runner takes the new set: its links open again and its counters start anew.
+        // The runner takes the new set: its links open again and its counters start anew, so
+        // the windows carry on what they counted (this watch's too, from before it stopped).
+        m_carrying = true;
+        m_polled.insert(watch.name);
         m_runner->setWatches(runnerWatches());
         updatePolling();
     } else {
+        m_polled.insert(watch.name);
         startRunner();
     }
     Q_EMIT message(tr("Polling watch '%1'").arg(watch.name));
@@ -594,10 +606,25 @@ void WatchWorkspace::stopWatch(int index)
     if (m_polled.isEmpty()) {
         stopAll();
     } else {
+        m_carrying = true;
         m_runner->setWatches(runnerWatches());
         updatePolling();
     }
     Q_EMIT message(tr("Watch '%1' stopped").arg(name));
+}
+
+WatchCounters WatchWorkspace::shownCounters(const WatchCounters &counters)
+{
+    const QString &name = counters.watchName;
+    if (m_carrying) {
+        const auto last = m_lastCounters.constFind(name);
+        // Each batch of one run counts more polls than the one before: fewer is a new run.
+        if (last != m_lastCounters.cend() && counters.polls <= last->polls)
+            m_carried.insert(name, WatchWindow::carried(m_carried.value(name), *last));
+    }
+    m_lastCounters.insert(name, counters);
+    const auto carried = m_carried.constFind(name);
+    return carried == m_carried.cend() ? counters : WatchWindow::carried(*carried, counters);
 }
 
 void WatchWorkspace::updatePolling()
@@ -630,8 +657,9 @@ void WatchWorkspace::onSampled(const QList<WatchSample> &samples, const QList<Wa
         w->model()->applySample(sample);
     }
     for (const WatchCounters &c : counters) {
-        if (WatchWindow *w = window(c.watch); w && m_watches.watches.at(c.watch).name == c.watchName)
-            w->setCounters(c);
+        if (WatchWindow *w = window(c.watch); w && m_watches.watches.at(c.watch).name == c.watchName) {
+            w->setCounters(shownCounters(c));
+        }
     }
     m_log->append(samples);
     Q_EMIT sampled(samples);

@@ -4,6 +4,9 @@
 
 #include "watch/watchdefinition.h"
 
+#include "fleet/watchcounters.h"
+
+#include <QtCore/QMap>
 #include <QtCore/QSet>
 #include <QtWidgets/QWidget>
 
@@ -154,6 +157,14 @@ private:
 
     SessionWatches m_watches;
     QSet<QString> m_polled; // names of the watches polled while the runner runs
+    // Starting or stopping one watch alone restarts the runner's links, and its counters start
+    // anew: the windows carry on counting. A watch's counters that went back (its polls no more
+    // than last time) were restarted; what it had counted is added to what comes. Edited
+    // definitions, Start all and a runner started afresh count from zero (m_carrying false).
+    bool m_carrying = false;
+    QMap<QString, WatchCounters> m_lastCounters; // as the runner last sent them, per watch name
+    QMap<QString, WatchCounters> m_carried;      // counted before the runner's restarts
+    [[nodiscard]] WatchCounters shownCounters(const WatchCounters &counters);
     QMdiArea *m_area;
     QLabel *m_hint;
     QList<WatchWindow *> m_windows;

@@ -148,13 +148,22 @@ void TestWorkspaceWindow::oneWatchStartedAndStoppedAlone()
     QVERIFY(workspace->window(1)->countersLabel()->text().startsWith(QStringLiteral("Stopped")));
     QCOMPARE(workspace->window(1)->counters().polls, quint64(0));
 
-    // The second from the menu action: both poll.
+    // The second from the menu action: both poll. The runner's links open again for the new set;
+    // the first watch's window carries on counting from where it was.
+    QTRY_VERIFY_WITH_TIMEOUT(workspace->window(0)->counters().ok >= 10, kWaitMs);
+    const quint64 firstBefore = workspace->window(0)->counters().polls;
     workspace->setCurrentIndex(1);
     QVERIFY(!workspace->pollThisAction()->isChecked());
     workspace->pollThisAction()->trigger();
     QVERIFY(workspace->isPolling(0) && workspace->isPolling(1));
     QCOMPARE(subTitle(workspace, 1), QStringLiteral("plc coils"));
     QTRY_VERIFY_WITH_TIMEOUT(workspace->window(1)->counters().ok >= 3, kWaitMs);
+    // The two take turns on one link: the first's new run has about as many polls as the second's
+    // (3), the window shows them on top of the 10 or more it had.
+    QVERIFY2(workspace->window(0)->counters().polls >= firstBefore,
+             qPrintable(QStringLiteral("%1 polls shown, %2 before").arg(workspace->window(0)->counters().polls).arg(firstBefore)));
+    QCOMPARE(workspace->window(0)->counters().ok, workspace->window(0)->counters().polls);
+    QCOMPARE(workspace->window(0)->counters().latencyCount, workspace->window(0)->counters().polls);
 
     // The first stopped alone: the second goes on, the first's polls stay where they were.
     workspace->setCurrentIndex(0);
@@ -168,6 +177,11 @@ void TestWorkspaceWindow::oneWatchStartedAndStoppedAlone()
     const quint64 otherAt = workspace->window(1)->counters().polls;
     QTRY_VERIFY_WITH_TIMEOUT(workspace->window(1)->counters().polls >= otherAt + 3, kWaitMs);
     QCOMPARE(workspace->window(0)->counters().polls, stoppedAt);
+    // Started again alone: it goes on from its count.
+    workspace->startWatch(0);
+    QTRY_VERIFY_WITH_TIMEOUT(workspace->window(0)->counters().polls != stoppedAt, kWaitMs);
+    QVERIFY(workspace->window(0)->counters().polls > stoppedAt);
+    workspace->stopWatch(0);
 
     // The last one stopped: the runner stops; titles lose "(stopped)".
     workspace->setCurrentIndex(1);
@@ -188,6 +202,16 @@ void TestWorkspaceWindow::oneWatchStartedAndStoppedAlone()
     // Start all and Stop all act on every watch, as before.
     workspace->startAll();
     QVERIFY(workspace->isPolling(0) && workspace->isPolling(1));
+    // "Poll this watch" unticked in the dialog stops it; ticked again while the others poll, it polls.
+    off = workspace->watches().watches.at(1);
+    off.enabled = false;
+    workspace->replaceWatch(1, off);
+    QVERIFY(!workspace->isPolling(1));
+    QCOMPARE(subTitle(workspace, 1), QStringLiteral("plc coils (off)"));
+    off.enabled = true;
+    workspace->replaceWatch(1, off);
+    QVERIFY(workspace->isPolling(1));
+    QCOMPARE(subTitle(workspace, 1), QStringLiteral("plc coils"));
     workspace->stopAll();
     QVERIFY(!workspace->isPolling(0) && !workspace->isPolling(1));
     plc->stop();
