@@ -249,6 +249,8 @@ void WatchLinkPoller::finishPoll(const Transaction &t)
     s.timeMs = nowMs();
     s.poll = ++e.polls;
     s.latencyNs = t.sentNs > 0 && t.doneNs > 0 ? t.latencyNs() : -1;
+    s.requestBytes = t.writeNs > 0 ? t.request.size() : 0;
+    s.answerBytes = t.response.size();
     s.exceptionCode = t.exceptionCode;
     // An Enron answer carries four bytes per register it was asked for, which the engine's
     // verdict (two per register) calls malformed: the watch reads it by its own rule.

@@ -29,6 +29,10 @@ struct WatchSample {
     QList<WatchPointValue> values; // the answer decoded (WatchDecoder); empty unless Ok
     qint64 latencyNs = -1;    // request sent to answer complete; -1 without an answer
     quint64 poll = 0;         // the watch's poll number, from 1
+    // Bytes of the exchange that ended the poll, as written to and read from the link (the
+    // window's status bar counts the watches' traffic with them); 0 when nothing was sent.
+    qint64 requestBytes = 0;
+    qint64 answerBytes = 0;
 
     [[nodiscard]] bool isOk() const { return status == Status::Ok; }
 };

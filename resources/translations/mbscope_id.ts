@@ -2340,7 +2340,7 @@
 <context>
     <name>mbscope::LatencyAnalysis</name>
     <message>
-        <location filename="../../ui/analysis/latencyanalysis.cpp" line="+19"/>
+        <location filename="../../ui/analysis/latencyanalysis.cpp" line="+22"/>
         <source>Latency histogram</source>
         <translation>Histogram latensi</translation>
     </message>
@@ -2436,7 +2436,7 @@
         <translation>Tampilkan lagi seluruh histogram setelah zoom atau geser</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+132"/>
         <source>Overall</source>
         <translation>Keseluruhan</translation>
     </message>
@@ -2532,6 +2532,29 @@
         <location line="+0"/>
         <source>item %1</source>
         <translation>item %1</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::LatencySource</name>
+    <message>
+        <location filename="../../ui/analysis/latencysource.cpp" line="+49"/>
+        <source>All bench traffic</source>
+        <translation>Semua lalu lintas bangku uji</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Watch link %1</source>
+        <translation>Link pantauan %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Watch %1</source>
+        <translation>Pantauan %1</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Whose latency to show: all the bench&apos;s traffic, the polls of one link of the watches, or those of one watch (Watches tab, while the watches poll)</source>
+        <translation>Latensi siapa yang ditampilkan: semua lalu lintas bangku uji, polling satu link pantauan, atau polling satu pantauan (tab Pantauan, selama pantauan berjalan)</translation>
     </message>
 </context>
 <context>
@@ -2713,7 +2736,7 @@
         <translation>Lupakan titik yang ditampilkan; transaksi baru memulai sumbu waktu baru</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+77"/>
         <source>%1 transactions: %2 answered, %3 exceptions, %4 without a usable answer</source>
         <translation>%1 transaksi: %2 terjawab, %3 exception, %4 tanpa jawaban yang bisa dipakai</translation>
     </message>
@@ -2986,7 +3009,12 @@
 <context>
     <name>mbscope::LinkStatusWidget</name>
     <message>
-        <location filename="../../ui/shell/linkstatuswidget.cpp" line="+32"/>
+        <location filename="../../ui/shell/linkstatuswidget.cpp" line="+18"/>
+        <source>What the watches of the Watches tab sent and received on their own links</source>
+        <translation>Yang dikirim dan diterima pantauan di tab Pantauan lewat link mereka sendiri</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>Not connected</source>
         <translation>Tidak tersambung</translation>
     </message>
@@ -3030,11 +3058,36 @@
         <source>  ·  %1 link errors</source>
         <translation>  ·  %1 error link</translation>
     </message>
+    <message>
+        <location line="+16"/>
+        <source>Watches: TX %1 B  RX %2 B  ·  %3</source>
+        <translation>Pantauan: TX %1 B  RX %2 B  ·  %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>1 poll</source>
+        <translation>1 polling</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 polls</source>
+        <translation>%1 polling</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>  ·  1 failed</source>
+        <translation>  ·  1 gagal</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>  ·  %1 failed</source>
+        <translation>  ·  %1 gagal</translation>
+    </message>
 </context>
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+92"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+95"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -3084,7 +3137,12 @@
         <translation>Bilah koneksi tidak menyebut target: %1</translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="+28"/>
+        <source>Plotting %1 in Analysis → Register trends</source>
+        <translation>Menggambar %1 di Analisis → Tren register</translation>
+    </message>
+    <message>
+        <location line="+110"/>
         <source>%1 dock (F6: the next one)</source>
         <translation>Dok %1 (F6: dok berikutnya)</translation>
     </message>
@@ -4563,12 +4621,12 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RegisterTrendPanel</name>
     <message>
-        <location filename="../../ui/analysis/registertrendpanel.cpp" line="+95"/>
+        <location filename="../../ui/analysis/registertrendpanel.cpp" line="+111"/>
         <source>Add &amp;selected register</source>
         <translation>Tambahkan register yang &amp;dipilih</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Checked registers are plotted against time</source>
         <translation>Register yang dicentang diplot terhadap waktu</translation>
     </message>
@@ -4619,6 +4677,36 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+11"/>
+        <source>A watch of the Watches tab</source>
+        <translation>Sebuah pantauan dari tab Pantauan</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>One of the watch&apos;s values, by its point&apos;s name or its address</source>
+        <translation>Salah satu nilai pantauan, menurut nama titiknya atau alamatnya</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Plot watch value</source>
+        <translation>Gambar nilai pantauan</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Plot this value of the watch as the watch polls (Workspace → Start all)</source>
+        <translation>Gambar nilai pantauan ini selama pantauan mem-polling (Daftar pantau → Mulai semua)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Watch:</source>
+        <translation>Pantauan:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Value:</source>
+        <translation>Nilai:</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>time since the first answer (s)</source>
         <translation>waktu sejak jawaban pertama (s)</translation>
     </message>
@@ -4648,7 +4736,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Plot register yang dipilih di tabel Register, dalam format kolomnya</translation>
     </message>
     <message>
-        <location line="+163"/>
+        <location line="+173"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -4665,11 +4753,12 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+17"/>
         <location line="+27"/>
+        <location line="+89"/>
         <source>Plotting %1</source>
         <translation>Memplot %1</translation>
     </message>
     <message>
-        <location line="-19"/>
+        <location line="-108"/>
         <source>Not added: the address is wrong: %1</source>
         <translation>Tidak ditambahkan: alamatnya salah: %1</translation>
     </message>
@@ -4682,6 +4771,21 @@ Klik kanan untuk mengganti format</translation>
         <location line="+8"/>
         <source>Not added: a %1 at PDU address %2 would go past the last address (65535)</source>
         <translation>Tidak ditambahkan: %1 di alamat PDU %2 akan melewati alamat terakhir (65535)</translation>
+    </message>
+    <message>
+        <location line="+77"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>address %1</source>
+        <translation>alamat %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Not added: choose a watch and one of its values</source>
+        <translation>Tidak ditambahkan: pilih pantauan dan salah satu nilainya</translation>
     </message>
 </context>
 <context>
@@ -7793,6 +7897,21 @@ Klik kanan untuk mengganti format</translation>
     <name>mbscope::TrendSeries</name>
     <message>
         <location filename="../../ui/analysis/trendseries.cpp" line="+35"/>
+        <source>address %1</source>
+        <translation>alamat %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 › %2</source>
+        <translation>%1 › %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 › %2 (%3)</source>
+        <translation>%1 › %2 (%3)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -7812,7 +7931,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1, %2 (%3)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
+        <source>%1: watch %2, address %3, as the watch decodes it</source>
+        <translation>%1: pantauan %2, alamat %3, sebagaimana pantauan mendekodenya</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1, PDU address %2</source>
         <translation>%1, alamat PDU %2</translation>
     </message>
@@ -7827,7 +7951,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 (profil %2)</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+41"/>
         <source>%1 [%2]</source>
         <translation>%1 [%2]</translation>
     </message>
@@ -8354,7 +8478,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchTableModel</name>
     <message>
-        <location filename="../../ui/watch/watchtablemodel.cpp" line="+196"/>
+        <location filename="../../ui/watch/watchtablemodel.cpp" line="+197"/>
         <source>Double-click or press F2 to write a new value</source>
         <translation>Klik ganda atau tekan F2 untuk menulis nilai baru</translation>
     </message>
@@ -8425,7 +8549,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchWindow</name>
     <message>
-        <location filename="../../ui/watch/watchwindow.cpp" line="+68"/>
+        <location filename="../../ui/watch/watchwindow.cpp" line="+82"/>
         <source>polls %1 · ok %2 · exceptions %3 · timeouts %4</source>
         <translation>polling %1 · ok %2 · eksepsi %3 · timeout %4</translation>
     </message>
@@ -8450,7 +8574,7 @@ Klik kanan untuk mengganti format</translation>
         <translation> · galat terakhir pukul %1: %2</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+72"/>
         <source>link: connecting</source>
         <translation>link: menyambung</translation>
     </message>
@@ -8479,11 +8603,21 @@ Klik kanan untuk mengganti format</translation>
         <source>, reconnected %1×</source>
         <translation>, tersambung ulang %1×</translation>
     </message>
+    <message>
+        <location line="+3"/>
+        <source>Polling</source>
+        <translation>Mem-polling</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Stopped</source>
+        <translation>Dihentikan</translation>
+    </message>
 </context>
 <context>
     <name>mbscope::WatchWorkspace</name>
     <message>
-        <location filename="../../ui/watch/watchworkspace.cpp" line="+67"/>
+        <location filename="../../ui/watch/watchworkspace.cpp" line="+68"/>
         <source>No watches yet. A watch polls a block of a device at its own interval and shows its values with names, units and rule colours. Make one with Workspace → New watch (%1), from the composer&apos;s read request (%2) or from a device profile (%3); Start all (%4) polls them together.</source>
         <translation>Belum ada pantauan. Sebuah pantauan mem-polling satu blok perangkat pada intervalnya sendiri dan menampilkan nilainya dengan nama, unit, dan warna aturan. Buat dengan Daftar pantau → Pantauan baru (%1), dari permintaan baca penyusun (%2) atau dari profil perangkat (%3); Mulai semua (%4) mem-polling semuanya bersama.</translation>
     </message>
@@ -8575,7 +8709,32 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Salin nilai</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+4"/>
+        <source>Poll t&amp;his watch</source>
+        <translation>P&amp;olling pantauan ini</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Poll this watch</source>
+        <translation>Polling pantauan ini</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Start or stop the current watch alone; the others go on as they are</source>
+        <translation>Mulai atau hentikan pantauan ini saja; yang lain tetap seperti adanya</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Trend this &amp;value</source>
+        <translation>Tren&amp;d nilai ini</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Plot the chosen value of this watch in Analysis → Register trends as it polls</source>
+        <translation>Gambar nilai terpilih pantauan ini di Analisis → Tren register selama mem-polling</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>T&amp;abbed windows</source>
         <translation>Jendela b&amp;ertab</translation>
     </message>
@@ -8590,17 +8749,22 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pantauan sebagai tab, atau sebagai jendela berjajar</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+137"/>
         <source>%1 (off)</source>
         <translation>%1 (mati)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
+        <source>%1 (stopped)</source>
+        <translation>%1 (dihentikan)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>%1, unit %2, every %3 ms</source>
         <translation>%1, unit %2, setiap %3 ms</translation>
     </message>
     <message>
-        <location line="+120"/>
+        <location line="+134"/>
         <source>watch</source>
         <translation>pantauan</translation>
     </message>
@@ -8630,7 +8794,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Tidak ada pantauan untuk dimulai: buat dulu (Daftar pantau → Pantauan baru)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+24"/>
         <source>Written: %1</source>
         <translation>Ditulis: %1</translation>
     </message>
@@ -8640,19 +8804,34 @@ Klik kanan untuk mengganti format</translation>
         <translation>Tidak ditulis: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+6"/>
+        <location line="-15"/>
         <source>Polling %n watch(es)</source>
         <translation>
             <numerusform>Mem-polling %n pantauan</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+32"/>
         <source>Watches stopped</source>
         <translation>Pantauan dihentikan</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+43"/>
+        <source>Polling watch &apos;%1&apos;</source>
+        <translation>Mem-polling pantauan &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Watch &apos;%1&apos; stopped</source>
+        <translation>Pantauan &apos;%1&apos; dihentikan</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Choose a value in a watch&apos;s table to trend</source>
+        <translation>Pilih nilai di tabel pantauan untuk digambar trennya</translation>
+    </message>
+    <message>
+        <location line="+49"/>
         <source>Choose a value in a watch&apos;s table to write</source>
         <translation>Pilih nilai di tabel pantauan untuk ditulis</translation>
     </message>

@@ -66,6 +66,7 @@ LatencyHistogramPanel::LatencyHistogramPanel(LatencyRuns *runs, QWidget *parent)
     connect(fit, &QAction::triggered, this, &LatencyHistogramPanel::fitView);
 
     auto *tools = new QToolBar(this);
+    m_tools = tools;
     tools->addWidget(m_runChoice);
     tools->addWidget(m_itemChoice);
     tools->addWidget(m_scaleChoice);
@@ -149,6 +150,14 @@ void LatencyHistogramPanel::showTransactions(const QString &title, const QList<T
 {
     m_runs->setCapture(title, transactions);
     setRun(LatencyRuns::Capture);
+}
+
+void LatencyHistogramPanel::addSourceChoice(QWidget *choice)
+{
+    QAction *first = m_tools->actions().value(0);
+    m_tools->insertWidget(first, choice);
+    if (first)
+        m_tools->insertSeparator(first);
 }
 
 void LatencyHistogramPanel::redrawNow()

@@ -13,6 +13,7 @@
 class QComboBox;
 class QCustomPlot;
 class QLabel;
+class QToolBar;
 class QTableView;
 
 namespace mbscope {
@@ -45,6 +46,8 @@ public:
     void setScale(LatencyBinning::Scale scale);
     [[nodiscard]] LatencyBinning::Scale scale() const { return m_scale; }
 
+    // Puts the choice of whose latency is shown (LatencySource) first in the tool bar.
+    void addSourceChoice(QWidget *choice);
     // Draws now what is pending (tests, screenshots); otherwise within kRedrawMs.
     void redrawNow();
     // Back to the whole histogram after zooming or panning.
@@ -82,6 +85,7 @@ private:
     QComboBox *m_itemChoice;
     QComboBox *m_scaleChoice;
     QLabel *m_summary;
+    QToolBar *m_tools = nullptr;
     QTimer m_redrawTimer;
     Histogram m_histogram;
     LatencyRuns::Run m_run = LatencyRuns::Current;

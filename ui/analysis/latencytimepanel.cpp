@@ -47,6 +47,7 @@ LatencyTimePanel::LatencyTimePanel(QWidget *parent)
     connect(m_follower->clearAction(), &QAction::triggered, this, &LatencyTimePanel::clear);
 
     auto *tools = new QToolBar(this);
+    m_tools = tools;
     tools->addAction(m_follower->followAction());
     tools->addAction(m_follower->clearAction());
     tools->addSeparator();
@@ -124,6 +125,14 @@ QString LatencyTimePanel::summary() const
         .arg(answered)
         .arg(exceptions)
         .arg(failed);
+}
+
+void LatencyTimePanel::addSourceChoice(QWidget *choice)
+{
+    QAction *first = m_tools->actions().value(0);
+    m_tools->insertWidget(first, choice);
+    if (first)
+        m_tools->insertSeparator(first);
 }
 
 void LatencyTimePanel::redrawNow()

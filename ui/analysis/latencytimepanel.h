@@ -9,6 +9,7 @@
 
 class QCustomPlot;
 class QLabel;
+class QToolBar;
 
 namespace mbscope {
 
@@ -44,6 +45,8 @@ public:
     [[nodiscard]] PlotCursor *cursor() const { return m_cursor; }
     [[nodiscard]] PlotExportMenu *exportMenu() const { return m_export; }
     [[nodiscard]] QString summary() const;
+    // Puts the choice of whose latency is shown (LatencySource) first in the tool bar.
+    void addSourceChoice(QWidget *choice);
     // Draws now what is pending (tests, screenshots): otherwise within kRedrawMs.
     void redrawNow();
 
@@ -56,6 +59,7 @@ private:
     PlotCursor *m_cursor;
     PlotExportMenu *m_export;
     QLabel *m_summary;
+    QToolBar *m_tools = nullptr;
     PlotFollower *m_follower;
     qint64 m_startNs = 0;
     double m_lastSeconds = 0;

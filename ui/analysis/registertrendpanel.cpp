@@ -8,6 +8,9 @@
 #include "registers/registertablemodel.h"
 
 #include "protocol/adubuilder.h"
+#include "transport/monotonicclock.h"
+
+#include <QtCore/QDateTime>
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
@@ -55,11 +58,24 @@ QJsonObject seriesToJson(const TrendSeries &s)
                        {QStringLiteral("offset"), s.offset},
                        {QStringLiteral("name"), s.name},
                        {QStringLiteral("unit"), s.unit},
-                       {QStringLiteral("profile"), s.profileName}};
+                       {QStringLiteral("profile"), s.profileName},
+                       {QStringLiteral("watch"), s.watchName}};
 }
 
 std::optional<TrendSeries> seriesFromJson(const QJsonObject &o)
 {
+    const QString watch = o.value(QStringLiteral("watch")).toString();
+    if (!watch.isEmpty()) {
+        const int address = o.value(QStringLiteral("address")).toInt(-1);
+        if (address < 0 || address > 0xFFFF)
+            return std::nullopt;
+        TrendSeries s;
+        s.watchName = watch;
+        s.address = address;
+        s.name = o.value(QStringLiteral("name")).toString();
+        s.unit = o.value(QStringLiteral("unit")).toString();
+        return s;
+    }
     const int table = o.value(QStringLiteral("table")).toInt(-1);
     const int address = o.value(QStringLiteral("address")).toInt(-1);
     const RegisterFormatResult format = RegisterFormat::parse(o.value(QStringLiteral("format")).toString());
@@ -94,6 +110,8 @@ RegisterTrendPanel::RegisterTrendPanel(QWidget *parent)
     , m_follower(new PlotFollower(m_plot, kRedrawMs, this))
     , m_addSelected(new QAction(tr("Add &selected register"), this))
 {
+    m_watchChoice = new QComboBox(this);
+    m_watchValueChoice = new QComboBox(this);
     m_list->setObjectName(QStringLiteral("trendRegisters"));
     m_list->setToolTip(tr("Checked registers are plotted against time"));
     m_table->addItem(tr("Holding registers"), int(ModbusTable::HoldingRegisters));
@@ -122,6 +140,29 @@ RegisterTrendPanel::RegisterTrendPanel(QWidget *parent)
     leftLayout->addWidget(m_list, 1);
     leftLayout->addLayout(fields);
     leftLayout->addWidget(add);
+
+    // Values of the workspace's watches, by watch and point name, decoded as the watch says.
+    auto *watchBox = new QWidget(this);
+    watchBox->setObjectName(QStringLiteral("trendWatchBox"));
+    m_watchChoice->setObjectName(QStringLiteral("trendWatchChoice"));
+    m_watchChoice->setToolTip(tr("A watch of the Watches tab"));
+    m_watchValueChoice->setObjectName(QStringLiteral("trendWatchValueChoice"));
+    m_watchValueChoice->setToolTip(tr("One of the watch's values, by its point's name or its address"));
+    connect(m_watchChoice, &QComboBox::currentIndexChanged, this, &RegisterTrendPanel::refillWatchValues);
+    auto *addWatchValue = new QPushButton(tr("Plot watch value"), watchBox);
+    addWatchValue->setObjectName(QStringLiteral("trendAddWatchValue"));
+    addWatchValue->setToolTip(tr("Plot this value of the watch as the watch polls (Workspace \u2192 Start all)"));
+    connect(addWatchValue, &QPushButton::clicked, this, &RegisterTrendPanel::addFromWatchChoice);
+    auto *watchFields = new QFormLayout;
+    watchFields->setContentsMargins(0, 0, 0, 0);
+    watchFields->addRow(tr("Watch:"), m_watchChoice);
+    watchFields->addRow(tr("Value:"), m_watchValueChoice);
+    auto *watchLayout = new QVBoxLayout(watchBox);
+    watchLayout->setContentsMargins(0, 6, 0, 0);
+    watchLayout->addLayout(watchFields);
+    watchLayout->addWidget(addWatchValue);
+    watchBox->setVisible(false); // until there are watches
+    leftLayout->addWidget(watchBox);
     leftLayout->addWidget(m_message);
 
     m_plot->setObjectName(QStringLiteral("registerTrendPlot"));
@@ -173,10 +214,10 @@ RegisterTrendPanel::RegisterTrendPanel(QWidget *parent)
 
 void RegisterTrendPanel::setProfile(const UnitProfile &unit, const QString &profileName)
 {
-    // Series of the previous profile that are plotted stay; the others leave the list.
+    // Series of the previous profile that are plotted stay, and the watches' values; the others leave the list.
     QList<Row> kept;
     for (const Row &row : std::as_const(m_rows)) {
-        if (row.graph)
+        if (row.graph || row.series.isWatchValue())
             kept.append(row);
     }
     m_rows = kept;
@@ -185,7 +226,7 @@ void RegisterTrendPanel::setProfile(const UnitProfile &unit, const QString &prof
     for (const Row &row : std::as_const(m_rows)) {
         auto *item = new QListWidgetItem(row.series.label(), m_list);
         item->setToolTip(row.series.description());
-        item->setCheckState(row.graph->visible() ? Qt::Checked : Qt::Unchecked);
+        item->setCheckState(row.graph && row.graph->visible() ? Qt::Checked : Qt::Unchecked);
     }
     m_filling = false;
     for (const TrendSeries &series : TrendSeries::fromProfile(unit, profileName)) {
@@ -228,7 +269,7 @@ void RegisterTrendPanel::restoreChoices()
         // A profile's register comes back when its profile is listed; one added by address at once.
         if (row != m_rows.cend())
             setSeriesShown(int(std::distance(m_rows.cbegin(), row)), true);
-        else if (series->name.isEmpty())
+        else if (series->name.isEmpty() || series->isWatchValue())
             addSeries(*series);
     }
     m_restoring = false;
@@ -296,7 +337,17 @@ QCPGraph *RegisterTrendPanel::graphFor(int index)
     row.graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, colour, colour, 3));
     row.graph->setName(row.series.label());
     // The register's history so far: ticking a box shows what was already read, not only what comes.
+    if (row.series.isWatchValue()) {
+        for (const WatchAnswer &answer : std::as_const(m_watchHistory)) {
+            if (answer.watchName != row.series.watchName)
+                continue;
+            if (const qsizetype at = answer.addresses.indexOf(quint16(row.series.address)); at >= 0)
+                row.graph->addData(answer.seconds, answer.values.at(at));
+        }
+    }
     for (const Answer &answer : std::as_const(m_history)) {
+        if (row.series.isWatchValue())
+            break;
         if (row.series.unitId >= 0 && row.series.unitId != answer.unitId)
             continue;
         if (const std::optional<double> value = row.series.valueIn(answer.read))
@@ -328,7 +379,7 @@ bool RegisterTrendPanel::addSelectedFromTable()
     series.format = valueIndex >= 0 ? model->formatOfColumn(current.column()) : RegisterFormat();
     // The profile's meaning when the register is one of its entries in that format.
     for (const Row &row : std::as_const(m_rows)) {
-        if (row.series.table == series.table && row.series.address == series.address
+        if (!row.series.isWatchValue() && row.series.table == series.table && row.series.address == series.address
             && (valueIndex < 0 || row.series.format == series.format)) {
             series = row.series;
             break;
@@ -377,12 +428,12 @@ void RegisterTrendPanel::addTransactions(const QList<Transaction> &transactions)
         if (!read.ok)
             continue; // not a read, or an answer the register table reports
         if (m_startNs == 0)
-            m_startNs = t.sentNs;
-        const double seconds = double(t.doneNs - m_startNs) / 1e9;
+            m_startNs = t.sentNs; // the first answer starts the time axis
+        const double seconds = secondsOf(t.doneNs);
         m_history.append(Answer{seconds, request.unitId, read.answer});
         m_lastSeconds = std::max(m_lastSeconds, seconds);
         for (Row &row : m_rows) {
-            if (!row.graph || (row.series.unitId >= 0 && row.series.unitId != request.unitId))
+            if (!row.graph || row.series.isWatchValue() || (row.series.unitId >= 0 && row.series.unitId != request.unitId))
                 continue;
             if (const std::optional<double> value = row.series.valueIn(read.answer)) {
                 row.graph->addData(seconds, *value);
@@ -397,6 +448,116 @@ void RegisterTrendPanel::addTransactions(const QList<Transaction> &transactions)
         m_follower->scheduleRedraw();
 }
 
+double RegisterTrendPanel::secondsOf(qint64 ns)
+{
+    if (m_startNs == 0)
+        m_startNs = ns;
+    return double(ns - m_startNs) / 1e9;
+}
+
+void RegisterTrendPanel::setWatches(const SessionWatches &watches)
+{
+    m_watches = watches;
+    const QString chosen = m_watchChoice->currentText();
+    {
+        const QSignalBlocker blocker(m_watchChoice);
+        m_watchChoice->clear();
+        for (const WatchDefinition &watch : watches.watches)
+            m_watchChoice->addItem(watch.name);
+        m_watchChoice->setCurrentIndex(std::max(0, m_watchChoice->findText(chosen)));
+    }
+    refillWatchValues();
+    if (QWidget *box = findChild<QWidget *>(QStringLiteral("trendWatchBox")))
+        box->setVisible(!watches.watches.isEmpty());
+}
+
+void RegisterTrendPanel::refillWatchValues()
+{
+    m_watchValueChoice->clear();
+    const int index = m_watchChoice->currentIndex();
+    if (index < 0 || index >= m_watches.watches.size())
+        return;
+    const WatchDefinition &watch = m_watches.watches.at(index);
+    // Its named points, then the addresses of its block that no point names (a FIFO has none).
+    QList<quint16> named;
+    for (const WatchPoint &point : watch.points) {
+        if (point.name.isEmpty())
+            continue;
+        named << point.address;
+        m_watchValueChoice->addItem(point.unit.isEmpty() ? point.name : tr("%1 (%2)").arg(point.name, point.unit), int(point.address));
+    }
+    if (watch.function < 1 || watch.function > 4)
+        return;
+    for (int address = watch.address; address < int(watch.address) + watch.quantity && address <= 0xFFFF; ++address) {
+        if (!named.contains(quint16(address)))
+            m_watchValueChoice->addItem(tr("address %1").arg(ReadAnswer::addressText(address)), address);
+    }
+}
+
+void RegisterTrendPanel::addFromWatchChoice()
+{
+    const int watch = m_watchChoice->currentIndex();
+    if (watch < 0 || watch >= m_watches.watches.size() || m_watchValueChoice->currentIndex() < 0) {
+        showMessage(tr("Not added: choose a watch and one of its values"));
+        return;
+    }
+    const int index = addWatchValue(m_watches.watches.at(watch).name, quint16(m_watchValueChoice->currentData().toInt()));
+    showMessage(tr("Plotting %1").arg(m_rows.at(index).series.label()));
+}
+
+int RegisterTrendPanel::addWatchValue(const QString &watchName, quint16 address, const QString &pointName)
+{
+    TrendSeries series;
+    series.watchName = watchName;
+    series.address = address;
+    series.name = pointName;
+    for (const WatchDefinition &watch : std::as_const(m_watches.watches)) {
+        if (watch.name != watchName)
+            continue;
+        for (const WatchPoint &point : watch.points) {
+            if (point.address == address) {
+                series.name = point.name;
+                series.unit = point.unit;
+            }
+        }
+    }
+    return addSeries(series);
+}
+
+void RegisterTrendPanel::addWatchSamples(const QList<WatchSample> &samples)
+{
+    bool added = false;
+    const qint64 nowNs = monotonicNowNs();
+    const qint64 nowMs = QDateTime::currentMSecsSinceEpoch();
+    for (const WatchSample &sample : samples) {
+        if (!sample.isOk() || sample.values.isEmpty())
+            continue;
+        // The sample's wall-clock time on the transactions' monotonic axis.
+        const double seconds = secondsOf(nowNs - (nowMs - sample.timeMs) * 1000000);
+        WatchAnswer answer{seconds, sample.watchName, {}, {}};
+        answer.addresses.reserve(sample.values.size());
+        answer.values.reserve(sample.values.size());
+        for (const WatchPointValue &value : sample.values) {
+            answer.addresses << value.address;
+            answer.values << value.value;
+        }
+        m_lastSeconds = std::max(m_lastSeconds, seconds);
+        for (Row &row : m_rows) {
+            if (!row.graph || row.series.watchName != sample.watchName)
+                continue;
+            if (const qsizetype at = answer.addresses.indexOf(quint16(row.series.address)); at >= 0) {
+                row.graph->addData(seconds, answer.values.at(at));
+                added = true;
+            }
+        }
+        m_watchHistory.append(std::move(answer));
+    }
+    if (m_watchHistory.size() > kHistoryAnswers)
+        m_watchHistory.remove(0, m_watchHistory.size() - kHistoryAnswers);
+    if (added)
+        m_follower->scheduleRedraw();
+}
+
 void RegisterTrendPanel::clear()
 {
     for (const Row &row : std::as_const(m_rows)) {
@@ -404,6 +565,7 @@ void RegisterTrendPanel::clear()
             row.graph->data()->clear();
     }
     m_history.clear();
+    m_watchHistory.clear();
     m_startNs = 0;
     m_lastSeconds = 0;
     m_cursor->hide();

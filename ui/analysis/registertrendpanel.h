@@ -6,6 +6,8 @@
 #include "protocol/framing.h"
 #include "protocol/readanswer.h"
 #include "profile/deviceprofile.h"
+#include "fleet/watchsample.h"
+#include "watch/watchdefinition.h"
 
 #include <QtCore/QList>
 #include <QtWidgets/QWidget>
@@ -30,7 +32,9 @@ class RegisterTable;
 // reads the window sends (a poll of 03 at 0x0079 gives one point per answer to every chosen
 // register it covers); a register ticked later is plotted from the answers already seen. The list on the left holds the profile's registers by name (checked ones
 // are plotted) and registers added by address with a format; values are scaled as the profile
-// says and the legend names them ("temperature, 40209 (degC)"). Zoom, pan, Follow and the cursor
+// says and the legend names them ("temperature, 40209 (degC)"). Values of the workspace's watches
+// are chosen by watch and point name ("plc words \u203a setpoint (rpm)") and plotted from the
+// watch runner's samples as the watch decodes them, whatever the bench sends. Zoom, pan, Follow and the cursor
 // work as in the LatencyTimePanel.
 class RegisterTrendPanel : public QWidget
 {
@@ -61,6 +65,17 @@ public:
     void addTransactions(const QList<Transaction> &transactions);
     void clear();
 
+    // The workspace's watches: their values are offered by watch and point name ("Watch values").
+    void setWatches(const SessionWatches &watches);
+    // Plots the value at address of watch watchName (its point's name, unit and scaling as the
+    // watch decodes it); its index. Chosen series are kept in the settings like the others.
+    int addWatchValue(const QString &watchName, quint16 address, const QString &pointName = {});
+    // The runner's samples (WatchWorkspace::sampled): one point per answered poll to every chosen
+    // value of its watch.
+    void addWatchSamples(const QList<mbscope::WatchSample> &samples);
+    [[nodiscard]] QComboBox *watchChoice() const { return m_watchChoice; }
+    [[nodiscard]] QComboBox *watchValueChoice() const { return m_watchValueChoice; }
+
     void setFollowing(bool following);
     [[nodiscard]] bool isFollowing() const;
     [[nodiscard]] QCustomPlot *plot() const { return m_plot; }
@@ -78,12 +93,22 @@ private:
         int unitId = 0;
         ReadAnswer read;
     };
+    // An answered poll of a watch, kept compact (addresses and scaled values) for the history.
+    struct WatchAnswer {
+        double seconds = 0;
+        QString watchName;
+        QList<quint16> addresses;
+        QList<double> values;
+    };
     struct Row {
         TrendSeries series;
         QCPGraph *graph = nullptr;
     };
 
     void addFromFields();
+    void addFromWatchChoice();
+    void refillWatchValues();
+    [[nodiscard]] double secondsOf(qint64 ns);
     // The plotted series are kept in the settings and ticked again when listed.
     void saveChoices() const;
     void restoreChoices();
@@ -106,6 +131,10 @@ private:
     RegisterTable *m_registerTable = nullptr;
     QList<Row> m_rows;
     QList<Answer> m_history; // the reads answered since the last clear, newest last (bounded)
+    QList<WatchAnswer> m_watchHistory; // the watches' answered polls, likewise
+    SessionWatches m_watches;
+    QComboBox *m_watchChoice;
+    QComboBox *m_watchValueChoice;
     Framing m_framing = Framing::Rtu;
     qint64 m_startNs = 0;
     double m_lastSeconds = 0;

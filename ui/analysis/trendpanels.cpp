@@ -26,7 +26,7 @@ TrendPanels::TrendPanels(AnalysisDock *dock, LinkController *link, RegisterTable
     m_trends->setFraming(link->url().framing());
     m_sweep->setController(link);
     m_sweep->setRequestSource(std::move(requestSource));
-    connect(link, &LinkController::transactionsFinished, m_latency, &LatencyTimePanel::addTransactions);
+    // Latency over time is fed by the LatencySource (LatencyAnalysis::feedTimePanel): the bench or a watch.
     connect(link, &LinkController::transactionsFinished, m_trends, &RegisterTrendPanel::addTransactions);
     // Another target starts another time axis: points of two devices do not share one.
     connect(link, &LinkController::stateChanged, this, [this, link](LinkController::State state) {

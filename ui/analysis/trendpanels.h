@@ -16,8 +16,9 @@ class RegisterTable;
 class RegisterTrendPanel;
 class SweepPanel;
 
-// The Analysis dock's time panels, wired to the window's link: Latency over time and Register
-// trends get every transaction batch (cleared when the target changes), the trends read the
+// The Analysis dock's time panels, wired to the window's link: Register trends get every
+// transaction batch (cleared when the target changes; Latency over time gets its batches from
+// LatencyAnalysis's source, the bench or a watch), the trends read the
 // link's framing and take registers from the Registers table, and Sweep polls the composer's
 // request through the same LinkController. MainWindow only constructs this and passes profiles.
 class TrendPanels : public QObject

@@ -30,6 +30,14 @@ bool isBits(ModbusTable table)
 
 QString TrendSeries::label() const
 {
+    if (isWatchValue()) {
+        const QString what = name.isEmpty()
+            ? QCoreApplication::translate("mbscope::TrendSeries", "address %1").arg(ReadAnswer::addressText(address))
+            : name;
+        if (unit.isEmpty())
+            return QCoreApplication::translate("mbscope::TrendSeries", "%1 \u203a %2").arg(watchName, what);
+        return QCoreApplication::translate("mbscope::TrendSeries", "%1 \u203a %2 (%3)").arg(watchName, what, unit);
+    }
     const QString reference = ReadAnswer::referenceText(ModiconReference(table, quint16(address)));
     if (name.isEmpty())
         return QCoreApplication::translate("mbscope::TrendSeries", "%1 (%2)").arg(reference, isBits(table) ? QCoreApplication::translate("mbscope::TrendSeries", "bit") : format.name());
@@ -40,6 +48,9 @@ QString TrendSeries::label() const
 
 QString TrendSeries::description() const
 {
+    if (isWatchValue())
+        return QCoreApplication::translate("mbscope::TrendSeries", "%1: watch %2, address %3, as the watch decodes it")
+            .arg(label(), watchName, ReadAnswer::addressText(address));
     const QString where = QCoreApplication::translate("mbscope::TrendSeries", "%1, PDU address %2").arg(label(), ReadAnswer::addressText(address));
     if (isBits(table))
         return where;
@@ -51,6 +62,8 @@ QString TrendSeries::description() const
 
 bool TrendSeries::sameRegister(const TrendSeries &other) const
 {
+    if (isWatchValue() || other.isWatchValue())
+        return watchName == other.watchName && address == other.address;
     return unitId == other.unitId && table == other.table && address == other.address && format == other.format;
 }
 

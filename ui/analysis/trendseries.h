@@ -27,6 +27,12 @@ struct TrendSeries {
     QString name;        // from the profile; empty for a register added by address
     QString unit;        // engineering unit text ("degC")
     QString profileName; // the profile the name comes from
+    // A value of a watch of the workspace (not empty): plotted from the watch's samples, decoded
+    // as the watch says (format, scale, unit); address is the value's first address in the watch,
+    // name its point's name (empty for an address no point names). Table and format do not apply.
+    QString watchName;
+
+    [[nodiscard]] bool isWatchValue() const { return !watchName.isEmpty(); }
 
     // "temperature, 40209 (degC)"; "40209 (i16)" without a name.
     [[nodiscard]] QString label() const;

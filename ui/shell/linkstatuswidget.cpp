@@ -12,7 +12,11 @@ LinkStatusWidget::LinkStatusWidget(QWidget *parent)
     : QWidget(parent)
     , m_stateLabel(new QLabel(this))
     , m_countersLabel(new QLabel(this))
+    , m_watchLabel(new QLabel(this))
 {
+    m_watchLabel->setObjectName(QStringLiteral("watchTrafficLabel"));
+    m_watchLabel->setToolTip(tr("What the watches of the Watches tab sent and received on their own links"));
+    m_watchLabel->hide(); // until the watches poll
     m_stateLabel->setObjectName(QStringLiteral("linkStateLabel"));
     m_countersLabel->setObjectName(QStringLiteral("linkCountersLabel"));
     auto *layout = new QHBoxLayout(this);
@@ -20,6 +24,8 @@ LinkStatusWidget::LinkStatusWidget(QWidget *parent)
     layout->addWidget(m_stateLabel);
     layout->addSpacing(16);
     layout->addWidget(m_countersLabel);
+    layout->addSpacing(16);
+    layout->addWidget(m_watchLabel);
     setState(LinkController::State::Disconnected, {});
     setCounters({});
 }
@@ -53,6 +59,32 @@ void LinkStatusWidget::setCounters(const EngineCounters &counters)
         text += counters.linkErrors == 1 ? tr("  \u00B7  1 link error")
                                          : tr("  \u00B7  %1 link errors").arg(locale.toString(counters.linkErrors));
     m_countersLabel->setText(text);
+}
+
+void LinkStatusWidget::addWatchTraffic(const QList<WatchSample> &samples)
+{
+    if (samples.isEmpty())
+        return;
+    for (const WatchSample &sample : samples) {
+        ++m_watchPolls;
+        if (!sample.isOk())
+            ++m_watchFailures;
+        m_watchBytesOut += sample.requestBytes;
+        m_watchBytesIn += sample.answerBytes;
+    }
+    const QLocale locale;
+    QString text = tr("Watches: TX %1 B  RX %2 B  \u00B7  %3")
+                       .arg(locale.toString(m_watchBytesOut), locale.toString(m_watchBytesIn),
+                            m_watchPolls == 1 ? tr("1 poll") : tr("%1 polls").arg(locale.toString(m_watchPolls)));
+    if (m_watchFailures > 0)
+        text += m_watchFailures == 1 ? tr("  \u00B7  1 failed") : tr("  \u00B7  %1 failed").arg(locale.toString(m_watchFailures));
+    m_watchLabel->setText(text);
+    m_watchLabel->show();
+}
+
+QString LinkStatusWidget::watchTrafficText() const
+{
+    return m_watchLabel->text();
 }
 
 QString LinkStatusWidget::stateText() const

@@ -2,6 +2,8 @@
 
 #include "link/linkcontroller.h"
 
+#include "fleet/watchsample.h"
+
 #include <QtWidgets/QWidget>
 
 class QLabel;
@@ -20,10 +22,19 @@ public:
     void setCounters(const EngineCounters &counters);
     [[nodiscard]] QString stateText() const;
     [[nodiscard]] QString countersText() const;
+    // The watches' polls (Watches tab), counted beside the bench's link: they have links of
+    // their own, which the bench's counters do not see.
+    void addWatchTraffic(const QList<mbscope::WatchSample> &samples);
+    [[nodiscard]] QString watchTrafficText() const;
 
 private:
     QLabel *m_stateLabel = nullptr;
     QLabel *m_countersLabel = nullptr;
+    QLabel *m_watchLabel = nullptr;
+    quint64 m_watchPolls = 0;
+    quint64 m_watchFailures = 0;
+    qint64 m_watchBytesOut = 0;
+    qint64 m_watchBytesIn = 0;
 };
 
 } // namespace mbscope

@@ -6,6 +6,8 @@
 #include "decode/decodepanel.h"
 #include "discovery/scandialog.h"
 #include "analysis/latencyanalysis.h"
+#include "analysis/latencysource.h"
+#include "analysis/registertrendpanel.h"
 #include "link/linkcontroller.h"
 #include "linkstatuswidget.h"
 #include "common/noticebanner.h"
@@ -80,6 +82,7 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_sessionTools->replay(), &ReplayController::captureAnalysed, m_latency, &LatencyAnalysis::showTransactions);
     // Latency over time, Register trends and Sweep tabs; a sweep polls the composer's request.
     m_trends = new TrendPanels(m_analysis, m_controller, m_registers, [this] { return m_composer->bytes(); }, this);
+    m_latency->feedTimePanel(m_trends->latency());
     // Every connection recorded into the capture folder; a journal a crash left is offered back.
     m_recording = new RecordingControl(m_controller, m_session, m_sessionTools->replay(), this);
     connect(m_recording, &RecordingControl::message, this, [this](const QString &text) { statusBar()->showMessage(text, 10000); });
@@ -361,6 +364,23 @@ void MainWindow::buildWorkspace()
     // A log directory that is not absolute is relative to the session document.
     m_workspace->setSessionPathSource([this] { return m_session->filePath(); });
     connect(m_workspace, &WatchWorkspace::changed, m_session, &SessionController::refreshModified);
+    // The watches reach the Analysis dock (Register trends take their values, the latency panels
+    // their polls) and the status bar (their traffic beside the bench's).
+    connect(m_workspace, &WatchWorkspace::definitionsChanged, this, [this] {
+        m_trends->trends()->setWatches(m_workspace->watches());
+        m_latency->source()->setWatches(m_workspace->watches());
+    });
+    connect(m_workspace, &WatchWorkspace::sampled, m_trends->trends(), &RegisterTrendPanel::addWatchSamples);
+    connect(m_workspace, &WatchWorkspace::sampled, m_latency->source(), &LatencySource::addWatchSamples);
+    connect(m_workspace, &WatchWorkspace::sampled, m_linkStatus, &LinkStatusWidget::addWatchTraffic);
+    connect(m_workspace, &WatchWorkspace::trendRequested, this, [this](const QString &watch, quint16 address, const QString &point) {
+        RegisterTrendPanel *trends = m_trends->trends();
+        const int index = trends->addWatchValue(watch, address, point);
+        m_analysisDock->show();
+        m_analysisDock->raise();
+        m_analysis->showPanel(trends);
+        statusBar()->showMessage(tr("Plotting %1 in Analysis \u2192 Register trends").arg(trends->series(index).label()), 10000);
+    });
     m_session->markClean();
 }
 

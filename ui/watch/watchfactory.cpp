@@ -56,7 +56,7 @@ QList<WatchPoint> pointsOf(const TableEntry &entry)
 
 QString WatchFactory::describeBlock(quint8 function, quint16 address, quint16 quantity)
 {
-    return QStringLiteral("%1 0x%2 x%3").arg(tableWord(function)).arg(address, 4, 16, QLatin1Char('0')).arg(quantity);
+    return QStringLiteral("%1 0x%2 x%3").arg(tableWord(function), QString::number(address, 16).rightJustified(4, QLatin1Char('0')).toUpper()).arg(quantity);
 }
 
 QString WatchFactory::uniqueName(const QString &base, const QStringList &taken)
@@ -89,7 +89,7 @@ WatchFromRequest WatchFactory::fromRequest(const QByteArray &adu, Framing framin
     const bool read = function >= 1 && function <= 4;
     if (!read && function != 0x18) {
         result.error = tr("The composer's request is function 0x%1: a watch reads (01-04, or the FIFO 18).")
-                           .arg(function, 2, 16, QLatin1Char('0'));
+                           .arg(QString::number(function, 16).rightJustified(2, QLatin1Char('0')).toUpper());
         return result;
     }
     if (pdu.size() < (read ? 5 : 3)) {

@@ -159,7 +159,8 @@ QVariant WatchTableModel::data(const QModelIndex &index, int role) const
     if (role == Qt::DisplayRole) {
         switch (column) {
         case AddressColumn:
-            return QStringLiteral("%1 (0x%2)").arg(value.address).arg(value.address, 4, 16, QLatin1Char('0'));
+            // Upper-case hex, as everywhere else in the window (the register table, the dissector).
+            return QStringLiteral("%1 (0x%2)").arg(value.address).arg(QString::number(value.address, 16).rightJustified(4, QLatin1Char('0')).toUpper());
         case ReferenceColumn: return referenceText(value.address);
         case NameColumn: return value.name;
         case ValueColumn: return row.known ? value.text : QStringLiteral("\u2014");

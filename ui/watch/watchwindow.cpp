@@ -27,18 +27,32 @@ WatchWindow::WatchWindow(QWidget *parent)
     m_view->verticalHeader()->hide();
     m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 6);
     m_view->horizontalHeader()->setSectionResizeMode(WatchTableModel::RuleColumn, QHeaderView::Stretch);
-    // Fixed widths: resizing to contents would measure every row at every sample.
+    // Fixed widths: resizing to contents would measure every row at every sample. Each column is
+    // as wide as its widest expected text or its header (translated, in the header's font, with
+    // room for the sort indicator and the section's margins), whichever is wider.
     const QFontMetrics metrics = m_view->fontMetrics();
-    m_view->setColumnWidth(WatchTableModel::AddressColumn, metrics.horizontalAdvance(QStringLiteral("65535 (0xFFFF)")) + 12);
-    m_view->setColumnWidth(WatchTableModel::ReferenceColumn, metrics.horizontalAdvance(QStringLiteral("400000")) + 12);
-    m_view->setColumnWidth(WatchTableModel::NameColumn, metrics.horizontalAdvance(QStringLiteral("analog input 10")) + 12);
-    m_view->setColumnWidth(WatchTableModel::ValueColumn, metrics.horizontalAdvance(QStringLiteral("-123456.78")) + 12);
-    m_view->setColumnWidth(WatchTableModel::UnitColumn, metrics.horizontalAdvance(QStringLiteral("rpm")) + 16);
-    m_view->setColumnWidth(WatchTableModel::ChangedColumn, metrics.horizontalAdvance(QStringLiteral("00:00:00.000")) + 12);
+    const QFontMetrics headerMetrics = m_view->horizontalHeader()->fontMetrics();
+    const auto fit = [&](int column, const QString &sample) {
+        const QString header = m_model->headerData(column, Qt::Horizontal, Qt::DisplayRole).toString();
+        m_view->setColumnWidth(column, std::max(metrics.horizontalAdvance(sample) + 12, headerMetrics.horizontalAdvance(header) + 16));
+    };
+    fit(WatchTableModel::AddressColumn, QStringLiteral("65535 (0xFFFF)"));
+    fit(WatchTableModel::ReferenceColumn, QStringLiteral("400000"));
+    fit(WatchTableModel::NameColumn, QStringLiteral("analog input 10"));
+    fit(WatchTableModel::ValueColumn, QStringLiteral("-123456.78"));
+    fit(WatchTableModel::UnitColumn, QStringLiteral("rpm"));
+    fit(WatchTableModel::ChangedColumn, QStringLiteral("00:00:00.000"));
     m_view->installEventFilter(this);
     connect(m_view, &QTableView::doubleClicked, this, [this](const QModelIndex &index) {
         if (index.data(WatchTableModel::WritableRole).toBool())
             Q_EMIT writeRequested(index.row());
+    });
+    m_view->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_view, &QWidget::customContextMenuRequested, this, [this](const QPoint &pos) {
+        const QModelIndex index = m_view->indexAt(pos);
+        if (index.isValid())
+            m_view->setCurrentIndex(index);
+        Q_EMIT contextMenuRequested(index.isValid() ? index.row() : -1, m_view->viewport()->mapToGlobal(pos));
     });
     m_counters->setObjectName(QStringLiteral("watchCounters"));
     m_counters->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -79,6 +93,46 @@ QString WatchWindow::countersText(const WatchCounters &c)
     return text;
 }
 
+WatchCounters WatchWindow::carried(const WatchCounters &before, const WatchCounters &now)
+{
+    WatchCounters c = now;
+    c.polls += before.polls;
+    c.ok += before.ok;
+    c.exceptions += before.exceptions;
+    for (auto it = before.exceptionsByCode.cbegin(); it != before.exceptionsByCode.cend(); ++it)
+        c.exceptionsByCode[it.key()] += it.value();
+    c.timeouts += before.timeouts;
+    c.crcErrors += before.crcErrors;
+    c.otherErrors += before.otherErrors;
+    c.linkErrors += before.linkErrors;
+    c.reconnects += before.reconnects;
+    c.ruleFirings += before.ruleFirings;
+    c.overruns += before.overruns;
+    if (now.lastErrorMs == 0) {
+        c.lastError = before.lastError;
+        c.lastErrorMs = before.lastErrorMs;
+    }
+    c.lastOkMs = std::max(before.lastOkMs, now.lastOkMs);
+    if (now.latencyCount == 0) {
+        c.lastLatencyNs = before.lastLatencyNs;
+        c.minLatencyNs = before.minLatencyNs;
+        c.maxLatencyNs = before.maxLatencyNs;
+    } else if (before.latencyCount > 0) {
+        c.minLatencyNs = std::min(before.minLatencyNs, now.minLatencyNs);
+        c.maxLatencyNs = std::max(before.maxLatencyNs, now.maxLatencyNs);
+    }
+    c.latencyCount = before.latencyCount + now.latencyCount;
+    if (c.latencyCount > 0)
+        c.meanLatencyNs = (before.meanLatencyNs * double(before.latencyCount) + now.meanLatencyNs * double(now.latencyCount))
+            / double(c.latencyCount);
+    if (c.latencyBuckets.isEmpty())
+        c.latencyBuckets = before.latencyBuckets;
+    else
+        for (int i = 0; i < std::min(c.latencyBuckets.size(), before.latencyBuckets.size()); ++i)
+            c.latencyBuckets[i] += before.latencyBuckets.at(i);
+    return c;
+}
+
 void WatchWindow::setCounters(const WatchCounters &counters)
 {
     m_lastCounters = counters;
@@ -89,6 +143,14 @@ void WatchWindow::setLinkState(const WatchLinkState &state)
 {
     m_link = state;
     m_hasLink = true;
+    updateStatus();
+}
+
+void WatchWindow::setPolling(bool polling)
+{
+    if (m_polling == polling)
+        return;
+    m_polling = polling;
     updateStatus();
 }
 
@@ -110,6 +172,7 @@ void WatchWindow::updateStatus()
             link += tr(", reconnected %1\u00d7").arg(m_link.reconnects);
         text = link + QStringLiteral(" \u00b7 ") + text;
     }
+    text = (m_polling ? tr("Polling") : tr("Stopped")) + QStringLiteral(" \u00b7 ") + text;
     m_counters->setText(text);
 }
 

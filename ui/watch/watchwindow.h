@@ -28,8 +28,14 @@ public:
 
     void setCounters(const WatchCounters &counters);
     void setLinkState(const WatchLinkState &state);
+    // Whether the runner polls this watch now: said first in the status line.
+    void setPolling(bool polling);
+    [[nodiscard]] bool isPolling() const { return m_polling; }
     // The watch's link as last reported (Stopped before the first report).
     [[nodiscard]] WatchLinkState::State linkState() const { return m_hasLink ? m_link.state : WatchLinkState::State::Stopped; }
+    // The counters of a watch whose runner was restarted (another watch started or stopped alone)
+    // carried on: before's counts plus now's, the last error and latency the newest.
+    [[nodiscard]] static WatchCounters carried(const WatchCounters &before, const WatchCounters &now);
     // The counters line as shown ("polls 12 · ok 11 · exceptions 0 · timeouts 1 · ...").
     [[nodiscard]] static QString countersText(const WatchCounters &counters);
     // The selected cells as tab-separated text (a header row first), for the clipboard.
@@ -37,6 +43,8 @@ public:
 
 Q_SIGNALS:
     void writeRequested(int row);
+    // A right click in the table (row -1 outside the rows), at globalPos.
+    void contextMenuRequested(int row, const QPoint &globalPos);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -50,6 +58,7 @@ private:
     WatchCounters m_lastCounters;
     WatchLinkState m_link;
     bool m_hasLink = false;
+    bool m_polling = false;
 };
 
 } // namespace mbscope

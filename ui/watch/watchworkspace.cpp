@@ -55,6 +55,7 @@ WatchWorkspace::WatchWorkspace(QWidget *parent)
     bar->addSeparator();
     bar->addAction(m_startAction);
     bar->addAction(m_stopAction);
+    bar->addAction(m_pollThisAction);
     bar->addSeparator();
     bar->addAction(m_tabbedAction);
     bar->addAction(m_log->logAction());
@@ -137,10 +138,28 @@ void WatchWorkspace::createActions()
         if (WatchWindow *w = window(currentIndex()))
             QGuiApplication::clipboard()->setText(w->selectionText());
     });
+    m_pollThisAction = new QAction(tr("Poll t&his watch"), this);
+    m_pollThisAction->setObjectName(QStringLiteral("pollThisWatchAction"));
+    m_pollThisAction->setCheckable(true);
+    m_pollThisAction->setIconText(tr("Poll this watch"));
+    m_pollThisAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F5));
+    m_pollThisAction->setToolTip(tr("Start or stop the current watch alone; the others go on as they are"));
+    // triggered, not toggled: updateActions() sets the check to what the runner does.
+    connect(m_pollThisAction, &QAction::triggered, this, [this](bool checked) {
+        const int index = currentIndex();
+        m_pollThisAction->setChecked(!checked); // the result, not the click, decides (updatePolling)
+        if (checked)
+            startWatch(index);
+        else
+            stopWatch(index);
+    });
+    m_trendAction = make(tr("Trend this &value"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G), &WatchWorkspace::trendCurrent);
+    m_trendAction->setObjectName(QStringLiteral("trendWatchValueAction"));
+    m_trendAction->setToolTip(tr("Plot the chosen value of this watch in Analysis \u2192 Register trends as it polls"));
     // What acts on the current watch (close, write, copy...) answers its keys only while the
     // focus is in the workspace: Ctrl+W in the composer must not close a watch out of sight.
     for (QAction *action : {m_editAction, m_duplicateAction, m_closeAction, m_moveLeftAction, m_moveRightAction,
-                            m_writeAction, m_copyAction}) {
+                            m_writeAction, m_copyAction, m_pollThisAction, m_trendAction}) {
         action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
         addAction(action);
     }
@@ -155,9 +174,28 @@ void WatchWorkspace::createActions()
 QList<QAction *> WatchWorkspace::menuActions() const
 {
     return {m_newAction,   m_fromRequestAction, m_fromProfileAction, m_editAction,      m_duplicateAction,
-            nullptr,       m_startAction,       m_stopAction,        nullptr,           m_nextAction,
+            nullptr,       m_startAction,       m_stopAction,        m_pollThisAction,  nullptr,           m_nextAction,
             m_moveLeftAction, m_moveRightAction, m_closeAction,      nullptr,           m_writeAction,
-            m_copyAction,  nullptr,             m_tabbedAction,      m_log->logAction(), m_log->settingsAction()};
+            m_copyAction,  m_trendAction, nullptr,             m_tabbedAction,      m_log->logAction(), m_log->settingsAction()};
+}
+
+QList<QAction *> WatchWorkspace::windowMenuActions() const
+{
+    return {m_pollThisAction, nullptr, m_trendAction, m_writeAction, m_copyAction, nullptr, m_editAction, m_closeAction};
+}
+
+void WatchWorkspace::showWindowMenu(int index, const QPoint &globalPos)
+{
+    setCurrentIndex(index);
+    updateActions();
+    QMenu menu(this);
+    for (QAction *action : windowMenuActions()) {
+        if (action)
+            menu.addAction(action);
+        else
+            menu.addSeparator();
+    }
+    menu.exec(globalPos);
 }
 
 WatchWindow *WatchWorkspace::window(int index) const
@@ -217,10 +255,17 @@ QMdiSubWindow *WatchWorkspace::addWindow(int index)
     auto *w = new WatchWindow;
     w->model()->setDefinition(m_watches.watches.at(index));
     connect(w, &WatchWindow::writeRequested, this, [this, w](int row) { requestWrite(int(m_windows.indexOf(w)), row); });
+    connect(w, &WatchWindow::contextMenuRequested, this,
+            [this, w](int, const QPoint &globalPos) { showWindowMenu(int(m_windows.indexOf(w)), globalPos); });
+    connect(w->view()->selectionModel(), &QItemSelectionModel::currentChanged, this, &WatchWorkspace::updateActions);
     m_windows.insert(index, w);
     QMdiSubWindow *sub = m_area->addSubWindow(w);
     sub->setAttribute(Qt::WA_DeleteOnClose, false);
-    sub->setWindowIcon(QIcon(QPixmap(1, 1))); // no application icon in every tab
+    // No application icon in every tab: a see-through pixel (a bare QPixmap(1, 1) is not filled
+    // and drew a stray dot before each tab's name).
+    QPixmap none(1, 1);
+    none.fill(Qt::transparent);
+    sub->setWindowIcon(QIcon(none));
     // The window's own keys (Ctrl+W, Ctrl+F4 in its system menu) would close the window and
     // leave the watch: Close watch does both, and closing by the title bar's button goes there.
     if (QMenu *menu = sub->systemMenu()) {
@@ -257,7 +302,10 @@ void WatchWorkspace::updateWindowTitle(int index)
 {
     const WatchDefinition &watch = m_watches.watches.at(index);
     if (WatchWindow *w = window(index)) {
-        w->setWindowTitle(watch.enabled ? watch.name : tr("%1 (off)").arg(watch.name));
+        // While others poll, a watch stopped on its own says so; "off" is the saved "Poll this watch".
+        const bool stopped = isRunning() && watch.enabled && !isPolling(index);
+        w->setWindowTitle(!watch.enabled ? tr("%1 (off)").arg(watch.name) : stopped ? tr("%1 (stopped)").arg(watch.name) : watch.name);
+        w->setPolling(isPolling(index));
         w->setToolTip(tr("%1, unit %2, every %3 ms").arg(watch.target).arg(watch.unit).arg(watch.intervalMs));
     }
 }
@@ -290,6 +338,7 @@ void WatchWorkspace::setWatches(const SessionWatches &watches)
         setCurrentIndex(0);
         m_frontWhenShown = isVisible() ? -1 : 0;
     }
+    Q_EMIT definitionsChanged();
 }
 
 void WatchWorkspace::showEvent(QShowEvent *event)
@@ -305,16 +354,22 @@ void WatchWorkspace::showEvent(QShowEvent *event)
 void WatchWorkspace::watchesEdited()
 {
     if (m_runner && m_runner->isRunning()) {
-        m_runner->setWatches(m_watches);
+        // Edited definitions: their counters start anew.
+        m_carrying = false;
+        m_carried.clear();
+        m_runner->setWatches(runnerWatches());
         m_log->start(m_watches); // the files follow the watches (and their indices)
     }
     updateActions();
+    Q_EMIT definitionsChanged();
     Q_EMIT changed();
 }
 
 int WatchWorkspace::addWatch(const WatchDefinition &watch)
 {
     m_watches.watches.append(watch);
+    if (isRunning() && watch.enabled)
+        m_polled.insert(watch.name); // a watch made while the others poll polls too
     const int index = count() - 1;
     addWindow(index);
     setCurrentIndex(index);
@@ -326,6 +381,12 @@ void WatchWorkspace::replaceWatch(int index, const WatchDefinition &watch)
 {
     if (index < 0 || index >= count())
         return;
+    const WatchDefinition &before = m_watches.watches.at(index);
+    if (before.name != watch.name && m_polled.remove(before.name))
+        m_polled.insert(watch.name);
+    // "Poll this watch" ticked in the dialog while the others poll: it polls too.
+    if (isRunning() && !before.enabled && watch.enabled)
+        m_polled.insert(watch.name);
     m_watches.watches[index] = watch;
     m_windows.at(index)->model()->setDefinition(watch);
     updateWindowTitle(index);
@@ -336,6 +397,7 @@ void WatchWorkspace::removeWatch(int index)
 {
     if (index < 0 || index >= count())
         return;
+    m_polled.remove(m_watches.watches.at(index).name);
     m_watches.watches.removeAt(index);
     WatchWindow *w = m_windows.takeAt(index);
     if (auto *sub = qobject_cast<QMdiSubWindow *>(w->parentWidget())) {
@@ -451,8 +513,22 @@ void WatchWorkspace::startAll()
         Q_EMIT message(tr("No watches to start: make one first (Workspace \u2192 New watch)"));
         return;
     }
+    m_polled.clear();
+    for (const WatchDefinition &watch : std::as_const(m_watches.watches)) {
+        if (watch.enabled)
+            m_polled.insert(watch.name);
+    }
+    startRunner();
+    Q_EMIT message(tr("Polling %n watch(es)", nullptr, int(m_polled.size())));
+}
+
+void WatchWorkspace::startRunner()
+{
+    m_carrying = false;
+    m_carried.clear();
+    m_lastCounters.clear();
     delete m_runner;
-    m_runner = new WatchRunner(m_watches, this);
+    m_runner = new WatchRunner(runnerWatches(), this);
     connect(m_runner, &WatchRunner::sampled, this, &WatchWorkspace::onSampled);
     connect(m_runner, &WatchRunner::ruleChanged, this, &WatchWorkspace::onRule);
     connect(m_runner, &WatchRunner::linkStateChanged, this, &WatchWorkspace::onLinkState);
@@ -462,9 +538,8 @@ void WatchWorkspace::startAll()
             });
     m_runner->start();
     m_log->start(m_watches);
-    updateActions();
+    updatePolling();
     Q_EMIT runningChanged(true);
-    Q_EMIT message(tr("Polling %n watch(es)", nullptr, count()));
 }
 
 void WatchWorkspace::stopAll()
@@ -472,8 +547,9 @@ void WatchWorkspace::stopAll()
     if (!m_runner || !m_runner->isRunning())
         return;
     m_runner->stop();
+    m_polled.clear();
     m_log->watchesStopped();
-    updateActions();
+    updatePolling();
     Q_EMIT runningChanged(false);
     Q_EMIT message(tr("Watches stopped"));
 }
@@ -481,6 +557,94 @@ void WatchWorkspace::stopAll()
 bool WatchWorkspace::isRunning() const
 {
     return m_runner && m_runner->isRunning();
+}
+
+bool WatchWorkspace::isPolling(int index) const
+{
+    return isRunning() && index >= 0 && index < count() && m_watches.watches.at(index).enabled
+        && m_polled.contains(m_watches.watches.at(index).name);
+}
+
+SessionWatches WatchWorkspace::runnerWatches() const
+{
+    SessionWatches polled = m_watches;
+    for (WatchDefinition &watch : polled.watches)
+        watch.enabled = watch.enabled && m_polled.contains(watch.name);
+    return polled;
+}
+
+void WatchWorkspace::startWatch(int index)
+{
+    if (index < 0 || index >= count() || isPolling(index))
+        return;
+    WatchDefinition &watch = m_watches.watches[index];
+    if (!watch.enabled) {
+        watch.enabled = true; // asked for by name: its "Poll this watch" is ticked (saved in the session)
+        m_windows.at(index)->model()->setDefinition(watch);
+        Q_EMIT changed();
+    }
+    if (isRunning()) {
+        // The runner takes the new set: its links open again and its counters start anew, so
+        // the windows carry on what they counted (this watch's too, from before it stopped).
+        m_carrying = true;
+        m_polled.insert(watch.name);
+        m_runner->setWatches(runnerWatches());
+        updatePolling();
+    } else {
+        m_polled.insert(watch.name);
+        startRunner();
+    }
+    Q_EMIT message(tr("Polling watch '%1'").arg(watch.name));
+}
+
+void WatchWorkspace::stopWatch(int index)
+{
+    if (!isPolling(index))
+        return;
+    const QString name = m_watches.watches.at(index).name;
+    m_polled.remove(name);
+    if (m_polled.isEmpty()) {
+        stopAll();
+    } else {
+        m_carrying = true;
+        m_runner->setWatches(runnerWatches());
+        updatePolling();
+    }
+    Q_EMIT message(tr("Watch '%1' stopped").arg(name));
+}
+
+WatchCounters WatchWorkspace::shownCounters(const WatchCounters &counters)
+{
+    const QString &name = counters.watchName;
+    if (m_carrying) {
+        const auto last = m_lastCounters.constFind(name);
+        // Each batch of one run counts more polls than the one before: fewer is a new run.
+        if (last != m_lastCounters.cend() && counters.polls <= last->polls)
+            m_carried.insert(name, WatchWindow::carried(m_carried.value(name), *last));
+    }
+    m_lastCounters.insert(name, counters);
+    const auto carried = m_carried.constFind(name);
+    return carried == m_carried.cend() ? counters : WatchWindow::carried(*carried, counters);
+}
+
+void WatchWorkspace::updatePolling()
+{
+    for (int i = 0; i < count(); ++i)
+        updateWindowTitle(i);
+    updateActions();
+}
+
+void WatchWorkspace::trendCurrent()
+{
+    const int index = currentIndex();
+    WatchWindow *w = window(index);
+    if (!w || !w->view()->currentIndex().isValid()) {
+        Q_EMIT message(tr("Choose a value in a watch's table to trend"));
+        return;
+    }
+    const int row = w->view()->currentIndex().row();
+    const WatchPointValue &value = w->model()->valueAt(row);
+    Q_EMIT trendRequested(m_watches.watches.at(index).name, value.address, value.name);
 }
 
 void WatchWorkspace::onSampled(const QList<WatchSample> &samples, const QList<WatchCounters> &counters)
@@ -493,10 +657,12 @@ void WatchWorkspace::onSampled(const QList<WatchSample> &samples, const QList<Wa
         w->model()->applySample(sample);
     }
     for (const WatchCounters &c : counters) {
-        if (WatchWindow *w = window(c.watch); w && m_watches.watches.at(c.watch).name == c.watchName)
-            w->setCounters(c);
+        if (WatchWindow *w = window(c.watch); w && m_watches.watches.at(c.watch).name == c.watchName) {
+            w->setCounters(shownCounters(c));
+        }
     }
     m_log->append(samples);
+    Q_EMIT sampled(samples);
 }
 
 void WatchWorkspace::onRule(const WatchRuleEvent &event)
@@ -592,6 +758,11 @@ void WatchWorkspace::updateActions()
         action->setEnabled(any);
     m_startAction->setEnabled(any);
     m_stopAction->setEnabled(running);
+    const int current = currentIndex();
+    m_pollThisAction->setEnabled(any);
+    m_pollThisAction->setChecked(isPolling(current));
+    WatchWindow *w = window(current);
+    m_trendAction->setEnabled(w && w->view()->currentIndex().isValid());
 }
 
 } // namespace mbscope

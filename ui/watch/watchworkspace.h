@@ -4,6 +4,10 @@
 
 #include "watch/watchdefinition.h"
 
+#include "fleet/watchcounters.h"
+
+#include <QtCore/QMap>
+#include <QtCore/QSet>
 #include <QtWidgets/QWidget>
 
 #include <functional>
@@ -69,6 +73,12 @@ public:
     void startAll();
     void stopAll();
     [[nodiscard]] bool isRunning() const;
+    // One watch on its own: started (a watch that is off, "Poll this watch" unticked, is turned on),
+    // or stopped while the others go on polling. The runner takes the new set of polled watches.
+    void startWatch(int index);
+    void stopWatch(int index);
+    // Whether the runner polls watch index now.
+    [[nodiscard]] bool isPolling(int index) const;
     [[nodiscard]] WatchRunner *runner() const { return m_runner; }
 
     // Writes text into row of watch index's table (a writable point): false with the reason.
@@ -90,6 +100,12 @@ public:
     [[nodiscard]] QAction *tabbedAction() const { return m_tabbedAction; }
     [[nodiscard]] QAction *closeAction() const { return m_closeAction; }
     [[nodiscard]] QAction *copyAction() const { return m_copyAction; }
+    // Starts or stops the current watch (checked while it polls).
+    [[nodiscard]] QAction *pollThisAction() const { return m_pollThisAction; }
+    // Asks for the current value of the current watch in the Register trends.
+    [[nodiscard]] QAction *trendAction() const { return m_trendAction; }
+    // The actions of a watch window's context menu, in order (separators as null).
+    [[nodiscard]] QList<QAction *> windowMenuActions() const;
 
     // How the workspace asks: a watch dialog (true: accepted), a value to write. Replaceable, so
     // tests answer without a modal dialog.
@@ -101,9 +117,16 @@ public:
 Q_SIGNALS:
     // The definitions changed by the user (the session is modified).
     void changed();
+    // The definitions changed, by the user or by a session opened (names, links, points).
+    void definitionsChanged();
     // A line for the status bar.
     void message(const QString &text);
     void runningChanged(bool running);
+    // Every batch of the runner's samples, as the windows got them (trends, latency panels, counters).
+    void sampled(const QList<mbscope::WatchSample> &samples);
+    // The user asked for a value of a watch in the Register trends ("Trend this value"); the
+    // point is named by its name, or by its address when it has none.
+    void trendRequested(const QString &watchName, quint16 address, const QString &pointName);
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -121,12 +144,27 @@ private:
     void editCurrent();
     void writeCurrent();
     void requestWrite(int index, int row);
+    void trendCurrent();
+    void showWindowMenu(int index, const QPoint &globalPos);
+    void startRunner();
+    void updatePolling();
+    // The watches as the runner gets them: only those polled now are enabled.
+    [[nodiscard]] SessionWatches runnerWatches() const;
     void onSampled(const QList<WatchSample> &samples, const QList<WatchCounters> &counters);
     void onRule(const WatchRuleEvent &event);
     void onLinkState(const WatchLinkState &state);
     [[nodiscard]] bool runDialog(WatchDialog &dialog);
 
     SessionWatches m_watches;
+    QSet<QString> m_polled; // names of the watches polled while the runner runs
+    // Starting or stopping one watch alone restarts the runner's links, and its counters start
+    // anew: the windows carry on counting. A watch's counters that went back (its polls no more
+    // than last time) were restarted; what it had counted is added to what comes. Edited
+    // definitions, Start all and a runner started afresh count from zero (m_carrying false).
+    bool m_carrying = false;
+    QMap<QString, WatchCounters> m_lastCounters; // as the runner last sent them, per watch name
+    QMap<QString, WatchCounters> m_carried;      // counted before the runner's restarts
+    [[nodiscard]] WatchCounters shownCounters(const WatchCounters &counters);
     QMdiArea *m_area;
     QLabel *m_hint;
     QList<WatchWindow *> m_windows;
@@ -151,6 +189,8 @@ private:
     QAction *m_writeAction = nullptr;
     QAction *m_copyAction = nullptr;
     QAction *m_tabbedAction = nullptr;
+    QAction *m_pollThisAction = nullptr;
+    QAction *m_trendAction = nullptr;
 };
 
 } // namespace mbscope
