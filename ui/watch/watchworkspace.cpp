@@ -305,8 +305,7 @@ void WatchWorkspace::showEvent(QShowEvent *event)
 void WatchWorkspace::watchesEdited()
 {
     if (m_runner && m_runner->isRunning()) {
-        m_runner->setWatches(m_watches);
-        m_log->start(m_watches); // the files follow the watches (and their indices)
+        m_runner->setWatches(m_watches); // the CSV files follow the watches (and their indices)
     }
     updateActions();
     Q_EMIT changed();
@@ -460,8 +459,8 @@ void WatchWorkspace::startAll()
             [this](quint64, int, quint16, bool ok, const QString &text) {
                 Q_EMIT message(ok ? tr("Written: %1").arg(text) : tr("Not written: %1").arg(text));
             });
+    m_log->start(m_runner);
     m_runner->start();
-    m_log->start(m_watches);
     updateActions();
     Q_EMIT runningChanged(true);
     Q_EMIT message(tr("Polling %n watch(es)", nullptr, count()));
@@ -496,7 +495,6 @@ void WatchWorkspace::onSampled(const QList<WatchSample> &samples, const QList<Wa
         if (WatchWindow *w = window(c.watch); w && m_watches.watches.at(c.watch).name == c.watchName)
             w->setCounters(c);
     }
-    m_log->append(samples);
 }
 
 void WatchWorkspace::onRule(const WatchRuleEvent &event)
