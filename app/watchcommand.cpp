@@ -1,7 +1,6 @@
 #include "watchcommand.h"
 
 #include "cli.h"
-#include "hangupwatcher.h"
 #include "interruptwatcher.h"
 #include "watchreport.h"
 #include "watchservice.h"
@@ -277,8 +276,8 @@ int runWatch(const QStringList &arguments)
     });
     // SIGHUP: the session read again; the runner restarts with the new watches (counters anew),
     // and so do the metrics and the CSV files. A session that no longer reads changes nothing.
-    HangupWatcher hangup;
-    QObject::connect(&hangup, &HangupWatcher::hangup, &loop, [&] {
+    interrupts.watchHangup();
+    QObject::connect(&interrupts, &InterruptWatcher::hangup, &loop, [&] {
         if (stopping)
             return;
         const SessionLoadResult again = SessionReader::load(options.session);
