@@ -7149,25 +7149,27 @@ Klik kanan untuk mengganti format</translation>
         <source>Write the watches&apos; values to CSV files while they run (one file per watch)</source>
         <translation>Tulis nilai pantauan ke file CSV selama berjalan (satu file per pantauan)</translation>
     </message>
-    <message>
-        <location line="+86"/>
-        <source>Not logging to CSV: %1</source>
-        <translation>Tidak mencatat ke CSV: %1</translation>
+    <message numerus="yes">
+        <location line="+103"/>
+        <source>(%n row(s) could not be written)</source>
+        <translation>
+            <numerusform>(%n baris tidak dapat ditulis)</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-9"/>
         <source>Logging the watches to CSV in %1</source>
         <translation>Mencatat pantauan ke CSV di %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+11"/>
+        <location line="+7"/>
         <source>CSV log closed: %n file(s) in %1</source>
         <translation>
             <numerusform>Log CSV ditutup: %n file di %1</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="-4"/>
         <source>The CSV log cannot be written: %1</source>
         <translation>Log CSV tidak dapat ditulis: %1</translation>
     </message>
@@ -7602,7 +7604,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchWorkspace</name>
     <message>
-        <location filename="../../ui/watch/watchworkspace.cpp" line="+65"/>
+        <location filename="../../ui/watch/watchworkspace.cpp" line="+67"/>
         <source>No watches yet. A watch polls a block of a device at its own interval and shows its values with names, units and rule colours. Make one with Workspace → New watch (%1), from the composer&apos;s read request (%2) or from a device profile (%3); Start all (%4) polls them together.</source>
         <translation>Belum ada pantauan. Sebuah pantauan mem-polling satu blok perangkat pada intervalnya sendiri dan menampilkan nilainya dengan nama, unit, dan warna aturan. Buat dengan Daftar pantau → Pantauan baru (%1), dari permintaan baca penyusun (%2) atau dari profil perangkat (%3); Mulai semua (%4) mem-polling semuanya bersama.</translation>
     </message>
@@ -7719,7 +7721,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1, unit %2, setiap %3 ms</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+119"/>
         <source>watch</source>
         <translation>pantauan</translation>
     </message>
@@ -7771,7 +7773,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pantauan dihentikan</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+46"/>
         <source>Choose a value in a watch&apos;s table to write</source>
         <translation>Pilih nilai di tabel pantauan untuk ditulis</translation>
     </message>
