@@ -101,9 +101,9 @@ void WatchLogControl::apply()
         WatchLogSettings settings = m_settings;
         settings.directory = directory();
         m_runner->setLog(settings);
-    }
-    else
+    } else {
         m_runner->setLog(std::nullopt);
+    }
 }
 
 void WatchLogControl::start(WatchRunner *runner)
