@@ -18,12 +18,13 @@ namespace {
 int s_pipe[2] = {-1, -1};
 struct sigaction s_oldInt;
 struct sigaction s_oldTerm;
+struct sigaction s_oldHup;
 
 void onSignal(int number)
 {
     const int saved = errno;
     const char byte = char(number);
-    // Nothing to do when the pipe is full: one byte already says "stop".
+    // Nothing to do when the pipe is full: the bytes already there say it.
     [[maybe_unused]] const ssize_t n = ::write(s_pipe[1], &byte, 1);
     errno = saved;
 }
@@ -55,29 +56,56 @@ InterruptWatcher::~InterruptWatcher()
     delete m_notifier;
     sigaction(SIGINT, &s_oldInt, nullptr);
     sigaction(SIGTERM, &s_oldTerm, nullptr);
+    if (m_hangup)
+        sigaction(SIGHUP, &s_oldHup, nullptr);
     ::close(s_pipe[0]);
     ::close(s_pipe[1]);
     s_pipe[0] = s_pipe[1] = -1;
+}
+
+void InterruptWatcher::watchHangup()
+{
+    if (s_pipe[0] < 0 || m_hangup)
+        return;
+    struct sigaction action = {};
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART; // stays: a service is reloaded many times
+    sigaction(SIGHUP, &action, &s_oldHup);
+    m_hangup = true;
 }
 
 void InterruptWatcher::onReadable()
 {
     char bytes[16];
     ssize_t n = 0;
+    bool sawInterrupt = false;
+    bool sawHangup = false;
     while ((n = ::read(s_pipe[0], bytes, sizeof bytes)) > 0) {
-        if (m_signal == 0)
-            m_signal = int(quint8(bytes[0]));
+        for (ssize_t i = 0; i < n; ++i) {
+            const int number = int(quint8(bytes[i]));
+            if (number == SIGHUP) {
+                sawHangup = true;
+            } else {
+                sawInterrupt = true;
+                if (m_signal == 0)
+                    m_signal = number;
+            }
+        }
     }
-    if (m_interrupted)
-        return;
-    m_interrupted = true;
-    Q_EMIT interrupted();
+    if (sawHangup && !m_interrupted)
+        Q_EMIT hangup();
+    if (sawInterrupt && !m_interrupted) {
+        m_interrupted = true;
+        Q_EMIT interrupted();
+    }
 }
 
 #else
 
 InterruptWatcher::InterruptWatcher(QObject *parent) : QObject(parent) {}
 InterruptWatcher::~InterruptWatcher() = default;
+void InterruptWatcher::watchHangup() {}
 void InterruptWatcher::onReadable() {}
 
 #endif

@@ -6,10 +6,13 @@ class QSocketNotifier;
 
 namespace mbscope::app {
 
-// Ctrl-C (SIGINT) and SIGTERM as a Qt signal, so a poll can stop and still print its statistics.
-// The handler only writes a byte to a pipe (the one thing a signal handler may safely do) and
-// puts the default action back: a second Ctrl-C ends the process at once, as users expect when
-// the first one seems not to work. The event loop reads the pipe and emits interrupted().
+// The process signals a command answers, as Qt signals, read from a pipe by the event loop (the
+// handler only writes the signal's number to it, the one thing a signal handler may safely do):
+// - Ctrl-C (SIGINT) and SIGTERM: interrupted(), once, so a poll can stop and still print its
+//   statistics. The default action is put back: a second Ctrl-C ends the process at once, as
+//   users expect when the first one seems not to work.
+// - SIGHUP, when watchHangup() asked for it (systemctl reload, kill -HUP): hangup(), every time
+//   (several in a row are one), the handler staying since a service is reloaded many times.
 // One watcher at a time; the handlers are restored when it goes.
 class InterruptWatcher : public QObject
 {
@@ -18,18 +21,23 @@ public:
     explicit InterruptWatcher(QObject *parent = nullptr);
     ~InterruptWatcher() override;
 
+    // SIGHUP too, from now on (else it ends the process, its default).
+    void watchHangup();
+
     [[nodiscard]] bool isInterrupted() const { return m_interrupted; }
-    // The signal that arrived (SIGINT or SIGTERM), 0 before one did.
+    // The signal that interrupted (SIGINT or SIGTERM), 0 before one did.
     [[nodiscard]] int signalNumber() const { return m_signal; }
 
 Q_SIGNALS:
     void interrupted();
+    void hangup();
 
 private:
     void onReadable();
 
     QSocketNotifier *m_notifier = nullptr;
     bool m_interrupted = false;
+    bool m_hangup = false;
     int m_signal = 0;
 };
 

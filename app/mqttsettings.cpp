@@ -1,6 +1,7 @@
 #include "mqttsettings.h"
 
 #include <QtCore/QFile>
+#include <QtCore/QFileInfo>
 #include <QtCore/QUrl>
 #include <QtCore/QUrlQuery>
 
@@ -85,7 +86,8 @@ std::optional<MqttSettings> MqttSettings::fromUrl(const QString &text, QString *
     return s;
 }
 
-bool MqttSettings::loadCredentials(const QString &file, const QProcessEnvironment &environment, QString *error)
+bool MqttSettings::loadCredentials(const QString &file, const QProcessEnvironment &environment, QString *error,
+                                   QStringList *warnings)
 {
     if (file.isEmpty()) {
         username = environment.value(QStringLiteral("MBSCOPE_MQTT_USERNAME"));
@@ -114,6 +116,25 @@ bool MqttSettings::loadCredentials(const QString &file, const QProcessEnvironmen
         *error = QStringLiteral("%1, line 1: expected the MQTT user name (line 1: user name, line 2: password)").arg(file);
         return false;
     }
+    for (int i = 2; i < lines.size(); ++i) {
+        if (!line(i).trimmed().isEmpty()) {
+            *error = QStringLiteral("%1, line %2: unexpected: the file holds the MQTT user name (line 1) and password (line 2) only")
+                         .arg(file)
+                         .arg(i + 1);
+            return false;
+        }
+    }
+    if (!warnings)
+        return true;
+    // Group or others may read it: ssh refuses such a key; a service whose file systemd made
+    // (LoadCredential=) never sees this, a file left 0644 by an editor does.
+    const QFileDevice::Permissions others = QFileDevice::ReadGroup | QFileDevice::ReadOther;
+    if (const QFileDevice::Permissions p = QFileInfo(file).permissions(); p & others) {
+        warnings->append(QStringLiteral("%1 may be read by %2: it holds the MQTT password; chmod 600 %1")
+                             .arg(file, (p & QFileDevice::ReadOther) ? QStringLiteral("every user") : QStringLiteral("its group")));
+    }
+    if (password.isEmpty())
+        warnings->append(QStringLiteral("%1, line 2: no password: the broker gets the user name '%2' alone").arg(file, username));
     return true;
 }
 

@@ -2,6 +2,7 @@
 
 #include <QtCore/QProcessEnvironment>
 #include <QtCore/QString>
+#include <QtCore/QStringList>
 
 #include <optional>
 
@@ -32,7 +33,11 @@ struct MqttSettings {
     // The file holds the user name on its first line and the password on its second (a file made
     // for it, readable by the service only: systemd's LoadCredential= puts one in %d). Without a
     // file, the environment's MBSCOPE_MQTT_USERNAME and MBSCOPE_MQTT_PASSWORD, when set.
-    [[nodiscard]] bool loadCredentials(const QString &file, const QProcessEnvironment &environment, QString *error);
+    // Refused, naming the line: no user name, a line after the password. Said in *warnings, as ssh
+    // says of a private key: a file that others than its owner may read (they may read the
+    // password), and a file without a password (the broker gets the user name alone).
+    [[nodiscard]] bool loadCredentials(const QString &file, const QProcessEnvironment &environment, QString *error,
+                                       QStringList *warnings = nullptr);
     // "mqtts://broker:8883" for logs: never the credentials.
     [[nodiscard]] QString displayUrl() const;
     // A topic level may not hold the wildcards '+' and '#' (MQTT 3.1.1, 4.7.1).

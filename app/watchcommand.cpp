@@ -1,7 +1,6 @@
 #include "watchcommand.h"
 
 #include "cli.h"
-#include "hangupwatcher.h"
 #include "interruptwatcher.h"
 #include "watchreport.h"
 #include "watchservice.h"
@@ -9,9 +8,9 @@
 #include "fleet/watchrunner.h"
 #include "session/sessionreader.h"
 #include "time/duration.h"
-#include "watch/watchcsvlog.h"
 
 #include <QtCore/QCommandLineParser>
+#include <QtCore/QDir>
 #include <QtCore/QEventLoop>
 #include <QtCore/QFileInfo>
 #include <QtCore/QJsonArray>
@@ -171,33 +170,30 @@ int runWatch(const QStringList &arguments)
     }
 
     // CSV: --csv DIR (relative to the working directory), else the session's watchLog (relative
-    // to the document). Opened again, for the new set of watches, when SIGHUP reloads the session.
-    std::unique_ptr<WatchCsvLog> csv;
-    const auto openCsv = [&](const SessionWatches &w, QString *error) {
-        if (csv)
-            csv->close();
-        csv.reset();
+    // to the document). The runner's log thread writes the files (values and rule events); they
+    // open anew, for the new set of watches, when SIGHUP reloads the session. The folder is made
+    // here first, so that one that cannot be made is said before anything runs.
+    const auto csvSettings = [&](const SessionWatches &w, QString *error) -> std::optional<WatchLogSettings> {
         if (!options.csvDirectory && !(w.log && w.log->enabled))
-            return true;
+            return std::nullopt;
         WatchLogSettings log = w.log.value_or(WatchLogSettings{});
-        QString base = QFileInfo(options.session).absolutePath();
-        if (options.csvDirectory) {
-            log.directory = *options.csvDirectory;
-            base = QString();
-        }
+        log.enabled = true;
+        log.directory = options.csvDirectory ? QDir(*options.csvDirectory).absolutePath()
+                                             : QDir(QFileInfo(options.session).absolutePath()).absoluteFilePath(log.directory);
         if (options.csvMode)
             log.mode = *options.csvMode;
-        csv = std::make_unique<WatchCsvLog>(log, base);
-        if (!csv->open(w.watches, error)) {
-            csv.reset();
-            return false;
+        if (!QDir().mkpath(log.directory)) {
+            *error = QStringLiteral("%1: the log directory cannot be made").arg(log.directory);
+            return std::nullopt;
         }
-        return true;
+        return log;
     };
+    std::optional<WatchLogSettings> csv;
     {
         QString error;
-        if (!openCsv(watches, &error)) {
-            err << "mbscope watch: " << error << '\n';
+        csv = csvSettings(watches, &error);
+        if (!error.isEmpty()) {
+            err << "mbscope watch: CSV: " << error << '\n';
             return ExitUsage;
         }
     }
@@ -212,6 +208,7 @@ int runWatch(const QStringList &arguments)
         }
     }
     service.setWatches(watches);
+    runner.setLog(csv);
     QEventLoop loop;
     InterruptWatcher interrupts;
     bool stopping = false;
@@ -233,17 +230,11 @@ int runWatch(const QStringList &arguments)
                 failed = true;
             if (options.json)
                 printJson(out, WatchReport::sampleJson(s));
-            else if (!s.isOk())
-                err << "mbscope watch: " << WatchReport::errorLine(s) << '\n';
-            else if (!options.quiet)
+            else if (!s.isOk()) {
+                if (!s.linkError)
+                    service.log().warning(WatchReport::errorLine(s));
+            } else if (!options.quiet)
                 out << WatchReport::sampleLine(s) << '\n';
-            if (csv) {
-                QString error;
-                if (!csv->append(s.watch, s.timeMs, watchSampleStatusName(s.status), s.values, s.error, &error) && !csvFailed) {
-                    csvFailed = true;
-                    err << "mbscope watch: " << error << " (logging stops; polling goes on)\n";
-                }
-            }
         }
         out.flush();
         err.flush();
@@ -257,6 +248,19 @@ int runWatch(const QStringList &arguments)
                 stop();
         }
     });
+    // The CSV log's troubles, said as they happen; the rows lost, when its files close.
+    QStringList csvFiles;
+    QObject::connect(&runner, &WatchRunner::logFailed, &loop, [&](const QString &message) {
+        csvFailed = true;
+        service.log().error(QStringLiteral("CSV: %1 (polling goes on; the rows lost are counted)").arg(message));
+    });
+    QObject::connect(&runner, &WatchRunner::logClosed, &loop, [&](const QString &, const QStringList &files, quint64 lost) {
+        csvFiles += files;
+        if (lost > 0) {
+            csvFailed = true;
+            service.log().error(QStringLiteral("CSV: %1 %2 could not be written").arg(lost).arg(lost == 1 ? QStringLiteral("row") : QStringLiteral("rows")));
+        }
+    });
     QObject::connect(&runner, &WatchRunner::ruleChanged, &loop, [&](const WatchRuleEvent &e) {
         if (options.json)
             printJson(out, WatchReport::ruleJson(e));
@@ -264,22 +268,16 @@ int runWatch(const QStringList &arguments)
             out << WatchReport::ruleLine(e) << '\n';
         out.flush();
     });
+    // A link that fails is said by the service's log (WatchService): once when it goes down, with
+    // the reason, once when it is back; the polls it costs are not said again one by one.
     QObject::connect(&runner, &WatchRunner::linkStateChanged, &loop, [&](const WatchLinkState &s) {
-        if (options.json) {
+        if (options.json)
             printJson(out, WatchReport::linkJson(s));
-            return;
-        }
-        // Said: the wait after a failure (the poll's error line has said what failed) and the link
-        // coming back. Opening, a first open, down (always followed by the wait) and stopped are not.
-        if (s.state != WatchLinkState::State::Backoff && !(s.state == WatchLinkState::State::Up && s.failures > 0))
-            return;
-        err << "mbscope watch: " << WatchReport::linkLine(s) << '\n';
-        err.flush();
     });
     // SIGHUP: the session read again; the runner restarts with the new watches (counters anew),
     // and so do the metrics and the CSV files. A session that no longer reads changes nothing.
-    HangupWatcher hangup;
-    QObject::connect(&hangup, &HangupWatcher::hangup, &loop, [&] {
+    interrupts.watchHangup();
+    QObject::connect(&interrupts, &InterruptWatcher::hangup, &loop, [&] {
         if (stopping)
             return;
         const SessionLoadResult again = SessionReader::load(options.session);
@@ -298,8 +296,10 @@ int runWatch(const QStringList &arguments)
         runner.setWatches(watches);
         service.setWatches(watches);
         QString error;
-        if (!openCsv(watches, &error))
+        csv = csvSettings(watches, &error);
+        if (!error.isEmpty())
             service.log().error(QStringLiteral("SIGHUP: CSV: %1 (logging stops; polling goes on)").arg(error));
+        runner.setLog(csv);
         service.log().notice(QStringLiteral("SIGHUP: %1 read again, %2 %3").arg(options.session).arg(on).arg(on == 1 ? QStringLiteral("watch") : QStringLiteral("watches")));
     });
     QTimer durationTimer;
@@ -316,8 +316,6 @@ int runWatch(const QStringList &arguments)
     runner.start();
     loop.exec();
 
-    if (csv)
-        csv->close();
     service.stop();
     if (options.json) {
         QJsonArray counters;
@@ -326,16 +324,16 @@ int runWatch(const QStringList &arguments)
         QJsonObject summary;
         summary.insert(QLatin1String("type"), QStringLiteral("summary"));
         summary.insert(QLatin1String("watches"), counters);
-        if (csv)
-            summary.insert(QLatin1String("csv_files"), QJsonArray::fromStringList(csv->files()));
+        if (!csvFiles.isEmpty())
+            summary.insert(QLatin1String("csv_files"), QJsonArray::fromStringList(csvFiles));
         printJson(out, summary);
     } else {
         for (const WatchCounters &c : runner.allCounters()) {
             if (watches.watches.at(c.watch).enabled)
                 out << WatchReport::countersLine(c) << '\n';
         }
-        if (csv)
-            out << "CSV: " << csv->files().join(QLatin1String(", ")) << '\n';
+        if (!csvFiles.isEmpty())
+            out << "CSV: " << csvFiles.join(QLatin1String(", ")) << '\n';
     }
     out.flush();
     return failed || csvFailed ? ExitFailure : ExitOk;

@@ -70,24 +70,6 @@ QString WatchReport::ruleLine(const WatchRuleEvent &e)
              e.fired ? QStringLiteral("fired") : QStringLiteral("cleared"), e.message, QString::number(e.value, 'g', 10));
 }
 
-QString WatchReport::linkLine(const WatchLinkState &s)
-{
-    switch (s.state) {
-    case WatchLinkState::State::Backoff:
-        return QStringLiteral("%1: link down; next attempt in %2").arg(s.target, formatDuration(qint64(s.retryInMs) * 1'000'000));
-    case WatchLinkState::State::Up:
-        return s.reconnects > 0 ? QStringLiteral("%1: link up again (reconnect %2)").arg(s.target).arg(s.reconnects)
-                                : QStringLiteral("%1: link up").arg(s.target);
-    case WatchLinkState::State::Down:
-        return QStringLiteral("%1: link down: %2").arg(s.target, s.message);
-    case WatchLinkState::State::Connecting:
-        return QStringLiteral("%1: opening the link").arg(s.target);
-    case WatchLinkState::State::Stopped:
-        return QStringLiteral("%1: stopped").arg(s.target);
-    }
-    return {};
-}
-
 QString WatchReport::countersLine(const WatchCounters &c)
 {
     QString text = QStringLiteral("%1: %2 polls, %3 ok, %4 exceptions, %5 timeouts, %6 CRC errors, %7 other errors, "

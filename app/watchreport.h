@@ -21,8 +21,6 @@ public:
     [[nodiscard]] static QString errorLine(const WatchSample &sample);
     // "06:15:02.001 gamma ALARM: counts above 300 counts for 3 polls (312)"; "... cleared: ..."
     [[nodiscard]] static QString ruleLine(const WatchRuleEvent &event);
-    // "tcp://127.0.0.1:5020: down: connection refused; next attempt in 500 ms"
-    [[nodiscard]] static QString linkLine(const WatchLinkState &state);
     // "gamma: 120 polls, 118 ok, 2 timeouts ...; latency min 2.1 ms, mean 4.3 ms, max 9.8 ms"
     [[nodiscard]] static QString countersLine(const WatchCounters &counters);
 

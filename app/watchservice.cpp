@@ -69,10 +69,14 @@ std::optional<WatchService::Options> WatchService::readOptions(const QCommandLin
         *error = QStringLiteral("--mqtt: ") + why;
         return std::nullopt;
     }
-    if (!settings->loadCredentials(parser.value(QStringLiteral("mqtt-credentials")), QProcessEnvironment::systemEnvironment(), &why)) {
+    QStringList warnings;
+    if (!settings->loadCredentials(parser.value(QStringLiteral("mqtt-credentials")), QProcessEnvironment::systemEnvironment(), &why,
+                                   &warnings)) {
         *error = QStringLiteral("--mqtt-credentials: ") + why;
         return std::nullopt;
     }
+    for (const QString &warning : std::as_const(warnings))
+        options.warnings.append(QStringLiteral("--mqtt-credentials: ") + warning);
     WatchMqtt::Options mqtt;
     mqtt.prefix = settings->prefix;
     if (mqtt.prefix.isEmpty()) {
@@ -117,6 +121,8 @@ WatchService::~WatchService() = default;
 
 bool WatchService::start(QString *error)
 {
+    for (const QString &warning : std::as_const(m_options.warnings))
+        m_log.warning(warning);
     if (m_endpoint) {
         if (!m_endpoint->listen(*m_options.metrics, error)) {
             *error = QStringLiteral("--metrics: ") + *error;

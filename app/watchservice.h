@@ -8,6 +8,7 @@
 
 #include <QtCore/QObject>
 #include <QtCore/QSet>
+#include <QtCore/QStringList>
 #include <QtCore/QUrl>
 
 #include <memory>
@@ -35,6 +36,7 @@ public:
         std::optional<ListenAddress> metrics;
         std::optional<WatchMqtt::Options> mqtt;
         ServiceLog::Level logLevel = ServiceLog::Level::Info;
+        QStringList warnings; // about the options, said as the service starts (a credentials file others may read)
     };
 
     static void addOptions(QCommandLineParser &parser);

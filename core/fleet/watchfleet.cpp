@@ -33,6 +33,7 @@ WatchLinkSettings WatchFleet::linkSettings(const SessionWatches &watches, const 
 void WatchFleet::start(const SessionWatches &watches)
 {
     stopPollers();
+    Q_EMIT started(watches);
     QList<QString> targets;
     QMap<QString, QList<WatchLinkPoller::Watch>> byTarget;
     for (int i = 0; i < watches.watches.size(); ++i) {

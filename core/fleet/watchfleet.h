@@ -32,6 +32,8 @@ public:
     [[nodiscard]] static WatchLinkSettings linkSettings(const SessionWatches &watches, const QString &target);
 
 Q_SIGNALS:
+    // The watches of start(), before their first sample.
+    void started(const mbscope::SessionWatches &watches);
     void sampled(const QList<mbscope::WatchSample> &samples, const QList<mbscope::WatchCounters> &counters);
     void ruleChanged(const mbscope::WatchRuleEvent &event);
     void linkStateChanged(const mbscope::WatchLinkState &state);

@@ -281,6 +281,7 @@ void WatchLinkPoller::finishPoll(const Transaction &t)
     } else {
         s.status = WatchSample::Status::Error;
         s.error = t.problem.isEmpty() ? transactionStatusName(t.status) : t.problem;
+        s.linkError = t.status == TransactionStatus::LinkError;
     }
 
     ++c.polls;
@@ -359,6 +360,7 @@ void WatchLinkPoller::failOpen(const QString &message)
         s.poll = ++e.polls;
         s.status = WatchSample::Status::Error;
         s.error = message;
+        s.linkError = true;
         ++e.counters.polls;
         ++e.counters.linkErrors;
         e.counters.lastError = message;

@@ -1,6 +1,7 @@
 #include "watchrunner.h"
 
 #include "fleet/watchfleet.h"
+#include "fleet/watchlogwriter.h"
 
 namespace mbscope {
 
@@ -8,6 +9,7 @@ WatchRunner::WatchRunner(const SessionWatches &watches, QObject *parent)
     : QObject(parent)
     , m_watches(watches)
     , m_fleet(new WatchFleet)
+    , m_writer(new WatchLogWriter)
 {
     qRegisterMetaType<mbscope::WatchSample>();
     qRegisterMetaType<QList<mbscope::WatchSample>>();
@@ -15,6 +17,7 @@ WatchRunner::WatchRunner(const SessionWatches &watches, QObject *parent)
     qRegisterMetaType<QList<mbscope::WatchCounters>>();
     qRegisterMetaType<mbscope::WatchRuleEvent>();
     qRegisterMetaType<mbscope::WatchLinkState>();
+    qRegisterMetaType<mbscope::SessionWatches>();
     resetCounters();
     m_thread.setObjectName(QStringLiteral("mbscope watches"));
     m_fleet->moveToThread(&m_thread);
@@ -23,21 +26,45 @@ WatchRunner::WatchRunner(const SessionWatches &watches, QObject *parent)
     connect(m_fleet, &WatchFleet::ruleChanged, this, &WatchRunner::ruleChanged);
     connect(m_fleet, &WatchFleet::linkStateChanged, this, &WatchRunner::linkStateChanged);
     connect(m_fleet, &WatchFleet::writeFinished, this, &WatchRunner::writeFinished);
-    connect(m_fleet, &WatchFleet::stopped, this, [this] {
+    // The log takes what the fleet emits in the fleet's thread, in its order; stopped() waits for
+    // its files to close.
+    m_logThread.setObjectName(QStringLiteral("mbscope watch log"));
+    m_writer->moveToThread(&m_logThread);
+    connect(&m_logThread, &QThread::finished, m_writer, &QObject::deleteLater);
+    connect(m_fleet, &WatchFleet::started, m_writer, &WatchLogWriter::watchesStarted);
+    connect(m_fleet, &WatchFleet::sampled, m_writer, &WatchLogWriter::append);
+    connect(m_fleet, &WatchFleet::ruleChanged, m_writer, &WatchLogWriter::appendEvent);
+    connect(m_fleet, &WatchFleet::stopped, m_writer, &WatchLogWriter::watchesStopped);
+    connect(m_writer, &WatchLogWriter::opened, this, &WatchRunner::logOpened);
+    connect(m_writer, &WatchLogWriter::failed, this, &WatchRunner::logFailed);
+    connect(m_writer, &WatchLogWriter::closed, this, &WatchRunner::logClosed);
+    connect(m_writer, &WatchLogWriter::drained, this, [this] {
         if (!m_running)
             Q_EMIT stopped();
     });
+    m_logThread.start();
     m_thread.start();
 }
 
 WatchRunner::~WatchRunner()
 {
-    QMetaObject::invokeMethod(m_fleet, [fleet = m_fleet] {
-        disconnect(fleet, nullptr, nullptr, nullptr);
-        fleet->stop();
-    }, Qt::BlockingQueuedConnection);
+    // Nothing more reaches this runner; the log still takes the fleet's last samples.
+    disconnect(m_fleet, nullptr, this, nullptr);
+    disconnect(m_writer, nullptr, this, nullptr);
+    QMetaObject::invokeMethod(m_fleet, [fleet = m_fleet] { fleet->stop(); }, Qt::BlockingQueuedConnection);
     m_thread.quit();
     m_thread.wait();
+    // Queued after the fleet's last samples and its stop: written, then the files closed.
+    QMetaObject::invokeMethod(m_writer, [writer = m_writer] { writer->configure(std::nullopt, QString()); },
+                              Qt::BlockingQueuedConnection);
+    m_logThread.quit();
+    m_logThread.wait();
+}
+
+void WatchRunner::setLog(const std::optional<WatchLogSettings> &settings, const QString &baseDirectory)
+{
+    QMetaObject::invokeMethod(m_writer, [writer = m_writer, settings, baseDirectory] { writer->configure(settings, baseDirectory); },
+                              Qt::QueuedConnection);
 }
 
 void WatchRunner::resetCounters()

@@ -10,9 +10,12 @@
 #include <QtCore/QObject>
 #include <QtCore/QThread>
 
+#include <optional>
+
 namespace mbscope {
 
 class WatchFleet;
+class WatchLogWriter;
 
 // Runs a session's watches: an engine per distinct link URL, the watches of one link taking turns
 // in order with the link's gap between requests, each at its own interval; reconnects after a
@@ -24,8 +27,13 @@ class WatchFleet;
 // that owns the runner: samples in batches (at most ~30 a second) with the counters of the
 // watches they concern, rule events and link states as they happen, and write results.
 //
+// The CSV log (setLog) is written in a third thread (WatchLogWriter): samples and rule events go
+// there straight from the pollers' thread, never through the runner's, so a window that logs
+// does not wait on the disk. Its files open when the watches start and close before stopped().
+//
 //   WatchRunner runner(session.watches);
 //   connect(&runner, &WatchRunner::sampled, ...);
+//   runner.setLog(session.watches.log, sessionFolder);
 //   runner.start();            // ... runner.stop(); stopped() follows once every link is closed
 class WatchRunner : public QObject
 {
@@ -43,6 +51,11 @@ public:
     void stop();
     [[nodiscard]] bool isRunning() const { return m_running; }
 
+    // Logs the watches to CSV as settings say while they run (nullopt or not enabled: no log); a
+    // relative folder is baseDirectory's. May be called running or not; logOpened() or
+    // logFailed() says how it went.
+    void setLog(const std::optional<WatchLogSettings> &settings, const QString &baseDirectory = {});
+
     // Writes words to a point marked writable of a watch (holding registers: 06 or 10, the
     // point's registers in wire order; coils: 05, one word 0 or 1), before that link's next poll.
     // Returns an id that writeFinished() carries; a refused write is said there too.
@@ -58,6 +71,13 @@ Q_SIGNALS:
     void ruleChanged(const mbscope::WatchRuleEvent &event);
     void linkStateChanged(const mbscope::WatchLinkState &state);
     void writeFinished(quint64 id, int watch, quint16 address, bool ok, const QString &message);
+    // The CSV log: its files opened in directory; a file or row that cannot be written (said once
+    // until writing works again); the files closed (the watches stopped or changed, or setLog),
+    // with the files written and the rows lost.
+    void logOpened(const QString &directory);
+    void logFailed(const QString &message);
+    void logClosed(const QString &directory, const QStringList &files, quint64 lostRows);
+    // After stop(): every link closed, the last samples handed out and the CSV files closed.
     void stopped();
 
 private:
@@ -68,6 +88,8 @@ private:
     QList<WatchCounters> m_counters;
     QThread m_thread;
     WatchFleet *m_fleet; // lives in m_thread
+    QThread m_logThread;
+    WatchLogWriter *m_writer; // lives in m_logThread
     bool m_running = false;
     quint64 m_nextWriteId = 0;
 };

@@ -24,6 +24,7 @@ struct WatchSample {
     Status status = Status::Timeout;
     quint8 exceptionCode = 0;
     QString error;            // what went wrong, for every status but Ok
+    bool linkError = false;   // Error because the link failed: its WatchLinkState says so too
     QList<quint16> words;     // registers in wire order (Enron: two per address)
     QList<bool> bits;         // coils and discrete inputs
     QList<WatchPointValue> values; // the answer decoded (WatchDecoder); empty unless Ok

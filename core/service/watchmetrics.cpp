@@ -23,6 +23,7 @@ QString codeText(int code)
 
 WatchMetrics::WatchMetrics(const QString &version)
     : m_process(m_registry)
+    , m_version(version)
     , m_value(m_registry.gauge(QStringLiteral("mbscope_watch_value"),
                                QStringLiteral("A watched register's or bit's value, scaled to its engineering unit."), kValue))
     , m_bitField(m_registry.gauge(QStringLiteral("mbscope_watch_bit_field_value"), QStringLiteral("A named bit field's value."),
@@ -57,9 +58,14 @@ WatchMetrics::WatchMetrics(const QString &version)
     , m_linkFailures(m_registry.counter(QStringLiteral("mbscope_link_failures_total"),
                                         QStringLiteral("Link errors, failed opens included."), {QStringLiteral("target")}))
 {
+    setBuildInfo();
+}
+
+void WatchMetrics::setBuildInfo()
+{
     m_registry.gauge(QStringLiteral("mbscope_build_info"), QStringLiteral("The mbscope version, as a label; always 1."),
                      {QStringLiteral("version")})
-        .set({version}, 1);
+        .set({m_version}, 1);
 }
 
 QList<double> WatchMetrics::latencyBuckets()
@@ -89,10 +95,10 @@ QStringList WatchMetrics::watchLabels(int watch) const
 
 void WatchMetrics::reset(const SessionWatches &watches)
 {
-    for (MetricFamily *f : {&m_value, &m_bitField, &m_up, &m_polls, &m_ok, &m_exceptions, &m_timeouts, &m_crcErrors, &m_linkErrors,
-                            &m_badAnswers, &m_overruns, &m_ruleFirings, &m_ruleActive, &m_latency, &m_lastSuccess, &m_linkUp,
-                            &m_linkReconnects, &m_linkFailures})
-        f->clear();
+    // Every family starts over, one added later too (the process's are read again at the next
+    // scrape); the version is the one series that stays.
+    m_registry.clearSeries();
+    setBuildInfo();
     m_watches = watches;
     for (int i = 0; i < m_watches.watches.size(); ++i) {
         if (!m_watches.watches.at(i).enabled)

@@ -64,9 +64,11 @@ public:
 
 private:
     [[nodiscard]] QStringList watchLabels(int watch) const;
+    void setBuildInfo();
 
     MetricsRegistry m_registry;
     ProcessMetrics m_process;
+    QString m_version;
     SessionWatches m_watches;
     MetricFamily &m_value;
     MetricFamily &m_bitField;

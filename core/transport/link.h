@@ -28,8 +28,6 @@ struct LinkError {
     };
     Kind kind = Kind::None;
     QString message; // begins with the link's URL
-
-    [[nodiscard]] bool isError() const { return kind != Kind::None; }
 };
 
 // One connection to a device: bytes out, bytes in, with monotonic nanosecond timestamps. Links

@@ -7,6 +7,8 @@
 #include <QtCore/QDir>
 #include <QtCore/QFileInfo>
 
+#include <utility>
+
 namespace mbscope {
 
 namespace {
@@ -75,9 +77,15 @@ QStringList WatchCsvLog::columns(const WatchDefinition &watch)
     return columns;
 }
 
+QString WatchCsvLog::eventHeader()
+{
+    return QStringLiteral("time,event,severity,rule,point,value,message,fired");
+}
+
 bool WatchCsvLog::open(const QList<WatchDefinition> &watches, QString *error)
 {
     close();
+    m_lostRows = 0;
     if (!QDir().mkpath(m_directory)) {
         if (error)
             *error = QStringLiteral("%1: the log directory cannot be made").arg(m_directory);
@@ -87,33 +95,64 @@ bool WatchCsvLog::open(const QList<WatchDefinition> &watches, QString *error)
     for (const WatchDefinition &w : watches) {
         File f;
         f.watch = w;
+        f.valueColumns = columns(w).size() - 3;
         m_logs.push_back(std::move(f));
     }
     return true;
 }
 
-bool WatchCsvLog::startFile(File &f, qint64 timeMs, QString *error)
+bool WatchCsvLog::startFile(Output &out, const QString &stemName, const QString &header, qint64 timeMs, QString *error)
 {
-    if (f.file)
-        f.file->close();
+    if (out.file) {
+        flushOutput(out, error);
+        out.file->close();
+        out.file.reset();
+    }
+    // The folder may have been removed while logging (a clean-up script, a user): made again.
+    if (!QDir().mkpath(m_directory)) {
+        if (error)
+            *error = QStringLiteral("%1: the log directory cannot be made").arg(m_directory);
+        return false;
+    }
     const QString stamp = QDateTime::fromMSecsSinceEpoch(timeMs, Qt::UTC).toString(QStringLiteral("yyyyMMdd-HHmmss"));
-    const QString stem = QDir(m_directory).filePath(fileStem(f.watch.name) + QLatin1Char('-') + stamp);
+    const QString stem = QDir(m_directory).filePath(stemName + QLatin1Char('-') + stamp);
     QString path = stem + QStringLiteral(".csv");
     for (int n = 2; QFileInfo::exists(path); ++n)
         path = stem + QStringLiteral("-%1.csv").arg(n);
-    f.file = std::make_unique<QFile>(path);
-    if (!f.file->open(QIODevice::WriteOnly | QIODevice::Text)) {
+    out.file = std::make_unique<QFile>(path);
+    if (!out.file->open(QIODevice::WriteOnly | QIODevice::Text)) {
         if (error)
-            *error = QStringLiteral("%1: cannot be written: %2").arg(path, f.file->errorString());
-        f.file.reset();
+            *error = QStringLiteral("%1: cannot be written: %2").arg(path, out.file->errorString());
+        out.file.reset();
         return false;
     }
-    const QByteArray head = (header(f.watch) + QLatin1Char('\n')).toUtf8();
-    f.file->write(head);
-    f.bytes = head.size();
-    f.startedMs = timeMs;
-    f.hasRow = false;
+    const QByteArray head = (header + QLatin1Char('\n')).toUtf8();
+    out.file->write(head);
+    out.bytes = head.size();
+    out.startedMs = timeMs;
+    out.unflushedRows = 0;
     m_files.append(path);
+    return true;
+}
+
+bool WatchCsvLog::writeRow(Output &out, const QString &stem, const QString &header, qint64 timeMs, const QByteArray &line,
+                           QString *error)
+{
+    const bool roll = out.file
+        && ((m_settings.rollBytes > 0 && out.bytes >= m_settings.rollBytes)
+            || (m_settings.rollSeconds > 0 && timeMs - out.startedMs >= m_settings.rollSeconds * 1000));
+    if ((!out.file || roll) && !startFile(out, stem, header, timeMs, error)) {
+        ++m_lostRows;
+        return false;
+    }
+    if (out.file->write(line) != line.size()) {
+        if (error)
+            *error = QStringLiteral("%1: cannot be written: %2").arg(out.file->fileName(), out.file->errorString());
+        ++m_lostRows;
+        return false;
+    }
+    out.bytes += line.size();
+    ++out.unflushedRows;
     return true;
 }
 
@@ -130,55 +169,83 @@ bool WatchCsvLog::append(int watch, qint64 timeMs, const QString &status, const 
     if (m_settings.mode == WatchLogSettings::Mode::OnChange && f.hasRow && status == f.lastStatus
         && (texts == f.lastValues || texts.isEmpty()))
         return true;
-    const bool roll = f.file
-        && ((m_settings.rollBytes > 0 && f.bytes >= m_settings.rollBytes)
-            || (m_settings.rollSeconds > 0 && timeMs - f.startedMs >= m_settings.rollSeconds * 1000));
-    if (!f.file || roll) {
-        if (!startFile(f, timeMs, error))
-            return false;
-    }
     QStringList row{isoTime(timeMs), status};
     for (const QString &t : std::as_const(texts))
         row.append(csvField(t));
-    if (texts.isEmpty()) {
-        // A failed poll: the value columns are left empty.
-        const qsizetype valueColumns = columns(f.watch).size() - 3;
-        for (qsizetype i = 0; i < valueColumns; ++i)
-            row.append(QString());
-    }
+    // A failed poll leaves the value columns empty, and a FIFO that holds fewer values than its
+    // most the columns after them: every row has the header's columns.
+    for (qsizetype i = texts.size(); i < f.valueColumns; ++i)
+        row.append(QString());
     row.append(csvField(errorText));
     const QByteArray line = (row.join(QLatin1Char(',')) + QLatin1Char('\n')).toUtf8();
-    if (f.file->write(line) != line.size()) {
-        if (error)
-            *error = QStringLiteral("%1: cannot be written: %2").arg(f.file->fileName(), f.file->errorString());
+    if (!writeRow(f.values, fileStem(f.watch.name), header(f.watch), timeMs, line, error))
         return false;
-    }
-    f.bytes += line.size();
     f.hasRow = true;
     f.lastStatus = status;
     if (!texts.isEmpty())
         f.lastValues = texts;
-    if (timeMs - m_lastFlushMs >= 1000) {
-        flush();
-        m_lastFlushMs = timeMs;
-    }
-    return true;
+    return maybeFlush(timeMs, error);
 }
 
-void WatchCsvLog::flush()
+bool WatchCsvLog::appendEvent(const WatchRuleEvent &event, QString *error)
 {
+    if (event.watch < 0 || event.watch >= int(m_logs.size()))
+        return true;
+    File &f = m_logs[std::size_t(event.watch)];
+    const QStringList row{isoTime(event.timeMs),
+                          event.fired ? QStringLiteral("fired") : QStringLiteral("cleared"),
+                          watchSeverityName(event.severity),
+                          QString::number(event.rule),
+                          csvField(event.point),
+                          QString::number(event.value, 'g', 10),
+                          csvField(event.message),
+                          QString::number(event.firedCount)};
+    const QByteArray line = (row.join(QLatin1Char(',')) + QLatin1Char('\n')).toUtf8();
+    if (!writeRow(f.events, fileStem(f.watch.name) + QStringLiteral("-events"), eventHeader(), event.timeMs, line, error))
+        return false;
+    return maybeFlush(event.timeMs, error);
+}
+
+bool WatchCsvLog::maybeFlush(qint64 timeMs, QString *error)
+{
+    if (timeMs - m_lastFlushMs < 1000)
+        return true;
+    m_lastFlushMs = timeMs;
+    return flush(error);
+}
+
+bool WatchCsvLog::flushOutput(Output &out, QString *error)
+{
+    if (!out.file)
+        return true;
+    const quint64 rows = std::exchange(out.unflushedRows, 0);
+    if (out.file->flush())
+        return true;
+    m_lostRows += rows;
+    if (error)
+        *error = QStringLiteral("%1: cannot be written: %2").arg(out.file->fileName(), out.file->errorString());
+    return false;
+}
+
+bool WatchCsvLog::flush(QString *error)
+{
+    bool ok = true;
     for (File &f : m_logs) {
-        if (f.file)
-            f.file->flush();
+        ok = flushOutput(f.values, ok ? error : nullptr) && ok;
+        ok = flushOutput(f.events, ok ? error : nullptr) && ok;
     }
+    return ok;
 }
 
 void WatchCsvLog::close()
 {
     for (File &f : m_logs) {
-        if (f.file) {
-            f.file->close();
-            f.file.reset();
+        for (Output *out : {&f.values, &f.events}) {
+            if (out->file) {
+                flushOutput(*out, nullptr);
+                out->file->close();
+                out->file.reset();
+            }
         }
     }
 }

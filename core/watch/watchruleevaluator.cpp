@@ -121,16 +121,4 @@ QList<WatchRuleEvent> WatchRuleEvaluator::evaluate(const QList<WatchPointValue> 
     return events;
 }
 
-int WatchRuleEvaluator::activeRuleAt(quint16 address) const
-{
-    int best = -1;
-    for (int r = 0; r < m_states.size(); ++r) {
-        if (!m_states.at(r).active || m_states.at(r).address != address)
-            continue;
-        if (best < 0 || m_watch.rules.at(r).severity > m_watch.rules.at(best).severity)
-            best = r;
-    }
-    return best;
-}
-
 } // namespace mbscope

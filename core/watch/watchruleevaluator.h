@@ -23,8 +23,6 @@ public:
 
     [[nodiscard]] bool isActive(int rule) const { return m_states.at(rule).active; }
     [[nodiscard]] quint64 firedCount(int rule) const { return m_states.at(rule).fired; }
-    // The active rule of the highest severity on the value at address, or -1.
-    [[nodiscard]] int activeRuleAt(quint16 address) const;
 
     // Whether the condition holds for a value (raw for the bits condition).
     [[nodiscard]] static bool holds(const WatchRule &rule, double value, quint64 raw);

@@ -8154,25 +8154,27 @@ Klik kanan untuk mengganti format</translation>
         <source>Write the watches&apos; values to CSV files while they run (one file per watch)</source>
         <translation>Tulis nilai pantauan ke file CSV selama berjalan (satu file per pantauan)</translation>
     </message>
-    <message>
-        <location line="+86"/>
-        <source>Not logging to CSV: %1</source>
-        <translation>Tidak mencatat ke CSV: %1</translation>
+    <message numerus="yes">
+        <location line="+103"/>
+        <source>(%n row(s) could not be written)</source>
+        <translation>
+            <numerusform>(%n baris tidak dapat ditulis)</numerusform>
+        </translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-9"/>
         <source>Logging the watches to CSV in %1</source>
         <translation>Mencatat pantauan ke CSV di %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+11"/>
+        <location line="+7"/>
         <source>CSV log closed: %n file(s) in %1</source>
         <translation>
             <numerusform>Log CSV ditutup: %n file di %1</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="-4"/>
         <source>The CSV log cannot be written: %1</source>
         <translation>Log CSV tidak dapat ditulis: %1</translation>
     </message>

@@ -11,6 +11,7 @@
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
+#include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
 
@@ -98,6 +99,9 @@ private Q_SLOTS:
     void threeDevicesOnThreeLinks();
     void brokenSessionRefused();
     void noWatches();
+    void csvFailureSaidOnceAndCounted();
+    void fifoWatch();
+    void linkErrorSaidOnce();
 };
 
 void TestCliWatch::threeDevicesOnThreeLinks()
@@ -228,10 +232,28 @@ void TestCliWatch::threeDevicesOnThreeLinks()
     }
     QVERIFY(sawReconnect);
 
-    // A CSV file per watch, with the header's names and units and a row per poll (flushed at SIGTERM).
-    const QStringList files = QDir(csvDir).entryList({QStringLiteral("*.csv")}, QDir::Files, QDir::Name);
-    QCOMPARE(files.size(), 3);
+    // A CSV file per watch, with the header's names and units and a row per poll (flushed at
+    // SIGTERM), and one of rule events for the watch whose rule fired.
+    QStringList files = QDir(csvDir).entryList({QStringLiteral("*.csv")}, QDir::Files, QDir::Name);
+    QCOMPARE(files.size(), 4);
+    QCOMPARE(summary.value(QLatin1String("csv_files")).toArray().size(), 4);
     QVERIFY(files.at(0).startsWith(QLatin1String("arduino-")));
+    QVERIFY2(files.at(2).startsWith(QLatin1String("gamma-events-")), qPrintable(files.at(2)));
+    QFile eventsCsv(QDir(csvDir).filePath(files.at(2)));
+    QVERIFY(eventsCsv.open(QIODevice::ReadOnly));
+    const QList<QByteArray> events = eventsCsv.readAll().split('\n');
+    QCOMPARE(events.first(), QByteArray("time,event,severity,rule,point,value,message,fired"));
+    QCOMPARE(qsizetype(events.size() - 2), count(watch.lines(), QStringLiteral("rule"), QStringLiteral("gamma")));
+    const QList<QByteArray> fired = events.at(1).split(',');
+    QCOMPARE(fired.size(), 8);
+    QCOMPARE(fired.at(1), QByteArray("fired"));
+    QCOMPARE(fired.at(2), QByteArray("alarm"));
+    QCOMPARE(fired.at(3), QByteArray("0"));
+    QCOMPARE(fired.at(4), QByteArray("counts"));
+    QVERIFY(fired.at(5).toDouble() > 50);
+    QCOMPARE(fired.at(6), QByteArray("counts above 50 counts for 2 polls"));
+    QCOMPARE(fired.at(7), QByteArray("1"));
+    files.removeAt(2);
     QFile gammaCsv(QDir(csvDir).filePath(files.at(1)));
     QVERIFY(gammaCsv.open(QIODevice::ReadOnly));
     const QList<QByteArray> rows = gammaCsv.readAll().split('\n');
@@ -271,6 +293,125 @@ void TestCliWatch::noWatches()
     // --json: the error object on standard output.
     QVERIFY2(r.json().value(QLatin1String("error")).toObject().value(QLatin1String("message")).toString().contains(QLatin1String("no watches")),
              r.describe().constData());
+}
+
+// The CSV folder made impossible while logging (a file put where it was; the log rolls every few
+// rows, so it needs the folder again): said once on standard error, levelled, while the polls go
+// on; the rows lost are counted when the files close, and the exit status says it.
+void TestCliWatch::csvFailureSaidOnceAndCounted()
+{
+    QString why;
+    Background sim;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")}, &why),
+             qPrintable(why));
+    QTemporaryDir dir;
+    const QString session = dir.filePath(QStringLiteral("plant.mbscope.json"));
+    QVERIFY(writeFile(session, QStringLiteral(R"({"format": "mbscope-session", "version": 2,
+  "watches": [{"name": "plant", "target": "%1", "address": 0, "quantity": 4, "intervalMs": 50}],
+  "watchLog": {"directory": "logs", "rollBytes": 200}})").arg(sim.url()).toUtf8()));
+    WatchProcess watch;
+    QVERIFY(watch.start({QStringLiteral("watch"), session, QStringLiteral("--json")}));
+    QVERIFY2(watch.waitFor([](const QList<QJsonObject> &l) { return count(l, QStringLiteral("sample"), QStringLiteral("plant"), QStringLiteral("ok")) >= 4; }),
+             watch.err().constData());
+    const QString logs = dir.filePath(QStringLiteral("logs"));
+    QVERIFY(QDir().rename(logs, dir.filePath(QStringLiteral("moved"))));
+    QVERIFY(writeFile(logs, "not a folder"));
+    const qsizetype from = watch.lines().size();
+    QVERIFY2(watch.waitFor([from](const QList<QJsonObject> &l) {
+        return count(l, QStringLiteral("sample"), QStringLiteral("plant"), QStringLiteral("ok"), from) >= 10;
+    }), watch.err().constData());
+    QCOMPARE(watch.stop(SIGTERM), 1);
+    const QString err = QString::fromUtf8(watch.err());
+    QCOMPARE(err.count(QStringLiteral("the log directory cannot be made")), 1);
+    QVERIFY2(err.contains(QStringLiteral("CSV: %1: the log directory cannot be made (polling goes on; the rows lost are counted)").arg(logs)),
+             qPrintable(err));
+    static const QRegularExpression lost(QStringLiteral(R"(CSV: (\d+) rows? could not be written)"));
+    const QRegularExpressionMatch m = lost.match(err);
+    QVERIFY2(m.hasMatch(), qPrintable(err));
+    QVERIFY(m.captured(1).toInt() >= 8);
+    // The rows before the failure are in the files that were moved.
+    qsizetype rows = 0;
+    for (const QString &name : QDir(dir.filePath(QStringLiteral("moved"))).entryList({QStringLiteral("*.csv")}, QDir::Files)) {
+        QFile f(QDir(dir.filePath(QStringLiteral("moved"))).filePath(name));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        rows += f.readAll().count('\n') - 1;
+    }
+    QVERIFY(rows >= 4);
+    // Every poll is a row written or a row counted as lost.
+    const QJsonObject summary = watch.lines().constLast();
+    const double polls = summary.value(QLatin1String("watches")).toArray().at(0)[QLatin1String("polls")].toDouble();
+    QCOMPARE(double(rows + m.captured(1).toInt()), polls);
+}
+
+// A watch of function 0x18 (Read FIFO Queue) against the simulator's FIFO (conformance profile:
+// pointer 0x04DE, the values 0x01B8 and 0x1284 of V1.1b3 6.18's example) through `mbscope watch`:
+// the values named from the pointer's address in the JSON lines, and the CSV's columns as many as
+// the quantity allows, the two values filled and the rest empty.
+void TestCliWatch::fifoWatch()
+{
+    QString why;
+    Background sim;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")}, &why),
+             qPrintable(why));
+    QTemporaryDir dir;
+    const QString session = dir.filePath(QStringLiteral("fifo.mbscope.json"));
+    QVERIFY(writeFile(session, QStringLiteral(R"({"format": "mbscope-session", "version": 2,
+  "watches": [{"name": "queue", "target": "%1", "function": 24, "address": "0x04DE", "quantity": 4, "intervalMs": 50,
+               "points": [{"address": "0x04DE", "name": "reading", "format": "hex"}]}]})").arg(sim.url()).toUtf8()));
+    const QString csvDir = dir.filePath(QStringLiteral("logs"));
+    const CliResult r = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--json"), QStringLiteral("--count"), QStringLiteral("3"),
+                                    QStringLiteral("--csv"), csvDir});
+    QVERIFY2(r.finished, r.describe().constData());
+    QCOMPARE(r.exitCode, 0);
+    int samples = 0;
+    for (const QByteArray &line : r.out.split('\n')) {
+        const QJsonObject o = QJsonDocument::fromJson(line).object();
+        if (o.value(QLatin1String("type")).toString() != QLatin1String("sample"))
+            continue;
+        ++samples;
+        QCOMPARE(o.value(QLatin1String("status")).toString(), QStringLiteral("ok"));
+        const QJsonArray values = o.value(QLatin1String("values")).toArray();
+        QCOMPARE(values.size(), 2);
+        QCOMPARE(values.at(0)[QLatin1String("name")].toString(), QStringLiteral("reading"));
+        QCOMPARE(values.at(0)[QLatin1String("text")].toString(), QStringLiteral("0x01B8"));
+        QCOMPARE(values.at(1)[QLatin1String("address")].toInt(), 0x04DF);
+        QCOMPARE(values.at(1)[QLatin1String("value")].toInt(), 0x1284);
+    }
+    QCOMPARE(samples, 3);
+    const QStringList files = QDir(csvDir).entryList({QStringLiteral("*.csv")}, QDir::Files);
+    QCOMPARE(files.size(), 1);
+    QFile csv(QDir(csvDir).filePath(files.constFirst()));
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QList<QByteArray> rows = csv.readAll().split('\n');
+    QCOMPARE(rows.size(), 5); // the header, three rows, the final newline
+    QCOMPARE(rows.at(0).split(',').size(), 2 + 4 + 1);
+    QVERIFY2(rows.at(0).startsWith("time,status,reading,"), rows.at(0).constData());
+    for (int i = 1; i <= 3; ++i)
+        QVERIFY2(rows.at(i).endsWith(",ok,0x01B8,4740,,,"), rows.at(i).constData()); // two values, two empty, no error
+}
+
+// A link that fails is said once on standard error, by the service's levelled log ("warning:
+// link ...: down: ..."), not again as a "mbscope watch: ... error:" line for each poll it costs
+// (four here), nor as a line per attempt to open it again; the counters say the polls lost.
+void TestCliWatch::linkErrorSaidOnce()
+{
+    QTemporaryDir dir;
+    const QString session = dir.filePath(QStringLiteral("gone.mbscope.json"));
+    const QString target = QStringLiteral("tcp://127.0.0.1:%1").arg(closedPort());
+    QVERIFY(writeFile(session, QStringLiteral(R"({"format": "mbscope-session", "version": 2,
+  "watches": [{"name": "gone", "target": "%1", "address": 0, "quantity": 2, "intervalMs": 100}],
+  "watchLinks": [{"target": "%1", "reconnectMinMs": 100, "reconnectMaxMs": 100}]})").arg(target).toUtf8()));
+    const CliResult r = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--count"), QStringLiteral("4")});
+    QVERIFY2(r.finished, r.describe().constData());
+    QCOMPARE(r.exitCode, 1);
+    const QString err = r.errText();
+    QVERIFY2(err.split(QLatin1Char('\n')).filter(QStringLiteral("connection refused")).size() == 1, qPrintable(err));
+    QVERIFY2(err.contains(QStringLiteral(" warning: link %1: down: %1: connection refused").arg(target)), qPrintable(err));
+    QVERIFY2(!err.contains(QStringLiteral("next attempt")), qPrintable(err));
+    QVERIFY2(r.outText().contains(QStringLiteral("gone: 4 polls, 0 ok")), r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("4 link errors")), r.describe().constData());
 }
 
 QTEST_GUILESS_MAIN(TestCliWatch)

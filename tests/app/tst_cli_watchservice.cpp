@@ -82,6 +82,7 @@ private Q_SLOTS:
     void guideExamples();
     void refusedOptions_data();
     void refusedOptions();
+    void credentialsFileChecked();
 
 private:
     QString writeSession(const QString &target, bool second = false);
@@ -477,6 +478,53 @@ void TestCliWatchService::refusedOptions()
     QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
     QVERIFY2(r.errText().contains(message), r.describe().constData());
     QVERIFY2(!r.errText().contains(QLatin1String("secret")), r.describe().constData());
+}
+
+// --mqtt-credentials: a file with a line after the password is refused, naming the line; one the
+// group or others may read, and one without a password, are warned about (levelled, at start)
+// and the service runs. Before, all three went by silently. No broker is needed: the warnings
+// come first, and a broker not there is tried again while the polls go on.
+void TestCliWatchService::credentialsFileChecked()
+{
+    const QString url = QStringLiteral("mqtt://127.0.0.1:%1/x").arg(closedPort());
+    const auto writeCredentials = [this](const QString &name, const QByteArray &text, QFileDevice::Permissions permissions) {
+        const QString path = m_dir->filePath(name);
+        QFile f(path);
+        if (f.open(QIODevice::WriteOnly))
+            f.write(text);
+        f.close();
+        f.setPermissions(permissions);
+        return path;
+    };
+    const QFileDevice::Permissions owner = QFileDevice::ReadOwner | QFileDevice::WriteOwner;
+
+    const QString extra = writeCredentials(QStringLiteral("extra.txt"), "user\nsecret\nmore\n", owner);
+    CliResult r = runMbscope({QStringLiteral("watch"), m_session, QStringLiteral("--mqtt"), url, QStringLiteral("--mqtt-credentials"), extra}, 30000);
+    QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
+    QVERIFY2(r.errText().contains(QStringLiteral("--mqtt-credentials: %1, line 3: unexpected").arg(extra)), r.describe().constData());
+    QVERIFY2(!r.errText().contains(QLatin1String("secret")), r.describe().constData());
+
+    const QString open = writeCredentials(QStringLiteral("open.txt"), "user\nsecret\n", owner | QFileDevice::ReadGroup | QFileDevice::ReadOther);
+    r = runMbscope({QStringLiteral("watch"), m_session, QStringLiteral("--mqtt"), url, QStringLiteral("--mqtt-credentials"), open,
+                    QStringLiteral("--duration"), QStringLiteral("300ms"), QStringLiteral("--quiet")}, 30000);
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    QVERIFY2(r.errText().contains(QStringLiteral(" warning: --mqtt-credentials: %1 may be read by every user: it holds the MQTT password; chmod 600 %1").arg(open)),
+             r.describe().constData());
+    QVERIFY2(!r.errText().contains(QLatin1String("secret")), r.describe().constData());
+
+    const QString group = writeCredentials(QStringLiteral("group.txt"), "user\n", owner | QFileDevice::ReadGroup);
+    r = runMbscope({QStringLiteral("watch"), m_session, QStringLiteral("--mqtt"), url, QStringLiteral("--mqtt-credentials"), group,
+                    QStringLiteral("--duration"), QStringLiteral("300ms"), QStringLiteral("--quiet")}, 30000);
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    QVERIFY2(r.errText().contains(QStringLiteral("%1 may be read by its group").arg(group)), r.describe().constData());
+    QVERIFY2(r.errText().contains(QStringLiteral(" warning: --mqtt-credentials: %1, line 2: no password: the broker gets the user name 'user' alone").arg(group)),
+             r.describe().constData());
+
+    const QString good = writeCredentials(QStringLiteral("good.txt"), "user\nsecret\n", owner);
+    r = runMbscope({QStringLiteral("watch"), m_session, QStringLiteral("--mqtt"), url, QStringLiteral("--mqtt-credentials"), good,
+                    QStringLiteral("--duration"), QStringLiteral("300ms"), QStringLiteral("--quiet")}, 30000);
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    QVERIFY2(!r.errText().contains(QLatin1String("--mqtt-credentials")), r.describe().constData());
 }
 
 QTEST_GUILESS_MAIN(TestCliWatchService)

@@ -5,9 +5,14 @@
 // Printed for each: polls per second, the GUI thread's longest stall (a 5 ms timer's longest
 // late tick: goal < 50 ms), CPU use (user + system over wall time, all threads; 100% = one
 // core), and resident memory at the end and its growth over the run. Nothing is asserted.
+// With --csv the window logs every poll to CSV (a file per watch, in a temporary folder), as
+// "Log values to CSV" does: where the rows are written shows in the GUI thread's stall.
+// With --soak-polls N (720000: an hour of 20 watches at 100 ms) the same watches are then polled
+// at interval 0 until N polls have ended, the runner alone (baseline) and the window (logging as
+// --csv says): resident memory at the start, every 10 % and at the end, side by side.
 //
 //   build/tests/bench/bench_workspace [--seconds 30] [--watches 20] [--registers 125]
-//                                     [--interval 100] [--links 4]
+//                                     [--interval 100] [--links 4] [--csv] [--soak-polls 720000]
 #include "fleet/watchrunner.h"
 #include "profile/profileloader.h"
 #include "sim/simulatorhost.h"
@@ -16,7 +21,9 @@
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QElapsedTimer>
+#include <QtCore/QDir>
 #include <QtCore/QFile>
+#include <QtCore/QTemporaryDir>
 #include <QtCore/QTimer>
 #include <QtWidgets/QApplication>
 
@@ -35,6 +42,8 @@ struct Options {
     int registers = 125;
     int intervalMs = 100;
     int links = 4;
+    bool csv = false;
+    quint64 soakPolls = 0;
 };
 
 double cpuSeconds()
@@ -138,6 +147,30 @@ SessionWatches makeWatches(const Options &o, const QList<LinkUrl> &urls)
     return session;
 }
 
+// Runs the event loop until polls() reaches total, sampling resident memory at the start and at
+// every tenth of the way; the samples in KiB (11 of them) and the seconds it took.
+QList<qint64> soak(quint64 total, const std::function<quint64()> &polls, double *seconds)
+{
+    QList<qint64> rss{residentKiB()};
+    const quint64 start = polls();
+    QElapsedTimer wall;
+    wall.start();
+    QEventLoop loop;
+    QTimer probe;
+    probe.setInterval(20);
+    QObject::connect(&probe, &QTimer::timeout, [&] {
+        const quint64 done = polls() - start;
+        while (rss.size() < 11 && done >= total * quint64(rss.size()) / 10)
+            rss.append(residentKiB());
+        if (rss.size() == 11)
+            loop.quit();
+    });
+    probe.start();
+    loop.exec();
+    *seconds = double(wall.nsecsElapsed()) / 1e9;
+    return rss;
+}
+
 void print(const char *name, const Figures &f)
 {
     std::printf("%-34s %10.0f %12.1f %8.1f %12.1f %12.1f %9llu\n", name, f.pollsPerSecond, f.longestStallMs, f.cpuPercent,
@@ -157,7 +190,11 @@ int main(int argc, char *argv[])
     const QCommandLineOption registersOption(QStringLiteral("registers"), QStringLiteral("Registers per watch (1-125)."), QStringLiteral("N"), QStringLiteral("125"));
     const QCommandLineOption intervalOption(QStringLiteral("interval"), QStringLiteral("Poll interval in ms."), QStringLiteral("MS"), QStringLiteral("100"));
     const QCommandLineOption linksOption(QStringLiteral("links"), QStringLiteral("Simulator endpoints the watches share."), QStringLiteral("N"), QStringLiteral("4"));
-    parser.addOptions({secondsOption, watchesOption, registersOption, intervalOption, linksOption});
+    const QCommandLineOption csvOption(QStringLiteral("csv"), QStringLiteral("The window logs every poll to CSV (a temporary folder)."));
+    const QCommandLineOption soakOption(QStringLiteral("soak-polls"),
+                                        QStringLiteral("Then poll at interval 0 until N polls, memory every 10 % (720000: an hour at 100 ms)."),
+                                        QStringLiteral("N"), QStringLiteral("0"));
+    parser.addOptions({secondsOption, watchesOption, registersOption, intervalOption, linksOption, csvOption, soakOption});
     parser.process(app);
     Options o;
     o.seconds = qMax(1, parser.value(secondsOption).toInt());
@@ -165,6 +202,8 @@ int main(int argc, char *argv[])
     o.registers = qBound(1, parser.value(registersOption).toInt(), 125);
     o.intervalMs = qMax(0, parser.value(intervalOption).toInt());
     o.links = qBound(1, parser.value(linksOption).toInt(), 32);
+    o.csv = parser.isSet(csvOption);
+    o.soakPolls = parser.value(soakOption).toULongLong();
 
     // 8000 holding registers, every one a random walk stepped every 50 ms.
     const QByteArray profileJson = R"({"name": "bench", "units": [{"id": 1, "tables": {"holding": [
@@ -191,10 +230,17 @@ int main(int argc, char *argv[])
         urls.append(*url);
     }
     host.start();
-    const SessionWatches watches = makeWatches(o, urls);
+    SessionWatches watches = makeWatches(o, urls);
+    QTemporaryDir csvDir;
+    if (o.csv) {
+        WatchLogSettings log;
+        log.enabled = true;
+        log.directory = csvDir.path();
+        watches.log = log;
+    }
 
-    std::printf("bench_workspace: %d watches x %d registers every %d ms on %d TCP links to the simulator, %d s measured per run\n",
-                o.watches, o.registers, o.intervalMs, o.links, o.seconds);
+    std::printf("bench_workspace: %d watches x %d registers every %d ms on %d TCP links to the simulator, %d s measured per run%s\n",
+                o.watches, o.registers, o.intervalMs, o.links, o.seconds, o.csv ? ", the window logging every poll to CSV" : "");
     std::printf("%-34s %10s %12s %8s %12s %12s %9s\n", "run", "polls/s", "stall ms", "CPU %", "RSS MiB", "RSS +MiB", "failures");
 
     Figures baseline;
@@ -239,6 +285,61 @@ int main(int argc, char *argv[])
     print("window: WatchWorkspace, tiled", shown);
     std::printf("goal: the GUI thread's longest stall under 50 ms; expected polls/s: %.0f\n",
                 o.intervalMs > 0 ? 1000.0 * o.watches / o.intervalMs : 0.0);
+
+    if (o.soakPolls > 0) {
+        SessionWatches fast = watches;
+        for (WatchDefinition &w : fast.watches)
+            w.intervalMs = 0;
+        double baselineSeconds = 0;
+        QList<qint64> baselineRss;
+        {
+            quint64 polls = 0;
+            WatchRunner runner(fast);
+            QObject::connect(&runner, &WatchRunner::sampled, [&](const QList<WatchSample> &samples, const QList<WatchCounters> &) {
+                polls += quint64(samples.size());
+            });
+            runner.start();
+            baselineRss = soak(o.soakPolls, [&] { return polls; }, &baselineSeconds);
+            runner.stop();
+            QEventLoop settle;
+            QTimer::singleShot(300, &settle, &QEventLoop::quit);
+            settle.exec();
+        }
+        double windowSeconds = 0;
+        QList<qint64> windowRss;
+        {
+            WatchWorkspace workspace;
+            workspace.resize(1400, 900);
+            workspace.setTabbed(false);
+            workspace.show();
+            workspace.setWatches(fast);
+            workspace.startAll();
+            windowRss = soak(o.soakPolls, [&workspace] {
+                quint64 n = 0;
+                for (int i = 0; i < workspace.count(); ++i)
+                    n += workspace.window(i)->counters().polls;
+                return n;
+            }, &windowSeconds);
+            workspace.stopAll();
+        }
+        std::printf("\nsoak: %llu polls at interval 0 (%.1f h of %d watches at %d ms): resident memory, MiB\n",
+                    static_cast<unsigned long long>(o.soakPolls), o.intervalMs > 0 ? double(o.soakPolls) * o.intervalMs / o.watches / 3.6e6 : 0.0,
+                    o.watches, o.intervalMs);
+        std::printf("%-10s %22s %22s\n", "polls", "baseline: runner alone", o.csv ? "window, logging CSV" : "window");
+        for (int i = 0; i < 11; ++i)
+            std::printf("%-10llu %22.1f %22.1f\n", static_cast<unsigned long long>(o.soakPolls * quint64(i) / 10),
+                        double(baselineRss.value(i)) / 1024, double(windowRss.value(i)) / 1024);
+        std::printf("%-10s %22.1f %22.1f\n", "growth", double(baselineRss.constLast() - baselineRss.constFirst()) / 1024,
+                    double(windowRss.constLast() - windowRss.constFirst()) / 1024);
+        std::printf("%-10s %22.0f %22.0f\n", "polls/s", double(o.soakPolls) / baselineSeconds, double(o.soakPolls) / windowSeconds);
+        if (o.csv) {
+            qint64 bytes = 0;
+            const QFileInfoList files = QDir(csvDir.path()).entryInfoList(QDir::Files);
+            for (const QFileInfo &file : files)
+                bytes += file.size();
+            std::printf("CSV: %lld files, %.1f MiB\n", static_cast<long long>(files.size()), double(bytes) / (1024 * 1024));
+        }
+    }
     host.stop();
     return 0;
 }

@@ -1,11 +1,15 @@
 // WatchRunner against the simulator (SimulatorHost, in this process): values decoded, watches on one link taking
 // turns, a dead link not stalling another, a timeout costing one turn, a reconnect counted with
-// backoff, a rule firing, and a write to a writable point read back.
+// backoff, a rule firing, and a write to a writable point read back; the CSV log written off the
+// caller's thread, every sample and rule event in it by the time stopped() comes.
 #include "fleet/watchrunner.h"
 #include "profile/profileloader.h"
 #include "sim/simulatorhost.h"
 
+#include <QtCore/QDir>
 #include <QtCore/QElapsedTimer>
+#include <QtCore/QFile>
+#include <QtCore/QTemporaryDir>
 #include <QtNetwork/QTcpServer>
 #include <QtTest/QtTest>
 
@@ -75,6 +79,7 @@ private Q_SLOTS:
     void deadLinkDoesNotStallOthers();
     void reconnectCountedWithBackoff();
     void ruleFiresAndWriteReadsBack();
+    void logWrittenInItsThreadBeforeStopped();
 };
 
 void tst_WatchRunner::valuesFromTwoLinks()
@@ -257,6 +262,80 @@ void tst_WatchRunner::ruleFiresAndWriteReadsBack()
     QVERIFY(waitFor([&] { return events.size() >= 2; }));
     QCOMPARE(events.at(1).fired, false);
     QCOMPARE(runner.counters(0).ruleFirings, 1u);
+}
+
+// setLog: the files open in the log's thread (logOpened), take every sample the caller received
+// and every rule event, and are closed (logClosed, no row lost) before stopped(); the same
+// settings again change nothing, and the watches changed while running open new files.
+void tst_WatchRunner::logWrittenInItsThreadBeforeStopped()
+{
+    LinkUrl plcUrl;
+    auto plc = startSim(QStringLiteral("m221-plc"), QStringLiteral("tcp://127.0.0.1:0"), &plcUrl);
+    QVERIFY(plc);
+    SessionWatches watches;
+    WatchDefinition words = watch(QStringLiteral("words"), plcUrl.toString(), 3, 0, 4, 20);
+    WatchRule rule;
+    rule.point = QStringLiteral("0");
+    rule.condition = WatchRule::Condition::Below;
+    rule.low = 100000; // always holds: fires at the first poll
+    words.rules.append(rule);
+    watches.watches.append(words);
+    watches.watches.append(watch(QStringLiteral("bits"), plcUrl.toString(), 1, 0, 16, 20));
+
+    QTemporaryDir dir;
+    WatchLogSettings log;
+    log.enabled = true;
+    log.directory = dir.filePath(QStringLiteral("logs"));
+    WatchRunner runner(watches);
+    QList<WatchSample> samples;
+    int events = 0;
+    QStringList order;
+    QStringList files;
+    quint64 lost = 99;
+    connect(&runner, &WatchRunner::sampled, this, [&](const QList<WatchSample> &batch, const QList<WatchCounters> &) { samples.append(batch); });
+    connect(&runner, &WatchRunner::ruleChanged, this, [&](const WatchRuleEvent &) { ++events; });
+    connect(&runner, &WatchRunner::logOpened, this, [&](const QString &) { order.append(QStringLiteral("opened")); });
+    connect(&runner, &WatchRunner::logClosed, this, [&](const QString &, const QStringList &f, quint64 l) {
+        order.append(QStringLiteral("closed"));
+        files += f;
+        lost = l;
+    });
+    connect(&runner, &WatchRunner::stopped, this, [&] { order.append(QStringLiteral("stopped")); });
+    runner.setLog(log);
+    runner.start();
+    runner.setLog(log); // the same again: the files stay
+    QVERIFY(waitFor([&] { return runner.counters(0).ok >= 5 && runner.counters(1).ok >= 5 && events >= 1; }));
+    runner.stop();
+    QVERIFY(waitFor([&] { return order.contains(QStringLiteral("stopped")); }));
+    QCOMPARE(order, (QStringList{QStringLiteral("opened"), QStringLiteral("closed"), QStringLiteral("stopped")}));
+    QCOMPARE(lost, 0u);
+    QCOMPARE(files.size(), 3); // words, its events, bits
+    qsizetype rows = 0;
+    qsizetype eventRows = 0;
+    for (const QString &path : std::as_const(files)) {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const qsizetype n = f.readAll().count('\n') - 1;
+        (path.contains(QLatin1String("-events-")) ? eventRows : rows) += n;
+    }
+    QCOMPARE(rows, samples.size());
+    QCOMPARE(eventRows, qsizetype(events));
+
+    // The watches changed while running: the files close and new ones open.
+    order.clear();
+    files.clear();
+    runner.start();
+    QVERIFY(waitFor([&] { return order.contains(QStringLiteral("opened")); }));
+    watches.watches.removeLast();
+    runner.setWatches(watches);
+    QVERIFY(waitFor([&] { return order.size() >= 3; }));
+    QCOMPARE(order.mid(0, 3), (QStringList{QStringLiteral("opened"), QStringLiteral("closed"), QStringLiteral("opened")}));
+    runner.setLog(std::nullopt); // logging off while running
+    QVERIFY(waitFor([&] { return order.size() >= 4; }));
+    QCOMPARE(order.at(3), QStringLiteral("closed"));
+    runner.stop();
+    QVERIFY(waitFor([&] { return order.contains(QStringLiteral("stopped")); }));
+    QCOMPARE(order.size(), 5);
 }
 
 QTEST_GUILESS_MAIN(tst_WatchRunner)

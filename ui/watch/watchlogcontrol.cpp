@@ -2,7 +2,7 @@
 
 #include "watchlogdialog.h"
 
-#include "watch/watchcsvlog.h"
+#include "fleet/watchrunner.h"
 
 #include <QtCore/QDir>
 #include <QtCore/QFileInfo>
@@ -48,14 +48,18 @@ void WatchLogControl::setSettings(const WatchLogSettings &settings)
     m_logAction->setChecked(settings.enabled);
 }
 
+QString WatchLogControl::baseDirectory() const
+{
+    const QString session = m_sessionPath ? m_sessionPath() : QString();
+    return session.isEmpty() ? QDir::currentPath() : QFileInfo(session).absolutePath();
+}
+
 QString WatchLogControl::directory() const
 {
     const QString folder = m_settings.directory.isEmpty() ? QStringLiteral("watch-logs") : m_settings.directory;
     if (QDir::isAbsolutePath(folder))
         return QDir::cleanPath(folder);
-    const QString session = m_sessionPath ? m_sessionPath() : QString();
-    const QString base = session.isEmpty() ? QDir::currentPath() : QFileInfo(session).absolutePath();
-    return QDir::cleanPath(QDir(base).filePath(folder));
+    return QDir::cleanPath(QDir(baseDirectory()).filePath(folder));
 }
 
 bool WatchLogControl::editSettings()
@@ -77,74 +81,67 @@ bool WatchLogControl::editSettings()
             return false;
         edited = dialog.settings();
     }
-    const bool restart = m_log != nullptr;
-    stop();
     m_settings = edited;
     m_logAction->setChecked(edited.enabled);
-    if (restart || (edited.enabled && m_watchesRunning))
-        start(m_running);
+    apply();
     return true;
 }
 
 void WatchLogControl::setEnabled(bool enabled)
 {
     m_settings.enabled = enabled;
-    if (!enabled)
-        stop();
-    else if (m_watchesRunning)
-        start(m_running);
+    apply();
 }
 
-void WatchLogControl::start(const SessionWatches &watches)
+void WatchLogControl::apply()
 {
-    m_running = watches;
-    m_watchesRunning = true;
-    m_log.reset();
-    if (!m_settings.enabled)
+    if (!m_runner)
         return;
-    const QString session = m_sessionPath ? m_sessionPath() : QString();
-    const QString base = session.isEmpty() ? QDir::currentPath() : QFileInfo(session).absolutePath();
-    auto log = std::make_unique<WatchCsvLog>(m_settings, base);
-    QString error;
-    if (!log->open(watches.watches, &error)) {
-        Q_EMIT message(tr("Not logging to CSV: %1").arg(error));
-        return;
+    if (m_watchesRunning && m_settings.enabled) {
+        WatchLogSettings settings = m_settings;
+        settings.directory = directory();
+        m_runner->setLog(settings);
+    } else {
+        m_runner->setLog(std::nullopt);
     }
-    m_log = std::move(log);
-    m_failed = false;
-    Q_EMIT message(tr("Logging the watches to CSV in %1").arg(QDir::toNativeSeparators(m_log->directory())));
+}
+
+void WatchLogControl::start(WatchRunner *runner)
+{
+    if (m_runner != runner) {
+        if (m_runner)
+            disconnect(m_runner, nullptr, this, nullptr);
+        m_runner = runner;
+        m_open = false;
+        connect(runner, &WatchRunner::logOpened, this, [this](const QString &directory) {
+            m_open = true;
+            Q_EMIT message(tr("Logging the watches to CSV in %1").arg(QDir::toNativeSeparators(directory)));
+        });
+        connect(runner, &WatchRunner::logFailed, this, [this](const QString &error) {
+            Q_EMIT message(tr("The CSV log cannot be written: %1").arg(error));
+        });
+        connect(runner, &WatchRunner::logClosed, this, [this](const QString &directory, const QStringList &files, quint64 lost) {
+            m_open = false;
+            QString text = tr("CSV log closed: %n file(s) in %1", nullptr, int(files.size())).arg(QDir::toNativeSeparators(directory));
+            if (lost > 0)
+                text += QLatin1Char(' ') + tr("(%n row(s) could not be written)", nullptr, int(lost));
+            Q_EMIT message(text);
+        });
+    }
+    m_watchesRunning = true;
+    apply();
 }
 
 void WatchLogControl::stop()
 {
-    if (!m_log)
-        return;
-    m_log->close();
-    const QString directory = m_log->directory();
-    const int files = int(m_log->files().size());
-    m_log.reset();
-    Q_EMIT message(tr("CSV log closed: %n file(s) in %1", nullptr, files).arg(QDir::toNativeSeparators(directory)));
+    if (m_runner)
+        m_runner->setLog(std::nullopt);
 }
 
 void WatchLogControl::watchesStopped()
 {
+    // The runner closes the files once its last samples are written (logClosed says it).
     m_watchesRunning = false;
-    stop();
-}
-
-void WatchLogControl::append(const QList<WatchSample> &samples)
-{
-    if (!m_log)
-        return;
-    for (const WatchSample &sample : samples) {
-        QString error;
-        if (!m_log->append(sample.watch, sample.timeMs, watchSampleStatusName(sample.status), sample.values, sample.error, &error)
-            && !m_failed) {
-            // Said once: a full disk would otherwise say it at every poll.
-            m_failed = true;
-            Q_EMIT message(tr("The CSV log cannot be written: %1").arg(error));
-        }
-    }
 }
 
 } // namespace mbscope

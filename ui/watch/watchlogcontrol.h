@@ -1,25 +1,26 @@
 #pragma once
 
-#include "fleet/watchsample.h"
 #include "watch/watchdefinition.h"
 
 #include <QtCore/QObject>
+#include <QtCore/QPointer>
 
 #include <functional>
-#include <memory>
 
 class QAction;
 class QWidget;
 
 namespace mbscope {
 
-class WatchCsvLog;
+class WatchRunner;
 
 // Logging the watches' values to CSV from the window: the Watches menu's "Log values to CSV"
-// (on while the watches run, one file per watch, core/watch's WatchCsvLog) and "CSV log
-// settings…" (folder, a row per poll or per change, rolling by size or age). The settings are
-// the session's (SessionWatches::log); a folder that is not absolute is the session file's
-// folder's, or the capture folder's for an untitled session.
+// (on while the watches run, one file per watch and one of rule events, core/watch's
+// WatchCsvLog) and "CSV log settings…" (folder, a row per poll or per change, rolling by size or
+// age). The settings are the session's (SessionWatches::log); a folder that is not absolute is
+// the session file's folder's, or the working folder's for an untitled session. The rows are
+// written by the runner's log thread (WatchRunner::setLog), never the GUI thread; this only says
+// what it reports (opened, a write that fails, closed with the rows lost).
 class WatchLogControl : public QObject
 {
     Q_OBJECT
@@ -37,14 +38,14 @@ public:
     // The folder files go to, resolved.
     [[nodiscard]] QString directory() const;
 
-    // The watches start (or changed while running): when logging is on, the files open.
-    void start(const SessionWatches &watches);
+    // The watches start on runner: when logging is on, its files open (and follow the watches).
+    void start(WatchRunner *runner);
     // Closes the files (logging stays chosen).
     void stop();
-    // The watches stopped: the files close.
+    // The watches stopped: the runner closes the files.
     void watchesStopped();
-    void append(const QList<WatchSample> &samples);
-    [[nodiscard]] bool isLogging() const { return m_log != nullptr; }
+    // Files open (said by the runner's log thread).
+    [[nodiscard]] bool isLogging() const { return m_open; }
 
     // Replaceable for tests: the settings dialog (true: accepted, settings changed in place).
     using SettingsEditor = std::function<bool(WatchLogSettings &settings)>;
@@ -58,15 +59,17 @@ Q_SIGNALS:
 private:
     void setEnabled(bool enabled);
     bool editSettings();
+    // The runner logs as the settings say (or not, logging off or the watches stopped).
+    void apply();
+    [[nodiscard]] QString baseDirectory() const;
 
     QWidget *m_parent;
     QAction *m_logAction;
     QAction *m_settingsAction;
     WatchLogSettings m_settings;
-    SessionWatches m_running;
+    QPointer<WatchRunner> m_runner;
     bool m_watchesRunning = false;
-    bool m_failed = false; // a write failed: said once
-    std::unique_ptr<WatchCsvLog> m_log;
+    bool m_open = false;
     std::function<QString()> m_sessionPath;
     SettingsEditor m_editor;
 };

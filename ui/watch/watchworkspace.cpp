@@ -357,8 +357,7 @@ void WatchWorkspace::watchesEdited()
         // Edited definitions: their counters start anew.
         m_carrying = false;
         m_carried.clear();
-        m_runner->setWatches(runnerWatches());
-        m_log->start(m_watches); // the files follow the watches (and their indices)
+        m_runner->setWatches(runnerWatches()); // the CSV files follow the watches (and their indices)
     }
     updateActions();
     Q_EMIT definitionsChanged();
@@ -536,8 +535,8 @@ void WatchWorkspace::startRunner()
             [this](quint64, int, quint16, bool ok, const QString &text) {
                 Q_EMIT message(ok ? tr("Written: %1").arg(text) : tr("Not written: %1").arg(text));
             });
+    m_log->start(m_runner);
     m_runner->start();
-    m_log->start(m_watches);
     updatePolling();
     Q_EMIT runningChanged(true);
 }
@@ -661,7 +660,6 @@ void WatchWorkspace::onSampled(const QList<WatchSample> &samples, const QList<Wa
             w->setCounters(shownCounters(c));
         }
     }
-    m_log->append(samples);
     Q_EMIT sampled(samples);
 }
 

@@ -1,7 +1,10 @@
 // WatchCsvLog: a file per watch with a header of names and units, a row per poll or per change,
-// failed polls with their error and empty values, quoting, rolling by size and by time.
+// failed polls with their error and empty values, quoting, rolling by size and by time; rule
+// events in a file of their own; a FIFO's short answers padded to the header; a folder removed
+// made again, one that cannot be made said and its rows counted as lost.
 #include "watch/watchcsvlog.h"
 
+#include <QtCore/QDateTime>
 #include <QtCore/QDir>
 #include <QtCore/QFile>
 #include <QtCore/QTemporaryDir>
@@ -55,6 +58,10 @@ private Q_SLOTS:
     void rollBySize();
     void rollByTime();
     void relativeDirectory();
+    void ruleEvents();
+    void fifoRowsHaveEveryColumn();
+    void folderMadeAgain();
+    void lostRowsCounted();
 };
 
 void TestWatchCsvLog::rowsPerPoll()
@@ -146,6 +153,104 @@ void TestWatchCsvLog::relativeDirectory()
     QCOMPARE(log.directory(), QDir::cleanPath(dir.path() + QStringLiteral("/logs/gamma")));
     QVERIFY(log.open({gamma()}));
     QVERIFY(QFileInfo(log.directory()).isDir());
+}
+
+void TestWatchCsvLog::ruleEvents()
+{
+    QTemporaryDir dir;
+    WatchLogSettings settings;
+    settings.directory = dir.path();
+    settings.mode = WatchLogSettings::Mode::OnChange; // events are written in either mode
+    WatchCsvLog log(settings);
+    QVERIFY(log.open({gamma()}));
+    QVERIFY(log.append(0, kT0, QStringLiteral("ok"), values(QStringLiteral("150"), QStringLiteral("0"))));
+    WatchRuleEvent e;
+    e.watch = 0;
+    e.rule = 1;
+    e.severity = WatchSeverity::Alarm;
+    e.point = QStringLiteral("counts, gated");
+    e.value = 150.5;
+    e.message = QStringLiteral("counts, gated above 100 cps for 2 polls");
+    e.timeMs = kT0 + 500;
+    e.firedCount = 1;
+    QVERIFY(log.appendEvent(e));
+    e.fired = false;
+    e.value = 80;
+    e.timeMs = kT0 + 1500;
+    QVERIFY(log.appendEvent(e));
+    e.watch = 5; // no such watch: nothing written
+    QVERIFY(log.appendEvent(e));
+    log.close();
+    QCOMPARE(log.files().size(), 2);
+    QVERIFY(QFileInfo(log.files().at(1)).fileName().startsWith(QLatin1String("gamma_counts-events-")));
+    const QStringList rows = lines(log.files().at(1));
+    QCOMPARE(rows.size(), 3);
+    QCOMPARE(rows.at(0), WatchCsvLog::eventHeader());
+    QCOMPARE(rows.at(1), QDateTime::fromMSecsSinceEpoch(kT0 + 500, Qt::UTC).toString(Qt::ISODateWithMs)
+                             + QStringLiteral(",fired,alarm,1,\"counts, gated\",150.5,\"counts, gated above 100 cps for 2 polls\",1"));
+    QVERIFY(rows.at(2).contains(QLatin1String(",cleared,alarm,1,\"counts, gated\",80,")));
+    QCOMPARE(lines(log.files().at(0)).size(), 2); // the values' file: its header and one row
+}
+
+// A FIFO of at most 4 values that holds 2: the row has the header's columns (failed before: 2 short).
+void TestWatchCsvLog::fifoRowsHaveEveryColumn()
+{
+    QTemporaryDir dir;
+    WatchLogSettings settings;
+    settings.directory = dir.path();
+    WatchCsvLog log(settings);
+    WatchDefinition fifo;
+    fifo.name = QStringLiteral("queue");
+    fifo.function = 0x18;
+    fifo.address = 0x04DE;
+    fifo.quantity = 4;
+    QVERIFY(log.open({fifo}));
+    QVERIFY(log.append(0, kT0, QStringLiteral("ok"), values(QStringLiteral("440"), QStringLiteral("4740"))));
+    log.close();
+    const QStringList rows = lines(log.files().first());
+    QCOMPARE(rows.at(0).split(QLatin1Char(',')).size(), 7);
+    QCOMPARE(rows.at(1).split(QLatin1Char(',')).size(), 7);
+    QVERIFY(rows.at(1).endsWith(QLatin1String(",ok,440,4740,,,")));
+}
+
+void TestWatchCsvLog::folderMadeAgain()
+{
+    QTemporaryDir dir;
+    WatchLogSettings settings;
+    settings.directory = dir.filePath(QStringLiteral("logs"));
+    settings.rollBytes = 100;
+    WatchCsvLog log(settings);
+    QVERIFY(log.open({gamma()}));
+    QVERIFY(log.append(0, kT0, QStringLiteral("ok"), values(QStringLiteral("1"), QStringLiteral("0"))));
+    QVERIFY(log.append(0, kT0 + 1000, QStringLiteral("ok"), values(QStringLiteral("2"), QStringLiteral("0"))));
+    QVERIFY(QDir(settings.directory).removeRecursively());
+    QVERIFY(log.append(0, kT0 + 2000, QStringLiteral("ok"), values(QStringLiteral("3"), QStringLiteral("0"))));
+    log.close();
+    QCOMPARE(log.lostRows(), 0u);
+    QVERIFY(QFileInfo::exists(log.files().constLast()));
+    QCOMPARE(lines(log.files().constLast()).size(), 2);
+}
+
+void TestWatchCsvLog::lostRowsCounted()
+{
+    QTemporaryDir dir;
+    WatchLogSettings settings;
+    settings.directory = dir.filePath(QStringLiteral("logs"));
+    settings.rollBytes = 100;
+    WatchCsvLog log(settings);
+    QVERIFY(log.open({gamma()}));
+    QVERIFY(log.append(0, kT0, QStringLiteral("ok"), values(QStringLiteral("1"), QStringLiteral("0"))));
+    QVERIFY(log.append(0, kT0 + 1000, QStringLiteral("ok"), values(QStringLiteral("2"), QStringLiteral("0"))));
+    // A file where the folder was: the next file cannot be started.
+    QVERIFY(QDir(settings.directory).removeRecursively());
+    QFile blocker(settings.directory);
+    QVERIFY(blocker.open(QIODevice::WriteOnly));
+    blocker.close();
+    QString error;
+    QVERIFY(!log.append(0, kT0 + 2000, QStringLiteral("ok"), values(QStringLiteral("3"), QStringLiteral("0")), {}, &error));
+    QCOMPARE(error, settings.directory + QStringLiteral(": the log directory cannot be made"));
+    QVERIFY(!log.append(0, kT0 + 3000, QStringLiteral("ok"), values(QStringLiteral("4"), QStringLiteral("0"))));
+    QCOMPARE(log.lostRows(), 2u);
 }
 
 QTEST_GUILESS_MAIN(TestWatchCsvLog)

@@ -166,6 +166,7 @@ private Q_SLOTS:
     void threeDevicesPolledAtOnce();
     void byKeyboardAlone();
     void csvLogFromTheWindow();
+    void csvLogFailureSaid();
     void screenshots_data();
     void screenshots();
 };
@@ -371,10 +372,10 @@ void TestWorkspace::csvLogFromTheWindow()
         QVERIFY(window.session()->isModified());
         QCOMPARE(workspace->logControl()->directory(), QDir(dir.path()).filePath(QStringLiteral("logs")));
         workspace->startAll();
-        QVERIFY(workspace->logControl()->isLogging());
+        QTRY_VERIFY_WITH_TIMEOUT(workspace->logControl()->isLogging(), kWaitMs); // said by the log thread
         QTRY_VERIFY_WITH_TIMEOUT(everyWatchAnswered(workspace, 4), kWaitMs);
         workspace->stopAll();
-        QVERIFY(!workspace->logControl()->isLogging());
+        QTRY_VERIFY_WITH_TIMEOUT(!workspace->logControl()->isLogging(), kWaitMs);
         QVERIFY(window.session()->save());
     }
     const QStringList files = QDir(dir.filePath(QStringLiteral("logs"))).entryList({QStringLiteral("*.csv")}, QDir::Files, QDir::Name);
@@ -392,6 +393,43 @@ void TestWorkspace::csvLogFromTheWindow()
     QCOMPARE(log->directory, QStringLiteral("logs"));
     QVERIFY(log->enabled);
     QVERIFY(reopened.watchWorkspace()->logControl()->logAction()->isChecked());
+    plc->stop();
+}
+
+// A log folder that cannot be made (a file stands where it would go) is said in the window's
+// messages, once, and the watches poll on.
+void TestWorkspace::csvLogFailureSaid()
+{
+    QString error;
+    QString url;
+    std::unique_ptr<SimulatorHost> plc = Devices::serve(QStringLiteral("m221-plc"), QStringLiteral("tcp://127.0.0.1:0"), &url, &error);
+    QVERIFY2(plc, qPrintable(error));
+    QTemporaryDir dir;
+    QFile blocker(dir.filePath(QStringLiteral("blocker")));
+    QVERIFY(blocker.open(QIODevice::WriteOnly));
+    blocker.close();
+    WatchWorkspace workspace;
+    QSignalSpy messages(&workspace, &WatchWorkspace::message);
+    SessionWatches watches;
+    watches.watches.append(plcWords(url));
+    WatchLogSettings log;
+    log.enabled = true;
+    log.directory = dir.filePath(QStringLiteral("blocker/logs"));
+    watches.log = log;
+    workspace.setWatches(watches);
+    workspace.startAll();
+    const auto said = [&messages](const QString &part) {
+        int n = 0;
+        for (const QList<QVariant> &m : std::as_const(messages))
+            n += m.constFirst().toString().contains(part) ? 1 : 0;
+        return n;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(said(QStringLiteral("The CSV log cannot be written")) == 1, kWaitMs);
+    QVERIFY(said(QStringLiteral("blocker/logs: the log directory cannot be made")) == 1);
+    QTRY_VERIFY_WITH_TIMEOUT(everyWatchAnswered(&workspace, 3), kWaitMs);
+    QVERIFY(!workspace.logControl()->isLogging());
+    workspace.stopAll();
+    QCOMPARE(said(QStringLiteral("The CSV log cannot be written")), 1);
     plc->stop();
 }
 
