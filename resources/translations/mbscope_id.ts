@@ -8766,7 +8766,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1, unit %2, setiap %3 ms</translation>
     </message>
     <message>
-        <location line="+134"/>
+        <location line="+133"/>
         <source>watch</source>
         <translation>pantauan</translation>
     </message>
@@ -8833,7 +8833,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pilih nilai di tabel pantauan untuk digambar trennya</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+48"/>
         <source>Choose a value in a watch&apos;s table to write</source>
         <translation>Pilih nilai di tabel pantauan untuk ditulis</translation>
     </message>
