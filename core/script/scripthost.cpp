@@ -19,17 +19,17 @@ constexpr double kMaxDelayMs = 3600000; // an hour: longer is a mistake, not a d
 
 // Gives the script unit, log and console without the bridge itself (see ScriptBridge).
 const QString kPrelude = QStringLiteral(
-    "(function (host) {\n"
+    "(function (global, host) {\n"
     "  var text = function (args) {\n"
     "    return Array.prototype.map.call(args, function (a) {\n"
     "      return (a !== null && typeof a === 'object') ? JSON.stringify(a) : String(a);\n"
     "    }).join(' ');\n"
     "  };\n"
     "  var log = function () { host.log(text(arguments)); };\n"
-    "  Object.defineProperty(globalThis, 'log', { value: log });\n"
-    "  Object.defineProperty(globalThis, 'console', { value: Object.freeze({\n"
+    "  Object.defineProperty(global, 'log', { value: log });\n"
+    "  Object.defineProperty(global, 'console', { value: Object.freeze({\n"
     "    log: log, info: log, warn: log, error: log, debug: log }) });\n"
-    "  Object.defineProperty(globalThis, 'unit', { value: Object.freeze({\n"
+    "  Object.defineProperty(global, 'unit', { value: Object.freeze({\n"
     "    id: host.unitId(),\n"
     "    read: function (table, address, count) {\n"
     "      return host.read(String(table), Number(address), count === undefined ? -1 : Number(count)); },\n"
@@ -143,7 +143,8 @@ bool ScriptHost::load(ScriptProblem *problem)
     QJSEngine::setObjectOwnership(bridge, QJSEngine::CppOwnership);
     connect(bridge, &ScriptBridge::logged, this, [this](const QString &text) { Q_EMIT logged(text, false); });
     const QJSValue install = engine->evaluate(kPrelude, QStringLiteral("prelude"));
-    install.call({engine->newQObject(bridge)});
+    const QJSValue installed = install.call({engine->globalObject(), engine->newQObject(bridge)});
+    Q_ASSERT(!installed.isError());
 
     m_clock.start();
     QStringList trace;
@@ -173,6 +174,21 @@ ScriptProblem ScriptHost::locate(const QJSValue &error, const QStringList &trace
     p.file = m_settings.name;
     p.message = error.toString();
     p.line = error.property(QStringLiteral("lineNumber")).toInt();
+    // An error thrown by unit.read/unit.write is raised in the prelude: the line that matters is
+    // the script's frame below it ("read@file:prelude:14\nonRequest@file:t.js:2").
+    QString file = error.property(QStringLiteral("fileName")).toString();
+    if (file.startsWith(QLatin1String("file:")))
+        file = file.mid(5);
+    if (file != m_settings.name) {
+        const QStringList frames = error.property(QStringLiteral("stack")).toString().split(QLatin1Char('\n'));
+        for (const QString &frame : frames) {
+            const QString at = frame.section(QLatin1Char('@'), -1);
+            if (at.section(QLatin1Char(':'), 0, -2).endsWith(m_settings.name)) {
+                p.line = at.section(QLatin1Char(':'), -1).toInt();
+                break;
+            }
+        }
+    }
     // evaluate()'s stack trace names "function:line:column:file" per frame; a syntax error's
     // frame carries the column the error object lacks.
     if (!trace.isEmpty()) {
