@@ -18,6 +18,8 @@ struct ScriptSettings {
     OnError onError = OnError::Exception; // after a call threw or was interrupted
 
     [[nodiscard]] bool isEmpty() const { return path.isEmpty(); }
+
+    friend bool operator==(const ScriptSettings &, const ScriptSettings &) = default;
 };
 
 } // namespace mbscope
