@@ -347,6 +347,7 @@ FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, Fra
         exchange.requestAdu = frame.toByteArray();
         exchange.responseAdu = bytes;
         exchange.responseDelayNs = delayNs;
+        exchange.responseDelayFixed = scriptDelayNs >= 0;
         exchange.receivedNs = receivedNs;
         exchange.intervalNs = intervalNs;
         exchange.reply = SimReply::normal(bytes);
@@ -434,6 +435,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
     SimReply reply;
     qint64 delayNs = 0;
     QByteArray exactAnswer; // a script's "adu": sent as it is
+    bool delayFixed = false; // a script's "delay"
     SimLogEntry::Verdict verdict = SimLogEntry::Verdict::Answered;
     if (!target) {
         auto policy = endpoint->options().unknownUnit;
@@ -459,6 +461,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
             {unitId, parts.pdu, endpoint->name(), peer, serial ? -1 : int(parts.transactionId)});
         reply = scripted.reply;
         delayNs = scripted.delayNs >= 0 ? scripted.delayNs : target->unit->responseDelayNs();
+        delayFixed = scripted.delayNs >= 0;
         exactAnswer = scripted.adu;
         if (reply.kind == SimReply::Kind::Exception)
             verdict = SimLogEntry::Verdict::Exception;
@@ -491,6 +494,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         exchange.reply = reply;
         exchange.responseAdu = answer;
         exchange.responseDelayNs = delayNs;
+        exchange.responseDelayFixed = delayFixed;
         exchange.receivedNs = receivedNs;
         exchange.intervalNs = intervalNs;
         plan = m_faultHook(exchange);
