@@ -28,7 +28,7 @@ void SimScriptDriver::connectLog(const Script &script)
             [this, who](const QString &text, bool error) { Q_EMIT logged(who, text, error); });
 }
 
-bool SimScriptDriver::attach(const DeviceProfile &profile, Simulator *sim, QStringList *problems)
+bool SimScriptDriver::attach(const DeviceProfile &profile, Simulator *sim, QStringList *problems, bool load)
 {
     clear();
     m_sim = sim;
@@ -41,7 +41,7 @@ bool SimScriptDriver::attach(const DeviceProfile &profile, Simulator *sim, QStri
         script.host = new ScriptHost(settings, script.tables.get(), this);
         connectLog(script);
         ScriptProblem problem;
-        if (!script.host->load(&problem)) {
+        if (load && !script.host->load(&problem)) {
             ok = false;
             if (problems)
                 problems->append(who.section(QLatin1Char(':'), 0, 0) + QStringLiteral(": ") + problem.toString());
@@ -108,13 +108,13 @@ void SimScriptDriver::stop()
     }
 }
 
-bool SimScriptDriver::reload(QStringList *problems)
+bool SimScriptDriver::loadAll(QStringList *problems, bool again)
 {
     bool ok = true;
     for (Script &script : m_scripts) {
         ScriptProblem problem;
         if (script.host->load(&problem)) {
-            Q_EMIT logged(script.who, QStringLiteral("reloaded"), false);
+            Q_EMIT logged(script.who, again ? QStringLiteral("reloaded") : QStringLiteral("loaded"), false);
             continue;
         }
         ok = false;

@@ -36,14 +36,19 @@ public:
     // Loads the scripts of profile for the units of sim (matched by id) and sets them on sim.
     // False with every problem in *problems ("unit 2: gamma.js:12:5: SyntaxError: ...") when a
     // script does not load; the others are set.
-    bool attach(const DeviceProfile &profile, Simulator *sim, QStringList *problems = nullptr);
+    // With load false the hosts are made and set but not loaded (they answer as the profile says
+    // until load()): for a driver moved to the simulator's thread first, since a QJSEngine
+    // belongs to the thread it was made in.
+    bool attach(const DeviceProfile &profile, Simulator *sim, QStringList *problems = nullptr, bool load = true);
     // Removes every script from the simulator it was attached to.
     void clear();
     void start();
     void stop();
     // Loads every script again from its file (a fresh engine each): the log says what each did.
     // False when one failed to load: that unit answers as its profile says until the next reload.
-    bool reload(QStringList *problems = nullptr);
+    bool reload(QStringList *problems = nullptr) { return loadAll(problems, true); }
+    // The first load of hosts attached with load false.
+    bool load(QStringList *problems = nullptr) { return loadAll(problems, false); }
     [[nodiscard]] int scriptCount() const { return int(m_scripts.size()); }
     // "unit 1: counter.js", "delimited: line.js".
     [[nodiscard]] QStringList describe() const;
@@ -61,6 +66,7 @@ private:
         QTimer *timer = nullptr;
     };
     void connectLog(const Script &script);
+    bool loadAll(QStringList *problems, bool again);
 
     Simulator *m_sim = nullptr;
     std::vector<Script> m_scripts;
