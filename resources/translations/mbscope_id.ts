@@ -5941,6 +5941,49 @@ Klik kanan untuk mengganti format</translation>
     </message>
 </context>
 <context>
+    <name>mbscope::SimScriptPanel</name>
+    <message>
+        <location filename="../../ui/sim/simscriptpanel.cpp" line="+25"/>
+        <source>Re&amp;load scripts</source>
+        <translation>Muat &amp;ulang skrip</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Loads every script of this simulator again from its file, with fresh globals.</source>
+        <translation>Memuat ulang setiap skrip simulator ini dari berkasnya, dengan variabel global yang baru.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Clear lo&amp;g</source>
+        <translation>Bersihkan lo&amp;g</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>What the scripts write with log(...) or console.log(...), and their errors with file and line.</source>
+        <translation>Apa yang ditulis skrip dengan log(...) atau console.log(...), serta galatnya dengan berkas dan baris.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1  %2  error: %3</source>
+        <translation>%1  %2  galat: %3</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>No simulator selected.</source>
+        <translation>Tidak ada simulator yang dipilih.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>This simulator&apos;s profile names no script (docs/profiles.md, &quot;Scripts&quot;).</source>
+        <translation>Profil simulator ini tidak menyebut skrip apa pun (docs/profiles.md, &quot;Scripts&quot;).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Scripts: %1</source>
+        <translation>Skrip: %1</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::SimTrafficModel</name>
     <message>
         <location filename="../../ui/sim/simtrafficmodel.cpp" line="+108"/>
@@ -6061,7 +6104,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimulatorPanel</name>
     <message>
-        <location filename="../../ui/sim/simulatorpanel.cpp" line="+45"/>
+        <location filename="../../ui/sim/simulatorpanel.cpp" line="+46"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
@@ -6151,12 +6194,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Gangguan</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-87"/>
         <source>Stops the simulator selected in the list.</source>
         <translation>Menghentikan simulator yang dipilih di daftar.</translation>
     </message>
@@ -6171,12 +6214,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Klik ganda sebuah nilai untuk mengaturnya di simulator (desimal, atau hex dengan 0x).</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+48"/>
         <source>&amp;Clear</source>
         <translation>&amp;Kosongkan</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+4"/>
+        <source>Script</source>
+        <translation>Skrip</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Set %1 %2 of unit %3 to %4.</source>
         <translation>%1 %2 unit %3 diatur ke %4.</translation>
     </message>
@@ -6237,7 +6285,7 @@ Klik kanan untuk mengganti format</translation>
         </translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+55"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -7602,7 +7650,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchWorkspace</name>
     <message>
-        <location filename="../../ui/watch/watchworkspace.cpp" line="+65"/>
+        <location filename="../../ui/watch/watchworkspace.cpp" line="+67"/>
         <source>No watches yet. A watch polls a block of a device at its own interval and shows its values with names, units and rule colours. Make one with Workspace → New watch (%1), from the composer&apos;s read request (%2) or from a device profile (%3); Start all (%4) polls them together.</source>
         <translation>Belum ada pantauan. Sebuah pantauan mem-polling satu blok perangkat pada intervalnya sendiri dan menampilkan nilainya dengan nama, unit, dan warna aturan. Buat dengan Daftar pantau → Pantauan baru (%1), dari permintaan baca penyusun (%2) atau dari profil perangkat (%3); Mulai semua (%4) mem-polling semuanya bersama.</translation>
     </message>
@@ -7719,7 +7767,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1, unit %2, setiap %3 ms</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+120"/>
         <source>watch</source>
         <translation>pantauan</translation>
     </message>

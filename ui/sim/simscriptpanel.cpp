@@ -52,7 +52,7 @@ void SimScriptPanel::watch(SimulatorHost *host)
 {
     connect(host, &SimulatorHost::scriptLogged, this, [this, host](const QString &who, const QString &text, bool error) {
         const QString time = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss.zzz"));
-        append(host, error ? tr("%1  %2  error: %3").arg(time, who, text) : tr("%1  %2  %3").arg(time, who, text));
+        append(host, error ? tr("%1  %2  error: %3").arg(time, who, text) : QStringLiteral("%1  %2  %3").arg(time, who, text));
     });
 }
 
