@@ -41,6 +41,7 @@ SimulateSession::SimulateSession(QTextStream &out, const Options &options, QObje
     connect(&m_recorder, &SimFaultPlanRecorder::recorded, this, [this](const SimTrafficRecord &record) {
         finish(record.entry, record.plan ? &*record.plan : nullptr);
     });
+    connect(&m_scripts, &SimScriptDriver::logged, this, &SimulateSession::printScriptLine);
     connect(&m_summaryTimer, &QTimer::timeout, this, [this] {
         m_out << QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss")) << "  " << summary() << Qt::endl;
     });
@@ -72,6 +73,11 @@ bool SimulateSession::load(const DeviceProfile &profile, const std::optional<Fau
     if (faults)
         m_injector.setRules(*faults);
     m_driver.attach(profile, m_units);
+    QStringList problems;
+    if (!m_scripts.attach(profile, &m_sim, &problems)) {
+        *error = problems.join(QLatin1Char('\n'));
+        return false;
+    }
     return true;
 }
 
@@ -104,6 +110,7 @@ void SimulateSession::start()
 {
     m_elapsed.start();
     m_driver.start();
+    m_scripts.start();
     if (m_options.quiet && m_options.summaryIntervalMs > 0)
         m_summaryTimer.start(m_options.summaryIntervalMs);
 }
@@ -112,6 +119,7 @@ void SimulateSession::stop()
 {
     m_summaryTimer.stop();
     m_driver.stop();
+    m_scripts.stop();
     m_sim.closeAll();
 }
 
@@ -225,6 +233,15 @@ QString SimulateSession::verdictText(const SimLogEntry &entry, const FaultPlan *
     if (!faults.isEmpty())
         text += QStringLiteral(", changed by fault (%1)").arg(faults);
     return text;
+}
+
+void SimulateSession::printScriptLine(const QString &who, const QString &text, bool error)
+{
+    // Errors are said even with --quiet: a script that fails answers differently.
+    if (m_options.quiet && !error)
+        return;
+    m_out << QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss.zzz")) << "  script " << who << "  "
+          << (error ? "error: " : "log: ") << text << Qt::endl;
 }
 
 void SimulateSession::printLine(const SimLogEntry &entry, const FaultPlan *plan)

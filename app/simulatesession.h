@@ -5,6 +5,7 @@
 #include "sim/faultplan.h"
 #include "sim/generatordriver.h"
 #include "sim/simfaultplanrecorder.h"
+#include "sim/simscriptdriver.h"
 #include "sim/simlogentry.h"
 #include "sim/simulator.h"
 
@@ -59,6 +60,7 @@ public:
     [[nodiscard]] QString summary() const;
     [[nodiscard]] Simulator &simulator() { return m_sim; }
     [[nodiscard]] FaultInjector &faultInjector() { return m_injector; }
+    [[nodiscard]] SimScriptDriver &scripts() { return m_scripts; }
 
 private:
     struct Counts {
@@ -77,6 +79,7 @@ private:
     void finish(const SimLogEntry &entry, const FaultPlan *plan);
     void count(const SimLogEntry &entry, const FaultPlan *plan);
     void printLine(const SimLogEntry &entry, const FaultPlan *plan);
+    void printScriptLine(const QString &who, const QString &text, bool error);
     [[nodiscard]] QString verdictText(const SimLogEntry &entry, const FaultPlan *plan) const;
     [[nodiscard]] Framing framingOf(const QString &endpoint) const;
 
@@ -85,6 +88,7 @@ private:
     Simulator m_sim;
     FaultInjector m_injector;
     GeneratorDriver m_driver;
+    SimScriptDriver m_scripts; // the units' scripts: nothing without one
     QList<SimUnit *> m_units;
     // The injector as the fault hook, each request paired with the plan made for its answer.
     SimFaultPlanRecorder m_recorder{&m_sim, &m_injector};

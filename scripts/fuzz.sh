@@ -35,7 +35,7 @@ cmake -S "$root" -B "$build" -G Ninja \
     -DCMAKE_CXX_FLAGS="$flags" \
     -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
     -DMBSCOPE_FUZZ=ON -DMBSCOPE_WERROR=OFF -DMBSCOPE_BUILD_UI=OFF -DMBSCOPE_BENCH=OFF >/dev/null
-cmake --build "$build" --target fuzz_dissector fuzz_framers fuzz_simserver fuzz_capture fuzz_session fuzz_journal -j"$jobs"
+cmake --build "$build" --target fuzz_dissector fuzz_framers fuzz_simserver fuzz_capture fuzz_session fuzz_journal fuzz_script -j"$jobs"
 
 # ASan records the stack of every allocation with its fast unwinder, which follows frame
 # pointers; Debian's Qt is built without them, so every frame beyond the caller of Qt's
@@ -53,7 +53,7 @@ status=0
 summary=""
 # One of libFuzzer's final figures (-print_final_stats) from the current target's log.
 figure() { sed -n "s/^stat::$1: *//p" "$log" | tail -1; }
-for name in dissector framers simserver capture session journal; do
+for name in dissector framers simserver capture session journal script; do
     work=$build/tests/fuzz/corpus-$name
     mkdir -p "$work"
     log=$build/tests/fuzz/fuzz_$name.log

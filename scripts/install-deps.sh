@@ -7,6 +7,7 @@ set -euo pipefail
 build_pkgs=(
   build-essential cmake ninja-build pkg-config ccache
   qt6-base-dev qt6-base-dev-tools qt6-serialbus-dev qt6-serialport-dev qt6-tools-dev qt6-tools-dev-tools
+  qt6-declarative-dev  # QJSEngine (Qt6::Qml): the simulator's device scripts
   qt6-l10n-tools libqcustomplot-dev libqcustomplot2.1-qt6 libgl-dev
   qt6-qpa-plugins qt6-svg-dev
   librsvg2-bin dpkg-dev

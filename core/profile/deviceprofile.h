@@ -1,6 +1,7 @@
 #pragma once
 
 #include "protocol/registerformat.h"
+#include "script/scriptsettings.h"
 #include "delayspec.h"
 #include "devicelimits.h"
 #include "faultrule.h"
@@ -71,6 +72,7 @@ struct UnitProfile {
     quint8 conformityLevel = 0;        // 0: derived from the objects present
     std::optional<ServerIdSpec> serverId;
     quint8 exceptionStatus = 0;        // 07 (V1.1b3 6.7)
+    ScriptSettings script;             // "script": answers computed in JavaScript (empty: none)
 
     [[nodiscard]] QList<TableEntry> entriesOf(SimTable table) const;
     // The entry holding address in table, or nullptr.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "script/scriptsettings.h"
 #include "simtable.h"
 
 #include <QtCore/QList>
@@ -40,6 +41,7 @@ struct LineTable {
     // it is answered by the profile's first unit.
     QString unitCapture = QStringLiteral("unit");
     QList<LineRule> rules;
+    ScriptSettings script; // "script": onFrame(frame) speaks before the rules (docs/profiles.md)
 
     [[nodiscard]] bool isEmpty() const { return rules.isEmpty(); }
 

@@ -1,6 +1,7 @@
 #include "linetablereader.h"
 
 #include "json/jsonreader.h"
+#include "scriptsettingsreader.h"
 #include "linetemplate.h"
 
 namespace mbscope {
@@ -112,9 +113,15 @@ LineTable LineTableReader::read(JsonReader &reader, const QJsonValue &value, con
     const auto o = reader.objectValue(value, path);
     if (!o)
         return table;
-    reader.checkKeys(*o, path, {"unitCapture", "rules"});
+    reader.checkKeys(*o, path, {"unitCapture", "rules", "script"});
     table.unitCapture = reader.string(*o, path, "unitCapture").value_or(QStringLiteral("unit"));
-    if (reader.require(*o, path, "rules")) {
+    if (o->contains(QLatin1String("script"))) {
+        if (const auto script = ScriptSettingsReader::read(reader, o->value(QLatin1String("script")),
+                                                           JsonReader::member(path, "script")))
+            table.script = *script;
+    }
+    // A script alone may serve the protocol; without one the rules are the protocol.
+    if ((o->contains(QLatin1String("script")) && !o->contains(QLatin1String("rules"))) || reader.require(*o, path, "rules")) {
         if (const auto rules = reader.array(*o, path, "rules")) {
             const QString at = JsonReader::member(path, "rules");
             if (rules->isEmpty())

@@ -4,6 +4,7 @@
 #include "faultrulereader.h"
 #include "json/jsonreader.h"
 #include "profiletablereader.h"
+#include "scriptsettingsreader.h"
 #include "sim/simunit.h"
 
 #include <QtCore/QJsonArray>
@@ -61,7 +62,7 @@ std::optional<UnitProfile> ProfileUnitReader::read(JsonReader &reader, const QJs
         return std::nullopt;
     const int before = reader.problemCount();
     reader.checkKeys(*o, path, {"id", "name", "description", "functions", "responseDelay", "tables", "fifos", "files",
-                                "deviceIdentification", "serverId", "exceptionStatus"});
+                                "deviceIdentification", "serverId", "exceptionStatus", "script"});
     UnitProfile unit;
     if (reader.require(*o, path, "id")) {
         const QJsonValue id = o->value(QLatin1String("id"));
@@ -99,6 +100,11 @@ std::optional<UnitProfile> ProfileUnitReader::read(JsonReader &reader, const QJs
                      JsonReader::member(path, "deviceIdentification"), &unit);
     if (o->contains(QLatin1String("serverId")))
         readServerId(reader, o->value(QLatin1String("serverId")), JsonReader::member(path, "serverId"), &unit);
+    if (o->contains(QLatin1String("script"))) {
+        if (const auto script = ScriptSettingsReader::read(reader, o->value(QLatin1String("script")),
+                                                           JsonReader::member(path, "script")))
+            unit.script = *script;
+    }
     if (reader.problemCount() != before)
         return std::nullopt;
     return unit;

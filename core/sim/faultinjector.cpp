@@ -128,10 +128,12 @@ FaultContext FaultContext::forExchange(const SimExchange &exchange)
         c.request = exchange.requestAdu;
         c.response = exchange.responseAdu;
         c.responseDelayNs = exchange.responseDelayNs;
+        c.responseDelayFixed = exchange.responseDelayFixed;
         c.intervalNs = exchange.intervalNs;
         return c;
     }
     FaultContext c = forRequest(exchange.framing, exchange.requestAdu, exchange.responseAdu, exchange.responseDelayNs);
+    c.responseDelayFixed = exchange.responseDelayFixed;
     c.unit = exchange.routedUnitId;
     c.intervalNs = exchange.intervalNs;
     return c;
@@ -280,8 +282,11 @@ FaultPlan FaultInjector::plan(const FaultContext &context)
     // The unit's response time is drawn for every answer, so that faults do not shift the
     // delays of the answers after them.
     qint64 delayNs = context.responseDelayNs;
-    if (const auto it = m_delays.constFind(context.unit); it != m_delays.constEnd())
-        delayNs = it->sampleNs(delayRandom(context.unit));
+    if (const auto it = m_delays.constFind(context.unit); it != m_delays.constEnd()) {
+        const qint64 drawn = it->sampleNs(delayRandom(context.unit));
+        if (!context.responseDelayFixed)
+            delayNs = drawn;
+    }
 
     // Noise on the request: a frame with any bit flipped is lost (its CRC or LRC fails; a
     // delimited frame no longer reads as the request).

@@ -38,6 +38,7 @@ struct FaultContext {
     QByteArray request;             // the request ADU
     QByteArray response;            // the correct response ADU
     qint64 responseDelayNs = 0;     // the unit's response time when no distribution is set for it
+    bool responseDelayFixed = false; // a script set responseDelayNs: the unit's distribution does not replace it
     // Since the previous request arrived on the same endpoint (the bus); -1: none before. Rules
     // with byIntervalMs or a turnaround fire by it.
     qint64 intervalNs = -1;

@@ -27,6 +27,7 @@ struct SimExchange {
     SimReply reply;             // the unit's answer (reply.pdu: the response PDU)
     QByteArray responseAdu;     // reply.pdu framed like the request (same unit and transaction id)
     qint64 responseDelayNs = 0; // the unit's response delay
+    bool responseDelayFixed = false; // set by the unit's script ({delay: ms}): no distribution drawn over it
     qint64 receivedNs = 0;      // monotonicNowNs() when the request's last byte arrived
     qint64 intervalNs = -1;     // since the previous request arrived on the same endpoint; -1: none
 };

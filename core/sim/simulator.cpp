@@ -5,7 +5,9 @@
 #include "protocol/delimitedframer.h"
 #include "sim/lineresponder.h"
 #include "sim/simdatagramendpoint.h"
+#include "script/scripthost.h"
 #include "sim/simprocessor.h"
+#include "sim/simscriptreply.h"
 #include "sim/simserialendpoint.h"
 #include "sim/simstreamendpoint.h"
 #include "sim/simunit.h"
@@ -110,6 +112,18 @@ QList<quint8> Simulator::unitIds() const
     return ids;
 }
 
+void Simulator::setScript(quint8 unitId, ScriptHost *script)
+{
+    if (const auto it = m_units.find(unitId); it != m_units.end())
+        it->second.script = script;
+}
+
+ScriptHost *Simulator::script(quint8 unitId) const
+{
+    const auto it = m_units.find(unitId);
+    return it == m_units.end() ? nullptr : it->second.script;
+}
+
 SimEndpoint *Simulator::listen(const QString &url, const SimEndpointOptions &options, QString *error)
 {
     const LinkUrl::Result parsed = LinkUrl::parse(url, LinkUse::Listen);
@@ -123,10 +137,10 @@ SimEndpoint *Simulator::listen(const QString &url, const SimEndpointOptions &opt
 
 SimEndpoint *Simulator::listen(const LinkUrl &url, const SimEndpointOptions &options, QString *error)
 {
-    if (url.delimited.enabled && m_lineTable.isEmpty()) {
+    if (url.delimited.enabled && m_lineTable.isEmpty() && !m_lineScript) {
         if (error)
             *error = url.toString() + QStringLiteral(": framing=delimited needs a profile with a 'delimited' table of requests "
-                                                     "and answers (docs/profiles.md, \"Delimited protocols\")");
+                                                     "and answers or a script (docs/profiles.md, \"Delimited protocols\")");
         return nullptr;
     }
     SimEndpoint *endpoint = nullptr;
@@ -247,6 +261,40 @@ bool Simulator::warmingUp(SimEndpoint *endpoint, const QString &peer, int unitId
     return true;
 }
 
+std::optional<LineAnswer> Simulator::lineScriptAnswer(const QByteArray &body, int unitId, qint64 *delayNs)
+{
+    const ScriptAnswer a = m_lineScript->frame(body);
+    LineAnswer out;
+    out.rule = m_lineScript->settings().name;
+    out.unitId = unitId;
+    *delayNs = a.delayNs;
+    switch (a.kind) {
+    case ScriptAnswer::Kind::Normal:
+        if (!m_lineTable.isEmpty())
+            return std::nullopt;
+        out.note = out.rule + QStringLiteral(": onFrame returned undefined and the profile has no table: no answer");
+        return out;
+    case ScriptAnswer::Kind::Adu:
+        out.matched = true;
+        out.answers = true;
+        out.bytes = a.bytes;
+        return out;
+    case ScriptAnswer::Kind::Failed:
+        *delayNs = -1;
+        if (m_lineScript->settings().onError == ScriptSettings::OnError::Normal && !m_lineTable.isEmpty())
+            return std::nullopt;
+        out.note = QStringLiteral("script error (no answer): ") + a.note;
+        return out;
+    default:
+        // null, {silent: true}; an exception or a PDU has no meaning on a line protocol
+        out.matched = a.kind == ScriptAnswer::Kind::Silence;
+        out.note = a.kind == ScriptAnswer::Kind::Silence
+                       ? out.rule + QStringLiteral(": no answer")
+                       : out.rule + QStringLiteral(": onFrame answers with text or bytes, null or undefined (exceptions and PDUs are Modbus): no answer");
+        return out;
+    }
+}
+
 FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, FrameStatus status, const QString &peer,
                                 qint64 receivedNs, qint64 connectedNs)
 {
@@ -263,7 +311,11 @@ FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, Fra
         return silence;
     const QByteArrayView body = framing.checksum == DelimitedChecksum::None ? frame : frame.first(std::max<qsizetype>(0, frame.size() - 1));
     const QList<Slot *> units = slotsOf(endpoint);
-    const LineAnswer answer = LineResponder::respond(m_lineTable, body, [&units](int id) -> SimUnit * {
+    std::optional<LineAnswer> scripted;
+    qint64 scriptDelayNs = -1;
+    if (m_lineScript && m_lineScript->handlesFrames())
+        scripted = lineScriptAnswer(body.toByteArray(), units.isEmpty() ? -1 : units.first()->unit->id(), &scriptDelayNs);
+    const LineAnswer answer = scripted ? *scripted : LineResponder::respond(m_lineTable, body, [&units](int id) -> SimUnit * {
         for (Slot *slot : units) {
             if (id < 0 || slot->unit->id() == id)
                 return slot->unit.get();
@@ -276,7 +328,8 @@ FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, Fra
             answer.note.isEmpty() ? answer.rule + QStringLiteral(": no answer") : answer.note);
         return silence;
     }
-    const qint64 delayNs = unit(quint8(answer.unitId)) ? unit(quint8(answer.unitId))->responseDelayNs() : 0;
+    const qint64 delayNs = scriptDelayNs >= 0 ? scriptDelayNs
+                           : unit(quint8(answer.unitId)) ? unit(quint8(answer.unitId))->responseDelayNs() : 0;
     if (bool limitSilent = false; const auto refused = limitReply(QByteArray(1, '\0'), receivedNs, &limitSilent)) {
         // A delimited device has no exception answers: too soon means no answer.
         log(endpoint, peer, answer.unitId, frame, {}, SimLogEntry::Verdict::NoAnswer, refused->note);
@@ -295,6 +348,7 @@ FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, Fra
         exchange.requestAdu = frame.toByteArray();
         exchange.responseAdu = bytes;
         exchange.responseDelayNs = delayNs;
+        exchange.responseDelayFixed = scriptDelayNs >= 0;
         exchange.receivedNs = receivedNs;
         exchange.intervalNs = intervalNs;
         exchange.reply = SimReply::normal(bytes);
@@ -381,6 +435,8 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
 
     SimReply reply;
     qint64 delayNs = 0;
+    QByteArray exactAnswer; // a script's "adu": sent as it is
+    bool delayFixed = false; // a script's "delay"
     SimLogEntry::Verdict verdict = SimLogEntry::Verdict::Answered;
     if (!target) {
         auto policy = endpoint->options().unknownUnit;
@@ -400,6 +456,18 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         reply = *refused;
         delayNs = target->unit->responseDelayNs();
         verdict = limitSilent ? SimLogEntry::Verdict::NoAnswer : SimLogEntry::Verdict::Exception;
+    } else if (target->script) {
+        SimScriptReply scripted = SimScriptReply::make(
+            *target->script, *target->processor,
+            {unitId, parts.pdu, endpoint->name(), peer, serial ? -1 : int(parts.transactionId)});
+        reply = scripted.reply;
+        delayNs = scripted.delayNs >= 0 ? scripted.delayNs : target->unit->responseDelayNs();
+        delayFixed = scripted.delayNs >= 0;
+        exactAnswer = scripted.adu;
+        if (reply.kind == SimReply::Kind::Exception)
+            verdict = SimLogEntry::Verdict::Exception;
+        else if (!reply.hasAnswer())
+            verdict = SimLogEntry::Verdict::NoAnswer;
     } else {
         reply = target->processor->process(parts.pdu, false);
         delayNs = target->unit->responseDelayNs();
@@ -412,7 +480,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         log(endpoint, peer, unitId, adu, {}, verdict, reply.note);
         return silence;
     }
-    const QByteArray answer = frameAnswer(reply.pdu, framing, unitId, parts.transactionId);
+    const QByteArray answer = exactAnswer.isEmpty() ? frameAnswer(reply.pdu, framing, unitId, parts.transactionId) : exactAnswer;
     FaultPlan plan;
     if (m_faultHook) {
         SimExchange exchange;
@@ -427,6 +495,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         exchange.reply = reply;
         exchange.responseAdu = answer;
         exchange.responseDelayNs = delayNs;
+        exchange.responseDelayFixed = delayFixed;
         exchange.receivedNs = receivedNs;
         exchange.intervalNs = intervalNs;
         plan = m_faultHook(exchange);

@@ -2,6 +2,7 @@
 
 #include "profile/devicelimits.h"
 #include "profile/linerule.h"
+#include "sim/lineresponder.h"
 #include "protocol/streamframe.h"
 #include "sim/faultplan.h"
 #include "sim/simendpointoptions.h"
@@ -21,6 +22,7 @@
 namespace mbscope {
 
 class LinkUrl;
+class ScriptHost;
 class SimEndpoint;
 class SimProcessor;
 class SimUnit;
@@ -83,6 +85,16 @@ public:
     void setLineTable(const LineTable &table) { m_lineTable = table; }
     [[nodiscard]] const LineTable &lineTable() const { return m_lineTable; }
 
+    // ---- Scripts (SimScriptDriver: docs/profiles.md, "Scripts") ----
+    // A unit's script (not owned; nullptr removes it) sees each request the unit takes, after the
+    // device limits, and answers before the unit's data model does. Units without one pay nothing.
+    void setScript(quint8 unitId, ScriptHost *script);
+    [[nodiscard]] ScriptHost *script(quint8 unitId) const;
+    // A delimited protocol's script (onFrame) speaks before the LineTable; with it, listen()
+    // takes framing=delimited without a table.
+    void setLineScript(ScriptHost *script) { m_lineScript = script; }
+    [[nodiscard]] ScriptHost *lineScript() const { return m_lineScript; }
+
     // ---- Faults and logs ----
     void setFaultHook(FaultHook hook) { m_faultHook = std::move(hook); }
     [[nodiscard]] bool hasFaultHook() const { return bool(m_faultHook); }
@@ -117,6 +129,7 @@ private:
     struct Slot {
         std::unique_ptr<SimUnit> unit;
         std::unique_ptr<SimProcessor> processor;
+        ScriptHost *script = nullptr;
     };
     [[nodiscard]] QList<Slot *> slotsOf(const SimEndpoint *endpoint);
     // Returns the traffic id the request was logged with (0: no traffic log, or no request).
@@ -129,6 +142,9 @@ private:
     // A reply refusing the request by the device limits (gap, quantity), or nullopt to go on.
     [[nodiscard]] std::optional<SimReply> limitReply(const QByteArray &pdu, qint64 receivedNs, bool *silent);
 
+    // The line script's answer to a delimited frame (body without checksum), nullopt for the
+    // table's; *delayNs its delay (-1: the unit's).
+    [[nodiscard]] std::optional<LineAnswer> lineScriptAnswer(const QByteArray &body, int unitId, qint64 *delayNs);
     FaultPlan handleLine(SimEndpoint *endpoint, QByteArrayView frame, FrameStatus status, const QString &peer,
                          qint64 receivedNs, qint64 connectedNs);
     // Whether a request at receivedNs falls in the warm-up (then logged as ignored).
@@ -138,6 +154,7 @@ private:
     std::map<quint8, Slot> m_units;
     DeviceLimits m_limits;
     LineTable m_lineTable;
+    ScriptHost *m_lineScript = nullptr;
     qint64 m_lastTakenNs = 0; // arrival of the last request the device took (minGapMs)
     // Arrival of the last request on each endpoint: the interval time-dependent faults go by.
     QHash<const SimEndpoint *, qint64> m_lastArrivalNs;

@@ -5,6 +5,7 @@
 #include "sim/profileapplier.h"
 #include "sim/simendpoint.h"
 #include "sim/simfaultplanrecorder.h"
+#include "sim/simscriptdriver.h"
 #include "sim/simulator.h"
 #include "sim/simunit.h"
 
@@ -71,6 +72,12 @@ bool SimulatorHost::load(const DeviceProfile &profile, QString *error)
     m_simulator->setLimits(profile.limits);
     m_simulator->setLineTable(profile.delimited);
     m_driver->attach(profile, adopted);
+    // The engines are made in the simulator's thread (start()); the hosts are set now, so that
+    // a delimited endpoint served by a script alone can listen.
+    m_scripts = new SimScriptDriver;
+    m_scripts->attach(profile, m_simulator, nullptr, false);
+    m_scriptNames = m_scripts->describe();
+    connect(m_scripts, &SimScriptDriver::logged, this, &SimulatorHost::scriptLogged);
     auto *recorder = new SimFaultPlanRecorder(m_simulator, m_injector.get(), m_anchor);
     connect(recorder, &SimFaultPlanRecorder::recorded, m_anchor,
             [this](const SimTrafficRecord &record) { noteRecord(record); }, Qt::DirectConnection);
@@ -123,12 +130,16 @@ void SimulatorHost::start()
     m_thread.start();
     m_simulator->moveToThread(&m_thread);
     m_driver->moveToThread(&m_thread);
+    m_scripts->moveToThread(&m_thread);
     m_anchor->moveToThread(&m_thread);
     for (quint8 id : std::as_const(m_unitIds))
         m_simulator->unit(id)->moveToThread(&m_thread); // held by the simulator, not its QObject children
     // Timers start in the thread that runs them.
     GeneratorDriver *driver = m_driver;
-    QMetaObject::invokeMethod(m_anchor, [driver, timer] {
+    SimScriptDriver *scripts = m_scripts;
+    QMetaObject::invokeMethod(m_anchor, [driver, scripts, timer] {
+        scripts->load();
+        scripts->start();
         driver->start();
         timer->start();
     }, Qt::QueuedConnection);
@@ -140,10 +151,12 @@ void SimulatorHost::stop()
         return;
     Simulator *simulator = m_simulator;
     GeneratorDriver *driver = m_driver;
+    SimScriptDriver *scripts = m_scripts;
     QObject *anchor = m_anchor;
-    auto teardown = [simulator, driver, anchor] {
+    auto teardown = [simulator, driver, scripts, anchor] {
         driver->stop();
         delete driver;
+        delete scripts; // takes the scripts off the simulator first
         const QObjectList children = anchor->children();
         qDeleteAll(children); // the recorder detaches the fault hook, the timer stops
         simulator->closeAll();
@@ -161,6 +174,7 @@ void SimulatorHost::stop()
     m_anchor = nullptr;
     m_simulator = nullptr;
     m_driver = nullptr;
+    m_scripts = nullptr;
     m_injector.reset();
     const bool wasRunning = m_running;
     m_running = false;
@@ -206,6 +220,15 @@ void SimulatorHost::setValue(quint8 unit, SimTable table, int address, quint16 v
         QMetaObject::invokeMethod(m_anchor, apply, Qt::QueuedConnection);
     else
         apply();
+}
+
+void SimulatorHost::reloadScripts()
+{
+    if (!m_scripts)
+        return;
+    SimScriptDriver *scripts = m_scripts;
+    if (m_running)
+        QMetaObject::invokeMethod(m_anchor, [scripts] { scripts->reload(); }, Qt::QueuedConnection);
 }
 
 FaultRuleSet SimulatorHost::faultRules() const

@@ -20,6 +20,7 @@ namespace mbscope {
 class FaultInjector;
 class GeneratorDriver;
 class SimFaultPlanRecorder;
+class SimScriptDriver;
 class SimUnit;
 class Simulator;
 
@@ -69,6 +70,11 @@ public:
     // Sets a value in the simulator's thread (no writable check: the panel is the device's
     // front panel); the change comes back through valuesUpdated().
     void setValue(quint8 unit, SimTable table, int address, quint16 value);
+    // The units' scripts ("unit 1: meter.js"), loaded in the simulator's thread when it starts.
+    [[nodiscard]] QStringList scripts() const { return m_scriptNames; }
+    // Loads every script again from its file (a fresh engine each) in the simulator's thread;
+    // what happened comes back through scriptLogged().
+    void reloadScripts();
     [[nodiscard]] FaultRuleSet faultRules() const;
     void setFaultRules(const FaultRuleSet &rules);
     // Traffic records waiting for the next report are capped at this many; older ones are
@@ -80,6 +86,8 @@ Q_SIGNALS:
     void valuesUpdated(const QList<mbscope::SimValueUpdate> &updates);
     void trafficRecorded(const QList<mbscope::SimTrafficRecord> &records, int lost);
     void stopped();
+    // A script's log line or error (who: "unit 1: meter.js"), queued from the simulator's thread.
+    void scriptLogged(const QString &who, const QString &text, bool error);
 
 private:
     using DirtyKey = std::pair<quint8, SimTable>;
@@ -93,6 +101,8 @@ private:
     QObject *m_anchor = nullptr; // lives in m_thread: parent of what runs there
     Simulator *m_simulator = nullptr;
     GeneratorDriver *m_driver = nullptr;
+    SimScriptDriver *m_scripts = nullptr;
+    QStringList m_scriptNames;
     std::unique_ptr<FaultInjector> m_injector;
     DeviceProfile m_profile;
     QList<quint8> m_unitIds;

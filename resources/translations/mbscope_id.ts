@@ -6628,6 +6628,49 @@ Klik kanan untuk mengganti format</translation>
     </message>
 </context>
 <context>
+    <name>mbscope::SimScriptPanel</name>
+    <message>
+        <location filename="../../ui/sim/simscriptpanel.cpp" line="+25"/>
+        <source>Re&amp;load scripts</source>
+        <translation>Muat &amp;ulang skrip</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Loads every script of this simulator again from its file, with fresh globals.</source>
+        <translation>Memuat ulang setiap skrip simulator ini dari berkasnya, dengan variabel global yang baru.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Clear lo&amp;g</source>
+        <translation>Bersihkan lo&amp;g</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>What the scripts write with log(...) or console.log(...), and their errors with file and line.</source>
+        <translation>Apa yang ditulis skrip dengan log(...) atau console.log(...), serta galatnya dengan berkas dan baris.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1  %2  error: %3</source>
+        <translation>%1  %2  galat: %3</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>No simulator selected.</source>
+        <translation>Tidak ada simulator yang dipilih.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>This simulator&apos;s profile names no script (docs/profiles.md, &quot;Scripts&quot;).</source>
+        <translation>Profil simulator ini tidak menyebut skrip apa pun (docs/profiles.md, &quot;Scripts&quot;).</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Scripts: %1</source>
+        <translation>Skrip: %1</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::SimTrafficModel</name>
     <message>
         <location filename="../../ui/sim/simtrafficmodel.cpp" line="+108"/>
@@ -6748,7 +6791,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimulatorPanel</name>
     <message>
-        <location filename="../../ui/sim/simulatorpanel.cpp" line="+45"/>
+        <location filename="../../ui/sim/simulatorpanel.cpp" line="+46"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
@@ -6838,12 +6881,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Gangguan</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+30"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-87"/>
         <source>Stops the simulator selected in the list.</source>
         <translation>Menghentikan simulator yang dipilih di daftar.</translation>
     </message>
@@ -6858,12 +6901,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Klik ganda sebuah nilai untuk mengaturnya di simulator (desimal, atau hex dengan 0x).</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+48"/>
         <source>&amp;Clear</source>
         <translation>&amp;Kosongkan</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+4"/>
+        <source>Script</source>
+        <translation>Skrip</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Set %1 %2 of unit %3 to %4.</source>
         <translation>%1 %2 unit %3 diatur ke %4.</translation>
     </message>
@@ -6924,7 +6972,7 @@ Klik kanan untuk mengganti format</translation>
         </translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+55"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

@@ -44,6 +44,7 @@ const QMap<QString, QStringList> &coreModules()
          {QStringLiteral("transport"), QStringLiteral("sim"), QStringLiteral("capture")}},
         {QStringLiteral("QtSerialPort"), {QStringLiteral("transport"), QStringLiteral("sim")}},
         {QStringLiteral("QtSerialBus"), {QStringLiteral("sim")}},
+        {QStringLiteral("QtQml"), {QStringLiteral("script")}},
     };
     return modules;
 }
@@ -80,6 +81,7 @@ QMap<QString, int> IncludeRules::coreLayers()
         {QStringLiteral("protocol"), 0}, {QStringLiteral("time"), 0},    {QStringLiteral("json"), 0},
         {QStringLiteral("metrics"), 0},
         {QStringLiteral("transport"), 1}, {QStringLiteral("exchange"), 2}, {QStringLiteral("traffic"), 3},
+        {QStringLiteral("script"), 3},
         {QStringLiteral("engine"), 4},   {QStringLiteral("capture"), 4}, {QStringLiteral("profile"), 4},
         {QStringLiteral("watch"), 4},    {QStringLiteral("fleet"), 5},    {QStringLiteral("discovery"), 5},
         {QStringLiteral("sim"), 5},      {QStringLiteral("session"), 5}, {QStringLiteral("monitor"), 5},
@@ -240,7 +242,7 @@ void IncludeRules::checkAngled(const QString &file, int line, const QString &nam
     if (part == QLatin1String("core")) {
         const QString own = folderOf(file);
         if (!coreModules().contains(module))
-            fail(QStringLiteral("core uses QtCore, QtNetwork, QtSerialPort and QtSerialBus only, not %1")
+            fail(QStringLiteral("core uses QtCore, QtNetwork, QtSerialPort, QtSerialBus and QtQml only, not %1")
                      .arg(module));
         else if (const QStringList allowed = coreModules().value(module);
                  !allowed.isEmpty() && !allowed.contains(own))

@@ -204,9 +204,9 @@ void TestLayers::checkerCatches_data()
         "core includes nothing from ui/");
     row("core includes app", "core/session/made.cpp", "#include \"../../app/cli.h\"", "core includes nothing from app/");
     row("core includes QtWidgets", "core/sim/made.cpp", "#include <QtWidgets/QWidget>",
-        "core uses QtCore, QtNetwork, QtSerialPort and QtSerialBus only, not QtWidgets");
+        "core uses QtCore, QtNetwork, QtSerialPort, QtSerialBus and QtQml only, not QtWidgets");
     row("core includes QtGui", "core/protocol/made.h", "#include <QtGui/QColor>",
-        "core uses QtCore, QtNetwork, QtSerialPort and QtSerialBus only, not QtGui");
+        "core uses QtCore, QtNetwork, QtSerialPort, QtSerialBus and QtQml only, not QtGui");
     row("core includes qcustomplot", "core/engine/made.cpp", "#include <qcustomplot.h>", "not QCustomPlot");
     row("core/engine includes QtNetwork", "core/engine/made.cpp", "#include <QtNetwork/QTcpSocket>",
         "QtNetwork is used in core only by core/transport, core/sim, core/capture, not core/engine");

@@ -1,6 +1,7 @@
 #include "simulatorpanel.h"
 
 #include "simfaultform.h"
+#include "simscriptpanel.h"
 #include "simregistermodel.h"
 #include "simrunlistmodel.h"
 #include "simtrafficmodel.h"
@@ -177,6 +178,9 @@ void SimulatorPanel::buildUi()
     m_faults->setObjectName(QStringLiteral("simFaults"));
     m_tabs->addTab(m_faults, tr("Faults"));
 
+    m_scripts = new SimScriptPanel(m_tabs);
+    m_scripts->setObjectName(QStringLiteral("simScriptPanel"));
+
     auto *trafficPage = new QWidget(m_tabs);
     auto *trafficLayout = new QVBoxLayout(trafficPage);
     trafficLayout->setContentsMargins(0, 4, 0, 0);
@@ -203,6 +207,7 @@ void SimulatorPanel::buildUi()
     trafficRow->addWidget(clear);
     trafficLayout->addLayout(trafficRow);
     m_tabs->addTab(trafficPage, tr("Traffic"));
+    m_tabs->addTab(m_scripts, tr("Script"));
 
     splitter->addWidget(m_tabs);
     splitter->setStretchFactor(0, 0);
@@ -333,9 +338,9 @@ SimulatorHost *SimulatorPanel::startSimulator(const QString &profile, const QStr
         showMessage(tr("The simulator was not started on %1: %2").arg(url, error));
         return nullptr;
     }
+    watch(host); // before start: the scripts' first log lines are their loads
     host->start();
     m_owned.append(host);
-    watch(host);
     m_runs->addHost(host, loaded.profile.name);
     showMessage({});
     selectHost(host);
@@ -384,6 +389,7 @@ void SimulatorPanel::restoreSavedFaults(SimulatorHost *host)
 
 void SimulatorPanel::watch(SimulatorHost *host)
 {
+    m_scripts->watch(host);
     connect(host, &SimulatorHost::valuesUpdated, this, [this, host](const QList<SimValueUpdate> &updates) {
         if (host == m_current)
             m_registers->applyUpdates(updates);
@@ -400,6 +406,8 @@ void SimulatorPanel::stopSimulator(SimulatorHost *host)
     if (!host)
         return;
     disconnect(host, nullptr, this, nullptr);
+    disconnect(host, nullptr, m_scripts, nullptr);
+    m_scripts->forget(host);
     const bool owned = m_owned.contains(host);
     m_owned.removeAll(host);
     host->stop(); // the list drops it (stopped)
@@ -416,6 +424,7 @@ void SimulatorPanel::selectHost(SimulatorHost *host)
     if (host == m_current && (host == nullptr || m_registers->hasUnit()))
         return;
     m_current = host;
+    m_scripts->setHost(host);
     m_unit->clear();
     m_editMessage->clear();
     if (!host) {

@@ -20,6 +20,7 @@ namespace mbscope {
 class SimFaultForm;
 class SimRegisterModel;
 class SimRunListModel;
+class SimScriptPanel;
 class SimTrafficModel;
 
 // The simulator at hand: start device profiles (shipped or from a file) on endpoints chosen as a
@@ -27,7 +28,8 @@ class SimTrafficModel;
 // too (addRunning). For the simulator picked in the list: each unit's coils and registers live
 // and editable (SimRegisterModel: an edit sets the value in the simulator, what clients then
 // read), and its fault rules switched while clients poll (SimFaultForm: the next request sees
-// them). Below, every simulator's own traffic, bounded (SimTrafficModel).
+// them). Below, every simulator's own traffic, bounded (SimTrafficModel), and its scripts' log
+// with Reload scripts (SimScriptPanel).
 //
 // Values and traffic reach the panel in the hosts' batches (SimulatorHost reports at most every
 // 100 ms), never one signal per change.
@@ -54,6 +56,7 @@ public:
     [[nodiscard]] SimRegisterModel *registerModel() const { return m_registers; }
     [[nodiscard]] SimTrafficModel *trafficModel() const { return m_traffic; }
     [[nodiscard]] SimFaultForm *faultForm() const { return m_faults; }
+    [[nodiscard]] SimScriptPanel *scriptPanel() const { return m_scripts; }
     [[nodiscard]] QTabWidget *tabs() const { return m_tabs; }
     [[nodiscard]] QString message() const;
 
@@ -88,6 +91,7 @@ private:
     QTableView *m_registersView = nullptr;
     QLabel *m_editMessage = nullptr;
     SimFaultForm *m_faults = nullptr;
+    SimScriptPanel *m_scripts = nullptr;
     QTableView *m_trafficView = nullptr;
     QLabel *m_trafficNote = nullptr;
 };

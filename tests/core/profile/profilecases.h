@@ -76,7 +76,7 @@ inline void addErrorRows()
         S("unit 3 is given twice (also an earlier unit)"));
     row("unit unknown key", unit(R"(, "table": {})"), "units[0]",
         S("unknown key 'table': expected one of id, name, description, functions, responseDelay, tables, fifos, files, "
-          "deviceIdentification, serverId, exceptionStatus"));
+          "deviceIdentification, serverId, exceptionStatus, script"));
     row("function not implemented", unit(R"(, "functions": ["0x03", "0x41"])"), "units[0].functions[1]",
         S("function code 41 is not one the simulator implements (01, 02, 03, 04, 05, 06, 07, 08, 0B, 0C, 0F, 10, 11, 14, "
           "15, 16, 17, 18, 2B)"));
@@ -292,7 +292,7 @@ inline void addErrorRows()
     row("delimited rules empty", R"({"name": "t", "units": [{"id": 1}], "delimited": {"rules": []}})", "delimited.rules",
         S("the list is empty: a delimited protocol needs at least one rule"));
     row("delimited unknown key", R"({"name": "t", "units": [{"id": 1}], "delimited": {"rule": []}})", "delimited",
-        S("unknown key 'rule': expected one of unitCapture, rules"));
+        S("unknown key 'rule': expected one of unitCapture, rules, script"));
     row("delimited bad pattern", line(R"({"request": "\$(?<unit>0[12]R#", "answer": "x"})"), "delimited.rules[0].request",
         S("not a regular expression: missing closing parenthesis at character 17"));
     row("delimited answer missing", line(R"({"request": "a"})"), "delimited.rules[0]",

@@ -193,7 +193,8 @@ private slots:
     void shippedProfilesLoad_data()
     {
         QTest::addColumn<QString>("name");
-        for (const char *name : {"rosrao-gamma", "m221-plc", "arduino-rs485", "conformance", "libmodbus-unit-test", "scada-rs485"})
+        for (const char *name : {"rosrao-gamma", "m221-plc", "arduino-rs485", "conformance", "libmodbus-unit-test", "scada-rs485",
+                                  "scripted-meter"})
             QTest::newRow(name) << QString::fromLatin1(name);
     }
     void shippedProfilesLoad()
