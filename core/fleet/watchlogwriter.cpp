@@ -52,7 +52,7 @@ void WatchLogWriter::open()
         return;
     }
     m_log = std::move(log);
-    m_failing = false;
+    m_failing.clear();
     Q_EMIT opened(m_log->directory());
 }
 
@@ -65,13 +65,18 @@ void WatchLogWriter::close()
     m_log.reset();
 }
 
-void WatchLogWriter::said(bool ok, const QString &error)
+void WatchLogWriter::said(int watch, bool ok, const QString &error)
 {
-    // Said once while it lasts (a full disk would say it at every poll), and again should it
-    // come back after a write went through.
-    if (!ok && !m_failing)
+    // Said once while it lasts (a full disk would say it at every poll, a folder that cannot be
+    // made at every watch's roll while the others still write to their open files), and again
+    // should it come back after every failing watch wrote again.
+    if (ok) {
+        m_failing.remove(watch);
+        return;
+    }
+    if (m_failing.isEmpty())
         Q_EMIT failed(error);
-    m_failing = !ok;
+    m_failing.insert(watch);
 }
 
 void WatchLogWriter::append(const QList<WatchSample> &samples)
@@ -81,7 +86,7 @@ void WatchLogWriter::append(const QList<WatchSample> &samples)
     for (const WatchSample &s : samples) {
         QString error;
         const bool ok = m_log->append(s.watch, s.timeMs, watchSampleStatusName(s.status), s.values, s.error, &error);
-        said(ok, error);
+        said(s.watch, ok, error);
     }
 }
 
@@ -91,7 +96,7 @@ void WatchLogWriter::appendEvent(const WatchRuleEvent &event)
         return;
     QString error;
     const bool ok = m_log->appendEvent(event, &error);
-    said(ok, error);
+    said(event.watch, ok, error);
 }
 
 } // namespace mbscope

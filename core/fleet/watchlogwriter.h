@@ -6,6 +6,7 @@
 
 #include <QtCore/QList>
 #include <QtCore/QObject>
+#include <QtCore/QSet>
 #include <QtCore/QStringList>
 
 #include <memory>
@@ -21,8 +22,8 @@ class WatchCsvLog;
 // the order the fleet emitted them, and close once the fleet has stopped and its last samples are
 // written. configure() turns logging on, off or elsewhere at any time, running or not.
 //
-// A failure (disk full, a folder that cannot be made) is said once by failed() until a write
-// succeeds again; the rows lost are counted and said by closed().
+// A failure (disk full, a folder that cannot be made) is said once by failed() while any watch's
+// writes fail, and again only after every failing watch has written again; the rows lost are counted and said by closed().
 class WatchLogWriter : public QObject
 {
     Q_OBJECT
@@ -50,13 +51,13 @@ Q_SIGNALS:
 private:
     void open();
     void close();
-    void said(bool ok, const QString &error);
+    void said(int watch, bool ok, const QString &error);
 
     std::optional<WatchLogSettings> m_settings;
     QString m_base;
     SessionWatches m_watches;
     bool m_running = false;
-    bool m_failing = false;
+    QSet<int> m_failing; // watches whose last write failed
     std::unique_ptr<WatchCsvLog> m_log;
 };
 

@@ -247,9 +247,13 @@ FaultPlan FaultInjector::plan(const FaultContext &context)
         // No rule: the answer as built after the unit's response time, without the rule
         // machinery below (its lists cost more than the rest of a request, issue 15). The delay
         // is drawn as below, so the draws are the same with and without this path.
+        // A script's own delay (responseDelayFixed) stands, as below.
         qint64 delayNs = context.responseDelayNs;
-        if (const auto it = m_delays.constFind(context.unit); it != m_delays.constEnd())
-            delayNs = it->sampleNs(delayRandom(context.unit));
+        if (const auto it = m_delays.constFind(context.unit); it != m_delays.constEnd()) {
+            const qint64 drawn = it->sampleNs(delayRandom(context.unit));
+            if (!context.responseDelayFixed)
+                delayNs = drawn;
+        }
         plan.chunks.append(ResponseChunk{context.response, delayNs});
         return plan;
     }

@@ -4,6 +4,8 @@
 
 #include <QtCore/QDateTime>
 #include <QtGui/QFontDatabase>
+#include <QtGui/QFontMetrics>
+#include <QtGui/QTextCursor>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPlainTextEdit>
@@ -36,6 +38,8 @@ SimScriptPanel::SimScriptPanel(QWidget *parent)
     m_log->setLineWrapMode(QPlainTextEdit::NoWrap);
     m_log->setMaximumBlockCount(kLogLines);
     m_log->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    // Room for several errors at once, however small the dock.
+    m_log->setMinimumHeight(8 * QFontMetrics(m_log->font()).lineSpacing());
     m_log->setPlaceholderText(tr("What the scripts write with log(...) or console.log(...), and their errors with file and line."));
     layout->addWidget(m_log, 1);
 
@@ -86,8 +90,10 @@ void SimScriptPanel::setHost(SimulatorHost *host)
         m_scripts->setText(tr("This simulator's profile names no script (docs/profiles.md, \"Scripts\")."));
     else
         m_scripts->setText(tr("Scripts: %1").arg(scripts.join(QStringLiteral(", "))));
-    if (host)
+    if (host) {
         m_log->setPlainText(m_logs.value(host).join(QLatin1Char('\n')));
+        m_log->moveCursor(QTextCursor::End); // the newest lines in view
+    }
 }
 
 void SimScriptPanel::reload()

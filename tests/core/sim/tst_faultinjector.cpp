@@ -551,6 +551,20 @@ void TestFaultInjector::unitResponseDelay()
     FaultContext other = rtuContext();
     other.unit = 2;
     QCOMPARE(injector.plan(other).chunks.at(0).delayNs, kUnitDelayNs);
+    // A script's own delay stands over the unit's distribution, with rules and without (the
+    // path without rules drew over it: {delay: 250} was answered at once).
+    FaultContext scripted = rtuContext();
+    scripted.responseDelayNs = 250'000'000;
+    scripted.responseDelayFixed = true;
+    QCOMPARE(injector.plan(scripted).chunks.at(0).delayNs, qint64(250'000'000));
+    FaultRule never;
+    never.kind = FaultRule::Kind::Drop;
+    never.probability = 0.0;
+    FaultRuleSet rules;
+    rules.rules.append(never);
+    injector.setRules(rules);
+    QCOMPARE(injector.plan(scripted).chunks.at(0).delayNs, qint64(250'000'000));
+    injector.setRules(FaultRuleSet());
     injector.clearResponseDelays();
     QCOMPARE(injector.plan(rtuContext()).chunks.at(0).delayNs, kUnitDelayNs);
 }
