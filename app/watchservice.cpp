@@ -197,6 +197,7 @@ void WatchService::onLinkState(const WatchLinkState &state)
 
 void WatchService::onRule(const WatchRuleEvent &event)
 {
+    m_metrics.addRuleEvent(event); // mbscope_watch_rule_active: never set before
     const QString text = QStringLiteral("watch '%1': %2 %3 (%4 = %5)")
                              .arg(event.watchName, event.message, event.fired ? QStringLiteral("fired") : QStringLiteral("cleared"),
                                   event.point)
