@@ -61,9 +61,9 @@ for name in dissector framers simserver capture session journal script; do
     # QJSEngine's V4 engine keeps allocations of its own past the engine's end (LeakSanitizer
     # reports them on the first input, all allocated inside libQt6Qml); with two-frame stacks they
     # cannot be told from the harness's, so the script target runs without leak detection.
-    run=()
-    [[ $name == script ]] && run=(env "ASAN_OPTIONS=$ASAN_OPTIONS:detect_leaks=0")
-    if ! "${run[@]}" "$build/tests/fuzz/fuzz_$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    options=$ASAN_OPTIONS
+    [ "$name" = script ] && options="$ASAN_OPTIONS:detect_leaks=0"
+    if ! ASAN_OPTIONS=$options "$build/tests/fuzz/fuzz_$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
             -print_final_stats=1 -artifact_prefix="$build/tests/fuzz/crash-$name-" \
             "$work" "$root/tests/fuzz/corpus/$name" >"$log" 2>&1; then
         echo "fuzz_$name FAILED:" >&2

@@ -20,6 +20,7 @@ test_pkgs=(
   xvfb clang libclang-rt-14-dev libbenchmark-dev xauth
   desktop-file-utils appstream
   prometheus mosquitto mosquitto-clients
+  shellcheck  # tst_shellscripts
 )
 
 want=("${build_pkgs[@]}")
