@@ -44,6 +44,14 @@ int serveReplay(const ReplayScript &script, const QString &source, const ReplayS
     QStringList units;
     for (quint8 id : script.unitIds())
         units.append(QString::number(id));
+    // Ctrl-C is caught before "listening" is said: a stop sent right after it ends the replay cleanly.
+    QEventLoop loop;
+    InterruptWatcher interrupt;
+    bool interrupted = false;
+    QObject::connect(&interrupt, &InterruptWatcher::interrupted, &loop, [&] {
+        interrupted = true;
+        loop.quit();
+    });
     if (!options.json) {
         out << "serving " << script.size() << " recorded answers of " << source << " (" << responder.distinctRequests()
             << " distinct requests, units " << units.join(QStringLiteral(", ")) << ")\n"
@@ -58,13 +66,6 @@ int serveReplay(const ReplayScript &script, const QString &source, const ReplayS
         err << "listening " << bound << Qt::endl;
     }
 
-    QEventLoop loop;
-    InterruptWatcher interrupt;
-    bool interrupted = false;
-    QObject::connect(&interrupt, &InterruptWatcher::interrupted, &loop, [&] {
-        interrupted = true;
-        loop.quit();
-    });
     if (options.durationMs > 0)
         QTimer::singleShot(std::chrono::milliseconds(options.durationMs), &loop, &QEventLoop::quit);
     loop.exec();

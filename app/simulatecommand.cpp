@@ -253,6 +253,14 @@ int runSimulate(const QStringList &arguments)
     if (recording.isOpen())
         session.setTrafficLog(recording.log());
 
+    // Ctrl-C and SIGTERM are caught before the header says the simulator listens: a stop sent
+    // right after "listening" ends it cleanly, with its summary, instead of killing it.
+    QEventLoop loop;
+    bool interrupted = false;
+    StopSignals stopSignals([&] {
+        interrupted = true;
+        loop.quit();
+    });
     out << "simulating " << profile.name << " (" << profile.source << ", seed " << profile.seed << ")\n";
     for (const QString &line : session.endpointDescriptions())
         out << "listening " << line << '\n';
@@ -262,12 +270,6 @@ int runSimulate(const QStringList &arguments)
     if (parser.isSet(faultsOption))
         faultsWatcher = std::make_unique<FaultsWatcher>(parser.value(faultsOption), &session.faultInjector(), seed, out);
 
-    QEventLoop loop;
-    bool interrupted = false;
-    StopSignals stopSignals([&] {
-        interrupted = true;
-        loop.quit();
-    });
     if (durationMs > 0)
         QTimer::singleShot(std::chrono::milliseconds(durationMs), &loop, &QEventLoop::quit);
     session.start();

@@ -49,6 +49,9 @@ SimulateSession::SimulateSession(QTextStream &out, const Options &options, QObje
 
 SimulateSession::~SimulateSession()
 {
+    for (const QString &line : std::as_const(m_heldLines)) // never started: the load's lines are still worth seeing
+        m_out << line << '\n';
+    m_out.flush();
     stop();
 }
 
@@ -108,6 +111,11 @@ void SimulateSession::setTrafficLog(TrafficLog *log)
 
 void SimulateSession::start()
 {
+    m_started = true;
+    for (const QString &line : std::as_const(m_heldLines))
+        m_out << line << '\n';
+    m_heldLines.clear();
+    m_out.flush();
     m_elapsed.start();
     m_driver.start();
     m_scripts.start();
@@ -240,8 +248,14 @@ void SimulateSession::printScriptLine(const QString &who, const QString &text, b
     // Errors are said even with --quiet: a script that fails answers differently.
     if (m_options.quiet && !error)
         return;
-    m_out << QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss.zzz")) << "  script " << who << "  "
-          << (error ? "error: " : "log: ") << text << Qt::endl;
+    const QString line = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss.zzz")) + QStringLiteral("  script ") + who
+                         + QStringLiteral("  ") + (error ? QStringLiteral("error: ") : QStringLiteral("log: ")) + text;
+    // What a script's top level logs while loading comes after the "simulating" header.
+    if (!m_started) {
+        m_heldLines.append(line);
+        return;
+    }
+    m_out << line << Qt::endl;
 }
 
 void SimulateSession::printLine(const SimLogEntry &entry, const FaultPlan *plan)

@@ -11,6 +11,7 @@
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QHash>
+#include <QtCore/QStringList>
 #include <QtCore/QObject>
 #include <QtCore/QSet>
 #include <QtCore/QStringList>
@@ -98,6 +99,8 @@ private:
     SimEndpointOptions m_endpointOptions;
     QSet<QString> m_delimited; // names of the endpoints serving a delimited protocol
     Counts m_counts;
+    bool m_started = false;
+    QStringList m_heldLines; // script lines logged before start(), printed by it after the header
 };
 
 } // namespace mbscope::app

@@ -62,6 +62,7 @@ private Q_SLOTS:
     void runtimeErrorLoggedWithLine();
     void syntaxErrorRefusedAtLoad();
     void delimitedServedByScript();
+    void topLevelLogAfterHeader();
 };
 
 // Reads of the calibration block at 100: exception 03 over four registers, else 02, each logged
@@ -311,6 +312,28 @@ void tst_SimulateScripts::delimitedServedByScript()
     QCOMPARE(answer, QByteArray("$01 6 7 #"));
     QCOMPARE(sim.stop(), 0);
     QVERIFY2(sim.output().contains("$01R# -> $01 6 7 #"), sim.output().constData());
+}
+
+// A script's top-level log() runs while the profile loads, before the endpoints listen: its line
+// comes after the "simulating" header and the "listening" lines, not above them.
+void tst_SimulateScripts::topLevelLogAfterHeader()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    writeFile(dir, QStringLiteral("early.js"), "log('calibration table loaded');\nfunction onRequest(r) {}\n");
+    const QString profile = writeFile(dir, QStringLiteral("early.json"), profileWith(R"("early.js")"));
+    SimCli sim;
+    QString why;
+    QVERIFY2(sim.start({QStringLiteral("--profile"), profile, QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0")}, 1,
+                       &why),
+             qPrintable(why));
+    QCOMPARE(sim.stop(), 0);
+    const QByteArray out = sim.output();
+    const qsizetype header = out.indexOf("simulating scripted");
+    const qsizetype listening = out.indexOf("listening ");
+    const qsizetype logged = out.indexOf("log: calibration table loaded");
+    QVERIFY2(header >= 0 && listening > header && logged > listening, out.constData());
+    QCOMPARE(out.count("calibration table loaded"), 1);
 }
 
 QTEST_GUILESS_MAIN(tst_SimulateScripts)
