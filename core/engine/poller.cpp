@@ -4,6 +4,8 @@
 
 #include "transport/monotonicclock.h"
 
+#include <algorithm>
+
 namespace mbscope {
 
 Poller::Poller(EngineCore *core, const PollSettings &settings, quint64 tag, QObject *parent)
@@ -120,7 +122,10 @@ void Poller::startCycle(qint64 nowNs)
     for (qsizetype i = 0; i < m_settings.items.size(); ++i) {
         if (m_finished)
             return;
-        m_core->submit(m_settings.items.at(i), m_core->reserveId(), int(i), m_tag);
+        const quint64 id = m_core->reserveId();
+        if (i == 0)
+            m_cycleFirstId = id;
+        m_core->submit(m_settings.items.at(i), id, int(i), m_tag);
     }
 }
 
@@ -129,6 +134,10 @@ void Poller::onRecord(const Transaction &transaction, quint64 tag)
     if (tag != m_tag || !m_started || m_finished)
         return;
     m_run.statistics.add(transaction);
+    // The cycle actually began when its first request was written: a link still opening held it
+    // (the second cycle followed the first by the interval less the opening time).
+    if (transaction.id == m_cycleFirstId && transaction.attempt == 0 && transaction.writeNs > 0)
+        m_nextDueNs = std::max(m_nextDueNs, transaction.writeNs + m_settings.intervalNs);
     updateProgress(monotonicNowNs());
     advance(true);
 }

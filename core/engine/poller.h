@@ -17,7 +17,9 @@ struct Transaction;
 // One poll run in the engine's thread: the items submitted in cycles (PollSettings says how),
 // each record added to the run's statistics as it is made. A cycle that could not start when it
 // was due, because the one before was still running, starts as soon as that one ends and counts
-// as an overrun: the interval runs from one cycle's actual start to the next.
+// as an overrun: the interval runs from one cycle's actual start to the next, the moment its first
+// request was handed to the link (which may be later than the cycle was begun: the link may still
+// be opening, or the engine busy with an answer).
 class Poller : public QObject, private RecordListener
 {
     Q_OBJECT
@@ -56,6 +58,7 @@ private:
     QTimer m_timer;
     qint64 m_startNs = 0;
     qint64 m_nextDueNs = 0;
+    quint64 m_cycleFirstId = 0; // the request that begins the latest cycle
     bool m_started = false;
     bool m_finished = false;
 };

@@ -8,7 +8,8 @@
 namespace mbscope {
 
 // A poll: the items sent in order, one cycle after another. The interval runs start to start,
-// from the actual start of one cycle to the next; a cycle that takes longer than the interval
+// from the actual start of one cycle (its first request handed to the link: the first cycle
+// waits for the link to open) to the next; a cycle that takes longer than the interval
 // delays the next, which then starts as soon as it can and counts as an overrun. interval 0 runs
 // the cycles back to back. The poll ends after count cycles or once duration has passed (no
 // cycle starts after it; the one running ends), whichever comes first; with neither it runs until

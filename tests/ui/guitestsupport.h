@@ -3,6 +3,7 @@
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QDir>
+#include <QtCore/QFile>
 #include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
 #include <QtCore/QStandardPaths>
@@ -20,14 +21,21 @@
 
 namespace mbscope::guitest {
 
-// QSettings of a test never touch the user's, nor another test program's: each test program
-// starts with empty settings in a folder of its own, removed when it ends. (They shared one file,
-// so what one program left, a fault rule of the built-in simulator, reached the others, in
-// whatever order CTest ran them.)
+// QSettings and files of a test never touch the user's, nor another test program's: each test
+// program starts with empty settings and empty XDG folders (data, config, cache, state) in a
+// folder of its own, removed when it ends. (They shared one settings file, so what one program
+// left, a fault rule of the built-in simulator, reached the others, in whatever order CTest ran
+// them; and the window's traffic journals piled up in ~/.qttest/share, or without this call in
+// the user's ~/.local/share/mbscope/mbscope/captures.) Not QStandardPaths' test mode: it puts
+// every program in the same ~/.qttest of the user running the tests.
 inline void isolateSettings()
 {
-    QStandardPaths::setTestModeEnabled(true);
     static QTemporaryDir folder;
+    for (const char *name : {"XDG_DATA_HOME", "XDG_CONFIG_HOME", "XDG_CACHE_HOME", "XDG_STATE_HOME"}) {
+        const QString path = folder.filePath(QString::fromLatin1(name).toLower());
+        QDir().mkpath(path);
+        qputenv(name, QFile::encodeName(path));
+    }
     QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, folder.path());
     QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, folder.path());
     QCoreApplication::setOrganizationName(QStringLiteral("mbscope-tests"));

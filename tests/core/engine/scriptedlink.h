@@ -36,6 +36,8 @@ struct PeerState {
     // > 0: bytesWritten() comes this long after the write, carrying the time of the write (as a
     // serial link's computed drain time may come after a fast answer).
     std::atomic<int> writtenDelayMs{0};
+    // > 0: open() succeeds this long after it is called (a connection that takes time to open).
+    std::atomic<int> openDelayMs{0};
 };
 
 class ScriptedLink : public Link
@@ -57,7 +59,7 @@ public:
             return;
         setState(State::Opening);
         const int generation = ++m_generation;
-        QTimer::singleShot(0, this, [this, generation] {
+        QTimer::singleShot(m_state->openDelayMs.load(), Qt::PreciseTimer, this, [this, generation] {
             if (generation != m_generation || state() != State::Opening)
                 return;
             ++m_state->opens;

@@ -139,15 +139,18 @@ void TestTrafficMetadata::metadataOnDiskBeforeFirstFrame()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("early.mbscope.journal"));
+    // One sample: each call stamps its start time (in ms), so a second call compared with the
+    // first differed whenever a millisecond passed between them (on a loaded machine).
+    const QByteArray metadata = sample().toUtf8();
     TrafficJournalWriter::Options options;
-    options.metadata = sample().toUtf8();
+    options.metadata = metadata;
     TrafficLog log;
     QVERIFY(log.openJournal(path, options));
     appendMade(log, 0, 0); // pending, not written: a kill now loses it, never the metadata
     const TrafficJournalRecovery r = TrafficJournalReader::read(path, {});
     QVERIFY2(r.isClean(), qPrintable(r.message));
     QCOMPARE(r.frames, quint64(0));
-    QCOMPARE(r.metadata, sample().toUtf8());
+    QCOMPARE(r.metadata, metadata);
     // An existing journal is evidence: refused, and says so.
     TrafficLog second;
     QString error;
