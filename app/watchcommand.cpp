@@ -254,11 +254,21 @@ int runWatch(const QStringList &arguments)
         csvFailed = true;
         service.log().error(QStringLiteral("CSV: %1 (polling goes on; the rows lost are counted)").arg(message));
     });
-    QObject::connect(&runner, &WatchRunner::logClosed, &loop, [&](const QString &, const QStringList &files, quint64 lost) {
+    // A disk slower than the polls: said when rows start to be dropped and when it caught up.
+    QObject::connect(&runner, &WatchRunner::logDropping, &loop, [&](const QString &message) {
+        service.log().warning(QStringLiteral("CSV: %1").arg(message));
+    });
+    QObject::connect(&runner, &WatchRunner::logCaughtUp, &loop, [&](quint64, const QString &message) {
+        service.log().notice(QStringLiteral("CSV: %1").arg(message));
+    });
+    QObject::connect(&runner, &WatchRunner::logClosed, &loop, [&](const QString &, const QStringList &files, quint64 lost, quint64 dropped) {
         csvFiles += files;
         if (lost > 0) {
             csvFailed = true;
-            service.log().error(QStringLiteral("CSV: %1 %2 could not be written").arg(lost).arg(lost == 1 ? QStringLiteral("row") : QStringLiteral("rows")));
+            QString text = QStringLiteral("CSV: %1 %2 could not be written").arg(lost).arg(lost == 1 ? QStringLiteral("row") : QStringLiteral("rows"));
+            if (dropped > 0)
+                text += QStringLiteral(" (%1 dropped while the log fell behind the polls)").arg(dropped);
+            service.log().error(text);
         }
     });
     QObject::connect(&runner, &WatchRunner::ruleChanged, &loop, [&](const WatchRuleEvent &e) {

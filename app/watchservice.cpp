@@ -109,6 +109,7 @@ WatchService::WatchService(WatchRunner &runner, Options options, QObject *parent
     });
     connect(&m_runner, &WatchRunner::linkStateChanged, this, &WatchService::onLinkState);
     connect(&m_runner, &WatchRunner::ruleChanged, this, &WatchService::onRule);
+    connect(&m_runner, &WatchRunner::logDroppedRows, this, [this](int watch, quint64 rows) { m_metrics.setLogDroppedRows(watch, rows); });
     if (m_options.metrics) {
         m_endpoint = std::make_unique<MetricsEndpoint>(m_metrics.registry());
         m_endpoint->setBeforeScrape([this] { m_metrics.refreshProcess(); });

@@ -31,12 +31,17 @@ WatchRunner::WatchRunner(const SessionWatches &watches, QObject *parent)
     m_logThread.setObjectName(QStringLiteral("mbscope watch log"));
     m_writer->moveToThread(&m_logThread);
     connect(&m_logThread, &QThread::finished, m_writer, &QObject::deleteLater);
-    connect(m_fleet, &WatchFleet::started, m_writer, &WatchLogWriter::watchesStarted);
-    connect(m_fleet, &WatchFleet::sampled, m_writer, &WatchLogWriter::append);
-    connect(m_fleet, &WatchFleet::ruleChanged, m_writer, &WatchLogWriter::appendEvent);
-    connect(m_fleet, &WatchFleet::stopped, m_writer, &WatchLogWriter::watchesStopped);
+    // Direct: called in the fleet's thread, they queue for the log's thread in a bounded queue
+    // of their own (WatchLogQueue), not in its event queue, which a slow disk would let grow.
+    connect(m_fleet, &WatchFleet::started, m_writer, &WatchLogWriter::offerStarted, Qt::DirectConnection);
+    connect(m_fleet, &WatchFleet::sampled, m_writer, &WatchLogWriter::offerSamples, Qt::DirectConnection);
+    connect(m_fleet, &WatchFleet::ruleChanged, m_writer, &WatchLogWriter::offerEvent, Qt::DirectConnection);
+    connect(m_fleet, &WatchFleet::stopped, m_writer, &WatchLogWriter::offerStopped, Qt::DirectConnection);
     connect(m_writer, &WatchLogWriter::opened, this, &WatchRunner::logOpened);
     connect(m_writer, &WatchLogWriter::failed, this, &WatchRunner::logFailed);
+    connect(m_writer, &WatchLogWriter::dropping, this, &WatchRunner::logDropping);
+    connect(m_writer, &WatchLogWriter::caughtUp, this, &WatchRunner::logCaughtUp);
+    connect(m_writer, &WatchLogWriter::droppedRows, this, &WatchRunner::logDroppedRows);
     connect(m_writer, &WatchLogWriter::closed, this, &WatchRunner::logClosed);
     connect(m_writer, &WatchLogWriter::drained, this, [this] {
         if (!m_running)

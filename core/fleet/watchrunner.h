@@ -30,6 +30,8 @@ class WatchLogWriter;
 // The CSV log (setLog) is written in a third thread (WatchLogWriter): samples and rule events go
 // there straight from the pollers' thread, never through the runner's, so a window that logs
 // does not wait on the disk. Its files open when the watches start and close before stopped().
+// What waits for the disk is bounded (WatchLogQueue): a disk slower than the polls costs rows,
+// said by logDropping() and logCaughtUp() and counted by logDroppedRows(), never memory.
 //
 //   WatchRunner runner(session.watches);
 //   connect(&runner, &WatchRunner::sampled, ...);
@@ -76,7 +78,13 @@ Q_SIGNALS:
     // with the files written and the rows lost.
     void logOpened(const QString &directory);
     void logFailed(const QString &message);
-    void logClosed(const QString &directory, const QStringList &files, quint64 lostRows);
+    // The log fell behind the polls and drops rows (said once), until it caught up (or closed):
+    // the rows dropped meanwhile; and the rows of a watch dropped since the watches started.
+    void logDropping(const QString &message);
+    void logCaughtUp(quint64 rows, const QString &message);
+    void logDroppedRows(int watch, quint64 rows);
+    // lostRows: every row not written; droppedRows: those of them dropped while it fell behind.
+    void logClosed(const QString &directory, const QStringList &files, quint64 lostRows, quint64 droppedRows);
     // After stop(): every link closed, the last samples handed out and the CSV files closed.
     void stopped();
 

@@ -47,6 +47,8 @@ WatchMetrics::WatchMetrics(const QString &version)
                                        QStringLiteral("Rules of the watch that fired."), kWatch))
     , m_ruleActive(m_registry.gauge(QStringLiteral("mbscope_watch_rule_active"), QStringLiteral("1 while a rule of the watch holds."),
                                     {QStringLiteral("watch"), QStringLiteral("rule"), QStringLiteral("point"), QStringLiteral("severity")}))
+    , m_logDropped(m_registry.counter(QStringLiteral("mbscope_watch_log_dropped_rows_total"),
+                                      QStringLiteral("CSV log rows dropped because the log could not keep up with the polls."), kWatch))
     , m_latency(m_registry.histogram(QStringLiteral("mbscope_watch_latency_seconds"),
                                      QStringLiteral("Request sent to answer complete, answered polls."), kWatch, latencyBuckets()))
     , m_lastSuccess(m_registry.gauge(QStringLiteral("mbscope_watch_last_success_timestamp_seconds"),
@@ -106,7 +108,7 @@ void WatchMetrics::reset(const SessionWatches &watches)
         const QStringList labels = watchLabels(i);
         m_up.set(labels, 0);
         for (MetricFamily *f : {&m_polls, &m_ok, &m_timeouts, &m_crcErrors, &m_linkErrors, &m_badAnswers, &m_overruns, &m_ruleFirings,
-                                &m_latency})
+                                &m_logDropped, &m_latency})
             f->touch(labels);
         const QStringList target{m_watches.watches.at(i).target};
         m_linkUp.touch(target);
@@ -180,6 +182,12 @@ void WatchMetrics::addRuleEvent(const WatchRuleEvent &event)
 {
     m_ruleActive.set({event.watchName, QString::number(event.rule), event.point, watchSeverityName(event.severity)},
                      event.fired ? 1 : 0);
+}
+
+void WatchMetrics::setLogDroppedRows(int watch, quint64 rows)
+{
+    if (watch >= 0 && watch < m_watches.watches.size())
+        m_logDropped.set(watchLabels(watch), double(rows));
 }
 
 } // namespace mbscope

@@ -32,6 +32,7 @@ namespace mbscope {
 //   mbscope_watch_overruns_total          counter    polls that started late (the link was busy)
 //   mbscope_watch_rule_firings_total      counter    rules of the watch that fired
 //   mbscope_watch_rule_active             gauge      1 while a rule holds (labels rule, point, severity)
+//   mbscope_watch_log_dropped_rows_total  counter    CSV rows dropped because the log fell behind the polls
 //   mbscope_watch_latency_seconds         histogram  request to answer, answered polls
 //   mbscope_watch_last_success_timestamp_seconds  gauge  the last good answer
 //   mbscope_link_up                       gauge      1 while the link is open
@@ -54,6 +55,8 @@ public:
     void setCounters(const QList<WatchCounters> &counters);
     void setLinkState(const WatchLinkState &state);
     void addRuleEvent(const WatchRuleEvent &event);
+    // The CSV rows of a watch (index) dropped since the watches started (WatchRunner::logDroppedRows).
+    void setLogDroppedRows(int watch, quint64 rows);
     // Before a scrape: the process's memory and CPU.
     void refreshProcess() { m_process.update(); }
 
@@ -83,6 +86,7 @@ private:
     MetricFamily &m_overruns;
     MetricFamily &m_ruleFirings;
     MetricFamily &m_ruleActive;
+    MetricFamily &m_logDropped;
     MetricFamily &m_latency;
     MetricFamily &m_lastSuccess;
     MetricFamily &m_linkUp;

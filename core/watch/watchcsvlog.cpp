@@ -206,6 +206,19 @@ bool WatchCsvLog::appendEvent(const WatchRuleEvent &event, QString *error)
     return maybeFlush(event.timeMs, error);
 }
 
+bool WatchCsvLog::appendNote(int watch, qint64 timeMs, const QString &event, quint64 rows, const QString &message, QString *error)
+{
+    if (watch < 0 || watch >= int(m_logs.size()))
+        return true;
+    File &f = m_logs[std::size_t(watch)];
+    const QStringList row{isoTime(timeMs), csvField(event), watchSeverityName(WatchSeverity::Warning), QString(), QString(),
+                          QString::number(rows), csvField(message), QString()};
+    const QByteArray line = (row.join(QLatin1Char(',')) + QLatin1Char('\n')).toUtf8();
+    if (!writeRow(f.events, fileStem(f.watch.name) + QStringLiteral("-events"), eventHeader(), timeMs, line, error))
+        return false;
+    return maybeFlush(timeMs, error);
+}
+
 bool WatchCsvLog::maybeFlush(qint64 timeMs, QString *error)
 {
     if (timeMs - m_lastFlushMs < 1000)

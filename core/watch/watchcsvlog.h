@@ -24,7 +24,8 @@ namespace mbscope {
 // Rule events go to a second file per watch, opened at the watch's first event and rolled the
 // same way ("gamma-events-20261126-061500.csv"): time, event (fired / cleared), severity, rule
 // (its index in the watch), point, value, message, fired (the rule's firings so far). A row per
-// event in either mode. A folder removed while logging is made again at the next file.
+// event in either mode; the log's own rows (appendNote: rows dropped when it fell behind) there
+// too. A folder removed while logging is made again at the next file.
 //
 // A row that cannot be written (disk full, the folder gone and not to be made again) is counted
 // in lostRows(), as are the rows in the OS buffer when a flush fails: nothing is lost unsaid.
@@ -44,6 +45,9 @@ public:
                 const QString &errorText = {}, QString *error = nullptr);
     // A rule event of watch index (event.watch); false with *error as append().
     bool appendEvent(const WatchRuleEvent &event, QString *error = nullptr);
+    // A row of the log's own in the events file of watch index: event ("overflow", "dropped"),
+    // severity warning, no rule or point, value rows; false with *error as append().
+    bool appendNote(int watch, qint64 timeMs, const QString &event, quint64 rows, const QString &message, QString *error = nullptr);
     // Hands the buffered rows to the OS; false with *error when it refuses them (disk full).
     bool flush(QString *error = nullptr);
     void close();

@@ -111,7 +111,10 @@ QList<WatchRuleEvent> WatchRuleEvaluator::evaluate(const QList<WatchPointValue> 
         event.fired = fire;
         event.severity = rule.severity;
         event.colour = rule.colour;
-        event.point = value->name.isEmpty() ? QStringLiteral("0x%1").arg(value->address, 4, 16, QLatin1Char('0')) : value->name;
+        // An address no point names, as the watch's lines and CSV columns show it ("0x01AF").
+        event.point = value->name.isEmpty()
+            ? QStringLiteral("0x") + QString::number(value->address, 16).rightJustified(4, QLatin1Char('0')).toUpper()
+            : value->name;
         event.value = value->value;
         event.message = message(rule, event.point, value->unit);
         event.timeMs = timeMs;

@@ -15,7 +15,7 @@ struct WatchRuleEvent {
     bool fired = true;           // false: cleared
     WatchSeverity severity = WatchSeverity::Warning;
     QString colour;              // the rule's colour, empty: the severity's
-    QString point;               // the point's name, or its address as hex for unnamed addresses
+    QString point;               // the point's name, or for an address no point names "0x01AF" (upper-case hex, as elsewhere)
     double value = 0;            // the value that fired or cleared it
     QString message;             // the rule's message, or one made from the rule
     qint64 timeMs = 0;           // milliseconds since the epoch, UTC

@@ -8226,6 +8226,18 @@ Klik kanan untuk mengganti format</translation>
         <source>The CSV log cannot be written: %1</source>
         <translation>Log CSV tidak dapat ditulis: %1</translation>
     </message>
+    <message>
+        <location line="+3"/>
+        <source>The CSV log cannot keep up with the polls: rows are dropped until it catches up</source>
+        <translation>Log CSV tidak dapat mengikuti laju polling: baris dibuang sampai log menyusul</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>The CSV log caught up: %n row(s) were dropped</source>
+        <translation>
+            <numerusform>Log CSV sudah menyusul: %n baris dibuang</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>mbscope::WatchLogDialog</name>

@@ -79,6 +79,7 @@ private Q_SLOTS:
     void mqttWritesRefusedWithoutTheOption();
     void mqttWritesReachTheSimulator();
     void hangupReloadsTermStopsCleanly();
+    void ruleActiveGauge();
     void guideExamples();
     void refusedOptions_data();
     void refusedOptions();
@@ -381,6 +382,40 @@ void TestCliWatchService::hangupReloadsTermStopsCleanly()
     QTRY_VERIFY_WITH_TIMEOUT(metricValue(httpGet(url).body, QStringLiteral("mbscope_watch_up"), {{QStringLiteral("watch"), QStringLiteral("second")}}) == 1.0,
                              10000);
 
+    QCOMPARE(watch.stop(SIGTERM), 0);
+}
+
+// mbscope_watch_rule_active against the simulator: a rule that holds reads 1 (with the rule, its
+// point and severity as labels), and 0 once it cleared, the register written past it with
+// mbscope write while the service polls; the rule's firings are counted beside it.
+void TestCliWatchService::ruleActiveGauge()
+{
+    QByteArray json = R"({"format": "mbscope-session", "version": 2, "name": "rules",
+  "watches": [{"name": "plant", "target": "TARGET", "unit": 1, "function": 3, "address": 0, "quantity": 4, "intervalMs": 100,
+               "points": [{"address": 1, "name": "setpoint", "writable": true}],
+               "rules": [{"point": "setpoint", "below": 2000, "severity": "alarm", "message": "setpoint low"}]}]})";
+    json.replace("TARGET", m_simulator.url().toUtf8());
+    QFile f(m_session);
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(json);
+    f.close();
+    ChildProcess watch;
+    QVERIFY(startWatch(watch, {QStringLiteral("--metrics"), QStringLiteral("127.0.0.1:0")}));
+    const QString url = metricsUrlOf(watch);
+    QVERIFY2(!url.isEmpty(), watch.output().constData());
+    const QMap<QString, QString> setpointRule{{QStringLiteral("watch"), QStringLiteral("plant")}, {QStringLiteral("rule"), QStringLiteral("0")},
+                                              {QStringLiteral("point"), QStringLiteral("setpoint")}, {QStringLiteral("severity"), QStringLiteral("alarm")}};
+    // 1003 < 2000: the rule holds from the first poll.
+    QTRY_VERIFY_WITH_TIMEOUT(metricValue(httpGet(url).body, QStringLiteral("mbscope_watch_rule_active"), setpointRule) == 1.0, 20000);
+    QCOMPARE(metricValue(httpGet(url).body, QStringLiteral("mbscope_watch_rule_firings_total")).value_or(-1), 1.0);
+    QVERIFY2(watch.waitForOutput("error: watch 'plant': setpoint low fired (setpoint = 1003)", 10000), watch.output().constData());
+
+    const CliResult w = runMbscope({QStringLiteral("write"), QStringLiteral("--target"), m_simulator.url(), QStringLiteral("--address"),
+                                    QStringLiteral("1"), QStringLiteral("--registers"), QStringLiteral("2500"), QStringLiteral("--single")});
+    QVERIFY2(w.exitCode == 0, w.describe().constData());
+    QTRY_VERIFY_WITH_TIMEOUT(metricValue(httpGet(url).body, QStringLiteral("mbscope_watch_rule_active"), setpointRule) == 0.0, 20000);
+    QVERIFY2(watch.waitForOutput("info: watch 'plant': setpoint low cleared (setpoint = 2500)", 10000), watch.output().constData());
+    QCOMPARE(metricValue(httpGet(url).body, QStringLiteral("mbscope_watch_rule_firings_total")).value_or(-1), 1.0);
     QCOMPARE(watch.stop(SIGTERM), 0);
 }
 

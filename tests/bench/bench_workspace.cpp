@@ -9,7 +9,7 @@
 // "Log values to CSV" does: where the rows are written shows in the GUI thread's stall.
 // With --soak-polls N (720000: an hour of 20 watches at 100 ms) the same watches are then polled
 // at interval 0 until N polls have ended, the runner alone (baseline) and the window (logging as
-// --csv says): resident memory at the start, every 10 % and at the end, side by side.
+// --csv says): resident memory at the start, every 10 %, at the end and its peak, side by side.
 //
 //   build/tests/bench/bench_workspace [--seconds 30] [--watches 20] [--registers 125]
 //                                     [--interval 100] [--links 4] [--csv] [--soak-polls 720000]
@@ -148,10 +148,12 @@ SessionWatches makeWatches(const Options &o, const QList<LinkUrl> &urls)
 }
 
 // Runs the event loop until polls() reaches total, sampling resident memory at the start and at
-// every tenth of the way; the samples in KiB (11 of them) and the seconds it took.
+// every tenth of the way; the samples in KiB (11 of them, then the most seen at any 20 ms tick)
+// and the seconds it took.
 QList<qint64> soak(quint64 total, const std::function<quint64()> &polls, double *seconds)
 {
     QList<qint64> rss{residentKiB()};
+    qint64 peak = rss.first();
     const quint64 start = polls();
     QElapsedTimer wall;
     wall.start();
@@ -160,6 +162,7 @@ QList<qint64> soak(quint64 total, const std::function<quint64()> &polls, double 
     probe.setInterval(20);
     QObject::connect(&probe, &QTimer::timeout, [&] {
         const quint64 done = polls() - start;
+        peak = qMax(peak, residentKiB());
         while (rss.size() < 11 && done >= total * quint64(rss.size()) / 10)
             rss.append(residentKiB());
         if (rss.size() == 11)
@@ -168,6 +171,7 @@ QList<qint64> soak(quint64 total, const std::function<quint64()> &polls, double 
     probe.start();
     loop.exec();
     *seconds = double(wall.nsecsElapsed()) / 1e9;
+    rss.append(qMax(peak, rss.constLast()));
     return rss;
 }
 
@@ -329,8 +333,9 @@ int main(int argc, char *argv[])
         for (int i = 0; i < 11; ++i)
             std::printf("%-10llu %22.1f %22.1f\n", static_cast<unsigned long long>(o.soakPolls * quint64(i) / 10),
                         double(baselineRss.value(i)) / 1024, double(windowRss.value(i)) / 1024);
-        std::printf("%-10s %22.1f %22.1f\n", "growth", double(baselineRss.constLast() - baselineRss.constFirst()) / 1024,
-                    double(windowRss.constLast() - windowRss.constFirst()) / 1024);
+        std::printf("%-10s %22.1f %22.1f\n", "peak", double(baselineRss.value(11)) / 1024, double(windowRss.value(11)) / 1024);
+        std::printf("%-10s %22.1f %22.1f\n", "growth", double(baselineRss.value(10) - baselineRss.constFirst()) / 1024,
+                    double(windowRss.value(10) - windowRss.constFirst()) / 1024);
         std::printf("%-10s %22.0f %22.0f\n", "polls/s", double(o.soakPolls) / baselineSeconds, double(o.soakPolls) / windowSeconds);
         if (o.csv) {
             qint64 bytes = 0;

@@ -9,6 +9,8 @@
 #include <QtGui/QAction>
 #include <QtWidgets/QWidget>
 
+#include <climits>
+
 namespace mbscope {
 
 WatchLogControl::WatchLogControl(QWidget *parent)
@@ -119,6 +121,12 @@ void WatchLogControl::start(WatchRunner *runner)
         });
         connect(runner, &WatchRunner::logFailed, this, [this](const QString &error) {
             Q_EMIT message(tr("The CSV log cannot be written: %1").arg(error));
+        });
+        connect(runner, &WatchRunner::logDropping, this, [this](const QString &) {
+            Q_EMIT message(tr("The CSV log cannot keep up with the polls: rows are dropped until it catches up"));
+        });
+        connect(runner, &WatchRunner::logCaughtUp, this, [this](quint64 rows, const QString &) {
+            Q_EMIT message(tr("The CSV log caught up: %n row(s) were dropped", nullptr, int(qMin<quint64>(rows, INT_MAX))));
         });
         connect(runner, &WatchRunner::logClosed, this, [this](const QString &directory, const QStringList &files, quint64 lost) {
             m_open = false;

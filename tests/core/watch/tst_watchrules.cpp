@@ -1,6 +1,7 @@
 // WatchRuleEvaluator: each condition, forPolls consecutive polls before a rule fires, clearing on
 // the first poll it does not hold, failed polls neither advancing nor breaking a run, counts,
 // messages made from the rule, and the active rule of a value.
+#include "watch/watchcsvlog.h"
 #include "watch/watchruleevaluator.h"
 
 #include <QtTest/QtTest>
@@ -48,6 +49,7 @@ private Q_SLOTS:
     void forPollsConsecutive();
     void failedPollKeepsRun();
     void addressAsPoint();
+    void addressNamedInUpperCase();
     void messages();
 };
 
@@ -148,6 +150,31 @@ void TestWatchRules::addressAsPoint()
     QCOMPARE(fired.size(), 1);
     QCOMPARE(fired.first().point, QStringLiteral("0x0087"));
     QCOMPARE(fired.first().message, QStringLiteral("0x0087 equal to 0"));
+}
+
+// An unnamed address with hex letters is named as the watch's lines and CSV columns name it,
+// "0x01AF" (failed before: "0x01af"), whatever case the rule was written in.
+void TestWatchRules::addressNamedInUpperCase()
+{
+    WatchRule r;
+    r.point = QStringLiteral("0x01af");
+    r.condition = WatchRule::Condition::Above;
+    r.high = 5;
+    WatchDefinition w;
+    w.name = QStringLiteral("drive");
+    w.address = 0x01A0;
+    w.quantity = 16;
+    w.rules.append(r);
+    WatchPointValue v;
+    v.address = 0x01AF;
+    v.value = 9;
+    v.raw = 9;
+    WatchRuleEvaluator e(w);
+    const QList<WatchRuleEvent> fired = e.evaluate({v});
+    QCOMPARE(fired.size(), 1);
+    QCOMPARE(fired.first().point, QStringLiteral("0x01AF"));
+    QCOMPARE(fired.first().message, QStringLiteral("0x01AF above 5"));
+    QVERIFY(WatchCsvLog::columns(w).contains(fired.first().point));
 }
 
 void TestWatchRules::messages()
