@@ -321,6 +321,10 @@ void TestScanDialog::timingOfAFoundUnit()
         QCOMPARE(bar->maximum(), 1 + 2 * 5 + 8 + 3); // first answer, 2 gaps x 5, largest read, 3 clients (rtu-tcp: no pipelining)
         values.append(bar->value());
         texts.append(status->text());
+        // The dialog as it runs, for a look (MBSCOPE_TIMING_PROGRESS_SCREENSHOT=file.png).
+        if (const QString shot = qEnvironmentVariable("MBSCOPE_TIMING_PROGRESS_SCREENSHOT");
+            !shot.isEmpty() && bar->value() == 8)
+            timing->grab().save(shot);
     });
     QTest::mouseClick(timing->findChild<QPushButton *>(QStringLiteral("timingStart")), Qt::LeftButton);
     QVERIFY(!finished.isEmpty() || finished.wait(60000));
