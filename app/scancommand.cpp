@@ -207,7 +207,7 @@ int runScan(const QStringList &arguments)
     const QCommandLineOption gapOpt(QStringLiteral("gap"),
                                     QStringLiteral("Quiet time between one answer (or timeout) and the next request (default 20ms; 0 with --map)."),
                                     QStringLiteral("TIME"));
-    const QCommandLineOption maxTimeOpt(QStringLiteral("max-time"), QStringLiteral("Stop the scan after this long (default 10min)."),
+    const QCommandLineOption maxTimeOpt(QStringLiteral("max-time"), QStringLiteral("Stop the scan, of any kind, after this long (default 10min): a request that would end after it is not sent."),
                                         QStringLiteral("TIME"));
     const QCommandLineOption allOpt(QStringLiteral("all"), QStringLiteral("One line per id (by default ids that found nothing are grouped in runs of the same result)."));
     const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the result as JSON."));
@@ -307,6 +307,7 @@ int runScan(const QStringList &arguments)
         settings.address = quint16(address);
         settings.maxClients = int(clients);
         settings.timeoutMs = parser.isSet(timeoutOpt) ? int(timeoutMs) : 1000;
+        settings.maxDurationMs = common.maxTimeMs;
         return runTimingScan(settings, common.json, out, err);
     }
     if (parser.isSet(clientsOpt)) {

@@ -92,8 +92,12 @@ int runLineScan(const LineScanSettings &settings, bool asJson, QTextStream &out,
     InterruptWatcher interrupts;
     ProgressLine line;
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &LineScanner::stop);
+    QString lastTried; // the setting of the last trial: "19200 8E1 unit 1 silent"
+    QObject::connect(&scanner, &LineScanner::tried, &scanner, [&](const LineTrial &t) {
+        lastTried = QStringLiteral("%1 unit %2 %3").arg(t.settingText()).arg(t.unit).arg(QString::fromLatin1(unitProbeKindName(t.probe.kind)));
+    });
     QObject::connect(&scanner, &LineScanner::progressChanged, &scanner,
-                     [&](const ScanProgress &p) { line.show(ScanReport::progressText(QStringLiteral("settings"), p)); });
+                     [&](const ScanProgress &p) { line.show(ScanReport::progressText(QStringLiteral("trials"), p, lastTried)); });
     QElapsedTimer clock;
     clock.start();
     const std::optional<QList<LineTrial>> trials = scanner.run(settings);

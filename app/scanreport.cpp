@@ -79,11 +79,13 @@ QString ScanReport::durationText(qint64 ms)
     return QStringLiteral("%1m %2s").arg(ms / 60000).arg((ms / 1000) % 60, 2, 10, QLatin1Char('0'));
 }
 
-QString ScanReport::progressText(const QString &what, const ScanProgress &p)
+QString ScanReport::progressText(const QString &what, const ScanProgress &p, const QString &detail)
 {
     QString text = QStringLiteral("%1 %2/%3").arg(what).arg(p.done).arg(p.total);
     if (what == QLatin1String("ids"))
         text += QStringLiteral("  found %1").arg(p.found);
+    if (!detail.isEmpty())
+        text += QStringLiteral("  ") + detail;
     text += QStringLiteral("  %1, about %2 left  (Ctrl-C stops)").arg(durationText(p.elapsedMs), durationText(p.remainingMs));
     return text;
 }

@@ -23,8 +23,9 @@ public:
     [[nodiscard]] static QJsonObject mapJson(const RegisterMap &map, ScanEnd end, qint64 elapsedMs);
     // "1m 05s", "12.3 s", "850 ms"
     [[nodiscard]] static QString durationText(qint64 ms);
-    // The live line: "ids 37/247  found 2  12 s, about 48 s left  (Ctrl-C stops)"
-    [[nodiscard]] static QString progressText(const QString &what, const ScanProgress &progress);
+    // The live line: "ids 37/247  found 2  12 s, about 48 s left  (Ctrl-C stops)"; detail (what is
+    // being done: "gap 50 ms") follows the counts.
+    [[nodiscard]] static QString progressText(const QString &what, const ScanProgress &progress, const QString &detail = {});
 };
 
 } // namespace mbscope::app

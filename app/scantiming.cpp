@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "interruptwatcher.h"
 #include "progressline.h"
+#include "scanreport.h"
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
@@ -13,7 +14,7 @@ namespace mbscope::app {
 
 namespace {
 
-QString text(const TimingScanSettings &s, const TimingReport &r, bool stopped)
+QString text(const TimingScanSettings &s, const TimingReport &r, ScanEnd end)
 {
     QString t = QStringLiteral("TIMING %1 unit %2\n\n").arg(s.url.toString()).arg(s.unit);
     t += QStringLiteral("first answer after connecting   %1 ms (%2 failed before it)\n").arg(r.firstAnswerMs).arg(r.warmupFailures);
@@ -43,8 +44,11 @@ QString text(const TimingScanSettings &s, const TimingReport &r, bool stopped)
                                             .arg(r.clientsTried)
                       : r.clientsServed == s.maxClients ? QStringLiteral(" (all tried; there may be room for more)")
                                                         : QStringLiteral(" (client %1 was not served)").arg(r.clientsTried));
-    if (stopped)
+    if (end == ScanEnd::Stopped)
         t += QStringLiteral("\nstopped (Ctrl-C): later measurements were not made\n");
+    else if (end == ScanEnd::TimeLimit)
+        t += QStringLiteral("\ntime limit (--max-time %1) reached: later measurements were not made\n")
+                 .arg(ScanReport::durationText(s.maxDurationMs));
     const int gap = r.recommendedGapMs();
     const int timeout = r.recommendedTimeoutMs();
     t += QStringLiteral("\nSettings (twice the shortest clean gap, three times the slowest answer):\n");
@@ -57,7 +61,7 @@ QString text(const TimingScanSettings &s, const TimingReport &r, bool stopped)
     return t;
 }
 
-QJsonObject json(const TimingScanSettings &s, const TimingReport &r, bool stopped)
+QJsonObject json(const TimingScanSettings &s, const TimingReport &r, ScanEnd end)
 {
     QJsonArray gaps;
     for (const TimingReport::GapTrial &g : r.gaps)
@@ -81,7 +85,8 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, bool stoppe
         {QStringLiteral("clients_extra"), r.clientsTried == 0 || r.clientsServed == r.clientsTried
                                               ? QStringLiteral("not reached")
                                               : (r.oldestDropped ? QStringLiteral("drop_oldest") : QStringLiteral("refuse"))},
-        {QStringLiteral("stopped"), stopped},
+        {QStringLiteral("stopped"), end == ScanEnd::Stopped},
+        {QStringLiteral("end"), QString::fromLatin1(scanEndName(end))},
         {QStringLiteral("recommended"),
          QJsonObject{{QStringLiteral("gap_ms"), r.recommendedGapMs()},
                      {QStringLiteral("timeout_ms"), r.recommendedTimeoutMs()},
@@ -103,22 +108,31 @@ int runTimingScan(const TimingScanSettings &settings, bool asJson, QTextStream &
     InterruptWatcher interrupts;
     ProgressLine line;
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &TimingScanner::stop);
-    QObject::connect(&scanner, &TimingScanner::step, &scanner,
-                     [&](const QString &what) { line.show(QStringLiteral("timing: %1  (Ctrl-C stops)").arg(what)); });
+    QString part; // what is being measured: "gap 50 ms"
+    QObject::connect(&scanner, &TimingScanner::step, &scanner, [&](const QString &what) { part = what; });
+    QObject::connect(&scanner, &TimingScanner::progressChanged, &scanner,
+                     [&](const ScanProgress &p) { line.show(ScanReport::progressText(QStringLiteral("steps"), p, part)); });
     const std::optional<TimingReport> report = scanner.run(settings);
     line.clear();
     if (!report)
         return ExitUsage;
     if (report->firstAnswerMs < 0) {
-        err << "mbscope scan: unit " << settings.unit << " at " << settings.url.toString() << " never answered within "
-            << settings.warmupLimitMs << " ms: nothing to time\n";
+        if (scanner.end() == ScanEnd::TimeLimit)
+            err << "mbscope scan: the time limit (" << ScanReport::durationText(settings.maxDurationMs) << ") came before unit "
+                << settings.unit << " at " << settings.url.toString() << " answered: nothing to time\n";
+        else if (scanner.end() == ScanEnd::Stopped)
+            err << "mbscope scan: stopped before unit " << settings.unit << " at " << settings.url.toString()
+                << " answered: nothing to time\n";
+        else
+            err << "mbscope scan: unit " << settings.unit << " at " << settings.url.toString() << " never answered within "
+                << settings.warmupLimitMs << " ms: nothing to time\n";
         if (!asJson)
             return ExitFailure;
     }
     if (asJson)
-        out << QJsonDocument(json(settings, *report, scanner.wasStopped())).toJson(QJsonDocument::Indented);
+        out << QJsonDocument(json(settings, *report, scanner.end())).toJson(QJsonDocument::Indented);
     else
-        out << text(settings, *report, scanner.wasStopped());
+        out << text(settings, *report, scanner.end());
     out.flush();
     return report->firstAnswerMs < 0 ? ExitFailure : ExitOk;
 }

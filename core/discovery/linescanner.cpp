@@ -70,7 +70,36 @@ bool LineScanner::mayContinue(int timeoutMs)
     return m_end == ScanEnd::Completed;
 }
 
-bool LineScanner::pass(const QList<quint8> &ids, QList<LineTrial> &out, int total)
+int LineScanner::timeoutAt(int baud) const
+{
+    // The request and its answer on the line at 11 bits a character (Serial Line V1.02, 2.5.1):
+    // 8 bytes out, 5 + the data back, ASCII twice as many characters and more.
+    const int data = m_settings.function <= 2 ? (m_settings.quantity + 7) / 8 : 2 * m_settings.quantity;
+    const int characters = (8 + 5 + data) * (m_settings.url.framing() == Framing::Ascii ? 3 : 1);
+    return m_settings.timeoutMs + int(characters * 11 * 1000LL / baud);
+}
+
+void LineScanner::skip(int trials, int timeoutMs)
+{
+    m_done += trials;
+    m_plannedLeftMs = qMax<qint64>(0, m_plannedLeftMs - qint64(trials) * timeoutMs);
+}
+
+ScanProgress LineScanner::progress() const
+{
+    ScanProgress p;
+    p.total = m_total;
+    p.done = qMin(m_done, m_total);
+    p.found = m_found;
+    p.elapsedMs = m_clock.isValid() ? m_clock.elapsed() : 0;
+    // Before the first trial every one is taken to wait its whole timeout (a wrong setting is
+    // silent); then the timeouts left are scaled by what the trials so far took of theirs.
+    const double ratio = m_plannedRunMs > 0 ? double(p.elapsedMs) / double(m_plannedRunMs) : 1.0;
+    p.remainingMs = qMin(qint64(double(m_plannedLeftMs) * ratio), qMax<qint64>(0, m_settings.maxDurationMs - p.elapsedMs));
+    return p;
+}
+
+bool LineScanner::pass(const QList<quint8> &ids, QList<LineTrial> &out)
 {
     const QByteArray pdu = UnitScanner::readPdu(m_settings.function, m_settings.address, m_settings.quantity);
     for (const int baud : m_settings.bauds) {
@@ -81,12 +110,9 @@ bool LineScanner::pass(const QList<quint8> &ids, QList<LineTrial> &out, int tota
                 url.serial.parity = parity;
                 url.serial.stopBits = stop;
                 m_channel->setTarget(url);
-                // The request and its answer on the line at 11 bits a character (Serial Line V1.02,
-                // 2.5.1): 8 bytes out, 5 + the data back, ASCII twice as many characters and more.
-                const int data = m_settings.function <= 2 ? (m_settings.quantity + 7) / 8 : 2 * m_settings.quantity;
-                const int characters = (8 + 5 + data) * (url.framing() == Framing::Ascii ? 3 : 1);
-                const int timeoutMs = m_settings.timeoutMs + int(characters * 11 * 1000LL / baud);
-                for (const quint8 unit : ids) {
+                const int timeoutMs = timeoutAt(baud);
+                for (qsizetype i = 0; i < ids.size(); ++i) {
+                    const quint8 unit = ids.at(i);
                     if (!mayContinue(timeoutMs))
                         return false;
                     const std::optional<ProbeChannel::Answer> answer = m_channel->ask(unit, pdu, timeoutMs);
@@ -99,17 +125,13 @@ bool LineScanner::pass(const QList<quint8> &ids, QList<LineTrial> &out, int tota
                     trial.unit = unit;
                     trial.probe = UnitClassifier::classify(unit, answer->transaction, url.framing(), answer->bytesRead);
                     out.append(trial);
-                    ++m_done;
+                    m_found += trial.works() ? 1 : 0;
+                    m_plannedRunMs += timeoutMs;
+                    skip(1, timeoutMs);
                     Q_EMIT tried(trial);
-                    ScanProgress p;
-                    p.done = m_done;
-                    p.total = total;
-                    p.elapsedMs = m_clock.elapsed();
-                    p.remainingMs = qMin(p.elapsedMs * qMax(0, total - m_done) / qMax(1, m_done),
-                                         qMax<qint64>(0, m_settings.maxDurationMs - p.elapsedMs));
-                    for (const LineTrial &t : std::as_const(out))
-                        p.found += t.works() ? 1 : 0;
-                    Q_EMIT progressChanged(p);
+                    if (trial.works() && !m_settings.stopAtFirst)
+                        skip(int(ids.size() - i - 1), timeoutMs); // the next setting: this one is known to work
+                    Q_EMIT progressChanged(progress());
                     if (trial.probe.kind == UnitProbeKind::LinkError) {
                         m_end = ScanEnd::LinkError;
                         return false;
@@ -117,7 +139,7 @@ bool LineScanner::pass(const QList<quint8> &ids, QList<LineTrial> &out, int tota
                     if (trial.works()) {
                         if (m_settings.stopAtFirst)
                             return false;
-                        break; // the next setting: this one is known to work
+                        break;
                     }
                 }
             }
@@ -134,23 +156,35 @@ std::optional<QList<LineTrial>> LineScanner::run(const LineScanSettings &setting
     m_stopRequested = false;
     m_end = ScanEnd::Completed;
     m_done = 0;
-    m_clock.start();
-    QList<LineTrial> trials;
+    m_found = 0;
+    m_plannedRunMs = 0;
+    // The plan: every setting with every id given; without ids, 1 on every setting and then, in
+    // case nothing answers, 2-247 on every setting.
+    const qsizetype idsPerSetting = settings.units.isEmpty() ? 247 : settings.units.size();
+    qint64 perRound = 0;
+    for (const int baud : settings.bauds)
+        perRound += qint64(timeoutAt(baud)) * settings.parities.size() * settings.stopBits.size();
     const int combos = int(settings.bauds.size() * settings.parities.size() * settings.stopBits.size());
+    m_total = combos * int(idsPerSetting);
+    m_plannedLeftMs = perRound * idsPerSetting;
+    m_clock.start();
+    Q_EMIT progressChanged(progress());
+    QList<LineTrial> trials;
     if (!settings.units.isEmpty()) {
-        pass(settings.units, trials, combos * int(settings.units.size()));
-    } else if (pass({1}, trials, combos)) {
-        bool any = false;
-        for (const LineTrial &t : std::as_const(trials))
-            any = any || t.works();
-        if (!any) {
-            QList<quint8> rest;
-            for (int u = 2; u <= 247; ++u)
-                rest.append(quint8(u));
-            pass(rest, trials, combos * 247);
-        }
+        pass(settings.units, trials);
+    } else if (pass({1}, trials) && m_found == 0) {
+        QList<quint8> rest;
+        for (int u = 2; u <= 247; ++u)
+            rest.append(quint8(u));
+        pass(rest, trials);
     }
     m_channel->closeLink();
+    // Completed: what was not asked was not needed (a setting answered, or --first).
+    if (m_end == ScanEnd::Completed)
+        skip(m_total - m_done, 0);
+    ScanProgress last = progress();
+    last.remainingMs = 0;
+    Q_EMIT progressChanged(last);
     return trials;
 }
 

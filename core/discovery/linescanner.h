@@ -66,6 +66,10 @@ public:
     }
     [[nodiscard]] ScanEnd end() const { return m_end; }
     [[nodiscard]] ProbeChannel *channel() { return m_channel; }
+    // Trials done of the plan (every setting with every id; without ids, 1 and then 2-247 on
+    // each: trials not needed, as the ids after one that answered, count as done), and the time
+    // left: the plan's timeouts left, scaled by what the trials so far took of theirs.
+    [[nodiscard]] ScanProgress progress() const;
 
 Q_SIGNALS:
     void progressChanged(const mbscope::ScanProgress &progress);
@@ -74,7 +78,11 @@ Q_SIGNALS:
 private:
     [[nodiscard]] bool mayContinue(int timeoutMs);
     // Every setting with the ids given; false when the scan must end.
-    bool pass(const QList<quint8> &ids, QList<LineTrial> &out, int total);
+    bool pass(const QList<quint8> &ids, QList<LineTrial> &out);
+    // A trial's timeout at a baud rate: the settings' timeout and the time on the line.
+    [[nodiscard]] int timeoutAt(int baud) const;
+    // Trials left out of the plan (not needed): counted as done.
+    void skip(int trials, int timeoutMs);
 
     ProbeChannel *m_channel;
     LineScanSettings m_settings;
@@ -82,6 +90,10 @@ private:
     bool m_stopRequested = false;
     ScanEnd m_end = ScanEnd::Completed;
     int m_done = 0;
+    int m_total = 0;
+    int m_found = 0;
+    qint64 m_plannedLeftMs = 0; // the timeouts of the trials not done yet
+    qint64 m_plannedRunMs = 0;  // the timeouts of the trials asked so far
 };
 
 } // namespace mbscope

@@ -35,6 +35,7 @@ public:
     void setLinkFactory(const LinkFactory &factory);
     [[nodiscard]] const LinkUrl &target() const { return m_url; }
     void setGapMs(int gapMs) { m_gapMs = gapMs; }
+    [[nodiscard]] int gapMs() const { return m_gapMs; }
 
     // Sends pdu to unit after the gap; answered() follows once. One at a time: a call while a
     // probe is in flight is refused (false).

@@ -39,6 +39,8 @@ QString TimingScanSettings::problem() const
         return QStringLiteral("function %1 is not a read: 01, 02, 03 or 04").arg(function);
     if (timeoutMs < 1 || requestsPerGap < 1 || pipelineDepth < 1 || maxClients < 1 || gapsMs.isEmpty())
         return QStringLiteral("the timeout, the counts and the gaps must be positive");
+    if (maxDurationMs < 1)
+        return QStringLiteral("the time limit must be positive");
     return {};
 }
 
@@ -69,43 +71,170 @@ QByteArray TimingScanner::readPdu(int quantity) const
     return UnitScanner::readPdu(m_settings.function, m_settings.address, quint16(quantity));
 }
 
+void TimingScanner::stop()
+{
+    m_stopRequested = true;
+    if (m_report && m_end == ScanEnd::Completed)
+        m_end = ScanEnd::Stopped;
+    m_channel->cancel();
+    Q_EMIT stopping();
+}
+
+bool TimingScanner::mayContinue(qint64 nextMs)
+{
+    if (m_end != ScanEnd::Completed)
+        return false;
+    if (m_stopRequested)
+        m_end = ScanEnd::Stopped;
+    else if (m_clock.elapsed() + nextMs > m_settings.maxDurationMs)
+        m_end = ScanEnd::TimeLimit;
+    return m_end == ScanEnd::Completed;
+}
+
+std::optional<ProbeChannel::Answer> TimingScanner::ask(int quantity, int timeoutMs, bool measured)
+{
+    QElapsedTimer took;
+    took.start();
+    std::optional<ProbeChannel::Answer> answer = m_channel->ask(m_settings.unit, readPdu(quantity), timeoutMs);
+    if (answer && measured) {
+        // What the step took beyond the gap the channel waited before sending.
+        m_answeredMs += qMax<qint64>(0, took.elapsed() - m_channel->gapMs());
+        ++m_answered;
+    }
+    return answer;
+}
+
+qint64 TimingScanner::answerMs() const
+{
+    return m_answered > 0 ? m_answeredMs / m_answered : m_settings.timeoutMs;
+}
+
+qint64 TimingScanner::stepCostMs(int index) const
+{
+    const qint64 answer = answerMs();
+    // The gap the later parts keep: while the gaps are tried and none had errors yet, the one
+    // they would give if every gap left is clean too (the common case); then the one measured.
+    qint64 gap = 0;
+    qint64 settle = 0;
+    if (m_report) {
+        bool errors = false;
+        for (const TimingReport::GapTrial &trial : m_report->gaps)
+            errors = errors || trial.failed > 0;
+        gap = m_done < m_partStart[Largest] && !errors ? 2 * qint64(*std::min_element(m_settings.gapsMs.cbegin(), m_settings.gapsMs.cend())) : qMax(0, m_report->recommendedGapMs());
+        settle = (m_report->warmupFailures > 0 ? m_report->firstAnswerMs : 0) + gap;
+    }
+    if (index < m_partStart[Gaps])
+        return 20 + answer; // the warm-up asks every 20 ms
+    if (index < m_partStart[Largest])
+        return m_settings.gapsMs.at((index - m_partStart[Gaps]) / m_settings.requestsPerGap) + answer;
+    if (index < m_partStart[Pipeline])
+        return gap + answer;
+    if (index < m_partStart[Clients])
+        return settle + answer;
+    // Client k: a new connection settles and is asked; from the second on, the oldest is asked again.
+    const int k = index - m_partStart[Clients] + 1;
+    return settle + answer + (k >= 2 ? qMax<qint64>(20, gap) + answer : 0);
+}
+
+ScanProgress TimingScanner::progress() const
+{
+    ScanProgress p;
+    p.total = m_partStart[PartCount];
+    p.done = qMin(m_done, p.total);
+    p.elapsedMs = m_clock.isValid() ? m_clock.elapsed() : 0;
+    qint64 left = 0;
+    for (int i = p.done; i < p.total; ++i)
+        left += stepCostMs(i);
+    p.remainingMs = qMin(left, qMax<qint64>(0, m_settings.maxDurationMs - p.elapsedMs));
+    return p;
+}
+
+void TimingScanner::beginPart(Part part, const QString &what)
+{
+    Q_EMIT step(what);
+    m_done = qMax(m_done, m_partStart[part]);
+    Q_EMIT progressChanged(progress());
+}
+
+void TimingScanner::stepDone()
+{
+    ++m_done;
+    Q_EMIT progressChanged(progress());
+}
+
+void TimingScanner::endPart(Part part)
+{
+    m_done = qMax(m_done, m_partStart[part + 1]);
+    Q_EMIT progressChanged(progress());
+}
+
 std::optional<TimingReport> TimingScanner::run(const TimingScanSettings &settings)
 {
     if (!settings.problem().isEmpty())
         return std::nullopt;
     m_settings = settings;
     m_stopRequested = false;
+    m_end = ScanEnd::Completed;
+    m_done = 0;
+    m_answeredMs = 0;
+    m_answered = 0;
     m_channel->setTarget(settings.url);
+    // The plan: one step for the first answer, every request of every gap, the largest read's
+    // first request and its bisection at worst (ceil(log2(spec maximum + 1)) more), the pipelined
+    // burst (MBAP links), every client (stream links).
+    const int specMax = settings.function <= 2 ? 2000 : 125; // V1.1b3, 6.1-6.4
+    int bisection = 0;
+    for (int span = specMax + 1; span > 1; span = (span + 1) / 2)
+        ++bisection;
+    const bool mbap = settings.url.framing() == Framing::Tcp || settings.url.framing() == Framing::Udp;
+    const bool stream = !settings.url.isSerial() && !settings.url.isDatagram();
+    const int counts[PartCount] = {1, int(settings.gapsMs.size()) * settings.requestsPerGap, 1 + bisection, mbap ? 1 : 0,
+                                   stream ? settings.maxClients : 0};
+    for (int i = 0; i < PartCount; ++i)
+        m_partStart[i + 1] = m_partStart[i] + counts[i];
     TimingReport report;
-    warmup(report);
-    if (report.firstAnswerMs < 0 || m_stopRequested)
-        return report;
-    gaps(report);
-    if (!m_stopRequested)
-        largestRead(report);
-    // The probe channel's connection would count among the clients: the rest opens its own.
+    m_report = &report;
+    m_clock.start();
+    warmup(report); // its start emits the first progress, at 0
+    if (report.firstAnswerMs >= 0) {
+        if (m_end == ScanEnd::Completed)
+            gaps(report);
+        if (m_end == ScanEnd::Completed)
+            largestRead(report);
+        // The probe channel's connection would count among the clients: the rest opens its own.
+        m_channel->closeLink();
+        if (m_end == ScanEnd::Completed)
+            pipelining(report);
+        if (m_end == ScanEnd::Completed)
+            clients(report);
+    }
     m_channel->closeLink();
-    if (!m_stopRequested)
-        pipelining(report);
-    if (!m_stopRequested)
-        clients(report);
+    ScanProgress last = progress();
+    last.remainingMs = 0; // ended: nothing is left, whatever was not asked
+    m_report = nullptr;
+    Q_EMIT progressChanged(last);
     return report;
 }
 
 void TimingScanner::warmup(TimingReport &report)
 {
-    Q_EMIT step(QStringLiteral("first answer after connecting"));
+    beginPart(Warmup, QStringLiteral("first answer after connecting"));
     m_channel->closeLink();
     m_channel->setGapMs(20);
+    const int timeoutMs = qMin(m_settings.timeoutMs, 500);
     QElapsedTimer clock;
     clock.start();
-    while (clock.elapsed() < m_settings.warmupLimitMs && !m_stopRequested) {
-        const std::optional<ProbeChannel::Answer> a = m_channel->ask(m_settings.unit, readPdu(1), qMin(m_settings.timeoutMs, 500));
+    while (clock.elapsed() < m_settings.warmupLimitMs && mayContinue(20 + timeoutMs)) {
+        const std::optional<ProbeChannel::Answer> a = ask(1, timeoutMs, false);
         if (!a)
             return;
         if (served(a->transaction)) {
             report.firstAnswerMs = clock.elapsed();
             report.maxLatencyUs = qMax(report.maxLatencyUs, a->transaction.latencyNs() / 1000);
+            // Until the gaps are measured, the estimate takes this answer's time for every one.
+            m_answeredMs += a->transaction.latencyNs() / 1'000'000;
+            ++m_answered;
+            endPart(Warmup);
             return;
         }
         ++report.warmupFailures;
@@ -114,49 +243,67 @@ void TimingScanner::warmup(TimingReport &report)
 
 void TimingScanner::gaps(TimingReport &report)
 {
+    beginPart(Gaps, QStringLiteral("gap %1 ms").arg(m_settings.gapsMs.constFirst()));
     for (const int gap : m_settings.gapsMs) {
-        if (m_stopRequested)
+        if (!mayContinue(gap + m_settings.timeoutMs))
             return;
         Q_EMIT step(QStringLiteral("gap %1 ms").arg(gap));
         m_channel->setGapMs(gap);
         TimingReport::GapTrial trial;
         trial.gapMs = gap;
-        for (int i = 0; i < m_settings.requestsPerGap && !m_stopRequested; ++i) {
-            const std::optional<ProbeChannel::Answer> a = m_channel->ask(m_settings.unit, readPdu(1), m_settings.timeoutMs);
-            if (!a)
+        for (int i = 0; i < m_settings.requestsPerGap; ++i) {
+            const std::optional<ProbeChannel::Answer> a =
+                mayContinue(gap + m_settings.timeoutMs) ? ask(1, m_settings.timeoutMs) : std::nullopt;
+            if (!a) {
+                if (trial.ok + trial.failed > 0)
+                    report.gaps.append(trial); // measured, but not all of it: no clean gap from it
                 return;
+            }
             if (served(a->transaction)) {
                 ++trial.ok;
                 trial.maxLatencyUs = qMax(trial.maxLatencyUs, a->transaction.latencyNs() / 1000);
             } else {
                 ++trial.failed;
             }
+            stepDone();
         }
         report.gaps.append(trial);
         report.maxLatencyUs = qMax(report.maxLatencyUs, trial.maxLatencyUs);
         if (trial.failed > 0)
-            return; // errors started: shorter gaps are not asked
+            break; // errors started: shorter gaps are not asked
         report.shortestCleanGapMs = gap;
     }
+    endPart(Gaps);
 }
 
 void TimingScanner::largestRead(TimingReport &report)
 {
-    Q_EMIT step(QStringLiteral("largest read"));
-    m_channel->setGapMs(qMax(0, report.recommendedGapMs()));
+    beginPart(Largest, QStringLiteral("largest read"));
+    const int gap = qMax(0, report.recommendedGapMs());
+    m_channel->setGapMs(gap);
     const int specMax = m_settings.function <= 2 ? 2000 : 125; // V1.1b3, 6.1-6.4
-    const auto answers = [this](int q) {
-        const std::optional<ProbeChannel::Answer> a = m_channel->ask(m_settings.unit, readPdu(q), m_settings.timeoutMs);
-        return a && a->transaction.status == TransactionStatus::Ok;
+    // Whether quantity q is answered; nullopt when it was not asked (stopped, or out of time).
+    const auto answers = [&](int q) -> std::optional<bool> {
+        if (!mayContinue(gap + m_settings.timeoutMs))
+            return std::nullopt;
+        const std::optional<ProbeChannel::Answer> a = ask(q, m_settings.timeoutMs);
+        if (!a)
+            return std::nullopt;
+        stepDone();
+        return a->transaction.status == TransactionStatus::Ok;
     };
     int ok = 0;
     int refused = specMax + 1;
-    if (answers(specMax)) {
+    const std::optional<bool> whole = answers(specMax);
+    if (whole && *whole) {
         ok = specMax;
-    } else {
-        while (refused - ok > 1 && !m_stopRequested) {
+    } else if (whole) {
+        while (refused - ok > 1) {
             const int mid = (ok + refused) / 2;
-            if (answers(mid))
+            const std::optional<bool> answered = answers(mid);
+            if (!answered)
+                break;
+            if (*answered)
                 ok = mid;
             else
                 refused = mid;
@@ -164,15 +311,18 @@ void TimingScanner::largestRead(TimingReport &report)
     }
     report.largestQuantity = ok;
     report.largestAnswerPdu = ok == 0 ? 0 : 2 + (m_settings.function <= 2 ? (ok + 7) / 8 : 2 * ok);
+    if (m_end == ScanEnd::Completed)
+        endPart(Largest);
 }
 
 namespace {
 
 // Waits for the transactions of ids from one engine (or waitMs); the ones that came.
-QList<Transaction> collect(TransactionEngine &engine, const QSet<quint64> &ids, int waitMs)
+QList<Transaction> collect(TransactionEngine &engine, const QSet<quint64> &ids, int waitMs, TimingScanner *scanner)
 {
     QList<Transaction> out;
     QEventLoop loop;
+    QObject::connect(scanner, &TimingScanner::stopping, &loop, &QEventLoop::quit);
     QObject::connect(&engine, &TransactionEngine::transactionsFinished, &loop, [&](const QList<Transaction> &batch) {
         for (const Transaction &t : batch) {
             if (ids.contains(t.id) && t.status != TransactionStatus::Late)
@@ -188,9 +338,10 @@ QList<Transaction> collect(TransactionEngine &engine, const QSet<quint64> &ids, 
 
 // Opens the engine's link and waits until it is open, then settleMs more (the device's warm-up
 // and its gap: what a new connection must wait before it is answered at all).
-void openAndSettle(TransactionEngine &engine, int connectMs, qint64 settleMs)
+void openAndSettle(TransactionEngine &engine, int connectMs, qint64 settleMs, TimingScanner *scanner)
 {
     QEventLoop loop;
+    QObject::connect(scanner, &TimingScanner::stopping, &loop, &QEventLoop::quit);
     QObject::connect(&engine, &TransactionEngine::linkOpened, &loop, &QEventLoop::quit);
     QObject::connect(&engine, &TransactionEngine::linkMessage, &loop, &QEventLoop::quit);
     QTimer::singleShot(connectMs, &loop, &QEventLoop::quit);
@@ -198,6 +349,7 @@ void openAndSettle(TransactionEngine &engine, int connectMs, qint64 settleMs)
     loop.exec();
     if (settleMs > 0) {
         QEventLoop wait;
+        QObject::connect(scanner, &TimingScanner::stopping, &wait, &QEventLoop::quit);
         QTimer::singleShot(int(settleMs), &wait, &QEventLoop::quit);
         wait.exec();
     }
@@ -214,30 +366,37 @@ void TimingScanner::pipelining(TimingReport &report)
 {
     if (m_settings.url.framing() != Framing::Tcp && m_settings.url.framing() != Framing::Udp)
         return;
-    Q_EMIT step(QStringLiteral("pipelined requests"));
+    if (!mayContinue(settleMs(report) + m_settings.timeoutMs))
+        return;
+    beginPart(Pipeline, QStringLiteral("pipelined requests"));
     TransactionEngine engine;
     EngineOptions options;
     options.pipelineDepth = m_settings.pipelineDepth;
     options.batchIntervalMs = 1;
     engine.setTarget(m_settings.url, options);
-    openAndSettle(engine, m_settings.url.connectTimeoutMs, settleMs(report));
+    openAndSettle(engine, m_settings.url.connectTimeoutMs, settleMs(report), this);
+    if (m_stopRequested)
+        return;
     QSet<quint64> ids;
     for (int i = 0; i < m_settings.pipelineDepth; ++i) {
         RequestItem item = RequestItem::forLink(AduBuilder::mbap(readPdu(1), m_settings.unit, quint16(i + 1)), m_settings.url);
         item.timeoutMs = m_settings.timeoutMs;
         ids.insert(engine.send(item));
     }
-    const QList<Transaction> done = collect(engine, ids, m_settings.timeoutMs * 2 + m_settings.url.connectTimeoutMs);
+    const QList<Transaction> done = collect(engine, ids, m_settings.timeoutMs * 2 + m_settings.url.connectTimeoutMs, this);
+    if (m_stopRequested)
+        return;
     report.pipelineSent = m_settings.pipelineDepth;
     for (const Transaction &t : done)
         report.pipelineOk += served(t) ? 1 : 0;
+    endPart(Pipeline);
 }
 
 void TimingScanner::clients(TimingReport &report)
 {
     if (m_settings.url.isSerial() || m_settings.url.isDatagram())
         return;
-    Q_EMIT step(QStringLiteral("clients at once"));
+    beginPart(Clients, QStringLiteral("clients at once"));
     // One engine per client, each keeping its connection open: client k is asked while the
     // k - 1 before it are still connected.
     struct Held {
@@ -246,22 +405,30 @@ void TimingScanner::clients(TimingReport &report)
     };
     std::vector<std::unique_ptr<Held>> held;
     const QByteArray adu = AduBuilder::complete(readPdu(1), AduOptions{m_settings.url.framing(), m_settings.unit, 1, 0});
-    const auto ask = [&](Held &client) {
+    const auto askClient = [&](Held &client) {
         RequestItem item = RequestItem::forLink(adu, m_settings.url);
         item.timeoutMs = m_settings.timeoutMs;
         const std::optional<Transaction> t = client.engine->sendAndWait(item);
         return t && served(*t);
     };
-    for (int k = 1; k <= m_settings.maxClients && !m_stopRequested; ++k) {
+    for (int k = 1; k <= m_settings.maxClients; ++k) {
+        const qint64 recheckMs = k >= 2 ? std::max(20, report.recommendedGapMs()) + m_settings.timeoutMs : 0;
+        if (!mayContinue(settleMs(report) + m_settings.timeoutMs + recheckMs))
+            return;
         auto client = std::make_unique<Held>();
         client->engine = std::make_unique<TransactionEngine>();
         Held *c = client.get();
         connect(c->engine.get(), &TransactionEngine::linkOpened, this, [c] { ++c->opened; });
+        // Stop ends the request in flight: its link closed, the engine's wait ends.
+        connect(this, &TimingScanner::stopping, c->engine.get(), [e = c->engine.get()] { e->closeLink(); });
         EngineOptions options;
         options.batchIntervalMs = 1;
         c->engine->setTarget(m_settings.url, options);
-        openAndSettle(*c->engine, m_settings.url.connectTimeoutMs, settleMs(report));
-        const bool servedNew = ask(*c);
+        openAndSettle(*c->engine, m_settings.url.connectTimeoutMs, settleMs(report), this);
+        const bool servedNew = !m_stopRequested && askClient(*c);
+        if (m_stopRequested)
+            return; // client k was not measured
+        stepDone();
         report.clientsTried = k;
         if (!servedNew)
             break;
@@ -274,11 +441,15 @@ void TimingScanner::clients(TimingReport &report)
         // needs. Its connection gone (the request fails, or the engine had to connect again),
         // the one before this client was the last that fit.
         QEventLoop wait;
+        connect(this, &TimingScanner::stopping, &wait, &QEventLoop::quit);
         QTimer::singleShot(std::max(20, report.recommendedGapMs()), &wait, &QEventLoop::quit);
         wait.exec();
         Held &oldest = *held.front();
         const int openedBefore = oldest.opened;
-        if (!ask(oldest) || oldest.opened > openedBefore) {
+        const bool oldestServed = !m_stopRequested && askClient(oldest);
+        if (m_stopRequested)
+            return;
+        if (!oldestServed || oldest.opened > openedBefore) {
             report.clientsServed = k - 1;
             report.oldestDropped = true;
             break;

@@ -5,6 +5,7 @@
 
 #include "transport/linkurl.h"
 
+#include <QtCore/QElapsedTimer>
 #include <QtCore/QList>
 #include <QtCore/QObject>
 
@@ -23,6 +24,7 @@ struct TimingScanSettings {
     int pipelineDepth = 8;  // MBAP links: requests sent without waiting
     int maxClients = 16;    // MBAP and other TCP links: connections held open at once
     int warmupLimitMs = 10000;
+    qint64 maxDurationMs = 600000; // the whole scan: no request is sent that would end after it
 
     [[nodiscard]] QString problem() const;
 };
@@ -55,24 +57,33 @@ struct TimingReport {
 // A device's timing limits through a link (issue 18, item 4): how long after connecting it
 // answers, the shortest gap between requests before errors start, whether pipelined MBAP requests
 // are answered, how many TCP clients it serves at once, and the largest read it answers. Reads only.
+// Bounded by the settings' counts and time limit. Its progress counts steps of a plan known at the
+// start (the first answer, every request of every gap, the largest read's bisection, the pipelined
+// burst, every client); a part that ends early (errors started, the bisection was short) counts
+// its steps left as done, so done only grows and reaches total when the scan completes.
 class TimingScanner : public QObject
 {
     Q_OBJECT
 public:
     explicit TimingScanner(QObject *parent = nullptr);
 
+    // The report, or nullopt with settings.problem() unusable. end() says how it ended.
     [[nodiscard]] std::optional<TimingReport> run(const TimingScanSettings &settings);
-    void stop()
-    {
-        m_stopRequested = true;
-        m_channel->cancel();
-    }
-    [[nodiscard]] bool wasStopped() const { return m_stopRequested; }
+    void stop();
+    [[nodiscard]] ScanEnd end() const { return m_end; }
+    [[nodiscard]] bool wasStopped() const { return m_end == ScanEnd::Stopped; }
+    // Steps done of the plan, and the time left: the plan's waits (gaps, warm-up, settling) and
+    // one answer a step, at the average answer time measured so far (the timeout before any).
+    [[nodiscard]] ScanProgress progress() const;
 
 Q_SIGNALS:
     void step(const QString &what);
+    void progressChanged(const mbscope::ScanProgress &progress);
+    // stop() was called: the waits of the part running end.
+    void stopping();
 
 private:
+    enum Part : quint8 { Warmup, Gaps, Largest, Pipeline, Clients, PartCount };
     void warmup(TimingReport &report);
     void gaps(TimingReport &report);
     void pipelining(TimingReport &report);
@@ -81,10 +92,26 @@ private:
     [[nodiscard]] QByteArray readPdu(int quantity) const;
     // How long a new connection waits before its first request: the warm-up seen, and the gap.
     [[nodiscard]] qint64 settleMs(const TimingReport &report) const;
+    // False (and end() set) when stopped, or when a step of nextMs would end after the time limit.
+    [[nodiscard]] bool mayContinue(qint64 nextMs);
+    // A request through the probe channel, its answer time kept for the estimate.
+    [[nodiscard]] std::optional<ProbeChannel::Answer> ask(int quantity, int timeoutMs, bool measured = true);
+    void beginPart(Part part, const QString &what);
+    void stepDone();
+    void endPart(Part part); // the part's steps left count as done
+    [[nodiscard]] qint64 answerMs() const;
+    [[nodiscard]] qint64 stepCostMs(int index) const;
 
     ProbeChannel *m_channel;
     TimingScanSettings m_settings;
+    const TimingReport *m_report = nullptr; // while run() runs: the estimate reads the gaps and warm-up seen
+    QElapsedTimer m_clock;
     bool m_stopRequested = false;
+    ScanEnd m_end = ScanEnd::Completed;
+    int m_partStart[PartCount + 1] = {};
+    int m_done = 0;
+    qint64 m_answeredMs = 0; // time of the measured requests beyond their gaps
+    int m_answered = 0;
 };
 
 } // namespace mbscope

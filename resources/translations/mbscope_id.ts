@@ -241,7 +241,12 @@
         <translation>04 Baca Register Input</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+38"/>
+        <source>%1, about %2 left</source>
+        <translation>%1, sekitar %2 lagi</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>%1 s</source>
         <translation>%1 dtk</translation>
     </message>
@@ -2874,12 +2879,12 @@
         <translation>Tujuan pemindaian unit sekarang %1.</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 of %2 tried, %3 answered, about %4 left</source>
-        <translation>%1 dari %2 dicoba, %3 menjawab, sekitar %4 lagi</translation>
+        <location line="+7"/>
+        <source>%1 of %2 tried, %3 answered</source>
+        <translation>%1 dari %2 dicoba, %3 menjawab</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+2"/>
         <source>Asks the read on every setting until CRC-valid answers come back. Never writes.</source>
         <translation>Menanyakan baca itu pada setiap pengaturan sampai jawaban dengan CRC sah kembali. Tidak pernah menulis.</translation>
     </message>
@@ -2909,7 +2914,7 @@
         <translation>Pilih paling sedikit satu paritas dan satu jumlah bit stop.</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>works: %1</source>
         <translation>berhasil: %1</translation>
     </message>
@@ -2919,7 +2924,7 @@
         <translation>%1 (unit %2)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>The port failed: %1</source>
         <translation>Port gagal: %1</translation>
     </message>
@@ -3599,12 +3604,12 @@
         </translation>
     </message>
     <message>
-        <location line="+24"/>
-        <source>%1 of %2 addresses searched, about %3 left</source>
-        <translation>%1 dari %2 alamat dicari, sekitar %3 lagi</translation>
+        <location line="+22"/>
+        <source>%1 of %2 addresses searched</source>
+        <translation>%1 dari %2 alamat dicari</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+15"/>
         <source>Cannot save %1: %2</source>
         <translation>Tidak dapat menyimpan %1: %2</translation>
     </message>
@@ -5731,12 +5736,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Berikan link yang akan dipindai, mis. tcp://192.168.1.10:502.</translation>
     </message>
     <message>
-        <location line="+50"/>
-        <source>%1 of %2 ids asked, %3 found, about %4 left</source>
-        <translation>%1 dari %2 id ditanyai, %3 ditemukan, sekitar %4 lagi</translation>
+        <location line="+51"/>
+        <source>%1 of %2 ids asked, %3 found</source>
+        <translation>%1 dari %2 id ditanyai, %3 ditemukan</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+8"/>
         <source>Scan complete</source>
         <translation>Pemindaian selesai</translation>
     </message>
@@ -6630,7 +6635,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimScriptPanel</name>
     <message>
-        <location filename="../../ui/sim/simscriptpanel.cpp" line="+25"/>
+        <location filename="../../ui/sim/simscriptpanel.cpp" line="+27"/>
         <source>Re&amp;load scripts</source>
         <translation>Muat &amp;ulang skrip</translation>
     </message>
@@ -6645,7 +6650,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Bersihkan lo&amp;g</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>What the scripts write with log(...) or console.log(...), and their errors with file and line.</source>
         <translation>Apa yang ditulis skrip dengan log(...) atau console.log(...), serta galatnya dengan berkas dan baris.</translation>
     </message>
@@ -7434,9 +7439,9 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pengaturan yang disarankan sebagai teks: gapMs dan timeoutMs link pantauan, --timeout mbscope, dan input modbus Telegraf.</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <source>Measuring: %1…</source>
-        <translation>Mengukur: %1…</translation>
+        <location line="+20"/>
+        <source>Measuring %1: %2 of %3 steps</source>
+        <translation>Mengukur %1: %2 dari %3 langkah</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -7459,12 +7464,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Jeda: berikan paling sedikit satu, mis. 100, 20, 0.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+34"/>
         <source>Stopped before the first answer: nothing was measured.</source>
         <translation>Dihentikan sebelum jawaban pertama: tidak ada yang diukur.</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>The time limit of %1 came before the first answer: nothing was measured.</source>
+        <translation>Batas waktu %1 tercapai sebelum jawaban pertama: tidak ada yang diukur.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>No good answer from unit %1 on %2: nothing to time.</source>
         <translation>Tidak ada jawaban baik dari unit %1 di %2: tidak ada yang bisa diukur.</translation>
     </message>
@@ -7472,6 +7482,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+2"/>
         <source>Stopped: the measurements after it were not made.</source>
         <translation>Dihentikan: pengukuran sesudahnya tidak dilakukan.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Time limit of %1 reached: the measurements after it were not made.</source>
+        <translation>Batas waktu %1 tercapai: pengukuran sesudahnya tidak dilakukan.</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -12,8 +12,14 @@
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
+#include <QtCore/QSocketNotifier>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QTimer>
 #include <QtTest/QTest>
+
+#include <fcntl.h>
+#include <sys/ioctl.h>
+#include <unistd.h>
 
 using namespace mbscope::testcli;
 using mbscope::testpeers::PeerProcess;
@@ -63,6 +69,76 @@ QMap<QString, QJsonArray> blocksOf(const QJsonObject &map)
     return out;
 }
 
+// mbscope run with standard error on a pseudo terminal, as a shell gives it, so that the progress
+// line is drawn (ProgressLine draws only on a terminal); what the terminal received in *terminal.
+CliResult runOnTerminal(const QStringList &arguments, QByteArray *terminal, int timeoutMs = 120000)
+{
+    CliResult result;
+    const int master = ::posix_openpt(O_RDWR | O_NOCTTY);
+    if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0) {
+        result.err = "no pseudo terminal";
+        return result;
+    }
+    struct winsize size = {};
+    size.ws_col = 200; // the line is cut to the terminal's width
+    size.ws_row = 24;
+    ::ioctl(master, TIOCSWINSZ, &size);
+    const int slave = ::open(::ptsname(master), O_RDWR | O_NOCTTY);
+    ::fcntl(master, F_SETFL, O_NONBLOCK);
+    const auto drain = [master, terminal] {
+        char buffer[4096];
+        ssize_t n = 0;
+        while ((n = ::read(master, buffer, sizeof buffer)) > 0)
+            terminal->append(buffer, n);
+    };
+    QSocketNotifier notifier(master, QSocketNotifier::Read);
+    QObject::connect(&notifier, &QSocketNotifier::activated, drain);
+    QProcess p;
+    p.setChildProcessModifier([slave] { ::dup2(slave, STDERR_FILENO); });
+    QEventLoop loop;
+    QObject::connect(&p, &QProcess::finished, &loop, &QEventLoop::quit);
+    QTimer::singleShot(timeoutMs, &loop, &QEventLoop::quit);
+    p.start(mbscopePath(), arguments);
+    if (p.waitForStarted(30000)) {
+        p.closeWriteChannel();
+        loop.exec();
+    }
+    result.finished = p.state() == QProcess::NotRunning && p.exitStatus() == QProcess::NormalExit;
+    if (p.state() != QProcess::NotRunning) {
+        p.kill();
+        p.waitForFinished(5000);
+    }
+    result.exitCode = result.finished ? p.exitCode() : -1;
+    result.out = p.readAllStandardOutput();
+    ::close(slave);
+    drain();
+    ::close(master);
+    result.err = *terminal;
+    return result;
+}
+
+// The progress lines a terminal was shown: "<what> done/total  ...  about X left  (Ctrl-C stops)",
+// each drawn over the last (carriage return, erase to the end of the line).
+struct ProgressShown {
+    int done = 0;
+    int total = 0;
+    QString detail; // between the counts and the times
+    QString left;
+};
+
+QList<ProgressShown> progressShown(const QByteArray &terminal, const QString &what)
+{
+    const QRegularExpression line(QStringLiteral("^%1 (\\d+)/(\\d+)  (?:(.*)  )?[^ ]+ m?s, about (.+) left  \\(Ctrl-C stops\\)$").arg(what));
+    QList<ProgressShown> out;
+    for (const QByteArray &drawn : terminal.split('\r')) {
+        const QString text = QString::fromUtf8(drawn).remove(QStringLiteral("\x1b[K")).trimmed();
+        const QRegularExpressionMatch m = line.match(text);
+        if (m.hasMatch())
+            out.append({m.captured(1).toInt(), m.captured(2).toInt(), m.captured(3), m.captured(4)});
+    }
+    return out;
+}
+
 } // namespace
 
 class TestCliScan : public QObject
@@ -85,6 +161,8 @@ private slots:
     void lineSettingsFound();
     void timingLimitsFound();
     void timingTellsDropOldestFromRefuse();
+    void timingProgressOnATerminal();
+    void timingBoundedAndStopped();
 
 private:
     QTemporaryDir m_dir;
@@ -372,13 +450,30 @@ void TestCliScan::lineSettingsFound()
     for (const QJsonValue &w : working)
         settings.append(w.toObject().value(QStringLiteral("setting")).toString());
     QCOMPARE(settings, (QStringList{QStringLiteral("19200 8E1"), QStringLiteral("19200 8N1"), QStringLiteral("19200 8O1")}));
-    const CliResult text = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), QStringLiteral("rtu://") + client, QStringLiteral("--line"),
-                                       QStringLiteral("--bauds"), QStringLiteral("9600,19200"), QStringLiteral("--parities"), QStringLiteral("E"),
-                                       QStringLiteral("--stop-bits"), QStringLiteral("2,1"), QStringLiteral("--first")});
+    QByteArray terminal;
+    const CliResult text = runOnTerminal({QStringLiteral("scan"), QStringLiteral("--target"), QStringLiteral("rtu://") + client, QStringLiteral("--line"),
+                                          QStringLiteral("--bauds"), QStringLiteral("9600,19200"), QStringLiteral("--parities"), QStringLiteral("E"),
+                                          QStringLiteral("--stop-bits"), QStringLiteral("2,1"), QStringLiteral("--first")},
+                                         &terminal);
     QVERIFY2(text.finished && text.exitCode == 0, text.describe());
     QVERIFY2(text.outText().contains(QStringLiteral("answered: 19200 8E1 (unit 1)\n")), text.out.constData());
     QVERIFY2(text.outText().contains(QStringLiteral("\n9600 8E2        1          silent")), text.out.constData());
     QVERIFY2(text.outText().contains(QStringLiteral("4 trials")), text.out.constData());
+    // On the terminal, the trials of the plan (4 settings with unit 1, then 2-247 on each in case
+    // nothing answered): all of it done once 19200 8E1 answered (--first), nothing left.
+    const QList<ProgressShown> shown = progressShown(terminal, QStringLiteral("trials"));
+    QVERIFY2(shown.size() >= 4, terminal.constData());
+    QCOMPARE(shown.first().done, 0);
+    QVERIFY2(shown.first().left != QLatin1String("0 ms"), terminal.constData());
+    int done = 0;
+    for (const ProgressShown &p : shown) {
+        QCOMPARE(p.total, 4 * 247);
+        QVERIFY2(p.done >= done, terminal.constData());
+        done = p.done;
+    }
+    QVERIFY2(terminal.contains("9600 8E2 unit 1 silent"), terminal.constData());
+    QCOMPARE(shown.last().done, 4 * 247);
+    QCOMPARE(shown.last().left, QStringLiteral("0 ms"));
 }
 
 void TestCliScan::timingLimitsFound()
@@ -446,6 +541,75 @@ void TestCliScan::timingTellsDropOldestFromRefuse()
                                                : QStringLiteral("TCP clients served at once      2 (client 3 was not served)\n")),
                  text.out.constData());
     }
+}
+
+// On a terminal the timing scan draws steps done of its plan, what it measures and the time left
+// (before, only the name of the part it measured): here over rtu-tcp (no pipelining), 2 clients.
+void TestCliScan::timingProgressOnATerminal()
+{
+    QByteArray terminal;
+    const CliResult r = runOnTerminal({QStringLiteral("scan"), QStringLiteral("--target"), m_gateway.url(), QStringLiteral("--timing"),
+                                       QStringLiteral("1"), QStringLiteral("--clients"), QStringLiteral("2"), QStringLiteral("--timeout"),
+                                       QStringLiteral("300ms")},
+                                      &terminal);
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    QVERIFY2(r.outText().contains(QStringLiteral("shortest gap without errors     0 ms")), r.out.constData());
+    const QList<ProgressShown> shown = progressShown(terminal, QStringLiteral("steps"));
+    // The first answer, 9 gaps x 20 requests, the largest read of 03 (125, then at most 7 more
+    // by bisection), 2 clients.
+    const int total = 1 + 9 * 20 + 8 + 2;
+    QVERIFY2(shown.size() > 20, terminal.constData());
+    QCOMPARE(shown.first().done, 0);
+    QCOMPARE(shown.first().detail, QStringLiteral("first answer after connecting"));
+    QVERIFY2(shown.first().left != QLatin1String("0 ms"), terminal.constData());
+    int done = 0;
+    QSet<QString> details;
+    for (const ProgressShown &p : shown) {
+        QCOMPARE(p.total, total);
+        QVERIFY2(p.done >= done, terminal.constData());
+        done = p.done;
+        details.insert(p.detail);
+    }
+    for (const char *part : {"gap 200 ms", "gap 0 ms", "largest read", "clients at once"})
+        QVERIFY2(details.contains(QLatin1String(part)), terminal.constData());
+    QCOMPARE(shown.last().done, total);
+    QCOMPARE(shown.last().left, QStringLiteral("0 ms"));
+    // The line is erased before the report: the terminal ends clean.
+    QVERIFY(terminal.endsWith("\r\x1b[K"));
+}
+
+// --max-time bounds the timing scan (before, it was not applied: only Ctrl-C ended one early), and
+// Ctrl-C stops it with what was measured.
+void TestCliScan::timingBoundedAndStopped()
+{
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), m_gateway.url(), QStringLiteral("--timing"),
+                                    QStringLiteral("1"), QStringLiteral("--timeout"), QStringLiteral("200ms"), QStringLiteral("--max-time"),
+                                    QStringLiteral("1s"), QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("end")).toString(), QStringLiteral("time_limit"));
+    QCOMPARE(o.value(QStringLiteral("stopped")).toBool(), false);
+    QVERIFY2(o.value(QStringLiteral("first_answer_ms")).toDouble() >= 0, r.out.constData());
+    QVERIFY2(o.value(QStringLiteral("gaps")).toArray().size() <= 1, r.out.constData()); // 200 ms, begun
+    QCOMPARE(o.value(QStringLiteral("clients_tried")).toInt(), 0);
+    const CliResult text = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), m_gateway.url(), QStringLiteral("--timing"),
+                                       QStringLiteral("1"), QStringLiteral("--timeout"), QStringLiteral("200ms"), QStringLiteral("--max-time"),
+                                       QStringLiteral("1s")});
+    QVERIFY2(text.outText().contains(QStringLiteral("time limit (--max-time 1.0 s) reached: later measurements were not made")),
+             text.out.constData());
+
+    QProcess scan;
+    scan.start(mbscopePath(), {QStringLiteral("scan"), QStringLiteral("--target"), m_gateway.url(), QStringLiteral("--timing"), QStringLiteral("1"),
+                               QStringLiteral("--json")});
+    QVERIFY(scan.waitForStarted());
+    QTest::qWait(1500); // in the 200 ms gaps (4 s of them)
+    ::kill(pid_t(scan.processId()), SIGINT);
+    QVERIFY(scan.waitForFinished(10000));
+    const QJsonObject stopped = QJsonDocument::fromJson(scan.readAllStandardOutput()).object();
+    QCOMPARE(stopped.value(QStringLiteral("end")).toString(), QStringLiteral("stopped"));
+    QCOMPARE(stopped.value(QStringLiteral("stopped")).toBool(), true);
+    QVERIFY(stopped.value(QStringLiteral("first_answer_ms")).toDouble() >= 0);
+    QCOMPARE(stopped.value(QStringLiteral("clients_tried")).toInt(), 0);
 }
 
 QTEST_GUILESS_MAIN(TestCliScan)

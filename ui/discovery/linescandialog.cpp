@@ -134,14 +134,8 @@ LineScanDialog::LineScanDialog(QWidget *parent)
     connect(buttons, &QDialogButtonBox::rejected, this, &LineScanDialog::reject);
     connect(m_scanner, &LineScanner::tried, this, &LineScanDialog::onTried);
     connect(m_scanner, &LineScanner::progressChanged, this, [this](const ScanProgress &p) {
-        m_progress->setRange(0, qMax(1, p.total));
-        m_progress->setValue(p.done);
         if (m_running)
-            m_status->setText(tr("%1 of %2 tried, %3 answered, about %4 left")
-                                  .arg(p.done)
-                                  .arg(p.total)
-                                  .arg(p.found)
-                                  .arg(ScanForm::duration(p.remainingMs)));
+            ScanForm::showProgress(m_progress, m_status, p, tr("%1 of %2 tried, %3 answered").arg(p.done).arg(p.total).arg(p.found));
     });
     m_status->setText(tr("Asks the read on every setting until CRC-valid answers come back. Never writes."));
     updateButtons();
@@ -218,7 +212,8 @@ void LineScanDialog::start()
     m_ran = *s;
     m_trials.clear();
     m_list->clear();
-    m_progress->setRange(0, 0);
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
     updateButtons();
     const std::optional<QList<LineTrial>> trials = m_scanner->run(*s);
     m_running = false;
@@ -255,8 +250,6 @@ void LineScanDialog::summarise(ScanEnd end)
             parities.insert(t.parity);
         }
     }
-    m_progress->setRange(0, 1);
-    m_progress->setValue(1);
     if (end == ScanEnd::LinkError && working.isEmpty()) {
         ScanForm::showProblem(m_status, tr("The port failed: %1").arg(m_trials.isEmpty() ? m_ran.url.toString() : m_trials.constLast().probe.summary()));
         return;

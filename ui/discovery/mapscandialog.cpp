@@ -224,12 +224,7 @@ void MapScanDialog::onProgress(const ScanProgress &p)
 {
     if (!m_running)
         return;
-    m_progress->setRange(0, qMax(1, p.total));
-    m_progress->setValue(p.done);
-    m_status->setText(tr("%1 of %2 addresses searched, about %3 left")
-                          .arg(p.done)
-                          .arg(p.total)
-                          .arg(ScanForm::duration(p.remainingMs)));
+    ScanForm::showProgress(m_progress, m_status, p, tr("%1 of %2 addresses searched").arg(p.done).arg(p.total));
 }
 
 QList<WatchDefinition> MapScanDialog::watches() const

@@ -214,14 +214,11 @@ void ScanDialog::reject()
 
 void ScanDialog::onProgress(const ScanProgress &p)
 {
-    m_progress->setValue(p.done);
-    if (!isRunning())
+    if (!isRunning()) {
+        m_progress->setValue(p.done);
         return;
-    m_status->setText(tr("%1 of %2 ids asked, %3 found, about %4 left")
-                          .arg(p.done)
-                          .arg(p.total)
-                          .arg(p.found)
-                          .arg(ScanForm::duration(p.remainingMs)));
+    }
+    ScanForm::showProgress(m_progress, m_status, p, tr("%1 of %2 ids asked, %3 found").arg(p.done).arg(p.total).arg(p.found));
 }
 
 void ScanDialog::onFinished(ScanEnd end)

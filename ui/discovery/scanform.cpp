@@ -60,6 +60,13 @@ std::optional<LinkUrl> ScanForm::target(const QLineEdit *target, QLabel *status,
     return parsed.url;
 }
 
+void ScanForm::showProgress(QProgressBar *bar, QLabel *status, const ScanProgress &progress, const QString &counts)
+{
+    bar->setRange(0, qMax(1, progress.total));
+    bar->setValue(qBound(0, progress.done, qMax(1, progress.total)));
+    status->setText(tr("%1, about %2 left").arg(counts, duration(progress.remainingMs)));
+}
+
 QString ScanForm::duration(qint64 ms)
 {
     return ms < 60000 ? tr("%1 s").arg(QString::number(double(ms) / 1000.0, 'f', 1))

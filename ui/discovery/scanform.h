@@ -1,5 +1,6 @@
 #pragma once
 
+#include "discovery/scanprogress.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QCoreApplication>
@@ -37,6 +38,9 @@ public:
     static void showProblem(QLabel *status, const QString &text);
     // The link typed in target; nullopt with the reason (or emptyHint for an empty field) shown.
     [[nodiscard]] static std::optional<LinkUrl> target(const QLineEdit *target, QLabel *status, const QString &emptyHint);
+    // A running scan's progress: the bar at done of total, the status line "<counts>, about X left"
+    // (counts: "12 of 40 ids asked, 1 found").
+    static void showProgress(QProgressBar *bar, QLabel *status, const ScanProgress &progress, const QString &counts);
     // "4.2 s" under a minute, "3 min 20 s" from one.
     [[nodiscard]] static QString duration(qint64 ms);
 };

@@ -104,9 +104,10 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
     connect(m_stop, &QPushButton::clicked, this, &TimingScanDialog::stop);
     connect(m_copy, &QPushButton::clicked, this, &TimingScanDialog::copySettings);
     connect(buttons, &QDialogButtonBox::rejected, this, &TimingScanDialog::reject);
-    connect(m_scanner, &TimingScanner::step, this, [this](const QString &what) {
+    connect(m_scanner, &TimingScanner::step, this, [this](const QString &what) { m_part = what; });
+    connect(m_scanner, &TimingScanner::progressChanged, this, [this](const ScanProgress &p) {
         if (m_running)
-            m_status->setText(tr("Measuring: %1\u2026").arg(what));
+            ScanForm::showProgress(m_progress, m_status, p, tr("Measuring %1: %2 of %3 steps").arg(m_part).arg(p.done).arg(p.total));
     });
     m_status->setText(tr("Asks the read again and again, at shorter and shorter gaps, and says what the unit stood. Never writes."));
     updateButtons();
@@ -170,25 +171,31 @@ void TimingScanDialog::start()
     if (!s)
         return;
     m_running = true;
+    m_part.clear();
     m_report.reset();
     m_tree->clear();
-    m_progress->setRange(0, 0);
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
     updateButtons();
     const std::optional<TimingReport> report = m_scanner->run(*s);
     m_running = false;
-    const bool stopped = m_scanner->wasStopped();
-    m_progress->setRange(0, 1);
-    m_progress->setValue(1);
+    const bool stopped = m_scanner->end() == ScanEnd::Stopped;
+    const bool timeLimit = m_scanner->end() == ScanEnd::TimeLimit;
     if (report) {
         m_report = report;
         m_tree->showReport(*s, *report);
     }
     if (stopped && (!report || report->firstAnswerMs < 0))
         m_status->setText(tr("Stopped before the first answer: nothing was measured."));
+    else if (timeLimit && (!report || report->firstAnswerMs < 0))
+        ScanForm::showProblem(m_status, tr("The time limit of %1 came before the first answer: nothing was measured.")
+                                            .arg(ScanForm::duration(s->maxDurationMs)));
     else if (!report || report->firstAnswerMs < 0)
         ScanForm::showProblem(m_status, tr("No good answer from unit %1 on %2: nothing to time.").arg(s->unit).arg(s->url.toString()));
     else if (stopped)
         m_status->setText(tr("Stopped: the measurements after it were not made."));
+    else if (timeLimit)
+        m_status->setText(tr("Time limit of %1 reached: the measurements after it were not made.").arg(ScanForm::duration(s->maxDurationMs)));
     else
         m_status->setText(tr("Done: a gap of %1 ms and a timeout of %2 ms are recommended.")
                               .arg(report->recommendedGapMs())

@@ -66,6 +66,7 @@ private:
     QProgressBar *m_progress;
     QLabel *m_status;
     bool m_running = false;
+    QString m_part; // what the scan measures now: "gap 50 ms"
     std::optional<TimingReport> m_report;
 };
 

@@ -311,8 +311,34 @@ void TestScanDialog::timingOfAFoundUnit()
     auto *copy = timing->findChild<QPushButton *>(QStringLiteral("timingCopySettings"));
     QVERIFY(!copy->isEnabled());
     QSignalSpy finished(timing, &TimingScanDialog::scanFinished);
+    // What the dialog shows as the scan goes: the bar at steps done of the plan (before, a busy
+    // bar without a count), the status "Measuring gap 20 ms: 4 of 22 steps, about 1.2 s left".
+    auto *bar = timing->findChild<QProgressBar *>(QStringLiteral("timingProgress"));
+    auto *status = timing->findChild<QLabel *>(QStringLiteral("timingStatus"));
+    QList<int> values;
+    QStringList texts;
+    connect(timing->findChild<TimingScanner *>(), &TimingScanner::progressChanged, this, [&](const ScanProgress &) {
+        QCOMPARE(bar->maximum(), 1 + 2 * 5 + 8 + 3); // first answer, 2 gaps x 5, largest read, 3 clients (rtu-tcp: no pipelining)
+        values.append(bar->value());
+        texts.append(status->text());
+        // The dialog as it runs, for a look (MBSCOPE_TIMING_PROGRESS_SCREENSHOT=file.png).
+        if (const QString shot = qEnvironmentVariable("MBSCOPE_TIMING_PROGRESS_SCREENSHOT");
+            !shot.isEmpty() && bar->value() == 8)
+            timing->grab().save(shot);
+    });
     QTest::mouseClick(timing->findChild<QPushButton *>(QStringLiteral("timingStart")), Qt::LeftButton);
     QVERIFY(!finished.isEmpty() || finished.wait(60000));
+    QVERIFY(values.size() > 10);
+    QCOMPARE(values.first(), 0);
+    for (qsizetype i = 1; i < values.size(); ++i)
+        QVERIFY(values.at(i) >= values.at(i - 1));
+    QCOMPARE(values.last(), bar->maximum());
+    QCOMPARE(bar->value(), bar->maximum());
+    QVERIFY2(texts.first().startsWith(QLatin1String("Measuring first answer after connecting: 0 of 22 steps, about ")),
+             qPrintable(texts.first()));
+    QVERIFY2(texts.filter(QRegularExpression(QStringLiteral("^Measuring gap 20 ms: \\d+ of 22 steps, about .+ left$"))).size() >= 5,
+             qPrintable(texts.join(QLatin1Char('\n'))));
+    QVERIFY2(texts.last().endsWith(QLatin1String("22 of 22 steps, about 0.0 s left")), qPrintable(texts.last()));
     QVERIFY(timing->report());
     const TimingReport &r = *timing->report();
     QVERIFY(r.firstAnswerMs >= 0);
@@ -378,9 +404,19 @@ void TestScanDialog::serialSettingsFound()
     auto *use = line->findChild<QPushButton *>(QStringLiteral("lineUseSetting"));
     QVERIFY(!use->isEnabled());
     QSignalSpy finished(line, &LineScanDialog::scanFinished);
+    auto *bar = line->findChild<QProgressBar *>(QStringLiteral("lineProgress"));
+    QStringList texts;
+    connect(line->findChild<LineScanner *>(), &LineScanner::progressChanged, this, [&](const ScanProgress &) {
+        QCOMPARE(bar->maximum(), 12);
+        texts.append(line->findChild<QLabel *>(QStringLiteral("lineStatus"))->text());
+    });
     QTest::mouseClick(line->findChild<QPushButton *>(QStringLiteral("lineStart")), Qt::LeftButton);
     QVERIFY(!finished.isEmpty() || finished.wait(60000));
     QCOMPARE(finished.first().first().value<ScanEnd>(), ScanEnd::Completed);
+    // The bar at the trials of the plan, the status with the time left: none at the end.
+    QVERIFY2(texts.first().startsWith(QLatin1String("0 of 12 tried, 0 answered, about ")), qPrintable(texts.first()));
+    QVERIFY2(texts.last() == QLatin1String("12 of 12 tried, 3 answered, about 0.0 s left"), qPrintable(texts.last()));
+    QCOMPARE(bar->value(), 12);
     QCOMPARE(line->trials().size(), 2 * 3 * 2);
     QCOMPARE(line->findChild<QTreeWidget *>(QStringLiteral("lineTrials"))->topLevelItemCount(), 12);
     QStringList working;
