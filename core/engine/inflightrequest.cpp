@@ -20,8 +20,12 @@ bool InFlightRequest::outranLine(qint64 firstNs, qint64 lastNs, qsizetype respon
     if (firstNs < linkNs)
         return true;
     // Serial Line V1.02, 2.5.1.1: the answer's characters follow one another on the line, each
-    // characterNs long; one character of slack for the time the kernel took the request.
-    return characterNs > 0 && lastNs > 0 && lastNs - linkNs + characterNs < qint64(responseBytes) * characterNs;
+    // characterNs long, so its last byte comes at least their time after the request's end. The
+    // computed end can only be early (the line cannot start before the write), which makes the
+    // time longer, never shorter; the only slack is for the two ends' baud clocks, a UART's
+    // being allowed to run a few percent fast (3 % here).
+    const qint64 answerNs = qint64(responseBytes) * characterNs;
+    return characterNs > 0 && lastNs > 0 && lastNs - linkNs < answerNs - answerNs * 3 / 100;
 }
 
 qint64 InFlightRequest::sentTime(qint64 firstNs, qint64 lastNs, qsizetype responseBytes) const

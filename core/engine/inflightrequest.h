@@ -41,7 +41,7 @@ struct InFlightRequest {
     [[nodiscard]] qint64 sentTime(qint64 firstNs, qint64 lastNs = 0, qsizetype responseBytes = 0) const;
     // Serial: whether an answer arrived before the line could have carried the request and the
     // answer at its baud rate (it began before the computed end of the request, or ended sooner
-    // than its own characters take, by more than one character's slack). The computed end is then
+    // than its own characters take, allowing 3 % for the baud clocks). The computed end is then
     // not what happened: a pseudo terminal ignores the baud rate, a USB adapter may report
     // bytes written while it still holds them.
     [[nodiscard]] bool outranLine(qint64 firstNs, qint64 lastNs, qsizetype responseBytes) const;

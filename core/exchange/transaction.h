@@ -53,7 +53,9 @@ struct Transaction {
     // flight can be told apart; request holds the bytes actually sent.
     bool transactionIdRewritten = false;
 
-    [[nodiscard]] qint64 latencyNs() const { return doneNs > 0 ? doneNs - sentNs : -1; }
+    // -1 without an answer, or for a request never written (sentNs 0: a link error before the
+    // write, whose doneNs only places it in time).
+    [[nodiscard]] qint64 latencyNs() const { return doneNs > 0 && sentNs > 0 ? doneNs - sentNs : -1; }
     [[nodiscard]] bool isOk() const { return status == TransactionStatus::Ok; }
     // Whether the latency runs from the computed end of transmission (serial links that honour
     // their line) rather than from the write.

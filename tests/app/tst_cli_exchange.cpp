@@ -434,8 +434,13 @@ void TestCliExchange::linkRefused()
         QVERIFY2(error.value(QLatin1String("message")).toString().contains(QLatin1String("refused")), r.describe());
     } else if (args.constFirst() == QLatin1String("poll") || args.constFirst() == QLatin1String("sweep"))
         QVERIFY2(r.out.isEmpty(), r.describe());
-    else
+    else {
         QVERIFY2(r.outText().contains(QLatin1String("RESULT link_error: ")), r.describe());
+        // Nothing was written: no latency and no timing line (they said "answered in 43648.517 s",
+        // the host's uptime, and "latency from the request's write to the link").
+        QVERIFY2(!r.outText().contains(QLatin1String("answered in")), r.describe());
+        QVERIFY2(!r.outText().contains(QLatin1String("TIMING")), r.describe());
+    }
 }
 
 void TestCliExchange::readOverSerialPty_data()
