@@ -121,14 +121,29 @@ int runAnalyze(const QStringList &arguments)
         err << "mbscope analyze: " << fallback.message << '\n';
 
     int status = ExitOk;
-    if (parser.isSet(histogramOpt) && !ExchangePlots::writeHistogram(parser.value(histogramOpt), path, analysis.statistics(), &error)) {
-        err << "mbscope analyze: --histogram: " << error << '\n';
-        status = ExitFailure;
+    // Each plot written gets the line poll prints for its own ("plot          FILE"), on the text
+    // output only: --json keeps standard output one JSON document.
+    const auto wrote = [&](const QString &file) {
+        if (!parser.isSet(jsonOpt))
+            out << "plot          " << file << '\n';
+    };
+    if (parser.isSet(histogramOpt)) {
+        if (ExchangePlots::writeHistogram(parser.value(histogramOpt), path, analysis.statistics(), &error)) {
+            wrote(parser.value(histogramOpt));
+        } else {
+            err << "mbscope analyze: --histogram: " << error << '\n';
+            status = ExitFailure;
+        }
     }
-    if (parser.isSet(timeSeriesOpt) && !plots.writeTimeSeries(parser.value(timeSeriesOpt), path, &error)) {
-        err << "mbscope analyze: --timeseries: " << error << '\n';
-        status = ExitFailure;
+    if (parser.isSet(timeSeriesOpt)) {
+        if (plots.writeTimeSeries(parser.value(timeSeriesOpt), path, &error)) {
+            wrote(parser.value(timeSeriesOpt));
+        } else {
+            err << "mbscope analyze: --timeseries: " << error << '\n';
+            status = ExitFailure;
+        }
     }
+    out.flush();
     if (!report.error.isEmpty() || analysis.statistics().failed() > 0 || analysis.unmatchedResponses() > 0
         || fallback.action == CaptureInput::Fallback::Action::Nothing)
         status = ExitFailure;

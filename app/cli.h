@@ -7,8 +7,8 @@
 
 namespace mbscope::app {
 
-// A subcommand's --help text with its real usage line ("Usage: mbscope poll [options]") instead of
-// the executable's path that QCommandLineParser puts there.
+// A subcommand's --help text with its real usage line ("Usage: mbscope analyze [options] capture")
+// instead of the executable's path that QCommandLineParser puts there.
 [[nodiscard]] QString subcommandHelp(const QString &helpText, const char *name);
 
 // Exit statuses shared by every subcommand.

@@ -90,7 +90,7 @@ int runDecode(const QStringList &arguments)
         return ExitUsage;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
+        out << subcommandHelp(parser.helpText(), "decode");
         return ExitOk;
     }
 

@@ -48,8 +48,8 @@ PollOptions::PollOptions(bool sweep)
                              "(retries, late and unsolicited answers, bytes, connections)%1.")
                   .arg(sweep ? QStringLiteral("; each interval's full statistics") : QString()))
     , m_histogram(QStringLiteral("histogram"),
-                  QStringLiteral("Draw the latency histogram into a PNG file (no display needed)."),
-                  QStringLiteral("file.png"))
+                  QStringLiteral("Draw the latency histogram into the file: .png, .svg or .pdf by its extension (no display needed)."),
+                  QStringLiteral("file"))
     , m_json(QStringLiteral("json"), QStringLiteral("Print the statistics as JSON."))
     , m_print(QStringLiteral("print"),
               QStringLiteral("Print as they come: values (one line per answer: time, request, status, latency and the values "

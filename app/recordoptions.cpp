@@ -8,6 +8,7 @@
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QDir>
+#include <QtCore/QFile>
 #include <QtCore/QFileInfo>
 #include <QtCore/QTextStream>
 
@@ -16,7 +17,8 @@ namespace mbscope::app {
 RecordOptions::RecordOptions()
     : m_record(QStringLiteral("record"),
                QStringLiteral("Journal every frame sent and received to FILE, a crash-safe traffic journal that starts with "
-                              "this command, its target and requests (analyze, export and replay read it)."),
+                              "this command, its target and requests (analyze, export and replay read it); removed at the end when "
+                              "no frame crossed the link."),
                QStringLiteral("FILE"))
     , m_force(QStringLiteral("force"), QStringLiteral("Let --record replace an existing file (a journal is evidence: kept "
                                                       "unless this is given)."))
@@ -97,6 +99,13 @@ void finishRecording(TrafficRecording &recording, QTextStream &err)
     if (!recording.isOpen())
         return;
     recording.close();
+    // A journal with no frame (the link never came up, or carried nothing) is no evidence of
+    // anything, and left behind it would refuse the next --record of the same name.
+    if (recording.frames() == 0 && recording.error().isEmpty() && QFile::remove(recording.path())) {
+        err << "recorded no frame: removed " << recording.path() << " (nothing crossed the link)\n";
+        err.flush();
+        return;
+    }
     err << recording.summary() << '\n';
     err.flush();
 }

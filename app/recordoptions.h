@@ -56,7 +56,9 @@ private:
 // err) when the journal cannot be created.
 [[nodiscard]] bool openRecording(TrafficRecording &recording, const RecordSettings &settings, const TrafficMetadata &metadata,
                                  const QString &command, QTextStream &err);
-// Closes it and prints its one line on err: "recorded N frames (M transactions) to FILE".
+// Closes it and prints its one line on err: "recorded N frames (M transactions) to FILE"; a
+// journal that holds no frame is removed instead ("recorded no frame: removed FILE ..."), so that
+// a command whose link never came up leaves nothing that refuses its rerun.
 void finishRecording(TrafficRecording &recording, QTextStream &err);
 
 } // namespace mbscope::app

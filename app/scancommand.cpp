@@ -202,7 +202,7 @@ int runScan(const QStringList &arguments)
     const QCommandLineOption addressOpt(QStringLiteral("address"), QStringLiteral("Its address (default 0)."), QStringLiteral("ADDR"));
     const QCommandLineOption quantityOpt(QStringLiteral("quantity"), QStringLiteral("Its quantity (default 1)."), QStringLiteral("N"));
     const QCommandLineOption timeoutOpt(QStringLiteral("timeout"),
-                                        QStringLiteral("How long each request waits (default 200ms; 500ms with --map)."),
+                                        QStringLiteral("How long each request waits (default 200ms; 500ms with --map; 1s with --timing)."),
                                         QStringLiteral("TIME"));
     const QCommandLineOption gapOpt(QStringLiteral("gap"),
                                     QStringLiteral("Quiet time between one answer (or timeout) and the next request (default 20ms; 0 with --map)."),

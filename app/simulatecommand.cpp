@@ -2,6 +2,7 @@
 
 #include "time/duration.h"
 
+#include "cli.h"
 #include "faultswatcher.h"
 #include "recordoptions.h"
 #include "simulatesession.h"
@@ -144,7 +145,7 @@ int runSimulate(const QStringList &arguments)
         return kExitUsage;
     }
     if (parser.isSet(QStringLiteral("help"))) {
-        out << parser.helpText();
+        out << subcommandHelp(parser.helpText(), "simulate");
         return kExitOk;
     }
     if (parser.isSet(listOption)) {
@@ -204,6 +205,9 @@ int runSimulate(const QStringList &arguments)
         err << "mbscope simulate: profile '" << profileName << "':\n" << loaded.errorText() << '\n';
         return kExitUsage;
     }
+    for (const ProfileProblem &warning : loaded.warnings)
+        err << "mbscope simulate: warning: " << warning.toString() << '\n';
+    err.flush();
     DeviceProfile profile = loaded.profile;
     std::optional<FaultRuleSet> faults;
     if (parser.isSet(faultsOption)) {

@@ -124,7 +124,12 @@ void EngineCore::handleSkipped(const SkippedBytes &run, qint64 firstNs, qint64 l
     }
     const InFlightRequest &p = m_scheduler.inFlight().at(i);
     ResponseVerdict::Result v = m_verdict->judge(run.bytes, p.sent);
-    if (v.status == TransactionStatus::Ok || v.status == TransactionStatus::Exception) {
+    if (run.reason == SkipReason::Incomplete) {
+        // Ended by the silence before its length: cut short, as a Truncated frame is (ResponseVerdict).
+        v.status = TransactionStatus::Malformed;
+        v.exceptionCode = 0;
+        v.problem = QStringLiteral("the answer was cut short: %1 bytes arrived before the silence").arg(run.count());
+    } else if (v.status == TransactionStatus::Ok || v.status == TransactionStatus::Exception) {
         v.status = TransactionStatus::Malformed;
         v.problem = QStringLiteral("the answer's bytes could not be delimited as an RTU frame (%1)")
                         .arg(QString::fromLatin1(skipReasonName(run.reason)));

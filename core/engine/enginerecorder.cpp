@@ -93,8 +93,11 @@ void EngineRecorder::record(Transaction transaction, quint64 tag)
 {
     // A transaction whose answer was logged carries its verdict on that frame. One without an
     // answer (timeout, link error, broadcast) is logged as an empty frame in with its verdict,
-    // so that the log holds every transaction's outcome.
-    if (transaction.response.isEmpty() && (m_log || m_framesPublished.load(std::memory_order_relaxed)))
+    // so that the log holds every transaction's outcome. A first attempt never written (the link
+    // never came up) put nothing on the line: a frame in for it would be an answer to a request
+    // the log does not hold (analyze counted it as an answer matching no request).
+    const bool neverOnTheLine = transaction.writeNs == 0 && transaction.attempt == 0;
+    if (transaction.response.isEmpty() && !neverOnTheLine && (m_log || m_framesPublished.load(std::memory_order_relaxed)))
         logFrame(monotonicNowNs(), TrafficDirection::In, trafficVerdict(transaction.status), transaction.id, {});
     if (m_listeners.size() == 1) {
         m_listeners.constFirst()->onRecord(transaction, tag);

@@ -26,6 +26,13 @@ ResponseVerdict::Result ResponseVerdict::judge(const StreamFrame &frame, const Q
         }
         return Result{TransactionStatus::Malformed, 0, frame.problem};
     }
+    if (frame.status == FrameStatus::Truncated) {
+        Result cut = judge(frame.bytes, request);
+        cut.status = TransactionStatus::Malformed;
+        cut.exceptionCode = 0;
+        cut.problem = QStringLiteral("the answer was cut short: ") + frame.problem;
+        return cut;
+    }
     return judge(frame.bytes, request);
 }
 

@@ -19,6 +19,9 @@ namespace mbscope {
 //   quantity that does not echo the request...): Malformed, with the first error said;
 // - otherwise an exception function code (bit 7 set): Exception with its code (V1.1b3, 7);
 // - otherwise Ok. Warnings and notes do not change the status.
+// - an RTU frame the silence cut before the length its function code predicts (FrameStatus::
+//   Truncated): Malformed, "the answer was cut short: ...", though its CRC fails too, since what
+//   the line did was lose its end (the bus monitor says the same of the same answer);
 // Delimited frames carry no Modbus: the framer's status decides (a bad checksum is a CrcError).
 // One instance per engine: the Dissection is reused, so a verdict allocates nothing on valid frames.
 //

@@ -100,7 +100,9 @@ void Statistics::add(const Transaction &transaction)
 
 void Statistics::clear()
 {
+    const bool onTheLine = m_onTheLine;
     *this = Statistics(m_spec);
+    m_onTheLine = onTheLine;
 }
 
 quint64 Statistics::failed() const
@@ -116,6 +118,8 @@ double Statistics::errorRate() const
 
 QString Statistics::latencyOrigin() const
 {
+    if (m_onTheLine)
+        return m_fromLineEnd > 0 || m_fromWrite > 0 ? QStringLiteral("the request's last byte as read off the line") : QString();
     if (m_fromLineEnd > 0 && m_fromWrite > 0)
         return QStringLiteral("the computed end of the request's transmission (%1 answers), the write (%2)")
             .arg(m_fromLineEnd)
@@ -182,7 +186,9 @@ QJsonObject Statistics::toJson() const
         {QStringLiteral("histogram"), histogram().toJson()},
         {QStringLiteral("outran_line"), double(m_outranLine)},
     };
-    if (m_fromLineEnd > 0 || m_fromWrite > 0)
+    if (m_onTheLine && (m_fromLineEnd > 0 || m_fromWrite > 0))
+        out.insert(QStringLiteral("latency_from"), QStringLiteral("request_last_byte"));
+    else if (m_fromLineEnd > 0 || m_fromWrite > 0)
         out.insert(QStringLiteral("latency_from"), m_fromLineEnd == 0 ? QStringLiteral("write")
                                                    : m_fromWrite == 0 ? QStringLiteral("line_end")
                                                                       : QStringLiteral("mixed"));

@@ -57,6 +57,11 @@ public:
     [[nodiscard]] quint64 measuredFromWrite() const { return m_fromWrite; }
     [[nodiscard]] quint64 measuredFromLineEnd() const { return m_fromLineEnd; }
     [[nodiscard]] quint64 outranLine() const { return m_outranLine; }
+    // A listen-only tap (the bus monitor) writes nothing: its latencies run from the request's
+    // last byte as it read it off the line, which latencyOrigin() and "latency_from"
+    // ("request_last_byte") then say. Kept by clear().
+    void setMeasuredOnTheLine(bool onTheLine) { m_onTheLine = onTheLine; }
+    [[nodiscard]] bool isMeasuredOnTheLine() const { return m_onTheLine; }
     // "the write" / "the computed end of transmission" / both, for the output; empty without answers.
     [[nodiscard]] QString latencyOrigin() const;
     // The warning when answers outran their line; empty when none did.
@@ -70,7 +75,7 @@ public:
     // {"count","ok","exceptions","timeouts","crc_errors","malformed","late","link_errors",
     //  "unexpected","broadcasts","exceptions_by_code":{"0x02":n,...},
     //  "latency_us":{"count","min","mean","median","p90","p95","p99","max","stddev"},
-    //  "latency_from":"write"|"line_end"|"mixed" (absent without answers),"outran_line":n,
+    //  "latency_from":"write"|"line_end"|"mixed"|"request_last_byte" (absent without answers),"outran_line":n,
     //  "histogram":{"bin_edges_us","counts","underflow","overflow"}}
     // Latency figures are microseconds (ns / 1000, not rounded); null when nothing was answered.
     [[nodiscard]] QJsonObject toJson() const;
@@ -99,6 +104,7 @@ private:
     quint64 m_fromWrite = 0;
     quint64 m_fromLineEnd = 0;
     quint64 m_outranLine = 0;
+    bool m_onTheLine = false;
     std::array<quint64, 256> m_exceptionsByCode{};
 };
 

@@ -145,23 +145,27 @@ void BusFramer::frame(const StreamFrame &f)
 
 void BusFramer::skipped(const SkippedBytes &run)
 {
-    m_counters.skippedBytes += run.count();
-    ++m_counters.skippedRuns;
-    ++m_number;
-    if (m_garbageSink)
-        m_garbageSink(run, m_lastFeedNs);
-    if (m_framing != Framing::Rtu || run.reason != SkipReason::ChecksumMismatch)
+    const bool crcError = m_framing == Framing::Rtu && run.reason == SkipReason::ChecksumMismatch;
+    if (crcError)
+        ++m_counters.crcErrors;
+    if (!crcError || run.count() < 4) {
+        m_counters.skippedBytes += run.count();
+        ++m_counters.skippedRuns;
+        ++m_number;
+        if (m_garbageSink)
+            m_garbageSink(run, m_lastFeedNs);
         return;
-    ++m_counters.crcErrors;
-    if (run.count() < 4)
-        return;
+    }
     // A damaged answer still names its unit and function: the pairer gives it to the request
-    // waiting for them, if any (as the engine does with a bad CRC).
+    // waiting for them, if any (as the engine does with a bad CRC). It is an answer the line
+    // carried, counted with the frames and answers as the exchange listing it is (tryout 8,
+    // item 5: "answers 8" beside 10 answered exchanges), not as bytes no frame could use.
     const FrameKeys keys = ResponseMatcher::keysOf(run.bytes, Framing::Rtu);
     if (m_waiting && keys.valid && keys.unit == m_waitingUnit
         && ResponseMatcher::answersFunction(m_waitingFunction, keys.functionCode))
         m_waiting = false;
-    --m_number; // numbered by emitFrame
+    ++m_counters.frames;
+    ++m_counters.responses;
     emitFrame(run.bytes, m_lastFeedNs, Direction::Response, FrameStatus::Malformed, true);
 }
 

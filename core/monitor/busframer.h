@@ -15,13 +15,13 @@ class StreamFramer;
 
 // What a listen-only tap on a serial line saw, frame by frame.
 struct BusCounters {
-    quint64 frames = 0;       // whole frames (valid, truncated or without a length rule)
+    quint64 frames = 0;       // frames (valid, truncated, without a length rule, or RTU answers with a wrong CRC)
     quint64 requests = 0;
-    quint64 responses = 0;
+    quint64 responses = 0;    // answers, the damaged ones included
     quint64 crcErrors = 0;    // frames whose CRC (RTU) or LRC (ASCII) was wrong
     quint64 truncated = 0;    // RTU frames a silence cut before the length their code predicts
     quint64 malformed = 0;    // ASCII frames with bad digits or too short; RTU frames without a length rule and a valid CRC
-    qint64 skippedBytes = 0;  // bytes no frame could use (the damaged frames' bytes included)
+    qint64 skippedBytes = 0;  // bytes no frame could use (a run with a wrong CRC too short to name its unit and function)
     quint64 skippedRuns = 0;
 };
 
@@ -36,9 +36,9 @@ struct BusCounters {
 //   2.1) and the frame's length is the one an answer would have: a read request (8 bytes) is never
 //   taken for the answer to the read before it. Anything else is a request; a request to unit 0
 //   (broadcast) waits for no answer;
-// - an RTU run of bytes the framer skipped for a wrong CRC is counted as a CRC error, and offered
-//   to the pairer as an undelimited answer (CapturedFrame::undelimited): when a request with its
-//   unit and function is waiting, it is that request's damaged answer.
+// - an RTU run of bytes the framer skipped for a wrong CRC is counted as a CRC error, and (4 bytes
+//   or more) as a frame and an answer offered to the pairer undelimited (CapturedFrame::undelimited):
+//   when a request with its unit and function is waiting, it is that request's damaged answer.
 // Frames come out in stream order through the sink, numbered 1, 2, 3... in CapturedFrame::packet.
 class BusFramer
 {

@@ -31,6 +31,7 @@ BusMonitor::BusMonitor(const LinkUrl &url, const Options &options, QObject *pare
 {
     m_link = Link::create(url, this);
     m_link->setListenOnly(true);
+    m_statistics.setMeasuredOnTheLine(true);
     m_silenceNs = options.silenceNs;
     if (m_silenceNs <= 0)
         m_silenceNs = m_link->t35Ns() > 0 ? qMax(m_link->t35Ns(), kMinSilenceNs) : kNetworkSilenceNs;

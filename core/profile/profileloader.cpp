@@ -5,6 +5,7 @@
 #include "json/jsonreader.h"
 #include "linetablereader.h"
 #include "profileunitreader.h"
+#include "protocol/functioncode.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QDir>
@@ -14,6 +15,8 @@
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
 #include <QtCore/QStringList>
+
+#include <algorithm>
 
 namespace mbscope {
 
@@ -54,6 +57,43 @@ std::optional<QJsonObject> parseObject(const QByteArray &json, const QString &so
         return std::nullopt;
     }
     return doc.object();
+}
+
+// A unit that lists its functions and has a table none of them reads: every read of it gets
+// exception 01 (docs/profiles.md's own example once left Read Coils out beside its coils).
+QList<ProfileProblem> unreadableTables(const DeviceProfile &profile, const QString &source)
+{
+    struct Table {
+        SimTable table;
+        const char *key;
+        QList<quint8> reads; // the function codes that read it (V1.1b3 6.1-6.4, 6.17)
+    };
+    const Table tables[] = {{SimTable::Coils, "coils", {0x01}},
+                            {SimTable::DiscreteInputs, "discrete", {0x02}},
+                            {SimTable::HoldingRegisters, "holding", {0x03, 0x17}},
+                            {SimTable::InputRegisters, "input", {0x04}}};
+    QList<ProfileProblem> warnings;
+    for (qsizetype i = 0; i < profile.units.size(); ++i) {
+        const UnitProfile &unit = profile.units.at(i);
+        if (unit.functions.isEmpty())
+            continue;
+        for (const Table &t : tables) {
+            if (unit.entriesOf(t.table).isEmpty())
+                continue;
+            if (std::any_of(t.reads.cbegin(), t.reads.cend(), [&unit](quint8 code) { return unit.functions.contains(code); }))
+                continue;
+            const quint8 read = t.reads.constFirst();
+            ProfileProblem w;
+            w.source = source;
+            w.path = JsonReader::member(JsonReader::member(JsonReader::element(QStringLiteral("units"), i), "tables"), t.key);
+            w.message = QStringLiteral("the table has entries but its read function %1 (%2) is not in functions: every read "
+                                       "of it gets exception 01 (add \"0x%1\" to functions)")
+                            .arg(QString::number(read, 16).toUpper().rightJustified(2, QLatin1Char('0')),
+                                 QLatin1String(functionName(read)));
+            warnings.append(w);
+        }
+    }
+    return warnings;
 }
 
 std::optional<QByteArray> readFile(const QString &path, const QString &what, QList<ProfileProblem> *problems)
@@ -216,6 +256,7 @@ ProfileLoadResult ProfileLoader::parse(const QByteArray &json, const QString &so
 
     if (!result.problems.isEmpty())
         return result;
+    result.warnings = unreadableTables(profile, source);
     result.profile = profile;
     result.ok = true;
     return result;

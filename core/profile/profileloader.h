@@ -13,8 +13,12 @@ namespace mbscope {
 struct ProfileLoadResult {
     DeviceProfile profile;          // empty unless ok: nothing is ever half loaded
     QList<ProfileProblem> problems; // every problem found, in document order
+    // What loads but is likely a mistake, with where it is: a table no function in the unit's
+    // `functions` can read ("units[0].tables.coils: ... function 01 is not in functions").
+    QList<ProfileProblem> warnings;
     bool ok = false;
     [[nodiscard]] QString errorText() const { return ProfileProblem::join(problems); }
+    [[nodiscard]] QString warningText() const { return ProfileProblem::join(warnings); }
 };
 
 struct FaultRulesLoadResult {

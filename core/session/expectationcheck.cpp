@@ -35,8 +35,46 @@ QString ExpectationCheck::describeAnswer(const Transaction &t)
     return QStringLiteral("%1: %2").arg(transactionStatusName(t.status), t.problem);
 }
 
+QString ExpectationCheck::requestProblem(const Transaction &t, Framing framing, bool delimited)
+{
+    if (delimited || t.request.isEmpty())
+        return {};
+    DissectOptions options;
+    options.framing = framing;
+    options.direction = Direction::Request;
+    const Dissection d = Dissector::dissect(t.request, options);
+    int errors = 0;
+    QString first;
+    for (const Field &f : d.fields.fields()) {
+        if (f.severity != Severity::Error)
+            continue;
+        if (errors++ == 0)
+            first = QString::fromLatin1(f.key) + QStringLiteral(": ") + f.message;
+    }
+    if (errors == 0)
+        return {};
+    // send's words (app/transactionreport.cpp), so that run and send say the same of one frame.
+    return QStringLiteral("the request itself is malformed, %1 error(s) (%2)").arg(errors).arg(first);
+}
+
 ExpectationCheck::Outcome ExpectationCheck::check(const StepExpectation &e, const Transaction &t, Framing framing,
                                                   bool delimited)
+{
+    Outcome out = checkAnswer(e, t, framing, delimited);
+    // A device says nothing to a frame it cannot read (Serial Line V1.02, 2.4.2: a frame with a
+    // wrong CRC is discarded): "no answer within the timeout" alone hides why (tryout 8, item 6).
+    const QString problem = requestProblem(t, framing, delimited);
+    if (problem.isEmpty())
+        return out;
+    if (out.passed())
+        out.checks.append(problem + QStringLiteral(", sent as written"));
+    else
+        out.failures.append(problem);
+    return out;
+}
+
+ExpectationCheck::Outcome ExpectationCheck::checkAnswer(const StepExpectation &e, const Transaction &t, Framing framing,
+                                                        bool delimited)
 {
     Outcome out;
     auto fail = [&](const QString &why) {

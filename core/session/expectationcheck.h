@@ -20,10 +20,20 @@ public:
         [[nodiscard]] bool passed() const { return failures.isEmpty(); }
     };
     // framing: the link's; delimited links carry no Modbus framing, so fields cannot be read there.
+    // A request the dissector finds errors in adds requestProblem() to the failures of a step
+    // that failed, and to the checks of one that passed (a bad CRC sent on purpose, expecting no
+    // answer).
     [[nodiscard]] static Outcome check(const StepExpectation &expectation, const Transaction &transaction,
                                        Framing framing, bool delimited = false);
+    // "the request itself is malformed, 1 error(s) (rtu.crc: ...)", as send says it; empty when
+    // the request is well formed (or the link is delimited).
+    [[nodiscard]] static QString requestProblem(const Transaction &transaction, Framing framing, bool delimited);
     // "no answer within the timeout", "an exception 0x02 (Illegal Data Address)", "a CRC error: ..."
     [[nodiscard]] static QString describeAnswer(const Transaction &transaction);
+
+private:
+    [[nodiscard]] static Outcome checkAnswer(const StepExpectation &expectation, const Transaction &transaction,
+                                             Framing framing, bool delimited);
 };
 
 } // namespace mbscope

@@ -250,8 +250,15 @@ SessionLoadResult SessionReader::parse(const QByteArray &json, const QString &so
         for (qsizetype i = 0; i < requests->size(); ++i) {
             const QString at = JsonReader::element(QStringLiteral("requests"), i);
             const auto r = SessionRequestReader::read(reader, requests->at(i), at, true);
-            if (!r)
+            if (!r) {
+                // A request with problems of its own still has its name: a step or a poll naming
+                // it is not told that no such request exists, and the names a misspelt one is
+                // offered are all of the document's (tryout 8, item 11: two were left out).
+                const QJsonValue name = requests->at(i).toObject().value(QLatin1String("name"));
+                if (name.isString() && !name.toString().trimmed().isEmpty() && !names.contains(name.toString()))
+                    names.append(name.toString());
                 continue;
+            }
             if (names.contains(r->name))
                 reader.error(JsonReader::member(at, "name"),
                              QStringLiteral("'%1' names an earlier request too: steps and polls refer to requests by name").arg(r->name));

@@ -390,6 +390,13 @@ void TestCliCapture::plots()
     const QByteArray bytes = readFile(path);
     QVERIFY2(bytes.startsWith(magic), bytes.left(16).toHex(' ').constData());
     QVERIFY(bytes.size() > 1000);
+
+    // analyze draws the same plot and says where, as poll does (tryout 8, item 9: it said nothing).
+    QFile::remove(path);
+    const CliResult a = runMbscope({QStringLiteral("analyze"), m_failing, option, path});
+    QVERIFY2(a.finished && a.exitCode == 1, a.describe().constData()); // the capture holds failures
+    QVERIFY2(a.outText().contains(QStringLiteral("\nplot          ") + path + QLatin1Char('\n')), a.describe().constData());
+    QVERIFY2(readFile(path).startsWith(magic), a.describe().constData());
 }
 
 void TestCliCapture::usageErrors_data()

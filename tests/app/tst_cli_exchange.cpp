@@ -46,6 +46,8 @@ private slots:
     void readOverSerialPty();
     void help_data();
     void help();
+    void usageLine_data();
+    void usageLine();
     void topLevelHelp_data();
     void topLevelHelp();
 };
@@ -487,6 +489,32 @@ void TestCliExchange::help()
     QVERIFY2(r.outText().startsWith(QStringLiteral("Usage: mbscope %1 [options]\n").arg(command)), r.describe());
     for (const char *expected : {"--target <url>", "--timeout <duration>", "--json", "Exit status: 0"})
         QVERIFY2(r.outText().contains(QLatin1String(expected)), r.describe());
+}
+
+void TestCliExchange::usageLine_data()
+{
+    QTest::addColumn<QString>("command");
+    QTest::addColumn<QString>("usage");
+    // Tryout 8, item 10: decode and simulate showed the executable's path, not their name, and
+    // analyze, export and replay left their source out.
+    QTest::newRow("decode") << QStringLiteral("decode") << QStringLiteral("Usage: mbscope decode [options] [hex...]");
+    QTest::newRow("simulate") << QStringLiteral("simulate") << QStringLiteral("Usage: mbscope simulate [options]");
+    QTest::newRow("analyze") << QStringLiteral("analyze") << QStringLiteral("Usage: mbscope analyze [options] capture");
+    QTest::newRow("export") << QStringLiteral("export") << QStringLiteral("Usage: mbscope export [options] source");
+    QTest::newRow("replay") << QStringLiteral("replay") << QStringLiteral("Usage: mbscope replay [options] source");
+    QTest::newRow("run") << QStringLiteral("run") << QStringLiteral("Usage: mbscope run [options] SESSION");
+    QTest::newRow("monitor") << QStringLiteral("monitor") << QStringLiteral("Usage: mbscope monitor [options] url");
+    QTest::newRow("watch") << QStringLiteral("watch") << QStringLiteral("Usage: mbscope watch [options] session");
+    QTest::newRow("poll") << QStringLiteral("poll") << QStringLiteral("Usage: mbscope poll [options]");
+}
+
+void TestCliExchange::usageLine()
+{
+    QFETCH(QString, command);
+    QFETCH(QString, usage);
+    const CliResult r = runMbscope({command, QStringLiteral("--help")});
+    QVERIFY2(r.exitCode == 0, r.describe());
+    QCOMPARE(r.outText().section(QLatin1Char('\n'), 0, 0), usage);
 }
 
 void TestCliExchange::topLevelHelp_data()

@@ -143,6 +143,7 @@ class TestCliMonitor : public QObject
 private Q_SLOTS:
     void initTestCase();
     void rtuBusWithNoise();
+    void pollAndMonitorAgree();
     void asciiBus();
     void deviceServerPort();
     void stopsOnInterrupt();
@@ -217,7 +218,8 @@ void TestCliMonitor::rtuBusWithNoise()
     QCOMPARE(line.value(QStringLiteral("crc_errors")).toInt(), 2);
     QCOMPARE(line.value(QStringLiteral("truncated")).toInt(), 1);
     QCOMPARE(line.value(QStringLiteral("requests")).toInt(), polls);
-    QCOMPARE(line.value(QStringLiteral("responses")).toInt(), polls - 2); // the damaged two were not frames
+    QCOMPARE(line.value(QStringLiteral("responses")).toInt(), polls); // the damaged two are answers too (tryout 8, item 5)
+    QCOMPARE(line.value(QStringLiteral("skipped_bytes")).toInt(), 0);
     QCOMPARE(line.value(QStringLiteral("unmatched_responses")).toInt(), 0);
     QVERIFY(o.value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("count")).toInt() == masterOk);
 
@@ -241,6 +243,53 @@ void TestCliMonitor::rtuBusWithNoise()
     QCOMPARE(a.value(QStringLiteral("ok")).toInt(), masterOk);
     QCOMPARE(a.value(QStringLiteral("crc_errors")).toInt(), 2);
     QCOMPARE(a.value(QStringLiteral("malformed")).toInt(), 1);
+}
+
+void TestCliMonitor::pollAndMonitorAgree()
+{
+    // Tryout 8, item 5: with mbscope poll as the master, the answer the line cut short was a
+    // "crc error" to poll and "malformed" to the monitor; the monitor's bus line counted the
+    // CRC-damaged answers as skipped bytes, not answers; and its latency was said to be "from the
+    // request's write", which a monitor never makes.
+    Bus bus;
+    QString error;
+    QVERIFY2(bus.start({QStringLiteral("--flip"), QStringLiteral("2"), QStringLiteral("--drop"), QStringLiteral("4")}, &error), qPrintable(error));
+    Background sim;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("arduino-rs485"), QStringLiteral("--listen"),
+                        serialUrl(QStringLiteral("rtu"), bus.slave)},
+                       &error),
+             qPrintable(error));
+    const int polls = 5;
+    Monitor monitor;
+    QVERIFY2(monitor.start({serialUrl(QStringLiteral("rtu"), bus.monitor), QStringLiteral("--count"), QString::number(polls),
+                            QStringLiteral("--duration"), QStringLiteral("60s")},
+                           &error),
+             qPrintable(error));
+    const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), serialUrl(QStringLiteral("rtu"), bus.master),
+                                       QStringLiteral("--function"), QStringLiteral("3"), QStringLiteral("--address"), QStringLiteral("0"),
+                                       QStringLiteral("--quantity"), QStringLiteral("2"), QStringLiteral("--interval"), QStringLiteral("50ms"),
+                                       QStringLiteral("--timeout"), QStringLiteral("500ms"), QStringLiteral("--count"), QString::number(polls),
+                                       QStringLiteral("--json")});
+    QVERIFY2(poll.exitCode == 1, poll.describe().constData());
+    const QJsonObject p = poll.json();
+    QCOMPARE(p.value(QStringLiteral("count")).toInt(), polls);
+    QCOMPARE(p.value(QStringLiteral("ok")).toInt(), polls - 2);
+    QCOMPARE(p.value(QStringLiteral("crc_errors")).toInt(), 1);
+    QCOMPARE(p.value(QStringLiteral("malformed")).toInt(), 1); // the answer cut short, as the monitor says
+
+    QVERIFY2(monitor.wait(30000), monitor.describe().constData());
+    const QString text = QString::fromUtf8(monitor.out());
+    QVERIFY2(text.contains(QRegularExpression(QStringLiteral("\\n +4  unit 1 +0x03 Read Holding Registers +malformed .*cut short"))), qPrintable(text));
+    QVERIFY2(text.contains(QRegularExpression(QStringLiteral("\\n +2  unit 1 +0x03 Read Holding Registers +crc_error "))), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("bus           bytes %1  frames %2  requests %3  answers %3\n").arg(polls * 17 - 1).arg(polls * 2).arg(polls)),
+             qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("damaged       crc errors 1  truncated 1  malformed 0  skipped bytes 0  unmatched answers 0\n")),
+             qPrintable(text));
+    QVERIFY2(text.contains(QRegularExpression(QStringLiteral("\\ncrc errors +1\\n"))) && text.contains(QRegularExpression(QStringLiteral("\\nmalformed +1\\n"))),
+             qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("latency from  the request's last byte as read off the line to the answer's last byte\n")),
+             qPrintable(text));
+    QVERIFY2(!text.contains(QStringLiteral("write")), qPrintable(text));
 }
 
 void TestCliMonitor::asciiBus()

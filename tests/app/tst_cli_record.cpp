@@ -4,7 +4,7 @@
 // a recorded poll analysed with the counts poll printed, replayed with no --target, exported to
 // pcapng that tshark decodes; a recording poll killed with SIGKILL and its cut journal recovered;
 // simulate --record (both directions, fault notes); poll --print values and --csv; an existing
-// journal refused.
+// journal refused; a poll or monitor whose link never came up leaves no journal (tryout 8, item 2).
 
 #include "clitest.h"
 
@@ -12,6 +12,7 @@
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QFile>
+#include <QtCore/QFileInfo>
 #include <QtCore/QJsonArray>
 #include <QtCore/QProcess>
 #include <QtCore/QRegularExpression>
@@ -57,6 +58,7 @@ private slots:
     void exchangeCommandsRecord();
     void runRecordsIntoTheSessionsCapture();
     void existingJournalRefused();
+    void unreachableTargetLeavesNoJournal();
     void pollPrintsValuesAndCsv();
 
 private:
@@ -355,6 +357,32 @@ void TestCliRecord::existingJournalRefused()
     const CliResult log = runMbscope({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--log"), path});
     QCOMPARE(log.exitCode, 2);
     QVERIFY2(log.errText().contains(QStringLiteral("--log was replaced by --record FILE")), log.describe().constData());
+}
+
+void TestCliRecord::unreachableTargetLeavesNoJournal()
+{
+    // Tryout 8, item 2: nothing listens on the port, so nothing was written and nothing answered.
+    // The journal used to hold a made-up answer (an empty frame in with the link error, which
+    // analyze counted as an answer matching no request), and the file left behind refused the
+    // same command run again.
+    const QString path = m_dir.filePath(QStringLiteral("p1.mbscope.journal"));
+    const QStringList poll{QStringLiteral("poll"), QStringLiteral("--target"), QStringLiteral("rtu-tcp://127.0.0.1:%1").arg(closedPort()),
+                           QStringLiteral("--hex"), QStringLiteral("01 03 00 79 00 16 15 DD"), QStringLiteral("--count"),
+                           QStringLiteral("2"), QStringLiteral("--record"), path};
+    for (int run = 0; run < 2; ++run) {
+        const CliResult r = runMbscope(poll);
+        QVERIFY2(r.exitCode != 0 && (r.outText() + r.errText()).contains(QStringLiteral("refused")), r.describe().constData());
+        QVERIFY2(!r.errText().contains(QStringLiteral(" exists: a journal is never overwritten")), r.describe().constData());
+        QVERIFY2(r.errText().contains(QStringLiteral("recorded no frame: removed ") + path), r.describe().constData());
+        QVERIFY2(!QFileInfo::exists(path), r.describe().constData());
+    }
+    // The monitor on a port that is not there: the same.
+    const QString bus = m_dir.filePath(QStringLiteral("busx.mbscope.journal"));
+    const CliResult m = runMbscope({QStringLiteral("monitor"), QStringLiteral("rtu://%1?baud=9600").arg(m_dir.filePath(QStringLiteral("no-such-tty"))),
+                                    QStringLiteral("--record"), bus});
+    QCOMPARE(m.exitCode, 2);
+    QVERIFY2(m.errText().contains(QStringLiteral("recorded no frame: removed ") + bus), m.describe().constData());
+    QVERIFY2(!QFileInfo::exists(bus), m.describe().constData());
 }
 
 void TestCliRecord::pollPrintsValuesAndCsv()

@@ -69,6 +69,7 @@ private slots:
     void cleanupTestCase();
     void examplePasses();
     void failingPlan();
+    void malformedRequestSaid();
     void json();
     void brokenDocument();
     void usageAndLinkErrors_data();
@@ -160,6 +161,33 @@ void TestCliRun::failingPlan()
     QCOMPARE(cases, (QList<std::pair<QString, QString>>{{QStringLiteral("right"), QString()},
                                                         {QStringLiteral("wrong"), QStringLiteral("failure")},
                                                         {QStringLiteral("silent"), QStringLiteral("failure")}}));
+}
+
+void TestCliRun::malformedRequestSaid()
+{
+    // Tryout 8, item 6: a step sending a frame with a wrong CRC failed with only "no answer
+    // within the timeout"; send says the request itself is malformed, and so does run now. A step
+    // that sends it on purpose and expects no answer passes, with the same words among its checks.
+    const QString plan = m_dir.filePath(QStringLiteral("badcrc.mbscope.json"));
+    QFile file(plan);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "mbscope-session", "version": 1, "name": "bad crc",
+        "plan": [{"name": "typo", "send": {"hex": "01 03 00 79 00 01 54 13"}},
+                 {"name": "ignored", "send": {"hex": "01 03 00 79 00 01 54 13"}, "expect": {"noAnswer": true}}]})");
+    file.close();
+    const CliResult r = runMbscope({QStringLiteral("run"), plan, QStringLiteral("--target"), m_target});
+    QVERIFY2(r.finished && r.exitCode == 1, r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("expected an answer, got no answer within the timeout")), r.out.constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("       the request itself is malformed, 1 error(s) (rtu.crc: ")), r.out.constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("2 steps: 1 passed, 1 failed")), r.out.constData());
+    const CliResult j = runMbscope({QStringLiteral("run"), plan, QStringLiteral("--target"), m_target, QStringLiteral("--json")});
+    const QJsonArray steps = j.json().value(QLatin1String("steps")).toArray();
+    QCOMPARE(steps.size(), 2);
+    QCOMPARE(steps.at(1).toObject().value(QLatin1String("outcome")).toString(), QStringLiteral("passed"));
+    const QJsonArray reasons = steps.at(1).toObject().value(QLatin1String("reasons")).toArray();
+    QVERIFY2(reasons.size() == 2 && reasons.at(1).toString().startsWith(QStringLiteral("the request itself is malformed, 1 error(s) (rtu.crc: "))
+                 && reasons.at(1).toString().endsWith(QStringLiteral(", sent as written")),
+             j.out.constData());
 }
 
 void TestCliRun::json()

@@ -202,6 +202,7 @@ private slots:
         QFETCH(QString, name);
         const ProfileLoadResult r = ProfileLoader::loadFile(shippedPath(name.toLatin1().constData()));
         QVERIFY2(r.ok, qPrintable(r.errorText()));
+        QVERIFY2(r.warnings.isEmpty(), qPrintable(r.warningText()));
         QCOMPARE(r.profile.name, name);
         QVERIFY(!r.profile.description.isEmpty());
         QVERIFY(!r.profile.endpoints.isEmpty());
@@ -225,6 +226,7 @@ private slots:
     void faultsFileErrors();
     void applier();
     void documentedExamples();
+    void unreadableTableWarned();
 };
 
 void TestProfileLoader::contentErrors_data()
@@ -508,6 +510,8 @@ void TestProfileLoader::documentedExamples()
     QVERIFY(blocks.size() >= 3);
     const ProfileLoadResult profile = ProfileLoader::parse(blocks.at(0), QStringLiteral("profiles.md"));
     QVERIFY2(profile.ok, qPrintable(profile.errorText()));
+    // Tryout 8, item 14: the example had coils and no 01 in functions, so Read Coils got exception 01.
+    QVERIFY2(profile.warnings.isEmpty(), qPrintable(profile.warningText()));
     QCOMPARE(profile.profile.units.at(0).entries.size(), 5);
     QCOMPARE(profile.profile.faults.rules.size(), 2);
     const FaultRulesLoadResult faults = ProfileLoader::parseFaults(blocks.at(1), QStringLiteral("profiles.md"));
@@ -518,11 +522,30 @@ void TestProfileLoader::documentedExamples()
         if (blocks.at(i).contains("\"units\"")) {
             const ProfileLoadResult r = ProfileLoader::parse(blocks.at(i), QStringLiteral("profiles.md block %1").arg(i));
             QVERIFY2(r.ok, qPrintable(r.errorText()));
+            QVERIFY2(r.warnings.isEmpty(), qPrintable(r.warningText()));
         } else {
             const FaultRulesLoadResult r = ProfileLoader::parseFaults(blocks.at(i), QStringLiteral("profiles.md block %1").arg(i));
             QVERIFY2(r.ok, qPrintable(r.errorText()));
         }
     }
+}
+
+// A table whose read function the unit's functions leave out loads, with a warning that says
+// where and what every read of it gets (tryout 8, item 14).
+void TestProfileLoader::unreadableTableWarned()
+{
+    const QByteArray json = R"({"name": "x", "units": [
+        {"id": 1, "functions": ["0x03"], "tables": {"holding": [{"address": 0}]}},
+        {"id": 2, "functions": ["0x03", "0x05", "0x17"], "tables": {"coils": [{"address": 0}], "input": [{"address": 0}],
+                                                            "holding": [{"address": 0}]}},
+        {"id": 3, "tables": {"coils": [{"address": 0}]}}]})";
+    const ProfileLoadResult r = ProfileLoader::parse(json, QStringLiteral("x.json"));
+    QVERIFY2(r.ok, qPrintable(r.errorText()));
+    QCOMPARE(r.warningText(),
+             QStringLiteral("x.json: units[1].tables.coils: the table has entries but its read function 01 (Read Coils) is not in "
+                            "functions: every read of it gets exception 01 (add \"0x01\" to functions)\n"
+                            "x.json: units[1].tables.input: the table has entries but its read function 04 (Read Input Registers) "
+                            "is not in functions: every read of it gets exception 01 (add \"0x04\" to functions)"));
 }
 
 QTEST_GUILESS_MAIN(TestProfileLoader)

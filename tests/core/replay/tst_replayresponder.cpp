@@ -36,11 +36,12 @@ CaptureExchange recorded(quint8 unit, const char *request, const char *answer, q
 ReplayScript script()
 {
     ReplayScript s;
-    s.add(recorded(1, "0300790001", "0302041a", 0));
-    s.add(recorded(1, "0300790001", "0302041b", 10));
-    s.add(recorded(3, "0300790001", "", 20));
-    s.add(recorded(1, "0300790001", "0302041c", 30));
-    s.add(recorded(1, "0302000001", "8302", 40));
+    // From 1 ms: a request sent at monotonic 0 reads as never written (Transaction::latencyNs).
+    s.add(recorded(1, "0300790001", "0302041a", 1));
+    s.add(recorded(1, "0300790001", "0302041b", 11));
+    s.add(recorded(3, "0300790001", "", 21));
+    s.add(recorded(1, "0300790001", "0302041c", 31));
+    s.add(recorded(1, "0302000001", "8302", 41));
     return s;
 }
 
