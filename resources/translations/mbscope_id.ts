@@ -884,7 +884,7 @@
     <message>
         <location line="+3"/>
         <source>%1: %2 exception</source>
-        <translation>%1: exception %2</translation>
+        <translation>%1: pengecualian %2</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -1137,7 +1137,7 @@
         <location line="+1"/>
         <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Bus Exception Error Count</source>
-        <translation>Kembalikan Jumlah Error Exception Bus</translation>
+        <translation>Kembalikan Jumlah Error Pengecualian Bus</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1208,7 +1208,7 @@
     <message>
         <location line="+1"/>
         <source>Read Exception Status</source>
-        <translation>Baca Status Exception</translation>
+        <translation>Baca Status Pengecualian</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1284,7 +1284,7 @@
         <location line="+1"/>
         <location filename="../../core/protocol/pdudissector.cpp" line="+74"/>
         <source>Exception response</source>
-        <translation>Respons exception</translation>
+        <translation>Respons pengecualian</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1349,7 +1349,7 @@
     <message>
         <location line="+1"/>
         <source>Unknown exception code</source>
-        <translation>Kode exception tidak dikenal</translation>
+        <translation>Kode pengecualian tidak dikenal</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -1404,12 +1404,12 @@
     <message>
         <location line="+2"/>
         <source>Unassigned exception code: 0x09 is not defined by the Modbus specification</source>
-        <translation>Kode exception yang belum ditetapkan: 0x09 tidak didefinisikan oleh spesifikasi Modbus</translation>
+        <translation>Kode pengecualian yang belum ditetapkan: 0x09 tidak didefinisikan oleh spesifikasi Modbus</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Unknown exception code: the Modbus specification defines 0x01-0x08, 0x0A and 0x0B</source>
-        <translation>Kode exception tidak dikenal: spesifikasi Modbus mendefinisikan 0x01-0x08, 0x0A dan 0x0B</translation>
+        <translation>Kode pengecualian tidak dikenal: spesifikasi Modbus mendefinisikan 0x01-0x08, 0x0A dan 0x0B</translation>
     </message>
     <message>
         <location filename="../../core/protocol/modiconreference.cpp" line="+197"/>
@@ -1530,7 +1530,7 @@
     <message>
         <location line="+16"/>
         <source>Exception status</source>
-        <translation>Status exception</translation>
+        <translation>Status pengecualian</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -1816,7 +1816,7 @@
     <message>
         <location line="+1"/>
         <source>Bus exception error count</source>
-        <translation>Jumlah error exception bus</translation>
+        <translation>Jumlah error pengecualian bus</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2237,7 +2237,7 @@
     <message>
         <location line="+10"/>
         <source>Exception code</source>
-        <translation>Kode exception</translation>
+        <translation>Kode pengecualian</translation>
     </message>
     <message>
         <location filename="../../core/protocol/dissector.cpp" line="+41"/>
@@ -2572,12 +2572,12 @@
     <message>
         <location line="+1"/>
         <source>Exceptions</source>
-        <translation>Exception</translation>
+        <translation>Pengecualian</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Exception %1 %2</source>
-        <translation>Exception %1 %2</translation>
+        <translation>Pengecualian %1 %2</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2680,7 +2680,7 @@
     <message>
         <location line="+1"/>
         <source>exceptions (%1)</source>
-        <translation>exception (%1)</translation>
+        <translation>pengecualian (%1)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2718,7 +2718,7 @@
     <message>
         <location line="+1"/>
         <source>exception</source>
-        <translation>exception</translation>
+        <translation>pengecualian</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2738,7 +2738,7 @@
     <message>
         <location line="+77"/>
         <source>%1 transactions: %2 answered, %3 exceptions, %4 without a usable answer</source>
-        <translation>%1 transaksi: %2 terjawab, %3 exception, %4 tanpa jawaban yang bisa dipakai</translation>
+        <translation>%1 transaksi: %2 terjawab, %3 pengecualian, %4 tanpa jawaban yang bisa dipakai</translation>
     </message>
 </context>
 <context>
@@ -3283,6 +3283,10 @@
             <numerusform>%n pantauan ditambahkan dari pindaian: Daftar pantau &gt; Mulai semua (F5) membacanya.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>&lt;b&gt;Listening only&lt;/b&gt; to the built-in simulator on &lt;code&gt;%1&lt;/code&gt;: nothing is sent, and the simulator answers only requests, so the traffic stays empty unless another master polls it. Untick &lt;b&gt;Listen&lt;/b&gt; and press &lt;b&gt;Connect&lt;/b&gt; to send it requests.</source>
+        <translation>&lt;b&gt;Hanya menyimak&lt;/b&gt; simulator bawaan di &lt;code&gt;%1&lt;/code&gt;: tidak ada yang dikirim, dan simulator hanya menjawab permintaan, jadi lalu lintas tetap kosong kecuali ada master lain yang mem-polling-nya. Hilangkan centang &lt;b&gt;Simak&lt;/b&gt; lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk mengirim permintaan kepadanya.</translation>
+    </message>
 </context>
 <context>
     <name>mbscope::MapResultTree</name>
@@ -3800,7 +3804,7 @@
     <message>
         <location line="+2"/>
         <source>exception 0x%1</source>
-        <translation>exception 0x%1</translation>
+        <translation>pengecualian 0x%1</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4837,7 +4841,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+0"/>
         <source>Stop the replay before opening another capture.</source>
-        <translation>Hentikan replay sebelum membuka capture lain.</translation>
+        <translation>Hentikan putar ulang sebelum membuka capture lain.</translation>
     </message>
     <message>
         <location line="+39"/>
@@ -4867,7 +4871,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+14"/>
         <source>A replay is already running.</source>
-        <translation>Replay sudah berjalan.</translation>
+        <translation>Putar ulang sudah berjalan.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4882,22 +4886,22 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+2"/>
         <source>Connect to the device to replay to first.</source>
-        <translation>Sambungkan dulu ke perangkat tujuan replay.</translation>
+        <translation>Sambungkan dulu ke perangkat tujuan putar ulang.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stop the poll first: a replay sends one request at a time, as they were recorded.</source>
-        <translation>Hentikan polling dulu: replay mengirim satu permintaan per kali, sesuai rekamannya.</translation>
+        <translation>Hentikan polling dulu: putar ulang mengirim satu permintaan per kali, sesuai rekamannya.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 is a delimited link: it carries no Modbus framing to replay into.</source>
-        <translation>%1 adalah link berdelimiter: tidak membawa framing Modbus untuk replay.</translation>
+        <translation>%1 adalah link berdelimiter: tidak membawa framing Modbus untuk diputar ulang.</translation>
     </message>
     <message>
         <location line="+46"/>
         <source>The replay stopped: %1. %2</source>
-        <translation>Replay berhenti: %1. %2</translation>
+        <translation>Putar ulang berhenti: %1. %2</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4940,7 +4944,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+2"/>
         <source>exception</source>
-        <translation>exception</translation>
+        <translation>pengecualian</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4960,7 +4964,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+65"/>
         <source>No answers replayed yet.</source>
-        <translation>Belum ada jawaban yang di-replay.</translation>
+        <translation>Belum ada jawaban yang diputar ulang.</translation>
     </message>
     <message>
         <location line="-3"/>
@@ -4971,7 +4975,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <source>Answers replayed: %1, differing: %2 (%3).</source>
-        <translation>Jawaban di-replay: %1, berbeda: %2 (%3).</translation>
+        <translation>Jawaban diputar ulang: %1, berbeda: %2 (%3).</translation>
     </message>
     <message>
         <location line="+68"/>
@@ -5029,7 +5033,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+14"/>
         <source>Replaying the recorded requests to the target (%1 in all)…</source>
-        <translation>Me-replay permintaan terekam ke target (%1 seluruhnya)…</translation>
+        <translation>Memutar ulang permintaan terekam ke target (%1 seluruhnya)…</translation>
     </message>
     <message>
         <location line="+17"/>
@@ -5094,7 +5098,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>Replay to the target</source>
-        <translation>Replay ke target</translation>
+        <translation>Putar ulang ke target</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5124,7 +5128,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+2"/>
         <source>Answer other requests with exception 0B</source>
-        <translation>Jawab permintaan lain dengan exception 0B</translation>
+        <translation>Jawab permintaan lain dengan pengecualian 0B</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5341,6 +5345,10 @@ Klik kanan untuk mengganti format</translation>
         <source>%1 bytes ready.</source>
         <translation>%1 byte siap.</translation>
     </message>
+    <message>
+        <source>The form refuses this request: the reason is under the fields.</source>
+        <translation>Formulir menolak permintaan ini: alasannya ada di bawah kolom isian.</translation>
+    </message>
 </context>
 <context>
     <name>mbscope::RequestForm</name>
@@ -5534,6 +5542,46 @@ Klik kanan untuk mengganti format</translation>
         <location line="+36"/>
         <source>Bytes: %1  (%2, unit %3)</source>
         <translation>Byte: %1  (%2, unit %3)</translation>
+    </message>
+    <message>
+        <source>Register value: decimal (0-65535 or -32768..-1) or hex (0x1234)</source>
+        <translation>Nilai register: desimal (0-65535 atau -32768..-1) atau hex (0x1234)</translation>
+    </message>
+    <message>
+        <source>%1 %2 is refused: %3 takes 1-%4 %5 in one request (Modbus V1.1b3)</source>
+        <translation>%1 %2 ditolak: %3 menerima 1-%4 %5 dalam satu permintaan (Modbus V1.1b3)</translation>
+    </message>
+    <message>
+        <source>coils</source>
+        <translation>coil</translation>
+    </message>
+    <message>
+        <source>inputs</source>
+        <translation>input</translation>
+    </message>
+    <message>
+        <source>registers</source>
+        <translation>register</translation>
+    </message>
+    <message>
+        <source>read quantity</source>
+        <translation>jumlah baca</translation>
+    </message>
+    <message>
+        <source>quantity</source>
+        <translation>jumlah</translation>
+    </message>
+    <message>
+        <source>write quantity</source>
+        <translation>jumlah tulis</translation>
+    </message>
+    <message>
+        <source>value '%1' is not a register value (0-65535, -32768..-1 or 0x0000-0xFFFF)</source>
+        <translation>nilai '%1' bukan nilai register (0-65535, -32768..-1 atau 0x0000-0xFFFF)</translation>
+    </message>
+    <message>
+        <source>object id 0x%1 is refused: an object id is one byte, 0x00-0xFF</source>
+        <translation>id objek 0x%1 ditolak: id objek berukuran satu byte, 0x00-0xFF</translation>
     </message>
 </context>
 <context>
@@ -5949,7 +5997,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location filename="../../ui/shell/sessiontools.cpp" line="+44"/>
         <source>Replay</source>
-        <translation>Replay</translation>
+        <translation>Putar ulang</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -5964,7 +6012,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>&amp;Open capture for analysis and replay…</source>
-        <translation>&amp;Buka capture untuk analisis dan replay…</translation>
+        <translation>&amp;Buka capture untuk analisis dan putar ulang…</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -5974,12 +6022,12 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+5"/>
         <source>&amp;Replay to the target</source>
-        <translation>&amp;Replay ke target</translation>
+        <translation>&amp;Putar ulang ke target</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>S&amp;top the replay</source>
-        <translation>&amp;Hentikan replay</translation>
+        <translation>&amp;Hentikan putar ulang</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6027,7 +6075,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>Exception instead of the answer</source>
-        <translation>Exception sebagai ganti jawaban</translation>
+        <translation>Pengecualian sebagai ganti jawaban</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6398,7 +6446,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>exception %1</source>
-        <translation>exception %1</translation>
+        <translation>pengecualian %1</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6685,7 +6733,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <source>exception %1 (%2)</source>
-        <translation>exception %1 (%2)</translation>
+        <translation>pengecualian %1 (%2)</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -6982,7 +7030,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location filename="../../ui/analysis/sweeppanel.cpp" line="+43"/>
         <source>&amp;Start sweep</source>
-        <translation>&amp;Mulai sweep</translation>
+        <translation>&amp;Mulai sapuan</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -7073,12 +7121,12 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <source>Not started: the link did not take the sweep</source>
-        <translation>Tidak dimulai: link tidak menerima sweep</translation>
+        <translation>Tidak dimulai: link tidak menerima sapuan</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Sweeping %1 intervals, %2 transactions each</source>
-        <translation>Sweep %1 interval, masing-masing %2 transaksi</translation>
+        <translation>Menyapu %1 interval, masing-masing %2 transaksi</translation>
     </message>
     <message>
         <location line="+18"/>
@@ -7088,12 +7136,12 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+21"/>
         <source>Sweep stopped: %1 of %2 intervals run</source>
-        <translation>Sweep dihentikan: %1 dari %2 interval dijalankan</translation>
+        <translation>Sapuan dihentikan: %1 dari %2 interval dijalankan</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Sweep finished: %1 intervals</source>
-        <translation>Sweep selesai: %1 interval</translation>
+        <translation>Sapuan selesai: %1 interval</translation>
     </message>
 </context>
 <context>
@@ -7657,7 +7705,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+13"/>
         <source>%1 Exception to %2</source>
-        <translation>%1 Exception untuk %2</translation>
+        <translation>%1 Pengecualian untuk %2</translation>
     </message>
     <message>
         <location line="+50"/>
@@ -7697,7 +7745,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+9"/>
         <source>Show only frames of this function code (its exception responses included)</source>
-        <translation>Tampilkan hanya frame dengan kode fungsi ini (termasuk respons exception-nya)</translation>
+        <translation>Tampilkan hanya frame dengan kode fungsi ini (termasuk respons pengecualiannya)</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -7852,7 +7900,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>exception</source>
-        <translation>exception</translation>
+        <translation>pengecualian</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -7938,7 +7986,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>Sweep</source>
-        <translation>Sweep</translation>
+        <translation>Sapuan</translation>
     </message>
 </context>
 <context>
