@@ -91,6 +91,10 @@ void TestWorkbench::bannerFollowsTheLink()
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QTRY_COMPARE_WITH_TIMEOUT(window.controller()->state(), LinkController::State::Connected, kAnswerWaitMs);
     const QString connected = window.banner()->text();
+    // first-run.md (item 12): the target is greyed while connected, the unit (per request) is not.
+    auto *unit = window.connectionBar()->findChild<QSpinBox *>(QStringLiteral("unitSpin"));
+    QVERIFY(unit && unit->isEnabled());
+    QVERIFY(!window.connectionBar()->findChild<QSpinBox *>(QStringLiteral("portSpin"))->isEnabled());
     window.connectionBar()->connectButton()->click();
     QVERIFY2(window.banner()->text().startsWith(QLatin1String("Disconnected")), qPrintable(window.banner()->text()));
 
