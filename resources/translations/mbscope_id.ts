@@ -3107,12 +3107,12 @@
         <translation>Pantauan</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+479"/>
         <source>Disconnected. The built-in simulator still answers on &lt;code&gt;%1&lt;/code&gt;: press &lt;b&gt;Connect&lt;/b&gt; to use it again, or choose a real device&apos;s link type, host and port (or serial port) first.</source>
         <translation>Terputus. Simulator bawaan masih menjawab di &lt;code&gt;%1&lt;/code&gt;: tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk memakainya lagi, atau pilih dulu jenis link, host dan port (atau port serial) perangkat sungguhan.</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="-340"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
@@ -3172,17 +3172,17 @@
         <translation>Terkirim: %1</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+32"/>
         <source>Not connected: press Connect to use %1 again</source>
         <translation>Tidak tersambung: tekan Sambungkan untuk memakai %1 lagi</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+33"/>
         <source>&lt;b&gt;Connected to mbscope&apos;s built-in simulator&lt;/b&gt;, not to a device: a RosRao gamma detector (profile &lt;code&gt;%1&lt;/code&gt;) answering on &lt;code&gt;%2&lt;/code&gt;. Press &lt;b&gt;Send&lt;/b&gt; to read its 22 registers. To talk to a real device, press &lt;b&gt;Disconnect&lt;/b&gt;, choose its link type, host and port (or serial port) and press &lt;b&gt;Connect&lt;/b&gt;.</source>
         <translation>&lt;b&gt;Tersambung ke simulator bawaan mbscope&lt;/b&gt;, bukan ke perangkat: detektor gamma RosRao (profil &lt;code&gt;%1&lt;/code&gt;) yang menjawab di &lt;code&gt;%2&lt;/code&gt;. Tekan &lt;b&gt;Kirim&lt;/b&gt; untuk membaca 22 register-nya. Untuk berbicara dengan perangkat sungguhan, tekan &lt;b&gt;Putuskan&lt;/b&gt;, pilih jenis link, host dan port (atau port serial)-nya, lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt;.</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+41"/>
         <source>&amp;File</source>
         <translation>&amp;Berkas</translation>
     </message>
@@ -3284,6 +3284,7 @@
         </translation>
     </message>
     <message>
+        <location line="-128"/>
         <source>&lt;b&gt;Listening only&lt;/b&gt; to the built-in simulator on &lt;code&gt;%1&lt;/code&gt;: nothing is sent, and the simulator answers only requests, so the traffic stays empty unless another master polls it. Untick &lt;b&gt;Listen&lt;/b&gt; and press &lt;b&gt;Connect&lt;/b&gt; to send it requests.</source>
         <translation>&lt;b&gt;Hanya menyimak&lt;/b&gt; simulator bawaan di &lt;code&gt;%1&lt;/code&gt;: tidak ada yang dikirim, dan simulator hanya menjawab permintaan, jadi lalu lintas tetap kosong kecuali ada master lain yang mem-polling-nya. Hilangkan centang &lt;b&gt;Simak&lt;/b&gt; lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk mengirim permintaan kepadanya.</translation>
     </message>
@@ -5195,20 +5196,20 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <location line="+12"/>
-        <location line="+283"/>
+        <location line="+291"/>
         <source>Send the request once (Ctrl+Return)</source>
         <translation>Kirim permintaan sekali (Ctrl+Return)</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-300"/>
         <location line="+35"/>
-        <location line="+236"/>
+        <location line="+244"/>
         <location line="+1"/>
         <source>Start &amp;poll</source>
         <translation>Mulai pollin&amp;g</translation>
     </message>
     <message>
-        <location line="-284"/>
+        <location line="-292"/>
         <source>Ra&amp;w</source>
         <translation>Menta&amp;h</translation>
     </message>
@@ -5250,12 +5251,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+256"/>
+        <location line="+264"/>
         <source>Send the request repeatedly (Ctrl+Shift+Return starts and stops)</source>
         <translation>Kirim permintaan berulang-ulang (Ctrl+Shift+Return memulai dan menghentikan)</translation>
     </message>
     <message>
-        <location line="-249"/>
+        <location line="-257"/>
         <source>Poll</source>
         <translation>Polling</translation>
     </message>
@@ -5280,7 +5281,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Biarkan seperti diketik</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+128"/>
         <source>remove the check sum, add an MBAP header</source>
         <translation>buang checksum, tambahkan header MBAP</translation>
     </message>
@@ -5300,7 +5301,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&lt;b&gt;Byte Mentah adalah frame %1; link sekarang memakai frame %2.&lt;/b&gt; Jika dikirim apa adanya, perangkat akan salah membacanya. Ubah (%3) mengirim:&lt;br&gt;&lt;code&gt;%4&lt;/code&gt;</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+80"/>
         <location line="+1"/>
         <source>Stop &amp;poll</source>
         <translation>Hentikan pollin&amp;g</translation>
@@ -5326,7 +5327,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Ubah byte untuk link baru, atau biarkan seperti diketik.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Type a request (Raw) or build one (Form).</source>
         <translation>Ketik permintaan (Mentah) atau susun (Formulir).</translation>
     </message>
@@ -5346,6 +5347,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 byte siap.</translation>
     </message>
     <message>
+        <location line="-6"/>
         <source>The form refuses this request: the reason is under the fields.</source>
         <translation>Formulir menolak permintaan ini: alasannya ada di bawah kolom isian.</translation>
     </message>
@@ -5353,7 +5355,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RequestForm</name>
     <message>
-        <location filename="../../ui/compose/requestform.cpp" line="+114"/>
+        <location filename="../../ui/compose/requestform.cpp" line="+124"/>
         <source>Read Device Identification</source>
         <translation>Baca Identifikasi Perangkat</translation>
     </message>
@@ -5363,7 +5365,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>ON (FF 00); tidak dicentang: OFF (00 00)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source> registers (1-121)</source>
         <translation> register (1-121)</translation>
     </message>
@@ -5374,12 +5376,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+161"/>
+        <location line="+159"/>
         <source>Value</source>
         <translation>Nilai</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-154"/>
         <source>Register values: decimal (0-65535 or -32768..-1) or hex (0x1234); coils: tick for ON</source>
         <translation>Nilai register: desimal (0-65535 atau -32768..-1) atau hex (0x1234); coil: centang untuk ON</translation>
     </message>
@@ -5467,19 +5469,19 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+33"/>
-        <location line="+190"/>
+        <location line="+201"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="-190"/>
-        <location line="+121"/>
+        <location line="-201"/>
+        <location line="+132"/>
         <location line="+69"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="-129"/>
+        <location line="-140"/>
         <source>Start &amp;address:</source>
         <translation>&amp;Alamat awal:</translation>
     </message>
@@ -5499,7 +5501,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Jumlah baca:</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>1-%1 %2 (V1.1b3)</source>
         <translation>1-%1 %2 (V1.1b3)</translation>
     </message>
@@ -5509,7 +5511,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Coil</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+85"/>
         <source>value in row %1: &apos;%2&apos; is not a register value (0-65535, -32768..-1 or 0x0000-0xFFFF)</source>
         <translation>nilai di baris %1: &apos;%2&apos; bukan nilai register (0-65535, -32768..-1 atau 0x0000-0xFFFF)</translation>
     </message>
@@ -5519,7 +5521,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>alamat: %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+41"/>
         <source>AND mask &apos;%1&apos; is not a 16-bit hex value (0x0000-0xFFFF)</source>
         <translation>Mask AND &apos;%1&apos; bukan nilai hex 16-bit (0x0000-0xFFFF)</translation>
     </message>
@@ -5534,7 +5536,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>alamat tulis: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+21"/>
         <source>function %1 has no form</source>
         <translation>fungsi %1 tidak punya formulir</translation>
     </message>
@@ -5544,42 +5546,56 @@ Klik kanan untuk mengganti format</translation>
         <translation>Byte: %1  (%2, unit %3)</translation>
     </message>
     <message>
+        <location line="-408"/>
         <source>Register value: decimal (0-65535 or -32768..-1) or hex (0x1234)</source>
         <translation>Nilai register: desimal (0-65535 atau -32768..-1) atau hex (0x1234)</translation>
     </message>
     <message>
+        <location line="+197"/>
         <source>%1 %2 is refused: %3 takes 1-%4 %5 in one request (Modbus V1.1b3)</source>
         <translation>%1 %2 ditolak: %3 menerima 1-%4 %5 dalam satu permintaan (Modbus V1.1b3)</translation>
     </message>
     <message>
+        <location line="-306"/>
+        <location line="+4"/>
         <source>coils</source>
         <translation>coil</translation>
     </message>
     <message>
+        <location line="-3"/>
         <source>inputs</source>
         <translation>input</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+2"/>
+        <location line="+1"/>
         <source>registers</source>
         <translation>register</translation>
     </message>
     <message>
+        <location line="+412"/>
         <source>read quantity</source>
         <translation>jumlah baca</translation>
     </message>
     <message>
+        <location line="+0"/>
         <source>quantity</source>
         <translation>jumlah</translation>
     </message>
     <message>
+        <location line="+6"/>
         <source>write quantity</source>
         <translation>jumlah tulis</translation>
     </message>
     <message>
-        <source>value '%1' is not a register value (0-65535, -32768..-1 or 0x0000-0xFFFF)</source>
-        <translation>nilai '%1' bukan nilai register (0-65535, -32768..-1 atau 0x0000-0xFFFF)</translation>
+        <location line="+13"/>
+        <source>value &apos;%1&apos; is not a register value (0-65535, -32768..-1 or 0x0000-0xFFFF)</source>
+        <translation>nilai &apos;%1&apos; bukan nilai register (0-65535, -32768..-1 atau 0x0000-0xFFFF)</translation>
     </message>
     <message>
+        <location line="+37"/>
         <source>object id 0x%1 is refused: an object id is one byte, 0x00-0xFF</source>
         <translation>id objek 0x%1 ditolak: id objek berukuran satu byte, 0x00-0xFF</translation>
     </message>
@@ -5977,7 +5993,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>(tanpa judul)</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+58"/>
         <source>untitled session%1 — mbscope</source>
         <translation>sesi tanpa judul%1 — mbscope</translation>
     </message>
@@ -6678,7 +6694,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimScriptPanel</name>
     <message>
-        <location filename="../../ui/sim/simscriptpanel.cpp" line="+25"/>
+        <location filename="../../ui/sim/simscriptpanel.cpp" line="+27"/>
         <source>Re&amp;load scripts</source>
         <translation>Muat &amp;ulang skrip</translation>
     </message>
@@ -6693,7 +6709,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Bersihkan lo&amp;g</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>What the scripts write with log(...) or console.log(...), and their errors with file and line.</source>
         <translation>Apa yang ditulis skrip dengan log(...) atau console.log(...), serta galatnya dengan berkas dan baris.</translation>
     </message>
