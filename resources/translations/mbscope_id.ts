@@ -889,7 +889,7 @@
     <message>
         <location line="+3"/>
         <source>%1: %2 exception</source>
-        <translation>%1: exception %2</translation>
+        <translation>%1: pengecualian %2</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -1142,7 +1142,7 @@
         <location line="+1"/>
         <location filename="../../core/protocol/pdudiagnostics.cpp" line="+1"/>
         <source>Return Bus Exception Error Count</source>
-        <translation>Kembalikan Jumlah Error Exception Bus</translation>
+        <translation>Kembalikan Jumlah Error Pengecualian Bus</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1213,7 +1213,7 @@
     <message>
         <location line="+1"/>
         <source>Read Exception Status</source>
-        <translation>Baca Status Exception</translation>
+        <translation>Baca Status Pengecualian</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1289,7 +1289,7 @@
         <location line="+1"/>
         <location filename="../../core/protocol/pdudissector.cpp" line="+74"/>
         <source>Exception response</source>
-        <translation>Respons exception</translation>
+        <translation>Respons pengecualian</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1354,7 +1354,7 @@
     <message>
         <location line="+1"/>
         <source>Unknown exception code</source>
-        <translation>Kode exception tidak dikenal</translation>
+        <translation>Kode pengecualian tidak dikenal</translation>
     </message>
     <message>
         <location line="+8"/>
@@ -1409,12 +1409,12 @@
     <message>
         <location line="+2"/>
         <source>Unassigned exception code: 0x09 is not defined by the Modbus specification</source>
-        <translation>Kode exception yang belum ditetapkan: 0x09 tidak didefinisikan oleh spesifikasi Modbus</translation>
+        <translation>Kode pengecualian yang belum ditetapkan: 0x09 tidak didefinisikan oleh spesifikasi Modbus</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Unknown exception code: the Modbus specification defines 0x01-0x08, 0x0A and 0x0B</source>
-        <translation>Kode exception tidak dikenal: spesifikasi Modbus mendefinisikan 0x01-0x08, 0x0A dan 0x0B</translation>
+        <translation>Kode pengecualian tidak dikenal: spesifikasi Modbus mendefinisikan 0x01-0x08, 0x0A dan 0x0B</translation>
     </message>
     <message>
         <location filename="../../core/protocol/modiconreference.cpp" line="+197"/>
@@ -1535,7 +1535,7 @@
     <message>
         <location line="+16"/>
         <source>Exception status</source>
-        <translation>Status exception</translation>
+        <translation>Status pengecualian</translation>
     </message>
     <message>
         <location line="+9"/>
@@ -1821,7 +1821,7 @@
     <message>
         <location line="+1"/>
         <source>Bus exception error count</source>
-        <translation>Jumlah error exception bus</translation>
+        <translation>Jumlah error pengecualian bus</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2242,7 +2242,7 @@
     <message>
         <location line="+10"/>
         <source>Exception code</source>
-        <translation>Kode exception</translation>
+        <translation>Kode pengecualian</translation>
     </message>
     <message>
         <location filename="../../core/protocol/dissector.cpp" line="+41"/>
@@ -2577,12 +2577,12 @@
     <message>
         <location line="+1"/>
         <source>Exceptions</source>
-        <translation>Exception</translation>
+        <translation>Pengecualian</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Exception %1 %2</source>
-        <translation>Exception %1 %2</translation>
+        <translation>Pengecualian %1 %2</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2685,7 +2685,7 @@
     <message>
         <location line="+1"/>
         <source>exceptions (%1)</source>
-        <translation>exception (%1)</translation>
+        <translation>pengecualian (%1)</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2723,7 +2723,7 @@
     <message>
         <location line="+1"/>
         <source>exception</source>
-        <translation>exception</translation>
+        <translation>pengecualian</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2743,7 +2743,7 @@
     <message>
         <location line="+77"/>
         <source>%1 transactions: %2 answered, %3 exceptions, %4 without a usable answer</source>
-        <translation>%1 transaksi: %2 terjawab, %3 exception, %4 tanpa jawaban yang bisa dipakai</translation>
+        <translation>%1 transaksi: %2 terjawab, %3 pengecualian, %4 tanpa jawaban yang bisa dipakai</translation>
     </message>
 </context>
 <context>
@@ -3112,12 +3112,12 @@
         <translation>Pantauan</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+479"/>
         <source>Disconnected. The built-in simulator still answers on &lt;code&gt;%1&lt;/code&gt;: press &lt;b&gt;Connect&lt;/b&gt; to use it again, or choose a real device&apos;s link type, host and port (or serial port) first.</source>
         <translation>Terputus. Simulator bawaan masih menjawab di &lt;code&gt;%1&lt;/code&gt;: tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk memakainya lagi, atau pilih dulu jenis link, host dan port (atau port serial) perangkat sungguhan.</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="-340"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
@@ -3177,17 +3177,17 @@
         <translation>Terkirim: %1</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+32"/>
         <source>Not connected: press Connect to use %1 again</source>
         <translation>Tidak tersambung: tekan Sambungkan untuk memakai %1 lagi</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+33"/>
         <source>&lt;b&gt;Connected to mbscope&apos;s built-in simulator&lt;/b&gt;, not to a device: a RosRao gamma detector (profile &lt;code&gt;%1&lt;/code&gt;) answering on &lt;code&gt;%2&lt;/code&gt;. Press &lt;b&gt;Send&lt;/b&gt; to read its 22 registers. To talk to a real device, press &lt;b&gt;Disconnect&lt;/b&gt;, choose its link type, host and port (or serial port) and press &lt;b&gt;Connect&lt;/b&gt;.</source>
         <translation>&lt;b&gt;Tersambung ke simulator bawaan mbscope&lt;/b&gt;, bukan ke perangkat: detektor gamma RosRao (profil &lt;code&gt;%1&lt;/code&gt;) yang menjawab di &lt;code&gt;%2&lt;/code&gt;. Tekan &lt;b&gt;Kirim&lt;/b&gt; untuk membaca 22 register-nya. Untuk berbicara dengan perangkat sungguhan, tekan &lt;b&gt;Putuskan&lt;/b&gt;, pilih jenis link, host dan port (atau port serial)-nya, lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt;.</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+41"/>
         <source>&amp;File</source>
         <translation>&amp;Berkas</translation>
     </message>
@@ -3287,6 +3287,11 @@
         <translation>
             <numerusform>%n pantauan ditambahkan dari pindaian: Daftar pantau &gt; Mulai semua (F5) membacanya.</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="-128"/>
+        <source>&lt;b&gt;Listening only&lt;/b&gt; to the built-in simulator on &lt;code&gt;%1&lt;/code&gt;: nothing is sent, and the simulator answers only requests, so the traffic stays empty unless another master polls it. Untick &lt;b&gt;Listen&lt;/b&gt; and press &lt;b&gt;Connect&lt;/b&gt; to send it requests.</source>
+        <translation>&lt;b&gt;Hanya menyimak&lt;/b&gt; simulator bawaan di &lt;code&gt;%1&lt;/code&gt;: tidak ada yang dikirim, dan simulator hanya menjawab permintaan, jadi lalu lintas tetap kosong kecuali ada master lain yang mem-polling-nya. Hilangkan centang &lt;b&gt;Simak&lt;/b&gt; lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk mengirim permintaan kepadanya.</translation>
     </message>
 </context>
 <context>
@@ -3805,7 +3810,7 @@
     <message>
         <location line="+2"/>
         <source>exception 0x%1</source>
-        <translation>exception 0x%1</translation>
+        <translation>pengecualian 0x%1</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4842,7 +4847,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+0"/>
         <source>Stop the replay before opening another capture.</source>
-        <translation>Hentikan replay sebelum membuka capture lain.</translation>
+        <translation>Hentikan putar ulang sebelum membuka capture lain.</translation>
     </message>
     <message>
         <location line="+39"/>
@@ -4872,7 +4877,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+14"/>
         <source>A replay is already running.</source>
-        <translation>Replay sudah berjalan.</translation>
+        <translation>Putar ulang sudah berjalan.</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4887,22 +4892,22 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+2"/>
         <source>Connect to the device to replay to first.</source>
-        <translation>Sambungkan dulu ke perangkat tujuan replay.</translation>
+        <translation>Sambungkan dulu ke perangkat tujuan putar ulang.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Stop the poll first: a replay sends one request at a time, as they were recorded.</source>
-        <translation>Hentikan polling dulu: replay mengirim satu permintaan per kali, sesuai rekamannya.</translation>
+        <translation>Hentikan polling dulu: putar ulang mengirim satu permintaan per kali, sesuai rekamannya.</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 is a delimited link: it carries no Modbus framing to replay into.</source>
-        <translation>%1 adalah link berdelimiter: tidak membawa framing Modbus untuk replay.</translation>
+        <translation>%1 adalah link berdelimiter: tidak membawa framing Modbus untuk diputar ulang.</translation>
     </message>
     <message>
         <location line="+46"/>
         <source>The replay stopped: %1. %2</source>
-        <translation>Replay berhenti: %1. %2</translation>
+        <translation>Putar ulang berhenti: %1. %2</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4945,7 +4950,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+2"/>
         <source>exception</source>
-        <translation>exception</translation>
+        <translation>pengecualian</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -4965,7 +4970,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+65"/>
         <source>No answers replayed yet.</source>
-        <translation>Belum ada jawaban yang di-replay.</translation>
+        <translation>Belum ada jawaban yang diputar ulang.</translation>
     </message>
     <message>
         <location line="-3"/>
@@ -4976,7 +4981,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <source>Answers replayed: %1, differing: %2 (%3).</source>
-        <translation>Jawaban di-replay: %1, berbeda: %2 (%3).</translation>
+        <translation>Jawaban diputar ulang: %1, berbeda: %2 (%3).</translation>
     </message>
     <message>
         <location line="+68"/>
@@ -5034,7 +5039,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+14"/>
         <source>Replaying the recorded requests to the target (%1 in all)…</source>
-        <translation>Me-replay permintaan terekam ke target (%1 seluruhnya)…</translation>
+        <translation>Memutar ulang permintaan terekam ke target (%1 seluruhnya)…</translation>
     </message>
     <message>
         <location line="+17"/>
@@ -5099,7 +5104,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>Replay to the target</source>
-        <translation>Replay ke target</translation>
+        <translation>Putar ulang ke target</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5129,7 +5134,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+2"/>
         <source>Answer other requests with exception 0B</source>
-        <translation>Jawab permintaan lain dengan exception 0B</translation>
+        <translation>Jawab permintaan lain dengan pengecualian 0B</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -5196,20 +5201,20 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <location line="+12"/>
-        <location line="+283"/>
+        <location line="+291"/>
         <source>Send the request once (Ctrl+Return)</source>
         <translation>Kirim permintaan sekali (Ctrl+Return)</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-300"/>
         <location line="+35"/>
-        <location line="+236"/>
+        <location line="+244"/>
         <location line="+1"/>
         <source>Start &amp;poll</source>
         <translation>Mulai pollin&amp;g</translation>
     </message>
     <message>
-        <location line="-284"/>
+        <location line="-292"/>
         <source>Ra&amp;w</source>
         <translation>Menta&amp;h</translation>
     </message>
@@ -5251,12 +5256,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+256"/>
+        <location line="+264"/>
         <source>Send the request repeatedly (Ctrl+Shift+Return starts and stops)</source>
         <translation>Kirim permintaan berulang-ulang (Ctrl+Shift+Return memulai dan menghentikan)</translation>
     </message>
     <message>
-        <location line="-249"/>
+        <location line="-257"/>
         <source>Poll</source>
         <translation>Polling</translation>
     </message>
@@ -5281,7 +5286,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Biarkan seperti diketik</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+128"/>
         <source>remove the check sum, add an MBAP header</source>
         <translation>buang checksum, tambahkan header MBAP</translation>
     </message>
@@ -5301,7 +5306,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&lt;b&gt;Byte Mentah adalah frame %1; link sekarang memakai frame %2.&lt;/b&gt; Jika dikirim apa adanya, perangkat akan salah membacanya. Ubah (%3) mengirim:&lt;br&gt;&lt;code&gt;%4&lt;/code&gt;</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+80"/>
         <location line="+1"/>
         <source>Stop &amp;poll</source>
         <translation>Hentikan pollin&amp;g</translation>
@@ -5327,7 +5332,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Ubah byte untuk link baru, atau biarkan seperti diketik.</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Type a request (Raw) or build one (Form).</source>
         <translation>Ketik permintaan (Mentah) atau susun (Formulir).</translation>
     </message>
@@ -5346,11 +5351,16 @@ Klik kanan untuk mengganti format</translation>
         <source>%1 bytes ready.</source>
         <translation>%1 byte siap.</translation>
     </message>
+    <message>
+        <location line="-6"/>
+        <source>The form refuses this request: the reason is under the fields.</source>
+        <translation>Formulir menolak permintaan ini: alasannya ada di bawah kolom isian.</translation>
+    </message>
 </context>
 <context>
     <name>mbscope::RequestForm</name>
     <message>
-        <location filename="../../ui/compose/requestform.cpp" line="+114"/>
+        <location filename="../../ui/compose/requestform.cpp" line="+124"/>
         <source>Read Device Identification</source>
         <translation>Baca Identifikasi Perangkat</translation>
     </message>
@@ -5360,7 +5370,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>ON (FF 00); tidak dicentang: OFF (00 00)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source> registers (1-121)</source>
         <translation> register (1-121)</translation>
     </message>
@@ -5371,12 +5381,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location line="+161"/>
+        <location line="+159"/>
         <source>Value</source>
         <translation>Nilai</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-154"/>
         <source>Register values: decimal (0-65535 or -32768..-1) or hex (0x1234); coils: tick for ON</source>
         <translation>Nilai register: desimal (0-65535 atau -32768..-1) atau hex (0x1234); coil: centang untuk ON</translation>
     </message>
@@ -5464,19 +5474,19 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+33"/>
-        <location line="+190"/>
+        <location line="+201"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="-190"/>
-        <location line="+121"/>
+        <location line="-201"/>
+        <location line="+132"/>
         <location line="+69"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="-129"/>
+        <location line="-140"/>
         <source>Start &amp;address:</source>
         <translation>&amp;Alamat awal:</translation>
     </message>
@@ -5496,7 +5506,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Jumlah baca:</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>1-%1 %2 (V1.1b3)</source>
         <translation>1-%1 %2 (V1.1b3)</translation>
     </message>
@@ -5506,7 +5516,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Coil</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+85"/>
         <source>value in row %1: &apos;%2&apos; is not a register value (0-65535, -32768..-1 or 0x0000-0xFFFF)</source>
         <translation>nilai di baris %1: &apos;%2&apos; bukan nilai register (0-65535, -32768..-1 atau 0x0000-0xFFFF)</translation>
     </message>
@@ -5516,7 +5526,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>alamat: %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+41"/>
         <source>AND mask &apos;%1&apos; is not a 16-bit hex value (0x0000-0xFFFF)</source>
         <translation>Mask AND &apos;%1&apos; bukan nilai hex 16-bit (0x0000-0xFFFF)</translation>
     </message>
@@ -5531,7 +5541,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>alamat tulis: %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+21"/>
         <source>function %1 has no form</source>
         <translation>fungsi %1 tidak punya formulir</translation>
     </message>
@@ -5539,6 +5549,60 @@ Klik kanan untuk mengganti format</translation>
         <location line="+36"/>
         <source>Bytes: %1  (%2, unit %3)</source>
         <translation>Byte: %1  (%2, unit %3)</translation>
+    </message>
+    <message>
+        <location line="-408"/>
+        <source>Register value: decimal (0-65535 or -32768..-1) or hex (0x1234)</source>
+        <translation>Nilai register: desimal (0-65535 atau -32768..-1) atau hex (0x1234)</translation>
+    </message>
+    <message>
+        <location line="+197"/>
+        <source>%1 %2 is refused: %3 takes 1-%4 %5 in one request (Modbus V1.1b3)</source>
+        <translation>%1 %2 ditolak: %3 menerima 1-%4 %5 dalam satu permintaan (Modbus V1.1b3)</translation>
+    </message>
+    <message>
+        <location line="-306"/>
+        <location line="+4"/>
+        <source>coils</source>
+        <translation>coil</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>inputs</source>
+        <translation>input</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+1"/>
+        <location line="+2"/>
+        <location line="+1"/>
+        <source>registers</source>
+        <translation>register</translation>
+    </message>
+    <message>
+        <location line="+412"/>
+        <source>read quantity</source>
+        <translation>jumlah baca</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>quantity</source>
+        <translation>jumlah</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>write quantity</source>
+        <translation>jumlah tulis</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>value &apos;%1&apos; is not a register value (0-65535, -32768..-1 or 0x0000-0xFFFF)</source>
+        <translation>nilai &apos;%1&apos; bukan nilai register (0-65535, -32768..-1 atau 0x0000-0xFFFF)</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>object id 0x%1 is refused: an object id is one byte, 0x00-0xFF</source>
+        <translation>id objek 0x%1 ditolak: id objek berukuran satu byte, 0x00-0xFF</translation>
     </message>
 </context>
 <context>
@@ -5934,7 +5998,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>(tanpa judul)</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+58"/>
         <source>untitled session%1 — mbscope</source>
         <translation>sesi tanpa judul%1 — mbscope</translation>
     </message>
@@ -5954,7 +6018,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location filename="../../ui/shell/sessiontools.cpp" line="+44"/>
         <source>Replay</source>
-        <translation>Replay</translation>
+        <translation>Putar ulang</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -5969,7 +6033,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>&amp;Open capture for analysis and replay…</source>
-        <translation>&amp;Buka capture untuk analisis dan replay…</translation>
+        <translation>&amp;Buka capture untuk analisis dan putar ulang…</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -5979,12 +6043,12 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+5"/>
         <source>&amp;Replay to the target</source>
-        <translation>&amp;Replay ke target</translation>
+        <translation>&amp;Putar ulang ke target</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>S&amp;top the replay</source>
-        <translation>&amp;Hentikan replay</translation>
+        <translation>&amp;Hentikan putar ulang</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6032,7 +6096,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>Exception instead of the answer</source>
-        <translation>Exception sebagai ganti jawaban</translation>
+        <translation>Pengecualian sebagai ganti jawaban</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6403,7 +6467,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>exception %1</source>
-        <translation>exception %1</translation>
+        <translation>pengecualian %1</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6690,7 +6754,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <source>exception %1 (%2)</source>
-        <translation>exception %1 (%2)</translation>
+        <translation>pengecualian %1 (%2)</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -6987,7 +7051,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location filename="../../ui/analysis/sweeppanel.cpp" line="+43"/>
         <source>&amp;Start sweep</source>
-        <translation>&amp;Mulai sweep</translation>
+        <translation>&amp;Mulai sapuan</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -7078,12 +7142,12 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <source>Not started: the link did not take the sweep</source>
-        <translation>Tidak dimulai: link tidak menerima sweep</translation>
+        <translation>Tidak dimulai: link tidak menerima sapuan</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Sweeping %1 intervals, %2 transactions each</source>
-        <translation>Sweep %1 interval, masing-masing %2 transaksi</translation>
+        <translation>Menyapu %1 interval, masing-masing %2 transaksi</translation>
     </message>
     <message>
         <location line="+18"/>
@@ -7093,12 +7157,12 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+21"/>
         <source>Sweep stopped: %1 of %2 intervals run</source>
-        <translation>Sweep dihentikan: %1 dari %2 interval dijalankan</translation>
+        <translation>Sapuan dihentikan: %1 dari %2 interval dijalankan</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Sweep finished: %1 intervals</source>
-        <translation>Sweep selesai: %1 interval</translation>
+        <translation>Sapuan selesai: %1 interval</translation>
     </message>
 </context>
 <context>
@@ -7672,7 +7736,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+13"/>
         <source>%1 Exception to %2</source>
-        <translation>%1 Exception untuk %2</translation>
+        <translation>%1 Pengecualian untuk %2</translation>
     </message>
     <message>
         <location line="+50"/>
@@ -7712,7 +7776,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+9"/>
         <source>Show only frames of this function code (its exception responses included)</source>
-        <translation>Tampilkan hanya frame dengan kode fungsi ini (termasuk respons exception-nya)</translation>
+        <translation>Tampilkan hanya frame dengan kode fungsi ini (termasuk respons pengecualiannya)</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -7867,7 +7931,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>exception</source>
-        <translation>exception</translation>
+        <translation>pengecualian</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -7953,7 +8017,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>Sweep</source>
-        <translation>Sweep</translation>
+        <translation>Sapuan</translation>
     </message>
 </context>
 <context>

@@ -138,6 +138,8 @@ void RequestComposer::buildUi()
     connect(m_tabs, &QTabWidget::currentChanged, this, [this] {
         if (m_tabs->currentWidget() == m_form)
             onFormChanged();
+        else
+            updateActions();
     });
     // After the handlers above, so the state is read once the Form has followed.
     connect(m_raw, &RawRequestEditor::bytesChanged, this, &RequestComposer::stateChanged);
@@ -174,6 +176,10 @@ void RequestComposer::setState(const State &state)
 
 QByteArray RequestComposer::bytes() const
 {
+    // On the Form tab, a form that refuses its fields sends nothing: not the last bytes it made,
+    // which the Raw tab still holds (try-out 8, item 3: the request must not change silently).
+    if (m_tabs && m_tabs->currentWidget() == m_form && m_form->bytes().isEmpty())
+        return {};
     return m_raw->isValid() ? m_raw->bytes() : QByteArray();
 }
 
@@ -301,8 +307,10 @@ void RequestComposer::onFormChanged()
     if (m_syncing || m_tabs->currentWidget() != m_form)
         return;
     const QByteArray bytes = m_form->bytes();
-    if (bytes.isEmpty())
+    if (bytes.isEmpty()) {
+        updateActions(); // Send waits until the form is right
         return;
+    }
     m_syncing = true;
     m_raw->setText(HexText::format(bytes));
     m_syncing = false;
@@ -347,6 +355,8 @@ void RequestComposer::updateActions()
         m_sendHint->setText(tr("Connect first (connection bar above)."));
     else if (!m_converted.isEmpty())
         m_sendHint->setText(tr("Convert the bytes for the new link, or keep them as typed."));
+    else if (!haveBytes && m_tabs->currentWidget() == m_form && !m_form->errorText().isEmpty())
+        m_sendHint->setText(tr("The form refuses this request: the reason is under the fields."));
     else if (!haveBytes)
         m_sendHint->setText(tr("Type a request (Raw) or build one (Form)."));
     else if (m_polling)

@@ -32,8 +32,13 @@ struct QuantityLimit {
     const char *unit;
 };
 constexpr QuantityLimit kLimits[] = {
-    {0x01, 2000, "coils"}, {0x02, 2000, "inputs"}, {0x03, 125, "registers"}, {0x04, 125, "registers"},
-    {0x0F, 1968, "coils"}, {0x10, 123, "registers"}, {0x17, 125, "registers"},
+    {0x01, 2000, QT_TRANSLATE_NOOP("mbscope::RequestForm", "coils")},
+    {0x02, 2000, QT_TRANSLATE_NOOP("mbscope::RequestForm", "inputs")},
+    {0x03, 125, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
+    {0x04, 125, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
+    {0x0F, 1968, QT_TRANSLATE_NOOP("mbscope::RequestForm", "coils")},
+    {0x10, 123, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
+    {0x17, 125, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
 };
 constexpr int kMaxReadWriteWrite = 121; // 0x17's write quantity (V1.1b3, 6.17)
 
@@ -82,11 +87,16 @@ std::optional<int> parseMask(const QString &text)
     return ok && !t.isEmpty() && v <= 0xFFFF ? std::optional<int>(int(v)) : std::nullopt;
 }
 
+// A spin box refuses a keystroke that would take it past its maximum: with the specification's
+// limit as maximum, 126 typed became 12 without a word. The quantity fields take any number
+// typed; build() refuses the ones the specification forbids and says why.
+constexpr int kTypeableMax = 99999999;
+
 QSpinBox *quantitySpinBox(const QString &name, QWidget *parent)
 {
     auto *spin = new QSpinBox(parent);
     spin->setObjectName(name);
-    spin->setRange(1, 125);
+    spin->setRange(0, kTypeableMax);
     spin->setValue(1);
     spin->setAccelerated(true);
     return spin;
@@ -129,9 +139,9 @@ void RequestForm::buildUi()
 
     m_coil = new QCheckBox(tr("ON (FF 00); unchecked: OFF (00 00)"), this);
     m_coil->setObjectName(QStringLiteral("coilCheck"));
-    m_value = new QSpinBox(this);
-    m_value->setObjectName(QStringLiteral("valueSpin"));
-    m_value->setRange(0, 65535);
+    m_value = new QLineEdit(QStringLiteral("0"), this);
+    m_value->setObjectName(QStringLiteral("valueEdit"));
+    m_value->setToolTip(tr("Register value: decimal (0-65535 or -32768..-1) or hex (0x1234)"));
     m_andMask = new QLineEdit(QStringLiteral("0xFFFF"), this);
     m_andMask->setObjectName(QStringLiteral("andMaskEdit"));
     m_orMask = new QLineEdit(QStringLiteral("0x0000"), this);
@@ -139,7 +149,6 @@ void RequestForm::buildUi()
     m_writeAddress = new AddressField(this);
     m_writeAddress->setObjectName(QStringLiteral("writeAddressField"));
     m_writeQuantity = quantitySpinBox(QStringLiteral("writeQuantitySpin"), this);
-    m_writeQuantity->setRange(1, kMaxReadWriteWrite);
     m_writeQuantity->setSuffix(tr(" registers (1-121)"));
 
     m_values = new QTableWidget(0, 2, this);
@@ -159,7 +168,7 @@ void RequestForm::buildUi()
     m_deviceIdCode->addItem(tr("04 one object"), 4);
     m_objectId = new QSpinBox(this);
     m_objectId->setObjectName(QStringLiteral("objectIdSpin"));
-    m_objectId->setRange(0, 255);
+    m_objectId->setRange(0, 0xFFFF); // refused past 0xFF by build(), not cut at the third digit
     m_objectId->setDisplayIntegerBase(16);
     m_objectId->setPrefix(QStringLiteral("0x"));
 
@@ -214,7 +223,7 @@ void RequestForm::buildUi()
         onChanged();
     });
     connect(m_coil, &QCheckBox::toggled, this, &RequestForm::onChanged);
-    connect(m_value, &QSpinBox::valueChanged, this, &RequestForm::onChanged);
+    connect(m_value, &QLineEdit::textChanged, this, &RequestForm::onChanged);
     connect(m_andMask, &QLineEdit::textChanged, this, &RequestForm::onChanged);
     connect(m_orMask, &QLineEdit::textChanged, this, &RequestForm::onChanged);
     connect(m_deviceIdCode, &QComboBox::currentIndexChanged, this, &RequestForm::onChanged);
@@ -298,8 +307,6 @@ void RequestForm::onFunctionChanged()
     m_address->setTable(code == 0x18 ? std::optional<ModbusTable>(ModbusTable::HoldingRegisters) : table);
     m_writeAddress->setTable(ModbusTable::HoldingRegisters);
     if (const int max = quantityMax(code)) {
-        const QSignalBlocker block(m_quantity);
-        m_quantity->setRange(1, max);
         for (const QuantityLimit &limit : kLimits) {
             if (limit.code == code)
                 m_quantityLimit->setText(tr("1-%1 %2 (V1.1b3)").arg(max).arg(tr(limit.unit)));
@@ -318,12 +325,25 @@ bool RequestForm::isCoilTable() const
 
 int RequestForm::writeCount() const
 {
-    switch (functionCode()) {
-    case 0x0F:
-    case 0x10: return m_quantity->value();
-    case 0x17: return m_writeQuantity->value();
-    default: return 0;
-    }
+    // A quantity the specification refuses keeps the table as it was: build() says why.
+    const int code = functionCode();
+    const int count = code == 0x17 ? m_writeQuantity->value() : m_quantity->value();
+    const int max = code == 0x17 ? kMaxReadWriteWrite : quantityMax(code);
+    if (code != 0x0F && code != 0x10 && code != 0x17)
+        return 0;
+    return count >= 1 && count <= max ? count : int(m_values->rowCount());
+}
+
+QString RequestForm::quantityError(const QString &label, int quantity, int max, const char *unit) const
+{
+    if (quantity >= 1 && quantity <= max)
+        return {};
+    return tr("%1 %2 is refused: %3 takes 1-%4 %5 in one request (Modbus V1.1b3)")
+        .arg(label)
+        .arg(quantity)
+        .arg(fieldText(functionName(quint8(functionCode()))))
+        .arg(max)
+        .arg(tr(unit));
 }
 
 void RequestForm::resizeValueTable()
@@ -426,13 +446,32 @@ BuildResult RequestForm::build() const
         failed.errors.append({QStringLiteral("address"), tr("address: %1").arg(m_address->error())});
     const int a = address.value_or(0);
     const int q = m_quantity->value();
+    if (m_form->isRowVisible(m_quantityRow)) {
+        for (const QuantityLimit &limit : kLimits) {
+            if (limit.code != code)
+                continue;
+            const QString why = quantityError(code == 0x17 ? tr("read quantity") : tr("quantity"), q, limit.max, limit.unit);
+            if (!why.isEmpty())
+                failed.errors.append({QStringLiteral("quantity"), why});
+        }
+    }
+    if (code == 0x17) {
+        const QString why = quantityError(tr("write quantity"), m_writeQuantity->value(), kMaxReadWriteWrite, "registers");
+        if (!why.isEmpty())
+            failed.errors.append({QStringLiteral("writeQuantity"), why});
+    }
     switch (code) {
     case 0x01: return failed.isValid() ? RequestBuilder::readCoils(a, q) : failed;
     case 0x02: return failed.isValid() ? RequestBuilder::readDiscreteInputs(a, q) : failed;
     case 0x03: return failed.isValid() ? RequestBuilder::readHoldingRegisters(a, q) : failed;
     case 0x04: return failed.isValid() ? RequestBuilder::readInputRegisters(a, q) : failed;
     case 0x05: return failed.isValid() ? RequestBuilder::writeSingleCoil(a, m_coil->isChecked()) : failed;
-    case 0x06: return failed.isValid() ? RequestBuilder::writeSingleRegister(a, m_value->value()) : failed;
+    case 0x06: {
+        const std::optional<quint16> value = parseRegister(m_value->text());
+        if (!value)
+            failed.errors.append({QStringLiteral("value"), tr("value '%1' is not a register value (0-65535, -32768..-1 or 0x0000-0xFFFF)").arg(m_value->text())});
+        return failed.isValid() ? RequestBuilder::writeSingleRegister(a, *value) : failed;
+    }
     case 0x0F: return failed.isValid() ? RequestBuilder::writeMultipleCoils(a, coilValues()) : failed;
     case 0x10: {
         QStringList errors;
@@ -465,7 +504,13 @@ BuildResult RequestForm::build() const
     case 0x0B: return RequestBuilder::getCommEventCounter();
     case 0x0C: return RequestBuilder::getCommEventLog();
     case 0x11: return RequestBuilder::reportServerId();
-    case 0x2B: return RequestBuilder::readDeviceIdentification(m_deviceIdCode->currentData().toInt(), m_objectId->value());
+    case 0x2B:
+        if (m_objectId->value() > 0xFF) {
+            failed.errors.append({QStringLiteral("objectId"), tr("object id 0x%1 is refused: an object id is one byte, 0x00-0xFF")
+                                                                  .arg(hexDigits(m_objectId->value(), 2))});
+            return failed;
+        }
+        return RequestBuilder::readDeviceIdentification(m_deviceIdCode->currentData().toInt(), m_objectId->value());
     default: break;
     }
     failed.errors.append({QStringLiteral("function"), tr("function %1 has no form").arg(code)});
@@ -554,7 +599,7 @@ bool RequestForm::setFromPdu(const QByteArray &pdu)
     switch (code) {
     case 0x01: case 0x02: case 0x03: case 0x04: m_quantity->setValue(word(pdu, 3)); break;
     case 0x05: m_coil->setChecked(word(pdu, 3) == 0xFF00); break;
-    case 0x06: m_value->setValue(word(pdu, 3)); break;
+    case 0x06: m_value->setText(QString::number(word(pdu, 3))); break;
     case 0x16:
         m_andMask->setText(QStringLiteral("0x") + hexDigits(word(pdu, 3), 4));
         m_orMask->setText(QStringLiteral("0x") + hexDigits(word(pdu, 5), 4));

@@ -55,7 +55,7 @@ public:
     [[nodiscard]] QSpinBox *quantitySpin() const { return m_quantity; }
     [[nodiscard]] QSpinBox *writeQuantitySpin() const { return m_writeQuantity; }
     [[nodiscard]] QCheckBox *coilCheck() const { return m_coil; }
-    [[nodiscard]] QSpinBox *valueSpin() const { return m_value; }
+    [[nodiscard]] QLineEdit *valueEdit() const { return m_value; }
     [[nodiscard]] QLineEdit *andMaskEdit() const { return m_andMask; }
     [[nodiscard]] QLineEdit *orMaskEdit() const { return m_orMask; }
     [[nodiscard]] QTableWidget *valueTable() const { return m_values; }
@@ -78,6 +78,8 @@ private:
     void updateTableAddresses();
     [[nodiscard]] bool isCoilTable() const;
     [[nodiscard]] int writeCount() const;
+    // Why a quantity typed is refused (empty when within 1-max): label as the message names it.
+    [[nodiscard]] QString quantityError(const QString &label, int quantity, int max, const char *unit) const;
     [[nodiscard]] QList<quint16> registerValues(QStringList *errors) const;
     [[nodiscard]] QList<bool> coilValues() const;
 
@@ -87,7 +89,7 @@ private:
     QSpinBox *m_quantity = nullptr;
     QLabel *m_quantityLimit = nullptr;
     QCheckBox *m_coil = nullptr;
-    QSpinBox *m_value = nullptr;
+    QLineEdit *m_value = nullptr; // 06's value: typed as the value table's cells are
     QLineEdit *m_andMask = nullptr;
     QLineEdit *m_orMask = nullptr;
     AddressField *m_writeAddress = nullptr;

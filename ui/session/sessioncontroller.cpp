@@ -307,6 +307,32 @@ bool SessionController::maybeSave()
     return false;
 }
 
+bool SessionController::maybeSaveBeforeQuit(bool requestComesBack)
+{
+    // Try-out 8, item 15: a plain first run (the ready request edited, as first-run.md suggests)
+    // asked "The session (untitled) has changes that are not saved" of a user who made none.
+    if (m_modified && m_path.isEmpty() && !losesWorkOnQuit(requestComesBack))
+        return true;
+    return maybeSave();
+}
+
+bool SessionController::losesWorkOnQuit(bool requestComesBack) const
+{
+    const QString composerName = QString::fromLatin1(kComposerRequest);
+    auto withoutKept = [&](SessionDocument d) {
+        d.target = m_clean.target;
+        d.poll.reset();
+        QList<SessionRequest> lost;
+        if (!requestComesBack) {
+            if (const SessionRequest *request = d.request(composerName))
+                lost.append(*request);
+        }
+        d.requests = lost;
+        return d;
+    };
+    return withoutKept(currentDocument()) != withoutKept(m_clean);
+}
+
 void SessionController::markClean()
 {
     m_clean = currentDocument();

@@ -84,6 +84,12 @@ public:
     bool newSession();
     // Asks about unsaved changes; true when the caller may go on (saved, discarded, or none).
     bool maybeSave();
+    // The same before the window closes. An untitled session (never opened or saved) asks only
+    // when it holds something the next start does not put back: the window keeps the target
+    // (recent targets), the poll interval and count, the named requests and, when
+    // requestComesBack, the composer's request; watches made in the workspace are kept by nothing
+    // else. A session with a file asks about any change, as maybeSave().
+    bool maybeSaveBeforeQuit(bool requestComesBack);
     // What the panels show now is the session's clean state (after the window set them up).
     void markClean();
 
@@ -98,6 +104,8 @@ Q_SIGNALS:
 
 private:
     void updateModified();
+    // An untitled session's changes that quitting would lose (see maybeSaveBeforeQuit).
+    [[nodiscard]] bool losesWorkOnQuit(bool requestComesBack) const;
     void apply(const SessionDocument &document);
     // The opened document's first polled request, when it is exact bytes the composer can show.
     [[nodiscard]] const SessionRequest *basePolledRequest() const;

@@ -170,17 +170,8 @@ void MainWindow::connectPanels()
         m_composer->setLinkReady(connected);
         m_composer->setListenOnly(m_controller->isListening());
         m_linkStatus->setState(state, message);
-        // The banner speaks of the simulator only while the window is connected to it.
-        if (m_simulator->isRunning() && m_banner->isVisible()) {
-            if (state == LinkController::State::Disconnected)
-                m_banner->showNotice(tr("Disconnected. The built-in simulator still answers on <code>%1</code>: press "
-                                        "<b>Connect</b> to use it again, or choose a real device's link type, host "
-                                        "and port (or serial port) first.")
-                                         .arg(m_simulator->started().url.toString().toHtmlEscaped()));
-            else if (m_controller->url().port != m_simulator->started().url.port
-                     || m_controller->url().kind != m_simulator->started().url.kind)
-                m_banner->hide();
-        }
+        if (m_simulator->isRunning() && !m_banner->isHidden())
+            showSimulatorNotice(state);
         if (state == LinkController::State::Failed)
             bar->showLinkFailure(message);
         else if (state == LinkController::State::Connected) {
@@ -220,7 +211,8 @@ void MainWindow::showEvent(QShowEvent *event)
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
-    if (!m_session->maybeSave()) {
+    // What the next start puts back is not lost: an untitled session asks only about the rest.
+    if (!m_session->maybeSaveBeforeQuit(!PreferencesDialog::startsSimulator())) {
         event->ignore();
         return;
     }
@@ -230,6 +222,7 @@ void MainWindow::closeEvent(QCloseEvent *event)
     settings.setValue(QStringLiteral("session/last"), m_session->filePath());
     settings.setValue(QStringLiteral("composer/intervalMs"), m_composer->intervalSpin()->value());
     settings.setValue(QStringLiteral("composer/count"), m_composer->countSpin()->value());
+    settings.setValue(QStringLiteral("composer/request"), m_composer->state().requestText);
     QStringList formats;
     for (const RegisterFormat &format : m_registers->model()->valueFormats())
         formats << format.name();
@@ -559,10 +552,14 @@ bool MainWindow::startAsConfigured(const QString &url)
         if (const std::optional<LinkUrl> lastTarget = LinkUrl::parse(recent.constFirst()).url) {
             m_connectionBar->setUrl(*lastTarget);
             m_composer->setFraming(lastTarget->framing());
-            m_session->markClean();
             statusBar()->showMessage(tr("Not connected: press Connect to use %1 again").arg(lastTarget->toString()), 15000);
         }
     }
+    // The request the composer held at the last close, in the framing of the target put back.
+    const QString request = settings.value(QStringLiteral("composer/request")).toString();
+    if (!request.trimmed().isEmpty())
+        m_composer->setRequestText(request);
+    m_session->markClean();
     return false;
 }
 
@@ -588,15 +585,43 @@ bool MainWindow::startWithSimulator(const QString &url)
     }
     m_session->markClean(); // the first run's target and request are where an untitled session starts
 
-    QString notice = tr("<b>Connected to mbscope's built-in simulator</b>, not to a device: a RosRao gamma detector "
+    m_simulatorNotice = tr("<b>Connected to mbscope's built-in simulator</b>, not to a device: a RosRao gamma detector "
                         "(profile <code>%1</code>) answering on <code>%2</code>. Press <b>Send</b> to read its 22 "
                         "registers. To talk to a real device, press <b>Disconnect</b>, choose its link type, host and "
                         "port (or serial port) and press <b>Connect</b>.")
                          .arg(QString::fromLatin1(kFirstRunProfile), started.url.toString().toHtmlEscaped());
     if (!started.note.isEmpty())
-        notice += QStringLiteral("<br>") + started.note.toHtmlEscaped();
-    m_banner->showNotice(notice);
+        m_simulatorNotice += QStringLiteral("<br>") + started.note.toHtmlEscaped();
+    m_banner->showNotice(m_simulatorNotice);
     return true;
+}
+
+void MainWindow::showSimulatorNotice(LinkController::State state)
+{
+    // The banner says what the link does now (try-out 8, item 4: after Disconnect, Listen and
+    // Connect, it still said "Disconnected ... press Connect" beside "listening only").
+    const LinkUrl simulator = m_simulator->started().url;
+    const QString where = simulator.toString().toHtmlEscaped();
+    if (state == LinkController::State::Disconnected || state == LinkController::State::Failed) {
+        m_banner->showNotice(tr("Disconnected. The built-in simulator still answers on <code>%1</code>: press "
+                                "<b>Connect</b> to use it again, or choose a real device's link type, host "
+                                "and port (or serial port) first.")
+                                 .arg(where));
+        return;
+    }
+    // Not the simulator any more: the banner has nothing to say about this link.
+    if (m_controller->url().port != simulator.port || m_controller->url().kind != simulator.kind) {
+        m_banner->hide();
+        return;
+    }
+    if (m_controller->isListening()) {
+        m_banner->showNotice(tr("<b>Listening only</b> to the built-in simulator on <code>%1</code>: nothing is sent, "
+                                "and the simulator answers only requests, so the traffic stays empty unless another "
+                                "master polls it. Untick <b>Listen</b> and press <b>Connect</b> to send it requests.")
+                                 .arg(where));
+        return;
+    }
+    m_banner->showNotice(m_simulatorNotice);
 }
 
 void MainWindow::createMenus()

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "link/linkcontroller.h"
 #include "sim/embeddedsimulator.h"
 
 #include "exchange/transaction.h"
@@ -107,6 +108,8 @@ private:
     void buildWorkspace();
     void showAbout();
     void showScanDialog();
+    // The first-run banner for the link's state: on the simulator, listening to it, or disconnected.
+    void showSimulatorNotice(LinkController::State state);
 
     LinkController *m_controller = nullptr;
     ScanDialog *m_scanDialog = nullptr; // Tools > Scan, made when first asked for
@@ -133,6 +136,7 @@ private:
     SimulatorPanel *m_simulatorPanel = nullptr;
     QDockWidget *m_simulatorDock = nullptr;
     WatchWorkspace *m_workspace = nullptr;
+    QString m_simulatorNotice; // the first run's banner: shown again when the window is back on the simulator
     QByteArray m_lastRead; // the read whose answer the register table shows: sent again after a write
     bool m_layoutRestored = false; // the docks' sizes came from QSettings: the first show keeps them
     bool m_fitted = false; // panel proportions set on the first show, then left to the user

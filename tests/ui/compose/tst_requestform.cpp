@@ -11,6 +11,7 @@
 #include <QtTest/QAbstractItemModelTester>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
+#include <QtWidgets/QLabel>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
@@ -38,7 +39,7 @@ void fill(RequestForm &form, int code, int address, int quantity, int value, con
     switch (code) {
     case 0x01: case 0x02: case 0x03: case 0x04: form.quantitySpin()->setValue(quantity); break;
     case 0x05: form.coilCheck()->setChecked(value != 0); break;
-    case 0x06: form.valueSpin()->setValue(value); break;
+    case 0x06: form.valueEdit()->setText(QString::number(value)); break;
     case 0x0F: {
         QList<bool> coils;
         for (int v : values)
@@ -70,6 +71,15 @@ void fill(RequestForm &form, int code, int address, int quantity, int value, con
     }
 }
 
+// Types text into a spin box as a user does: select what is there, type over it.
+void typeInto(QSpinBox *spin, const QString &text)
+{
+    spin->setFocus();
+    spin->selectAll();
+    QTest::keyClick(spin, Qt::Key_Delete);
+    QTest::keyClicks(spin, text);
+}
+
 } // namespace
 
 class TestRequestForm : public QObject
@@ -84,6 +94,8 @@ private Q_SLOTS:
     void fieldsFollowTheCode();
     void quantityLimits_data();
     void quantityLimits();
+    void otherNumbersAreNotCutShort();
+    void refusedFormSendsNothing();
     void addressNotations_data();
     void addressNotations();
     void wrongTableReferenceIsNamed();
@@ -213,17 +225,68 @@ void TestRequestForm::quantityLimits_data()
     QTest::newRow("10 123 registers") << 0x10 << 123;
 }
 
+// Try-out 8, item 3: with the limit as the spin box's maximum, typing 126 gave 12 and 200 gave
+// 20, without a word. What is typed stays; the form refuses it and says why (requests.md).
 void TestRequestForm::quantityLimits()
 {
     QFETCH(int, code);
     QFETCH(int, max);
     RequestForm form;
+    form.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&form));
     form.setFunctionCode(code);
-    QCOMPARE(form.quantitySpin()->minimum(), 1);
-    QCOMPARE(form.quantitySpin()->maximum(), max);
-    form.quantitySpin()->setValue(max + 1); // clamped: the spec's limit cannot be passed by typing
+    for (const int typed : {max + 1, 10 * max, 0}) {
+        typeInto(form.quantitySpin(), QString::number(typed));
+        QCOMPARE(form.quantitySpin()->text(), QString::number(typed));
+        QCOMPARE(form.quantitySpin()->value(), typed);
+        QVERIFY(!form.build().isValid());
+        QVERIFY(form.bytes().isEmpty());
+        const QString why = form.errorText();
+        QVERIFY2(why.contains(QStringLiteral("quantity %1 is refused").arg(typed)), qPrintable(why));
+        QVERIFY2(why.contains(QStringLiteral("1-%1").arg(max)), qPrintable(why));
+        QVERIFY2(form.findChild<QLabel *>(QStringLiteral("formErrorLabel"))->isVisible(), qPrintable(why));
+        QVERIFY(form.valueTable()->rowCount() <= max); // the value table never passes the limit
+    }
+    typeInto(form.quantitySpin(), QString::number(max));
+    QVERIFY2(form.build().isValid(), qPrintable(form.errorText()));
     QCOMPARE(form.quantitySpin()->value(), max);
-    QVERIFY(form.build().isValid());
+}
+
+// The other numbers typed into the form: 06's value, 17's write quantity and 2B's object id keep
+// every digit typed and are refused with a reason, not cut short.
+void TestRequestForm::otherNumbersAreNotCutShort()
+{
+    RequestForm form;
+    form.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&form));
+    form.setFunctionCode(0x06);
+    form.valueEdit()->clear();
+    QTest::keyClicks(form.valueEdit(), QStringLiteral("70000"));
+    QCOMPARE(form.valueEdit()->text(), QStringLiteral("70000"));
+    QVERIFY(form.bytes().isEmpty());
+    QVERIFY2(form.errorText().contains(QLatin1String("value '70000' is not a register value")), qPrintable(form.errorText()));
+    form.valueEdit()->setText(QStringLiteral("-1"));
+    QCOMPARE(form.build().pdu.toHex(' '), QByteArray("06 00 00 ff ff"));
+    form.valueEdit()->setText(QStringLiteral("0x1234"));
+    QCOMPARE(form.build().pdu.toHex(' '), QByteArray("06 00 00 12 34"));
+
+    form.setFunctionCode(0x17);
+    typeInto(form.writeQuantitySpin(), QStringLiteral("122"));
+    QCOMPARE(form.writeQuantitySpin()->value(), 122);
+    QVERIFY2(form.errorText().contains(QLatin1String("write quantity 122 is refused")), qPrintable(form.errorText()));
+    QVERIFY2(form.errorText().contains(QLatin1String("1-121")), qPrintable(form.errorText()));
+    typeInto(form.writeQuantitySpin(), QStringLiteral("2"));
+    QVERIFY2(form.build().isValid(), qPrintable(form.errorText()));
+    QCOMPARE(form.valueTable()->rowCount(), 2);
+
+    form.setFunctionCode(0x2B);
+    form.deviceIdCodeCombo()->setCurrentIndex(form.deviceIdCodeCombo()->findData(4));
+    typeInto(form.objectIdSpin(), QStringLiteral("100"));
+    QCOMPARE(form.objectIdSpin()->value(), 0x100);
+    QVERIFY(form.bytes().isEmpty());
+    QVERIFY2(form.errorText().contains(QLatin1String("object id 0x100 is refused")), qPrintable(form.errorText()));
+    typeInto(form.objectIdSpin(), QStringLiteral("82"));
+    QCOMPARE(form.build().pdu.toHex(' '), QByteArray("2b 0e 04 82"));
 }
 
 void TestRequestForm::addressNotations_data()
@@ -440,6 +503,37 @@ void TestRequestForm::linkChangeOffersConversion()
     composer.send();
     QCOMPARE(sent.count(), 2);
     QCOMPARE(sent.last().first().toByteArray(), hex("01 03 00 79 00 16 15 DD"));
+}
+
+// A refused form sends nothing: not the last bytes it made, which the Raw tab still holds.
+void TestRequestForm::refusedFormSendsNothing()
+{
+    RequestComposer composer;
+    composer.setFraming(Framing::Rtu);
+    composer.setLinkReady(true);
+    composer.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&composer));
+    composer.setRequestText(QStringLiteral("01 03 00 79 00 16 15 DD"));
+    composer.showFormTab();
+    QCOMPARE(composer.form()->quantitySpin()->value(), 22);
+    QVERIFY(composer.sendAction()->isEnabled());
+    QSignalSpy sent(&composer, &RequestComposer::sendRequested);
+    typeInto(composer.form()->quantitySpin(), QStringLiteral("126"));
+    QCOMPARE(composer.form()->quantitySpin()->value(), 126);
+    QVERIFY(composer.bytes().isEmpty());
+    QVERIFY(!composer.sendAction()->isEnabled());
+    QVERIFY(!composer.pollAction()->isEnabled());
+    composer.send();
+    QCOMPARE(sent.count(), 0);
+    auto *hint = composer.findChild<QLabel *>(QStringLiteral("sendHintLabel"));
+    QVERIFY(hint);
+    QVERIFY2(hint->text().contains(QLatin1String("refuses")), qPrintable(hint->text()));
+    QVERIFY(guitest::saveShot(&composer, QStringLiteral("composer-form-refused.png")));
+    typeInto(composer.form()->quantitySpin(), QStringLiteral("125"));
+    QVERIFY(composer.sendAction()->isEnabled());
+    composer.send();
+    QCOMPARE(sent.count(), 1);
+    QCOMPARE(sent.last().first().toByteArray().mid(1, 5).toHex(' '), QByteArray("03 00 79 00 7d"));
 }
 
 QTEST_MAIN(TestRequestForm)

@@ -10,11 +10,13 @@
 #include "session/sessioncontroller.h"
 #include "traffic/trafficmodel.h"
 #include "traffic/trafficmonitor.h"
+#include "watch/watchworkspace.h"
 
 #include "session/sessionreader.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QFile>
+#include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QSpinBox>
@@ -61,6 +63,7 @@ private Q_SLOTS:
     void versionOneSavedSaysUpgraded();
     void watchesKeptWhenSaved();
     void trafficNamesTheConnectedLink();
+    void quitAfterFirstRunAsksNothing();
 };
 
 void TestSessionMenu::savedSessionReopensTheSame()
@@ -347,6 +350,66 @@ void TestSessionMenu::trafficNamesTheConnectedLink()
     const QString link = model->index(0, TrafficModel::LinkColumn).data().toString();
     QVERIFY2(link.contains(QLatin1String("127.0.0.1:")), qPrintable(link));
     QVERIFY2(!link.contains(QLatin1String("link 0")), qPrintable(link));
+}
+
+// Try-out 8, item 15: quitting after a plain first run asked "The session (untitled) has changes
+// that are not saved" of a user who never made a session. What the next start puts back (the
+// target, the composer's request, the poll count) is not asked about; watches made are.
+void TestSessionMenu::quitAfterFirstRunAsksNothing()
+{
+    QSettings().remove(QStringLiteral("composer/request"));
+    QSettings().setValue(QStringLiteral("startup/started"), true); // the next start is not a first run
+    const QString edited = QStringLiteral("01 03 00 79 00 02 15 DD"); // first-run.md: the quantity 16 made 02
+    QString target;
+    {
+        MainWindow window;
+        QVERIFY(window.startWithSimulator(QStringLiteral("rtu-tcp://127.0.0.1:0")));
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QTRY_VERIFY_WITH_TIMEOUT(window.composer()->sendAction()->isEnabled(), 5000);
+        window.composer()->send();
+        QTRY_VERIFY_WITH_TIMEOUT(window.trafficMonitor()->model()->rowCount() >= 2, 5000);
+        window.composer()->setRequestText(edited);
+        window.composer()->countSpin()->setValue(5);
+        QVERIFY(window.session()->isModified());
+        target = window.connectionBar()->url()->toString();
+        int asked = 0;
+        window.session()->setChangesPrompt([&asked](const QString &) {
+            ++asked;
+            return SessionController::Choice::Cancel;
+        });
+        QVERIFY(window.close());
+        QCOMPARE(asked, 0);
+    }
+    {
+        // The next start puts back what was not asked about.
+        MainWindow window;
+        QVERIFY(!window.startAsConfigured());
+        QCOMPARE(window.composer()->rawEditor()->text(), edited);
+        QCOMPARE(window.connectionBar()->url()->toString(), target);
+        QCOMPARE(window.composer()->countSpin()->value(), 5);
+        QVERIFY(!window.session()->isModified());
+
+        // A watch is kept by nothing but a session: quitting asks about it.
+        WatchDefinition watch;
+        watch.name = QStringLiteral("detector");
+        watch.target = target;
+        watch.function = 3;
+        watch.address = 0x79;
+        watch.quantity = 2;
+        window.watchWorkspace()->addWatch(watch);
+        QVERIFY(window.session()->isModified());
+        int asked = 0;
+        window.session()->setChangesPrompt([&asked](const QString &fileName) {
+            ++asked;
+            [&] { QCOMPARE(fileName, QStringLiteral("(untitled)")); }();
+            return SessionController::Choice::Cancel;
+        });
+        window.show();
+        QVERIFY(!window.close());
+        QCOMPARE(asked, 1);
+        window.session()->setChangesPrompt([](const QString &) { return SessionController::Choice::Discard; });
+    }
 }
 
 QTEST_MAIN(TestSessionMenu)

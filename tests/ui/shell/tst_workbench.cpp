@@ -46,6 +46,7 @@ class TestWorkbench : public QObject
 private Q_SLOTS:
     void initTestCase();
     void firstRunIsReadyToSend();
+    void bannerFollowsTheLink();
     void typedRequestIsAnsweredAndDecoded();
     void ctrlReturnSends();
     void takenPortFallsBackToAFreeOne();
@@ -78,6 +79,41 @@ void TestWorkbench::firstRunIsReadyToSend()
     QVERIFY(!window.controller()->isConnected());
     QVERIFY2(window.banner()->text().startsWith(QLatin1String("Disconnected")), qPrintable(window.banner()->text()));
     QVERIFY(!window.composer()->sendAction()->isEnabled());
+}
+
+// Try-out 8, item 4: disconnected from the first-run simulator, Listen ticked, Connect: the status
+// bar said "listening only" while the banner still said "Disconnected ... press Connect".
+void TestWorkbench::bannerFollowsTheLink()
+{
+    MainWindow window;
+    QVERIFY(window.startWithSimulator(kAnyPort));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTRY_COMPARE_WITH_TIMEOUT(window.controller()->state(), LinkController::State::Connected, kAnswerWaitMs);
+    const QString connected = window.banner()->text();
+    // first-run.md (item 12): the target is greyed while connected, the unit (per request) is not.
+    auto *unit = window.connectionBar()->findChild<QSpinBox *>(QStringLiteral("unitSpin"));
+    QVERIFY(unit && unit->isEnabled());
+    QVERIFY(!window.connectionBar()->findChild<QSpinBox *>(QStringLiteral("portSpin"))->isEnabled());
+    window.connectionBar()->connectButton()->click();
+    QVERIFY2(window.banner()->text().startsWith(QLatin1String("Disconnected")), qPrintable(window.banner()->text()));
+
+    window.connectionBar()->setListenOnly(true);
+    window.connectionBar()->connectButton()->click();
+    QVERIFY(window.controller()->isListening());
+    QTRY_COMPARE_WITH_TIMEOUT(window.controller()->state(), LinkController::State::Connected, kAnswerWaitMs);
+    QVERIFY(window.banner()->isVisible());
+    QVERIFY2(!window.banner()->text().contains(QLatin1String("Disconnected")), qPrintable(window.banner()->text()));
+    QVERIFY2(window.banner()->text().contains(QLatin1String("Listening only")), qPrintable(window.banner()->text()));
+    QVERIFY(guitest::saveShot(&window, QStringLiteral("workbench-listen-simulator.png")));
+
+    // Back to sending: the first run's words again, not "Disconnected".
+    window.connectionBar()->connectButton()->click();
+    QVERIFY(window.banner()->text().startsWith(QLatin1String("Disconnected")));
+    window.connectionBar()->setListenOnly(false);
+    window.connectionBar()->connectButton()->click();
+    QTRY_COMPARE_WITH_TIMEOUT(window.controller()->state(), LinkController::State::Connected, kAnswerWaitMs);
+    QCOMPARE(window.banner()->text(), connected);
 }
 
 void TestWorkbench::typedRequestIsAnsweredAndDecoded()
