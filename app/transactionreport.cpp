@@ -6,6 +6,7 @@
 #include "protocol/dissector.h"
 #include "protocol/functioncode.h"
 #include "protocol/hextext.h"
+#include "session/expectationcheck.h"
 
 #include <QtCore/QJsonValue>
 
@@ -178,21 +179,8 @@ QJsonObject TransactionReport::json(const Transaction &t, const LinkUrl &url)
 
 QString TransactionReport::requestProblem(const Transaction &t, const LinkUrl &url)
 {
-    if (url.delimited.enabled || t.request.isEmpty())
-        return {};
-    const Dissection d = dissect(t.request, url, Direction::Request);
-    if (d.isValid())
-        return {};
-    int errors = 0;
-    QString first;
-    for (const Field &f : d.fields.fields()) {
-        if (f.severity != Severity::Error)
-            continue;
-        if (errors++ == 0)
-            first = QString::fromLatin1(f.key) + QStringLiteral(": ") + f.message;
-    }
-    return QStringLiteral("the request itself is malformed, %1 error(s) (%2)")
-        .arg(errors).arg(first);
+    // One wording for send and run (a plan step): the core's.
+    return ExpectationCheck::requestProblem(t, url.framing(), url.delimited.enabled);
 }
 
 int TransactionReport::exitStatus(const Transaction &t, const LinkUrl &url)

@@ -53,7 +53,7 @@ QString ExpectationCheck::requestProblem(const Transaction &t, Framing framing, 
     }
     if (errors == 0)
         return {};
-    // send's words (app/transactionreport.cpp), so that run and send say the same of one frame.
+    // send says the same of one frame (app/transactionreport.cpp calls this).
     return QStringLiteral("the request itself is malformed, %1 error(s) (%2)").arg(errors).arg(first);
 }
 
