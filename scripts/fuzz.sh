@@ -28,7 +28,7 @@ done
 # the fuzz executables add -fsanitize=fuzzer themselves (tests/fuzz/CMakeLists.txt).
 # Warnings are errors in the gcc build that make test gates on; here clang's own opinions are
 # printed but do not stop the fuzzing.
-flags="-g -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined"
+flags="-g1 -O1 -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined"
 cmake -S "$root" -B "$build" -G Ninja \
     -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_COMPILER=clang++ \
