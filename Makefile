@@ -25,11 +25,10 @@ run: build
 	scripts/run-mbscope.sh $(BUILD)/app/mbscope
 
 # Installs what is missing (peers included), builds, runs the fuzzers briefly (a separate clang
-# build with sanitizers), then runs every test with CTest's summary last.
-test: test-deps configure
-	cmake --build $(BUILD) -j$(JOBS)
-	scripts/fuzz.sh $(FUZZ_SECONDS)
-	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
+# build with sanitizers), then runs every test; prints the time of each phase, then CTest's summary
+# last (scripts/make-test.sh).
+test:
+	scripts/make-test.sh $(BUILD) $(JOBS) $(FUZZ_SECONDS) $(CMAKE_FLAGS)
 
 # Builds the Debian package build/mbscope_VERSION_ARCH.deb (CPack; Depends computed by dpkg-shlibdeps).
 package: build
