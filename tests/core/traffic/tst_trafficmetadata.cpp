@@ -124,7 +124,7 @@ void TestTrafficMetadata::journalRoundTrip()
     QList<TrafficFrame> frames;
     const TrafficJournalRecovery r = TrafficJournalReader::readAll(path, &frames);
     QVERIFY2(r.isClean(), qPrintable(r.message));
-    QCOMPARE(r.version, 2u);
+    QCOMPARE(r.version, 3u);
     QCOMPARE(r.frames, quint64(35));
     QCOMPARE(r.batches, quint64(5)); // metadata + 10 + 10 + 10 + 5
     QCOMPARE(frames.constFirst().sequence, quint64(5));
@@ -224,15 +224,15 @@ void TestTrafficMetadata::newerVersionRefused()
 {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    const QString path = dir.filePath(QStringLiteral("v3.mbtl"));
+    const QString path = dir.filePath(QStringLiteral("v4.mbtl"));
     {
         TrafficLog log;
         QVERIFY(log.openJournal(path));
     }
-    setVersion(path, 3);
+    setVersion(path, 4);
     const TrafficJournalRecovery r = TrafficJournalReader::read(path, {});
     QCOMPARE(r.ending, TrafficJournalRecovery::Ending::NotAJournal);
-    QVERIFY2(r.message.endsWith(QLatin1String("journal version 3 (header 40 bytes) is not one this mbscope reads (versions 1 to 2)")),
+    QVERIFY2(r.message.endsWith(QLatin1String("journal version 4 (header 40 bytes) is not one this mbscope reads (versions 1 to 3)")),
              qPrintable(r.message));
 }
 
