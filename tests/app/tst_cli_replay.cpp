@@ -73,6 +73,7 @@ private slots:
     void serveToPymodbus();
     void recordedWritesAreNotSent();
     void killedRecordingIsTruncated();
+    void serveCountsAnswersApartFromSilences();
 
 private:
     [[nodiscard]] bool record(const QString &target, QString *error);
@@ -462,6 +463,48 @@ void TestCliReplay::killedRecordingIsTruncated()
     QCOMPARE(r.json().value(QStringLiteral("requests")).toInt(), 3);
     QCOMPARE(r.json().value(QStringLiteral("matched")).toInt(), 3);
     QVERIFY2(r.errText().contains(QStringLiteral("truncated: its writer never closed it")), r.describe().constData());
+}
+
+// Issue 26 item 12: replay --serve said "serving 2 recorded answers" of a recording holding one
+// answer and one silence (a request recorded without an answer): one too many. Answers and
+// silences are counted apart, as they are served.
+void TestCliReplay::serveCountsAnswersApartFromSilences()
+{
+    const QString faults = m_dir.filePath(QStringLiteral("drop-0x80-again.json"));
+    QFile file(faults);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"seed": 1, "rules": [{"name": "never", "kind": "drop", "start": 128, "probability": 1.0}]})");
+    file.close();
+    Background device;
+    QString error;
+    QVERIFY2(device.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                           QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--faults"), faults, QStringLiteral("--quiet")},
+                          &error),
+             qPrintable(error));
+    const QString journal = m_dir.filePath(QStringLiteral("answer-and-silence.mbscope.journal"));
+    const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), device.url(), QStringLiteral("--complete"),
+                                       QStringLiteral("--hex"), QStringLiteral("0300790001"), QStringLiteral("--hex"), QStringLiteral("0300800001"),
+                                       QStringLiteral("--timeout"), QStringLiteral("200ms"), QStringLiteral("--count"), QStringLiteral("1"),
+                                       QStringLiteral("--record"), journal, QStringLiteral("--json")});
+    QVERIFY2(poll.finished, poll.describe().constData());
+    QCOMPARE(poll.json().value(QStringLiteral("ok")).toInt(), 1);
+    QCOMPARE(poll.json().value(QStringLiteral("timeouts")).toInt(), 1);
+
+    Background served;
+    QVERIFY2(served.start({QStringLiteral("replay"), journal, QStringLiteral("--serve"), QStringLiteral("rtu-tcp://127.0.0.1:0"),
+                           QStringLiteral("--speed"), QStringLiteral("max")},
+                          &error),
+             qPrintable(error));
+    const CliResult answered = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), served.url(), QStringLiteral("--address"),
+                                           QStringLiteral("0x79")});
+    QVERIFY2(answered.finished && answered.exitCode == 0, answered.describe().constData());
+    const CliResult silent = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), served.url(), QStringLiteral("--address"),
+                                         QStringLiteral("0x80"), QStringLiteral("--timeout"), QStringLiteral("200ms")});
+    QVERIFY2(silent.finished && silent.exitCode != 0, silent.describe().constData());
+    const QString output = QString::fromUtf8(served.stop());
+    QVERIFY2(output.startsWith(QStringLiteral("serving 1 recorded answer and 1 recorded silence of %1 (2 distinct requests, units 1)\n").arg(journal)),
+             qPrintable(output));
+    QVERIFY2(output.contains(QStringLiteral(": 1 recorded answer served, 1 recorded silence kept, 0 requests never recorded\n")), qPrintable(output));
 }
 
 QTEST_GUILESS_MAIN(TestCliReplay)
