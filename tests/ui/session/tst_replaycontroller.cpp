@@ -286,6 +286,8 @@ void TestReplayController::replayAsksBeforeSendingWrites()
     QVERIFY2(controller.replaySummary().contains(QStringLiteral("Writes not sent: 1 (unit 1 at 0x007D).")), qPrintable(controller.replaySummary()));
 
     answer = QMessageBox::Yes;
+    if (!link.isConnected()) // the replay closed the link's own connection
+        link.connectTo(m_simUrl);
     panel.replay();
     QVERIFY(finished.wait(kWaitMs));
     QCOMPARE(asked, 3);
