@@ -5,6 +5,7 @@
 #include "traffic/trafficrecording.h"
 
 #include <QtCore/QFile>
+#include <QtCore/QFileInfo>
 #include <QtCore/QTemporaryDir>
 #include <QtCore/QtEndian>
 #include <QtTest/QtTest>
@@ -148,7 +149,8 @@ void TestTrafficMetadata::metadataOnDiskBeforeFirstFrame()
     QVERIFY(log.openJournal(path, options));
     appendMade(log, 0, 0); // pending, not written: a kill now loses it, never the metadata
     const TrafficJournalRecovery r = TrafficJournalReader::read(path, {});
-    QVERIFY2(r.isClean(), qPrintable(r.message));
+    // Still being written: whole batches, no end record yet.
+    QVERIFY2(r.ending == TrafficJournalRecovery::Ending::NotClosed, qPrintable(r.message));
     QCOMPARE(r.frames, quint64(0));
     QCOMPARE(r.metadata, metadata);
     // An existing journal is evidence: refused, and says so.
@@ -198,6 +200,8 @@ void TestTrafficMetadata::versionOneStillRead()
         for (quint64 i = 0; i < 20; ++i)
             appendMade(log, 0, i);
     }
+    // Version 1 had no end record: the one closing wrote (the last 32 + 28 bytes) goes.
+    QVERIFY(QFile::resize(path, QFileInfo(path).size() - 60));
     setVersion(path, 1);
     QList<TrafficFrame> frames;
     TrafficJournalRecovery r = TrafficJournalReader::readAll(path, &frames);
