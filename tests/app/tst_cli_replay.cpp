@@ -457,8 +457,10 @@ void TestCliReplay::killedRecordingIsTruncated()
     QVERIFY2(!text.outText().contains(QStringLiteral("ends cleanly")), text.describe().constData());
 
     // Replayed to a device that answers 0x0080: only the three completed exchanges are compared.
+    // (The live gate count at 0x0086 grows with the simulator's age: expected to change.)
     const CliResult r = runMbscope({QStringLiteral("replay"), journal, QStringLiteral("--target"), m_sim.url(), QStringLiteral("--speed"),
-                                    QStringLiteral("max"), QStringLiteral("--json")});
+                                    QStringLiteral("max"), QStringLiteral("--ignore"), QStringLiteral("modbus.register_value@0x0086"),
+                                    QStringLiteral("--json")});
     QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
     QCOMPARE(r.json().value(QStringLiteral("requests")).toInt(), 3);
     QCOMPARE(r.json().value(QStringLiteral("matched")).toInt(), 3);
