@@ -96,7 +96,7 @@ void TestCliRecord::pollRecordedThenAnalyzed()
     for (const char *key : {"count", "ok", "exceptions", "timeouts"})
         QCOMPARE(o.value(QLatin1String(key)).toInt(), m_poll.value(QLatin1String(key)).toInt());
     const QJsonObject source = o.value(QStringLiteral("source")).toObject();
-    QCOMPARE(source.value(QStringLiteral("version")).toInt(), 2);
+    QCOMPARE(source.value(QStringLiteral("version")).toInt(), 3); // version 3: closed with an end record
     QCOMPARE(source.value(QStringLiteral("frames")).toInt(), 400);
     const QJsonObject metadata = source.value(QStringLiteral("metadata")).toObject();
     QCOMPARE(metadata.value(QStringLiteral("command")).toString(), QStringLiteral("poll"));
