@@ -50,6 +50,8 @@ int runReplay(const QStringList &arguments)
         "compares each answer with the recorded one field by field (dissector keys, as a plan's expectations name them: "
         "modbus.register_value@0x007D), an exception against a normal answer, a missing answer; then the latency "
         "recorded and now (median, p95).\n"
+        "Recorded writes (functions 05, 06, 0F, 10, 15, 16, 17) are not sent unless --send-writes: a real device's outputs "
+        "would move. Each one skipped is listed (unit, function, address, quantity) and counted as skipped.\n"
         "With --serve URL: a simulator on URL answers with the recorded answers, matched by unit and request PDU (the "
         "MBAP transaction id aside); a request recorded several times gets its answers in turn, cycling.\n"
         "Example: mbscope replay bench.mbscope.json --speed max\n"
@@ -83,8 +85,12 @@ int runReplay(const QStringList &arguments)
                                                       "address; repeat the option or separate with commas. Added to the "
                                                       "session's capture.ignore."),
                                        QStringLiteral("field"));
+    const QCommandLineOption sendWritesOpt(QStringLiteral("send-writes"),
+                                           QStringLiteral("Send the recording's writes to the target as well (05, 06, 0F, 10, 15, "
+                                                          "16, 17): they change the device. Without it they are listed as skipped, "
+                                                          "not sent."));
     const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the result as JSON."));
-    parser.addOptions({targetOpt, speedOpt, serveOpt, unrecordedOpt, durationOpt, ignoreOpt, jsonOpt});
+    parser.addOptions({targetOpt, speedOpt, serveOpt, unrecordedOpt, durationOpt, ignoreOpt, sendWritesOpt, jsonOpt});
     const RecordOptions recordOptions;
     recordOptions.addTo(parser);
     parser.addPositionalArgument(QStringLiteral("source"),
@@ -132,6 +138,11 @@ int runReplay(const QStringList &arguments)
                 return ExitUsage;
             }
         }
+    }
+    if (parser.isSet(sendWritesOpt) && parser.isSet(serveOpt)) {
+        err << "mbscope replay: --send-writes applies to a replay to a device (it sends the recording's writes there); "
+               "--serve sends nothing, it answers\n";
+        return ExitUsage;
     }
     if (!ignore.isEmpty() && parser.isSet(serveOpt)) {
         err << "mbscope replay: --ignore applies to a replay to a device (it says which answers' fields to leave out of the "
@@ -251,6 +262,8 @@ int runReplay(const QStringList &arguments)
         timeoutMs = recorded.settings.value(QStringLiteral("timeout_ms")).toInt();
 
     const bool asJson = parser.isSet(jsonOpt);
+    const bool sendWrites = parser.isSet(sendWritesOpt);
+    const qsizetype writes = script.writes().size();
     if (recordedTarget && asJson)
         err << "mbscope replay: no --target: replaying to " << parsed.url->toString() << ", the target " << source << " recorded\n";
     if (!asJson) {
@@ -258,7 +271,11 @@ int runReplay(const QStringList &arguments)
             << (recordedTarget ? " (the target the journal recorded; --target replays elsewhere)" : "") << ", "
             << (speed > 0 ? (speed == 1.0 ? QStringLiteral("at the recorded pacing") : QStringLiteral("%1 times faster").arg(speed))
                           : QStringLiteral("back to back"))
-            << "\n\n";
+            << '\n';
+        if (writes > 0)
+            out << writes << (writes == 1 ? " of them is a write: " : " of them are writes: ")
+                << (sendWrites ? "sent (--send-writes)" : "not sent (--send-writes sends them)") << '\n';
+        out << '\n';
         out.flush();
     }
     TrafficRecording recording;
@@ -269,11 +286,13 @@ int runReplay(const QStringList &arguments)
     if (timeoutMs > 0)
         metadata.settings.insert(QStringLiteral("timeout_ms"), timeoutMs);
     metadata.settings.insert(QStringLiteral("requests"), double(script.size()));
+    metadata.settings.insert(QStringLiteral("send_writes"), sendWrites);
     if (!openRecording(recording, record, metadata, QStringLiteral("replay"), err))
         return ExitUsage;
     ReplayRunner runner(script, *parsed.url, EngineOptions{}, timeoutMs);
     runner.setSpeed(speed);
     runner.setIgnoredFields(ignore);
+    runner.setSendWrites(sendWrites);
     if (recording.isOpen())
         runner.setTrafficLog(recording.log());
     InterruptWatcher interrupt;

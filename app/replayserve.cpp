@@ -53,7 +53,12 @@ int serveReplay(const ReplayScript &script, const QString &source, const ReplayS
         loop.quit();
     });
     if (!options.json) {
-        out << "serving " << script.size() << " recorded answers of " << source << " (" << responder.distinctRequests()
+        // Answers and silences apart: a request recorded without an answer is not an answer.
+        out << "serving " << responder.recordedAnswers() << (responder.recordedAnswers() == 1 ? " recorded answer" : " recorded answers");
+        if (responder.recordedSilences() > 0)
+            out << " and " << responder.recordedSilences()
+                << (responder.recordedSilences() == 1 ? " recorded silence" : " recorded silences");
+        out << " of " << source << " (" << responder.distinctRequests()
             << " distinct requests, units " << units.join(QStringLiteral(", ")) << ")\n"
             << "latency       "
             << (options.speed > 0 ? QStringLiteral("as recorded%1").arg(options.speed == 1.0 ? QString() : QStringLiteral(" / %1").arg(options.speed))

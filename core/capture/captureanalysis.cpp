@@ -44,6 +44,10 @@ void CaptureAnalysis::add(const CaptureExchange &exchange)
         ++c.unmatched;
         return;
     }
+    if (exchange.kind == CaptureExchange::Kind::Unanswered) {
+        ++m_unansweredAtEnd;
+        return;
+    }
     m_overall.add(t);
     if (t.status != TransactionStatus::Late) {
         ++c.transactions;
@@ -73,6 +77,7 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
         {QStringLiteral("complete"), report.isComplete()},
         {QStringLiteral("error"), report.error.isEmpty() ? QJsonValue() : QJsonValue(report.error)},
         {QStringLiteral("unmatched_responses"), double(m_unmatched)},
+        {QStringLiteral("unanswered_at_end"), double(m_unansweredAtEnd)},
     };
     if (report.kind == ExchangeSourceReport::Kind::Capture) {
         const auto &f = report.frames;
@@ -156,7 +161,13 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
         out += QStringLiteral(", %1 frames").arg(report.journal.frames);
     out += QStringLiteral(", %1 s of traffic)\n").arg(QString::number(double(m_lastNs - m_firstNs) / 1e9, 'f', 3));
     if (!report.error.isEmpty())
-        out += padded(QStringLiteral("damaged")) + report.error + QStringLiteral("; everything before it is analysed\n");
+        out += padded(report.journal.ending == TrafficJournalRecovery::Ending::NotClosed ? QStringLiteral("truncated")
+                                                                                          : QStringLiteral("damaged"))
+               + report.error + QStringLiteral("; everything before it is analysed\n");
+    if (m_unansweredAtEnd > 0)
+        out += padded(QStringLiteral("unanswered")) + QStringLiteral("%1 request(s) at the end of the recording, cut by its end before "
+                                                                     "their outcome: counted in no figure below (not as timeouts)\n")
+                                                          .arg(m_unansweredAtEnd);
     if (report.kind == ExchangeSourceReport::Kind::Journal && !report.journal.metadata.isEmpty()) {
         TrafficMetadata metadata;
         QString problem;

@@ -27,12 +27,15 @@ public:
 
     [[nodiscard]] const Statistics &statistics() const { return m_overall; }
     [[nodiscard]] quint64 unmatchedResponses() const { return m_unmatched; }
+    // Requests the recording ended before the outcome of (CaptureExchange::Kind::Unanswered):
+    // in no figure of the statistics, timeouts included.
+    [[nodiscard]] quint64 unansweredAtEnd() const { return m_unansweredAtEnd; }
     [[nodiscard]] qint64 firstNs() const { return m_firstNs; }
     [[nodiscard]] qint64 lastNs() const { return m_lastNs; }
 
     // Statistics::toJson's keys at the top (the shape poll --json prints), then
     // "source": {"path", "format", "complete", "error", "packets", "modbus_packets", "frames",
-    //            "requests", "responses", "unmatched_responses", "malformed_requests",
+    //            "requests", "responses", "unmatched_responses", "unanswered_at_end", "malformed_requests",
     //            "retransmitted_bytes", "lost_bytes", "gaps", "joined_mid_stream", "cut_by_gap_bytes",
     //            "skipped_bytes", ...},
     // "span_ms", "conversations": [{"client", "server", "transport", "framing", "requests",
@@ -58,6 +61,7 @@ private:
     std::map<quint8, std::unique_ptr<Statistics>> m_byFunction;
     std::vector<ConversationCounts> m_conversations;
     quint64 m_unmatched = 0;
+    quint64 m_unansweredAtEnd = 0;
     qint64 m_firstNs = 0;
     qint64 m_lastNs = 0;
 };

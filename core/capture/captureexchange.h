@@ -11,9 +11,12 @@ namespace mbscope {
 // transaction.doneNs (and firstByteNs) when the answer's last byte was seen, 0 when none.
 //
 // An answer that matches no request is a record of its own (UnmatchedResponse: the request is
-// empty, sentNs 0); Statistics are not fed those, as the engine counts them apart.
+// empty, sentNs 0); Statistics are not fed those, as the engine counts them apart. A request
+// whose outcome the recording does not hold because the recording ends first (a journal whose
+// writer was killed with the request in flight) is Unanswered: "unanswered at the end of the
+// recording", not a timeout; Statistics are not fed those either, and replay leaves them out.
 struct CaptureExchange {
-    enum class Kind : quint8 { Transaction, UnmatchedResponse };
+    enum class Kind : quint8 { Transaction, UnmatchedResponse, Unanswered };
     Kind kind = Kind::Transaction;
     quint32 conversation = 0;   // CaptureConversation::id, or the journal's link id
     Framing framing = Framing::Tcp;

@@ -58,7 +58,7 @@ void ExchangePcapExporter::add(const CaptureExchange &exchange)
 {
     const Transaction &t = exchange.transaction;
     stream(exchange.conversation, exchange.framing);
-    const bool requestWritten = exchange.kind == CaptureExchange::Kind::Transaction && t.status != TransactionStatus::Late;
+    const bool requestWritten = exchange.kind != CaptureExchange::Kind::UnmatchedResponse && t.status != TransactionStatus::Late;
     if (requestWritten && !t.request.isEmpty()) {
         // No later exchange has an earlier request: everything held up to this one can go.
         writeUpTo(t.sentNs);

@@ -57,7 +57,9 @@ QStringList ExchangeRow::cells(const CaptureExchange &e, const CaptureConversati
     const bool answered = !t.response.isEmpty() && t.doneNs != 0;
     const bool timed = answered && t.sentNs != 0;
     return {QString::number(t.id),
-            isUnmatched(e) ? QStringLiteral("unmatched_response") : QStringLiteral("transaction"),
+            isUnmatched(e) ? QStringLiteral("unmatched_response")
+            : e.kind == CaptureExchange::Kind::Unanswered ? QStringLiteral("unanswered_at_end")
+                                                          : QStringLiteral("transaction"),
             t.sentNs != 0 ? isoTime(t.sentNs) : QString(),
             answered ? isoTime(t.doneNs) : QString(),
             timed ? QString::number(double(t.doneNs - t.sentNs) / 1e3, 'f', 3) : QString(),
@@ -70,7 +72,9 @@ QStringList ExchangeRow::cells(const CaptureExchange &e, const CaptureConversati
             f.hasAddress ? QString::number(f.address) : QString(),
             f.hasAddress ? QString::number(f.quantity) : QString(),
             f.values,
-            isUnmatched(e) ? QStringLiteral("unmatched") : transactionStatusName(t.status),
+            isUnmatched(e) ? QStringLiteral("unmatched")
+            : e.kind == CaptureExchange::Kind::Unanswered ? QStringLiteral("unanswered")
+                                                          : transactionStatusName(t.status),
             t.status == TransactionStatus::Exception ? hex2(t.exceptionCode) : QString(),
             t.problem,
             e.requestPacket ? QString::number(e.requestPacket) : QString(),

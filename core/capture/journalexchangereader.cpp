@@ -217,9 +217,12 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
 
     for (Slot &s : queue) {
         if (!s.done) {
+            // Cut by the end of the journal (its writer killed with the request in flight): no
+            // outcome to count, so not a timeout.
             ++result.noOutcome;
+            s.exchange.kind = CaptureExchange::Kind::Unanswered;
             s.exchange.transaction.status = TransactionStatus::Timeout;
-            s.exchange.transaction.problem = QStringLiteral("the journal ends before this request's outcome");
+            s.exchange.transaction.problem = QStringLiteral("unanswered at the end of the recording: the journal ends before this request's outcome");
             s.done = true;
         }
     }

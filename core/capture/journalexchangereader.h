@@ -34,7 +34,8 @@ public:
         quint64 garbageFrames = 0;
         quint64 unmatchedResponses = 0;
         quint64 lateResponses = 0;
-        quint64 noOutcome = 0; // requests whose outcome the journal does not hold (cut short)
+        // Requests whose outcome the journal does not hold, as it ends first: CaptureExchange::Kind::Unanswered.
+        quint64 noOutcome = 0;
         // One per link id: framing from the link's URL, the server's address and port when the
         // URL names an IPv4 address (else 10.0.0.2), a client at 10.0.0.1:(49152 + id).
         std::vector<CaptureConversation> conversations;

@@ -28,6 +28,7 @@ ReplayResponder::ReplayResponder(const ReplayScript &script, Unrecorded policy, 
             r.pdu = AduBuilder::parse(r.adu, e.framing).pdu;
             r.latencyNs = std::max<qint64>(0, e.recorded.latencyNs());
         }
+        ++(r.adu.isEmpty() ? m_recordedSilences : m_recordedAnswers);
         m_answers[key(e.unitId, e.requestPdu)].inTurn.append(r);
     }
 }

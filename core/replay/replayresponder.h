@@ -47,6 +47,10 @@ public:
 
     [[nodiscard]] const Counters &counters() const { return m_counters; }
     [[nodiscard]] qsizetype distinctRequests() const { return m_answers.size(); }
+    // What the recording holds to serve: answers (normal or exception), and silences (requests
+    // recorded without an answer, kept silent); together the script's size.
+    [[nodiscard]] qsizetype recordedAnswers() const { return m_recordedAnswers; }
+    [[nodiscard]] qsizetype recordedSilences() const { return m_recordedSilences; }
     [[nodiscard]] static QString policyText(Unrecorded policy); // "exception 0B", "no answer"
 
 private:
@@ -68,6 +72,8 @@ private:
     Unrecorded m_policy;
     double m_speed;
     Counters m_counters;
+    qsizetype m_recordedAnswers = 0;
+    qsizetype m_recordedSilences = 0;
 };
 
 } // namespace mbscope

@@ -111,10 +111,25 @@ QString ReplayResult::summary(const ReplayScript &script, int maxListed) const
     }
     if (listed > 0)
         text += QLatin1Char('\n');
+    if (!skippedWrites.isEmpty()) {
+        text += QStringLiteral("not sent: the recording's writes (--send-writes sends them)\n");
+        for (qsizetype i = 0; i < skippedWrites.size(); ++i) {
+            if (i == maxListed) {
+                text += QStringLiteral("... (%1 more writes not listed; --json lists them all)\n").arg(skippedWrites.size() - maxListed);
+                break;
+            }
+            text += QStringLiteral("%1: not sent\n").arg(skippedWrites.at(i).text());
+        }
+        text += QLatin1Char('\n');
+    }
     text += QStringLiteral("replayed      %1 of %2 requests%3\n")
                 .arg(outcomes.size())
                 .arg(script.size())
                 .arg(interrupted ? QStringLiteral(" (interrupted)") : QString());
+    if (!skippedWrites.isEmpty())
+        text += QStringLiteral("skipped       %1 %2, not sent (--send-writes sends them)\n")
+                    .arg(skippedWrites.size())
+                    .arg(skippedWrites.size() == 1 ? QStringLiteral("write") : QStringLiteral("writes"));
     text += QStringLiteral("matched       %1\n").arg(count(AnswerComparison::Verdict::Match));
     text += QStringLiteral("differed      %1  (values %2, outcome %3, missing answers %4)\n")
                 .arg(differed())
@@ -146,6 +161,9 @@ QJsonObject ReplayResult::toJson(const ReplayScript &script) const
                                        {QStringLiteral("differences"), QJsonArray::fromStringList(o.comparison.differences)},
                                        {QStringLiteral("ignored"), ignoredJson(o.comparison)}});
     }
+    QJsonArray skipped;
+    for (const RecordedWrite &w : skippedWrites)
+        skipped.append(w.toJson());
     QJsonArray ignored;
     for (const IgnoredCount &c : ignoredCounts()) {
         ignored.append(QJsonObject{{QStringLiteral("field"), c.selector},
@@ -159,9 +177,11 @@ QJsonObject ReplayResult::toJson(const ReplayScript &script) const
                        {QStringLiteral("values_differ"), double(count(AnswerComparison::Verdict::ValuesDiffer))},
                        {QStringLiteral("outcome_differs"), double(count(AnswerComparison::Verdict::OutcomeDiffers))},
                        {QStringLiteral("missing_answers"), double(count(AnswerComparison::Verdict::MissingAnswer))},
+                       {QStringLiteral("skipped_writes"), double(skippedWrites.size())},
                        {QStringLiteral("interrupted"), interrupted},
                        {QStringLiteral("elapsed_ms"), double(elapsedNs) / 1e6},
                        {QStringLiteral("differences"), differences},
+                       {QStringLiteral("skipped"), skipped},
                        {QStringLiteral("ignored"), ignored},
                        {QStringLiteral("latency_us"),
                         QJsonObject{{QStringLiteral("recorded"), latencyJson(recorded)}, {QStringLiteral("replayed"), latencyJson(replayed)}}}};

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "exchange/statistics.h"
+#include "replay/recordedwrite.h"
 #include "replay/replayoutcome.h"
 
 #include <QtCore/QJsonObject>
@@ -17,6 +18,8 @@ class ReplayScript;
 struct ReplayResult {
     QString target;
     QList<ReplayOutcome> outcomes;
+    // Recorded writes not sent (ReplayRunner::setSendWrites): neither matched nor differed.
+    QList<RecordedWrite> skippedWrites;
     Statistics recorded;
     Statistics replayed;
     QStringList ignoredSelectors; // --ignore, as given: each is reported with how often it hid a difference
@@ -36,12 +39,13 @@ struct ReplayResult {
 
     // "latency ms    recorded median 4.012  p95 7.901   now median 0.310  p95 0.522   (median -92.3 %)"
     [[nodiscard]] QString latencyLine() const;
-    // The differences (each with its request number and the request's unit and function), then
-    // the counts and the latency line; at most maxListed outcomes are listed in full.
+    // The differences (each with its request number and the request's unit and function), the
+    // writes not sent (each with its unit, function, address and quantity), then the counts and
+    // the latency line; at most maxListed outcomes (and maxListed writes) are listed in full.
     [[nodiscard]] QString summary(const ReplayScript &script, int maxListed = 50) const;
     // {"target","replayed","matched","values_differ","outcome_differs","missing_answers",
-    //  "interrupted","elapsed_ms","differences":[{"request","sent","function","verdict","differences":[...],
-    //  "ignored":[...]}], "ignored":[{"field","answers","first"}],
+    //  "skipped_writes","interrupted","elapsed_ms","differences":[{"request","sent","function","verdict","differences":[...],
+    //  "ignored":[...]}], "skipped":[{"request","unit","function","name","address","quantity"}], "ignored":[{"field","answers","first"}],
     //  "latency_us":{"recorded":{median,p95,...},"replayed":{...}}}
     [[nodiscard]] QJsonObject toJson(const ReplayScript &script) const;
 };

@@ -76,6 +76,12 @@ ReplayResult ReplayRunner::run(const Observer &observer)
     const qint64 startNs = monotonicNowNs();
     for (qsizetype i = 0; i < m_script.size() && !m_stopped; ++i) {
         const ReplayExchange &e = m_script.exchanges().at(size_t(i));
+        if (!m_sendWrites) {
+            if (const auto write = RecordedWrite::of(i, e.unitId, e.requestPdu)) {
+                result.skippedWrites.append(*write);
+                continue;
+            }
+        }
         if (m_speed > 0)
             waitUntil(startNs + qint64(double(e.offsetNs) / m_speed));
         if (m_stopped)
@@ -100,7 +106,7 @@ ReplayResult ReplayRunner::run(const Observer &observer)
         if (observer)
             observer(result.outcomes.constLast());
     }
-    result.interrupted = m_stopped && result.outcomes.size() < m_script.size();
+    result.interrupted = m_stopped && result.outcomes.size() + result.skippedWrites.size() < m_script.size();
     result.elapsedNs = monotonicNowNs() - startNs;
     m_engine->closeLink();
     return result;

@@ -26,6 +26,10 @@ class TransactionEngine;
 //
 // Requests recorded in the target's framing are sent byte for byte; in another framing they are
 // re-framed from their unit and PDU (MBAP transaction ids 1, 2, 3...).
+//
+// Recorded writes (RecordedWrite: 05, 06, 0F, 10, 15, 16, 17) are not sent unless
+// setSendWrites(true): a replay to a real device would move its outputs. Each one skipped is in
+// ReplayResult::skippedWrites, and is not waited for.
 // Runs a local event loop: call from a thread with none running (the CLI's main thread).
 class ReplayRunner
 {
@@ -40,6 +44,8 @@ public:
 
     // 1: recorded pacing; 10: ten times faster; 0: no waiting at all.
     void setSpeed(double speed) { m_speed = speed; }
+    // Whether recorded writes are sent (false by default: they are skipped and listed).
+    void setSendWrites(bool send) { m_sendWrites = send; }
     // Fields expected to change (--ignore): their differences are reported as ignored.
     void setIgnoredFields(const IgnoredFields &ignore) { m_ignore = ignore; }
     // Every frame in and out goes to log (--record) until setTrafficLog(nullptr), which also
@@ -60,6 +66,7 @@ private:
     int m_timeoutMs;
     double m_speed = 1.0;
     IgnoredFields m_ignore;
+    bool m_sendWrites = false;
     bool m_stopped = false;
     QEventLoop *m_waitLoop = nullptr;
     std::unique_ptr<TransactionEngine> m_engine;

@@ -38,6 +38,16 @@ void ReplayScript::add(const CaptureExchange &exchange)
     m_exchanges.push_back(std::move(r));
 }
 
+QList<RecordedWrite> ReplayScript::writes() const
+{
+    QList<RecordedWrite> writes;
+    for (size_t i = 0; i < m_exchanges.size(); ++i) {
+        if (const auto w = RecordedWrite::of(qsizetype(i), m_exchanges[i].unitId, m_exchanges[i].requestPdu))
+            writes.append(*w);
+    }
+    return writes;
+}
+
 QList<quint8> ReplayScript::unitIds() const
 {
     QList<quint8> ids;

@@ -3,6 +3,7 @@
 #include "capture/captureoptions.h"
 #include "capture/exchangesource.h"
 #include "exchange/statistics.h"
+#include "replay/recordedwrite.h"
 #include "replay/replayexchange.h"
 
 #include <QtCore/QList>
@@ -32,6 +33,8 @@ public:
     [[nodiscard]] const Statistics &recordedStatistics() const { return m_statistics; }
     // Unit ids the recorded requests address, ascending.
     [[nodiscard]] QList<quint8> unitIds() const;
+    // The recorded requests that write to the device (RecordedWrite), in request order.
+    [[nodiscard]] QList<RecordedWrite> writes() const;
     // Recorded requests whose bytes could not be taken apart (no unit or function code): left out.
     [[nodiscard]] quint64 unusable() const { return m_unusable; }
 

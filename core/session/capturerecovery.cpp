@@ -13,6 +13,10 @@ QString RecoveredCapture::summary() const
     switch (recovery.ending) {
     case TrafficJournalRecovery::Ending::Clean:
         return QStringLiteral("capture %1: %2").arg(name, recovery.message);
+    case TrafficJournalRecovery::Ending::NotClosed:
+        return QStringLiteral("capture %1: %2 (the recording was not closed, as after a crash or a kill while capturing; "
+                              "every batch written is kept)")
+            .arg(name, recovery.message);
     case TrafficJournalRecovery::Ending::CutShort:
         return QStringLiteral("capture %1: %2 (the journal was cut short, as by a crash or a kill while capturing; "
                               "everything up to the last complete batch is kept)")

@@ -18,6 +18,7 @@ struct RecoveredCapture {
     TrafficJournalRecovery recovery; // its message: "recovered 12,000 frames in 120 batches; ..."
     QList<TrafficFrame> frames;
     [[nodiscard]] bool ok() const { return recovery.ending == TrafficJournalRecovery::Ending::Clean
+                                           || recovery.ending == TrafficJournalRecovery::Ending::NotClosed
                                            || recovery.ending == TrafficJournalRecovery::Ending::CutShort
                                            || recovery.ending == TrafficJournalRecovery::Ending::Corrupt; }
     // "capture bench.mbscope.journal: recovered ... (the journal was cut short: a crash or a kill

@@ -20,7 +20,7 @@ namespace {
 
 constexpr char kFileMagic[8] = {'M', 'B', 'S', 'C', 'T', 'L', 'O', 'G'};
 constexpr char kBatchMagic[4] = {'B', 'T', 'C', 'H'};
-constexpr quint32 kVersion = 2;
+constexpr quint32 kVersion = 3;
 constexpr quint32 kOldestVersion = 1;
 constexpr std::size_t kFileHeaderSize = 40;
 constexpr std::size_t kBatchHeaderSize = 32;
@@ -29,6 +29,7 @@ constexpr quint8 kKindFrame = 1;
 constexpr quint8 kKindLink = 2;
 constexpr quint8 kKindMetadata = 3;
 constexpr quint8 kKindNote = 4;
+constexpr quint8 kKindEnd = 5;
 
 // CRC-32/ISO-HDLC, slicing by 8 (eight table lookups per 8 bytes): about 1-2 GB/s, so the
 // checksum of a batch costs a few ns per logged frame on the engine's thread.
@@ -149,6 +150,18 @@ void TrafficJournalWriter::close()
     if (!m_file.isOpen())
         return;
     flush();
+    if (m_error.isEmpty()) {
+        // The end record, alone in the last batch: a reader tells a journal closed from one whose
+        // writer was killed between two batches. It is not a batch of traffic (not counted).
+        const quint64 batches = m_batches;
+        char *p = reserve(kRecordHeaderSize);
+        std::memset(p, 0, kRecordHeaderSize);
+        p[0] = char(kKindEnd);
+        qToLittleEndian<qint64>(monotonicNowNs(), p + 12);
+        ++m_batchRecords;
+        flush();
+        m_batches = batches;
+    }
     m_file.close();
 }
 
@@ -334,7 +347,7 @@ TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sin
         return r;
     }
     r.version = version;
-    const quint8 lastKind = version >= 2 ? kKindNote : kKindLink;
+    const quint8 lastKind = version >= 3 ? kKindEnd : version >= 2 ? kKindNote : kKindLink;
     r.wallClockMs = readLe<qint64>(data + 16);
     r.monotonicNs = readLe<qint64>(data + 24);
 
@@ -408,6 +421,8 @@ TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sin
             } else if (kind == kKindMetadata) {
                 if (r.metadata.isEmpty())
                     r.metadata = QByteArray(rec + kRecordHeaderSize, qsizetype(length));
+            } else if (kind == kKindEnd) {
+                r.closed = true;
             } else if (kind == kKindNote) {
                 ++r.notes;
                 if (notes)
@@ -432,17 +447,30 @@ TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sin
             nextSequence = firstSequence + frames;
             sawFrames = true;
         }
-        ++r.batches;
+        // The end record's batch is not one of traffic (the writer does not count it either).
+        const bool endOnly = records == 1 && frames == 0 && quint8(p[0]) == kKindEnd;
+        r.batches += endOnly ? 0 : 1;
         at += kBatchHeaderSize + payload;
         r.goodBytes = qint64(at);
     }
-    if (r.batches == 0)
+    if (r.goodBytes == 0)
         r.goodBytes = qint64(std::min<std::size_t>(headerSize, size));
+    if (r.ending == TrafficJournalRecovery::Ending::Clean && version >= 3 && !r.closed)
+        r.ending = TrafficJournalRecovery::Ending::NotClosed;
 
     QString text = QStringLiteral("recovered %1 frames in %2 batches").arg(grouped(qint64(r.frames)), grouped(qint64(r.batches)));
     switch (r.ending) {
     case TrafficJournalRecovery::Ending::Clean:
-        text += QStringLiteral("; the journal ends cleanly at byte %1").arg(grouped(r.fileBytes));
+        text += version >= 3 ? QStringLiteral("; the journal ends cleanly at byte %1").arg(grouped(r.fileBytes))
+                             : QStringLiteral("; the journal ends after a complete batch, at byte %1 (a version %2 journal does not "
+                                              "say whether its writer closed it)")
+                                   .arg(grouped(r.fileBytes))
+                                   .arg(version);
+        break;
+    case TrafficJournalRecovery::Ending::NotClosed:
+        text += QStringLiteral("; truncated: its writer never closed it (killed, crashed or still writing), it stops after "
+                               "the last complete batch, at byte %1; whatever the writer held then is not in it")
+                    .arg(grouped(r.fileBytes));
         break;
     case TrafficJournalRecovery::Ending::CutShort:
         text += QStringLiteral("; the last batch was cut short at byte %1 and is dropped (it began at byte %2)")

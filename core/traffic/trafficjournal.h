@@ -21,13 +21,13 @@ namespace mbscope {
 // a digit) is not, so text would need a checksum per line anyway. A length + CRC-32 per batch
 // makes recovery exact and costs one 28-byte header per frame and 32 bytes per batch.
 //
-// Format, version 2 (version 1 is read as well: it is version 2 without metadata and note
-// records). All integers little-endian; CRC-32 is CRC-32/ISO-HDLC (zlib's crc32: reflected
+// Format, version 3 (versions 1 and 2 are read as well: version 2 is version 3 without the end
+// record, version 1 is version 2 without metadata and note records). All integers little-endian; CRC-32 is CRC-32/ISO-HDLC (zlib's crc32: reflected
 // polynomial 0xEDB88320, initial and final XOR 0xFFFFFFFF, check "123456789" = 0xCBF43926).
 //
 //   file header, 40 bytes:
 //     0  8  magic "MBSCTLOG"
-//     8  4  version (2; 1 before metadata and notes)
+//     8  4  version (3; 2 before the end record, 1 before metadata and notes)
 //    12  4  header size (40)
 //    16  8  wall clock when the journal was opened, ms since 1970-01-01 UTC
 //    24  8  monotonicNowNs() at the same moment: t_wall = wall + (tNs - monotonic) / 1e6
@@ -43,7 +43,8 @@ namespace mbscope {
 //    24  4  CRC-32 of the payload
 //    28  4  CRC-32 of bytes 0-27 of this header
 //    32     payload: records back to back, each
-//              0  1  kind: 1 frame, 2 link name, 3 metadata (version 2), 4 note (version 2)
+//              0  1  kind: 1 frame, 2 link name, 3 metadata (version 2), 4 note (version 2),
+//                        5 end (version 3)
 //              1  1  direction (TrafficDirection)      } frames only,
 //              2  1  verdict (TrafficVerdict)          } 0 for the other kinds
 //              3  1  reserved (0)
@@ -60,9 +61,14 @@ namespace mbscope {
 //   profile, requests, version, host, start time). A reader keeps the first one.
 //   Note (version 2): a JSON object about the transaction with the record's id on the record's
 //   link, e.g. the simulator's fault rules that shaped an answer: {"faults": ["slow", ...]}.
+//   End (version 3): no bytes, tNs when the writer closed the journal; alone in the last batch,
+//   written by close(). A version 3 journal without it was not closed by its writer (killed,
+//   crashed, a write failed, or still being written): the reader says so (Ending::NotClosed),
+//   since a kill between two batches leaves a file that otherwise looks whole.
 //
 // Each batch is written with one write(2) (QFile unbuffered) when it holds batchEntries frames or
-// its first frame is batchNs old, whichever comes first (or it reaches 256 MiB), and on close. That reaches the kernel's
+// its first frame is batchNs old, whichever comes first (or it reaches 256 MiB), and on close
+// (then the end record's batch). That reaches the kernel's
 // page cache, which survives the process being killed; sync makes it fdatasync as well, to
 // survive a power cut, at the cost of a disk round trip per batch.
 class TrafficJournalWriter
@@ -85,7 +91,7 @@ public:
     // Creates the journal and writes its header. An existing file is an error unless overwrite
     // (a journal is evidence: never clobbered by accident). False with *error saying why.
     bool open(const QString &path, const Options &options, bool overwrite = false, QString *error = nullptr);
-    void close(); // writes the pending batch and closes
+    void close(); // writes the pending batch and the end record, and closes
     [[nodiscard]] bool isOpen() const { return m_file.isOpen(); }
     [[nodiscard]] QString path() const { return m_file.fileName(); }
 
@@ -141,7 +147,9 @@ private:
 // What a read of a journal found.
 struct TrafficJournalRecovery {
     enum class Ending : quint8 {
-        Clean,       // the file ends where a complete batch ends
+        Clean,       // the file ends where a complete batch ends (version 3: its end record)
+        NotClosed,   // version 3 without its end record: the writer never closed it (killed,
+                     // crashed, a failed write, or still writing); every batch it wrote is read
         CutShort,    // the last batch is incomplete (a crash while it was written): dropped
         Corrupt,     // a complete-looking batch fails its checks: it and what follows are dropped
         NotAJournal, // no valid header: nothing recovered
@@ -155,11 +163,13 @@ struct TrafficJournalRecovery {
     qint64 wallClockMs = 0; // from the header
     qint64 monotonicNs = 0;
     QStringList links;      // by link id; empty names for ids never named
-    quint32 version = 0;    // of the file's format (1 or 2)
+    quint32 version = 0;    // of the file's format (1, 2 or 3)
+    bool closed = false;    // the end record was read (version 3)
     QByteArray metadata;    // the first metadata record's JSON (UTF-8); empty when none
     quint64 notes = 0;
     // "recovered 12,000 frames in 120 batches; the last batch was cut short at byte 480,123 and
-    // is dropped (it began at byte 470,040)"
+    // is dropped (it began at byte 470,040)"; "...; truncated: its writer never closed it (killed
+    // or crashed), it stops after the last complete batch, at byte 480,123"
     QString message;
 
     [[nodiscard]] bool isClean() const { return ending == Ending::Clean; }

@@ -4915,7 +4915,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Dihentikan setelah %1 dari %2 permintaan. %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+2"/>
+        <source>Writes not sent: %1 (%2).</source>
+        <translation>Penulisan tidak dikirim: %1 (%2).</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Open a capture or a session with recorded answers first.</source>
         <translation>Buka dulu capture atau sesi yang berisi jawaban terekam.</translation>
     </message>
@@ -5037,7 +5042,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Capture dan sesi (*.pcap *.pcapng *.cap *.json *.journal);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Replaying the recorded requests to the target (%1 in all)…</source>
         <translation>Memutar ulang permintaan terekam ke target (%1 seluruhnya)…</translation>
     </message>
@@ -5143,12 +5148,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+92"/>
+        <location line="+113"/>
         <source>Serve</source>
         <translation>Layani</translation>
     </message>
     <message>
-        <location line="-91"/>
+        <location line="-112"/>
         <source>Answer with the recorded answers on this endpoint, matched by unit and request</source>
         <translation>Jawab dengan jawaban terekam di endpoint ini, dicocokkan menurut unit dan permintaan</translation>
     </message>
@@ -5173,7 +5178,39 @@ Klik kanan untuk mengganti format</translation>
         <translation>Membaca %1…</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+9"/>
+        <source>Send the recorded writes?</source>
+        <translation>Kirim penulisan yang terekam?</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>The recording holds %n write(s) to the device: %1.</source>
+        <translation>
+            <numerusform>Rekaman berisi %n penulisan ke perangkat: %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Sending them changes the device again as they changed it when recorded (its outputs, its settings). Without them the other requests are replayed and the writes are listed as not sent.</source>
+        <translation>Mengirimnya mengubah perangkat lagi seperti saat direkam (keluarannya, pengaturannya). Tanpanya, permintaan lain diputar ulang dan penulisan dicantumkan sebagai tidak dikirim.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Send the writes</source>
+        <translation>Kirim penulisan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Replay without the writes</source>
+        <translation>Putar ulang tanpa penulisan</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Replay not started.</source>
+        <translation>Putar ulang tidak dimulai.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Stopped serving.</source>
         <translation>Berhenti melayani.</translation>
     </message>
@@ -8262,7 +8299,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchLogControl</name>
     <message>
-        <location filename="../../ui/watch/watchlogcontrol.cpp" line="+17"/>
+        <location filename="../../ui/watch/watchlogcontrol.cpp" line="+19"/>
         <source>&amp;Log values to CSV</source>
         <translation>&amp;Catat nilai ke CSV</translation>
     </message>
@@ -8282,26 +8319,26 @@ Klik kanan untuk mengganti format</translation>
         <translation>Tulis nilai pantauan ke file CSV selama berjalan (satu file per pantauan)</translation>
     </message>
     <message numerus="yes">
-        <location line="+103"/>
+        <location line="+109"/>
         <source>(%n row(s) could not be written)</source>
         <translation>
             <numerusform>(%n baris tidak dapat ditulis)</numerusform>
         </translation>
     </message>
     <message>
-        <location line="-9"/>
+        <location line="-15"/>
         <source>Logging the watches to CSV in %1</source>
         <translation>Mencatat pantauan ke CSV di %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+7"/>
+        <location line="+13"/>
         <source>CSV log closed: %n file(s) in %1</source>
         <translation>
             <numerusform>Log CSV ditutup: %n file di %1</numerusform>
         </translation>
     </message>
     <message>
-        <location line="-4"/>
+        <location line="-10"/>
         <source>The CSV log cannot be written: %1</source>
         <translation>Log CSV tidak dapat ditulis: %1</translation>
     </message>

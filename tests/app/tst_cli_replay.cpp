@@ -6,13 +6,18 @@
 #include "clitest.h"
 
 #include "exchange/requestitem.h"
+#include "traffic/trafficjournal.h"
 #include "traffic/trafficlog.h"
 #include "engine/transactionengine.h"
 #include "protocol/adubuilder.h"
 #include "transport/linkurl.h"
 
+#include <QtCore/QElapsedTimer>
 #include <QtCore/QFile>
+#include <QtCore/QFileInfo>
+#include <QtCore/QHash>
 #include <QtCore/QJsonArray>
+#include <QtCore/QLocale>
 #include <QtCore/QProcess>
 #include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
@@ -32,6 +37,26 @@ QByteArray pdu(const char *hex)
     return QByteArray::fromHex(hex);
 }
 
+// The requests a device's journal (simulate --record) holds, by function code (RTU over TCP:
+// unit, then the function code).
+QHash<quint8, int> requestsReceived(const QString &journal)
+{
+    QHash<quint8, int> byFunction;
+    (void)TrafficJournalReader::read(journal, [&](const TrafficEntry &e) {
+        if (e.direction == TrafficDirection::In && e.bytes.size() >= 2)
+            ++byFunction[quint8(e.bytes.at(1))];
+    });
+    return byFunction;
+}
+
+// Out frames (requests written) in a journal being written.
+int requestsWritten(const QString &journal)
+{
+    int n = 0;
+    (void)TrafficJournalReader::read(journal, [&](const TrafficEntry &e) { n += e.direction == TrafficDirection::Out ? 1 : 0; });
+    return n;
+}
+
 } // namespace
 
 class TestCliReplay : public QObject
@@ -46,6 +71,9 @@ private slots:
     void replayReportsLinkAndUsageErrors();
     void serveAnswersWithTheRecording();
     void serveToPymodbus();
+    void recordedWritesAreNotSent();
+    void killedRecordingIsTruncated();
+    void serveCountsAnswersApartFromSilences();
 
 private:
     [[nodiscard]] bool record(const QString &target, QString *error);
@@ -117,17 +145,19 @@ void TestCliReplay::initTestCase()
 
 void TestCliReplay::replayMatchesTheSameDevice()
 {
-    // The session's own target; the live gate counts (0x0086) are outside what was read.
+    // The session's own target; the live gate counts (0x0086) are outside what was read. The
+    // recorded write is not sent (recordedWritesAreNotSent): every other request is.
     const CliResult r = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--speed"), QStringLiteral("max"), QStringLiteral("--json")});
     QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
     const QJsonObject o = r.json();
-    QCOMPARE(o.value(QStringLiteral("replayed")).toInt(), m_requests);
-    QCOMPARE(o.value(QStringLiteral("matched")).toInt(), m_requests);
+    QCOMPARE(o.value(QStringLiteral("replayed")).toInt(), m_requests - 1);
+    QCOMPARE(o.value(QStringLiteral("matched")).toInt(), m_requests - 1);
+    QCOMPARE(o.value(QStringLiteral("skipped_writes")).toInt(), 1);
     QCOMPARE(o.value(QStringLiteral("differences")).toArray().size(), 0);
     const QJsonObject latency = o.value(QStringLiteral("latency_us")).toObject();
-    // Every request answered, exceptions included (unit 7: 0B from the simulator's gateway).
-    QCOMPARE(latency.value(QStringLiteral("recorded")).toObject().value(QStringLiteral("count")).toInt(), m_requests);
-    QCOMPARE(latency.value(QStringLiteral("replayed")).toObject().value(QStringLiteral("count")).toInt(), m_requests);
+    // Every request sent answered, exceptions included (unit 7: 0B from the simulator's gateway).
+    QCOMPARE(latency.value(QStringLiteral("recorded")).toObject().value(QStringLiteral("count")).toInt(), m_requests - 1);
+    QCOMPARE(latency.value(QStringLiteral("replayed")).toObject().value(QStringLiteral("count")).toInt(), m_requests - 1);
 }
 
 void TestCliReplay::replayAtRecordedPacing()
@@ -136,7 +166,7 @@ void TestCliReplay::replayAtRecordedPacing()
     QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
     const QString text = r.outText();
     QVERIFY2(text.contains(QStringLiteral("at the recorded pacing")), r.describe().constData());
-    QVERIFY2(text.contains(QStringLiteral("matched       %1").arg(m_requests)), r.describe().constData());
+    QVERIFY2(text.contains(QStringLiteral("matched       %1").arg(m_requests - 1)), r.describe().constData());
     QVERIFY2(text.contains(QStringLiteral("latency ms    recorded median")), r.describe().constData());
     // Requests go out no earlier than their recorded offsets: at least the 20 ms gaps recorded.
     const CliResult j = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--target"), m_sim.url(), QStringLiteral("--json")});
@@ -161,7 +191,9 @@ void TestCliReplay::replayReportsChangedValues()
     QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), changed, QStringLiteral("--listen"), QStringLiteral("rtu-tcp://127.0.0.1:0")}, &error),
              qPrintable(error));
 
-    const CliResult r = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--target"), sim.url(), QStringLiteral("--speed"), QStringLiteral("10")});
+    // The recorded write sent as well (--send-writes): it puts 250 back, so the read after it matches.
+    const CliResult r = runMbscope({QStringLiteral("replay"), m_session, QStringLiteral("--target"), sim.url(), QStringLiteral("--speed"), QStringLiteral("10"),
+                                    QStringLiteral("--send-writes")});
     QVERIFY2(r.finished && r.exitCode == 1, r.describe().constData());
     const QString text = r.outText();
     // Unit 1's three reads differ (unit 3's profile kept 250), each by that one field.
@@ -265,7 +297,7 @@ void TestCliReplay::serveAnswersWithTheRecording()
     const CliResult replay = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--target"), served.url(), QStringLiteral("--speed"), QStringLiteral("max"),
                                          QStringLiteral("--timeout"), QStringLiteral("300ms"), QStringLiteral("--json")});
     QVERIFY2(replay.finished && replay.exitCode == 0, replay.describe().constData());
-    QCOMPARE(replay.json().value(QStringLiteral("matched")).toInt(), m_requests);
+    QCOMPARE(replay.json().value(QStringLiteral("matched")).toInt(), m_requests - 1); // the write is not sent
 
     const QString output = QString::fromUtf8(served.stop());
     QVERIFY2(output.contains(QStringLiteral("not recorded  exception 0B")), qPrintable(output));
@@ -302,6 +334,179 @@ void TestCliReplay::serveToPymodbus()
     const QString expected = QStringLiteral("1050 0 0 0 250 1 1000 10000 4 4 80 800 8000\n");
     QVERIFY2(out.startsWith(expected + expected), qPrintable(out + QString::fromUtf8(client.readAllStandardError())));
     QVERIFY2(out.contains(QStringLiteral("unrecorded error")), qPrintable(out));
+}
+
+// Issue 26 item 1: a replay to a live device sends none of the recording's writes unless
+// --send-writes; each one skipped is listed (unit, function, address, quantity) and counted.
+// The device journals what reaches it (simulate --record): the write must not be there.
+void TestCliReplay::recordedWritesAreNotSent()
+{
+    QString error;
+    const QString seen = m_dir.filePath(QStringLiteral("device-without-writes.mbscope.journal"));
+    Background device;
+    QVERIFY2(device.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                           QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--record"), seen},
+                          &error),
+             qPrintable(error));
+    const CliResult json = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--target"), device.url(), QStringLiteral("--speed"),
+                                       QStringLiteral("max"), QStringLiteral("--json")});
+    QVERIFY2(json.finished && json.exitCode == 0, json.describe().constData());
+    const QJsonObject o = json.json();
+    QCOMPARE(o.value(QStringLiteral("requests")).toInt(), m_requests);
+    QCOMPARE(o.value(QStringLiteral("skipped_writes")).toInt(), 1);
+    QCOMPARE(o.value(QStringLiteral("replayed")).toInt(), m_requests - 1);
+    QCOMPARE(o.value(QStringLiteral("matched")).toInt(), m_requests - 1);
+    const QJsonArray skipped = o.value(QStringLiteral("skipped")).toArray();
+    QCOMPARE(skipped.size(), 1);
+    const QJsonObject write = skipped.at(0).toObject();
+    QCOMPARE(write.value(QStringLiteral("request")).toInt(), 4);
+    QCOMPARE(write.value(QStringLiteral("unit")).toInt(), 1);
+    QCOMPARE(write.value(QStringLiteral("function")).toString(), QStringLiteral("0x06"));
+    QCOMPARE(write.value(QStringLiteral("address")).toInt(), 0x7D);
+    QCOMPARE(write.value(QStringLiteral("quantity")).toInt(), 1);
+
+    const CliResult text = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--target"), device.url(), QStringLiteral("--speed"),
+                                       QStringLiteral("max")});
+    QVERIFY2(text.finished && text.exitCode == 0, text.describe().constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("1 of them is a write: not sent (--send-writes sends them)")), text.describe().constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("#4 unit 1 Write Single Register (0x06) address 0x007D quantity 1: not sent")),
+             text.describe().constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("skipped       1 write, not sent (--send-writes sends them)")), text.describe().constData());
+    (void)device.stop();
+    QVERIFY2(requestsReceived(seen).value(0x03) > 0, "the device's journal holds no reads");
+    QCOMPARE(requestsReceived(seen).value(0x06), 0);
+
+    // Asked for: sent, and compared like any other request.
+    const QString seenWithWrites = m_dir.filePath(QStringLiteral("device-with-writes.mbscope.journal"));
+    Background asked;
+    QVERIFY2(asked.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                          QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--record"), seenWithWrites},
+                         &error),
+             qPrintable(error));
+    const CliResult sent = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--target"), asked.url(), QStringLiteral("--speed"),
+                                       QStringLiteral("max"), QStringLiteral("--send-writes"), QStringLiteral("--json")});
+    QVERIFY2(sent.finished && sent.exitCode == 0, sent.describe().constData());
+    QCOMPARE(sent.json().value(QStringLiteral("skipped_writes")).toInt(), 0);
+    QCOMPARE(sent.json().value(QStringLiteral("matched")).toInt(), m_requests);
+    (void)asked.stop();
+    QCOMPARE(requestsReceived(seenWithWrites).value(0x06), 1);
+
+    // The option is documented, and means nothing to --serve.
+    const CliResult help = runMbscope({QStringLiteral("replay"), QStringLiteral("--help")});
+    QVERIFY2(help.outText().contains(QStringLiteral("--send-writes")), help.describe().constData());
+    const CliResult serve = runMbscope({QStringLiteral("replay"), m_journal, QStringLiteral("--serve"), QStringLiteral("tcp://127.0.0.1:0"),
+                                        QStringLiteral("--send-writes")});
+    QVERIFY2(serve.exitCode == 2 && serve.errText().contains(QStringLiteral("--send-writes applies to a replay to a device")),
+             serve.describe().constData());
+}
+
+// Issue 26 item 7: a poll recording killed with SIGKILL while a request is in flight (the
+// device drops that one request). The journal holds whole batches and no end record: analyze
+// says it is truncated and where; the request cut by the end is unanswered at the end of the
+// recording, not a timeout; replay compares the completed exchanges only.
+void TestCliReplay::killedRecordingIsTruncated()
+{
+    const QString faults = m_dir.filePath(QStringLiteral("drop-0x80.json"));
+    QFile file(faults);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"seed": 1, "rules": [{"name": "never", "kind": "drop", "start": 128, "probability": 1.0}]})");
+    file.close();
+    Background device;
+    QString error;
+    QVERIFY2(device.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                           QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--faults"), faults, QStringLiteral("--quiet")},
+                          &error),
+             qPrintable(error));
+    const QString journal = m_dir.filePath(QStringLiteral("killed.mbscope.journal"));
+    // Each cycle: the settings read three times, then 0x0080, which the device never answers.
+    QProcess poll;
+    poll.start(mbscopePath(), {QStringLiteral("poll"), QStringLiteral("--target"), device.url(), QStringLiteral("--complete"),
+                               QStringLiteral("--hex"), QStringLiteral("0300790016"), QStringLiteral("--hex"), QStringLiteral("0300790016"),
+                               QStringLiteral("--hex"), QStringLiteral("0300790016"), QStringLiteral("--hex"), QStringLiteral("0300800001"),
+                               QStringLiteral("--timeout"), QStringLiteral("60s"), QStringLiteral("--interval"), QStringLiteral("0"),
+                               QStringLiteral("--record"), journal});
+    QVERIFY(poll.waitForStarted(30000));
+    // Until the request in flight is on disk (its batch written by the journal's timer).
+    QElapsedTimer waited;
+    waited.start();
+    while (requestsWritten(journal) < 4 && waited.elapsed() < 60000 && poll.state() == QProcess::Running)
+        QThread::msleep(20);
+    QVERIFY2(poll.state() == QProcess::Running, poll.readAllStandardError().constData());
+    QCOMPARE(requestsWritten(journal), 4);
+    ::kill(pid_t(poll.processId()), SIGKILL);
+    QVERIFY(poll.waitForFinished(10000));
+    QCOMPARE(poll.exitStatus(), QProcess::CrashExit);
+
+    const CliResult a = runMbscope({QStringLiteral("analyze"), journal, QStringLiteral("--json")});
+    QVERIFY2(a.finished && a.exitCode == 1, a.describe().constData()); // a damaged source
+    const QJsonObject o = a.json();
+    const QJsonObject source = o.value(QStringLiteral("source")).toObject();
+    QVERIFY2(!source.value(QStringLiteral("complete")).toBool(), a.describe().constData());
+    const QString size = QLocale(QLocale::English).toString(QFileInfo(journal).size());
+    QVERIFY2(source.value(QStringLiteral("error")).toString().contains(
+                 QStringLiteral("truncated: its writer never closed it (killed, crashed or still writing), it stops after the last "
+                                "complete batch, at byte %1").arg(size)),
+             a.describe().constData());
+    QCOMPARE(source.value(QStringLiteral("unanswered_at_end")).toInt(), 1);
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), 3);
+    QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 3);
+    QCOMPARE(o.value(QStringLiteral("timeouts")).toInt(), 0);
+    const CliResult text = runMbscope({QStringLiteral("analyze"), journal});
+    QVERIFY2(text.outText().contains(QStringLiteral("\ntruncated     recovered ")), text.describe().constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("\nunanswered    1 request(s) at the end of the recording")), text.describe().constData());
+    QVERIFY2(!text.outText().contains(QStringLiteral("ends cleanly")), text.describe().constData());
+
+    // Replayed to a device that answers 0x0080: only the three completed exchanges are compared.
+    // (The live gate count at 0x0086 grows with the simulator's age: expected to change.)
+    const CliResult r = runMbscope({QStringLiteral("replay"), journal, QStringLiteral("--target"), m_sim.url(), QStringLiteral("--speed"),
+                                    QStringLiteral("max"), QStringLiteral("--ignore"), QStringLiteral("modbus.register_value@0x0086"),
+                                    QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    QCOMPARE(r.json().value(QStringLiteral("requests")).toInt(), 3);
+    QCOMPARE(r.json().value(QStringLiteral("matched")).toInt(), 3);
+    QVERIFY2(r.errText().contains(QStringLiteral("truncated: its writer never closed it")), r.describe().constData());
+}
+
+// Issue 26 item 12: replay --serve said "serving 2 recorded answers" of a recording holding one
+// answer and one silence (a request recorded without an answer): one too many. Answers and
+// silences are counted apart, as they are served.
+void TestCliReplay::serveCountsAnswersApartFromSilences()
+{
+    const QString faults = m_dir.filePath(QStringLiteral("drop-0x80-again.json"));
+    QFile file(faults);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"seed": 1, "rules": [{"name": "never", "kind": "drop", "start": 128, "probability": 1.0}]})");
+    file.close();
+    Background device;
+    QString error;
+    QVERIFY2(device.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                           QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--faults"), faults, QStringLiteral("--quiet")},
+                          &error),
+             qPrintable(error));
+    const QString journal = m_dir.filePath(QStringLiteral("answer-and-silence.mbscope.journal"));
+    const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), device.url(), QStringLiteral("--complete"),
+                                       QStringLiteral("--hex"), QStringLiteral("0300790001"), QStringLiteral("--hex"), QStringLiteral("0300800001"),
+                                       QStringLiteral("--timeout"), QStringLiteral("200ms"), QStringLiteral("--count"), QStringLiteral("1"),
+                                       QStringLiteral("--record"), journal, QStringLiteral("--json")});
+    QVERIFY2(poll.finished, poll.describe().constData());
+    QCOMPARE(poll.json().value(QStringLiteral("ok")).toInt(), 1);
+    QCOMPARE(poll.json().value(QStringLiteral("timeouts")).toInt(), 1);
+
+    Background served;
+    QVERIFY2(served.start({QStringLiteral("replay"), journal, QStringLiteral("--serve"), QStringLiteral("rtu-tcp://127.0.0.1:0"),
+                           QStringLiteral("--speed"), QStringLiteral("max")},
+                          &error),
+             qPrintable(error));
+    const CliResult answered = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), served.url(), QStringLiteral("--address"),
+                                           QStringLiteral("0x79")});
+    QVERIFY2(answered.finished && answered.exitCode == 0, answered.describe().constData());
+    const CliResult silent = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), served.url(), QStringLiteral("--address"),
+                                         QStringLiteral("0x80"), QStringLiteral("--timeout"), QStringLiteral("200ms")});
+    QVERIFY2(silent.finished && silent.exitCode != 0, silent.describe().constData());
+    const QString output = QString::fromUtf8(served.stop());
+    QVERIFY2(output.startsWith(QStringLiteral("serving 1 recorded answer and 1 recorded silence of %1 (2 distinct requests, units 1)\n").arg(journal)),
+             qPrintable(output));
+    QVERIFY2(output.contains(QStringLiteral(": 1 recorded answer served, 1 recorded silence kept, 0 requests never recorded\n")), qPrintable(output));
 }
 
 QTEST_GUILESS_MAIN(TestCliReplay)

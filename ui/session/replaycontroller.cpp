@@ -127,7 +127,7 @@ void ReplayController::onLoaded(const std::shared_ptr<Loaded> &loaded)
     Q_EMIT captureAnalysed(m_title, loaded->transactions);
 }
 
-bool ReplayController::startReplay(double speed, QString *error)
+bool ReplayController::startReplay(double speed, bool sendWrites, QString *error)
 {
     const auto refuse = [error](const QString &why) {
         if (error)
@@ -157,7 +157,7 @@ bool ReplayController::startReplay(double speed, QString *error)
     m_differences->reset(m_script, target.framing());
     m_replayThread = new QThread;
     m_replayThread->setObjectName(QStringLiteral("mbscope replay"));
-    m_worker = new ReplayWorker(m_script, target, speed);
+    m_worker = new ReplayWorker(m_script, target, speed, sendWrites);
     m_worker->moveToThread(m_replayThread);
     connect(m_replayThread, &QThread::started, m_worker, &ReplayWorker::run);
     connect(m_worker, &ReplayWorker::outcomeReady, this, &ReplayController::onOutcome);
@@ -195,6 +195,10 @@ void ReplayController::onReplayFinished(const ReplayResult &result, const QStrin
         m_replaySummary = tr("The replay stopped: %1. %2").arg(linkProblem, m_replaySummary);
     else if (result.interrupted)
         m_replaySummary = tr("Stopped after %1 of %2 requests. %3").arg(result.outcomes.size()).arg(m_script->size()).arg(m_replaySummary);
+    if (!result.skippedWrites.isEmpty())
+        m_replaySummary += QLatin1Char(' ') + tr("Writes not sent: %1 (%2).")
+                                                  .arg(result.skippedWrites.size())
+                                                  .arg(RecordedWrite::placesText(result.skippedWrites));
     if (!result.recorded.latency().isEmpty() || !result.replayed.latency().isEmpty())
         m_replaySummary += QLatin1Char('\n') + result.latencyLine();
     Q_EMIT busyChanged();

@@ -64,10 +64,12 @@ public:
     [[nodiscard]] QString sourceSummary() const { return m_summary; }
 
     // Replays the opened source to the connected target (speed 1: as recorded, N: N times
-    // faster, 0: back to back). False with *error when it cannot start (nothing opened, not
-    // connected, the link polling, a replay already running). The link's own connection is
-    // closed first, so a serial port or a device server that takes one client is free.
-    bool startReplay(double speed, QString *error);
+    // faster, 0: back to back). The recording's writes are sent only when sendWrites (the
+    // panel asks first); otherwise each is skipped and listed in lastResult()->skippedWrites and
+    // the summary. False with *error when it cannot start (nothing opened, not connected, the
+    // link polling, a replay already running). The link's own connection is closed first, so a
+    // serial port or a device server that takes one client is free.
+    bool startReplay(double speed, bool sendWrites, QString *error);
     void stopReplay();
     [[nodiscard]] bool isReplaying() const { return m_worker != nullptr; }
     [[nodiscard]] ReplayDifferencesModel *differences() const { return m_differences; }

@@ -29,6 +29,7 @@ ReplayPanel::ReplayPanel(ReplayController *controller, QWidget *parent)
         return QFileDialog::getOpenFileName(this, tr("Open a capture or a session"), QString(),
                                             tr("Captures and sessions (*.pcap *.pcapng *.cap *.json *.journal);;All files (*)"));
     };
+    m_writesAsker = [](QMessageBox &question) { return QMessageBox::StandardButton(question.exec()); };
     buildUi();
     connect(m_controller, &ReplayController::busyChanged, this, &ReplayPanel::updateState);
     connect(m_controller, &ReplayController::sourceOpened, this, [this](const QString &summary) {
@@ -179,8 +180,29 @@ bool ReplayPanel::open(const QString &source)
 
 void ReplayPanel::replay()
 {
+    bool sendWrites = false;
+    const QList<RecordedWrite> writes = m_controller->script() ? m_controller->script()->writes() : QList<RecordedWrite>{};
+    if (!writes.isEmpty() && !m_controller->isReplaying()) {
+        QMessageBox question(QMessageBox::Warning, tr("Send the recorded writes?"),
+                             tr("The recording holds %n write(s) to the device: %1.", nullptr, int(writes.size()))
+                                 .arg(RecordedWrite::placesText(writes)),
+                             QMessageBox::Yes | QMessageBox::No | QMessageBox::Cancel, this);
+        question.setInformativeText(tr("Sending them changes the device again as they changed it when recorded (its outputs, "
+                                       "its settings). Without them the other requests are replayed and the writes are listed "
+                                       "as not sent."));
+        question.button(QMessageBox::Yes)->setText(tr("Send the writes"));
+        question.button(QMessageBox::No)->setText(tr("Replay without the writes"));
+        question.setDefaultButton(QMessageBox::No);
+        question.setEscapeButton(QMessageBox::Cancel);
+        const QMessageBox::StandardButton answer = m_writesAsker(question);
+        if (answer != QMessageBox::Yes && answer != QMessageBox::No) {
+            showMessage(tr("Replay not started."), false);
+            return;
+        }
+        sendWrites = answer == QMessageBox::Yes;
+    }
     QString error;
-    if (!m_controller->startReplay(speed(), &error))
+    if (!m_controller->startReplay(speed(), sendWrites, &error))
         showMessage(error, true);
     else
         showMessage(QString(), false);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QtWidgets/QMessageBox>
 #include <QtWidgets/QWidget>
 
 #include <functional>
@@ -27,14 +28,21 @@ public:
     // Asked for a capture or session file to open; empty: cancelled.
     using FileChooser = std::function<QString()>;
 
+    // Shown the question asked before a replay whose recording holds writes, answers it: Yes
+    // sends them, No (the default button) replays without them, Cancel starts nothing.
+    using WritesAsker = std::function<QMessageBox::StandardButton(QMessageBox &question)>;
+
     explicit ReplayPanel(ReplayController *controller, QWidget *parent = nullptr);
 
     void setFileChooser(FileChooser chooser) { m_chooser = std::move(chooser); }
+    void setWritesAsker(WritesAsker asker) { m_writesAsker = std::move(asker); }
 
     // The actions behind the buttons (and the Session menu).
     void chooseAndOpen();
     // Opens source with the ports typed in the panel; false (said in the panel) when they are wrong.
     bool open(const QString &source);
+    // Asks once when the recording holds writes (how many, to which units and addresses;
+    // default No: not sent), then replays.
     void replay();
     void toggleServing();
 
@@ -50,6 +58,7 @@ private:
 
     ReplayController *m_controller;
     FileChooser m_chooser;
+    WritesAsker m_writesAsker;
     QLabel *m_source = nullptr;
     QLineEdit *m_mbapPorts = nullptr;
     QLineEdit *m_rtuPorts = nullptr;

@@ -6,8 +6,9 @@
 
 namespace mbscope {
 
-ReplayWorker::ReplayWorker(std::shared_ptr<const ReplayScript> script, const LinkUrl &target, double speed, int timeoutMs)
-    : m_script(std::move(script)), m_target(target), m_speed(speed), m_timeoutMs(timeoutMs)
+ReplayWorker::ReplayWorker(std::shared_ptr<const ReplayScript> script, const LinkUrl &target, double speed, bool sendWrites,
+                           int timeoutMs)
+    : m_script(std::move(script)), m_target(target), m_speed(speed), m_sendWrites(sendWrites), m_timeoutMs(timeoutMs)
 {
     qRegisterMetaType<mbscope::ReplayOutcome>();
     qRegisterMetaType<mbscope::ReplayResult>();
@@ -19,6 +20,7 @@ void ReplayWorker::run()
 {
     ReplayRunner runner(*m_script, m_target, EngineOptions{}, m_timeoutMs);
     runner.setSpeed(m_speed);
+    runner.setSendWrites(m_sendWrites);
     m_runner = &runner;
     if (m_stopRequested)
         runner.stop();

@@ -22,7 +22,9 @@ class ReplayWorker : public QObject
 {
     Q_OBJECT
 public:
-    ReplayWorker(std::shared_ptr<const ReplayScript> script, const LinkUrl &target, double speed, int timeoutMs = -1);
+    // sendWrites: the recording's writes are sent too (ReplayRunner::setSendWrites).
+    ReplayWorker(std::shared_ptr<const ReplayScript> script, const LinkUrl &target, double speed, bool sendWrites,
+                 int timeoutMs = -1);
     ~ReplayWorker() override;
 
 public Q_SLOTS:
@@ -39,6 +41,7 @@ private:
     std::shared_ptr<const ReplayScript> m_script;
     LinkUrl m_target;
     double m_speed;
+    bool m_sendWrites;
     int m_timeoutMs;
     bool m_stopRequested = false;
     ReplayRunner *m_runner = nullptr; // while run() runs

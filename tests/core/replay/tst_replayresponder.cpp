@@ -9,6 +9,7 @@
 #include "sim/simendpoint.h"
 #include "sim/simulator.h"
 
+#include <QtCore/QJsonObject>
 #include <QtTest/QTest>
 
 using namespace mbscope;
@@ -56,6 +57,8 @@ private slots:
     void answers_data();
     void answers();
     void recordedLatencyBySpeed();
+    void writesOfTheScript();
+    void unansweredAtEndLeftOut();
 };
 
 void TestReplayResponder::script()
@@ -153,6 +156,57 @@ void TestReplayResponder::recordedLatencyBySpeed()
         QCOMPARE(plan.chunks.constFirst().bytes, AduBuilder::rtu(QByteArray::fromHex("0302041a"), 1));
         QCOMPARE(responder.counters().served, 1u);
     }
+}
+
+// Issue 26 item 1: the requests that write, with where they write (what replay lists as not sent).
+void TestReplayResponder::writesOfTheScript()
+{
+    ReplayScript s;
+    s.add(recorded(1, "0300790001", "0302041a", 1));
+    s.add(recorded(1, "05001fff00", "05001fff00", 2));                 // coil 0x001F on
+    s.add(recorded(1, "06007d00fa", "06007d00fa", 3));                 // register 0x007D
+    s.add(recorded(2, "0f0010000a020f03", "0f0010000a", 4));           // 10 coils from 0x0010
+    s.add(recorded(2, "10010000020400010002", "1001000002", 5));       // 2 registers from 0x0100
+    s.add(recorded(1, "16007d00f20025", "16007d00f20025", 6));         // mask write 0x007D
+    s.add(recorded(3, "17000000020020000102000a", "170400000000", 7)); // write 1 at 0x0020
+    s.add(recorded(1, "150d06000400070003000100020003", "150d06000400070003000100020003", 8)); // file 4 record 7, 3 registers
+    s.add(recorded(1, "06", "8603", 9));                               // too short to say where
+    s.add(recorded(1, "0800000000", "0800000000", 10));                // a diagnostic: not a write
+    const QList<RecordedWrite> writes = s.writes();
+    QCOMPARE(writes.size(), 8);
+    QStringList texts;
+    for (const RecordedWrite &w : writes)
+        texts.append(w.text());
+    QCOMPARE(texts, (QStringList{
+                        QStringLiteral("#2 unit 1 Write Single Coil (0x05) address 0x001F quantity 1"),
+                        QStringLiteral("#3 unit 1 Write Single Register (0x06) address 0x007D quantity 1"),
+                        QStringLiteral("#4 unit 2 Write Multiple Coils (0x0F) address 0x0010 quantity 10"),
+                        QStringLiteral("#5 unit 2 Write Multiple Registers (0x10) address 0x0100 quantity 2"),
+                        QStringLiteral("#6 unit 1 Mask Write Register (0x16) address 0x007D quantity 1"),
+                        QStringLiteral("#7 unit 3 Read/Write Multiple Registers (0x17) address 0x0020 quantity 1"),
+                        QStringLiteral("#8 unit 1 Write File Record (0x15) record 0x0007 quantity 3"),
+                        QStringLiteral("#9 unit 1 Write Single Register (0x06), too short to say where it writes"),
+                    }));
+    QCOMPARE(RecordedWrite::placesText(writes),
+             QStringLiteral("unit 1 at an unknown address, 0x0007-0x0009, 0x001F, 0x007D (2 times); unit 2 at 0x0010-0x0019, "
+                            "0x0100-0x0101; unit 3 at 0x0020"));
+    const QJsonObject json = writes.at(3).toJson();
+    QCOMPARE(json.value(QStringLiteral("address")).toInt(), 0x100);
+    QCOMPARE(json.value(QStringLiteral("quantity")).toInt(), 2);
+    QCOMPARE(json.value(QStringLiteral("function")).toString(), QStringLiteral("0x10"));
+    QVERIFY(writes.at(7).toJson().value(QStringLiteral("address")).isNull());
+}
+
+// Issue 26 item 7: a request the recording ends before the outcome of is not replayed.
+void TestReplayResponder::unansweredAtEndLeftOut()
+{
+    ReplayScript s;
+    s.add(recorded(1, "0300790001", "0302041a", 1));
+    CaptureExchange cut = recorded(1, "0300790001", "", 2);
+    cut.kind = CaptureExchange::Kind::Unanswered;
+    s.add(cut);
+    QCOMPARE(s.size(), 1);
+    QCOMPARE(s.recordedStatistics().timeouts(), 0u);
 }
 
 QTEST_GUILESS_MAIN(TestReplayResponder)

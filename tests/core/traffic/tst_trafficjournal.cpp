@@ -93,6 +93,7 @@ void TestTrafficJournal::journalRoundTrip()
         + qint64(QByteArray("rtu-tcp://192.168.127.254:4001").size());
     for (int i = 0; i < 1050; ++i)
         expected += 28 + i % 37;
+    expected += 32 + 28; // the end record's batch, written by close()
     QCOMPARE(r.fileBytes, expected);
 }
 
@@ -138,7 +139,7 @@ void TestTrafficJournal::existingJournalKept()
     QCOMPARE(QFileInfo(path).size(), size);
     QVERIFY(again.openJournal(path, {}, true, &error));
     again.closeJournal();
-    QCOMPARE(QFileInfo(path).size(), 40);
+    QCOMPARE(QFileInfo(path).size(), 40 + 32 + 28); // the header, then the end record's batch
 }
 
 // A journal cut at any byte (the crash that lands inside a write) gives back exactly the batches
@@ -165,7 +166,9 @@ void TestTrafficJournal::truncatedAnywhere()
     QFile whole(path);
     QVERIFY(whole.open(QIODevice::ReadOnly));
     const QByteArray bytes = whole.readAll();
-    QCOMPARE(qint64(bytes.size()), batchEnds.back());
+    // Closing wrote the end record's batch after them (not a batch of traffic: not counted).
+    const qint64 lastTraffic = batchEnds.back();
+    QCOMPARE(qint64(bytes.size()), lastTraffic + 32 + 28);
 
     const QString cutPath = dir.filePath(QStringLiteral("cut.mbtl"));
     for (qint64 cut = 0; cut <= bytes.size(); ++cut) {
@@ -187,10 +190,21 @@ void TestTrafficJournal::truncatedAnywhere()
         QCOMPARE(quint64(frames.size()), complete * 5);
         for (int i = 0; i < frames.size(); ++i)
             QCOMPARE(frames.at(i).bytes, made(quint64(i)).bytes);
-        QCOMPARE(r.goodBytes, batchEnds[complete]);
+        QCOMPARE(r.goodBytes, cut == bytes.size() ? qint64(bytes.size()) : batchEnds[complete]);
         const QString recovered = QStringLiteral("recovered %1 frames in %2 batches; ").arg(complete * 5).arg(complete);
-        if (cut == batchEnds[complete]) {
+        if (cut == bytes.size()) {
             QVERIFY2(r.isClean(), qPrintable(where));
+            QVERIFY(r.closed);
+        } else if (cut == batchEnds[complete]) {
+            // What a kill between two batches leaves: whole batches, no end record.
+            QCOMPARE(r.ending, TrafficJournalRecovery::Ending::NotClosed);
+            QVERIFY(!r.closed);
+            QCOMPARE(r.message, recovered + QStringLiteral("truncated: its writer never closed it (killed, crashed or still "
+                                                           "writing), it stops after the last complete batch, at byte %1; "
+                                                           "whatever the writer held then is not in it")
+                                                .arg(grouped(cut)));
+        } else if (cut > lastTraffic) {
+            QVERIFY2(r.ending == TrafficJournalRecovery::Ending::CutShort, qPrintable(where)); // inside the end record's batch
         } else {
             QVERIFY2(r.ending == TrafficJournalRecovery::Ending::CutShort, qPrintable(where));
             QCOMPARE(r.message, recovered + QStringLiteral("the last batch was cut short at byte %1 and is dropped (it began at byte %2)")
@@ -282,7 +296,8 @@ void TestTrafficJournal::writeErrorCounted()
     log.closeJournal();
     const TrafficJournalRecovery r = TrafficJournalReader::read(path, {});
     QCOMPARE(r.frames, log.journal().framesWritten());
-    QVERIFY2(r.ending == TrafficJournalRecovery::Ending::Clean || r.ending == TrafficJournalRecovery::Ending::CutShort,
+    // The end record could not be written either.
+    QVERIFY2(r.ending == TrafficJournalRecovery::Ending::NotClosed || r.ending == TrafficJournalRecovery::Ending::CutShort,
              qPrintable(r.message));
 }
 

@@ -77,6 +77,7 @@ private Q_SLOTS:
     void initTestCase();
     void replayToTheTarget_data();
     void replayToTheTarget();
+    void replayAsksBeforeSendingWrites();
     void offlineAnalysisCountsAsTheCli();
     void servesTheRecordedAnswers();
     void refusesWithoutWhatItNeeds();
@@ -192,11 +193,12 @@ void TestReplayController::replayToTheTarget()
 
     QSignalSpy finished(&controller, &ReplayController::replayFinished);
     QSignalSpy replayed(&controller, &ReplayController::transactionsReplayed);
+    // The recorded write sent too (the panel asks first: replayAsksBeforeSendingWrites).
     QString error;
-    QVERIFY2(controller.startReplay(0, &error), qPrintable(error));
+    QVERIFY2(controller.startReplay(0, true, &error), qPrintable(error));
     QVERIFY(controller.isReplaying());
     // The GUI thread is free while the replay runs: a refused second start says why at once.
-    QVERIFY(!controller.startReplay(0, &error));
+    QVERIFY(!controller.startReplay(0, true, &error));
     QVERIFY2(error.contains(QStringLiteral("already running")), qPrintable(error));
     QVERIFY(finished.wait(kWaitMs));
     QVERIFY(!controller.isReplaying());
@@ -240,6 +242,57 @@ void TestReplayController::replayToTheTarget()
     model->setShowMatches(false);
     QCOMPARE(model->rowCount(), differences);
     QVERIFY(guitest::saveShot(&panel, shot));
+}
+
+// Issue 26 item 1 in the window: the Replay button asks once before a replay whose recording
+// holds writes, listing how many to which units and addresses, No by default; No replays the
+// rest and lists the write as not sent, Cancel starts nothing, Yes sends it.
+void TestReplayController::replayAsksBeforeSendingWrites()
+{
+    LinkController link;
+    link.connectTo(m_simUrl);
+    ReplayController controller(&link);
+    ReplayPanel panel(&controller);
+    QVERIFY(openRecording(controller));
+    QString question;
+    QString details;
+    bool noByDefault = false;
+    QMessageBox::StandardButton answer = QMessageBox::Cancel;
+    int asked = 0;
+    panel.setWritesAsker([&](QMessageBox &box) {
+        ++asked;
+        question = box.text();
+        details = box.informativeText();
+        noByDefault = box.defaultButton() == box.button(QMessageBox::No);
+        return answer;
+    });
+
+    panel.replay();
+    QCOMPARE(asked, 1);
+    QVERIFY(!controller.isReplaying());
+    QCOMPARE(question, QStringLiteral("The recording holds 1 write(s) to the device: unit 1 at 0x007D."));
+    QVERIFY2(details.contains(QStringLiteral("changes the device")), qPrintable(details));
+    QVERIFY(noByDefault);
+
+    answer = QMessageBox::No;
+    QSignalSpy finished(&controller, &ReplayController::replayFinished);
+    panel.replay();
+    QCOMPARE(asked, 2);
+    QVERIFY(controller.isReplaying());
+    QVERIFY(finished.wait(kWaitMs));
+    QVERIFY(controller.lastResult().has_value());
+    QCOMPARE(controller.lastResult()->skippedWrites.size(), 1);
+    QCOMPARE(controller.lastResult()->outcomes.size(), m_requests - 1);
+    QVERIFY2(controller.replaySummary().contains(QStringLiteral("Writes not sent: 1 (unit 1 at 0x007D).")), qPrintable(controller.replaySummary()));
+
+    answer = QMessageBox::Yes;
+    if (!link.isConnected()) // the replay closed the link's own connection
+        link.connectTo(m_simUrl);
+    panel.replay();
+    QVERIFY(finished.wait(kWaitMs));
+    QCOMPARE(asked, 3);
+    QCOMPARE(controller.lastResult()->skippedWrites.size(), 0);
+    QCOMPARE(controller.lastResult()->outcomes.size(), m_requests);
 }
 
 void TestReplayController::offlineAnalysisCountsAsTheCli()
@@ -337,10 +390,10 @@ void TestReplayController::refusesWithoutWhatItNeeds()
     LinkController link;
     ReplayController controller(&link);
     QString error;
-    QVERIFY(!controller.startReplay(1, &error));
+    QVERIFY(!controller.startReplay(1, false, &error));
     QVERIFY2(error.contains(QStringLiteral("Open a capture")), qPrintable(error));
     QVERIFY(openRecording(controller));
-    QVERIFY(!controller.startReplay(1, &error));
+    QVERIFY(!controller.startReplay(1, false, &error));
     QVERIFY2(error.contains(QStringLiteral("Connect to the device")), qPrintable(error));
 
     QSignalSpy failed(&controller, &ReplayController::sourceFailed);
