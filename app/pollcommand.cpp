@@ -7,6 +7,7 @@
 #include "polltranscript.h"
 #include "recordoptions.h"
 
+#include "protocol/broadcastrule.h"
 #include "traffic/trafficrecording.h"
 
 #include <QtCore/QCommandLineParser>
@@ -88,6 +89,18 @@ int runPollOrSweep(const QStringList &arguments, bool sweep)
     if (!openRecording(recording, config.record, metadata, QString::fromLatin1(name), err))
         return ExitUsage;
 
+    // A read sent to unit 0 on a serial framing goes out as typed, but nobody can answer it.
+    bool unanswerable = false;
+    for (const PlannedRequest &r : config.plan.requests) {
+        const QString why = config.target.url.delimited.enabled
+                                ? QString()
+                                : BroadcastRule::broadcastReadProblem(r.item.bytes, config.target.url.framing());
+        if (why.isEmpty())
+            continue;
+        unanswerable = true;
+        err << "mbscope " << name << ": " << r.item.name << ": the read cannot be answered: " << why << '\n';
+    }
+
     PollRunner runner(config.target, config.engine);
     if (recording.isOpen())
         runner.setTrafficLog(recording.log());
@@ -115,7 +128,7 @@ int runPollOrSweep(const QStringList &arguments, bool sweep)
         if (!config.json)
             out << "plot          " << config.histogramPath << '\n';
     }
-    return results.exitStatus();
+    return qMax(results.exitStatus(), unanswerable ? int(ExitFailure) : int(ExitOk));
 }
 
 int runPoll(const QStringList &arguments)

@@ -108,7 +108,8 @@ RequestOptions::RequestOptions(int groups, bool repeatHex)
     : m_groups(groups)
     , m_repeatHex(repeatHex)
     , m_hex(QStringLiteral("hex"),
-            repeatHex ? QStringLiteral("Bytes to send, exactly as given (\"01 03 00 79 00 16 15 DD\"); repeat for several "
+            repeatHex ? QStringLiteral("Bytes to send, exactly as given (\"01 03 00 79 00 16 15 DD\"), but for an MBAP "
+                                       "transaction id: each request gets the connection's next one; repeat for several "
                                        "requests per cycle. On an ASCII link the frame may be typed as its characters.")
                       : QStringLiteral("Bytes to send, exactly as given (\"01 03 00 79 00 16 15 DD\"). On an ASCII link "
                                        "the frame may be typed as its characters (\":0103...\")."),
@@ -196,9 +197,14 @@ bool RequestOptions::read(const QCommandLineParser &parser, const QString &comma
             err << (line.startsWith(QLatin1String("  ")) ? QString() : prefix) << line << '\n';
         return false;
     }
+    // One request sent as typed keeps its MBAP transaction id; requests mbscope builds or
+    // completes, and a poll's, which go out again and again, get the connection's next id from
+    // the engine (a late answer then cannot pass for the next request's).
+    const bool asTyped = hex && !parser.isSet(m_complete) && !m_repeatHex;
     for (PlannedRequest &r : out.requests) {
         r.item.timeoutMs = target.timeoutMs;
         r.item.retries = target.retries;
+        r.item.engineNumbered = !asTyped;
     }
     return true;
 }
@@ -286,6 +292,14 @@ bool RequestOptions::readRead(const QCommandLineParser &parser, const TargetSett
     int unit = 1;
     if (!readUnit(parser, unit, error))
         return false;
+    if (unit == 0 && (url.framing() == Framing::Rtu || url.framing() == Framing::Ascii) && !url.delimited.enabled) {
+        // Serial Line V1.02, 2.1: every unit acts on a broadcast and none answers it.
+        error = QStringLiteral("--unit 0 is the broadcast address on %1 framing (%2): no unit answers a broadcast, so a read "
+                               "can return nothing (broadcasts are for writes only: MODBUS over Serial Line V1.02, 2.1); "
+                               "give the unit's own address, 1-247")
+                    .arg(framingName(url.framing()).toUpper(), url.toString());
+        return false;
+    }
     const IntegerResult function = parseInteger(QStringLiteral("--function"), parser.value(m_function));
     if (!function.ok) {
         error = function.error;

@@ -16,6 +16,8 @@
 #include <QtCore/QJsonValue>
 #include <QtCore/QTextStream>
 
+#include <algorithm>
+
 namespace mbscope::app {
 
 int runWrite(const QStringList &arguments)
@@ -89,7 +91,12 @@ int runWrite(const QStringList &arguments)
         }
         if (!complete)
             out << "\nstopped after " << records.size() << " of " << written << " requests: the link failed\n";
-        out << "\nVALUES " << (status == ExitOk ? "written" : "sent") << ": " << plan.summary;
+        // A broadcast is never answered (Serial Line V1.02, 2.1): nothing says the values were written.
+        const bool broadcast = complete && std::all_of(records.cbegin(), records.cend(), [](const Transaction &t) {
+            return t.status == TransactionStatus::Broadcast;
+        });
+        out << "\nVALUES " << (broadcast ? "broadcast, no answer expected" : status == ExitOk ? "written" : "sent") << ": "
+            << plan.summary;
         if (written > 1)
             out << " (" << written << " requests)";
         out << "\n" << values.text();

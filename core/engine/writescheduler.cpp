@@ -28,22 +28,26 @@ InFlightRequest &WriteScheduler::stage(int depth, qint64 nowNs, qint64 broadcast
     InFlightRequest p;
     p.out = m_queue.takeFirst();
     p.sent = p.out.item.bytes;
-    if (depth > 1 && p.out.item.rule == MatchRule::Mbap && p.sent.size() >= 2) {
-        // Pipelining needs a distinct transaction id per request in flight (Messaging on TCP/IP
-        // V1.0b, 3.1.3: the id pairs a response with its request).
-        quint16 tid = m_nextTransactionId++;
-        for (int guard = 0; guard < 65536; ++guard) {
-            bool used = false;
-            for (const InFlightRequest &q : m_inFlight)
-                used = used || q.out.item.transactionId == tid;
-            if (!used)
-                break;
-            tid = m_nextTransactionId++;
+    if (p.out.item.rule == MatchRule::Mbap && p.sent.size() >= 2) {
+        if (depth > 1 || p.out.item.engineNumbered) {
+            // A transaction id of the connection's own, distinct from every request in flight
+            // (Messaging on TCP/IP V1.0b, 3.1.3: the id pairs a response with its request).
+            quint16 tid = m_nextTransactionId++;
+            for (int guard = 0; guard < 65536; ++guard) {
+                bool used = false;
+                for (const InFlightRequest &q : m_inFlight)
+                    used = used || q.out.item.transactionId == tid;
+                if (!used)
+                    break;
+                tid = m_nextTransactionId++;
+            }
+            p.sent[0] = char(tid >> 8);
+            p.sent[1] = char(tid & 0xFF);
+            p.rewritten = tid != p.out.item.transactionId;
+            p.out.item.transactionId = tid;
+        } else {
+            m_nextTransactionId = quint16(p.out.item.transactionId + 1); // as given: the ids go on after it
         }
-        p.sent[0] = char(tid >> 8);
-        p.sent[1] = char(tid & 0xFF);
-        p.rewritten = tid != p.out.item.transactionId;
-        p.out.item.transactionId = tid;
     }
     p.writeStartNs = nowNs;
     p.deadlineNs = nowNs + waitNs(p.out.item, broadcastWaitNs);

@@ -37,8 +37,10 @@ public:
     // Whether the head of the queue may go out now, with at most depth requests in flight.
     // A broadcast occupies the line alone until its turnaround has passed.
     [[nodiscard]] bool mayStage(int depth) const;
-    // Takes the head of the queue in flight and adds its bytes to the next write. Pipelined
-    // (depth > 1), an MBAP request gets a transaction id no other request in flight has.
+    // Takes the head of the queue in flight and adds its bytes to the next write. An MBAP request
+    // numbered by the engine (RequestItem::engineNumbered), or any pipelined one (depth > 1),
+    // gets the connection's next transaction id, one no request in flight has; one sent as given
+    // keeps its id and the connection's ids go on after it.
     // Its deadline counts from the start of its write until the link says when it ended.
     InFlightRequest &stage(int depth, qint64 nowNs, qint64 broadcastWaitNs);
     [[nodiscard]] bool hasStaged() const { return m_stagedCount > 0; }
@@ -70,6 +72,7 @@ private:
     QList<WriteMark> m_writeOrder; // requests whose write's bytesWritten() has not come yet, in order
     QByteArray m_staged;           // requests staged for the next write
     qsizetype m_stagedCount = 0;
+    // The connection's transaction ids (one allocator for every producer that sends on it).
     quint16 m_nextTransactionId = 1;
 };
 

@@ -1,6 +1,7 @@
 #include "requestitem.h"
 
 #include "protocol/adubuilder.h"
+#include "protocol/broadcastrule.h"
 #include "protocol/dissector.h"
 #include "transport/linkurl.h"
 
@@ -8,12 +9,22 @@ namespace mbscope {
 
 namespace {
 
+// Well formed but for being a read sent to unit 0, which is still a broadcast on the wire: every
+// server takes it and none answers (Serial Line V1.02, 2.1); the report says it cannot be answered.
 bool isWellFormedRequest(const QByteArray &bytes, Framing framing)
 {
     DissectOptions options;
     options.framing = framing;
     options.direction = Direction::Request;
-    return Dissector::dissect(bytes, options).isValid();
+    const Dissection d = Dissector::dissect(bytes, options);
+    if (d.isValid())
+        return true;
+    if (!BroadcastRule::isBroadcastRead(bytes, framing))
+        return false;
+    int errors = 0;
+    for (const Field &f : d.fields.fields())
+        errors += f.severity == Severity::Error ? 1 : 0;
+    return errors == 1; // the unit id's, nothing else
 }
 
 } // namespace

@@ -22,12 +22,17 @@ enum class MatchRule : quint8 {
 // The keys (unit, function code, transaction id) come from the bytes through the link's framing.
 struct RequestItem {
     QString name;
-    QByteArray bytes;              // sent exactly as given (pipelining may rewrite the MBAP transaction id)
+    QByteArray bytes;              // sent exactly as given, but for the MBAP transaction id (engineNumbered, pipelining)
     Framing framing = Framing::Tcp;
     MatchRule rule = MatchRule::Mbap;
     quint8 unit = 0;
     quint8 functionCode = 0;
     quint16 transactionId = 0;     // Mbap only
+    // Mbap: the engine writes the connection's next transaction id into the bytes when it sends
+    // them (each attempt, each repeat of a poll), so that every request on one connection has an
+    // id of its own whoever made it (Messaging on TCP/IP V1.0b, 3.1.3: the id pairs an answer
+    // with its request). False: the id is sent as given and the connection's ids go on after it.
+    bool engineNumbered = false;
     int timeoutMs = 1000;
     int retries = 0;               // further attempts after a timeout or an unusable answer
     // Unit 0 on a serial framing (RTU, ASCII, whatever carries them): every server acts, none

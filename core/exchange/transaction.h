@@ -49,8 +49,9 @@ struct Transaction {
     // Serial: the answer arrived before the line could have carried the request and the answer
     // (the link does not honour its baud rate); the latency is then measured from the write.
     bool outranLine = false;
-    // Pipelining only: the engine gave the request a transaction id of its own so that answers in
-    // flight can be told apart; request holds the bytes actually sent.
+    // The engine gave the request the connection's next transaction id in place of the one in the
+    // bytes it was given (RequestItem::engineNumbered, or pipelining); request holds the bytes
+    // actually sent.
     bool transactionIdRewritten = false;
 
     // -1 without an answer, or for a request never written (sentNs 0: a link error before the

@@ -1,6 +1,7 @@
 #include "dissector.h"
 
 #include "adudissectors.h"
+#include "broadcastrule.h"
 #include "checksum.h"
 #include "hexformat.h"
 
@@ -47,6 +48,21 @@ void checkAduSize(FieldTree &tree, Framing framing, int n)
                   .arg(n).arg(unit, QLatin1String(limit.what), QLatin1String(limit.where)).arg(n - limit.bytes));
 }
 
+// Serial Line V1.02, 2.1: a read to unit 0 is a broadcast nobody answers. Said of a frame that is
+// otherwise whole and correct: bytes with a wrong check sum are no broadcast (tryout 8: MBAP bytes
+// sent to an RTU link read as "unit 0").
+void checkBroadcastRead(Dissection &out)
+{
+    if (out.direction != Direction::Request || (out.framing != Framing::Rtu && out.framing != Framing::Ascii)
+        || out.fields.worstSeverity() >= Severity::Error)
+        return;
+    const int unit = out.fields.indexOf(out.framing == Framing::Rtu ? "rtu.unit_id" : "ascii.unit_id");
+    const QByteArray &b = out.fields.frame(); // ASCII: the decoded bytes
+    if (unit < 0 || b.size() < 2 || b.at(0) != 0 || !BroadcastRule::wantsAnswer(quint8(b.at(1))))
+        return;
+    out.fields.flag(unit, Severity::Error, BroadcastRule::readProblem(quint8(b.at(1))));
+}
+
 void runFraming(Dissection &out, const adu::RequestInfo &request)
 {
     const int wireSize = int(out.fields.frame().size());
@@ -59,6 +75,7 @@ void runFraming(Dissection &out, const adu::RequestInfo &request)
     case Framing::Auto: adu::dissectBarePdu(out, request); break;
     }
     checkAduSize(out.fields, out.framing, wireSize);
+    checkBroadcastRead(out);
 }
 
 bool rtuCrcValid(const QByteArray &b)

@@ -55,9 +55,18 @@ private slots:
     void outputsCheckedBeforeTheFirstRequest();
     void jsonErrorObject_data();
     void jsonErrorObject();
+    void broadcastReadIsFlagged_data();
+    void broadcastReadIsFlagged();
+    void broadcastReadIsRefusedOrSaid();
+    void broadcastWriteIsSentNotAnswered();
+    void pollNumbersItsRequests();
 
 private:
+    // The simulator on Modbus/TCP, for the tests that need MBAP (started by the first).
+    bool startTcpSimulator();
+
     Background m_sim;
+    Background m_tcpSim;
     QString m_target; // the simulator, RTU over TCP, with a short response timeout
     QTemporaryDir m_dir;
 };
@@ -71,6 +80,17 @@ void TestCliVerdicts::initTestCase()
                          &error),
              qPrintable(error));
     m_target = m_sim.url() + QStringLiteral("?timeout=300");
+}
+
+bool TestCliVerdicts::startTcpSimulator()
+{
+    QString error;
+    if (m_tcpSim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0")},
+                       &error))
+        return true;
+    qWarning("%s", qPrintable(error));
+    return false;
 }
 
 void TestCliVerdicts::malformedRequestIsNoBroadcast()
@@ -294,6 +314,127 @@ void TestCliVerdicts::jsonErrorObject()
     QVERIFY2(error.value(QStringLiteral("message")).toString().contains(message), r.describe().constData());
     // Standard error says it as before, in plain text.
     QVERIFY2(r.errText().contains(message), r.describe().constData());
+}
+
+// Issue 26, item 3: a read to unit 0 on a serial framing is a broadcast no unit answers, so its
+// data can never come back (MODBUS over Serial Line V1.02, 2.1: broadcasts are writes only).
+// decode says so in its verdict (exit 1); a write to unit 0 stays a valid broadcast, and unit 0
+// on Modbus/TCP is no broadcast (Messaging on TCP/IP V1.0b, 4.4.1.1).
+void TestCliVerdicts::broadcastReadIsFlagged_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<bool>("flagged");
+    QTest::newRow("rtu read") << QStringList{HexText::format(AduBuilder::rtu(QByteArray::fromHex("0300790001"), 0))} << 1 << true;
+    QTest::newRow("rtu read coils") << QStringList{HexText::format(AduBuilder::rtu(QByteArray::fromHex("0100000008"), 0))} << 1 << true;
+    QTest::newRow("ascii read") << QStringList{QStringLiteral("--framing"), QStringLiteral("ascii"),
+                                               QString::fromLatin1(AduBuilder::ascii(QByteArray::fromHex("0400000002"), 0)).trimmed()}
+                                << 1 << true;
+    QTest::newRow("rtu write single") << QStringList{HexText::format(AduBuilder::rtu(QByteArray::fromHex("06007D00FA"), 0))} << 0 << false;
+    QTest::newRow("rtu write multiple") << QStringList{HexText::format(AduBuilder::rtu(QByteArray::fromHex("1000000001020007"), 0))} << 0 << false;
+    QTest::newRow("tcp read unit 0") << QStringList{QStringLiteral("--framing"), QStringLiteral("tcp"),
+                                                    HexText::format(AduBuilder::mbap(QByteArray::fromHex("0300790001"), 0, 1))}
+                                     << 0 << false;
+}
+
+void TestCliVerdicts::broadcastReadIsFlagged()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(int, exitCode);
+    QFETCH(bool, flagged);
+    const CliResult r = runMbscope(QStringList{QStringLiteral("decode")} + arguments);
+    QVERIFY2(r.finished && r.exitCode == exitCode, r.describe().constData());
+    const QString why = QStringLiteral("broadcasts are for writes only (MODBUS over Serial Line V1.02, 2.1)");
+    QCOMPARE(r.outText().contains(why), flagged);
+    QCOMPARE(r.outText().contains(QStringLiteral("valid frame")), !flagged);
+    const CliResult json = runMbscope(QStringList{QStringLiteral("decode"), QStringLiteral("--json")} + arguments);
+    QVERIFY2(json.finished && json.exitCode == exitCode, json.describe().constData());
+    QCOMPARE(json.outText().contains(why), flagged);
+}
+
+// send sends what was typed and says the read cannot be answered (exit 1, not a success);
+// read refuses --unit 0 on a serial framing before anything is sent.
+void TestCliVerdicts::broadcastReadIsRefusedOrSaid()
+{
+    const QString hex = HexText::format(AduBuilder::rtu(QByteArray::fromHex("0300790001"), 0));
+    const CliResult sent = runMbscope({QStringLiteral("send"), QStringLiteral("--target"), m_target, QStringLiteral("--hex"), hex});
+    QVERIFY2(sent.finished && sent.exitCode == 1, sent.describe().constData());
+    QVERIFY2(sent.outText().contains(QStringLiteral("REQUEST to ")), sent.describe().constData());
+    QVERIFY2(sent.outText().contains(QStringLiteral("RESULT the read cannot be answered: ")), sent.describe().constData());
+    QVERIFY2(!sent.outText().contains(QStringLiteral("malformed")), sent.describe().constData());
+    const CliResult json = runMbscope({QStringLiteral("send"), QStringLiteral("--target"), m_target, QStringLiteral("--hex"), hex,
+                                       QStringLiteral("--json")});
+    QVERIFY2(json.finished && json.exitCode == 1, json.describe().constData());
+    QVERIFY2(json.json().value(QStringLiteral("request_problem")).toString().startsWith(QStringLiteral("the read cannot be answered: ")),
+             json.describe().constData());
+
+    const CliResult polled = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), m_target, QStringLiteral("--count"), QStringLiteral("2"),
+                                         QStringLiteral("--hex"), hex});
+    QVERIFY2(polled.finished && polled.exitCode == 1, polled.describe().constData());
+    QVERIFY2(polled.errText().contains(QStringLiteral(": the read cannot be answered: ")), polled.describe().constData());
+
+    const QStringList unitZero{QStringLiteral("--target"), m_target, QStringLiteral("--unit"), QStringLiteral("0"), QStringLiteral("--address"),
+                               QStringLiteral("0x79")};
+    for (const QStringList &arguments : {QStringList{QStringLiteral("read")} + unitZero,
+                                         QStringList{QStringLiteral("poll"), QStringLiteral("--count"), QStringLiteral("1")} + unitZero}) {
+        const CliResult r = runMbscope(arguments);
+        QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
+        QVERIFY2(r.errText().contains(QStringLiteral("--unit 0 is the broadcast address on RTU framing")), r.describe().constData());
+        QVERIFY2(r.errText().contains(QStringLiteral("give the unit's own address, 1-247")), r.describe().constData());
+    }
+
+    // Modbus/TCP: unit 0 addresses the server itself, which answers.
+    QVERIFY2(!m_tcpSim.url().isEmpty() || startTcpSimulator(), "mbscope simulate on tcp:// did not start");
+    const CliResult overTcp = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), m_tcpSim.url(), QStringLiteral("--unit"), QStringLiteral("0"),
+                                          QStringLiteral("--address"), QStringLiteral("0x79")});
+    QVERIFY2(overTcp.finished && overTcp.exitCode == 0, overTcp.describe().constData());
+    QVERIFY2(overTcp.outText().contains(QStringLiteral("RESULT ok")), overTcp.describe().constData());
+}
+
+// A write to unit 0 on a serial framing: sent, no answer expected, exit 0; the engine waits the
+// turnaround delay, not the response timeout (here 10 minutes: the harness kills a run after 2).
+void TestCliVerdicts::broadcastWriteIsSentNotAnswered()
+{
+    const QString slow = m_sim.url() + QStringLiteral("?timeout=600000");
+    const QStringList write{QStringLiteral("write"), QStringLiteral("--target"), slow, QStringLiteral("--unit"), QStringLiteral("0"),
+                            QStringLiteral("--address"), QStringLiteral("0x7D"), QStringLiteral("--registers"), QStringLiteral("250")};
+    const CliResult r = runMbscope(write);
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("RESULT broadcast: sent to every unit, no answer expected")), r.describe().constData());
+    QVERIFY2(!r.outText().contains(QStringLiteral("RESPONSE")), r.describe().constData());
+    QVERIFY2(!r.outText().contains(QStringLiteral("VALUES written")), r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("VALUES broadcast, no answer expected: ")), r.describe().constData());
+    const CliResult json = runMbscope(write + QStringList{QStringLiteral("--json")});
+    QVERIFY2(json.finished && json.exitCode == 0, json.describe().constData());
+    const QJsonObject t = json.json().value(QStringLiteral("transactions")).toArray().first().toObject();
+    QCOMPARE(t.value(QStringLiteral("status")).toString(), QStringLiteral("broadcast"));
+    QVERIFY(t.value(QStringLiteral("response")).isNull());
+    QVERIFY(t.value(QStringLiteral("request_problem")).isNull());
+}
+
+// Issue 26, item 2: a poll sends its items again and again on one Modbus/TCP connection; each
+// request gets the connection's next transaction id (they were the typed 7, 7, 7, 7), as the
+// journal of what went on the wire shows.
+void TestCliVerdicts::pollNumbersItsRequests()
+{
+    QVERIFY2(!m_tcpSim.url().isEmpty() || startTcpSimulator(), "mbscope simulate on tcp:// did not start");
+    const QString journal = m_dir.filePath(QStringLiteral("numbered.mbscope.journal"));
+    const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), m_tcpSim.url(), QStringLiteral("--count"), QStringLiteral("2"),
+                                       QStringLiteral("--interval"), QStringLiteral("0"), QStringLiteral("--hex"),
+                                       QStringLiteral("00 07 00 00 00 06 01 03 00 79 00 01"), QStringLiteral("--hex"),
+                                       QStringLiteral("00 07 00 00 00 06 01 03 00 7A 00 01"), QStringLiteral("--record"), journal});
+    QVERIFY2(poll.finished && poll.exitCode == 0, poll.describe().constData());
+    const CliResult rows = runMbscope({QStringLiteral("export"), journal, QStringLiteral("--jsonl"), QStringLiteral("-")});
+    QVERIFY2(rows.finished && rows.exitCode == 0, rows.describe().constData());
+    QList<int> ids;
+    for (const QByteArray &line : rows.out.split('\n')) {
+        const QJsonObject row = QJsonDocument::fromJson(line).object();
+        if (row.contains(QStringLiteral("request_hex")))
+            ids.append(QByteArray::fromHex(row.value(QStringLiteral("request_hex")).toString().toLatin1()).left(2).toHex().toInt(nullptr, 16));
+    }
+    QCOMPARE(ids.size(), 4);
+    for (qsizetype i = 1; i < ids.size(); ++i)
+        QVERIFY2(ids.at(i) > ids.at(i - 1), rows.out.constData());
 }
 
 QTEST_GUILESS_MAIN(TestCliVerdicts)

@@ -241,7 +241,16 @@ quint64 LinkController::send(const QByteArray &bytes)
 {
     if (!m_engine || bytes.isEmpty())
         return 0;
-    return m_engine->send(RequestItem::forLink(bytes, m_url));
+    return m_engine->send(item(bytes));
+}
+
+RequestItem LinkController::item(const QByteArray &bytes) const
+{
+    // Whoever sends on the window's link (Send, Poll, the register table's writes and reads
+    // back), each request gets the connection's next MBAP transaction id from the engine.
+    RequestItem item = RequestItem::forLink(bytes, m_url);
+    item.engineNumbered = true;
+    return item;
 }
 
 bool LinkController::startPoll(const QByteArray &bytes, int intervalMs, quint64 count)
@@ -249,7 +258,7 @@ bool LinkController::startPoll(const QByteArray &bytes, int intervalMs, quint64 
     if (!m_engine || bytes.isEmpty())
         return false;
     PollSettings settings;
-    settings.items = {RequestItem::forLink(bytes, m_url)};
+    settings.items = {item(bytes)};
     settings.intervalNs = qint64(qMax(0, intervalMs)) * 1000000;
     settings.count = count;
     m_engine->startPoll(settings);
@@ -263,7 +272,7 @@ bool LinkController::startSweep(const QByteArray &bytes, const QList<int> &inter
     if (!m_engine || bytes.isEmpty() || intervalsMs.isEmpty())
         return false;
     SweepSettings settings;
-    settings.poll.items = {RequestItem::forLink(bytes, m_url)};
+    settings.poll.items = {item(bytes)};
     settings.poll.count = count;
     for (const int ms : intervalsMs)
         settings.intervalsNs.append(qint64(qMax(0, ms)) * 1000000);

@@ -65,9 +65,12 @@ public:
     [[nodiscard]] bool isPolling() const { return m_polling; }
     [[nodiscard]] TransactionEngine *engine() const { return m_engine.get(); }
 
-    // Sends bytes exactly as given; returns the transaction id, 0 when not connected.
+    // Sends bytes exactly as given but for an MBAP transaction id, which is the connection's next
+    // (RequestItem::engineNumbered: every request on the link has an id of its own); returns the
+    // transaction's number, 0 when not connected.
     quint64 send(const QByteArray &bytes);
-    // Sends bytes every intervalMs (0: back to back), count times (0: until stopPoll()).
+    // Sends bytes every intervalMs (0: back to back), count times (0: until stopPoll()); each
+    // MBAP request gets the connection's next transaction id.
     bool startPoll(const QByteArray &bytes, int intervalMs, quint64 count);
     // Polls bytes count times at each interval in turn (TransactionEngine::startSweep); the
     // PollReport at the end has one run per interval. stopPoll() stops it.
@@ -110,6 +113,8 @@ Q_SIGNALS:
     void recordingChanged(const QString &path, const QString &problem);
 
 private:
+    // bytes for the link, numbered by the engine.
+    [[nodiscard]] RequestItem item(const QByteArray &bytes) const;
     void onTransactions(const QList<Transaction> &transactions);
     void onProgress(const EngineProgress &progress);
     void onLinkMessage(const QString &message);

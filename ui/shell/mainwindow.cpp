@@ -511,7 +511,7 @@ void MainWindow::sendWrite(const QByteArray &pdu, const QString &description)
     AduOptions options;
     options.framing = m_controller->url().framing();
     options.unitId = quint8(m_connectionBar->unitId());
-    options.transactionId = 1;
+    options.transactionId = 1; // the engine gives it the connection's next one (LinkController::send)
     m_controller->send(AduBuilder::complete(pdu, options));
     // The table shows what the device holds, not what was typed: the read it came from goes out
     // again after the write (queued behind it), unless a poll reads it anyway.

@@ -21,6 +21,8 @@
 #include "compose/requestcomposer.h"
 #include "compose/rawrequesteditor.h"
 #include "sim/embeddedsimulator.h"
+#include "sim/simulatorhost.h"
+#include "sim/simtrafficrecord.h"
 
 #include <QtCore/QFile>
 #include <QtCore/QSettings>
@@ -55,6 +57,16 @@ bool writeFile(const QString &path, const QByteArray &text)
     return file.open(QIODevice::WriteOnly) && file.write(text) == text.size();
 }
 
+// The register table's row of a PDU address, or -1.
+int rowOf(const RegisterTableModel *model, int address)
+{
+    for (int r = 0; r < model->rowCount(); ++r) {
+        if (model->index(r, 0).data(RegisterTableModel::AddressRole).toInt() == address)
+            return r;
+    }
+    return -1;
+}
+
 } // namespace
 
 class TestDailyUse : public QObject
@@ -72,6 +84,7 @@ private Q_SLOTS:
     void ctrlFInTheTrafficDockFocusesItsSearch();
     void f6MovesBetweenDocks();
     void tableWriteIsReadBack();
+    void transactionIdsAreUniqueOnTheConnection();
     void histogramFollowsTheLivePoll();
     void smallScreens_data();
     void smallScreens();
@@ -302,11 +315,7 @@ void TestDailyUse::tableWriteIsReadBack()
     QTRY_VERIFY_WITH_TIMEOUT(model->hasAnswer(), kWaitMs);
     model->setValueFormats({RegisterFormat(RegisterType::UInt16)});
     // 0x007F, the measuring time (1000).
-    int row = -1;
-    for (int r = 0; r < model->rowCount(); ++r) {
-        if (model->index(r, 0).data(RegisterTableModel::AddressRole).toInt() == 0x7F)
-            row = r;
-    }
+    const int row = rowOf(model, 0x7F);
     QVERIFY(row >= 0);
     const QModelIndex cell = model->index(row, RegisterTableModel::FirstValueColumn);
     QCOMPARE(cell.data(RegisterTableModel::RawRole).toInt(), 1000);
@@ -327,6 +336,55 @@ void TestDailyUse::tableWriteIsReadBack()
     QCOMPARE(quint8(all.at(1).request.at(1)), quint8(0x03));
     QTRY_COMPARE_WITH_TIMEOUT(model->index(row, RegisterTableModel::FirstValueColumn).data(RegisterTableModel::RawRole).toInt(),
                               2000, kWaitMs);
+}
+
+// Issue 26, item 2: every request on one Modbus/TCP connection, whoever makes it (the composer's
+// Send and Poll, the register table's write and the read back after it), carries a transaction
+// id of its own, as the server sees them: they were 1, 1, 1... (each producer numbered from 1).
+void TestDailyUse::transactionIdsAreUniqueOnTheConnection()
+{
+    MainWindow window;
+    QVERIFY(window.startWithSimulator(QStringLiteral("tcp://127.0.0.1:0")));
+    QTRY_COMPARE_WITH_TIMEOUT(window.controller()->state(), LinkController::State::Connected, kWaitMs);
+    SimulatorHost *host = window.simulator()->host();
+    QVERIFY(host);
+    QList<quint16> seen; // the transaction ids of the requests the simulator answered, in order
+    connect(host, &SimulatorHost::trafficRecorded, this, [&seen](const QList<SimTrafficRecord> &records, int) {
+        for (const SimTrafficRecord &r : records) {
+            if (r.entry.verdict == SimLogEntry::Verdict::Answered && r.entry.request.size() >= 8)
+                seen.append(quint16(quint8(r.entry.request.at(0)) << 8 | quint8(r.entry.request.at(1))));
+        }
+    });
+    window.composer()->rawEditor()->setText(QStringLiteral("00 01 00 00 00 06 01 03 00 79 00 16"));
+    window.composer()->send();
+    RegisterTableModel *model = window.registerTable()->model();
+    QTRY_VERIFY_WITH_TIMEOUT(model->hasAnswer(), kWaitMs);
+    model->setValueFormats({RegisterFormat(RegisterType::UInt16)});
+    const int row = rowOf(model, 0x7F);
+    QVERIFY(row >= 0);
+    // The table's write and its read back.
+    QVERIFY(model->setData(model->index(row, RegisterTableModel::FirstValueColumn), QStringLiteral("2000")));
+    QTRY_COMPARE_WITH_TIMEOUT(seen.size(), 3, kWaitMs);
+    // A poll of three.
+    QSignalSpy finished(window.controller(), &LinkController::pollFinished);
+    window.composer()->intervalSpin()->setValue(0);
+    window.composer()->countSpin()->setValue(3);
+    window.composer()->pollAction()->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, kWaitMs);
+    QTRY_COMPARE_WITH_TIMEOUT(seen.size(), 6, kWaitMs);
+    // Another write from the table, then Send once more.
+    QVERIFY(model->setData(model->index(row, RegisterTableModel::FirstValueColumn), QStringLiteral("1000")));
+    QTRY_COMPARE_WITH_TIMEOUT(seen.size(), 8, kWaitMs);
+    window.composer()->send();
+    QTRY_COMPARE_WITH_TIMEOUT(seen.size(), 9, kWaitMs);
+    for (qsizetype i = 1; i < seen.size(); ++i)
+        QVERIFY2(seen.at(i) > seen.at(i - 1), qPrintable(QStringLiteral("transaction ids as the server saw them: %1")
+                                                            .arg([&seen] {
+                                                                QStringList ids;
+                                                                for (const quint16 id : seen)
+                                                                    ids << QString::number(id);
+                                                                return ids.join(QStringLiteral(", "));
+                                                            }())));
 }
 
 // Item 11: the histogram leaves an opened capture when a poll starts; one sample, one label.
