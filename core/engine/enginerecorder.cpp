@@ -79,6 +79,12 @@ void EngineRecorder::logFrame(qint64 tNs, TrafficDirection direction, TrafficVer
     scheduleBatch();
 }
 
+void EngineRecorder::noteEndpoints(const QString &local, const QString &peer)
+{
+    if (m_log && !local.isEmpty() && !peer.isEmpty())
+        m_log->setEndpoints(m_logLink, monotonicNowNs(), 0, JournalEndpoints{local, peer});
+}
+
 void EngineRecorder::logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id)
 {
     logFrame(ns, TrafficDirection::Out, TrafficVerdict::Sent, id, bytes);

@@ -40,6 +40,9 @@ public:
     // default: the copies cost a list entry per frame). Any thread.
     void setFramesPublished(bool published);
 
+    // The link opened over a connection with these ends (client: mbscope's socket, server: the
+    // target's): a note in the journal (journalendpoints.h). Empty ends: nothing.
+    void noteEndpoints(const QString &local, const QString &peer);
     void logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id);
     void logIncoming(const QByteArray &bytes, qint64 firstNs, TrafficVerdict verdict, quint64 id = 0);
     // A record made: to the listeners, recorded(), the log (when no answer frame was logged) and

@@ -59,7 +59,10 @@ namespace mbscope {
 //   still says what it was recording: a JSON object (trafficmetadata.h: the command, target,
 //   profile, requests, version, host, start time). A reader keeps the first one.
 //   Note (version 2): a JSON object about the transaction with the record's id on the record's
-//   link, e.g. the simulator's fault rules that shaped an answer: {"faults": ["slow", ...]}.
+//   link, e.g. the simulator's fault rules that shaped an answer: {"faults": ["slow", ...]}, or
+//   the ends of the connection the link's frames go over from here on (journalendpoints.h):
+//   {"endpoints": {"client": "127.0.0.1:40312", "server": "127.0.0.1:502"}}. A reader skips
+//   the notes it does not know, so new kinds of note keep the format's version.
 //
 // Each batch is written with one write(2) (QFile unbuffered) when it holds batchEntries frames or
 // its first frame is batchNs old, whichever comes first (or it reaches 256 MiB), and on close. That reaches the kernel's
