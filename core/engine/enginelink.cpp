@@ -17,8 +17,6 @@ void EngineCore::closeLink()
     }
     m_opening = false;
     m_openTimer.stop();
-    if (const auto *network = qobject_cast<const NetworkLink *>(m_link))
-        m_recorder->noteEndpoints(network->localEndpoint(), network->peerEndpoint());
     resetFramer();
     m_deferPump = false;
 }
@@ -62,6 +60,8 @@ void EngineCore::onOpened()
 {
     m_opening = false;
     m_openTimer.stop();
+    if (const auto *network = qobject_cast<const NetworkLink *>(m_link))
+        m_recorder->noteEndpoints(network->localEndpoint(), network->peerEndpoint());
     resetFramer();
     Q_EMIT linkOpened();
     schedulePump();

@@ -4,6 +4,7 @@
 #include "recordlistener.h"
 
 #include "exchange/trafficentry.h"
+#include "traffic/journalendpoints.h"
 #include "exchange/transaction.h"
 
 #include <QtCore/QList>
@@ -85,6 +86,7 @@ private:
     TrafficLog *m_log = nullptr;
     QString m_link;
     quint16 m_logLink = 0;
+    JournalEndpoints m_endpoints; // of the open link's connection, for a log attached later
     QList<RecordListener *> m_listeners;
     std::atomic<int> m_recordedReceivers{0};
     QTimer m_batchTimer;
