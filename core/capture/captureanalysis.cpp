@@ -118,9 +118,10 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
     for (const CaptureConversation &c : report.conversations) {
         const ConversationCounts counts = c.id < m_conversations.size() ? m_conversations[c.id] : ConversationCounts{};
         QJsonObject conversation{
-            {QStringLiteral("client"), c.clientText()},
+            // A client the journal does not give, or a serial line's: null.
+            {QStringLiteral("client"), c.clientText().isEmpty() ? QJsonValue() : QJsonValue(c.clientText())},
             {QStringLiteral("server"), c.serverText()},
-            {QStringLiteral("transport"), c.udp ? QStringLiteral("udp") : QStringLiteral("tcp")},
+            {QStringLiteral("transport"), c.isSerial() ? QStringLiteral("serial") : c.udp ? QStringLiteral("udp") : QStringLiteral("tcp")},
             {QStringLiteral("framing"), framingName(c.framing)},
             {QStringLiteral("requests"), double(c.requests)},
             {QStringLiteral("responses"), double(c.responses)},
@@ -129,7 +130,7 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
             {QStringLiteral("failed"), double(counts.failed)},
             {QStringLiteral("unmatched_responses"), double(counts.unmatched)},
         };
-        if (!c.udp) {
+        if (!c.udp && !c.isSerial()) {
             conversation.insert(QStringLiteral("request_gaps"), double(c.requestGaps));
             conversation.insert(QStringLiteral("request_bytes_lost"), double(c.requestBytesLost));
             conversation.insert(QStringLiteral("response_gaps"), double(c.responseGaps));

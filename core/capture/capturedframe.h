@@ -27,10 +27,24 @@ struct CaptureConversation {
     quint64 responseGaps = 0;
     qint64 responseBytesLost = 0;
     bool joinedMidStream = false; // the capture began after the connection did
+    // Journals only. A serial line (an rtu:// or ascii:// link) has no addresses: its port
+    // ("/dev/ttyUSB0") names it, and client and server are unused. A network link's journal says
+    // its client only in an endpoints note (journalendpoints.h), its server in the link's URL
+    // (or the note): an end the journal does not give is not known (clientKnown, serverKnown
+    // false; serverName then holds the URL's "host:port"), and its address is a stand-in that
+    // only the packets of a pcap export carry.
+    QString serialPort;
+    QString serverName;
+    bool clientKnown = true;
+    bool serverKnown = true;
 
-    [[nodiscard]] QString clientText() const; // "192.168.1.5:50123", "[::1]:50123"
+    [[nodiscard]] bool isSerial() const { return !serialPort.isEmpty(); }
+    // "192.168.1.5:50123", "[::1]:50123"; empty when not known and on a serial line.
+    [[nodiscard]] QString clientText() const;
+    // "192.168.1.10:502", the serial port "/dev/ttyUSB0", or the URL's "plc.local:502".
     [[nodiscard]] QString serverText() const;
-    // "tcp 192.168.1.5:50123 -> 192.168.1.10:502 (Modbus TCP)"
+    // "tcp 192.168.1.5:50123 -> 192.168.1.10:502 (Modbus TCP)", "serial /dev/ttyUSB0 (Modbus RTU)",
+    // "tcp (client not recorded) -> 192.168.1.10:502 (Modbus TCP)"
     [[nodiscard]] QString description() const;
 };
 

@@ -100,12 +100,22 @@ void CaptureFileWriter::writeHeader()
     append32(m_buffer, quint32(shb.size() + 12));
     m_buffer.append(shb);
     append32(m_buffer, quint32(shb.size() + 12));
-    // Interface description block: Ethernet, no snap length limit, nanoseconds.
+    m_interfaces = 0;
+    (void)addInterface(quint16(kLinkTypeEthernet), QStringLiteral("mbscope"), {});
+}
+
+int CaptureFileWriter::addInterface(quint16 linkType, const QString &name, const QString &description)
+{
+    if (m_format == Format::Pcap || !m_open)
+        return -1;
+    // Interface description block: no snap length limit, nanoseconds.
     QByteArray idb;
-    append16(idb, quint16(kLinkTypeEthernet));
+    append16(idb, linkType);
     append16(idb, 0);
     append32(idb, 0);
-    appendOption(idb, 2, "mbscope"); // if_name
+    appendOption(idb, 2, name.toUtf8()); // if_name
+    if (!description.isEmpty())
+        appendOption(idb, 3, description.toUtf8()); // if_description
     const char nine = 9;
     appendOption(idb, 9, QByteArrayView(&nine, 1)); // if_tsresol: 10^-9
     appendOption(idb, 0, {});
@@ -113,9 +123,10 @@ void CaptureFileWriter::writeHeader()
     append32(m_buffer, quint32(idb.size() + 12));
     m_buffer.append(idb);
     append32(m_buffer, quint32(idb.size() + 12));
+    return m_interfaces++;
 }
 
-void CaptureFileWriter::write(qint64 timeNs, QByteArrayView frame)
+void CaptureFileWriter::write(qint64 timeNs, QByteArrayView frame, quint32 interfaceIndex)
 {
     if (!m_open || !m_error.isEmpty())
         return;
@@ -131,7 +142,7 @@ void CaptureFileWriter::write(qint64 timeNs, QByteArrayView frame)
         const quint32 total = 32 + ((length + 3u) & ~3u);
         append32(m_buffer, 6);
         append32(m_buffer, total);
-        append32(m_buffer, 0); // interface 0
+        append32(m_buffer, interfaceIndex);
         append32(m_buffer, quint32(t >> 32));
         append32(m_buffer, quint32(t & 0xffffffffULL));
         append32(m_buffer, length);

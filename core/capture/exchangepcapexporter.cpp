@@ -1,5 +1,8 @@
 #include "exchangepcapexporter.h"
 
+#include <QtCore/QtEndian>
+
+#include <algorithm>
 #include <limits>
 
 namespace mbscope {
@@ -33,6 +36,38 @@ ExchangePcapExporter::Stream &ExchangePcapExporter::stream(quint32 conversation,
     }
     if (s.endpoints.serverPort == 0) {
         s.endpoints = {s.info.client, s.info.server, s.info.clientPort, s.info.serverPort};
+        if (s.info.isSerial()) {
+            const QString what = s.info.framing == Framing::Ascii ? QStringLiteral("Modbus ASCII") : QStringLiteral("Modbus RTU");
+            s.serialInterface = m_writer.addInterface(CaptureFileWriter::kLinkTypeRtacSerial, s.info.serialPort,
+                                                QStringLiteral("%1 on serial port %2").arg(what, s.info.serialPort));
+            QString option;
+            if (s.serialInterface < 0)
+                option = QStringLiteral("serial port %1 (%2) as RTU over TCP between stand-in addresses %3 -> %4, since a pcap file "
+                                        "cannot name a serial port (a .pcapng file does): -o mbrtu.tcp.port:%5")
+                             .arg(s.info.serialPort, what, s.info.client.toString(), s.info.server.toString())
+                             .arg(s.info.serverPort);
+            else if (s.info.framing == Framing::Ascii)
+                option = QStringLiteral("serial port %1 (%2): tshark has no dissector for it").arg(s.info.serialPort, what);
+            else
+                option = QStringLiteral("serial port %1 (%2): -d rtacser.data,mbrtu").arg(s.info.serialPort, what);
+            if (!m_decodeOptions.contains(option))
+                m_decodeOptions.append(option);
+            if (s.serialInterface < 0 && !m_rtuPorts.contains(s.info.serverPort))
+                m_rtuPorts.append(s.info.serverPort);
+            return s;
+        }
+        // A journal's ends it does not give: say which addresses stand in for them.
+        const auto standIn = [&](const QString &what, const IpAddress &address, quint16 port) {
+            const QString option = QStringLiteral("%1: the journal does not say the %2's address: %3:%4 stands for it")
+                                       .arg(s.info.serverText(), what, address.toString())
+                                       .arg(port);
+            if (!m_decodeOptions.contains(option))
+                m_decodeOptions.append(option);
+        };
+        if (!s.info.clientKnown)
+            standIn(QStringLiteral("client"), s.info.client, s.info.clientPort);
+        if (!s.info.serverKnown)
+            standIn(QStringLiteral("server"), s.info.server, s.info.serverPort);
         if (s.info.framing == Framing::Rtu && !m_rtuPorts.contains(s.info.serverPort))
             m_rtuPorts.append(s.info.serverPort);
         const QString transport = s.info.udp ? QStringLiteral("udp") : QStringLiteral("tcp");
@@ -89,6 +124,18 @@ void ExchangePcapExporter::writeUpTo(qint64 timeNs)
 void ExchangePcapExporter::writeOne(qint64 timeNs, const Held &held)
 {
     Stream &s = m_streams[held.conversation];
+    if (s.serialInterface >= 0) {
+        // LINKTYPE_RTAC_SERIAL's header, big-endian: seconds, microseconds, event type, control
+        // lines, footer.
+        QByteArray packet(12, '\0');
+        const quint64 t = quint64(std::max<qint64>(timeNs, 0));
+        qToBigEndian(quint32(t / 1000000000ULL), packet.data());
+        qToBigEndian(quint32(t % 1000000000ULL / 1000ULL), packet.data() + 4);
+        packet[8] = char(held.toServer ? 0x01 : 0x02); // DATA_TX_START from the master, DATA_RX_START to it
+        packet.append(held.payload);
+        m_writer.write(timeNs, packet, quint32(s.serialInterface));
+        return;
+    }
     if (s.info.udp) {
         m_writer.write(timeNs, PacketSynthesizer::udp(s.endpoints, held.toServer, held.payload));
         return;

@@ -24,6 +24,16 @@ namespace mbscope {
 // go to the conversation's port, which tshark does not know: decodeOptions() gives the option
 // to tell it ("-o mbrtu.tcp.port:4001"). ASCII frames are written as they are; tshark has no
 // dissector for ASCII over TCP.
+//
+// A serial line's conversation (a journal of an rtu:// link, CaptureConversation::serialPort)
+// has no addresses to invent: in pcapng it is an interface of its own named after the port
+// (if_name "/dev/ttyUSB0", if_description "Modbus RTU on serial port /dev/ttyUSB0"), link type
+// RTAC serial (LINKTYPE_RTAC_SERIAL, 250), each frame as the line carried it behind the link
+// type's 12-byte header (time, event 1 DATA_TX_START for the master's requests, 2 DATA_RX_START
+// for the answers). Wireshark decodes the bytes as Modbus RTU with Decode As (tshark -d
+// rtacser.data,mbrtu, Wireshark 4.0). A pcap file has one link type and no interface names: there
+// a serial line's frames go as RTU over TCP between stand-in addresses, port 4001, and
+// decodeOptions() says so.
 class ExchangePcapExporter
 {
 public:
@@ -37,7 +47,9 @@ public:
 
     [[nodiscard]] QList<quint16> rtuPorts() const { return m_rtuPorts; }
     // What tshark needs to decode every conversation written, one entry per port it does not
-    // know by itself: "port 4001 (RTU over TCP): -o mbrtu.tcp.port:4001". MBAP on 502 needs none.
+    // know by itself: "port 4001 (RTU over TCP): -o mbrtu.tcp.port:4001", "serial port
+    // /dev/ttyUSB0 (Modbus RTU): -d rtacser.data,mbrtu". MBAP on 502 needs none. Also which
+    // addresses are stand-ins (a journal that does not say its client).
     [[nodiscard]] QStringList decodeOptions() const { return m_decodeOptions; }
     [[nodiscard]] quint64 packets() const { return m_writer.packets(); }
 
@@ -47,6 +59,7 @@ private:
         PacketSynthesizer::Endpoints endpoints;
         bool known = false;
         bool opened = false;
+        int serialInterface = -1; // a serial line's, in pcapng
         quint32 clientNext = 0x10000000; // next sequence number from the client
         quint32 serverNext = 0x20000000;
     };

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "exchange/responseverdict.h"
+#include "traffic/journalendpoints.h"
 #include "traffic/trafficmetadata.h"
 #include "transport/linkurl.h"
 
@@ -25,28 +26,67 @@ struct Slot {
     bool done = false;
 };
 
+// "192.168.1.5:40312" or "[::1]:502" into an address and a port; false when it is neither.
+bool parseEndpoint(const QString &text, IpAddress *address, quint16 *port)
+{
+    const qsizetype colon = text.lastIndexOf(QLatin1Char(':'));
+    if (colon <= 0)
+        return false;
+    bool portOk = false;
+    const uint number = text.mid(colon + 1).toUInt(&portOk);
+    QString host = text.left(colon);
+    if (host.startsWith(QLatin1Char('[')) && host.endsWith(QLatin1Char(']')))
+        host = host.mid(1, host.size() - 2);
+    QHostAddress parsed;
+    if (!portOk || number > 0xFFFF || !parsed.setAddress(host))
+        return false;
+    bool v4 = false;
+    const quint32 ipv4 = parsed.toIPv4Address(&v4);
+    IpAddress a;
+    if (v4) {
+        a.bytes = {quint8(ipv4 >> 24), quint8(ipv4 >> 16), quint8(ipv4 >> 8), quint8(ipv4)};
+    } else {
+        const Q_IPV6ADDR ipv6 = parsed.toIPv6Address();
+        for (int i = 0; i < 16; ++i)
+            a.bytes[std::size_t(i)] = ipv6[i];
+        a.v6 = true;
+    }
+    *address = a;
+    *port = quint16(number);
+    return true;
+}
+
+// What a link's name (its URL) says of its conversation. Serial: the port. Network: the server
+// when the URL names it by address; the client is not in the URL (an endpoints note gives it).
+// Ends not known get stand-in addresses, which only a pcap export's packets carry:
+// 10.0.0.1:(49152 + link) -> 10.0.0.2:(the URL's port).
 CaptureConversation conversationFor(quint16 link, const QString &name)
 {
     CaptureConversation c;
     c.id = link;
     c.client.bytes = {10, 0, 0, 1};
     c.clientPort = quint16(49152 + link);
+    c.clientKnown = false;
     c.server.bytes = {10, 0, 0, 2};
     c.serverPort = 502;
+    c.serverKnown = false;
+    c.serverName = name;
     const LinkUrl::Result parsed = LinkUrl::parse(name);
     if (!parsed.url)
         return c;
     const LinkUrl &url = *parsed.url;
     c.framing = url.framing();
     c.udp = url.isDatagram();
-    if (!url.isSerial())
-        c.serverPort = url.port;
-    else
-        c.serverPort = 4001; // a serial line has no port: the one serial device servers use most
-    bool ok = false;
-    const quint32 v4 = QHostAddress(url.host).toIPv4Address(&ok);
-    if (ok && v4 != 0x0a000001)
-        c.server.bytes = {quint8(v4 >> 24), quint8(v4 >> 16), quint8(v4 >> 8), quint8(v4)};
+    if (url.isSerial()) {
+        c.serialPort = url.serial.device;
+        c.serverPort = 4001; // only for a pcap file, which cannot name a serial port
+        return c;
+    }
+    c.serverPort = url.port;
+    const QString host = url.host.contains(QLatin1Char(':')) ? QLatin1Char('[') + url.host + QLatin1Char(']') : url.host;
+    c.serverName = host + QLatin1Char(':') + QString::number(url.port);
+    quint16 port = 0;
+    c.serverKnown = parseEndpoint(c.serverName, &c.server, &port);
     return c;
 }
 
@@ -114,18 +154,25 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
             ++firstSlot;
         }
     };
-    const auto push = [&](quint16 link) -> Slot & {
-        Slot &s = queue.emplace_back();
-        s.exchange.conversation = link;
-        s.exchange.framing = framingOf(link);
-        s.exchange.transaction.id = firstSlot + queue.size() - 1;
-        return s;
-    };
     const auto judge = [&](Transaction &t, Framing framing) {
         if (t.request.isEmpty() || t.response.isEmpty())
             return;
         ResponseVerdict::Result v = verdictFor(framing).judge(t.response, t.request);
         t.exceptionCode = v.exceptionCode;
+        // The journal's verdict is what its writer made of the answer: the engine judged it as
+        // this does, but a server journal (simulate) says what it sent, a CRC its fault rule
+        // damaged included, as sent ("ok"). An answer is judged here by the check every other
+        // path uses (ResponseVerdict, as captures and the engine): what it finds wrong in the
+        // bytes stands whatever the journal says; what the writer found that the bytes alone do
+        // not show (an answer the line cut short) stays.
+        const bool answered = t.status == TransactionStatus::Ok || t.status == TransactionStatus::Exception;
+        if (answered && v.status != TransactionStatus::Ok && v.status != TransactionStatus::Exception) {
+            t.status = v.status;
+            t.problem = std::move(v.problem);
+            return;
+        }
+        if (answered)
+            t.status = v.status;
         if (t.problem.isEmpty())
             t.problem = std::move(v.problem);
     };
@@ -136,9 +183,60 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
     for (qsizetype i = 0; i < names.links.size(); ++i) {
         result.conversations.push_back(conversationFor(quint16(i), names.links.at(i)));
         framings.insert(quint16(i), result.conversations.back().framing);
-        if (onConversation)
-            onConversation(result.conversations.back());
     }
+    // A link's conversation changes where an endpoints note says another connection carries it
+    // (a reconnect, another client of the simulator): each connection is a conversation of its
+    // own, announced (onConversation) just before its first exchange.
+    QHash<quint16, quint32> current; // link -> its conversation now
+    std::vector<bool> announced(result.conversations.size(), false);
+    const auto conversationOf = [&](quint16 link) -> quint32 {
+        quint32 id = link;
+        if (const auto it = current.constFind(link); it != current.cend()) {
+            id = it.value();
+        } else if (link >= names.links.size()) { // a link id never named (a damaged journal)
+            id = quint32(result.conversations.size());
+            result.conversations.push_back(conversationFor(link, QString()));
+            result.conversations.back().id = id;
+            announced.push_back(false);
+            current.insert(link, id);
+        }
+        if (!announced[id]) {
+            announced[id] = true;
+            if (onConversation)
+                onConversation(result.conversations[id]);
+        }
+        return id;
+    };
+    const auto onNote = [&](const TrafficJournalNote &note) {
+        const std::optional<JournalEndpoints> endpoints = JournalEndpoints::fromJson(note.json);
+        if (!endpoints || note.link >= names.links.size())
+            return;
+        CaptureConversation c = result.conversations[note.link]; // the link's own: framing, URL
+        c.clientKnown = parseEndpoint(endpoints->client, &c.client, &c.clientPort);
+        if (parseEndpoint(endpoints->server, &c.server, &c.serverPort))
+            c.serverKnown = true;
+        const quint32 now = current.value(note.link, note.link);
+        const CaptureConversation &was = result.conversations[now];
+        if (was.clientKnown == c.clientKnown && was.client == c.client && was.clientPort == c.clientPort && was.server == c.server
+            && was.serverPort == c.serverPort)
+            return; // the same connection
+        if (!announced[now]) {
+            c.id = now; // nothing went over the one it replaces
+            result.conversations[now] = c;
+            return;
+        }
+        c.id = quint32(result.conversations.size());
+        result.conversations.push_back(c);
+        announced.push_back(false);
+        current.insert(note.link, c.id);
+    };
+    const auto push = [&](quint16 link) -> Slot & {
+        Slot &s = queue.emplace_back();
+        s.exchange.conversation = conversationOf(link);
+        s.exchange.framing = framingOf(link);
+        s.exchange.transaction.id = firstSlot + queue.size() - 1;
+        return s;
+    };
 
     // A server's journal (mbscope simulate, replay --serve) holds its requests In and its
     // answers Out: read as its clients saw them, so that one pairing serves both.
@@ -213,7 +311,7 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
             timedOut.insert(e.transactionId, s.exchange);
         s.done = true;
         emitReady();
-    });
+    }, onNote);
 
     for (Slot &s : queue) {
         if (!s.done) {

@@ -36,12 +36,14 @@ public:
         quint64 lateResponses = 0;
         // Requests whose outcome the journal does not hold, as it ends first: CaptureExchange::Kind::Unanswered.
         quint64 noOutcome = 0;
-        // One per link id: framing from the link's URL, the server's address and port when the
-        // URL names an IPv4 address (else 10.0.0.2), a client at 10.0.0.1:(49152 + id).
+        // One per link id (its id), then one per further connection an endpoints note
+        // (journalendpoints.h) starts on a link. Framing and serial port from the link's URL;
+        // server from the URL when it names an address, or from the note; client from the note
+        // only (clientKnown, serverKnown: capturedframe.h).
         std::vector<CaptureConversation> conversations;
     };
 
-    // onConversation is called for every link before the first exchange.
+    // onConversation is called for a conversation just before its first exchange.
     [[nodiscard]] static Result read(const QString &path, const Sink &sink,
                                      const std::function<void(const CaptureConversation &)> &onConversation = {});
     // Whether a file starts with the journal's magic ("MBSCTLOG").

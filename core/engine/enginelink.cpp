@@ -2,6 +2,7 @@
 
 #include "protocol/streamframer.h"
 #include "transport/monotonicclock.h"
+#include "transport/networklink.h"
 
 namespace mbscope {
 
@@ -59,6 +60,8 @@ void EngineCore::onOpened()
 {
     m_opening = false;
     m_openTimer.stop();
+    if (const auto *network = qobject_cast<const NetworkLink *>(m_link))
+        m_recorder->noteEndpoints(network->localEndpoint(), network->peerEndpoint());
     resetFramer();
     Q_EMIT linkOpened();
     schedulePump();

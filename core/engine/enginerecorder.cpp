@@ -53,6 +53,9 @@ void EngineRecorder::attachLog()
         return;
     }
     m_logLink = m_log->addLink(m_link);
+    // A log attached once the link is open (poll --record) still learns the connection's ends.
+    if (!m_endpoints.client.isEmpty())
+        m_log->setEndpoints(m_logLink, monotonicNowNs(), 0, m_endpoints);
     m_journalTimer.start();
 }
 
@@ -77,6 +80,15 @@ void EngineRecorder::logFrame(qint64 tNs, TrafficDirection direction, TrafficVer
     frame.bytes = bytes; // shared, not copied
     m_frames.append(std::move(frame));
     scheduleBatch();
+}
+
+void EngineRecorder::noteEndpoints(const QString &local, const QString &peer)
+{
+    if (local.isEmpty() || peer.isEmpty())
+        return;
+    m_endpoints = JournalEndpoints{local, peer};
+    if (m_log)
+        m_log->setEndpoints(m_logLink, monotonicNowNs(), 0, m_endpoints);
 }
 
 void EngineRecorder::logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id)

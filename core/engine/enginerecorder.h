@@ -4,6 +4,7 @@
 #include "recordlistener.h"
 
 #include "exchange/trafficentry.h"
+#include "traffic/journalendpoints.h"
 #include "exchange/transaction.h"
 
 #include <QtCore/QList>
@@ -40,6 +41,9 @@ public:
     // default: the copies cost a list entry per frame). Any thread.
     void setFramesPublished(bool published);
 
+    // The link opened over a connection with these ends (client: mbscope's socket, server: the
+    // target's): a note in the journal (journalendpoints.h). Empty ends: nothing.
+    void noteEndpoints(const QString &local, const QString &peer);
     void logOutgoing(const QByteArray &bytes, qint64 ns, quint64 id);
     void logIncoming(const QByteArray &bytes, qint64 firstNs, TrafficVerdict verdict, quint64 id = 0);
     // A record made: to the listeners, recorded(), the log (when no answer frame was logged) and
@@ -82,6 +86,7 @@ private:
     TrafficLog *m_log = nullptr;
     QString m_link;
     quint16 m_logLink = 0;
+    JournalEndpoints m_endpoints; // of the open link's connection, for a log attached later
     QList<RecordListener *> m_listeners;
     std::atomic<int> m_recordedReceivers{0};
     QTimer m_batchTimer;

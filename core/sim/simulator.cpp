@@ -193,6 +193,7 @@ void Simulator::setTrafficLog(TrafficLog *log)
 {
     m_trafficLog = log;
     m_trafficLinks.clear();
+    m_trafficPeers.clear();
 }
 
 QList<Simulator::Slot *> Simulator::slotsOf(const SimEndpoint *endpoint)
@@ -592,6 +593,17 @@ quint64 Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, Q
         // Skipped bytes are not a request: no id, no outcome.
         id = traffic == TrafficVerdict::Garbage ? 0 : ++m_lastTrafficId;
         const quint16 link = trafficLink(endpoint);
+        // Which client this request came from, when it is another than the last one's: the
+        // journal's endpoints note (journalendpoints.h). A serial line's URL names its port.
+        if (id != 0 && !endpoint->url().isSerial()) {
+            QString &last = m_trafficPeers[link];
+            if (last != peer) {
+                last = peer;
+                const LinkUrl &bound = endpoint->boundUrl();
+                const QString host = bound.host.contains(QLatin1Char(':')) ? QLatin1Char('[') + bound.host + QLatin1Char(']') : bound.host;
+                m_trafficLog->setEndpoints(link, entry.tNs, id, JournalEndpoints{peer, host + QLatin1Char(':') + QString::number(bound.port)});
+            }
+        }
         m_trafficLog->append(entry.tNs, TrafficDirection::In, link, traffic, id, request);
         // A request left unanswered: what its client saw, in the engine's way (an empty record).
         if (id != 0 && response.isEmpty())

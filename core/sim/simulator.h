@@ -163,6 +163,7 @@ private:
     FaultHook m_faultHook;
     TrafficLog *m_trafficLog = nullptr;
     QHash<const SimEndpoint *, quint16> m_trafficLinks;
+    QHash<quint16, QString> m_trafficPeers; // by link: the client of its last request
     quint64 m_lastTrafficId = 0;
 };
 

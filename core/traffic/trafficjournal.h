@@ -60,7 +60,10 @@ namespace mbscope {
 //   still says what it was recording: a JSON object (trafficmetadata.h: the command, target,
 //   profile, requests, version, host, start time). A reader keeps the first one.
 //   Note (version 2): a JSON object about the transaction with the record's id on the record's
-//   link, e.g. the simulator's fault rules that shaped an answer: {"faults": ["slow", ...]}.
+//   link, e.g. the simulator's fault rules that shaped an answer: {"faults": ["slow", ...]}, or
+//   the ends of the connection the link's frames go over from here on (journalendpoints.h):
+//   {"endpoints": {"client": "127.0.0.1:40312", "server": "127.0.0.1:502"}}. A reader skips
+//   the notes it does not know, so new kinds of note keep the format's version.
 //   End (version 3): no bytes, tNs when the writer closed the journal; alone in the last batch,
 //   written by close(). A version 3 journal without it was not closed by its writer (killed,
 //   crashed, a write failed, or still being written): the reader says so (Ending::NotClosed),

@@ -1,5 +1,7 @@
 #include "trafficlog.h"
 
+#include "transport/monotonicclock.h"
+
 #include <algorithm>
 #include <cstring>
 
@@ -60,6 +62,8 @@ bool TrafficLog::openJournal(const QString &path, const TrafficJournalWriter::Op
     m_rotationError.clear();
     for (qsizetype i = 0; i < m_links.size(); ++i)
         m_journal.addLink(quint16(i), m_links.at(i));
+    for (auto it = m_endpoints.cbegin(); it != m_endpoints.cend(); ++it)
+        m_journal.addNote(it.key(), 0, monotonicNowNs(), it.value());
     return true;
 }
 
@@ -95,6 +99,13 @@ quint16 TrafficLog::addLink(const QString &name)
     const auto id = quint16(m_links.size() - 1);
     m_journal.addLink(id, name);
     return id;
+}
+
+void TrafficLog::setEndpoints(quint16 link, qint64 tNs, quint64 transactionId, const JournalEndpoints &endpoints)
+{
+    QByteArray &json = m_endpoints[link];
+    json = endpoints.toJson();
+    m_journal.addNote(link, transactionId, tNs, json);
 }
 
 QString TrafficLog::linkName(quint16 link) const

@@ -1,7 +1,10 @@
 #pragma once
 
 #include "exchange/trafficentry.h"
+#include "journalendpoints.h"
 #include "trafficjournal.h"
+
+#include <QtCore/QHash>
 
 #include <QtCore/QList>
 #include <QtCore/QString>
@@ -71,6 +74,11 @@ public:
         m_journal.addNote(link, transactionId, tNs, json);
     }
 
+    // The endpoints of a link's connection from now on (journalendpoints.h), as a note in the
+    // journal; kept, and written again at the start of every journal opened later (a recording
+    // started while connected, the next part of a rotating journal), as link names are.
+    void setEndpoints(quint16 link, qint64 tNs, quint64 transactionId, const JournalEndpoints &endpoints);
+
     // Logs one frame; returns its sequence number.
     quint64 append(qint64 tNs, TrafficDirection direction, quint16 link, TrafficVerdict verdict,
                    quint64 transactionId, QByteArrayView bytes);
@@ -119,6 +127,7 @@ private:
     quint64 m_next = 0;
     quint64 m_retainedBytes = 0;
     QStringList m_links;
+    QHash<quint16, QByteArray> m_endpoints; // the last endpoints note of each link
     TrafficJournalWriter m_journal;
     TrafficJournalWriter::Options m_journalOptions;
     qint64 m_rotateBytes = 0;

@@ -1,5 +1,8 @@
 #include "networklink.h"
 
+#include <QtNetwork/QAbstractSocket>
+#include <QtNetwork/QHostAddress>
+
 namespace mbscope {
 
 NetworkLink::NetworkLink(const LinkUrl &url, QObject *parent)
@@ -18,6 +21,8 @@ void NetworkLink::open()
     if (state() != State::Closed)
         return;
     setState(State::Opening);
+    m_localEndpoint.clear();
+    m_peerEndpoint.clear();
     QMetaObject::invokeMethod(this, [this] {
         if (state() == State::Opening)
             startOpen();
@@ -30,6 +35,25 @@ void NetworkLink::close()
         return;
     teardown();
     setClosed(QStringLiteral("closed on request"));
+}
+
+namespace {
+
+QString endpointText(const QHostAddress &address, quint16 port)
+{
+    bool v4 = false;
+    const quint32 ipv4 = address.toIPv4Address(&v4); // an IPv4-mapped IPv6 address as IPv4
+    if (v4)
+        return QStringLiteral("%1:%2").arg(QHostAddress(ipv4).toString()).arg(port);
+    return QStringLiteral("[%1]:%2").arg(address.toString()).arg(port);
+}
+
+} // namespace
+
+void NetworkLink::noteEndpoints(const QAbstractSocket &socket)
+{
+    m_localEndpoint = endpointText(socket.localAddress(), socket.localPort());
+    m_peerEndpoint = endpointText(socket.peerAddress(), socket.peerPort());
 }
 
 } // namespace mbscope

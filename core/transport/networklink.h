@@ -4,6 +4,8 @@
 
 #include <QtCore/QTimer>
 
+class QAbstractSocket;
+
 namespace mbscope {
 
 // What TcpLink (and TlsLink) and UdpLink share: opening goes on after open() returns (so that
@@ -15,6 +17,12 @@ class NetworkLink : public Link
 public:
     void open() final;
     void close() final;
+
+    // The two ends of the connection as its socket had them once connected ("127.0.0.1:40312",
+    // "[::1]:502"): kept until the next open, so that a journal can say which connection its
+    // frames went over (trafficjournal.h, the endpoints note).
+    [[nodiscard]] const QString &localEndpoint() const { return m_localEndpoint; }
+    [[nodiscard]] const QString &peerEndpoint() const { return m_peerEndpoint; }
 
 protected:
     explicit NetworkLink(const LinkUrl &url, QObject *parent = nullptr);
@@ -28,9 +36,13 @@ protected:
 
     void startConnectTimer() { m_connectTimer.start(url().connectTimeoutMs); }
     void stopConnectTimer() { m_connectTimer.stop(); }
+    // Once the socket is connected, before opened().
+    void noteEndpoints(const QAbstractSocket &socket);
 
 private:
     QTimer m_connectTimer;
+    QString m_localEndpoint;
+    QString m_peerEndpoint;
 };
 
 } // namespace mbscope

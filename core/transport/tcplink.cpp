@@ -69,6 +69,7 @@ void TcpLink::startOpen()
     m_marks.clear();
     connect(m_socket, &QAbstractSocket::connected, this, [this] {
         m_socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+        noteEndpoints(*m_socket);
         onTcpConnected();
     });
     connect(m_socket, &QIODevice::readyRead, this, &TcpLink::onReadyRead);

@@ -24,6 +24,7 @@ void UdpLink::startOpen()
     m_socket = new QUdpSocket(this);
     connect(m_socket, &QAbstractSocket::connected, this, [this] {
         stopConnectTimer();
+        noteEndpoints(*m_socket);
         setState(State::Open);
         Q_EMIT opened();
     });

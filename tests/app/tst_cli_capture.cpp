@@ -8,6 +8,7 @@
 #include "capture/capturefilewriter.h"
 #include "capture/exchangepcapexporter.h"
 #include "capture/packetsynthesizer.h"
+#include "traffic/journalendpoints.h"
 #include "traffic/trafficjournal.h"
 #include "protocol/adubuilder.h"
 
@@ -144,6 +145,10 @@ private slots:
     void lostPacket();
     void otherPort_data();
     void otherPort();
+    void simulatedCrcErrors();
+    void journalWithoutEndpoints();
+    void serialJournalExported();
+    void recordedEndpoints();
 
 private:
     QTemporaryDir m_dir;
@@ -319,6 +324,8 @@ void TestCliCapture::exportJournal()
         QString error;
         QVERIFY2(writer.open(journal, {}, true, &error), qPrintable(error));
         writer.addLink(0, u"tcp://192.168.1.20:502");
+        // The connection's ends as the engine notes them when its link opens (issue 26 item 9).
+        writer.addNote(0, 0, 999 * kMs, JournalEndpoints{QStringLiteral("192.168.1.5:40312"), QStringLiteral("192.168.1.20:502")}.toJson());
         quint64 sequence = 0;
         const auto add = [&](qint64 t, quint64 id, TrafficDirection d, TrafficVerdict v, const QByteArray &bytes) {
             writer.addFrame(TrafficEntry{sequence++, t, id, 0, d, v, bytes});
@@ -334,12 +341,24 @@ void TestCliCapture::exportJournal()
     QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
     const QList<QByteArray> rows = readFile(csv).trimmed().split('\n');
     QCOMPARE(rows.size(), 3);
-    QVERIFY2(rows.at(1).contains(",3000.000,10.0.0.1:49152,192.168.1.20:502,tcp,1,0x03,Read Holding Registers,100,2,10 500,ok,"),
+    QVERIFY2(rows.at(1).contains(",3000.000,192.168.1.5:40312,192.168.1.20:502,tcp,1,0x03,Read Holding Registers,100,2,10 500,ok,"),
              rows.at(1).constData());
     QVERIFY2(rows.at(2).contains(",timeout,"), rows.at(2).constData());
     const CliResult analysed = runMbscope({QStringLiteral("analyze"), journal, QStringLiteral("--json")});
     QCOMPARE(analysed.json().value(QStringLiteral("source")).toObject().value(QStringLiteral("format")).toString(), QStringLiteral("journal"));
     QCOMPARE(analysed.json().value(QStringLiteral("timeouts")).toInt(), 1);
+    const QJsonObject conversation = analysed.json().value(QStringLiteral("conversations")).toArray().at(0).toObject();
+    QCOMPARE(conversation.value(QStringLiteral("client")).toString(), QStringLiteral("192.168.1.5:40312"));
+    QCOMPARE(conversation.value(QStringLiteral("server")).toString(), QStringLiteral("192.168.1.20:502"));
+    // The capture has the connection's own addresses and ports, not stand-ins.
+    const QString pcap = m_dir.filePath(QStringLiteral("journal.pcapng"));
+    const CliResult exported = runMbscope({QStringLiteral("export"), journal, QStringLiteral("--pcap"), pcap});
+    QVERIFY2(exported.finished && exported.exitCode == 0, exported.describe().constData());
+    QVERIFY2(!exported.outText().contains(QStringLiteral("stands for it")), exported.describe().constData());
+    const CliResult again = runMbscope({QStringLiteral("analyze"), pcap, QStringLiteral("--json")});
+    const QJsonObject captured = again.json().value(QStringLiteral("conversations")).toArray().at(0).toObject();
+    QCOMPARE(captured.value(QStringLiteral("client")).toString(), QStringLiteral("192.168.1.5:40312"));
+    QCOMPARE(captured.value(QStringLiteral("server")).toString(), QStringLiteral("192.168.1.20:502"));
 
     // A session document stands for the journal its "capture" names (beside it).
     const QString session = m_dir.filePath(QStringLiteral("poll.mbscope.json"));
@@ -544,6 +563,160 @@ void TestCliCapture::otherPort()
         QVERIFY2(r.out.isEmpty(), r.describe().constData());
     else
         QVERIFY2(r.outText().contains(analysed), r.describe().constData());
+}
+
+// Issue 26 item 6: a journal written by `simulate --record` holds the answers as the simulator
+// sent them, its fault rule's wrong CRC included; analyze judges them as the poll that got them
+// did (CRC errors), not as the simulator's "sent" (ok).
+void TestCliCapture::simulatedCrcErrors()
+{
+    const QString faults = m_dir.filePath(QStringLiteral("crc-faults.json"));
+    QFile file(faults);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write(R"({"seed": 1, "rules": [{"name": "crc", "kind": "wrongChecksum", "probability": 1.0}]})");
+    file.close();
+    const QString journal = m_dir.filePath(QStringLiteral("crc-served.mbscope.journal"));
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                        QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--faults"), faults, QStringLiteral("--record"), journal},
+                       &error),
+             qPrintable(error));
+    const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), sim.url(), QStringLiteral("--unit"), QStringLiteral("1"),
+                                       QStringLiteral("--function"), QStringLiteral("3"), QStringLiteral("--address"), QStringLiteral("0x79"),
+                                       QStringLiteral("--quantity"), QStringLiteral("2"), QStringLiteral("--count"), QStringLiteral("3"),
+                                       QStringLiteral("--interval"), QStringLiteral("0"), QStringLiteral("--json")});
+    QVERIFY2(poll.finished, poll.describe().constData());
+    QCOMPARE(poll.json().value(QStringLiteral("crc_errors")).toInt(), 3);
+    sim.stop();
+
+    const CliResult a = runMbscope({QStringLiteral("analyze"), journal, QStringLiteral("--json")});
+    QVERIFY2(a.finished, a.describe().constData());
+    const QJsonObject o = a.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), 3);
+    QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 0);
+    QCOMPARE(o.value(QStringLiteral("crc_errors")).toInt(), 3);
+    const CliResult text = runMbscope({QStringLiteral("analyze"), journal});
+    QVERIFY2(!text.outText().contains(QStringLiteral("3 ok")), text.describe().constData());
+}
+
+// A journal of a TCP link written before journals held endpoints: its client is not known, and
+// is said so (analyze: null; export: empty; the capture says which address stands for it).
+void TestCliCapture::journalWithoutEndpoints()
+{
+    const QString journal = m_dir.filePath(QStringLiteral("old.mbscope.journal"));
+    {
+        TrafficJournalWriter writer;
+        QString error;
+        QVERIFY2(writer.open(journal, {}, true, &error), qPrintable(error));
+        writer.addLink(0, u"tcp://plc.example:1502");
+        writer.addFrame(TrafficEntry{0, 1000 * kMs, 1, 0, TrafficDirection::Out, TrafficVerdict::Sent, mbap(1, "0300640002")});
+        writer.addFrame(TrafficEntry{1, 1003 * kMs, 1, 0, TrafficDirection::In, TrafficVerdict::Ok, mbap(1, "0304000a01f4")});
+        writer.close();
+    }
+    const CliResult analysed = runMbscope({QStringLiteral("analyze"), journal, QStringLiteral("--json")});
+    QVERIFY2(analysed.finished && analysed.exitCode == 0, analysed.describe().constData());
+    const QJsonObject conversation = analysed.json().value(QStringLiteral("conversations")).toArray().at(0).toObject();
+    QVERIFY2(conversation.value(QStringLiteral("client")).isNull(), analysed.describe().constData());
+    QCOMPARE(conversation.value(QStringLiteral("server")).toString(), QStringLiteral("plc.example:1502"));
+    const CliResult text = runMbscope({QStringLiteral("analyze"), journal});
+    QVERIFY2(text.outText().contains(QStringLiteral("tcp (client not recorded) -> plc.example:1502 (Modbus TCP)")), text.describe().constData());
+    QVERIFY2(!text.outText().contains(QStringLiteral("10.0.0.")), text.describe().constData());
+    const QString pcap = m_dir.filePath(QStringLiteral("old.pcapng"));
+    const CliResult exported = runMbscope({QStringLiteral("export"), journal, QStringLiteral("--pcap"), pcap, QStringLiteral("--csv"), QStringLiteral("-")});
+    QVERIFY2(exported.finished && exported.exitCode == 0, exported.describe().constData());
+    QVERIFY2(exported.outText().contains(QStringLiteral(",3000.000,,plc.example:1502,tcp,")), exported.describe().constData());
+    QVERIFY2(exported.errText().contains(QStringLiteral("plc.example:1502: the journal does not say the client's address: 10.0.0.1:49152 stands for it")),
+             exported.describe().constData());
+    QVERIFY2(exported.errText().contains(QStringLiteral("plc.example:1502: the journal does not say the server's address: 10.0.0.2:1502 stands for it")),
+             exported.describe().constData());
+}
+
+// A journal of a serial line (RTU on /dev/ttyUSB0): no invented addresses; the pcapng names the
+// port and tshark decodes its frames as Modbus RTU with the option export prints.
+void TestCliCapture::serialJournalExported()
+{
+    const QString journal = m_dir.filePath(QStringLiteral("serial.mbscope.journal"));
+    {
+        TrafficJournalWriter writer;
+        QString error;
+        QVERIFY2(writer.open(journal, {}, true, &error), qPrintable(error));
+        writer.addLink(0, u"rtu:///dev/ttyUSB0?baud=19200");
+        writer.addFrame(TrafficEntry{0, 1000 * kMs, 1, 0, TrafficDirection::Out, TrafficVerdict::Sent, AduBuilder::rtu(QByteArray::fromHex("0300640002"), 1)});
+        writer.addFrame(TrafficEntry{1, 1010 * kMs, 1, 0, TrafficDirection::In, TrafficVerdict::Ok, AduBuilder::rtu(QByteArray::fromHex("0304000a01f4"), 1)});
+        writer.close();
+    }
+    const CliResult analysed = runMbscope({QStringLiteral("analyze"), journal, QStringLiteral("--json")});
+    QVERIFY2(analysed.finished && analysed.exitCode == 0, analysed.describe().constData());
+    const QJsonObject conversation = analysed.json().value(QStringLiteral("conversations")).toArray().at(0).toObject();
+    QVERIFY2(conversation.value(QStringLiteral("client")).isNull(), analysed.describe().constData());
+    QCOMPARE(conversation.value(QStringLiteral("server")).toString(), QStringLiteral("/dev/ttyUSB0"));
+    QCOMPARE(conversation.value(QStringLiteral("transport")).toString(), QStringLiteral("serial"));
+    const CliResult text = runMbscope({QStringLiteral("analyze"), journal});
+    QVERIFY2(text.outText().contains(QStringLiteral("serial /dev/ttyUSB0 (Modbus RTU): 1 transactions, 1 ok")), text.describe().constData());
+
+    const QString pcap = m_dir.filePath(QStringLiteral("serial.pcapng"));
+    const CliResult exported = runMbscope({QStringLiteral("export"), journal, QStringLiteral("--pcap"), pcap, QStringLiteral("--csv"), QStringLiteral("-")});
+    QVERIFY2(exported.finished && exported.exitCode == 0, exported.describe().constData());
+    QVERIFY2(exported.outText().contains(QStringLiteral(",10000.000,,/dev/ttyUSB0,rtu,1,0x03,")), exported.describe().constData());
+    QVERIFY2(!exported.outText().contains(QStringLiteral("10.0.0.")), exported.describe().constData());
+    QVERIFY2(exported.errText().contains(QStringLiteral("serial port /dev/ttyUSB0 (Modbus RTU): -d rtacser.data,mbrtu")), exported.describe().constData());
+    if (QStandardPaths::findExecutable(QStringLiteral("tshark")).isEmpty())
+        QSKIP("tshark is not installed: the capture was written, not decoded");
+    QProcess tshark;
+    tshark.start(QStringLiteral("tshark"), {QStringLiteral("-r"), pcap, QStringLiteral("-d"), QStringLiteral("rtacser.data,mbrtu"), QStringLiteral("-T"),
+                                            QStringLiteral("fields"), QStringLiteral("-E"), QStringLiteral("separator=|"), QStringLiteral("-e"),
+                                            QStringLiteral("frame.interface_name"), QStringLiteral("-e"), QStringLiteral("mbrtu.unit_id"),
+                                            QStringLiteral("-e"), QStringLiteral("modbus.func_code"), QStringLiteral("-e"),
+                                            QStringLiteral("modbus.regval_uint16")});
+    QVERIFY(tshark.waitForFinished(120000));
+    QCOMPARE(QString::fromUtf8(tshark.readAllStandardOutput()).trimmed().split(QLatin1Char('\n')),
+             (QStringList{QStringLiteral("/dev/ttyUSB0|1|3|"), QStringLiteral("/dev/ttyUSB0|1|3|10,500")}));
+}
+
+// Both ends record one connection: poll's journal (the engine's socket) and simulate's (its
+// client) name the same two endpoints, the real ones, in analyze and in the exported capture.
+void TestCliCapture::recordedEndpoints()
+{
+    const QString served = m_dir.filePath(QStringLiteral("ends-served.mbscope.journal"));
+    const QString polled = m_dir.filePath(QStringLiteral("ends-polled.mbscope.journal"));
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--record"), served},
+                       &error),
+             qPrintable(error));
+    const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), sim.url(), QStringLiteral("--unit"), QStringLiteral("1"),
+                                       QStringLiteral("--function"), QStringLiteral("3"), QStringLiteral("--address"), QStringLiteral("0x79"),
+                                       QStringLiteral("--quantity"), QStringLiteral("2"), QStringLiteral("--count"), QStringLiteral("2"),
+                                       QStringLiteral("--interval"), QStringLiteral("0"), QStringLiteral("--record"), polled});
+    QVERIFY2(poll.finished && poll.exitCode == 0, poll.describe().constData());
+    sim.stop();
+    const QString server = sim.url().section(QStringLiteral("://"), 1);
+    QString client;
+    for (const QString &journal : {polled, served}) {
+        const CliResult a = runMbscope({QStringLiteral("analyze"), journal, QStringLiteral("--json")});
+        QVERIFY2(a.finished && a.exitCode == 0, a.describe().constData());
+        const QJsonArray conversations = a.json().value(QStringLiteral("conversations")).toArray();
+        QCOMPARE(conversations.size(), 1);
+        const QJsonObject c = conversations.at(0).toObject();
+        QCOMPARE(c.value(QStringLiteral("server")).toString(), server);
+        QVERIFY2(c.value(QStringLiteral("client")).toString().startsWith(QStringLiteral("127.0.0.1:")), a.describe().constData());
+        QVERIFY(c.value(QStringLiteral("client")).toString() != QStringLiteral("127.0.0.1:0"));
+        if (client.isEmpty())
+            client = c.value(QStringLiteral("client")).toString();
+        QCOMPARE(c.value(QStringLiteral("client")).toString(), client); // both ends saw the same connection
+        QCOMPARE(c.value(QStringLiteral("transactions")).toInt(), 2);
+        const QString pcap = journal + QStringLiteral(".pcapng");
+        const CliResult exported = runMbscope({QStringLiteral("export"), journal, QStringLiteral("--pcap"), pcap});
+        QVERIFY2(exported.finished && exported.exitCode == 0 && !exported.outText().contains(QStringLiteral("stands for it")),
+                 exported.describe().constData());
+        const CliResult again = runMbscope({QStringLiteral("analyze"), pcap, QStringLiteral("--port"), server.section(QLatin1Char(':'), 1),
+                                            QStringLiteral("--json")});
+        const QJsonObject captured = again.json().value(QStringLiteral("conversations")).toArray().at(0).toObject();
+        QCOMPARE(captured.value(QStringLiteral("client")).toString(), client);
+        QCOMPARE(captured.value(QStringLiteral("server")).toString(), server);
+    }
 }
 
 QTEST_GUILESS_MAIN(TestCliCapture)

@@ -264,7 +264,8 @@ void TestCliRecord::simulateRecords()
     QCOMPARE(o.value(QStringLiteral("exceptions")).toInt(), 1);
     const QJsonObject source = o.value(QStringLiteral("source")).toObject();
     QCOMPARE(source.value(QStringLiteral("frames")).toInt(), 4);
-    QCOMPARE(source.value(QStringLiteral("notes")).toInt(), 1); // the delayed answer
+    // The delayed answer's fault rule, and each client's endpoints (two reads: two connections).
+    QCOMPARE(source.value(QStringLiteral("notes")).toInt(), 3);
     const QJsonObject metadata = source.value(QStringLiteral("metadata")).toObject();
     QCOMPARE(metadata.value(QStringLiteral("command")).toString(), QStringLiteral("simulate"));
     QCOMPARE(metadata.value(QStringLiteral("role")).toString(), QStringLiteral("server"));
@@ -274,8 +275,10 @@ void TestCliRecord::simulateRecords()
     QList<QByteArray> notes;
     const TrafficJournalRecovery r = TrafficJournalReader::read(journal, {}, [&](const TrafficJournalNote &n) { notes.append(n.json.toByteArray()); });
     QVERIFY2(r.isClean(), qPrintable(r.message));
-    QCOMPARE(notes.size(), 1);
-    QVERIFY2(notes.constFirst().contains(R"("faults":["slow"])"), notes.constFirst().constData());
+    QCOMPARE(notes.size(), 3);
+    QVERIFY2(notes.at(0).startsWith(R"({"endpoints":{"client":"127.0.0.1:)"), notes.at(0).constData());
+    QVERIFY2(notes.at(1).contains(R"("faults":["slow"])"), notes.at(1).constData());
+    QVERIFY2(notes.at(2).startsWith(R"({"endpoints":{"client":"127.0.0.1:)") && notes.at(2) != notes.at(0), notes.at(2).constData());
 }
 
 void TestCliRecord::exchangeCommandsRecord()

@@ -128,6 +128,7 @@ void TestCaptureTshark::writtenCaptureDecodedByTshark_data()
     QTest::addColumn<std::vector<CaptureExchange>>("exchanges");
     QTest::addColumn<QString>("file");
     QTest::addColumn<QStringList>("expected"); // func|reference|word count|register values|exception|data, per Modbus packet
+    QTest::addColumn<QString>("serialPort"); // a serial line's conversation (a journal of an rtu:// link)
 
     const Framing tcp = Framing::Tcp;
     const std::vector<CaptureExchange> mbapExchanges{
@@ -147,15 +148,24 @@ void TestCaptureTshark::writtenCaptureDecodedByTshark_data()
         QStringLiteral("3|10000|1|||"),      QStringLiteral("3||||2|"), // tshark's func_code is the 7-bit code
         QStringLiteral("6|5||||1234"),       QStringLiteral("6|5||||1234"),
     };
-    QTest::newRow("modbus tcp, pcapng") << mbapExchanges << QStringLiteral("x.pcapng") << mbapExpected;
-    QTest::newRow("modbus tcp, classic pcap") << mbapExchanges << QStringLiteral("x.pcap") << mbapExpected;
+    QTest::newRow("modbus tcp, pcapng") << mbapExchanges << QStringLiteral("x.pcapng") << mbapExpected << QString();
+    QTest::newRow("modbus tcp, classic pcap") << mbapExchanges << QStringLiteral("x.pcap") << mbapExpected << QString();
 
     const Framing r = Framing::Rtu;
     QTest::newRow("rtu over tcp on port 4001, with the option mbscope prints")
         << std::vector{exchange(r, rtu(1, "0300790003"), kStart, rtu(1, "0306000100020003"), kStart + 40 * kMs),
                        exchange(r, rtu(1, "0400000001"), kStart + 100 * kMs, rtu(1, "8402"), kStart + 130 * kMs)}
         << QStringLiteral("x.pcapng")
-        << QStringList{QStringLiteral("3|121|3|||"), QStringLiteral("3|||1,2,3||"), QStringLiteral("4|0|1|||"), QStringLiteral("4||||2|")};
+        << QStringList{QStringLiteral("3|121|3|||"), QStringLiteral("3|||1,2,3||"), QStringLiteral("4|0|1|||"), QStringLiteral("4||||2|")}
+        << QString();
+    // Issue 26 item 9: a serial line's RTU on an interface named after its port (RTAC serial link
+    // type, tshark -d rtacser.data,mbrtu), and in a pcap file as RTU over TCP on 4001.
+    const std::vector serial{exchange(r, rtu(1, "0300790003"), kStart, rtu(1, "0306000100020003"), kStart + 40 * kMs),
+                             exchange(r, rtu(1, "0400000001"), kStart + 100 * kMs, rtu(1, "8402"), kStart + 130 * kMs)};
+    const QStringList serialExpected{QStringLiteral("3|121|3|||"), QStringLiteral("3|||1,2,3||"), QStringLiteral("4|0|1|||"),
+                                     QStringLiteral("4||||2|")};
+    QTest::newRow("rtu on a serial port, pcapng") << serial << QStringLiteral("x.pcapng") << serialExpected << QStringLiteral("/dev/ttyUSB0");
+    QTest::newRow("rtu on a serial port, classic pcap") << serial << QStringLiteral("x.pcap") << serialExpected << QStringLiteral("/dev/ttyUSB0");
 }
 
 void TestCaptureTshark::writtenCaptureDecodedByTshark()
@@ -163,6 +173,7 @@ void TestCaptureTshark::writtenCaptureDecodedByTshark()
     QFETCH(std::vector<CaptureExchange>, exchanges);
     QFETCH(QString, file);
     QFETCH(QStringList, expected);
+    QFETCH(QString, serialPort);
     QString why;
     if (!tsharkAvailable(&why))
         QSKIP(qPrintable(why));
@@ -173,10 +184,32 @@ void TestCaptureTshark::writtenCaptureDecodedByTshark()
     QString error;
     QVERIFY2(writer.open(path, CaptureFileWriter::formatFor(path), &error), qPrintable(error));
     ExchangePcapExporter exporter(writer);
+    if (!serialPort.isEmpty()) {
+        CaptureConversation line;
+        line.framing = Framing::Rtu;
+        line.serialPort = serialPort;
+        line.clientKnown = line.serverKnown = false;
+        line.client.bytes = {10, 0, 0, 1};
+        line.server.bytes = {10, 0, 0, 2};
+        line.clientPort = 49152;
+        line.serverPort = 4001;
+        exporter.addConversation(line);
+    }
     for (const CaptureExchange &e : exchanges)
         exporter.add(e);
     exporter.finish();
     QVERIFY2(writer.close(&error), qPrintable(error));
+    if (!serialPort.isEmpty() && file.endsWith(QLatin1String(".pcapng"))) {
+        // The port names the interface its frames are on, and nothing else is in the file.
+        QStringList names;
+        QVERIFY2(tsharkFields({QStringLiteral("-r"), path, QStringLiteral("-T"), QStringLiteral("fields"), QStringLiteral("-e"),
+                               QStringLiteral("frame.interface_name"), QStringLiteral("-e"), QStringLiteral("frame.interface_description"),
+                               QStringLiteral("-E"), QStringLiteral("separator=|")},
+                              &names, &error),
+                 qPrintable(error));
+        QCOMPARE(names, QStringList(4, QStringLiteral("/dev/ttyUSB0|Modbus RTU on serial port /dev/ttyUSB0")));
+        QCOMPARE(exporter.decodeOptions(), QStringList{QStringLiteral("serial port /dev/ttyUSB0 (Modbus RTU): -d rtacser.data,mbrtu")});
+    }
 
     QStringList arguments{QStringLiteral("-r"), path};
     // The option mbscope export prints for each port tshark does not know.
