@@ -83,7 +83,7 @@ CaptureFileReader::Result CaptureFileReader::read(CaptureByteSource &source, con
         result.error = QStringLiteral("not a capture file: it starts with %1, where a pcap file starts with "
                                       "d4 c3 b2 a1 (or a1 b2 c3 d4, 4d 3c b2 a1, a1 b2 3c 4d) and a pcapng file "
                                       "with 0a 0d 0d 0a")
-                           .arg(QString::fromLatin1(first.toByteArray().toHex(' ')));
+                           .arg(QString::fromLatin1(first.toByteArray().toHex(' ').toUpper()));
         break;
     }
     result.fileBytes = std::max(result.fileBytes, source.offset() + source.remaining());
