@@ -399,6 +399,9 @@ void TestCliMonitor::nothingHeardHasItsOwnStatus()
     QVERIFY2(quiet.finished && quiet.exitCode == 3, quiet.describe().constData());
     QVERIFY2(quiet.errText().contains(QStringLiteral("mbscope monitor: nothing was heard: not one byte came from %1 in ").arg(url)),
              quiet.describe().constData());
+    // Its connection, which the kernel accepted, is taken off the queue: the next is the next run's.
+    QVERIFY(server.waitForNewConnection(10000));
+    delete server.nextPendingConnection();
 
     const auto run = [&](const QList<QByteArray> &frames) {
         Monitor monitor;

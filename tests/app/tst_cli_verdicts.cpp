@@ -13,6 +13,7 @@
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
+#include <QtCore/QProcess>
 #include <QtCore/QRegularExpression>
 #include <QtCore/QSet>
 #include <QtCore/QTemporaryDir>
@@ -58,6 +59,7 @@ private slots:
     void outputsCheckedBeforeTheFirstRequest();
     void jsonErrorObject_data();
     void jsonErrorObject();
+    void largeInputSmallOutput();
     void everyExitStatus_data();
     void everyExitStatus();
     void manPageListsEveryExitStatus();
@@ -359,6 +361,34 @@ void TestCliVerdicts::jsonErrorObject()
 }
 
 
+// Issue 26 item 10: decode of 1 MB of input wrote 11 MB: the frame's trailing bytes were shown
+// whole in the VALUE column, and every row with a problem was padded to that width. The table
+// cuts a long value as it cuts the BYTES column; --json keeps every byte.
+void TestCliVerdicts::largeInputSmallOutput()
+{
+    const QString input = m_dir.filePath(QStringLiteral("large.hex"));
+    QByteArray text;
+    while (text.size() < 1024 * 1024)
+        text += "01 03 00 79 00 16 15 DD ";
+    QFile f(input);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text);
+    f.close();
+    QProcess decode;
+    decode.setStandardInputFile(input);
+    decode.start(mbscopePath(), {QStringLiteral("decode")});
+    QVERIFY(decode.waitForFinished(120000));
+    const QByteArray out = decode.readAllStandardOutput();
+    QCOMPARE(decode.exitCode(), 1); // far beyond the largest frame
+    QVERIFY2(out.contains("Frame too long"), out.left(4000).constData());
+    QVERIFY2(out.size() < 16 * 1024, qPrintable(QStringLiteral("%1 bytes of output for %2 of input:\n%3")
+                                                     .arg(out.size())
+                                                     .arg(text.size())
+                                                     .arg(QString::fromUtf8(out.left(3000)))));
+    for (const QByteArray &line : out.split('\n'))
+        QVERIFY2(line.size() < 400, line.left(400).constData());
+}
+
 bool TestCliVerdicts::prepareExitStatusFiles(QString *error)
 {
     if (m_prepared)
@@ -387,7 +417,9 @@ bool TestCliVerdicts::prepareExitStatusFiles(QString *error)
     if (!run({QStringLiteral("read"), QStringLiteral("--target"), m_target, QStringLiteral("--address"), QStringLiteral("0x79"),
               QStringLiteral("--quantity"), QStringLiteral("2"), QStringLiteral("--record"), good},
              0)
-        || !run({QStringLiteral("read"), QStringLiteral("--target"), m_target, QStringLiteral("--unit"), QStringLiteral("9"),
+        // unit 9 is silent, then unit 1 answers: the timeout is inside the journal, not cut by its end.
+        || !run({QStringLiteral("poll"), QStringLiteral("--target"), m_target, QStringLiteral("--count"), QStringLiteral("1"),
+                 QStringLiteral("--hex"), QStringLiteral("09 03 00 79 00 01 54 9B"), QStringLiteral("--hex"), QStringLiteral("01 03 00 79 00 01 55 D3"),
                  QStringLiteral("--record"), m_dir.filePath(QStringLiteral("silent.mbscope.journal"))},
                 1)
         || !run({QStringLiteral("write"), QStringLiteral("--target"), m_target, QStringLiteral("--unit"), QStringLiteral("3"),
