@@ -198,7 +198,8 @@ int runScan(const QStringList &arguments)
     const QCommandLineOption unitsOpt(QStringLiteral("units"), QStringLiteral("Unit ids to ask (default 1-247)."),
                                       QStringLiteral("FIRST-LAST"));
     const QCommandLineOption allIdsOpt(QStringLiteral("all-ids"),
-                                       QStringLiteral("Ask 0-255 (tcp, tls and udp only: unit 0 is a broadcast on serial framings)."));
+                                       QStringLiteral("Ask 0-255: the unit addresses 1-247, and 0 and 248-255, which only an MBAP server or gateway may "
+                                                      "answer (tcp, tls and udp only: unit 0 is a broadcast on serial framings)."));
     const QCommandLineOption functionOpt(QStringLiteral("function"), QStringLiteral("The read asked: 1, 2, 3 (default) or 4."),
                                          QStringLiteral("FC"));
     const QCommandLineOption addressOpt(QStringLiteral("address"), QStringLiteral("Its address (default 0)."), QStringLiteral("ADDR"));
