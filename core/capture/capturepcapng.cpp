@@ -116,7 +116,7 @@ void CaptureFileReader::readPcapng(CaptureByteSource &source, const Sink &sink, 
             } else if (magic == 0x4d3c2b1a) {
                 order.bigEndian = true;
             } else {
-                fail(at + 8, QStringLiteral("the section header's byte-order magic is %1, not 1a2b3c4d in either byte order: "
+                fail(at + 8, QStringLiteral("the section header's byte-order magic is %1, not 1A2B3C4D in either byte order: "
                                             "the section is damaged")
                                  .arg(hexNumber(magic, 8)));
                 return;

@@ -220,7 +220,7 @@ void TestCliCapture::damaged_data()
                                      << QStringLiteral("at byte 552: the block of type 0x00000006 is cut short: it says 100 bytes, the file has 30")
                                      << QStringLiteral("1 transactions, 1 ok");
     QTest::newRow("not a capture") << QStringLiteral("notes.txt") << QByteArray("hello, this is text\n") << 2
-                                   << QStringLiteral("not a capture file: it starts with 68 65 6c 6c") << QString();
+                                   << QStringLiteral("not a capture file: it starts with 68 65 6C 6C") << QString();
     QTest::newRow("empty") << QStringLiteral("empty.pcap") << QByteArray() << 2 << QStringLiteral("the file is empty: not a capture")
                            << QString();
 }

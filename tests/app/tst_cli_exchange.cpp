@@ -359,9 +359,9 @@ void TestCliExchange::usageErrors_data()
     row("format f33", sl({"read", "--target", "TARGET", "--format", "f33"}), "mbscope read: --format: ");
     // Issue 26 item 10: a value wider than the registers read printed a blank column, exit 0.
     row("f32 of 1 register", sl({"read", "--target", "TARGET", "--quantity", "1", "--format", "f32"}),
-        "mbscope read: --format f32 needs 2 registers for one value, but --quantity 1 reads only 1: give --quantity 2 or more");
+        "mbscope read: --format f32-abcd needs 2 registers for one value, but --quantity 1 reads only 1: give --quantity 2 or more");
     row("u16,f64 of 3 registers", sl({"read", "--target", "TARGET", "--quantity", "3", "--format", "u16,f64"}),
-        "--format f64 needs 4 registers for one value, but --quantity 3 reads only 3");
+        "--format f64-abcdefgh needs 4 registers for one value, but --quantity 3 reads only 3");
     row("poll f32 of 1 register", sl({"poll", "--target", "TARGET", "--quantity", "1", "--format", "f32-cdab", "--count", "1"}),
         "mbscope poll: --format f32-cdab needs 2 registers for one value");
     row("format on coils", sl({"read", "--target", "TARGET", "--function", "1", "--format", "u16"}),

@@ -472,7 +472,7 @@ QList<ExitRow> exitRows()
     row("read", 0, "answered", QStringList{QStringLiteral("read"), QStringLiteral("--target"), T} + settings);
     row("read", 1, "no answer", QStringList{QStringLiteral("read"), QStringLiteral("--target"), T} + silent, "timeout");
     row("read", 2, "f32 of one register", {QStringLiteral("read"), QStringLiteral("--target"), T, QStringLiteral("--format"), QStringLiteral("f32")},
-        "--format f32 needs 2 registers for one value, but --quantity 1 reads only 1");
+        "--format f32-abcd needs 2 registers for one value, but --quantity 1 reads only 1");
     row("read", 2, "refused", QStringList{QStringLiteral("read"), QStringLiteral("--target"), C}, "connection refused");
     const QStringList write{QStringLiteral("write"), QStringLiteral("--target"), T, QStringLiteral("--address"), QStringLiteral("0x87"),
                             QStringLiteral("--registers"), QStringLiteral("7"), QStringLiteral("--single")};
@@ -489,7 +489,7 @@ QList<ExitRow> exitRows()
     row("sweep", 0, "every answer", sweep);
     row("sweep", 1, "no answer", sweep + silent);
     row("sweep", 2, "refused", QStringList{QStringLiteral("sweep"), QStringLiteral("--target"), C, QStringLiteral("--count"), QStringLiteral("2"),
-                                            QStringLiteral("--intervals"), QStringLiteral("0,5ms")}, "connection refused");
+                                            QStringLiteral("--intervals"), QStringLiteral("0,5ms")} + settings, "connection refused");
     row("monitor", 2, "not a bus", {QStringLiteral("monitor"), QStringLiteral("tcp://127.0.0.1:502")}, "not a bus another master drives");
     row("watch", 0, "every poll answered", {QStringLiteral("watch"), D + QStringLiteral("good.mbscope.json"), QStringLiteral("--count"), QStringLiteral("2")});
     row("watch", 1, "no answer", {QStringLiteral("watch"), D + QStringLiteral("silent.mbscope.json"), QStringLiteral("--count"), QStringLiteral("1")});
