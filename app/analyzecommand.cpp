@@ -3,6 +3,7 @@
 #include "captureinput.h"
 #include "cli.h"
 #include "exchangeplots.h"
+#include "outputpath.h"
 #include "plotfile.h"
 
 #include "capture/captureanalysis.h"
@@ -45,7 +46,8 @@ int runAnalyze(const QStringList &arguments)
                                            QStringLiteral("file"));
     const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the statistics as JSON (poll --json's shape, "
                                                                             "with \"source\", \"conversations\" and \"functions\")."));
-    parser.addOptions({histogramOpt, timeSeriesOpt, jsonOpt});
+    const QCommandLineOption forceOpt = OutputPath::forceOption();
+    parser.addOptions({histogramOpt, timeSeriesOpt, jsonOpt, forceOpt});
     parser.addPositionalArgument(QStringLiteral("capture"), QStringLiteral("A .pcap, .pcapng or traffic journal file, or a session document with a capture."));
     if (!parser.parse(arguments)) {
         err << "mbscope analyze: " << parser.errorText() << '\n';
@@ -73,6 +75,13 @@ int runAnalyze(const QStringList &arguments)
         const QString problem = PlotFile::formatProblem(parser.value(plot));
         if (!problem.isEmpty()) {
             err << "mbscope analyze: --" << plot.names().constFirst() << ' ' << problem << '\n';
+            return ExitUsage;
+        }
+        // The file is written once the capture is read: said now if it cannot be.
+        const QString option = QStringLiteral("--") + plot.names().constFirst();
+        const QString unwritable = OutputPath::problem(option, parser.value(plot), option + QStringLiteral(" latency.svg"), parser.isSet(forceOpt));
+        if (!unwritable.isEmpty()) {
+            err << "mbscope analyze: " << unwritable << '\n';
             return ExitUsage;
         }
     }

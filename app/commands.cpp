@@ -60,7 +60,7 @@ void printUsage(QTextStream &out)
         << "  --no-simulator   start without the built-in simulator\n"
         << "  --screenshot FILE [--size WxH] [--screenshot-before-send] [--screenshot-poll COUNT]\n"
         << "                   render the window to a PNG and quit\n"
-        << "\nRun 'mbscope SUBCOMMAND --help' for a subcommand's options.\n";
+        << "\nRun 'mbscope SUBCOMMAND --help' for a subcommand's options, 'mbscope --help-all' for every one's.\n";
 }
 
 } // namespace
@@ -92,7 +92,17 @@ int runHeadless(const QStringList &arguments)
         out << "mbscope " << MBSCOPE_VERSION << '\n';
         return ExitOk;
     }
-    if (first.isEmpty() || first == QLatin1String("--help") || first == QLatin1String("--help-all") || first == QLatin1String("-h") || first == QLatin1String("help")) {
+    if (first == QLatin1String("--help-all")) {
+        // The usage, then each subcommand's own --help under a heading.
+        printUsage(out);
+        for (const Subcommand &s : kSubcommands) {
+            out << "\n== mbscope " << s.name << " ==\n";
+            out.flush();
+            s.run({QString::fromLatin1(s.name), QStringLiteral("--help")});
+        }
+        return ExitOk;
+    }
+    if (first.isEmpty() || first == QLatin1String("--help") || first == QLatin1String("-h") || first == QLatin1String("help")) {
         printUsage(out);
         return first.isEmpty() && !hasGui() ? ExitUsage : ExitOk;
     }

@@ -3,6 +3,7 @@
 #include "captureinput.h"
 #include "cli.h"
 #include "exchangeplots.h"
+#include "outputpath.h"
 #include "plotfile.h"
 
 #include "capture/captureanalysis.h"
@@ -33,7 +34,8 @@ int runExport(const QStringList &arguments)
         "port, for which the tshark option to decode them is printed; a journal's serial line goes, in pcapng, on an "
         "interface named after the port (decoded by tshark -d rtacser.data,mbrtu);\n"
         "  --histogram, --timeseries: the latency histogram and latency over time as PNG, SVG or PDF.\n"
-        "Use - as the file to write CSV or JSON lines to standard output.\n"
+        "Use - as the file to write CSV or JSON lines to standard output. A file that exists is refused unless --force "
+        "is given (the policy of every command's output files).\n"
         "Example: mbscope export bench.mbscope.journal --csv bench.csv --pcap bench.pcapng\n"
         "Without --port and --rtu-port, a capture with no traffic on port 502 is searched for Modbus on any port, as "
         "analyze does.\n"
@@ -52,7 +54,8 @@ int runExport(const QStringList &arguments)
                                           QStringLiteral("file"));
     const QCommandLineOption timeSeriesOpt(QStringLiteral("timeseries"), QStringLiteral("Draw latency over time: .png, .svg or .pdf."),
                                            QStringLiteral("file"));
-    parser.addOptions({csvOpt, jsonlOpt, pcapOpt, histogramOpt, timeSeriesOpt});
+    const QCommandLineOption forceOpt = OutputPath::forceOption();
+    parser.addOptions({csvOpt, jsonlOpt, pcapOpt, histogramOpt, timeSeriesOpt, forceOpt});
     parser.addPositionalArgument(QStringLiteral("source"), QStringLiteral("A .pcap, .pcapng or traffic journal file, or a session document with a capture."));
     if (!parser.parse(arguments)) {
         err << "mbscope export: " << parser.errorText() << '\n';
@@ -102,6 +105,18 @@ int runExport(const QStringList &arguments)
         const QString problem = parser.isSet(plot) ? PlotFile::formatProblem(parser.value(plot)) : QString();
         if (!problem.isEmpty()) {
             err << "mbscope export: --" << plot.names().constFirst() << ' ' << problem << '\n';
+            return ExitUsage;
+        }
+    }
+    // Every output under one policy (OutputPath): an existing file is refused unless --force, a
+    // new one must be creatable, all said before the source is read.
+    for (const QCommandLineOption &o : outputs) {
+        if (!parser.isSet(o))
+            continue;
+        const QString option = QStringLiteral("--") + o.names().constFirst();
+        const QString problem = OutputPath::problem(option, parser.value(o), option + QStringLiteral(" FILE"), parser.isSet(forceOpt));
+        if (!problem.isEmpty()) {
+            err << "mbscope export: " << problem << '\n';
             return ExitUsage;
         }
     }

@@ -57,7 +57,7 @@ int runMonitor(const QStringList &arguments)
         "Example: mbscope monitor \"rtu:///dev/ttyUSB0?baud=9600&parity=N\" --duration 60s --record bus.mbscope.journal\n"
         "A live line is shown on a terminal; Ctrl-C stops and prints the statistics.\n"
         "Exit status: 0 every exchange ok, 1 some failed or damaged frames were seen, 2 usage or link error (the "
-        "port cannot be opened, or was lost)."));
+        "port cannot be opened, or was lost), 3 nothing was heard (not one byte)."));
     parser.addHelpOption();
     const QCommandLineOption countOpt(QStringLiteral("count"), QStringLiteral("Stop after N transactions."), QStringLiteral("N"));
     const QCommandLineOption durationOpt(QStringLiteral("duration"),
@@ -226,7 +226,12 @@ int runMonitor(const QStringList &arguments)
         err << "mbscope monitor: " << linkMessage << '\n';
         return ExitLinkError;
     }
-    return MonitorReport::exitStatus(monitor);
+    const int status = MonitorReport::exitStatus(monitor);
+    if (status == ExitNothingHeard)
+        err << "mbscope monitor: nothing was heard: not one byte came from " << url.toString() << " in "
+            << QString::number(double(elapsedNs) / 1e9, 'f', 1)
+            << " s (an idle bus, or a wrong port, baud rate or wiring); exit status 3\n";
+    return status;
 }
 
 } // namespace mbscope::app

@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "transactionreport.h"
 
+#include "protocol/hexnumber.h"
 #include "capture/captureexchange.h"
 #include "monitor/busmonitor.h"
 #include "protocol/functioncode.h"
@@ -56,7 +57,7 @@ QString MonitorReport::exchangeLine(const CaptureExchange &exchange)
     QString line = QStringLiteral("%1  unit %2  %3 %4  %5")
                        .arg(t.id, 5)
                        .arg(keys.unit, -3)
-                       .arg(QStringLiteral("0x%1").arg(function, 2, 16, QLatin1Char('0')),
+                       .arg(QStringLiteral("0x%1").arg(hexNumber(function, 2)),
                             QString::fromLatin1(functionName(function)).leftJustified(30),
                             (unmatched ? QStringLiteral("unmatched") : transactionStatusName(t.status)).leftJustified(11));
     if (!unmatched && t.latencyNs() >= 0)
@@ -119,6 +120,8 @@ QJsonObject MonitorReport::json(const BusMonitor &monitor, qint64 elapsedNs, Mon
 int MonitorReport::exitStatus(const BusMonitor &monitor)
 {
     const BusCounters &bus = monitor.bus();
+    if (monitor.bytesSeen() == 0)
+        return ExitNothingHeard;
     if (monitor.statistics().failed() > 0 || monitor.unmatchedResponses() > 0 || bus.crcErrors > 0 || bus.truncated > 0
         || bus.malformed > 0 || bus.skippedBytes > 0)
         return ExitFailure;

@@ -28,7 +28,7 @@ public:
     // "skipped_bytes", "skipped_runs", "unmatched_responses", "late_responses", "silence_us"},
     // "problems", "problem_count".
     [[nodiscard]] static QJsonObject json(const BusMonitor &monitor, qint64 elapsedNs, MonitorStop stop);
-    // 0 every exchange ok and no damaged frame, 1 otherwise (2, a lost link, is the caller's).
+    // 0 every exchange ok and no damaged frame, 1 otherwise, 3 not one byte heard (2, a lost link, is the caller's).
     [[nodiscard]] static int exitStatus(const BusMonitor &monitor);
 };
 

@@ -143,6 +143,10 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
     }
     out.engine.pipelineDepth = int(pipeline.value);
 
+    // --record and --force first: --force is the policy for --histogram and --csv too.
+    if (!m_record.read(parser, m_command, out.record, err, parser.isSet(m_histogram) || (!m_sweep && parser.isSet(m_csv))))
+        return false;
+    const bool force = out.record.overwrite;
     if (parser.isSet(m_histogram)) {
         if (!HistogramPlot::isAvailable()) {
             err << prefix << "--histogram: " << HistogramPlot::unavailableReason() << '\n';
@@ -150,7 +154,7 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
         }
         const QString path = parser.value(m_histogram);
         // Said now, not after a 60 s poll: the name, the folder and the format the name says.
-        const QString problem = OutputPath::plotProblem(QStringLiteral("--histogram"), path);
+        const QString problem = OutputPath::plotProblem(QStringLiteral("--histogram"), path, force);
         if (!problem.isEmpty()) {
             err << prefix << problem << '\n';
             return false;
@@ -175,16 +179,13 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
     }
     if (!m_sweep && parser.isSet(m_csv)) {
         const QString path = parser.value(m_csv);
-        const QString problem = OutputPath::problem(QStringLiteral("--csv"), path, QStringLiteral("--csv poll.csv"));
+        const QString problem = OutputPath::problem(QStringLiteral("--csv"), path, QStringLiteral("--csv poll.csv"), force);
         if (!problem.isEmpty()) {
             err << prefix << problem << '\n';
             return false;
         }
         out.csvPath = path;
     }
-    if (!m_record.read(parser, m_command, out.record, err))
-        return false;
-
     if (!m_requests.read(parser, m_command, out.target, out.plan, err))
         return false;
     for (const PlannedRequest &r : out.plan.requests)

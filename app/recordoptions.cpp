@@ -20,8 +20,7 @@ RecordOptions::RecordOptions()
                               "this command, its target and requests (analyze, export and replay read it); removed at the end when "
                               "no frame crossed the link."),
                QStringLiteral("FILE"))
-    , m_force(QStringLiteral("force"), QStringLiteral("Let --record replace an existing file (a journal is evidence: kept "
-                                                      "unless this is given)."))
+    , m_force(OutputPath::forceOption())
 {
 }
 
@@ -30,30 +29,22 @@ void RecordOptions::addTo(QCommandLineParser &parser) const
     parser.addOptions({m_record, m_force});
 }
 
-bool RecordOptions::read(const QCommandLineParser &parser, const QString &command, RecordSettings &out, QTextStream &err) const
+bool RecordOptions::read(const QCommandLineParser &parser, const QString &command, RecordSettings &out, QTextStream &err,
+                         bool otherOutputs) const
 {
     const QString prefix = QStringLiteral("mbscope %1: ").arg(command);
     out.overwrite = parser.isSet(m_force);
     if (!parser.isSet(m_record)) {
-        if (out.overwrite) {
-            err << prefix << "--force applies to --record FILE: there is no journal to replace\n";
+        if (out.overwrite && !otherOutputs) {
+            err << prefix << "--force replaces output files that exist, but no output file is given (--record FILE...)\n";
             return false;
         }
         return true;
     }
     const QString path = parser.value(m_record);
-    const QFileInfo file(path);
     // Said now, not after a 60 s poll.
-    if (path.isEmpty() || file.isDir()) {
-        err << prefix << "--record '" << path << "' is not a file name: expected e.g. --record poll.mbscope.journal\n";
-        return false;
-    }
-    if (file.exists() && !out.overwrite) {
-        err << prefix << "--record: " << QDir::toNativeSeparators(file.absoluteFilePath())
-            << " exists: a journal is never overwritten (give another name, or --force to replace it)\n";
-        return false;
-    }
-    const QString problem = OutputPath::problem(QStringLiteral("--record"), path, QStringLiteral("--record poll.mbscope.journal"));
+    const QString problem = OutputPath::problem(QStringLiteral("--record"), path, QStringLiteral("--record poll.mbscope.journal"),
+                                                out.overwrite, QStringLiteral("a journal"));
     if (!problem.isEmpty()) {
         err << prefix << problem << '\n';
         return false;

@@ -28,17 +28,19 @@ struct RecordSettings {
 
 // The options every command that talks to a device or serves one shares:
 //   --record FILE  journal every frame to FILE (a traffic journal with the command's metadata)
-//   --force        let --record replace an existing file
+//   --force        let --record (and the command's other output files) replace an existing file
 class RecordOptions
 {
 public:
     RecordOptions();
 
     void addTo(QCommandLineParser &parser) const;
-    // Checks what can be checked before the command runs (the file exists without --force, the
-    // folder is missing); on error writes "mbscope COMMAND: ..." to err and returns false.
-    [[nodiscard]] bool read(const QCommandLineParser &parser, const QString &command, RecordSettings &out,
-                            QTextStream &err) const;
+    // Checks what can be checked before the command runs (OutputPath's policy: the file exists
+    // without --force, the folder is missing, the file cannot be created); on error writes
+    // "mbscope COMMAND: ..." to err and returns false. otherOutputs: the command writes other files
+    // that --force applies to (poll's --csv), so --force without --record is no mistake.
+    [[nodiscard]] bool read(const QCommandLineParser &parser, const QString &command, RecordSettings &out, QTextStream &err,
+                            bool otherOutputs = false) const;
 
 private:
     QCommandLineOption m_record;

@@ -345,6 +345,17 @@ bool RequestOptions::readRead(const QCommandLineParser &parser, const TargetSett
 
     const int a = int(address.value);
     const int q = int(quantity.value);
+    // A format wider than the registers read would print a blank column: said instead.
+    for (const RegisterFormat &f : std::as_const(out.formats)) {
+        if (registers && q >= 1 && f.registerCount() > q) {
+            error = QStringLiteral("--format %1 needs %2 registers for one value, but --quantity %3 reads only %3: give "
+                                   "--quantity %2 or more")
+                        .arg(f.name())
+                        .arg(f.registerCount())
+                        .arg(q);
+            return false;
+        }
+    }
     BuildResult pdu;
     switch (function.value) {
     case 1: pdu = RequestBuilder::readCoils(a, q); break;

@@ -96,9 +96,10 @@ int runRun(const QStringList &arguments)
         return ExitUsage;
     }
     const QString path = positional.constFirst();
+    const bool force = parser.isSet(QStringLiteral("force"));
     if (parser.isSet(junit)) {
         // Said before the first step, not after a run of minutes.
-        const QString problem = OutputPath::problem(QStringLiteral("--junit"), parser.value(junit), QStringLiteral("--junit results.xml"));
+        const QString problem = OutputPath::problem(QStringLiteral("--junit"), parser.value(junit), QStringLiteral("--junit results.xml"), force);
         if (!problem.isEmpty()) {
             err << "mbscope run: " << problem << '\n';
             return ExitUsage;
@@ -110,8 +111,8 @@ int runRun(const QStringList &arguments)
             err << "mbscope run: --record FILE and --record-capture exclude each other: record into a file, or into the session's capture\n";
             return ExitUsage;
         }
-        record.overwrite = parser.isSet(QStringLiteral("force"));
-    } else if (!recordOptions.read(parser, QStringLiteral("run"), record, err)) {
+        record.overwrite = force;
+    } else if (!recordOptions.read(parser, QStringLiteral("run"), record, err, parser.isSet(junit))) {
         return ExitUsage;
     }
     const SessionLoadResult loaded = SessionReader::load(path);
@@ -151,6 +152,12 @@ int runRun(const QStringList &arguments)
         if (QFileInfo::exists(record.path) && !record.overwrite) {
             err << "mbscope run: --record-capture: the session's capture " << record.path
                 << " exists: a journal is never overwritten (--force replaces it, --record FILE records elsewhere)\n";
+            return ExitUsage;
+        }
+        const QString problem = OutputPath::problem(QStringLiteral("--record-capture"), record.path, QStringLiteral("--record-capture"),
+                                                    record.overwrite, QStringLiteral("a journal"));
+        if (!problem.isEmpty()) {
+            err << "mbscope run: " << problem << '\n';
             return ExitUsage;
         }
     }

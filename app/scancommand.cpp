@@ -2,6 +2,7 @@
 
 #include "cli.h"
 #include "interruptwatcher.h"
+#include "outputpath.h"
 #include "progressline.h"
 #include "scanoptions.h"
 #include "scanline.h"
@@ -39,14 +40,15 @@ bool writeFile(const QString &path, const QByteArray &bytes, const char *what, Q
     return true;
 }
 
-// Options whose file must be writable before the first request: a scan may take minutes.
-bool checkWritable(const QString &path, QTextStream &err)
+// Options whose file must be writable before the first request: a scan may take minutes
+// (OutputPath's policy: an existing file only with --force).
+bool checkWritable(const QString &option, const QString &path, bool force, QTextStream &err)
 {
     if (path.isEmpty())
         return true;
-    const QFileInfo info(path);
-    if (!info.absoluteDir().exists()) {
-        err << "mbscope scan: " << path << ": the folder " << info.absolutePath() << " does not exist\n";
+    const QString problem = OutputPath::problem(option, path, option + QStringLiteral(" FILE"), force);
+    if (!problem.isEmpty()) {
+        err << "mbscope scan: " << problem << '\n';
         return false;
     }
     return true;
@@ -196,7 +198,8 @@ int runScan(const QStringList &arguments)
     const QCommandLineOption unitsOpt(QStringLiteral("units"), QStringLiteral("Unit ids to ask (default 1-247)."),
                                       QStringLiteral("FIRST-LAST"));
     const QCommandLineOption allIdsOpt(QStringLiteral("all-ids"),
-                                       QStringLiteral("Ask 0-255 (tcp, tls and udp only: unit 0 is a broadcast on serial framings)."));
+                                       QStringLiteral("Ask 0-255: the unit addresses 1-247, and 0 and 248-255, which only an MBAP server or gateway may "
+                                                      "answer (tcp, tls and udp only: unit 0 is a broadcast on serial framings)."));
     const QCommandLineOption functionOpt(QStringLiteral("function"), QStringLiteral("The read asked: 1, 2, 3 (default) or 4."),
                                          QStringLiteral("FC"));
     const QCommandLineOption addressOpt(QStringLiteral("address"), QStringLiteral("Its address (default 0)."), QStringLiteral("ADDR"));
@@ -249,9 +252,10 @@ int runScan(const QStringList &arguments)
     const QCommandLineOption clientsOpt(QStringLiteral("clients"), QStringLiteral("--timing: most TCP clients tried (default 16)."),
                                         QStringLiteral("N"));
     parser.addOptions({lineOpt, baudsOpt, paritiesOpt, stopBitsOpt, firstOpt, timingOpt, clientsOpt});
+    const QCommandLineOption forceOpt = OutputPath::forceOption();
     parser.addOptions({targetOpt, unitsOpt, allIdsOpt, functionOpt, addressOpt, quantityOpt, timeoutOpt, gapOpt, maxTimeOpt,
                        allOpt, jsonOpt, watchesOpt, mapOpt, addressesOpt, tablesOpt, noOptionalOpt, profileOutOpt,
-                       maxRequestsOpt, stepOpt});
+                       maxRequestsOpt, stepOpt, forceOpt});
     if (!parser.parse(arguments)) {
         err << "mbscope scan: " << parser.errorText() << '\n';
         return ExitUsage;
@@ -280,7 +284,7 @@ int runScan(const QStringList &arguments)
     common.all = parser.isSet(allOpt);
     common.watchesPath = parser.value(watchesOpt);
     const ScanOptionReader read{parser, err};
-    if (!read.durationMs(maxTimeOpt, 1, 24LL * 3600 * 1000, &common.maxTimeMs) || !checkWritable(common.watchesPath, err))
+    if (!read.durationMs(maxTimeOpt, 1, 24LL * 3600 * 1000, &common.maxTimeMs) || !checkWritable(QStringLiteral("--watches"), common.watchesPath, parser.isSet(forceOpt), err))
         return ExitUsage;
     const bool map = parser.isSet(mapOpt);
     qint64 timeoutMs = map ? 500 : (common.url.responseTimeoutMs > 0 ? common.url.responseTimeoutMs : 200);
@@ -384,7 +388,7 @@ int runScan(const QStringList &arguments)
             || !read.integers(tablesOpt, 1, 4, &tables) || !read.integer(maxRequestsOpt, 1, 10'000'000, &maxRequests) || !read.integer(stepOpt, 1, 2000, &step))
             return ExitUsage;
         const QString profilePath = parser.value(profileOutOpt);
-        if (!checkWritable(profilePath, err))
+        if (!checkWritable(QStringLiteral("--profile-out"), profilePath, parser.isSet(forceOpt), err))
             return ExitUsage;
         settings.unit = quint8(unit);
         settings.functions.clear();

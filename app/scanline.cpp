@@ -5,6 +5,8 @@
 #include "progressline.h"
 #include "scanreport.h"
 
+#include "protocol/hexnumber.h"
+
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
@@ -20,7 +22,7 @@ QString text(const LineScanSettings &settings, const QList<LineTrial> &trials, S
 {
     QString t = QStringLiteral("LINE %1  read %2 at %3, quantity %4\n")
                     .arg(settings.url.serial.device)
-                    .arg(settings.function, 2, 16, QLatin1Char('0'))
+                    .arg(hexNumber(settings.function, 2))
                     .arg(settings.address)
                     .arg(settings.quantity);
     t += QStringLiteral("%1  %2  %3\n").arg(QStringLiteral("SETTING"), -14).arg(QStringLiteral("UNITS"), -9).arg(QStringLiteral("RESULT"));

@@ -15,6 +15,51 @@ QString hex2(int v)
     return QStringLiteral("%1").arg(v, 2, 16, QLatin1Char('0')).toUpper();
 }
 
+// The ids of first-last that are no unit address: the unit addresses are 1-247; 0 is the
+// broadcast and 248-255 are reserved (Serial Line V1.02, 2.2). An MBAP server or gateway may
+// still answer them (--all-ids asks them on tcp, tls and udp only).
+QStringList outsideUnitAddresses(int first, int last)
+{
+    QStringList outside;
+    if (first == 0)
+        outside.append(QStringLiteral("0"));
+    const int from = qMax(first, 248);
+    if (last >= from)
+        outside.append(from == last ? QString::number(from) : QStringLiteral("%1-%2").arg(from).arg(last));
+    return outside;
+}
+
+// "0-255: 247 unit addresses (1-247) and 9 ids outside them (0, 248-255)", or "1-247".
+QString unitRangeText(int first, int last)
+{
+    const QString range = QStringLiteral("%1-%2").arg(first).arg(last);
+    const QStringList outside = outsideUnitAddresses(first, last);
+    if (outside.isEmpty())
+        return range;
+    const int inside = qMax(0, qMin(last, 247) - qMax(first, 1) + 1);
+    const int others = (last - first + 1) - inside;
+    return QStringLiteral("%1: %2 unit %3 (1-247) and %4 %5 outside them (%6: no unit address on a serial line; an MBAP "
+                          "server or gateway may answer)")
+        .arg(range)
+        .arg(inside)
+        .arg(inside == 1 ? QStringLiteral("address") : QStringLiteral("addresses"))
+        .arg(others)
+        .arg(others == 1 ? QStringLiteral("id") : QStringLiteral("ids"))
+        .arg(outside.join(QStringLiteral(", ")));
+}
+
+// The ids outside the unit addresses that answered: an MBAP server answers 0 and 255 for itself,
+// so they are no devices of their own.
+QList<int> answeredOutside(const QList<UnitProbe> &probes)
+{
+    QList<int> ids;
+    for (const UnitProbe &p : probes) {
+        if (p.isPresent() && (p.unit < 1 || p.unit > 247))
+            ids.append(p.unit);
+    }
+    return ids;
+}
+
 QString endText(ScanEnd end)
 {
     switch (end) {
@@ -94,10 +139,8 @@ QString ScanReport::unitsText(const UnitScanSettings &settings, const QList<Unit
                               const ScanProgress &progress, ScanEnd end, bool all)
 {
     QString text;
-    text += QStringLiteral("SCAN %1  units %2-%3  function %4 address %5 quantity %6  timeout %7 ms  gap %8 ms\n")
-                .arg(settings.url.toString())
-                .arg(settings.firstUnit)
-                .arg(settings.lastUnit)
+    text += QStringLiteral("SCAN %1  units %2  function %3 address %4 quantity %5  timeout %6 ms  gap %7 ms\n")
+                .arg(settings.url.toString(), unitRangeText(settings.firstUnit, settings.lastUnit))
                 .arg(hex2(settings.function))
                 .arg(settings.address)
                 .arg(settings.quantity)
@@ -155,13 +198,21 @@ QString ScanReport::unitsText(const UnitScanSettings &settings, const QList<Unit
     QStringList parts;
     for (auto it = counts.cbegin(); it != counts.cend(); ++it)
         parts.append(QStringLiteral("%1 %2").arg(it.value()).arg(QString::fromLatin1(unitProbeKindName(it.key()))));
-    text += QStringLiteral("\n%1 of %2 ids asked in %3: %4\nfound %5 device(s); %6\n")
+    const QList<int> outside = answeredOutside(probes);
+    QString found = QStringLiteral("found %1 device(s)").arg(progress.found - int(outside.size()));
+    if (!outside.isEmpty()) {
+        QStringList ids;
+        for (int id : outside)
+            ids.append(QString::number(id));
+        found += QStringLiteral(" at unit addresses 1-247; %1 %2 answered too, outside them (an MBAP server or gateway answering "
+                                "for itself, no device of its own)")
+                     .arg(outside.size() == 1 ? QStringLiteral("id") : QStringLiteral("ids"), ids.join(QStringLiteral(", ")));
+    }
+    text += QStringLiteral("\n%1 of %2 ids asked in %3: %4\n%5; %6\n")
                 .arg(progress.done)
                 .arg(progress.total)
                 .arg(durationText(progress.elapsedMs))
-                .arg(parts.join(QStringLiteral(", ")))
-                .arg(progress.found)
-                .arg(endText(end));
+                .arg(parts.join(QStringLiteral(", ")), found, endText(end));
     return text;
 }
 
@@ -190,13 +241,20 @@ QJsonObject ScanReport::unitsJson(const UnitScanSettings &settings, const QList<
         {QStringLiteral("target"), settings.url.toString()},
         {QStringLiteral("first_unit"), settings.firstUnit},
         {QStringLiteral("last_unit"), settings.lastUnit},
+        {QStringLiteral("outside_unit_addresses"), QJsonArray::fromStringList(outsideUnitAddresses(settings.firstUnit, settings.lastUnit))},
         {QStringLiteral("function"), int(settings.function)},
         {QStringLiteral("address"), int(settings.address)},
         {QStringLiteral("quantity"), int(settings.quantity)},
         {QStringLiteral("timeout_ms"), settings.timeoutMs},
         {QStringLiteral("gap_ms"), settings.gapMs},
         {QStringLiteral("asked"), progress.done},
-        {QStringLiteral("found"), progress.found},
+        {QStringLiteral("found"), progress.found - int(answeredOutside(probes).size())}, // at unit addresses 1-247
+        {QStringLiteral("answered_outside_unit_addresses"), [&] {
+             QJsonArray ids;
+             for (int id : answeredOutside(probes))
+                 ids.append(id);
+             return ids;
+         }()},
         {QStringLiteral("elapsed_ms"), double(progress.elapsedMs)},
         {QStringLiteral("end"), QString::fromLatin1(scanEndName(end))},
         {QStringLiteral("units"), units},

@@ -1,5 +1,6 @@
 #include "simulatesession.h"
 
+#include "protocol/hexnumber.h"
 #include "protocol/adubuilder.h"
 #include "protocol/delimitedframer.h"
 #include "protocol/functioncode.h"
@@ -217,7 +218,7 @@ QString SimulateSession::verdictText(const SimLogEntry &entry, const FaultPlan *
     case V::Exception: {
         const AduParts response = AduBuilder::parse(entry.response, framingOf(entry.endpoint));
         const quint8 code = response.pdu.size() >= 2 ? quint8(response.pdu.at(1)) : 0;
-        text = QStringLiteral("exception %1 %2").arg(code, 2, 16, QLatin1Char('0')).arg(QLatin1String(exceptionName(code)));
+        text = QStringLiteral("exception %1 %2").arg(hexNumber(code, 2)).arg(QLatin1String(exceptionName(code)));
         // Why: a device limit with its figures ("refused by minGapMs: 4.1 ms after the last
         // request taken, minGapMs is 50"), or what the unit found wrong in the request.
         if (!entry.reason.isEmpty())
@@ -271,7 +272,7 @@ void SimulateSession::printLine(const SimLogEntry &entry, const FaultPlan *plan)
         const AduParts request = AduBuilder::parse(entry.request, framingOf(entry.endpoint));
         if (!request.pdu.isEmpty()) {
             const quint8 function = quint8(request.pdu.at(0));
-            what = QStringLiteral("%1 %2").arg(function, 2, 16, QLatin1Char('0')).arg(QLatin1String(functionName(function)));
+            what = QStringLiteral("%1 %2").arg(hexNumber(function, 2)).arg(QLatin1String(functionName(function)));
         }
     }
     m_out << time << "  " << entry.endpoint << "  " << entry.peer;

@@ -51,7 +51,8 @@ bool parseWatchOptions(const QStringList &arguments, WatchOptions *options, int 
         "as they fire and clear; errors and link changes on standard error; the counters of every watch at the end.\n"
         "Example: mbscope watch bench.mbscope.json --csv logs --duration 1min\n"
         "Ctrl-C or SIGTERM stops cleanly: the CSV files are flushed and the counters printed.\n"
-        "Exit status: 0 every poll answered, 1 some polls failed, 2 usage error or a session that cannot be read."));
+        "Exit status: 0 every poll answered, 1 some polls failed (or CSV rows were lost), 2 usage error or a session "
+        "that cannot be read, 3 every poll answered but the --mqtt broker was never reached (nothing published)."));
     parser.addHelpOption();
     const QCommandLineOption csvOpt(QStringLiteral("csv"),
                                     QStringLiteral("Log values to CSV files in DIR, one per watch (replaces the session's "
@@ -327,6 +328,9 @@ int runWatch(const QStringList &arguments)
     loop.exec();
 
     service.stop();
+    const QString unpublished = service.mqttNeverReached();
+    if (!unpublished.isEmpty())
+        service.log().error(unpublished);
     if (options.json) {
         QJsonArray counters;
         for (const WatchCounters &c : runner.allCounters())
@@ -346,7 +350,9 @@ int runWatch(const QStringList &arguments)
             out << "CSV: " << csvFiles.join(QLatin1String(", ")) << '\n';
     }
     out.flush();
-    return failed || csvFailed ? ExitFailure : ExitOk;
+    if (failed || csvFailed)
+        return ExitFailure;
+    return unpublished.isEmpty() ? ExitOk : ExitNotPublished;
 }
 
 } // namespace mbscope::app

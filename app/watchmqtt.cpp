@@ -22,6 +22,7 @@ WatchMqtt::WatchMqtt(WatchRunner &runner, ServiceLog &log, Options options, QObj
     connect(&m_runner, &WatchRunner::writeFinished, this, &WatchMqtt::onWriteFinished);
     connect(&m_client, &MqttClient::messageReceived, this, &WatchMqtt::onMessage);
     connect(&m_client, &MqttClient::connected, this, [this] {
+        m_reached = true;
         m_log.notice(QStringLiteral("MQTT: connected to %1, publishing under %2/").arg(m_options.settings.displayUrl(), m_options.prefix));
     });
     connect(&m_client, &MqttClient::connectionLost, this, [this](const QString &reason) {
@@ -48,6 +49,17 @@ bool WatchMqtt::start(QString *error)
     if (m_options.writes)
         subscriptions.append(m_options.prefix + QStringLiteral("/+/set"));
     return m_client.start(m_options.settings, statusTopic(), subscriptions, error);
+}
+
+QString WatchMqtt::neverReached() const
+{
+    if (m_reached)
+        return {};
+    const quint64 lost = m_client.dropped();
+    return QStringLiteral("MQTT: the broker at %1 was never reached: %2 %3 not published")
+        .arg(m_options.settings.displayUrl())
+        .arg(lost)
+        .arg(lost == 1 ? QStringLiteral("message") : QStringLiteral("messages"));
 }
 
 void WatchMqtt::setWatches(const SessionWatches &watches)

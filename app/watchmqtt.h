@@ -40,6 +40,10 @@ public:
     void setWatches(const SessionWatches &watches);
     void stop();
 
+    // Empty when the broker was reached during the run; else what was lost ("the broker at
+    // mqtt://... was never reached: 12 messages not published"), for watch's exit status 3.
+    [[nodiscard]] QString neverReached() const;
+
     [[nodiscard]] QString statusTopic() const { return m_options.prefix + QStringLiteral("/status"); }
     [[nodiscard]] QString topicOf(const QString &watchName) const;
 
@@ -61,6 +65,7 @@ private:
         QString point;
     };
     QHash<quint64, Pending> m_pending; // writes in flight, until the runner says how they went
+    bool m_reached = false;            // connected at least once
 };
 
 } // namespace mbscope::app

@@ -158,6 +158,11 @@ void WatchService::stop()
         m_mqtt->stop();
 }
 
+QString WatchService::mqttNeverReached() const
+{
+    return m_mqtt ? m_mqtt->neverReached() : QString();
+}
+
 QUrl WatchService::metricsUrl() const
 {
     return m_endpoint ? m_endpoint->url() : QUrl();
@@ -173,7 +178,14 @@ void WatchService::onLinkState(const WatchLinkState &state)
     case WatchLinkState::State::Up:
         if (wasDown) {
             m_downLinks.remove(state.target);
-            m_log.notice(QStringLiteral("link %1: up again (reconnect %2)").arg(state.target).arg(state.reconnects));
+            // reconnects counts opens after a loss: 0 when the link was down from the start.
+            if (state.reconnects == 0)
+                m_log.notice(QStringLiteral("link %1: up (first connection, after %2 failed %3)")
+                                 .arg(state.target)
+                                 .arg(state.failures)
+                                 .arg(state.failures == 1 ? QStringLiteral("attempt") : QStringLiteral("attempts")));
+            else
+                m_log.notice(QStringLiteral("link %1: up again (reconnect %2)").arg(state.target).arg(state.reconnects));
         } else {
             m_log.notice(QStringLiteral("link %1: up").arg(state.target));
         }

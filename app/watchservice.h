@@ -56,6 +56,8 @@ public:
     void stop();
 
     [[nodiscard]] QUrl metricsUrl() const;
+    // With --mqtt, a broker never reached during the run: what was lost (else empty).
+    [[nodiscard]] QString mqttNeverReached() const;
 
 private:
     void onLinkState(const mbscope::WatchLinkState &state);

@@ -1,5 +1,6 @@
 #include "captureanalysis.h"
 
+#include "protocol/hexnumber.h"
 #include "traffic/trafficmetadata.h"
 
 #include "exchange/responsematcher.h"
@@ -143,7 +144,7 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
     QJsonArray functions;
     for (const auto &[code, statistics] : m_byFunction) {
         QJsonObject f = statistics->toJson();
-        f.insert(QStringLiteral("function"), QStringLiteral("0x%1").arg(code, 2, 16, QLatin1Char('0')));
+        f.insert(QStringLiteral("function"), QStringLiteral("0x%1").arg(hexNumber(code, 2)));
         f.insert(QStringLiteral("name"), QString::fromLatin1(functionName(code)));
         functions.append(f);
     }
@@ -205,7 +206,7 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
         for (const auto &[code, s] : m_byFunction) {
             const LatencySamples &l = s->latency();
             const bool any = !l.isEmpty();
-            rows.append({QStringLiteral("0x%1 %2").arg(code, 2, 16, QLatin1Char('0')).arg(QString::fromLatin1(functionName(code))),
+            rows.append({QStringLiteral("0x%1 %2").arg(hexNumber(code, 2)).arg(QString::fromLatin1(functionName(code))),
                          QString::number(s->count()), QString::number(s->ok()), QString::number(s->exceptions()),
                          QString::number(s->timeouts()), QString::number(s->failed() - s->exceptions() - s->timeouts()),
                          any ? milliseconds(l.medianNs()) : QStringLiteral("-"),

@@ -81,9 +81,9 @@ CaptureFileReader::Result CaptureFileReader::read(CaptureByteSource &source, con
     case Format::Unknown:
         result.errorOffset = 0;
         result.error = QStringLiteral("not a capture file: it starts with %1, where a pcap file starts with "
-                                      "d4 c3 b2 a1 (or a1 b2 c3 d4, 4d 3c b2 a1, a1 b2 3c 4d) and a pcapng file "
-                                      "with 0a 0d 0d 0a")
-                           .arg(QString::fromLatin1(first.toByteArray().toHex(' ')));
+                                      "D4 C3 B2 A1 (or A1 B2 C3 D4, 4D 3C B2 A1, A1 B2 3C 4D) and a pcapng file "
+                                      "with 0A 0D 0D 0A")
+                           .arg(QString::fromLatin1(first.toByteArray().toHex(' ').toUpper()));
         break;
     }
     result.fileBytes = std::max(result.fileBytes, source.offset() + source.remaining());

@@ -6,6 +6,7 @@
 // obsolete (2) packet blocks. Every other block (names, statistics, secrets, custom) is skipped.
 #include "capturefilereader.h"
 
+#include "protocol/hexnumber.h"
 #include "capture/capturebytesource.h"
 
 #include <QtCore/QtEndian>
@@ -115,18 +116,18 @@ void CaptureFileReader::readPcapng(CaptureByteSource &source, const Sink &sink, 
             } else if (magic == 0x4d3c2b1a) {
                 order.bigEndian = true;
             } else {
-                fail(at + 8, QStringLiteral("the section header's byte-order magic is %1, not 1a2b3c4d in either byte order: "
+                fail(at + 8, QStringLiteral("the section header's byte-order magic is %1, not 1A2B3C4D in either byte order: "
                                             "the section is damaged")
-                                 .arg(magic, 8, 16, QLatin1Char('0')));
+                                 .arg(hexNumber(magic, 8)));
                 return;
             }
         } else if (!inSection) {
-            fail(at, QStringLiteral("a block of type 0x%1 comes before any section header block").arg(rawType, 8, 16, QLatin1Char('0')));
+            fail(at, QStringLiteral("a block of type 0x%1 comes before any section header block").arg(hexNumber(rawType, 8)));
             return;
         }
         const quint32 type = order.u32(head);
         const quint32 length = order.u32(head + 4);
-        const auto typeText = [type] { return QStringLiteral("0x%1").arg(type, 8, 16, QLatin1Char('0')); }; // errors only
+        const auto typeText = [type] { return QStringLiteral("0x%1").arg(hexNumber(type, 8)); }; // errors only
         if (length < 12 || length % 4 != 0 || length > kMaxBlockBytes) {
             fail(at, QStringLiteral("the block of type %1 says it is %2 bytes long, %3: the file is damaged")
                          .arg(typeText())

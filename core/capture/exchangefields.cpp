@@ -1,5 +1,7 @@
 #include "exchangefields.h"
 
+#include "protocol/hexnumber.h"
+
 #include <QtCore/QStringList>
 
 namespace mbscope {
@@ -139,7 +141,7 @@ ExchangeFields ExchangeFields::of(const Transaction &t, Framing framing)
         f.hasAddress = true;
         f.address = word(request, 1);
         f.quantity = 1;
-        f.values = QStringLiteral("and=0x%1 or=0x%2").arg(word(request, 3), 4, 16, QLatin1Char('0')).arg(word(request, 5), 4, 16, QLatin1Char('0'));
+        f.values = QStringLiteral("and=0x%1 or=0x%2").arg(hexNumber(word(request, 3), 4)).arg(hexNumber(word(request, 5), 4));
         return f;
     case 0x17:
         if (n < 9)

@@ -1,5 +1,6 @@
 #include "exchangepairer.h"
 
+#include "protocol/hexnumber.h"
 #include "exchange/responsematcher.h"
 #include "protocol/dissector.h"
 #include "protocol/functioncode.h"
@@ -90,7 +91,7 @@ void ExchangePairer::addRequest(const CapturedFrame &frame)
         }
         problem(QStringLiteral("packet %1: malformed request %2: %3")
                     .arg(frame.packet)
-                    .arg(QString::fromLatin1(frame.bytes.left(24).toHex(' ')), first));
+                    .arg(QString::fromLatin1(frame.bytes.left(24).toHex(' ').toUpper()), first));
     }
 
     const quint64 index = m_firstSlot + m_slots.size();
@@ -161,8 +162,8 @@ void ExchangePairer::addResponse(const CapturedFrame &frame)
             else if (!ResponseMatcher::answersFunction(asked.functionCode, keys.functionCode))
                 mismatch = QStringLiteral("transaction id %1 answered with function 0x%2, but the request was 0x%3")
                                .arg(keys.transactionId)
-                               .arg(keys.functionCode, 2, 16, QLatin1Char('0'))
-                               .arg(asked.functionCode, 2, 16, QLatin1Char('0'));
+                               .arg(hexNumber(keys.functionCode, 2))
+                               .arg(hexNumber(asked.functionCode, 2));
             answer(index, frame, mismatch.isEmpty(), mismatch);
             return;
         }
@@ -199,7 +200,7 @@ void ExchangePairer::addResponse(const CapturedFrame &frame)
     }
     unmatched(frame, QStringLiteral("no request to unit %1 with function 0x%2 is waiting")
                          .arg(keys.unit)
-                         .arg(keys.functionCode & 0x7f, 2, 16, QLatin1Char('0')));
+                         .arg(hexNumber(keys.functionCode & 0x7f, 2)));
 }
 
 void ExchangePairer::answer(quint64 slotIndex, const CapturedFrame &frame, bool keysMatch, const QString &mismatch)
@@ -251,7 +252,7 @@ void ExchangePairer::unmatched(const CapturedFrame &frame, const QString &why)
     ++m_counters.unmatchedResponses;
     problem(QStringLiteral("packet %1: an answer that matches no request (%2): %3")
                 .arg(frame.packet)
-                .arg(why, QString::fromLatin1(frame.bytes.left(24).toHex(' '))));
+                .arg(why, QString::fromLatin1(frame.bytes.left(24).toHex(' ').toUpper())));
     Slot &s = m_slots.emplace_back();
     s.exchange.kind = CaptureExchange::Kind::UnmatchedResponse;
     s.exchange.conversation = frame.conversation;

@@ -1,5 +1,6 @@
 #include "exchangerow.h"
 
+#include "protocol/hexnumber.h"
 #include "capture/exchangefields.h"
 #include "protocol/functioncode.h"
 
@@ -12,7 +13,7 @@ namespace {
 
 QString hex2(quint8 v)
 {
-    return QStringLiteral("0x%1").arg(v, 2, 16, QLatin1Char('0'));
+    return QStringLiteral("0x%1").arg(hexNumber(v, 2));
 }
 
 bool isUnmatched(const CaptureExchange &e)
@@ -79,8 +80,8 @@ QStringList ExchangeRow::cells(const CaptureExchange &e, const CaptureConversati
             t.problem,
             e.requestPacket ? QString::number(e.requestPacket) : QString(),
             e.responsePacket ? QString::number(e.responsePacket) : QString(),
-            QString::fromLatin1(t.request.toHex()),
-            QString::fromLatin1(t.response.toHex())};
+            QString::fromLatin1(t.request.toHex().toUpper()),
+            QString::fromLatin1(t.response.toHex().toUpper())};
 }
 
 QJsonObject ExchangeRow::json(const CaptureExchange &e, const CaptureConversation *c)

@@ -288,7 +288,7 @@ void ModbusFrameExtractor::collect(Flow &flow, int direction)
             problem(flow.lastPacket[direction], &flow, QStringLiteral("%1 byte(s) skipped (%2): %3")
                                                            .arg(s.count())
                                                            .arg(QLatin1String(skipReasonName(s.reason)),
-                                                                QString::fromLatin1(s.bytes.left(16).toHex(' ')) +
+                                                                QString::fromLatin1(s.bytes.left(16).toHex(' ').toUpper()) +
                                                                     (s.count() > 16 ? QStringLiteral(" ...") : QString())));
             // An RTU answer with a wrong CRC, or cut short, cannot be delimited by the framer;
             // its unit and function code may still name the waiting request (as in the engine).

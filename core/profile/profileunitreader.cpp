@@ -1,5 +1,6 @@
 #include "profileunitreader.h"
 
+#include "protocol/hexnumber.h"
 #include "protocol/hextext.h"
 #include "faultrulereader.h"
 #include "json/jsonreader.h"
@@ -129,9 +130,9 @@ void ProfileUnitReader::readFunctions(JsonReader &reader, const QJsonValue &valu
             continue;
         if (!implemented.contains(quint8(*code)))
             reader.error(at, QStringLiteral("function code %1 is not one the simulator implements (%2)")
-                                 .arg(quint8(*code), 2, 16, QLatin1Char('0')).arg(codeList(implemented)));
+                                 .arg(hexNumber(quint8(*code), 2)).arg(codeList(implemented)));
         else if (unit->functions.contains(quint8(*code)))
-            reader.error(at, QStringLiteral("function code %1 is listed twice").arg(quint8(*code), 2, 16, QLatin1Char('0')));
+            reader.error(at, QStringLiteral("function code %1 is listed twice").arg(hexNumber(quint8(*code), 2)));
         else
             unit->functions.append(quint8(*code));
     }
@@ -259,7 +260,7 @@ void ProfileUnitReader::readDeviceId(JsonReader &reader, const QJsonValue &value
             continue;
         }
         if (unit->deviceId.contains(quint8(id))) {
-            reader.error(objectPath, QStringLiteral("object 0x%1 is given twice").arg(id, 2, 16, QLatin1Char('0')));
+            reader.error(objectPath, QStringLiteral("object 0x%1 is given twice").arg(hexNumber(id, 2)));
             continue;
         }
         if (const auto bytes = latin1Text(reader, it.value(), objectPath, kMaxObjectBytes))

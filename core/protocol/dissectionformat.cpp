@@ -57,6 +57,26 @@ struct Row {
     QString offset, bytes, field, value, problem;
 };
 
+// The VALUE column of a field of many bytes (a frame's trailing bytes, a long write's data) is cut
+// as the BYTES column is: the table of a 1 MB input is a table of its fields, not its bytes again
+// and again (every row with a problem is padded to the widest value: 11 MB of output for 1 MB of
+// input, issue 26 item 10). --json keeps every byte.
+QString valueColumn(const FieldTree &tree, int i, int maxRawBytes)
+{
+    constexpr qsizetype kLongest = 200; // characters: any other value (text, a group's meaning) at most this
+    const Field &f = tree.at(i);
+    const int keep = qMax(maxRawBytes, 16);
+    if (f.format != ValueFormat::Bytes || f.length <= keep) {
+        const QString text = tree.display(i);
+        return text.size() <= kLongest ? text : text.left(kLongest) + QStringLiteral(" ...");
+    }
+    QString text = QString::fromLatin1(tree.raw(i).left(keep).toHex(' ').toUpper())
+                   + QStringLiteral(" ... (%1 bytes)").arg(f.length);
+    if (f.meaning && *f.meaning)
+        text += QLatin1Char(' ') + QString::fromUtf8(f.meaning);
+    return text;
+}
+
 void collect(const FieldTree &tree, int parent, int depth, int maxRawBytes, QList<Row> &rows)
 {
     for (int i = tree.firstChild(parent); i >= 0; i = tree.nextSibling(i)) {
@@ -67,7 +87,7 @@ void collect(const FieldTree &tree, int parent, int depth, int maxRawBytes, QLis
             r.offset += QLatin1Char('-') + QString::number(f.offset + f.length - 1);
         r.bytes = rawText(tree, i, maxRawBytes);
         r.field = QString(depth * 2, QLatin1Char(' ')) + tree.name(i);
-        r.value = tree.display(i);
+        r.value = valueColumn(tree, i, maxRawBytes);
         if (f.severity != Severity::Ok)
             r.problem = severityName(f.severity).toUpper() + (f.message.isEmpty() ? QString() : QStringLiteral(": ") + f.message);
         rows.append(r);

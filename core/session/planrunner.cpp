@@ -231,7 +231,9 @@ void PlanRunner::runSend(const PlanStep &step, StepResult &result)
     }
     result.detail = exchangeText(*t);
     if (t->status == TransactionStatus::LinkError) {
-        result.detail = QStringLiteral("sent %1").arg(HexText::format(t->request));
+        // A link that refused (or failed) before the request was written sent nothing.
+        result.detail = t->writeNs > 0 ? QStringLiteral("sent %1, then the link failed").arg(HexText::format(t->request))
+                                       : QStringLiteral("not sent (the link failed first): %1").arg(HexText::format(t->request));
         result.outcome = StepResult::Outcome::Error;
         result.reasons.append(t->problem);
         m_result.linkFailed = true;

@@ -1,6 +1,7 @@
 // SimProcessor: Encapsulated Interface Transport (2B) with Read Device Identification (0E),
 // V1.1b3 6.19 and 6.21.
 #include "sim/simbytes.h"
+#include "protocol/hexnumber.h"
 #include "sim/simprocessor.h"
 #include "sim/simunit.h"
 
@@ -34,7 +35,7 @@ SimReply SimProcessor::encapsulated(QByteArrayView pdu)
     const quint8 mei = quint8(pdu[1]);
     if (mei != kMeiDeviceId) {
         return SimReply::exception(0x2B, 0x01, QStringLiteral("MEI type 0x%1 is not supported (only 0E, Read Device Identification)")
-                                                   .arg(mei, 2, 16, QLatin1Char('0')));
+                                                   .arg(hexNumber(mei, 2)));
     }
     return deviceIdentification(pdu);
 }
@@ -50,7 +51,7 @@ SimReply SimProcessor::deviceIdentification(QByteArrayView pdu)
     if (code < 1 || code > 4)
         return SimReply::exception(0x2B, 0x03, QStringLiteral("Read Device ID code %1 is not 1-4").arg(code));
     if (code == 4 && !(conformity & 0x80))
-        return SimReply::exception(0x2B, 0x03, QStringLiteral("individual access (code 4) is not supported: conformity level 0x%1").arg(conformity, 2, 16, QLatin1Char('0')));
+        return SimReply::exception(0x2B, 0x03, QStringLiteral("individual access (code 4) is not supported: conformity level 0x%1").arg(hexNumber(conformity, 2)));
     const QMap<quint8, QByteArray> objects = m_unit->deviceIdObjects();
 
     QByteArray bytes(kHeader, 0);
@@ -60,7 +61,7 @@ SimReply SimProcessor::deviceIdentification(QByteArrayView pdu)
     bytes[3] = char(conformity);
     if (code == 4) {
         if (!objects.contains(objectId))
-            return SimReply::exception(0x2B, 0x02, QStringLiteral("object id 0x%1 does not exist").arg(objectId, 2, 16, QLatin1Char('0')));
+            return SimReply::exception(0x2B, 0x02, QStringLiteral("object id 0x%1 does not exist").arg(hexNumber(objectId, 2)));
         const QByteArray value = objects.value(objectId).left(kMaxObjectValue);
         bytes[6] = 1;
         bytes.append(char(objectId));

@@ -1,6 +1,7 @@
 // SimProcessor: Diagnostics (08), Get Comm Event Counter (0B), Get Comm Event Log (0C) and the
 // bus-level counters an endpoint reports (V1.1b3 6.8-6.10).
 #include "sim/simbytes.h"
+#include "protocol/hexnumber.h"
 #include "sim/simprocessor.h"
 #include "sim/simunit.h"
 
@@ -16,7 +17,7 @@ constexpr quint8 kEventEnteredListenOnly = 0x04;
 
 QString subName(quint16 sub)
 {
-    return QStringLiteral("08/%1").arg(sub, 4, 16, QLatin1Char('0'));
+    return QStringLiteral("08/%1").arg(hexNumber(sub, 4));
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "sim/simprocessor.h"
 
+#include "protocol/hexnumber.h"
 #include "sim/simbytes.h"
 #include "sim/simmodbusserver.h"
 #include "sim/simunit.h"
@@ -33,14 +34,14 @@ QString qtExceptionNote(quint8 functionCode, quint8 code)
     switch (code) {
     case 0x02:
         return QStringLiteral("function 0x%1: the addresses are outside the unit's map")
-            .arg(functionCode, 2, 16, QLatin1Char('0'));
+            .arg(hexNumber(functionCode, 2));
     case 0x03:
         return QStringLiteral("function 0x%1: the request's size, quantity, byte count or value is not allowed (V1.1b3 6.x)")
-            .arg(functionCode, 2, 16, QLatin1Char('0'));
+            .arg(hexNumber(functionCode, 2));
     default:
         return QStringLiteral("function 0x%1: exception 0x%2 from the server model")
-            .arg(functionCode, 2, 16, QLatin1Char('0'))
-            .arg(code, 2, 16, QLatin1Char('0'));
+            .arg(hexNumber(functionCode, 2))
+            .arg(hexNumber(code, 2));
     }
 }
 
@@ -135,7 +136,7 @@ SimReply SimProcessor::process(QByteArrayView pdu, bool broadcast)
     if (broadcast && reply.hasAnswer()) {
         const QString was = reply.kind == SimReply::Kind::Exception
                                 ? QStringLiteral(" (the answer would have been exception 0x%1: %2)")
-                                      .arg(reply.exceptionCode, 2, 16, QLatin1Char('0'))
+                                      .arg(hexNumber(reply.exceptionCode, 2))
                                       .arg(reply.note)
                                 : QString();
         reply.kind = SimReply::Kind::Silent;
@@ -186,7 +187,7 @@ SimReply SimProcessor::dispatch(quint8 functionCode, QByteArrayView pdu)
     if (!m_unit->supportsFunction(functionCode)) {
         return SimReply::exception(functionCode, 0x01,
                                    QStringLiteral("function code 0x%1 is not supported by unit %2")
-                                       .arg(functionCode, 2, 16, QLatin1Char('0'))
+                                       .arg(hexNumber(functionCode, 2))
                                        .arg(m_unit->id()));
     }
     if (m_unit->isBusy() && functionCode != 0x08 && functionCode != 0x0B && functionCode != 0x0C)
@@ -217,7 +218,7 @@ SimReply SimProcessor::dispatch(quint8 functionCode, QByteArrayView pdu)
     default:
         return SimReply::exception(functionCode, 0x01,
                                    QStringLiteral("function code 0x%1 is not implemented by the simulator")
-                                       .arg(functionCode, 2, 16, QLatin1Char('0')));
+                                       .arg(hexNumber(functionCode, 2)));
     }
 }
 

@@ -149,6 +149,7 @@ private slots:
     void journalWithoutEndpoints();
     void serialJournalExported();
     void recordedEndpoints();
+    void outputsUnderOnePolicy();
 
 private:
     QTemporaryDir m_dir;
@@ -224,7 +225,7 @@ void TestCliCapture::damaged_data()
                                      << QStringLiteral("at byte 552: the block of type 0x00000006 is cut short: it says 100 bytes, the file has 30")
                                      << QStringLiteral("1 transactions, 1 ok");
     QTest::newRow("not a capture") << QStringLiteral("notes.txt") << QByteArray("hello, this is text\n") << 2
-                                   << QStringLiteral("not a capture file: it starts with 68 65 6c 6c") << QString();
+                                   << QStringLiteral("not a capture file: it starts with 68 65 6C 6C") << QString();
     QTest::newRow("empty") << QStringLiteral("empty.pcap") << QByteArray() << 2 << QStringLiteral("the file is empty: not a capture")
                            << QString();
 }
@@ -717,6 +718,47 @@ void TestCliCapture::recordedEndpoints()
         QCOMPARE(captured.value(QStringLiteral("client")).toString(), client);
         QCOMPARE(captured.value(QStringLiteral("server")).toString(), server);
     }
+// Issue 26 item 11: export overwrote a file that --record refuses to overwrite, and a path the
+// permission bits allow but no file can be created at (/proc) passed the checks, the export then
+// failing after reading the source. One policy for every output: an existing file is refused
+// unless --force; a new one is created (and removed) before the source is read.
+void TestCliCapture::outputsUnderOnePolicy()
+{
+    const QString csv = m_dir.filePath(QStringLiteral("kept.csv"));
+    {
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("keep me\n");
+    }
+    const CliResult refused = runMbscope({QStringLiteral("export"), m_good, QStringLiteral("--csv"), csv});
+    QVERIFY2(refused.finished && refused.exitCode == 2, refused.describe().constData());
+    QVERIFY2(refused.errText().contains(QStringLiteral("mbscope export: --csv: %1 exists: an output file is never overwritten (give another "
+                                                       "name, or --force to replace it)").arg(csv)),
+             refused.describe().constData());
+    QCOMPARE(readFile(csv), QByteArray("keep me\n"));
+    const CliResult forced = runMbscope({QStringLiteral("export"), m_good, QStringLiteral("--csv"), csv, QStringLiteral("--force")});
+    QVERIFY2(forced.finished && forced.exitCode == 0, forced.describe().constData());
+    QVERIFY(readFile(csv).startsWith("index,kind,"));
+
+    // Under /proc the folder looks writable (and root passes every permission check), but no
+    // file can be made there: said before the source is read, and nothing is left behind.
+    for (const QString &option : {QStringLiteral("--csv"), QStringLiteral("--jsonl"), QStringLiteral("--pcap"), QStringLiteral("--histogram")}) {
+        const QString proc = QStringLiteral("/proc/mbscope-test-out") + (option == QLatin1String("--histogram") ? QStringLiteral(".png") : QString());
+        const CliResult r = runMbscope({QStringLiteral("export"), m_good, option, proc});
+        QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
+        QVERIFY2(r.errText().startsWith(QStringLiteral("mbscope export: %1: cannot write %2: ").arg(option, proc)), r.describe().constData());
+        QVERIFY2(r.out.isEmpty(), r.describe().constData());
+    }
+    const CliResult a = runMbscope({QStringLiteral("analyze"), m_good, QStringLiteral("--timeseries"), QStringLiteral("/proc/mbscope-test.png")});
+    QVERIFY2(a.finished && a.exitCode == 2, a.describe().constData());
+    QVERIFY2(a.errText().startsWith(QStringLiteral("mbscope analyze: --timeseries: cannot write /proc/mbscope-test.png: ")), a.describe().constData());
+    QVERIFY2(a.out.isEmpty(), a.describe().constData()); // not analysed, then failed
+    // analyze's plots follow the same policy.
+    const QString png = m_dir.filePath(QStringLiteral("kept.png"));
+    QVERIFY(QFile::copy(csv, png));
+    const CliResult again = runMbscope({QStringLiteral("analyze"), m_good, QStringLiteral("--histogram"), png});
+    QVERIFY2(again.finished && again.exitCode == 2, again.describe().constData());
+    QVERIFY2(again.errText().contains(QStringLiteral("--histogram: %1 exists: ").arg(png)), again.describe().constData());
 }
 
 QTEST_GUILESS_MAIN(TestCliCapture)

@@ -50,6 +50,7 @@ private slots:
     void usageLine();
     void topLevelHelp_data();
     void topLevelHelp();
+    void helpAll();
 };
 
 QString TestCliExchange::target(const QString &mode, QString *error)
@@ -356,6 +357,13 @@ void TestCliExchange::usageErrors_data()
     row("function 5", sl({"read", "--target", "TARGET", "--function", "5"}), "mbscope read: --function 5 is not a read");
     row("unit 256", sl({"read", "--target", "TARGET", "--unit", "256"}), "--unit 256 is out of range: expected 0 to 255");
     row("format f33", sl({"read", "--target", "TARGET", "--format", "f33"}), "mbscope read: --format: ");
+    // Issue 26 item 10: a value wider than the registers read printed a blank column, exit 0.
+    row("f32 of 1 register", sl({"read", "--target", "TARGET", "--quantity", "1", "--format", "f32"}),
+        "mbscope read: --format f32-abcd needs 2 registers for one value, but --quantity 1 reads only 1: give --quantity 2 or more");
+    row("u16,f64 of 3 registers", sl({"read", "--target", "TARGET", "--quantity", "3", "--format", "u16,f64"}),
+        "--format f64-abcdefgh needs 4 registers for one value, but --quantity 3 reads only 3");
+    row("poll f32 of 1 register", sl({"poll", "--target", "TARGET", "--quantity", "1", "--format", "f32-cdab", "--count", "1"}),
+        "mbscope poll: --format f32-cdab needs 2 registers for one value");
     row("format on coils", sl({"read", "--target", "TARGET", "--function", "1", "--format", "u16"}),
         "--format applies to registers");
     row("hex 01 0G", sl({"send", "--target", "TARGET", "--hex", "01 0G"}), "mbscope send: --hex: ");
@@ -534,6 +542,24 @@ void TestCliExchange::topLevelHelp()
     QVERIFY2(r.outText().startsWith(QLatin1String("Usage: mbscope [SUBCOMMAND] [OPTIONS]")), r.describe());
     for (const char *expected : {"  watch ", "  scan ", "--theme NAME", "--tab NAME", "--start-watches", "--screenshot FILE"})
         QVERIFY2(r.outText().contains(QLatin1String(expected)), r.describe());
+}
+
+// Issue 26 item 12: --help-all printed the short usage, as --help does: it prints every
+// subcommand's help too, each under its own heading.
+void TestCliExchange::helpAll()
+{
+    const CliResult all = runMbscope({QStringLiteral("--help-all")});
+    QVERIFY2(all.finished && all.exitCode == 0, all.describe());
+    const CliResult brief = runMbscope({QStringLiteral("--help")});
+    QVERIFY2(all.outText().startsWith(brief.outText()), all.describe());
+    for (const char *command : {"decode", "send", "read", "write", "poll", "monitor", "watch", "sweep", "scan", "run", "simulate",
+                                "analyze", "export", "replay"}) {
+        const CliResult one = runMbscope({QLatin1String(command), QStringLiteral("--help")});
+        QVERIFY2(one.exitCode == 0, one.describe());
+        QVERIFY2(all.outText().contains(one.outText()), command);
+        QVERIFY2(all.outText().contains(QStringLiteral("\n== mbscope %1 ==\n").arg(QLatin1String(command))), command);
+    }
+    QVERIFY2(all.err.isEmpty(), all.describe());
 }
 
 QTEST_GUILESS_MAIN(TestCliExchange)

@@ -150,6 +150,7 @@ private Q_SLOTS:
     void refusesWhatItCannotMonitor_data();
     void refusesWhatItCannotMonitor();
     void missingDevice();
+    void nothingHeardHasItsOwnStatus();
 
 private:
     QTemporaryDir m_dir;
@@ -374,7 +375,7 @@ void TestCliMonitor::stopsOnInterrupt()
     QVERIFY2(monitor.start({serialUrl(QStringLiteral("rtu"), bus.monitor), QStringLiteral("--json")}, &error), qPrintable(error));
     monitor.interrupt();
     QVERIFY2(monitor.wait(10000), monitor.describe().constData());
-    QVERIFY2(monitor.exitCode() == 0, monitor.describe().constData());
+    QVERIFY2(monitor.exitCode() == 3, monitor.describe().constData()); // nothing heard (issue 26 item 10)
     QCOMPARE(monitor.json().value(QStringLiteral("stopped")).toString(), QStringLiteral("interrupted"));
     QCOMPARE(monitor.json().value(QStringLiteral("count")).toInt(), 0);
 
@@ -382,8 +383,47 @@ void TestCliMonitor::stopsOnInterrupt()
     const CliResult timed = runMbscope({QStringLiteral("monitor"), serialUrl(QStringLiteral("rtu"), bus.monitor), QStringLiteral("--duration"),
                                         QStringLiteral("300ms"), QStringLiteral("--json")},
                                        30000);
-    QVERIFY2(timed.exitCode == 0, timed.describe().constData());
+    QVERIFY2(timed.exitCode == 3, timed.describe().constData());
     QCOMPARE(timed.json().value(QStringLiteral("stopped")).toString(), QStringLiteral("duration"));
+}
+
+// Issue 26 item 10: a monitor that heard nothing at all ended with exit status 0, as if every
+// exchange had been fine. It says so and ends with 3; a device server's port that sends one good
+// exchange ends with 0, and one damaged frame with 1.
+void TestCliMonitor::nothingHeardHasItsOwnStatus()
+{
+    QTcpServer server;
+    QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+    const QString url = QStringLiteral("rtu-tcp://127.0.0.1:%1").arg(server.serverPort());
+    const CliResult quiet = runMbscope({QStringLiteral("monitor"), url, QStringLiteral("--duration"), QStringLiteral("300ms")}, 30000);
+    QVERIFY2(quiet.finished && quiet.exitCode == 3, quiet.describe().constData());
+    QVERIFY2(quiet.errText().contains(QStringLiteral("mbscope monitor: nothing was heard: not one byte came from %1 in ").arg(url)),
+             quiet.describe().constData());
+    // Its connection, which the kernel accepted, is taken off the queue: the next is the next run's.
+    QVERIFY(server.waitForNewConnection(10000));
+    delete server.nextPendingConnection();
+
+    const auto run = [&](const QList<QByteArray> &frames) {
+        Monitor monitor;
+        QString error;
+        if (!monitor.start({url, QStringLiteral("--duration"), QStringLiteral("1s"), QStringLiteral("--quiet")}, &error))
+            return -100;
+        if (!server.waitForNewConnection(10000))
+            return -101;
+        QTcpSocket *line = server.nextPendingConnection();
+        for (const QByteArray &bytes : frames) {
+            line->write(bytes);
+            line->waitForBytesWritten(5000);
+            QTest::qWait(50); // the silence that ends a frame on a device server's port is 20 ms
+        }
+        if (!monitor.wait(20000))
+            return -102;
+        delete line;
+        return monitor.exitCode();
+    };
+    // 01 03 00 00 00 01 84 0A, answered 01 03 02 00 2A 39 9B: one good exchange.
+    QCOMPARE(run({QByteArray::fromHex("010300000001840A"), QByteArray::fromHex("010302002A399B")}), 0);
+    QCOMPARE(run({QByteArray::fromHex("010300000001840B")}), 1); // a CRC error
 }
 
 void TestCliMonitor::refusesWhatItCannotMonitor_data()

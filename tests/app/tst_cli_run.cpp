@@ -288,6 +288,9 @@ void TestCliRun::linkErrorCountsEveryStep()
     QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
     QVERIFY2(r.outText().contains(QStringLiteral("\n16 steps: 0 passed, 0 failed, 1 errors, 15 skipped in ")), r.out.constData());
     QVERIFY2(r.outText().contains(QStringLiteral("SKIP   ... and 14 more steps not run\n")), r.out.constData());
+    // Issue 26 item 12: the refused step said "sent 01 03 ..." though nothing left.
+    QVERIFY2(r.outText().contains(QStringLiteral("       not sent (the link failed first): ")), r.out.constData());
+    QVERIFY2(!r.outText().contains(QStringLiteral("       sent ")), r.out.constData());
     QString error;
     const auto cases = junitCases(junit, &error);
     QVERIFY2(error.isEmpty(), qPrintable(error));

@@ -163,6 +163,7 @@ private slots:
     void timingTellsDropOldestFromRefuse();
     void timingProgressOnATerminal();
     void timingBoundedAndStopped();
+    void allIdsSaysWhatItAsked();
 
 private:
     QTemporaryDir m_dir;
@@ -610,6 +611,41 @@ void TestCliScan::timingBoundedAndStopped()
     QCOMPARE(stopped.value(QStringLiteral("stopped")).toBool(), true);
     QVERIFY(stopped.value(QStringLiteral("first_answer_ms")).toDouble() >= 0);
     QCOMPARE(stopped.value(QStringLiteral("clients_tried")).toInt(), 0);
+}
+
+
+// Issue 26 item 12: scan --all-ids asked 0-255 and said so as if all were unit addresses: the
+// report says 247 of them are (1-247) and 9 are not (0, 248-255), which only an MBAP server or
+// gateway may answer; --json lists those.
+void TestCliScan::allIdsSaysWhatItAsked()
+{
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const QStringList scan{QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--all-ids"), QStringLiteral("--timeout"),
+                           QStringLiteral("20ms"), QStringLiteral("--gap"), QStringLiteral("0")};
+    const CliResult text = runMbscope(scan);
+    QVERIFY2(text.finished, text.describe());
+    QVERIFY2(text.outText().contains(QStringLiteral("  units 0-255: 247 unit addresses (1-247) and 9 ids outside them (0, 248-255: ")),
+             text.out.constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("256 of 256 ids asked")), text.out.constData());
+    // The simulator (units 1 and 2) answers 0 and 255 for itself: two devices, not four.
+    QVERIFY2(text.outText().contains(QStringLiteral("\nfound 2 device(s) at unit addresses 1-247; ids 0, 255 answered too, outside them ")),
+             text.out.constData());
+    const CliResult json = runMbscope(scan + QStringList{QStringLiteral("--json")});
+    QVERIFY2(json.finished, json.describe());
+    QCOMPARE(json.json().value(QStringLiteral("asked")).toInt(), 256);
+    QCOMPARE(json.json().value(QStringLiteral("found")).toInt(), 2);
+    QCOMPARE(json.json().value(QStringLiteral("answered_outside_unit_addresses")).toArray(), QJsonArray({0, 255}));
+    QCOMPARE(json.json().value(QStringLiteral("outside_unit_addresses")).toArray(),
+             QJsonArray({QStringLiteral("0"), QStringLiteral("248-255")}));
+    // The default range is the unit addresses alone.
+    const CliResult some = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--units"), QStringLiteral("1-3"),
+                                       QStringLiteral("--timeout"), QStringLiteral("20ms"), QStringLiteral("--json")});
+    QCOMPARE(some.json().value(QStringLiteral("outside_unit_addresses")).toArray().size(), 0);
 }
 
 QTEST_GUILESS_MAIN(TestCliScan)

@@ -10,8 +10,12 @@
 #include "protocol/adubuilder.h"
 #include "protocol/hextext.h"
 
+#include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
+#include <QtCore/QProcess>
+#include <QtCore/QRegularExpression>
+#include <QtCore/QSet>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
 
@@ -65,11 +69,58 @@ private:
     // The simulator on Modbus/TCP, for the tests that need MBAP (started by the first).
     bool startTcpSimulator();
 
+    void largeInputSmallOutput();
+    void everyExitStatus_data();
+    void everyExitStatus();
+    void manPageListsEveryExitStatus();
+
+private:
+    // The files everyExitStatus runs on, made once.
+    bool prepareExitStatusFiles(QString *error);
+    QString m_closed; // a target nothing listens on
+    bool m_prepared = false;
     Background m_sim;
     Background m_tcpSim;
     QString m_target; // the simulator, RTU over TCP, with a short response timeout
     QTemporaryDir m_dir;
 };
+
+namespace {
+
+bool writeText(const QString &path, const QString &text)
+{
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(text.toUtf8()) >= 0;
+}
+
+// The (command, status) pairs everyExitStatus runs: the man page's EXIT STATUS must list these
+// and no others. "mbscope" stands for the executable without a command. Some are run by tests of
+// their own (named beside them), where what they need is set up: a bus, a broker.
+struct StatusCase {
+    const char *command;
+    int status;
+    const char *elsewhere; // the test that runs it, when not everyExitStatus
+};
+const StatusCase kElsewhere[] = {
+    {"monitor", 0, "tst_cli_monitor nothingHeardHasItsOwnStatus"},
+    {"monitor", 1, "tst_cli_monitor nothingHeardHasItsOwnStatus"},
+    {"monitor", 3, "tst_cli_monitor nothingHeardHasItsOwnStatus"},
+    {"watch", 3, "tst_cli_watch unreachableBrokerHasItsOwnStatus"},
+};
+
+// One row of everyExitStatus: a command line (TARGET, CLOSED and DIR/ filled in when run), the
+// status it ends with and a piece of what it says.
+struct ExitRow {
+    const char *command;
+    int status;
+    const char *what;
+    QStringList arguments;
+    const char *said;
+};
+
+QList<ExitRow> exitRows();
+
+} // namespace
 
 void TestCliVerdicts::initTestCase()
 {
@@ -80,6 +131,7 @@ void TestCliVerdicts::initTestCase()
                          &error),
              qPrintable(error));
     m_target = m_sim.url() + QStringLiteral("?timeout=300");
+    m_closed = QStringLiteral("rtu-tcp://127.0.0.1:%1").arg(closedPort());
 }
 
 bool TestCliVerdicts::startTcpSimulator()
@@ -262,6 +314,17 @@ void TestCliVerdicts::outputsCheckedBeforeTheFirstRequest_data()
                                                 << QStringLiteral("--histogram: cannot write %1/x.png: the folder does not exist").arg(missing);
     QTest::newRow("poll --csv no folder") << QStringList{QStringLiteral("poll"), QStringLiteral("--csv"), missing + QStringLiteral("/x.csv")}
                                           << QStringLiteral("--csv: cannot write %1/x.csv: the folder does not exist").arg(missing);
+    // Issue 26 item 11: /proc passed the permission check; the file could not be made after the polls.
+    QTest::newRow("poll --csv under /proc") << QStringList{QStringLiteral("poll"), QStringLiteral("--csv"), QStringLiteral("/proc/mbscope-x.csv")}
+                                            << QStringLiteral("--csv: cannot write /proc/mbscope-x.csv: ");
+    QTest::newRow("poll --record under /proc") << QStringList{QStringLiteral("poll"), QStringLiteral("--record"), QStringLiteral("/proc/mbscope-x.journal")}
+                                               << QStringLiteral("--record: cannot write /proc/mbscope-x.journal: ");
+    QTest::newRow("poll --histogram under /proc") << QStringList{QStringLiteral("poll"), QStringLiteral("--histogram"), QStringLiteral("/proc/mbscope-x.png")}
+                                                  << QStringLiteral("--histogram: cannot write /proc/mbscope-x.png: ");
+    // ... and an existing --csv was overwritten where an existing --record is refused.
+    QTest::newRow("poll --csv exists") << QStringList{QStringLiteral("poll"), QStringLiteral("--csv"), m_dir.filePath(QStringLiteral("exists.csv"))}
+                                       << QStringLiteral("--csv: %1 exists: an output file is never overwritten (give another name, or --force to replace it)")
+                                              .arg(m_dir.filePath(QStringLiteral("exists.csv")));
     QTest::newRow("poll --record no folder") << QStringList{QStringLiteral("poll"), QStringLiteral("--record"), missing + QStringLiteral("/x.mbscope.journal")}
                                              << QStringLiteral("--record: cannot write %1/x.mbscope.journal: the folder does not exist").arg(missing);
 }
@@ -270,6 +333,9 @@ void TestCliVerdicts::outputsCheckedBeforeTheFirstRequest()
 {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
+    QFile exists(m_dir.filePath(QStringLiteral("exists.csv")));
+    QVERIFY(exists.open(QIODevice::WriteOnly));
+    exists.close();
     // Two seconds of polling that would be lost: refused at once, nothing polled.
     const CliResult r = runMbscope(arguments + QStringList{QStringLiteral("--target"), m_target, QStringLiteral("--count"), QStringLiteral("20"),
                                                            QStringLiteral("--address"), QStringLiteral("0x79")});
@@ -435,6 +501,248 @@ void TestCliVerdicts::pollNumbersItsRequests()
     QCOMPARE(ids.size(), 4);
     for (qsizetype i = 1; i < ids.size(); ++i)
         QVERIFY2(ids.at(i) > ids.at(i - 1), rows.out.constData());
+
+// Issue 26 item 10: decode of 1 MB of input wrote 11 MB: the frame's trailing bytes were shown
+// whole in the VALUE column, and every row with a problem was padded to that width. The table
+// cuts a long value as it cuts the BYTES column; --json keeps every byte.
+void TestCliVerdicts::largeInputSmallOutput()
+{
+    const QString input = m_dir.filePath(QStringLiteral("large.hex"));
+    QByteArray text;
+    while (text.size() < 1024 * 1024)
+        text += "01 03 00 79 00 16 15 DD ";
+    QFile f(input);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text);
+    f.close();
+    QProcess decode;
+    decode.setStandardInputFile(input);
+    decode.start(mbscopePath(), {QStringLiteral("decode")});
+    QVERIFY(decode.waitForFinished(120000));
+    const QByteArray out = decode.readAllStandardOutput();
+    QCOMPARE(decode.exitCode(), 1); // far beyond the largest frame
+    QVERIFY2(out.contains("Frame too long"), out.left(4000).constData());
+    QVERIFY2(out.size() < 16 * 1024, qPrintable(QStringLiteral("%1 bytes of output for %2 of input:\n%3")
+                                                     .arg(out.size())
+                                                     .arg(text.size())
+                                                     .arg(QString::fromUtf8(out.left(3000)))));
+    for (const QByteArray &line : out.split('\n'))
+        QVERIFY2(line.size() < 400, line.left(400).constData());
+}
+
+bool TestCliVerdicts::prepareExitStatusFiles(QString *error)
+{
+    if (m_prepared)
+        return true;
+    const auto run = [&](const QStringList &arguments, int status) {
+        const CliResult r = runMbscope(arguments);
+        if (r.exitCode != status)
+            *error = QString::fromUtf8(r.describe());
+        return r.exitCode == status;
+    };
+    const QString sessions = QStringLiteral(R"({"format": "mbscope-session", "version": 2, "name": "NAME",
+  "requests": [{"name": "settings", "function": 3, "unit": UNIT, "address": "0x0079", "quantity": 2}],
+  "plan": [{"name": "read the settings", "send": "settings"}],
+  "watches": [{"name": "settings", "target": "TARGET", "unit": UNIT, "address": "0x0079", "quantity": 2, "intervalMs": 50}]})");
+    for (const auto &[name, unit] : {std::pair{QStringLiteral("good"), 1}, std::pair{QStringLiteral("silent"), 9}}) {
+        QString text = sessions;
+        text.replace(QLatin1String("NAME"), name).replace(QLatin1String("UNIT"), QString::number(unit)).replace(QLatin1String("TARGET"), m_target);
+        if (!writeText(m_dir.filePath(name + QStringLiteral(".mbscope.json")), text)) {
+            *error = QStringLiteral("cannot write the session");
+            return false;
+        }
+    }
+    // Journals: every read answered; one unanswered; unit 3's results register read before a
+    // write changes it (replayed, the answer differs); a damaged copy of the first.
+    const QString good = m_dir.filePath(QStringLiteral("good.mbscope.journal"));
+    if (!run({QStringLiteral("read"), QStringLiteral("--target"), m_target, QStringLiteral("--address"), QStringLiteral("0x79"),
+              QStringLiteral("--quantity"), QStringLiteral("2"), QStringLiteral("--record"), good},
+             0)
+        // unit 9 is silent, then unit 1 answers: the timeout is inside the journal, not cut by its end.
+        || !run({QStringLiteral("poll"), QStringLiteral("--target"), m_target, QStringLiteral("--count"), QStringLiteral("1"),
+                 QStringLiteral("--hex"), QStringLiteral("09 03 00 79 00 01 54 9B"), QStringLiteral("--hex"), QStringLiteral("01 03 00 79 00 01 55 D3"),
+                 QStringLiteral("--record"), m_dir.filePath(QStringLiteral("silent.mbscope.journal"))},
+                1)
+        || !run({QStringLiteral("write"), QStringLiteral("--target"), m_target, QStringLiteral("--unit"), QStringLiteral("3"),
+                 QStringLiteral("--address"), QStringLiteral("0x87"), QStringLiteral("--registers"), QStringLiteral("0"), QStringLiteral("--single")},
+                0)
+        || !run({QStringLiteral("read"), QStringLiteral("--target"), m_target, QStringLiteral("--unit"), QStringLiteral("3"),
+                 QStringLiteral("--address"), QStringLiteral("0x87"), QStringLiteral("--record"), m_dir.filePath(QStringLiteral("before.mbscope.journal"))},
+                0)
+        || !run({QStringLiteral("write"), QStringLiteral("--target"), m_target, QStringLiteral("--unit"), QStringLiteral("3"),
+                 QStringLiteral("--address"), QStringLiteral("0x87"), QStringLiteral("--registers"), QStringLiteral("7"), QStringLiteral("--single")},
+                0))
+        return false;
+    QFile in(good);
+    if (!in.open(QIODevice::ReadOnly)) {
+        *error = QStringLiteral("cannot read ") + good;
+        return false;
+    }
+    const QByteArray bytes = in.readAll();
+    QFile damaged(m_dir.filePath(QStringLiteral("damaged.mbscope.journal")));
+    if (!damaged.open(QIODevice::WriteOnly) || damaged.write(bytes.left(bytes.size() - 5) + QByteArray(40, '\xA5')) < 0) {
+        *error = QStringLiteral("cannot write the damaged journal");
+        return false;
+    }
+    m_prepared = true;
+    return true;
+}
+
+// Issue 26 item 10: every exit status of every command, as the man page's EXIT STATUS lists them,
+// run as a script would meet it (the statuses run elsewhere are in kElsewhere).
+namespace {
+
+QList<ExitRow> exitRows()
+{
+    QList<ExitRow> rows;
+    const auto row = [&rows](const char *command, int status, const char *what, QStringList arguments, const char *said = "") {
+        rows.append(ExitRow{command, status, what, std::move(arguments), said});
+    };
+    const QString hex = QStringLiteral("--hex");
+    const QString T = QStringLiteral("TARGET");
+    const QString C = QStringLiteral("CLOSED");
+    const QString D = QStringLiteral("DIR/");
+    const QStringList settings{QStringLiteral("--address"), QStringLiteral("0x79"), QStringLiteral("--quantity"), QStringLiteral("2")};
+    const QStringList silent{QStringLiteral("--unit"), QStringLiteral("9")};
+    row("decode", 0, "a valid frame", {QStringLiteral("decode"), QStringLiteral("01 03 00 79 00 16 15 DD")});
+    row("decode", 1, "a wrong CRC", {QStringLiteral("decode"), QStringLiteral("01 03 00 79 00 16 15 DE")}, "CRC");
+    row("decode", 2, "not hex", {QStringLiteral("decode"), QStringLiteral("01 0G")}, "mbscope decode: frame: ");
+    row("send", 0, "answered", {QStringLiteral("send"), QStringLiteral("--target"), T, QStringLiteral("--complete"), QStringLiteral("--unit"), QStringLiteral("1"), hex, QStringLiteral("03 00 79 00 01")});
+    row("send", 1, "no answer", {QStringLiteral("send"), QStringLiteral("--target"), T, QStringLiteral("--complete"), QStringLiteral("--unit"), QStringLiteral("9"), hex, QStringLiteral("03 00 79 00 01")}, "timeout");
+    row("send", 2, "refused", {QStringLiteral("send"), QStringLiteral("--target"), C, hex, QStringLiteral("01 03 00 79 00 16 15 DD")}, "connection refused");
+    row("read", 0, "answered", QStringList{QStringLiteral("read"), QStringLiteral("--target"), T} + settings);
+    row("read", 1, "no answer", QStringList{QStringLiteral("read"), QStringLiteral("--target"), T} + silent, "timeout");
+    row("read", 2, "f32 of one register", {QStringLiteral("read"), QStringLiteral("--target"), T, QStringLiteral("--format"), QStringLiteral("f32")},
+        "--format f32-abcd needs 2 registers for one value, but --quantity 1 reads only 1");
+    row("read", 2, "refused", QStringList{QStringLiteral("read"), QStringLiteral("--target"), C}, "connection refused");
+    const QStringList write{QStringLiteral("write"), QStringLiteral("--target"), T, QStringLiteral("--address"), QStringLiteral("0x87"),
+                            QStringLiteral("--registers"), QStringLiteral("7"), QStringLiteral("--single")};
+    row("write", 0, "written, the echo matched", write + QStringList{QStringLiteral("--unit"), QStringLiteral("3")});
+    row("write", 1, "no answer", write + silent, "timeout");
+    row("write", 2, "nothing to write", {QStringLiteral("write"), QStringLiteral("--target"), T}, "nothing to write");
+    const QStringList poll = QStringList{QStringLiteral("poll"), QStringLiteral("--target"), T, QStringLiteral("--count"), QStringLiteral("2"),
+                                         QStringLiteral("--interval"), QStringLiteral("0")} + settings;
+    row("poll", 0, "every answer", poll);
+    row("poll", 1, "no answer", poll + silent);
+    row("poll", 2, "--csv under /proc", poll + QStringList{QStringLiteral("--csv"), QStringLiteral("/proc/mbscope.csv")}, "--csv: cannot write /proc/mbscope.csv");
+    const QStringList sweep = QStringList{QStringLiteral("sweep"), QStringLiteral("--target"), T, QStringLiteral("--count"), QStringLiteral("2"),
+                                          QStringLiteral("--intervals"), QStringLiteral("0,5ms")} + settings;
+    row("sweep", 0, "every answer", sweep);
+    row("sweep", 1, "no answer", sweep + silent);
+    row("sweep", 2, "refused", QStringList{QStringLiteral("sweep"), QStringLiteral("--target"), C, QStringLiteral("--count"), QStringLiteral("2"),
+                                            QStringLiteral("--intervals"), QStringLiteral("0,5ms")} + settings, "connection refused");
+    row("monitor", 2, "not a bus", {QStringLiteral("monitor"), QStringLiteral("tcp://127.0.0.1:502")}, "not a bus another master drives");
+    row("watch", 0, "every poll answered", {QStringLiteral("watch"), D + QStringLiteral("good.mbscope.json"), QStringLiteral("--count"), QStringLiteral("2")});
+    row("watch", 1, "no answer", {QStringLiteral("watch"), D + QStringLiteral("silent.mbscope.json"), QStringLiteral("--count"), QStringLiteral("1")});
+    row("watch", 2, "no session", {QStringLiteral("watch"), D + QStringLiteral("none.mbscope.json")}, "mbscope watch: the session cannot be used");
+    row("scan", 0, "unit 1 found", {QStringLiteral("scan"), QStringLiteral("--target"), T, QStringLiteral("--units"), QStringLiteral("1-2")}, "found 1 device(s)");
+    row("scan", 1, "nothing found", {QStringLiteral("scan"), QStringLiteral("--target"), T, QStringLiteral("--units"), QStringLiteral("9-10")}, "found 0 device(s)");
+    row("scan", 2, "refused", {QStringLiteral("scan"), QStringLiteral("--target"), C, QStringLiteral("--units"), QStringLiteral("1-2")}, "refused");
+    row("run", 0, "every step passed", {QStringLiteral("run"), D + QStringLiteral("good.mbscope.json"), QStringLiteral("--target"), T});
+    row("run", 1, "a step failed", {QStringLiteral("run"), D + QStringLiteral("silent.mbscope.json"), QStringLiteral("--target"), T});
+    row("run", 2, "refused", {QStringLiteral("run"), D + QStringLiteral("good.mbscope.json"), QStringLiteral("--target"), C}, "connection refused");
+    row("simulate", 0, "stopped by --duration", {QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                                                 QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--duration"), QStringLiteral("200ms")});
+    row("simulate", 2, "unknown profile", {QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("no-such-profile")}, "no-such-profile");
+    row("analyze", 0, "every answer", {QStringLiteral("analyze"), D + QStringLiteral("good.mbscope.journal")});
+    row("analyze", 1, "a timeout", {QStringLiteral("analyze"), D + QStringLiteral("silent.mbscope.journal")});
+    row("analyze", 1, "damaged", {QStringLiteral("analyze"), D + QStringLiteral("damaged.mbscope.journal")});
+    row("analyze", 2, "no such file", {QStringLiteral("analyze"), D + QStringLiteral("none.pcap")}, "no such file");
+    row("export", 0, "written", {QStringLiteral("export"), D + QStringLiteral("good.mbscope.journal"), QStringLiteral("--csv"), QStringLiteral("-")});
+    row("export", 1, "from a damaged source", {QStringLiteral("export"), D + QStringLiteral("damaged.mbscope.journal"), QStringLiteral("--csv"), QStringLiteral("-")});
+    row("export", 2, "an output that exists", {QStringLiteral("export"), D + QStringLiteral("good.mbscope.journal"), QStringLiteral("--csv"), D + QStringLiteral("good.mbscope.json")},
+        "exists: an output file is never overwritten");
+    row("replay", 0, "every answer matched", {QStringLiteral("replay"), D + QStringLiteral("good.mbscope.journal"), QStringLiteral("--target"), T});
+    row("replay", 1, "an answer differed", {QStringLiteral("replay"), D + QStringLiteral("before.mbscope.journal"), QStringLiteral("--target"), T});
+    row("replay", 2, "no such file", {QStringLiteral("replay"), D + QStringLiteral("none.mbscope.journal"), QStringLiteral("--target"), T});
+    row("mbscope", 0, "--version", {QStringLiteral("--version")}, "mbscope ");
+    row("mbscope", 0, "--help-all", {QStringLiteral("--help-all")}, "== mbscope replay ==");
+    row("mbscope", 2, "an unknown command", {QStringLiteral("frobnicate")}, "mbscope: unknown subcommand 'frobnicate'");
+    return rows;
+}
+
+} // namespace
+
+void TestCliVerdicts::everyExitStatus_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<int>("status");
+    QTest::addColumn<QString>("said"); // on standard output or error
+    for (const ExitRow &r : exitRows())
+        QTest::addRow("%s %d: %s", r.command, r.status, r.what) << r.arguments << r.status << QString::fromUtf8(r.said);
+}
+
+void TestCliVerdicts::everyExitStatus()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(int, status);
+    QFETCH(QString, said);
+    QString error;
+    QVERIFY2(prepareExitStatusFiles(&error), qPrintable(error));
+    for (QString &a : arguments) {
+        if (a == QLatin1String("TARGET"))
+            a = m_target;
+        else if (a == QLatin1String("CLOSED"))
+            a = m_closed;
+        else if (a.startsWith(QLatin1String("DIR/")))
+            a = m_dir.filePath(a.mid(4));
+    }
+    const CliResult r = runMbscope(arguments, 60000);
+    QVERIFY2(r.finished && r.exitCode == status, r.describe().constData());
+    QVERIFY2((r.outText() + r.errText()).contains(said), r.describe().constData());
+}
+
+// The man page's EXIT STATUS lists, command by command, exactly the statuses that are tested
+// (everyExitStatus's rows and kElsewhere): a status added to the code or the page without the
+// other fails here.
+void TestCliVerdicts::manPageListsEveryExitStatus()
+{
+    QFile page(QStringLiteral(MBSCOPE_SOURCE_DIR "/docs/mbscope.1"));
+    QVERIFY(page.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QStringList lines = QString::fromUtf8(page.readAll()).split(QLatin1Char('\n'));
+    static const QRegularExpression commandWord(
+        QStringLiteral(R"(\b(decode|send|read|write|poll|sweep|monitor|watch|scan|run|simulate|analyze|export|replay)\b)"));
+    static const QRegularExpression statusAt(QStringLiteral(R"(^([0-9]) )"));
+    QSet<QString> documented;
+    bool inSection = false;
+    bool perCommand = false;
+    QStringList commands;
+    for (qsizetype i = 0; i < lines.size(); ++i) {
+        const QString &line = lines.at(i);
+        if (line.startsWith(QLatin1String(".SH ")))
+            inSection = line == QLatin1String(".SH EXIT STATUS");
+        if (!inSection)
+            continue;
+        if (line.startsWith(QLatin1String("Each command's statuses")))
+            perCommand = true;
+        if (!perCommand)
+            continue;
+        if (line == QLatin1String(".TP") && i + 1 < lines.size()) {
+            commands.clear();
+            auto words = commandWord.globalMatch(lines.at(i + 1));
+            while (words.hasNext())
+                commands.append(words.next().captured(1));
+            if (commands.isEmpty())
+                commands.append(QStringLiteral("mbscope"));
+            ++i;
+            continue;
+        }
+        const QRegularExpressionMatch m = statusAt.match(line);
+        if (m.hasMatch()) {
+            for (const QString &c : std::as_const(commands))
+                documented.insert(c + QLatin1Char(' ') + m.captured(1));
+        }
+    }
+    QSet<QString> tested;
+    for (const StatusCase &c : kElsewhere)
+        tested.insert(QStringLiteral("%1 %2").arg(QLatin1String(c.command)).arg(c.status));
+    for (const ExitRow &r : exitRows())
+        tested.insert(QStringLiteral("%1 %2").arg(QLatin1String(r.command)).arg(r.status));
+    QVERIFY2(!documented.isEmpty(), "no EXIT STATUS list found in docs/mbscope.1");
+    const QSet<QString> untested = documented - tested;
+    const QSet<QString> undocumented = tested - documented;
+    QVERIFY2(untested.isEmpty(), qPrintable(QStringLiteral("documented, never run: ") + QStringList(untested.values()).join(QStringLiteral(", "))));
+    QVERIFY2(undocumented.isEmpty(), qPrintable(QStringLiteral("run, not documented: ") + QStringList(undocumented.values()).join(QStringLiteral(", "))));
 }
 
 QTEST_GUILESS_MAIN(TestCliVerdicts)

@@ -77,6 +77,14 @@ private:
     QList<QJsonObject> m_lines;
 };
 
+// `mbscope simulate --profile conformance` listening on listen ("tcp://127.0.0.1:0": a free port).
+bool startConformance(Background &sim, const QString &listen, QString *why)
+{
+    return sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"), listen,
+                      QStringLiteral("--quiet")},
+                     why);
+}
+
 int count(const QList<QJsonObject> &lines, const QString &type, const QString &watch, const QString &status = {}, qsizetype from = 0)
 {
     int n = 0;
@@ -102,6 +110,8 @@ private Q_SLOTS:
     void csvFailureSaidOnceAndCounted();
     void fifoWatch();
     void linkErrorSaidOnce();
+    void unreachableBrokerHasItsOwnStatus();
+    void firstConnectionIsNoReconnect();
 };
 
 void TestCliWatch::threeDevicesOnThreeLinks()
@@ -302,9 +312,7 @@ void TestCliWatch::csvFailureSaidOnceAndCounted()
 {
     QString why;
     Background sim;
-    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
-                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")}, &why),
-             qPrintable(why));
+    QVERIFY2(startConformance(sim, QStringLiteral("tcp://127.0.0.1:0"), &why), qPrintable(why));
     QTemporaryDir dir;
     const QString session = dir.filePath(QStringLiteral("plant.mbscope.json"));
     QVERIFY(writeFile(session, QStringLiteral(R"({"format": "mbscope-session", "version": 2,
@@ -358,9 +366,7 @@ void TestCliWatch::fifoWatch()
 {
     QString why;
     Background sim;
-    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
-                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")}, &why),
-             qPrintable(why));
+    QVERIFY2(startConformance(sim, QStringLiteral("tcp://127.0.0.1:0"), &why), qPrintable(why));
     QTemporaryDir dir;
     const QString session = dir.filePath(QStringLiteral("fifo.mbscope.json"));
     QVERIFY(writeFile(session, QStringLiteral(R"({"format": "mbscope-session", "version": 2,
@@ -418,6 +424,61 @@ void TestCliWatch::linkErrorSaidOnce()
     QVERIFY2(!err.contains(QStringLiteral("next attempt")), qPrintable(err));
     QVERIFY2(r.outText().contains(QStringLiteral("gone: 4 polls, 0 ok")), r.describe().constData());
     QVERIFY2(r.outText().contains(QStringLiteral("4 link errors")), r.describe().constData());
+}
+
+// Issue 26 item 10: with --mqtt naming a broker nothing listens for, watch polled, published
+// nothing and ended with exit status 0. It says what was lost and ends with 3; failed polls still
+// end with 1.
+void TestCliWatch::unreachableBrokerHasItsOwnStatus()
+{
+    QString why;
+    Background sim;
+    QVERIFY2(startConformance(sim, QStringLiteral("tcp://127.0.0.1:0"), &why), qPrintable(why));
+    QTemporaryDir dir;
+    const QString session = dir.filePath(QStringLiteral("plant.mbscope.json"));
+    QVERIFY(writeFile(session, QStringLiteral(R"({"format": "mbscope-session", "version": 2,
+  "watches": [{"name": "plant", "target": "%1", "address": 0, "quantity": 2, "intervalMs": 50}]})").arg(sim.url()).toUtf8()));
+    const QString broker = QStringLiteral("mqtt://127.0.0.1:%1").arg(closedPort());
+    const CliResult r = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--count"), QStringLiteral("3"), QStringLiteral("--mqtt"), broker});
+    QVERIFY2(r.finished && r.exitCode == 3, r.describe().constData());
+    QVERIFY2(r.outText().contains(QStringLiteral("plant: 3 polls, 3 ok")), r.describe().constData());
+    QVERIFY2(r.errText().contains(QStringLiteral(" error: MQTT: the broker at %1 was never reached: ").arg(broker)), r.describe().constData());
+    QVERIFY2(r.errText().contains(QStringLiteral(" not published")), r.describe().constData());
+    // --json: the same status.
+    const CliResult json = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--count"), QStringLiteral("2"), QStringLiteral("--mqtt"),
+                                       broker, QStringLiteral("--json")});
+    QVERIFY2(json.finished && json.exitCode == 3, json.describe().constData());
+    // Without --mqtt: 0.
+    const CliResult plain = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--count"), QStringLiteral("2")});
+    QVERIFY2(plain.finished && plain.exitCode == 0, plain.describe().constData());
+}
+
+// Issue 26 item 12: a link down from the start that came up said "up again (reconnect 0)": it
+// was never up before. It says its first connection came after the attempts that failed.
+void TestCliWatch::firstConnectionIsNoReconnect()
+{
+    QTemporaryDir dir;
+    const quint16 port = closedPort();
+    const QString target = QStringLiteral("tcp://127.0.0.1:%1").arg(port);
+    const QString session = dir.filePath(QStringLiteral("late.mbscope.json"));
+    QVERIFY(writeFile(session, QStringLiteral(R"({"format": "mbscope-session", "version": 2,
+  "watches": [{"name": "late", "target": "%1", "address": 0, "quantity": 2, "intervalMs": 50}],
+  "watchLinks": [{"target": "%1", "reconnectMinMs": 50, "reconnectMaxMs": 50}]})").arg(target).toUtf8()));
+    WatchProcess watch;
+    QVERIFY(watch.start({QStringLiteral("watch"), session, QStringLiteral("--json")}));
+    QVERIFY2(watch.waitFor([](const QList<QJsonObject> &l) { return count(l, QStringLiteral("sample"), QStringLiteral("late"), QStringLiteral("error")) >= 2; }),
+             watch.err().constData());
+    QString why;
+    Background sim;
+    QVERIFY2(startConformance(sim, target, &why), qPrintable(why));
+    QVERIFY2(watch.waitFor([](const QList<QJsonObject> &l) { return count(l, QStringLiteral("sample"), QStringLiteral("late"), QStringLiteral("ok")) >= 2; }),
+             watch.err().constData());
+    QCOMPARE(watch.stop(SIGTERM), 1); // the polls lost before the link came up
+    const QString err = QString::fromUtf8(watch.err());
+    QVERIFY2(!err.contains(QStringLiteral("reconnect 0")), qPrintable(err));
+    static const QRegularExpression first(QStringLiteral(R"( notice: link tcp://127\.0\.0\.1:\d+: up \(first connection, after \d+ failed attempts?\))"));
+    QVERIFY2(first.match(err).hasMatch(), qPrintable(err));
+    QCOMPARE(watch.lines().constLast().value(QLatin1String("watches")).toArray().at(0)[QLatin1String("reconnects")].toInt(), 0);
 }
 
 QTEST_GUILESS_MAIN(TestCliWatch)

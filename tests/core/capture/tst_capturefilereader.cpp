@@ -123,8 +123,8 @@ void TestCaptureFileReader::damaged_data()
 
     QTest::newRow("empty") << QByteArray() << QStringLiteral("the file is empty: not a capture") << 0LL << 0;
     QTest::newRow("html") << QByteArray("<!DOCTYPE html>")
-                          << QStringLiteral("not a capture file: it starts with 3c 21 44 4f, where a pcap file starts with") << 0LL << 0;
-    QTest::newRow("three bytes") << QByteArray("\xd4\xc3\xb2", 3) << QStringLiteral("not a capture file: it starts with d4 c3 b2,") << 0LL << 0;
+                          << QStringLiteral("not a capture file: it starts with 3C 21 44 4F, where a pcap file starts with") << 0LL << 0;
+    QTest::newRow("three bytes") << QByteArray("\xd4\xc3\xb2", 3) << QStringLiteral("not a capture file: it starts with D4 C3 B2,") << 0LL << 0;
     QTest::newRow("pcap header cut")
         << pcap.left(10) << QStringLiteral("at byte 0: the pcap file header is cut short: it needs 24 bytes, the file has 10") << 0LL << 0;
     QTest::newRow("pcap version 3")
@@ -177,7 +177,7 @@ void TestCaptureFileReader::damaged_data()
         QByteArray badMagic = sectionHeader(false);
         badMagic[8] = 'X';
         QTest::newRow("pcapng byte-order magic")
-            << badMagic << QStringLiteral("at byte 8: the section header's byte-order magic is 1a2b3c58, not 1a2b3c4d") << 8LL << 0;
+            << badMagic << QStringLiteral("at byte 8: the section header's byte-order magic is 1A2B3C58, not 1A2B3C4D") << 8LL << 0;
     }
 }
 

@@ -273,7 +273,7 @@ void TestPlanRunner::linkError()
     QCOMPARE(result.steps.at(2).outcome, StepResult::Outcome::Skipped);
     QCOMPARE(result.steps.at(1).path, QStringLiteral("plan[1]"));
     QCOMPARE(result.steps.at(2).path, QStringLiteral("plan[2]"));
-    QCOMPARE(result.steps.at(0).detail, QStringLiteral("sent 01 03 00 79 00 16 15 DD"));
+    QCOMPARE(result.steps.at(0).detail, QStringLiteral("not sent (the link failed first): 01 03 00 79 00 16 15 DD"));
 
     const JUnitSuite suite = readJUnit(JUnitReport::toXml(result));
     QCOMPARE(suite.attributes.value(QStringLiteral("errors")), QStringLiteral("1"));
