@@ -1,5 +1,6 @@
 // The window: what `mbscope` runs without a subcommand.
 #include "commands.h"
+#include "interruptwatcher.h"
 
 #include "link/linkcontroller.h"
 #include "compose/requestcomposer.h"
@@ -19,6 +20,7 @@
 #include <QtWidgets/QMessageBox>
 #include <QtWidgets/QSpinBox>
 
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 
@@ -238,6 +240,16 @@ int runGui(QApplication &app)
         theme = *asked;
     }
     Theme::apply(theme);
+    // SIGTERM (a logout, systemctl, kill) and Ctrl-C in the terminal that started it end the window
+    // without asking (nobody may be there to answer), but as a quit does: the event loop returns,
+    // the connection's journal is closed and marked closed, so the next start offers no recovery.
+    InterruptWatcher interrupts;
+    QObject::connect(&interrupts, &InterruptWatcher::interrupted, &app, [&app, &interrupts] {
+        std::fprintf(stderr, "mbscope: %s: closing the window and its recording\n",
+                     interrupts.signalNumber() == SIGTERM ? "SIGTERM" : "interrupted");
+        app.exit(ExitOk);
+    });
+
     MainWindow window;
     // A screenshot or an asked size is reproducible: the layout the last close saved is not used.
     if (!screenshot.isEmpty() || parser.isSet(sizeOption) || !window.restoreLayout())

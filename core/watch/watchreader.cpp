@@ -2,6 +2,7 @@
 
 #include "watch/watchblock.h"
 #include "watch/watchruleevaluator.h"
+#include "watch/watchrulethresholds.h"
 
 #include "json/jsonreader.h"
 #include "transport/linkurl.h"
@@ -205,6 +206,7 @@ std::optional<WatchRule> readRule(JsonReader &reader, const QJsonValue &value, c
                 continue;
             r.condition = c.condition;
             const QString at = JsonReader::member(path, c.key);
+            bool thresholdsRead = false;
             if (c.range) {
                 const QJsonValue v = o->value(QLatin1String(c.key));
                 const QJsonArray a = v.toArray();
@@ -213,14 +215,23 @@ std::optional<WatchRule> readRule(JsonReader &reader, const QJsonValue &value, c
                 } else {
                     r.low = a.at(0).toDouble();
                     r.high = a.at(1).toDouble();
-                    if (r.low > r.high)
-                        reader.error(at, QStringLiteral("low %1 is above high %2").arg(JsonReader::numberText(r.low), JsonReader::numberText(r.high)));
+                    thresholdsRead = true;
                 }
             } else if (c.condition == WatchRule::Condition::Bits) {
-                if (const auto mask = reader.integer(*o, path, c.key, 1, 0xFFFFFFFFLL))
+                if (const auto mask = reader.integer(*o, path, c.key, 1, 0xFFFFFFFFLL)) {
                     r.low = double(*mask);
+                    thresholdsRead = true;
+                }
             } else if (const auto n = reader.number(*o, path, c.key, -1e300, 1e300)) {
                 (c.condition == WatchRule::Condition::Above ? r.high : r.low) = *n;
+                thresholdsRead = true;
+            }
+            // A threshold the rule's point can never reach (a mask wider than the point, a coil
+            // equal to 2) is refused here rather than leaving a rule that never fires.
+            // (A mask needs the point's width: not said again for a point already refused.)
+            if (thresholdsRead && (c.condition != WatchRule::Condition::Bits || WatchRuleEvaluator::ruleAddress(w, r.point) >= 0)) {
+                if (const auto problem = WatchRuleThresholds::problem(w, r))
+                    reader.error(at, problem->message);
             }
         }
     }

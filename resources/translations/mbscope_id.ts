@@ -70,7 +70,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../app/gui.cpp" line="+258"/>
+        <location filename="../../app/gui.cpp" line="+270"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
@@ -259,7 +259,7 @@
 <context>
     <name>TrafficSaver</name>
     <message>
-        <location filename="../../ui/traffic/trafficsaver.cpp" line="+78"/>
+        <location filename="../../ui/traffic/trafficsaver.cpp" line="+90"/>
         <source>Traffic journal (*.mbscope.journal)</source>
         <translation>Jurnal lalu lintas (*.mbscope.journal)</translation>
     </message>
@@ -822,7 +822,7 @@
         <translation>Tidak ada jawaban: %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <location line="+13"/>
         <source>Request</source>
         <translation>Permintaan</translation>
@@ -849,12 +849,27 @@
         <translation>setelah %1</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>latency %1</source>
-        <translation>latensi %1</translation>
+        <location line="+14"/>
+        <source>latency %1 to the answer&apos;s last byte</source>
+        <translation>latensi %1 sampai byte terakhir jawaban</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+0"/>
+        <source>latency %1 to the answer&apos;s first byte</source>
+        <translation>latensi %1 sampai byte pertama jawaban</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Latency of the transaction, as the Analysis dock and the poll&apos;s figures count it: from the request sent (on a serial line, its last byte on the line) to the answer&apos;s last byte. The traffic list&apos;s Latency column measures to the answer&apos;s first byte.</source>
+        <translation>Latensi transaksi, seperti dihitung dok Analisis dan angka polling: dari permintaan terkirim (pada jalur serial, byte terakhirnya di jalur) sampai byte terakhir jawaban. Kolom Latensi di daftar lalu lintas mengukur sampai byte pertama jawaban.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Latency as the traffic list shows it: from the request&apos;s write to the answer&apos;s first byte. The Analysis dock measures to the answer&apos;s last byte.</source>
+        <translation>Latensi seperti ditampilkan daftar lalu lintas: dari penulisan permintaan sampai byte pertama jawaban. Dok Analisis mengukur sampai byte terakhir jawaban.</translation>
+    </message>
+    <message>
+        <location line="-9"/>
         <source>transaction %1</source>
         <translation>transaksi %1</translation>
     </message>
@@ -2970,7 +2985,7 @@
         <translation>tidak dapat menyalin %1 ke %2: %3</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+77"/>
         <source>%1: listening only (nothing is sent)</source>
         <translation>%1: hanya mendengar (tidak ada yang dikirim)</translation>
     </message>
@@ -3064,6 +3079,11 @@
         <translation>  ·  %1 error link</translation>
     </message>
     <message>
+        <location line="+2"/>
+        <source>This connection&apos;s traffic since Connect: bytes sent (TX) and received (RX), requests sent and link errors. A new connection counts from zero.</source>
+        <translation>Lalu lintas koneksi ini sejak Sambung: byte terkirim (TX) dan diterima (RX), permintaan terkirim dan galat link. Koneksi baru menghitung dari nol.</translation>
+    </message>
+    <message>
         <location line="+16"/>
         <source>Watches: TX %1 B  RX %2 B  ·  %3</source>
         <translation>Pantauan: TX %1 B  RX %2 B  ·  %3</translation>
@@ -3112,12 +3132,12 @@
         <translation>Pantauan</translation>
     </message>
     <message>
-        <location line="+479"/>
+        <location line="+501"/>
         <source>Disconnected. The built-in simulator still answers on &lt;code&gt;%1&lt;/code&gt;: press &lt;b&gt;Connect&lt;/b&gt; to use it again, or choose a real device&apos;s link type, host and port (or serial port) first.</source>
         <translation>Terputus. Simulator bawaan masih menjawab di &lt;code&gt;%1&lt;/code&gt;: tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk memakainya lagi, atau pilih dulu jenis link, host dan port (atau port serial) perangkat sungguhan.</translation>
     </message>
     <message>
-        <location line="-340"/>
+        <location line="-357"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
@@ -3137,7 +3157,7 @@
         <translation>Simulator</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+60"/>
         <source>The connection bar names no target: %1</source>
         <translation>Bilah koneksi tidak menyebut target: %1</translation>
     </message>
@@ -3182,12 +3202,12 @@
         <translation>Tidak tersambung: tekan Sambungkan untuk memakai %1 lagi</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+32"/>
         <source>&lt;b&gt;Connected to mbscope&apos;s built-in simulator&lt;/b&gt;, not to a device: a RosRao gamma detector (profile &lt;code&gt;%1&lt;/code&gt;) answering on &lt;code&gt;%2&lt;/code&gt;. Press &lt;b&gt;Send&lt;/b&gt; to read its 22 registers. To talk to a real device, press &lt;b&gt;Disconnect&lt;/b&gt;, choose its link type, host and port (or serial port) and press &lt;b&gt;Connect&lt;/b&gt;.</source>
         <translation>&lt;b&gt;Tersambung ke simulator bawaan mbscope&lt;/b&gt;, bukan ke perangkat: detektor gamma RosRao (profil &lt;code&gt;%1&lt;/code&gt;) yang menjawab di &lt;code&gt;%2&lt;/code&gt;. Tekan &lt;b&gt;Kirim&lt;/b&gt; untuk membaca 22 register-nya. Untuk berbicara dengan perangkat sungguhan, tekan &lt;b&gt;Putuskan&lt;/b&gt;, pilih jenis link, host dan port (atau port serial)-nya, lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt;.</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+57"/>
         <source>&amp;File</source>
         <translation>&amp;Berkas</translation>
     </message>
@@ -7827,12 +7847,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+207"/>
+        <location line="+209"/>
         <source>Pause</source>
         <translation>Jeda</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="-207"/>
         <source>Hold new frames back from the list; nothing is dropped, they appear on resume</source>
         <translation>Tahan frame baru dari daftar; tidak ada yang dibuang, frame muncul saat dilanjutkan</translation>
     </message>
@@ -7903,12 +7923,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+43"/>
+        <location line="+45"/>
         <source>Save Traffic</source>
         <translation>Simpan Lalu Lintas</translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-44"/>
         <source>The filter shows %1 of the %2 frames listed. Save which?</source>
         <translation>Filter menampilkan %1 dari %2 frame yang terdaftar. Simpan yang mana?</translation>
     </message>
@@ -7928,7 +7948,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Simpan Lalu Lintas Sebagai</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+76"/>
         <source>Resume</source>
         <translation>Lanjutkan</translation>
     </message>
@@ -8034,7 +8054,27 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TransactionView</name>
     <message>
-        <location filename="../../ui/decode/transactionview.cpp" line="+76"/>
+        <location filename="../../ui/decode/transactionview.cpp" line="+18"/>
+        <source>Back to live</source>
+        <translation>Kembali ke langsung</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Show the link&apos;s answers as they come again</source>
+        <translation>Tampilkan lagi jawaban link saat datang</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>Showing transaction %1, picked in the traffic list: the link&apos;s new answers are not shown.</source>
+        <translation>Menampilkan transaksi %1, dipilih di daftar lalu lintas: jawaban baru link tidak ditampilkan.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Showing a frame picked in the traffic list: the link&apos;s new answers are not shown.</source>
+        <translation>Menampilkan frame yang dipilih di daftar lalu lintas: jawaban baru link tidak ditampilkan.</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -8271,7 +8311,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchFactory</name>
     <message>
-        <location filename="../../ui/watch/watchfactory.cpp" line="+79"/>
+        <location filename="../../ui/watch/watchfactory.cpp" line="+100"/>
         <source>The composer holds no request: build a read (01-04) first.</source>
         <translation>Penyusun tidak berisi permintaan: buat dulu pembacaan (01-04).</translation>
     </message>
@@ -8548,7 +8588,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchRuleTable</name>
     <message>
-        <location filename="../../ui/watch/watchruletable.cpp" line="+24"/>
+        <location filename="../../ui/watch/watchruletable.cpp" line="+29"/>
         <source>Point</source>
         <translation>Titik</translation>
     </message>
@@ -8559,16 +8599,18 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+0"/>
+        <location line="+11"/>
         <source>Low</source>
         <translation>Bawah</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-11"/>
+        <location line="+11"/>
         <source>High</source>
         <translation>Atas</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="-11"/>
         <source>For polls</source>
         <translation>Selama polling</translation>
     </message>
@@ -8589,11 +8631,11 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+3"/>
-        <source>above: value &gt; high; below: value &lt; low; outside/inside: the range low..high; equal/not equal: low; bits: raw AND low (a mask) not 0. Colour: #RRGGBB, empty for the severity&apos;s.</source>
-        <translation>di atas: nilai &gt; atas; di bawah: nilai &lt; bawah; di luar/di dalam: rentang bawah..atas; sama/tidak sama: bawah; bit: mentah AND bawah (sebuah mask) bukan 0. Warna: #RRGGBB, kosong untuk warna tingkatnya.</translation>
+        <source>above: value &gt; High; below: value &lt; Low; outside/inside: the range Low..High; equal/not equal: Low; bits: raw AND Low (a mask) not 0. A threshold the condition does not use is greyed out and empty. Colour: #RRGGBB, empty for the severity&apos;s.</source>
+        <translation>di atas: nilai &gt; Atas; di bawah: nilai &lt; Bawah; di luar/di dalam: rentang Bawah..Atas; sama/tidak sama: Bawah; bit: mentah AND Bawah (sebuah mask) bukan 0. Ambang yang tidak dipakai kondisinya berwarna abu-abu dan kosong. Warna: #RRGGBB, kosong untuk warna tingkatnya.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
         <source>above</source>
         <translation>di atas</translation>
     </message>
@@ -8628,7 +8670,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>bit menyala</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+65"/>
+        <source>&apos;%1&apos; does not use %2</source>
+        <translation>&apos;%1&apos; tidak memakai %2</translation>
+    </message>
+    <message>
+        <location line="+34"/>
         <source>rule %1</source>
         <translation>aturan %1</translation>
     </message>
@@ -8638,12 +8685,32 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1: sebutkan titiknya (nama atau alamatnya)</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <source>%1: low and high must be numbers</source>
-        <translation>%1: bawah dan atas harus angka</translation>
+        <location line="+15"/>
+        <source>%1: %2: &apos;%3&apos; does not use %2; clear it (it holds %4)</source>
+        <translation>%1: %2: &apos;%3&apos; tidak memakai %2; kosongkan (isinya %4)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: %2: &apos;%3&apos; needs a number here</source>
+        <translation>%1: %2: &apos;%3&apos; memerlukan angka di sini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2: &apos;%3&apos; is not a number</source>
+        <translation>%1: %2: &apos;%3&apos; bukan angka</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1: Point: &apos;%2&apos; is neither a point&apos;s name nor an address of the watch</source>
+        <translation>%1: Titik: &apos;%2&apos; bukan nama titik maupun alamat pada pantauan ini</translation>
     </message>
     <message>
         <location line="+4"/>
+        <source>%1: %2: %3</source>
+        <translation>%1: %2: %3</translation>
+    </message>
+    <message>
+        <location line="-15"/>
         <source>%1: &apos;for polls&apos; must be 1 or more</source>
         <translation>%1: &apos;selama polling&apos; harus 1 atau lebih</translation>
     </message>

@@ -106,6 +106,7 @@ class TestCliWatch : public QObject
 private Q_SLOTS:
     void threeDevicesOnThreeLinks();
     void brokenSessionRefused();
+    void thresholdsThePointCannotReachRefused();
     void noWatches();
     void csvFailureSaidOnceAndCounted();
     void fifoWatch();
@@ -287,6 +288,34 @@ void TestCliWatch::brokenSessionRefused()
     QVERIFY2(r.finished, r.describe().constData());
     QCOMPARE(r.exitCode, 2);
     QVERIFY2(r.errText().contains(QStringLiteral("broken.mbscope.json: watches[0].rules[0].forPolls: 0 is below 1")),
+             r.describe().constData());
+    QVERIFY(r.out.isEmpty());
+}
+
+// Issue 26 item 4, the file's side: a threshold the rule's point can never reach (a mask wider than
+// the register, a coil equal to 2) is refused with its JSON path, not run as a rule that never fires.
+void TestCliWatch::thresholdsThePointCannotReachRefused()
+{
+    QTemporaryDir dir;
+    const QString session = dir.filePath(QStringLiteral("thresholds.mbscope.json"));
+    const QByteArray json = R"({"format": "mbscope-session", "version": 2, "watches": [
+        {"name": "words", "target": "tcp://127.0.0.1:1", "address": 0, "quantity": 4,
+         "points": [{"address": 0, "name": "status"}, {"address": 2, "name": "total", "format": "u32"}],
+         "rules": [{"point": "status", "bits": 65536}, {"point": "total", "bits": 65536}, {"point": "status", "above": 10}]},
+        {"name": "coils", "target": "tcp://127.0.0.1:1", "function": 1, "address": 0, "quantity": 8,
+         "rules": [{"point": "3", "equal": 2}, {"point": "4", "bits": 2}, {"point": "5", "equal": 1}]}]})";
+    QVERIFY(writeFile(session, json));
+    const CliResult r = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--count"), QStringLiteral("1")});
+    QVERIFY2(r.finished, r.describe().constData());
+    QCOMPARE(r.exitCode, 2);
+    const QString err = r.errText();
+    QVERIFY2(err.contains(QStringLiteral("thresholds.mbscope.json: watches[0].rules[0].bits: mask 0x10000 has bits beyond the 16 bit(s) of 'status' (at most 0xFFFF)")),
+             r.describe().constData());
+    QVERIFY2(err.contains(QStringLiteral("watches[1].rules[0].equal: 2 is not 0 or 1")), r.describe().constData());
+    QVERIFY2(err.contains(QStringLiteral("watches[1].rules[1].bits: mask 0x2 has bits beyond the 1 bit(s) of '4'")), r.describe().constData());
+    // The 32-bit point takes the mask; the sensible rules are not named.
+    QVERIFY2(!err.contains(QStringLiteral("rules[1].bits: mask 0x10000")), r.describe().constData());
+    QVERIFY2(!err.contains(QStringLiteral("watches[0].rules[2]")) && !err.contains(QStringLiteral("watches[1].rules[2]")),
              r.describe().constData());
     QVERIFY(r.out.isEmpty());
 }

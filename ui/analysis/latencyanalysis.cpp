@@ -23,6 +23,11 @@ LatencyAnalysis::LatencyAnalysis(AnalysisDock *dock, LinkController *link, QObje
     dock->addPanel(m_compare, tr("Compare"));
     m_histogram->addSourceChoice(m_source->makeChoiceBox(m_histogram));
     connect(link, &LinkController::transactionsFinished, m_source, &LatencySource::addBenchTransactions);
+    // Another connection: the bench's history and panels start again (the time axis at its first request).
+    connect(link, &LinkController::stateChanged, m_source, [this](LinkController::State state) {
+        if (state == LinkController::State::Ready)
+            m_source->restartBench();
+    });
     connect(m_source, &LatencySource::transactionsChosen, m_runs, &LatencyRuns::addTransactions);
     connect(m_source, &LatencySource::reset, m_runs, [this] {
         m_runs->clearCurrent();

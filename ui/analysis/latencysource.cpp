@@ -144,6 +144,13 @@ void LatencySource::addBenchTransactions(const QList<Transaction> &transactions)
         Q_EMIT transactionsChosen(transactions);
 }
 
+void LatencySource::restartBench()
+{
+    m_bench.clear();
+    if (isBench())
+        Q_EMIT reset();
+}
+
 Transaction LatencySource::transactionOf(const WatchSample &sample, qint64 nowNs, qint64 nowMs)
 {
     Transaction t;

@@ -44,6 +44,9 @@ public:
     [[nodiscard]] QComboBox *makeChoiceBox(QWidget *parent);
 
     void addBenchTransactions(const QList<mbscope::Transaction> &transactions);
+    // A new connection of the bench: its history starts again, so that the time axis starts at
+    // this connection's first request, not at the first one the window ever made.
+    void restartBench();
     void addWatchSamples(const QList<mbscope::WatchSample> &samples);
     // A watch sample as the latency panels count it (item: -1).
     [[nodiscard]] static Transaction transactionOf(const WatchSample &sample, qint64 nowNs, qint64 nowMs);

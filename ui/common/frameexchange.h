@@ -18,7 +18,12 @@ struct FrameExchange {
     Framing framing = Framing::Auto; // the link's framing (Auto: detect from the bytes)
     TrafficDirection selected = TrafficDirection::Out; // which of the two was picked
     TrafficVerdict verdict = TrafficVerdict::Sent;     // the exchange's verdict so far
-    qint64 latencyNs = -1;     // request written to answer (first byte in the traffic list); -1: none
+    qint64 latencyNs = -1;     // request to answer, as latencyToEnd says; -1: none
+    // What latencyNs measures. false (a frame of the traffic list): from the request's write to
+    // the answer's first byte, as the recording keeps them. true (a transaction of the link, as
+    // the Analysis dock and the poll's figures count): from the request sent (a serial line: its
+    // last byte on the line) to the answer's last byte.
+    bool latencyToEnd = false;
     quint64 transactionId = 0; // Transaction::id, 0 for frames of no transaction
     QString link;              // the link's URL, empty when unknown
 

@@ -141,6 +141,7 @@ void DecodeView::showTransaction(const Transaction &transaction, Framing framing
     exchange.framing = framing;
     exchange.verdict = trafficVerdict(transaction.status);
     exchange.latencyNs = transaction.latencyNs();
+    exchange.latencyToEnd = true;
     exchange.transactionId = transaction.id;
     exchange.selected = transaction.response.isEmpty() ? TrafficDirection::Out : TrafficDirection::In;
     showExchange(exchange);
@@ -176,13 +177,23 @@ void DecodeView::updateHeader()
                  .arg(color.name(), TrafficStyle::verdictText(e.verdict).toHtmlEscaped());
     if (!main.fields.isEmpty())
         parts << DissectionSummary::text(main).toHtmlEscaped();
+    // Two measures of latency exist (the traffic list's and the Analysis dock's): the header
+    // says which one it shows, so that two figures for one exchange never silently disagree.
     if (!latency.isEmpty())
-        parts << tr("latency %1").arg(latency);
+        parts << (e.latencyToEnd ? tr("latency %1 to the answer's last byte") : tr("latency %1 to the answer's first byte"))
+                     .arg(latency);
     if (e.transactionId != 0)
         parts << tr("transaction %1").arg(e.transactionId);
     if (!e.link.isEmpty())
         parts << e.link.toHtmlEscaped();
     m_header->setText(parts.join(QStringLiteral(" \u00B7 ")));
+    m_header->setToolTip(latency.isEmpty() ? QString()
+                         : e.latencyToEnd
+                             ? tr("Latency of the transaction, as the Analysis dock and the poll's figures count it: from the "
+                                  "request sent (on a serial line, its last byte on the line) to the answer's last byte. The "
+                                  "traffic list's Latency column measures to the answer's first byte.")
+                             : tr("Latency as the traffic list shows it: from the request's write to the answer's first "
+                                  "byte. The Analysis dock measures to the answer's last byte."));
 }
 
 QString DecodeView::copyText(CopyFormat format) const

@@ -157,11 +157,21 @@ void LinkController::resetEngine()
     connect(m_engine.get(), &TransactionEngine::finished, this, &LinkController::onPollFinished);
 }
 
+void LinkController::restartCounters()
+{
+    // Each connection counts from zero (issue 26 item 16: TX and RX went on from the connection
+    // before, so the bytes shown were never this link's).
+    m_counters = {};
+    m_countersBefore = {};
+    Q_EMIT countersChanged(m_counters);
+}
+
 void LinkController::connectTo(const LinkUrl &url)
 {
     if (m_polling)
         stopPoll();
     resetEngine();
+    restartCounters();
     m_url = url;
     m_engine->setTarget(url);
     m_recordingProblem.clear();
@@ -184,8 +194,8 @@ void LinkController::listenTo(const LinkUrl &url)
 {
     if (m_polling)
         stopPoll();
-    m_countersBefore = m_counters;
     dropEngine();
+    restartCounters();
     m_url = url;
     m_recordingProblem.clear();
     TrafficLog *log = nullptr;

@@ -57,6 +57,7 @@ public:
     [[nodiscard]] bool isConnected() const { return m_state != State::Disconnected; }
     [[nodiscard]] const LinkUrl &url() const { return m_url; }
     [[nodiscard]] QString message() const { return m_message; }
+    // What went over the link since the last Connect (or Listen): each connection counts from zero.
     [[nodiscard]] const EngineCounters &counters() const { return m_counters; }
     // Traffic another engine had with the device (a test plan's, a replay's): the status bar's
     // requests and bytes count it too.
@@ -121,6 +122,7 @@ private:
     void onPollFinished(const PollReport &report);
     void setState(State state, const QString &message = {});
     void resetEngine();
+    void restartCounters();
     void onObserved(const QList<Transaction> &transactions);
     // The engine (or the listener) goes first (it writes into the recording's log), then the recording.
     void dropEngine();
@@ -132,7 +134,7 @@ private:
     State m_state = State::Disconnected;
     QString m_message;
     EngineCounters m_counters;
-    EngineCounters m_countersBefore; // a new engine restarts at zero; the status bar keeps counting
+    EngineCounters m_countersBefore; // this connection's traffic not counted by its engine (a plan's, a replay's)
     bool m_polling = false;
     bool m_recordingEnabled = false;
     CaptureDirectory m_captures;

@@ -59,6 +59,8 @@ void LinkStatusWidget::setCounters(const EngineCounters &counters)
         text += counters.linkErrors == 1 ? tr("  \u00B7  1 link error")
                                          : tr("  \u00B7  %1 link errors").arg(locale.toString(counters.linkErrors));
     m_countersLabel->setText(text);
+    m_countersLabel->setToolTip(tr("This connection's traffic since Connect: bytes sent (TX) and received (RX), "
+                                   "requests sent and link errors. A new connection counts from zero."));
 }
 
 void LinkStatusWidget::addWatchTraffic(const QList<WatchSample> &samples)

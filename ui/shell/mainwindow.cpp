@@ -165,8 +165,10 @@ void MainWindow::connectPanels()
         bar->setConnected(connected);
         // The traffic list names the link its frames travel on (set when the target is, before
         // the first request: Connected comes only once the link answered).
-        if (state == LinkController::State::Ready)
+        if (state == LinkController::State::Ready) {
             m_traffic->model()->setCurrentLink(m_controller->url().toString());
+            updateRegisterProfile();
+        }
         m_composer->setLinkReady(connected);
         m_composer->setListenOnly(m_controller->isListening());
         m_linkStatus->setState(state, message);
@@ -189,12 +191,15 @@ void MainWindow::connectPanels()
         statusBar()->showMessage(LinkController::describe(report), 15000);
     });
 
+    // A new Send or Poll asks for new answers: the Answer tab follows the link again.
     connect(m_composer, &RequestComposer::sendRequested, this, [this](const QByteArray &bytes) {
         m_tabs->setCurrentWidget(m_answerView);
+        m_answerView->backToLive();
         m_controller->send(bytes);
     });
     connect(m_composer, &RequestComposer::pollRequested, this, [this](const QByteArray &bytes, int intervalMs, quint64 count) {
         m_tabs->setCurrentWidget(m_answerView);
+        m_answerView->backToLive();
         m_controller->startPoll(bytes, intervalMs, count);
     });
     connect(m_composer, &RequestComposer::stopPollRequested, link, &LinkController::stopPoll);
@@ -309,6 +314,8 @@ void MainWindow::connectDocks()
         m_tabs->setCurrentWidget(m_answerView);
         m_answerView->showExchange(exchange);
     });
+    // Back to live: the row that was picked is no longer what the Answer tab shows.
+    connect(m_answerView, &TransactionView::wentLive, m_traffic, [this] { m_traffic->selectRow(-1); });
     // Answers to reads (a poll's, a single send's) fill the register table; its edits are sent.
     connect(m_controller, &LinkController::latestTransaction, this, &MainWindow::showInRegisterTable);
     connect(m_registers, &RegisterTable::writeRequested, this, &MainWindow::sendWrite);
@@ -579,10 +586,9 @@ bool MainWindow::startWithSimulator(const QString &url)
     m_composer->rawEditor()->editor()->setFocus();
     if (const std::optional<LinkUrl> target = m_connectionBar->url())
         m_controller->connectTo(*target);
-    if (const UnitProfile *unit = m_simulator->profile().unit(1)) {
-        m_registers->setProfile(*unit, m_simulator->profile().name);
+    updateRegisterProfile();
+    if (const UnitProfile *unit = m_simulator->profile().unit(1))
         m_trends->setProfile(*unit, m_simulator->profile().name);
-    }
     m_session->markClean(); // the first run's target and request are where an untitled session starts
 
     m_simulatorNotice = tr("<b>Connected to mbscope's built-in simulator</b>, not to a device: a RosRao gamma detector "
@@ -594,6 +600,22 @@ bool MainWindow::startWithSimulator(const QString &url)
         m_simulatorNotice += QStringLiteral("<br>") + started.note.toHtmlEscaped();
     m_banner->showNotice(m_simulatorNotice);
     return true;
+}
+
+void MainWindow::updateRegisterProfile()
+{
+    // The built-in simulator's profile names the simulator's registers, no other device's (issue
+    // 26 item 15: "Profile: rosrao-gamma" stayed after connecting to another device). Back on the
+    // simulator, its names come back.
+    const LinkUrl &url = m_controller->url();
+    const LinkUrl &simulator = m_simulator->started().url;
+    const bool onSimulator = m_simulator->isRunning() && url.kind == simulator.kind && url.host == simulator.host
+        && url.port == simulator.port;
+    const UnitProfile *unit = onSimulator ? m_simulator->profile().unit(1) : nullptr;
+    if (unit)
+        m_registers->setProfile(*unit, m_simulator->profile().name);
+    else
+        m_registers->clearProfile();
 }
 
 void MainWindow::showSimulatorNotice(LinkController::State state)

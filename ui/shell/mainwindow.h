@@ -110,6 +110,8 @@ private:
     void showScanDialog();
     // The first-run banner for the link's state: on the simulator, listening to it, or disconnected.
     void showSimulatorNotice(LinkController::State state);
+    // The Registers dock names registers by the simulator's profile on the simulator only.
+    void updateRegisterProfile();
 
     LinkController *m_controller = nullptr;
     ScanDialog *m_scanDialog = nullptr; // Tools > Scan, made when first asked for

@@ -251,10 +251,12 @@ void TrafficMonitor::saveTrafficAs()
     if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
         return;
     QString path = dialog.selectedFiles().constFirst();
-    const TrafficSaver::Format format = TrafficSaver::formatOfFilter(dialog.selectedNameFilter());
-    // A name without the format's ending gets it: the file shows under the same filter later.
-    if (!path.endsWith(TrafficSaver::suffix(format), Qt::CaseInsensitive)
-        && !(format == TrafficSaver::Format::JsonLines && path.endsWith(QLatin1String(".json"), Qt::CaseInsensitive)))
+    // A name typed with a format's ending ("bench.pcapng") is saved in that format, whatever the
+    // filter says; a name without one gets the filter's format and its ending, so the file shows
+    // under the same filter later.
+    const std::optional<TrafficSaver::Format> typed = TrafficSaver::formatOfEnding(path);
+    const TrafficSaver::Format format = typed.value_or(TrafficSaver::formatOfFilter(dialog.selectedNameFilter()));
+    if (!typed)
         path += TrafficSaver::suffix(format);
     m_lastSaveDirectory = QFileInfo(path).absolutePath();
     const TrafficSaver::Result result = saveTo(path, format, shownOnly);

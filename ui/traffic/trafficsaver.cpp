@@ -73,6 +73,18 @@ TrafficSaver::Format TrafficSaver::formatFor(const QString &path)
     return Format::Journal;
 }
 
+std::optional<TrafficSaver::Format> TrafficSaver::formatOfEnding(const QString &path)
+{
+    const QString name = QFileInfo(path).fileName().toLower();
+    if (name.endsWith(QLatin1String(".json")))
+        return Format::JsonLines;
+    for (Format format : {Format::Journal, Format::Pcapng, Format::Pcap, Format::Csv, Format::JsonLines}) {
+        if (name.endsWith(suffix(format)))
+            return format;
+    }
+    return std::nullopt;
+}
+
 QStringList TrafficSaver::nameFilters()
 {
     return {tr("Traffic journal (*.mbscope.journal)"), tr("Wireshark capture, pcapng (*.pcapng)"),

@@ -4,6 +4,8 @@
 #include <QtCore/QString>
 #include <QtCore/QStringList>
 
+#include <optional>
+
 namespace mbscope {
 
 class TrafficModel;
@@ -31,6 +33,8 @@ public:
 
     // By the name's ending: .pcapng, .pcap, .csv, .jsonl (or .json), else a journal.
     [[nodiscard]] static Format formatFor(const QString &path);
+    // The format whose ending path has (".pcapng", ".mbscope.journal", ".json"...), or nothing.
+    [[nodiscard]] static std::optional<Format> formatOfEnding(const QString &path);
     // The file dialog's filters, in Format order, and the format of the one picked.
     [[nodiscard]] static QStringList nameFilters();
     [[nodiscard]] static Format formatOfFilter(const QString &filter);

@@ -204,7 +204,7 @@ WatchDefinition WatchDialog::watch(QStringList *problems) const
                                  .arg(watch.address)
                                  .arg(watch.address + watch.quantity - 1));
     }
-    watch.rules = m_rules->rules(problems);
+    watch.rules = m_rules->rules(watch, problems);
     return watch;
 }
 

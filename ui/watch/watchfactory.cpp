@@ -2,6 +2,8 @@
 
 #include "protocol/adubuilder.h"
 
+#include <QtCore/QRegularExpression>
+
 #include <algorithm>
 
 namespace mbscope {
@@ -31,15 +33,34 @@ QString tableWord(quint8 function)
     return QStringLiteral("holding");
 }
 
-QList<WatchPoint> pointsOf(const TableEntry &entry)
+// The name of an entry's value i: an entry named as a range of the device's own names
+// ("%MW0-%MW7999" or "T1-8", one name per value) names each value ("%MW17", "T3"); any other name of several
+// values is indexed ("results[3]").
+QString valueName(const TableEntry &entry, int i)
+{
+    const int values = entry.valueCount();
+    if (values == 1)
+        return entry.name;
+    static const QRegularExpression range(QStringLiteral("^(.*?)(\\d+)\\s*-\\s*(.*?)(\\d+)$"));
+    const QRegularExpressionMatch m = range.match(entry.name);
+    if (m.hasMatch() && (m.captured(3).isEmpty() || m.captured(1) == m.captured(3))) {
+        const qint64 first = m.captured(2).toLongLong();
+        const qint64 last = m.captured(4).toLongLong();
+        if (last - first + 1 == values)
+            return m.captured(1) + QString::number(first + i);
+    }
+    return QStringLiteral("%1[%2]").arg(entry.name).arg(i);
+}
+
+// The points of values first..first+count-1 of entry.
+QList<WatchPoint> pointsOf(const TableEntry &entry, int first, int count)
 {
     QList<WatchPoint> points;
     const int width = entry.width();
-    const int values = entry.valueCount();
-    for (int i = 0; i < values; ++i) {
+    for (int i = first; i < first + count; ++i) {
         WatchPoint point;
         point.address = quint16(entry.address + i * width);
-        point.name = values == 1 ? entry.name : QStringLiteral("%1[%2]").arg(entry.name).arg(i);
+        point.name = valueName(entry, i);
         point.description = entry.description;
         point.format = entry.format;
         point.scale = entry.scale;
@@ -141,21 +162,28 @@ QList<WatchDefinition> WatchFactory::fromProfile(const DeviceProfile &profile, q
             current = WatchDefinition();
         };
         for (const TableEntry &entry : entries) {
-            if (entry.count > limit)
-                continue; // no single read reaches it; a dialog can split it
-            const bool fits = !current.points.isEmpty() && entry.address - (current.address + current.quantity) <= kMaxGap
-                && entry.end() - current.address <= limit;
-            if (!fits) {
-                flush();
-                current.target = target;
-                current.unit = unitId;
-                current.function = functionOf(table);
-                current.address = entry.address;
-                current.quantity = 0;
-                current.intervalMs = intervalMs;
+            // An entry longer than a read (the M221's 8000 %MW) becomes consecutive watches, each
+            // one read; its values keep their names whichever watch they land in.
+            const int width = entry.width();
+            const int perPiece = limit / width;
+            for (int first = 0; first < entry.valueCount(); first += perPiece) {
+                const int count = qMin(perPiece, entry.valueCount() - first);
+                const int address = entry.address + first * width;
+                const int end = address + count * width;
+                const bool fits = !current.points.isEmpty() && address - (current.address + current.quantity) <= kMaxGap
+                    && end - current.address <= limit;
+                if (!fits) {
+                    flush();
+                    current.target = target;
+                    current.unit = unitId;
+                    current.function = functionOf(table);
+                    current.address = quint16(address);
+                    current.quantity = 0;
+                    current.intervalMs = intervalMs;
+                }
+                current.quantity = quint16(end - current.address);
+                current.points.append(pointsOf(entry, first, count));
             }
-            current.quantity = quint16(entry.end() - current.address);
-            current.points.append(pointsOf(entry));
         }
         flush();
     }

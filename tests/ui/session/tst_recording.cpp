@@ -19,11 +19,14 @@
 
 #include <QtCore/QDir>
 #include <QtCore/QFile>
+#include <QtCore/QProcess>
 #include <QtCore/QSettings>
 #include <QtCore/QSysInfo>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QtTest>
+
+#include <csignal>
 
 using namespace mbscope;
 
@@ -38,6 +41,8 @@ private Q_SLOTS:
     void turnedOffRecordsNothing();
     void saveKeepsTheJournalBesideTheSession();
     void crashLeftJournalIsOffered();
+    void signalsCloseTheJournal_data();
+    void signalsCloseTheJournal();
 
 private:
     QTemporaryDir m_captures;
@@ -208,6 +213,58 @@ void TestRecording::crashLeftJournalIsOffered()
     QVERIFY(CaptureDirectory(m_captures.path()).abandoned().isEmpty());
     MainWindow again;
     QVERIFY(again.recording()->recoveryBanner()->isHidden());
+}
+
+void TestRecording::signalsCloseTheJournal_data()
+{
+    QTest::addColumn<int>("signal");
+    QTest::newRow("SIGTERM") << int(SIGTERM);
+    QTest::newRow("SIGINT") << int(SIGINT);
+}
+
+// Issue 26 item 8: the window ended by SIGTERM (or Ctrl-C in its terminal) left its journal open,
+// and the next start showed a recovery banner for a journal nothing had cut. The mbscope binary as
+// a user starts it (first run: its simulator, connected, recording), the signal sent once the
+// journal is being written: the window exits 0, the journal's marker is gone, nothing is offered
+// for recovery, and the journal reads to its end.
+void TestRecording::signalsCloseTheJournal()
+{
+#ifndef MBSCOPE_BINARY
+    QSKIP("built without the mbscope binary");
+#else
+    QFETCH(int, signal);
+    QTemporaryDir home;
+    QVERIFY(home.isValid());
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    env.insert(QStringLiteral("HOME"), home.path());
+    for (const char *name : {"XDG_DATA_HOME", "XDG_CONFIG_HOME", "XDG_CACHE_HOME", "XDG_STATE_HOME"}) {
+        const QString path = home.filePath(QString::fromLatin1(name).toLower());
+        QVERIFY(QDir().mkpath(path));
+        env.insert(QString::fromLatin1(name), path);
+    }
+    const QString captures = home.filePath(QStringLiteral("xdg_data_home/mbscope/mbscope/captures"));
+    QProcess mbscope;
+    mbscope.setProcessEnvironment(env);
+    mbscope.start(QStringLiteral(MBSCOPE_BINARY), {});
+    QVERIFY2(mbscope.waitForStarted(30000), qPrintable(mbscope.errorString()));
+    const auto markers = [&captures] {
+        return QDir(captures).entryList({QStringLiteral("*.mbscope.journal.open")}, QDir::Files);
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(!markers().isEmpty(), 30000);
+    QTest::qWait(1000); // most likely the first run's ready request and answer in it too
+    ::kill(pid_t(mbscope.processId()), signal);
+    QVERIFY(mbscope.waitForFinished(30000));
+    const QByteArray err = mbscope.readAllStandardError();
+    QCOMPARE(mbscope.exitStatus(), QProcess::NormalExit);
+    QVERIFY2(mbscope.exitCode() == 0, err.constData());
+    QVERIFY2(markers().isEmpty(), qPrintable(markers().join(QLatin1Char(' '))));
+    QVERIFY(CaptureDirectory(captures).abandoned().isEmpty());
+    const QList<CaptureDirectory::Journal> journals = CaptureDirectory(captures).journals();
+    QCOMPARE(journals.size(), 1);
+    const TrafficJournalRecovery read = TrafficJournalReader::read(journals.constFirst().path, [](const TrafficEntry &) {});
+    QVERIFY2(read.isClean(), qPrintable(read.message));
+#endif
 }
 
 QTEST_MAIN(TestRecording)

@@ -1,6 +1,10 @@
 // The window as a whole against its built-in simulator: first run, type and send a request, the
 // decoded answer (request + matched response, latency), Ctrl+Return, a taken port, a link error in
 // place, a poll and its counters, screenshots.
+#include "analysis/latencyanalysis.h"
+#include "analysis/latencysource.h"
+#include "analysis/latencytimepanel.h"
+#include "analysis/trendpanels.h"
 #include "link/connectionbar.h"
 #include "decode/decodeview.h"
 #include "decode/frameinspector.h"
@@ -17,10 +21,16 @@
 #include "traffic/trafficmodel.h"
 #include "traffic/trafficmonitor.h"
 #include "decode/transactionview.h"
+#include "watch/watchworkspace.h"
+
+#include "profile/profileloader.h"
+#include "sim/simulatorhost.h"
 
 #include <QtNetwork/QTcpServer>
 #include <QtTest/QAbstractItemModelTester>
 #include <QtWidgets/QDockWidget>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
 #include <QtWidgets/QPlainTextEdit>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
@@ -52,6 +62,9 @@ private Q_SLOTS:
     void takenPortFallsBackToAFreeOne();
     void linkErrorIsShownInPlace();
     void pollCountsAndStops();
+    void pickedFrameStaysWhilePolling();
+    void registersProfileFollowsTheTarget();
+    void eachConnectionCountsAlone();
 };
 
 void TestWorkbench::initTestCase()
@@ -264,6 +277,161 @@ void TestWorkbench::pollCountsAndStops()
     const QString summary = window.statusBar()->currentMessage();
     QVERIFY2(summary.contains(QLatin1String("Poll finished: 20 transactions, 20 ok")), qPrintable(summary));
     QVERIFY2(summary.contains(QLatin1String("latency min")), qPrintable(summary));
+}
+
+// Issue 26 item 13: Find in the traffic list picked a frame while a poll ran, and the Answer tab
+// showed it only until the next poll's answer replaced it. A picked frame now stays shown, the
+// poll's answers held back, until "Back to live" (or a new Send or Poll).
+void TestWorkbench::pickedFrameStaysWhilePolling()
+{
+    MainWindow window;
+    QVERIFY(window.startWithSimulator(kAnyPort));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTRY_COMPARE_WITH_TIMEOUT(window.controller()->state(), LinkController::State::Connected, kAnswerWaitMs);
+    window.composer()->intervalSpin()->setValue(20);
+    window.composer()->countSpin()->setValue(0); // until stopped
+    window.composer()->togglePoll();
+    QVERIFY(window.controller()->isPolling());
+    TrafficMonitor *traffic = window.trafficMonitor();
+    QTRY_VERIFY_WITH_TIMEOUT(traffic->model()->rowCount() >= 6, kAnswerWaitMs);
+    TransactionView *answer = window.answerView();
+
+    // Find the answer's bytes (the function and byte count of the read): the first row found.
+    auto *search = traffic->findChild<QLineEdit *>(QStringLiteral("searchEdit"));
+    QVERIFY(search);
+    search->setText(QStringLiteral("01 03 2C"));
+    traffic->findNext();
+    QVERIFY(traffic->currentRow() >= 0);
+    const quint64 picked = answer->decodeView()->exchange().transactionId;
+    QVERIFY(picked != 0);
+    // More answers come: the picked one stays.
+    const quint64 sent = window.controller()->counters().requestsSent;
+    QTRY_VERIFY_WITH_TIMEOUT(window.controller()->counters().requestsSent >= sent + 5, kAnswerWaitMs);
+    QTest::qWait(2 * TransactionView::kMinRefreshMs);
+    QCOMPARE(answer->decodeView()->exchange().transactionId, picked);
+    auto *live = answer->findChild<QPushButton *>(QStringLiteral("answerBackToLive"));
+    QVERIFY(live);
+    QVERIFY(live->isVisible());
+    QVERIFY(guitest::saveShot(&window, QStringLiteral("workbench-picked-frame.png")));
+
+    // Back to live: the newest answer, and the ones after it.
+    QTest::mouseClick(live, Qt::LeftButton);
+    QVERIFY(!live->isVisible());
+    QVERIFY(answer->decodeView()->exchange().transactionId > picked);
+    QCOMPARE(traffic->currentRow(), -1);
+    const quint64 newest = answer->decodeView()->exchange().transactionId;
+    QTRY_VERIFY_WITH_TIMEOUT(answer->decodeView()->exchange().transactionId > newest, kAnswerWaitMs);
+
+    // A picked frame, then a new poll: live again.
+    traffic->findNext();
+    QVERIFY(live->isVisible());
+    window.composer()->togglePoll();
+    QTRY_VERIFY_WITH_TIMEOUT(!window.controller()->isPolling(), kAnswerWaitMs);
+    window.composer()->togglePoll();
+    QVERIFY(!live->isVisible());
+    window.composer()->togglePoll();
+}
+
+// Issue 26 item 15: the Registers dock kept "Profile: rosrao-gamma" (and the simulator's names)
+// after connecting to another device. The profile is the simulator's: off it, none; back on it, again.
+void TestWorkbench::registersProfileFollowsTheTarget()
+{
+    MainWindow window;
+    QVERIFY(window.startWithSimulator(kAnyPort));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    auto *profile = window.registerTable()->findChild<QLabel *>(QStringLiteral("registerTableProfile"));
+    QVERIFY(profile);
+    QCOMPARE(profile->text(), QStringLiteral("Profile: rosrao-gamma"));
+
+    // Another device: an M221 PLC simulated over Modbus TCP.
+    const ProfileLoadResult plcProfile = ProfileLoader::load(QStringLiteral("m221-plc"));
+    QVERIFY2(plcProfile.ok, qPrintable(plcProfile.errorText()));
+    SimulatorHost plc;
+    QString error;
+    QVERIFY2(plc.load(plcProfile.profile, &error), qPrintable(error));
+    const std::optional<LinkUrl> plcUrl = plc.listen(QStringLiteral("tcp://127.0.0.1:0"), &error);
+    QVERIFY2(plcUrl, qPrintable(error));
+    plc.start();
+    window.connectionBar()->connectButton()->click();
+    QVERIFY(!window.controller()->isConnected());
+    window.connectionBar()->setUrl(*plcUrl);
+    window.connectionBar()->connectButton()->click();
+    QTRY_COMPARE_WITH_TIMEOUT(window.controller()->state(), LinkController::State::Connected, kAnswerWaitMs);
+    QCOMPARE(profile->text(), QStringLiteral("Profile: none"));
+
+    // Back on the built-in simulator: its profile again.
+    window.connectionBar()->connectButton()->click();
+    window.connectionBar()->setUrl(window.simulator()->started().url);
+    window.connectionBar()->connectButton()->click();
+    QTRY_COMPARE_WITH_TIMEOUT(window.controller()->state(), LinkController::State::Connected, kAnswerWaitMs);
+    QCOMPARE(profile->text(), QStringLiteral("Profile: rosrao-gamma"));
+}
+
+// Issue 26 item 16: the status bar's TX/RX went on from one connection to the next; the latency
+// over time, shown again (another source chosen and back), started at the first request the window
+// ever made; the Answer tab's latency and the traffic list's disagreed without saying why.
+void TestWorkbench::eachConnectionCountsAlone()
+{
+    MainWindow window;
+    QVERIFY(window.startWithSimulator(kAnyPort));
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QTRY_COMPARE_WITH_TIMEOUT(window.controller()->state(), LinkController::State::Connected, kAnswerWaitMs);
+    for (quint64 sent = 1; sent <= 2; ++sent) {
+        window.composer()->send();
+        QTRY_COMPARE_WITH_TIMEOUT(window.controller()->counters().requestsSent, sent, kAnswerWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(window.answerView()->shown().has_value(), kAnswerWaitMs);
+    }
+    QTRY_VERIFY_WITH_TIMEOUT(window.linkStatus()->countersText().contains(QStringLiteral("2 requests")), kAnswerWaitMs);
+
+    // Connected again: nothing counted yet.
+    window.connectionBar()->connectButton()->click();
+    window.connectionBar()->connectButton()->click();
+    QTRY_COMPARE_WITH_TIMEOUT(window.controller()->state(), LinkController::State::Connected, kAnswerWaitMs);
+    QCOMPARE(window.controller()->counters().requestsSent, quint64(0));
+    QCOMPARE(window.controller()->counters().bytesOut, quint64(0));
+    QVERIFY2(window.linkStatus()->countersText().startsWith(QStringLiteral("TX 0 B  RX 0 B")), qPrintable(window.linkStatus()->countersText()));
+    window.composer()->send();
+    QTRY_COMPARE_WITH_TIMEOUT(window.controller()->counters().requestsSent, quint64(1), kAnswerWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(window.linkStatus()->countersText().contains(QStringLiteral("1 request")), kAnswerWaitMs);
+
+    // Latency over time shown again (a watch's source chosen, then the bench's): this connection's
+    // one request, not the three since the window opened.
+    WatchDefinition watch;
+    watch.name = QStringLiteral("elsewhere");
+    watch.target = QStringLiteral("tcp://127.0.0.1:1");
+    window.watchWorkspace()->addWatch(watch);
+    LatencyTimePanel *time = window.trendPanels()->latency();
+    QTRY_VERIFY2_WITH_TIMEOUT(time->summary().startsWith(QStringLiteral("1 transactions")), qPrintable(time->summary()), kAnswerWaitMs);
+    LatencySource *source = window.latencyAnalysis()->source();
+    QVERIFY(source->choiceCount() > 1);
+    source->setChoice(source->choiceCount() - 1);
+    source->setChoice(0);
+    QVERIFY2(time->summary().startsWith(QStringLiteral("1 transactions")), qPrintable(time->summary()));
+
+    // The Answer tab says which latency it shows: the transaction's, to the answer's last byte;
+    // a frame picked in the traffic list, to its first byte, as the list's column.
+    auto *header = window.answerView()->decodeView()->findChild<QLabel *>(QStringLiteral("exchangeHeader"));
+    QVERIFY(header);
+    QTRY_VERIFY_WITH_TIMEOUT(header->text().contains(QStringLiteral("to the answer's last byte")), kAnswerWaitMs);
+    QVERIFY(header->toolTip().contains(QStringLiteral("first byte")));
+    // The shown transaction's answer in the traffic list (the newest row of that id).
+    const quint64 id = window.answerView()->shown()->id;
+    TrafficModel *list = window.trafficMonitor()->model();
+    const auto answerRow = [list, id] {
+        for (int row = list->rowCount() - 1; row >= 0; --row) {
+            const FrameExchange e = list->exchangeAt(row);
+            if (e.transactionId == id && e.selected == TrafficDirection::In)
+                return row;
+        }
+        return -1;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(answerRow() >= 0, kAnswerWaitMs);
+    window.trafficMonitor()->selectRow(answerRow());
+    QVERIFY2(header->text().contains(QStringLiteral("to the answer's first byte")), qPrintable(header->text()));
+    QVERIFY(guitest::saveShot(&window, QStringLiteral("workbench-latency-named.png")));
 }
 
 QTEST_MAIN(TestWorkbench)

@@ -71,6 +71,7 @@ private Q_SLOTS:
     void csvAndJsonLines();
     void shownFramesOnly();
     void throughTheDialogs();
+    void typedEndingChoosesTheFormat();
     void cleanupTestCase();
 };
 
@@ -223,6 +224,45 @@ void TestTrafficSave::throughTheDialogs()
     QVERIFY2(message->text().contains(QStringLiteral("1 frame(s) saved")), qPrintable(message->text()));
     message->close();
     verdict->setCurrentIndex(0);
+}
+
+// Issue 26 item 14: a name typed as "typed.pcapng" while the filter said journal was written as
+// "typed.pcapng.mbscope.journal". The typed ending chooses the format; a name without one still
+// gets the filter's.
+void TestTrafficSave::typedEndingChoosesTheFormat()
+{
+    QCOMPARE(m_monitor->model()->rowCount(), 2 * kReads);
+    QTRY_VERIFY(!m_monitor->findChild<QMessageBox *>(QStringLiteral("trafficSavedMessage")));
+    whenShown<QFileDialog>([this](QFileDialog *dialog) {
+        dialog->setOption(QFileDialog::DontUseNativeDialog);
+        QCOMPARE(dialog->selectedNameFilter(), TrafficSaver::nameFilters().at(int(TrafficSaver::Format::Journal)));
+        dialog->selectFile(m_dir.filePath(QStringLiteral("typed.pcapng")));
+        QMetaObject::invokeMethod(dialog, "accept");
+    });
+    m_monitor->findChild<QToolButton *>(QStringLiteral("saveTrafficButton"))->click();
+    const QString saved = m_dir.filePath(QStringLiteral("typed.pcapng"));
+    QTRY_VERIFY(QFile::exists(saved) || QFile::exists(saved + QStringLiteral(".mbscope.journal")));
+    QVERIFY(!QFile::exists(saved + QStringLiteral(".mbscope.journal")));
+    QFile file(saved);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.read(4), QByteArray::fromHex("0A0D0D0A")); // a pcapng section header block
+    QTRY_VERIFY(m_monitor->findChild<QMessageBox *>(QStringLiteral("trafficSavedMessage")));
+    auto *message = m_monitor->findChild<QMessageBox *>(QStringLiteral("trafficSavedMessage"));
+    QVERIFY2(message->text().contains(QStringLiteral("typed.pcapng")), qPrintable(message->text()));
+    message->close();
+    QTRY_VERIFY(!m_monitor->findChild<QMessageBox *>(QStringLiteral("trafficSavedMessage")));
+
+    // A name without an ending: the filter's format (pcap) and its ending.
+    whenShown<QFileDialog>([this](QFileDialog *dialog) {
+        dialog->setOption(QFileDialog::DontUseNativeDialog);
+        dialog->selectNameFilter(TrafficSaver::nameFilters().at(int(TrafficSaver::Format::Pcap)));
+        dialog->selectFile(m_dir.filePath(QStringLiteral("plain")));
+        QMetaObject::invokeMethod(dialog, "accept");
+    });
+    m_monitor->findChild<QToolButton *>(QStringLiteral("saveTrafficButton"))->click();
+    QTRY_VERIFY(QFile::exists(m_dir.filePath(QStringLiteral("plain.pcap"))));
+    QTRY_VERIFY(m_monitor->findChild<QMessageBox *>(QStringLiteral("trafficSavedMessage")));
+    m_monitor->findChild<QMessageBox *>(QStringLiteral("trafficSavedMessage"))->close();
 }
 
 void TestTrafficSave::cleanupTestCase()

@@ -15,6 +15,7 @@
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QSpinBox>
+#include <QtWidgets/QTableWidget>
 #include <QtTest/QtTest>
 
 using namespace mbscope;
@@ -69,6 +70,7 @@ private Q_SLOTS:
     void namesEveryProblem();
     void okIsRefusedWhileSomethingIsWrong();
     void enronHalvesTheQuantityLimit();
+    void ruleUsesTheThresholdsItShows();
     void accessKeysAreUnique_data();
     void accessKeysAreUnique();
 };
@@ -128,6 +130,81 @@ void TestWatchDialog::enronHalvesTheQuantityLimit()
     dialog.functionBox()->setCurrentIndex(dialog.functionBox()->findData(1));
     QVERIFY(!dialog.enronBox()->isEnabled());
     QCOMPARE(dialog.quantitySpin()->maximum(), 2000);
+}
+
+// Issue 26 item 4: "above" compared with High and ignored Low, so a rule that read "above, Low 100"
+// fired on everything above High's 0. Each condition shows only the thresholds it uses (the others
+// empty and not editable), a number left in one it does not use is refused, and so are thresholds
+// that make no sense for the point, each naming the rule and the column.
+void TestWatchDialog::ruleUsesTheThresholdsItShows()
+{
+    WatchDialog dialog;
+    dialog.setWatch(sample());
+    WatchRuleTable *table = dialog.ruleTable();
+    auto *condition = qobject_cast<QComboBox *>(table->cellWidget(0, WatchRuleTable::ConditionColumn));
+    QVERIFY(condition);
+    QTableWidgetItem *low = table->item(0, WatchRuleTable::LowColumn);
+    QTableWidgetItem *high = table->item(0, WatchRuleTable::HighColumn);
+    const auto problemsNow = [&dialog] {
+        QStringList problems;
+        (void)dialog.watch(&problems);
+        return problems.join(QLatin1Char('\n'));
+    };
+
+    // outside 10..1000 made "above": High kept, Low emptied and closed.
+    condition->setCurrentIndex(condition->findData(int(WatchRule::Condition::Above)));
+    QCOMPARE(low->text(), QString());
+    QVERIFY(!(low->flags() & Qt::ItemIsEditable));
+    QVERIFY(high->flags() & Qt::ItemIsEditable);
+    QCOMPARE(high->text(), QStringLiteral("1000"));
+    QStringList problems;
+    WatchDefinition read = dialog.watch(&problems);
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+    QCOMPARE(read.rules.value(0).condition, WatchRule::Condition::Above);
+    QCOMPARE(read.rules.value(0).high, 1000.0);
+
+    // A number in the column "above" does not use is refused, never ignored.
+    low->setText(QStringLiteral("100"));
+    QVERIFY2(problemsNow().contains(QStringLiteral("rule 1: Low: 'above' does not use Low")), qPrintable(problemsNow()));
+
+    // "below" uses Low alone: High's number moves to Low when Low is empty.
+    low->setText(QString());
+    condition->setCurrentIndex(condition->findData(int(WatchRule::Condition::Below)));
+    QCOMPARE(low->text(), QStringLiteral("1000"));
+    QCOMPARE(high->text(), QString());
+    QVERIFY(!(high->flags() & Qt::ItemIsEditable));
+    low->setText(QString());
+    QVERIFY2(problemsNow().contains(QStringLiteral("rule 1: Low: 'below' needs a number here")), qPrintable(problemsNow()));
+
+    // A range whose low is above its high.
+    condition->setCurrentIndex(condition->findData(int(WatchRule::Condition::Outside)));
+    QVERIFY(low->flags() & Qt::ItemIsEditable);
+    QVERIFY(high->flags() & Qt::ItemIsEditable);
+    low->setText(QStringLiteral("2000"));
+    high->setText(QStringLiteral("1000"));
+    QVERIFY2(problemsNow().contains(QStringLiteral("rule 1: Low: low 2000 is above high 1000")), qPrintable(problemsNow()));
+
+    // A mask wider than the point (hv is one 16-bit register).
+    table->item(0, WatchRuleTable::PointColumn)->setText(QStringLiteral("hv"));
+    condition->setCurrentIndex(condition->findData(int(WatchRule::Condition::Bits)));
+    low->setText(QStringLiteral("65536"));
+    QVERIFY2(problemsNow().contains(QStringLiteral("rule 1: Low: mask 0x10000 has bits beyond the 16 bit(s) of 'hv'")),
+             qPrintable(problemsNow()));
+    // A point the watch does not have.
+    table->item(0, WatchRuleTable::PointColumn)->setText(QStringLiteral("volts"));
+    QVERIFY2(problemsNow().contains(QStringLiteral("rule 1: Point: 'volts' is neither")), qPrintable(problemsNow()));
+
+    // A rule read from a session shows only what it uses.
+    WatchDefinition watch = sample();
+    watch.rules[0].condition = WatchRule::Condition::Above;
+    watch.rules[0].low = 0;
+    watch.rules[0].high = 80;
+    dialog.setWatch(watch);
+    QCOMPARE(dialog.ruleTable()->item(0, WatchRuleTable::LowColumn)->text(), QString());
+    QCOMPARE(dialog.ruleTable()->item(0, WatchRuleTable::HighColumn)->text(), QStringLiteral("80"));
+    problems.clear();
+    QCOMPARE(dialog.watch(&problems).rules, watch.rules);
+    QVERIFY(problems.isEmpty());
 }
 
 void TestWatchDialog::accessKeysAreUnique_data()

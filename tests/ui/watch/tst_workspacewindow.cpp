@@ -111,6 +111,7 @@ private Q_SLOTS:
     void latencyOfOneWatchOrLink();
     void statusBarCountsWatchTraffic();
     void polish();
+    void profileKeepsEveryBlock();
 };
 
 // Ctrl+F5, the Workspace menu's "Poll this watch" and the window's context menu start and stop the
@@ -401,6 +402,48 @@ void TestWorkspaceWindow::polish()
     // Upper-case hex, as the rest of the window writes it.
     QCOMPARE(workspace->window(0)->model()->index(0, WatchTableModel::AddressColumn).data().toString(), QStringLiteral("171 (0x00AB)"));
     QCOMPARE(WatchFactory::describeBlock(3, 0xAB, 2), QStringLiteral("holding 0x00AB x2"));
+}
+
+// Issue 26 item 5: New watches from a device profile on the M221, whose 8000 %MW are one entry
+// (longer than a read) and whose 1024 %M are another. Every address of both lands in a watch, the
+// long one cut into reads of 125 registers, and each value named as the PLC names it (%MW7999,
+// %M5), never "%M0-%M1023[5]". The last block is polled and answered.
+void TestWorkspaceWindow::profileKeepsEveryBlock()
+{
+    QString url, error;
+    std::unique_ptr<SimulatorHost> plc = servePlc(&url, &error);
+    QVERIFY2(plc, qPrintable(error));
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.showTab(QStringLiteral("watches"));
+    WatchWorkspace *workspace = window.watchWorkspace();
+    const int made = workspace->addFromProfile(QStringLiteral("m221-plc"), 1, url, 1000, &error);
+    QVERIFY2(made > 0, qPrintable(error));
+    QCOMPARE(made, 64 + 1); // 8000 / 125 holding reads, the 1024 coils in one
+    QSet<int> holding, coils;
+    int lastHolding = -1;
+    for (int i = 0; i < workspace->count(); ++i) {
+        const WatchDefinition &watch = workspace->watches().watches.at(i);
+        QVERIFY(watch.quantity <= (watch.function <= 2 ? WatchFactory::kMaxBits : WatchFactory::kMaxRegisters));
+        for (const WatchPoint &point : watch.points) {
+            const QString prefix = watch.function == 1 ? QStringLiteral("%M") : QStringLiteral("%MW");
+            QCOMPARE(point.name, prefix + QString::number(point.address));
+            (watch.function == 1 ? coils : holding).insert(point.address);
+        }
+        if (watch.function == 3 && watch.address + watch.quantity == 8000)
+            lastHolding = i;
+    }
+    QCOMPARE(holding.size(), 8000);
+    QCOMPARE(coils.size(), 1024);
+    QVERIFY(lastHolding >= 0);
+    // The window shows the names; the last block of %MW is read like the first.
+    WatchWindow *last = workspace->window(lastHolding);
+    const int rows = last->model()->rowCount();
+    QCOMPARE(last->model()->index(rows - 1, WatchTableModel::NameColumn).data().toString(), QStringLiteral("%MW7999"));
+    workspace->startWatch(lastHolding);
+    QTRY_VERIFY_WITH_TIMEOUT(last->counters().ok >= 1, kWaitMs);
+    workspace->stopAll();
 }
 
 QTEST_MAIN(TestWorkspaceWindow)
