@@ -29,6 +29,7 @@
 #include <csignal>
 #include <memory>
 #include <unistd.h>
+#include <vector>
 
 using namespace mbscope::testdocs;
 
