@@ -4,6 +4,7 @@
 
 #include "cli.h"
 #include "faultswatcher.h"
+#include "readyfile.h"
 #include "recordoptions.h"
 #include "simulatesession.h"
 
@@ -137,8 +138,14 @@ int runSimulate(const QStringList &arguments)
     const QCommandLineOption seedOption(QStringLiteral("seed"),
                                         QStringLiteral("Seed of the value generators and fault rules (default: the profile's and faults file's)."),
                                         QStringLiteral("N"));
+    const QCommandLineOption readyOption(QStringLiteral("ready-file"),
+                                         QStringLiteral("Once every endpoint listens, write FILE (atomically) with the listening URLs, one per line "
+                                                        "(the ports chosen for port 0 included); it is removed when the simulator stops, and a "
+                                                        "file left by an earlier run is removed at start. Scripts wait for it: "
+                                                        "until [ -e FILE ]; do sleep 0.1; done"),
+                                         QStringLiteral("FILE"));
     const QCommandLineOption listOption(QStringLiteral("list-profiles"), QStringLiteral("List the shipped profiles and exit."));
-    parser.addOptions({profileOption, listenOption, faultsOption, durationOption, quietOption, seedOption, listOption, logOption});
+    parser.addOptions({profileOption, listenOption, faultsOption, durationOption, quietOption, seedOption, readyOption, listOption, logOption});
     recordOptions.addTo(parser);
     if (!parser.parse(arguments)) {
         err << "mbscope simulate: " << parser.errorText() << '\n';
@@ -230,6 +237,13 @@ int runSimulate(const QStringList &arguments)
         return kExitUsage;
     }
 
+    ReadyFile ready;
+    QString readyError;
+    if (parser.isSet(readyOption) && !ready.prepare(parser.value(readyOption), &readyError)) {
+        err << "mbscope simulate: " << readyError << '\n';
+        return kExitUsage;
+    }
+
     SimulateSession::Options options;
     options.quiet = parser.isSet(quietOption);
     SimulateSession session(out, options);
@@ -277,6 +291,14 @@ int runSimulate(const QStringList &arguments)
     if (durationMs > 0)
         QTimer::singleShot(std::chrono::milliseconds(durationMs), &loop, &QEventLoop::quit);
     session.start();
+    QStringList listening;
+    for (SimEndpoint *endpoint : session.simulator().endpoints())
+        listening.append(endpoint->name());
+    if (!ready.publish(listening, &readyError)) {
+        session.stop();
+        err << "mbscope simulate: " << readyError << '\n';
+        return kExitUsage;
+    }
     loop.exec();
     session.stop();
     session.setTrafficLog(nullptr);

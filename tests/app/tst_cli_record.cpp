@@ -55,6 +55,8 @@ private slots:
     void journalExportedForTshark();
     void killedPollRecovered();
     void simulateRecords();
+    void simulateReadyFile();
+    void simulateReadyFileRefused();
     void exchangeCommandsRecord();
     void runRecordsIntoTheSessionsCapture();
     void existingJournalRefused();
@@ -279,6 +281,62 @@ void TestCliRecord::simulateRecords()
     QVERIFY2(notes.at(0).startsWith(R"({"endpoints":{"client":"127.0.0.1:)"), notes.at(0).constData());
     QVERIFY2(notes.at(1).contains(R"("faults":["slow"])"), notes.at(1).constData());
     QVERIFY2(notes.at(2).startsWith(R"({"endpoints":{"client":"127.0.0.1:)") && notes.at(2) != notes.at(0), notes.at(2).constData());
+}
+
+// Issue 26, item 17: the guide's examples started `simulate &` and used it before it listened.
+// --ready-file FILE appears once every endpoint listens, holding their URLs (free ports chosen
+// for port 0 included), replaces a file left by an earlier run, and goes when the simulator stops.
+void TestCliRecord::simulateReadyFile()
+{
+    const QString ready = m_dir.filePath(QStringLiteral("sim.ready"));
+    {
+        QFile stale(ready);
+        QVERIFY(stale.open(QIODevice::WriteOnly));
+        stale.write("rtu-tcp://127.0.0.1:1\n"); // an earlier run's, killed with SIGKILL
+    }
+    QProcess sim;
+    sim.start(mbscopePath(), {QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--quiet"),
+                              QStringLiteral("--listen"), QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--listen"),
+                              QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--ready-file"), ready});
+    QVERIFY2(sim.waitForStarted(30000), qPrintable(sim.errorString()));
+    QStringList urls;
+    for (int i = 0; i < 600 && sim.state() == QProcess::Running; ++i) { // waits up to a minute on a loaded machine
+        QFile file(ready);
+        if (file.open(QIODevice::ReadOnly)) {
+            const QString text = QString::fromUtf8(file.readAll());
+            if (!text.contains(QLatin1String("127.0.0.1:1\n"))) {
+                urls = text.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+                break;
+            }
+        }
+        QThread::msleep(100);
+    }
+    QVERIFY2(urls.size() == 2, qPrintable(QStringLiteral("ready file: %1; simulate said: %2 %3")
+                                             .arg(urls.join(QLatin1Char('|')), QString::fromUtf8(sim.readAllStandardOutput()),
+                                                  QString::fromUtf8(sim.readAllStandardError()))));
+    QVERIFY2(urls.at(0).startsWith(QLatin1String("rtu-tcp://127.0.0.1:")) && !urls.at(0).endsWith(QLatin1String(":0")), qPrintable(urls.at(0)));
+    QVERIFY2(urls.at(1).startsWith(QLatin1String("tcp://127.0.0.1:")) && !urls.at(1).endsWith(QLatin1String(":0")), qPrintable(urls.at(1)));
+    // Read at once, with no wait: both answer.
+    for (const QString &url : std::as_const(urls)) {
+        const CliResult r = runMbscope(QStringList{QStringLiteral("read"), QStringLiteral("--target"), url} + kSettingsRead);
+        QVERIFY2(r.exitCode == 0, r.describe().constData());
+    }
+    ::kill(pid_t(sim.processId()), SIGINT);
+    QVERIFY(sim.waitForFinished(30000));
+    QCOMPARE(sim.exitCode(), 0);
+    QVERIFY2(!QFileInfo::exists(ready), "the ready file outlived the simulator");
+}
+
+void TestCliRecord::simulateReadyFileRefused()
+{
+    // A folder that does not exist: said before any port is bound, exit 2.
+    const QString path = m_dir.filePath(QStringLiteral("no-such-folder/sim.ready"));
+    const CliResult r = runMbscope({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                                    QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--duration"), QStringLiteral("5s"),
+                                    QStringLiteral("--ready-file"), path});
+    QVERIFY2(r.finished && r.exitCode == 2, r.describe().constData());
+    QVERIFY2(r.errText().contains(QStringLiteral("--ready-file ") + path + QStringLiteral(": the folder")), r.describe().constData());
+    QVERIFY2(!r.outText().contains(QLatin1String("listening")), r.describe().constData());
 }
 
 void TestCliRecord::exchangeCommandsRecord()
