@@ -14,6 +14,7 @@
 #include "discovery/scanwatches.h"
 #include "discovery/unitscanner.h"
 #include "protocol/framing.h"
+#include "traffic/trafficrecording.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QCommandLineParser>
@@ -60,6 +61,7 @@ struct Common {
     bool all = false;
     QString watchesPath;
     qint64 maxTimeMs = 600000;
+    ScanRecord record;
 };
 
 int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, QTextStream &err)
@@ -70,7 +72,12 @@ int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, 
         err << "mbscope scan: " << problem << '\n';
         return ExitUsage;
     }
+    TrafficRecording recording;
+    if (!openRecording(recording, common.record.settings, common.record.metadata, QStringLiteral("scan"), err))
+        return ExitUsage;
     UnitScanner scanner;
+    if (recording.isOpen())
+        scanner.channel()->setTrafficLog(recording.log());
     InterruptWatcher interrupts;
     ProgressLine line;
     QEventLoop loop;
@@ -97,6 +104,8 @@ int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, 
     scanner.start(settings);
     loop.exec();
     line.clear();
+    scanner.channel()->setTrafficLog(nullptr); // the last frames reach the journal
+    finishRecording(recording, err);
 
     const QList<UnitProbe> &results = scanner.results();
     const ScanProgress progress = scanner.progress();
@@ -130,7 +139,12 @@ int runMap(const Common &common, MapScanSettings settings, const QString &profil
         err << "mbscope scan: " << problem << '\n';
         return ExitUsage;
     }
+    TrafficRecording recording;
+    if (!openRecording(recording, common.record.settings, common.record.metadata, QStringLiteral("scan"), err))
+        return ExitUsage;
     MapScanner scanner;
+    if (recording.isOpen())
+        scanner.channel()->setTrafficLog(recording.log());
     InterruptWatcher interrupts;
     ProgressLine line;
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &MapScanner::stop);
@@ -140,6 +154,8 @@ int runMap(const Common &common, MapScanSettings settings, const QString &profil
     clock.start();
     const std::optional<RegisterMap> map = scanner.run(settings);
     line.clear();
+    scanner.channel()->setTrafficLog(nullptr); // the last frames reach the journal
+    finishRecording(recording, err);
     const qint64 elapsedMs = clock.elapsed();
     if (!map)
         return ExitUsage;
@@ -251,6 +267,8 @@ int runScan(const QStringList &arguments)
                                        QStringLiteral("UNIT"));
     const QCommandLineOption clientsOpt(QStringLiteral("clients"), QStringLiteral("--timing: most TCP clients tried (default 16)."),
                                         QStringLiteral("N"));
+    const RecordOptions recordOptions;
+    recordOptions.addTo(parser);
     parser.addOptions({lineOpt, baudsOpt, paritiesOpt, stopBitsOpt, firstOpt, timingOpt, clientsOpt});
     const QCommandLineOption forceOpt = OutputPath::forceOption();
     parser.addOptions({targetOpt, unitsOpt, allIdsOpt, functionOpt, addressOpt, quantityOpt, timeoutOpt, gapOpt, maxTimeOpt,
@@ -283,6 +301,10 @@ int runScan(const QStringList &arguments)
     common.json = parser.isSet(jsonOpt);
     common.all = parser.isSet(allOpt);
     common.watchesPath = parser.value(watchesOpt);
+    if (!recordOptions.read(parser, QStringLiteral("scan"), common.record.settings, err))
+        return ExitUsage;
+    common.record.metadata = commandMetadata(QStringLiteral("scan"), arguments);
+    common.record.metadata.target = common.url.toString();
     const ScanOptionReader read{parser, err};
     if (!read.durationMs(maxTimeOpt, 1, 24LL * 3600 * 1000, &common.maxTimeMs) || !checkWritable(QStringLiteral("--watches"), common.watchesPath, parser.isSet(forceOpt), err))
         return ExitUsage;
@@ -312,7 +334,7 @@ int runScan(const QStringList &arguments)
         settings.maxClients = int(clients);
         settings.timeoutMs = parser.isSet(timeoutOpt) ? int(timeoutMs) : 1000;
         settings.maxDurationMs = common.maxTimeMs;
-        return runTimingScan(settings, common.json, out, err);
+        return runTimingScan(settings, common.json, common.record, out, err);
     }
     if (parser.isSet(clientsOpt)) {
         err << "mbscope scan: --clients belongs to --timing UNIT\n";
@@ -369,7 +391,7 @@ int runScan(const QStringList &arguments)
         settings.function = quint8(function);
         settings.address = quint16(address);
         settings.quantity = quint16(quantity);
-        return runLineScan(settings, common.json, out, err);
+        return runLineScan(settings, common.json, common.record, out, err);
     }
     for (const QCommandLineOption *lineOnly : {&baudsOpt, &paritiesOpt, &stopBitsOpt, &firstOpt}) {
         if (parser.isSet(*lineOnly)) {

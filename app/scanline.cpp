@@ -6,6 +6,7 @@
 #include "scanreport.h"
 
 #include "protocol/hexnumber.h"
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QJsonArray>
@@ -84,13 +85,18 @@ QJsonObject json(const LineScanSettings &settings, const QList<LineTrial> &trial
 
 } // namespace
 
-int runLineScan(const LineScanSettings &settings, bool asJson, QTextStream &out, QTextStream &err)
+int runLineScan(const LineScanSettings &settings, bool asJson, const ScanRecord &record, QTextStream &out, QTextStream &err)
 {
     if (const QString problem = settings.problem(); !problem.isEmpty()) {
         err << "mbscope scan: " << problem << '\n';
         return ExitUsage;
     }
+    TrafficRecording recording;
+    if (!openRecording(recording, record.settings, record.metadata, QStringLiteral("scan"), err))
+        return ExitUsage;
     LineScanner scanner;
+    if (recording.isOpen())
+        scanner.channel()->setTrafficLog(recording.log()); // every setting tried, a link of its own
     InterruptWatcher interrupts;
     ProgressLine line;
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &LineScanner::stop);
@@ -104,6 +110,8 @@ int runLineScan(const LineScanSettings &settings, bool asJson, QTextStream &out,
     clock.start();
     const std::optional<QList<LineTrial>> trials = scanner.run(settings);
     line.clear();
+    scanner.channel()->setTrafficLog(nullptr); // the last frames reach the journal
+    finishRecording(recording, err);
     if (!trials)
         return ExitUsage;
     if (scanner.end() == ScanEnd::LinkError && !trials->isEmpty() && trials->size() == 1) {

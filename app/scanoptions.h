@@ -1,5 +1,7 @@
 #pragma once
 
+#include "recordoptions.h"
+
 #include <QtCore/QCommandLineOption>
 #include <QtCore/QString>
 
@@ -21,6 +23,13 @@ struct ScanOptionReader {
     bool integer(const QCommandLineOption &option, qint64 low, qint64 high, qint64 *value) const;
     // A comma-separated list of whole numbers within [low, high].
     bool integers(const QCommandLineOption &option, qint64 low, qint64 high, QList<qint64> *values) const;
+};
+
+// --record FILE of a scan: opened by the scan once its settings are known good (a usage error
+// leaves no journal), every connection the scan opens on it, closed when the scan is done.
+struct ScanRecord {
+    RecordSettings settings;
+    TrafficMetadata metadata;
 };
 
 } // namespace mbscope::app

@@ -5,6 +5,8 @@
 #include "progressline.h"
 #include "scanreport.h"
 
+#include "traffic/trafficrecording.h"
+
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
@@ -98,13 +100,19 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, ScanEnd end
 
 } // namespace
 
-int runTimingScan(const TimingScanSettings &settings, bool asJson, QTextStream &out, QTextStream &err)
+int runTimingScan(const TimingScanSettings &settings, bool asJson, const ScanRecord &record, QTextStream &out, QTextStream &err)
 {
     if (const QString problem = settings.problem(); !problem.isEmpty()) {
         err << "mbscope scan: " << problem << '\n';
         return ExitUsage;
     }
+    TrafficRecording recording;
+    if (!openRecording(recording, record.settings, record.metadata, QStringLiteral("scan"), err))
+        return ExitUsage;
+    recording.log()->setShared(true); // the pipelined burst and every client on engines of their own
     TimingScanner scanner;
+    if (recording.isOpen())
+        scanner.setTrafficLog(recording.log());
     InterruptWatcher interrupts;
     ProgressLine line;
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &TimingScanner::stop);
@@ -114,6 +122,8 @@ int runTimingScan(const TimingScanSettings &settings, bool asJson, QTextStream &
                      [&](const ScanProgress &p) { line.show(ScanReport::progressText(QStringLiteral("steps"), p, part)); });
     const std::optional<TimingReport> report = scanner.run(settings);
     line.clear();
+    scanner.setTrafficLog(nullptr); // the last frames reach the journal
+    finishRecording(recording, err);
     if (!report)
         return ExitUsage;
     if (report->firstAnswerMs < 0) {

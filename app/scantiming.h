@@ -1,5 +1,7 @@
 #pragma once
 
+#include "scanoptions.h"
+
 #include "discovery/timingscanner.h"
 
 class QTextStream;
@@ -8,6 +10,6 @@ namespace mbscope::app {
 
 // mbscope scan --timing UNIT: the timing scan run, its measurements and the settings they give
 // (mbscope's watch link gapMs and timeoutMs, poll's --timeout, Telegraf's modbus input), or JSON.
-int runTimingScan(const TimingScanSettings &settings, bool json, QTextStream &out, QTextStream &err);
+int runTimingScan(const TimingScanSettings &settings, bool json, const ScanRecord &record, QTextStream &out, QTextStream &err);
 
 } // namespace mbscope::app

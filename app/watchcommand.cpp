@@ -2,12 +2,14 @@
 
 #include "cli.h"
 #include "interruptwatcher.h"
+#include "recordoptions.h"
 #include "watchreport.h"
 #include "watchservice.h"
 
 #include "fleet/watchrunner.h"
 #include "session/sessionreader.h"
 #include "time/duration.h"
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QDir>
@@ -35,6 +37,7 @@ struct WatchOptions {
     bool json = false;
     bool quiet = false;
     WatchService::Options service; // --metrics, --mqtt..., --log-level
+    RecordSettings record;         // --record, --force
 };
 
 // Parses the command line into options; false when the command should end now with *status
@@ -71,6 +74,8 @@ bool parseWatchOptions(const QStringList &arguments, WatchOptions *options, int 
                                                     "\"summary\", ...}."));
     const QCommandLineOption quietOpt(QStringLiteral("quiet"), QStringLiteral("No line per poll: rule events, errors and the counters."));
     parser.addOptions({csvOpt, csvModeOpt, durationOpt, countOpt, jsonOpt, quietOpt});
+    const RecordOptions recordOptions;
+    recordOptions.addTo(parser);
     WatchService::addOptions(parser);
     parser.addPositionalArgument(QStringLiteral("session"), QStringLiteral("A session document with watches (*.mbscope.json)."));
     *status = ExitUsage;
@@ -125,6 +130,8 @@ bool parseWatchOptions(const QStringList &arguments, WatchOptions *options, int 
             return false;
         }
     }
+    if (!recordOptions.read(parser, QStringLiteral("watch"), options->record, err))
+        return false;
     options->json = parser.isSet(jsonOpt);
     options->quiet = parser.isSet(quietOpt);
     QString error;
@@ -199,6 +206,8 @@ int runWatch(const QStringList &arguments)
         }
     }
 
+    // --record: declared before the runner, so that the journal outlives its engines.
+    TrafficRecording recording;
     WatchRunner runner(watches);
     WatchService service(runner, options.service);
     {
@@ -208,6 +217,25 @@ int runWatch(const QStringList &arguments)
             return ExitUsage;
         }
     }
+    // --record: one journal for every link, each link's engine on a link id of its own (the log
+    // shared between their threads).
+    {
+        TrafficMetadata metadata = commandMetadata(QStringLiteral("watch"), arguments);
+        QStringList targets;
+        for (const WatchDefinition &w : std::as_const(watches.watches)) {
+            if (w.enabled && !targets.contains(w.target))
+                targets.append(w.target);
+        }
+        if (targets.size() == 1)
+            metadata.target = targets.constFirst();
+        metadata.settings.insert(QStringLiteral("targets"), QJsonArray::fromStringList(targets));
+        metadata.settings.insert(QStringLiteral("watches"), enabled);
+        if (!openRecording(recording, options.record, metadata, QStringLiteral("watch"), err))
+            return ExitUsage;
+        recording.log()->setShared(true);
+    }
+    if (recording.isOpen())
+        runner.setTrafficLog(recording.log());
     service.setWatches(watches);
     runner.setLog(csv);
     QEventLoop loop;
@@ -328,6 +356,8 @@ int runWatch(const QStringList &arguments)
     loop.exec();
 
     service.stop();
+    runner.setTrafficLog(nullptr); // every link closed: the journal is complete
+    finishRecording(recording, err);
     const QString unpublished = service.mqttNeverReached();
     if (!unpublished.isEmpty())
         service.log().error(unpublished);

@@ -16,6 +16,7 @@
 
 #include <deque>
 #include <memory>
+#include <utility>
 
 namespace mbscope {
 
@@ -136,8 +137,11 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
 
     std::deque<Slot> queue;
     quint64 firstSlot = 1;
-    QHash<quint64, quint64> waiting; // transaction id -> slot
-    QHash<quint64, CaptureExchange> timedOut;
+    // A transaction is its link and its id: the engines of one journal (a watch run's links, a
+    // scan's clients) each number theirs from 1.
+    using Key = std::pair<quint16, quint64>;
+    QHash<Key, quint64> waiting; // link and transaction id -> slot
+    QHash<Key, CaptureExchange> timedOut;
     QHash<quint16, Framing> framings;
     std::vector<std::unique_ptr<ResponseVerdict>> verdicts(8);
     const auto verdictFor = [&](Framing framing) -> ResponseVerdict & {
@@ -257,13 +261,14 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
         if (e.direction == TrafficDirection::Out) {
             if (e.transactionId == 0)
                 return;
-            const auto again = waiting.constFind(e.transactionId);
+            const Key key{e.link, e.transactionId};
+            const auto again = waiting.constFind(key);
             Slot *s = nullptr;
             if (again != waiting.cend()) {
                 s = &queue[std::size_t(again.value() - firstSlot)]; // a retry: the last attempt counts
             } else {
                 s = &push(e.link);
-                waiting.insert(e.transactionId, s->exchange.transaction.id);
+                waiting.insert(key, s->exchange.transaction.id);
             }
             s->exchange.requestPacket = e.sequence + 1;
             s->exchange.transaction.request = bytes;
@@ -271,14 +276,15 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
             return;
         }
         const bool unsolicited = e.transactionId == 0 || e.verdict == TrafficVerdict::Unsolicited || e.verdict == TrafficVerdict::Sent;
-        const auto pending = unsolicited ? waiting.end() : waiting.find(e.transactionId);
+        const Key key{e.link, e.transactionId};
+        const auto pending = unsolicited ? waiting.end() : waiting.find(key);
         if (e.verdict == TrafficVerdict::Late || unsolicited || pending == waiting.end()) {
             Slot &s = push(e.link);
             Transaction &t = s.exchange.transaction;
             s.exchange.responsePacket = e.sequence + 1;
             t.response = bytes;
             t.firstByteNs = t.doneNs = wall(e.tNs);
-            const auto before = timedOut.constFind(e.transactionId);
+            const auto before = timedOut.constFind(key);
             if (e.verdict == TrafficVerdict::Late && before != timedOut.cend()) {
                 ++result.lateResponses;
                 t.request = before->transaction.request;
@@ -308,7 +314,7 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
         }
         judge(t, s.exchange.framing);
         if (t.status == TransactionStatus::Timeout)
-            timedOut.insert(e.transactionId, s.exchange);
+            timedOut.insert(key, s.exchange);
         s.done = true;
         emitReady();
     }, onNote);

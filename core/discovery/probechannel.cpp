@@ -17,7 +17,10 @@ ProbeChannel::ProbeChannel(QObject *parent)
     m_engine->setFramesPublished(true);
     connect(m_engine, &TransactionEngine::transactionsFinished, this, &ProbeChannel::onTransactions);
     connect(m_engine, &TransactionEngine::framesLogged, this,
-            [this](const QList<TrafficFrame> &frames, const QString &) { onFrames(frames); });
+            [this](const QList<TrafficFrame> &frames, const QString &link) {
+                onFrames(frames);
+                Q_EMIT framesLogged(frames, link);
+            });
 }
 
 ProbeChannel::~ProbeChannel() = default;
@@ -30,6 +33,11 @@ void ProbeChannel::setTarget(const LinkUrl &url)
     EngineOptions options;
     options.batchIntervalMs = 1;
     m_engine->setTarget(url, options);
+}
+
+void ProbeChannel::setTrafficLog(TrafficLog *log)
+{
+    m_engine->setTrafficLog(log);
 }
 
 void ProbeChannel::setLinkFactory(const LinkFactory &factory)

@@ -14,6 +14,7 @@
 namespace mbscope {
 
 class Link;
+class TrafficLog;
 class TransactionEngine;
 
 // One request at a time to a device, for the scans: a PDU completed for the link's framing and
@@ -35,6 +36,10 @@ public:
     void setLinkFactory(const LinkFactory &factory);
     [[nodiscard]] const LinkUrl &target() const { return m_url; }
     void setGapMs(int gapMs) { m_gapMs = gapMs; }
+    // Every frame in and out goes to log (a command's --record, the window's recording) until
+    // setTrafficLog(nullptr), which writes the last ones to its journal; log must outlive that,
+    // and be shared (TrafficLog::setShared) when another engine writes it too.
+    void setTrafficLog(TrafficLog *log);
     [[nodiscard]] int gapMs() const { return m_gapMs; }
 
     // Sends pdu to unit after the gap; answered() follows once. One at a time: a call while a
@@ -60,6 +65,9 @@ public:
 
 Q_SIGNALS:
     void answered(const mbscope::Transaction &transaction, const QByteArray &bytesRead);
+    // Every frame in and out as the engine logs it (TransactionEngine::framesLogged): for a
+    // traffic view.
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void cancelled();
 
 private:

@@ -91,6 +91,12 @@ bool TimingScanner::mayContinue(qint64 nextMs)
     return m_end == ScanEnd::Completed;
 }
 
+void TimingScanner::setTrafficLog(TrafficLog *log)
+{
+    m_log = log;
+    m_channel->setTrafficLog(log);
+}
+
 std::optional<ProbeChannel::Answer> TimingScanner::ask(int quantity, int timeoutMs, bool measured)
 {
     QElapsedTimer took;
@@ -374,6 +380,8 @@ void TimingScanner::pipelining(TimingReport &report)
     options.pipelineDepth = m_settings.pipelineDepth;
     options.batchIntervalMs = 1;
     engine.setTarget(m_settings.url, options);
+    if (m_log)
+        engine.setTrafficLog(m_log);
     openAndSettle(engine, m_settings.url.connectTimeoutMs, settleMs(report), this);
     if (m_stopRequested)
         return;
@@ -424,6 +432,8 @@ void TimingScanner::clients(TimingReport &report)
         EngineOptions options;
         options.batchIntervalMs = 1;
         c->engine->setTarget(m_settings.url, options);
+        if (m_log)
+            c->engine->setTrafficLog(m_log);
         openAndSettle(*c->engine, m_settings.url.connectTimeoutMs, settleMs(report), this);
         const bool servedNew = !m_stopRequested && askClient(*c);
         if (m_stopRequested)

@@ -13,6 +13,8 @@
 
 namespace mbscope {
 
+class TrafficLog;
+
 struct TimingScanSettings {
     LinkUrl url;
     quint8 unit = 1;
@@ -71,6 +73,12 @@ public:
     [[nodiscard]] std::optional<TimingReport> run(const TimingScanSettings &settings);
     void stop();
     [[nodiscard]] ScanEnd end() const { return m_end; }
+    // Every frame of every connection the scan opens goes to log (ProbeChannel::setTrafficLog),
+    // each connection on a link id of its own: the log must be shared (TrafficLog::setShared),
+    // and outlive the scanner.
+    void setTrafficLog(TrafficLog *log);
+    // The channel of its one-at-a-time requests (its frames: ProbeChannel::framesLogged).
+    [[nodiscard]] ProbeChannel *channel() { return m_channel; }
     [[nodiscard]] bool wasStopped() const { return m_end == ScanEnd::Stopped; }
     // Steps done of the plan, and the time left: the plan's waits (gaps, warm-up, settling) and
     // one answer a step, at the average answer time measured so far (the timeout before any).
@@ -103,6 +111,7 @@ private:
     [[nodiscard]] qint64 stepCostMs(int index) const;
 
     ProbeChannel *m_channel;
+    TrafficLog *m_log = nullptr;
     TimingScanSettings m_settings;
     const TimingReport *m_report = nullptr; // while run() runs: the estimate reads the gaps and warm-up seen
     QElapsedTimer m_clock;

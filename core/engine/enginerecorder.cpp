@@ -49,10 +49,23 @@ void EngineRecorder::flushLog()
 void EngineRecorder::attachLog()
 {
     if (!m_log) {
+        m_logAttached = nullptr; // a log given again, or another at its address, is named anew
         m_journalTimer.stop();
         return;
     }
-    m_logLink = m_log->addLink(m_link);
+    // A shared log (the links of a watch run or a scan, each on its engine) gives every engine a
+    // link id of its own, since each numbers its transactions from 1; asked once per log and
+    // link, so that an engine's frames stay on one id; not before the engine has its target
+    // (nothing crosses a link before), so that no nameless link is left in the journal.
+    if (m_link.isEmpty()) {
+        m_logAttached = nullptr;
+        m_journalTimer.start();
+        return;
+    }
+    if (m_log != m_logAttached || m_link != m_linkAttached)
+        m_logLink = m_log->isShared() ? m_log->addConnection(m_link) : m_log->addLink(m_link);
+    m_logAttached = m_log;
+    m_linkAttached = m_link;
     // A log attached once the link is open (poll --record) still learns the connection's ends.
     if (!m_endpoints.client.isEmpty())
         m_log->setEndpoints(m_logLink, monotonicNowNs(), 0, m_endpoints);

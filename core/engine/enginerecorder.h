@@ -30,7 +30,8 @@ public:
     EngineRecorder(const EngineCounters *counters, EngineProgress *progress, QObject *parent);
 
     void setBatchInterval(int ms) { m_batchIntervalMs = ms; }
-    // The log frames go to (nullptr: none), and the link they are logged under.
+    // The log frames go to (nullptr: none), and the link they are logged under (a shared log,
+    // TrafficLog::setShared: a link id of this engine's own, TrafficLog::addConnection).
     void setTrafficLog(TrafficLog *log);
     void setLink(const QString &url);
     // The log's pending journal batch to the disk now.
@@ -87,6 +88,8 @@ private:
     QString m_link;
     quint16 m_logLink = 0;
     JournalEndpoints m_endpoints; // of the open link's connection, for a log attached later
+    const TrafficLog *m_logAttached = nullptr; // the log and link m_logLink was given for
+    QString m_linkAttached;
     QList<RecordListener *> m_listeners;
     std::atomic<int> m_recordedReceivers{0};
     QTimer m_batchTimer;

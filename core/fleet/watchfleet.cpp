@@ -57,6 +57,9 @@ void WatchFleet::start(const SessionWatches &watches)
             Q_EMIT linkStateChanged(state);
         });
         connect(poller, &WatchLinkPoller::writeFinished, this, &WatchFleet::writeFinished);
+        connect(poller, &WatchLinkPoller::framesLogged, this, &WatchFleet::framesLogged);
+        poller->setTrafficLog(m_log);
+        poller->setFramesPublished(m_framesPublished);
         m_pollers.append(poller);
         for (const WatchLinkPoller::Watch &w : byTarget.value(target))
             m_pollerOfWatch.insert(w.index, poller);
@@ -79,6 +82,13 @@ void WatchFleet::stopPollers()
     qDeleteAll(m_pollers);
     m_pollers.clear();
     m_pollerOfWatch.clear();
+}
+
+void WatchFleet::setTrafficLog(TrafficLog *log)
+{
+    m_log = log;
+    for (WatchLinkPoller *poller : std::as_const(m_pollers))
+        poller->setTrafficLog(log);
 }
 
 void WatchFleet::write(quint64 id, int watch, quint16 address, const QList<quint16> &words)

@@ -3,6 +3,7 @@
 #include "fleet/watchcounters.h"
 #include "fleet/watchlinkstate.h"
 #include "fleet/watchsample.h"
+#include "exchange/trafficentry.h"
 #include "watch/watchdefinition.h"
 #include "watch/watchruleevent.h"
 
@@ -13,6 +14,7 @@
 
 namespace mbscope {
 
+class TrafficLog;
 class WatchLinkPoller;
 
 // The runner's side in its own thread: a WatchLinkPoller per distinct link URL, and the batching
@@ -27,6 +29,9 @@ public:
     void start(const mbscope::SessionWatches &watches);
     void stop();
     void write(quint64 id, int watch, quint16 address, const QList<quint16> &words);
+    // Every link's frames to log (WatchRunner::setTrafficLog); framesLogged() on or off.
+    void setTrafficLog(TrafficLog *log);
+    void setFramesPublished(bool published) { m_framesPublished = published; }
 
     // The settings of a link: its entry in SessionWatches::links, else the defaults.
     [[nodiscard]] static WatchLinkSettings linkSettings(const SessionWatches &watches, const QString &target);
@@ -38,6 +43,7 @@ Q_SIGNALS:
     void ruleChanged(const mbscope::WatchRuleEvent &event);
     void linkStateChanged(const mbscope::WatchLinkState &state);
     void writeFinished(quint64 id, int watch, quint16 address, bool ok, const QString &message);
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void stopped();
 
 private:
@@ -51,6 +57,8 @@ private:
     QMap<int, WatchCounters> m_counters; // changed since the last batch
     QTimer m_batchTimer;
     int m_batchIntervalMs = 33;
+    TrafficLog *m_log = nullptr;
+    bool m_framesPublished = false;
 };
 
 } // namespace mbscope

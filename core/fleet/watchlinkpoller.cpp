@@ -64,6 +64,12 @@ void WatchLinkPoller::start()
     options.batchIntervalMs = 0;
     m_engine = std::make_unique<TransactionEngine>();
     m_engine->setTarget(*m_url, options);
+    if (m_log)
+        m_engine->setTrafficLog(m_log);
+    if (m_framesPublished) {
+        m_engine->setFramesPublished(true);
+        connect(m_engine.get(), &TransactionEngine::framesLogged, this, &WatchLinkPoller::framesLogged);
+    }
     connect(m_engine.get(), &TransactionEngine::transactionsFinished, this, &WatchLinkPoller::onTransactions);
     connect(m_engine.get(), &TransactionEngine::linkOpened, this, &WatchLinkPoller::onLinkOpened);
     connect(m_engine.get(), &TransactionEngine::linkMessage, this, &WatchLinkPoller::onLinkMessage);
@@ -73,6 +79,13 @@ void WatchLinkPoller::start()
     m_phase = Phase::Idle;
     setState(WatchLinkState::State::Connecting);
     pump();
+}
+
+void WatchLinkPoller::setTrafficLog(TrafficLog *log)
+{
+    m_log = log;
+    if (m_engine)
+        m_engine->setTrafficLog(log);
 }
 
 void WatchLinkPoller::stop()

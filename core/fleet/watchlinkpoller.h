@@ -8,6 +8,7 @@
 #include "watch/watchruleevent.h"
 
 #include "exchange/requestitem.h"
+#include "exchange/trafficentry.h"
 #include "exchange/transaction.h"
 #include "transport/linkurl.h"
 
@@ -20,6 +21,7 @@
 
 namespace mbscope {
 
+class TrafficLog;
 class TransactionEngine;
 
 // The watches of one link, polled by one engine (its own thread), one request at a time: a
@@ -44,6 +46,10 @@ public:
 
     void start();
     void stop();
+    // Where the engine's frames go (WatchFleet::setTrafficLog), now and from the next start().
+    void setTrafficLog(TrafficLog *log);
+    // framesLogged() on or off, from the next start().
+    void setFramesPublished(bool published) { m_framesPublished = published; }
     // Queues a write to go before the next poll; writeFinished() says how it went.
     void write(quint64 id, int watch, quint16 address, const QList<quint16> &words);
 
@@ -52,6 +58,7 @@ Q_SIGNALS:
     void ruleChanged(const mbscope::WatchRuleEvent &event);
     void linkStateChanged(const mbscope::WatchLinkState &state);
     void writeFinished(quint64 id, int watch, quint16 address, bool ok, const QString &message);
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
 
 private:
     struct Entry {
@@ -91,6 +98,8 @@ private:
     QList<Entry> m_entries;
     std::deque<PendingWrite> m_writes;
     std::unique_ptr<TransactionEngine> m_engine;
+    TrafficLog *m_log = nullptr;
+    bool m_framesPublished = false;
     QTimer m_timer;
     Phase m_phase = Phase::Stopped;
     quint64 m_inFlight = 0;      // engine id of the request in flight

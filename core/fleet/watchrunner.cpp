@@ -26,6 +26,7 @@ WatchRunner::WatchRunner(const SessionWatches &watches, QObject *parent)
     connect(m_fleet, &WatchFleet::ruleChanged, this, &WatchRunner::ruleChanged);
     connect(m_fleet, &WatchFleet::linkStateChanged, this, &WatchRunner::linkStateChanged);
     connect(m_fleet, &WatchFleet::writeFinished, this, &WatchRunner::writeFinished);
+    connect(m_fleet, &WatchFleet::framesLogged, this, &WatchRunner::framesLogged);
     // The log takes what the fleet emits in the fleet's thread, in its order; stopped() waits for
     // its files to close.
     m_logThread.setObjectName(QStringLiteral("mbscope watch log"));
@@ -69,6 +70,17 @@ WatchRunner::~WatchRunner()
 void WatchRunner::setLog(const std::optional<WatchLogSettings> &settings, const QString &baseDirectory)
 {
     QMetaObject::invokeMethod(m_writer, [writer = m_writer, settings, baseDirectory] { writer->configure(settings, baseDirectory); },
+                              Qt::QueuedConnection);
+}
+
+void WatchRunner::setTrafficLog(TrafficLog *log)
+{
+    QMetaObject::invokeMethod(m_fleet, [fleet = m_fleet, log] { fleet->setTrafficLog(log); }, Qt::BlockingQueuedConnection);
+}
+
+void WatchRunner::setFramesPublished(bool published)
+{
+    QMetaObject::invokeMethod(m_fleet, [fleet = m_fleet, published] { fleet->setFramesPublished(published); },
                               Qt::QueuedConnection);
 }
 

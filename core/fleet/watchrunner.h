@@ -3,6 +3,7 @@
 #include "fleet/watchcounters.h"
 #include "fleet/watchlinkstate.h"
 #include "fleet/watchsample.h"
+#include "exchange/trafficentry.h"
 #include "watch/watchdefinition.h"
 #include "watch/watchruleevent.h"
 
@@ -14,6 +15,7 @@
 
 namespace mbscope {
 
+class TrafficLog;
 class WatchFleet;
 class WatchLogWriter;
 
@@ -58,6 +60,15 @@ public:
     // logFailed() says how it went.
     void setLog(const std::optional<WatchLogSettings> &settings, const QString &baseDirectory = {});
 
+    // Every frame in and out of every link goes to log (a command's --record, the window's
+    // recording), each link's engine on a link id of its own, from now on: the log must be
+    // shared (TrafficLog::setShared). setTrafficLog(nullptr) returns once no engine writes it
+    // any more; until then log must live.
+    void setTrafficLog(TrafficLog *log);
+    // framesLogged() on or off (off by default: the copies cost a list entry per frame), from
+    // the next start().
+    void setFramesPublished(bool published);
+
     // Writes words to a point marked writable of a watch (holding registers: 06 or 10, the
     // point's registers in wire order; coils: 05, one word 0 or 1), before that link's next poll.
     // Returns an id that writeFinished() carries; a refused write is said there too.
@@ -85,6 +96,9 @@ Q_SIGNALS:
     void logDroppedRows(int watch, quint64 rows);
     // lostRows: every row not written; droppedRows: those of them dropped while it fell behind.
     void logClosed(const QString &directory, const QStringList &files, quint64 lostRows, quint64 droppedRows);
+    // With setFramesPublished(true): every frame of a link as its engine logs it
+    // (TransactionEngine::framesLogged), link its URL.
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     // After stop(): every link closed, the last samples handed out and the CSV files closed.
     void stopped();
 

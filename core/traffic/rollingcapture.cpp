@@ -33,6 +33,8 @@ RollingCapture::RollingCapture(const CaptureDirectory &directory, const Policy &
     , m_policy(policy)
     , m_log(windowLimits())
 {
+    // The window's watches and scans write into it beside the composer's engine.
+    m_log.setShared(true);
 }
 
 RollingCapture::~RollingCapture()

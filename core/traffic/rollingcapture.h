@@ -14,8 +14,10 @@ namespace mbscope {
 // of at most rotateBytes, the folder kept under keepBytes by deleting its oldest journals, and a
 // marker beside the journal being written so that a crash leaves it recoverable.
 //
-// Threads: made and finished in one thread; the log belongs to the engine's thread while the
-// engine holds it (rotation happens there). currentPath() may be asked from any thread.
+// Threads: made and finished in one thread; the log is shared (TrafficLog::setShared): the
+// composer's engine and the window's watches and scans write into it from their threads, and
+// rotation happens in whichever appends past the part's size. currentPath() may be asked from
+// any thread.
 class RollingCapture
 {
 public:

@@ -93,7 +93,8 @@ bool TrafficJournalWriter::open(const QString &path, const Options &options, boo
     m_options = options;
     m_options.batchEntries = std::max(1, options.batchEntries);
     m_batches = m_frames = m_lost = 0;
-    m_transactions = m_batchTransactions = m_lastTransactionId = 0;
+    m_transactions = m_batchTransactions = 0;
+    m_lastTransactionIds.clear();
     m_bytes = 0;
     m_file.setFileName(path);
     QIODevice::OpenMode mode = QIODevice::WriteOnly | QIODevice::Unbuffered;
@@ -244,8 +245,10 @@ void TrafficJournalWriter::addFrame(const TrafficEntry &entry)
         m_batchFirstSequence = entry.sequence;
         m_batchFirstNs = entry.tNs;
     }
-    if (entry.transactionId > m_lastTransactionId) {
-        m_lastTransactionId = entry.transactionId;
+    if (entry.link >= m_lastTransactionIds.size())
+        m_lastTransactionIds.resize(qsizetype(entry.link) + 1, 0);
+    if (quint64 &last = m_lastTransactionIds[entry.link]; entry.transactionId > last) {
+        last = entry.transactionId;
         ++m_batchTransactions;
     }
     ++m_batchFrames;

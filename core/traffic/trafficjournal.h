@@ -115,7 +115,8 @@ public:
     [[nodiscard]] quint64 batchesWritten() const { return m_batches; }
     [[nodiscard]] quint64 framesWritten() const { return m_frames; }
     // Distinct transactions among the frames written: a frame whose transaction id is above
-    // every id before it starts one (retries share their id; late answers carry an old one).
+    // every id before it on its link starts one (retries share their id; late answers carry an
+    // old one; the engines of a shared log each number from 1, each on a link of its own).
     [[nodiscard]] quint64 transactionsWritten() const { return m_transactions; }
     [[nodiscard]] quint64 framesLost() const { return m_lost; }
     [[nodiscard]] quint64 framesPending() const { return m_batchFrames; }
@@ -142,7 +143,7 @@ private:
     quint64 m_lost = 0;
     quint64 m_transactions = 0;
     quint64 m_batchTransactions = 0;
-    quint64 m_lastTransactionId = 0;
+    QList<quint64> m_lastTransactionIds; // by link id
     qint64 m_bytes = 0;
     QString m_error;
 };

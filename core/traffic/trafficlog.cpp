@@ -67,9 +67,34 @@ bool TrafficLog::openJournal(const QString &path, const TrafficJournalWriter::Op
     return true;
 }
 
+void TrafficLog::setShared(bool shared)
+{
+    if (shared != isShared())
+        m_lock = shared ? std::make_unique<QMutex>() : nullptr;
+}
+
 void TrafficLog::closeJournal()
 {
+    QMutexLocker lock(m_lock.get());
     m_journal.close();
+}
+
+void TrafficLog::annotate(quint16 link, quint64 transactionId, qint64 tNs, QByteArrayView json)
+{
+    QMutexLocker lock(m_lock.get());
+    m_journal.addNote(link, transactionId, tNs, json);
+}
+
+void TrafficLog::flushIfDue(qint64 nowNs)
+{
+    QMutexLocker lock(m_lock.get());
+    m_journal.flushIfDue(nowNs);
+}
+
+void TrafficLog::flush()
+{
+    QMutexLocker lock(m_lock.get());
+    m_journal.flush();
 }
 
 void TrafficLog::setJournalRotation(qint64 maxBytes, std::function<QString(const QString &)> next)
@@ -90,8 +115,20 @@ void TrafficLog::rotateJournal()
 
 quint16 TrafficLog::addLink(const QString &name)
 {
+    QMutexLocker lock(m_lock.get());
     if (const qsizetype i = m_links.indexOf(name); i >= 0)
         return quint16(i);
+    return appendLink(name);
+}
+
+quint16 TrafficLog::addConnection(const QString &name)
+{
+    QMutexLocker lock(m_lock.get());
+    return appendLink(name);
+}
+
+quint16 TrafficLog::appendLink(const QString &name)
+{
     // 65,535 distinct links in one log is beyond any bench: the rest share the last id.
     if (m_links.size() >= 0xFFFF)
         return 0xFFFF;
@@ -139,6 +176,7 @@ TrafficLog::Chunk *TrafficLog::chunkFor(std::size_t bytes)
 quint64 TrafficLog::append(qint64 tNs, TrafficDirection direction, quint16 link, TrafficVerdict verdict,
                            quint64 transactionId, QByteArrayView bytes)
 {
+    QMutexLocker lock(m_lock.get());
     const auto length = std::size_t(bytes.size());
     Chunk *chunk = chunkFor(length);
     const Record record{tNs, transactionId, quint32(chunk->tail + length), link, quint8(direction), quint8(verdict)};

@@ -7,6 +7,7 @@
 #include <QtCore/QHash>
 
 #include <QtCore/QList>
+#include <QtCore/QMutex>
 #include <QtCore/QString>
 #include <QtCore/QStringList>
 
@@ -28,7 +29,8 @@ namespace mbscope {
 //
 // Threads: the engine's thread owns the log and calls append(); nothing else may touch it while
 // it does. Views (TrafficEntry) are valid until the next append; copy() makes owning frames to
-// hand to another thread.
+// hand to another thread. A log shared by several engines (setShared: the links of one watch
+// run or scan, one journal for all of them) takes a lock in the calls its writers make.
 class TrafficLog
 {
 public:
@@ -44,6 +46,13 @@ public:
     ~TrafficLog();
     TrafficLog(const TrafficLog &) = delete;
     TrafficLog &operator=(const TrafficLog &) = delete;
+
+    // Several writers in threads of their own (engines: EngineRecorder), one journal: append,
+    // addLink, addConnection, annotate, flush, flushIfDue and closeJournal then lock, so that
+    // frames from each thread go in whole and in turn. Set before any writer has the log. The
+    // reading calls (at, visit, copy, links) stay unlocked: for when no writer writes.
+    void setShared(bool shared);
+    [[nodiscard]] bool isShared() const { return m_lock != nullptr; }
 
     // Smaller limits drop the oldest entries at once.
     void setLimits(const Limits &limits);
@@ -64,15 +73,17 @@ public:
 
     // A short id for a link's name ("tcp://192.168.1.10:502"); the same name gives the same id.
     [[nodiscard]] quint16 addLink(const QString &name);
+    // A new id for one connection to name, even when the log has that name already: each
+    // engine numbers its transactions from 1, so in a shared log every engine's link is an id
+    // of its own and a transaction is told by its link and its id (the journal's readers pair
+    // by both).
+    [[nodiscard]] quint16 addConnection(const QString &name);
     [[nodiscard]] QString linkName(quint16 link) const;
     [[nodiscard]] const QStringList &links() const { return m_links; }
 
     // A note on a transaction for the journal only (trafficjournal.h, record kind 4): nothing is
     // kept in memory, and without a journal it goes nowhere.
-    void annotate(quint16 link, quint64 transactionId, qint64 tNs, QByteArrayView json)
-    {
-        m_journal.addNote(link, transactionId, tNs, json);
-    }
+    void annotate(quint16 link, quint64 transactionId, qint64 tNs, QByteArrayView json);
 
     // The endpoints of a link's connection from now on (journalendpoints.h), as a note in the
     // journal; kept, and written again at the start of every journal opened later (a recording
@@ -84,8 +95,8 @@ public:
                    quint64 transactionId, QByteArrayView bytes);
     // The engine calls this from a timer so a quiet link's last frames reach the disk within the
     // batch time.
-    void flushIfDue(qint64 nowNs) { m_journal.flushIfDue(nowNs); }
-    void flush() { m_journal.flush(); }
+    void flushIfDue(qint64 nowNs);
+    void flush();
 
     [[nodiscard]] quint64 size() const { return m_size; }                       // entries in memory
     [[nodiscard]] quint64 appended() const { return m_next; }                   // ever logged
@@ -118,6 +129,7 @@ private:
     void evictOldest();
     [[nodiscard]] TrafficEntry entryAt(const Chunk &chunk, quint32 index) const;
     void rotateJournal();
+    quint16 appendLink(const QString &name);
 
     Limits m_limits;
     std::vector<std::unique_ptr<Chunk>> m_chunks; // oldest first
@@ -133,6 +145,7 @@ private:
     qint64 m_rotateBytes = 0;
     std::function<QString(const QString &)> m_nextJournal;
     QString m_rotationError;
+    std::unique_ptr<QMutex> m_lock; // shared logs only
 };
 
 } // namespace mbscope

@@ -4,7 +4,9 @@
 // a recorded poll analysed with the counts poll printed, replayed with no --target, exported to
 // pcapng that tshark decodes; a recording poll killed with SIGKILL and its cut journal recovered;
 // simulate --record (both directions, fault notes); poll --print values and --csv; an existing
-// journal refused; a poll or monitor whose link never came up leaves no journal (tryout 8, item 2).
+// journal refused; a poll or monitor whose link never came up leaves no journal (tryout 8, item 2);
+// watch and scan record too (issue 25): a watch of two links in one journal, each link's
+// transactions paired on their own, and a unit scan, both analysed and replayed.
 
 #include "clitest.h"
 
@@ -14,6 +16,7 @@
 #include <QtCore/QFile>
 #include <QtCore/QFileInfo>
 #include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
 #include <QtCore/QProcess>
 #include <QtCore/QRegularExpression>
 #include <QtCore/QStandardPaths>
@@ -62,6 +65,8 @@ private slots:
     void existingJournalRefused();
     void unreachableTargetLeavesNoJournal();
     void pollPrintsValuesAndCsv();
+    void watchRecordsEveryLink();
+    void scanRecords();
 
 private:
     QTemporaryDir m_dir;
@@ -486,5 +491,99 @@ void TestCliRecord::pollPrintsValuesAndCsv()
     QVERIFY2(what.errText().contains(QStringLiteral("--print 'everything': expected values")), what.describe().constData());
 }
 
+// `mbscope watch --record` (issue 25): the watches of two links, two engines in threads of their
+// own, in one journal. Each engine numbers its transactions from 1: the journal keeps each
+// link's on a link id of its own and analyze pairs them by link and id (paired by id alone, the
+// second link's requests were taken for retries of the first's, their answers unmatched).
+void TestCliRecord::watchRecordsEveryLink()
+{
+    QString why;
+    Background second;
+    QVERIFY2(second.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                           QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                          &why),
+             qPrintable(why));
+    const QString session = m_dir.filePath(QStringLiteral("watches.mbscope.json"));
+    QFile file(session);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QStringLiteral(R"({"format": "mbscope-session", "version": 2,
+  "watches": [{"name": "settings", "target": "%1", "address": 121, "quantity": 22, "intervalMs": 20},
+              {"name": "plant", "target": "%2", "address": 0, "quantity": 4, "intervalMs": 20},
+              {"name": "pump", "target": "%2", "address": 4, "quantity": 4, "intervalMs": 30}]})")
+                   .arg(m_sim.url(), second.url())
+                   .toUtf8());
+    file.close();
+    const QString journal = m_dir.filePath(QStringLiteral("watch.mbscope.journal"));
+    const CliResult r = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--count"), QStringLiteral("10"), QStringLiteral("--json"),
+                                    QStringLiteral("--record"), journal});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    const QList<QByteArray> lines = r.out.trimmed().split('\n');
+    const QJsonObject summary = QJsonDocument::fromJson(lines.constLast()).object();
+    double polls = 0;
+    double ok = 0;
+    for (const QJsonValue &w : summary.value(QStringLiteral("watches")).toArray()) {
+        QVERIFY(w[QLatin1String("polls")].toDouble() >= 10);
+        polls += w[QLatin1String("polls")].toDouble();
+        ok += w[QLatin1String("ok")].toDouble();
+    }
+    const int recorded = recordedTransactions(r.err, journal);
+    QVERIFY2(recorded >= polls, r.describe().constData());
+
+    const CliResult a = runMbscope({QStringLiteral("analyze"), journal, QStringLiteral("--json")});
+    QVERIFY2(a.finished && a.exitCode == 0, a.describe().constData());
+    const QJsonObject o = a.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), recorded);
+    // Every poll the watches counted ok is an exchange ok in the journal; a request abandoned
+    // when the watches stopped is the journal's too, as a link error.
+    QVERIFY2(o.value(QStringLiteral("ok")).toInt() >= ok, a.describe().constData());
+    const QJsonArray conversations = o.value(QStringLiteral("conversations")).toArray();
+    QCOMPARE(conversations.size(), 2);
+    for (const QJsonValue &c : conversations) {
+        QVERIFY2(c[QLatin1String("ok")].toInt() >= 10, a.describe().constData());
+        QCOMPARE(c[QLatin1String("unmatched_responses")].toInt(), 0);
+    }
+    const QJsonObject metadata = o.value(QStringLiteral("source")).toObject().value(QStringLiteral("metadata")).toObject();
+    QCOMPARE(metadata.value(QStringLiteral("command")).toString(), QStringLiteral("watch"));
+    QCOMPARE(metadata.value(QStringLiteral("settings")).toObject().value(QStringLiteral("targets")).toArray().size(), 2);
+
+    // Replayed to the first link's device: every request of both links read from the journal
+    // and sent.
+    const CliResult replay = runMbscope({QStringLiteral("replay"), journal, QStringLiteral("--target"), m_sim.url(), QStringLiteral("--speed"),
+                                         QStringLiteral("max"), QStringLiteral("--json")});
+    QVERIFY2(replay.finished && (replay.exitCode == 0 || replay.exitCode == 1), replay.describe().constData());
+    QCOMPARE(replay.json().value(QStringLiteral("replayed")).toInt(), recorded);
+}
+
+// `mbscope scan --record` (issue 25): the scan's probes, one exchange per id asked, in a journal
+// that analyze and replay read.
+void TestCliRecord::scanRecords()
+{
+    const QString journal = m_dir.filePath(QStringLiteral("scan.mbscope.journal"));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), m_sim.url(), QStringLiteral("--units"), QStringLiteral("1-3"),
+                                    QStringLiteral("--address"), QStringLiteral("0x79"), QStringLiteral("--json"), QStringLiteral("--record"), journal});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe().constData());
+    QCOMPARE(recordedTransactions(r.err, journal), 3);
+    // Exit 1: unit 2 is a gateway target that fails to answer (0B); units 1 and 3 answer.
+    const CliResult a = runMbscope({QStringLiteral("analyze"), journal, QStringLiteral("--json")});
+    QVERIFY2(a.finished && a.exitCode == 1, a.describe().constData());
+    const QJsonObject o = a.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), 3);
+    QCOMPARE(o.value(QStringLiteral("conversations")).toArray().size(), 1);
+    QVERIFY2(o.value(QStringLiteral("ok")).toInt() >= 1, a.describe().constData()); // unit 1 answers
+    const QJsonObject metadata = o.value(QStringLiteral("source")).toObject().value(QStringLiteral("metadata")).toObject();
+    QCOMPARE(metadata.value(QStringLiteral("command")).toString(), QStringLiteral("scan"));
+    QCOMPARE(metadata.value(QStringLiteral("target")).toString(), m_sim.url());
+    const CliResult replay = runMbscope({QStringLiteral("replay"), journal, QStringLiteral("--speed"), QStringLiteral("max"), QStringLiteral("--json")});
+    QVERIFY2(replay.finished && (replay.exitCode == 0 || replay.exitCode == 1), replay.describe().constData());
+    QCOMPARE(replay.json().value(QStringLiteral("replayed")).toInt(), 3);
+    // A usage error leaves no journal behind.
+    const QString refused = m_dir.filePath(QStringLiteral("refused.mbscope.journal"));
+    const CliResult bad = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), m_sim.url(), QStringLiteral("--units"), QStringLiteral("9-3"),
+                                      QStringLiteral("--record"), refused});
+    QCOMPARE(bad.exitCode, 2);
+    QVERIFY(!QFile::exists(refused));
+}
+
 QTEST_GUILESS_MAIN(TestCliRecord)
+
 #include "tst_cli_record.moc"

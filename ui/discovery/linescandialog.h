@@ -26,6 +26,8 @@ class LineScanDialog : public QDialog
     Q_OBJECT
 public:
     explicit LineScanDialog(QWidget *parent = nullptr);
+    // Its scanner: the scan dialog hands it the window's recording and shows its frames.
+    [[nodiscard]] LineScanner *scanner() const { return m_scanner; }
     ~LineScanDialog() override;
 
     void setTarget(const LinkUrl &url, quint8 function, quint16 address);

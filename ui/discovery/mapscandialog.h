@@ -32,6 +32,8 @@ class MapScanDialog : public QDialog
     Q_OBJECT
 public:
     explicit MapScanDialog(QWidget *parent = nullptr);
+    // Its scanner: the scan dialog hands it the window's recording and shows its frames.
+    [[nodiscard]] MapScanner *scanner() const { return m_scanner; }
     ~MapScanDialog() override;
 
     void setTarget(const LinkUrl &url, quint8 unit);

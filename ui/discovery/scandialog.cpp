@@ -6,6 +6,8 @@
 #include "scanform.h"
 #include "timingscandialog.h"
 
+#include "discovery/linescanner.h"
+#include "discovery/mapscanner.h"
 #include "discovery/scanwatches.h"
 #include "discovery/unitscanner.h"
 
@@ -140,6 +142,7 @@ ScanDialog::ScanDialog(QWidget *parent)
     connect(m_scanner, &UnitScanner::probed, m_model, &ScanResultModel::append);
     connect(m_scanner, &UnitScanner::progressChanged, this, &ScanDialog::onProgress);
     connect(m_scanner, &UnitScanner::finished, this, &ScanDialog::onFinished);
+    adopt(m_scanner->channel());
     connect(m_model, &QAbstractItemModel::rowsInserted, this, &ScanDialog::updateButtons);
     connect(m_model, &QAbstractItemModel::modelReset, this, &ScanDialog::updateButtons);
     m_status->setText(tr("Asks every id the read above, one at a time, and says what each did."));
@@ -302,6 +305,7 @@ MapScanDialog *ScanDialog::mapSelectedUnit()
         return nullptr;
     if (!m_mapDialog) {
         m_mapDialog = new MapScanDialog(this);
+        adopt(m_mapDialog->scanner()->channel());
         connect(m_mapDialog, &MapScanDialog::watchesRequested, this, &ScanDialog::watchesRequested);
     }
     if (!m_mapDialog->isRunning())
@@ -317,8 +321,11 @@ TimingScanDialog *ScanDialog::timeSelectedUnit()
     const int row = chosenFoundRow();
     if (row < 0)
         return nullptr;
-    if (!m_timingDialog)
+    if (!m_timingDialog) {
         m_timingDialog = new TimingScanDialog(this);
+        adopt(m_timingDialog->scanner()->channel());
+        m_timingDialog->scanner()->setTrafficLog(m_trafficLog); // its clients' engines too
+    }
     if (!m_timingDialog->isRunning())
         m_timingDialog->setTarget(m_running.url, quint8(m_model->probes().at(row).unit), m_running.function, m_running.address);
     m_timingDialog->show();
@@ -334,6 +341,7 @@ LineScanDialog *ScanDialog::findLineSettings()
         return nullptr;
     if (!m_lineDialog) {
         m_lineDialog = new LineScanDialog(this);
+        adopt(m_lineDialog->scanner()->channel());
         connect(m_lineDialog, &LineScanDialog::settingChosen, this, [this](const LinkUrl &url) { m_target->setText(url.toString()); });
     }
     if (!m_lineDialog->isRunning())
@@ -342,6 +350,24 @@ LineScanDialog *ScanDialog::findLineSettings()
     m_lineDialog->raise();
     m_lineDialog->activateWindow();
     return m_lineDialog;
+}
+
+void ScanDialog::adopt(ProbeChannel *channel)
+{
+    channel->setTrafficLog(m_trafficLog);
+    connect(channel, &ProbeChannel::framesLogged, this, &ScanDialog::framesLogged);
+}
+
+void ScanDialog::setTrafficLog(TrafficLog *log)
+{
+    m_trafficLog = log;
+    m_scanner->channel()->setTrafficLog(log);
+    if (m_mapDialog)
+        m_mapDialog->scanner()->channel()->setTrafficLog(log);
+    if (m_timingDialog)
+        m_timingDialog->scanner()->setTrafficLog(log);
+    if (m_lineDialog)
+        m_lineDialog->scanner()->channel()->setTrafficLog(log);
 }
 
 void ScanDialog::copyWatches()

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "discovery/scanprogress.h"
+#include "exchange/trafficentry.h"
 #include "discovery/unitscansettings.h"
 
 #include "watch/watchdefinition.h"
@@ -22,6 +23,8 @@ class LineScanDialog;
 class MapScanDialog;
 class TimingScanDialog;
 class ScanResultModel;
+class ProbeChannel;
+class TrafficLog;
 class UnitScanner;
 
 // Tools > Scan: asks every unit id of a range the same harmless read (core/discovery's
@@ -44,6 +47,9 @@ public:
     [[nodiscard]] ScanResultModel *model() const { return m_model; }
     // Watches of the selected found units, or of every found unit when none is selected.
     [[nodiscard]] QList<WatchDefinition> watches() const;
+    // The window's recording (LinkController::trafficLog, shared): every scan's frames, this
+    // dialog's and those of the map, timing and line dialogs it opens, go there; nullptr: none.
+    void setTrafficLog(TrafficLog *log);
 
 public Q_SLOTS:
     void start();
@@ -61,6 +67,8 @@ public Q_SLOTS:
 Q_SIGNALS:
     void watchesRequested(const QList<mbscope::WatchDefinition> &watches);
     void scanFinished(mbscope::ScanEnd end);
+    // Every frame a scan sends and gets, as its engine logs it (the window's traffic view).
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
 
 protected:
     void reject() override;
@@ -69,8 +77,11 @@ private:
     void onProgress(const ScanProgress &progress);
     void onFinished(ScanEnd end);
     void updateButtons();
+    // A scanner's channel: on the recording, its frames shown.
+    void adopt(ProbeChannel *channel);
 
     UnitScanner *m_scanner;
+    TrafficLog *m_trafficLog = nullptr;
     ScanResultModel *m_model;
     QLineEdit *m_target;
     QSpinBox *m_first;

@@ -26,6 +26,8 @@ class TimingScanDialog : public QDialog
     Q_OBJECT
 public:
     explicit TimingScanDialog(QWidget *parent = nullptr);
+    // Its scanner: the scan dialog hands it the window's recording and shows its frames.
+    [[nodiscard]] TimingScanner *scanner() const { return m_scanner; }
     ~TimingScanDialog() override;
 
     void setTarget(const LinkUrl &url, quint8 unit, quint8 function, quint16 address);

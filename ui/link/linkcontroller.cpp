@@ -57,6 +57,7 @@ void LinkController::dropEngine()
     m_engine.reset();
     m_listener.reset();
     if (m_capture) {
+        Q_EMIT trafficLogChanged(nullptr); // the watches and scans let go first
         m_capture->finish();
         m_capture.reset();
         Q_EMIT recordingChanged({}, {});
@@ -183,6 +184,8 @@ void LinkController::connectTo(const LinkUrl &url)
             m_capture.reset();
         }
         Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
+        if (m_capture)
+            Q_EMIT trafficLogChanged(m_capture->log());
     }
     // Connect opens the link now: a closed port or a missing serial device is said here, not at
     // the first Send.
@@ -208,6 +211,8 @@ void LinkController::listenTo(const LinkUrl &url)
         Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
     }
     m_listener = std::make_unique<BusListener>(url, log);
+    if (log)
+        Q_EMIT trafficLogChanged(log);
     connect(m_listener.get(), &BusListener::opened, this, [this] {
         setState(State::Connected, tr("%1: listening only (nothing is sent)").arg(m_url.toString()));
     });

@@ -91,6 +91,9 @@ public:
     // cannot be moved (another file system), what was recorded so far is copied there instead,
     // atomically, and *copied is set. False with *error when neither could be done.
     bool keepRecordingAt(const QString &path, bool *copied, QString *error);
+    // The log of the journal being written (shared: the watches' and scans' engines write into it
+    // too), or nullptr. trafficLogChanged() says when it comes and goes.
+    [[nodiscard]] TrafficLog *trafficLog() const { return m_capture ? m_capture->log() : nullptr; }
 
     // One line for the status bar: "Poll finished: 20 transactions, 20 ok, 0 failed; latency min
     // 1.21 ms, mean 4.05 ms, max 11.80 ms".
@@ -112,6 +115,10 @@ Q_SIGNALS:
     void pollFinished(const mbscope::PollReport &report);
     // Recording started (path), stopped (empty path), or could not start (problem).
     void recordingChanged(const QString &path, const QString &problem);
+    // The recording's log for other writers (the watches, the scans): a new one once a
+    // connection's recording started, nullptr before it finishes. Connect directly: a receiver
+    // lets go of the old log (its engines' setTrafficLog(nullptr)) before this returns.
+    void trafficLogChanged(mbscope::TrafficLog *log);
 
 private:
     // bytes for the link, numbered by the engine.

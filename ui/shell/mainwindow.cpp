@@ -373,6 +373,11 @@ void MainWindow::buildWorkspace()
     connect(m_workspace, &WatchWorkspace::sampled, m_trends->trends(), &RegisterTrendPanel::addWatchSamples);
     connect(m_workspace, &WatchWorkspace::sampled, m_latency->source(), &LatencySource::addWatchSamples);
     connect(m_workspace, &WatchWorkspace::sampled, m_linkStatus, &LinkStatusWidget::addWatchTraffic);
+    // Their frames go to the traffic list and the window's recording, beside the composer's; a
+    // recording that ends is let go of before it closes (a direct connection).
+    connect(m_workspace, &WatchWorkspace::framesLogged, m_traffic, &TrafficMonitor::appendLinkFrames);
+    m_workspace->setTrafficLog(m_controller->trafficLog());
+    connect(m_controller, &LinkController::trafficLogChanged, m_workspace, &WatchWorkspace::setTrafficLog, Qt::DirectConnection);
     connect(m_workspace, &WatchWorkspace::trendRequested, this, [this](const QString &watch, quint16 address, const QString &point) {
         RegisterTrendPanel *trends = m_trends->trends();
         const int index = trends->addWatchValue(watch, address, point);
@@ -751,6 +756,10 @@ ScanDialog *MainWindow::scanDialog()
 {
     if (!m_scanDialog) {
         m_scanDialog = new ScanDialog(this);
+        // The scans' frames, as the watches' (buildWorkspace): the traffic list and the recording.
+        connect(m_scanDialog, &ScanDialog::framesLogged, m_traffic, &TrafficMonitor::appendLinkFrames);
+        m_scanDialog->setTrafficLog(m_controller->trafficLog());
+        connect(m_controller, &LinkController::trafficLogChanged, m_scanDialog, &ScanDialog::setTrafficLog, Qt::DirectConnection);
         // "Add as watches": the units found become watch windows of the workspace, each name
         // made unique in the session ("unit 3" again becomes "unit 3 (2)").
         connect(m_scanDialog, &ScanDialog::watchesRequested, this, [this](const QList<WatchDefinition> &found) {

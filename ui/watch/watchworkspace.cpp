@@ -90,6 +90,13 @@ WatchWorkspace::~WatchWorkspace()
     m_runner = nullptr;
 }
 
+void WatchWorkspace::setTrafficLog(TrafficLog *log)
+{
+    m_trafficLog = log;
+    if (m_runner)
+        m_runner->setTrafficLog(log);
+}
+
 void WatchWorkspace::createActions()
 {
     auto make = [this](const QString &text, const QKeySequence &keys, auto slot) {
@@ -528,6 +535,10 @@ void WatchWorkspace::startRunner()
     m_lastCounters.clear();
     delete m_runner;
     m_runner = new WatchRunner(runnerWatches(), this);
+    m_runner->setFramesPublished(true);
+    connect(m_runner, &WatchRunner::framesLogged, this, &WatchWorkspace::framesLogged);
+    if (m_trafficLog)
+        m_runner->setTrafficLog(m_trafficLog);
     connect(m_runner, &WatchRunner::sampled, this, &WatchWorkspace::onSampled);
     connect(m_runner, &WatchRunner::ruleChanged, this, &WatchWorkspace::onRule);
     connect(m_runner, &WatchRunner::linkStateChanged, this, &WatchWorkspace::onLinkState);

@@ -5,6 +5,7 @@
 #include "watch/watchdefinition.h"
 
 #include "fleet/watchcounters.h"
+#include "exchange/trafficentry.h"
 
 #include <QtCore/QMap>
 #include <QtCore/QSet>
@@ -23,6 +24,7 @@ namespace mbscope {
 
 class WatchDialog;
 class WatchLogControl;
+class TrafficLog;
 class WatchRunner;
 class WatchWindow;
 struct WatchCounters;
@@ -80,6 +82,9 @@ public:
     // Whether the runner polls watch index now.
     [[nodiscard]] bool isPolling(int index) const;
     [[nodiscard]] WatchRunner *runner() const { return m_runner; }
+    // The window's recording (LinkController::trafficLog, shared): every link's frames go there,
+    // now and in every run; nullptr: none (returns once no engine writes the old one).
+    void setTrafficLog(TrafficLog *log);
 
     // Writes text into row of watch index's table (a writable point): false with the reason.
     bool writeValue(int index, int row, const QString &text, QString *error);
@@ -124,6 +129,8 @@ Q_SIGNALS:
     void runningChanged(bool running);
     // Every batch of the runner's samples, as the windows got them (trends, latency panels, counters).
     void sampled(const QList<mbscope::WatchSample> &samples);
+    // Every frame of every link the watches poll, as its engine logs it (the traffic view).
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     // The user asked for a value of a watch in the Register trends ("Trend this value"); the
     // point is named by its name, or by its address when it has none.
     void trendRequested(const QString &watchName, quint16 address, const QString &pointName);
@@ -169,6 +176,7 @@ private:
     QLabel *m_hint;
     QList<WatchWindow *> m_windows;
     WatchRunner *m_runner = nullptr;
+    TrafficLog *m_trafficLog = nullptr;
     WatchLogControl *m_log = nullptr;
     RequestSource m_requestSource;
     std::function<QString()> m_targetSource;

@@ -4,10 +4,13 @@
 
 #include <QtCore/QProcess>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QThread>
 #include <QtTest/QtTest>
 
 #include <atomic>
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 #include <unistd.h>
 
@@ -105,6 +108,7 @@ private slots:
     void noAllocationOnceCycling();
     void killedWriterRecovered_data();
     void killedWriterRecovered();
+    void sharedByThreads();
 };
 
 void TestTrafficLog::verdicts()
@@ -230,6 +234,54 @@ void TestTrafficLog::memoryOnlyJournal()
     QVERIFY2(r.isClean(), qPrintable(r.message));
     QCOMPARE(frames.size(), 3000);
     QCOMPARE(frames.at(2999).bytes, made(2999).bytes);
+}
+
+// Issue 25: the engines of a watch run or a scan write one journal from threads of their own.
+// A shared log takes every frame whole, each writer's in its order, each writer on a link of its
+// own though they name the same URL (each numbers its transactions from 1).
+void TestTrafficLog::sharedByThreads()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("shared.mbscope.journal"));
+    constexpr int kWriters = 4;
+    constexpr quint64 kFrames = 5000;
+    {
+        TrafficLog log(TrafficLog::Limits{1000, quint64(1) << 20});
+        log.setShared(true);
+        QVERIFY(log.isShared());
+        QVERIFY(log.openJournal(path));
+        std::vector<std::unique_ptr<QThread>> writers;
+        for (int w = 0; w < kWriters; ++w) {
+            writers.push_back(std::unique_ptr<QThread>(QThread::create([&log] {
+                const quint16 link = log.addConnection(QStringLiteral("tcp://127.0.0.1:502"));
+                for (quint64 id = 1; id <= kFrames; ++id) {
+                    const QByteArray bytes(int(id % 40) + 1, char(link));
+                    log.append(qint64(id), TrafficDirection::Out, link, TrafficVerdict::Sent, id, bytes);
+                    if (id % 500 == 0)
+                        log.flushIfDue(qint64(id) + 200'000'000);
+                }
+            })));
+        }
+        for (auto &t : writers)
+            t->start();
+        for (auto &t : writers)
+            QVERIFY(t->wait(60000));
+        QCOMPARE(log.appended(), kWriters * kFrames);
+        QCOMPARE(log.links().size(), kWriters);
+    }
+    QList<TrafficFrame> frames;
+    const TrafficJournalRecovery r = TrafficJournalReader::readAll(path, &frames);
+    QVERIFY2(r.isClean(), qPrintable(r.message));
+    QCOMPARE(r.links, QStringList(kWriters, QStringLiteral("tcp://127.0.0.1:502")));
+    QCOMPARE(quint64(frames.size()), kWriters * kFrames);
+    std::vector<quint64> last(kWriters, 0);
+    for (const TrafficFrame &f : std::as_const(frames)) {
+        QVERIFY(f.link < kWriters);
+        QCOMPARE(f.transactionId, last[f.link] + 1);
+        last[f.link] = f.transactionId;
+        QCOMPARE(f.bytes, QByteArray(int(f.transactionId % 40) + 1, char(f.link)));
+    }
 }
 
 // Issue 3: "Memory per logged small frame: aim under 100 bytes, measured." The heap the log

@@ -1,7 +1,8 @@
 // The window records, always: a connection's frames reach a journal in the capture folder as they
 // happen, Save puts the journal beside the session and names it in the document, the Preferences
 // turn it off or change its policy, and a journal a crash left behind is offered back at the next
-// start with what came back.
+// start with what came back. The watches and scans of the window go into the same journal and the
+// traffic list, each link's engine a link of the journal of its own (issue 25).
 #include "guitestsupport.h"
 #include "link/linkcontroller.h"
 #include "session/replaycontroller.h"
@@ -10,9 +11,14 @@
 #include "shell/mainwindow.h"
 #include "sim/embeddedsimulator.h"
 #include "common/noticebanner.h"
+#include "discovery/scandialog.h"
+#include "traffic/trafficmonitor.h"
+#include "traffic/trafficmodel.h"
+#include "watch/watchworkspace.h"
 #include "session/recordingcontrol.h"
 #include "session/recordingsettings.h"
 
+#include "fleet/watchrunner.h"
 #include "session/sessionreader.h"
 #include "traffic/capturedirectory.h"
 #include "traffic/trafficjournal.h"
@@ -23,6 +29,7 @@
 #include <QtCore/QSettings>
 #include <QtCore/QSysInfo>
 #include <QtCore/QTemporaryDir>
+#include <QtWidgets/QSpinBox>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QtTest>
 
@@ -43,6 +50,7 @@ private Q_SLOTS:
     void crashLeftJournalIsOffered();
     void signalsCloseTheJournal_data();
     void signalsCloseTheJournal();
+    void watchesAndScansAreRecordedAndListed();
 
 private:
     QTemporaryDir m_captures;
@@ -265,6 +273,51 @@ void TestRecording::signalsCloseTheJournal()
     const TrafficJournalRecovery read = TrafficJournalReader::read(journals.constFirst().path, [](const TrafficEntry &) {});
     QVERIFY2(read.isClean(), qPrintable(read.message));
 #endif
+
+// The watches poll the composer's device on engines of their own, and a unit scan asks it: their
+// frames reach the traffic list and the connection's journal (they reached neither), each engine
+// on a link of the journal of its own, since each numbers its transactions from 1.
+void TestRecording::watchesAndScansAreRecordedAndListed()
+{
+    MainWindow window;
+    QVERIFY(window.startWithSimulator(QStringLiteral("rtu-tcp://127.0.0.1:0")));
+    LinkController *link = window.controller();
+    const QString url = link->url().toString();
+    const QString journal = link->recordingPath();
+    QVERIFY(!journal.isEmpty());
+    TrafficModel *traffic = window.trafficMonitor()->model();
+    const int before = traffic->rowCount();
+
+    WatchDefinition watch;
+    watch.name = QStringLiteral("settings");
+    watch.target = url;
+    watch.unit = 1;
+    watch.address = 0x79;
+    watch.quantity = 22;
+    watch.intervalMs = 20;
+    WatchWorkspace *workspace = window.watchWorkspace();
+    workspace->addWatch(watch);
+    workspace->startAll();
+    QTRY_VERIFY_WITH_TIMEOUT(workspace->runner()->counters(0).ok >= 5, 10000);
+    workspace->stopAll();
+    QTRY_VERIFY_WITH_TIMEOUT(traffic->rowCount() >= before + 10, 5000);
+
+    ScanDialog *scan = window.scanDialog();
+    scan->setTarget(link->url());
+    scan->findChild<QSpinBox *>(QStringLiteral("scanFirstUnit"))->setValue(1);
+    scan->findChild<QSpinBox *>(QStringLiteral("scanLastUnit"))->setValue(3);
+    QSignalSpy finished(scan, &ScanDialog::scanFinished);
+    const int beforeScan = traffic->rowCount();
+    scan->start();
+    QVERIFY(finished.wait(20000));
+    QTRY_VERIFY_WITH_TIMEOUT(traffic->rowCount() >= beforeScan + 6, 5000); // 3 ids asked, each a request and an outcome
+
+    link->disconnectLink();
+    const JournalCount c = countJournal(journal);
+    QVERIFY2(c.recovery.isClean(), qPrintable(c.recovery.message));
+    QVERIFY2(c.out >= 5 + 3, qPrintable(QString::number(c.out)));
+    // The composer's link, the watch's and the scan's: three links named by the one URL.
+    QCOMPARE(c.recovery.links.count(url), 3);
 }
 
 QTEST_MAIN(TestRecording)
