@@ -718,6 +718,8 @@ void TestCliCapture::recordedEndpoints()
         QCOMPARE(captured.value(QStringLiteral("client")).toString(), client);
         QCOMPARE(captured.value(QStringLiteral("server")).toString(), server);
     }
+}
+
 // Issue 26 item 11: export overwrote a file that --record refuses to overwrite, and a path the
 // permission bits allow but no file can be created at (/proc) passed the checks, the export then
 // failing after reading the source. One policy for every output: an existing file is refused
