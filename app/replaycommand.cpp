@@ -50,8 +50,10 @@ int runReplay(const QStringList &arguments)
         "compares each answer with the recorded one field by field (dissector keys, as a plan's expectations name them: "
         "modbus.register_value@0x007D), an exception against a normal answer, a missing answer; then the latency "
         "recorded and now (median, p95).\n"
-        "Recorded writes (functions 05, 06, 0F, 10, 15, 16, 17) are not sent unless --send-writes: a real device's outputs "
-        "would move. Each one skipped is listed (unit, function, address, quantity) and counted as skipped.\n"
+        "Recorded writes (functions 05, 06, 0F, 10, 15, 16, 17) and the diagnostics that change the device (08 "
+        "sub-functions 01 restart, 03, 04 listen only, 0A and 14 clear counters) are not sent unless --send-writes: a real "
+        "device's outputs would move. Each one skipped is listed (unit, function, address and quantity or sub-function) and "
+        "counted as skipped.\n"
         "With --serve URL: a simulator on URL answers with the recorded answers, matched by unit and request PDU (the "
         "MBAP transaction id aside); a request recorded several times gets its answers in turn, cycling.\n"
         "Example: mbscope replay bench.mbscope.json --speed max\n"
@@ -87,8 +89,8 @@ int runReplay(const QStringList &arguments)
                                        QStringLiteral("field"));
     const QCommandLineOption sendWritesOpt(QStringLiteral("send-writes"),
                                            QStringLiteral("Send the recording's writes to the target as well (05, 06, 0F, 10, 15, "
-                                                          "16, 17): they change the device. Without it they are listed as skipped, "
-                                                          "not sent."));
+                                                          "16, 17, and the 08 restarts, listen-only and counter clears): they change "
+                                                          "the device. Without it they are listed as skipped, not sent."));
     const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the result as JSON."));
     parser.addOptions({targetOpt, speedOpt, serveOpt, unrecordedOpt, durationOpt, ignoreOpt, sendWritesOpt, jsonOpt});
     const RecordOptions recordOptions;

@@ -19,24 +19,37 @@ namespace mbscope {
 // are the request's (0F, 10: its starting address and quantity; 05, 06, 16: its address and 1;
 // 17: the write starting address and quantity; 15: the first sub-request's record number and
 // record length). A request too short to hold them is still a write: known says so.
+//
+// Diagnostics (08) sub-functions that change the device's state are held back the same way
+// (6.8.1): 01 Restart Communications Option (restarts the port, may clear the event log), 03
+// Change ASCII Input Delimiter, 04 Force Listen Only Mode (the device stops answering until
+// restarted), 0A Clear Counters and Diagnostic Register, 14 Clear Overrun Counter and Flag; the
+// other sub-functions only read and are replayed. A Diagnostics request too short to name its
+// sub-function is held back too.
 struct RecordedWrite {
     qsizetype index = 0;   // in the ReplayScript
     quint8 unitId = 0;
     quint8 function = 0;
     quint16 address = 0;
     quint16 quantity = 0;
-    bool known = false;    // address and quantity read from the request
+    bool known = false;    // address and quantity (08: the sub-function) read from the request
+    int subFunction = -1;  // 08 only: the sub-function; -1 for every other function
 
     [[nodiscard]] static bool isWriteFunction(quint8 function);
+    // A Diagnostics (08) sub-function that changes the device's state (the list above).
+    [[nodiscard]] static bool isChangingDiagnostic(int subFunction);
     // The write a request PDU makes (function code first); nullopt for any other request.
     [[nodiscard]] static std::optional<RecordedWrite> of(qsizetype index, quint8 unitId, const QByteArray &pdu);
-    // "#4 unit 1 Write Single Register (06) address 0x007D quantity 1"
+    // "#4 unit 1 Write Single Register (06) address 0x007D quantity 1",
+    // "#2 unit 1 Diagnostics (08) sub-function 0x0001 Restart Communications Option"
     [[nodiscard]] QString text() const;
     // {"request": 4, "unit": 1, "function": "0x06", "name": "Write Single Register", "address": 125, "quantity": 1}
-    // (address and quantity null when the request is too short to say)
+    // (address and quantity null when the request is too short to say; 08: "subFunction" and
+    // "subFunctionName" instead of address and quantity)
     [[nodiscard]] QJsonObject toJson() const;
     // Where writes go, by unit: "unit 1 at 0x007D (2 times), 0x0100-0x0103; unit 3 at 0x0010"
-    // (a request too short to say: "an unknown address").
+    // (a request too short to say: "an unknown address"; a diagnostic: "Restart Communications
+    // Option").
     [[nodiscard]] static QString placesText(const QList<RecordedWrite> &writes);
 };
 

@@ -72,6 +72,7 @@ private slots:
     void serveAnswersWithTheRecording();
     void serveToPymodbus();
     void recordedWritesAreNotSent();
+    void recordedRestartsAreNotSent();
     void killedRecordingIsTruncated();
     void serveCountsAnswersApartFromSilences();
 
@@ -398,6 +399,62 @@ void TestCliReplay::recordedWritesAreNotSent()
                                         QStringLiteral("--send-writes")});
     QVERIFY2(serve.exitCode == 2 && serve.errText().contains(QStringLiteral("--send-writes applies to a replay to a device")),
              serve.describe().constData());
+}
+
+// Issue 26 item 1, "the same rule for anything else that re-sends recorded traffic": a recorded
+// Diagnostics Restart Communications Option (08/0001) restarts the device's port and Force Listen
+// Only Mode (08/0004) silences it until restarted; neither is re-sent unasked (both are recorded
+// from a simulator of their own, the restart taking it out of listen-only mode). Return Query Data
+// (08/0000) only echoes and is replayed.
+void TestCliReplay::recordedRestartsAreNotSent()
+{
+    const QString journal = m_dir.filePath(QStringLiteral("restarts.mbscope.journal"));
+    QString error;
+    Background recorded; // a device of its own: listen-only mode must not reach the other tests' simulator
+    QVERIFY2(recorded.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                             QStringLiteral("rtu-tcp://127.0.0.1:0")},
+                            &error),
+             qPrintable(error));
+    const LinkUrl::Result parsed = LinkUrl::parse(recorded.url());
+    QVERIFY2(parsed.url, qPrintable(parsed.error));
+    {
+        TrafficLog log;
+        QVERIFY2(log.openJournal(journal, {}, true, &error), qPrintable(error));
+        TransactionEngine engine;
+        engine.setTarget(*parsed.url);
+        engine.setTrafficLog(&log);
+        for (const char *request : {"080000a537", "0800040000", "0800010000", "0300790001"}) {
+            RequestItem item = RequestItem::forLink(AduBuilder::rtu(pdu(request), 1), *parsed.url);
+            item.timeoutMs = 300;
+            QVERIFY(engine.sendAndWait(item));
+        }
+        engine.closeLink();
+        engine.setTrafficLog(nullptr);
+        log.closeJournal();
+    }
+    (void)recorded.stop();
+    const QString seen = m_dir.filePath(QStringLiteral("device-without-restarts.mbscope.journal"));
+    Background device;
+    QVERIFY2(device.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                           QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--record"), seen},
+                          &error),
+             qPrintable(error));
+    const CliResult json = runMbscope({QStringLiteral("replay"), journal, QStringLiteral("--target"), device.url(), QStringLiteral("--speed"),
+                                       QStringLiteral("max"), QStringLiteral("--json")});
+    QVERIFY2(json.finished && json.exitCode == 0, json.describe().constData());
+    const QJsonObject o = json.json();
+    QCOMPARE(o.value(QStringLiteral("skipped_writes")).toInt(), 2);
+    QCOMPARE(o.value(QStringLiteral("replayed")).toInt(), 2);
+    const QJsonArray skipped = o.value(QStringLiteral("skipped")).toArray();
+    QCOMPARE(skipped.size(), 2);
+    QCOMPARE(skipped.at(0).toObject().value(QStringLiteral("subFunction")).toString(), QStringLiteral("0x0004"));
+    QCOMPARE(skipped.at(1).toObject().value(QStringLiteral("subFunction")).toString(), QStringLiteral("0x0001"));
+    const CliResult text = runMbscope({QStringLiteral("replay"), journal, QStringLiteral("--target"), device.url(), QStringLiteral("--speed"),
+                                       QStringLiteral("max")});
+    QVERIFY2(text.outText().contains(QStringLiteral("#3 unit 1 Diagnostics (0x08) sub-function 0x0001 Restart Communications Option: not sent")),
+             text.describe().constData());
+    (void)device.stop();
+    QCOMPARE(requestsReceived(seen).value(0x08), 2); // Return Query Data, once per replay
 }
 
 // Issue 26 item 7: a poll recording killed with SIGKILL while a request is in flight (the

@@ -501,6 +501,7 @@ void TestCliVerdicts::pollNumbersItsRequests()
     QCOMPARE(ids.size(), 4);
     for (qsizetype i = 1; i < ids.size(); ++i)
         QVERIFY2(ids.at(i) > ids.at(i - 1), rows.out.constData());
+}
 
 // Issue 26 item 10: decode of 1 MB of input wrote 11 MB: the frame's trailing bytes were shown
 // whole in the VALUE column, and every row with a problem was padded to that width. The table

@@ -10,6 +10,10 @@
 // other tests running in parallel, or the window's simulator, may hold: each block's loopback
 // ports (127.0.0.1:N, in the block and in the docs/examples it reads) are mapped to free ports
 // for its run, and /tmp/ to the block's folder, so that blocks never collide with anything.
+//
+// The blocks take minutes in all, most of it waiting on simulators and timers, so CTest runs them
+// as several tests (tst_docexamples_1of3 ...): MBSCOPE_DOC_SHARD=K/N runs every Nth block from
+// the Kth (1-based); without it, every block runs.
 #include "shellblocks.h"
 
 #include <QtCore/QDir>
@@ -149,11 +153,25 @@ void TestDocExamples::blocks_data()
 {
     QTest::addColumn<QString>("file");
     QTest::addColumn<int>("index");
+    int shard = 1;
+    int shards = 1;
+    const QString spec = qEnvironmentVariable("MBSCOPE_DOC_SHARD");
+    if (!spec.isEmpty()) {
+        bool okShard = false;
+        bool okShards = false;
+        shard = spec.section(QLatin1Char('/'), 0, 0).toInt(&okShard);
+        shards = spec.section(QLatin1Char('/'), 1, 1).toInt(&okShards);
+        if (!okShard || !okShards || shards < 1 || shard < 1 || shard > shards)
+            QFAIL(qPrintable(QStringLiteral("MBSCOPE_DOC_SHARD=%1: expected K/N with 1 <= K <= N").arg(spec)));
+    }
+    int counter = 0;
     for (const QString &file : markdownFiles()) {
         const QString relative = QDir(kSourceDir).relativeFilePath(file);
         const QList<ShellBlock> blocks = shellBlocks(readText(file));
-        for (int i = 0; i < blocks.size(); ++i)
-            QTest::addRow("%s:%d", qPrintable(relative), blocks.at(i).line) << file << i;
+        for (int i = 0; i < blocks.size(); ++i) {
+            if (counter++ % shards == shard - 1)
+                QTest::addRow("%s:%d", qPrintable(relative), blocks.at(i).line) << file << i;
+        }
     }
 }
 

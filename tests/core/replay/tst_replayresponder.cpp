@@ -58,6 +58,9 @@ private slots:
     void answers();
     void recordedLatencyBySpeed();
     void writesOfTheScript();
+    void changingDiagnosticsOfTheScript_data();
+    void changingDiagnosticsOfTheScript();
+    void diagnosticsPlaces();
     void unansweredAtEndLeftOut();
 };
 
@@ -171,7 +174,7 @@ void TestReplayResponder::writesOfTheScript()
     s.add(recorded(3, "17000000020020000102000a", "170400000000", 7)); // write 1 at 0x0020
     s.add(recorded(1, "150d06000400070003000100020003", "150d06000400070003000100020003", 8)); // file 4 record 7, 3 registers
     s.add(recorded(1, "06", "8603", 9));                               // too short to say where
-    s.add(recorded(1, "0800000000", "0800000000", 10));                // a diagnostic: not a write
+    s.add(recorded(1, "0800000000", "0800000000", 10));                // Return Query Data: only echoes
     const QList<RecordedWrite> writes = s.writes();
     QCOMPARE(writes.size(), 8);
     QStringList texts;
@@ -195,6 +198,54 @@ void TestReplayResponder::writesOfTheScript()
     QCOMPARE(json.value(QStringLiteral("quantity")).toInt(), 2);
     QCOMPARE(json.value(QStringLiteral("function")).toString(), QStringLiteral("0x10"));
     QVERIFY(writes.at(7).toJson().value(QStringLiteral("address")).isNull());
+}
+
+// Issue 26 item 1: Diagnostics sub-functions that change the device (restart, listen only,
+// clear counters, change the ASCII delimiter, clear overrun) are held back like writes; those that
+// only read are not.
+void TestReplayResponder::changingDiagnosticsOfTheScript_data()
+{
+    QTest::addColumn<QByteArray>("request");
+    QTest::addColumn<bool>("heldBack");
+    QTest::addColumn<QString>("text");
+    QTest::newRow("00 return query data") << QByteArray("080000a537") << false << QString();
+    QTest::newRow("01 restart") << QByteArray("080001ff00") << true
+                                << QStringLiteral("#1 unit 1 Diagnostics (0x08) sub-function 0x0001 Restart Communications Option");
+    QTest::newRow("02 diagnostic register") << QByteArray("0800020000") << false << QString();
+    QTest::newRow("03 ASCII delimiter") << QByteArray("0800030a00") << true
+                                        << QStringLiteral("#1 unit 1 Diagnostics (0x08) sub-function 0x0003 Change ASCII Input Delimiter");
+    QTest::newRow("04 listen only") << QByteArray("0800040000") << true
+                                    << QStringLiteral("#1 unit 1 Diagnostics (0x08) sub-function 0x0004 Force Listen Only Mode");
+    QTest::newRow("0A clear counters") << QByteArray("08000a0000") << true
+                                       << QStringLiteral("#1 unit 1 Diagnostics (0x08) sub-function 0x000A Clear Counters and Diagnostic Register");
+    QTest::newRow("0B bus message count") << QByteArray("08000b0000") << false << QString();
+    QTest::newRow("14 clear overrun") << QByteArray("0800140000") << true
+                                      << QStringLiteral("#1 unit 1 Diagnostics (0x08) sub-function 0x0014 Clear Overrun Counter and Flag");
+    QTest::newRow("too short") << QByteArray("0800") << true
+                               << QStringLiteral("#1 unit 1 Diagnostics (0x08), too short to say which sub-function");
+}
+
+void TestReplayResponder::changingDiagnosticsOfTheScript()
+{
+    QFETCH(QByteArray, request);
+    QFETCH(bool, heldBack);
+    QFETCH(QString, text);
+    const std::optional<RecordedWrite> w = RecordedWrite::of(0, 1, QByteArray::fromHex(request));
+    QCOMPARE(w.has_value(), heldBack);
+    if (w)
+        QCOMPARE(w->text(), text);
+}
+
+void TestReplayResponder::diagnosticsPlaces()
+{
+    QList<RecordedWrite> writes;
+    for (const char *request : {"06007d00fa", "0800010000", "0800010000", "0800040000"})
+        writes.append(*RecordedWrite::of(writes.size(), 1, QByteArray::fromHex(request)));
+    writes.append(*RecordedWrite::of(writes.size(), 2, QByteArray::fromHex("08000a0000")));
+    QCOMPARE(RecordedWrite::placesText(writes),
+             QStringLiteral("unit 1 at 0x007D and Restart Communications Option (2 times), Force Listen Only Mode; "
+                            "unit 2: Clear Counters and Diagnostic Register"));
+    QCOMPARE(writes.at(1).toJson().value(QStringLiteral("subFunctionName")).toString(), QStringLiteral("Restart Communications Option"));
 }
 
 // Issue 26 item 7: a request the recording ends before the outcome of is not replayed.

@@ -273,6 +273,7 @@ void TestRecording::signalsCloseTheJournal()
     const TrafficJournalRecovery read = TrafficJournalReader::read(journals.constFirst().path, [](const TrafficEntry &) {});
     QVERIFY2(read.isClean(), qPrintable(read.message));
 #endif
+}
 
 // The watches poll the composer's device on engines of their own, and a unit scan asks it: their
 // frames reach the traffic list and the connection's journal (they reached neither), each engine
