@@ -270,10 +270,9 @@ int runScan(const QStringList &arguments)
     const RecordOptions recordOptions;
     recordOptions.addTo(parser);
     parser.addOptions({lineOpt, baudsOpt, paritiesOpt, stopBitsOpt, firstOpt, timingOpt, clientsOpt});
-    const QCommandLineOption forceOpt = OutputPath::forceOption();
     parser.addOptions({targetOpt, unitsOpt, allIdsOpt, functionOpt, addressOpt, quantityOpt, timeoutOpt, gapOpt, maxTimeOpt,
                        allOpt, jsonOpt, watchesOpt, mapOpt, addressesOpt, tablesOpt, noOptionalOpt, profileOutOpt,
-                       maxRequestsOpt, stepOpt, forceOpt});
+                       maxRequestsOpt, stepOpt});
     if (!parser.parse(arguments)) {
         err << "mbscope scan: " << parser.errorText() << '\n';
         return ExitUsage;
@@ -301,12 +300,14 @@ int runScan(const QStringList &arguments)
     common.json = parser.isSet(jsonOpt);
     common.all = parser.isSet(allOpt);
     common.watchesPath = parser.value(watchesOpt);
-    if (!recordOptions.read(parser, QStringLiteral("scan"), common.record.settings, err))
+    // --force (RecordOptions') covers --record, --watches and --profile-out alike.
+    if (!recordOptions.read(parser, QStringLiteral("scan"), common.record.settings, err, true))
         return ExitUsage;
+    const bool force = common.record.settings.overwrite;
     common.record.metadata = commandMetadata(QStringLiteral("scan"), arguments);
     common.record.metadata.target = common.url.toString();
     const ScanOptionReader read{parser, err};
-    if (!read.durationMs(maxTimeOpt, 1, 24LL * 3600 * 1000, &common.maxTimeMs) || !checkWritable(QStringLiteral("--watches"), common.watchesPath, parser.isSet(forceOpt), err))
+    if (!read.durationMs(maxTimeOpt, 1, 24LL * 3600 * 1000, &common.maxTimeMs) || !checkWritable(QStringLiteral("--watches"), common.watchesPath, force, err))
         return ExitUsage;
     const bool map = parser.isSet(mapOpt);
     qint64 timeoutMs = map ? 500 : (common.url.responseTimeoutMs > 0 ? common.url.responseTimeoutMs : 200);
@@ -410,7 +411,7 @@ int runScan(const QStringList &arguments)
             || !read.integers(tablesOpt, 1, 4, &tables) || !read.integer(maxRequestsOpt, 1, 10'000'000, &maxRequests) || !read.integer(stepOpt, 1, 2000, &step))
             return ExitUsage;
         const QString profilePath = parser.value(profileOutOpt);
-        if (!checkWritable(QStringLiteral("--profile-out"), profilePath, parser.isSet(forceOpt), err))
+        if (!checkWritable(QStringLiteral("--profile-out"), profilePath, force, err))
             return ExitUsage;
         settings.unit = quint8(unit);
         settings.functions.clear();

@@ -52,6 +52,9 @@ EngineCore::EngineCore(QObject *parent)
                                       .arg(m_url.toString()).arg(m_url.connectTimeoutMs)});
     });
     setTarget(LinkUrl{}, EngineOptions{});
+    // The default target is no link: a journal attached before the real target (a scan's, a
+    // watch's) must not get a nameless "tcp://:502" link with no frames.
+    m_recorder->setLink(QString());
 }
 
 EngineCore::~EngineCore()

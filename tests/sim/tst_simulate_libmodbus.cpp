@@ -62,7 +62,7 @@ void tst_SimulateLibmodbus::everyFunctionCode()
     for (const char *line : {"unit 1  01 Read Coils  answered", "unit 1  02 Read Discrete Inputs  answered",
                              "unit 1  03 Read Holding Registers  answered", "unit 1  04 Read Input Registers  answered",
                              "unit 1  05 Write Single Coil  answered", "unit 1  06 Write Single Register  answered",
-                             "unit 1  0f Write Multiple Coils  answered", "unit 1  10 Write Multiple Registers  answered",
+                             "unit 1  0F Write Multiple Coils  answered", "unit 1  10 Write Multiple Registers  answered",
                              "unit 1  11 Report Server ID  answered", "unit 1  16 Mask Write Register  answered",
                              "unit 1  17 Read/Write Multiple Registers  answered",
                              "unit 1  03 Read Holding Registers  exception 02", "unit 1  16 Mask Write Register  exception 02",
