@@ -30,6 +30,9 @@ qint64 DelaySpec::sampleNs(SimRandom &random) const
     case Kind::Exponential:
         drawn = random.exponential(meanMs);
         break;
+    case Kind::LogNormal:
+        drawn = random.logNormal(meanMs, stddevMs);
+        break;
     }
     drawn = std::max(drawn, std::max(0.0, minMs));
     if (maxMs >= 0)
@@ -46,6 +49,7 @@ double DelaySpec::nominalMs() const
         return (minMs + std::max(minMs, maxMs)) / 2;
     case Kind::Normal:
     case Kind::Exponential:
+    case Kind::LogNormal:
         return meanMs;
     }
     return 0;
@@ -62,6 +66,8 @@ QString DelaySpec::kindName(Kind kind)
         return QStringLiteral("normal");
     case Kind::Exponential:
         return QStringLiteral("exponential");
+    case Kind::LogNormal:
+        return QStringLiteral("lognormal");
     }
     return QString();
 }

@@ -15,12 +15,13 @@ struct DelaySpec {
         Uniform,     // minMs .. maxMs
         Normal,      // meanMs, stddevMs
         Exponential, // meanMs (a memoryless wait: the tail of a busy device)
+        LogNormal,   // meanMs, stddevMs of the delay itself (right-skewed: a few draws several times the median)
     };
 
     Kind kind = Kind::Fixed;
     double ms = 0;       // Fixed
-    double meanMs = 0;   // Normal, Exponential
-    double stddevMs = 0; // Normal
+    double meanMs = 0;   // Normal, Exponential, LogNormal
+    double stddevMs = 0; // Normal, LogNormal
     double minMs = 0;    // Uniform's lower bound; the clamp for the others
     double maxMs = -1;   // Uniform's upper bound; the clamp for the others (negative: none)
 
@@ -30,7 +31,7 @@ struct DelaySpec {
     [[nodiscard]] qint64 sampleNs(SimRandom &random) const;
     // The expected value before clamping, in ms (for a unit's nominal response time).
     [[nodiscard]] double nominalMs() const;
-    // "fixed", "uniform", "normal", "exponential"
+    // "fixed", "uniform", "normal", "exponential", "lognormal"
     [[nodiscard]] static QString kindName(Kind kind);
 
     friend bool operator==(const DelaySpec &, const DelaySpec &) = default;

@@ -16,7 +16,7 @@ constexpr int kMaxJunk = 4096;
 std::optional<DelaySpec::Kind> delayKind(QStringView name)
 {
     for (auto kind : {DelaySpec::Kind::Fixed, DelaySpec::Kind::Uniform, DelaySpec::Kind::Normal,
-                      DelaySpec::Kind::Exponential}) {
+                      DelaySpec::Kind::Exponential, DelaySpec::Kind::LogNormal}) {
         if (name == DelaySpec::kindName(kind))
             return kind;
     }
@@ -244,7 +244,7 @@ std::optional<DelaySpec> FaultRuleReader::readDelay(JsonReader &reader, const QJ
     const auto kind = delayKind(*name);
     if (!kind) {
         reader.error(JsonReader::member(path, "distribution"),
-                     QStringLiteral("'%1' is not a distribution: expected fixed, uniform, normal or exponential").arg(*name));
+                     QStringLiteral("'%1' is not a distribution: expected fixed, uniform, normal, exponential or lognormal").arg(*name));
         return std::nullopt;
     }
     DelaySpec spec;
@@ -268,7 +268,8 @@ std::optional<DelaySpec> FaultRuleReader::readDelay(JsonReader &reader, const QJ
         break;
     case DelaySpec::Kind::Normal:
     case DelaySpec::Kind::Exponential:
-        if (*kind == DelaySpec::Kind::Normal) {
+    case DelaySpec::Kind::LogNormal:
+        if (*kind != DelaySpec::Kind::Exponential) {
             reader.checkKeys(o, path, {"distribution", "meanMs", "stddevMs", "minMs", "maxMs"});
             if (reader.require(o, path, "stddevMs"))
                 spec.stddevMs = reader.number(o, path, "stddevMs", 0, kMaxDelayMs).value_or(0);

@@ -64,8 +64,9 @@ QJsonObject delayJson(const DelaySpec &d)
         break;
     case DelaySpec::Kind::Normal:
     case DelaySpec::Kind::Exponential:
+    case DelaySpec::Kind::LogNormal:
         o.insert(QStringLiteral("meanMs"), d.meanMs);
-        if (d.kind == DelaySpec::Kind::Normal)
+        if (d.kind != DelaySpec::Kind::Exponential)
             o.insert(QStringLiteral("stddevMs"), d.stddevMs);
         if (d.minMs != 0)
             o.insert(QStringLiteral("minMs"), d.minMs);

@@ -83,6 +83,15 @@ double SimRandom::exponential(double mean)
     return -mean * std::log(1.0 - uniform());
 }
 
+double SimRandom::logNormal(double mean, double stddev)
+{
+    const double sigma2 = mean > 0 ? std::log1p((stddev / mean) * (stddev / mean)) : 0.0;
+    const double z = normal(0.0, 1.0); // drawn either way, so that the sequence does not depend on mean
+    if (!(mean > 0))
+        return 0.0;
+    return std::exp(std::log(mean) - sigma2 / 2 + std::sqrt(sigma2) * z);
+}
+
 quint64 SimRandom::poisson(double lambda)
 {
     if (!(lambda > 0))

@@ -29,6 +29,13 @@ public:
     [[nodiscard]] double normal(double mean, double stddev);
     // Exponential with the given mean (inverse transform).
     [[nodiscard]] double exponential(double mean);
+    // Log-normal with the given mean and standard deviation of its own (not of its logarithm):
+    // exp(N(mu, sigma)) with sigma^2 = ln(1 + (stddev / mean)^2) and mu = ln(mean) - sigma^2 / 2.
+    // A product of many independent positive factors tends to it: a wait stretched by several
+    // causes at once, right-skewed (most draws below the mean, a few several times the median,
+    // far out a longer tail than any exponential's). Consumes one normal pair, whatever the
+    // arguments; mean <= 0 gives 0.
+    [[nodiscard]] double logNormal(double mean, double stddev);
     // Poisson with mean lambda: multiplication method below 10, PTRS transformed rejection
     // (Hoermann 1993) above.
     [[nodiscard]] quint64 poisson(double lambda);

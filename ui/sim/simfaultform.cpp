@@ -121,6 +121,7 @@ void SimFaultForm::buildForm()
     m_distribution->addItem(tr("uniform"), int(DelaySpec::Kind::Uniform));
     m_distribution->addItem(tr("normal"), int(DelaySpec::Kind::Normal));
     m_distribution->addItem(tr("exponential"), int(DelaySpec::Kind::Exponential));
+    m_distribution->addItem(tr("lognormal"), int(DelaySpec::Kind::LogNormal));
     m_form->addRow(tr("&Distribution:"), m_distribution);
     m_fixedMs = msBox(formBox, 100, QStringLiteral("faultDelayMs"));
     m_form->addRow(tr("Delay:"), m_fixedMs);
@@ -233,8 +234,9 @@ void SimFaultForm::updateFieldVisibility()
     const bool delay = kind == FaultRule::Kind::Delay;
     m_form->setRowVisible(m_distribution, delay);
     m_form->setRowVisible(m_fixedMs, delay && distribution == DelaySpec::Kind::Fixed);
-    m_form->setRowVisible(m_meanMs, delay && (distribution == DelaySpec::Kind::Normal || distribution == DelaySpec::Kind::Exponential));
-    m_form->setRowVisible(m_stddevMs, delay && distribution == DelaySpec::Kind::Normal);
+    m_form->setRowVisible(m_meanMs, delay && (distribution == DelaySpec::Kind::Normal || distribution == DelaySpec::Kind::Exponential
+                                              || distribution == DelaySpec::Kind::LogNormal));
+    m_form->setRowVisible(m_stddevMs, delay && (distribution == DelaySpec::Kind::Normal || distribution == DelaySpec::Kind::LogNormal));
     m_form->setRowVisible(m_minMs, delay && distribution != DelaySpec::Kind::Fixed);
     m_form->setRowVisible(m_maxMs, delay && distribution != DelaySpec::Kind::Fixed);
     m_form->setRowVisible(m_exceptionCode, kind == FaultRule::Kind::Exception);
@@ -410,6 +412,9 @@ QString SimFaultForm::describe(const FaultRule &rule)
             what = tr("delay normal, mean %1 ms, standard deviation %2 ms").arg(ms(d.meanMs), ms(d.stddevMs));
             break;
         case DelaySpec::Kind::Exponential: what = tr("delay exponential, mean %1 ms").arg(ms(d.meanMs)); break;
+        case DelaySpec::Kind::LogNormal:
+            what = tr("delay lognormal, mean %1 ms, standard deviation %2 ms").arg(ms(d.meanMs), ms(d.stddevMs));
+            break;
         }
         break;
     }

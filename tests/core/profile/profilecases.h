@@ -86,7 +86,7 @@ inline void addErrorRows()
         S("the list is empty: a unit answers at least one function code"));
     row("delay unknown distribution", unit(R"(, "responseDelay": {"distribution": "gamma"})"),
         "units[0].responseDelay.distribution",
-        S("'gamma' is not a distribution: expected fixed, uniform, normal or exponential"));
+        S("'gamma' is not a distribution: expected fixed, uniform, normal, exponential or lognormal"));
     row("delay negative", unit(R"(, "responseDelay": -3)"), "units[0].responseDelay", S("-3 is below 0"));
     row("delay text", unit(R"(, "responseDelay": "4ms")"), "units[0].responseDelay",
         S("expected milliseconds or an object such as {\"distribution\": \"normal\", \"meanMs\": 4, \"stddevMs\": 1}, "
@@ -254,7 +254,10 @@ inline void addErrorRows()
         "faults.rules[0].probability.byIntervalMs[1][0]", S("100 ms does not follow 200 ms: intervals go up"));
     row("fault turnaround", faults(R"({"kind": "drop", "probability": {"turnaround": {"distribution": "poisson"}}})"),
         "faults.rules[0].probability.turnaround.distribution",
-        S("'poisson' is not a distribution: expected fixed, uniform, normal or exponential"));
+        S("'poisson' is not a distribution: expected fixed, uniform, normal, exponential or lognormal"));
+    row("fault turnaround lognormal without spread",
+        faults(R"({"kind": "drop", "probability": {"turnaround": {"distribution": "lognormal", "meanMs": 112}}})"),
+        "faults.rules[0].probability.turnaround", S("'stddevMs' is missing"));
     row("noise without rate", faults(R"({"kind": "noise"})"), "faults.rules[0]", S("'bitErrorRate' is missing"));
     row("noise rate too high", faults(R"({"kind": "noise", "bitErrorRate": 0.6})"), "faults.rules[0].bitErrorRate",
         S("0.6 is beyond 0.5"));

@@ -58,6 +58,10 @@ void TestFaultRuleWriter::roundTrip_data()
     r.turnaround.meanMs = 100;
     r.turnaround.maxMs = 330;
     QTest::newRow("turnaround") << r;
+    r.turnaround.kind = DelaySpec::Kind::LogNormal;
+    r.turnaround.meanMs = 112;
+    r.turnaround.stddevMs = 132;
+    QTest::newRow("turnaround lognormal") << r;
     r = rule(K::Noise);
     r.bitErrorRate = 0.0062;
     r.noiseOn = FaultRule::NoiseOn::Request;
@@ -81,6 +85,12 @@ void TestFaultRuleWriter::roundTrip_data()
     r.delay.kind = DelaySpec::Kind::Exponential;
     r.delay.meanMs = 7;
     QTest::newRow("delay exponential") << r;
+    r.delay = DelaySpec{};
+    r.delay.kind = DelaySpec::Kind::LogNormal;
+    r.delay.meanMs = 30;
+    r.delay.stddevMs = 45;
+    r.delay.minMs = 2;
+    QTest::newRow("delay lognormal") << r;
     r = rule(K::WrongTransactionId);
     r.delta = 300;
     QTest::newRow("transaction id") << r;

@@ -420,6 +420,21 @@ void TestFaultInjector::turnaround()
         fired += injector.plan(c).drop ? 1 : 0;
     const double p = std::exp(-1.0);
     QVERIFY2(std::abs(fired - n * p) <= 4 * std::sqrt(n * p * (1 - p)), qPrintable(QStringLiteral("%1 of %2").arg(fired).arg(n)));
+    // Log-normal, mean 112 ms, standard deviation 132 ms, at most 330 ms (scada-rs485): at its
+    // median, 112 / sqrt(1 + (132/112)^2) = 72.5 ms, half the requests are missed; from 330 ms on none.
+    r.turnaround.kind = DelaySpec::Kind::LogNormal;
+    r.turnaround.meanMs = 112;
+    r.turnaround.stddevMs = 132;
+    r.turnaround.maxMs = 330;
+    injector.setRules(FaultRuleSet{5, {r}});
+    c.intervalNs = std::llround(112e6 / std::sqrt(1 + (132.0 / 112) * (132.0 / 112)));
+    fired = 0;
+    for (int i = 0; i < n; ++i)
+        fired += injector.plan(c).drop ? 1 : 0;
+    QVERIFY2(std::abs(fired - n * 0.5) <= 4 * std::sqrt(n * 0.25), qPrintable(QStringLiteral("%1 of %2").arg(fired).arg(n)));
+    c.intervalNs = 330'000'000;
+    for (int i = 0; i < 1000; ++i)
+        QVERIFY(!injector.plan(c).drop);
 }
 
 // Line noise: bits of the answer flipped as sent (an RTU CRC then fails), requests lost.
@@ -496,6 +511,16 @@ void TestFaultInjector::delayDistributions_data()
     exponential.kind = DelaySpec::Kind::Exponential;
     exponential.meanMs = 20;
     QTest::newRow("exponential 20") << exponential << 20.0 << 20.0 << 0.0 << 1e9;
+    DelaySpec logNormal;
+    logNormal.kind = DelaySpec::Kind::LogNormal;
+    logNormal.meanMs = 30;
+    logNormal.stddevMs = 20;
+    QTest::newRow("lognormal 30, 20") << logNormal << 30.0 << 20.0 << 0.0 << 1e9;
+    logNormal.minMs = 10;
+    logNormal.maxMs = 40;
+    // Clamped to [10, 40]: ln X is normal with sigma^2 = ln(1 + (20/30)^2), mu = ln 30 - sigma^2 / 2;
+    // the clamped moments from its partial moments (the mass below 10 at 10, above 40 at 40).
+    QTest::newRow("lognormal 30, 20 clamped 10-40") << logNormal << 25.92 << 10.55 << 10.0 << 40.0;
 }
 
 // Delay rules observed as the plan's first chunk delay: mean and spread within bounds.

@@ -95,6 +95,39 @@ private slots:
         QVERIFY(r.chance(1));
     }
 
+    // Log-normal by its own mean and standard deviation: the sample moments match them, half the
+    // draws fall below the median mean / sqrt(1 + cv^2), and a mean of 0 draws as much as any.
+    void randomLogNormal()
+    {
+        SimRandom r(31);
+        constexpr int n = 40000;
+        constexpr double mean = 112;
+        constexpr double stddev = 132;
+        const double median = mean / std::sqrt(1 + (stddev / mean) * (stddev / mean));
+        double sum = 0;
+        double sumSquares = 0;
+        int belowMedian = 0;
+        for (int i = 0; i < n; ++i) {
+            const double x = r.logNormal(mean, stddev);
+            QVERIFY(x > 0);
+            sum += x;
+            sumSquares += x * x;
+            belowMedian += x < median ? 1 : 0;
+        }
+        const double m = sum / n;
+        const double sd = std::sqrt(sumSquares / n - m * m);
+        QVERIFY2(std::abs(m - mean) < 5 * stddev / std::sqrt(double(n)), qPrintable(QString::number(m)));
+        QVERIFY2(std::abs(sd - stddev) < 0.1 * stddev, qPrintable(QString::number(sd)));
+        QVERIFY2(std::abs(belowMedian - n / 2) < 5 * std::sqrt(n / 4.0), qPrintable(QString::number(belowMedian)));
+        // stddev 0: the mean itself.
+        QCOMPARE(std::llround(r.logNormal(25, 0) * 1e9), std::llround(25e9));
+        SimRandom a(5);
+        SimRandom b(5);
+        QCOMPARE(a.logNormal(0, 10), 0.0);
+        (void)b.logNormal(50, 10);
+        QCOMPARE(a.next(), b.next());
+    }
+
     void constant()
     {
         GeneratorSpec s = spec(GeneratorSpec::Kind::Constant);

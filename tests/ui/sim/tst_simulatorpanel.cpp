@@ -333,7 +333,7 @@ void TestSimulatorPanel::profilesWithIssue15Keys()
     QVERIFY2(scada, qPrintable(panel.message()));
     const QList<FaultRule> bus = scada->faultRules().rules;
     QCOMPARE(bus.size(), 2);
-    QVERIFY2(SimFaultForm::describe(bus.at(0)).contains(QLatin1String("turnaround of 100 ms")), qPrintable(SimFaultForm::describe(bus.at(0))));
+    QVERIFY2(SimFaultForm::describe(bus.at(0)).contains(QLatin1String("turnaround of 112 ms")), qPrintable(SimFaultForm::describe(bus.at(0))));
     QVERIFY2(SimFaultForm::describe(bus.at(1)).contains(QLatin1String("line noise on requests")), qPrintable(SimFaultForm::describe(bus.at(1))));
     scada->setFaultRules({}); // a quiet bus, for one sure answer
     QTcpSocket socket;
