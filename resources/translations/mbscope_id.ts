@@ -2260,7 +2260,7 @@
         <translation>Kode pengecualian</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/dissector.cpp" line="+41"/>
+        <location filename="../../core/protocol/dissector.cpp" line="+42"/>
         <source>Frame too long</source>
         <translation>Frame terlalu panjang</translation>
     </message>
@@ -2974,7 +2974,7 @@
 <context>
     <name>mbscope::LinkController</name>
     <message>
-        <location filename="../../ui/link/linkcontroller.cpp" line="+113"/>
+        <location filename="../../ui/link/linkcontroller.cpp" line="+114"/>
         <source>nothing is being recorded</source>
         <translation>tidak ada yang sedang direkam</translation>
     </message>
@@ -2985,7 +2985,7 @@
         <translation>tidak dapat menyalin %1 ke %2: %3</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+81"/>
         <source>%1: listening only (nothing is sent)</source>
         <translation>%1: hanya mendengar (tidak ada yang dikirim)</translation>
     </message>
@@ -2995,18 +2995,18 @@
         <translation>%1: membuka untuk mendengar</translation>
     </message>
     <message>
-        <location line="-29"/>
+        <location line="-31"/>
         <source>%1: connecting…</source>
         <translation>%1: menyambungkan…</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+50"/>
         <location line="+10"/>
         <source>Not connected</source>
         <translation>Tidak tersambung</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+77"/>
         <source>Poll %1: %2 transactions, %3 ok, %4 failed</source>
         <translation>Polling %1: %2 transaksi, %3 ok, %4 gagal</translation>
     </message>
@@ -3132,12 +3132,12 @@
         <translation>Pantauan</translation>
     </message>
     <message>
-        <location line="+501"/>
+        <location line="+506"/>
         <source>Disconnected. The built-in simulator still answers on &lt;code&gt;%1&lt;/code&gt;: press &lt;b&gt;Connect&lt;/b&gt; to use it again, or choose a real device&apos;s link type, host and port (or serial port) first.</source>
         <translation>Terputus. Simulator bawaan masih menjawab di &lt;code&gt;%1&lt;/code&gt;: tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk memakainya lagi, atau pilih dulu jenis link, host dan port (atau port serial) perangkat sungguhan.</translation>
     </message>
     <message>
-        <location line="-357"/>
+        <location line="-362"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
@@ -3162,7 +3162,7 @@
         <translation>Bilah koneksi tidak menyebut target: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+33"/>
         <source>Plotting %1 in Analysis → Register trends</source>
         <translation>Menggambar %1 di Analisis → Tren register</translation>
     </message>
@@ -3302,14 +3302,14 @@
         <translation>&lt;h3&gt;mbscope %1&lt;/h3&gt;&lt;p&gt;Meja uji untuk menguji dan menganalisis perangkat Modbus: kirim persis byte yang Anda maksud, lihat setiap field jawaban dijelaskan, ukur bagaimana perangkat berperilaku.&lt;/p&gt;&lt;p&gt;Dilisensikan di bawah GNU General Public License, versi 3 atau (sesuai pilihan Anda) versi yang lebih baru (GPL-3.0-or-later). Program ini datang TANPA JAMINAN APA PUN.&lt;/p&gt;&lt;p&gt;Dibuat dengan Qt %2 dan QCustomPlot.&lt;/p&gt;</translation>
     </message>
     <message numerus="yes">
-        <location line="+30"/>
+        <location line="+34"/>
         <source>%n watch(es) added from the scan: Workspace &gt; Start all (F5) polls them.</source>
         <translation>
             <numerusform>%n pantauan ditambahkan dari pindaian: Daftar pantau &gt; Mulai semua (F5) membacanya.</numerusform>
         </translation>
     </message>
     <message>
-        <location line="-128"/>
+        <location line="-132"/>
         <source>&lt;b&gt;Listening only&lt;/b&gt; to the built-in simulator on &lt;code&gt;%1&lt;/code&gt;: nothing is sent, and the simulator answers only requests, so the traffic stays empty unless another master polls it. Untick &lt;b&gt;Listen&lt;/b&gt; and press &lt;b&gt;Connect&lt;/b&gt; to send it requests.</source>
         <translation>&lt;b&gt;Hanya menyimak&lt;/b&gt; simulator bawaan di &lt;code&gt;%1&lt;/code&gt;: tidak ada yang dikirim, dan simulator hanya menjawab permintaan, jadi lalu lintas tetap kosong kecuali ada master lain yang mem-polling-nya. Hilangkan centang &lt;b&gt;Simak&lt;/b&gt; lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk mengirim permintaan kepadanya.</translation>
     </message>
@@ -5711,7 +5711,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/scandialog.cpp" line="+39"/>
+        <location filename="../../ui/discovery/scandialog.cpp" line="+41"/>
         <location line="+1"/>
         <source> ms</source>
         <translation> md</translation>
@@ -5847,7 +5847,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pada port serial: coba laju baud, paritas, dan bit stop dengan baca di atas sampai sebuah unit menjawab.</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>Asks every id the read above, one at a time, and says what each did.</source>
         <translation>Menanyai setiap id dengan pembacaan di atas, satu per satu, dan menyebutkan apa yang dilakukan masing-masing.</translation>
     </message>
@@ -5892,7 +5892,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1: %2 dari %3 id ditanyai dalam %4, %5 ditemukan.</translation>
     </message>
     <message numerus="yes">
-        <location line="+114"/>
+        <location line="+137"/>
         <source>%n watch definition(s) copied to the clipboard.</source>
         <translation>
             <numerusform>%n definisi pantauan disalin ke papan klip.</numerusform>
@@ -6207,23 +6207,23 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+372"/>
+        <location line="+377"/>
         <source>any unit</source>
         <translation>unit apa pun</translation>
     </message>
     <message>
-        <location line="-371"/>
+        <location line="-376"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+365"/>
+        <location line="+370"/>
         <source>any function</source>
         <translation>fungsi apa pun</translation>
     </message>
     <message>
-        <location line="-364"/>
+        <location line="-369"/>
         <source>Function &amp;code:</source>
         <translation>&amp;Kode fungsi:</translation>
     </message>
@@ -6276,6 +6276,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>exponential</source>
         <translation>eksponensial</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>lognormal</source>
+        <translation>log-normal</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -6438,7 +6443,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Mengganti aturan dengan isi berkas gangguan (format mbscope simulate --faults).</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+101"/>
         <source>Not added: a uniform delay needs &apos;At most&apos; (%1 ms) at or above &apos;At least&apos; (%2 ms).</source>
         <translation>Tidak ditambahkan: tunda seragam memerlukan &apos;Maksimal&apos; (%1 ms) sama dengan atau di atas &apos;Minimal&apos; (%2 ms).</translation>
     </message>
@@ -6512,7 +6517,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>tunda eksponensial, rata-rata %1 ms</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
+        <source>delay lognormal, mean %1 ms, standard deviation %2 ms</source>
+        <translation>tunda log-normal, rata-rata %1 ms, simpangan baku %2 ms</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>drop the answer</source>
         <translation>buang jawaban</translation>
     </message>
@@ -8867,7 +8877,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Belum ada pantauan. Sebuah pantauan mem-polling satu blok perangkat pada intervalnya sendiri dan menampilkan nilainya dengan nama, unit, dan warna aturan. Buat dengan Daftar pantau → Pantauan baru (%1), dari permintaan baca penyusun (%2) atau dari profil perangkat (%3); Mulai semua (%4) mem-polling semuanya bersama.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+40"/>
         <source>&amp;New watch…</source>
         <translation>Pantauan &amp;baru…</translation>
     </message>
@@ -9039,7 +9049,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Tidak ada pantauan untuk dimulai: buat dulu (Daftar pantau → Pantauan baru)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+28"/>
         <source>Written: %1</source>
         <translation>Ditulis: %1</translation>
     </message>
@@ -9049,14 +9059,14 @@ Klik kanan untuk mengganti format</translation>
         <translation>Tidak ditulis: %1</translation>
     </message>
     <message numerus="yes">
-        <location line="-15"/>
+        <location line="-19"/>
         <source>Polling %n watch(es)</source>
         <translation>
             <numerusform>Mem-polling %n pantauan</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+36"/>
         <source>Watches stopped</source>
         <translation>Pantauan dihentikan</translation>
     </message>
