@@ -3112,12 +3112,12 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+95"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+91"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>&amp;Answer</source>
         <translation>&amp;Jawaban</translation>
     </message>
@@ -3132,12 +3132,7 @@
         <translation>Pantauan</translation>
     </message>
     <message>
-        <location line="+506"/>
-        <source>Disconnected. The built-in simulator still answers on &lt;code&gt;%1&lt;/code&gt;: press &lt;b&gt;Connect&lt;/b&gt; to use it again, or choose a real device&apos;s link type, host and port (or serial port) first.</source>
-        <translation>Terputus. Simulator bawaan masih menjawab di &lt;code&gt;%1&lt;/code&gt;: tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk memakainya lagi, atau pilih dulu jenis link, host dan port (atau port serial) perangkat sungguhan.</translation>
-    </message>
-    <message>
-        <location line="-362"/>
+        <location line="+141"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
@@ -3167,7 +3162,7 @@
         <translation>Menggambar %1 di Analisis → Tren register</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+21"/>
         <source>%1 dock (F6: the next one)</source>
         <translation>Dok %1 (F6: dok berikutnya)</translation>
     </message>
@@ -3197,17 +3192,12 @@
         <translation>Terkirim: %1</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+24"/>
         <source>Not connected: press Connect to use %1 again</source>
         <translation>Tidak tersambung: tekan Sambungkan untuk memakai %1 lagi</translation>
     </message>
     <message>
-        <location line="+32"/>
-        <source>&lt;b&gt;Connected to mbscope&apos;s built-in simulator&lt;/b&gt;, not to a device: a RosRao gamma detector (profile &lt;code&gt;%1&lt;/code&gt;) answering on &lt;code&gt;%2&lt;/code&gt;. Press &lt;b&gt;Send&lt;/b&gt; to read its 22 registers. To talk to a real device, press &lt;b&gt;Disconnect&lt;/b&gt;, choose its link type, host and port (or serial port) and press &lt;b&gt;Connect&lt;/b&gt;.</source>
-        <translation>&lt;b&gt;Tersambung ke simulator bawaan mbscope&lt;/b&gt;, bukan ke perangkat: detektor gamma RosRao (profil &lt;code&gt;%1&lt;/code&gt;) yang menjawab di &lt;code&gt;%2&lt;/code&gt;. Tekan &lt;b&gt;Kirim&lt;/b&gt; untuk membaca 22 register-nya. Untuk berbicara dengan perangkat sungguhan, tekan &lt;b&gt;Putuskan&lt;/b&gt;, pilih jenis link, host dan port (atau port serial)-nya, lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt;.</translation>
-    </message>
-    <message>
-        <location line="+57"/>
+        <location line="+54"/>
         <source>&amp;File</source>
         <translation>&amp;Berkas</translation>
     </message>
@@ -3217,22 +3207,7 @@
         <translation>&amp;Keluar</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>&amp;Request</source>
-        <translation>&amp;Permintaan</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>&amp;Edit raw bytes</source>
-        <translation>&amp;Sunting byte mentah</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Build with the &amp;form</source>
-        <translation>Susun dengan &amp;formulir</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>Wor&amp;kspace</source>
         <translation>Da&amp;ftar pantau</translation>
     </message>
@@ -3251,67 +3226,12 @@
         <source>&amp;Next dock</source>
         <translation>Dok &amp;berikutnya</translation>
     </message>
-    <message>
-        <location line="+4"/>
-        <source>&amp;Tools</source>
-        <translation>&amp;Alat</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>&amp;Scan for units…</source>
-        <translation>Pi&amp;ndai unit…</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Ask every unit id of a link the same read and list what each did</source>
-        <translation>Tanyai setiap id unit pada satu link dengan pembacaan yang sama dan tampilkan apa yang dilakukan masing-masing</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&amp;Preferences…</source>
-        <translation>&amp;Preferensi…</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Recording settings apply from the next connection.</source>
-        <translation>Pengaturan perekaman berlaku mulai sambungan berikutnya.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>The new language is used when mbscope is started again.</source>
-        <translation>Bahasa yang baru dipakai saat mbscope dijalankan lagi.</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>&amp;Help</source>
-        <translation>Ba&amp;ntuan</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>&amp;About mbscope</source>
-        <translation>&amp;Tentang mbscope</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>About mbscope</source>
-        <translation>Tentang mbscope</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>&lt;h3&gt;mbscope %1&lt;/h3&gt;&lt;p&gt;A bench for testing and analysing Modbus devices: send exactly the bytes you mean, see every field of the answer explained, measure how the device behaves.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or (at your option) any later version (GPL-3.0-or-later). This program comes with ABSOLUTELY NO WARRANTY.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QCustomPlot.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;mbscope %1&lt;/h3&gt;&lt;p&gt;Meja uji untuk menguji dan menganalisis perangkat Modbus: kirim persis byte yang Anda maksud, lihat setiap field jawaban dijelaskan, ukur bagaimana perangkat berperilaku.&lt;/p&gt;&lt;p&gt;Dilisensikan di bawah GNU General Public License, versi 3 atau (sesuai pilihan Anda) versi yang lebih baru (GPL-3.0-or-later). Program ini datang TANPA JAMINAN APA PUN.&lt;/p&gt;&lt;p&gt;Dibuat dengan Qt %2 dan QCustomPlot.&lt;/p&gt;</translation>
-    </message>
     <message numerus="yes">
-        <location line="+34"/>
+        <location line="+30"/>
         <source>%n watch(es) added from the scan: Workspace &gt; Start all (F5) polls them.</source>
         <translation>
             <numerusform>%n pantauan ditambahkan dari pindaian: Daftar pantau &gt; Mulai semua (F5) membacanya.</numerusform>
         </translation>
-    </message>
-    <message>
-        <location line="-132"/>
-        <source>&lt;b&gt;Listening only&lt;/b&gt; to the built-in simulator on &lt;code&gt;%1&lt;/code&gt;: nothing is sent, and the simulator answers only requests, so the traffic stays empty unless another master polls it. Untick &lt;b&gt;Listen&lt;/b&gt; and press &lt;b&gt;Connect&lt;/b&gt; to send it requests.</source>
-        <translation>&lt;b&gt;Hanya menyimak&lt;/b&gt; simulator bawaan di &lt;code&gt;%1&lt;/code&gt;: tidak ada yang dikirim, dan simulator hanya menjawab permintaan, jadi lalu lintas tetap kosong kecuali ada master lain yang mem-polling-nya. Hilangkan centang &lt;b&gt;Simak&lt;/b&gt; lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk mengirim permintaan kepadanya.</translation>
     </message>
 </context>
 <context>
@@ -4329,7 +4249,7 @@
 <context>
     <name>mbscope::RegisterTable</name>
     <message>
-        <location filename="../../ui/registers/registertable.cpp" line="+37"/>
+        <location filename="../../ui/registers/registertable.cpp" line="+38"/>
         <source>AB (high byte first)</source>
         <translation>AB (byte atas dulu)</translation>
     </message>
@@ -5251,27 +5171,27 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RequestComposer</name>
     <message>
-        <location filename="../../ui/compose/requestcomposer.cpp" line="+43"/>
+        <location filename="../../ui/compose/requestcomposer.cpp" line="+46"/>
         <source>&amp;Send</source>
         <translation>&amp;Kirim</translation>
     </message>
     <message>
         <location line="+4"/>
         <location line="+12"/>
-        <location line="+291"/>
+        <location line="+307"/>
         <source>Send the request once (Ctrl+Return)</source>
         <translation>Kirim permintaan sekali (Ctrl+Return)</translation>
     </message>
     <message>
-        <location line="-300"/>
+        <location line="-316"/>
         <location line="+35"/>
-        <location line="+244"/>
+        <location line="+260"/>
         <location line="+1"/>
         <source>Start &amp;poll</source>
         <translation>Mulai pollin&amp;g</translation>
     </message>
     <message>
-        <location line="-292"/>
+        <location line="-308"/>
         <source>Ra&amp;w</source>
         <translation>Menta&amp;h</translation>
     </message>
@@ -5313,12 +5233,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+264"/>
+        <location line="+280"/>
         <source>Send the request repeatedly (Ctrl+Shift+Return starts and stops)</source>
         <translation>Kirim permintaan berulang-ulang (Ctrl+Shift+Return memulai dan menghentikan)</translation>
     </message>
     <message>
-        <location line="-257"/>
+        <location line="-273"/>
         <source>Poll</source>
         <translation>Polling</translation>
     </message>
@@ -5343,7 +5263,22 @@ Klik kanan untuk mengganti format</translation>
         <translation>Biarkan seperti diketik</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+77"/>
+        <source>&amp;Request</source>
+        <translation>&amp;Permintaan</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Edit raw bytes</source>
+        <translation>&amp;Sunting byte mentah</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Build with the &amp;form</source>
+        <translation>Susun dengan &amp;formulir</translation>
+    </message>
+    <message>
+        <location line="+58"/>
         <source>remove the check sum, add an MBAP header</source>
         <translation>buang checksum, tambahkan header MBAP</translation>
     </message>
@@ -6925,6 +6860,24 @@ Klik kanan untuk mengganti format</translation>
     </message>
 </context>
 <context>
+    <name>mbscope::SimulatorNotice</name>
+    <message>
+        <location filename="../../ui/shell/simulatornotice.cpp" line="+18"/>
+        <source>&lt;b&gt;Connected to mbscope&apos;s built-in simulator&lt;/b&gt;, not to a device: a RosRao gamma detector (profile &lt;code&gt;%1&lt;/code&gt;) answering on &lt;code&gt;%2&lt;/code&gt;. Press &lt;b&gt;Send&lt;/b&gt; to read its 22 registers. To talk to a real device, press &lt;b&gt;Disconnect&lt;/b&gt;, choose its link type, host and port (or serial port) and press &lt;b&gt;Connect&lt;/b&gt;.</source>
+        <translation>&lt;b&gt;Tersambung ke simulator bawaan mbscope&lt;/b&gt;, bukan ke perangkat: detektor gamma RosRao (profil &lt;code&gt;%1&lt;/code&gt;) yang menjawab di &lt;code&gt;%2&lt;/code&gt;. Tekan &lt;b&gt;Kirim&lt;/b&gt; untuk membaca 22 register-nya. Untuk berbicara dengan perangkat sungguhan, tekan &lt;b&gt;Putuskan&lt;/b&gt;, pilih jenis link, host dan port (atau port serial)-nya, lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt;.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Disconnected. The built-in simulator still answers on &lt;code&gt;%1&lt;/code&gt;: press &lt;b&gt;Connect&lt;/b&gt; to use it again, or choose a real device&apos;s link type, host and port (or serial port) first.</source>
+        <translation>Terputus. Simulator bawaan masih menjawab di &lt;code&gt;%1&lt;/code&gt;: tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk memakainya lagi, atau pilih dulu jenis link, host dan port (atau port serial) perangkat sungguhan.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&lt;b&gt;Listening only&lt;/b&gt; to the built-in simulator on &lt;code&gt;%1&lt;/code&gt;: nothing is sent, and the simulator answers only requests, so the traffic stays empty unless another master polls it. Untick &lt;b&gt;Listen&lt;/b&gt; and press &lt;b&gt;Connect&lt;/b&gt; to send it requests.</source>
+        <translation>&lt;b&gt;Hanya menyimak&lt;/b&gt; simulator bawaan di &lt;code&gt;%1&lt;/code&gt;: tidak ada yang dikirim, dan simulator hanya menjawab permintaan, jadi lalu lintas tetap kosong kecuali ada master lain yang mem-polling-nya. Hilangkan centang &lt;b&gt;Simak&lt;/b&gt; lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk mengirim permintaan kepadanya.</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::SimulatorPanel</name>
     <message>
         <location filename="../../ui/sim/simulatorpanel.cpp" line="+46"/>
@@ -7726,6 +7679,59 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>CA certificate</source>
         <translation>sertifikat CA</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::ToolsMenu</name>
+    <message>
+        <location filename="../../ui/shell/toolsmenu.cpp" line="+33"/>
+        <source>&amp;Tools</source>
+        <translation>&amp;Alat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Scan for units…</source>
+        <translation>Pi&amp;ndai unit…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Ask every unit id of a link the same read and list what each did</source>
+        <translation>Tanyai setiap id unit pada satu link dengan pembacaan yang sama dan tampilkan apa yang dilakukan masing-masing</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Preferensi…</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Help</source>
+        <translation>Ba&amp;ntuan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;About mbscope</source>
+        <translation>&amp;Tentang mbscope</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Recording settings apply from the next connection.</source>
+        <translation>Pengaturan perekaman berlaku mulai sambungan berikutnya.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The new language is used when mbscope is started again.</source>
+        <translation>Bahasa yang baru dipakai saat mbscope dijalankan lagi.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>About mbscope</source>
+        <translation>Tentang mbscope</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&lt;h3&gt;mbscope %1&lt;/h3&gt;&lt;p&gt;A bench for testing and analysing Modbus devices: send exactly the bytes you mean, see every field of the answer explained, measure how the device behaves.&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or (at your option) any later version (GPL-3.0-or-later). This program comes with ABSOLUTELY NO WARRANTY.&lt;/p&gt;&lt;p&gt;Built with Qt %2 and QCustomPlot.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;mbscope %1&lt;/h3&gt;&lt;p&gt;Meja uji untuk menguji dan menganalisis perangkat Modbus: kirim persis byte yang Anda maksud, lihat setiap field jawaban dijelaskan, ukur bagaimana perangkat berperilaku.&lt;/p&gt;&lt;p&gt;Dilisensikan di bawah GNU General Public License, versi 3 atau (sesuai pilihan Anda) versi yang lebih baru (GPL-3.0-or-later). Program ini datang TANPA JAMINAN APA PUN.&lt;/p&gt;&lt;p&gt;Dibuat dengan Qt %2 dan QCustomPlot.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>

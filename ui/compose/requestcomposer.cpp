@@ -13,6 +13,9 @@
 #include <QtWidgets/QGroupBox>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
+#include <QtWidgets/QMenu>
+#include <QtWidgets/QMenuBar>
+#include <QtWidgets/QPlainTextEdit>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
 #include <QtWidgets/QTabWidget>
@@ -186,6 +189,22 @@ QByteArray RequestComposer::bytes() const
 void RequestComposer::setRequestText(const QString &hex)
 {
     m_raw->setText(hex);
+}
+
+QMenu *RequestComposer::addMenu(QMenuBar *menuBar)
+{
+    QMenu *request = menuBar->addMenu(tr("&Request"));
+    request->addAction(m_sendAction);
+    request->addAction(m_pollAction);
+    request->addSeparator();
+    QAction *focusRaw = request->addAction(tr("&Edit raw bytes"), this, [this] {
+        showRawTab();
+        m_raw->editor()->setFocus();
+    });
+    focusRaw->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    QAction *form = request->addAction(tr("Build with the &form"), this, &RequestComposer::showFormTab);
+    form->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+    return request;
 }
 
 void RequestComposer::showRawTab()

@@ -10,6 +10,8 @@
 
 class QAction;
 class QLabel;
+class QMenu;
+class QMenuBar;
 class QPushButton;
 class QSpinBox;
 class QTabWidget;
@@ -58,6 +60,8 @@ public:
     // The bytes Send would send (the Raw tab's); empty while they are not hex.
     [[nodiscard]] QByteArray bytes() const;
     void setRequestText(const QString &hex);
+    // "Request": Send, Poll, Edit raw bytes (Ctrl+L), Build with the form (Ctrl+B).
+    QMenu *addMenu(QMenuBar *menuBar);
     void showRawTab();
     void showFormTab();
 

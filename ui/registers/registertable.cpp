@@ -3,6 +3,7 @@
 #include "common/coretext.h"
 #include "registertablemodel.h"
 
+#include <QtCore/QSettings>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QHeaderView>
 #include <QtWidgets/QLabel>
@@ -329,6 +330,26 @@ void RegisterTable::setProfile(const UnitProfile &unit, const QString &profileNa
 void RegisterTable::clearProfile()
 {
     m_model->clearProfile();
+}
+
+void RegisterTable::storeFormats() const
+{
+    QStringList formats;
+    for (const RegisterFormat &format : m_model->valueFormats())
+        formats << format.name();
+    QSettings().setValue(QStringLiteral("registers/formats"), formats);
+}
+
+void RegisterTable::restoreFormats()
+{
+    QList<RegisterFormat> formats;
+    for (const QString &name : QSettings().value(QStringLiteral("registers/formats")).toStringList()) {
+        const RegisterFormatResult format = RegisterFormat::parse(name);
+        if (format.ok)
+            formats.append(format.format);
+    }
+    if (!formats.isEmpty())
+        m_model->setValueFormats(formats);
 }
 
 } // namespace mbscope

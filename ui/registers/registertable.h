@@ -39,6 +39,10 @@ public:
     bool showAnswer(const QByteArray &requestPdu, const QByteArray &responsePdu);
 
     void setProfile(const UnitProfile &unit, const QString &profileName);
+    // The value columns (formats and byte orders) as the user left them, in the application's
+    // settings (registers/formats): stored when the window closes, put back at the next start.
+    void storeFormats() const;
+    void restoreFormats();
     void clearProfile();
 
     // The value column the toolbar's format and order act on (0-based among value columns).

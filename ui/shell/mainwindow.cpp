@@ -4,7 +4,7 @@
 #include "common/appicon.h"
 #include "link/connectionbar.h"
 #include "decode/decodepanel.h"
-#include "discovery/scandialog.h"
+#include "docknavigator.h"
 #include "analysis/latencyanalysis.h"
 #include "analysis/latencysource.h"
 #include "analysis/registertrendpanel.h"
@@ -22,6 +22,8 @@
 #include "session/sessioncontroller.h"
 #include "sim/simulatorpanel.h"
 #include "sessiontools.h"
+#include "simulatornotice.h"
+#include "toolsmenu.h"
 #include "traffic/trafficmodel.h"
 #include "traffic/trafficmonitor.h"
 #include "decode/transactionview.h"
@@ -32,7 +34,6 @@
 #include "protocol/adubuilder.h"
 
 #include <QtCore/QTimer>
-#include <QtCore/QHash>
 #include <QtCore/QCoreApplication>
 #include <QtCore/QFileInfo>
 #include <QtCore/QSettings>
@@ -43,18 +44,13 @@
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMenuBar>
-#include <QtWidgets/QMessageBox>
 #include <QtWidgets/QPlainTextEdit>
-#include <QtWidgets/QScrollArea>
 #include <QtWidgets/QSpinBox>
 #include <QtWidgets/QSplitter>
 #include <QtWidgets/QStatusBar>
-#include <QtWidgets/QTabBar>
 #include <QtWidgets/QTabWidget>
 #include <QtWidgets/QVBoxLayout>
 
-#include <algorithm>
-#include <climits>
 
 namespace mbscope {
 
@@ -90,7 +86,7 @@ MainWindow::MainWindow(QWidget *parent)
         layout->insertWidget(layout->indexOf(m_banner) + 1, m_recording->recoveryBanner());
     m_recording->offerRecovery();
     buildWorkspace();
-    makeDocksScrollable();
+    DockNavigator(this).makeScrollable(m_trafficDock);
     createMenus();
     statusBar()->showMessage(tr("Ready"), 3000);
     resize(1400, 900);
@@ -109,6 +105,7 @@ void MainWindow::buildUi()
     m_connectionBar = new ConnectionBar(this);
     m_connectionBar->setObjectName(QStringLiteral("connectionBar"));
     m_banner = new NoticeBanner(this);
+    m_simulatorNotice = new SimulatorNotice(m_simulator, m_controller, m_banner, this);
     m_composer = new RequestComposer(this);
     m_composer->setObjectName(QStringLiteral("requestComposer"));
     m_answerView = new TransactionView(this);
@@ -173,7 +170,7 @@ void MainWindow::connectPanels()
         m_composer->setListenOnly(m_controller->isListening());
         m_linkStatus->setState(state, message);
         if (m_simulator->isRunning() && !m_banner->isHidden())
-            showSimulatorNotice(state);
+            m_simulatorNotice->follow(state);
         if (state == LinkController::State::Failed)
             bar->showLinkFailure(message);
         else if (state == LinkController::State::Connected) {
@@ -228,10 +225,7 @@ void MainWindow::closeEvent(QCloseEvent *event)
     settings.setValue(QStringLiteral("composer/intervalMs"), m_composer->intervalSpin()->value());
     settings.setValue(QStringLiteral("composer/count"), m_composer->countSpin()->value());
     settings.setValue(QStringLiteral("composer/request"), m_composer->state().requestText);
-    QStringList formats;
-    for (const RegisterFormat &format : m_registers->model()->valueFormats())
-        formats << format.name();
-    settings.setValue(QStringLiteral("registers/formats"), formats);
+    m_registers->storeFormats();
     QMainWindow::closeEvent(event);
 }
 
@@ -402,99 +396,10 @@ bool MainWindow::showTab(const QString &name)
     return true;
 }
 
-void MainWindow::makeDocksScrollable()
-{
-    // A panel taller than its dock scrolls instead of holding the whole window at its minimum
-    // height: tabbed docks share one area, sized by the tallest panel's minimum. The traffic list
-    // scrolls already.
-    for (QDockWidget *dock : findChildren<QDockWidget *>()) {
-        if (dock == m_trafficDock || qobject_cast<QScrollArea *>(dock->widget()))
-            continue;
-        auto *scroll = new QScrollArea(dock);
-        scroll->setObjectName(dock->objectName() + QStringLiteral("Scroll"));
-        scroll->setFrameShape(QFrame::NoFrame);
-        scroll->setWidgetResizable(true);
-        scroll->setWidget(dock->widget());
-        dock->setWidget(scroll);
-    }
-}
-
 void MainWindow::focusNextDock()
 {
-    QList<QDockWidget *> docks;
-    for (QDockWidget *dock : findChildren<QDockWidget *>()) {
-        // Tabbed docks behind another are hidden, yet open: raising them brings them forward.
-        if (dock->isVisible() || !tabifiedDockWidgets(dock).isEmpty())
-            docks.append(dock);
-    }
-    if (docks.isEmpty())
-        return;
-    // In the order the user sees them: tab by tab, then the docks on their own by name.
-    // (findChildren's order is no order: raise() moves a dock to the end of it, which made F6
-    // go back and forth between the first two docks.)
-    QHash<QDockWidget *, int> rank;
-    int tabRank = 0;
-    for (QTabBar *tabs : findChildren<QTabBar *>(QString(), Qt::FindDirectChildrenOnly)) {
-        for (int i = 0; i < tabs->count(); ++i)
-            rank.insert(reinterpret_cast<QDockWidget *>(tabs->tabData(i).value<quintptr>()), tabRank++);
-    }
-    std::stable_sort(docks.begin(), docks.end(), [&rank](QDockWidget *a, QDockWidget *b) {
-        const int ra = rank.value(a, INT_MAX);
-        const int rb = rank.value(b, INT_MAX);
-        return ra != rb ? ra < rb : a->objectName() < b->objectName();
-    });
-    int current = -1;
-    for (int i = 0; i < docks.size(); ++i) {
-        if (docks.at(i)->isAncestorOf(QApplication::focusWidget()))
-            current = i;
-    }
-    // The next open dock (a closed one stays closed and is passed by). A dock tabbed behind
-    // another is open but hidden; it becomes visible only in the next layout pass after its tab
-    // is chosen, so "open" is its View menu check, not its visibility (which sent F6 back and
-    // forth between the first two docks).
-    QDockWidget *next = nullptr;
-    for (int step = 1; step <= docks.size() && !next; ++step) {
-        QDockWidget *candidate = docks.at((current + step) % docks.size());
-        if (candidate->toggleViewAction()->isChecked())
-            next = candidate;
-    }
-    if (!next)
-        return;
-    // QMainWindow keeps each tabbed dock's pointer as its tab's data: choosing that tab brings
-    // the dock forward.
-    for (QTabBar *tabs : findChildren<QTabBar *>(QString(), Qt::FindDirectChildrenOnly)) {
-        for (int i = 0; i < tabs->count(); ++i) {
-            if (tabs->tabData(i).value<quintptr>() == quintptr(next))
-                tabs->setCurrentIndex(i);
-        }
-    }
-    // The dock's first widget that takes the keyboard (the traffic list's filter, a table),
-    // once the dock is shown.
-    const auto focusDock = [](QDockWidget *dock) {
-        QWidget *target = dock->widget();
-        for (QWidget *child : dock->widget()->findChildren<QWidget *>()) {
-            if ((child->focusPolicy() & Qt::TabFocus) && child->isVisibleTo(dock)) {
-                target = child;
-                break;
-            }
-        }
-        target->setFocus(Qt::ShortcutFocusReason);
-    };
-    if (next->isVisible()) {
-        next->raise();
-        focusDock(next);
-    } else {
-        auto *once = new QObject(this);
-        connect(next, &QDockWidget::visibilityChanged, once, [once, next, focusDock](bool visible) {
-            if (!visible)
-                return;
-            focusDock(next);
-            once->deleteLater();
-        });
-        QTimer::singleShot(1000, once, &QObject::deleteLater); // never shown: forget it
-        next->raise();
-    }
-    statusBar()->showMessage(tr("%1 dock (F6: the next one)").arg(next->windowTitle().remove(QLatin1Char('&'))), 3000);
+    if (QDockWidget *next = DockNavigator(this).focusNext())
+        statusBar()->showMessage(tr("%1 dock (F6: the next one)").arg(next->windowTitle().remove(QLatin1Char('&'))), 3000);
 }
 
 void MainWindow::useSessionTarget()
@@ -547,15 +452,7 @@ bool MainWindow::startAsConfigured(const QString &url)
         m_composer->intervalSpin()->setValue(settings.value(QStringLiteral("composer/intervalMs")).toInt());
         m_composer->countSpin()->setValue(settings.value(QStringLiteral("composer/count")).toInt());
     }
-    // The register table's value columns (formats and byte orders) as they were left.
-    QList<RegisterFormat> formats;
-    for (const QString &name : settings.value(QStringLiteral("registers/formats")).toStringList()) {
-        const RegisterFormatResult format = RegisterFormat::parse(name);
-        if (format.ok)
-            formats.append(format.format);
-    }
-    if (!formats.isEmpty())
-        m_registers->model()->setValueFormats(formats);
+    m_registers->restoreFormats(); // the value columns as they were left
     const QString last = settings.value(QStringLiteral("session/last")).toString();
     if (!last.isEmpty() && QFileInfo::exists(last) && m_session->open(last))
         return false;
@@ -596,14 +493,7 @@ bool MainWindow::startWithSimulator(const QString &url)
         m_trends->setProfile(*unit, m_simulator->profile().name);
     m_session->markClean(); // the first run's target and request are where an untitled session starts
 
-    m_simulatorNotice = tr("<b>Connected to mbscope's built-in simulator</b>, not to a device: a RosRao gamma detector "
-                        "(profile <code>%1</code>) answering on <code>%2</code>. Press <b>Send</b> to read its 22 "
-                        "registers. To talk to a real device, press <b>Disconnect</b>, choose its link type, host and "
-                        "port (or serial port) and press <b>Connect</b>.")
-                         .arg(QString::fromLatin1(kFirstRunProfile), started.url.toString().toHtmlEscaped());
-    if (!started.note.isEmpty())
-        m_simulatorNotice += QStringLiteral("<br>") + started.note.toHtmlEscaped();
-    m_banner->showNotice(m_simulatorNotice);
+    m_simulatorNotice->showStarted(QString::fromLatin1(kFirstRunProfile), started.note);
     return true;
 }
 
@@ -623,34 +513,6 @@ void MainWindow::updateRegisterProfile()
         m_registers->clearProfile();
 }
 
-void MainWindow::showSimulatorNotice(LinkController::State state)
-{
-    // The banner says what the link does now (try-out 8, item 4: after Disconnect, Listen and
-    // Connect, it still said "Disconnected ... press Connect" beside "listening only").
-    const LinkUrl simulator = m_simulator->started().url;
-    const QString where = simulator.toString().toHtmlEscaped();
-    if (state == LinkController::State::Disconnected || state == LinkController::State::Failed) {
-        m_banner->showNotice(tr("Disconnected. The built-in simulator still answers on <code>%1</code>: press "
-                                "<b>Connect</b> to use it again, or choose a real device's link type, host "
-                                "and port (or serial port) first.")
-                                 .arg(where));
-        return;
-    }
-    // Not the simulator any more: the banner has nothing to say about this link.
-    if (m_controller->url().port != simulator.port || m_controller->url().kind != simulator.kind) {
-        m_banner->hide();
-        return;
-    }
-    if (m_controller->isListening()) {
-        m_banner->showNotice(tr("<b>Listening only</b> to the built-in simulator on <code>%1</code>: nothing is sent, "
-                                "and the simulator answers only requests, so the traffic stays empty unless another "
-                                "master polls it. Untick <b>Listen</b> and press <b>Connect</b> to send it requests.")
-                                 .arg(where));
-        return;
-    }
-    m_banner->showNotice(m_simulatorNotice);
-}
-
 void MainWindow::createMenus()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
@@ -663,17 +525,7 @@ void MainWindow::createMenus()
     quit->setShortcut(QKeySequence::Quit);
     quit->setMenuRole(QAction::QuitRole);
 
-    QMenu *request = menuBar()->addMenu(tr("&Request"));
-    request->addAction(m_composer->sendAction());
-    request->addAction(m_composer->pollAction());
-    request->addSeparator();
-    QAction *focusRaw = request->addAction(tr("&Edit raw bytes"), this, [this] {
-        m_composer->showRawTab();
-        m_composer->rawEditor()->editor()->setFocus();
-    });
-    focusRaw->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
-    QAction *form = request->addAction(tr("Build with the &form"), m_composer, &RequestComposer::showFormTab);
-    form->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_B));
+    m_composer->addMenu(menuBar());
 
     m_sessionTools->addMenu(menuBar());
 
@@ -710,91 +562,34 @@ void MainWindow::createMenus()
     nextDock->setObjectName(QStringLiteral("nextDockAction"));
     nextDock->setShortcut(QKeySequence(Qt::Key_F6));
 
-    QMenu *tools = menuBar()->addMenu(tr("&Tools"));
-    QAction *scan = tools->addAction(tr("&Scan for units\u2026"), this, &MainWindow::showScanDialog);
-    scan->setObjectName(QStringLiteral("scanAction"));
-    scan->setToolTip(tr("Ask every unit id of a link the same read and list what each did"));
-    tools->addSeparator();
-    QAction *preferences = tools->addAction(tr("&Preferences\u2026"), this, [this] {
-        PreferencesDialog dialog(this);
-        dialog.setRecordingSettings(m_recording->settings());
-        if (dialog.exec() != QDialog::Accepted)
-            return;
-        const RecordingSettings recording = dialog.recordingSettings();
-        if (!(recording == m_recording->settings())) {
-            recording.store();
-            m_recording->apply(recording);
-            statusBar()->showMessage(tr("Recording settings apply from the next connection."), 10000);
-        }
-        if (dialog.apply())
-            statusBar()->showMessage(tr("The new language is used when mbscope is started again."), 10000);
-    });
-    preferences->setMenuRole(QAction::PreferencesRole);
-
-    QMenu *help = menuBar()->addMenu(tr("&Help"));
-    QAction *about = help->addAction(tr("&About mbscope"), this, &MainWindow::showAbout);
-    about->setMenuRole(QAction::AboutRole);
-}
-
-void MainWindow::showAbout()
-{
-    // mbscope links QCustomPlot, which is GPL-3.0; the whole program is therefore GPL-3.0-or-later.
-    QMessageBox::about(this, tr("About mbscope"),
-                       tr("<h3>mbscope %1</h3>"
-                          "<p>A bench for testing and analysing Modbus devices: send exactly the bytes "
-                          "you mean, see every field of the answer explained, measure how the device "
-                          "behaves.</p>"
-                          "<p>Licensed under the GNU General Public License, version 3 or (at your "
-                          "option) any later version (GPL-3.0-or-later). This program comes with "
-                          "ABSOLUTELY NO WARRANTY.</p>"
-                          "<p>Built with Qt %2 and QCustomPlot.</p>")
-                           .arg(QCoreApplication::applicationVersion().toHtmlEscaped(),
-                                QString::fromLatin1(qVersion())));
+    m_tools = new ToolsMenu(this, m_controller, m_connectionBar, m_traffic, m_recording);
+    m_tools->addMenus(menuBar());
+    // "Add as watches": the units a scan found become watch windows of the workspace.
+    connect(m_tools, &ToolsMenu::watchesFound, this, &MainWindow::addWatchesFromScan);
 }
 
 ScanDialog *MainWindow::scanDialog()
 {
-    if (!m_scanDialog) {
-        m_scanDialog = new ScanDialog(this);
-        // The scans' frames, as the watches' (buildWorkspace): the traffic list and the recording.
-        connect(m_scanDialog, &ScanDialog::framesLogged, m_traffic, &TrafficMonitor::appendLinkFrames);
-        m_scanDialog->setTrafficLog(m_controller->trafficLog());
-        connect(m_controller, &LinkController::trafficLogChanged, m_scanDialog, &ScanDialog::setTrafficLog, Qt::DirectConnection);
-        // "Add as watches": the units found become watch windows of the workspace, each name
-        // made unique in the session ("unit 3" again becomes "unit 3 (2)").
-        connect(m_scanDialog, &ScanDialog::watchesRequested, this, [this](const QList<WatchDefinition> &found) {
-            QStringList taken;
-            for (const WatchDefinition &w : m_workspace->watches().watches)
-                taken.append(w.name);
-            for (WatchDefinition watch : found) {
-                const QString base = watch.name;
-                for (int n = 2; taken.contains(watch.name); ++n)
-                    watch.name = QStringLiteral("%1 (%2)").arg(base).arg(n);
-                taken.append(watch.name);
-                m_workspace->addWatch(watch);
-            }
-            m_tabs->setCurrentWidget(m_workspace);
-            statusBar()->showMessage(tr("%n watch(es) added from the scan: Workspace > Start all (F5) polls them.", nullptr,
-                                        int(found.size())),
-                                     10000);
-        });
-    }
-    return m_scanDialog;
+    return m_tools->scanDialog();
 }
 
-void MainWindow::showScanDialog()
+// The units a scan found become watch windows of the workspace, each name made unique in the
+// session ("unit 3" again becomes "unit 3 (2)").
+void MainWindow::addWatchesFromScan(const QList<WatchDefinition> &found)
 {
-    ScanDialog *dialog = scanDialog();
-    // The window's target, when it has one: the connected link, else what the connection bar makes.
-    if (!dialog->isRunning()) {
-        if (m_controller->isConnected())
-            dialog->setTarget(m_controller->url());
-        else if (const ConnectionBar::State state = m_connectionBar->state(); state.target)
-            dialog->setTarget(*state.target);
+    QStringList taken;
+    for (const WatchDefinition &w : m_workspace->watches().watches)
+        taken.append(w.name);
+    for (WatchDefinition watch : found) {
+        const QString base = watch.name;
+        for (int n = 2; taken.contains(watch.name); ++n)
+            watch.name = QStringLiteral("%1 (%2)").arg(base).arg(n);
+        taken.append(watch.name);
+        m_workspace->addWatch(watch);
     }
-    dialog->show();
-    dialog->raise();
-    dialog->activateWindow();
+    m_tabs->setCurrentWidget(m_workspace);
+    statusBar()->showMessage(tr("%n watch(es) added from the scan: Workspace > Start all (F5) polls them.", nullptr, int(found.size())),
+                             10000);
 }
 
 } // namespace mbscope

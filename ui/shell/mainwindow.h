@@ -26,11 +26,14 @@ class RequestComposer;
 class SessionController;
 class ScanDialog;
 class SessionTools;
+class SimulatorNotice;
 class SimulatorPanel;
+class ToolsMenu;
 class TrafficMonitor;
 class TrendPanels;
 class TransactionView;
 class WatchWorkspace;
+struct WatchDefinition;
 
 // The window only assembles: the connection bar, the composer, the answer and decode views, the
 // status bar and the menus are their own classes; LinkController talks to the engine. Here they
@@ -102,19 +105,16 @@ private:
     void useSessionTarget();
     // F6: focus moves to the next visible dock (tabbed docks are raised).
     void focusNextDock();
-    void makeDocksScrollable();
     void sendWrite(const QByteArray &pdu, const QString &description);
     void createMenus();
     void buildWorkspace();
-    void showAbout();
-    void showScanDialog();
+    void addWatchesFromScan(const QList<WatchDefinition> &found);
     // The first-run banner for the link's state: on the simulator, listening to it, or disconnected.
-    void showSimulatorNotice(LinkController::State state);
     // The Registers dock names registers by the simulator's profile on the simulator only.
     void updateRegisterProfile();
 
     LinkController *m_controller = nullptr;
-    ScanDialog *m_scanDialog = nullptr; // Tools > Scan, made when first asked for
+    ToolsMenu *m_tools = nullptr; // Tools and Help menus, the scan dialog
     EmbeddedSimulator *m_simulator = nullptr;
     ConnectionBar *m_connectionBar = nullptr;
     NoticeBanner *m_banner = nullptr;
@@ -138,7 +138,7 @@ private:
     SimulatorPanel *m_simulatorPanel = nullptr;
     QDockWidget *m_simulatorDock = nullptr;
     WatchWorkspace *m_workspace = nullptr;
-    QString m_simulatorNotice; // the first run's banner: shown again when the window is back on the simulator
+    SimulatorNotice *m_simulatorNotice = nullptr; // the banner about the built-in simulator
     QByteArray m_lastRead; // the read whose answer the register table shows: sent again after a write
     bool m_layoutRestored = false; // the docks' sizes came from QSettings: the first show keeps them
     bool m_fitted = false; // panel proportions set on the first show, then left to the user

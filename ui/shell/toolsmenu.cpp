@@ -1,0 +1,110 @@
+#include "toolsmenu.h"
+
+#include "discovery/scandialog.h"
+#include "link/connectionbar.h"
+#include "link/linkcontroller.h"
+#include "preferencesdialog.h"
+#include "session/recordingcontrol.h"
+#include "traffic/trafficmonitor.h"
+
+#include <QtCore/QCoreApplication>
+#include <QtGui/QAction>
+#include <QtWidgets/QMainWindow>
+#include <QtWidgets/QMenu>
+#include <QtWidgets/QMenuBar>
+#include <QtWidgets/QMessageBox>
+#include <QtWidgets/QStatusBar>
+
+namespace mbscope {
+
+ToolsMenu::ToolsMenu(QMainWindow *window, LinkController *link, ConnectionBar *connectionBar, TrafficMonitor *traffic,
+                     RecordingControl *recording)
+    : QObject(window)
+    , m_window(window)
+    , m_link(link)
+    , m_connectionBar(connectionBar)
+    , m_traffic(traffic)
+    , m_recording(recording)
+{
+}
+
+void ToolsMenu::addMenus(QMenuBar *menuBar)
+{
+    QMenu *tools = menuBar->addMenu(tr("&Tools"));
+    QAction *scan = tools->addAction(tr("&Scan for units\u2026"), this, &ToolsMenu::showScanDialog);
+    scan->setObjectName(QStringLiteral("scanAction"));
+    scan->setToolTip(tr("Ask every unit id of a link the same read and list what each did"));
+    tools->addSeparator();
+    QAction *preferences = tools->addAction(tr("&Preferences\u2026"), this, &ToolsMenu::showPreferences);
+    preferences->setMenuRole(QAction::PreferencesRole);
+
+    QMenu *help = menuBar->addMenu(tr("&Help"));
+    QAction *about = help->addAction(tr("&About mbscope"), this, &ToolsMenu::showAbout);
+    about->setMenuRole(QAction::AboutRole);
+}
+
+ScanDialog *ToolsMenu::scanDialog()
+{
+    if (!m_scanDialog) {
+        m_scanDialog = new ScanDialog(m_window);
+        // The scans' frames, as the watches': the traffic list and the recording.
+        connect(m_scanDialog, &ScanDialog::framesLogged, m_traffic, &TrafficMonitor::appendLinkFrames);
+        m_scanDialog->setTrafficLog(m_link->trafficLog());
+        connect(m_link, &LinkController::trafficLogChanged, m_scanDialog, &ScanDialog::setTrafficLog, Qt::DirectConnection);
+        connect(m_scanDialog, &ScanDialog::watchesRequested, this, &ToolsMenu::watchesFound);
+    }
+    return m_scanDialog;
+}
+
+void ToolsMenu::showScanDialog()
+{
+    ScanDialog *dialog = scanDialog();
+    if (!dialog->isRunning()) {
+        if (m_link->isConnected())
+            dialog->setTarget(m_link->url());
+        else if (const ConnectionBar::State state = m_connectionBar->state(); state.target)
+            dialog->setTarget(*state.target);
+    }
+    dialog->show();
+    dialog->raise();
+    dialog->activateWindow();
+}
+
+void ToolsMenu::showPreferences()
+{
+    PreferencesDialog dialog(m_window);
+    dialog.setRecordingSettings(m_recording->settings());
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    const RecordingSettings recording = dialog.recordingSettings();
+    if (!(recording == m_recording->settings())) {
+        recording.store();
+        m_recording->apply(recording);
+        status(tr("Recording settings apply from the next connection."));
+    }
+    if (dialog.apply())
+        status(tr("The new language is used when mbscope is started again."));
+}
+
+void ToolsMenu::showAbout()
+{
+    // mbscope links QCustomPlot, which is GPL-3.0; the whole program is therefore GPL-3.0-or-later.
+    QMessageBox::about(m_window, tr("About mbscope"),
+                       tr("<h3>mbscope %1</h3>"
+                          "<p>A bench for testing and analysing Modbus devices: send exactly the bytes "
+                          "you mean, see every field of the answer explained, measure how the device "
+                          "behaves.</p>"
+                          "<p>Licensed under the GNU General Public License, version 3 or (at your "
+                          "option) any later version (GPL-3.0-or-later). This program comes with "
+                          "ABSOLUTELY NO WARRANTY.</p>"
+                          "<p>Built with Qt %2 and QCustomPlot.</p>")
+                           .arg(QCoreApplication::applicationVersion().toHtmlEscaped(),
+                                QString::fromLatin1(qVersion())));
+}
+
+void ToolsMenu::status(const QString &text)
+{
+    m_window->statusBar()->showMessage(text, 10000);
+}
+
+} // namespace mbscope
