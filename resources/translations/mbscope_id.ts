@@ -8878,12 +8878,12 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchWorkspace</name>
     <message>
-        <location filename="../../ui/watch/watchworkspace.cpp" line="+68"/>
+        <location filename="../../ui/watch/watchworkspace.cpp" line="+63"/>
         <source>No watches yet. A watch polls a block of a device at its own interval and shows its values with names, units and rule colours. Make one with Workspace → New watch (%1), from the composer&apos;s read request (%2) or from a device profile (%3); Start all (%4) polls them together.</source>
         <translation>Belum ada pantauan. Sebuah pantauan mem-polling satu blok perangkat pada intervalnya sendiri dan menampilkan nilainya dengan nama, unit, dan warna aturan. Buat dengan Daftar pantau → Pantauan baru (%1), dari permintaan baca penyusun (%2) atau dari profil perangkat (%3); Mulai semua (%4) mem-polling semuanya bersama.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location filename="../../ui/watch/watchworkspaceactions.cpp" line="+27"/>
         <source>&amp;New watch…</source>
         <translation>Pantauan &amp;baru…</translation>
     </message>
@@ -9010,7 +9010,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pantauan sebagai tab, atau sebagai jendela berjajar</translation>
     </message>
     <message>
-        <location line="+137"/>
+        <location filename="../../ui/watch/watchworkspace.cpp" line="+138"/>
         <source>%1 (off)</source>
         <translation>%1 (mati)</translation>
     </message>
@@ -9092,7 +9092,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pilih nilai di tabel pantauan untuk digambar trennya</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location filename="../../ui/watch/watchworkspacewrites.cpp" line="+22"/>
         <source>Choose a value in a watch&apos;s table to write</source>
         <translation>Pilih nilai di tabel pantauan untuk ditulis</translation>
     </message>

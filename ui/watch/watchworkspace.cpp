@@ -4,19 +4,14 @@
 
 #include "watchdialog.h"
 #include "watchlogcontrol.h"
-#include "watchprofiledialog.h"
 #include "watchtablemodel.h"
-#include "watchvaluewrite.h"
 #include "watchwindow.h"
 
 #include "fleet/watchrunner.h"
 #include "profile/profileloader.h"
 
 #include <QtGui/QAction>
-#include <QtGui/QClipboard>
-#include <QtGui/QGuiApplication>
 #include <QtWidgets/QHBoxLayout>
-#include <QtWidgets/QInputDialog>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QMdiArea>
 #include <QtWidgets/QMdiSubWindow>
@@ -95,114 +90,6 @@ void WatchWorkspace::setTrafficLog(TrafficLog *log)
     m_trafficLog = log;
     if (m_runner)
         m_runner->setTrafficLog(log);
-}
-
-void WatchWorkspace::createActions()
-{
-    auto make = [this](const QString &text, const QKeySequence &keys, auto slot) {
-        auto *action = new QAction(text, this);
-        action->setShortcut(keys);
-        connect(action, &QAction::triggered, this, slot);
-        return action;
-    };
-    m_newAction = make(tr("&New watch\u2026"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N), &WatchWorkspace::newWatch);
-    m_newAction->setObjectName(QStringLiteral("newWatchAction"));
-    m_newAction->setIconText(tr("New watch"));
-    m_fromRequestAction = make(tr("New watch from the composer's &request"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_R), [this] {
-        QString error;
-        if (!addFromRequest(&error))
-            Q_EMIT message(error);
-    });
-    m_fromRequestAction->setIconText(tr("From request"));
-    m_fromProfileAction = make(tr("New watches from a device &profile\u2026"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), [this] {
-        WatchProfileDialog dialog(this);
-        dialog.setTarget(m_targetSource ? m_targetSource() : QString());
-        if (dialog.exec() != QDialog::Accepted)
-            return;
-        QString error;
-        const int made = addFromProfile(dialog.profile(), dialog.unit(), dialog.target(), dialog.intervalMs(), &error);
-        Q_EMIT message(made ? tr("%n watch(es) made from %1", nullptr, made).arg(dialog.profile()) : error);
-    });
-    m_fromProfileAction->setIconText(tr("From profile"));
-    m_editAction = make(tr("&Edit watch\u2026"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), &WatchWorkspace::editCurrent);
-    m_duplicateAction = make(tr("&Duplicate watch"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D), [this] { duplicateWatch(currentIndex()); });
-    m_closeAction = make(tr("&Close watch"), QKeySequence(Qt::CTRL | Qt::Key_W), [this] { removeWatch(currentIndex()); });
-    m_moveLeftAction = make(tr("Move watch &left"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_PageUp), [this] { moveWatch(currentIndex(), -1); });
-    m_moveRightAction = make(tr("Move watch ri&ght"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_PageDown), [this] { moveWatch(currentIndex(), 1); });
-    m_startAction = make(tr("&Start all"), QKeySequence(Qt::Key_F5), &WatchWorkspace::startAll);
-    m_startAction->setObjectName(QStringLiteral("startWatchesAction"));
-    m_stopAction = make(tr("S&top all"), QKeySequence(Qt::SHIFT | Qt::Key_F5), &WatchWorkspace::stopAll);
-    m_stopAction->setObjectName(QStringLiteral("stopWatchesAction"));
-    m_nextAction = make(tr("Ne&xt watch"), QKeySequence(Qt::CTRL | Qt::Key_F6), [this] {
-        m_area->activateNextSubWindow();
-        if (WatchWindow *w = window(currentIndex()))
-            w->view()->setFocus(Qt::ShortcutFocusReason);
-    });
-    m_nextAction->setObjectName(QStringLiteral("nextWatchAction"));
-    m_writeAction = make(tr("&Write value\u2026"), QKeySequence(Qt::CTRL | Qt::Key_E), &WatchWorkspace::writeCurrent);
-    m_writeAction->setObjectName(QStringLiteral("writeWatchValueAction"));
-    m_copyAction = make(tr("C&opy values"), QKeySequence(QKeySequence::Copy), [this] {
-        if (WatchWindow *w = window(currentIndex()))
-            QGuiApplication::clipboard()->setText(w->selectionText());
-    });
-    m_pollThisAction = new QAction(tr("Poll t&his watch"), this);
-    m_pollThisAction->setObjectName(QStringLiteral("pollThisWatchAction"));
-    m_pollThisAction->setCheckable(true);
-    m_pollThisAction->setIconText(tr("Poll this watch"));
-    m_pollThisAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F5));
-    m_pollThisAction->setToolTip(tr("Start or stop the current watch alone; the others go on as they are"));
-    // triggered, not toggled: updateActions() sets the check to what the runner does.
-    connect(m_pollThisAction, &QAction::triggered, this, [this](bool checked) {
-        const int index = currentIndex();
-        m_pollThisAction->setChecked(!checked); // the result, not the click, decides (updatePolling)
-        if (checked)
-            startWatch(index);
-        else
-            stopWatch(index);
-    });
-    m_trendAction = make(tr("Trend this &value"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G), &WatchWorkspace::trendCurrent);
-    m_trendAction->setObjectName(QStringLiteral("trendWatchValueAction"));
-    m_trendAction->setToolTip(tr("Plot the chosen value of this watch in Analysis \u2192 Register trends as it polls"));
-    // What acts on the current watch (close, write, copy...) answers its keys only while the
-    // focus is in the workspace: Ctrl+W in the composer must not close a watch out of sight.
-    for (QAction *action : {m_editAction, m_duplicateAction, m_closeAction, m_moveLeftAction, m_moveRightAction,
-                            m_writeAction, m_copyAction, m_pollThisAction, m_trendAction}) {
-        action->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-        addAction(action);
-    }
-    m_tabbedAction = new QAction(tr("T&abbed windows"), this);
-    m_tabbedAction->setIconText(tr("Tabbed"));
-    m_tabbedAction->setCheckable(true);
-    m_tabbedAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_T));
-    m_tabbedAction->setToolTip(tr("Watches as tabs, or as windows tiled side by side"));
-    connect(m_tabbedAction, &QAction::toggled, this, &WatchWorkspace::setTabbed);
-}
-
-QList<QAction *> WatchWorkspace::menuActions() const
-{
-    return {m_newAction,   m_fromRequestAction, m_fromProfileAction, m_editAction,      m_duplicateAction,
-            nullptr,       m_startAction,       m_stopAction,        m_pollThisAction,  nullptr,           m_nextAction,
-            m_moveLeftAction, m_moveRightAction, m_closeAction,      nullptr,           m_writeAction,
-            m_copyAction,  m_trendAction, nullptr,             m_tabbedAction,      m_log->logAction(), m_log->settingsAction()};
-}
-
-QList<QAction *> WatchWorkspace::windowMenuActions() const
-{
-    return {m_pollThisAction, nullptr, m_trendAction, m_writeAction, m_copyAction, nullptr, m_editAction, m_closeAction};
-}
-
-void WatchWorkspace::showWindowMenu(int index, const QPoint &globalPos)
-{
-    setCurrentIndex(index);
-    updateActions();
-    QMenu menu(this);
-    for (QAction *action : windowMenuActions()) {
-        if (action)
-            menu.addAction(action);
-        else
-            menu.addSeparator();
-    }
-    menu.exec(globalPos);
 }
 
 WatchWindow *WatchWorkspace::window(int index) const
@@ -690,88 +577,6 @@ void WatchWorkspace::onLinkState(const WatchLinkState &state)
         if (m_watches.watches.at(i).target == state.target)
             m_windows.at(i)->setLinkState(state);
     }
-}
-
-void WatchWorkspace::writeCurrent()
-{
-    const int index = currentIndex();
-    WatchWindow *w = window(index);
-    if (!w || !w->view()->currentIndex().isValid()) {
-        Q_EMIT message(tr("Choose a value in a watch's table to write"));
-        return;
-    }
-    requestWrite(index, w->view()->currentIndex().row());
-}
-
-void WatchWorkspace::requestWrite(int index, int row)
-{
-    WatchWindow *w = window(index);
-    if (!w)
-        return;
-    const QModelIndex value = w->model()->index(row, WatchTableModel::ValueColumn);
-    if (!value.data(WatchTableModel::WritableRole).toBool()) {
-        Q_EMIT message(tr("Not writable: only points marked writable of a coil or holding register watch are written "
-                          "(Edit watch \u2192 Points \u2192 Writable)"));
-        return;
-    }
-    const QString name = w->model()->index(row, WatchTableModel::NameColumn).data().toString();
-    const QString current = w->model()->hasValue(row) ? value.data().toString() : QString();
-    const QString title = tr("Write %1").arg(name);
-    const QString label = tr("New value of %1 (%2):").arg(name, w->model()->index(row, WatchTableModel::AddressColumn).data().toString());
-    std::optional<QString> text;
-    if (m_textPrompt) {
-        text = m_textPrompt(title, label, current);
-    } else {
-        bool ok = false;
-        const QString typed = QInputDialog::getText(this, title, label, QLineEdit::Normal, current, &ok);
-        if (ok)
-            text = typed;
-    }
-    if (!text)
-        return;
-    QString error;
-    if (!writeValue(index, row, *text, &error))
-        Q_EMIT message(error);
-}
-
-bool WatchWorkspace::writeValue(int index, int row, const QString &text, QString *error)
-{
-    WatchWindow *w = window(index);
-    if (!w || row < 0 || row >= w->model()->rowCount()) {
-        *error = tr("No such value");
-        return false;
-    }
-    const int point = w->model()->valueAt(row).point;
-    const WatchWriteWords words = WatchValueWrite::words(m_watches.watches.at(index), point, text);
-    if (!words.error.isEmpty()) {
-        *error = words.error;
-        return false;
-    }
-    if (!isRunning()) {
-        *error = tr("Not written: start the watches first (Start all, %1)").arg(m_startAction->shortcut().toString(QKeySequence::NativeText));
-        return false;
-    }
-    m_runner->write(index, m_watches.watches.at(index).points.at(point).address, words.words);
-    Q_EMIT message(tr("Writing %1 to %2").arg(text.trimmed(), m_watches.watches.at(index).points.at(point).name));
-    return true;
-}
-
-void WatchWorkspace::updateActions()
-{
-    const bool any = count() > 0;
-    const bool running = isRunning();
-    m_hint->setVisible(!any);
-    m_area->setVisible(any);
-    for (QAction *action : {m_editAction, m_duplicateAction, m_closeAction, m_nextAction, m_writeAction, m_copyAction,
-                            m_moveLeftAction, m_moveRightAction})
-        action->setEnabled(any);
-    m_startAction->setEnabled(any);
-    m_stopAction->setEnabled(running);
-    const int current = currentIndex();
-    m_pollThisAction->setEnabled(any);
-    m_pollThisAction->setChecked(isPolling(current));
-    WatchWindow *w = window(current);
-    m_trendAction->setEnabled(w && w->view()->currentIndex().isValid());
 }
 
 } // namespace mbscope
