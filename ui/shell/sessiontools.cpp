@@ -59,7 +59,7 @@ SessionTools::SessionTools(QMainWindow *window, LinkController *link, SessionCon
     connect(m_replay, &ReplayController::captureAnalysed, this, [this](const QString &title, const QList<Transaction> &transactions) {
         m_traffic->clear();
         m_traffic->model()->setCurrentLink(title);
-        m_traffic->appendTransactions(transactions);
+        m_traffic->appendRecordedTransactions(transactions);
         m_traffic->model()->setCurrentLink(m_link->isConnected() ? m_link->url().toString() : QString());
         status(m_replay->sourceSummary());
     });

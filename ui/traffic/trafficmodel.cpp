@@ -10,6 +10,7 @@
 #include "protocol/functioncode.h"
 #include "protocol/hexformat.h"
 #include "protocol/hextext.h"
+#include "transport/monotonicclock.h"
 
 #include <QtGui/QFontDatabase>
 
@@ -211,6 +212,19 @@ void TrafficModel::appendFrames(const QList<TrafficFrame> &frames)
     for (const TrafficFrame &f : frames)
         keep(f.tNs, f.direction, f.link, f.verdict, f.transactionId, f.bytes);
     appended();
+}
+
+void TrafficModel::appendRecordedTransactions(const QList<Transaction> &transactions)
+{
+    const qint64 offset = wallToMonotonicOffsetNs();
+    QList<Transaction> shifted = transactions;
+    for (Transaction &t : shifted) {
+        for (qint64 *ns : {&t.sentNs, &t.firstByteNs, &t.doneNs}) {
+            if (*ns != 0)
+                *ns += offset;
+        }
+    }
+    appendTransactions(shifted);
 }
 
 void TrafficModel::appendLinkFrames(const QList<TrafficFrame> &frames, const QString &link)

@@ -125,6 +125,10 @@ public:
 public Q_SLOTS:
     void appendFrames(const QList<mbscope::TrafficFrame> &frames);
     void appendTransactions(const QList<mbscope::Transaction> &transactions);
+    // Transactions timed by the wall clock (an analysed capture, a journal read back) put on the
+    // monotonic clock live frames use, then appended: Time (s) stays one time line (the list
+    // showed about -1.8e9 s for live frames after an analysed capture, issue 25).
+    void appendRecordedTransactions(const QList<mbscope::Transaction> &transactions);
     // Frames of one link named by its URL (TransactionEngine::framesLogged).
     void appendLinkFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void clear();

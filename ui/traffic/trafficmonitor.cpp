@@ -289,6 +289,11 @@ void TrafficMonitor::appendTransactions(const QList<Transaction> &transactions)
     m_model->appendTransactions(transactions);
 }
 
+void TrafficMonitor::appendRecordedTransactions(const QList<Transaction> &transactions)
+{
+    m_model->appendRecordedTransactions(transactions);
+}
+
 void TrafficMonitor::appendLinkFrames(const QList<TrafficFrame> &frames, const QString &link)
 {
     m_model->appendLinkFrames(frames, link);

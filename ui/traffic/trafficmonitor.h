@@ -50,6 +50,7 @@ public:
 public Q_SLOTS:
     void appendFrames(const QList<mbscope::TrafficFrame> &frames);
     void appendTransactions(const QList<mbscope::Transaction> &transactions);
+    void appendRecordedTransactions(const QList<mbscope::Transaction> &transactions);
     void appendLinkFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void setPaused(bool paused);
     void clear();

@@ -7,6 +7,9 @@
 #include "traffic/trafficsearch.h"
 
 #include "traffic/trafficlog.h"
+#include "transport/monotonicclock.h"
+
+#include <QtCore/QDateTime>
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QFile>
@@ -80,6 +83,7 @@ private Q_SLOTS:
     void keys();
     void pairsAnswersWithRequests();
     void transactionsFeed();
+    void recordedAndLiveShareOneClock();
     void trafficLogFeed();
     void filter_data();
     void filter();
@@ -205,6 +209,28 @@ void TestTrafficModel::pairsAnswersWithRequests()
              QStringLiteral("Not an answer to any request sent"));
     QCOMPARE(m_model->data(m_model->index(1, TrafficModel::VerdictColumn), Qt::ToolTipRole).toString(),
              QStringLiteral("Answers frame 1"));
+}
+
+// Issue 25, one clock: an analysed capture's transactions carry wall-clock times (nanoseconds
+// since the epoch) and the live frames that follow the monotonic clock; the list showed about
+// -1.8e9 s for the live frames. The capture of a minute ago and a frame now are a minute apart.
+void TestTrafficModel::recordedAndLiveShareOneClock()
+{
+    m_model->setCurrentLink(QStringLiteral("bench.pcapng"));
+    Transaction recorded;
+    recorded.id = 1;
+    recorded.request = kArduinoRequest;
+    recorded.response = kArduinoResponse;
+    recorded.status = TransactionStatus::Ok;
+    recorded.sentNs = (QDateTime::currentMSecsSinceEpoch() - 60'000) * 1'000'000;
+    recorded.firstByteNs = recorded.doneNs = recorded.sentNs + 5'000'000;
+    m_model->appendRecordedTransactions({recorded});
+    m_model->appendFrames({frame(monotonicNowNs(), TrafficDirection::Out, TrafficVerdict::Sent, 2, kArduinoRequest)});
+    QCOMPARE(m_model->rowCount(), 3);
+    const auto seconds = [this](int row) { return m_model->index(row, TrafficModel::TimeColumn).data().toString().toDouble(); };
+    QCOMPARE(seconds(0), 0.0);
+    QCOMPARE(seconds(1), 0.005); // the recorded latency kept
+    QVERIFY2(seconds(2) >= 59.0 && seconds(2) <= 70.0, qPrintable(QString::number(seconds(2))));
 }
 
 void TestTrafficModel::transactionsFeed()
