@@ -70,6 +70,7 @@ ExchangeSourceReport ExchangeSource::read(const QString &path, const CaptureOpti
         report.kind = ExchangeSourceReport::Kind::Journal;
         report.journal = journal.recovery;
         report.journalGarbage = journal.garbageFrames;
+        report.journalDuplicates = journal.duplicateResponses;
         report.unansweredAtEnd = journal.noOutcome;
         report.conversations = journal.conversations;
         report.pairs.unmatchedResponses = journal.unmatchedResponses;

@@ -146,6 +146,8 @@ private slots:
     void otherPort_data();
     void otherPort();
     void simulatedCrcErrors();
+    void simulatedPieces_data();
+    void simulatedPieces();
     void journalWithoutEndpoints();
     void serialJournalExported();
     void recordedEndpoints();
@@ -599,6 +601,97 @@ void TestCliCapture::simulatedCrcErrors()
     QCOMPARE(o.value(QStringLiteral("crc_errors")).toInt(), 3);
     const CliResult text = runMbscope({QStringLiteral("analyze"), journal});
     QVERIFY2(!text.outText().contains(QStringLiteral("3 ok")), text.describe().constData());
+}
+
+void TestCliCapture::simulatedPieces_data()
+{
+    QTest::addColumn<QString>("url");
+    QTest::addColumn<QByteArray>("rules");
+    QTest::addColumn<bool>("duplicates");
+    QTest::addColumn<double>("minLatencyUs"); // the gaps between an answer's pieces
+    QTest::newRow("chunks, tcp") << QStringLiteral("tcp://127.0.0.1:0")
+                                 << QByteArray(R"([{"name": "pieces", "kind": "chunks", "chunkBytes": 3, "gapMs": 3, "probability": 1.0}])")
+                                 << false << 4 * 3000.0; // 13 bytes in 5 pieces
+    QTest::newRow("trickle, rtu-tcp") << QStringLiteral("rtu-tcp://127.0.0.1:0")
+                                      << QByteArray(R"([{"name": "slowly", "kind": "trickle", "gapMs": 2, "probability": 1.0}])")
+                                      << false << 8 * 2000.0; // 9 bytes, one by one
+    QTest::newRow("duplicate in chunks, tcp")
+        << QStringLiteral("tcp://127.0.0.1:0")
+        << QByteArray(R"([{"name": "twice", "kind": "duplicate", "gapMs": 2, "probability": 1.0},)"
+                      R"( {"name": "pieces", "kind": "chunks", "chunkBytes": 5, "gapMs": 2, "probability": 1.0}])")
+        << true << 2 * 2000.0;
+    QTest::newRow("duplicate, rtu-tcp") << QStringLiteral("rtu-tcp://127.0.0.1:0")
+                                        << QByteArray(R"([{"name": "twice", "kind": "duplicate", "gapMs": 2, "probability": 1.0}])")
+                                        << true << 0.0;
+}
+
+// Issue 26: an answer the simulator sends in pieces (fault rules chunks, trickle) is one answer
+// to its client, whose framer joins them; `simulate --record` journals each piece as it left,
+// with its own time, and analyze joins them into the answer its client got (latency to the last
+// piece), as the poll's own journal says. A duplicate answer is a second answer to one request
+// (the engine's duplicate, an answer matching no request), not a malformed first one.
+void TestCliCapture::simulatedPieces()
+{
+    QFETCH(QString, url);
+    QFETCH(QByteArray, rules);
+    QFETCH(bool, duplicates);
+    QFETCH(double, minLatencyUs);
+    const QString tag = QString::fromLatin1(QTest::currentDataTag()).section(QLatin1Char(','), 0, 0).replace(QLatin1Char(' '), QLatin1Char('-'));
+    const QString faults = m_dir.filePath(tag + QStringLiteral("-faults.json"));
+    QFile file(faults);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write(R"({"seed": 1, "rules": )" + rules + "}");
+    file.close();
+    const QString served = m_dir.filePath(tag + QStringLiteral("-served.mbscope.journal"));
+    const QString polled = m_dir.filePath(tag + QStringLiteral("-polled.mbscope.journal"));
+    QFile::remove(served);
+    QFile::remove(polled);
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"), url,
+                        QStringLiteral("--faults"), faults, QStringLiteral("--record"), served},
+                       &error),
+             qPrintable(error));
+    const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), sim.url(), QStringLiteral("--unit"), QStringLiteral("1"),
+                                       QStringLiteral("--function"), QStringLiteral("3"), QStringLiteral("--address"), QStringLiteral("0x79"),
+                                       QStringLiteral("--quantity"), QStringLiteral("2"), QStringLiteral("--count"), QStringLiteral("4"),
+                                       QStringLiteral("--interval"), QStringLiteral("100ms"), QStringLiteral("--record"), polled,
+                                       QStringLiteral("--json")});
+    QVERIFY2(poll.finished, poll.describe().constData());
+    QCOMPARE(poll.json().value(QStringLiteral("ok")).toInt(), 4);
+    // Let a last duplicate leave before the simulator stops.
+    QTest::qWait(100);
+    sim.stop();
+
+    const CliResult a = runMbscope({QStringLiteral("analyze"), served, QStringLiteral("--json")});
+    QVERIFY2(a.finished, a.describe().constData());
+    const QJsonObject o = a.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), 4);
+    QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 4);
+    QCOMPARE(o.value(QStringLiteral("malformed")).toInt(), 0);
+    QCOMPARE(o.value(QStringLiteral("timeouts")).toInt(), 0);
+    // The latency runs to the answer's last piece: at least the gaps between its pieces.
+    QVERIFY2(o.value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("min")).toDouble() >= minLatencyUs, a.describe().constData());
+    const int unmatched = o.value(QStringLiteral("source")).toObject().value(QStringLiteral("unmatched_responses")).toInt();
+
+    const CliResult p = runMbscope({QStringLiteral("analyze"), polled, QStringLiteral("--json")});
+    QVERIFY2(p.finished, p.describe().constData());
+    const QJsonObject po = p.json();
+    QCOMPARE(po.value(QStringLiteral("ok")).toInt(), o.value(QStringLiteral("ok")).toInt());
+    QCOMPARE(po.value(QStringLiteral("malformed")).toInt(), 0);
+    const int pollUnmatched = po.value(QStringLiteral("source")).toObject().value(QStringLiteral("unmatched_responses")).toInt();
+    if (!duplicates) {
+        QCOMPARE(unmatched, 0);
+        QCOMPARE(pollUnmatched, 0);
+        return;
+    }
+    // Every duplicate the poll got is one in the simulator's journal; the last one may have left
+    // after the poll had closed its connection (then the simulator did not send it).
+    QVERIFY2(pollUnmatched >= 3 && unmatched >= pollUnmatched && unmatched <= 4, a.describe().constData());
+    QCOMPARE(o.value(QStringLiteral("source")).toObject().value(QStringLiteral("duplicate_responses")).toInt(), unmatched);
+    const CliResult text = runMbscope({QStringLiteral("analyze"), served});
+    QVERIFY2(text.outText().contains(QStringLiteral("4 transactions, 4 ok, 0 failed")), text.describe().constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("of them duplicates")), text.describe().constData());
 }
 
 // A journal of a TCP link written before journals held endpoints: its client is not known, and
