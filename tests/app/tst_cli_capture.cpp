@@ -72,6 +72,16 @@ bool writeCapture(const QString &path, bool failures, Framing framing = Framing:
         exporter.add(exchange(framing, mbap(11, "0300000001"), kStart + 500 * kMs, {}, 0));
     }
     exporter.finish();
+    if (failures) {
+        // The capture goes on past the last request's timeout (1 s): it shows that no answer came
+        // in time, a timeout (a capture that ended sooner would leave it unanswered at its end).
+        PacketSynthesizer::Endpoints other;
+        other.client.bytes = {192, 168, 1, 5};
+        other.server.bytes = {192, 168, 1, 20};
+        other.clientPort = 5353;
+        other.serverPort = 5353;
+        writer.write(kStart + 1600 * kMs, PacketSynthesizer::udp(other, true, QByteArrayView("not modbus")));
+    }
     return writer.close(&error);
 }
 
@@ -148,6 +158,7 @@ private slots:
     void simulatedCrcErrors();
     void simulatedPieces_data();
     void simulatedPieces();
+    void captureCutMidExchange();
     void journalWithoutEndpoints();
     void serialJournalExported();
     void recordedEndpoints();
@@ -294,7 +305,11 @@ void TestCliCapture::exportPcapAnalysedAgain()
     QVERIFY(readFile(pcap).startsWith(QByteArray::fromHex("4d3cb2a1"))); // nanosecond pcap, little-endian
     const CliResult again = runMbscope({QStringLiteral("analyze"), pcap, QStringLiteral("--json")});
     QVERIFY2(again.finished, again.describe().constData());
-    QCOMPARE(again.json().value(QStringLiteral("count")).toInt(), 5);
+    // The export holds the exchanges only, not the packet that showed the last request's
+    // timeout run out: that request ends the exported capture, unanswered at its end.
+    QCOMPARE(again.json().value(QStringLiteral("count")).toInt(), 4);
+    QCOMPARE(again.json().value(QStringLiteral("timeouts")).toInt(), 0);
+    QCOMPARE(again.json().value(QStringLiteral("source")).toObject().value(QStringLiteral("unanswered_at_end")).toInt(), 1);
     QCOMPARE(again.json().value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("max")).toDouble(), 4000.0);
 }
 
@@ -692,6 +707,69 @@ void TestCliCapture::simulatedPieces()
     const CliResult text = runMbscope({QStringLiteral("analyze"), served});
     QVERIFY2(text.outText().contains(QStringLiteral("4 transactions, 4 ok, 0 failed")), text.describe().constData());
     QVERIFY2(text.outText().contains(QStringLiteral("of them duplicates")), text.describe().constData());
+}
+
+// Issue 26: a capture that ends after a request whose answer it never caught (cut off
+// mid-exchange) does not show that request timing out: its timeout reaches past the end of the
+// capture. It is unanswered at the end of the capture, as a journal cut the same way is, and
+// counted in no figure; a request whose timeout ran out within the capture is a timeout; replay
+// leaves the cut one out.
+void TestCliCapture::captureCutMidExchange()
+{
+    const QString pcap = m_dir.filePath(QStringLiteral("cut-mid-exchange.pcap"));
+    {
+        CaptureFileWriter writer;
+        QString error;
+        QVERIFY2(writer.open(pcap, CaptureFileWriter::formatFor(pcap), &error), qPrintable(error));
+        ExchangePcapExporter exporter(writer);
+        CaptureConversation c;
+        c.client.bytes = {192, 168, 1, 5};
+        c.server.bytes = {192, 168, 1, 10};
+        c.clientPort = 40000;
+        c.serverPort = 502;
+        exporter.addConversation(c);
+        exporter.add(exchange(Framing::Tcp, mbap(1, "0300790002"), kStart, mbap(1, "0304000a01f4"), kStart + 3 * kMs));
+        exporter.add(exchange(Framing::Tcp, mbap(2, "0300790002"), kStart + 100 * kMs, {}, 0)); // times out: 1.3 s follow
+        exporter.add(exchange(Framing::Tcp, mbap(3, "0300790002"), kStart + 1400 * kMs, mbap(3, "0304000a01f4"), kStart + 1403 * kMs));
+        exporter.add(exchange(Framing::Tcp, mbap(4, "0300790002"), kStart + 1500 * kMs, {}, 0)); // the capture ends here
+        exporter.finish();
+        QVERIFY2(writer.close(&error), qPrintable(error));
+    }
+    const CliResult a = runMbscope({QStringLiteral("analyze"), pcap, QStringLiteral("--json")});
+    QVERIFY2(a.finished, a.describe().constData());
+    const QJsonObject o = a.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), 3);
+    QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 2);
+    QCOMPARE(o.value(QStringLiteral("timeouts")).toInt(), 1);
+    const QJsonObject source = o.value(QStringLiteral("source")).toObject();
+    QCOMPARE(source.value(QStringLiteral("unanswered_at_end")).toInt(), 1);
+    QCOMPARE(source.value(QStringLiteral("requests")).toInt(), 4);
+    const CliResult text = runMbscope({QStringLiteral("analyze"), pcap});
+    QVERIFY2(text.outText().contains(QStringLiteral("\nunanswered    1 request(s) at the end of the recording")), text.describe().constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("3 transactions, 2 ok, 1 failed")), text.describe().constData());
+    // The exports say which request it is.
+    const CliResult rows = runMbscope({QStringLiteral("export"), pcap, QStringLiteral("--csv"), QStringLiteral("-")});
+    QVERIFY2(rows.finished && rows.exitCode == 0, rows.describe().constData());
+    QVERIFY2(rows.outText().contains(QStringLiteral("unanswered at the end of the capture")), rows.describe().constData());
+    // A shorter timeout does not reach past the end from the last request (the capture's last
+    // packet): still unanswered at the end, and the one before a timeout.
+    const CliResult shorter = runMbscope({QStringLiteral("analyze"), pcap, QStringLiteral("--timeout"), QStringLiteral("50ms"), QStringLiteral("--json")});
+    QVERIFY2(shorter.finished, shorter.describe().constData());
+    QCOMPARE(shorter.json().value(QStringLiteral("timeouts")).toInt(), 1);
+    QCOMPARE(shorter.json().value(QStringLiteral("source")).toObject().value(QStringLiteral("unanswered_at_end")).toInt(), 1);
+
+    // Replayed to a device: the three exchanges the capture completed, not the cut one.
+    Background device;
+    QString error;
+    QVERIFY2(device.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                           QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                          &error),
+             qPrintable(error));
+    const CliResult r = runMbscope({QStringLiteral("replay"), pcap, QStringLiteral("--target"), device.url(), QStringLiteral("--speed"),
+                                    QStringLiteral("max"), QStringLiteral("--json")});
+    QVERIFY2(r.finished, r.describe().constData());
+    QCOMPARE(r.json().value(QStringLiteral("requests")).toInt(), 3);
+    (void)device.stop();
 }
 
 // A journal of a TCP link written before journals held endpoints: its client is not known, and
