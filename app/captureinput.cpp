@@ -42,7 +42,7 @@ CaptureInput::CaptureInput()
                 QStringLiteral("port"))
     , m_timeout(QStringLiteral("timeout"),
                 QStringLiteral("A request unanswered this long in capture time is a timeout, and a later answer late "
-                               "(default 1s, as the engine's)."),
+                               "(default 1s, as the engine's); one the capture ends sooner after is unanswered at its end."),
                 QStringLiteral("duration"), QStringLiteral("1s"))
 {
 }

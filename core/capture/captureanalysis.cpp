@@ -105,6 +105,7 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
         source.insert(QStringLiteral("frames"), double(report.journal.frames));
         source.insert(QStringLiteral("batches"), double(report.journal.batches));
         source.insert(QStringLiteral("garbage_frames"), double(report.journalGarbage));
+        source.insert(QStringLiteral("duplicate_responses"), double(report.journalDuplicates));
         source.insert(QStringLiteral("recovery"), report.journal.message);
         source.insert(QStringLiteral("version"), double(report.journal.version));
         source.insert(QStringLiteral("notes"), double(report.journal.notes));
@@ -229,7 +230,11 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
     }
     out += m_overall.summary();
     if (m_unmatched > 0)
-        out += padded(QStringLiteral("unmatched")) + QStringLiteral("%1 answer(s) matching no request\n").arg(m_unmatched);
+        out += padded(QStringLiteral("unmatched")) + QStringLiteral("%1 answer(s) matching no request").arg(m_unmatched)
+               + (report.journalDuplicates > 0
+                      ? QStringLiteral(", %1 of them duplicates (a second answer to a request answered already)").arg(report.journalDuplicates)
+                      : QString())
+               + QLatin1Char('\n');
     if (report.kind == ExchangeSourceReport::Kind::Capture) {
         const auto &f = report.frames;
         if (f.lostBytes > 0 || f.retransmittedBytes > 0 || f.skippedBytes > 0 || report.pairs.malformedRequests > 0)

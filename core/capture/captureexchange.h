@@ -13,8 +13,9 @@ namespace mbscope {
 // An answer that matches no request is a record of its own (UnmatchedResponse: the request is
 // empty, sentNs 0); Statistics are not fed those, as the engine counts them apart. A request
 // whose outcome the recording does not hold because the recording ends first (a journal whose
-// writer was killed with the request in flight) is Unanswered: "unanswered at the end of the
-// recording", not a timeout; Statistics are not fed those either, and replay leaves them out.
+// writer was killed with the request in flight; a capture that ends before the request's timeout
+// ran out) is Unanswered: "unanswered at the end of the recording", not a timeout; Statistics
+// are not fed those either, and replay leaves them out.
 struct CaptureExchange {
     enum class Kind : quint8 { Transaction, UnmatchedResponse, Unanswered };
     Kind kind = Kind::Transaction;

@@ -1,5 +1,7 @@
 #include "exchangepairer.h"
 
+#include <algorithm>
+
 #include "protocol/hexnumber.h"
 #include "exchange/responsematcher.h"
 #include "protocol/dissector.h"
@@ -53,11 +55,24 @@ void ExchangePairer::add(const CapturedFrame &frame)
     emitReady();
 }
 
-void ExchangePairer::finish()
+void ExchangePairer::finish(qint64 endNs)
 {
     for (Slot &s : m_slots) {
-        if (!s.done)
-            timeOut(s, QStringLiteral("no answer before the capture ended"));
+        if (s.done)
+            continue;
+        const qint64 sentNs = s.exchange.transaction.sentNs;
+        const bool timedOut = endNs < 0 || (endNs > sentNs && quint64(endNs) - quint64(sentNs) > quint64(m_timeoutNs));
+        timeOut(s, endNs >= 0 && timedOut ? QStringLiteral("no answer within %1 ms").arg(double(m_timeoutNs) / 1e6)
+                                          : QStringLiteral("no answer before the capture ended"));
+        if (timedOut)
+            continue;
+        // Its timeout reaches past the end of the capture.
+        ++m_counters.unansweredAtEnd;
+        s.exchange.kind = CaptureExchange::Kind::Unanswered;
+        s.exchange.transaction.problem =
+            QStringLiteral("unanswered at the end of the capture: it ends %1 ms after this request, before its %2 ms timeout ran out")
+                .arg(QString::number(double(std::max<qint64>(0, endNs - sentNs)) / 1e6, 'f', 3))
+                .arg(double(m_timeoutNs) / 1e6);
     }
     emitReady();
 }

@@ -36,6 +36,7 @@ public:
         quint64 unmatchedResponses = 0;
         quint64 malformedRequests = 0;
         quint64 lateResponses = 0;
+        quint64 unansweredAtEnd = 0; // requests the capture ended within the timeout of (finish)
     };
     static constexpr int kMaxProblems = 20;
 
@@ -52,8 +53,13 @@ public:
     // Time has passed without a frame (a live bus gone quiet): requests waiting longer than the
     // timeout are timeouts now.
     void advance(qint64 nowNs);
-    // The capture ended: requests still waiting are timeouts.
-    void finish();
+    // The capture ended. endNs: the time of its last packet (any packet, Modbus or not). A request
+    // still waiting whose timeout had not run out by then is unanswered at the end of the capture
+    // (CaptureExchange::Kind::Unanswered, counted in no figure, replay leaves it out): the capture
+    // does not show whether its answer came, as a journal cut with a request in flight does not.
+    // One waiting longer than the timeout is a timeout. Without endNs (a live bus stopped:
+    // BusMonitor), every request still waiting is a timeout.
+    void finish(qint64 endNs = -1);
 
     [[nodiscard]] const Counters &counters() const { return m_counters; }
     [[nodiscard]] const QStringList &problems() const { return m_problems; }

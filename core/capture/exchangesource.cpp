@@ -4,6 +4,8 @@
 
 #include <QtCore/QFile>
 
+#include <algorithm>
+
 namespace mbscope {
 
 namespace {
@@ -22,14 +24,19 @@ ExchangeSourceReport readPackets(const QString &path, const std::function<Captur
         if (direction == Direction::Response)
             pairer.answersLost(conversation);
     });
-    report.file = reader([&extractor](const CapturePacket &packet) { extractor.add(packet); });
+    qint64 endNs = -1; // the capture's last packet: requests whose timeout reaches past it are unanswered at its end
+    report.file = reader([&extractor, &endNs](const CapturePacket &packet) {
+        endNs = std::max(endNs, packet.timeNs);
+        extractor.add(packet);
+    });
     extractor.finish();
-    pairer.finish();
+    pairer.finish(std::max<qint64>(endNs, 0));
     report.kind = report.file.format == CaptureFileReader::Format::Unknown ? ExchangeSourceReport::Kind::Unreadable
                                                                              : ExchangeSourceReport::Kind::Capture;
     report.error = report.file.error;
     report.frames = extractor.counters();
     report.pairs = pairer.counters();
+    report.unansweredAtEnd = report.pairs.unansweredAtEnd;
     report.conversations = extractor.conversations();
     report.otherModbusPorts = extractor.otherModbusPorts();
     report.problems = extractor.problems() + pairer.problems();
@@ -70,6 +77,7 @@ ExchangeSourceReport ExchangeSource::read(const QString &path, const CaptureOpti
         report.kind = ExchangeSourceReport::Kind::Journal;
         report.journal = journal.recovery;
         report.journalGarbage = journal.garbageFrames;
+        report.journalDuplicates = journal.duplicateResponses;
         report.unansweredAtEnd = journal.noOutcome;
         report.conversations = journal.conversations;
         report.pairs.unmatchedResponses = journal.unmatchedResponses;

@@ -30,7 +30,8 @@ struct ExchangeSourceReport {
     ExchangePairer::Counters pairs;           // Capture
     TrafficJournalRecovery journal;           // Journal
     quint64 journalGarbage = 0;
-    quint64 unansweredAtEnd = 0; // Journal: requests cut by its end (CaptureExchange::Kind::Unanswered)
+    quint64 journalDuplicates = 0; // Journal: of the unmatched answers, second answers to one request (a server's duplicates)
+    quint64 unansweredAtEnd = 0; // requests cut by the end of the journal or capture (CaptureExchange::Kind::Unanswered)
     std::vector<CaptureConversation> conversations;
     // Capture: other ports whose traffic looks like Modbus (most packets first).
     std::vector<ModbusPortFinder::Found> otherModbusPorts;

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "exchange/responseverdict.h"
+#include "protocol/pdusize.h"
 #include "traffic/journalendpoints.h"
 #include "traffic/trafficmetadata.h"
 #include "transport/linkurl.h"
@@ -15,6 +16,7 @@
 #include <QtCore/QtEndian>
 
 #include <deque>
+#include <vector>
 #include <memory>
 #include <utility>
 
@@ -91,6 +93,44 @@ CaptureConversation conversationFor(quint16 link, const QString &name)
     return c;
 }
 
+
+// Where the answer that starts bytes ends, by its framing's own rule: what a client's framer
+// (linkframing.h) goes by to join the pieces of an answer. MBAP: the header's length; RTU: the
+// length the function code and byte count predict (pdusize), and the CRC; ASCII: CR LF.
+// > 0: the frame's size (more than bytes.size() when pieces are still to come); 0: too few bytes
+// to tell yet; -1: the bytes say nothing of their end (no length rule, not a header): they are
+// taken as they are.
+qsizetype answerSize(QByteArrayView bytes, Framing framing)
+{
+    switch (framing) {
+    case Framing::Tcp:
+    case Framing::Udp: {
+        if (bytes.size() < 6)
+            return 0;
+        const int length = qFromBigEndian<quint16>(bytes.data() + 4);
+        const quint16 protocol = qFromBigEndian<quint16>(bytes.data() + 2);
+        return protocol == 0 && length >= 2 && length <= 254 ? 6 + length : -1;
+    }
+    case Framing::Rtu: {
+        if (bytes.size() < 2)
+            return 0;
+        const pdusize::Expected e = pdusize::expectedPduSize(bytes.sliced(1), Direction::Response);
+        if (e.status == pdusize::Status::Complete)
+            return 1 + e.size + 2;
+        return e.status == pdusize::Status::NeedMore ? 0 : -1;
+    }
+    case Framing::Ascii: {
+        if (bytes.isEmpty())
+            return 0;
+        if (bytes.front() != ':')
+            return -1;
+        const qsizetype end = QByteArrayView(bytes).indexOf("\r\n");
+        return end < 0 ? 0 : end + 2;
+    }
+    default:
+        return -1;
+    }
+}
 } // namespace
 
 bool JournalExchangeReader::isJournal(QByteArrayView firstBytes)
@@ -249,6 +289,174 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
     const bool server = !names.metadata.isEmpty() && TrafficMetadata::fromJson(names.metadata, &metadata, &metadataError)
                         && metadata.role == TrafficMetadata::Role::Server;
 
+    // A server writes an answer as it leaves, and a fault rule may send it in pieces (chunks,
+    // trickle: FaultPlan's ResponseChunks, each written after its delay) or twice (duplicate):
+    // its journal holds each piece as a frame of its own, with the time it left and the
+    // request's id (Simulator::setTrafficLog). The journal is left as the wire was, piece by
+    // piece with their times (a pcap export of it shows the pieces' timing only through these),
+    // and the pieces are joined here into what the client's framer made of them: a whole answer
+    // when its framing's length rule says it is complete (answerSize), stamped from its first
+    // piece to its last (the latency runs to the last byte, as the engine's); bytes beyond it
+    // start the next answer to the same request, a duplicate, which is what the engine calls it
+    // (an answer matching no request, not a malformed first one). Pieces still short of a whole
+    // answer when another answer starts on the same connection, or when the journal ends, are
+    // the answer as the client got it, cut short. Datagram and delimited links are left alone:
+    // a datagram is a frame of its own to the client.
+    struct Pieces {
+        QByteArray bytes;
+        qint64 firstNs = 0;  // monotonic, of the piece that holds the first byte
+        qint64 lastNs = 0;   // of the last piece
+        quint64 sequence = 0; // of the first piece
+        TrafficVerdict verdict = TrafficVerdict::Ok;
+        quint32 conversation = 0;
+    };
+    struct Answered {
+        quint32 conversation = 0;
+        quint64 requestPacket = 0;
+    };
+    QHash<Key, Pieces> pieces;
+    QHash<quint32, Key> openPieces; // conversation -> the answer whose pieces are coming
+    // The last answered requests, for the duplicates that follow their answers (bounded: a
+    // duplicate comes after its answer, not thousands of answers later).
+    constexpr qsizetype kAnsweredKept = 1024;
+    QHash<Key, Answered> answered;
+    std::deque<Key> answeredOrder;
+    QHash<quint16, bool> joinable;
+    for (qsizetype i = 0; i < names.links.size(); ++i) {
+        const LinkUrl::Result parsed = LinkUrl::parse(names.links.at(i));
+        joinable.insert(quint16(i), server && parsed.url && !parsed.url->isDatagram() && !parsed.url->delimited.enabled);
+    }
+
+    // An answer (the whole of one, or what there is of it) with the id of its request.
+    const auto answerFrame = [&](quint16 link, quint64 transactionId, TrafficVerdict verdictIn, const QByteArray &bytes,
+                                 qint64 firstNs, qint64 lastNs, quint64 sequence) {
+        const bool unsolicited = transactionId == 0 || verdictIn == TrafficVerdict::Unsolicited || verdictIn == TrafficVerdict::Sent;
+        const Key key{link, transactionId};
+        const auto pending = unsolicited ? waiting.end() : waiting.find(key);
+        if (verdictIn == TrafficVerdict::Late || unsolicited || pending == waiting.end()) {
+            Slot &s = push(link);
+            Transaction &t = s.exchange.transaction;
+            s.exchange.responsePacket = sequence + 1;
+            t.response = bytes;
+            t.firstByteNs = wall(firstNs);
+            t.doneNs = wall(lastNs);
+            const auto before = timedOut.constFind(key);
+            const auto again = unsolicited ? answered.cend() : answered.constFind(key);
+            if (verdictIn == TrafficVerdict::Late && before != timedOut.cend()) {
+                ++result.lateResponses;
+                t.request = before->transaction.request;
+                t.sentNs = before->transaction.sentNs;
+                s.exchange.requestPacket = before->requestPacket;
+                t.status = TransactionStatus::Late;
+            } else {
+                ++result.unmatchedResponses;
+                s.exchange.kind = CaptureExchange::Kind::UnmatchedResponse;
+                t.status = TransactionStatus::Unexpected;
+                if (again != answered.cend()) {
+                    ++result.duplicateResponses;
+                    t.problem = QStringLiteral("a duplicate: another answer to transaction %1 (frame %2), answered already")
+                                    .arg(transactionId)
+                                    .arg(again->requestPacket);
+                } else {
+                    t.problem = unsolicited ? QStringLiteral("an answer when no request was waiting")
+                                            : QStringLiteral("its request (transaction %1) is not in the journal").arg(transactionId);
+                }
+            }
+            s.done = true;
+            emitReady();
+            return;
+        }
+        Slot &s = queue[std::size_t(pending.value() - firstSlot)];
+        waiting.erase(pending);
+        Transaction &t = s.exchange.transaction;
+        const int verdict = int(verdictIn);
+        t.status = verdict <= int(TrafficVerdict::Late) ? TransactionStatus(verdict) : TransactionStatus::Unexpected;
+        if (!bytes.isEmpty()) {
+            s.exchange.responsePacket = sequence + 1;
+            t.response = bytes;
+            t.firstByteNs = wall(firstNs);
+            t.doneNs = wall(lastNs);
+            if (server && !answered.contains(key)) {
+                answered.insert(key, Answered{s.exchange.conversation, s.exchange.requestPacket});
+                answeredOrder.push_back(key);
+                if (answeredOrder.size() > kAnsweredKept) {
+                    answered.remove(answeredOrder.front());
+                    answeredOrder.pop_front();
+                }
+            }
+        }
+        judge(t, s.exchange.framing);
+        if (t.status == TransactionStatus::Timeout)
+            timedOut.insert(key, s.exchange);
+        s.done = true;
+        emitReady();
+    };
+    // The pieces of an answer that will get no more: the answer as its client got it.
+    const auto flushPieces = [&](const Key &key) {
+        const auto it = pieces.find(key);
+        if (it == pieces.end())
+            return;
+        const Pieces p = it.value();
+        pieces.erase(it);
+        if (const auto open = openPieces.constFind(p.conversation); open != openPieces.cend() && open.value() == key)
+            openPieces.erase(open);
+        if (!p.bytes.isEmpty())
+            answerFrame(key.first, key.second, p.verdict, p.bytes, p.firstNs, p.lastNs, p.sequence);
+    };
+    // One piece of a server's answer: true when taken (joined with the others of its answer).
+    const auto answerPiece = [&](const TrafficEntry &e, const QByteArray &bytes) -> bool {
+        if (!joinable.value(e.link, false) || e.transactionId == 0 || bytes.isEmpty()
+            || (e.verdict != TrafficVerdict::Ok && e.verdict != TrafficVerdict::Exception))
+            return false;
+        const Key key{e.link, e.transactionId};
+        auto it = pieces.find(key);
+        if (it == pieces.end()) {
+            quint32 conversation = 0;
+            if (const auto w = waiting.constFind(key); w != waiting.cend())
+                conversation = queue[std::size_t(w.value() - firstSlot)].exchange.conversation;
+            else if (const auto a = answered.constFind(key); a != answered.cend())
+                conversation = a->conversation;
+            else
+                return false; // no request of the journal's: an answer matching none, as it is
+            Pieces fresh;
+            fresh.conversation = conversation;
+            it = pieces.insert(key, fresh);
+        }
+        const quint32 conversation = it->conversation;
+        // Answers go out one after the other on a connection: one starting ends the one before.
+        if (const auto open = openPieces.constFind(conversation); open != openPieces.cend() && open.value() != key) {
+            flushPieces(open.value());
+            it = pieces.find(key);
+        }
+        Pieces &p = it.value();
+        if (p.bytes.isEmpty()) {
+            p.firstNs = e.tNs;
+            p.sequence = e.sequence;
+            p.verdict = e.verdict;
+        }
+        p.bytes += bytes;
+        p.lastNs = e.tNs;
+        openPieces.insert(conversation, key);
+        const Framing framing = framingOf(e.link);
+        while (!p.bytes.isEmpty()) {
+            const qsizetype size = answerSize(p.bytes, framing);
+            if (size == 0 || size > p.bytes.size())
+                return true; // more pieces to come
+            const qsizetype take = size < 0 ? p.bytes.size() : size;
+            const QByteArray whole = p.bytes.left(take);
+            const qint64 firstNs = p.firstNs;
+            const quint64 sequence = p.sequence;
+            const TrafficVerdict verdict = p.verdict;
+            p.bytes.remove(0, take);
+            p.firstNs = e.tNs;
+            p.sequence = e.sequence;
+            answerFrame(e.link, e.transactionId, verdict, whole, firstNs, e.tNs, sequence);
+        }
+        pieces.remove(key);
+        openPieces.remove(conversation);
+        return true;
+    };
+
     result.recovery = TrafficJournalReader::read(path, [&](const TrafficEntry &entry) {
         TrafficEntry e = entry;
         if (server)
@@ -275,49 +483,18 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
             s->exchange.transaction.sentNs = wall(e.tNs);
             return;
         }
-        const bool unsolicited = e.transactionId == 0 || e.verdict == TrafficVerdict::Unsolicited || e.verdict == TrafficVerdict::Sent;
-        const Key key{e.link, e.transactionId};
-        const auto pending = unsolicited ? waiting.end() : waiting.find(key);
-        if (e.verdict == TrafficVerdict::Late || unsolicited || pending == waiting.end()) {
-            Slot &s = push(e.link);
-            Transaction &t = s.exchange.transaction;
-            s.exchange.responsePacket = e.sequence + 1;
-            t.response = bytes;
-            t.firstByteNs = t.doneNs = wall(e.tNs);
-            const auto before = timedOut.constFind(key);
-            if (e.verdict == TrafficVerdict::Late && before != timedOut.cend()) {
-                ++result.lateResponses;
-                t.request = before->transaction.request;
-                t.sentNs = before->transaction.sentNs;
-                s.exchange.requestPacket = before->requestPacket;
-                t.status = TransactionStatus::Late;
-            } else {
-                ++result.unmatchedResponses;
-                s.exchange.kind = CaptureExchange::Kind::UnmatchedResponse;
-                t.status = TransactionStatus::Unexpected;
-                t.problem = unsolicited ? QStringLiteral("an answer when no request was waiting")
-                                        : QStringLiteral("its request (transaction %1) is not in the journal").arg(e.transactionId);
-            }
-            s.done = true;
-            emitReady();
+        if (server && answerPiece(e, bytes))
             return;
-        }
-        Slot &s = queue[std::size_t(pending.value() - firstSlot)];
-        waiting.erase(pending);
-        Transaction &t = s.exchange.transaction;
-        const int verdict = int(e.verdict);
-        t.status = verdict <= int(TrafficVerdict::Late) ? TransactionStatus(verdict) : TransactionStatus::Unexpected;
-        if (!bytes.isEmpty()) {
-            s.exchange.responsePacket = e.sequence + 1;
-            t.response = bytes;
-            t.firstByteNs = t.doneNs = wall(e.tNs);
-        }
-        judge(t, s.exchange.framing);
-        if (t.status == TransactionStatus::Timeout)
-            timedOut.insert(key, s.exchange);
-        s.done = true;
-        emitReady();
+        answerFrame(e.link, e.transactionId, e.verdict, bytes, e.tNs, e.tNs, e.sequence);
     }, onNote);
+
+    // The journal ends: pieces still short of an answer are all their client got.
+    std::vector<std::pair<quint64, Key>> left;
+    for (auto it = pieces.cbegin(); it != pieces.cend(); ++it)
+        left.emplace_back(it->sequence, it.key());
+    std::sort(left.begin(), left.end());
+    for (const auto &[sequence, key] : left)
+        flushPieces(key);
 
     for (Slot &s : queue) {
         if (!s.done) {

@@ -23,7 +23,12 @@ namespace mbscope {
 // so latencies from a journal can be a frame's transmission time shorter than the engine's.
 //
 // A server's journal (its metadata's role, trafficmetadata.h) is read as its clients saw it:
-// requests are what came in, answers what went out.
+// requests are what came in, answers what went out. An answer a server sent in pieces (the
+// simulator's chunks and trickle rules) is one frame per piece in its journal, each with the
+// time it left: the pieces are joined into the answer the client's framer made of them (by the
+// framing's length rule), stamped from its first piece to its last, so that its latency runs to
+// its last byte; a second answer to one request (the duplicate rule) is an answer matching no
+// request, counted among the duplicates, as the engine counts it.
 class JournalExchangeReader
 {
 public:
@@ -33,6 +38,9 @@ public:
         TrafficJournalRecovery recovery;
         quint64 garbageFrames = 0;
         quint64 unmatchedResponses = 0;
+        // Of those, second answers to a request a server's journal shows answered already (the
+        // simulator's duplicate rule): the engine's duplicate frames.
+        quint64 duplicateResponses = 0;
         quint64 lateResponses = 0;
         // Requests whose outcome the journal does not hold, as it ends first: CaptureExchange::Kind::Unanswered.
         quint64 noOutcome = 0;

@@ -103,7 +103,10 @@ public:
     // gets a transaction id of its own (1, 2, 3...) that its answer's frames carry, an
     // unanswered one an empty Out record (verdict Timeout, or Broadcast), and the fault plan
     // that shaped an answer a note (TrafficLog::annotate): {"faults": [...], "drop": true,
-    // "close": "before"|"after", "chunks": N, "delay_ms": D}.
+    // "close": "before"|"after", "chunks": N, "delay_ms": D}. An answer sent in pieces (the
+    // chunks and trickle rules, or a duplicate) is one Out frame per piece, each logged as it
+    // is written with its own time: the journal says what the wire carried, and its reader
+    // (JournalExchangeReader) joins the pieces into the answer the client's framer made.
     void setTrafficLog(TrafficLog *log);
 
     // ---- The request path (used by the endpoints; public for tests and fuzzing) ----

@@ -72,6 +72,16 @@ bool writeCapture(const QString &path, bool failures, Framing framing = Framing:
         exporter.add(exchange(framing, mbap(11, "0300000001"), kStart + 500 * kMs, {}, 0));
     }
     exporter.finish();
+    if (failures) {
+        // The capture goes on past the last request's timeout (1 s): it shows that no answer came
+        // in time, a timeout (a capture that ended sooner would leave it unanswered at its end).
+        PacketSynthesizer::Endpoints other;
+        other.client.bytes = {192, 168, 1, 5};
+        other.server.bytes = {192, 168, 1, 20};
+        other.clientPort = 5353;
+        other.serverPort = 5353;
+        writer.write(kStart + 1600 * kMs, PacketSynthesizer::udp(other, true, QByteArrayView("not modbus")));
+    }
     return writer.close(&error);
 }
 
@@ -146,6 +156,9 @@ private slots:
     void otherPort_data();
     void otherPort();
     void simulatedCrcErrors();
+    void simulatedPieces_data();
+    void simulatedPieces();
+    void captureCutMidExchange();
     void journalWithoutEndpoints();
     void serialJournalExported();
     void recordedEndpoints();
@@ -292,7 +305,11 @@ void TestCliCapture::exportPcapAnalysedAgain()
     QVERIFY(readFile(pcap).startsWith(QByteArray::fromHex("4d3cb2a1"))); // nanosecond pcap, little-endian
     const CliResult again = runMbscope({QStringLiteral("analyze"), pcap, QStringLiteral("--json")});
     QVERIFY2(again.finished, again.describe().constData());
-    QCOMPARE(again.json().value(QStringLiteral("count")).toInt(), 5);
+    // The export holds the exchanges only, not the packet that showed the last request's
+    // timeout run out: that request ends the exported capture, unanswered at its end.
+    QCOMPARE(again.json().value(QStringLiteral("count")).toInt(), 4);
+    QCOMPARE(again.json().value(QStringLiteral("timeouts")).toInt(), 0);
+    QCOMPARE(again.json().value(QStringLiteral("source")).toObject().value(QStringLiteral("unanswered_at_end")).toInt(), 1);
     QCOMPARE(again.json().value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("max")).toDouble(), 4000.0);
 }
 
@@ -599,6 +616,160 @@ void TestCliCapture::simulatedCrcErrors()
     QCOMPARE(o.value(QStringLiteral("crc_errors")).toInt(), 3);
     const CliResult text = runMbscope({QStringLiteral("analyze"), journal});
     QVERIFY2(!text.outText().contains(QStringLiteral("3 ok")), text.describe().constData());
+}
+
+void TestCliCapture::simulatedPieces_data()
+{
+    QTest::addColumn<QString>("url");
+    QTest::addColumn<QByteArray>("rules");
+    QTest::addColumn<bool>("duplicates");
+    QTest::addColumn<double>("minLatencyUs"); // the gaps between an answer's pieces
+    QTest::newRow("chunks, tcp") << QStringLiteral("tcp://127.0.0.1:0")
+                                 << QByteArray(R"([{"name": "pieces", "kind": "chunks", "chunkBytes": 3, "gapMs": 3, "probability": 1.0}])")
+                                 << false << 4 * 3000.0; // 13 bytes in 5 pieces
+    QTest::newRow("trickle, rtu-tcp") << QStringLiteral("rtu-tcp://127.0.0.1:0")
+                                      << QByteArray(R"([{"name": "slowly", "kind": "trickle", "gapMs": 2, "probability": 1.0}])")
+                                      << false << 8 * 2000.0; // 9 bytes, one by one
+    QTest::newRow("duplicate in chunks, tcp")
+        << QStringLiteral("tcp://127.0.0.1:0")
+        << QByteArray(R"([{"name": "twice", "kind": "duplicate", "gapMs": 2, "probability": 1.0},)"
+                      R"( {"name": "pieces", "kind": "chunks", "chunkBytes": 5, "gapMs": 2, "probability": 1.0}])")
+        << true << 2 * 2000.0;
+    QTest::newRow("duplicate, rtu-tcp") << QStringLiteral("rtu-tcp://127.0.0.1:0")
+                                        << QByteArray(R"([{"name": "twice", "kind": "duplicate", "gapMs": 2, "probability": 1.0}])")
+                                        << true << 0.0;
+}
+
+// Issue 26: an answer the simulator sends in pieces (fault rules chunks, trickle) is one answer
+// to its client, whose framer joins them; `simulate --record` journals each piece as it left,
+// with its own time, and analyze joins them into the answer its client got (latency to the last
+// piece), as the poll's own journal says. A duplicate answer is a second answer to one request
+// (the engine's duplicate, an answer matching no request), not a malformed first one.
+void TestCliCapture::simulatedPieces()
+{
+    QFETCH(QString, url);
+    QFETCH(QByteArray, rules);
+    QFETCH(bool, duplicates);
+    QFETCH(double, minLatencyUs);
+    const QString tag = QString::fromLatin1(QTest::currentDataTag()).section(QLatin1Char(','), 0, 0).replace(QLatin1Char(' '), QLatin1Char('-'));
+    const QString faults = m_dir.filePath(tag + QStringLiteral("-faults.json"));
+    QFile file(faults);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write(R"({"seed": 1, "rules": )" + rules + "}");
+    file.close();
+    const QString served = m_dir.filePath(tag + QStringLiteral("-served.mbscope.journal"));
+    const QString polled = m_dir.filePath(tag + QStringLiteral("-polled.mbscope.journal"));
+    QFile::remove(served);
+    QFile::remove(polled);
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"), url,
+                        QStringLiteral("--faults"), faults, QStringLiteral("--record"), served},
+                       &error),
+             qPrintable(error));
+    const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), sim.url(), QStringLiteral("--unit"), QStringLiteral("1"),
+                                       QStringLiteral("--function"), QStringLiteral("3"), QStringLiteral("--address"), QStringLiteral("0x79"),
+                                       QStringLiteral("--quantity"), QStringLiteral("2"), QStringLiteral("--count"), QStringLiteral("4"),
+                                       QStringLiteral("--interval"), QStringLiteral("100ms"), QStringLiteral("--record"), polled,
+                                       QStringLiteral("--json")});
+    QVERIFY2(poll.finished, poll.describe().constData());
+    QCOMPARE(poll.json().value(QStringLiteral("ok")).toInt(), 4);
+    // Let a last duplicate leave before the simulator stops.
+    QTest::qWait(100);
+    sim.stop();
+
+    const CliResult a = runMbscope({QStringLiteral("analyze"), served, QStringLiteral("--json")});
+    QVERIFY2(a.finished, a.describe().constData());
+    const QJsonObject o = a.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), 4);
+    QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 4);
+    QCOMPARE(o.value(QStringLiteral("malformed")).toInt(), 0);
+    QCOMPARE(o.value(QStringLiteral("timeouts")).toInt(), 0);
+    // The latency runs to the answer's last piece: at least the gaps between its pieces.
+    QVERIFY2(o.value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("min")).toDouble() >= minLatencyUs, a.describe().constData());
+    const int unmatched = o.value(QStringLiteral("source")).toObject().value(QStringLiteral("unmatched_responses")).toInt();
+
+    const CliResult p = runMbscope({QStringLiteral("analyze"), polled, QStringLiteral("--json")});
+    QVERIFY2(p.finished, p.describe().constData());
+    const QJsonObject po = p.json();
+    QCOMPARE(po.value(QStringLiteral("ok")).toInt(), o.value(QStringLiteral("ok")).toInt());
+    QCOMPARE(po.value(QStringLiteral("malformed")).toInt(), 0);
+    const int pollUnmatched = po.value(QStringLiteral("source")).toObject().value(QStringLiteral("unmatched_responses")).toInt();
+    if (!duplicates) {
+        QCOMPARE(unmatched, 0);
+        QCOMPARE(pollUnmatched, 0);
+        return;
+    }
+    // Every duplicate the poll got is one in the simulator's journal; the last one may have left
+    // after the poll had closed its connection (then the simulator did not send it).
+    QVERIFY2(pollUnmatched >= 3 && unmatched >= pollUnmatched && unmatched <= 4, a.describe().constData());
+    QCOMPARE(o.value(QStringLiteral("source")).toObject().value(QStringLiteral("duplicate_responses")).toInt(), unmatched);
+    const CliResult text = runMbscope({QStringLiteral("analyze"), served});
+    QVERIFY2(text.outText().contains(QStringLiteral("4 transactions, 4 ok, 0 failed")), text.describe().constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("of them duplicates")), text.describe().constData());
+}
+
+// Issue 26: a capture that ends after a request whose answer it never caught (cut off
+// mid-exchange) does not show that request timing out: its timeout reaches past the end of the
+// capture. It is unanswered at the end of the capture, as a journal cut the same way is, and
+// counted in no figure; a request whose timeout ran out within the capture is a timeout; replay
+// leaves the cut one out.
+void TestCliCapture::captureCutMidExchange()
+{
+    const QString pcap = m_dir.filePath(QStringLiteral("cut-mid-exchange.pcap"));
+    {
+        CaptureFileWriter writer;
+        QString error;
+        QVERIFY2(writer.open(pcap, CaptureFileWriter::formatFor(pcap), &error), qPrintable(error));
+        ExchangePcapExporter exporter(writer);
+        CaptureConversation c;
+        c.client.bytes = {192, 168, 1, 5};
+        c.server.bytes = {192, 168, 1, 10};
+        c.clientPort = 40000;
+        c.serverPort = 502;
+        exporter.addConversation(c);
+        exporter.add(exchange(Framing::Tcp, mbap(1, "0300790002"), kStart, mbap(1, "0304000a01f4"), kStart + 3 * kMs));
+        exporter.add(exchange(Framing::Tcp, mbap(2, "0300790002"), kStart + 100 * kMs, {}, 0)); // times out: 1.3 s follow
+        exporter.add(exchange(Framing::Tcp, mbap(3, "0300790002"), kStart + 1400 * kMs, mbap(3, "0304000a01f4"), kStart + 1403 * kMs));
+        exporter.add(exchange(Framing::Tcp, mbap(4, "0300790002"), kStart + 1500 * kMs, {}, 0)); // the capture ends here
+        exporter.finish();
+        QVERIFY2(writer.close(&error), qPrintable(error));
+    }
+    const CliResult a = runMbscope({QStringLiteral("analyze"), pcap, QStringLiteral("--json")});
+    QVERIFY2(a.finished, a.describe().constData());
+    const QJsonObject o = a.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toInt(), 3);
+    QCOMPARE(o.value(QStringLiteral("ok")).toInt(), 2);
+    QCOMPARE(o.value(QStringLiteral("timeouts")).toInt(), 1);
+    const QJsonObject source = o.value(QStringLiteral("source")).toObject();
+    QCOMPARE(source.value(QStringLiteral("unanswered_at_end")).toInt(), 1);
+    QCOMPARE(source.value(QStringLiteral("requests")).toInt(), 4);
+    const CliResult text = runMbscope({QStringLiteral("analyze"), pcap});
+    QVERIFY2(text.outText().contains(QStringLiteral("\nunanswered    1 request(s) at the end of the recording")), text.describe().constData());
+    QVERIFY2(text.outText().contains(QStringLiteral("3 transactions, 2 ok, 1 failed")), text.describe().constData());
+    // The exports say which request it is.
+    const CliResult rows = runMbscope({QStringLiteral("export"), pcap, QStringLiteral("--csv"), QStringLiteral("-")});
+    QVERIFY2(rows.finished && rows.exitCode == 0, rows.describe().constData());
+    QVERIFY2(rows.outText().contains(QStringLiteral("unanswered at the end of the capture")), rows.describe().constData());
+    // A shorter timeout does not reach past the end from the last request (the capture's last
+    // packet): still unanswered at the end, and the one before a timeout.
+    const CliResult shorter = runMbscope({QStringLiteral("analyze"), pcap, QStringLiteral("--timeout"), QStringLiteral("50ms"), QStringLiteral("--json")});
+    QVERIFY2(shorter.finished, shorter.describe().constData());
+    QCOMPARE(shorter.json().value(QStringLiteral("timeouts")).toInt(), 1);
+    QCOMPARE(shorter.json().value(QStringLiteral("source")).toObject().value(QStringLiteral("unanswered_at_end")).toInt(), 1);
+
+    // Replayed to a device: the three exchanges the capture completed, not the cut one.
+    Background device;
+    QString error;
+    QVERIFY2(device.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("rosrao-gamma"), QStringLiteral("--listen"),
+                           QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                          &error),
+             qPrintable(error));
+    const CliResult r = runMbscope({QStringLiteral("replay"), pcap, QStringLiteral("--target"), device.url(), QStringLiteral("--speed"),
+                                    QStringLiteral("max"), QStringLiteral("--json")});
+    QVERIFY2(r.finished, r.describe().constData());
+    QCOMPARE(r.json().value(QStringLiteral("requests")).toInt(), 3);
+    (void)device.stop();
 }
 
 // A journal of a TCP link written before journals held endpoints: its client is not known, and

@@ -142,8 +142,20 @@ void TestCaptureRoundTrip::roundTrip_data()
     QTest::newRow("modbus udp")
         << std::vector{conversation(0, Framing::Udp, 502)}
         << std::vector{exchange(0, Framing::Udp, mbap(1, 1, "0400000001"), kStart, mbap(1, 1, "04020007"), kStart + 2 * kMs, ok),
-                       exchange(0, Framing::Udp, mbap(2, 1, "0400000001"), kStart + 5 * kMs, {}, 0, TransactionStatus::Timeout)}
+                       exchange(0, Framing::Udp, mbap(2, 1, "0400000001"), kStart + 5 * kMs, {}, 0, TransactionStatus::Timeout),
+                       // The capture goes on past the timeout (1 s): it shows the one before time out.
+                       exchange(0, Framing::Udp, mbap(3, 1, "0400000001"), kStart + 1200 * kMs, mbap(3, 1, "04020007"), kStart + 1202 * kMs, ok)}
         << false;
+    {
+        // A request the recording ends before the timeout of: unanswered at its end, in the
+        // exported capture as in the journal (the capture's last packet is that request).
+        CaptureExchange cut = exchange(0, tcp, mbap(9, 1, "0300000001"), kStart + 10 * kMs, {}, 0, TransactionStatus::Timeout);
+        cut.kind = CaptureExchange::Kind::Unanswered;
+        QTest::newRow("mbap: the recording ends before the last request's timeout")
+            << std::vector{conversation(0, tcp, 502)}
+            << std::vector{exchange(0, tcp, mbap(8, 1, "0300000001"), kStart, mbap(8, 1, "03020001"), kStart + kMs, ok), cut}
+            << false;
+    }
     QTest::newRow("mbap over ipv6, two conversations")
         << std::vector{conversation(0, tcp, 502, true), conversation(1, tcp, 1502)}
         << std::vector{exchange(0, tcp, mbap(1, 1, "0100000010"), kStart, mbap(1, 1, "0102ff00"), kStart + kMs, ok),
