@@ -86,38 +86,51 @@ bool rtuCrcValid(const QByteArray &b)
     return checksum::crc16Modbus(QByteArrayView(b).first(b.size() - 2)) == sent;
 }
 
-// Which framing do the bytes carry? Each rule says why, so the user can judge it.
-Framing detectFraming(const QByteArray &b, QString &reason)
+// Which rule of detectFraming decided; the reason's text is written from it when it is read.
+enum class FramingRule : int { AsciiStart, Crc, Mbap, CrcAndMbap, MbapPlausible, Fallback };
+
+QString framingReasonText(const QByteArray &b, int rule, int mbapLength)
 {
-    if (b.startsWith(':')) {
-        reason = QStringLiteral("starts with ':' (0x3A), the ASCII frame start");
-        return Framing::Ascii;
+    switch (FramingRule(rule)) {
+    case FramingRule::AsciiStart: return QStringLiteral("starts with ':' (0x3A), the ASCII frame start");
+    case FramingRule::Crc: return QStringLiteral("the last two bytes are a valid CRC-16/MODBUS of the bytes before them");
+    case FramingRule::Mbap:
+        return QStringLiteral("bytes 2-3 are protocol id 0 and the MBAP length field (%1) matches the bytes after it").arg(mbapLength);
+    case FramingRule::CrcAndMbap:
+        return QStringLiteral("the bytes fit both a Modbus TCP header and an RTU CRC; read as RTU because a valid CRC is the "
+                              "stronger sign (use --framing tcp to read it as Modbus TCP)");
+    case FramingRule::MbapPlausible:
+        return QStringLiteral("bytes 2-3 are protocol id 0 and the length field (%1) is plausible, but it does not match the "
+                              "%2 bytes after it and no CRC is valid; read as Modbus TCP")
+            .arg(mbapLength).arg(b.size() - 6);
+    case FramingRule::Fallback: break;
     }
-    const bool crc = rtuCrcValid(b);
+    return QStringLiteral("no valid CRC, no MBAP header and no ':' start: read as RTU, whose CRC check then fails");
+}
+
+// Which framing do the bytes carry? Each rule says why, so the user can judge it. Structural
+// checks only: the ':' start, one CRC over the frame, the MBAP header's fields.
+Framing detectFraming(const QByteArray &b, DetectionReason &reason)
+{
+    const auto decide = [&](Framing framing, FramingRule rule, int mbapLength = 0) {
+        reason = DetectionReason::deferred(framingReasonText, b, int(rule), mbapLength);
+        return framing;
+    };
+    if (b.startsWith(':'))
+        return decide(Framing::Ascii, FramingRule::AsciiStart);
     const bool mbapHeader = b.size() >= 8 && b.at(2) == 0 && b.at(3) == 0;
     const int mbapLength = b.size() >= 6 ? (quint8(b.at(4)) << 8) | quint8(b.at(5)) : -1;
     const bool mbapExact = mbapHeader && mbapLength == b.size() - 6;
-    if (crc && !mbapExact) {
-        reason = QStringLiteral("the last two bytes are a valid CRC-16/MODBUS of the bytes before them");
-        return Framing::Rtu;
-    }
-    if (mbapExact && !crc) {
-        reason = QStringLiteral("bytes 2-3 are protocol id 0 and the MBAP length field (%1) matches the bytes after it").arg(mbapLength);
-        return Framing::Tcp;
-    }
-    if (crc && mbapExact) {
-        reason = QStringLiteral("the bytes fit both a Modbus TCP header and an RTU CRC; read as RTU because a valid CRC is the "
-                                "stronger sign (use --framing tcp to read it as Modbus TCP)");
-        return Framing::Rtu;
-    }
-    if (mbapHeader && mbapLength >= 2 && mbapLength <= 254) {
-        reason = QStringLiteral("bytes 2-3 are protocol id 0 and the length field (%1) is plausible, but it does not match the "
-                                "%2 bytes after it and no CRC is valid; read as Modbus TCP")
-                     .arg(mbapLength).arg(b.size() - 6);
-        return Framing::Tcp;
-    }
-    reason = QStringLiteral("no valid CRC, no MBAP header and no ':' start: read as RTU, whose CRC check then fails");
-    return Framing::Rtu;
+    const bool crc = rtuCrcValid(b);
+    if (crc && !mbapExact)
+        return decide(Framing::Rtu, FramingRule::Crc);
+    if (mbapExact && !crc)
+        return decide(Framing::Tcp, FramingRule::Mbap, mbapLength);
+    if (crc && mbapExact)
+        return decide(Framing::Rtu, FramingRule::CrcAndMbap);
+    if (mbapHeader && mbapLength >= 2 && mbapLength <= 254)
+        return decide(Framing::Tcp, FramingRule::MbapPlausible, mbapLength);
+    return decide(Framing::Rtu, FramingRule::Fallback);
 }
 
 struct Score {
@@ -140,6 +153,22 @@ Score score(const FieldTree &tree)
     return s;
 }
 
+// The counts alone, for choosing: the first problem's text is only wanted for the reason.
+Score count(const FieldTree &tree)
+{
+    Score s;
+    for (const Field &f : tree.fields()) {
+        s.errors += f.severity == Severity::Error ? 1 : 0;
+        s.warnings += f.severity == Severity::Warning ? 1 : 0;
+    }
+    return s;
+}
+
+bool responseFitsBetter(const Score &req, const Score &rsp)
+{
+    return rsp.errors < req.errors || (rsp.errors == req.errors && rsp.warnings < req.warnings);
+}
+
 QString describe(const Score &s)
 {
     if (s.errors == 0 && s.warnings == 0)
@@ -154,6 +183,35 @@ int functionCodeOf(const Dissection &d)
 {
     const int f = d.fields.indexOf("modbus.function_code");
     return f >= 0 && d.fields.at(f).length > 0 ? int(d.fields.at(f).value) : -1;
+}
+
+// The direction's reason, written when it is read: the frame read both ways (no matching request:
+// with one the direction is not detected), the first problem of each quoted.
+QString directionReasonText(const QByteArray &frame, int framing, int)
+{
+    Dissection asRequest;
+    asRequest.framing = Framing(framing);
+    asRequest.direction = Direction::Request;
+    asRequest.fields.reset(frame);
+    runFraming(asRequest, {});
+    const int code = functionCodeOf(asRequest);
+    if (code >= 0x80)
+        return QStringLiteral("function code %1 has bit 7 set: an exception, which only a response carries").arg(hexByte(quint64(code)));
+    Dissection asResponse;
+    asResponse.framing = Framing(framing);
+    asResponse.direction = Direction::Response;
+    asResponse.fields.reset(frame);
+    runFraming(asResponse, {});
+    const Score req = score(asRequest.fields);
+    const Score rsp = score(asResponse.fields);
+    const QString both = QStringLiteral("as a request: %1; as a response: %2").arg(describe(req), describe(rsp));
+    if (responseFitsBetter(req, rsp))
+        return QStringLiteral("read as a response, which fits better: ") + both;
+    if (req.errors == rsp.errors && req.warnings == rsp.warnings)
+        return QStringLiteral("request and response read the same way (%1); shown as a request, "
+                              "use --direction response to read it as the answer")
+            .arg(describe(req));
+    return QStringLiteral("read as a request, which fits better: ") + both;
 }
 
 } // namespace
@@ -191,44 +249,37 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
         runFraming(out, request);
         return;
     }
-    // Reused per thread: auto-detection dissects twice, and the second tree keeps its capacity.
+    // Read it as a request first. A reading without errors or warnings cannot be bettered (a tie
+    // is shown as a request), so unless it is an exception the response reading is not needed to
+    // choose; it is made again only if the reason is read.
+    out.direction = Direction::Request;
+    out.fields.reset(frame);
+    runFraming(out, request);
+    out.directionReason = DetectionReason::deferred(directionReasonText, frame, int(out.framing));
+    const int code = functionCodeOf(out);
+    if (code < 0x80 && out.fields.worstSeverity() < Severity::Warning)
+        return;
+
+    // Reused per thread: the second reading's tree keeps its capacity, and the trees are swapped
+    // rather than copied.
     thread_local Dissection asResponse;
-    asResponse.framingReason.clear();
-    asResponse.directionReason.clear();
     asResponse.note.clear();
     asResponse.framing = out.framing;
     asResponse.direction = Direction::Response;
     asResponse.fields.reset(frame);
     runFraming(asResponse, request);
-
-    out.direction = Direction::Request;
-    out.fields.reset(frame);
-    runFraming(out, request);
-
-    const int code = functionCodeOf(out);
     if (code >= 0x80) {
-        out = asResponse;
-        out.directionReason = QStringLiteral("function code %1 has bit 7 set: an exception, which only a response carries")
-                                  .arg(hexByte(quint64(code)));
+        // Only a response carries an exception code. The reading replaces the whole result,
+        // the framing's reason included, as it always has.
+        std::swap(out.fields, asResponse.fields);
+        out.direction = Direction::Response;
+        out.note = asResponse.note;
+        out.framingReason.clear();
         return;
     }
-    const Score req = score(out.fields);
-    const Score rsp = score(asResponse.fields);
-    const bool responseBetter = rsp.errors < req.errors || (rsp.errors == req.errors && rsp.warnings < req.warnings);
-    const QString both = QStringLiteral("as a request: %1; as a response: %2").arg(describe(req), describe(rsp));
-    if (responseBetter) {
-        const QString reasonFraming = out.framingReason;
-        const QString note = out.note;
-        out = asResponse;
-        out.framingReason = reasonFraming;
-        out.note = note;
-        out.directionReason = QStringLiteral("read as a response, which fits better: ") + both;
-    } else if (req.errors == rsp.errors && req.warnings == rsp.warnings) {
-        out.directionReason = QStringLiteral("request and response read the same way (%1); shown as a request, "
-                                             "use --direction response to read it as the answer")
-                                  .arg(describe(req));
-    } else {
-        out.directionReason = QStringLiteral("read as a request, which fits better: ") + both;
+    if (responseFitsBetter(count(out.fields), count(asResponse.fields))) {
+        std::swap(out.fields, asResponse.fields);
+        out.direction = Direction::Response;
     }
 }
 
