@@ -110,18 +110,20 @@ QString framingReasonText(const QByteArray &b, int rule, int mbapLength)
 
 // Which framing do the bytes carry? Each rule says why, so the user can judge it. Structural
 // checks only: the ':' start, one CRC over the frame, the MBAP header's fields.
-Framing detectFraming(const QByteArray &b, DetectionReason &reason)
+Framing detectFraming(const QByteArray &b, DetectionReason &reason, bool &crcValid)
 {
     const auto decide = [&](Framing framing, FramingRule rule, int mbapLength = 0) {
         reason = DetectionReason::deferred(framingReasonText, b, int(rule), mbapLength);
         return framing;
     };
+    crcValid = false;
     if (b.startsWith(':'))
         return decide(Framing::Ascii, FramingRule::AsciiStart);
     const bool mbapHeader = b.size() >= 8 && b.at(2) == 0 && b.at(3) == 0;
     const int mbapLength = b.size() >= 6 ? (quint8(b.at(4)) << 8) | quint8(b.at(5)) : -1;
     const bool mbapExact = mbapHeader && mbapLength == b.size() - 6;
     const bool crc = rtuCrcValid(b);
+    crcValid = crc;
     if (crc && !mbapExact)
         return decide(Framing::Rtu, FramingRule::Crc);
     if (mbapExact && !crc)
@@ -229,8 +231,12 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
     out.directionReason.clear();
     out.note.clear();
     out.framing = options.framing;
-    if (out.framing == Framing::Auto)
-        out.framing = detectFraming(frame, out.framingReason);
+    bool crcKnown = false;
+    bool crcValid = false;
+    if (out.framing == Framing::Auto) {
+        out.framing = detectFraming(frame, out.framingReason, crcValid);
+        crcKnown = out.framing == Framing::Rtu;
+    }
 
     const adu::RequestInfo request = adu::requestInfo(options.request, out.framing);
 
@@ -249,36 +255,59 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
         runFraming(out, request);
         return;
     }
-    // Read it as a request first. A reading without errors or warnings cannot be bettered (a tie
-    // is shown as a request), so unless it is an exception the response reading is not needed to
-    // choose; it is made again only if the reason is read.
-    out.direction = Direction::Request;
-    out.fields.reset(frame);
-    runFraming(out, request);
     out.directionReason = DetectionReason::deferred(directionReasonText, frame, int(out.framing));
+    const auto readAs = [&frame, &request](Dissection &d, Direction direction) {
+        d.direction = direction;
+        d.fields.reset(frame);
+        runFraming(d, request);
+    };
+    // Reused per thread: the second reading's tree keeps its capacity, and the trees are swapped
+    // rather than copied.
+    thread_local Dissection other;
+    other.note.clear();
+    other.framing = out.framing;
+
+    // An RTU read request (01-04) is 8 bytes: read as a request, a longer frame whose CRC is valid
+    // has bytes after its 5-byte PDU, an error whatever else it holds (the PDU's trailing bytes,
+    // or the RTU layer's when a valid CRC ends the request early). So when it reads as a response
+    // without errors or warnings, that reading wins without the request reading (a read response
+    // with its register values, the common large frame).
+    const qsizetype n = frame.size();
+    if (out.framing == Framing::Rtu && n > 8 && quint8(frame.at(1)) >= 0x01 && quint8(frame.at(1)) <= 0x04
+        && (crcKnown ? crcValid : rtuCrcValid(frame))) {
+        readAs(out, Direction::Response);
+        if (out.fields.worstSeverity() < Severity::Warning)
+            return;
+        std::swap(out.fields, other.fields);
+        other.direction = Direction::Response;
+        other.note = out.note;
+        readAs(out, Direction::Request);
+        if (responseFitsBetter(count(out.fields), count(other.fields))) {
+            std::swap(out.fields, other.fields);
+            out.direction = Direction::Response;
+        }
+        return;
+    }
+
+    // Otherwise read it as a request first. A reading without errors or warnings cannot be
+    // bettered (a tie is shown as a request), so unless it is an exception the response reading
+    // is not needed to choose; it is made again only if the reason is read.
+    readAs(out, Direction::Request);
     const int code = functionCodeOf(out);
     if (code < 0x80 && out.fields.worstSeverity() < Severity::Warning)
         return;
-
-    // Reused per thread: the second reading's tree keeps its capacity, and the trees are swapped
-    // rather than copied.
-    thread_local Dissection asResponse;
-    asResponse.note.clear();
-    asResponse.framing = out.framing;
-    asResponse.direction = Direction::Response;
-    asResponse.fields.reset(frame);
-    runFraming(asResponse, request);
+    readAs(other, Direction::Response);
     if (code >= 0x80) {
         // Only a response carries an exception code. The reading replaces the whole result,
         // the framing's reason included, as it always has.
-        std::swap(out.fields, asResponse.fields);
+        std::swap(out.fields, other.fields);
         out.direction = Direction::Response;
-        out.note = asResponse.note;
+        out.note = other.note;
         out.framingReason.clear();
         return;
     }
-    if (responseFitsBetter(count(out.fields), count(asResponse.fields))) {
-        std::swap(out.fields, asResponse.fields);
+    if (responseFitsBetter(count(out.fields), count(other.fields))) {
+        std::swap(out.fields, other.fields);
         out.direction = Direction::Response;
     }
 }
