@@ -63,11 +63,11 @@ void checkBroadcastRead(Dissection &out)
     out.fields.flag(unit, Severity::Error, BroadcastRule::readProblem(quint8(b.at(1))));
 }
 
-void runFraming(Dissection &out, const adu::RequestInfo &request)
+void runFraming(Dissection &out, const adu::RequestInfo &request, int frameCrc = -1)
 {
     const int wireSize = int(out.fields.frame().size());
     switch (out.framing) {
-    case Framing::Rtu: adu::dissectRtu(out, request); break;
+    case Framing::Rtu: adu::dissectRtu(out, request, frameCrc); break;
     case Framing::Ascii: adu::dissectAscii(out, request); break;
     case Framing::Tcp:
     case Framing::Udp: adu::dissectMbap(out, request); break;
@@ -78,12 +78,15 @@ void runFraming(Dissection &out, const adu::RequestInfo &request)
     checkBroadcastRead(out);
 }
 
-bool rtuCrcValid(const QByteArray &b)
+// computed: the CRC of all bytes but the last two, -1 for a frame of fewer than 4 bytes.
+bool rtuCrcValid(const QByteArray &b, int &computed)
 {
+    computed = -1;
     if (b.size() < 4)
         return false;
     const quint16 sent = quint16(quint8(b.at(b.size() - 2)) | (quint8(b.at(b.size() - 1)) << 8));
-    return checksum::crc16Modbus(QByteArrayView(b).first(b.size() - 2)) == sent;
+    computed = checksum::crc16Modbus(QByteArrayView(b).first(b.size() - 2));
+    return computed == sent;
 }
 
 // Which rule of detectFraming decided; the reason's text is written from it when it is read.
@@ -110,19 +113,20 @@ QString framingReasonText(const QByteArray &b, int rule, int mbapLength)
 
 // Which framing do the bytes carry? Each rule says why, so the user can judge it. Structural
 // checks only: the ':' start, one CRC over the frame, the MBAP header's fields.
-Framing detectFraming(const QByteArray &b, DetectionReason &reason, bool &crcValid)
+Framing detectFraming(const QByteArray &b, DetectionReason &reason, bool &crcValid, int &frameCrc)
 {
     const auto decide = [&](Framing framing, FramingRule rule, int mbapLength = 0) {
         reason = DetectionReason::deferred(framingReasonText, b, int(rule), mbapLength);
         return framing;
     };
     crcValid = false;
+    frameCrc = -1;
     if (b.startsWith(':'))
         return decide(Framing::Ascii, FramingRule::AsciiStart);
     const bool mbapHeader = b.size() >= 8 && b.at(2) == 0 && b.at(3) == 0;
     const int mbapLength = b.size() >= 6 ? (quint8(b.at(4)) << 8) | quint8(b.at(5)) : -1;
     const bool mbapExact = mbapHeader && mbapLength == b.size() - 6;
-    const bool crc = rtuCrcValid(b);
+    const bool crc = rtuCrcValid(b, frameCrc);
     crcValid = crc;
     if (crc && !mbapExact)
         return decide(Framing::Rtu, FramingRule::Crc);
@@ -233,8 +237,9 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
     out.framing = options.framing;
     bool crcKnown = false;
     bool crcValid = false;
+    int frameCrc = -1; // computed once, by detection, and handed to the RTU layer
     if (out.framing == Framing::Auto) {
-        out.framing = detectFraming(frame, out.framingReason, crcValid);
+        out.framing = detectFraming(frame, out.framingReason, crcValid, frameCrc);
         crcKnown = out.framing == Framing::Rtu;
     }
 
@@ -243,7 +248,7 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
     if (options.direction != Direction::Auto) {
         out.direction = options.direction;
         out.fields.reset(frame);
-        runFraming(out, request);
+        runFraming(out, request, frameCrc);
         return;
     }
 
@@ -252,14 +257,14 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
         out.direction = Direction::Response;
         out.directionReason = QStringLiteral("a matching request was given, so this is its response");
         out.fields.reset(frame);
-        runFraming(out, request);
+        runFraming(out, request, frameCrc);
         return;
     }
     out.directionReason = DetectionReason::deferred(directionReasonText, frame, int(out.framing));
-    const auto readAs = [&frame, &request](Dissection &d, Direction direction) {
+    const auto readAs = [&frame, &request, &frameCrc](Dissection &d, Direction direction) {
         d.direction = direction;
         d.fields.reset(frame);
-        runFraming(d, request);
+        runFraming(d, request, frameCrc);
     };
     // Reused per thread: the second reading's tree keeps its capacity, and the trees are swapped
     // rather than copied.
@@ -274,7 +279,7 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
     // with its register values, the common large frame).
     const qsizetype n = frame.size();
     if (out.framing == Framing::Rtu && n > 8 && quint8(frame.at(1)) >= 0x01 && quint8(frame.at(1)) <= 0x04
-        && (crcKnown ? crcValid : rtuCrcValid(frame))) {
+        && (crcKnown ? crcValid : rtuCrcValid(frame, frameCrc))) {
         readAs(out, Direction::Response);
         if (out.fields.worstSeverity() < Severity::Warning)
             return;
