@@ -246,7 +246,33 @@ class TestDissectorDetect : public QObject
 
 private slots:
     void golden();
+    void longReadCodeNeverReadsCleanAsRequest();
 };
+
+// The rule detection takes as given when it reads an RTU frame of a read code (01-04) longer
+// than 8 bytes with a valid CRC as a response first: read as a request, such a frame always has
+// an error (issue 32). Held here for any length and content, so that a change to the PDU layer
+// that broke it shows.
+void TestDissectorDetect::longReadCodeNeverReadsCleanAsRequest()
+{
+    std::mt19937 rng(3201);
+    for (int k = 0; k < 4000; ++k) {
+        QByteArray body;
+        body += char(rng() % 256);
+        body += char(1 + k % 4);
+        const int more = 5 + int(rng() % 252); // the frame: 2 + more + 2 > 8 bytes
+        for (int j = 0; j < more; ++j)
+            body += char(rng() & 0xFF);
+        if (k % 5 == 0 && body.size() >= 8) {
+            // A valid CRC right after the 5-byte PDU as well: the RTU layer ends the request there.
+            const QByteArray head = withCrc(body.left(6));
+            body.replace(0, 8, head);
+        }
+        const QByteArray frame = withCrc(body);
+        const Dissection d = Dissector::dissect(frame, {Framing::Rtu, Direction::Request, {}});
+        QVERIFY2(d.fields.worstSeverity() == Severity::Error, qPrintable(DissectionFormat::toTable(d)));
+    }
+}
 
 void TestDissectorDetect::golden()
 {
