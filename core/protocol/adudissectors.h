@@ -19,7 +19,9 @@ struct RequestInfo {
 
 [[nodiscard]] RequestInfo requestInfo(const QByteArray &request, Framing framing);
 
-void dissectRtu(Dissection &out, const RequestInfo &request);
+// frameCrc: the CRC-16/MODBUS of all the frame's bytes but the last two when the caller has
+// computed it already (framing detection does), -1 to have it computed.
+void dissectRtu(Dissection &out, const RequestInfo &request, int frameCrc = -1);
 void dissectMbap(Dissection &out, const RequestInfo &request);
 void dissectAscii(Dissection &out, const RequestInfo &request);
 void dissectBarePdu(Dissection &out, const RequestInfo &request);

@@ -28,7 +28,7 @@ void addUnit(FieldTree &tree, const char *key, int offset, int length, quint8 un
 
 } // namespace
 
-void dissectRtu(Dissection &out, const RequestInfo &request)
+void dissectRtu(Dissection &out, const RequestInfo &request, int frameCrc)
 {
     FieldTree &tree = out.fields;
     const QByteArray &b = tree.frame();
@@ -61,7 +61,8 @@ void dissectRtu(Dissection &out, const RequestInfo &request)
     pdu::dissect(PduContext{tree, -1, 1, crcAt - 1, out.direction, request.pdu});
 
     const quint16 sent = quint16(quint8(b.at(crcAt)) | (quint8(b.at(crcAt + 1)) << 8));
-    const quint16 computed = checksum::crc16Modbus(QByteArrayView(b).first(crcAt));
+    const quint16 computed = crcAt == n - 2 && frameCrc >= 0 ? quint16(frameCrc)
+                                                              : checksum::crc16Modbus(QByteArrayView(b).first(crcAt));
     const bool crcOk = sent == computed;
     const int c = tree.add(-1, "rtu.crc", QT_TRANSLATE_NOOP("mbscope::Field", "CRC"), crcAt, 2, sent, ValueFormat::Hex, crcOk ? QT_TRANSLATE_NOOP("mbscope::Field", "(valid)") : QT_TRANSLATE_NOOP("mbscope::Field", "(wrong)"));
     if (!crcOk) {

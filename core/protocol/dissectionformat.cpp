@@ -103,9 +103,9 @@ QJsonObject DissectionFormat::toJson(const Dissection &d)
     o.insert(QStringLiteral("framing"), framingName(d.framing));
     o.insert(QStringLiteral("direction"), directionName(d.direction));
     if (!d.framingReason.isEmpty())
-        o.insert(QStringLiteral("framing_reason"), d.framingReason);
+        o.insert(QStringLiteral("framing_reason"), d.framingReason.toString());
     if (!d.directionReason.isEmpty())
-        o.insert(QStringLiteral("direction_reason"), d.directionReason);
+        o.insert(QStringLiteral("direction_reason"), d.directionReason.toString());
     if (!d.note.isEmpty())
         o.insert(QStringLiteral("note"), d.note);
     o.insert(QStringLiteral("summary"), d.summary());
@@ -132,9 +132,9 @@ QString DissectionFormat::toTable(const Dissection &d, int maxRawBytes)
     }
     QString out = d.summary() + QLatin1Char('\n');
     if (!d.framingReason.isEmpty())
-        out += QStringLiteral("framing: %1 (%2)\n").arg(framingName(d.framing), d.framingReason);
+        out += QStringLiteral("framing: %1 (%2)\n").arg(framingName(d.framing), d.framingReason.toString());
     if (!d.directionReason.isEmpty())
-        out += QStringLiteral("direction: %1 (%2)\n").arg(directionName(d.direction), d.directionReason);
+        out += QStringLiteral("direction: %1 (%2)\n").arg(directionName(d.direction), d.directionReason.toString());
     if (!d.note.isEmpty())
         out += QStringLiteral("note: ") + d.note + QLatin1Char('\n');
     out += QLatin1Char('\n');

@@ -63,11 +63,11 @@ void checkBroadcastRead(Dissection &out)
     out.fields.flag(unit, Severity::Error, BroadcastRule::readProblem(quint8(b.at(1))));
 }
 
-void runFraming(Dissection &out, const adu::RequestInfo &request)
+void runFraming(Dissection &out, const adu::RequestInfo &request, int frameCrc = -1)
 {
     const int wireSize = int(out.fields.frame().size());
     switch (out.framing) {
-    case Framing::Rtu: adu::dissectRtu(out, request); break;
+    case Framing::Rtu: adu::dissectRtu(out, request, frameCrc); break;
     case Framing::Ascii: adu::dissectAscii(out, request); break;
     case Framing::Tcp:
     case Framing::Udp: adu::dissectMbap(out, request); break;
@@ -78,46 +78,65 @@ void runFraming(Dissection &out, const adu::RequestInfo &request)
     checkBroadcastRead(out);
 }
 
-bool rtuCrcValid(const QByteArray &b)
+// computed: the CRC of all bytes but the last two, -1 for a frame of fewer than 4 bytes.
+bool rtuCrcValid(const QByteArray &b, int &computed)
 {
+    computed = -1;
     if (b.size() < 4)
         return false;
     const quint16 sent = quint16(quint8(b.at(b.size() - 2)) | (quint8(b.at(b.size() - 1)) << 8));
-    return checksum::crc16Modbus(QByteArrayView(b).first(b.size() - 2)) == sent;
+    computed = checksum::crc16Modbus(QByteArrayView(b).first(b.size() - 2));
+    return computed == sent;
 }
 
-// Which framing do the bytes carry? Each rule says why, so the user can judge it.
-Framing detectFraming(const QByteArray &b, QString &reason)
+// Which rule of detectFraming decided; the reason's text is written from it when it is read.
+enum class FramingRule : int { AsciiStart, Crc, Mbap, CrcAndMbap, MbapPlausible, Fallback };
+
+QString framingReasonText(const QByteArray &b, int rule, int mbapLength)
 {
-    if (b.startsWith(':')) {
-        reason = QStringLiteral("starts with ':' (0x3A), the ASCII frame start");
-        return Framing::Ascii;
+    switch (FramingRule(rule)) {
+    case FramingRule::AsciiStart: return QStringLiteral("starts with ':' (0x3A), the ASCII frame start");
+    case FramingRule::Crc: return QStringLiteral("the last two bytes are a valid CRC-16/MODBUS of the bytes before them");
+    case FramingRule::Mbap:
+        return QStringLiteral("bytes 2-3 are protocol id 0 and the MBAP length field (%1) matches the bytes after it").arg(mbapLength);
+    case FramingRule::CrcAndMbap:
+        return QStringLiteral("the bytes fit both a Modbus TCP header and an RTU CRC; read as RTU because a valid CRC is the "
+                              "stronger sign (use --framing tcp to read it as Modbus TCP)");
+    case FramingRule::MbapPlausible:
+        return QStringLiteral("bytes 2-3 are protocol id 0 and the length field (%1) is plausible, but it does not match the "
+                              "%2 bytes after it and no CRC is valid; read as Modbus TCP")
+            .arg(mbapLength).arg(b.size() - 6);
+    case FramingRule::Fallback: break;
     }
-    const bool crc = rtuCrcValid(b);
+    return QStringLiteral("no valid CRC, no MBAP header and no ':' start: read as RTU, whose CRC check then fails");
+}
+
+// Which framing do the bytes carry? Each rule says why, so the user can judge it. Structural
+// checks only: the ':' start, one CRC over the frame, the MBAP header's fields.
+Framing detectFraming(const QByteArray &b, DetectionReason &reason, bool &crcValid, int &frameCrc)
+{
+    const auto decide = [&](Framing framing, FramingRule rule, int mbapLength = 0) {
+        reason = DetectionReason::deferred(framingReasonText, b, int(rule), mbapLength);
+        return framing;
+    };
+    crcValid = false;
+    frameCrc = -1;
+    if (b.startsWith(':'))
+        return decide(Framing::Ascii, FramingRule::AsciiStart);
     const bool mbapHeader = b.size() >= 8 && b.at(2) == 0 && b.at(3) == 0;
     const int mbapLength = b.size() >= 6 ? (quint8(b.at(4)) << 8) | quint8(b.at(5)) : -1;
     const bool mbapExact = mbapHeader && mbapLength == b.size() - 6;
-    if (crc && !mbapExact) {
-        reason = QStringLiteral("the last two bytes are a valid CRC-16/MODBUS of the bytes before them");
-        return Framing::Rtu;
-    }
-    if (mbapExact && !crc) {
-        reason = QStringLiteral("bytes 2-3 are protocol id 0 and the MBAP length field (%1) matches the bytes after it").arg(mbapLength);
-        return Framing::Tcp;
-    }
-    if (crc && mbapExact) {
-        reason = QStringLiteral("the bytes fit both a Modbus TCP header and an RTU CRC; read as RTU because a valid CRC is the "
-                                "stronger sign (use --framing tcp to read it as Modbus TCP)");
-        return Framing::Rtu;
-    }
-    if (mbapHeader && mbapLength >= 2 && mbapLength <= 254) {
-        reason = QStringLiteral("bytes 2-3 are protocol id 0 and the length field (%1) is plausible, but it does not match the "
-                                "%2 bytes after it and no CRC is valid; read as Modbus TCP")
-                     .arg(mbapLength).arg(b.size() - 6);
-        return Framing::Tcp;
-    }
-    reason = QStringLiteral("no valid CRC, no MBAP header and no ':' start: read as RTU, whose CRC check then fails");
-    return Framing::Rtu;
+    const bool crc = rtuCrcValid(b, frameCrc);
+    crcValid = crc;
+    if (crc && !mbapExact)
+        return decide(Framing::Rtu, FramingRule::Crc);
+    if (mbapExact && !crc)
+        return decide(Framing::Tcp, FramingRule::Mbap, mbapLength);
+    if (crc && mbapExact)
+        return decide(Framing::Rtu, FramingRule::CrcAndMbap);
+    if (mbapHeader && mbapLength >= 2 && mbapLength <= 254)
+        return decide(Framing::Tcp, FramingRule::MbapPlausible, mbapLength);
+    return decide(Framing::Rtu, FramingRule::Fallback);
 }
 
 struct Score {
@@ -140,6 +159,22 @@ Score score(const FieldTree &tree)
     return s;
 }
 
+// The counts alone, for choosing: the first problem's text is only wanted for the reason.
+Score count(const FieldTree &tree)
+{
+    Score s;
+    for (const Field &f : tree.fields()) {
+        s.errors += f.severity == Severity::Error ? 1 : 0;
+        s.warnings += f.severity == Severity::Warning ? 1 : 0;
+    }
+    return s;
+}
+
+bool responseFitsBetter(const Score &req, const Score &rsp)
+{
+    return rsp.errors < req.errors || (rsp.errors == req.errors && rsp.warnings < req.warnings);
+}
+
 QString describe(const Score &s)
 {
     if (s.errors == 0 && s.warnings == 0)
@@ -154,6 +189,35 @@ int functionCodeOf(const Dissection &d)
 {
     const int f = d.fields.indexOf("modbus.function_code");
     return f >= 0 && d.fields.at(f).length > 0 ? int(d.fields.at(f).value) : -1;
+}
+
+// The direction's reason, written when it is read: the frame read both ways (no matching request:
+// with one the direction is not detected), the first problem of each quoted.
+QString directionReasonText(const QByteArray &frame, int framing, int)
+{
+    Dissection asRequest;
+    asRequest.framing = Framing(framing);
+    asRequest.direction = Direction::Request;
+    asRequest.fields.reset(frame);
+    runFraming(asRequest, {});
+    const int code = functionCodeOf(asRequest);
+    if (code >= 0x80)
+        return QStringLiteral("function code %1 has bit 7 set: an exception, which only a response carries").arg(hexByte(quint64(code)));
+    Dissection asResponse;
+    asResponse.framing = Framing(framing);
+    asResponse.direction = Direction::Response;
+    asResponse.fields.reset(frame);
+    runFraming(asResponse, {});
+    const Score req = score(asRequest.fields);
+    const Score rsp = score(asResponse.fields);
+    const QString both = QStringLiteral("as a request: %1; as a response: %2").arg(describe(req), describe(rsp));
+    if (responseFitsBetter(req, rsp))
+        return QStringLiteral("read as a response, which fits better: ") + both;
+    if (req.errors == rsp.errors && req.warnings == rsp.warnings)
+        return QStringLiteral("request and response read the same way (%1); shown as a request, "
+                              "use --direction response to read it as the answer")
+            .arg(describe(req));
+    return QStringLiteral("read as a request, which fits better: ") + both;
 }
 
 } // namespace
@@ -171,15 +235,20 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
     out.directionReason.clear();
     out.note.clear();
     out.framing = options.framing;
-    if (out.framing == Framing::Auto)
-        out.framing = detectFraming(frame, out.framingReason);
+    bool crcKnown = false;
+    bool crcValid = false;
+    int frameCrc = -1; // computed once, by detection, and handed to the RTU layer
+    if (out.framing == Framing::Auto) {
+        out.framing = detectFraming(frame, out.framingReason, crcValid, frameCrc);
+        crcKnown = out.framing == Framing::Rtu;
+    }
 
     const adu::RequestInfo request = adu::requestInfo(options.request, out.framing);
 
     if (options.direction != Direction::Auto) {
         out.direction = options.direction;
         out.fields.reset(frame);
-        runFraming(out, request);
+        runFraming(out, request, frameCrc);
         return;
     }
 
@@ -188,47 +257,63 @@ void Dissector::dissect(const QByteArray &frame, const DissectOptions &options, 
         out.direction = Direction::Response;
         out.directionReason = QStringLiteral("a matching request was given, so this is its response");
         out.fields.reset(frame);
-        runFraming(out, request);
+        runFraming(out, request, frameCrc);
         return;
     }
-    // Reused per thread: auto-detection dissects twice, and the second tree keeps its capacity.
-    thread_local Dissection asResponse;
-    asResponse.framingReason.clear();
-    asResponse.directionReason.clear();
-    asResponse.note.clear();
-    asResponse.framing = out.framing;
-    asResponse.direction = Direction::Response;
-    asResponse.fields.reset(frame);
-    runFraming(asResponse, request);
+    out.directionReason = DetectionReason::deferred(directionReasonText, frame, int(out.framing));
+    const auto readAs = [&frame, &request, &frameCrc](Dissection &d, Direction direction) {
+        d.direction = direction;
+        d.fields.reset(frame);
+        runFraming(d, request, frameCrc);
+    };
+    // Reused per thread: the second reading's tree keeps its capacity, and the trees are swapped
+    // rather than copied.
+    thread_local Dissection other;
+    other.note.clear();
+    other.framing = out.framing;
 
-    out.direction = Direction::Request;
-    out.fields.reset(frame);
-    runFraming(out, request);
+    // An RTU read request (01-04) is 8 bytes: read as a request, a longer frame whose CRC is valid
+    // has bytes after its 5-byte PDU, an error whatever else it holds (the PDU's trailing bytes,
+    // or the RTU layer's when a valid CRC ends the request early). So when it reads as a response
+    // without errors or warnings, that reading wins without the request reading (a read response
+    // with its register values, the common large frame).
+    const qsizetype n = frame.size();
+    if (out.framing == Framing::Rtu && n > 8 && quint8(frame.at(1)) >= 0x01 && quint8(frame.at(1)) <= 0x04
+        && (crcKnown ? crcValid : rtuCrcValid(frame, frameCrc))) {
+        readAs(out, Direction::Response);
+        if (out.fields.worstSeverity() < Severity::Warning)
+            return;
+        std::swap(out.fields, other.fields);
+        other.direction = Direction::Response;
+        other.note = out.note;
+        readAs(out, Direction::Request);
+        if (responseFitsBetter(count(out.fields), count(other.fields))) {
+            std::swap(out.fields, other.fields);
+            out.direction = Direction::Response;
+        }
+        return;
+    }
 
+    // Otherwise read it as a request first. A reading without errors or warnings cannot be
+    // bettered (a tie is shown as a request), so unless it is an exception the response reading
+    // is not needed to choose; it is made again only if the reason is read.
+    readAs(out, Direction::Request);
     const int code = functionCodeOf(out);
+    if (code < 0x80 && out.fields.worstSeverity() < Severity::Warning)
+        return;
+    readAs(other, Direction::Response);
     if (code >= 0x80) {
-        out = asResponse;
-        out.directionReason = QStringLiteral("function code %1 has bit 7 set: an exception, which only a response carries")
-                                  .arg(hexByte(quint64(code)));
+        // Only a response carries an exception code. The reading replaces the whole result,
+        // the framing's reason included, as it always has.
+        std::swap(out.fields, other.fields);
+        out.direction = Direction::Response;
+        out.note = other.note;
+        out.framingReason.clear();
         return;
     }
-    const Score req = score(out.fields);
-    const Score rsp = score(asResponse.fields);
-    const bool responseBetter = rsp.errors < req.errors || (rsp.errors == req.errors && rsp.warnings < req.warnings);
-    const QString both = QStringLiteral("as a request: %1; as a response: %2").arg(describe(req), describe(rsp));
-    if (responseBetter) {
-        const QString reasonFraming = out.framingReason;
-        const QString note = out.note;
-        out = asResponse;
-        out.framingReason = reasonFraming;
-        out.note = note;
-        out.directionReason = QStringLiteral("read as a response, which fits better: ") + both;
-    } else if (req.errors == rsp.errors && req.warnings == rsp.warnings) {
-        out.directionReason = QStringLiteral("request and response read the same way (%1); shown as a request, "
-                                             "use --direction response to read it as the answer")
-                                  .arg(describe(req));
-    } else {
-        out.directionReason = QStringLiteral("read as a request, which fits better: ") + both;
+    if (responseFitsBetter(count(out.fields), count(other.fields))) {
+        std::swap(out.fields, other.fields);
+        out.direction = Direction::Response;
     }
 }
 

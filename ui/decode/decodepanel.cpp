@@ -238,8 +238,8 @@ void DecodePanel::showDissection(const Dissection &dissection)
                worst >= Severity::Warning ? SeverityStyle::textColor(worst) : palette().color(QPalette::WindowText));
     m_summaryLabel->setText(DissectionSummary::text(dissection));
 
-    const QString framingReason = dissection.framingReason.isEmpty() ? tr("as chosen") : dissection.framingReason;
-    const QString directionReason = dissection.directionReason.isEmpty() ? tr("as chosen") : dissection.directionReason;
+    const QString framingReason = dissection.framingReason.isEmpty() ? tr("as chosen") : dissection.framingReason.toString();
+    const QString directionReason = dissection.directionReason.isEmpty() ? tr("as chosen") : dissection.directionReason.toString();
     m_reasonLabel->setText(tr("Framing %1: %2. Direction %3: %4.")
                                .arg(framingTitle(dissection.framing), framingReason,
                                     directionName(dissection.direction), directionReason));
