@@ -44,8 +44,12 @@ summary() {
     printf '%s\n' "${phases[@]}"
     local ms=$(( ($(date +%s%N) - begin) / 1000000 ))
     printf '%-10s %6d.%d s\n' total $((ms / 1000)) $((ms % 1000 / 100))
+    # This run's compilations only (ccache's own totals span every run since they were zeroed).
     if command -v ccache >/dev/null 2>&1; then
-        ccache -s 2>/dev/null | grep -iE '^ *(hits|misses)|cacheable calls' | sed 's/^/ccache: /'
+        local hits misses
+        hits=$(( $(ccache_stat direct_cache_hit) + $(ccache_stat preprocessed_cache_hit) - ccache_hits_before ))
+        misses=$(( $(ccache_stat cache_miss) - ccache_misses_before ))
+        echo "ccache: this run $hits hit(s), $misses miss(es) (compilations served from the cache / compiled)"
     fi
     # CTest's closing lines last, as CTest printed them.
     if [ -s "$ctest_log" ]; then
@@ -54,7 +58,20 @@ summary() {
     fi
 }
 
+# ccache_stat NAME: one counter of `ccache --print-stats` (0 when ccache or the counter is missing).
+ccache_stat() {
+    local v
+    v=$(ccache --print-stats 2>/dev/null | awk -v k="$1" '$1 == k { print $2 }')
+    echo "${v:-0}"
+}
+
 run deps scripts/install-deps.sh --tests || status=1
+ccache_hits_before=0
+ccache_misses_before=0
+if command -v ccache >/dev/null 2>&1; then
+    ccache_hits_before=$(( $(ccache_stat direct_cache_hit) + $(ccache_stat preprocessed_cache_hit) ))
+    ccache_misses_before=$(ccache_stat cache_miss)
+fi
 if [ $status -eq 0 ]; then
     run configure cmake -S . -B "$build" "$@" || status=1
 fi

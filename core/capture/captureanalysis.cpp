@@ -228,7 +228,21 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
         }
         out += QLatin1Char('\n');
     }
-    out += m_overall.summary();
+    // Where a recording's times were taken (README, "analyze"): not where a live poll takes them.
+    QString from;
+    QString to;
+    if (report.kind == ExchangeSourceReport::Kind::Capture) {
+        from = QStringLiteral("the capture time of the packet that completed the request");
+        to = QStringLiteral("that of the packet that completed the answer");
+    } else if (report.kind == ExchangeSourceReport::Kind::Journal) {
+        TrafficMetadata metadata;
+        QString ignored;
+        const bool server = TrafficMetadata::fromJson(report.journal.metadata, &metadata, &ignored)
+                            && metadata.role == TrafficMetadata::Role::Server;
+        from = server ? QStringLiteral("the request's arrival (as the server read it)") : QStringLiteral("the start of the request's write");
+        to = server ? QStringLiteral("the write of the answer's last piece") : QStringLiteral("the read that brought the answer's first byte");
+    }
+    out += m_overall.summary(from, to);
     if (m_unmatched > 0)
         out += padded(QStringLiteral("unmatched")) + QStringLiteral("%1 answer(s) matching no request").arg(m_unmatched)
                + (report.journalDuplicates > 0

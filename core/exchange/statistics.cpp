@@ -197,6 +197,11 @@ QJsonObject Statistics::toJson() const
 
 QString Statistics::summary() const
 {
+    return summary({}, {});
+}
+
+QString Statistics::summary(const QString &latencyFrom, const QString &latencyTo) const
+{
     QStringList lines;
     const auto counter = [&lines](const char *label, quint64 value, const QString &detail = {}) {
         QString line = padded(label) + QString::number(value).rightJustified(8);
@@ -242,7 +247,10 @@ QString Statistics::summary() const
                                 value(double(m_latency.percentileNs(95))), value(double(m_latency.percentileNs(99))),
                                 value(double(m_latency.maxNs())), value(m_latency.stddevNs()))
                            .arg(m_latency.count()));
-        lines.append(padded("latency from") + latencyOrigin() + QStringLiteral(" to the answer's last byte"));
+        if (!latencyFrom.isEmpty())
+            lines.append(padded("latency from") + latencyFrom + QStringLiteral(" to ") + latencyTo);
+        else
+            lines.append(padded("latency from") + latencyOrigin() + QStringLiteral(" to the answer's last byte"));
         if (m_outranLine > 0)
             lines.append(padded("warning") + outranLineWarning());
     }

@@ -86,6 +86,10 @@ public:
     //   ...
     //   latency ms    min 5.663  mean 7.249  median 7.100  p90 9.001 ... max 13.771  stddev 1.234
     [[nodiscard]] QString summary() const;
+    // The same for a recording, whose times were taken elsewhere than a live run's: the "latency
+    // from" line names these two points ("the capture time of the request's packet", "...") in
+    // place of the live ones (an engine's journal keeps an answer's first byte, not its last).
+    [[nodiscard]] QString summary(const QString &latencyFrom, const QString &latencyTo) const;
 
 private:
     HistogramSpec m_spec;

@@ -888,6 +888,17 @@ void TestCliCapture::recordedEndpoints()
         const QJsonObject captured = again.json().value(QStringLiteral("conversations")).toArray().at(0).toObject();
         QCOMPARE(captured.value(QStringLiteral("client")).toString(), client);
         QCOMPARE(captured.value(QStringLiteral("server")).toString(), server);
+        // The latency says between which points a recording took its times (it said "to the
+        // answer's last byte" for the engine's journal, which keeps the answer's first byte).
+        const CliResult text = runMbscope({QStringLiteral("analyze"), journal});
+        const QString points = journal == polled
+                                   ? QStringLiteral("latency from  the start of the request's write to the read that brought the answer's first byte\n")
+                                   : QStringLiteral("latency from  the request's arrival (as the server read it) to the write of the answer's last piece\n");
+        QVERIFY2(text.outText().contains(points), text.describe().constData());
+        const CliResult capture = runMbscope({QStringLiteral("analyze"), pcap, QStringLiteral("--port"), server.section(QLatin1Char(':'), 1)});
+        QVERIFY2(capture.outText().contains(QStringLiteral("latency from  the capture time of the packet that completed the request to that of "
+                                                           "the packet that completed the answer\n")),
+                 capture.describe().constData());
     }
 }
 

@@ -170,11 +170,14 @@ int main(int argc, char *argv[])
     printRun("mbscope analyze FILE --json", ours, transactions);
     QFile result(json);
     const QJsonObject analysis = result.open(QIODevice::ReadOnly) ? QJsonDocument::fromJson(result.readAll()).object() : QJsonObject();
-    const qint64 counted = qint64(analysis.value(QStringLiteral("count")).toDouble());
-    std::printf("%-44s %lld transactions (%lld ok, %lld exceptions, %lld timeouts), p50 %.1f us, p99 %.1f us\n", "  mbscope found",
-                static_cast<long long>(counted), static_cast<long long>(analysis.value(QStringLiteral("ok")).toDouble()),
+    // A request the capture ends within the timeout of is unanswered at its end, in no figure.
+    const qint64 unanswered =
+        qint64(analysis.value(QStringLiteral("source")).toObject().value(QStringLiteral("unanswered_at_end")).toDouble());
+    const qint64 counted = qint64(analysis.value(QStringLiteral("count")).toDouble()) + unanswered;
+    std::printf("%-44s %lld transactions (%lld ok, %lld exceptions, %lld timeouts, %lld unanswered at the end), p50 %.1f us, p99 %.1f us\n",
+                "  mbscope found", static_cast<long long>(counted), static_cast<long long>(analysis.value(QStringLiteral("ok")).toDouble()),
                 static_cast<long long>(analysis.value(QStringLiteral("exceptions")).toDouble()),
-                static_cast<long long>(analysis.value(QStringLiteral("timeouts")).toDouble()),
+                static_cast<long long>(analysis.value(QStringLiteral("timeouts")).toDouble()), static_cast<long long>(unanswered),
                 analysis.value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("median")).toDouble(),
                 analysis.value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("p99")).toDouble());
 
