@@ -45,7 +45,7 @@ int runAnalyze(const QStringList &arguments)
                                            QStringLiteral("Draw latency over time into a file: .png, .svg or .pdf."),
                                            QStringLiteral("file"));
     const QCommandLineOption jsonOpt(QStringLiteral("json"), QStringLiteral("Print the statistics as JSON (poll --json's shape, "
-                                                                            "with \"source\", \"conversations\" and \"functions\")."));
+                                                                            "with \"source\", \"conversations\", \"functions\" and \"units\")."));
     const QCommandLineOption forceOpt = OutputPath::forceOption();
     parser.addOptions({histogramOpt, timeSeriesOpt, jsonOpt, forceOpt});
     parser.addPositionalArgument(QStringLiteral("capture"), QStringLiteral("A .pcap, .pcapng or traffic journal file, or a session document with a capture."));

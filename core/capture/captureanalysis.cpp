@@ -18,11 +18,6 @@ QString padded(const QString &label)
     return label.leftJustified(14);
 }
 
-QString milliseconds(qint64 ns)
-{
-    return QString::number(double(ns) / 1e6, 'f', 3);
-}
-
 } // namespace
 
 CaptureAnalysis::CaptureAnalysis(const HistogramSpec &histogram) : m_spec(histogram), m_overall(histogram) {}
@@ -57,16 +52,17 @@ void CaptureAnalysis::add(const CaptureExchange &exchange)
         else if (t.status != TransactionStatus::Broadcast)
             ++c.failed;
     }
-    // The function code alone (ExchangeFields would also format the values: not needed here).
+    // The function code and the unit id alone (ExchangeFields would also format the values: not needed here).
     FrameKeys keys = ResponseMatcher::keysOf(t.request, exchange.framing);
     if (!keys.valid)
         keys = ResponseMatcher::keysOf(t.response, exchange.framing);
     if (!keys.valid)
         return;
-    auto &slot = m_byFunction[quint8(keys.functionCode & 0x7f)];
-    if (!slot)
-        slot = std::make_unique<Statistics>(m_spec);
-    slot->add(t);
+    for (auto *slot : {&m_byFunction[quint8(keys.functionCode & 0x7f)], &m_byUnit[keys.unit]}) {
+        if (!*slot)
+            *slot = std::make_unique<Statistics>(m_spec);
+        (*slot)->add(t);
+    }
 }
 
 QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
@@ -150,6 +146,13 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
         functions.append(f);
     }
     o.insert(QStringLiteral("functions"), functions);
+    QJsonArray units;
+    for (const auto &[id, statistics] : m_byUnit) {
+        QJsonObject u = statistics->toJson();
+        u.insert(QStringLiteral("unit"), int(id));
+        units.append(u);
+    }
+    o.insert(QStringLiteral("units"), units);
     o.insert(QStringLiteral("problems"), QJsonArray::fromStringList(report.problems));
     o.insert(QStringLiteral("problem_count"), double(report.problemCount));
     return o;
@@ -199,32 +202,52 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
     if (report.conversations.empty())
         out += padded(QStringLiteral("conversation")) + QStringLiteral("none: no traffic on the Modbus ports (--port, --rtu-port)\n");
 
-    if (!m_byFunction.empty()) {
-        QList<QStringList> rows;
-        rows.append({QStringLiteral("FUNCTION"), QStringLiteral("COUNT"), QStringLiteral("OK"), QStringLiteral("EXCEPTIONS"),
-                     QStringLiteral("TIMEOUTS"), QStringLiteral("OTHER"), QStringLiteral("MEDIAN ms"), QStringLiteral("P99 ms"),
-                     QStringLiteral("MAX ms")});
-        for (const auto &[code, s] : m_byFunction) {
-            const LatencySamples &l = s->latency();
+    if (!m_byFunction.empty() || !m_byUnit.empty()) {
+        // Both tables in one unit, the one the overall latency line below chooses, and with the same
+        // column widths, so a column reads down through both. "-": nothing answered, no latency.
+        const LatencyUnit unit = LatencyUnit::forTypical(m_overall.latency().medianNs());
+        const auto row = [&unit](const QString &label, const Statistics &s) {
+            const LatencySamples &l = s.latency();
             const bool any = !l.isEmpty();
-            rows.append({QStringLiteral("0x%1 %2").arg(hexNumber(code, 2)).arg(QString::fromLatin1(functionName(code))),
-                         QString::number(s->count()), QString::number(s->ok()), QString::number(s->exceptions()),
-                         QString::number(s->timeouts()), QString::number(s->failed() - s->exceptions() - s->timeouts()),
-                         any ? milliseconds(l.medianNs()) : QStringLiteral("-"),
-                         any ? milliseconds(l.percentileNs(99)) : QStringLiteral("-"),
-                         any ? milliseconds(l.maxNs()) : QStringLiteral("-")});
+            const auto figure = [&](double ns) { return any ? unit.format(ns) : QStringLiteral("-"); };
+            return QStringList{label, QString::number(s.count()), QString::number(s.ok()), QString::number(s.exceptions()),
+                               QString::number(s.timeouts()), QString::number(s.failed() - s.exceptions() - s.timeouts()),
+                               figure(double(l.minNs())), figure(l.meanNs()), figure(double(l.medianNs())),
+                               figure(double(l.percentileNs(95))), figure(double(l.percentileNs(99))), figure(double(l.maxNs()))};
+        };
+        const auto header = [](const QString &first) {
+            return QStringList{first, QStringLiteral("COUNT"), QStringLiteral("OK"), QStringLiteral("EXCEPTIONS"),
+                               QStringLiteral("TIMEOUTS"), QStringLiteral("OTHER"), QStringLiteral("MIN"), QStringLiteral("MEAN"),
+                               QStringLiteral("MEDIAN"), QStringLiteral("P95"), QStringLiteral("P99"), QStringLiteral("MAX")};
+        };
+        constexpr qsizetype firstLatencyColumn = 6;
+        QList<QList<QStringList>> tables(2);
+        tables[0].append(header(QStringLiteral("FUNCTION")));
+        for (const auto &[code, s] : m_byFunction)
+            tables[0].append(row(QStringLiteral("0x%1 %2").arg(hexNumber(code, 2)).arg(QString::fromLatin1(functionName(code))), *s));
+        tables[1].append(header(QStringLiteral("UNIT")));
+        for (const auto &[id, s] : m_byUnit)
+            tables[1].append(row(QString::number(id), *s));
+        QList<int> widths(tables[0].constFirst().size(), 0);
+        for (const QList<QStringList> &table : tables) {
+            for (const QStringList &cells : table) {
+                for (qsizetype i = 0; i < cells.size(); ++i)
+                    widths[i] = std::max(widths.at(i), int(cells.at(i).size()));
+            }
         }
-        QList<int> widths(rows.constFirst().size(), 0);
-        for (const QStringList &row : rows) {
-            for (qsizetype i = 0; i < row.size(); ++i)
-                widths[i] = std::max(widths.at(i), int(row.at(i).size()));
-        }
-        out += QLatin1Char('\n');
-        for (const QStringList &row : rows) {
-            QString line = row.at(0).leftJustified(widths.at(0));
-            for (qsizetype i = 1; i < row.size(); ++i)
-                line += QStringLiteral("  ") + row.at(i).rightJustified(widths.at(i));
-            out += line + QLatin1Char('\n');
+        // Above the latency columns, once, their unit.
+        int latencyStart = 0;
+        for (qsizetype i = 0; i < firstLatencyColumn; ++i)
+            latencyStart += widths.at(i) + 2;
+        for (const QList<QStringList> &table : tables) {
+            out += QLatin1Char('\n') + QString(latencyStart, QLatin1Char(' ')) + QStringLiteral("LATENCY ")
+                   + QString::fromUtf8(unit.name) + QLatin1Char('\n');
+            for (const QStringList &cells : table) {
+                QString line = cells.at(0).leftJustified(widths.at(0));
+                for (qsizetype i = 1; i < cells.size(); ++i)
+                    line += QStringLiteral("  ") + cells.at(i).rightJustified(widths.at(i));
+                out += line + QLatin1Char('\n');
+            }
         }
         out += QLatin1Char('\n');
     }

@@ -14,7 +14,8 @@
 namespace mbscope {
 
 // The figures of a capture or journal read offline: the engine's Statistics over every exchange
-// (the same counts, percentiles and histogram a poll prints), and the same per function code;
+// (the same counts, percentiles and histogram a poll prints), and the same per function code and
+// per unit id;
 // per conversation the transactions, answers and failures; the time the traffic spans.
 // Answers that match no request are counted apart, as the engine counts unsolicited frames.
 class CaptureAnalysis
@@ -41,10 +42,12 @@ public:
     // "span_ms", "conversations": [{"client", "server", "transport", "framing", "requests",
     // "responses", "transactions", "ok", "failed", "unmatched_responses", and for TCP
     // "request_gaps", "request_bytes_lost", "response_gaps", "response_bytes_lost",
-    // "joined_mid_stream"}], "functions": [{"function", "name",
-    // ...Statistics::toJson's keys}], "problems": [...], "problem_count".
+    // "joined_mid_stream"}], "functions": [{"function", "name", ...Statistics::toJson's keys}],
+    // "units": [{"unit", ...Statistics::toJson's keys}] (the request's unit id, ascending),
+    // "problems": [...], "problem_count".
     [[nodiscard]] QJsonObject toJson(const ExchangeSourceReport &report) const;
-    // For a terminal: the source, its conversations, a table per function code, the
+    // For a terminal: the source, its conversations, a table per function code and one per unit
+    // id (counts; min, mean, median, p95, p99, max latency in one unit, "-" without answers), the
     // statistics as poll prints them, then the problems found.
     [[nodiscard]] QString summary(const ExchangeSourceReport &report) const;
 
@@ -59,6 +62,7 @@ private:
     HistogramSpec m_spec;
     Statistics m_overall;
     std::map<quint8, std::unique_ptr<Statistics>> m_byFunction;
+    std::map<quint8, std::unique_ptr<Statistics>> m_byUnit; // the request's unit id (RTU/ASCII address, MBAP unit id)
     std::vector<ConversationCounts> m_conversations;
     quint64 m_unmatched = 0;
     quint64 m_unansweredAtEnd = 0;

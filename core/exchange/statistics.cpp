@@ -14,23 +14,6 @@ QJsonValue microseconds(double ns)
     return ns / 1000.0;
 }
 
-// The unit latencies read best in: the median decides, so a run around 7 ms with one 300 ms
-// outlier still reads in ms.
-struct TimeUnit {
-    const char *name;
-    double ns;
-    int decimals;
-};
-
-TimeUnit unitFor(qint64 typicalNs)
-{
-    if (typicalNs < 1000000)
-        return {"µs", 1e3, 1};
-    if (typicalNs < 10000000000LL)
-        return {"ms", 1e6, 3};
-    return {"s", 1e9, 3};
-}
-
 QString hexCode(int code)
 {
     return QLatin1String("0x") + QString::number(code, 16).toUpper().rightJustified(2, QLatin1Char('0'));
@@ -42,6 +25,20 @@ QString padded(const char *label)
 }
 
 } // namespace
+
+LatencyUnit LatencyUnit::forTypical(qint64 typicalNs)
+{
+    if (typicalNs < 1000000)
+        return {"µs", 1e3, 1};
+    if (typicalNs < 10000000000LL)
+        return {"ms", 1e6, 3};
+    return {"s", 1e9, 3};
+}
+
+QString LatencyUnit::format(double valueNs) const
+{
+    return QString::number(valueNs / ns, 'f', decimals);
+}
 
 Statistics::Statistics(const HistogramSpec &histogram)
     : m_spec(histogram), m_histogram(Histogram::fromSpec(histogram))
@@ -238,8 +235,8 @@ QString Statistics::summary(const QString &latencyFrom, const QString &latencyTo
     if (m_latency.isEmpty()) {
         lines.append(padded("latency") + QStringLiteral("no answers"));
     } else {
-        const TimeUnit unit = unitFor(m_latency.medianNs());
-        const auto value = [&unit](double ns) { return QString::number(ns / unit.ns, 'f', unit.decimals); };
+        const LatencyUnit unit = LatencyUnit::forTypical(m_latency.medianNs());
+        const auto value = [&unit](double ns) { return unit.format(ns); };
         lines.append(padded((QByteArray("latency ") + unit.name).constData())
                      + QStringLiteral("min %1  mean %2  median %3  p90 %4  p95 %5  p99 %6  max %7  stddev %8  (%9 answers)")
                            .arg(value(double(m_latency.minNs())), value(m_latency.meanNs()),

@@ -11,6 +11,16 @@
 
 namespace mbscope {
 
+// The unit latencies read best in for a terminal: the typical one (a median) decides, so a run
+// around 7 ms with one 300 ms outlier still reads in ms. µs under 1 ms, ms under 10 s, else s.
+struct LatencyUnit {
+    const char *name;
+    double ns;    // nanoseconds in one unit
+    int decimals; // shown after the point
+    [[nodiscard]] static LatencyUnit forTypical(qint64 typicalNs);
+    [[nodiscard]] QString format(double valueNs) const;
+};
+
 // The figures of a run of transactions (one request item's, or all of them), fed one Transaction
 // at a time in O(1) (amortized: the latency store is a growing vector).
 //

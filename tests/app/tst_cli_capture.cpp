@@ -108,6 +108,46 @@ bool writeLongCapture(const QString &path, int count)
     return writer.close(&error);
 }
 
+// Per unit and per function (issue 30): unit 1 reads holding registers (0x03) answered in 2, 4
+// and 9 ms; unit 7 writes registers (0x10) answered in 5 and 7 ms, then once with exception 02 in
+// 1 ms, and reads (0x03) once left without an answer (a timeout: no latency).
+bool writeUnitsCapture(const QString &path)
+{
+    CaptureFileWriter writer;
+    QString error;
+    if (!writer.open(path, CaptureFileWriter::formatFor(path), &error))
+        return false;
+    ExchangePcapExporter exporter(writer);
+    CaptureConversation c;
+    c.client.bytes = {192, 168, 1, 5};
+    c.server.bytes = {192, 168, 1, 10};
+    c.clientPort = 40000;
+    c.serverPort = 502;
+    exporter.addConversation(c);
+    const auto add = [&](quint16 tid, quint8 unit, const char *request, const char *response, int ms) {
+        const qint64 t = kStart + tid * 100 * kMs;
+        exporter.add(exchange(Framing::Tcp, AduBuilder::mbap(QByteArray::fromHex(request), unit, tid), t,
+                              response ? AduBuilder::mbap(QByteArray::fromHex(response), unit, tid) : QByteArray(),
+                              response ? t + ms * kMs : 0));
+    };
+    add(0, 1, "0300640002", "0304000a01f4", 2);
+    add(1, 7, "100000000102002a", "1000000001", 5);
+    add(2, 1, "0300640002", "0304000a01f4", 4);
+    add(3, 7, "100000000102002a", "1000000001", 7);
+    add(4, 1, "0300640002", "0304000a01f4", 9);
+    add(5, 7, "102710000102002a", "9002", 1);
+    add(6, 7, "0300000001", nullptr, 0);
+    exporter.finish();
+    // Past the last request's timeout (1 s), so it is a timeout and not unanswered at the end.
+    PacketSynthesizer::Endpoints other;
+    other.client.bytes = {192, 168, 1, 5};
+    other.server.bytes = {192, 168, 1, 20};
+    other.clientPort = 5353;
+    other.serverPort = 5353;
+    writer.write(kStart + 2000 * kMs, PacketSynthesizer::udp(other, true, QByteArrayView("not modbus")));
+    return writer.close(&error);
+}
+
 // UDP datagrams on port 5353 that look like nothing Modbus.
 bool writeOtherTraffic(const QString &path)
 {
@@ -141,6 +181,7 @@ private slots:
     void initTestCase();
     void analyzeText();
     void analyzeJson();
+    void analyzePerUnitAndFunction();
     void damaged_data();
     void damaged();
     void exportTables();
@@ -220,6 +261,88 @@ void TestCliCapture::analyzeJson()
     const QJsonArray functions = o.value(QStringLiteral("functions")).toArray();
     QCOMPARE(functions.size(), 1);
     QCOMPARE(functions.at(0).toObject().value(QStringLiteral("function")).toString(), QStringLiteral("0x03"));
+}
+
+// The tables a lab publishes (issue 30): min, mean, median, p95, p99 and max latency per function
+// code and per unit id, "-" where nothing was answered, and the same in --json ("functions",
+// "units").
+void TestCliCapture::analyzePerUnitAndFunction()
+{
+    const QString path = m_dir.filePath(QStringLiteral("units.pcapng"));
+    QVERIFY(writeUnitsCapture(path));
+
+    const CliResult r = runMbscope({QStringLiteral("analyze"), path});
+    QVERIFY2(r.finished && r.exitCode == 1, r.describe().constData()); // an exception and a timeout
+    const QStringList lines = r.outText().split(QLatin1Char('\n'));
+    const auto cellsOf = [&](const QString &first) {
+        for (const QString &line : lines) {
+            if (line.startsWith(first + QLatin1Char(' ')))
+                return line.simplified().split(QLatin1Char(' '));
+        }
+        return QStringList();
+    };
+    const QStringList latencyColumns{QStringLiteral("MIN"), QStringLiteral("MEAN"), QStringLiteral("MEDIAN"),
+                                     QStringLiteral("P95"), QStringLiteral("P99"), QStringLiteral("MAX")};
+    const QStringList counts{QStringLiteral("COUNT"), QStringLiteral("OK"), QStringLiteral("EXCEPTIONS"),
+                             QStringLiteral("TIMEOUTS"), QStringLiteral("OTHER")};
+    QCOMPARE(cellsOf(QStringLiteral("FUNCTION")), QStringList{QStringLiteral("FUNCTION")} + counts + latencyColumns);
+    QCOMPARE(cellsOf(QStringLiteral("UNIT")), QStringList{QStringLiteral("UNIT")} + counts + latencyColumns);
+    // The median is 4 ms: the tables are in ms, as the latency line below them.
+    QCOMPARE(r.outText().count(QStringLiteral("LATENCY ms")), 2);
+    QVERIFY2(r.outText().contains(QStringLiteral("latency ms    min 1.000")), r.describe().constData());
+    for (const QString &line : lines)
+        QVERIFY2(line.size() <= 120, qPrintable(line));
+
+    // 0x03: unit 1's three reads (2, 4, 9 ms) and unit 7's timeout.
+    QCOMPARE(cellsOf(QStringLiteral("0x03")),
+             (QStringList{QStringLiteral("0x03"), QStringLiteral("Read"), QStringLiteral("Holding"), QStringLiteral("Registers"),
+                          QStringLiteral("4"), QStringLiteral("3"), QStringLiteral("0"), QStringLiteral("1"), QStringLiteral("0"),
+                          QStringLiteral("2.000"), QStringLiteral("5.000"), QStringLiteral("4.000"), QStringLiteral("9.000"),
+                          QStringLiteral("9.000"), QStringLiteral("9.000")}));
+    // Unit 7: the writes (5, 7 ms), the exception (1 ms; answered, so it has a latency), the timeout.
+    const QStringList unit7 = cellsOf(QStringLiteral("7"));
+    QCOMPARE(unit7.mid(0, 6), (QStringList{QStringLiteral("7"), QStringLiteral("4"), QStringLiteral("2"), QStringLiteral("1"),
+                                           QStringLiteral("1"), QStringLiteral("0")}));
+    const double min = unit7.at(6).toDouble();
+    const double mean = unit7.at(7).toDouble();
+    const double max = unit7.at(11).toDouble();
+    QCOMPARE(min, 1.0);
+    QCOMPARE(max, 7.0);
+    QVERIFY(min <= mean && mean <= max);
+    QCOMPARE(unit7.at(8), QStringLiteral("5.000"));
+    const QStringList unit1 = cellsOf(QStringLiteral("1"));
+    QCOMPARE(unit1.size(), 12);
+    QCOMPARE(unit1.at(1).toInt() + unit7.at(1).toInt(), 7); // every transaction, under one unit each
+
+    const CliResult j = runMbscope({QStringLiteral("analyze"), path, QStringLiteral("--json")});
+    QVERIFY2(j.finished && j.exitCode == 1, j.describe().constData());
+    const QJsonObject o = j.json();
+    const QJsonArray units = o.value(QStringLiteral("units")).toArray();
+    QCOMPARE(units.size(), 2);
+    int total = 0;
+    for (const QJsonValue &v : units) {
+        const QJsonObject u = v.toObject();
+        total += u.value(QStringLiteral("count")).toInt();
+        const QJsonObject l = u.value(QStringLiteral("latency_us")).toObject();
+        QVERIFY(l.value(QStringLiteral("min")).toDouble() <= l.value(QStringLiteral("mean")).toDouble());
+        QVERIFY(l.value(QStringLiteral("mean")).toDouble() <= l.value(QStringLiteral("max")).toDouble());
+        QVERIFY(l.value(QStringLiteral("p95")).isDouble());
+    }
+    QCOMPARE(total, o.value(QStringLiteral("count")).toInt());
+    const QJsonObject u1 = units.at(0).toObject();
+    QCOMPARE(u1.value(QStringLiteral("unit")).toInt(), 1);
+    QCOMPARE(u1.value(QStringLiteral("count")).toInt(), 3);
+    QCOMPARE(u1.value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("max")).toDouble(), 9000.0);
+    const QJsonObject u7 = units.at(1).toObject();
+    QCOMPARE(u7.value(QStringLiteral("unit")).toInt(), 7);
+    QCOMPARE(u7.value(QStringLiteral("timeouts")).toInt(), 1);
+    QCOMPARE(u7.value(QStringLiteral("exceptions")).toInt(), 1);
+    QCOMPARE(u7.value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("count")).toInt(), 3);
+    const QJsonArray functions = o.value(QStringLiteral("functions")).toArray();
+    QCOMPARE(functions.size(), 2);
+    QCOMPARE(functions.at(1).toObject().value(QStringLiteral("function")).toString(), QStringLiteral("0x10"));
+    const double writeMeanUs = functions.at(1).toObject().value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("mean")).toDouble();
+    QVERIFY2(qAbs(writeMeanUs - 13000.0 / 3.0) < 1e-6, qPrintable(QString::number(writeMeanUs)));
 }
 
 void TestCliCapture::damaged_data()
