@@ -11,6 +11,25 @@ namespace mbscope::app {
 // instead of the executable's path that QCommandLineParser puts there.
 [[nodiscard]] QString subcommandHelp(const QString &helpText, const char *name);
 
+// While one exists, subcommandHelp hands its text to it and returns an empty string, so that a
+// subcommand run with --help prints nothing: `mbscope completion` reads every subcommand's help
+// (what --help-all prints) this way, from the parsers themselves.
+class HelpCapture
+{
+public:
+    HelpCapture();
+    ~HelpCapture();
+    HelpCapture(const HelpCapture &) = delete;
+    HelpCapture &operator=(const HelpCapture &) = delete;
+    // What the subcommands' --help gave since the last take().
+    [[nodiscard]] QString take();
+
+private:
+    friend QString subcommandHelp(const QString &helpText, const char *name);
+    HelpCapture *m_previous = nullptr;
+    QString m_text;
+};
+
 // Exit statuses shared by every subcommand.
 // A link error (nothing reached the device: refused, no such host or port) ends a command as a
 // usage error does: the command could not do what it was asked.

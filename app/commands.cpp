@@ -1,6 +1,7 @@
 #include "commands.h"
 
 #include "analyzecommand.h"
+#include "completioncommand.h"
 #include "decodecommand.h"
 #include "exportcommand.h"
 #include "jsonfailure.h"
@@ -45,6 +46,7 @@ const Subcommand kSubcommands[] = {
     {"analyze", "read a pcap, pcapng or traffic journal offline: pairs, decoded frames, statistics, histogram", runAnalyze},
     {"export", "write a capture or journal as CSV, JSON lines, pcapng for Wireshark, or latency plots", runExport},
     {"replay", "re-send a recording to a device and compare the answers, or serve it as a stand-in device", runReplay},
+    {"completion", "print a bash or zsh completion script for these subcommands and their options", runCompletion},
 };
 
 void printUsage(QTextStream &out)
@@ -52,7 +54,7 @@ void printUsage(QTextStream &out)
     out << "Usage: mbscope [SUBCOMMAND] [OPTIONS]\n\n"
         << "Without a subcommand mbscope opens its window.\n\nSubcommands:\n";
     for (const Subcommand &s : kSubcommands)
-        out << "  " << QString::fromLatin1(s.name).leftJustified(10) << s.summary << '\n';
+        out << "  " << QString::fromLatin1(s.name).leftJustified(12) << s.summary << '\n';
     out << "\nWindow options (without a subcommand; the man page says more):\n"
         << "  --session FILE   open a session document       --lang CODE    id, en or system\n"
         << "  --theme NAME     light, dark or system          --tab NAME     answer, decode or watches\n"
@@ -64,6 +66,23 @@ void printUsage(QTextStream &out)
 }
 
 } // namespace
+
+QList<SubcommandHelp> subcommandHelps()
+{
+    // As --help-all does, each subcommand runs with --help; the text is captured, not printed.
+    QList<SubcommandHelp> helps;
+    HelpCapture capture;
+    for (const Subcommand &s : kSubcommands) {
+        s.run({QString::fromLatin1(s.name), QStringLiteral("--help")});
+        helps.append({QString::fromLatin1(s.name), QString::fromLatin1(s.summary), capture.take()});
+    }
+    return helps;
+}
+
+QStringList topLevelOptions()
+{
+    return {QStringLiteral("--help"), QStringLiteral("-h"), QStringLiteral("--help-all"), QStringLiteral("--version")};
+}
 
 bool isSubcommand(const char *name)
 {

@@ -4,6 +4,8 @@
 
 #include "cli.h"
 
+#include <QtCore/QList>
+#include <QtCore/QString>
 #include <QtCore/QStringList>
 
 #ifdef MBSCOPE_HAVE_UI
@@ -13,6 +15,16 @@ class QApplication;
 namespace mbscope::app {
 
 [[nodiscard]] bool isSubcommand(const char *name);
+
+struct SubcommandHelp {
+    QString name;
+    QString summary; // the line `mbscope --help` shows
+    QString help;    // what `mbscope NAME --help` prints
+};
+// Every subcommand with its --help text, in the order `mbscope --help` lists them.
+[[nodiscard]] QList<SubcommandHelp> subcommandHelps();
+// The options `mbscope` takes without a subcommand that runHeadless answers (--help...).
+[[nodiscard]] QStringList topLevelOptions();
 [[nodiscard]] bool hasGui();
 // Runs a subcommand (or prints help); arguments as QCoreApplication::arguments() gives them.
 int runHeadless(const QStringList &arguments);

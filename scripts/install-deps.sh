@@ -21,6 +21,7 @@ test_pkgs=(
   desktop-file-utils appstream
   prometheus mosquitto mosquitto-clients
   shellcheck  # tst_shellscripts
+  zsh  # tst_cli_completion: `zsh -n` parses `mbscope completion zsh`
 )
 
 want=("${build_pkgs[@]}")

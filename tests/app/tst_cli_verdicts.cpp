@@ -656,6 +656,8 @@ QList<ExitRow> exitRows()
     row("replay", 0, "every answer matched", {QStringLiteral("replay"), D + QStringLiteral("good.mbscope.journal"), QStringLiteral("--target"), T});
     row("replay", 1, "an answer differed", {QStringLiteral("replay"), D + QStringLiteral("before.mbscope.journal"), QStringLiteral("--target"), T});
     row("replay", 2, "no such file", {QStringLiteral("replay"), D + QStringLiteral("none.mbscope.journal"), QStringLiteral("--target"), T});
+    row("completion", 0, "a bash script", {QStringLiteral("completion"), QStringLiteral("bash")}, "complete -F _mbscope mbscope");
+    row("completion", 2, "a shell it does not write for", {QStringLiteral("completion"), QStringLiteral("fish")}, "bash or zsh");
     row("mbscope", 0, "--version", {QStringLiteral("--version")}, "mbscope ");
     row("mbscope", 0, "--help-all", {QStringLiteral("--help-all")}, "== mbscope replay ==");
     row("mbscope", 2, "an unknown command", {QStringLiteral("frobnicate")}, "mbscope: unknown subcommand 'frobnicate'");
@@ -702,7 +704,7 @@ void TestCliVerdicts::manPageListsEveryExitStatus()
     QVERIFY(page.open(QIODevice::ReadOnly | QIODevice::Text));
     const QStringList lines = QString::fromUtf8(page.readAll()).split(QLatin1Char('\n'));
     static const QRegularExpression commandWord(
-        QStringLiteral(R"(\b(decode|send|read|write|poll|sweep|monitor|watch|scan|run|simulate|analyze|export|replay)\b)"));
+        QStringLiteral(R"(\b(decode|send|read|write|poll|sweep|monitor|watch|scan|run|simulate|analyze|export|replay|completion)\b)"));
     static const QRegularExpression statusAt(QStringLiteral(R"(^([0-9]) )"));
     QSet<QString> documented;
     bool inSection = false;

@@ -164,6 +164,8 @@ void TestPackage::containsFile_data()
         QStringLiteral("usr/share/metainfo/%1.metainfo.xml").arg(kAppId),
         QStringLiteral("usr/share/icons/hicolor/scalable/apps/mbscope.svg"),
         QStringLiteral("usr/share/man/man1/mbscope.1.gz"),
+        QStringLiteral("usr/share/bash-completion/completions/mbscope"),
+        QStringLiteral("usr/share/zsh/vendor-completions/_mbscope"),
         QStringLiteral("usr/share/doc/mbscope/copyright"),
         QStringLiteral("usr/share/doc/mbscope/changelog.gz"),
         QStringLiteral("usr/share/mbscope/profiles/rosrao-gamma.json"),
