@@ -20,6 +20,8 @@
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
 
+#include <functional>
+
 using namespace mbscope;
 using namespace mbscope::testcli;
 
@@ -85,9 +87,9 @@ bool writeCapture(const QString &path, bool failures, Framing framing = Framing:
     return writer.close(&error);
 }
 
-// count reads of 2 registers, one every 100 ms, each answered in 3 ms: after the handshake (packets
-// 1..3), transaction i's request is packet 4 + 2i and its answer 5 + 2i.
-bool writeLongCapture(const QString &path, int count)
+// A pcap or pcapng (by path's ending) of one Modbus/TCP conversation, 192.168.1.5:40000 to
+// 192.168.1.10:502, its exchanges added by fill; false when the file cannot be written.
+bool writeTcpCapture(const QString &path, const std::function<void(CaptureFileWriter &, ExchangePcapExporter &)> &fill)
 {
     CaptureFileWriter writer;
     QString error;
@@ -100,12 +102,21 @@ bool writeLongCapture(const QString &path, int count)
     c.clientPort = 40000;
     c.serverPort = 502;
     exporter.addConversation(c);
-    for (int i = 0; i < count; ++i) {
-        const qint64 t = kStart + i * 100 * kMs;
-        exporter.add(exchange(Framing::Tcp, mbap(quint16(i), "0300640002"), t, mbap(quint16(i), "0304000a01f4"), t + 3 * kMs));
-    }
-    exporter.finish();
+    fill(writer, exporter);
     return writer.close(&error);
+}
+
+// count reads of 2 registers, one every 100 ms, each answered in 3 ms: after the handshake (packets
+// 1..3), transaction i's request is packet 4 + 2i and its answer 5 + 2i.
+bool writeLongCapture(const QString &path, int count)
+{
+    return writeTcpCapture(path, [count](CaptureFileWriter &, ExchangePcapExporter &exporter) {
+        for (int i = 0; i < count; ++i) {
+            const qint64 t = kStart + i * 100 * kMs;
+            exporter.add(exchange(Framing::Tcp, mbap(quint16(i), "0300640002"), t, mbap(quint16(i), "0304000a01f4"), t + 3 * kMs));
+        }
+        exporter.finish();
+    });
 }
 
 // Per unit and per function (issue 30): unit 1 reads holding registers (0x03) answered in 2, 4
@@ -113,39 +124,29 @@ bool writeLongCapture(const QString &path, int count)
 // 1 ms, and reads (0x03) once left without an answer (a timeout: no latency).
 bool writeUnitsCapture(const QString &path)
 {
-    CaptureFileWriter writer;
-    QString error;
-    if (!writer.open(path, CaptureFileWriter::formatFor(path), &error))
-        return false;
-    ExchangePcapExporter exporter(writer);
-    CaptureConversation c;
-    c.client.bytes = {192, 168, 1, 5};
-    c.server.bytes = {192, 168, 1, 10};
-    c.clientPort = 40000;
-    c.serverPort = 502;
-    exporter.addConversation(c);
-    const auto add = [&](quint16 tid, quint8 unit, const char *request, const char *response, int ms) {
-        const qint64 t = kStart + tid * 100 * kMs;
-        exporter.add(exchange(Framing::Tcp, AduBuilder::mbap(QByteArray::fromHex(request), unit, tid), t,
-                              response ? AduBuilder::mbap(QByteArray::fromHex(response), unit, tid) : QByteArray(),
-                              response ? t + ms * kMs : 0));
-    };
-    add(0, 1, "0300640002", "0304000a01f4", 2);
-    add(1, 7, "100000000102002a", "1000000001", 5);
-    add(2, 1, "0300640002", "0304000a01f4", 4);
-    add(3, 7, "100000000102002a", "1000000001", 7);
-    add(4, 1, "0300640002", "0304000a01f4", 9);
-    add(5, 7, "102710000102002a", "9002", 1);
-    add(6, 7, "0300000001", nullptr, 0);
-    exporter.finish();
-    // Past the last request's timeout (1 s), so it is a timeout and not unanswered at the end.
-    PacketSynthesizer::Endpoints other;
-    other.client.bytes = {192, 168, 1, 5};
-    other.server.bytes = {192, 168, 1, 20};
-    other.clientPort = 5353;
-    other.serverPort = 5353;
-    writer.write(kStart + 2000 * kMs, PacketSynthesizer::udp(other, true, QByteArrayView("not modbus")));
-    return writer.close(&error);
+    return writeTcpCapture(path, [](CaptureFileWriter &writer, ExchangePcapExporter &exporter) {
+        const auto add = [&](quint16 tid, quint8 unit, const char *request, const char *response, int ms) {
+            const qint64 t = kStart + tid * 100 * kMs;
+            exporter.add(exchange(Framing::Tcp, AduBuilder::mbap(QByteArray::fromHex(request), unit, tid), t,
+                                  response ? AduBuilder::mbap(QByteArray::fromHex(response), unit, tid) : QByteArray(),
+                                  response ? t + ms * kMs : 0));
+        };
+        add(0, 1, "0300640002", "0304000a01f4", 2);
+        add(1, 7, "100000000102002a", "1000000001", 5);
+        add(2, 1, "0300640002", "0304000a01f4", 4);
+        add(3, 7, "100000000102002a", "1000000001", 7);
+        add(4, 1, "0300640002", "0304000a01f4", 9);
+        add(5, 7, "102710000102002a", "9002", 1);
+        add(6, 7, "0300000001", nullptr, 0);
+        exporter.finish();
+        // Past the last request's timeout (1 s), so it is a timeout and not unanswered at the end.
+        PacketSynthesizer::Endpoints other;
+        other.client.bytes = {192, 168, 1, 5};
+        other.server.bytes = {192, 168, 1, 20};
+        other.clientPort = 5353;
+        other.serverPort = 5353;
+        writer.write(kStart + 2000 * kMs, PacketSynthesizer::udp(other, true, QByteArrayView("not modbus")));
+    });
 }
 
 // UDP datagrams on port 5353 that look like nothing Modbus.
