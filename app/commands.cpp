@@ -14,6 +14,7 @@
 #include "scancommand.h"
 #include "sendcommand.h"
 #include "sweepcommand.h"
+#include "tapcommand.h"
 #include "watchcommand.h"
 #include "writecommand.h"
 
@@ -43,6 +44,7 @@ const Subcommand kSubcommands[] = {
     {"scan", "find what is on a link: unit ids that answer, a unit's register map (as a profile draft), limits", runScan},
     {"run", "run a session's test plan against a device; pass/fail per step, JUnit XML for CI", runRun},
     {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},
+    {"tap", "sit between masters and devices: forward every request (TCP to RTU and back, any link), record both legs, inject faults", runTap},
     {"analyze", "read a pcap, pcapng or traffic journal offline: pairs, decoded frames, statistics, histogram", runAnalyze},
     {"export", "write a capture or journal as CSV, JSON lines, pcapng for Wireshark, or latency plots", runExport},
     {"replay", "re-send a recording to a device and compare the answers, or serve it as a stand-in device", runReplay},

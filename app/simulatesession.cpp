@@ -110,6 +110,12 @@ void SimulateSession::setTrafficLog(TrafficLog *log)
     m_sim.setTrafficLog(log);
 }
 
+void SimulateSession::setRemote(SimRemote *remote)
+{
+    m_sim.setRemote(remote);
+    m_remote = remote != nullptr;
+}
+
 void SimulateSession::start()
 {
     m_started = true;
@@ -214,7 +220,11 @@ QString SimulateSession::verdictText(const SimLogEntry &entry, const FaultPlan *
         return QStringLiteral("dropped by fault (%1)%2").arg(faults, plan->closeBefore ? QStringLiteral(": connection closed") : QString());
     QString text;
     switch (entry.verdict) {
-    case V::Answered: text = QStringLiteral("answered"); break;
+    case V::Answered:
+        text = QStringLiteral("answered");
+        if (m_remote && !entry.reason.isEmpty())
+            text += QStringLiteral(" (%1)").arg(entry.reason); // "device 1.9 ms"
+        break;
     case V::Exception: {
         const AduParts response = AduBuilder::parse(entry.response, framingOf(entry.endpoint));
         const quint8 code = response.pdu.size() >= 2 ? quint8(response.pdu.at(1)) : 0;

@@ -53,6 +53,9 @@ public:
     // Every frame in and out, and the fault plan of every answer, to log (simulate --record);
     // nullptr stops.
     void setTrafficLog(TrafficLog *log);
+    // The inline tap: requests go to remote instead of the units (Simulator::setRemote), and each
+    // answered line says what the remote noted (the device's own time). nullptr: the units again.
+    void setRemote(SimRemote *remote);
     void start();
     void stop();
 
@@ -100,6 +103,7 @@ private:
     QSet<QString> m_delimited; // names of the endpoints serving a delimited protocol
     Counts m_counts;
     bool m_started = false;
+    bool m_remote = false;
     QStringList m_heldLines; // script lines logged before start(), printed by it after the header
 };
 

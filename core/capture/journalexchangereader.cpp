@@ -286,8 +286,15 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
     // answers Out: read as its clients saw them, so that one pairing serves both.
     TrafficMetadata metadata;
     QString metadataError;
-    const bool server = !names.metadata.isEmpty() && TrafficMetadata::fromJson(names.metadata, &metadata, &metadataError)
-                        && metadata.role == TrafficMetadata::Role::Server;
+    const bool serverJournal = !names.metadata.isEmpty() && TrafficMetadata::fromJson(names.metadata, &metadata, &metadataError)
+                               && metadata.role == TrafficMetadata::Role::Server;
+    // Which links are the server's: every one, unless the metadata names where it listened and
+    // the journal holds other links too (the inline tap's: its device leg, recorded by an engine
+    // as a client records, requests out and answers in).
+    QList<bool> servedLinks;
+    for (qsizetype i = 0; i < names.links.size(); ++i)
+        servedLinks.append(serverJournal && (metadata.listen.isEmpty() || metadata.listen.contains(names.links.at(i))));
+    const auto served = [&servedLinks](quint16 link) { return link < servedLinks.size() && servedLinks.at(link); };
 
     // A server writes an answer as it leaves, and a fault rule may send it in pieces (chunks,
     // trickle: FaultPlan's ResponseChunks, each written after its delay) or twice (duplicate):
@@ -324,7 +331,7 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
     QHash<quint16, bool> joinable;
     for (qsizetype i = 0; i < names.links.size(); ++i) {
         const LinkUrl::Result parsed = LinkUrl::parse(names.links.at(i));
-        joinable.insert(quint16(i), server && parsed.url && !parsed.url->isDatagram() && !parsed.url->delimited.enabled);
+        joinable.insert(quint16(i), served(quint16(i)) && parsed.url && !parsed.url->isDatagram() && !parsed.url->delimited.enabled);
     }
 
     // An answer (the whole of one, or what there is of it) with the id of its request.
@@ -376,7 +383,7 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
             t.response = bytes;
             t.firstByteNs = wall(firstNs);
             t.doneNs = wall(lastNs);
-            if (server && !answered.contains(key)) {
+            if (served(key.first) && !answered.contains(key)) {
                 answered.insert(key, Answered{s.exchange.conversation, s.exchange.requestPacket});
                 answeredOrder.push_back(key);
                 if (answeredOrder.size() > kAnsweredKept) {
@@ -459,7 +466,7 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
 
     result.recovery = TrafficJournalReader::read(path, [&](const TrafficEntry &entry) {
         TrafficEntry e = entry;
-        if (server)
+        if (served(e.link))
             e.direction = e.direction == TrafficDirection::In ? TrafficDirection::Out : TrafficDirection::In;
         const QByteArray bytes = e.bytes.toByteArray();
         if (e.verdict == TrafficVerdict::Garbage) {
@@ -483,7 +490,7 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
             s->exchange.transaction.sentNs = wall(e.tNs);
             return;
         }
-        if (server && answerPiece(e, bytes))
+        if (served(e.link) && answerPiece(e, bytes))
             return;
         answerFrame(e.link, e.transactionId, e.verdict, bytes, e.tNs, e.tNs, e.sequence);
     }, onNote);

@@ -1,5 +1,7 @@
 #include "sim/simconnection.h"
 
+#include <QtCore/QPointer>
+
 #include "protocol/asciiframer.h"
 #include "protocol/delimitedframer.h"
 #include "protocol/mbapframer.h"
@@ -146,22 +148,30 @@ void SimConnection::drain()
         }
         const StreamFrame &frame = frames.at(f++);
         const qint64 received = frame.lastByteNs != 0 ? frame.lastByteNs : monotonicNowNs();
-        const FaultPlan plan = m_simulator->handleFrame(m_endpoint, frame.bytes, frame.status, m_peer, received,
-                                                       m_connectedNs);
-        m_responder.enqueue(plan, received, [this, id = plan.trafficId](const QByteArray &answer) {
-            if (!isConnected())
-                return;
-            if (m_stream)
-                m_stream->write(answer);
-            else
-                m_socket->write(answer);
-            m_simulator->noteSent(m_endpoint, answer, id);
-        });
+        QPointer<SimConnection> self(this);
+        m_simulator->takeFrame(m_endpoint, frame.bytes, frame.status, m_peer, received, m_connectedNs,
+                               [self, received](const FaultPlan &plan) {
+                                   if (self && !self->m_closing)
+                                       self->enqueue(plan, received);
+                               });
     }
     frames.clear();
     skipped.clear();
     m_frames = std::move(frames);
     m_skipped = std::move(skipped);
+}
+
+void SimConnection::enqueue(const FaultPlan &plan, qint64 receivedNs)
+{
+    m_responder.enqueue(plan, receivedNs, [this, id = plan.trafficId](const QByteArray &answer) {
+        if (!isConnected())
+            return;
+        if (m_stream)
+            m_stream->write(answer);
+        else
+            m_socket->write(answer);
+        m_simulator->noteSent(m_endpoint, answer, id);
+    });
 }
 
 void SimConnection::close(const QString &reason)

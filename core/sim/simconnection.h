@@ -42,6 +42,8 @@ private:
     void onSilence();
     void onDisconnected();
     void drain();
+    // The plan for one answer, to the responder (ordered: after the answers before it).
+    void enqueue(const FaultPlan &plan, qint64 receivedNs);
     [[nodiscard]] bool isConnected() const;
 
     Simulator *m_simulator;

@@ -1,5 +1,7 @@
 #include "sim/simdatagramendpoint.h"
 
+#include <QtCore/QPointer>
+
 #include "sim/simlisten.h"
 #include "sim/simulator.h"
 #include "transport/monotonicclock.h"
@@ -63,13 +65,19 @@ void SimDatagramEndpoint::onReadyRead()
         const QString peer = (text.contains(QLatin1Char(':')) ? QLatin1Char('[') + text + QLatin1Char(']') : text)
                              + QLatin1Char(':') + QString::number(port);
         // A datagram holds one whole frame (or it is malformed): no framer, no silence.
-        const FaultPlan plan = simulator()->handleFrame(this, datagram.data(), FrameStatus::Valid, peer, received);
-        m_responder.enqueue(plan, received, [this, address, port, id = plan.trafficId](const QByteArray &answer) {
-            if (!m_socket)
-                return;
-            m_socket->writeDatagram(answer, address, port);
-            simulator()->noteSent(this, answer, id);
-        });
+        QPointer<SimDatagramEndpoint> self(this);
+        simulator()->takeFrame(this, datagram.data(), FrameStatus::Valid, peer, received, 0,
+                               [self, received, address, port](const FaultPlan &plan) {
+                                   if (!self)
+                                       return;
+                                   self->m_responder.enqueue(plan, received, [endpoint = self.data(), address, port,
+                                                                              id = plan.trafficId](const QByteArray &answer) {
+                                       if (!endpoint->m_socket)
+                                           return;
+                                       endpoint->m_socket->writeDatagram(answer, address, port);
+                                       endpoint->simulator()->noteSent(endpoint, answer, id);
+                                   });
+                               });
     }
 }
 

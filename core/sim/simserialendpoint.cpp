@@ -1,5 +1,7 @@
 #include "sim/simserialendpoint.h"
 
+#include <QtCore/QPointer>
+
 #include "protocol/asciiframer.h"
 #include "protocol/delimitedframer.h"
 #include "protocol/rtuframer.h"
@@ -122,12 +124,16 @@ void SimSerialEndpoint::drain()
         }
         const StreamFrame &frame = frames.at(f++);
         const qint64 received = frame.lastByteNs != 0 ? frame.lastByteNs : monotonicNowNs();
-        const FaultPlan plan = simulator()->handleFrame(this, frame.bytes, frame.status, device, received);
-        m_responder.enqueue(plan, received, [this, id = plan.trafficId](const QByteArray &answer) {
-            if (!m_port || !m_port->isOpen())
+        QPointer<SimSerialEndpoint> self(this);
+        simulator()->takeFrame(this, frame.bytes, frame.status, device, received, 0, [self, received](const FaultPlan &plan) {
+            if (!self)
                 return;
-            m_port->write(answer);
-            simulator()->noteSent(this, answer, id);
+            self->m_responder.enqueue(plan, received, [endpoint = self.data(), id = plan.trafficId](const QByteArray &answer) {
+                if (!endpoint->m_port || !endpoint->m_port->isOpen())
+                    return;
+                endpoint->m_port->write(answer);
+                endpoint->simulator()->noteSent(endpoint, answer, id);
+            });
         });
     }
 }

@@ -11,6 +11,7 @@
 #include "sim/simserialendpoint.h"
 #include "sim/simstreamendpoint.h"
 #include "sim/simunit.h"
+#include "sim/simremote.h"
 #include "transport/linkurl.h"
 #include "transport/monotonicclock.h"
 
@@ -363,17 +364,13 @@ FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, Fra
     return plan;
 }
 
-FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status,
-                                 const QString &peer, qint64 receivedNs, qint64 connectedNs)
+bool Simulator::acceptModbusFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status, const QString &peer,
+                                  const QList<Slot *> &units, AduParts *out)
 {
-    if (endpoint->url().delimited.enabled)
-        return handleLine(endpoint, adu, status, peer, receivedNs, connectedNs);
-    FaultPlan silence;
-    silence.drop = true;
     const Framing framing = endpoint->framing();
     const bool serial = isSerialFraming(framing);
-    const AduParts parts = AduBuilder::parse(adu, framing);
-    const QList<Slot *> units = slotsOf(endpoint);
+    *out = AduBuilder::parse(adu, framing);
+    const AduParts &parts = *out;
     const int unitForLog = parts.complete || !parts.pdu.isEmpty() ? parts.unitId : -1;
 
     if (serial) {
@@ -390,7 +387,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
                                                                         : parts.error + QStringLiteral(": discarded"));
             log(endpoint, peer, unitForLog, adu, {},
                 badChecksum ? SimLogEntry::Verdict::ChecksumError : SimLogEntry::Verdict::Malformed, reason);
-            return silence;
+            return false;
         }
     } else if (!parts.complete || parts.protocolId != 0 || !parts.lengthMatches) {
         // Messaging on TCP/IP V1.0b, 3.1.3: protocol id 0 is Modbus; the length counts what follows.
@@ -402,12 +399,28 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
                          .arg(parts.length)
                          .arg(adu.size() - 6);
         log(endpoint, peer, unitForLog, adu, {}, SimLogEntry::Verdict::Malformed, reason + QStringLiteral(": dropped"));
-        return silence;
+        return false;
     }
     if (parts.pdu.isEmpty()) {
         log(endpoint, peer, unitForLog, adu, {}, SimLogEntry::Verdict::Malformed, QStringLiteral("no function code: dropped"));
-        return silence;
+        return false;
     }
+    return true;
+}
+
+FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status,
+                                 const QString &peer, qint64 receivedNs, qint64 connectedNs)
+{
+    if (endpoint->url().delimited.enabled)
+        return handleLine(endpoint, adu, status, peer, receivedNs, connectedNs);
+    FaultPlan silence;
+    silence.drop = true;
+    const Framing framing = endpoint->framing();
+    const bool serial = isSerialFraming(framing);
+    const QList<Slot *> units = slotsOf(endpoint);
+    AduParts parts;
+    if (!acceptModbusFrame(endpoint, adu, status, peer, units, &parts))
+        return silence;
     const qint64 intervalNs = intervalSince(endpoint, receivedNs);
     if (warmingUp(endpoint, peer, parts.unitId, adu, receivedNs, connectedNs))
         return silence;
@@ -573,9 +586,40 @@ quint16 Simulator::trafficLink(const SimEndpoint *endpoint)
     return *it;
 }
 
-quint64 Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
-                       const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
-                       const QStringList &faults)
+quint64 Simulator::logArrival(SimEndpoint *endpoint, const QString &peer, QByteArrayView request, TrafficVerdict verdict,
+                              qint64 tNs)
+{
+    if (!m_trafficLog || request.isEmpty())
+        return 0;
+    // Skipped bytes are not a request: no id, no outcome.
+    const quint64 id = verdict == TrafficVerdict::Garbage ? 0 : ++m_lastTrafficId;
+    const quint16 link = trafficLink(endpoint);
+    // Which client this request came from, when it is another than the last one's: the
+    // journal's endpoints note (journalendpoints.h). A serial line's URL names its port.
+    if (id != 0 && !endpoint->url().isSerial()) {
+        QString &last = m_trafficPeers[link];
+        if (last != peer) {
+            last = peer;
+            const LinkUrl &bound = endpoint->boundUrl();
+            const QString host = bound.host.contains(QLatin1Char(':')) ? QLatin1Char('[') + bound.host + QLatin1Char(']') : bound.host;
+            m_trafficLog->setEndpoints(link, tNs, id, JournalEndpoints{peer, host + QLatin1Char(':') + QString::number(bound.port)});
+        }
+    }
+    m_trafficLog->append(tNs, TrafficDirection::In, link, verdict, id, request);
+    return id;
+}
+
+void Simulator::logUnanswered(SimEndpoint *endpoint, quint64 id, bool broadcast, qint64 tNs)
+{
+    // A request left unanswered: what its client saw, in the engine's way (an empty record).
+    if (m_trafficLog && id != 0)
+        m_trafficLog->append(tNs, TrafficDirection::Out, trafficLink(endpoint),
+                             broadcast ? TrafficVerdict::Broadcast : TrafficVerdict::Timeout, id, {});
+}
+
+void Simulator::emitEntry(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
+                          const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
+                          const QStringList &faults)
 {
     SimLogEntry entry;
     entry.tNs = monotonicNowNs();
@@ -587,33 +631,101 @@ quint64 Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, Q
     entry.verdict = verdict;
     entry.reason = reason;
     entry.faults = faults;
-    quint64 id = 0;
-    if (m_trafficLog && !request.isEmpty()) {
-        const TrafficVerdict traffic = trafficVerdictOf(verdict);
-        // Skipped bytes are not a request: no id, no outcome.
-        id = traffic == TrafficVerdict::Garbage ? 0 : ++m_lastTrafficId;
-        const quint16 link = trafficLink(endpoint);
-        // Which client this request came from, when it is another than the last one's: the
-        // journal's endpoints note (journalendpoints.h). A serial line's URL names its port.
-        if (id != 0 && !endpoint->url().isSerial()) {
-            QString &last = m_trafficPeers[link];
-            if (last != peer) {
-                last = peer;
-                const LinkUrl &bound = endpoint->boundUrl();
-                const QString host = bound.host.contains(QLatin1Char(':')) ? QLatin1Char('[') + bound.host + QLatin1Char(']') : bound.host;
-                m_trafficLog->setEndpoints(link, entry.tNs, id, JournalEndpoints{peer, host + QLatin1Char(':') + QString::number(bound.port)});
-            }
-        }
-        m_trafficLog->append(entry.tNs, TrafficDirection::In, link, traffic, id, request);
-        // A request left unanswered: what its client saw, in the engine's way (an empty record).
-        if (id != 0 && response.isEmpty())
-            m_trafficLog->append(entry.tNs, TrafficDirection::Out, link,
-                                 verdict == SimLogEntry::Verdict::NoAnswer && unitId == 0 ? TrafficVerdict::Broadcast
-                                                                                         : TrafficVerdict::Timeout,
-                                 id, {});
-    }
     Q_EMIT logged(entry);
+}
+
+quint64 Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
+                       const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
+                       const QStringList &faults)
+{
+    const qint64 tNs = monotonicNowNs();
+    const quint64 id = logArrival(endpoint, peer, request, trafficVerdictOf(verdict), tNs);
+    if (response.isEmpty())
+        logUnanswered(endpoint, id, verdict == SimLogEntry::Verdict::NoAnswer && unitId == 0, tNs);
+    emitEntry(endpoint, peer, unitId, request, response, verdict, reason, faults);
     return id;
+}
+
+// ---- Requests answered by the remote (setRemote) ----
+
+void Simulator::takeFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status, const QString &peer,
+                          qint64 receivedNs, qint64 connectedNs, const PlanSink &sink)
+{
+    if (!m_remote || endpoint->url().delimited.enabled) {
+        sink(handleFrame(endpoint, adu, status, peer, receivedNs, connectedNs));
+        return;
+    }
+    FaultPlan silence;
+    silence.drop = true;
+    AduParts parts;
+    if (!acceptModbusFrame(endpoint, adu, status, peer, {}, &parts)) {
+        sink(silence);
+        return;
+    }
+    const qint64 intervalNs = intervalSince(endpoint, receivedNs);
+    SimRemote::Request request;
+    request.unitId = parts.unitId;
+    request.pdu = parts.pdu;
+    request.framing = endpoint->framing();
+    request.broadcast = isSerialFraming(request.framing) && parts.unitId == 0;
+    request.endpoint = endpoint->name();
+    request.peer = peer;
+    request.receivedNs = receivedNs;
+    // The request is in the journal from the moment it came (the answer may take a while, and
+    // requests of other clients come meanwhile).
+    Pending pending{QPointer<SimEndpoint>(endpoint), peer, adu.toByteArray(), parts, receivedNs, intervalNs,
+                    logArrival(endpoint, peer, adu, TrafficVerdict::Ok, receivedNs), sink};
+    QPointer<Simulator> self(this);
+    m_remote->forward(request, [self, pending = std::move(pending)](const SimRemote::Answer &answer) {
+        if (self && pending.endpoint)
+            self->finishForward(pending, answer);
+    });
+}
+
+void Simulator::finishForward(const Pending &pending, const SimRemote::Answer &answer)
+{
+    SimEndpoint *endpoint = pending.endpoint;
+    const AduParts &parts = pending.parts;
+    const bool broadcast = isSerialFraming(endpoint->framing()) && parts.unitId == 0;
+    if (!answer.reply.hasAnswer() && answer.exactAdu.isEmpty()) {
+        logUnanswered(endpoint, pending.trafficId, broadcast, monotonicNowNs());
+        emitEntry(endpoint, pending.peer, parts.unitId, pending.adu, {}, SimLogEntry::Verdict::NoAnswer, answer.reply.note);
+        FaultPlan silence;
+        silence.drop = true;
+        pending.sink(silence);
+        return;
+    }
+    const QByteArray bytes = !answer.exactAdu.isEmpty()
+                                 ? answer.exactAdu
+                                 : frameAnswer(answer.reply.pdu, endpoint->framing(), parts.unitId, parts.transactionId);
+    const AduParts sent = AduBuilder::parse(bytes, endpoint->framing());
+    const bool exception = !sent.pdu.isEmpty() && (quint8(sent.pdu.at(0)) & 0x80) != 0;
+    const SimLogEntry::Verdict verdict = exception ? SimLogEntry::Verdict::Exception : SimLogEntry::Verdict::Answered;
+    FaultPlan plan;
+    if (m_faultHook) {
+        SimExchange exchange;
+        exchange.endpoint = endpoint->name();
+        exchange.peer = pending.peer;
+        exchange.framing = endpoint->framing();
+        exchange.unitId = parts.unitId;
+        exchange.routedUnitId = parts.unitId;
+        exchange.transactionId = parts.transactionId;
+        exchange.requestAdu = pending.adu;
+        exchange.requestPdu = parts.pdu;
+        exchange.reply = answer.reply;
+        exchange.responseAdu = bytes;
+        exchange.responseDelayNs = 0; // the device's own time has passed already
+        exchange.responseDelayFixed = true;
+        exchange.receivedNs = pending.receivedNs;
+        exchange.intervalNs = pending.intervalNs;
+        plan = m_faultHook(exchange);
+    } else {
+        plan.chunks.append(ResponseChunk{bytes, 0});
+    }
+    plan.trafficId = pending.trafficId;
+    emitEntry(endpoint, pending.peer, parts.unitId, pending.adu, bytes, verdict, answer.reply.note, plan.faults);
+    noteFaultPlan(endpoint, plan);
+    pending.sink(plan);
 }
 
 } // namespace mbscope

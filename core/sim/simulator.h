@@ -8,11 +8,14 @@
 #include "sim/simendpointoptions.h"
 #include "sim/simexchange.h"
 #include "sim/simlogentry.h"
+#include "sim/simremote.h"
+#include "protocol/adubuilder.h"
 
 #include <QtCore/QByteArrayView>
 #include <QtCore/QHash>
 #include <QtCore/QList>
 #include <QtCore/QObject>
+#include <QtCore/QPointer>
 
 #include <functional>
 #include <map>
@@ -27,6 +30,7 @@ class SimEndpoint;
 class SimProcessor;
 class SimUnit;
 class TrafficLog;
+enum class TrafficVerdict : quint8;
 
 // The built-in device simulator: units (SimUnit, each with its SimProcessor) behind endpoints
 // (SimEndpoint: tcp://, rtu-tcp://, ascii-tcp://, tls://, udp://, rtu-udp://, rtu://, ascii://).
@@ -109,8 +113,22 @@ public:
     // (JournalExchangeReader) joins the pieces into the answer the client's framer made.
     void setTrafficLog(TrafficLog *log);
 
+    // ---- A remote (the inline tap) ----
+    // Requests no longer go to the units but to remote (not owned; nullptr: the units again),
+    // which answers when it can (SimRemote). Checks, logs, the fault hook and the endpoints'
+    // writing stay the simulator's. Delimited endpoints keep their line table.
+    void setRemote(SimRemote *remote) { m_remote = remote; }
+    [[nodiscard]] SimRemote *remote() const { return m_remote; }
+
     // ---- The request path (used by the endpoints; public for tests and fuzzing) ----
-    // One frame cut by the endpoint's framer (or one datagram). Returns what to send: a plan
+    // What the endpoints call: sink gets the plan to execute, at once (the units answer
+    // synchronously) or later (a remote's answer); not at all when the simulator or the endpoint
+    // is gone by then. The endpoint must check that its output still exists when sink runs.
+    using PlanSink = std::function<void(const FaultPlan &plan)>;
+    void takeFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status, const QString &peer,
+                   qint64 receivedNs, qint64 connectedNs, const PlanSink &sink);
+    // One frame cut by the endpoint's framer (or one datagram), answered by the units (the remote
+    // is not asked: takeFrame asks it). Returns what to send: a plan
     // with drop set for silence. connectedNs: when the client's connection opened (the warm-up
     // runs from it); 0: when the endpoint started.
     FaultPlan handleFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status,
@@ -139,6 +157,29 @@ private:
     quint64 log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
                 const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
                 const QStringList &faults = {});
+    // log()'s parts: the request into the traffic log (its id; 0 without a log), the empty answer
+    // record of an unanswered one, and the logged() entry.
+    quint64 logArrival(SimEndpoint *endpoint, const QString &peer, QByteArrayView request, TrafficVerdict verdict, qint64 tNs);
+    void logUnanswered(SimEndpoint *endpoint, quint64 id, bool broadcast, qint64 tNs);
+    void emitEntry(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
+                   const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
+                   const QStringList &faults = {});
+    // The frame checks every request passes first (checksum, MBAP header, a function code):
+    // false, logged, when it is dropped; *out holds its parts.
+    bool acceptModbusFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status, const QString &peer,
+                           const QList<Slot *> &units, AduParts *out);
+    // A request the remote is answering.
+    struct Pending {
+        QPointer<SimEndpoint> endpoint;
+        QString peer;
+        QByteArray adu;
+        AduParts parts;
+        qint64 receivedNs = 0;
+        qint64 intervalNs = -1;
+        quint64 trafficId = 0;
+        PlanSink sink;
+    };
+    void finishForward(const Pending &pending, const SimRemote::Answer &answer);
     void noteFaultPlan(SimEndpoint *endpoint, const FaultPlan &plan);
     [[nodiscard]] quint16 trafficLink(const SimEndpoint *endpoint);
 
@@ -164,6 +205,7 @@ private:
     [[nodiscard]] qint64 intervalSince(const SimEndpoint *endpoint, qint64 receivedNs);
     QList<SimEndpoint *> m_endpoints;
     FaultHook m_faultHook;
+    SimRemote *m_remote = nullptr;
     TrafficLog *m_trafficLog = nullptr;
     QHash<const SimEndpoint *, quint16> m_trafficLinks;
     QHash<quint16, QString> m_trafficPeers; // by link: the client of its last request
