@@ -45,6 +45,12 @@ void CaptureAnalysis::add(const CaptureExchange &exchange)
         return;
     }
     m_overall.add(t);
+    if (exchange.recordedAs != CaptureExchange::RecordedAs::Unknown) {
+        std::unique_ptr<Statistics> &leg = exchange.recordedAs == CaptureExchange::RecordedAs::Server ? m_answered : m_sent;
+        if (!leg)
+            leg = std::make_unique<Statistics>(m_spec);
+        leg->add(t);
+    }
     if (t.status != TransactionStatus::Late) {
         ++c.transactions;
         if (t.status == TransactionStatus::Ok)
@@ -138,6 +144,15 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
         conversations.append(conversation);
     }
     o.insert(QStringLiteral("conversations"), conversations);
+    if (hasTwoLegs()) {
+        QJsonArray legs;
+        for (const auto &[name, statistics] : {std::pair{"answered", m_answered.get()}, std::pair{"sent", m_sent.get()}}) {
+            QJsonObject leg = statistics->toJson();
+            leg.insert(QStringLiteral("leg"), QString::fromLatin1(name));
+            legs.append(leg);
+        }
+        o.insert(QStringLiteral("legs"), legs);
+    }
     QJsonArray functions;
     for (const auto &[code, statistics] : m_byFunction) {
         QJsonObject f = statistics->toJson();
@@ -228,6 +243,13 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
         tables[1].append(header(QStringLiteral("UNIT")));
         for (const auto &[id, s] : m_byUnit)
             tables[1].append(row(QString::number(id), *s));
+        if (hasTwoLegs()) {
+            // The tap's two legs: what its masters saw (their requests it answered) and what the
+            // devices took (the requests it sent them); the difference is the tap's own time.
+            tables.append(QList<QStringList>{header(QStringLiteral("LEG"))});
+            tables[2].append(row(QStringLiteral("answered (masters)"), *m_answered));
+            tables[2].append(row(QStringLiteral("sent (devices)"), *m_sent));
+        }
         QList<int> widths(tables[0].constFirst().size(), 0);
         for (const QList<QStringList> &table : tables) {
             for (const QStringList &cells : table) {
@@ -264,6 +286,11 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
                             && metadata.role == TrafficMetadata::Role::Server;
         from = server ? QStringLiteral("the request's arrival (as the server read it)") : QStringLiteral("the start of the request's write");
         to = server ? QStringLiteral("the write of the answer's last piece") : QStringLiteral("the read that brought the answer's first byte");
+        if (hasTwoLegs()) {
+            from = QStringLiteral("answered: the request's arrival (as the tap read it) to the write of the answer's last piece; "
+                                  "sent: the start of the request's write");
+            to = QStringLiteral("the read that brought the answer's first byte");
+        }
     }
     out += m_overall.summary(from, to);
     if (m_unmatched > 0)

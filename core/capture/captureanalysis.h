@@ -44,10 +44,12 @@ public:
     // "request_gaps", "request_bytes_lost", "response_gaps", "response_bytes_lost",
     // "joined_mid_stream"}], "functions": [{"function", "name", ...Statistics::toJson's keys}],
     // "units": [{"unit", ...Statistics::toJson's keys}] (the request's unit id, ascending),
+    // "legs" (a journal holding both the requests its recorder answered and those it sent: the
+    // inline tap's): [{"leg": "answered"|"sent", ...Statistics::toJson's keys}],
     // "problems": [...], "problem_count".
     [[nodiscard]] QJsonObject toJson(const ExchangeSourceReport &report) const;
     // For a terminal: the source, its conversations, a table per function code and one per unit
-    // id (counts; min, mean, median, p95, p99, max latency in one unit, "-" without answers), the
+    // id (and, for the tap's journal, one per leg) (counts; min, mean, median, p95, p99, max latency in one unit, "-" without answers), the
     // statistics as poll prints them, then the problems found.
     [[nodiscard]] QString summary(const ExchangeSourceReport &report) const;
 
@@ -63,6 +65,11 @@ private:
     Statistics m_overall;
     std::map<quint8, std::unique_ptr<Statistics>> m_byFunction;
     std::map<quint8, std::unique_ptr<Statistics>> m_byUnit; // the request's unit id (RTU/ASCII address, MBAP unit id)
+    // Journals: the requests the recorder answered and those it sent. Both only in the inline
+    // tap's journal, which then gets a table per leg: masters to the tap, the tap to devices.
+    std::unique_ptr<Statistics> m_answered;
+    std::unique_ptr<Statistics> m_sent;
+    [[nodiscard]] bool hasTwoLegs() const { return m_answered && m_sent; }
     std::vector<ConversationCounts> m_conversations;
     quint64 m_unmatched = 0;
     quint64 m_unansweredAtEnd = 0;

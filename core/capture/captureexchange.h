@@ -18,7 +18,12 @@ namespace mbscope {
 // are not fed those either, and replay leaves them out.
 struct CaptureExchange {
     enum class Kind : quint8 { Transaction, UnmatchedResponse, Unanswered };
+    // Journals: whether the recorder sent the request (a client: poll, read...) or answered it
+    // (a server: simulate). The inline tap's journal holds both: its masters' requests, which it
+    // answered, and its own to the devices. Captures: Unknown (the capture was not a party).
+    enum class RecordedAs : quint8 { Unknown, Client, Server };
     Kind kind = Kind::Transaction;
+    RecordedAs recordedAs = RecordedAs::Unknown;
     quint32 conversation = 0;   // CaptureConversation::id, or the journal's link id
     Framing framing = Framing::Tcp;
     quint64 requestPacket = 0;  // packet number in the capture (journal: sequence + 1); 0 when none

@@ -274,14 +274,6 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
         announced.push_back(false);
         current.insert(note.link, c.id);
     };
-    const auto push = [&](quint16 link) -> Slot & {
-        Slot &s = queue.emplace_back();
-        s.exchange.conversation = conversationOf(link);
-        s.exchange.framing = framingOf(link);
-        s.exchange.transaction.id = firstSlot + queue.size() - 1;
-        return s;
-    };
-
     // A server's journal (mbscope simulate, replay --serve) holds its requests In and its
     // answers Out: read as its clients saw them, so that one pairing serves both.
     TrafficMetadata metadata;
@@ -295,6 +287,16 @@ JournalExchangeReader::Result JournalExchangeReader::read(const QString &path, c
     for (qsizetype i = 0; i < names.links.size(); ++i)
         servedLinks.append(serverJournal && (metadata.listen.isEmpty() || metadata.listen.contains(names.links.at(i))));
     const auto served = [&servedLinks](quint16 link) { return link < servedLinks.size() && servedLinks.at(link); };
+
+    const auto push = [&](quint16 link) -> Slot & {
+        Slot &s = queue.emplace_back();
+        s.exchange.conversation = conversationOf(link);
+        s.exchange.framing = framingOf(link);
+        s.exchange.recordedAs = served(link) ? CaptureExchange::RecordedAs::Server : CaptureExchange::RecordedAs::Client;
+        s.exchange.transaction.id = firstSlot + queue.size() - 1;
+        return s;
+    };
+
 
     // A server writes an answer as it leaves, and a fault rule may send it in pieces (chunks,
     // trickle: FaultPlan's ResponseChunks, each written after its delay) or twice (duplicate):

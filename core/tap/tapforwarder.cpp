@@ -114,7 +114,7 @@ void TapForwarder::forward(const Request &request, Done done)
         ++m_counters.noRoute;
         // V1.1b3 section 7: 0A, gateway path unavailable.
         done(nothing(request.framing, function, 0x0A,
-                     QStringLiteral("no route serves unit %1: exception 0A (gateway path unavailable)").arg(request.unitId)));
+                     QStringLiteral("no route serves unit %1").arg(request.unitId)));
         return;
     }
     if (m_settings.readOnly) {

@@ -361,6 +361,23 @@ void TestCliTap::recordsBothLegs()
     QVERIFY2(o.value(QStringLiteral("ok")).toInt() == 10, analyzed.out);
     QVERIFY2(o.value(QStringLiteral("exceptions")).toInt() == 2, analyzed.out);
     QVERIFY2(o.value(QStringLiteral("timeouts")).toInt() == 0, analyzed.out);
+    // A table per leg: the masters' requests the tap answered, and those it sent the device. A
+    // master's latency holds the device's (arrival to answer written encloses write to answer
+    // read), so the answered leg's is never the shorter.
+    const QJsonArray legs = o.value(QStringLiteral("legs")).toArray();
+    QVERIFY2(legs.size() == 2, analyzed.out);
+    const QJsonObject answered = legs.at(0).toObject();
+    const QJsonObject sent = legs.at(1).toObject();
+    QCOMPARE(answered.value(QStringLiteral("leg")).toString(), QStringLiteral("answered"));
+    QCOMPARE(sent.value(QStringLiteral("leg")).toString(), QStringLiteral("sent"));
+    QCOMPARE(answered.value(QStringLiteral("count")).toInt(), 6);
+    QCOMPARE(sent.value(QStringLiteral("count")).toInt(), 6);
+    const double answeredMin = answered.value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("min")).toDouble();
+    const double sentMin = sent.value(QStringLiteral("latency_us")).toObject().value(QStringLiteral("min")).toDouble();
+    QVERIFY2(answeredMin >= sentMin && sentMin > 0, analyzed.out);
+    const CliResult text = runMbscope({QStringLiteral("analyze"), journal});
+    QVERIFY2(text.outText().contains(QLatin1String("answered (masters)")) && text.outText().contains(QLatin1String("sent (devices)")),
+             text.describe());
 }
 
 void TestCliTap::mbpollThroughTheTap()
