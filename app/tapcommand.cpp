@@ -119,7 +119,7 @@ int runTap(const QStringList &arguments)
                                            QStringLiteral("Response timeout of a forwarded request (default 1s), unless its route's URL gives timeout=."),
                                            QStringLiteral("TIME"));
     const QCommandLineOption retriesOption(QStringLiteral("retries"),
-                                           QStringLiteral("Further attempts after a timeout or a damaged answer (default 0)."), QStringLiteral("N"));
+                                           QStringLiteral("Further attempts of a read after a timeout or a damaged answer (default 0); a write is sent once, as its master sent it."), QStringLiteral("N"));
     const QCommandLineOption noAnswerOption(QStringLiteral("no-answer"),
                                             QStringLiteral("What a master gets when its device does not answer (exception 0B) or no route serves "
                                                            "its unit (exception 0A): auto (exceptions to Modbus/TCP and UDP masters, silence to "

@@ -135,7 +135,9 @@ void TapForwarder::forward(const Request &request, Done done)
     RequestItem item = RequestItem::fromBytes(frameFor(deviceFraming, request.pdu, deviceUnit), deviceFraming);
     item.engineNumbered = item.rule == MatchRule::Mbap;
     item.timeoutMs = route->target.responseTimeoutMs > 0 ? route->target.responseTimeoutMs : m_settings.timeoutMs;
-    item.retries = m_settings.retries;
+    // A write goes once, as its master sent it: a retry after a timeout could apply it twice
+    // (the device may have acted and only its answer got lost). Reads are retried.
+    item.retries = RecordedWrite::of(0, request.unitId, request.pdu) ? 0 : m_settings.retries;
     Waiting waiting;
     waiting.done = std::move(done);
     waiting.masterFraming = request.framing;

@@ -26,7 +26,8 @@ struct TapSettings {
 
     QList<TapRoute> routes;    // the first that serves a unit takes it
     int timeoutMs = 1000;      // response timeout of a request, unless its route's URL gives timeout=
-    int retries = 0;           // further attempts after a timeout or an unusable answer
+    int retries = 0;           // further attempts after a timeout or an unusable answer; reads only:
+                               // a write is sent once, as its master sent it
     NoAnswer noAnswer = NoAnswer::Auto;
     // Writes (and the Diagnostics sub-functions that change a device, RecordedWrite) are not
     // forwarded: a tap on a production line cannot change a device by accident.

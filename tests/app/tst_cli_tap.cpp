@@ -72,6 +72,7 @@ private Q_SLOTS:
     void readOnlyRefusesWrites();
     void writesPassWhenNotReadOnly();
     void faultsOnTheWay();
+    void retriesReadsNeverWrites();
     void recordsBothLegs();
     void mbpollThroughTheTap();
     void pymodbusBehindTheTap();
@@ -317,6 +318,36 @@ void TestCliTap::faultsOnTheWay()
     QVERIFY2(coils.status == QLatin1String("ok"), coils.run.describe());
     const QString lines = QString::fromUtf8(tap.stop());
     QVERIFY2(lines.contains(QLatin1String("changed by fault (busy)")), qPrintable(lines));
+}
+
+void TestCliTap::retriesReadsNeverWrites()
+{
+    // A device that drops every 04 and 06: the tap tries a read three times (--retries 2) but
+    // sends the master's write once, since the device may have acted on it.
+    const QString faults = m_dir.filePath(QStringLiteral("drops.json"));
+    QFile file(faults);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"seed": 1, "rules": [{"kind": "drop", "functions": ["0x04", "0x06"]}]})");
+    file.close();
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("libmodbus-unit-test"), QStringLiteral("--listen"),
+                        QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--faults"), faults},
+                       &error),
+             qPrintable(error));
+    Background tap;
+    QVERIFY2(startTap(tap, {QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--target"), sim.url(),
+                            QStringLiteral("--timeout"), QStringLiteral("100ms"), QStringLiteral("--retries"), QStringLiteral("2")},
+                      &error),
+             qPrintable(error));
+    QCOMPARE(sendPdu(tap.url(), 17, QStringLiteral("04 01 08 00 01"), {QStringLiteral("--timeout"), QStringLiteral("2s")}).status,
+             QStringLiteral("exception"));
+    QCOMPARE(sendPdu(tap.url(), 17, QStringLiteral("06 01 60 00 07"), {QStringLiteral("--timeout"), QStringLiteral("2s")}).status,
+             QStringLiteral("exception"));
+    tap.stop();
+    const QString device = QString::fromUtf8(sim.stop());
+    QVERIFY2(device.count(QLatin1String("04 Read Input Registers")) == 3, qPrintable(device));
+    QVERIFY2(device.count(QLatin1String("06 Write Single Register")) == 1, qPrintable(device));
 }
 
 void TestCliTap::recordsBothLegs()
