@@ -4,6 +4,7 @@
 
 #include "cli.h"
 #include "faultswatcher.h"
+#include "interruptwatcher.h"
 #include "readyfile.h"
 #include "recordoptions.h"
 #include "simulatesession.h"
@@ -16,17 +17,12 @@
 #include <QtCore/QCoreApplication>
 #include <QtCore/QEventLoop>
 #include <QtCore/QFileInfo>
-#include <QtCore/QSocketNotifier>
 #include <QtCore/QTextStream>
 #include <QtCore/QTimer>
 
 #include <chrono>
-#include <csignal>
-#include <functional>
 #include <memory>
 #include <optional>
-#include <sys/socket.h>
-#include <unistd.h>
 
 namespace mbscope::app {
 
@@ -34,56 +30,6 @@ namespace {
 
 constexpr int kExitOk = 0;
 constexpr int kExitUsage = 2;
-
-// SIGINT/SIGTERM reach the event loop through a socket pair (a signal handler may only write).
-int g_signalFds[2] = {-1, -1};
-
-extern "C" void onStopSignal(int)
-{
-    const char byte = 1;
-    if (g_signalFds[0] >= 0)
-        [[maybe_unused]] const auto written = ::write(g_signalFds[0], &byte, 1);
-}
-
-class StopSignals
-{
-public:
-    explicit StopSignals(const std::function<void()> &onStop)
-    {
-        if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalFds) != 0)
-            return;
-        m_notifier = std::make_unique<QSocketNotifier>(g_signalFds[1], QSocketNotifier::Read);
-        QObject::connect(m_notifier.get(), &QSocketNotifier::activated, m_notifier.get(), [onStop] {
-            char byte = 0;
-            [[maybe_unused]] const auto got = ::read(g_signalFds[1], &byte, 1);
-            onStop();
-        });
-        struct sigaction action = {};
-        action.sa_handler = onStopSignal;
-        sigemptyset(&action.sa_mask);
-        action.sa_flags = SA_RESTART;
-        ::sigaction(SIGINT, &action, &m_oldInt);
-        ::sigaction(SIGTERM, &action, &m_oldTerm);
-    }
-    ~StopSignals()
-    {
-        if (g_signalFds[0] < 0)
-            return;
-        ::sigaction(SIGINT, &m_oldInt, nullptr);
-        ::sigaction(SIGTERM, &m_oldTerm, nullptr);
-        m_notifier.reset();
-        ::close(g_signalFds[0]);
-        ::close(g_signalFds[1]);
-        g_signalFds[0] = g_signalFds[1] = -1;
-    }
-    StopSignals(const StopSignals &) = delete;
-    StopSignals &operator=(const StopSignals &) = delete;
-
-private:
-    std::unique_ptr<QSocketNotifier> m_notifier;
-    struct sigaction m_oldInt = {};
-    struct sigaction m_oldTerm = {};
-};
 
 void listProfiles(QTextStream &out)
 {
@@ -274,11 +220,8 @@ int runSimulate(const QStringList &arguments)
     // Ctrl-C and SIGTERM are caught before the header says the simulator listens: a stop sent
     // right after "listening" ends it cleanly, with its summary, instead of killing it.
     QEventLoop loop;
-    bool interrupted = false;
-    StopSignals stopSignals([&] {
-        interrupted = true;
-        loop.quit();
-    });
+    InterruptWatcher interrupts;
+    QObject::connect(&interrupts, &InterruptWatcher::interrupted, &loop, &QEventLoop::quit);
     out << "simulating " << profile.name << " (" << profile.source << ", seed " << profile.seed << ")\n";
     for (const QString &line : session.endpointDescriptions())
         out << "listening " << line << '\n';
@@ -302,7 +245,7 @@ int runSimulate(const QStringList &arguments)
     loop.exec();
     session.stop();
     session.setTrafficLog(nullptr);
-    out << (interrupted ? "interrupted: " : "stopped: ") << session.summary() << Qt::endl;
+    out << (interrupts.isInterrupted() ? "interrupted: " : "stopped: ") << session.summary() << Qt::endl;
     finishRecording(recording, err);
     return kExitOk;
 }
