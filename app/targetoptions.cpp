@@ -20,7 +20,11 @@ TargetOptions::TargetOptions()
                QStringLiteral("The device: tcp://host:502, rtu-tcp://host:4001, ascii-tcp://host:port, udp://host:502, "
                               "rtu-udp://host:port, rtu:///dev/ttyUSB0?baud=9600&parity=E, ascii:///dev/ttyUSB0?..., "
                               "tls://host:802?cert=...&key=...&ca=...; any stream or serial link also takes "
-                              "?framing=delimited&start=24&end=23."),
+                              "?framing=delimited&start=24&end=23. A device that connects to you (cellular units, "
+                              "some gateways): tcp://0.0.0.0:5020?mode=listen (also rtu-tcp, ascii-tcp, tls) waits up "
+                              "to connect_timeout= for it and uses its connection; a second connection while one is "
+                              "in use replaces it (busy=replace, the default), waits for it to end (busy=queue) or "
+                              "is closed at once (busy=refuse)."),
                QStringLiteral("url"))
     , m_timeout(QStringLiteral("timeout"),
                 QStringLiteral("How long to wait for each answer: 1000ms, 2s... (default: the URL's timeout=, else 1000 ms)."),

@@ -27,7 +27,7 @@ constexpr int kMaxTimeoutMs = 24 * 3600 * 1000;
 constexpr qint64 kMaxTurnaroundUs = 10'000'000;
 
 // Which links an option belongs to, for the message when it is used on another.
-enum class Scope : quint8 { Any, Network, Serial, Tls };
+enum class Scope : quint8 { Any, Network, Stream, Serial, Tls };
 
 struct Option {
     const char *key;
@@ -40,7 +40,7 @@ constexpr Option kOptions[] = {
     {"cert", Scope::Tls},         {"key", Scope::Tls},               {"ca", Scope::Tls},
     {"connect_timeout", Scope::Network}, {"timeout", Scope::Any},    {"framing", Scope::Any},
     {"start", Scope::Any},        {"end", Scope::Any},               {"checksum", Scope::Any},
-    {"display", Scope::Any},
+    {"display", Scope::Any},      {"mode", Scope::Stream},           {"busy", Scope::Stream},
 };
 
 bool inScope(Scope scope, LinkKind kind)
@@ -49,6 +49,8 @@ bool inScope(Scope scope, LinkKind kind)
     switch (scope) {
     case Scope::Any: return true;
     case Scope::Network: return !serial;
+    case Scope::Stream: return kind == LinkKind::Tcp || kind == LinkKind::RtuTcp || kind == LinkKind::AsciiTcp
+                            || kind == LinkKind::Tls;
     case Scope::Serial: return serial;
     case Scope::Tls: return kind == LinkKind::Tls;
     }
@@ -60,6 +62,7 @@ QString scopeText(Scope scope)
     switch (scope) {
     case Scope::Any: return QStringLiteral("every link");
     case Scope::Network: return QStringLiteral("network links (tcp, rtu-tcp, ascii-tcp, udp, rtu-udp, tls)");
+    case Scope::Stream: return QStringLiteral("stream links (tcp, rtu-tcp, ascii-tcp, tls)");
     case Scope::Serial: return QStringLiteral("serial links (rtu, ascii)");
     case Scope::Tls: return QStringLiteral("tls links");
     }
@@ -300,6 +303,24 @@ QString applyOption(const QString &key, const QString &value, LinkUrl &url)
             return QStringLiteral("checksum '%1' is not none, sum or xor").arg(value);
         return {};
     }
+    if (key == u"mode") {
+        const QString v = value.toLower();
+        if (v != u"connect" && v != u"listen")
+            return QStringLiteral("mode '%1' is not connect or listen (listen: wait for the device to connect to this address)")
+                .arg(value);
+        url.listen = v == u"listen";
+        return {};
+    }
+    if (key == u"busy") {
+        const QString v = value.toLower();
+        for (BusyPolicy policy : {BusyPolicy::Replace, BusyPolicy::Queue, BusyPolicy::Refuse}) {
+            if (v == LinkUrl::busyPolicyName(policy)) {
+                url.busy = policy;
+                return {};
+            }
+        }
+        return QStringLiteral("busy '%1' is not replace, queue or refuse").arg(value);
+    }
     if (key == u"display") {
         const QString v = value.toLower();
         if (v != u"text" && v != u"hex")
@@ -310,7 +331,27 @@ QString applyOption(const QString &key, const QString &value, LinkUrl &url)
     return QStringLiteral("unknown option '%1'").arg(key);
 }
 
-QString parseOptions(QStringView query, LinkUrl &url)
+// A listening link (mode=listen) binds an address of this machine: a host name is not one.
+QString checkListen(const QSet<QString> &seen, const LinkUrl &url, LinkUse use)
+{
+    if (use == LinkUse::Listen && seen.contains(QStringLiteral("mode")))
+        return QStringLiteral("'mode' is an option of --target URLs, not of an address to listen on (this one listens already)");
+    if (!url.listen) {
+        if (seen.contains(QStringLiteral("busy")))
+            return QStringLiteral("'busy' needs mode=listen");
+        return {};
+    }
+    if (QHostAddress(url.host).isNull())
+        return QStringLiteral("mode=listen needs an address of this machine to listen on, not the host name '%1' "
+                              "(0.0.0.0 for every IPv4 interface, [::] for every IPv6 interface, 127.0.0.1 for this machine only)")
+            .arg(url.host);
+    if (url.kind == LinkKind::Tls && url.tls.certificate.isEmpty())
+        return QStringLiteral("tls with mode=listen needs cert=FILE and key=FILE: mbscope is the TLS server of the device's "
+                              "connection");
+    return {};
+}
+
+QString parseOptions(QStringView query, LinkUrl &url, LinkUse use)
 {
     QSet<QString> seen;
     const QString scheme = LinkUrl::schemeName(url.kind);
@@ -354,6 +395,8 @@ QString parseOptions(QStringView query, LinkUrl &url)
     if (url.tls.certificate.isEmpty() != url.tls.privateKey.isEmpty())
         return url.tls.certificate.isEmpty() ? QStringLiteral("key without cert: mutual TLS needs both cert=FILE and key=FILE")
                                              : QStringLiteral("cert without key: mutual TLS needs both cert=FILE and key=FILE");
+    if (const QString error = checkListen(seen, url, use); !error.isEmpty())
+        return error;
     // Serial Line V1.02, 2.5.1: every RTU character carries 8 data bits; ASCII needs at least 7.
     if (url.kind == LinkKind::Rtu && url.serial.dataBits != 8 && !url.delimited.enabled)
         return QStringLiteral("data=%1 cannot carry RTU frames: RTU needs data=8 (Serial Line V1.02, 2.5.1)")
@@ -371,6 +414,16 @@ QString LinkUrl::knownSchemes()
     for (const Scheme &s : kSchemes)
         names.append(QLatin1String(s.name));
     return names.join(QStringLiteral(", "));
+}
+
+QString LinkUrl::busyPolicyName(BusyPolicy policy)
+{
+    switch (policy) {
+    case BusyPolicy::Replace: return QStringLiteral("replace");
+    case BusyPolicy::Queue: return QStringLiteral("queue");
+    case BusyPolicy::Refuse: return QStringLiteral("refuse");
+    }
+    return QStringLiteral("replace");
 }
 
 QString LinkUrl::schemeName(LinkKind kind)
@@ -421,7 +474,7 @@ LinkUrl::Result LinkUrl::parse(QStringView input, LinkUse use)
     } else if (const QString error = parseHostPort(authority, url, use); !error.isEmpty()) {
         return fail(error);
     }
-    if (const QString error = parseOptions(query, url); !error.isEmpty())
+    if (const QString error = parseOptions(query, url, use); !error.isEmpty())
         return fail(error);
     return Result{url, {}};
 }
@@ -473,6 +526,10 @@ QString LinkUrl::toString() const
             add("ca", encode(tls.caCertificates));
         if (connectTimeoutMs != kDefaultConnectTimeoutMs)
             add("connect_timeout", QString::number(connectTimeoutMs) + QStringLiteral("ms"));
+        if (listen)
+            add("mode", QStringLiteral("listen"));
+        if (listen && busy != BusyPolicy::Replace)
+            add("busy", busyPolicyName(busy));
     }
     if (responseTimeoutMs >= 0)
         add("timeout", QString::number(responseTimeoutMs) + QStringLiteral("ms"));

@@ -30,6 +30,17 @@ enum class LinkKind : quint8 {
     Tls,      // tls://host:802?cert=...&key=...&ca=...  (MODBUS/TCP Security, mutual TLS)
 };
 
+// What a listening link (mode=listen) does with a connection that comes while one is in use
+// (busy=...): Replace (the default) closes the one in use, fails what was in flight on it and
+// uses the new one from the next request, so a device that dials again after a silent loss (a
+// cellular unit's half-open connection) is back at once; Queue keeps the new one waiting (at
+// most 8) until the one in use ends; Refuse closes the new one at once.
+enum class BusyPolicy : quint8 {
+    Replace,
+    Queue,
+    Refuse,
+};
+
 struct SerialSettings {
     QString device;     // /dev/ttyUSB0 (or a name such as COM3)
     int baud = 9600;
@@ -63,6 +74,14 @@ struct TlsSettings {
 //            turnaround=10ms (units ns, us, ms, s; a bare number is ms) or turnaround_us=10000
 //   tls:     cert=FILE  key=FILE (both or neither)  ca=FILE
 //   network: connect_timeout=3000ms (bare number: ms; default 3000)
+//   stream (tcp, rtu-tcp, ascii-tcp, tls):
+//            mode=connect|listen  listen: a reverse connection. mbscope listens on host:port (an
+//            address of this machine: 0.0.0.0 for every IPv4 interface) and, as master, uses the
+//            connection the device opens (cellular units and gateways that dial out to a
+//            server); the connect timeout bounds the wait for it. See TcpLink.
+//            busy=replace|queue|refuse  (needs mode=listen) a second connection while one is in
+//            use: see BusyPolicy. tls with mode=listen needs cert= and key= (mbscope is the TLS
+//            server then).
 //   any:     timeout=1000ms  the response timeout for requests on this link (the engine's
 //            default when absent)
 //            framing=delimited  start=HH  end=HH  checksum=none|sum|xor  display=text|hex
@@ -89,9 +108,13 @@ public:
     DelimitedFraming delimited;
     int connectTimeoutMs = 3000;
     int responseTimeoutMs = -1; // -1: not given (the engine's default applies)
+    bool listen = false;        // mode=listen: wait for the device to connect to host:port
+    BusyPolicy busy = BusyPolicy::Replace;
 
     [[nodiscard]] bool isSerial() const { return kind == LinkKind::Rtu || kind == LinkKind::Ascii; }
     [[nodiscard]] bool isDatagram() const { return kind == LinkKind::Udp || kind == LinkKind::RtuUdp; }
+    // "replace", "queue", "refuse"
+    [[nodiscard]] static QString busyPolicyName(BusyPolicy policy);
     // The Modbus framing the link carries (Rtu for rtu-tcp, rtu-udp and rtu://; Tcp for tcp and tls;
     // Udp for udp). With delimited.enabled the link carries delimited frames instead and this is
     // only what the scheme would have carried.

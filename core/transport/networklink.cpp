@@ -33,13 +33,11 @@ void NetworkLink::close()
 {
     if (state() == State::Closed)
         return;
-    teardown();
+    closeOnRequest();
     setClosed(QStringLiteral("closed on request"));
 }
 
-namespace {
-
-QString endpointText(const QHostAddress &address, quint16 port)
+QString NetworkLink::endpointText(const QHostAddress &address, quint16 port)
 {
     bool v4 = false;
     const quint32 ipv4 = address.toIPv4Address(&v4); // an IPv4-mapped IPv6 address as IPv4
@@ -47,8 +45,6 @@ QString endpointText(const QHostAddress &address, quint16 port)
         return QStringLiteral("%1:%2").arg(QHostAddress(ipv4).toString()).arg(port);
     return QStringLiteral("[%1]:%2").arg(address.toString()).arg(port);
 }
-
-} // namespace
 
 void NetworkLink::noteEndpoints(const QAbstractSocket &socket)
 {

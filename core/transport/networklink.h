@@ -5,6 +5,7 @@
 #include <QtCore/QTimer>
 
 class QAbstractSocket;
+class QHostAddress;
 
 namespace mbscope {
 
@@ -23,6 +24,8 @@ public:
     // frames went over (trafficjournal.h, the endpoints note).
     [[nodiscard]] const QString &localEndpoint() const { return m_localEndpoint; }
     [[nodiscard]] const QString &peerEndpoint() const { return m_peerEndpoint; }
+    // "127.0.0.1:40312" (an IPv4-mapped IPv6 address as IPv4), "[::1]:502".
+    [[nodiscard]] static QString endpointText(const QHostAddress &address, quint16 port);
 
 protected:
     explicit NetworkLink(const LinkUrl &url, QObject *parent = nullptr);
@@ -33,6 +36,9 @@ protected:
     virtual void teardown() = 0;
     // The connect timeout ran out while the state was Opening.
     virtual void onConnectTimeout() = 0;
+    // close() on request: teardown(), unless the link keeps something for its next open (a
+    // reverse link parks its device's connection, see TcpLink).
+    virtual void closeOnRequest() { teardown(); }
 
     void startConnectTimer() { m_connectTimer.start(url().connectTimeoutMs); }
     void stopConnectTimer() { m_connectTimer.stop(); }

@@ -2,6 +2,8 @@
 
 #include "directsocketnotifier.h"
 #include "monotonicclock.h"
+#include "reverselistener.h"
+#include "time/duration.h"
 
 #include <QtNetwork/QHostAddress>
 #include <QtNetwork/QTcpSocket>
@@ -64,14 +66,21 @@ void TcpLink::startOpen()
         reportError(failure.kind, failure.what);
         return;
     }
-    m_socket = createSocket();
     m_submitted = 0;
     m_marks.clear();
-    connect(m_socket, &QAbstractSocket::connected, this, [this] {
-        m_socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        noteEndpoints(*m_socket);
-        onTcpConnected();
-    });
+    if (url().listen) {
+        startWaiting();
+        return;
+    }
+    m_socket = createSocket();
+    watchSocket();
+    startConnectTimer();
+    startConnecting();
+}
+
+void TcpLink::watchSocket()
+{
+    connect(m_socket, &QAbstractSocket::connected, this, &TcpLink::onSocketConnected);
     connect(m_socket, &QIODevice::readyRead, this, &TcpLink::onReadyRead);
     connect(m_socket, &QAbstractSocket::errorOccurred, this, &TcpLink::onSocketError);
     connect(m_socket, &QAbstractSocket::disconnected, this, &TcpLink::onDisconnected);
@@ -79,8 +88,13 @@ void TcpLink::startOpen()
         if (!m_inWrite)
             reportWritten();
     });
-    startConnectTimer();
-    startConnecting();
+}
+
+void TcpLink::onSocketConnected()
+{
+    m_socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+    noteEndpoints(*m_socket);
+    onTcpConnected();
 }
 
 QTcpSocket *TcpLink::createSocket()
@@ -143,6 +157,9 @@ void TcpLink::establish()
 void TcpLink::teardown()
 {
     stopConnectTimer();
+    m_awaitingDevice = false;
+    if (m_listener)
+        m_listener->setInUse(false);
     m_marks.clear();
     m_where.clear();
     if (m_fd >= 0) {
@@ -162,6 +179,19 @@ void TcpLink::teardown()
     // whatever is still pending.
     socket->disconnectFromHost();
     socket->deleteLater();
+}
+
+void TcpLink::closeOnRequest()
+{
+    // A reverse link lets go of its device's connection without ending it: the next open() takes
+    // it again (TLS cannot hand its session over: it closes).
+    if (m_listener && m_fd >= 0) {
+        m_readNotifier->setEnabled(false);
+        m_writeNotifier->setEnabled(false);
+        m_unsent.clear();
+        m_listener->park(std::exchange(m_fd, -1));
+    }
+    teardown();
 }
 
 void TcpLink::fail(const Failure &failure)
@@ -365,6 +395,11 @@ QString TcpLink::where() const
 {
     if (!m_where.isEmpty())
         return m_where;
+    if (url().listen) {
+        if (m_socket && !m_socket->peerAddress().isNull())
+            return QStringLiteral("the device at ") + endpointText(m_socket->peerAddress(), m_socket->peerPort());
+        return QStringLiteral("the device");
+    }
     QString text = url().address();
     if (m_socket && !m_socket->peerAddress().isNull()) {
         const QString peer = m_socket->peerAddress().toString();
@@ -440,9 +475,16 @@ void TcpLink::onDisconnected()
 
 void TcpLink::onConnectTimeout()
 {
+    const int ms = url().connectTimeoutMs;
+    if (!m_socket && url().listen) {
+        fail({LinkError::Kind::Timeout,
+              QStringLiteral("no device connected to %1 within %2 (connect timeout): the device must connect to this address "
+                             "and port")
+                  .arg(url().address(), formatDuration(qint64(ms) * Duration::Millisecond))});
+        return;
+    }
     if (!m_socket)
         return;
-    const int ms = url().connectTimeoutMs;
     QString what;
     switch (m_socket->state()) {
     case QAbstractSocket::HostLookupState:

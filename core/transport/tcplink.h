@@ -14,6 +14,8 @@ QT_END_NAMESPACE
 
 namespace mbscope {
 
+class ReverseListener;
+
 // A TCP stream: tcp://, rtu-tcp://, ascii-tcp:// (and the base of tls://). Nagle's algorithm is
 // off (TCP_NODELAY), so that a request leaves at once instead of waiting for more bytes.
 // QTcpSocket looks the host up and connects (its errors and timeouts name what went wrong); once
@@ -28,6 +30,18 @@ namespace mbscope {
 // Received bytes carry the clock read just before the recv() that took them.
 // TLS keeps its QSslSocket throughout (its bytes must go through the TLS layer).
 // A new socket is made at each open(), so that nothing of a lost connection leaks into the next.
+//
+// Reverse connection (mode=listen): open() listens on the URL's address (from the first open()
+// until the link is destroyed, see ReverseListener) and the link opens when a device connects
+// there; the connect timeout bounds the wait ("no device connected to 0.0.0.0:5020 within 3 s").
+// From then on the link is master on that connection as on any other. A lost connection closes
+// the link as usual; the next open() takes the next connection the device makes (one that came
+// meanwhile at once). close() on request does not end the device's connection (it dials out at
+// its own pace, and a scan or a watch closes and opens again between its phases): the
+// connection is parked for the next open(), which first discards any bytes that came meanwhile.
+// TLS connections are closed instead (their session cannot be parked). A connection that comes
+// while one is held follows the URL's busy= policy (BusyPolicy); with replace, the one in use is
+// lost (errorOccurred, closed) and the next open() takes the new one.
 class TcpLink : public NetworkLink
 {
     Q_OBJECT
@@ -70,6 +84,14 @@ private:
 
     void startOpen() override;
     void teardown() override;
+    void closeOnRequest() override;
+    // The signals of a new socket (connecting, or accepted).
+    void watchSocket();
+    void onSocketConnected();
+    // Reverse connection: listen, and take a waiting connection if there is one.
+    void startWaiting();
+    void acceptWaiting();
+    void onDeviceWaiting(const QString &peer);
     void fail(const Failure &failure);
     // Plain TCP once connected: a duplicate of the socket's descriptor replaces the QTcpSocket.
     [[nodiscard]] bool takeDescriptor();
@@ -86,6 +108,8 @@ private:
     void onConnectTimeout() override;
 
     QTcpSocket *m_socket = nullptr; // while opening, and throughout for TLS
+    ReverseListener *m_listener = nullptr; // mode=listen, from the first open(); a child
+    bool m_awaitingDevice = false;          // mode=listen: open() waits for a connection
     int m_fd = -1;                  // plain TCP once open
     DescriptorNotifier *m_readNotifier;  // children, so that moveToThread() takes them along
     DescriptorNotifier *m_writeNotifier;

@@ -101,6 +101,12 @@ void TlsLink::startConnecting()
     static_cast<QSslSocket *>(socket())->connectToHostEncrypted(url().host, url().port);
 }
 
+void TlsLink::onTcpConnected()
+{
+    if (url().listen)
+        static_cast<QSslSocket *>(socket())->startServerEncryption();
+}
+
 qint64 TlsLink::acceptedBytes() const
 {
     const auto *ssl = static_cast<const QSslSocket *>(socket());

@@ -13,6 +13,10 @@ namespace mbscope {
 // (ca=; the system's CAs when absent) and name the host of the URL. The files are read at each
 // open(), so a renewed certificate is used on the next connection. The link is open once the
 // handshake has finished; the connect timeout covers lookup, TCP connect and handshake.
+// With mode=listen (a device that connects to us, see TcpLink) mbscope is the TLS server of the
+// device's connection: cert= and key= are the server's, and the device must present a
+// certificate that chains to ca= (the system's CAs when absent); the connect timeout covers the
+// wait for the device and the handshake.
 class TlsLink final : public TcpLink
 {
     Q_OBJECT
@@ -24,7 +28,9 @@ protected:
     [[nodiscard]] Failure prepare() override;
     [[nodiscard]] QTcpSocket *createSocket() override;
     void startConnecting() override;
-    void onTcpConnected() override {}
+    // Connecting: nothing (the handshake follows by itself). A device's connection (mode=listen):
+    // the server side of the handshake starts.
+    void onTcpConnected() override;
     [[nodiscard]] qint64 acceptedBytes() const override;
     [[nodiscard]] Failure describe(QAbstractSocket::SocketError error, bool opening) const override;
 

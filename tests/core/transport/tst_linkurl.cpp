@@ -83,6 +83,16 @@ private slots:
         row("rtu:///dev/ttyS0?data=7&framing=delimited&start=24&end=23",
             "rtu:///dev/ttyS0?baud=9600&parity=E&data=7&stop=1&framing=delimited&start=24&end=23");
         row("tcp://h?&timeout=5ms&", "tcp://h:502?timeout=5ms");
+        // Reverse connections (issue 27): listen, and use the connection the device opens.
+        row("tcp://0.0.0.0:5020?mode=listen", "tcp://0.0.0.0:5020?mode=listen");
+        row("rtu-tcp://127.0.0.1:4001?MODE=Listen&busy=queue", "rtu-tcp://127.0.0.1:4001?mode=listen&busy=queue");
+        row("tcp://[::]:5020?mode=listen&busy=replace", "tcp://[::]:5020?mode=listen");
+        row("tcp://h:502?mode=connect", "tcp://h:502");
+        row("ascii-tcp://127.0.0.1:9?busy=refuse&mode=listen&connect_timeout=60s",
+            "ascii-tcp://127.0.0.1:9?connect_timeout=60000ms&mode=listen&busy=refuse");
+        row("tls://0.0.0.0?mode=listen&cert=s.pem&key=s.key&ca=ca.pem", "tls://0.0.0.0:802?cert=s.pem&key=s.key&ca=ca.pem&mode=listen");
+        row("rtu-tcp://10.0.0.5:4001?mode=listen&framing=delimited&end=0D",
+            "rtu-tcp://10.0.0.5:4001?mode=listen&framing=delimited&end=0D");
     }
     void canonical()
     {
@@ -202,7 +212,7 @@ private slots:
         row("empty", "", "no scheme: expected scheme://..., with a scheme among tcp, rtu-tcp, ascii-tcp, udp, rtu-udp, rtu, "
                          "ascii, tls (e.g. tcp://192.168.1.10:502)");
         row("unknown option", "tcp://h:502?speed=fast",
-            "unknown option 'speed': tcp links take connect_timeout, timeout, framing, start, end, checksum, display");
+            "unknown option 'speed': tcp links take connect_timeout, timeout, framing, start, end, checksum, display, mode, busy");
         row("unknown serial option", "rtu:///dev/ttyUSB0?bauds=9600",
             "unknown option 'bauds': rtu links take baud, parity, data, stop, turnaround, turnaround_us, timeout, framing, "
             "start, end, checksum, display");
@@ -276,6 +286,21 @@ private slots:
         row("cert without key", "tls://plc?cert=c.pem", "cert without key: mutual TLS needs both cert=FILE and key=FILE");
         row("key without cert", "tls://plc?key=k.pem", "key without cert: mutual TLS needs both cert=FILE and key=FILE");
         row("empty ca", "tls://plc?ca=", "ca is empty: expected the path of a PEM file");
+        row("mode unknown", "tcp://h?mode=server",
+            "mode 'server' is not connect or listen (listen: wait for the device to connect to this address)");
+        row("mode on udp", "udp://0.0.0.0:502?mode=listen",
+            "'mode' is an option of stream links (tcp, rtu-tcp, ascii-tcp, tls), not of udp links");
+        row("mode on serial", "rtu:///dev/ttyUSB0?mode=listen",
+            "'mode' is an option of stream links (tcp, rtu-tcp, ascii-tcp, tls), not of rtu links");
+        row("busy without listen", "tcp://h?busy=queue", "'busy' needs mode=listen");
+        row("busy with connect", "tcp://h?mode=connect&busy=refuse", "'busy' needs mode=listen");
+        row("busy unknown", "tcp://0.0.0.0:5020?mode=listen&busy=wait", "busy 'wait' is not replace, queue or refuse");
+        row("listen on a host name", "tcp://plc.local:5020?mode=listen",
+            "mode=listen needs an address of this machine to listen on, not the host name 'plc.local' (0.0.0.0 for every "
+            "IPv4 interface, [::] for every IPv6 interface, 127.0.0.1 for this machine only)");
+        row("listen on port 0", "tcp://127.0.0.1:0?mode=listen", "port 0 is out of range: expected 1-65535");
+        row("tls listen without cert", "tls://0.0.0.0?mode=listen",
+            "tls with mode=listen needs cert=FILE and key=FILE: mbscope is the TLS server of the device's connection");
     }
     void errors()
     {
@@ -284,6 +309,23 @@ private slots:
         const auto result = LinkUrl::parse(text);
         QVERIFY2(!result.url.has_value(), qPrintable(result.url ? result.url->toString() : QString()));
         QCOMPARE(result.error, error);
+    }
+
+    // mode= belongs to targets: an address something listens on (the simulator's) refuses it.
+    void modeIsForTargets()
+    {
+        const auto listen = LinkUrl::parse(QStringLiteral("tcp://127.0.0.1:0?mode=listen"), LinkUse::Listen);
+        QVERIFY(!listen.url);
+        QCOMPARE(listen.error, QStringLiteral("tcp://127.0.0.1:0?mode=listen: 'mode' is an option of --target URLs, not of an "
+                                              "address to listen on (this one listens already)"));
+        const LinkUrl url = parsed(QStringLiteral("rtu-tcp://0.0.0.0:4001?mode=listen&busy=refuse"));
+        QVERIFY(url.listen);
+        QCOMPARE(url.busy, BusyPolicy::Refuse);
+        QCOMPARE(url.address(), QStringLiteral("0.0.0.0:4001"));
+        QCOMPARE(url.framing(), Framing::Rtu);
+        const LinkUrl plain = parsed(QStringLiteral("tcp://h:502"));
+        QVERIFY(!plain.listen);
+        QCOMPARE(plain.busy, BusyPolicy::Replace);
     }
 
     void schemeNames()

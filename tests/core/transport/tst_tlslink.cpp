@@ -155,6 +155,61 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(rec.received, request + "again", kWaitMs);
     }
 
+    // Reverse connection (mode=listen, issue 27): the device dials in and is the TLS client;
+    // mbscope is the server, with cert= and key=, and wants the device's certificate (ca=).
+    void reverseConnection_data()
+    {
+        QTest::addColumn<bool>("deviceHasCertificate");
+        QTest::newRow("device with a certificate") << true;
+        QTest::newRow("device without one") << false;
+    }
+    void reverseConnection()
+    {
+        QFETCH(bool, deviceHasCertificate);
+        QTcpServer probe;
+        QVERIFY(probe.listen(QHostAddress::LocalHost, 0));
+        const quint16 port = probe.serverPort();
+        probe.close();
+        auto link = makeLink(QStringLiteral("tls://127.0.0.1:%1?mode=listen&cert=%2&key=%3&ca=%4&connect_timeout=10s")
+                                 .arg(port)
+                                 .arg(path("server.pem"), path("server.key"), path("ca.pem")));
+        Recorder rec(link.get());
+        link->open();
+
+        QSslSocket device;
+        QSslConfiguration config = QSslConfiguration::defaultConfiguration();
+        config.setCaCertificates(QSslCertificate::fromPath(path("ca.pem"), QSsl::Pem));
+        if (deviceHasCertificate) {
+            QFile certFile(path("client.pem"));
+            QFile keyFile(path("client.key"));
+            QVERIFY(certFile.open(QIODevice::ReadOnly) && keyFile.open(QIODevice::ReadOnly));
+            config.setLocalCertificateChain(QSslCertificate::fromData(certFile.readAll(), QSsl::Pem));
+            config.setPrivateKey(QSslKey(keyFile.readAll(), QSsl::Ec, QSsl::Pem, QSsl::PrivateKey));
+        }
+        device.setSslConfiguration(config);
+        connect(&device, &QIODevice::readyRead, &device, [&device] { device.write(device.readAll()); });
+        // The link listens from open() on, once its queued start has run.
+        QTRY_VERIFY_WITH_TIMEOUT(link->findChild<QTcpServer *>() && link->findChild<QTcpServer *>()->isListening(), kWaitMs);
+        device.connectToHostEncrypted(QStringLiteral("127.0.0.1"), port);
+        if (!deviceHasCertificate) {
+            QTRY_VERIFY_WITH_TIMEOUT(!rec.errors.isEmpty(), kWaitMs);
+            QCOMPARE(rec.errors.first().kind, LinkError::Kind::Handshake);
+            QVERIFY2(rec.lastMessage().startsWith(link->url().toString() + QStringLiteral(": TLS handshake with the device at 127.0.0.1:")),
+                     qPrintable(rec.lastMessage()));
+            qInfo().noquote() << rec.lastMessage();
+            QCOMPARE(rec.opened, 0);
+            QCOMPARE(link->state(), Link::State::Closed);
+            return;
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(rec.opened, 1, kWaitMs);
+        QVERIFY2(rec.errors.isEmpty(), qPrintable(rec.lastMessage()));
+        QCOMPARE(device.peerCertificate().subjectInfo(QSslCertificate::CommonName), QStringList{QStringLiteral("localhost")});
+        const QByteArray request = QByteArray::fromHex("000100000006010300790016");
+        QVERIFY(link->write(request));
+        QTRY_COMPARE_WITH_TIMEOUT(rec.received, request, kWaitMs);
+        QTRY_COMPARE_WITH_TIMEOUT(rec.writtenNs.size(), 1, kWaitMs);
+    }
+
     // The server's certificate does not chain to the CA we were given.
     void wrongCa()
     {
