@@ -11,6 +11,7 @@
 #include <QtCore/QRegularExpression>
 #include <QtCore/QStandardPaths>
 #include <QtCore/QTemporaryDir>
+#include <QtNetwork/QTcpServer>
 #include <QtTest/QTest>
 
 using namespace mbscope;
@@ -26,11 +27,15 @@ QStringList sl(std::initializer_list<const char *> items)
     return list;
 }
 
-// "PORT" and "TARGET" in an argument list become the simulator's port and URL.
+// "PORT" and "TARGET" in an argument list become the simulator's port and URL, "SILENT" a TCP
+// port that takes connections and never answers.
+QString silentUrl;
+
 QStringList withTarget(QStringList arguments, const QString &url)
 {
     const QString port = url.section(QLatin1Char(':'), -1);
     for (QString &a : arguments) {
+        a.replace(QStringLiteral("SILENT"), silentUrl);
         a.replace(QStringLiteral("TARGET"), url);
         a.replace(QStringLiteral("PORT"), port);
     }
@@ -57,6 +62,7 @@ class TestCliHabits : public QObject
     Background m_sim; // rosrao-gamma on tcp: holding registers 121-133 = 1050, 0, 0, 0, 250, 1, 1000, 10000...
     QString m_url;
     QTemporaryDir m_dir;
+    QTcpServer m_silent; // the kernel accepts its connections; nothing ever answers
 
 private slots:
     void initTestCase();
@@ -88,6 +94,8 @@ void TestCliHabits::initTestCase()
              qPrintable(error));
     m_url = m_sim.url();
     QVERIFY2(m_url.startsWith(QLatin1String("tcp://127.0.0.1:")), qPrintable(m_url));
+    QVERIFY(m_silent.listen(QHostAddress::LocalHost));
+    silentUrl = QStringLiteral("tcp://127.0.0.1:%1").arg(m_silent.serverPort());
 }
 
 void TestCliHabits::shortOptionsAreTheLongOnes_data()
@@ -128,8 +136,8 @@ void TestCliHabits::shortOptionsAreTheLongOnes_data()
     QTest::newRow("poll -l -1") << sl({"poll", "-r", "121", "-c", "2", "-l", "10", "-1", "TARGET"})
                                 << sl({"poll", "--address", "121", "--quantity", "2", "--interval", "10ms", "--count", "1",
                                        "--target", "TARGET"});
-    QTest::newRow("-o seconds") << sl({"read", "-a", "9", "-r", "121", "-o", "0.3", "TARGET"})
-                                << sl({"read", "--unit", "9", "--address", "121", "--timeout", "300", "--target", "TARGET"});
+    QTest::newRow("-o seconds") << sl({"read", "-r", "121", "-o", "0.3", "SILENT"})
+                                << sl({"read", "--address", "121", "--timeout", "300", "--target", "SILENT"});
 }
 
 // Both forms send the same bytes and end the same way.
@@ -161,6 +169,8 @@ void TestCliHabits::shortOptionsAreTheLongOnes()
     QCOMPARE(ja.value(QStringLiteral("values")), jb.value(QStringLiteral("values")));
     QCOMPARE(ja.value(QStringLiteral("status")), jb.value(QStringLiteral("status")));
     QCOMPARE(ja.value(QStringLiteral("problem")), jb.value(QStringLiteral("problem")));
+    if (ja.value(QStringLiteral("status")).toString() == QLatin1String("timeout"))
+        QVERIFY2(ja.value(QStringLiteral("problem")).toString().contains(QLatin1String("300 ms")), a.out);
 }
 
 void TestCliHabits::usageErrors_data()
@@ -216,7 +226,12 @@ void TestCliHabits::usageErrors()
     const CliResult r = runMbscope(withTarget(arguments, m_url));
     QVERIFY2(r.exitCode == 2, r.describe());
     QVERIFY2(r.errText().contains(message), r.describe());
-    QVERIFY2(r.out.isEmpty(), r.describe());
+    // With --json, standard output holds the error as a JSON object; else nothing.
+    if (arguments.contains(QStringLiteral("--json")))
+        QVERIFY2(r.json().value(QStringLiteral("error")).toObject().value(QStringLiteral("message")).toString().contains(message),
+                 r.describe());
+    else
+        QVERIFY2(r.out.isEmpty(), r.describe());
 }
 
 void TestCliHabits::serialPieces_data()
@@ -372,7 +387,7 @@ void TestCliHabits::terseOutput_data()
                                  << "[125]: \t250\t0x00FA\n[126]: \t1\t0x0001\n" << QString();
     QTest::newRow("exception") << sl({"read", "-q", "-r", "0", "TARGET"}) << 1 << QString()
                                << "mbscope read: Read Holding Registers, unit 1, 1 register at 0 (0x0000), 40001: exception";
-    QTest::newRow("timeout") << sl({"read", "-q", "-a", "9", "-r", "121", "-o", "0.2", "TARGET"}) << 1 << QString()
+    QTest::newRow("timeout") << sl({"read", "-q", "-r", "121", "-o", "0.2", "SILENT"}) << 1 << QString()
                              << "timeout: no answer within 200 ms";
 }
 
@@ -405,8 +420,8 @@ void TestCliHabits::frameLog_data()
     QTest::newRow("read, exception") << sl({"read", "-r", "0", "--print", "frames", "TARGET"})
                                      << QStringList{t + QStringLiteral(R"(out sent {8}00 01 00 00 00 06 01 03 00 00 00 01$)"),
                                                     t + QStringLiteral(R"(in  exception {3}00 01 00 00 00 03 01 83 02$)")};
-    QTest::newRow("read, timeout") << sl({"read", "-a", "9", "-r", "121", "-o", "0.2", "--print", "frames", "TARGET"})
-                                   << QStringList{t + QStringLiteral(R"(out sent {8}00 01 00 00 00 06 09 03 00 79 00 01$)"),
+    QTest::newRow("read, timeout") << sl({"read", "-r", "121", "-o", "0.2", "--print", "frames", "SILENT"})
+                                   << QStringList{t + QStringLiteral(R"(out sent {8}00 01 00 00 00 06 01 03 00 79 00 01$)"),
                                                   t + QStringLiteral(R"(in  timeout$)")};
     QTest::newRow("write") << sl({"write", "-r", "127", "--registers", "1000", "--single", "--print", "frames", "TARGET"})
                            << QStringList{t + QStringLiteral(R"(out sent {8}00 01 00 00 00 06 01 06 00 7F 03 E8$)"),
