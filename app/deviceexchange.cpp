@@ -1,5 +1,6 @@
 #include "deviceexchange.h"
 
+#include "framelog.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
 
@@ -7,12 +8,15 @@
 
 namespace mbscope::app {
 
-QList<Transaction> exchange(const TargetSettings &target, const QList<PlannedRequest> &requests, TrafficLog *log)
+QList<Transaction> exchange(const TargetSettings &target, const QList<PlannedRequest> &requests, TrafficLog *log,
+                            FrameLog *frames)
 {
     TransactionEngine engine;
     engine.setTarget(target.url);
     if (log)
         engine.setTrafficLog(log);
+    if (frames)
+        frames->attach(&engine);
     QList<Transaction> records;
     for (const PlannedRequest &r : requests) {
         std::optional<Transaction> t = engine.sendAndWait(r.item);
@@ -31,6 +35,8 @@ QList<Transaction> exchange(const TargetSettings &target, const QList<PlannedReq
     }
     if (log)
         engine.setTrafficLog(nullptr); // the last frames reach the journal
+    if (frames)
+        engine.deliverPending(); // and the frame log
     return records;
 }
 

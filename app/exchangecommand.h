@@ -1,5 +1,6 @@
 #pragma once
 
+#include "printoptions.h"
 #include "recordoptions.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
@@ -22,6 +23,7 @@ struct ExchangeCommandSpec {
     int requestGroups = 0;  // RequestOptions::Group flags
     QString jsonHelp;       // what --json prints
     QString positionalHint; // after "unexpected argument 'X': "
+    bool readOutput = false; // read's -q/--terse (values one a line) and -1/--once (mbpoll's habit)
 };
 
 struct ExchangeCommandInput {
@@ -29,6 +31,8 @@ struct ExchangeCommandInput {
     RequestPlan plan;
     RecordSettings record;
     bool json = false;
+    bool terse = false; // -q/--terse (read)
+    PrintSettings print; // --print frames, --frame-log FILE
 };
 
 // Parses arguments into input. Returns the exit status when the command ends here (--help: 0;

@@ -1,6 +1,7 @@
 #include "pollcommand.h"
 
 #include "cli.h"
+#include "framelog.h"
 #include "polloptions.h"
 #include "pollresults.h"
 #include "pollrunner.h"
@@ -53,11 +54,6 @@ int runPollOrSweep(const QStringList &arguments, bool sweep)
         out << subcommandHelp(parser.helpText(), name);
         return ExitOk;
     }
-    if (!parser.positionalArguments().isEmpty()) {
-        err << "mbscope " << name << ": unexpected argument '" << parser.positionalArguments().constFirst()
-            << "': every setting is an option (see mbscope " << name << " --help)\n";
-        return ExitUsage;
-    }
     PollConfig config;
     if (!options.read(parser, config, err))
         return ExitUsage;
@@ -71,6 +67,9 @@ int runPollOrSweep(const QStringList &arguments, bool sweep)
             return ExitUsage;
         }
     }
+    FrameLog frames;
+    if (!openFrameLog(frames, config.print, QString::fromLatin1(name), err))
+        return ExitUsage;
     TrafficRecording recording;
     TrafficMetadata metadata = clientMetadata(QString::fromLatin1(name), arguments, config.target, config.plan);
     metadata.settings.insert(QStringLiteral("pipeline"), config.engine.pipelineDepth);
@@ -106,6 +105,8 @@ int runPollOrSweep(const QStringList &arguments, bool sweep)
         runner.setTrafficLog(recording.log());
     if (transcript.isActive())
         runner.setTranscript(&transcript);
+    if (frames.isOpen())
+        runner.setFrameLog(&frames);
     const PollOutcome outcome = runner.run(config.settings, sweep);
     transcript.close();
     finishRecording(recording, err);

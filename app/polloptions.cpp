@@ -22,9 +22,9 @@ PollOptions::PollOptions(bool sweep)
     : m_sweep(sweep)
     , m_command(sweep ? QStringLiteral("sweep") : QStringLiteral("poll"))
     , m_requests(RequestOptions::Hex | RequestOptions::Read | RequestOptions::Write, true)
-    , m_interval(QStringLiteral("interval"),
-                 QStringLiteral("Time from the start of one cycle to the start of the next: 100ms, 1s... (default 1s; "
-                                "0: back to back)."),
+    , m_interval(QStringList{QStringLiteral("l"), QStringLiteral("interval")},
+                 QStringLiteral("Time from the start of one cycle to the start of the next: 100ms, 1s..., a bare number "
+                                "in milliseconds as mbpoll's -l (default 1s; 0: back to back)."),
                  QStringLiteral("duration"), QStringLiteral("1s"))
     , m_intervals(QStringLiteral("intervals"),
                   QStringLiteral("The poll intervals to run, in order, separated by commas: 100,200,300 (bare numbers "
@@ -39,6 +39,8 @@ PollOptions::PollOptions(bool sweep)
                        : QStringLiteral("How long to poll (with or instead of --count): 60s, 5min... Without --count and "
                                         "--duration the poll runs until Ctrl-C."),
                  QStringLiteral("duration"))
+    , m_once(QStringList{QStringLiteral("1"), QStringLiteral("once")},
+             QStringLiteral("Poll once: --count 1 (mbpoll's -1)."))
     , m_pipeline(QStringLiteral("pipeline"),
                  QStringLiteral("Requests in flight at once, with distinct transaction ids (tcp, tls and udp targets; "
                                 "default 1)."),
@@ -51,10 +53,7 @@ PollOptions::PollOptions(bool sweep)
                   QStringLiteral("Draw the latency histogram into the file: .png, .svg or .pdf by its extension (no display needed)."),
                   QStringLiteral("file"))
     , m_json(QStringLiteral("json"), QStringLiteral("Print the statistics as JSON."))
-    , m_print(QStringLiteral("print"),
-              QStringLiteral("Print as they come: values (one line per answer: time, request, status, latency and the values "
-                             "in the --format(s) given), before the statistics."),
-              QStringLiteral("what"))
+    , m_print(!sweep)
     , m_csv(QStringLiteral("csv"),
             QStringLiteral("Write one CSV row per transaction as it happens: time, item, status, latency_ms, then the values "
                            "(a column per --format)."),
@@ -69,7 +68,8 @@ void PollOptions::addTo(QCommandLineParser &parser) const
     parser.addOption(m_sweep ? m_intervals : m_interval);
     parser.addOptions({m_count, m_duration, m_pipeline, m_stats, m_histogram, m_json});
     if (!m_sweep)
-        parser.addOptions({m_print, m_csv});
+        parser.addOptions({m_once, m_csv});
+    m_print.addTo(parser);
     m_record.addTo(parser);
 }
 
@@ -109,6 +109,13 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
         }
         out.settings.poll.count = quint64(count.value);
     }
+    if (!m_sweep && parser.isSet(m_once)) {
+        if (parser.isSet(m_count) || parser.isSet(m_duration)) {
+            err << prefix << "-1/--once is --count 1: give it without --count and --duration\n";
+            return false;
+        }
+        out.settings.poll.count = 1;
+    }
     if (parser.isSet(m_duration)) {
         const DurationResult duration = parseDuration(parser.value(m_duration));
         if (!duration.ok()) {
@@ -144,9 +151,12 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
     out.engine.pipelineDepth = int(pipeline.value);
 
     // --record and --force first: --force is the policy for --histogram and --csv too.
-    if (!m_record.read(parser, m_command, out.record, err, parser.isSet(m_histogram) || (!m_sweep && parser.isSet(m_csv))))
+    if (!m_record.read(parser, m_command, out.record, err,
+                       parser.isSet(m_histogram) || (!m_sweep && parser.isSet(m_csv)) || m_print.frameLogSet(parser)))
         return false;
     const bool force = out.record.overwrite;
+    if (!m_print.read(parser, m_command, force, out.print, err))
+        return false;
     if (parser.isSet(m_histogram)) {
         if (!HistogramPlot::isAvailable()) {
             err << prefix << "--histogram: " << HistogramPlot::unavailableReason() << '\n';
@@ -163,13 +173,7 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
     }
     out.stats = parser.isSet(m_stats);
     out.json = parser.isSet(m_json);
-    if (!m_sweep && parser.isSet(m_print)) {
-        for (const QString &what : parser.values(m_print)) {
-            if (what != QLatin1String("values")) {
-                err << prefix << "--print '" << what << "': expected values (each answer's values as it comes)\n";
-                return false;
-            }
-        }
+    if (out.print.values) {
         if (out.json) {
             err << prefix << "--print values writes text lines, --json one JSON document: give one of them (--csv FILE "
                 << "keeps every answer's values with --json)\n";

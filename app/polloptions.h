@@ -1,5 +1,6 @@
 #pragma once
 
+#include "printoptions.h"
 #include "recordoptions.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
@@ -26,11 +27,13 @@ struct PollConfig {
     QString histogramPath;    // --histogram FILE.png; empty: none
     RecordSettings record;    // --record FILE [--force]
     bool printValues = false; // poll --print values
+    PrintSettings print;      // --print values|frames, --frame-log FILE
     QString csvPath;          // poll --csv FILE; empty: none
 };
 
 // The options poll and sweep share, and the one each has alone:
-//   poll:   --interval DURATION (default 1s; 0: back to back), --print values, --csv FILE
+//   poll:   -l, --interval DURATION (default 1s; 0: back to back), -1, --once (--count 1),
+//           --print values|frames, --csv FILE
 //   sweep:  --intervals D1,D2,... (required)
 //   both:   --count N (cycles per interval) | --duration DURATION, --pipeline N, --stats,
 //           --histogram FILE.png, --json, --record FILE [--force], the target options and the request options
@@ -52,11 +55,12 @@ private:
     QCommandLineOption m_intervals;
     QCommandLineOption m_count;
     QCommandLineOption m_duration;
+    QCommandLineOption m_once;
     QCommandLineOption m_pipeline;
     QCommandLineOption m_stats;
     QCommandLineOption m_histogram;
     QCommandLineOption m_json;
-    QCommandLineOption m_print;
+    PrintOptions m_print;
     QCommandLineOption m_csv;
     RecordOptions m_record;
 };

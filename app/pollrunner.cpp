@@ -1,6 +1,7 @@
 #include "pollrunner.h"
 
 #include "time/duration.h"
+#include "framelog.h"
 #include "interruptwatcher.h"
 #include "polltranscript.h"
 #include "transactionreport.h"
@@ -42,12 +43,21 @@ PollOutcome PollRunner::run(const SweepSettings &settings, bool sweep)
     });
     if (m_log)
         m_engine->setTrafficLog(m_log);
+    if (m_frameLog) {
+        m_engine->setFramesPublished(true);
+        connect(m_engine, &TransactionEngine::framesLogged, this, [this](const QList<TrafficFrame> &frames) {
+            m_line.clear(); // the progress line comes back with the next progress
+            m_frameLog->add(frames);
+        });
+    }
     if (sweep)
         m_engine->startSweep(settings);
     else
         m_engine->startPoll(settings.poll);
     if (!finished)
         loop.exec();
+    if (m_frameLog)
+        m_engine->deliverPending(); // the last frames reach the log
     // The engine's last batch of frames reaches the journal, and the log is the caller's again.
     if (m_log)
         m_engine->setTrafficLog(nullptr);

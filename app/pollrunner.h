@@ -19,6 +19,7 @@ struct Transaction;
 
 namespace mbscope::app {
 
+class FrameLog;
 class PollTranscript;
 
 struct PollOutcome {
@@ -43,6 +44,8 @@ public:
     // transaction to the transcript (--print values, --csv) as its batch arrives.
     void setTrafficLog(TrafficLog *log) { m_log = log; }
     void setTranscript(PollTranscript *transcript) { m_transcript = transcript; }
+    // Every frame to the frame log (--print frames, --frame-log) as its batch arrives.
+    void setFrameLog(FrameLog *log) { m_frameLog = log; }
 
     // Blocks (running an event loop) until the poll or sweep ends.
     [[nodiscard]] PollOutcome run(const SweepSettings &settings, bool sweep);
@@ -55,6 +58,7 @@ private:
     TransactionEngine *m_engine;
     TrafficLog *m_log = nullptr;
     PollTranscript *m_transcript = nullptr;
+    FrameLog *m_frameLog = nullptr;
     ProgressLine m_line;
     bool m_sweep = false;
     bool m_sawAnswer = false;

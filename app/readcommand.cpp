@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "deviceexchange.h"
 #include "exchangecommand.h"
+#include "framelog.h"
 #include "recordoptions.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
@@ -31,10 +32,13 @@ int runRead(const QStringList &arguments)
         "the formats asked.\n"
         "Example: mbscope read --target tcp://192.168.1.10 --unit 1 --function 3 --address 0x79 --quantity 22 "
         "--format u16,hex\n"
+        "As mbpoll's habits have it (-a unit, -r reference, -c count, -t 4 holding registers, -q values only): "
+        "mbscope read -a 1 -r 1 -c 10 -t 4 --one-based -q 192.168.1.10\n"
         "Exit status: 0 ok, 1 the transaction failed (exception, timeout, bad answer), 2 usage or link error.");
     spec.requestGroups = RequestOptions::Read;
     spec.jsonHelp = QStringLiteral("Print the transaction and the values as JSON.");
     spec.positionalHint = QStringLiteral("every setting is an option (see mbscope read --help)");
+    spec.readOutput = true;
     ExchangeCommandInput input;
     if (const std::optional<int> status = parseExchangeCommand(spec, arguments, out, err, input))
         return *status;
@@ -42,22 +46,41 @@ int runRead(const QStringList &arguments)
     const RequestPlan &plan = input.plan;
 
     const PlannedRequest &request = plan.requests.constFirst();
+    FrameLog frames;
+    if (!openFrameLog(frames, input.print, QStringLiteral("read"), err))
+        return ExitUsage;
     TrafficRecording recording;
     if (!openRecording(recording, input.record, clientMetadata(QStringLiteral("read"), arguments, target, plan), QStringLiteral("read"), err))
         return ExitUsage;
-    const QList<Transaction> records = exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr);
+    const QList<Transaction> records =
+        exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr, frames.isOpen() ? &frames : nullptr);
     finishRecording(recording, err);
     const Transaction &t = records.constFirst();
     ValueTable values;
     if (t.status == TransactionStatus::Ok) {
         values = ValueTable::fromReadResponse(request.functionCode, request.address, request.quantity,
                                               AduBuilder::parse(t.response, target.url.framing()).pdu, plan.formats);
+        values.oneBased = plan.oneBased;
+    }
+
+    if (input.terse) {
+        // Values alone on standard output; what went wrong, and the hint, on standard error.
+        out << values.terse();
+        if (t.status != TransactionStatus::Ok) {
+            err << "mbscope read: " << request.description << ": " << TransactionReport::outcome(t) << '\n';
+            const QString hint = addressHintFor(request, t.exceptionCode, t.status == TransactionStatus::Exception);
+            if (!hint.isEmpty())
+                err << "HINT " << hint << '\n';
+        }
+        return TransactionReport::exitStatus(t, target.url);
     }
 
     if (input.json) {
         QJsonObject o = TransactionReport::json(t, target.url);
         o.insert(QStringLiteral("target"), target.url.toString());
         o.insert(QStringLiteral("description"), request.description);
+        if (plan.oneBased)
+            o.insert(QStringLiteral("one_based"), true);
         o.insert(QStringLiteral("values"), values.json());
         const QString hint = addressHintFor(request, t.exceptionCode, t.status == TransactionStatus::Exception);
         o.insert(QStringLiteral("hint"), hint.isEmpty() ? QJsonValue() : QJsonValue(hint));

@@ -1,5 +1,6 @@
 #include "requestoptions.h"
 
+#include "tabletype.h"
 #include "targetoptions.h"
 
 #include "protocol/adubuilder.h"
@@ -32,25 +33,39 @@ QString referenceRange(quint8 functionCode, int address, int quantity)
     return quantity == 1 ? a : a + QLatin1Char('-') + b;
 }
 
-// "unit 1, 22 registers at 121 (0x0079), 40122-40143"
-QString describeItems(quint8 functionCode, int unit, int address, int quantity, const char *items)
+QString hex4(int address)
 {
-    QString text = QStringLiteral("unit %1, %2 %3 at %4 (0x%5)")
+    return QString::number(address, 16).toUpper().rightJustified(4, QLatin1Char('0'));
+}
+
+// "unit 1, 22 registers at 121 (0x0079), 40122-40143"; counted from 1: "unit 1, 22 registers at
+// 122 (1-based; PDU address 121, 0x0079), 40122-40143".
+QString describeItems(quint8 functionCode, int unit, int address, int quantity, const char *items, bool oneBased)
+{
+    const QString where = oneBased ? QStringLiteral("%1 (1-based; PDU address %2, 0x%3)").arg(address + 1).arg(address).arg(hex4(address))
+                                   : QStringLiteral("%1 (0x%2)").arg(address).arg(hex4(address));
+    QString text = QStringLiteral("unit %1, %2 %3 at %4")
                        .arg(unit)
                        .arg(quantity)
-                       .arg(QLatin1String(items))
-                       .arg(address)
-                       .arg(QString::number(address, 16).toUpper().rightJustified(4, QLatin1Char('0')));
+                       .arg(QLatin1String(items), where);
     const QString refs = referenceRange(functionCode, address, quantity);
     if (!refs.isEmpty())
         text += QStringLiteral(", ") + refs;
     return text;
 }
 
-QString describe(quint8 functionCode, int unit, int address, int quantity, const char *items)
+QString describe(quint8 functionCode, int unit, int address, int quantity, const char *items, bool oneBased)
 {
     return QString::fromLatin1(functionName(functionCode)) + QStringLiteral(", ")
-           + describeItems(functionCode, unit, address, quantity, items);
+           + describeItems(functionCode, unit, address, quantity, items, oneBased);
+}
+
+// A request's name in statistics and journals: "Read Holding Registers 121 x4", counted from 1
+// "Read Holding Registers 122 x4 (1-based)".
+QString itemName(quint8 functionCode, int address, int quantity, bool oneBased)
+{
+    return oneBased ? QStringLiteral("%1 %2 x%3 (1-based)").arg(QString::fromLatin1(functionName(functionCode))).arg(address + 1).arg(quantity)
+                    : QStringLiteral("%1 %2 x%3").arg(QString::fromLatin1(functionName(functionCode))).arg(address).arg(quantity);
 }
 
 // RequestBuilder names its parameters; the user knows the options.
@@ -77,18 +92,35 @@ bool built(const BuildResult &result, bool registers, QString &error)
     return false;
 }
 
-QString hintWithOption(int address)
+// typed: the number the user gave to --address (a PDU address, or counted from 1 with oneBased).
+QString hintWithOption(int typed, bool oneBased)
 {
-    const QString hint = ModiconReference::addressHint(address);
-    if (hint.isEmpty())
-        return {};
-    return hint + QStringLiteral(": give --address %1").arg(ModiconReference::parse(QString::number(address)).reference.address());
+    const QString modicon = ModiconReference::addressHint(typed);
+    if (!modicon.isEmpty()) {
+        const int pdu = ModiconReference::parse(QString::number(typed)).reference.address();
+        return oneBased ? modicon + QStringLiteral(": give --address %1 with --one-based").arg(pdu + 1)
+                        : modicon + QStringLiteral(": give --address %1").arg(pdu);
+    }
+    // A block of a manual that numbers registers from 1 starts at 1, 11, 101, 1001...; one past
+    // the last PDU address (65536) is the last register counted from 1.
+    if (!oneBased && typed >= 1 && typed < 10001 && typed % 10 == 1) {
+        return QStringLiteral("%1 looks counted from 1, as mbpoll and many device manuals number registers; counted "
+                              "from 0, as on the wire, it is PDU address %2 (0x%3): give --address %2, or --one-based "
+                              "to type the manual's numbers")
+            .arg(typed)
+            .arg(typed - 1)
+            .arg(hex4(typed - 1));
+    }
+    if (!oneBased && typed == 65536)
+        return QStringLiteral("65536 is one past the last PDU address (65535) but the last register counted from 1: "
+                              "give --address 65535, or --one-based to type the manual's numbers");
+    return {};
 }
 
 // A refused address of 10001 or more is most often a manual's Modicon reference.
-void appendAddressHint(int address, QString &error)
+void appendAddressHint(int typed, bool oneBased, QString &error)
 {
-    const QString hint = hintWithOption(address);
+    const QString hint = hintWithOption(typed, oneBased);
     if (!hint.isEmpty())
         error += QStringLiteral("\n") + hint;
 }
@@ -117,17 +149,21 @@ RequestOptions::RequestOptions(int groups, bool repeatHex)
     , m_complete(QStringLiteral("complete"),
                  QStringLiteral("--hex is a PDU (function code first): add the MBAP header, or the unit id and CRC/LRC, "
                                 "as the target's framing needs (unit from --unit)."))
-    , m_unit(QStringLiteral("unit"), QStringLiteral("Unit (slave) id 0-255 of built and completed requests (default 1)."),
+    , m_unit(QStringList{QStringLiteral("a"), QStringLiteral("unit")},
+             QStringLiteral("Unit (slave) id 0-255 of built and completed requests (default 1; mbpoll's -a)."),
              QStringLiteral("id"), QStringLiteral("1"))
     , m_function(QStringLiteral("function"),
                  QStringLiteral("Read function: 1 coils, 2 discrete inputs, 3 holding registers, 4 input registers "
                                 "(default 3)."),
                  QStringLiteral("code"), QStringLiteral("3"))
-    , m_address(QStringLiteral("address"),
+    , m_address(QStringList{QStringLiteral("r"), QStringLiteral("address")},
                 QStringLiteral("First PDU address, 0-based as on the wire: decimal or 0x hex (0x79 is register 40122) "
-                               "(default 0)."),
+                               "(default 0); counted from 1 with --one-based, as mbpoll's -r."),
                 QStringLiteral("address"), QStringLiteral("0"))
-    , m_quantity(QStringLiteral("quantity"), QStringLiteral("Registers or bits to read (default 1)."), QStringLiteral("n"),
+    , m_quantity(QStringList{QStringLiteral("c"), QStringLiteral("quantity")},
+                 QStringLiteral("Registers or bits to read (default 1; mbpoll's -c: with -t 3:int, 4:float... the "
+                                "32-bit values)."),
+                 QStringLiteral("n"),
                  QStringLiteral("1"))
     , m_format(QStringLiteral("format"),
                groups & Read ? QStringLiteral("How register values are shown, one or more separated by commas: u16, i16, hex, "
@@ -144,6 +180,21 @@ RequestOptions::RequestOptions(int groups, bool repeatHex)
     , m_single(QStringLiteral("single"),
                QStringLiteral("Write with Write Single Coil (05) / Write Single Register (06), one request per value, "
                               "instead of 15 / 16."))
+    , m_table(QStringList{QStringLiteral("t"), QStringLiteral("table")},
+              QStringLiteral("The table to read, as mbpoll's -t, instead of --function: 0 coils, 1 discrete inputs, 3 input "
+                             "registers, 4 holding registers (the first digit of their Modicon references); 3:hex, 4:int "
+                             "or 4:float show hex, 32-bit integers or floats, low word first (-B: high word first), and "
+                             "then --quantity counts those 32-bit values, as mbpoll's -c does; any --format name may "
+                             "follow the colon too (4:u32)."),
+              QStringLiteral("type"))
+    , m_bigEndian(QStringList{QStringLiteral("B"), QStringLiteral("big-endian")},
+                  QStringLiteral("With -t's :int and :float, the high word first (mbpoll's -B)."))
+    , m_oneBased(QStringLiteral("one-based"),
+                 QStringLiteral("Addresses count registers and bits from 1, as mbpoll and many device manuals do: "
+                                "--address 1 is PDU address 0. Every output then says 1-based. The default is 0-based "
+                                "PDU addresses, as on the wire."))
+    , m_zeroBased(QStringList{QStringLiteral("0"), QStringLiteral("zero-based")},
+                  QStringLiteral("Addresses are 0-based PDU addresses (the default; mbpoll's -0)."))
 {
 }
 
@@ -153,11 +204,15 @@ void RequestOptions::addTo(QCommandLineParser &parser) const
         parser.addOptions({m_hex, m_complete});
     parser.addOption(m_unit);
     if (m_groups & Read)
-        parser.addOptions({m_function, m_quantity});
+        parser.addOptions({m_function, m_table, m_quantity});
     if (m_groups & (Read | Write))
         parser.addOptions({m_address, m_format});
+    if (m_groups & Read)
+        parser.addOption(m_bigEndian);
     if (m_groups & Write)
         parser.addOptions({m_coils, m_registers, m_single});
+    if (m_groups & (Read | Write))
+        parser.addOptions({m_oneBased, m_zeroBased});
 }
 
 bool RequestOptions::read(const QCommandLineParser &parser, const QString &command, const TargetSettings &target,
@@ -166,7 +221,8 @@ bool RequestOptions::read(const QCommandLineParser &parser, const QString &comma
     const bool hex = (m_groups & Hex) && parser.isSet(m_hex);
     const bool write = (m_groups & Write) && (parser.isSet(m_coils) || parser.isSet(m_registers));
     const bool read = (m_groups & Read)
-                      && (parser.isSet(m_function) || parser.isSet(m_quantity) || (!write && parser.isSet(m_address)));
+                      && (parser.isSet(m_function) || parser.isSet(m_table) || parser.isSet(m_quantity)
+                          || (!write && parser.isSet(m_address)));
     QString error;
     const QString prefix = QStringLiteral("mbscope %1: ").arg(command);
 
@@ -176,6 +232,17 @@ bool RequestOptions::read(const QCommandLineParser &parser, const QString &comma
         return false;
     }
     bool ok = false;
+    const bool oneBased = (m_groups & (Read | Write)) && parser.isSet(m_oneBased);
+    if (oneBased && parser.isSet(m_zeroBased)) {
+        err << prefix << "--one-based and -0/--zero-based say the contrary: give one (0-based is the default)\n";
+        return false;
+    }
+    if (hex && (oneBased || ((m_groups & (Read | Write)) && parser.isSet(m_zeroBased)))) {
+        err << prefix << (oneBased ? "--one-based" : "-0/--zero-based") << " says how --address counts, but --hex "
+            << "bytes carry their PDU address as they are\n";
+        return false;
+    }
+    out.oneBased = oneBased;
     if (hex) {
         ok = readHex(parser, target, out, error);
     } else if (write) {
@@ -218,6 +285,23 @@ bool RequestOptions::readUnit(const QCommandLineParser &parser, int &unit, QStri
         return false;
     }
     unit = int(u.value);
+    return true;
+}
+
+bool RequestOptions::readAddress(const QCommandLineParser &parser, bool oneBased, int &address, QString &error) const
+{
+    constexpr qint64 kIntMax = std::numeric_limits<int>::max();
+    const IntegerResult typed = parseInteger(QStringLiteral("--address"), parser.value(m_address), -kIntMax, kIntMax);
+    if (!typed.ok) {
+        error = typed.error;
+        return false;
+    }
+    if (oneBased && typed.value == 0) {
+        error = QStringLiteral("--address 0 with --one-based: counted from 1, the first register or bit is 1 (PDU "
+                               "address 0)");
+        return false;
+    }
+    address = int(typed.value - (oneBased ? 1 : 0));
     return true;
 }
 
@@ -300,7 +384,35 @@ bool RequestOptions::readRead(const QCommandLineParser &parser, const TargetSett
                     .arg(framingName(url.framing()).toUpper(), url.toString());
         return false;
     }
-    const IntegerResult function = parseInteger(QStringLiteral("--function"), parser.value(m_function));
+    IntegerResult function;
+    TableType table;
+    if (parser.isSet(m_table)) {
+        if (parser.isSet(m_function)) {
+            error = QStringLiteral("give -t/--table or --function, not both: -t 0 is --function 1 (coils), -t 1 --function "
+                                   "2 (discrete inputs), -t 3 --function 4 (input registers), -t 4 --function 3 (holding "
+                                   "registers)");
+            return false;
+        }
+        table = TableType::parse(parser.value(m_table), parser.isSet(m_bigEndian));
+        if (!table.ok) {
+            error = table.error;
+            return false;
+        }
+        function.value = table.functionCode;
+        function.ok = true;
+        if (table.format && parser.isSet(m_format)) {
+            error = QStringLiteral("-t/--table %1 says how values are shown already: give --format or the suffix, not both")
+                        .arg(parser.value(m_table));
+            return false;
+        }
+    } else {
+        if (parser.isSet(m_bigEndian)) {
+            error = QStringLiteral("-B/--big-endian orders the words of -t's :int and :float (mbpoll's -B): with --function, "
+                                   "give a --format with a byte order (f32, f32-cdab...)");
+            return false;
+        }
+        function = parseInteger(QStringLiteral("--function"), parser.value(m_function));
+    }
     if (!function.ok) {
         error = function.error;
         return false;
@@ -313,17 +425,17 @@ bool RequestOptions::readRead(const QCommandLineParser &parser, const TargetSett
         return false;
     }
     constexpr qint64 kIntMax = std::numeric_limits<int>::max();
-    const IntegerResult address = parseInteger(QStringLiteral("--address"), parser.value(m_address), -kIntMax, kIntMax);
+    int a = 0;
+    if (!readAddress(parser, out.oneBased, a, error))
+        return false;
     const IntegerResult quantity = parseInteger(QStringLiteral("--quantity"), parser.value(m_quantity), -kIntMax, kIntMax);
-    for (const IntegerResult *r : {&address, &quantity}) {
-        if (!r->ok) {
-            error = r->error;
-            return false;
-        }
+    if (!quantity.ok) {
+        error = quantity.error;
+        return false;
     }
     const bool registers = function.value >= 3;
     out.formats.clear();
-    const QStringList formats = parser.value(m_format).split(QLatin1Char(','));
+    const QStringList formats = table.format ? QStringList{table.format->name()} : parser.value(m_format).split(QLatin1Char(','));
     if (!registers && parser.isSet(m_format)) {
         error = QStringLiteral("--format applies to registers (functions 3 and 4); coils and discrete inputs are "
                                "shown as ON/OFF");
@@ -343,8 +455,14 @@ bool RequestOptions::readRead(const QCommandLineParser &parser, const TargetSett
         return false;
     }
 
-    const int a = int(address.value);
-    const int q = int(quantity.value);
+    // mbpoll's -c counts the values of -t 4:int and 4:float, two registers each.
+    const int perValue = table.registersPerValue();
+    const int q = int(qBound(-kIntMax, quantity.value * perValue, kIntMax)); // refused by the builder when large
+    const QString asRegisters = perValue > 1 ? QStringLiteral(" (-c %1 values of -t %2 are %3 registers)")
+                                                   .arg(quantity.value)
+                                                   .arg(parser.value(m_table))
+                                                   .arg(q)
+                                             : QString();
     // A format wider than the registers read would print a blank column: said instead.
     for (const RegisterFormat &f : std::as_const(out.formats)) {
         if (registers && q >= 1 && f.registerCount() > q) {
@@ -364,7 +482,8 @@ bool RequestOptions::readRead(const QCommandLineParser &parser, const TargetSett
     default: pdu = RequestBuilder::readInputRegisters(a, q); break;
     }
     if (!built(pdu, registers, error)) {
-        appendAddressHint(a, error);
+        error += asRegisters;
+        appendAddressHint(a + (out.oneBased ? 1 : 0), out.oneBased, error);
         return false;
     }
     AduOptions options;
@@ -378,9 +497,9 @@ bool RequestOptions::readRead(const QCommandLineParser &parser, const TargetSett
     const char *noun = registers ? (q == 1 ? "register" : "registers")
                        : function.value == 1 ? (q == 1 ? "coil" : "coils")
                                              : (q == 1 ? "discrete input" : "discrete inputs");
-    r.description = describe(r.functionCode, unit, a, q, noun);
-    r.item = RequestItem::forLink(AduBuilder::complete(pdu.pdu, options), url,
-                                  QStringLiteral("%1 %2 x%3").arg(QString::fromLatin1(functionName(r.functionCode))).arg(a).arg(q));
+    r.oneBased = out.oneBased;
+    r.description = describe(r.functionCode, unit, a, q, noun, out.oneBased);
+    r.item = RequestItem::forLink(AduBuilder::complete(pdu.pdu, options), url, itemName(r.functionCode, a, q, out.oneBased));
     out.requests.append(r);
     out.summary = r.description;
     out.built = true;
@@ -398,12 +517,9 @@ bool RequestOptions::readWrite(const QCommandLineParser &parser, const TargetSet
     int unit = 1;
     if (!readUnit(parser, unit, error))
         return false;
-    constexpr qint64 kIntMax = std::numeric_limits<int>::max();
-    const IntegerResult address = parseInteger(QStringLiteral("--address"), parser.value(m_address), -kIntMax, kIntMax);
-    if (!address.ok) {
-        error = address.error;
+    int a = 0;
+    if (!readAddress(parser, out.oneBased, a, error))
         return false;
-    }
     if (url.delimited.enabled) {
         error = QStringLiteral("%1 uses delimited framing, which carries no Modbus requests: send its frames with --hex")
                     .arg(url.toString());
@@ -453,8 +569,8 @@ bool RequestOptions::readWrite(const QCommandLineParser &parser, const TargetSet
         }
     }
 
-    const int a = int(address.value);
     const int n = int(registers ? words.size() : coils.size());
+    const int typed = a + (out.oneBased ? 1 : 0);
     AduOptions options;
     options.framing = url.framing();
     options.unitId = quint8(unit);
@@ -465,10 +581,11 @@ bool RequestOptions::readWrite(const QCommandLineParser &parser, const TargetSet
         r.functionCode = code;
         r.address = at;
         r.quantity = count;
+        r.oneBased = out.oneBased;
         r.description = describe(code, unit, at, count, registers ? (count == 1 ? "register" : "registers")
-                                                                  : (count == 1 ? "coil" : "coils"));
-        r.item = RequestItem::forLink(AduBuilder::complete(pdu.pdu, options), url,
-                                      QStringLiteral("%1 %2 x%3").arg(QString::fromLatin1(functionName(code))).arg(at).arg(count));
+                                                                  : (count == 1 ? "coil" : "coils"),
+                                 out.oneBased);
+        r.item = RequestItem::forLink(AduBuilder::complete(pdu.pdu, options), url, itemName(code, at, count, out.oneBased));
         if (registers)
             r.registers = words.mid(at - a, count);
         else
@@ -482,7 +599,7 @@ bool RequestOptions::readWrite(const QCommandLineParser &parser, const TargetSet
             if (!built(pdu, registers, error)) {
                 if (n > 1)
                     error = QStringLiteral("value %1 of %2: ").arg(i + 1).arg(n) + error;
-                appendAddressHint(a, error);
+                appendAddressHint(typed, out.oneBased, error);
                 out.requests.clear();
                 return false;
             }
@@ -492,13 +609,13 @@ bool RequestOptions::readWrite(const QCommandLineParser &parser, const TargetSet
         const BuildResult pdu = registers ? RequestBuilder::writeMultipleRegisters(a, words)
                                           : RequestBuilder::writeMultipleCoils(a, coils);
         if (!built(pdu, registers, error)) {
-            appendAddressHint(a, error);
+            appendAddressHint(typed, out.oneBased, error);
             return false;
         }
         plan(pdu, registers ? 0x10 : 0x0F, a, n);
     }
     out.summary = describeItems(registers ? 0x10 : 0x0F, unit, a, n,
-                                registers ? (n == 1 ? "register" : "registers") : (n == 1 ? "coil" : "coils"));
+                                registers ? (n == 1 ? "register" : "registers") : (n == 1 ? "coil" : "coils"), out.oneBased);
     out.built = true;
     return true;
 }
@@ -534,7 +651,7 @@ QString addressHintFor(const PlannedRequest &request, quint8 exceptionCode, bool
 {
     if (!exception || exceptionCode != quint8(ExceptionCode::IllegalDataAddress) || request.functionCode == 0)
         return {};
-    return hintWithOption(request.address);
+    return hintWithOption(request.address + (request.oneBased ? 1 : 0), request.oneBased);
 }
 
 } // namespace mbscope::app

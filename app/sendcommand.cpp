@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "deviceexchange.h"
 #include "exchangecommand.h"
+#include "framelog.h"
 #include "recordoptions.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
@@ -36,10 +37,14 @@ int runSend(const QStringList &arguments)
     const TargetSettings &target = input.target;
     const RequestPlan &plan = input.plan;
 
+    FrameLog frames;
+    if (!openFrameLog(frames, input.print, QStringLiteral("send"), err))
+        return ExitUsage;
     TrafficRecording recording;
     if (!openRecording(recording, input.record, clientMetadata(QStringLiteral("send"), arguments, target, plan), QStringLiteral("send"), err))
         return ExitUsage;
-    const QList<Transaction> records = exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr);
+    const QList<Transaction> records =
+        exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr, frames.isOpen() ? &frames : nullptr);
     finishRecording(recording, err);
     const Transaction &t = records.constFirst();
     if (input.json) {

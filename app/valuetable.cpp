@@ -88,18 +88,27 @@ QStringList ValueTable::bitTexts() const
 QString ValueTable::text() const
 {
     QList<QStringList> rows;
+    // Counted from 1, the number the user typed leads the row; the PDU address follows.
+    const auto lead = [this](int i) {
+        QStringList row{ReadAnswer::addressText(address + i), reference(functionCode, address + i)};
+        if (oneBased)
+            row.prepend(QString::number(address + i + 1));
+        return row;
+    };
+    QStringList heading{QStringLiteral("ADDRESS"), QStringLiteral("REFERENCE")};
+    if (oneBased)
+        heading.prepend(QStringLiteral("1-BASED"));
+    const int leading = int(heading.size());
     if (!bits.isEmpty()) {
-        rows.append({QStringLiteral("ADDRESS"), QStringLiteral("REFERENCE"), QStringLiteral("VALUE")});
+        rows.append(heading + QStringList{QStringLiteral("VALUE")});
         for (qsizetype i = 0; i < bits.size(); ++i)
-            rows.append({ReadAnswer::addressText(address + int(i)), reference(functionCode, address + int(i)),
-                         bits.at(i) ? QStringLiteral("1  ON") : QStringLiteral("0  OFF")});
+            rows.append(lead(int(i)) + QStringList{bits.at(i) ? QStringLiteral("1  ON") : QStringLiteral("0  OFF")});
     } else {
-        QStringList heading{QStringLiteral("ADDRESS"), QStringLiteral("REFERENCE")};
         for (const RegisterFormat &f : formats)
             heading.append(f.name());
         rows.append(heading);
         for (qsizetype i = 0; i < registers.size(); ++i) {
-            QStringList row{ReadAnswer::addressText(address + int(i)), reference(functionCode, address + int(i))};
+            QStringList row = lead(int(i));
             for (const RegisterFormat &f : formats) {
                 const auto v = valueAt(registers, i, f);
                 row.append(v ? v->toText() : QString());
@@ -120,7 +129,7 @@ QString ValueTable::text() const
         QString line;
         for (qsizetype c = 0; c < row.size(); ++c) {
             // Numbers read best right-aligned; the address and reference columns lead on the left.
-            const bool right = c >= 2 && bits.isEmpty();
+            const bool right = c >= leading && bits.isEmpty();
             line += right ? row.at(c).rightJustified(widths.at(c)) : row.at(c).leftJustified(widths.at(c));
             line += QStringLiteral("  ");
         }
@@ -131,18 +140,43 @@ QString ValueTable::text() const
     return out;
 }
 
+QString ValueTable::terse() const
+{
+    QString out;
+    const int base = oneBased ? 1 : 0;
+    for (qsizetype i = 0; i < bits.size(); ++i)
+        out += QStringLiteral("[%1]: \t%2\n").arg(address + int(i) + base).arg(bits.at(i) ? 1 : 0);
+    if (formats.isEmpty())
+        return out;
+    const int step = formats.constFirst().registerCount();
+    for (qsizetype i = 0; i + step <= registers.size(); i += step) {
+        QStringList values;
+        for (const RegisterFormat &f : formats) {
+            const auto v = valueAt(registers, i, f);
+            values.append(v ? v->toText() : QStringLiteral("-"));
+        }
+        out += QStringLiteral("[%1]: \t%2\n").arg(address + int(i) + base).arg(values.join(QLatin1Char('\t')));
+    }
+    return out;
+}
+
 QJsonArray ValueTable::json() const
 {
     QJsonArray array;
     for (qsizetype i = 0; i < bits.size(); ++i) {
-        array.append(QJsonObject{{QStringLiteral("address"), address + int(i)},
-                                 {QStringLiteral("reference"), reference(functionCode, address + int(i))},
-                                 {QStringLiteral("value"), bits.at(i) ? 1 : 0}});
+        QJsonObject o{{QStringLiteral("address"), address + int(i)},
+                      {QStringLiteral("reference"), reference(functionCode, address + int(i))},
+                      {QStringLiteral("value"), bits.at(i) ? 1 : 0}};
+        if (oneBased)
+            o.insert(QStringLiteral("one_based"), address + int(i) + 1);
+        array.append(o);
     }
     for (qsizetype i = 0; i < registers.size(); ++i) {
         QJsonObject o{{QStringLiteral("address"), address + int(i)},
                       {QStringLiteral("reference"), reference(functionCode, address + int(i))},
                       {QStringLiteral("raw"), int(registers.at(i))}};
+        if (oneBased)
+            o.insert(QStringLiteral("one_based"), address + int(i) + 1);
         for (const RegisterFormat &f : formats) {
             if (const auto v = valueAt(registers, i, f))
                 o.insert(f.name(), jsonOf(*v));

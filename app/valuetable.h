@@ -19,6 +19,7 @@ struct ValueTable {
     QList<quint16> registers; // register functions
     QList<bool> bits;         // bit functions
     QList<RegisterFormat> formats;
+    bool oneBased = false; // --one-based: each row leads with its number counted from 1
 
     [[nodiscard]] bool isEmpty() const { return registers.isEmpty() && bits.isEmpty(); }
 
@@ -33,10 +34,15 @@ struct ValueTable {
     [[nodiscard]] QStringList valueTexts(RegisterFormat format) const;
     [[nodiscard]] QStringList bitTexts() const;
 
-    // Aligned columns with a heading line.
+    // Aligned columns with a heading line (a 1-BASED column first when oneBased).
     [[nodiscard]] QString text() const;
+    // One value a line, as mbpoll prints them: "[REF]: \tVALUE", REF the PDU address (counted from
+    // 1 when oneBased), a value of 2 or 4 registers at its first register (the first format's
+    // width; further formats follow on the line, tab-separated).
+    [[nodiscard]] QString terse() const;
     // [{"address", "reference", "value"} for bits; {"address", "reference", "raw", "<format>": value...}
-    // for registers]. Integers and finite floats are JSON numbers (integers beyond 2^53 are text).
+    // for registers], with "one_based" (address + 1) when oneBased. Integers and finite floats are
+    // JSON numbers (integers beyond 2^53 are text).
     [[nodiscard]] QJsonArray json() const;
 };
 

@@ -3,6 +3,7 @@
 #include "cli.h"
 #include "deviceexchange.h"
 #include "exchangecommand.h"
+#include "framelog.h"
 #include "recordoptions.h"
 #include "requestoptions.h"
 #include "targetoptions.h"
@@ -43,10 +44,14 @@ int runWrite(const QStringList &arguments)
     const TargetSettings &target = input.target;
     const RequestPlan &plan = input.plan;
 
+    FrameLog frames;
+    if (!openFrameLog(frames, input.print, QStringLiteral("write"), err))
+        return ExitUsage;
     TrafficRecording recording;
     if (!openRecording(recording, input.record, clientMetadata(QStringLiteral("write"), arguments, target, plan), QStringLiteral("write"), err))
         return ExitUsage;
-    const QList<Transaction> records = exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr);
+    const QList<Transaction> records =
+        exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr, frames.isOpen() ? &frames : nullptr);
     finishRecording(recording, err);
     int status = ExitOk;
     for (const Transaction &t : records)
@@ -57,6 +62,7 @@ int runWrite(const QStringList &arguments)
     values.functionCode = plan.requests.constFirst().functionCode;
     values.address = plan.requests.constFirst().address;
     values.formats = plan.formats;
+    values.oneBased = plan.oneBased;
     for (const PlannedRequest &r : plan.requests) {
         values.registers += r.registers;
         values.bits += r.coils;

@@ -42,7 +42,7 @@ QList<HelpOption> helpOptions(const QString &help)
             continue;
         const QString name = m.captured(2).isEmpty() ? m.captured(1) : m.captured(2);
         if (!name.isEmpty())
-            options.append({name, m.captured(3)});
+            options.append({name, m.captured(3), m.captured(2).isEmpty() ? QString() : m.captured(1)});
     }
     return options;
 }

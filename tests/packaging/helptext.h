@@ -10,6 +10,7 @@ namespace mbscope::testpackaging {
 struct HelpOption {
     QString name;      // "framing" (the long name; "h" when only a short one exists)
     QString valueName; // "framing"; empty for a flag
+    QString shortName; // "a" of "-a, --unit <id>"; empty when the option has none (or no long name)
 };
 
 // The options in a subcommand's --help ("Options:" up to the next heading or the end).

@@ -1,6 +1,7 @@
 // docs/mbscope.1 against the program's own help: every subcommand `mbscope --help` lists has a
 // section in the man page, every option its --help lists is mentioned in that section and
-// described (with the same value name) in the page, and no option the page describes for a
+// described (with the same value name) in the page, with its short form when it has one ("-a id,
+// --unit id"), and no option the page describes for a
 // command is unknown to it. So neither can change without the other.
 #include "helptext.h"
 #include "manpage.h"
@@ -19,7 +20,8 @@ const QString kCommands = QStringLiteral("COMMANDS");
 // Sections that describe options shared by several commands; each command's section says which
 // of them it takes.
 const QStringList kSharedOptionSections{QStringLiteral("TARGET OPTIONS"), QStringLiteral("REQUEST OPTIONS"),
-                                        QStringLiteral("POLL OPTIONS"), QStringLiteral("RECORD OPTIONS")};
+                                        QStringLiteral("POLL OPTIONS"), QStringLiteral("PRINT OPTIONS"),
+                                        QStringLiteral("RECORD OPTIONS")};
 
 bool isHelpOption(const QString &name)
 {
@@ -43,6 +45,17 @@ QStringList definitionsIn(const QStringList &tags, const QString &name)
             if (a == option || a.startsWith(option + QLatin1Char(' ')))
                 found.append(a);
         }
+    }
+    return found;
+}
+
+// The tags that describe --name ("-a id, --unit id" for unit).
+QStringList tagsDefining(const QStringList &tags, const QString &name)
+{
+    QStringList found;
+    for (const QString &tag : tags) {
+        if (!definitionsIn({tag}, name).isEmpty())
+            found.append(tag);
     }
     return found;
 }
@@ -134,10 +147,12 @@ void TestManPage::everyOptionIsDocumented_data()
     QTest::addColumn<QString>("command");
     QTest::addColumn<QString>("option");
     QTest::addColumn<QString>("valueName");
+    QTest::addColumn<QString>("shortName");
     for (const QString &command : std::as_const(m_commands)) {
         for (const HelpOption &o : optionsOf(command)) {
             if (!isHelpOption(o.name))
-                QTest::addRow("%s --%s", qPrintable(command), qPrintable(o.name)) << command << o.name << o.valueName;
+                QTest::addRow("%s --%s", qPrintable(command), qPrintable(o.name)) << command << o.name << o.valueName
+                                                                                  << o.shortName;
         }
     }
 }
@@ -149,6 +164,7 @@ void TestManPage::everyOptionIsDocumented()
     QFETCH(QString, command);
     QFETCH(QString, option);
     QFETCH(QString, valueName);
+    QFETCH(QString, shortName);
     const ManPage::Section *own = m_page.section(kCommands, command);
     QVERIFY2(own, qPrintable(QStringLiteral("no section for %1").arg(command)));
     QVERIFY2(mentions(own->text, QStringLiteral("--") + option),
@@ -156,10 +172,13 @@ void TestManPage::everyOptionIsDocumented()
                             .arg(command, option)));
 
     QStringList definitions = definitionsIn(own->tags, option);
+    QStringList tags = tagsDefining(own->tags, option);
     if (definitions.isEmpty()) {
         for (const QString &heading : kSharedOptionSections) {
-            if (const ManPage::Section *shared = m_page.section(heading))
+            if (const ManPage::Section *shared = m_page.section(heading)) {
                 definitions += definitionsIn(shared->tags, option);
+                tags += tagsDefining(shared->tags, option);
+            }
         }
     }
     QVERIFY2(!definitions.isEmpty(),
@@ -170,6 +189,18 @@ void TestManPage::everyOptionIsDocumented()
     QVERIFY2(definitions.contains(expected),
              qPrintable(QStringLiteral("mbscope %1 --help shows '%2', the man page '%3'")
                             .arg(command, expected, definitions.join(QStringLiteral("' and '")))));
+    if (shortName.isEmpty())
+        return;
+    const QString shortForm = QStringLiteral("-") + shortName;
+    const bool listed = std::any_of(tags.cbegin(), tags.cend(), [&](const QString &tag) {
+        const QStringList alternatives = tag.split(QStringLiteral(", "));
+        return std::any_of(alternatives.cbegin(), alternatives.cend(), [&](const QString &a) {
+            return a.trimmed() == shortForm || a.trimmed().startsWith(shortForm + QLatin1Char(' '));
+        });
+    });
+    QVERIFY2(listed, qPrintable(QStringLiteral("mbscope %1 --help gives --%2 the short form %3, but the man page's item '%4' "
+                                               "does not list it")
+                                    .arg(command, option, shortForm, tags.join(QStringLiteral("' and '")))));
 }
 
 void TestManPage::documentedOptionsExist_data()
