@@ -15,7 +15,7 @@ constexpr qint64 kMaxTimeoutNs = 3'600'000'000'000LL;
 
 } // namespace
 
-TargetOptions::TargetOptions()
+TargetOptions::TargetOptions(bool withRetries)
     : m_target(QStringLiteral("target"),
                QStringLiteral("The device: tcp://host:502, rtu-tcp://host:4001, ascii-tcp://host:port, udp://host:502, "
                               "rtu-udp://host:port, rtu:///dev/ttyUSB0?baud=9600&parity=E, ascii:///dev/ttyUSB0?..., "
@@ -28,12 +28,15 @@ TargetOptions::TargetOptions()
     , m_retries(QStringLiteral("retries"),
                 QStringLiteral("Further attempts after a timeout or an unusable answer (default 0)."), QStringLiteral("n"),
                 QStringLiteral("0"))
+    , m_withRetries(withRetries)
 {
 }
 
 void TargetOptions::addTo(QCommandLineParser &parser) const
 {
-    parser.addOptions({m_target, m_timeout, m_retries});
+    parser.addOptions({m_target, m_timeout});
+    if (m_withRetries)
+        parser.addOption(m_retries);
 }
 
 bool TargetOptions::read(const QCommandLineParser &parser, const QString &command, TargetSettings &out,
@@ -67,6 +70,8 @@ bool TargetOptions::read(const QCommandLineParser &parser, const QString &comman
         out.timeoutMs = int(d.ns / 1'000'000);
     }
 
+    if (!m_withRetries)
+        return true;
     const IntegerResult retries = parseInteger(QStringLiteral("--retries"), parser.value(m_retries), 0, 100);
     if (!retries.ok) {
         err << prefix << retries.error << '\n';
