@@ -190,13 +190,11 @@ int runConform(const QStringList &arguments)
     InterruptWatcher interrupt;
     QObject::connect(&interrupt, &InterruptWatcher::interrupted, &interrupt, [&runner] { runner.stop(); });
     if (!asJson) {
-        out << "conform  " << settings.url.toString() << ", unit " << settings.unit << " ("
-            << (settings.writable.isEmpty() ? QStringLiteral("reads only") : QStringLiteral("writes allowed on ") + [&] {
-                   QStringList w;
-                   for (const TableRange &r : settings.writable)
-                       w.append(r.toString());
-                   return w.join(QLatin1String(", "));
-               }())
+        QStringList writes;
+        for (const TableRange &r : settings.writable)
+            writes.append(r.toString());
+        out << "conform  " << settings.url.toString() << ", unit " << int(settings.unit) << " ("
+            << (writes.isEmpty() ? QStringLiteral("reads only") : QString(QStringLiteral("writes allowed on ") + writes.join(QLatin1String(", "))))
             << ")\n";
         out.flush();
     }

@@ -106,7 +106,7 @@ QString ConformanceResult::toText() const
                .arg(count(CheckVerdict::Error))
                .arg(double(elapsedNs) / 1e9, 0, 'f', 3);
     out += passed() ? QStringLiteral("verdict    every mandatory check passed\n")
-                    : QStringLiteral("verdict    %1\n").arg(linkFailed ? QStringLiteral("not tested: ") + linkMessage
+                    : QStringLiteral("verdict    %1\n").arg(linkFailed ? QString(QStringLiteral("not tested: ") + linkMessage)
                                                                       : interrupted ? QStringLiteral("interrupted")
                                                                                     : QStringLiteral("%1 mandatory check(s) failed").arg(failed(CheckLevel::Mandatory) + count(CheckVerdict::Error)));
     return out;

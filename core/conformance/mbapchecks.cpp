@@ -70,7 +70,7 @@ void judgeHeader(const char *id, ConformanceContext &ctx, CheckResult &res)
     }
     const AduParts parts = AduBuilder::parseMbap(mbapFrames(e.answer).constFirst());
     const QString got = QStringLiteral("sent %1; got %2; %3 requires ").arg(ConformanceJudge::hex(request), ConformanceJudge::hex(e.answer), res.clause);
-    const QLatin1StringView which(id);
+    const QLatin1String which(id);
     if (which == QLatin1String("mbap.transaction-id")) {
         if (parts.transactionId == kTid)
             res.pass(QStringLiteral("transaction id %1 echoed").arg(hex4(kTid)));

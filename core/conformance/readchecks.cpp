@@ -58,8 +58,7 @@ QList<bool> unpack(const QByteArray &data, int count)
 
 void addChecks(QList<ConformanceCheck> &out, const ReadFunction &r)
 {
-    const quint8 fc = r.function;
-    const int max = QuantityLimits::maxQuantity(fc);
+    const int max = QuantityLimits::maxQuantity(r.function);
     const bool bits = isBitTable(r.table);
 
     ConformanceCheck answer = make(r, "answer", QStringLiteral("a read of one item is answered well-formed"), CheckLevel::Mandatory,

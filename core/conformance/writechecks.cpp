@@ -95,7 +95,7 @@ bool readBefore(ConformanceContext &ctx, CheckResult &res, bool bits, int addres
 {
     const std::optional<QList<int>> found = readValues(ctx, bits, address, count);
     if (!found) {
-        res.skip(QStringLiteral("the values to put back could not be read (%1 from %2)").arg(bits ? "01" : "03").arg(address));
+        res.skip(QStringLiteral("the values to put back could not be read (%1 from %2)").arg(QLatin1String(bits ? "01" : "03")).arg(address));
         return false;
     }
     *values = *found;
@@ -164,7 +164,7 @@ QList<ConformanceCheck> WriteChecks::checks()
          "Application Protocol V1.1b3, 6.12", 4},
     };
     for (const Multiple &m : kMultiple) {
-        out.append(check(m.echoId, QStringLiteral("%1 echoes the start address and quantity").arg(m.bits ? "0F Write Multiple Coils" : "10 Write Multiple Registers"),
+        out.append(check(m.echoId, QStringLiteral("%1 echoes the start address and quantity").arg(QLatin1String(m.bits ? "0F Write Multiple Coils" : "10 Write Multiple Registers")),
                          m.clause, m.function, m.table, [m](ConformanceContext &ctx, CheckResult &res, const TableRange &w) {
                              const int n = qMin(w.count(), m.most);
                              QList<int> before;
