@@ -23,8 +23,10 @@ public:
     // Passes when the answer is a well-formed normal answer to the request (the dissector finds no error).
     static bool normal(CheckResult &result, const ConformanceExchange &e, const QString &requirement);
     // Passes when nothing came back within the wait (extra: bytes read after it, listened for).
+    // closing: a connection the device closes without an answer is silence too (a request it
+    // cannot frame, after which a server may drop the connection).
     static bool silence(CheckResult &result, const ConformanceExchange &e, const QString &requirement,
-                        const QByteArray &extra = {});
+                        const QByteArray &extra = {}, bool closing = false);
     // Passes on silence or on a well-formed exception response.
     static bool silenceOrException(CheckResult &result, const ConformanceExchange &e, const QString &requirement);
 

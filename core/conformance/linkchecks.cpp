@@ -60,8 +60,16 @@ QList<ConformanceCheck> LinkChecks::checks()
     ConformanceCheck reserved = check(
         "serial.reserved-unit", "a request to reserved unit 248 is not answered", "Serial Line V1.02, 2.2", CheckLevel::Mandatory,
         [](ConformanceContext &ctx, CheckResult &res) {
-            ConformanceJudge::silence(res, ctx.link().ask(248, harmlessRead(ctx)),
-                                      QStringLiteral("slave addresses 1-247: 248-255 are reserved, so no slave answers them"));
+            const ConformanceExchange e = ctx.link().ask(248, harmlessRead(ctx));
+            // Over TCP or UDP the serial frames reach the line through a gateway, which may say
+            // that no device answered (exception 0A or 0B, V1.1b3 7): that is not a slave answering.
+            if (!ctx.link().url().isSerial() && e.transaction.status == TransactionStatus::Exception
+                && (e.transaction.exceptionCode == 0x0A || e.transaction.exceptionCode == 0x0B)) {
+                ConformanceJudge::record(res, e);
+                res.pass(QStringLiteral("the gateway answered %1: no slave answered").arg(ConformanceJudge::exceptionText(e.transaction.exceptionCode)));
+                return;
+            }
+            ConformanceJudge::silence(res, e, QStringLiteral("slave addresses 1-247: 248-255 are reserved, so no slave answers them"));
         });
     reserved.needs.serial = true;
     out.append(reserved);

@@ -80,10 +80,11 @@ private Q_SLOTS:
     }
     void shippedProfilePasses()
     {
+        QFETCH(QString, listen);
         Background sim;
         QString error;
         QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
-                            QFETCH(QString, listen), QStringLiteral("--quiet")},
+                            listen, QStringLiteral("--quiet")},
                            &error),
                  qPrintable(error));
         const QString junit = m_dir.filePath(QStringLiteral("conform-%1.xml").arg(QString::fromLatin1(QTest::currentDataTag())));
@@ -237,9 +238,10 @@ private Q_SLOTS:
     void usageErrors()
     {
         QFETCH(QStringList, args);
+        QFETCH(QString, says);
         const CliResult r = runMbscope(QStringList{QStringLiteral("conform")} + args);
         QCOMPARE(r.exitCode, 2);
-        QVERIFY2(r.errText().contains(QFETCH(QString, says)), r.describe());
+        QVERIFY2(r.errText().contains(says), r.describe());
     }
 
     void unreachableTarget()

@@ -34,12 +34,15 @@ private Q_SLOTS:
     void rangeParses()
     {
         QFETCH(QString, text);
+        QFETCH(int, table);
+        QFETCH(int, first);
+        QFETCH(int, last);
         QString error;
         const std::optional<TableRange> r = TableRange::parse(text, &error);
         QVERIFY2(r, qPrintable(error));
-        QCOMPARE(int(r->table), QFETCH(int, table));
-        QCOMPARE(r->first, QFETCH(int, first));
-        QCOMPARE(r->last, QFETCH(int, last));
+        QCOMPARE(int(r->table), table);
+        QCOMPARE(r->first, first);
+        QCOMPARE(r->last, last);
     }
 
     void rangeRefused_data()
@@ -56,9 +59,10 @@ private Q_SLOTS:
     void rangeRefused()
     {
         QFETCH(QString, text);
+        QFETCH(QString, says);
         QString error;
         QVERIFY(!TableRange::parse(text, &error));
-        QVERIFY2(error.contains(QFETCH(QString, says)), qPrintable(error));
+        QVERIFY2(error.contains(says), qPrintable(error));
         QVERIFY2(error.contains(QStringLiteral("'%1'").arg(text)), qPrintable(error));
     }
 
@@ -107,20 +111,23 @@ private Q_SLOTS:
     }
     void verdictAndJUnit()
     {
+        QFETCH(int, level);
+        QFETCH(int, verdict);
+        QFETCH(bool, passed);
+        QFETCH(QString, element);
         ConformanceResult result;
         result.target = QStringLiteral("tcp://127.0.0.1:502");
         CheckResult c;
         c.id = QStringLiteral("read.03.quantity-zero");
         c.title = QStringLiteral("quantity 0 gets exception 03");
         c.clause = QStringLiteral("Application Protocol V1.1b3, 6.3");
-        c.level = CheckLevel(QFETCH(int, level));
-        c.verdict = CheckVerdict(QFETCH(int, verdict));
+        c.level = CheckLevel(level);
+        c.verdict = CheckVerdict(verdict);
         c.sentence = QStringLiteral("what happened");
         result.checks.append(c);
-        QCOMPARE(result.passed(), QFETCH(bool, passed));
+        QCOMPARE(result.passed(), passed);
         const QByteArray xml = JUnitReport::toXml(result.toJUnit());
         QVERIFY(xml.contains("name=\"read.03.quantity-zero\""));
-        const QString element = QFETCH(QString, element);
         if (element.isEmpty())
             QVERIFY(!xml.contains("<failure") && !xml.contains("<skipped") && !xml.contains("<error"));
         else
