@@ -29,7 +29,7 @@ QString ConformanceJudge::seen(const ConformanceExchange &e)
     if (e.linkFailed())
         return QStringLiteral("a link error (%1)").arg(t.problem);
     if (e.silent())
-        return QStringLiteral("no answer");
+        return QStringLiteral("no answer within %1 ms").arg(e.timeoutMs);
     switch (t.status) {
     case TransactionStatus::Ok:
         return QStringLiteral("%1 (a normal answer)").arg(hex(t.response));

@@ -46,7 +46,8 @@ ConformanceExchange ConformanceLink::exchange(const QByteArray &adu, int timeout
 {
     ConformanceExchange e;
     e.request = adu;
-    const std::optional<ProbeChannel::Answer> answer = m_channel->askRaw(adu, timeoutMs < 0 ? m_timeoutMs : timeoutMs);
+    e.timeoutMs = timeoutMs < 0 ? m_timeoutMs : timeoutMs;
+    const std::optional<ProbeChannel::Answer> answer = m_channel->askRaw(adu, e.timeoutMs);
     if (answer) {
         e.transaction = answer->transaction;
         e.answer = answer->bytesRead;

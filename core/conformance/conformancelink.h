@@ -18,6 +18,7 @@ struct ConformanceExchange {
     QByteArray request;
     Transaction transaction; // the engine's record: its status, exception code, matched answer and times
     QByteArray answer;       // every byte read while the request was in flight (empty: silence)
+    int timeoutMs = 0;       // how long it waited
 
     [[nodiscard]] bool silent() const { return answer.isEmpty(); }
     [[nodiscard]] bool linkFailed() const { return transaction.status == TransactionStatus::LinkError; }

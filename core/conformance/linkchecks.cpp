@@ -108,7 +108,14 @@ QList<ConformanceCheck> LinkChecks::checks()
                              res.skip(QStringLiteral("the read was not answered (other checks say why)"));
                              return;
                          }
-                         // Wait as long again as the answer took, and at least 300 ms, for a second one.
+                         // Bytes read with the answer beyond it (a copy sent at once)...
+                         const QByteArray with = e.transaction.response.isEmpty() ? QByteArray() : e.answer.mid(e.answer.indexOf(e.transaction.response) + e.transaction.response.size());
+                         if (!e.transaction.response.isEmpty() && !with.isEmpty()) {
+                             res.fail(QStringLiteral("sent %1; got %2, then %3 with it; %4 requires one answer per request")
+                                          .arg(ConformanceJudge::hex(e.request), ConformanceJudge::hex(e.transaction.response), ConformanceJudge::hex(with), res.clause));
+                             return;
+                         }
+                         // ...or after it: wait as long again as the answer took, and at least 300 ms.
                          const int waitMs = int(qMax<qint64>(300, 2 * qMax<qint64>(0, e.transaction.latencyNs()) / 1000000));
                          const qsizetype from = ctx.link().framesRead();
                          const QByteArray more = ctx.link().listen(waitMs);

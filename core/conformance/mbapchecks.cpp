@@ -10,15 +10,15 @@ namespace mbscope {
 
 namespace {
 
-// A harmless read the device answers: one item of the first table it has a readable address of.
-QByteArray harmlessRead(const ConformanceContext &ctx)
+// A harmless read the device answers: quantity items of the first table it has a readable address of.
+QByteArray harmlessRead(const ConformanceContext &ctx, int quantity = 1)
 {
     for (quint8 f : {quint8(0x03), quint8(0x04), quint8(0x01), quint8(0x02)}) {
         const int at = ctx.readable(SimTable(ReadChecks::tableOf(f)));
         if (at >= 0 && ctx.support(f) == FunctionSupport::Supported)
-            return ReadChecks::readPdu(f, at, 1);
+            return ReadChecks::readPdu(f, at, quantity);
     }
-    return ReadChecks::readPdu(0x03, 0, 1);
+    return ReadChecks::readPdu(0x03, 0, quantity);
 }
 
 QString hex4(int value)
@@ -61,14 +61,19 @@ void judgeHeader(const char *id, ConformanceContext &ctx, CheckResult &res)
 {
     // A transaction id far from the ones counting up, so that an echo is not a coincidence.
     constexpr quint16 kTid = 0xA5C3;
-    const QByteArray request = AduBuilder::mbap(harmlessRead(ctx), ctx.unit(), kTid);
+    // Three items, a quantity no other check reads, so that a fault of the header alone can be
+    // aimed at these checks; the header is judged whatever the PDU (an exception has one too).
+    const QByteArray request = AduBuilder::mbap(harmlessRead(ctx, 3), ctx.unit(), kTid);
     const ConformanceExchange e = ctx.link().exchange(request);
     ConformanceJudge::record(res, e);
     if (e.silent()) {
         res.fail(ConformanceJudge::failure(res, e, QStringLiteral("an answer")));
         return;
     }
-    const AduParts parts = AduBuilder::parseMbap(mbapFrames(e.answer).constFirst());
+    // The answer the engine matched to the request (by timing, whatever its keys), else the
+    // first frame read: a late or duplicate answer to an earlier request may come first.
+    const QByteArray frame = e.transaction.response.isEmpty() ? mbapFrames(e.answer).constFirst() : e.transaction.response;
+    const AduParts parts = AduBuilder::parseMbap(frame);
     const QString got = QStringLiteral("sent %1; got %2; %3 requires ").arg(ConformanceJudge::hex(request), ConformanceJudge::hex(e.answer), res.clause);
     const QLatin1String which(id);
     if (which == QLatin1String("mbap.transaction-id")) {
@@ -82,13 +87,16 @@ void judgeHeader(const char *id, ConformanceContext &ctx, CheckResult &res)
         else
             res.fail(got + QStringLiteral("protocol id 0 (MODBUS) in the answer (it carried %1)").arg(hex4(parts.protocolId)));
     } else if (which == QLatin1String("mbap.length")) {
-        const AduParts whole = AduBuilder::parseMbap(e.answer);
+        // A matched, well-formed answer had its length checked by the dissector; otherwise every
+        // byte read is the answer whose length is judged (the bytes a wrong length left over).
+        const bool wellFormed = e.transaction.status == TransactionStatus::Ok || e.transaction.status == TransactionStatus::Exception;
+        const AduParts whole = AduBuilder::parseMbap(wellFormed ? e.transaction.response : e.answer);
         if (whole.lengthMatches)
             res.pass(QStringLiteral("length %1 matches the %2 bytes that follow it").arg(parts.length).arg(parts.length));
         else
             res.fail(got + QStringLiteral("the length field to count the unit id and the PDU: it says %1, %2 bytes follow it")
                                .arg(whole.length)
-                               .arg(qMax<qsizetype>(0, e.answer.size() - 6)));
+                               .arg(qMax<qsizetype>(0, (wellFormed ? e.transaction.response : e.answer).size() - 6)));
     } else {
         if (parts.unitId == ctx.unit())
             res.pass(QStringLiteral("unit id %1 echoed").arg(ctx.unit()));

@@ -134,39 +134,44 @@ private Q_SLOTS:
                                               << "read.03.quantity-zero" << QStringList{"read.03.quantity-zero"};
         QTest::newRow("silence for an unassigned function") << tcp << R"({"kind": "drop", "functions": ["0x12"]})" << ""
                                                             << "exception.illegal-function" << QStringList{"exception.illegal-function"};
-        QTest::newRow("transaction id not echoed") << tcp << R"({"kind": "wrongTransactionId", "delta": 1})" << ""
-                                                   << "mbap.transaction-id" << QStringList{};
-        QTest::newRow("unit id not echoed") << tcp << R"({"kind": "wrongUnit", "delta": 1})" << "" << "mbap.unit-id" << QStringList{};
+        QTest::newRow("transaction id not echoed") << tcp << R"({"kind": "wrongTransactionId", "delta": 1, "functions": ["0x03"], "quantity": 3})" << ""
+                                                   << "mbap.transaction-id" << QStringList{"mbap.transaction-id"};
+        QTest::newRow("unit id not echoed") << tcp << R"({"kind": "wrongUnit", "delta": 1, "functions": ["0x03"], "quantity": 3})" << "" << "mbap.unit-id"
+                                            << QStringList{"mbap.unit-id"};
         QTest::newRow("closes after each answer") << tcp << R"({"kind": "close", "when": "after"})" << "" << "tcp.keeps-connection"
-                                                  << QStringList{"tcp.keeps-connection"};
-        QTest::newRow("answers twice") << tcp << R"({"kind": "duplicate", "copies": 1, "gapMs": 5})" << "" << "answer.single" << QStringList{};
-        QTest::newRow("slow answers") << tcp << R"({"kind": "delay", "delay": 450, "functions": ["0x04"]})" << "" << "answer.late" << QStringList{};
-        QTest::newRow("wrong byte count") << tcp << R"({"kind": "fewerRegisters", "functions": ["0x04"]})" << "" << "read.04.answer" << QStringList{};
-        QTest::newRow("wrong CRC on 08") << rtu << R"({"kind": "wrongChecksum", "functions": ["0x08"]})" << "" << "diag.echo" << QStringList{};
-        QTest::newRow("junk before 2B") << tcp << R"({"kind": "junk", "before": "DE AD", "functions": ["0x2B"]})" << "" << "ident.basic" << QStringList{};
+                                                  << QStringList{"mbap.pipelined", "tcp.keeps-connection"};
+        QTest::newRow("answers twice") << tcp << R"({"kind": "duplicate", "copies": 1, "gapMs": 5})" << "" << "answer.single" << QStringList{"answer.single", "answer.unsolicited"};
+        QTest::newRow("slow answers") << tcp << R"({"kind": "delay", "delay": 450, "functions": ["0x04"]})" << "" << "answer.late"
+                                      << QStringList{"answer.late", "read.04.answer", "read.04.block-past-map", "read.04.missing-address",
+                                                     "read.04.past-end", "read.04.quantity-max", "read.04.quantity-over", "read.04.quantity-zero"};
+        QTest::newRow("wrong byte count") << tcp << R"({"kind": "fewerRegisters", "functions": ["0x04"]})" << "" << "read.04.answer" << QStringList{"read.04.answer"};
+        QTest::newRow("wrong CRC on 08") << rtu << R"({"kind": "wrongChecksum", "functions": ["0x08"]})" << "" << "diag.echo" << QStringList{"diag.echo"};
+        QTest::newRow("junk before 2B") << tcp << R"({"kind": "junk", "before": "DE AD", "functions": ["0x2B"]})" << "" << "answer.unsolicited"
+                                        << QStringList{"answer.unsolicited"};
         QTest::newRow("chunked answers are legal") << tcp << R"({"kind": "chunks", "chunkBytes": 3, "gapMs": 2})" << "" << "" << QStringList{};
         QTest::newRow("trickled answers are legal") << rtu << R"({"kind": "trickle", "gapMs": 2})" << "" << "" << QStringList{};
 
+        QTest::newRow("a script that changes nothing") << tcp << "" << "" << "" << QStringList{};
         QTest::newRow("quantity 0 accepted") << tcp << ""
                                              << "if (r.function === 3 && r.quantity === 0) return {pdu: [3, 0]};"
                                              << "read.03.quantity-zero" << QStringList{"read.03.quantity-zero"};
         QTest::newRow("zeros for an illegal address") << tcp << ""
                                                       << "if (r.function === 3 && r.address >= 100 && r.quantity <= 125) { var z = []; for (var i = 0; i < r.quantity; i++) z.push(0); return z; }"
-                                                      << "read.03.missing-address" << QStringList{};
+                                                      << "read.03.missing-address" << QStringList{"read.03.missing-address", "read.03.past-end"};
         QTest::newRow("MBAP length wrong") << tcp << ""
                                            << "if (r.transactionId === 0xA5C3) return {adu: 'A5 C3 00 00 00 09 01 03 02 00 00'};"
-                                           << "mbap.length" << QStringList{};
+                                           << "mbap.length" << QStringList{"answer.unsolicited", "mbap.length"};
         QTest::newRow("answers a broadcast") << rtu << ""
                                              << "if (r.unit === 0) return {adu: '00 03 02 00 00 85 84'};"
-                                             << "serial.broadcast" << QStringList{};
+                                             << "serial.broadcast" << QStringList{"serial.broadcast"};
         QTest::newRow("08 does not echo") << tcp << "" << "if (r.function === 8) return {pdu: '08 00 00 00 00'};" << "diag.echo"
                                           << QStringList{"diag.echo"};
         QTest::newRow("bits in the wrong order") << tcp << ""
                                                  << "if (r.function === 1 && r.quantity === 5) { var v = unit.read('coils', r.address, 5), b = 0; for (var i = 0; i < 5; i++) if (v[i]) b |= 0x80 >> i; return {pdu: [1, 1, b]}; }"
                                                  << "read.01.bit-order" << QStringList{"read.01.bit-order"};
         QTest::newRow("basic identification incomplete") << tcp << ""
-                                                         << "if (r.function === 0x2B) return {pdu: '2B 0E 01 01 00 00 01 00 03 41 42 43'};"
-                                                         << "ident.basic" << QStringList{};
+                                                         << "if (r.function === 0x2B && r.pdu[2] === 1) return {pdu: '2B 0E 01 01 00 00 01 00 03 41 42 43'};"
+                                                         << "ident.basic" << QStringList{"ident.basic"};
         QTest::newRow("06 echoes another value") << tcp << ""
                                                  << "if (r.function === 6) { var p = r.pdu.slice(0); p[4] ^= 1; return {pdu: p}; }"
                                                  << "write.06.echo" << QStringList{"write.06.echo"};
