@@ -15,7 +15,7 @@ constexpr qint64 kMaxTimeoutNs = 3'600'000'000'000LL;
 
 } // namespace
 
-TargetOptions::TargetOptions()
+TargetOptions::TargetOptions(bool withRetries)
     : m_target(QStringLiteral("target"),
                QStringLiteral("The device: tcp://host:502, rtu-tcp://host:4001, ascii-tcp://host:port, udp://host:502, "
                               "rtu-udp://host:port, rtu:///dev/ttyUSB0?baud=9600&parity=E, ascii:///dev/ttyUSB0?..., "
@@ -37,12 +37,15 @@ TargetOptions::TargetOptions()
     , m_retries(QStringLiteral("retries"),
                 QStringLiteral("Further attempts after a timeout or an unusable answer (default 0)."), QStringLiteral("n"),
                 QStringLiteral("0"))
+    , m_withRetries(withRetries)
 {
 }
 
 void TargetOptions::addTo(QCommandLineParser &parser) const
 {
-    parser.addOptions({m_target, m_timeout, m_timeoutSeconds, m_retries});
+    parser.addOptions({m_target, m_timeout, m_timeoutSeconds});
+    if (m_withRetries)
+        parser.addOption(m_retries);
     m_pieces.addTo(parser);
     parser.addPositionalArgument(QStringLiteral("target"),
                                  QStringLiteral("The device, as --target gives it (a URL, a host or a serial device)."),
@@ -111,6 +114,8 @@ bool TargetOptions::read(const QCommandLineParser &parser, const QString &comman
         out.timeoutMs = int(d.ns / 1'000'000);
     }
 
+    if (!m_withRetries)
+        return true;
     const IntegerResult retries = parseInteger(QStringLiteral("--retries"), parser.value(m_retries), 0, 100);
     if (!retries.ok) {
         err << prefix << retries.error << '\n';

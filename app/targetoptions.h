@@ -31,7 +31,8 @@ struct TargetSettings {
 class TargetOptions
 {
 public:
-    TargetOptions();
+    // withRetries false: no --retries (a command that judges every answer as it comes, conform).
+    explicit TargetOptions(bool withRetries = true);
 
     void addTo(QCommandLineParser &parser) const;
     // Reads the options and the positional target; on error writes "mbscope COMMAND: ..." to err
@@ -46,6 +47,7 @@ private:
     QCommandLineOption m_timeout;
     QCommandLineOption m_timeoutSeconds;
     QCommandLineOption m_retries;
+    bool m_withRetries = true;
 };
 
 // A whole number option: decimal, or hex with 0x ("0x79"). nullopt-like: ok false with the

@@ -16,6 +16,7 @@ ProbeChannel::ProbeChannel(QObject *parent)
 {
     m_engine->setFramesPublished(true);
     connect(m_engine, &TransactionEngine::transactionsFinished, this, &ProbeChannel::onTransactions);
+    connect(m_engine, &TransactionEngine::linkOpened, this, &ProbeChannel::linkOpened);
     connect(m_engine, &TransactionEngine::framesLogged, this,
             [this](const QList<TrafficFrame> &frames, const QString &link) {
                 onFrames(frames);
@@ -130,6 +131,18 @@ std::optional<ProbeChannel::Answer> ProbeChannel::ask(quint8 unit, const QByteAr
 {
     if (!probe(unit, pdu, timeoutMs))
         return std::nullopt;
+    return waitForAnswer();
+}
+
+std::optional<ProbeChannel::Answer> ProbeChannel::askRaw(const QByteArray &adu, int timeoutMs)
+{
+    if (!probeRaw(adu, timeoutMs))
+        return std::nullopt;
+    return waitForAnswer();
+}
+
+std::optional<ProbeChannel::Answer> ProbeChannel::waitForAnswer()
+{
     QEventLoop loop;
     std::optional<Answer> result;
     const QMetaObject::Connection done = connect(this, &ProbeChannel::answered, &loop,

@@ -55,6 +55,8 @@ public:
         QByteArray bytesRead;
     };
     [[nodiscard]] std::optional<Answer> ask(quint8 unit, const QByteArray &pdu, int timeoutMs);
+    // probeRaw(), then the same wait: bytes exactly as given (the conformance battery's frames).
+    [[nodiscard]] std::optional<Answer> askRaw(const QByteArray &adu, int timeoutMs);
     // Abandons the probe in flight (no answered() for it) and closes the link.
     void cancel();
     // Closes the link (a TCP client's connection: the next probe opens a new one).
@@ -69,12 +71,15 @@ Q_SIGNALS:
     // traffic view.
     void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
     void cancelled();
+    // The engine opened the link (the first probe, and each after the link closed).
+    void linkOpened();
 
 private:
     void sendNow();
     void onTransactions(const QList<mbscope::Transaction> &transactions);
     void onFrames(const QList<mbscope::TrafficFrame> &frames);
     void deliver();
+    [[nodiscard]] std::optional<Answer> waitForAnswer();
 
     TransactionEngine *m_engine;
     LinkUrl m_url;

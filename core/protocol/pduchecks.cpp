@@ -1,4 +1,5 @@
 #include "pduchecks.h"
+#include "quantitylimits.h"
 
 #include "functioncode.h"
 
@@ -219,7 +220,7 @@ bool startAndQuantity(const PduContext &ctx, int maxQuantity)
 
 void registerReadResponse(const PduContext &ctx, const char *label, const char *what)
 {
-    constexpr int kMaxRegisters = 125; // 0x007D, V1.1b3 6.3, 6.4 and the read block of 6.17
+    constexpr int kMaxRegisters = QuantityLimits::kReadRegisters; // V1.1b3 6.3, 6.4 and the read block of 6.17
     if (!ctx.has(1)) {
         missing(ctx, ctx.parent, 1, 4, true, what);
         return;

@@ -1,6 +1,7 @@
 // 16 Mask Write Register and 18 Read FIFO Queue (MODBUS Application Protocol Specification
 // V1.1b3, 6.16 and 6.18).
 #include "pduchecks.h"
+#include "quantitylimits.h"
 #include "pdudissector.h"
 
 namespace mbscope::pdu {
@@ -9,7 +10,7 @@ using namespace checks;
 
 namespace {
 
-constexpr int kMaxFifo = 31; // V1.1b3 6.18: a queue holds at most 31 registers
+constexpr int kMaxFifo = QuantityLimits::kFifoValues; // V1.1b3 6.18
 
 const Slot kMask[] = {
     {"modbus.address", QT_TRANSLATE_NOOP("mbscope::Field", "Reference address"), 2, ValueFormat::DecimalHex, "reference address, AND mask and OR mask"},

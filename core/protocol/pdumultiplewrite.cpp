@@ -2,6 +2,7 @@
 // Specification V1.1b3, 6.11 and 6.12): request start address, quantity, byte count and the
 // values; the normal response echoes start address and quantity.
 #include "pduchecks.h"
+#include "quantitylimits.h"
 #include "pdudissector.h"
 
 namespace mbscope::pdu {
@@ -10,8 +11,8 @@ using namespace checks;
 
 namespace {
 
-constexpr int kMaxCoils = 1968;    // 0x07B0, V1.1b3 6.11
-constexpr int kMaxRegisters = 123; // 0x007B, V1.1b3 6.12
+constexpr int kMaxCoils = QuantityLimits::kWriteCoils;         // V1.1b3 6.11
+constexpr int kMaxRegisters = QuantityLimits::kWriteRegisters; // V1.1b3 6.12
 
 const Slot kCoilsHeader[] = {
     {"modbus.start_address", QT_TRANSLATE_NOOP("mbscope::Field", "Start address"), 2, ValueFormat::DecimalHex,

@@ -1,6 +1,7 @@
 // 01 Read Coils and 02 Read Discrete Inputs (MODBUS Application Protocol Specification V1.1b3,
 // 6.1 and 6.2): request start address + quantity (1-2000); response byte count + packed bits.
 #include "pduchecks.h"
+#include "quantitylimits.h"
 #include "pdudissector.h"
 
 namespace mbscope::pdu {
@@ -9,7 +10,7 @@ using namespace checks;
 
 namespace {
 
-constexpr int kMaxBits = 2000; // 0x07D0, V1.1b3 6.1/6.2
+constexpr int kMaxBits = QuantityLimits::kReadBits; // V1.1b3 6.1/6.2
 constexpr int kMaxBytes = (kMaxBits + 7) / 8;
 
 void response(const PduContext &ctx)

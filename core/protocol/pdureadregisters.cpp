@@ -2,6 +2,7 @@
 // Specification V1.1b3, 6.3 and 6.4): request start address + quantity (1-125); response byte
 // count (2 x quantity) + registers.
 #include "pduchecks.h"
+#include "quantitylimits.h"
 #include "pdudissector.h"
 
 namespace mbscope::pdu {
@@ -10,7 +11,7 @@ using namespace checks;
 
 void dissectReadRegisters(const PduContext &ctx)
 {
-    constexpr int kMaxRegisters = 125; // 0x007D, V1.1b3 6.3/6.4
+    constexpr int kMaxRegisters = QuantityLimits::kReadRegisters; // V1.1b3 6.3/6.4
     if (isResponse(ctx))
         registerReadResponse(ctx, "quantity", "byte count and register values");
     else

@@ -2,6 +2,7 @@
 // the request carries a read block (start, quantity 1-125) and a write block (start, quantity
 // 1-121, byte count, values); the response carries the registers read.
 #include "pduchecks.h"
+#include "quantitylimits.h"
 #include "pdudissector.h"
 
 namespace mbscope::pdu {
@@ -10,8 +11,8 @@ using namespace checks;
 
 namespace {
 
-constexpr int kMaxRead = 125; // 0x007D
-constexpr int kMaxWrite = 121; // 0x0079
+constexpr int kMaxRead = QuantityLimits::kReadRegisters;
+constexpr int kMaxWrite = QuantityLimits::kReadWriteWrite;
 
 const Slot kHeader[] = {
     {"modbus.read_start_address", QT_TRANSLATE_NOOP("mbscope::Field", "Read start address"), 2, ValueFormat::DecimalHex,

@@ -1,6 +1,7 @@
 // Request builders for the data access functions (V1.1b3, 6.1-6.6, 6.11, 6.12, 6.14-6.18).
 // The diagnostics, encapsulated interface and raw builders are in requestbuilderdiagnostics.cpp.
 #include "requestbuilder.h"
+#include "quantitylimits.h"
 
 #include "pdubuilder.h"
 
@@ -61,22 +62,22 @@ void checkFileRecord(PduBuilder &b, qsizetype index, int referenceType, int file
 
 BuildResult RequestBuilder::readCoils(int startAddress, int quantity)
 {
-    return PduBuilder::startAndQuantity(0x01, startAddress, quantity, 2000, "reads", "coils");
+    return PduBuilder::startAndQuantity(0x01, startAddress, quantity, QuantityLimits::kReadBits, "reads", "coils");
 }
 
 BuildResult RequestBuilder::readDiscreteInputs(int startAddress, int quantity)
 {
-    return PduBuilder::startAndQuantity(0x02, startAddress, quantity, 2000, "reads", "discrete inputs");
+    return PduBuilder::startAndQuantity(0x02, startAddress, quantity, QuantityLimits::kReadBits, "reads", "discrete inputs");
 }
 
 BuildResult RequestBuilder::readHoldingRegisters(int startAddress, int quantity)
 {
-    return PduBuilder::startAndQuantity(0x03, startAddress, quantity, 125, "reads", "registers");
+    return PduBuilder::startAndQuantity(0x03, startAddress, quantity, QuantityLimits::kReadRegisters, "reads", "registers");
 }
 
 BuildResult RequestBuilder::readInputRegisters(int startAddress, int quantity)
 {
-    return PduBuilder::startAndQuantity(0x04, startAddress, quantity, 125, "reads", "registers");
+    return PduBuilder::startAndQuantity(0x04, startAddress, quantity, QuantityLimits::kReadRegisters, "reads", "registers");
 }
 
 BuildResult RequestBuilder::writeSingleCoil(int address, bool on)
@@ -114,7 +115,7 @@ BuildResult RequestBuilder::writeSingleRegister(int address, int value)
 BuildResult RequestBuilder::writeMultipleCoils(int startAddress, const QList<bool> &values)
 {
     PduBuilder b(0x0F);
-    if (writeHeader(b, startAddress, values.size(), 1968, "coils"))
+    if (writeHeader(b, startAddress, values.size(), QuantityLimits::kWriteCoils, "coils"))
         b.appendBits(values);
     return b.finish();
 }
@@ -122,7 +123,7 @@ BuildResult RequestBuilder::writeMultipleCoils(int startAddress, const QList<boo
 BuildResult RequestBuilder::writeMultipleRegisters(int startAddress, const QList<quint16> &values)
 {
     PduBuilder b(0x10);
-    if (writeHeader(b, startAddress, values.size(), 123, "registers"))
+    if (writeHeader(b, startAddress, values.size(), QuantityLimits::kWriteRegisters, "registers"))
         b.appendRegisters(values);
     return b.finish();
 }
@@ -145,11 +146,11 @@ BuildResult RequestBuilder::readWriteMultipleRegisters(int readStartAddress, int
     PduBuilder b(0x17);
     const qint64 writeQuantity = writeValues.size();
     b.checkAddress(QStringLiteral("readStartAddress"), QStringLiteral("read start address"), readStartAddress);
-    b.checkQuantity(QStringLiteral("readQuantity"), QStringLiteral("read quantity"), readQuantity, 125, "reads",
+    b.checkQuantity(QStringLiteral("readQuantity"), QStringLiteral("read quantity"), readQuantity, QuantityLimits::kReadRegisters, "reads",
                     "registers");
     b.checkSpan(QStringLiteral("readQuantity"), QStringLiteral("read start address"), readStartAddress, readQuantity);
     b.checkAddress(QStringLiteral("writeStartAddress"), QStringLiteral("write start address"), writeStartAddress);
-    if (b.checkQuantity(QStringLiteral("writeValues"), QStringLiteral("write quantity"), writeQuantity, 121, "writes",
+    if (b.checkQuantity(QStringLiteral("writeValues"), QStringLiteral("write quantity"), writeQuantity, QuantityLimits::kReadWriteWrite, "writes",
                         "registers")) {
         b.checkSpan(QStringLiteral("writeValues"), QStringLiteral("write start address"), writeStartAddress,
                     writeQuantity);

@@ -1,4 +1,5 @@
 #include "responsebuilder.h"
+#include "quantitylimits.h"
 
 #include "diagnosticrules.h"
 #include "pdubuilder.h"
@@ -10,7 +11,7 @@ namespace {
 BuildResult readBits(quint8 function, const QList<bool> &values, const char *unit)
 {
     PduBuilder b(function);
-    if (!b.checkQuantity(QStringLiteral("values"), QStringLiteral("quantity"), values.size(), 2000, "reads", unit))
+    if (!b.checkQuantity(QStringLiteral("values"), QStringLiteral("quantity"), values.size(), QuantityLimits::kReadBits, "reads", unit))
         return b.finish();
     b.appendBits(values);
     return b.finish();
@@ -45,12 +46,12 @@ BuildResult ResponseBuilder::readDiscreteInputs(const QList<bool> &values)
 
 BuildResult ResponseBuilder::readHoldingRegisters(const QList<quint16> &values)
 {
-    return registers(0x03, values, QStringLiteral("quantity"), 1, 125);
+    return registers(0x03, values, QStringLiteral("quantity"), 1, QuantityLimits::kReadRegisters);
 }
 
 BuildResult ResponseBuilder::readInputRegisters(const QList<quint16> &values)
 {
-    return registers(0x04, values, QStringLiteral("quantity"), 1, 125);
+    return registers(0x04, values, QStringLiteral("quantity"), 1, QuantityLimits::kReadRegisters);
 }
 
 BuildResult ResponseBuilder::writeSingleCoil(int address, bool on)
@@ -73,12 +74,12 @@ BuildResult ResponseBuilder::writeSingleRegister(int address, int value)
 BuildResult ResponseBuilder::writeMultipleCoils(int startAddress, int quantity)
 {
     // V1.1b3, 6.11: the start address and the quantity of coils forced.
-    return PduBuilder::startAndQuantity(0x0F, startAddress, quantity, 1968, "writes", "coils");
+    return PduBuilder::startAndQuantity(0x0F, startAddress, quantity, QuantityLimits::kWriteCoils, "writes", "coils");
 }
 
 BuildResult ResponseBuilder::writeMultipleRegisters(int startAddress, int quantity)
 {
-    return PduBuilder::startAndQuantity(0x10, startAddress, quantity, 123, "writes", "registers");
+    return PduBuilder::startAndQuantity(0x10, startAddress, quantity, QuantityLimits::kWriteRegisters, "writes", "registers");
 }
 
 BuildResult ResponseBuilder::maskWriteRegister(int address, int andMask, int orMask)
@@ -89,7 +90,7 @@ BuildResult ResponseBuilder::maskWriteRegister(int address, int andMask, int orM
 
 BuildResult ResponseBuilder::readWriteMultipleRegisters(const QList<quint16> &readValues)
 {
-    return registers(0x17, readValues, QStringLiteral("read quantity"), 1, 125);
+    return registers(0x17, readValues, QStringLiteral("read quantity"), 1, QuantityLimits::kReadRegisters);
 }
 
 BuildResult ResponseBuilder::readFifoQueue(const QList<quint16> &values)

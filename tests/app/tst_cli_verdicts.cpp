@@ -639,6 +639,12 @@ QList<ExitRow> exitRows()
     row("scan", 0, "unit 1 found", {QStringLiteral("scan"), QStringLiteral("--target"), T, QStringLiteral("--units"), QStringLiteral("1-2")}, "found 1 device(s)");
     row("scan", 1, "nothing found", {QStringLiteral("scan"), QStringLiteral("--target"), T, QStringLiteral("--units"), QStringLiteral("9-10")}, "found 0 device(s)");
     row("scan", 2, "refused", {QStringLiteral("scan"), QStringLiteral("--target"), C, QStringLiteral("--units"), QStringLiteral("1-2")}, "refused");
+    row("conform", 0, "every mandatory check passed", {QStringLiteral("conform"), QStringLiteral("--target"), T, QStringLiteral("--only"), QStringLiteral("read.03.quantity")},
+        "every mandatory check passed");
+    row("conform", 1, "a mandatory check failed", {QStringLiteral("conform"), QStringLiteral("--target"), T, QStringLiteral("--only"), QStringLiteral("read.03.missing-address"),
+                                                   QStringLiteral("--missing"), QStringLiteral("holding:0x79")},
+        "1 mandatory check(s) failed");
+    row("conform", 2, "refused", {QStringLiteral("conform"), QStringLiteral("--target"), C}, "refused");
     row("run", 0, "every step passed", {QStringLiteral("run"), D + QStringLiteral("good.mbscope.json"), QStringLiteral("--target"), T});
     row("run", 1, "a step failed", {QStringLiteral("run"), D + QStringLiteral("silent.mbscope.json"), QStringLiteral("--target"), T});
     row("run", 2, "refused", {QStringLiteral("run"), D + QStringLiteral("good.mbscope.json"), QStringLiteral("--target"), C}, "connection refused");

@@ -1,0 +1,83 @@
+#pragma once
+
+#include "exchange/trafficentry.h"
+#include "exchange/transaction.h"
+#include "transport/linkurl.h"
+
+#include <QtCore/QByteArray>
+#include <QtCore/QList>
+#include <QtCore/QPair>
+
+namespace mbscope {
+
+class ProbeChannel;
+class TrafficLog;
+
+// One request and everything it brought back.
+struct ConformanceExchange {
+    QByteArray request;
+    Transaction transaction; // the engine's record: its status, exception code, matched answer and times
+    QByteArray answer;       // every byte read while the request was in flight (empty: silence)
+    int timeoutMs = 0;       // how long it waited
+
+    [[nodiscard]] bool silent() const { return answer.isEmpty(); }
+    [[nodiscard]] bool linkFailed() const { return transaction.status == TransactionStatus::LinkError; }
+};
+
+// The battery's way to the device: frames sent exactly as built, through the engine (a
+// discovery ProbeChannel: one request at a time, every byte read while it was in flight), and
+// every frame read kept, so that a check can ask what came after an answer (a duplicate) or
+// during a silence it waits out (a broadcast).
+class ConformanceLink
+{
+public:
+    ConformanceLink(const LinkUrl &url, int timeoutMs);
+    ~ConformanceLink();
+    ConformanceLink(const ConformanceLink &) = delete;
+    ConformanceLink &operator=(const ConformanceLink &) = delete;
+
+    [[nodiscard]] const LinkUrl &url() const { return m_url; }
+    [[nodiscard]] Framing framing() const { return m_url.framing(); }
+    [[nodiscard]] bool isMbap() const { return framing() == Framing::Tcp || framing() == Framing::Udp; }
+    [[nodiscard]] bool isSerialFraming() const { return framing() == Framing::Rtu || framing() == Framing::Ascii; }
+    [[nodiscard]] bool isStream() const { return !m_url.isSerial() && !m_url.isDatagram(); }
+    [[nodiscard]] int timeoutMs() const { return m_timeoutMs; }
+
+    // pdu to unit in the link's framing; MBAP transaction ids count up from 1.
+    [[nodiscard]] QByteArray frame(quint8 unit, const QByteArray &pdu);
+    // The ADU's transaction id, in MBAP framings (0 otherwise).
+    [[nodiscard]] static quint16 transactionId(const QByteArray &adu);
+
+    // Sends adu exactly and waits for its answer or its timeout (the link's when timeoutMs < 0).
+    [[nodiscard]] ConformanceExchange exchange(const QByteArray &adu, int timeoutMs = -1);
+    [[nodiscard]] ConformanceExchange ask(quint8 unit, const QByteArray &pdu) { return exchange(frame(unit, pdu)); }
+    // Waits ms and returns every byte read in that time (answers nobody asked for).
+    [[nodiscard]] QByteArray listen(int ms);
+    // Frames read so far (In), for a check that looks back.
+    [[nodiscard]] qsizetype framesRead() const { return m_in.size(); }
+    [[nodiscard]] QByteArray bytesReadSince(qsizetype frame) const;
+    // Every frame read, with the engine's verdict (late, unsolicited...) and transaction id.
+    [[nodiscard]] const QList<TrafficFrame> &framesIn() const { return m_in; }
+    // Frames from..to (indexes of framesIn) were expected by the check that read them (the
+    // answers to pipelined requests after the first): not counted as unsolicited.
+    void excuse(qsizetype from, qsizetype to) { m_excused.append({from, to}); }
+    [[nodiscard]] bool isExcused(qsizetype frame) const;
+    // Whether a late answer to the transaction came (after its timeout).
+    [[nodiscard]] bool answeredLate(quint64 transactionId) const;
+    // Closes the connection: the next exchange opens a new one.
+    void closeLink();
+    // Connections (or ports) opened so far: a device that closes after each answer makes one per request.
+    [[nodiscard]] int opens() const { return m_opens; }
+    void setTrafficLog(TrafficLog *log);
+
+private:
+    LinkUrl m_url;
+    int m_timeoutMs;
+    quint16 m_transactionId = 0;
+    ProbeChannel *m_channel;
+    QList<TrafficFrame> m_in;
+    int m_opens = 0;
+    QList<QPair<qsizetype, qsizetype>> m_excused;
+};
+
+} // namespace mbscope

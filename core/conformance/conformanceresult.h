@@ -1,0 +1,45 @@
+#pragma once
+
+#include "conformancecheck.h"
+#include "conformancecontext.h"
+
+#include <QtCore/QDateTime>
+#include <QtCore/QJsonObject>
+#include <QtCore/QList>
+#include <QtCore/QMap>
+#include <QtCore/QString>
+
+namespace mbscope {
+
+struct JUnitTestSuite;
+
+// A scorecard: every check's result, what the survey learnt, and how the run ended.
+struct ConformanceResult {
+    QString target;
+    quint8 unit = 1;
+    QDateTime started;
+    qint64 elapsedNs = 0;
+    QList<CheckResult> checks;
+    QMap<quint8, FunctionSupport> support;
+    bool linkFailed = false;  // the target could not be reached, or answered nothing at all
+    QString linkMessage;
+    bool interrupted = false;
+
+    [[nodiscard]] int count(CheckVerdict verdict) const;
+    [[nodiscard]] int failed(CheckLevel level) const;
+    // Every mandatory check passed or was skipped, and the run went through.
+    [[nodiscard]] bool passed() const { return !linkFailed && !interrupted && failed(CheckLevel::Mandatory) == 0 && count(CheckVerdict::Error) == 0; }
+
+    // The readable report: a line per check, the failures' sentences, the summary.
+    [[nodiscard]] QString toText() const;
+    // {"target", "unit", "started", "elapsed_ms", "passed", "counts": {...}, "functions": {"03": "supported"...},
+    //  "checks": [{"id", "title", "clause", "level", "verdict", "sentence", "request", "answer", "measured", "elapsed_ms"}],
+    //  "link_error" (when the link failed)}
+    [[nodiscard]] QJsonObject toJson() const;
+    // One test case per check, for JUnitReport.
+    [[nodiscard]] JUnitTestSuite toJUnit() const;
+    // "supported", "unsupported", "silent", "unknown"
+    [[nodiscard]] static const char *supportName(FunctionSupport support);
+};
+
+} // namespace mbscope

@@ -1,0 +1,161 @@
+#include "conformancesurvey.h"
+
+#include "conformancecontext.h"
+#include "conformancejudge.h"
+#include "readchecks.h"
+
+#include "protocol/functioncode.h"
+
+namespace mbscope {
+
+namespace {
+
+QString code(quint8 function)
+{
+    return QString::number(function, 16).toUpper().rightJustified(2, QLatin1Char('0'));
+}
+
+QByteArray surveyPdu(quint8 function, const ConformanceContext &ctx)
+{
+    const int table = ReadChecks::tableOf(function);
+    if (table >= 0)
+        return ReadChecks::readPdu(function, qMax(0, ctx.readable(SimTable(table))), 1);
+    switch (function) {
+    case 0x08:
+        return QByteArray::fromHex("080000A537");
+    case 0x2B:
+        return QByteArray::fromHex("2B0E0100");
+    default:
+        return QByteArray(1, char(function));
+    }
+}
+
+QString codes(const QList<quint8> &functions)
+{
+    QStringList out;
+    for (quint8 f : functions)
+        out.append(code(f));
+    return out.join(QLatin1String(", "));
+}
+
+} // namespace
+
+QList<quint8> ConformanceSurvey::functions()
+{
+    return {0x03, 0x04, 0x01, 0x02, 0x07, 0x08, 0x0B, 0x0C, 0x11, 0x2B};
+}
+
+ConformanceSurvey::Outcome ConformanceSurvey::run(ConformanceContext &ctx)
+{
+    Outcome outcome;
+    bool answered = false;
+    for (quint8 f : functions()) {
+        const ConformanceExchange e = ctx.ask(surveyPdu(f, ctx));
+        outcome.exchanges.append(e);
+        if (e.linkFailed()) {
+            if (!answered && outcome.exchanges.size() == 1) {
+                outcome.linkFailed = true;
+                outcome.message = e.transaction.problem;
+                return outcome;
+            }
+            continue;
+        }
+        const Transaction &t = e.transaction;
+        FunctionSupport s = FunctionSupport::Unknown;
+        if (e.silent())
+            s = FunctionSupport::Silent;
+        else if (t.status == TransactionStatus::Exception)
+            s = t.exceptionCode == 0x01 ? FunctionSupport::Unsupported : FunctionSupport::Supported;
+        else if (t.status == TransactionStatus::Ok || t.status == TransactionStatus::Malformed)
+            s = FunctionSupport::Supported;
+        answered = answered || !e.silent();
+        ctx.setSupport(f, s);
+        const int table = ReadChecks::tableOf(f);
+        if (table >= 0 && t.status == TransactionStatus::Ok && ctx.readable(SimTable(table)) < 0)
+            ctx.setReadable(SimTable(table), 0);
+    }
+    // A request the survey took for unanswered may have been answered after its timeout (the
+    // answer came during a later request): supported, only slow (answer.late says so).
+    (void)ctx.link().listen(qMin(ctx.link().timeoutMs(), 200));
+    const QList<quint8> surveyed = functions();
+    for (qsizetype i = 0; i < outcome.exchanges.size() && i < surveyed.size(); ++i) {
+        const ConformanceExchange &e = outcome.exchanges.at(i);
+        if (ctx.support(surveyed.at(i)) == FunctionSupport::Silent && ctx.link().answeredLate(e.transaction.id)) {
+            ctx.setSupport(surveyed.at(i), FunctionSupport::Supported);
+            answered = true;
+        }
+    }
+    if (!answered) {
+        outcome.silent = true;
+        outcome.message = QStringLiteral("the device answered none of %1 requests (functions %2) to unit %3 within %4 ms: "
+                                         "check the target, the unit id and the timeout")
+                              .arg(outcome.exchanges.size())
+                              .arg(codes(functions()))
+                              .arg(ctx.unit())
+                              .arg(ctx.link().timeoutMs());
+    }
+    return outcome;
+}
+
+QList<ConformanceCheck> ConformanceSurvey::checks()
+{
+    QList<ConformanceCheck> out;
+    ConformanceCheck silent;
+    silent.id = QStringLiteral("exception.unsupported-function");
+    silent.title = QStringLiteral("a public function the device lacks gets exception 01, not silence");
+    silent.clause = QStringLiteral("Application Protocol V1.1b3, 7");
+    silent.run = [](ConformanceContext &ctx, CheckResult &res) {
+        QList<quint8> quiet;
+        QList<quint8> refused;
+        for (quint8 f : functions()) {
+            if (ctx.support(f) == FunctionSupport::Silent)
+                quiet.append(f);
+            else if (ctx.support(f) == FunctionSupport::Unsupported)
+                refused.append(f);
+        }
+        if (quiet.isEmpty()) {
+            res.pass(refused.isEmpty() ? QStringLiteral("the device supports every function surveyed")
+                                       : QStringLiteral("exception 01 for %1").arg(codes(refused)));
+            return;
+        }
+        res.fail(QStringLiteral("the device answers other requests but gave no answer at all to %1 %2; %3 requires "
+                                "exception 01 (Illegal Function) for a function it does not support")
+                     .arg(quiet.size() == 1 ? QStringLiteral("function") : QStringLiteral("functions"), codes(quiet), res.clause));
+    };
+    out.append(silent);
+
+    ConformanceCheck promise;
+    promise.id = QStringLiteral("promise.functions");
+    promise.title = QStringLiteral("the functions the profile promises are the ones the device supports");
+    promise.clause = QStringLiteral("the device's profile");
+    promise.run = [](ConformanceContext &ctx, CheckResult &res) {
+        if (!ctx.settings().promised) {
+            res.skip(QStringLiteral("no profile declares what the device promises (--profile)"));
+            return;
+        }
+        QList<quint8> missing;
+        QList<quint8> extra;
+        for (quint8 f : functions()) {
+            const bool promised = ctx.settings().promisedFunctions.contains(f);
+            const FunctionSupport s = ctx.support(f);
+            if (promised && (s == FunctionSupport::Unsupported || s == FunctionSupport::Silent))
+                missing.append(f);
+            else if (!promised && s == FunctionSupport::Supported)
+                extra.append(f);
+        }
+        if (missing.isEmpty() && extra.isEmpty()) {
+            res.pass(QStringLiteral("every function surveyed is supported exactly as %1 promises").arg(ctx.settings().promiseSource));
+            return;
+        }
+        QStringList why;
+        if (!missing.isEmpty())
+            why.append(QStringLiteral("%1 promises %2 but the device does not support it").arg(ctx.settings().promiseSource, codes(missing)));
+        if (!extra.isEmpty())
+            why.append(QStringLiteral("the device supports %1, which %2 does not list").arg(codes(extra), ctx.settings().promiseSource));
+        res.fail(why.join(QLatin1String("; ")));
+    };
+    out.append(promise);
+    return out;
+}
+
+} // namespace mbscope

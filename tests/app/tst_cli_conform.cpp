@@ -1,0 +1,276 @@
+// mbscope conform (issue 29) as users run it, against `mbscope simulate`: the shipped conformance
+// profile passes every mandatory check on tcp and rtu-tcp; each deviation the simulator can be
+// made to commit (its fault rules, and a unit script that answers wrongly) is caught by the check
+// named for it, and the set of checks that fail is exactly the expected one, so that no check
+// fails falsely. Also: the scorecard's JSON and JUnit, usage errors, an unreachable target.
+
+#include "clitest.h"
+
+#include <QtCore/QFile>
+#include <QtCore/QJsonArray>
+#include <QtCore/QSet>
+#include <QtCore/QTemporaryDir>
+#include <QtCore/QXmlStreamReader>
+#include <QtTest/QtTest>
+
+using namespace mbscope::testcli;
+
+namespace {
+
+// A small device for the script rows: unit 1, every table 0-99, device identification.
+const char kProfile[] = R"({
+  "name": "deviant",
+  "units": [{
+    "id": 1,
+    "script": "deviant.js",
+    "tables": {
+      "coils": [{"address": 0, "count": 100, "values": [1, 0, 0, 1, 1]}],
+      "discrete": [{"address": 0, "count": 100, "values": [0, 1, 1, 0, 1]}],
+      "input": [{"address": 0, "count": 100}],
+      "holding": [{"address": 0, "count": 100}]
+    },
+    "deviceIdentification": {"objects": {"VendorName": "mbscope", "ProductCode": "DV-1", "MajorMinorRevision": "1.0"}}
+  }]
+})";
+
+bool writeFile(const QString &path, const QByteArray &bytes)
+{
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
+}
+
+// The ids of the checks whose verdict is "failed" in a scorecard.
+QStringList failedIds(const QJsonObject &card)
+{
+    QStringList ids;
+    for (const QJsonValue &v : card.value(QStringLiteral("checks")).toArray()) {
+        const QJsonObject c = v.toObject();
+        if (c.value(QStringLiteral("verdict")).toString() == QLatin1String("failed"))
+            ids.append(c.value(QStringLiteral("id")).toString());
+    }
+    ids.sort();
+    return ids;
+}
+
+QJsonObject checkOf(const QJsonObject &card, const QString &id)
+{
+    for (const QJsonValue &v : card.value(QStringLiteral("checks")).toArray()) {
+        if (v.toObject().value(QStringLiteral("id")).toString() == id)
+            return v.toObject();
+    }
+    return {};
+}
+
+const QStringList kTimeout{QStringLiteral("--timeout"), QStringLiteral("300ms"), QStringLiteral("--samples"), QStringLiteral("5")};
+
+} // namespace
+
+class TestCliConform : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase() { QVERIFY(m_dir.isValid()); }
+
+    void shippedProfilePasses_data()
+    {
+        QTest::addColumn<QString>("listen");
+        QTest::newRow("tcp") << "tcp://127.0.0.1:0";
+        QTest::newRow("rtu-tcp") << "rtu-tcp://127.0.0.1:0";
+    }
+    void shippedProfilePasses()
+    {
+        QFETCH(QString, listen);
+        Background sim;
+        QString error;
+        QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                            listen, QStringLiteral("--quiet")},
+                           &error),
+                 qPrintable(error));
+        const QString junit = m_dir.filePath(QStringLiteral("conform-%1.xml").arg(QString::fromLatin1(QTest::currentDataTag())));
+        const CliResult r = runMbscope(QStringList{QStringLiteral("conform"), QStringLiteral("--target"), sim.url(), QStringLiteral("--profile"),
+                                                   QStringLiteral("conformance"), QStringLiteral("--writable"), QStringLiteral("holding:10-13"),
+                                                   QStringLiteral("--writable"), QStringLiteral("coils:10-17"), QStringLiteral("--json"),
+                                                   QStringLiteral("--junit"), junit}
+                                       + kTimeout);
+        QVERIFY2(r.finished, r.describe());
+        const QJsonObject card = r.json();
+        QVERIFY2(failedIds(card).isEmpty(), qPrintable(failedIds(card).join(QLatin1Char(' ')) + QLatin1Char('\n') + r.outText()));
+        QVERIFY2(r.exitCode == 0, r.describe());
+        QCOMPARE(card.value(QStringLiteral("passed")).toBool(), true);
+        QCOMPARE(card.value(QStringLiteral("counts")).toObject().value(QStringLiteral("error")).toInt(), 0);
+        // The writes ran (and were put back): 06's check passed, not skipped.
+        QCOMPARE(checkOf(card, QStringLiteral("write.06.echo")).value(QStringLiteral("verdict")).toString(), QStringLiteral("passed"));
+        QFile xml(junit);
+        QVERIFY(xml.open(QIODevice::ReadOnly));
+        QXmlStreamReader reader(&xml);
+        int cases = 0;
+        while (!reader.atEnd()) {
+            reader.readNext();
+            cases += reader.isStartElement() && reader.name() == QLatin1String("testcase") ? 1 : 0;
+        }
+        QVERIFY2(!reader.hasError(), qPrintable(reader.errorString()));
+        QCOMPARE(cases, card.value(QStringLiteral("checks")).toArray().size());
+        // The values written were put back: holding 10 is 1000 + 3 x 10 again.
+        const CliResult read = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), sim.url(), QStringLiteral("--function"),
+                                           QStringLiteral("3"), QStringLiteral("--address"), QStringLiteral("10"), QStringLiteral("--quantity"),
+                                           QStringLiteral("4"), QStringLiteral("--json")});
+        QVERIFY2(read.exitCode == 0, read.describe());
+        QVERIFY2(read.outText().contains(QStringLiteral("1030")) && read.outText().contains(QStringLiteral("1039")), read.describe());
+    }
+
+    // Each row makes the simulator commit one deviation; caught names the check meant to catch it,
+    // failing is every check that fails (the caught one among them): any other failure is false.
+    void deviationsCaught_data()
+    {
+        QTest::addColumn<QString>("listen");
+        QTest::addColumn<QString>("faults"); // a faults file's rules, for the conformance profile
+        QTest::addColumn<QString>("script"); // or the deviant profile's onRequest body
+        QTest::addColumn<QString>("caught");
+        QTest::addColumn<QStringList>("failing");
+        const QString tcp = QStringLiteral("tcp://127.0.0.1:0");
+        const QString rtu = QStringLiteral("rtu-tcp://127.0.0.1:0");
+        QTest::newRow("wrong exception code") << tcp << R"({"kind": "exception", "code": 2, "functions": ["0x03"], "quantity": 0})" << ""
+                                              << "read.03.quantity-zero" << QStringList{"read.03.quantity-zero"};
+        QTest::newRow("silence for an unassigned function") << tcp << R"({"kind": "drop", "functions": ["0x12"]})" << ""
+                                                            << "exception.illegal-function" << QStringList{"exception.illegal-function"};
+        QTest::newRow("transaction id not echoed") << tcp << R"({"kind": "wrongTransactionId", "delta": 1, "functions": ["0x03"], "quantity": 3})" << ""
+                                                   << "mbap.transaction-id" << QStringList{"mbap.transaction-id"};
+        QTest::newRow("unit id not echoed") << tcp << R"({"kind": "wrongUnit", "delta": 1, "functions": ["0x03"], "quantity": 3})" << "" << "mbap.unit-id"
+                                            << QStringList{"mbap.unit-id"};
+        QTest::newRow("closes after each answer") << tcp << R"({"kind": "close", "when": "after"})" << "" << "tcp.keeps-connection"
+                                                  << QStringList{"mbap.pipelined", "tcp.keeps-connection"};
+        QTest::newRow("answers twice") << tcp << R"({"kind": "duplicate", "copies": 1, "gapMs": 5})" << "" << "answer.single" << QStringList{"answer.single", "answer.unsolicited"};
+        QTest::newRow("slow answers") << tcp << R"({"kind": "delay", "delay": 450, "functions": ["0x04"]})" << "" << "answer.late"
+                                      << QStringList{"answer.late", "read.04.answer", "read.04.block-past-map", "read.04.missing-address",
+                                                     "read.04.past-end", "read.04.quantity-max", "read.04.quantity-over", "read.04.quantity-zero"};
+        QTest::newRow("wrong byte count") << tcp << R"({"kind": "fewerRegisters", "functions": ["0x04"]})" << "" << "read.04.answer" << QStringList{"read.04.answer"};
+        QTest::newRow("wrong CRC on 08") << rtu << R"({"kind": "wrongChecksum", "functions": ["0x08"]})" << "" << "diag.echo" << QStringList{"diag.echo"};
+        QTest::newRow("junk before 2B") << tcp << R"({"kind": "junk", "before": "DE AD", "functions": ["0x2B"]})" << "" << "answer.unsolicited"
+                                        << QStringList{"answer.unsolicited"};
+        QTest::newRow("chunked answers are legal") << tcp << R"({"kind": "chunks", "chunkBytes": 3, "gapMs": 2})" << "" << "" << QStringList{};
+        QTest::newRow("trickled answers are legal") << rtu << R"({"kind": "trickle", "gapMs": 2})" << "" << "" << QStringList{};
+
+        QTest::newRow("a script that changes nothing") << tcp << "" << "" << "" << QStringList{};
+        QTest::newRow("quantity 0 accepted") << tcp << ""
+                                             << "if (r.function === 3 && r.quantity === 0) return {pdu: [3, 0]};"
+                                             << "read.03.quantity-zero" << QStringList{"read.03.quantity-zero"};
+        QTest::newRow("zeros for an illegal address") << tcp << ""
+                                                      << "if (r.function === 3 && r.address >= 100 && r.quantity <= 125) { var z = []; for (var i = 0; i < r.quantity; i++) z.push(0); return z; }"
+                                                      << "read.03.missing-address" << QStringList{"read.03.missing-address", "read.03.past-end"};
+        QTest::newRow("MBAP length wrong") << tcp << ""
+                                           << "if (r.transactionId === 0xA5C3) return {adu: 'A5 C3 00 00 00 09 01 03 02 00 00'};"
+                                           << "mbap.length" << QStringList{"answer.unsolicited", "mbap.length"};
+        QTest::newRow("answers a broadcast") << rtu << ""
+                                             << "if (r.unit === 0) return {adu: '00 03 02 00 00 85 84'};"
+                                             << "serial.broadcast" << QStringList{"serial.broadcast"};
+        QTest::newRow("08 does not echo") << tcp << "" << "if (r.function === 8) return {pdu: '08 00 00 00 00'};" << "diag.echo"
+                                          << QStringList{"diag.echo"};
+        QTest::newRow("bits in the wrong order") << tcp << ""
+                                                 << "if (r.function === 1 && r.quantity === 5) { var v = unit.read('coils', r.address, 5), b = 0; for (var i = 0; i < 5; i++) if (v[i]) b |= 0x80 >> i; return {pdu: [1, 1, b]}; }"
+                                                 << "read.01.bit-order" << QStringList{"read.01.bit-order"};
+        QTest::newRow("basic identification incomplete") << tcp << ""
+                                                         << "if (r.function === 0x2B && r.pdu[2] === 1) return {pdu: '2B 0E 01 01 00 00 01 00 03 41 42 43'};"
+                                                         << "ident.basic" << QStringList{"ident.basic"};
+        QTest::newRow("06 echoes another value") << tcp << ""
+                                                 << "if (r.function === 6) { var p = r.pdu.slice(0); p[4] ^= 1; return {pdu: p}; }"
+                                                 << "write.06.echo" << QStringList{"write.06.echo"};
+        QTest::newRow("05 takes any value") << tcp << ""
+                                            << "if (r.function === 5 && r.pdu[3] === 0x12) return {pdu: r.pdu};"
+                                            << "write.05.bad-value" << QStringList{"write.05.bad-value"};
+        QTest::newRow("10 byte count not checked") << tcp << ""
+                                                   << "if (r.function === 16 && r.pdu.length > 6 && r.pdu[5] !== 2 * r.quantity) return {pdu: r.pdu.slice(0, 5)};"
+                                                   << "write.10.byte-count" << QStringList{"write.10.byte-count"};
+        QTest::newRow("17 reads before it writes") << tcp << ""
+                                                   << "if (r.function === 0x17) { var old = unit.read('holding', r.address, r.quantity); unit.write('holding', r.writeAddress, r.values); return old; }"
+                                                   << "write.17.order" << QStringList{"write.17.order"};
+    }
+    void deviationsCaught()
+    {
+        QFETCH(QString, listen);
+        QFETCH(QString, faults);
+        QFETCH(QString, script);
+        QFETCH(QString, caught);
+        QFETCH(QStringList, failing);
+        const QString tag = QString::fromLatin1(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('-'));
+        QStringList simArgs{QStringLiteral("simulate"), QStringLiteral("--listen"), listen, QStringLiteral("--quiet")};
+        QStringList conformArgs;
+        if (!faults.isEmpty()) {
+            const QString path = m_dir.filePath(tag + QStringLiteral("-faults.json"));
+            QVERIFY(writeFile(path, QStringLiteral(R"({"seed": 1, "rules": [%1]})").arg(faults).toUtf8()));
+            simArgs += {QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--faults"), path};
+            conformArgs += {QStringLiteral("--profile"), QStringLiteral("conformance")};
+        } else {
+            const QString folder = m_dir.filePath(tag);
+            QVERIFY(QDir().mkpath(folder));
+            QVERIFY(writeFile(folder + QStringLiteral("/deviant.json"), kProfile));
+            QVERIFY(writeFile(folder + QStringLiteral("/deviant.js"),
+                              QStringLiteral("function onRequest(r) {\n%1\nreturn undefined;\n}\n").arg(script).toUtf8()));
+            simArgs += {QStringLiteral("--profile"), folder + QStringLiteral("/deviant.json")};
+            conformArgs += {QStringLiteral("--profile"), folder + QStringLiteral("/deviant.json")};
+        }
+        Background sim;
+        QString error;
+        QVERIFY2(sim.start(simArgs, &error), qPrintable(error));
+        const CliResult r = runMbscope(QStringList{QStringLiteral("conform"), QStringLiteral("--target"), sim.url(), QStringLiteral("--json"),
+                                                   QStringLiteral("--writable"), QStringLiteral("holding:10-13"), QStringLiteral("--writable"),
+                                                   QStringLiteral("coils:10-17")}
+                                       + conformArgs + kTimeout);
+        QVERIFY2(r.finished, r.describe());
+        const QJsonObject card = r.json();
+        const QStringList failed = failedIds(card);
+        if (!caught.isEmpty()) {
+            QVERIFY2(failed.contains(caught), qPrintable(QStringLiteral("%1 not among the failures: %2\n%3").arg(caught, failed.join(QLatin1Char(' ')), r.outText())));
+            QVERIFY2(!checkOf(card, caught).value(QStringLiteral("sentence")).toString().isEmpty(), r.describe());
+        }
+        failing.sort();
+        QCOMPARE(failed, failing);
+        QCOMPARE(r.exitCode, card.value(QStringLiteral("counts")).toObject().value(QStringLiteral("failed_mandatory")).toInt() > 0 ? 1 : 0);
+    }
+
+    void usageErrors_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("says");
+        QTest::newRow("no target") << QStringList{} << "--target is required";
+        QTest::newRow("bad writable") << QStringList{"--target", "tcp://127.0.0.1:1", "--writable", "holdings:1"}
+                                      << "--writable 'holdings:1': 'holdings' is not a table";
+        QTest::newRow("unit 0") << QStringList{"--target", "tcp://127.0.0.1:1", "--unit", "0"} << "--unit 0 is out of range: expected 1 to 247";
+        QTest::newRow("only selects nothing") << QStringList{"--target", "tcp://127.0.0.1:1", "--only", "nosuch"} << "--only nosuch selects no check";
+        QTest::newRow("unknown profile") << QStringList{"--target", "tcp://127.0.0.1:1", "--profile", "nosuch"} << "--profile nosuch";
+        QTest::newRow("positional") << QStringList{"tcp://127.0.0.1:1"} << "the device is given with --target URL";
+    }
+    void usageErrors()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, says);
+        const CliResult r = runMbscope(QStringList{QStringLiteral("conform")} + args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.errText().contains(says), r.describe());
+    }
+
+    void unreachableTarget()
+    {
+        const QString url = QStringLiteral("tcp://127.0.0.1:%1").arg(closedPort());
+        const CliResult r = runMbscope({QStringLiteral("conform"), QStringLiteral("--target"), url});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.errText().startsWith(QStringLiteral("mbscope conform: ")), r.describe());
+        const CliResult j = runMbscope({QStringLiteral("conform"), QStringLiteral("--target"), url, QStringLiteral("--json")});
+        QCOMPARE(j.exitCode, 2);
+        QVERIFY2(j.json().contains(QStringLiteral("link_error")), j.describe());
+    }
+
+    void listsChecks()
+    {
+        const CliResult r = runMbscope({QStringLiteral("conform"), QStringLiteral("--list")});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.outText().contains(QStringLiteral("read.03.quantity-zero")));
+        QVERIFY(r.outText().contains(QStringLiteral("Application Protocol V1.1b3, 6.3")));
+    }
+
+private:
+    QTemporaryDir m_dir;
+};
+
+QTEST_GUILESS_MAIN(TestCliConform)
+#include "tst_cli_conform.moc"
