@@ -161,9 +161,6 @@ private Q_SLOTS:
         QTest::newRow("MBAP length wrong") << tcp << ""
                                            << "if (r.transactionId === 0xA5C3) return {adu: 'A5 C3 00 00 00 09 01 03 02 00 00'};"
                                            << "mbap.length" << QStringList{"answer.unsolicited", "mbap.length"};
-        QTest::newRow("answers a broadcast") << rtu << ""
-                                             << "if (r.unit === 0) return {adu: '00 03 02 00 00 85 84'};"
-                                             << "serial.broadcast" << QStringList{"serial.broadcast"};
         QTest::newRow("08 does not echo") << tcp << "" << "if (r.function === 8) return {pdu: '08 00 00 00 00'};" << "diag.echo"
                                           << QStringList{"diag.echo"};
         QTest::newRow("bits in the wrong order") << tcp << ""

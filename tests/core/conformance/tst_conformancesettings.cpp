@@ -69,7 +69,7 @@ private Q_SLOTS:
     // The shipped conformance profile: holding, coils, discrete and input 0-99 then gaps.
     void profileGivesAddresses()
     {
-        const ProfileLoadResult loaded = ProfileLoader::load(QStringLiteral("conformance"));
+        const ProfileLoadResult loaded = ProfileLoader::loadFile(QStringLiteral(MBSCOPE_TEST_DATA_DIR "/../../resources/profiles/conformance.json"));
         QVERIFY2(loaded.ok, qPrintable(loaded.errorText()));
         ConformanceSettings s;
         QString error;
