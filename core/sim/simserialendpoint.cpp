@@ -5,6 +5,9 @@
 #include "protocol/rtuframer.h"
 #include "sim/simulator.h"
 #include "transport/monotonicclock.h"
+#include "transport/rtsdirection.h"
+#include "transport/seriallinecontrol.h"
+#include "transport/seriallink.h"
 
 #include <QtSerialPort/QSerialPort>
 
@@ -24,6 +27,13 @@ SimSerialEndpoint::SimSerialEndpoint(Simulator *simulator, const LinkUrl &url, c
     m_silence.setSingleShot(true);
     m_silence.setTimerType(Qt::PreciseTimer);
     connect(&m_silence, &QTimer::timeout, this, &SimSerialEndpoint::onSilence);
+    if (url.serial.rs485.enabled()) {
+        m_rts = new RtsDirection(url.serial.rs485, url.serial.device, [this](const QByteArray &answer) { return writeAnswer(answer); },
+                                 this);
+        connect(m_rts, &RtsDirection::failed, this, [this](const QString &what) {
+            this->simulator()->noteConnection(this, this->url().serial.device, SimLogEntry::Verdict::ConnectionClosed, what);
+        });
+    }
 }
 
 SimSerialEndpoint::~SimSerialEndpoint()
@@ -48,6 +58,17 @@ bool SimSerialEndpoint::start(QString *error)
         m_port = nullptr;
         return false;
     }
+    if (m_rts) {
+        const QString why = m_rts->start(std::make_unique<SerialLineControl>(int(m_port->handle())));
+        if (!why.isEmpty()) {
+            *error = url().toString() + QStringLiteral(": ") + why;
+            m_port->close();
+            delete m_port;
+            m_port = nullptr;
+            return false;
+        }
+    }
+    m_lineFreeNs = 0;
     if (url().delimited.enabled) {
         m_framer = std::make_unique<DelimitedFramer>(url().delimited);
     } else if (url().kind == LinkKind::Rtu) {
@@ -74,6 +95,8 @@ void SimSerialEndpoint::stop()
 {
     m_silence.stop();
     m_responder.clear();
+    if (m_rts)
+        m_rts->stop(); // while the port is open: RTS back to rest, the driver's settings back
     if (m_port && m_port->isOpen())
         m_port->close();
     setBound(boundUrl(), false);
@@ -126,10 +149,25 @@ void SimSerialEndpoint::drain()
         m_responder.enqueue(plan, received, [this, id = plan.trafficId](const QByteArray &answer) {
             if (!m_port || !m_port->isOpen())
                 return;
-            m_port->write(answer);
+            if (m_rts)
+                m_rts->send(answer); // now, or once RTS has been up rts_before
+            else
+                m_port->write(answer);
             simulator()->noteSent(this, answer, id);
         });
     }
+}
+
+bool SimSerialEndpoint::writeAnswer(const QByteArray &answer)
+{
+    if (!m_port || !m_port->isOpen() || m_port->write(answer) != answer.size())
+        return false;
+    m_port->flush(); // to the kernel now: the line time counts from here
+    // SerialLink's line model: characters back to back from the moment the kernel has them.
+    const qint64 start = qMax(monotonicNowNs(), m_lineFreeNs);
+    m_lineFreeNs = start + answer.size() * SerialLink::lineCharacterNs(url().serial);
+    m_rts->drained(m_lineFreeNs);
+    return true;
 }
 
 } // namespace mbscope
