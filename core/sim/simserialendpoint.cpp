@@ -7,6 +7,9 @@
 #include "protocol/rtuframer.h"
 #include "sim/simulator.h"
 #include "transport/monotonicclock.h"
+#include "transport/rtsdirection.h"
+#include "transport/seriallinecontrol.h"
+#include "transport/seriallink.h"
 
 #include <QtSerialPort/QSerialPort>
 
@@ -26,6 +29,13 @@ SimSerialEndpoint::SimSerialEndpoint(Simulator *simulator, const LinkUrl &url, c
     m_silence.setSingleShot(true);
     m_silence.setTimerType(Qt::PreciseTimer);
     connect(&m_silence, &QTimer::timeout, this, &SimSerialEndpoint::onSilence);
+    if (url.serial.rs485.enabled()) {
+        m_rts = new RtsDirection(url.serial.rs485, url.serial.device, [this](const QByteArray &answer) { return writeAnswer(answer); },
+                                 this);
+        connect(m_rts, &RtsDirection::failed, this, [this](const QString &what) {
+            this->simulator()->noteConnection(this, this->url().serial.device, SimLogEntry::Verdict::ConnectionClosed, what);
+        });
+    }
 }
 
 SimSerialEndpoint::~SimSerialEndpoint()
@@ -50,6 +60,17 @@ bool SimSerialEndpoint::start(QString *error)
         m_port = nullptr;
         return false;
     }
+    if (m_rts) {
+        const QString why = m_rts->start(std::make_unique<SerialLineControl>(int(m_port->handle())));
+        if (!why.isEmpty()) {
+            *error = url().toString() + QStringLiteral(": ") + why;
+            m_port->close();
+            delete m_port;
+            m_port = nullptr;
+            return false;
+        }
+    }
+    m_lineFreeNs = 0;
     if (url().delimited.enabled) {
         m_framer = std::make_unique<DelimitedFramer>(url().delimited);
     } else if (url().kind == LinkKind::Rtu) {
@@ -76,6 +97,8 @@ void SimSerialEndpoint::stop()
 {
     m_silence.stop();
     m_responder.clear();
+    if (m_rts)
+        m_rts->stop(); // while the port is open: RTS back to rest, the driver's settings back
     if (m_port && m_port->isOpen())
         m_port->close();
     setBound(boundUrl(), false);
@@ -131,11 +154,26 @@ void SimSerialEndpoint::drain()
             self->m_responder.enqueue(plan, received, [endpoint = self.data(), id = plan.trafficId](const QByteArray &answer) {
                 if (!endpoint->m_port || !endpoint->m_port->isOpen())
                     return;
-                endpoint->m_port->write(answer);
+                if (endpoint->m_rts)
+                    endpoint->m_rts->send(answer); // now, or once RTS has been up rts_before
+                else
+                    endpoint->m_port->write(answer);
                 endpoint->simulator()->noteSent(endpoint, answer, id);
             });
         });
     }
+}
+
+bool SimSerialEndpoint::writeAnswer(const QByteArray &answer)
+{
+    if (!m_port || !m_port->isOpen() || m_port->write(answer) != answer.size())
+        return false;
+    m_port->flush(); // to the kernel now: the line time counts from here
+    // SerialLink's line model: characters back to back from the moment the kernel has them.
+    const qint64 start = qMax(monotonicNowNs(), m_lineFreeNs);
+    m_lineFreeNs = start + answer.size() * SerialLink::lineCharacterNs(url().serial);
+    m_rts->drained(m_lineFreeNs);
+    return true;
 }
 
 } // namespace mbscope

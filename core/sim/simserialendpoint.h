@@ -11,12 +11,16 @@ class QSerialPort;
 
 namespace mbscope {
 
+class RtsDirection;
 class StreamFramer;
 
 // rtu:// and ascii:// on a serial port (a pty in tests): the units on a bus. RTU frames are cut
 // by their predicted length and ended by the t3.5 silence (Serial Line V1.02, 2.5.1.1; the
 // framer's t35Ns for the URL's baud rate); ASCII frames by ':' and CR LF, an unfinished frame
 // dropped after a second of silence (2.5.2.1). Answers leave one at a time, in request order.
+// With the URL's RS-485 options (rts=, rts_before=, rts_after=, rs485=kernel) the slave drives its
+// transmitter as a link does (RtsDirection): RTS to rest at start, raised around each answer and
+// put back after the answer's computed line time; a port that cannot do it is refused at start.
 class SimSerialEndpoint final : public SimEndpoint
 {
     Q_OBJECT
@@ -31,11 +35,14 @@ private:
     void onReadyRead();
     void onSilence();
     void drain();
+    bool writeAnswer(const QByteArray &answer);
 
     QSerialPort *m_port = nullptr;
     std::unique_ptr<StreamFramer> m_framer;
     SimResponder m_responder;
     QTimer m_silence;
+    RtsDirection *m_rts = nullptr; // with the URL's RS-485 direction control only
+    qint64 m_lineFreeNs = 0;       // when the last answer will have left the line
 };
 
 } // namespace mbscope

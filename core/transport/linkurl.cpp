@@ -37,6 +37,8 @@ struct Option {
 constexpr Option kOptions[] = {
     {"baud", Scope::Serial},      {"parity", Scope::Serial},         {"data", Scope::Serial},
     {"stop", Scope::Serial},      {"turnaround", Scope::Serial},     {"turnaround_us", Scope::Serial},
+    {"rts", Scope::Serial},       {"rts_before", Scope::Serial},     {"rts_after", Scope::Serial},
+    {"rs485", Scope::Serial},
     {"cert", Scope::Tls},         {"key", Scope::Tls},               {"ca", Scope::Tls},
     {"connect_timeout", Scope::Network}, {"timeout", Scope::Any},    {"framing", Scope::Any},
     {"start", Scope::Any},        {"end", Scope::Any},               {"checksum", Scope::Any},
@@ -220,7 +222,8 @@ QString applyOption(const QString &key, const QString &value, LinkUrl &url)
         *out = int(d.ns / Duration::Millisecond);
         return {};
     };
-    auto turnaround = [&](qint64 bareUnitNs) -> QString {
+    // The serial line's delays: whole microseconds, at most 10 s.
+    auto microseconds = [&](qint64 bareUnitNs, int *out) -> QString {
         const QString range = QStringLiteral("expected at most 10 s");
         const DurationResult d = parseDuration(value, bareUnitNs);
         if (!d.ok())
@@ -229,7 +232,7 @@ QString applyOption(const QString &key, const QString &value, LinkUrl &url)
             return QStringLiteral("%1 '%2' is not a whole number of microseconds").arg(key, value);
         if (d.ns / Duration::Microsecond > kMaxTurnaroundUs)
             return QStringLiteral("%1 '%2' is out of range: %3").arg(key, value, range);
-        url.serial.turnaroundUs = int(d.ns / Duration::Microsecond);
+        *out = int(d.ns / Duration::Microsecond);
         return {};
     };
 
@@ -256,9 +259,28 @@ QString applyOption(const QString &key, const QString &value, LinkUrl &url)
         return {};
     }
     if (key == u"turnaround")
-        return turnaround(Duration::Millisecond);
+        return microseconds(Duration::Millisecond, &url.serial.turnaroundUs);
     if (key == u"turnaround_us")
-        return turnaround(Duration::Microsecond);
+        return microseconds(Duration::Microsecond, &url.serial.turnaroundUs);
+    if (key == u"rts_before")
+        return microseconds(Duration::Millisecond, &url.serial.rs485.beforeUs);
+    if (key == u"rts_after")
+        return microseconds(Duration::Millisecond, &url.serial.rs485.afterUs);
+    if (key == u"rts") {
+        const QString v = value.toLower();
+        if (v != u"up" && v != u"down")
+            return QStringLiteral("rts '%1' is not up or down (the RTS level while sending)").arg(value);
+        url.serial.rs485.rts = v == u"up" ? Rs485Settings::Rts::Up : Rs485Settings::Rts::Down;
+        return {};
+    }
+    if (key == u"rs485") {
+        if (value.compare(u"kernel", Qt::CaseInsensitive) != 0)
+            return QStringLiteral("rs485 '%1' is not known: expected kernel (the driver's RS-485 mode; rts=up or rts=down "
+                                  "without it has mbscope switch RTS)")
+                .arg(value);
+        url.serial.rs485.kernel = true;
+        return {};
+    }
     if (key == u"connect_timeout")
         return milliseconds(Duration::Millisecond, 1, &url.connectTimeoutMs);
     if (key == u"timeout")
@@ -351,6 +373,26 @@ QString checkListen(const QSet<QString> &seen, const LinkUrl &url, LinkUse use)
     return {};
 }
 
+// RS-485 options that only make sense together; the driver's mode takes whole milliseconds.
+QString checkRs485(const QSet<QString> &seen, Rs485Settings &rs485)
+{
+    if (rs485.kernel && rs485.rts == Rs485Settings::Rts::None)
+        rs485.rts = Rs485Settings::Rts::Up; // SER_RS485_RTS_ON_SEND, as most transceivers are wired
+    for (const char *key : {"rts_before", "rts_after"}) {
+        const QLatin1String name(key);
+        if (!seen.contains(name))
+            continue;
+        if (!rs485.enabled())
+            return QStringLiteral("'%1' needs rts=up, rts=down or rs485=kernel").arg(name);
+        const int us = name == QLatin1String("rts_before") ? rs485.beforeUs : rs485.afterUs;
+        if (rs485.kernel && us % 1000 != 0)
+            return QStringLiteral("%1 %2us is not a whole number of milliseconds: rs485=kernel hands the driver milliseconds")
+                .arg(name)
+                .arg(us);
+    }
+    return {};
+}
+
 QString parseOptions(QStringView query, LinkUrl &url, LinkUse use)
 {
     QSet<QString> seen;
@@ -386,6 +428,8 @@ QString parseOptions(QStringView query, LinkUrl &url, LinkUse use)
     }
     if (seen.contains(QStringLiteral("turnaround")) && seen.contains(QStringLiteral("turnaround_us")))
         return QStringLiteral("turnaround and turnaround_us are both given: use one");
+    if (const QString error = checkRs485(seen, url.serial.rs485); !error.isEmpty())
+        return error;
     if (!url.delimited.enabled) {
         for (const char *key : {"start", "end", "checksum", "display"}) {
             if (seen.contains(QLatin1String(key)))
@@ -513,9 +557,20 @@ QString LinkUrl::toString() const
         add("parity", QString(QLatin1Char(serial.parity)));
         add("data", QString::number(serial.dataBits));
         add("stop", QString::number(serial.stopBits));
+        auto microseconds = [](int us) {
+            return us % 1000 == 0 ? QString::number(us / 1000) + QStringLiteral("ms") : QString::number(us) + QStringLiteral("us");
+        };
         if (serial.turnaroundUs > 0)
-            add("turnaround", serial.turnaroundUs % 1000 == 0 ? QString::number(serial.turnaroundUs / 1000) + QStringLiteral("ms")
-                                                               : QString::number(serial.turnaroundUs) + QStringLiteral("us"));
+            add("turnaround", microseconds(serial.turnaroundUs));
+        if (serial.rs485.enabled()) {
+            add("rts", serial.rs485.sendLevel() ? QStringLiteral("up") : QStringLiteral("down"));
+            if (serial.rs485.beforeUs > 0)
+                add("rts_before", microseconds(serial.rs485.beforeUs));
+            if (serial.rs485.afterUs > 0)
+                add("rts_after", microseconds(serial.rs485.afterUs));
+            if (serial.rs485.kernel)
+                add("rs485", QStringLiteral("kernel"));
+        }
     } else {
         text += address();
         if (!tls.certificate.isEmpty())

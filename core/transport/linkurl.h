@@ -2,6 +2,7 @@
 
 #include "protocol/delimitedframer.h"
 #include "protocol/framing.h"
+#include "rs485settings.h"
 
 #include <QtCore/QString>
 #include <QtCore/QStringView>
@@ -48,6 +49,7 @@ struct SerialSettings {
     int dataBits = 8;   // 5..8; RTU needs 8; ASCII defaults to 7 (Serial Line V1.02, 2.5.2)
     int stopBits = 1;   // 1 or 2
     int turnaroundUs = 0; // RS485: wait this long after sending before expecting the answer
+    Rs485Settings rs485;  // RS-485 direction control by RTS (none by default)
 
     friend bool operator==(const SerialSettings &, const SerialSettings &) = default;
 };
@@ -72,6 +74,10 @@ struct TlsSettings {
 // Options (unknown, repeated or misplaced options are errors, never ignored):
 //   serial:  baud=9600  parity=N|E|O (or none|even|odd)  data=5..8  stop=1|2
 //            turnaround=10ms (units ns, us, ms, s; a bare number is ms) or turnaround_us=10000
+//            rts=up|down (RS-485: the RTS level while sending, switched by mbscope)
+//            rts_before=DURATION  rts_after=DURATION (RTS at that level so long before the first
+//            byte and after the last; need rts= or rs485=)  rs485=kernel (the driver switches
+//            RTS, TIOCSRS485; rts= defaults to up; the delays in whole milliseconds)
 //   tls:     cert=FILE  key=FILE (both or neither)  ca=FILE
 //   network: connect_timeout=3000ms (bare number: ms; default 3000)
 //   stream (tcp, rtu-tcp, ascii-tcp, tls):

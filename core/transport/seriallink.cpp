@@ -2,6 +2,8 @@
 
 #include "monotonicclock.h"
 #include "protocol/rtuframer.h"
+#include "rtsdirection.h"
+#include "seriallinecontrol.h"
 
 #include <QtCore/QFile>
 
@@ -42,6 +44,11 @@ SerialLink::SerialLink(const LinkUrl &url, QObject *parent)
     m_drainTimer.setSingleShot(true);
     m_drainTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_drainTimer, &QTimer::timeout, this, &SerialLink::onDrainTimer);
+    if (url.serial.rs485.enabled()) {
+        m_rts = new RtsDirection(url.serial.rs485, url.serial.device, [this](const QByteArray &bytes) { return writeNow(bytes); },
+                                 this);
+        connect(m_rts, &RtsDirection::failed, this, [this](const QString &what) { reportError(LinkError::Kind::Io, what); });
+    }
 }
 
 SerialLink::~SerialLink()
@@ -174,6 +181,19 @@ void SerialLink::startOpen()
         }
         return;
     }
+    if (m_rts) {
+        const int fd = int(m_port->handle());
+        std::unique_ptr<LineControl> lines;
+        if (m_lineControlFactory)
+            lines = m_lineControlFactory(fd);
+        else
+            lines = std::make_unique<SerialLineControl>(fd);
+        const QString why = m_rts->start(std::move(lines));
+        if (!why.isEmpty()) {
+            failWith(LinkError::Kind::Config, why);
+            return;
+        }
+    }
     connect(m_port, &QIODevice::readyRead, this, &SerialLink::onReadyRead);
     connect(m_port, &QSerialPort::errorOccurred, this, &SerialLink::onPortError);
     connect(m_port, &QIODevice::bytesWritten, this, [this] {
@@ -203,6 +223,8 @@ void SerialLink::teardown()
     m_drains.clear();
     if (!m_port)
         return;
+    if (m_rts)
+        m_rts->stop(); // while the port is open: RTS back to rest, the driver's settings back
     QSerialPort *port = m_port;
     m_port = nullptr;
     disconnect(port, nullptr, this, nullptr);
@@ -219,6 +241,13 @@ bool SerialLink::write(const QByteArray &bytes)
                     QStringLiteral("cannot write %1 bytes: the link is not open").arg(bytes.size()));
         return false;
     }
+    return m_rts ? m_rts->send(bytes) : writeNow(bytes);
+}
+
+bool SerialLink::writeNow(const QByteArray &bytes)
+{
+    if (!m_port)
+        return false;
     const qint64 written = m_port->write(bytes);
     if (written != bytes.size()) {
         reportError(LinkError::Kind::Io, QStringLiteral("writing %1 bytes to %2 failed (%3)")
@@ -254,6 +283,8 @@ void SerialLink::account()
     }
     m_lineFreeNs = start + (accepted - m_accepted) * character;
     m_accepted = accepted;
+    if (m_rts && m_marks.isEmpty())
+        m_rts->drained(m_lineFreeNs); // all taken: RTS back rts_after after the last byte
     scheduleDrain();
 }
 

@@ -6,7 +6,13 @@
 #include <QtCore/QTimer>
 #include <QtSerialPort/QSerialPort>
 
+#include <functional>
+#include <memory>
+
 namespace mbscope {
+
+class LineControl;
+class RtsDirection;
 
 // A serial port: rtu:// and ascii:// (QSerialPort; baud, parity, data and stop bits from the URL,
 // no flow control).
@@ -22,6 +28,14 @@ namespace mbscope {
 // is then later than the truth.
 // So a fast device's answer can arrive before bytesWritten is emitted: the engine must go by the
 // timestamps, not the order of the signals. lineFreeNs() gives the computed time at once.
+//
+// RS-485 direction control (the URL's rts=, rts_before=, rts_after=, rs485=kernel; see
+// RtsDirection): at open RTS goes to its resting level, or the driver's RS-485 mode is turned on,
+// and a port that cannot do it (a pseudo terminal has no modem lines, a driver without
+// TIOCSRS485) fails to open with a Config error that names the device and the OS's answer. Each
+// write raises RTS first; after rts_before the bytes go (write() has returned true by then, and
+// lineFreeNs() still gives the previous write's time, which is in the past), and RTS goes back
+// rts_after after the computed drain time of the last byte.
 class SerialLink final : public Link
 {
     Q_OBJECT
@@ -51,9 +65,15 @@ public:
     // The group that owns a file ("dialout"), empty when it cannot be told.
     [[nodiscard]] static QString owningGroup(const QString &path);
 
+    // Tests: what switches RTS and the driver's RS-485 mode on the open port's descriptor (by
+    // default SerialLineControl, by ioctl). Set before open().
+    using LineControlFactory = std::function<std::unique_ptr<LineControl>(int fd)>;
+    void setLineControlFactory(LineControlFactory factory) { m_lineControlFactory = std::move(factory); }
+
 private:
     void startOpen();
     void teardown();
+    bool writeNow(const QByteArray &bytes);
     void onReadyRead();
     void onPortError(QSerialPort::SerialPortError error);
     [[nodiscard]] bool hungUp() const;
@@ -63,6 +83,8 @@ private:
 
     QSerialPort *m_port = nullptr;
     QTimer m_drainTimer;
+    RtsDirection *m_rts = nullptr; // with the URL's RS-485 direction control only
+    LineControlFactory m_lineControlFactory;
     QList<qint64> m_marks;  // m_submitted at the end of each write the kernel has not fully taken
     QList<qint64> m_drains; // computed drain times of the writes taken, not yet reported
     qint64 m_submitted = 0;

@@ -93,6 +93,19 @@ private slots:
         row("tls://0.0.0.0?mode=listen&cert=s.pem&key=s.key&ca=ca.pem", "tls://0.0.0.0:802?cert=s.pem&key=s.key&ca=ca.pem&mode=listen");
         row("rtu-tcp://10.0.0.5:4001?mode=listen&framing=delimited&end=0D",
             "rtu-tcp://10.0.0.5:4001?mode=listen&framing=delimited&end=0D");
+        // RS-485 direction control (issue 27): RTS level while sending, delays, the driver's mode.
+        row("rtu:///dev/ttyUSB0?rts=up", "rtu:///dev/ttyUSB0?baud=9600&parity=E&data=8&stop=1&rts=up");
+        row("rtu:///dev/ttyUSB0?RTS=Down", "rtu:///dev/ttyUSB0?baud=9600&parity=E&data=8&stop=1&rts=down");
+        row("rtu:///dev/ttyUSB0?rts=up&rts_before=500us&rts_after=2",
+            "rtu:///dev/ttyUSB0?baud=9600&parity=E&data=8&stop=1&rts=up&rts_before=500us&rts_after=2ms");
+        row("rtu:///dev/ttyUSB0?rts_after=1.5ms&rts=down&turnaround=5ms",
+            "rtu:///dev/ttyUSB0?baud=9600&parity=E&data=8&stop=1&turnaround=5ms&rts=down&rts_after=1500us");
+        row("rtu:///dev/ttyUSB0?rts=up&rts_before=0&rts_after=0", "rtu:///dev/ttyUSB0?baud=9600&parity=E&data=8&stop=1&rts=up");
+        row("rtu:///dev/ttyUSB0?rs485=kernel", "rtu:///dev/ttyUSB0?baud=9600&parity=E&data=8&stop=1&rts=up&rs485=kernel");
+        row("rtu:///dev/ttyS1?rs485=KERNEL&rts=down&rts_before=1ms&rts_after=1s",
+            "rtu:///dev/ttyS1?baud=9600&parity=E&data=8&stop=1&rts=down&rts_before=1ms&rts_after=1000ms&rs485=kernel");
+        row("ascii:///dev/ttyUSB1?rts=up&rts_after=3ms",
+            "ascii:///dev/ttyUSB1?baud=9600&parity=E&data=7&stop=1&rts=up&rts_after=3ms");
     }
     void canonical()
     {
@@ -144,6 +157,19 @@ private slots:
         QCOMPARE(url.serial.turnaroundUs, 750);
         url = parsed(QStringLiteral("rtu:///dev/ttyUSB0?turnaround=2000000ns"));
         QCOMPARE(url.serial.turnaroundUs, 2000);
+
+        QVERIFY(!url.serial.rs485.enabled());
+        url = parsed(QStringLiteral("rtu:///dev/ttyUSB0?rts=down&rts_before=250us&rts_after=2ms"));
+        QCOMPARE(url.serial.rs485.rts, Rs485Settings::Rts::Down);
+        QVERIFY(url.serial.rs485.enabled());
+        QVERIFY(!url.serial.rs485.sendLevel());
+        QVERIFY(!url.serial.rs485.kernel);
+        QCOMPARE(url.serial.rs485.beforeUs, 250);
+        QCOMPARE(url.serial.rs485.afterUs, 2000);
+        url = parsed(QStringLiteral("rtu:///dev/ttyUSB0?rs485=kernel&rts_after=5"));
+        QCOMPARE(url.serial.rs485.rts, Rs485Settings::Rts::Up);
+        QVERIFY(url.serial.rs485.kernel);
+        QCOMPARE(url.serial.rs485.afterUs, 5000);
 
         url = parsed(QStringLiteral("ascii:///dev/ttyUSB1"));
         QCOMPARE(url.framing(), Framing::Ascii);
@@ -214,8 +240,8 @@ private slots:
         row("unknown option", "tcp://h:502?speed=fast",
             "unknown option 'speed': tcp links take connect_timeout, timeout, framing, start, end, checksum, display, mode, busy");
         row("unknown serial option", "rtu:///dev/ttyUSB0?bauds=9600",
-            "unknown option 'bauds': rtu links take baud, parity, data, stop, turnaround, turnaround_us, timeout, framing, "
-            "start, end, checksum, display");
+            "unknown option 'bauds': rtu links take baud, parity, data, stop, turnaround, turnaround_us, rts, rts_before, "
+            "rts_after, rs485, timeout, framing, start, end, checksum, display");
         row("serial option on tcp", "tcp://h:502?baud=9600",
             "'baud' is an option of serial links (rtu, ascii), not of tcp links");
         row("tls option on tcp", "tcp://h:502?cert=c.pem", "'cert' is an option of tls links, not of tcp links");
@@ -301,6 +327,24 @@ private slots:
         row("listen on port 0", "tcp://127.0.0.1:0?mode=listen", "port 0 is out of range: expected 1-65535");
         row("tls listen without cert", "tls://0.0.0.0?mode=listen",
             "tls with mode=listen needs cert=FILE and key=FILE: mbscope is the TLS server of the device's connection");
+        row("rts level", "rtu:///dev/ttyUSB0?rts=high", "rts 'high' is not up or down (the RTS level while sending)");
+        row("rts on tcp", "rtu-tcp://gw:4001?rts=up", "'rts' is an option of serial links (rtu, ascii), not of rtu-tcp links");
+        row("rs485 mode", "rtu:///dev/ttyUSB0?rs485=auto",
+            "rs485 'auto' is not known: expected kernel (the driver's RS-485 mode; rts=up or rts=down without it has mbscope "
+            "switch RTS)");
+        row("rts_before alone", "rtu:///dev/ttyUSB0?rts_before=1ms", "'rts_before' needs rts=up, rts=down or rs485=kernel");
+        row("rts_after alone", "ascii:///dev/ttyUSB0?rts_after=1ms", "'rts_after' needs rts=up, rts=down or rs485=kernel");
+        row("rts_before unit", "rtu:///dev/ttyUSB0?rts=up&rts_before=1jiffy",
+            "rts_before '1jiffy' is not a duration: expected a number with an optional unit ns, us, ms, s, min or h "
+            "(e.g. 100ms, 1.5s, 2min; a bare number is milliseconds)");
+        row("rts_after too long", "rtu:///dev/ttyUSB0?rts=up&rts_after=11s", "rts_after '11s' is out of range: expected at most 10 s");
+        row("rts_after in ns", "rtu:///dev/ttyUSB0?rts=up&rts_after=100ns",
+            "rts_after '100ns' is not a whole number of microseconds");
+        row("rts_before negative", "rtu:///dev/ttyUSB0?rts=up&rts_before=-1",
+            "rts_before '-1' is a negative duration: a duration is 0 or more");
+        row("kernel delay in us", "rtu:///dev/ttyUSB0?rs485=kernel&rts_after=1500us",
+            "rts_after 1500us is not a whole number of milliseconds: rs485=kernel hands the driver milliseconds");
+        row("rts twice", "rtu:///dev/ttyUSB0?rts=up&rts=down", "option 'rts' is given twice");
     }
     void errors()
     {
@@ -350,6 +394,7 @@ private slots:
         url.serial.parity = 'N';
         url.serial.stopBits = 2;
         url.serial.turnaroundUs = 1234;
+        url.serial.rs485 = Rs485Settings{Rs485Settings::Rts::Down, false, 1500, 20};
         url.responseTimeoutMs = 77;
         url.delimited = DelimitedFraming{true, QByteArray(":"), QByteArray("\r\n"), DelimitedChecksum::Xor, false};
         const auto again = LinkUrl::parse(url.toString());

@@ -1,4 +1,5 @@
 #include "protocol/rtuframer.h"
+#include "transport/linecontrol.h"
 #include "transport/monotonicclock.h"
 #include "transport/seriallink.h"
 
@@ -29,6 +30,31 @@ std::unique_ptr<Link> makeLink(const QString &text)
         qFatal("bad URL in test: %s", qPrintable(parsed.error));
     return std::unique_ptr<Link>(Link::create(*parsed.url));
 }
+
+// A pty has no modem lines: this one records the RTS switching the link asks for, with the
+// monotonic time of each call, as a USB-RS485 adapter's RTS would see it.
+struct RtsCall {
+    qint64 ns;
+    bool asserted;
+};
+class RecordingLines final : public LineControl
+{
+public:
+    explicit RecordingLines(QList<RtsCall> *calls)
+        : m_calls(calls)
+    {
+    }
+    int setRts(bool asserted) override
+    {
+        m_calls->append(RtsCall{monotonicNowNs(), asserted});
+        return 0;
+    }
+    int kernelRs485(KernelRs485 *) override { return ENOTTY; }
+    int setKernelRs485(const KernelRs485 &) override { return ENOTTY; }
+
+private:
+    QList<RtsCall> *m_calls;
+};
 
 } // namespace
 
@@ -279,6 +305,103 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(rec.errors.size(), 1, kWaitMs);
         QCOMPARE(rec.errors.first().kind, LinkError::Kind::Permission);
         QCOMPARE(rec.lastMessage(), link->url().toString() + QStringLiteral(": ") + expected);
+    }
+
+    // RS-485 direction control on a port without modem lines (a pty, as socat makes them; a driver
+    // without TIOCSRS485 answers alike): the link does not open, and says why (issue 27).
+    void rs485Refused_data()
+    {
+        QTest::addColumn<QString>("options");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("rts=up") << QStringLiteral("rts=up")
+                                << QStringLiteral("cannot switch RTS on %1 for rts=up (%2): the port has no modem control lines "
+                                                  "(a pseudo terminal has none); use a port whose RTS drives the transceiver, or "
+                                                  "leave rts= out if the adapter switches direction by itself");
+        QTest::newRow("rts=down, delays") << QStringLiteral("rts=down&rts_before=1ms&rts_after=1ms")
+                                          << QStringLiteral("cannot switch RTS on %1 for rts=down (%2): the port has no modem "
+                                                            "control lines (a pseudo terminal has none); use a port whose RTS "
+                                                            "drives the transceiver, or leave rts= out if the adapter switches "
+                                                            "direction by itself");
+        QTest::newRow("rs485=kernel") << QStringLiteral("rs485=kernel")
+                                      << QStringLiteral("%1 has no RS-485 mode for rs485=kernel (TIOCSRS485: %2): its driver "
+                                                        "does not offer one; leave rs485=kernel out to have mbscope switch RTS "
+                                                        "itself (rts=up)");
+    }
+    void rs485Refused()
+    {
+        QFETCH(QString, options);
+        QFETCH(QString, message);
+        auto link = makeLink(QStringLiteral("rtu://%1?").arg(m_a) + options);
+        Recorder rec(link.get());
+        link->open();
+        QTRY_COMPARE_WITH_TIMEOUT(rec.errors.size(), 1, kWaitMs);
+        QCOMPARE(rec.errors.first().kind, LinkError::Kind::Config);
+        QCOMPARE(rec.lastMessage(), link->url().toString() + QStringLiteral(": ") + message.arg(m_a, qt_error_string(ENOTTY)));
+        QCOMPARE(link->state(), Link::State::Closed);
+        QCOMPARE(rec.opened, 0);
+        // Without the option the same port opens.
+        auto plain = makeLink(QStringLiteral("rtu://") + m_a);
+        Recorder recPlain(plain.get());
+        plain->open();
+        QTRY_COMPARE_WITH_TIMEOUT(recPlain.opened, 1, kWaitMs);
+    }
+
+    // On an open link, RTS rests at open, rises before the bytes (rts_before ahead of them), and
+    // goes back rts_after after the computed drain time of the last byte, never sooner; a second
+    // write while RTS is up goes at once, and the last write's drain time counts.
+    void rtsAroundWrites_data()
+    {
+        QTest::addColumn<QString>("options");
+        QTest::addColumn<bool>("sendLevel");
+        QTest::addColumn<qint64>("beforeNs");
+        QTest::addColumn<qint64>("afterNs");
+        QTest::newRow("up") << QStringLiteral("rts=up") << true << qint64(0) << qint64(0);
+        QTest::newRow("down, 3 ms before, 2 ms after") << QStringLiteral("rts=down&rts_before=3ms&rts_after=2ms") << false
+                                                       << qint64(3000000) << qint64(2000000);
+        QTest::newRow("up, 500 us after") << QStringLiteral("rts=up&rts_after=500us") << true << qint64(0) << qint64(500000);
+    }
+    void rtsAroundWrites()
+    {
+        QFETCH(QString, options);
+        QFETCH(bool, sendLevel);
+        QFETCH(qint64, beforeNs);
+        QFETCH(qint64, afterNs);
+        auto a = makeLink(QStringLiteral("rtu://%1?baud=9600&").arg(m_a) + options);
+        auto b = makeLink(QStringLiteral("rtu://%1?baud=9600").arg(m_b));
+        QList<RtsCall> calls;
+        qobject_cast<SerialLink *>(a.get())->setLineControlFactory([&calls](int) { return std::make_unique<RecordingLines>(&calls); });
+        Recorder ra(a.get());
+        Recorder rb(b.get());
+        a->open();
+        b->open();
+        QTRY_COMPARE_WITH_TIMEOUT(ra.opened + rb.opened, 2, kWaitMs);
+        QCOMPARE(calls.size(), 1);
+        QCOMPARE(calls.at(0).asserted, !sendLevel); // at rest: the transmitter off
+
+        const qint64 before = monotonicNowNs();
+        QVERIFY(a->write(QByteArray::fromHex("010300790016" "15DD")));
+        QCOMPARE(calls.size(), 2);
+        QCOMPARE(calls.at(1).asserted, sendLevel);
+        QVERIFY(calls.at(1).ns >= before);
+        QTRY_COMPARE_WITH_TIMEOUT(ra.writtenNs.size(), 1, kWaitMs);
+        // The bytes went rts_before after RTS rose: they cannot have left before that plus their line time.
+        const qint64 character = SerialLink::lineCharacterNs(a->url().serial);
+        QVERIFY(ra.writtenNs.at(0) >= calls.at(1).ns + beforeNs + 8 * character);
+        QVERIFY(a->write(QByteArray::fromHex("01060001000319CB")));
+        if (calls.size() == 2) { // RTS still up: no second rise, no rts_before
+            QTRY_COMPARE_WITH_TIMEOUT(ra.writtenNs.size(), 2, kWaitMs);
+            QTRY_COMPARE_WITH_TIMEOUT(calls.size(), 3, kWaitMs);
+        } else { // the first write had drained and RTS had gone back already: up again for the second
+            QCOMPARE(calls.size(), 4);
+            QTRY_COMPARE_WITH_TIMEOUT(ra.writtenNs.size(), 2, kWaitMs);
+            QTRY_COMPARE_WITH_TIMEOUT(calls.size(), 5, kWaitMs);
+        }
+        QCOMPARE(calls.last().asserted, !sendLevel);
+        QVERIFY(calls.last().ns >= ra.writtenNs.last() + afterNs);
+        QTRY_COMPARE_WITH_TIMEOUT(rb.received.size(), 16, kWaitMs);
+        // Closing leaves RTS at rest: nothing more to switch.
+        a->close();
+        QCOMPARE(calls.last().asserted, !sendLevel);
     }
 
     void otherMessages()
