@@ -144,7 +144,7 @@ void TestCliCompletion::bashCompletes_data()
     QTest::newRow("top-level option") << words("mbscope --vers") << QStringList{QStringLiteral("--version")};
     QTest::newRow("no such subcommand") << words("mbscope record") << QStringList{};
     QTest::newRow("read option") << words("mbscope read --ta")
-                                 << QStringList{QStringLiteral("--target"), QStringLiteral("--table")};
+                                 << QStringList{QStringLiteral("--table"), QStringLiteral("--target")};
     QTest::newRow("after a value") << words("mbscope read --target tcp://127.0.0.1 --qu")
                                    << QStringList{QStringLiteral("--quantity")};
     QTest::newRow("value of --target") << words("mbscope read --target ") << QStringList{};
