@@ -123,11 +123,11 @@ void TestTapMode::barMakesTheSetup_data()
     const auto args = [](const char *text) { return QString::fromLatin1(text).split(QLatin1Char(' ')); };
     QTest::newRow("one listen URL, every unit to the target")
         << "tcp://127.0.0.1:5020" << "" << false << ""
-        << args("--listen tcp://127.0.0.1:5020 --target rtu-tcp://127.0.0.1:4001?timeout=1s --timeout 1000ms");
+        << args("--listen tcp://127.0.0.1:5020 --target rtu-tcp://127.0.0.1:4001?timeout=1000ms --timeout 1000ms");
     QTest::newRow("two listen URLs, a renumbering route, read-only")
         << "tcp://127.0.0.1:0  udp://127.0.0.1:0" << "1:17=tcp://10.0.0.5:502" << true << ""
         << args("--listen tcp://127.0.0.1:0 --listen udp://127.0.0.1:0 --route 1:17=tcp://10.0.0.5:502 "
-                "--target rtu-tcp://127.0.0.1:4001?timeout=1s --timeout 1000ms --read-only");
+                "--target rtu-tcp://127.0.0.1:4001?timeout=1000ms --timeout 1000ms --read-only");
     QTest::newRow("no listen URL") << "  " << "" << false << "Masters connect to: type where" << QStringList{};
     QTest::newRow("a listen URL that is none") << "tcp://127.0.0.1:99999" << "" << false
                                                << "Masters connect to: 'tcp://127.0.0.1:99999'" << QStringList{};
