@@ -88,6 +88,17 @@ else
     echo "screenshots: scan.png, scan-map.png, scan-timing.png and scan-line.png skipped: $scan_test is not built"
 fi
 
+# The window as a tap in front of the first-run simulator, a master's read through it: rendered
+# by its GUI test.
+tap_test=$build/tests/ui/tst_tapwindow
+if [[ -x $tap_test ]]; then
+    MBSCOPE_TAP_SCREENSHOT="$out/tap.png" "$tap_test" tapInTheWindow:read >"$scratch/tap.out" 2>&1 \
+        || { echo "screenshots: tst_tapwindow failed:" >&2; cat "$scratch/tap.out" >&2; exit 1; }
+    echo "screenshots: tap.png"
+else
+    echo "screenshots: tap.png skipped: $tap_test is not built"
+fi
+
 # The Watches tab: the simulated M221 on a free port, the example watch session pointed at it,
 # its watches started; in the light and the dark theme.
 "$bin" simulate --profile m221-plc --listen tcp://127.0.0.1:0 --quiet >"$scratch/plc.out" 2>&1 &

@@ -42,7 +42,7 @@ RollingCapture::~RollingCapture()
     finish();
 }
 
-bool RollingCapture::start(const QString &target, QString *error)
+bool RollingCapture::start(const QString &target, QString *error, const Describe &describe)
 {
     if (!m_directory.ensureExists(error))
         return false;
@@ -56,6 +56,8 @@ bool RollingCapture::start(const QString &target, QString *error)
     TrafficMetadata metadata = TrafficMetadata::forCommand(QStringLiteral("window"), QCoreApplication::arguments().mid(1),
                                                            QCoreApplication::applicationVersion());
     metadata.target = target;
+    if (describe)
+        describe(metadata);
     TrafficJournalWriter::Options options;
     options.metadata = metadata.toUtf8();
     if (!m_log.openJournal(path, options, false, error)) {

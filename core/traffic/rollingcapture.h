@@ -6,6 +6,7 @@
 #include <QtCore/QMutex>
 #include <QtCore/QString>
 
+#include <functional>
 #include <memory>
 
 namespace mbscope {
@@ -18,9 +19,15 @@ namespace mbscope {
 // composer's engine and the window's watches and scans write into it from their threads, and
 // rotation happens in whichever appends past the part's size. currentPath() may be asked from
 // any thread.
+struct TrafficMetadata;
+
 class RollingCapture
 {
 public:
+    // What a recording says it holds beyond the window and its target (trafficmetadata.h): the
+    // window's tap serves masters (role server, where it listens, its routes).
+    using Describe = std::function<void(TrafficMetadata &metadata)>;
+
     struct Policy {
         qint64 rotateBytes = qint64(64) << 20; // a journal part
         qint64 keepBytes = qint64(2) << 30;    // the whole folder
@@ -33,7 +40,7 @@ public:
 
     // Opens the first journal for a connection to target; false with *error saying why (the
     // window then works on, unrecorded, and says so).
-    bool start(const QString &target, QString *error);
+    bool start(const QString &target, QString *error, const Describe &describe = {});
     [[nodiscard]] TrafficLog *log() { return &m_log; }
     [[nodiscard]] QString currentPath() const;
     // The journal being written goes to path (a rename: the writer carries on into it, so what

@@ -380,7 +380,7 @@
 <context>
     <name>mbscope::ConnectionBar</name>
     <message>
-        <location filename="../../ui/link/connectionbar.cpp" line="+33"/>
+        <location filename="../../ui/link/connectionbar.cpp" line="+34"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
@@ -516,12 +516,22 @@
     </message>
     <message>
         <location line="+3"/>
-        <location line="+224"/>
+        <source>Tap</source>
+        <translation>Sadap</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Put the window between masters and this device: masters connect to the Tap row&apos;s URLs, each request goes on to the target above (or a route&apos;s), the answer back; both legs are shown, decoded and recorded (mbscope tap in the window)</source>
+        <translation>Tempatkan jendela di antara master dan perangkat ini: master tersambung ke URL di baris Sadap, setiap permintaan diteruskan ke target di atas (atau target sebuah rute), jawabannya kembali; kedua sisi ditampilkan, didekode, dan direkam (mbscope tap di jendela)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <location line="+226"/>
         <source>&amp;Connect</source>
         <translation>Sa&amp;mbungkan</translation>
     </message>
     <message>
-        <location line="-221"/>
+        <location line="-223"/>
         <source>Disconnect</source>
         <translation>Putuskan</translation>
     </message>
@@ -551,7 +561,7 @@
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+79"/>
         <source>No serial port found: plug in the adapter and press Refresh, or type the device path</source>
         <translation>Tidak ada port serial: colokkan adaptor lalu tekan Segarkan, atau ketik path perangkatnya</translation>
     </message>
@@ -601,12 +611,12 @@
         <translation>Putus&amp;kan</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+49"/>
         <source>The link failed: %1. Check that the device is powered and reachable at this address, then send again (the link reopens), or press Disconnect to change the target.</source>
         <translation>Link gagal: %1. Pastikan perangkat menyala dan dapat dijangkau di alamat ini, lalu kirim lagi (link dibuka kembali), atau tekan Putuskan untuk mengganti target.</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+65"/>
         <source>The recent target &apos;%1&apos; cannot be read: %2</source>
         <translation>Target terakhir &apos;%1&apos; tidak dapat dibaca: %2</translation>
     </message>
@@ -1009,7 +1019,7 @@
         <location line="+42"/>
         <location filename="../../core/protocol/adurtu.cpp" line="+37"/>
         <location line="+7"/>
-        <location line="+38"/>
+        <location line="+39"/>
         <location filename="../../core/protocol/pduchecks.cpp" line="+12"/>
         <source>Missing bytes</source>
         <translation>Byte yang hilang</translation>
@@ -1018,7 +1028,7 @@
         <location line="-10"/>
         <location filename="../../core/protocol/adumbap.cpp" line="-43"/>
         <location line="+27"/>
-        <location filename="../../core/protocol/adurtu.cpp" line="-64"/>
+        <location filename="../../core/protocol/adurtu.cpp" line="-65"/>
         <source>Unit id</source>
         <translation>ID unit</translation>
     </message>
@@ -1041,7 +1051,7 @@
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../../core/protocol/adurtu.cpp" line="+49"/>
+        <location filename="../../core/protocol/adurtu.cpp" line="+50"/>
         <source>(valid)</source>
         <translation>(valid)</translation>
     </message>
@@ -2974,12 +2984,12 @@
 <context>
     <name>mbscope::LinkController</name>
     <message>
-        <location filename="../../ui/link/linkcontroller.cpp" line="+114"/>
+        <location filename="../../ui/link/linkcontroller.cpp" line="+123"/>
         <source>nothing is being recorded</source>
         <translation>tidak ada yang sedang direkam</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <location line="+7"/>
         <source>cannot copy %1 to %2: %3</source>
         <translation>tidak dapat menyalin %1 ke %2: %3</translation>
@@ -3000,13 +3010,29 @@
         <translation>%1: menyambungkan…</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+48"/>
+        <location line="+88"/>
         <location line="+10"/>
         <source>Not connected</source>
         <translation>Tidak tersambung</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="-67"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>tap: masters at %1 → %2</source>
+        <translation>sadap: master di %1 → %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source> (read-only)</source>
+        <translation> (hanya baca)</translation>
+    </message>
+    <message>
+        <location line="+127"/>
         <source>Poll %1: %2 transactions, %3 ok, %4 failed</source>
         <translation>Polling %1: %2 transaksi, %3 ok, %4 gagal</translation>
     </message>
@@ -3112,7 +3138,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+91"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+93"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -5178,12 +5204,12 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+4"/>
         <location line="+12"/>
-        <location line="+307"/>
+        <location line="+315"/>
         <source>Send the request once (Ctrl+Return)</source>
         <translation>Kirim permintaan sekali (Ctrl+Return)</translation>
     </message>
     <message>
-        <location line="-316"/>
+        <location line="-324"/>
         <location line="+35"/>
         <location line="+260"/>
         <location line="+1"/>
@@ -5233,12 +5259,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+280"/>
+        <location line="+290"/>
         <source>Send the request repeatedly (Ctrl+Shift+Return starts and stops)</source>
         <translation>Kirim permintaan berulang-ulang (Ctrl+Shift+Return memulai dan menghentikan)</translation>
     </message>
     <message>
-        <location line="-273"/>
+        <location line="-283"/>
         <source>Poll</source>
         <translation>Polling</translation>
     </message>
@@ -5304,12 +5330,22 @@ Klik kanan untuk mengganti format</translation>
         <translation>Hentikan pollin&amp;g</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+24"/>
         <source>The link is listen-only: it monitors the bus and never sends. Disconnect and untick Listen to send.</source>
         <translation>Tautan ini hanya mendengar: ia memantau bus dan tidak pernah mengirim. Putuskan sambungan dan hapus centang Simak untuk mengirim.</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+2"/>
+        <source>The window is a tap: the masters send through it. Press Disconnect to stop the tap and send from here.</source>
+        <translation>Jendela ini adalah sadapan: master mengirim melaluinya. Tekan Putuskan untuk menghentikan sadapan dan mengirim dari sini.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Tap: Send and Poll are off; the masters&apos; requests go through the tap.</source>
+        <translation>Sadap: Kirim dan Polling nonaktif; permintaan master lewat sadapan.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Listen only: Send and Poll are off, nothing is sent to the bus.</source>
         <translation>Hanya dengar: Kirim dan Polling nonaktif, tidak ada yang dikirim ke bus.</translation>
     </message>
@@ -6862,12 +6898,17 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimulatorNotice</name>
     <message>
-        <location filename="../../ui/shell/simulatornotice.cpp" line="+18"/>
+        <location filename="../../ui/shell/simulatornotice.cpp" line="+19"/>
         <source>&lt;b&gt;Connected to mbscope&apos;s built-in simulator&lt;/b&gt;, not to a device: a RosRao gamma detector (profile &lt;code&gt;%1&lt;/code&gt;) answering on &lt;code&gt;%2&lt;/code&gt;. Press &lt;b&gt;Send&lt;/b&gt; to read its 22 registers. To talk to a real device, press &lt;b&gt;Disconnect&lt;/b&gt;, choose its link type, host and port (or serial port) and press &lt;b&gt;Connect&lt;/b&gt;.</source>
         <translation>&lt;b&gt;Tersambung ke simulator bawaan mbscope&lt;/b&gt;, bukan ke perangkat: detektor gamma RosRao (profil &lt;code&gt;%1&lt;/code&gt;) yang menjawab di &lt;code&gt;%2&lt;/code&gt;. Tekan &lt;b&gt;Kirim&lt;/b&gt; untuk membaca 22 register-nya. Untuk berbicara dengan perangkat sungguhan, tekan &lt;b&gt;Putuskan&lt;/b&gt;, pilih jenis link, host dan port (atau port serial)-nya, lalu tekan &lt;b&gt;Sambungkan&lt;/b&gt;.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+22"/>
+        <source>&lt;b&gt;Tap&lt;/b&gt; in front of the built-in simulator on &lt;code&gt;%1&lt;/code&gt;: point a master (mbpoll, a PLC, &lt;code&gt;mbscope read&lt;/code&gt;) at &lt;code&gt;%2&lt;/code&gt;; each request and its answer are listed twice in Traffic, the master&apos;s and the device&apos;s leg.</source>
+        <translation>&lt;b&gt;Sadap&lt;/b&gt; di depan simulator bawaan di &lt;code&gt;%1&lt;/code&gt;: arahkan master (mbpoll, PLC, &lt;code&gt;mbscope read&lt;/code&gt;) ke &lt;code&gt;%2&lt;/code&gt;; setiap permintaan dan jawabannya tercantum dua kali di Lalu lintas, sisi master dan sisi perangkat.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Disconnected. The built-in simulator still answers on &lt;code&gt;%1&lt;/code&gt;: press &lt;b&gt;Connect&lt;/b&gt; to use it again, or choose a real device&apos;s link type, host and port (or serial port) first.</source>
         <translation>Terputus. Simulator bawaan masih menjawab di &lt;code&gt;%1&lt;/code&gt;: tekan &lt;b&gt;Sambungkan&lt;/b&gt; untuk memakainya lagi, atau pilih dulu jenis link, host dan port (atau port serial) perangkat sungguhan.</translation>
     </message>
@@ -7255,6 +7296,156 @@ Klik kanan untuk mengganti format</translation>
         <location line="+5"/>
         <source>cannot write %1: %2</source>
         <translation>tidak dapat menulis %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::TapFields</name>
+    <message>
+        <location filename="../../ui/link/tapfields.cpp" line="+48"/>
+        <source>tcp://0.0.0.0:502</source>
+        <translation>tcp://0.0.0.0:502</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Where the masters (a SCADA, a PLC, mbpoll...) connect, as if to the device: one URL or several separated by spaces, tcp://, rtu-tcp://, udp://, tls:// or a serial port rtu:///dev/ttyUSB0?baud=19200&amp;parity=N (port 0: any free port)</source>
+        <translation>Tempat master (SCADA, PLC, mbpoll...) tersambung, seolah ke perangkat: satu URL atau beberapa dipisah spasi, tcp://, rtu-tcp://, udp://, tls:// atau port serial rtu:///dev/ttyUSB0?baud=19200&amp;parity=N (port 0: port bebas mana pun)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>none: every unit to the target</source>
+        <translation>tidak ada: setiap unit ke target</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Units to other devices, separated by spaces, each UNITS[:DEVICE_UNIT]=URL: 1-10=rtu:///dev/ttyUSB0 or 1:17=tcp://10.0.0.5:502 (the master&apos;s unit 1 is the device&apos;s unit 17). The first route that serves a unit takes it; the target above takes the units no route serves.</source>
+        <translation>Unit ke perangkat lain, dipisah spasi, masing-masing UNIT[:UNIT_PERANGKAT]=URL: 1-10=rtu:///dev/ttyUSB0 atau 1:17=tcp://10.0.0.5:502 (unit 1 milik master adalah unit 17 milik perangkat). Rute pertama yang melayani sebuah unit mengambilnya; target di atas mengambil unit yang tidak dilayani rute mana pun.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Read-only</source>
+        <translation>Hanya baca</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Forward no write (05, 06, 0F, 10, 15, 16, 17) and no Diagnostics sub-function that changes a device: refused and counted, so a tap on a production line cannot change a device by accident</source>
+        <translation>Jangan teruskan penulisan (05, 06, 0F, 10, 15, 16, 17) maupun subfungsi Diagnostik yang mengubah perangkat: ditolak dan dihitung, agar sadapan di jalur produksi tidak dapat mengubah perangkat secara tidak sengaja</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>exception 01</source>
+        <translation>eksepsi 01</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+7"/>
+        <source>silence</source>
+        <translation>diam</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>What a refused write gets: exception 01 (illegal function) or no answer</source>
+        <translation>Yang diterima penulisan yang ditolak: eksepsi 01 (fungsi ilegal) atau tanpa jawaban</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>auto</source>
+        <translation>otomatis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>exception 0B/0A</source>
+        <translation>eksepsi 0B/0A</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>What a master gets when its device does not answer (exception 0B) or no route serves its unit (exception 0A): auto gives exceptions to Modbus/TCP and UDP masters and silence to serial ones</source>
+        <translation>Yang diterima master bila perangkatnya tidak menjawab (eksepsi 0B) atau tidak ada rute yang melayani unitnya (eksepsi 0A): otomatis memberi eksepsi kepada master Modbus/TCP dan UDP, dan diam kepada master serial</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Further attempts after a timeout or a damaged answer, before the master gets its 0B or silence</source>
+        <translation>Percobaan tambahan setelah habis waktu atau jawaban rusak, sebelum master menerima 0B atau diam</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Masters connect to:</source>
+        <translation>Master tersambung ke:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Routes:</source>
+        <translation>Rute:</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>No answer:</source>
+        <translation>Tanpa jawaban:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Retries:</source>
+        <translation>Ulangan:</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Masters connect to: type where the masters connect, e.g. tcp://127.0.0.1:5020 (port 0: any free port).</source>
+        <translation>Master tersambung ke: ketik tempat master tersambung, mis. tcp://127.0.0.1:5020 (port 0: port bebas mana pun).</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Masters connect to: &apos;%1&apos;: %2</source>
+        <translation>Master tersambung ke: &apos;%1&apos;: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Routes: %1</source>
+        <translation>Rute: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The tap forwards Modbus: a target with framing=delimited has no unit ids to route.</source>
+        <translation>Sadapan meneruskan Modbus: target dengan framing=delimited tidak punya id unit untuk dirutekan.</translation>
+    </message>
+    <message>
+        <location line="+58"/>
+        <source>Tap: %1 requests from masters, %2 forwarded: %3 answered, %4 exceptions from devices, %5 without answer, %6 link errors, %7 damaged; %8 without route, %9 writes refused; %10 waiting</source>
+        <translation>Sadap: %1 permintaan dari master, %2 diteruskan: %3 dijawab, %4 eksepsi dari perangkat, %5 tanpa jawaban, %6 galat tautan, %7 rusak; %8 tanpa rute, %9 penulisan ditolak; %10 menunggu</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>; devices answered in %1 on average</source>
+        <translation>; perangkat menjawab dalam rata-rata %1</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::TapMode</name>
+    <message>
+        <location filename="../../ui/shell/tapmode.cpp" line="+22"/>
+        <source>The tap could not start: %1. Choose another port in Masters connect to (port 0: any free port), or stop the program that listens there.</source>
+        <translation>Sadapan tidak dapat dimulai: %1. Pilih port lain di Master tersambung ke (port 0: port bebas mana pun), atau hentikan program yang mendengarkan di sana.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The tap did not start</source>
+        <translation>Sadapan tidak dimulai</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The tap&apos;s target failed: %1. The masters get exception 0B (or silence) until it answers again; their next request opens the link again. Press Disconnect to stop the tap.</source>
+        <translation>Target sadapan gagal: %1. Master menerima eksepsi 0B (atau diam) sampai target menjawab lagi; permintaan berikutnya membuka tautan lagi. Tekan Putuskan untuk menghentikan sadapan.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Tap started, the same as: mbscope tap %1</source>
+        <translation>Sadapan dimulai, sama dengan: mbscope tap %1</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::TapRunner</name>
+    <message>
+        <location filename="../../ui/link/taprunner.cpp" line="+61"/>
+        <source>%1: cannot listen</source>
+        <translation>%1: tidak dapat mendengarkan</translation>
     </message>
 </context>
 <context>
@@ -7737,7 +7928,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficModel</name>
     <message>
-        <location filename="../../ui/traffic/trafficmodel.cpp" line="+403"/>
+        <location filename="../../ui/traffic/trafficmodel.cpp" line="+432"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
@@ -7863,12 +8054,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+209"/>
+        <location line="+219"/>
         <source>Pause</source>
         <translation>Jeda</translation>
     </message>
     <message>
-        <location line="-207"/>
+        <location line="-217"/>
         <source>Hold new frames back from the list; nothing is dropped, they appear on resume</source>
         <translation>Tahan frame baru dari daftar; tidak ada yang dibuang, frame muncul saat dilanjutkan</translation>
     </message>
@@ -7964,7 +8155,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Simpan Lalu Lintas Sebagai</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+86"/>
         <source>Resume</source>
         <translation>Lanjutkan</translation>
     </message>

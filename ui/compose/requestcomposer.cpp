@@ -356,19 +356,31 @@ void RequestComposer::setListenOnly(bool listenOnly)
     updateActions();
 }
 
+void RequestComposer::setTapping(bool tapping)
+{
+    m_tapping = tapping;
+    updateActions();
+}
+
 void RequestComposer::updateActions()
 {
     const bool haveBytes = !bytes().isEmpty() && m_converted.isEmpty();
-    const bool canSend = m_linkReady && !m_listenOnly;
+    const bool canSend = m_linkReady && !m_listenOnly && !m_tapping;
     m_sendAction->setEnabled(canSend && haveBytes && !m_polling);
     m_sendButton->setEnabled(m_sendAction->isEnabled());
     m_pollAction->setEnabled(canSend && (haveBytes || m_polling));
     m_pollButton->setEnabled(m_pollAction->isEnabled());
     const QString listening = tr("The link is listen-only: it monitors the bus and never sends. Disconnect and untick "
                                  "Listen to send.");
-    m_sendButton->setToolTip(m_listenOnly ? listening : tr("Send the request once (Ctrl+Return)"));
-    m_pollButton->setToolTip(m_listenOnly ? listening : tr("Send the request repeatedly (Ctrl+Shift+Return starts and stops)"));
-    if (m_listenOnly && m_linkReady)
+    const QString tapping = tr("The window is a tap: the masters send through it. Press Disconnect to stop the tap and "
+                               "send from here.");
+    m_sendButton->setToolTip(m_tapping ? tapping : m_listenOnly ? listening : tr("Send the request once (Ctrl+Return)"));
+    m_pollButton->setToolTip(m_tapping     ? tapping
+                             : m_listenOnly ? listening
+                                            : tr("Send the request repeatedly (Ctrl+Shift+Return starts and stops)"));
+    if (m_tapping && m_linkReady)
+        m_sendHint->setText(tr("Tap: Send and Poll are off; the masters' requests go through the tap."));
+    else if (m_listenOnly && m_linkReady)
         m_sendHint->setText(tr("Listen only: Send and Poll are off, nothing is sent to the bus."));
     else if (!m_linkReady)
         m_sendHint->setText(tr("Connect first (connection bar above)."));
@@ -387,7 +399,7 @@ void RequestComposer::updateActions()
 void RequestComposer::send()
 {
     const QByteArray request = bytes();
-    if (request.isEmpty() || !m_linkReady || m_listenOnly || m_polling || !m_converted.isEmpty())
+    if (request.isEmpty() || !m_linkReady || m_listenOnly || m_tapping || m_polling || !m_converted.isEmpty())
         return;
     Q_EMIT sendRequested(request);
 }

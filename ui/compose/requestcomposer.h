@@ -81,6 +81,9 @@ public Q_SLOTS:
     // A listen-only link (the bus monitor): Send and Poll are off, and the hint and their tooltips
     // say why.
     void setListenOnly(bool listenOnly);
+    // The window is a tap (the connection bar's Tap): the masters send through it, the composer
+    // does not; Send and Poll are off and say why.
+    void setTapping(bool tapping);
     void setPolling(bool polling);
     // Sends the current bytes (what Ctrl+Return does).
     void send();
@@ -121,6 +124,7 @@ private:
     bool m_syncing = false;
     bool m_linkReady = false;
     bool m_listenOnly = false;
+    bool m_tapping = false;
     bool m_polling = false;
 };
 

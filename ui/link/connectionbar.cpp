@@ -2,6 +2,7 @@
 
 #include "common/hexerrormark.h"
 #include "serialportcombo.h"
+#include "tapfields.h"
 #include "tlsfilesfield.h"
 
 #include <QtCore/QSettings>
@@ -168,6 +169,27 @@ void ConnectionBar::buildUi()
     m_listenOnlyCheck->setToolTip(tr("Monitor a bus another master drives: every exchange on the line is shown, paired "
                                      "and measured, and nothing is ever sent (serial links, RTU or ASCII over TCP)"));
 
+    m_tapCheck = new QCheckBox(tr("Tap"), this);
+    m_tapCheck->setObjectName(QStringLiteral("tapCheck"));
+    m_tapCheck->setToolTip(tr("Put the window between masters and this device: masters connect to the Tap row's URLs, "
+                              "each request goes on to the target above (or a route's), the answer back; both legs "
+                              "are shown, decoded and recorded (mbscope tap in the window)"));
+    m_tapFields = new TapFields(this);
+    m_tapFields->setObjectName(QStringLiteral("tapFields"));
+    m_tapFields->hide();
+    connect(m_tapFields, &TapFields::edited, this, &ConnectionBar::clearError);
+    // Listen and Tap are two ways of not sending from the window: one at a time.
+    connect(m_listenOnlyCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (on)
+            m_tapCheck->setChecked(false);
+    });
+    connect(m_tapCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (on)
+            m_listenOnlyCheck->setChecked(false);
+        m_tapFields->setVisible(on);
+        clearError();
+    });
+
     m_connectButton = new QPushButton(tr("&Connect"), this);
     m_connectButton->setObjectName(QStringLiteral("connectButton"));
     m_connectButton->setDefault(false);
@@ -197,6 +219,7 @@ void ConnectionBar::buildUi()
     row->addWidget(buddyLabel(tr("Ti&meout:"), m_timeoutSpin, this));
     row->addWidget(m_timeoutSpin);
     row->addWidget(m_listenOnlyCheck);
+    row->addWidget(m_tapCheck);
     row->addWidget(m_connectButton);
     row->addWidget(m_recentButton);
     row->addStretch(1);
@@ -206,6 +229,7 @@ void ConnectionBar::buildUi()
     layout->setSpacing(2);
     layout->addLayout(row);
     layout->addWidget(m_tlsFiles);
+    layout->addWidget(m_tapFields);
     layout->addWidget(m_errorLabel);
 
     connect(m_kindCombo, &QComboBox::currentIndexChanged, this, &ConnectionBar::onKindChanged);
@@ -397,6 +421,8 @@ void ConnectionBar::setConnected(bool connected)
     for (QWidget *w : std::initializer_list<QWidget *>{m_kindCombo, m_networkPage, m_serialPage, m_tlsFiles, m_timeoutSpin, m_recentButton})
         w->setEnabled(!connected);
     m_listenOnlyCheck->setEnabled(!connected && canListen(kind()));
+    m_tapCheck->setEnabled(!connected);
+    m_tapFields->setRunning(connected && isTap());
 }
 
 bool ConnectionBar::isListenOnly() const
@@ -407,6 +433,28 @@ bool ConnectionBar::isListenOnly() const
 void ConnectionBar::setListenOnly(bool listenOnly)
 {
     m_listenOnlyCheck->setChecked(listenOnly);
+}
+
+bool ConnectionBar::isTap() const
+{
+    return m_tapCheck->isChecked();
+}
+
+void ConnectionBar::setTap(bool tap)
+{
+    m_tapCheck->setChecked(tap);
+}
+
+std::optional<TapSetup> ConnectionBar::tapSetup()
+{
+    const std::optional<LinkUrl> target = url();
+    if (!target)
+        return std::nullopt;
+    QString error;
+    std::optional<TapSetup> setup = m_tapFields->setup(*target, timeoutMs(), &error);
+    if (!setup)
+        showError(error);
+    return setup;
 }
 
 void ConnectionBar::showError(const QString &message)
@@ -436,6 +484,13 @@ void ConnectionBar::onConnectClicked()
 {
     if (m_connected) {
         Q_EMIT disconnectRequested();
+        return;
+    }
+    if (isTap()) {
+        if (const std::optional<TapSetup> setup = tapSetup()) {
+            m_tapFields->remember();
+            Q_EMIT tapRequested(*setup);
+        }
         return;
     }
     if (const std::optional<LinkUrl> target = url()) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "tapsetup.h"
+
 #include "transport/linkurl.h"
 
 #include <QtWidgets/QWidget>
@@ -16,6 +18,7 @@ class QToolButton;
 
 namespace mbscope {
 
+class TapFields;
 class TlsFilesField;
 
 // Where to talk to: the link type, then host and port (network links) or a serial port with its
@@ -62,6 +65,15 @@ public:
     // ascii-tcp); false for the others whatever the box says.
     [[nodiscard]] bool isListenOnly() const;
     void setListenOnly(bool listenOnly);
+    // Tap (the inline tap): the next Connect starts a tap instead, masters connecting to the Tap
+    // row's URLs and their requests forwarded to the bar's target (and the row's routes).
+    // Listen and Tap exclude each other.
+    [[nodiscard]] bool isTap() const;
+    void setTap(bool tap);
+    // The tap the fields make (TapFields::setup with the bar's target and timeout); nullopt with
+    // errorText() set.
+    [[nodiscard]] std::optional<TapSetup> tapSetup();
+    [[nodiscard]] TapFields *tapFields() const { return m_tapFields; }
 
     // The controller's view: connected (fields locked, button says Disconnect) or not.
     void setConnected(bool connected);
@@ -85,6 +97,8 @@ Q_SIGNALS:
     void disconnectRequested();
     // Connect with Listen only ticked: listen to the bus at url, never send.
     void listenRequested(const mbscope::LinkUrl &url);
+    // Connect with Tap ticked: start the inline tap.
+    void tapRequested(const mbscope::TapSetup &setup);
     void framingChanged(mbscope::Framing framing);
     void unitIdChanged(int unit);
     // Any field changed (the state may differ: a session compares).
@@ -111,6 +125,8 @@ private:
     QSpinBox *m_unitSpin = nullptr;
     QSpinBox *m_timeoutSpin = nullptr;
     QCheckBox *m_listenOnlyCheck = nullptr;
+    QCheckBox *m_tapCheck = nullptr;
+    TapFields *m_tapFields = nullptr; // the Tap row: shown while Tap is ticked
     QPushButton *m_connectButton = nullptr;
     QToolButton *m_recentButton = nullptr;
     QLabel *m_errorLabel = nullptr;

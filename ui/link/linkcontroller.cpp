@@ -1,13 +1,16 @@
 #include "linkcontroller.h"
 
 #include "buslistener.h"
+#include "taprunner.h"
 
 #include "engine/pollsettings.h"
 #include "exchange/requestitem.h"
 #include "exchange/statistics.h"
 #include "engine/transactionengine.h"
+#include "traffic/trafficmetadata.h"
 
 #include <QtCore/QFile>
+#include <QtCore/QJsonArray>
 #include <QtCore/QFileInfo>
 #include <QtCore/QSaveFile>
 
@@ -45,6 +48,8 @@ LinkController::LinkController(QObject *parent)
     qRegisterMetaType<QList<mbscope::TrafficFrame>>();
     qRegisterMetaType<mbscope::EngineProgress>();
     qRegisterMetaType<mbscope::PollReport>();
+    qRegisterMetaType<mbscope::TapCounters>();
+    qRegisterMetaType<mbscope::TapSetup>();
 }
 
 LinkController::~LinkController()
@@ -56,6 +61,10 @@ void LinkController::dropEngine()
 {
     m_engine.reset();
     m_listener.reset();
+    if (m_tap) {
+        m_tap->stop(); // its last frames reach the list before the recording closes
+        m_tap.reset();
+    }
     if (m_capture) {
         Q_EMIT trafficLogChanged(nullptr); // the watches and scans let go first
         m_capture->finish();
@@ -110,7 +119,7 @@ QString LinkController::recordingPath() const
 bool LinkController::keepRecordingAt(const QString &path, bool *copied, QString *error)
 {
     *copied = false;
-    if (!m_capture || !m_engine) {
+    if (!m_capture || (!m_engine && !m_tap)) {
         *error = tr("nothing is being recorded");
         return false;
     }
@@ -122,7 +131,10 @@ bool LinkController::keepRecordingAt(const QString &path, bool *copied, QString 
         return false;
     // Another file system: the frames so far reach the file, then a copy of it goes to path
     // (written beside it and renamed into place, so path is never half a journal).
-    m_engine->flushTrafficLog();
+    if (m_engine)
+        m_engine->flushTrafficLog();
+    else
+        m_capture->log()->flush(); // the tap's thread writes into it: flush() takes the log's lock
     QFile source(m_capture->currentPath());
     QSaveFile target(path);
     if (!source.open(QIODevice::ReadOnly) || !target.open(QIODevice::WriteOnly)) {
@@ -224,6 +236,92 @@ void LinkController::listenTo(const LinkUrl &url)
     m_listener->start();
 }
 
+void LinkController::tapTo(const TapSetup &setup)
+{
+    if (m_polling)
+        stopPoll();
+    dropEngine();
+    restartCounters();
+    // The target the bar shows: the route for every unit the others leave.
+    m_url = setup.settings.routes.isEmpty() ? LinkUrl{} : setup.settings.routes.constLast().target;
+    m_recordingProblem.clear();
+    m_tap = std::make_unique<TapRunner>(setup);
+    QString error;
+    if (!m_tap->listen(&error)) {
+        m_tap.reset();
+        setState(State::Disconnected, tr("Not connected"));
+        Q_EMIT tapFailed(error);
+        return;
+    }
+    TrafficLog *log = nullptr;
+    if (m_recordingEnabled) {
+        // The journal says what the tap did, as `mbscope tap --record` does: it served masters
+        // where it listens (role server: analyze reads that leg as the masters saw it), and
+        // where each unit's requests went.
+        const QStringList endpoints = m_tap->endpoints();
+        const auto describe = [&setup, &endpoints](TrafficMetadata &metadata) {
+            metadata.role = TrafficMetadata::Role::Server;
+            metadata.listen = endpoints;
+            QStringList routes;
+            for (const TapRoute &route : setup.settings.routes)
+                routes.append(route.describe());
+            metadata.settings.insert(QStringLiteral("routes"), QJsonArray::fromStringList(routes));
+            metadata.settings.insert(QStringLiteral("tap"), QJsonArray::fromStringList(setup.arguments()));
+            metadata.target = setup.settings.routes.size() == 1 ? setup.settings.routes.constFirst().target.toString() : QString();
+        };
+        m_capture = std::make_unique<RollingCapture>(m_captures, m_capturePolicy);
+        if (m_capture->start(QStringLiteral("tap ") + endpoints.value(0), &m_recordingProblem, describe))
+            log = m_capture->log();
+        else
+            m_capture.reset();
+        Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
+    }
+    connect(m_tap.get(), &TapRunner::framesLogged, this, &LinkController::onTapFrames);
+    connect(m_tap.get(), &TapRunner::countersChanged, this, &LinkController::tapCountersChanged);
+    connect(m_tap.get(), &TapRunner::targetOpened, this, [this] { setState(State::Connected, tapDescription()); });
+    connect(m_tap.get(), &TapRunner::targetMessage, this, [this](const QString &target, const QString &message) {
+        setState(State::Failed, tr("%1: %2").arg(target, message));
+    });
+    m_tap->start(log);
+    setState(State::Connected, tapDescription());
+}
+
+QString LinkController::tapDescription() const
+{
+    if (!m_tap)
+        return {};
+    QStringList targets;
+    for (const TapRoute &route : m_tap->setup().settings.routes)
+        targets.append(route.target.toString());
+    targets.removeDuplicates();
+    QString text = tr("tap: masters at %1 \u2192 %2").arg(m_tap->endpoints().join(QStringLiteral(", ")),
+                                                          targets.join(QStringLiteral(", ")));
+    if (m_tap->setup().settings.readOnly)
+        text += tr(" (read-only)");
+    return text;
+}
+
+void LinkController::onTapFrames(const QList<TrafficFrame> &frames, const QStringList &links)
+{
+    // The status bar's TX and RX are the device leg's: what the tap sent its targets and got back.
+    EngineCounters add;
+    for (const TrafficFrame &frame : frames) {
+        if (frame.link < links.size() && m_tap && m_tap->isMasterLink(links.at(frame.link)))
+            continue;
+        if (frame.direction == TrafficDirection::Out) {
+            ++add.requestsSent;
+            add.bytesOut += quint64(frame.bytes.size());
+        } else {
+            if (!frame.bytes.isEmpty())
+                ++add.transactions;
+            add.bytesIn += quint64(frame.bytes.size());
+        }
+    }
+    m_counters = m_counters + add;
+    Q_EMIT countersChanged(m_counters);
+    Q_EMIT tapFramesLogged(frames, links);
+}
+
 void LinkController::onObserved(const QList<Transaction> &transactions)
 {
     if (transactions.isEmpty())
@@ -236,7 +334,7 @@ void LinkController::onObserved(const QList<Transaction> &transactions)
 
 void LinkController::disconnectLink()
 {
-    if (m_listener) {
+    if (m_listener || m_tap) {
         m_countersBefore = m_counters;
         dropEngine();
         setState(State::Disconnected, tr("Not connected"));

@@ -4,6 +4,7 @@
 #include "engine/pollreport.h"
 #include "engine/transactionengine.h"
 #include "exchange/trafficentry.h"
+#include "tapsetup.h"
 #include "exchange/transaction.h"
 #include "traffic/capturedirectory.h"
 #include "traffic/rollingcapture.h"
@@ -18,6 +19,7 @@
 namespace mbscope {
 
 class BusListener;
+class TapRunner;
 
 // Between the window's widgets and the TransactionEngine: owns the engine (and with it the engine
 // thread), turns "send these bytes" and "poll these bytes" into RequestItems for the connected
@@ -52,6 +54,15 @@ public:
     // link at once, so a stand-in link (a test's) must be named before it.
     void setLinkFactory(TransactionEngine::LinkFactory factory) { m_linkFactory = std::move(factory); }
     [[nodiscard]] bool isListening() const { return m_listener != nullptr; }
+    // The inline tap (the bar's Tap): no engine; masters connect to setup.listen and their
+    // requests go on to the routes' targets (TapRunner), both legs logged into this connection's
+    // recording, which nothing else writes into meanwhile (trafficLog() is nullptr: the watches
+    // and scans go unrecorded while the tap runs). Connected once every URL listens; a URL that
+    // cannot listen leaves the controller Disconnected and says why (tapFailed). send() and
+    // startPoll() refuse while tapping.
+    void tapTo(const TapSetup &setup);
+    [[nodiscard]] bool isTapping() const { return m_tap != nullptr; }
+    [[nodiscard]] TapRunner *tap() const { return m_tap.get(); }
     void disconnectLink();
     [[nodiscard]] State state() const { return m_state; }
     [[nodiscard]] bool isConnected() const { return m_state != State::Disconnected; }
@@ -93,7 +104,7 @@ public:
     bool keepRecordingAt(const QString &path, bool *copied, QString *error);
     // The log of the journal being written (shared: the watches' and scans' engines write into it
     // too), or nullptr. trafficLogChanged() says when it comes and goes.
-    [[nodiscard]] TrafficLog *trafficLog() const { return m_capture ? m_capture->log() : nullptr; }
+    [[nodiscard]] TrafficLog *trafficLog() const { return m_capture && !m_tap ? m_capture->log() : nullptr; }
 
     // One line for the status bar: "Poll finished: 20 transactions, 20 ok, 0 failed; latency min
     // 1.21 ms, mean 4.05 ms, max 11.80 ms".
@@ -119,6 +130,12 @@ Q_SIGNALS:
     // connection's recording started, nullptr before it finishes. Connect directly: a receiver
     // lets go of the old log (its engines' setTrafficLog(nullptr)) before this returns.
     void trafficLogChanged(mbscope::TrafficLog *log);
+    // The tap's frames of both legs, in batches (TapRunner::framesLogged): each frame's link an
+    // index into links.
+    void tapFramesLogged(const QList<mbscope::TrafficFrame> &frames, const QStringList &links);
+    void tapCountersChanged(const mbscope::TapCounters &counters, int waiting);
+    // The tap could not start (a URL that cannot listen): the controller is Disconnected.
+    void tapFailed(const QString &message);
 
 private:
     // bytes for the link, numbered by the engine.
@@ -131,11 +148,14 @@ private:
     void resetEngine();
     void restartCounters();
     void onObserved(const QList<Transaction> &transactions);
+    void onTapFrames(const QList<TrafficFrame> &frames, const QStringList &links);
+    [[nodiscard]] QString tapDescription() const;
     // The engine (or the listener) goes first (it writes into the recording's log), then the recording.
     void dropEngine();
 
     std::unique_ptr<TransactionEngine> m_engine;
     std::unique_ptr<BusListener> m_listener;
+    std::unique_ptr<TapRunner> m_tap;
     TransactionEngine::LinkFactory m_linkFactory;
     LinkUrl m_url;
     State m_state = State::Disconnected;

@@ -23,6 +23,7 @@
 #include "sim/simulatorpanel.h"
 #include "sessiontools.h"
 #include "simulatornotice.h"
+#include "tapmode.h"
 #include "toolsmenu.h"
 #include "traffic/trafficmodel.h"
 #include "traffic/trafficmonitor.h"
@@ -67,6 +68,7 @@ MainWindow::MainWindow(QWidget *parent)
     buildDocks();
     connectPanels();
     connectDocks();
+    new TapMode(this, m_connectionBar, m_controller, m_traffic, m_composer, statusBar()); // the bar's Tap
     m_session = new SessionController(this, m_connectionBar, m_composer);
     connect(m_session, &SessionController::titleChanged, this, &QMainWindow::setWindowTitle);
     connect(m_session, &SessionController::targetApplied, this, &MainWindow::useSessionTarget);

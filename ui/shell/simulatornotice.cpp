@@ -1,6 +1,7 @@
 #include "simulatornotice.h"
 
 #include "common/noticebanner.h"
+#include "link/taprunner.h"
 #include "sim/embeddedsimulator.h"
 
 namespace mbscope {
@@ -31,6 +32,18 @@ void SimulatorNotice::follow(LinkController::State state)
     // Connect, it still said "Disconnected ... press Connect" beside "listening only").
     const LinkUrl simulator = m_simulator->started().url;
     const QString where = simulator.toString().toHtmlEscaped();
+    if (m_link->isTapping() && state != LinkController::State::Disconnected) {
+        // A tap in front of the simulator (the guide's first tap): where the masters go.
+        if (m_link->url().port != simulator.port || m_link->url().kind != simulator.kind) {
+            m_banner->hide();
+            return;
+        }
+        m_banner->showNotice(tr("<b>Tap</b> in front of the built-in simulator on <code>%1</code>: point a master "
+                                "(mbpoll, a PLC, <code>mbscope read</code>) at <code>%2</code>; each request and its "
+                                "answer are listed twice in Traffic, the master's and the device's leg.")
+                                 .arg(where, m_link->tap()->endpoints().join(QStringLiteral(", ")).toHtmlEscaped()));
+        return;
+    }
     if (state == LinkController::State::Disconnected || state == LinkController::State::Failed) {
         m_banner->showNotice(tr("Disconnected. The built-in simulator still answers on <code>%1</code>: press "
                                 "<b>Connect</b> to use it again, or choose a real device's link type, host "

@@ -237,6 +237,21 @@ void TrafficModel::appendLinkFrames(const QList<TrafficFrame> &frames, const QSt
     appended();
 }
 
+void TrafficModel::appendNamedFrames(const QList<TrafficFrame> &frames, const QStringList &links)
+{
+    if (frames.isEmpty())
+        return;
+    std::vector<quint16> ids;
+    ids.reserve(std::size_t(links.size()));
+    for (const QString &name : links)
+        ids.push_back(m_links.idOf(name));
+    for (const TrafficFrame &f : frames) {
+        const quint16 id = f.link < ids.size() ? ids[f.link] : m_links.idOf(QString());
+        keep(f.tNs, f.direction, id, f.verdict, f.transactionId, f.bytes);
+    }
+    appended();
+}
+
 // A transaction becomes the frames its engine's traffic log holds: the request out (when its last
 // byte was written) and the answer in (when its first byte came), or an empty frame in carrying
 // the verdict when nothing came (timeout, link error, broadcast). A late answer's request is

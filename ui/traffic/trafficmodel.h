@@ -131,6 +131,9 @@ public Q_SLOTS:
     void appendRecordedTransactions(const QList<mbscope::Transaction> &transactions);
     // Frames of one link named by its URL (TransactionEngine::framesLogged).
     void appendLinkFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
+    // Frames of several links in one batch, each frame's link an index into links (the names of
+    // the log they come from: the window's tap, TapRunner::framesLogged), kept in their order.
+    void appendNamedFrames(const QList<mbscope::TrafficFrame> &frames, const QStringList &links);
     void clear();
 
 Q_SIGNALS:

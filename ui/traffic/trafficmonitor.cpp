@@ -299,6 +299,11 @@ void TrafficMonitor::appendLinkFrames(const QList<TrafficFrame> &frames, const Q
     m_model->appendLinkFrames(frames, link);
 }
 
+void TrafficMonitor::appendNamedFrames(const QList<TrafficFrame> &frames, const QStringList &links)
+{
+    m_model->appendNamedFrames(frames, links);
+}
+
 bool TrafficMonitor::isPaused() const
 {
     return m_model->isPaused();

@@ -52,6 +52,7 @@ public Q_SLOTS:
     void appendTransactions(const QList<mbscope::Transaction> &transactions);
     void appendRecordedTransactions(const QList<mbscope::Transaction> &transactions);
     void appendLinkFrames(const QList<mbscope::TrafficFrame> &frames, const QString &link);
+    void appendNamedFrames(const QList<mbscope::TrafficFrame> &frames, const QStringList &links);
     void setPaused(bool paused);
     void clear();
     // Puts the cursor in the find field (Ctrl+F in the window).
