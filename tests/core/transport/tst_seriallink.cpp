@@ -5,6 +5,7 @@
 
 #include "linktesting.h"
 
+#include <QtCore/QDeadlineTimer>
 #include <QtCore/QFile>
 #include <QtCore/QFileInfo>
 #include <QtCore/QProcess>
@@ -13,6 +14,7 @@
 #include <QtTest/QtTest>
 
 #include <cerrno>
+#include <functional>
 #include <memory>
 #include <unistd.h>
 
@@ -55,6 +57,21 @@ public:
 private:
     QList<RtsCall> *m_calls;
 };
+
+// Runs the event loop until pred holds, as an application's loop runs: QTRY_* waits with
+// QTest::qWait, which sleeps up to 10 ms between turns and so makes every timer late.
+bool spinUntil(const std::function<bool()> &pred, int timeoutMs = kWaitMs)
+{
+    QDeadlineTimer deadline(timeoutMs);
+    QTimer wake; // wakes the wait now and then to look at the deadline
+    wake.start(100);
+    while (!pred()) {
+        if (deadline.hasExpired())
+            return false;
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+    }
+    return true;
+}
 
 } // namespace
 
@@ -383,21 +400,22 @@ private slots:
         QCOMPARE(calls.size(), 2);
         QCOMPARE(calls.at(1).asserted, sendLevel);
         QVERIFY(calls.at(1).ns >= before);
-        QTRY_COMPARE_WITH_TIMEOUT(ra.writtenNs.size(), 1, kWaitMs);
+        QVERIFY(spinUntil([&] { return ra.writtenNs.size() == 1; }));
         // The bytes went rts_before after RTS rose: they cannot have left before that plus their line time.
         const qint64 character = SerialLink::lineCharacterNs(a->url().serial);
         QVERIFY(ra.writtenNs.at(0) >= calls.at(1).ns + beforeNs + 8 * character);
         QVERIFY(a->write(QByteArray::fromHex("01060001000319CB")));
         if (calls.size() == 2) { // RTS still up: no second rise, no rts_before
-            QTRY_COMPARE_WITH_TIMEOUT(ra.writtenNs.size(), 2, kWaitMs);
-            QTRY_COMPARE_WITH_TIMEOUT(calls.size(), 3, kWaitMs);
+            QVERIFY(spinUntil([&] { return ra.writtenNs.size() == 2 && calls.size() == 3; }));
         } else { // the first write had drained and RTS had gone back already: up again for the second
             QCOMPARE(calls.size(), 4);
-            QTRY_COMPARE_WITH_TIMEOUT(ra.writtenNs.size(), 2, kWaitMs);
-            QTRY_COMPARE_WITH_TIMEOUT(calls.size(), 5, kWaitMs);
+            QVERIFY(spinUntil([&] { return ra.writtenNs.size() == 2 && calls.size() == 5; }));
         }
         QCOMPARE(calls.last().asserted, !sendLevel);
         QVERIFY(calls.last().ns >= ra.writtenNs.last() + afterNs);
+        // For the record (not asserted: timers): how late RTS went back after the time it was due.
+        qInfo("RTS back %.3f ms after the last byte's computed line end + rts_after (timer grain: 1 ms)",
+              double(calls.last().ns - ra.writtenNs.last() - afterNs) / 1e6);
         QTRY_COMPARE_WITH_TIMEOUT(rb.received.size(), 16, kWaitMs);
         // Closing leaves RTS at rest: nothing more to switch.
         a->close();
