@@ -104,6 +104,10 @@ bool ConformanceJudge::silence(CheckResult &result, const ConformanceExchange &e
 bool ConformanceJudge::silenceOrException(CheckResult &result, const ConformanceExchange &e, const QString &requirement)
 {
     record(result, e);
+    if (e.linkFailed() && e.silent()) {
+        result.pass(QStringLiteral("no answer: the device closed the connection (%1)").arg(e.transaction.problem));
+        return true;
+    }
     if (e.linkFailed()) {
         result.verdict = CheckVerdict::Error;
         result.sentence = QStringLiteral("the link failed: %1").arg(e.transaction.problem);

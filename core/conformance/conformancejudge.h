@@ -27,7 +27,7 @@ public:
     // cannot frame, after which a server may drop the connection).
     static bool silence(CheckResult &result, const ConformanceExchange &e, const QString &requirement,
                         const QByteArray &extra = {}, bool closing = false);
-    // Passes on silence or on a well-formed exception response.
+    // Passes on silence (a connection closed without an answer too) or on a well-formed exception response.
     static bool silenceOrException(CheckResult &result, const ConformanceExchange &e, const QString &requirement);
 
     // "01 03 00 00 00 01 84 0A"
