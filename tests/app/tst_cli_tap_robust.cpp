@@ -6,10 +6,13 @@
 // answer checked); the devices are `mbscope simulate --profile conformance` (unit 1, holding
 // register a = 1000 + 3a), with fault rules where a device must misbehave.
 #include "clitest.h"
+#include "pacedline.h"
 #include "procstat.h"
 
 #include "protocol/adubuilder.h"
+#include "protocol/rtuframer.h"
 #include "transport/linkurl.h"
+#include "transport/seriallink.h"
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QFile>
@@ -196,6 +199,8 @@ private Q_SLOTS:
     void manyMastersAtOnce();
     void soak_data();
     void soak();
+    void serialLineGap_data();
+    void serialLineGap();
 
 private:
     bool writeFaults(const QString &name, const QByteArray &json, QString *path);
@@ -543,6 +548,60 @@ void TestCliTapRobust::soak()
     // Flat: no memory kept per request (a leak of even 16 bytes a request is hundreds of KiB here).
     QVERIFY2(atWarmup > 0 && peakAfter - atWarmup <= 1024,
              qPrintable(QStringLiteral("RSS %1 KiB after the warm-up, %2 KiB at most after it").arg(atWarmup).arg(peakAfter)));
+}
+
+void TestCliTapRobust::serialLineGap_data()
+{
+    QTest::addColumn<int>("baud");
+    QTest::addColumn<bool>("paced"); // each character takes its time on the line (PacedLine), or none (a bare pty pair)
+    QTest::newRow("9600 baud, paced line") << 9600 << true;
+    QTest::newRow("19200 baud, paced line") << 19200 << true;
+    QTest::newRow("115200 baud, paced line") << 115200 << true;
+    QTest::newRow("115200 baud, bare pty pair") << 115200 << false;
+}
+
+void TestCliTapRobust::serialLineGap()
+{
+    // Several masters at once keep the tap's queue for the line full: the next request is always
+    // waiting when an answer ends. Each must still wait t3.5 of silence (Serial Line V1.02,
+    // 2.5.1.1), or a device that frames by silence takes the two for one frame.
+    QFETCH(int, baud);
+    QFETCH(bool, paced);
+    QString why;
+    if (!testpeers::libmodbusPeersAvailable(&why))
+        QSKIP(qPrintable(why));
+    const LinkUrl::Result line = LinkUrl::parse(QStringLiteral("rtu:///dev/null?baud=%1").arg(baud));
+    QVERIFY(line.url);
+    testpeers::PacedLine pair;
+    QString error;
+    QVERIFY2(pair.start(paced ? SerialLink::lineCharacterNs(line.url->serial) : 0, &error), qPrintable(error));
+    const QString options = QStringLiteral("?baud=%1").arg(baud);
+    Background device;
+    QVERIFY2(device.start(simulateArgs(QStringLiteral("rtu://") + pair.deviceEnd() + options), &error), qPrintable(error));
+    Background tap;
+    QVERIFY2(tap.start(tapArgs(QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("rtu://") + pair.masterEnd() + options,
+                               {QStringLiteral("--quiet")}),
+                       &error),
+             qPrintable(error));
+    QProcess clients;
+    clients.start(testpeers::libmodbusManyClientsPath(), {QStringLiteral("127.0.0.1"), QString::number(portOf(tap.url())),
+                                                          QStringLiteral("--clients"), QStringLiteral("3"), QStringLiteral("--requests"),
+                                                          QStringLiteral("12"), QStringLiteral("--check")});
+    QVERIFY(clients.waitForFinished(120000));
+    const QString said = QString::fromUtf8(clients.readAllStandardOutput() + clients.readAllStandardError());
+    QVERIFY2(clients.exitCode() == 0 && said.contains(QLatin1String("transactions 36 errors 0")), qPrintable(said));
+    const testpeers::PacedLine::Timing timing = pair.take();
+    QString out;
+    QVERIFY2(stopsCleanly(tap, &out), qPrintable(out));
+    // Every request but the first followed an answer; the relay measures each silence as no
+    // shorter than the tap kept it.
+    QCOMPARE(timing.masterGapsNs.size(), size_t(35));
+    const qint64 t35 = RtuFramer::t35Ns(baud);
+    const qint64 shortest = *std::min_element(timing.masterGapsNs.begin(), timing.masterGapsNs.end());
+    QVERIFY2(shortest >= t35, qPrintable(QStringLiteral("%1 us of silence before a request; t3.5 at %2 baud is %3 us")
+                                             .arg(double(shortest) / 1000, 0, 'f', 1)
+                                             .arg(baud)
+                                             .arg(double(t35) / 1000, 0, 'f', 1)));
 }
 
 QTEST_GUILESS_MAIN(TestCliTapRobust)
