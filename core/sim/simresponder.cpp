@@ -3,91 +3,19 @@
 #include "transport/monotonicclock.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <limits>
 
-#include <sys/timerfd.h>
-#include <unistd.h>
-
 namespace mbscope {
-
-namespace {
-
-// How early the timer wakes the thread before an answer is due; the rest is spun on the clock. A
-// thread asleep until the due time itself starts running when the scheduler gets to it: tens of
-// microseconds later on an idle machine, a few hundred on a loaded one (measured: 134 us late at
-// the median with two compilers on both cores). Spinning costs at most this much CPU per answer.
-constexpr qint64 kEarlyWakeNs = 200'000;
-
-// Spins until the monotonic clock reaches dueNs; returns the time then.
-qint64 spinUntil(qint64 dueNs)
-{
-    qint64 now = monotonicNowNs();
-    while (now < dueNs)
-        now = monotonicNowNs();
-    return now;
-}
-
-int makeTimerFd()
-{
-    const int fd = ::timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
-    if (fd < 0)
-        qFatal("mbscope: the simulator cannot make a timerfd (errno %d)", errno);
-    return fd;
-}
-
-} // namespace
 
 SimResponder::SimResponder(bool ordered, QObject *parent)
     : QObject(parent)
     , m_ordered(ordered)
+    , m_timer(this)
 {
+    connect(&m_timer, &DueTimer::timeout, this, &SimResponder::run);
 }
 
-SimResponder::~SimResponder()
-{
-    if (m_notifier)
-        m_notifier->setEnabled(false);
-    if (m_timerFd >= 0)
-        ::close(m_timerFd);
-}
-
-void SimResponder::armAt(qint64 dueNs)
-{
-    // Answers with nothing to wait for leave inside enqueue(): a timer that was never armed, or is
-    // disarmed already, costs no system call (one timerfd_settime per request was a sixth of the
-    // simulator's system calls under 50 clients, issue 15); the timerfd and its notifier are made
-    // on the first wait, so a connection that never waits adds no descriptor to the poll set.
-    if (dueNs == 0 && !m_armed)
-        return;
-    if (m_timerFd < 0) {
-        m_timerFd = makeTimerFd();
-        m_notifier = std::make_unique<QSocketNotifier>(m_timerFd, QSocketNotifier::Read, this);
-        connect(m_notifier.get(), &QSocketNotifier::activated, this, &SimResponder::onTimer);
-    }
-    m_armed = dueNs != 0;
-    // An absolute time: the wait does not grow by the time spent arming it. A due time in the
-    // past (or now) is 1 ns, which has passed: the timer fires at once. 0 disarms.
-    itimerspec spec{};
-    if (dueNs != 0) {
-        const qint64 at = std::max<qint64>(dueNs, 1);
-        spec.it_value.tv_sec = time_t(at / 1'000'000'000);
-        spec.it_value.tv_nsec = long(at % 1'000'000'000);
-    }
-    if (::timerfd_settime(m_timerFd, dueNs != 0 ? TFD_TIMER_ABSTIME : 0, &spec, nullptr) != 0)
-        qWarning("mbscope: the simulator's answer timer: timerfd_settime failed (errno %d)", errno);
-}
-
-void SimResponder::onTimer()
-{
-    quint64 expirations = 0;
-    ssize_t n = 0;
-    while ((n = ::read(m_timerFd, &expirations, sizeof expirations)) < 0 && errno == EINTR) {
-    }
-    if (n > 0)
-        m_armed = false; // a one-shot timer that fired is disarmed until armed again
-    run();
-}
+SimResponder::~SimResponder() = default;
 
 void SimResponder::enqueue(const FaultPlan &plan, qint64 requestNs, Writer writer)
 {
@@ -114,7 +42,7 @@ void SimResponder::enqueue(const FaultPlan &plan, qint64 requestNs, Writer write
 void SimResponder::clear()
 {
     m_pending.clear();
-    armAt(0);
+    m_timer.stop();
 }
 
 bool SimResponder::advance(int index, qint64 nowNs, bool *closing)
@@ -155,8 +83,8 @@ void SimResponder::run()
     m_running = true;
     bool closing = false;
     qint64 now = monotonicNowNs();
-    if (const qint64 due = nextDueNs(); due > now && due - now <= kEarlyWakeNs)
-        now = spinUntil(due);
+    if (const qint64 due = nextDueNs(); due > now && due - now <= DueTimer::kEarlyWakeNs)
+        now = DueTimer::spinUntil(due);
     for (int i = 0; i < m_pending.size() && !closing;) {
         if (advance(i, now, &closing)) {
             m_pending.removeAt(i);
@@ -188,11 +116,13 @@ qint64 SimResponder::nextDueNs() const
 
 void SimResponder::arm()
 {
-    if (m_pending.isEmpty()) {
-        armAt(0);
-        return;
-    }
-    armAt(std::max<qint64>(1, nextDueNs() - kEarlyWakeNs));
+    // Answers with nothing to wait for leave inside enqueue(): a timer never armed, or disarmed
+    // already, costs no system call (one timerfd_settime per request was a sixth of the
+    // simulator's system calls under 50 clients, issue 15).
+    if (m_pending.isEmpty())
+        m_timer.stop();
+    else
+        m_timer.start(nextDueNs());
 }
 
 } // namespace mbscope

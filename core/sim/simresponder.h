@@ -1,13 +1,12 @@
 #pragma once
 
 #include "sim/faultplan.h"
+#include "time/duetimer.h"
 
 #include <QtCore/QList>
 #include <QtCore/QObject>
-#include <QtCore/QSocketNotifier>
 
 #include <functional>
-#include <memory>
 
 namespace mbscope {
 
@@ -15,11 +14,9 @@ namespace mbscope {
 // never blocking the event loop: each chunk is written delayNs after the previous one (the first
 // after the request arrived); closeBefore and closeAfter ask the owner to close the output.
 //
-// The timer is a timerfd armed at the due time on CLOCK_MONOTONIC (the clock of monotonicNowNs)
-// with nanosecond resolution, watched by a socket notifier: a QTimer counts whole milliseconds,
-// so answers left on millisecond ticks and a normal 4 +/- 1.5 ms response time came out as a
-// comb at 0.5 ms bins (issue 19). The timer fires 200 us before the due time and the thread
-// spins the rest, so the scheduler's wake-up latency does not make the answer late. Linux (timerfd).
+// The timer is a DueTimer (core/time): a timerfd armed at the due time on CLOCK_MONOTONIC (the
+// clock of monotonicNowNs), not a QTimer's whole milliseconds (issue 19); it wakes 200 us early
+// and spins the rest, so the scheduler's wake-up latency does not make the answer late.
 //
 // Ordered (streams, serial lines): plans run one after the other in arrival order, as a device
 // that answers one request at a time; a plan's first delay runs from its request's arrival but
@@ -57,18 +54,14 @@ private:
     };
     void run();
     void arm();
-    void armAt(qint64 dueNs); // 0: disarm
     // The earliest due time of what is pending (ordered: of the first plan); max when none.
     [[nodiscard]] qint64 nextDueNs() const;
-    void onTimer();
     // Writes what is due of m_pending[index]; returns true when the plan is finished.
     bool advance(int index, qint64 nowNs, bool *closing);
 
     bool m_ordered;
     QList<Pending> m_pending;
-    int m_timerFd = -1;                          // made on the first wait
-    std::unique_ptr<QSocketNotifier> m_notifier; // on m_timerFd
-    bool m_armed = false;
+    DueTimer m_timer;
     bool m_running = false;
 };
 

@@ -89,6 +89,8 @@ public:
         return false;
     }
     [[nodiscard]] QString url() const { return m_url; }
+    [[nodiscard]] qint64 pid() const { return m_process ? m_process->processId() : 0; }
+    [[nodiscard]] bool isRunning() const { return m_process && m_process->state() == QProcess::Running; }
     // Standard output and error once stopped.
     QByteArray stop(QByteArray *err = nullptr)
     {

@@ -22,22 +22,20 @@
 // --mbscope runs another build of mbscope as the simulator; --compare adds a row "simulate
 // (compared)" served by another build (an older one: before and after figures in one run).
 // scripts/bench-simthroughput.sh builds Release and runs it; docs/benchmarks.md has figures.
+#include "benchprocess.h"
+
 #include <QtCore/QCoreApplication>
-#include <QtCore/QDir>
-#include <QtCore/QElapsedTimer>
-#include <QtCore/QFile>
-#include <QtCore/QProcess>
 #include <QtCore/QRegularExpression>
 #include <QtCore/QStringList>
 #include <QtCore/QTemporaryDir>
 
-#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <vector>
 
-#include <sched.h>
 #include <unistd.h>
+
+using namespace mbscope::bench;
 
 namespace {
 
@@ -102,128 +100,31 @@ bool parse(const QStringList &args, Options *o)
            && (o->libmodbus || o->simulate || o->record || !o->compare.isEmpty());
 }
 
-// A child process pinned to one CPU from before exec (the affinity taskset would set).
-void pinChild(QProcess &process, bool pin, int cpu)
-{
-    if (!pin)
-        return;
-    process.setChildProcessModifier([cpu] {
-        cpu_set_t set;
-        CPU_ZERO(&set);
-        CPU_SET(cpu, &set);
-        sched_setaffinity(0, sizeof set, &set);
-    });
-}
-
-// CPU seconds (user + system) a process has used so far, from /proc/PID/stat; -1 when unreadable.
-double cpuSeconds(qint64 pid)
-{
-    QFile file(QStringLiteral("/proc/%1/stat").arg(pid));
-    if (!file.open(QIODevice::ReadOnly))
-        return -1;
-    const QByteArray stat = file.readAll();
-    // proc(5): fields after the command's closing parenthesis, utime and stime are 14 and 15.
-    const QList<QByteArray> fields = stat.mid(stat.lastIndexOf(')') + 2).split(' ');
-    if (fields.size() < 13)
-        return -1;
-    const double ticks = double(sysconf(_SC_CLK_TCK));
-    return (fields.at(11).toDouble() + fields.at(12).toDouble()) / ticks;
-}
-
-// A server under test: started once, its port read from its first lines, stopped at the end.
-struct Server {
-    QString name;
-    std::unique_ptr<QProcess> process;
-    quint16 port = 0;
+// A server under test, with its figures of each round.
+struct Server : BenchServer {
     std::vector<double> tps, p50, p99, cpu;
-
-    bool start(const QString &program, const QStringList &args, const QRegularExpression &ready, const Options &o)
-    {
-        process = std::make_unique<QProcess>();
-        process->setProcessChannelMode(QProcess::SeparateChannels);
-        pinChild(*process, o.pin, o.serverCpu);
-        process->start(program, args);
-        if (!process->waitForStarted(10000)) {
-            std::fprintf(stderr, "bench_simthroughput: cannot start %s: %s\n", qPrintable(program),
-                         qPrintable(process->errorString()));
-            return false;
-        }
-        QByteArray out;
-        QElapsedTimer timer;
-        timer.start();
-        while (timer.elapsed() < 20000) {
-            const QRegularExpressionMatch m = ready.match(QString::fromUtf8(out));
-            if (m.hasMatch()) {
-                port = quint16(m.captured(1).toUInt());
-                return true;
-            }
-            if (!process->waitForReadyRead(200) && process->state() == QProcess::NotRunning)
-                break;
-            out += process->readAllStandardOutput();
-        }
-        std::fprintf(stderr, "bench_simthroughput: %s did not say where it listens: %s%s\n", qPrintable(name), out.constData(),
-                     process->readAllStandardError().constData());
-        return false;
-    }
-
-    void stop()
-    {
-        if (!process)
-            return;
-        process->closeWriteChannel(); // libmodbus_server leaves when its stdin closes
-        process->terminate();          // mbscope simulate stops on SIGTERM
-        if (!process->waitForFinished(10000))
-            process->kill();
-        process->waitForFinished(2000);
-    }
 };
-
-double median(std::vector<double> v)
-{
-    if (v.empty())
-        return 0;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 == 1 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
-}
 
 // One round of the clients against one server; false on an error.
 bool runClients(Server &server, const Options &o, int round)
 {
-    QProcess client;
-    pinChild(client, o.pin, o.clientCpu);
-    const double cpuBefore = cpuSeconds(server.process->processId());
-    client.start(QStringLiteral(MBSCOPE_MANY_CLIENTS),
-                 {QStringLiteral("127.0.0.1"), QString::number(server.port), QStringLiteral("--clients"),
-                  QString::number(o.clients), QStringLiteral("--requests"), QString::number(o.requests),
-                  QStringLiteral("--check")});
-    if (!client.waitForFinished(600000)) {
-        client.kill();
-        client.waitForFinished(2000);
-        std::fprintf(stderr, "bench_simthroughput: the clients against %s did not finish\n", qPrintable(server.name));
+    const double cpuBefore = server.cpuSeconds();
+    const ClientFigures f = runManyClients(server.port, o.clients, {QStringLiteral("--requests"), QString::number(o.requests)},
+                                           o.pin, o.clientCpu);
+    const double cpu = server.cpuSeconds() - cpuBefore;
+    if (!f.ok) {
+        std::fprintf(stderr, "bench_simthroughput: the clients against %s said: %s\n", qPrintable(server.name), qPrintable(f.said));
         return false;
     }
-    const double cpu = cpuSeconds(server.process->processId()) - cpuBefore;
-    const QString line = QString::fromUtf8(client.readAllStandardOutput()).trimmed();
-    static const QRegularExpression figures(
-        QStringLiteral("transactions (\\d+) errors (\\d+) seconds \\S+ tps (\\S+) p50 (\\S+) p90 \\S+ p99 (\\S+)"));
-    const QRegularExpressionMatch m = figures.match(line);
-    if (!m.hasMatch()) {
-        std::fprintf(stderr, "bench_simthroughput: the clients against %s said: %s %s\n", qPrintable(server.name),
-                     qPrintable(line), client.readAllStandardError().constData());
-        return false;
-    }
-    const double tps = m.captured(3).toDouble();
-    server.tps.push_back(tps);
-    server.p50.push_back(m.captured(4).toDouble());
-    server.p99.push_back(m.captured(5).toDouble());
+    server.tps.push_back(f.tps);
+    server.p50.push_back(f.p50);
+    server.p99.push_back(f.p99);
     server.cpu.push_back(cpu);
-    const long long transactions = m.captured(1).toLongLong();
-    std::printf("round %d  %-20s %10.0f tx/s  p50 %7.1f us  p99 %8.1f us  server CPU %6.2f s (%5.1f us/tx)  errors %s\n",
-                round, qPrintable(server.name), tps, m.captured(4).toDouble(), m.captured(5).toDouble(), cpu,
-                transactions > 0 ? cpu * 1e6 / double(transactions) : 0.0, qPrintable(m.captured(2)));
+    std::printf("round %d  %-20s %10.0f tx/s  p50 %7.1f us  p99 %8.1f us  server CPU %6.2f s (%5.1f us/tx)  errors %lld\n",
+                round, qPrintable(server.name), f.tps, f.p50, f.p99, cpu,
+                f.transactions > 0 ? cpu * 1e6 / double(f.transactions) : 0.0, f.errors);
     std::fflush(stdout);
-    return m.captured(2) == QLatin1String("0") && client.exitCode() == 0;
+    return f.errors == 0 && f.said.isEmpty();
 }
 
 } // namespace
@@ -252,7 +153,7 @@ int main(int argc, char **argv)
     auto add = [&](const QString &name, const QString &program, const QStringList &args, const QRegularExpression &ready) {
         auto server = std::make_unique<Server>();
         server->name = name;
-        if (!server->start(program, args, ready, o))
+        if (!server->start(program, args, ready, o.pin, o.serverCpu))
             return false;
         servers.push_back(std::move(server));
         return true;

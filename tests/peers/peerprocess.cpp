@@ -39,6 +39,11 @@ QString libmodbusClientPath()
     return QStringLiteral(MBSCOPE_LIBMODBUS_CLIENT);
 }
 
+QString libmodbusManyClientsPath()
+{
+    return QStringLiteral(MBSCOPE_MANY_CLIENTS);
+}
+
 QString systemPython()
 {
     return QStringLiteral("/usr/bin/python3");

@@ -15,6 +15,8 @@ namespace mbscope::testpeers {
 [[nodiscard]] QString peersDir();
 [[nodiscard]] QString libmodbusServerPath();
 [[nodiscard]] QString libmodbusClientPath();
+// N libmodbus masters as threads (libmodbus_many_clients.c): one line of figures.
+[[nodiscard]] QString libmodbusManyClientsPath();
 // Debian's interpreter, which has python3-pymodbus (the python3 on PATH may be another one).
 [[nodiscard]] QString systemPython();
 
