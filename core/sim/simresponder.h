@@ -1,7 +1,7 @@
 #pragma once
 
 #include "sim/faultplan.h"
-#include "time/duetimer.h"
+#include "transport/duetimer.h"
 
 #include <QtCore/QList>
 #include <QtCore/QObject>
@@ -14,7 +14,7 @@ namespace mbscope {
 // never blocking the event loop: each chunk is written delayNs after the previous one (the first
 // after the request arrived); closeBefore and closeAfter ask the owner to close the output.
 //
-// The timer is a DueTimer (core/time): a timerfd armed at the due time on CLOCK_MONOTONIC (the
+// The timer is a DueTimer (core/transport): a timerfd armed at the due time on CLOCK_MONOTONIC (the
 // clock of monotonicNowNs), not a QTimer's whole milliseconds (issue 19); it wakes 200 us early
 // and spins the rest, so the scheduler's wake-up latency does not make the answer late.
 //

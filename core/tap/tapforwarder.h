@@ -5,7 +5,7 @@
 #include "engine/recordlistener.h"
 #include "exchange/requestitem.h"
 #include "sim/simremote.h"
-#include "time/duetimer.h"
+#include "transport/duetimer.h"
 
 #include <QtCore/QHash>
 #include <QtCore/QList>

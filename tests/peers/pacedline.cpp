@@ -26,6 +26,8 @@ qint64 nowNs()
     return qint64(t.tv_sec) * 1'000'000'000 + t.tv_nsec;
 }
 
+constexpr qint64 kEarlyWakeNs = 200'000;
+
 // What one end wrote (one read of its pty), passed on when its last character has crossed.
 struct Chunk {
     QByteArray bytes;
@@ -101,7 +103,9 @@ void PacedLine::run()
             if (!q.empty() && (nextDue == 0 || q.front().dueNs < nextDue))
                 nextDue = q.front().dueNs;
         }
-        const qint64 waitNs = nextDue == 0 ? 100'000'000 : std::max<qint64>(0, nextDue - nowNs());
+        // Woken 200 us early and spun to the due time, as the product's DueTimer does: the
+        // scheduler's wake-up latency would otherwise make every frame late.
+        const qint64 waitNs = nextDue == 0 ? 100'000'000 : std::max<qint64>(0, nextDue - kEarlyWakeNs - nowNs());
         const timespec timeout{time_t(waitNs / 1'000'000'000), long(waitNs % 1'000'000'000)};
         pollfd fds[3] = {{m_master[0], POLLIN, 0}, {m_master[1], POLLIN, 0}, {m_wake[0], POLLIN, 0}};
         if (::ppoll(fds, 3, &timeout, nullptr) < 0 && errno != EINTR)
@@ -122,6 +126,10 @@ void PacedLine::run()
             lastInNs[end] = in;
             lineFreeNs = std::max(lineFreeNs, in) + qint64(n) * m_characterNs;
             queue[end].push_back(Chunk{QByteArray(buffer, qsizetype(n)), lineFreeNs});
+        }
+        if (nextDue != 0 && nextDue - nowNs() <= kEarlyWakeNs) {
+            while (nowNs() < nextDue) {
+            }
         }
         for (int from = 0; from < 2; ++from) {
             std::deque<Chunk> &q = queue[from];

@@ -1,6 +1,6 @@
 // DueTimer: fires once, never before its due time on the monotonic clock (it spins the last
 // stretch), not at all once stopped, and only for the latest start().
-#include "time/duetimer.h"
+#include "transport/duetimer.h"
 #include "transport/monotonicclock.h"
 
 #include <QtTest/QtTest>

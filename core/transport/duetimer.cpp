@@ -1,6 +1,6 @@
 #include "duetimer.h"
 
-#include "transport/monotonicclock.h"
+#include "monotonicclock.h"
 
 #include <algorithm>
 #include <cerrno>
