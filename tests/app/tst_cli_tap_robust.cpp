@@ -152,8 +152,8 @@ struct TapCounts {
 TapCounts tapCounts(const QString &out)
 {
     TapCounts c;
-    static const QRegularExpression line(QStringLiteral("tap: (\\d+) requests, (\\d+) forwarded: (\\d+) answered, (\\d+) exceptions from "
-                                                        "devices, (\\d+) without answer, (\\d+) link errors"));
+    static const QRegularExpression line(QStringLiteral("tap: (\\d+) requests?, (\\d+) forwarded: (\\d+) answered, (\\d+) exceptions? from "
+                                                        "devices, (\\d+) without answer, (\\d+) link errors?"));
     static const QRegularExpression malformed(QStringLiteral("(\\d+) malformed;"));
     const QRegularExpressionMatch m = line.match(out);
     if (!m.hasMatch())
@@ -201,6 +201,8 @@ private Q_SLOTS:
     void soak();
     void serialLineGap_data();
     void serialLineGap();
+    void pollKeepsTheLineGap_data();
+    void pollKeepsTheLineGap();
 
 private:
     bool writeFaults(const QString &name, const QByteArray &json, QString *path);
@@ -596,6 +598,41 @@ void TestCliTapRobust::serialLineGap()
     // Every request but the first followed an answer; the relay measures each silence as no
     // shorter than the tap kept it.
     QCOMPARE(timing.masterGapsNs.size(), size_t(35));
+    const qint64 t35 = RtuFramer::t35Ns(baud);
+    const qint64 shortest = *std::min_element(timing.masterGapsNs.begin(), timing.masterGapsNs.end());
+    QVERIFY2(shortest >= t35, qPrintable(QStringLiteral("%1 us of silence before a request; t3.5 at %2 baud is %3 us")
+                                             .arg(double(shortest) / 1000, 0, 'f', 1)
+                                             .arg(baud)
+                                             .arg(double(t35) / 1000, 0, 'f', 1)));
+}
+
+void TestCliTapRobust::pollKeepsTheLineGap_data()
+{
+    serialLineGap_data();
+}
+
+void TestCliTapRobust::pollKeepsTheLineGap()
+{
+    // The gap is the engine's (EngineCore::lineQuiet), not the tap's: `mbscope poll` back to back
+    // on an RTU serial line keeps t3.5 of silence after each answer too. (Before, the next request
+    // left as soon as the answer was read: 20 us of silence on the bare pty pair.)
+    QFETCH(int, baud);
+    QFETCH(bool, paced);
+    const LinkUrl::Result line = LinkUrl::parse(QStringLiteral("rtu:///dev/null?baud=%1").arg(baud));
+    QVERIFY(line.url);
+    testpeers::PacedLine pair;
+    QString error;
+    QVERIFY2(pair.start(paced ? SerialLink::lineCharacterNs(line.url->serial) : 0, &error), qPrintable(error));
+    const QString options = QStringLiteral("?baud=%1").arg(baud);
+    Background device;
+    QVERIFY2(device.start(simulateArgs(QStringLiteral("rtu://") + pair.deviceEnd() + options), &error), qPrintable(error));
+    const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), QStringLiteral("rtu://") + pair.masterEnd() + options,
+                                       QStringLiteral("--unit"), QStringLiteral("1"), QStringLiteral("--address"), QStringLiteral("0"),
+                                       QStringLiteral("--quantity"), QStringLiteral("4"), QStringLiteral("--count"), QStringLiteral("20"),
+                                       QStringLiteral("--interval"), QStringLiteral("0")});
+    QVERIFY2(poll.exitCode == 0, qPrintable(poll.outText() + poll.errText()));
+    const testpeers::PacedLine::Timing timing = pair.take();
+    QCOMPARE(timing.masterGapsNs.size(), size_t(19));
     const qint64 t35 = RtuFramer::t35Ns(baud);
     const qint64 shortest = *std::min_element(timing.masterGapsNs.begin(), timing.masterGapsNs.end());
     QVERIFY2(shortest >= t35, qPrintable(QStringLiteral("%1 us of silence before a request; t3.5 at %2 baud is %3 us")
