@@ -86,6 +86,8 @@ QString countsLine(const TapCounters &c)
                        .arg(counted(c.broadcasts, "broadcast", "broadcasts"))
                        .arg(c.noRoute)
                        .arg(counted(c.refusedWrites, "write", "writes"));
+    if (c.resent > 0)
+        line += QStringLiteral("; %1 sent again after a link closed under them").arg(counted(c.resent, "read", "reads"));
     if (c.deviceLatencyCount > 0)
         line += QStringLiteral("; devices answered in %1 on average")
                     .arg(formatDuration(qint64(c.deviceLatencyNsSum / c.deviceLatencyCount)));

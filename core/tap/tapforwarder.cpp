@@ -137,7 +137,8 @@ void TapForwarder::forward(const Request &request, Done done)
     item.timeoutMs = route->target.responseTimeoutMs > 0 ? route->target.responseTimeoutMs : m_settings.timeoutMs;
     // A write goes once, as its master sent it: a retry after a timeout could apply it twice
     // (the device may have acted and only its answer got lost). Reads are retried.
-    item.retries = RecordedWrite::of(0, request.unitId, request.pdu) ? 0 : m_settings.retries;
+    const bool write = RecordedWrite::of(0, request.unitId, request.pdu).has_value();
+    item.retries = write ? 0 : m_settings.retries;
     Waiting waiting;
     waiting.done = std::move(done);
     waiting.masterFraming = request.framing;
@@ -148,6 +149,9 @@ void TapForwarder::forward(const Request &request, Done done)
     waiting.masterUnit = request.unitId;
     waiting.receivedNs = request.receivedNs;
     waiting.target = target.url.toString();
+    waiting.core = target.core;
+    if (!write && !waiting.broadcast)
+        waiting.resend = item;
     if (waiting.broadcast)
         ++m_counters.broadcasts;
     ++m_counters.forwarded;
@@ -163,8 +167,20 @@ void TapForwarder::onRecord(const Transaction &transaction, quint64 /*tag*/)
     const auto it = m_waiting.find(transaction.id);
     if (it == m_waiting.end())
         return;
-    const Waiting waiting = std::move(*it);
+    Waiting waiting = std::move(*it);
     m_waiting.erase(it);
+    if (transaction.status == TransactionStatus::LinkError && transaction.sentNs > 0 && waiting.resend) {
+        // The request went and the link failed before the answer: a device that closes its
+        // connection (after every answer, or idle) closed it as the request arrived. A read is
+        // sent once more, on a new connection; the master sees an answer, not 0B.
+        ++m_counters.resent;
+        const RequestItem item = *std::exchange(waiting.resend, std::nullopt);
+        EngineCore *core = waiting.core;
+        const quint64 id = core->reserveId();
+        m_waiting.insert(id, std::move(waiting));
+        core->submit(item, id);
+        return;
+    }
 
     const auto device = QStringLiteral("device %1").arg(formatDuration(std::max<qint64>(0, transaction.latencyNs())));
     Answer answer;

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace mbscope {
@@ -79,6 +80,11 @@ private:
         quint8 masterUnit = 0;
         qint64 receivedNs = 0; // the master's request in
         QString target;
+        // A read, to send once more on a new connection when the link fails under it (the
+        // device closed just as the request went: some close after every answer). Empty for
+        // writes and broadcasts, and once re-sent.
+        std::optional<RequestItem> resend;
+        EngineCore *core = nullptr;
     };
 
     void onRecord(const Transaction &transaction, quint64 tag) override;

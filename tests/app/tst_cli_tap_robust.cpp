@@ -147,6 +147,7 @@ QByteArray answerPdu(const QString &url, int address, int quantity, int timeoutM
 struct TapCounts {
     bool found = false;
     qint64 requests = -1, forwarded = -1, answered = -1, exceptions = -1, noAnswer = -1, linkErrors = -1, malformed = -1;
+    qint64 resent = 0; // said only when some were
 };
 
 TapCounts tapCounts(const QString &out)
@@ -155,6 +156,7 @@ TapCounts tapCounts(const QString &out)
     static const QRegularExpression line(QStringLiteral("tap: (\\d+) requests?, (\\d+) forwarded: (\\d+) answered, (\\d+) exceptions? from "
                                                         "devices, (\\d+) without answer, (\\d+) link errors?"));
     static const QRegularExpression malformed(QStringLiteral("(\\d+) malformed;"));
+    static const QRegularExpression resent(QStringLiteral("(\\d+) reads? sent again after a link closed"));
     const QRegularExpressionMatch m = line.match(out);
     if (!m.hasMatch())
         return c;
@@ -167,6 +169,8 @@ TapCounts tapCounts(const QString &out)
     c.linkErrors = m.captured(6).toLongLong();
     const QRegularExpressionMatch bad = malformed.match(out);
     c.malformed = bad.hasMatch() ? bad.captured(1).toLongLong() : -1;
+    if (const QRegularExpressionMatch again = resent.match(out); again.hasMatch())
+        c.resent = again.captured(1).toLongLong();
     return c;
 }
 
@@ -292,10 +296,17 @@ void TestCliTapRobust::targetDropsConnection_data()
     QTest::addColumn<bool>("restart");   // the device stops and starts again on its port instead
     QTest::addColumn<QString>("first");  // the PDU the master gets for its read at 60
     QTest::addColumn<int>("linkErrors");
-    QTest::newRow("closed before the answer") << QStringLiteral("before") << false << QStringLiteral("83 0B") << 1;
-    QTest::newRow("closed halfway through the answer") << QStringLiteral("midway") << false << QStringLiteral("83 0B") << 1;
-    QTest::newRow("closed after the answer") << QStringLiteral("after") << false << QString() << 0;
-    QTest::newRow("device gone, then back on its port") << QString() << true << QStringLiteral("83 0B") << 1;
+    QTest::addColumn<bool>("once");   // the rule fires only after a pause (the read sent again finds the device answering)
+    QTest::addColumn<int>("resent");  // reads the tap sent again on a new connection
+    // Closed every time: the read sent again meets the same close, and the master gets 0B.
+    QTest::newRow("closed before the answer") << QStringLiteral("before") << false << QStringLiteral("83 0B") << 1 << false << 1;
+    QTest::newRow("closed halfway through the answer") << QStringLiteral("midway") << false << QStringLiteral("83 0B") << 1 << false << 1;
+    QTest::newRow("closed after the answer") << QStringLiteral("after") << false << QString() << 0 << false << 0;
+    // Closed as the request arrived, once (a device that closes idle connections): the read goes
+    // again on a new connection and the master gets its answer.
+    QTest::newRow("closed once before the answer") << QStringLiteral("before") << false << QString() << 0 << true << 1;
+    QTest::newRow("closed once halfway through the answer") << QStringLiteral("midway") << false << QString() << 0 << true << 1;
+    QTest::newRow("device gone, then back on its port") << QString() << true << QStringLiteral("83 0B") << 1 << false << -1;
 }
 
 void TestCliTapRobust::targetDropsConnection()
@@ -304,11 +315,16 @@ void TestCliTapRobust::targetDropsConnection()
     QFETCH(bool, restart);
     QFETCH(QString, first);
     QFETCH(int, linkErrors);
+    QFETCH(bool, once);
+    QFETCH(int, resent);
     QStringList more;
     if (!rule.isEmpty()) {
         QString faults;
-        QVERIFY(writeFaults(QStringLiteral("close-%1.json").arg(rule),
-                            QStringLiteral(R"({"rules": [{"kind": "close", "when": "%1", "start": 60}]})").arg(rule).toUtf8(), &faults));
+        // once: fires only on a request that comes more than 100 ms after the one before it.
+        const QString probability = once ? QStringLiteral(R"(, "probability": {"byIntervalMs": [[100, 0], [101, 1]]})") : QString();
+        QVERIFY(writeFaults(QStringLiteral("close-%1-%2.json").arg(rule).arg(once),
+                            QStringLiteral(R"({"rules": [{"kind": "close", "when": "%1", "start": 60%2}]})").arg(rule, probability).toUtf8(),
+                            &faults));
         more = QStringList{QStringLiteral("--faults"), faults};
     }
     const QString listen = QStringLiteral("tcp://127.0.0.1:%1").arg(closedPort());
@@ -327,6 +343,7 @@ void TestCliTapRobust::targetDropsConnection()
     QCOMPARE(AduBuilder::parse(master.read(13, 5000), Framing::Tcp).pdu, readAnswerPdu(0, 2));
     if (restart)
         device->stop();
+    QTest::qWait(300);
     master.write(readRequest(tap.url(), 60, 2, 2));
     const QByteArray got = AduBuilder::parse(master.read(first.isEmpty() ? 13 : 9, 5000), Framing::Tcp).pdu;
     QCOMPARE(QString::fromLatin1(got.toHex(' ')).toUpper(), first.isEmpty() ? QString::fromLatin1(readAnswerPdu(60, 2).toHex(' ')).toUpper() : first);
@@ -347,6 +364,8 @@ void TestCliTapRobust::targetDropsConnection()
     QCOMPARE(c.requests, 3);
     QCOMPARE(c.linkErrors, qint64(linkErrors));
     QCOMPARE(c.answered, qint64(3 - linkErrors));
+    if (resent >= 0)
+        QCOMPARE(c.resent, qint64(resent));
     if (linkErrors > 0) // said as it happened
         QVERIFY2(out.contains(QStringLiteral("target %1: ").arg(device->url())), qPrintable(out));
 }
