@@ -186,7 +186,7 @@ void TestCaptureRoundTrip::roundTrip()
     QFETCH(bool, classicPcap);
 
     CaptureFileWriter writer;
-    writer.openInMemory(classicPcap ? CaptureFileWriter::Format::Pcap : CaptureFileWriter::Format::Pcapng);
+    writer.openInMemory(classicPcap ? TrafficFormat::Pcap : TrafficFormat::Pcapng);
     ExchangePcapExporter exporter(writer);
     for (const CaptureConversation &c : conversations)
         exporter.addConversation(c);
