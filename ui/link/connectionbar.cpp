@@ -69,6 +69,8 @@ void ConnectionBar::watchFields()
         connect(spin, &QSpinBox::valueChanged, this, &ConnectionBar::stateChanged);
     for (QComboBox *combo : findChildren<QComboBox *>())
         connect(combo, &QComboBox::currentIndexChanged, this, &ConnectionBar::stateChanged);
+    for (QCheckBox *check : findChildren<QCheckBox *>()) // Tap, Listen, the Tap row's Read-only
+        connect(check, &QCheckBox::toggled, this, &ConnectionBar::stateChanged);
 }
 
 void ConnectionBar::buildUi()
