@@ -138,7 +138,7 @@ void readTap(JsonReader &reader, const QJsonValue &value, std::optional<SessionT
     const auto o = reader.objectValue(value, path);
     if (!o)
         return;
-    reader.checkKeys(*o, path, {"listen", "routes", "readOnly", "refuse", "noAnswer", "retries"});
+    reader.checkKeys(*o, path, {"listen", "routes", "readOnly", "refuse", "noAnswer", "retries", "faults"});
     SessionTap t;
     if (reader.require(*o, path, "listen")) {
         if (const auto listen = reader.array(*o, path, "listen")) {
@@ -157,6 +157,7 @@ void readTap(JsonReader &reader, const QJsonValue &value, std::optional<SessionT
     t.noAnswer = readWord(reader, *o, path, "noAnswer", {QStringLiteral("auto"), QStringLiteral("exception"), QStringLiteral("silence")},
                           t.noAnswer);
     t.retries = int(reader.integer(*o, path, "retries", 0, 100).value_or(0));
+    t.faults = reader.string(*o, path, "faults").value_or(QString());
     *tap = t;
 }
 

@@ -17,6 +17,7 @@ struct SessionTap {
     QString refuse = QStringLiteral("exception"); // --refuse: exception or silence
     QString noAnswer = QStringLiteral("auto");  // --no-answer: auto, exception or silence
     int retries = 0;                            // --retries (0-100)
+    QString faults;                             // --faults FILE (empty: none), as typed
 
     friend bool operator==(const SessionTap &, const SessionTap &) = default;
 };

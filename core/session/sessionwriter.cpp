@@ -185,6 +185,8 @@ QJsonObject SessionWriter::toJson(const SessionDocument &d)
         t.insert(QLatin1String("noAnswer"), d.tap->noAnswer);
         if (d.tap->retries > 0)
             t.insert(QLatin1String("retries"), d.tap->retries);
+        if (!d.tap->faults.isEmpty())
+            t.insert(QLatin1String("faults"), d.tap->faults);
         root.insert(QLatin1String("tap"), t);
     }
     if (d.capture) {

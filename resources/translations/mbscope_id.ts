@@ -420,7 +420,7 @@
         <translation>ASCII (serial)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+45"/>
         <source>host name or IP address</source>
         <translation>nama host atau alamat IP</translation>
     </message>
@@ -5961,7 +5961,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SessionController</name>
     <message>
-        <location filename="../../ui/session/sessioncontroller.cpp" line="+38"/>
+        <location filename="../../ui/session/sessioncontroller.cpp" line="+39"/>
         <source>Unsaved changes</source>
         <translation>Perubahan belum disimpan</translation>
     </message>
@@ -6021,7 +6021,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Simpan sesi seb&amp;agai…</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+145"/>
         <source>line %1, column %2: %3</source>
         <translation>baris %1, kolom %2: %3</translation>
     </message>
@@ -7306,7 +7306,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TapFields</name>
     <message>
-        <location filename="../../ui/link/tapfields.cpp" line="+48"/>
+        <location filename="../../ui/link/tapfields.cpp" line="+50"/>
         <source>tcp://0.0.0.0:502</source>
         <translation>tcp://0.0.0.0:502</translation>
     </message>
@@ -7372,7 +7372,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Percobaan tambahan setelah habis waktu atau jawaban rusak, sebelum master menerima 0B atau diam</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+3"/>
+        <source>none</source>
+        <translation>tidak ada</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A fault rules file (the simulator&apos;s rules: drop, delay, exception, wrong checksum, wrong unit, close...; docs/profiles.md &quot;Faults&quot;) applied to the devices&apos; answers on their way back, so a master&apos;s handling of a misbehaving device can be tried without touching either. Read when the tap starts; empty: every answer passes unchanged</source>
+        <translation>Berkas aturan gangguan (aturan simulator: drop, delay, exception, checksum salah, unit salah, close...; docs/profiles.md &quot;Faults&quot;) yang diterapkan pada jawaban perangkat saat kembali, sehingga cara master menangani perangkat yang bermasalah dapat dicoba tanpa menyentuh keduanya. Dibaca saat tap dimulai; kosong: setiap jawaban diteruskan tanpa perubahan</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Masters connect to:</source>
         <translation>Master tersambung ke:</translation>
     </message>
@@ -7390,6 +7400,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+2"/>
         <source>Retries:</source>
         <translation>Ulangan:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Faults:</source>
+        <translation>Gangguan:</translation>
     </message>
     <message>
         <location line="+19"/>
@@ -7412,7 +7427,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Sadapan meneruskan Modbus: target dengan framing=delimited tidak punya id unit untuk dirutekan.</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+15"/>
+        <source>Faults: %1</source>
+        <translation>Gangguan: %1</translation>
+    </message>
+    <message>
+        <location line="+100"/>
         <source>Tap: %1 requests from masters, %2 forwarded: %3 answered, %4 exceptions from devices, %5 without answer, %6 link errors, %7 damaged; %8 without route, %9 writes refused; %10 waiting</source>
         <translation>Sadap: %1 permintaan dari master, %2 diteruskan: %3 dijawab, %4 eksepsi dari perangkat, %5 tanpa jawaban, %6 galat tautan, %7 rusak; %8 tanpa rute, %9 penulisan ditolak; %10 menunggu</translation>
     </message>
@@ -7448,7 +7468,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TapRunner</name>
     <message>
-        <location filename="../../ui/link/taprunner.cpp" line="+61"/>
+        <location filename="../../ui/link/taprunner.cpp" line="+68"/>
         <source>%1: cannot listen</source>
         <translation>%1: tidak dapat mendengarkan</translation>
     </message>

@@ -1,5 +1,6 @@
 #include "tapfields.h"
 
+#include "profile/profileloader.h"
 #include "time/duration.h"
 
 #include <QtCore/QLocale>
@@ -23,6 +24,7 @@ const QString kReadOnlyKey = QStringLiteral("tap/readOnly");
 const QString kRefusalKey = QStringLiteral("tap/refusal");
 const QString kNoAnswerKey = QStringLiteral("tap/noAnswer");
 const QString kRetriesKey = QStringLiteral("tap/retries");
+const QString kFaultsKey = QStringLiteral("tap/faults");
 
 QStringList words(const QString &text)
 {
@@ -82,6 +84,13 @@ TapFields::TapFields(QWidget *parent)
     m_retriesSpin->setRange(0, 100);
     m_retriesSpin->setValue(settings.value(kRetriesKey, 0).toInt());
     m_retriesSpin->setToolTip(tr("Further attempts after a timeout or a damaged answer, before the master gets its 0B or silence"));
+    m_faultsEdit = new QLineEdit(settings.value(kFaultsKey).toString(), this);
+    m_faultsEdit->setObjectName(QStringLiteral("tapFaultsEdit"));
+    m_faultsEdit->setPlaceholderText(tr("none"));
+    m_faultsEdit->setToolTip(tr("A fault rules file (the simulator's rules: drop, delay, exception, wrong checksum, wrong unit, "
+                                "close...; docs/profiles.md \"Faults\") applied to the devices' answers on their way back, so a "
+                                "master's handling of a misbehaving device can be tried without touching either. Read when the "
+                                "tap starts; empty: every answer passes unchanged"));
     m_countersLabel = new QLabel(this);
     m_countersLabel->setObjectName(QStringLiteral("tapCountersLabel"));
     m_countersLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -99,6 +108,8 @@ TapFields::TapFields(QWidget *parent)
     row->addWidget(m_noAnswerCombo);
     row->addWidget(buddyLabel(tr("Retries:"), m_retriesSpin, this));
     row->addWidget(m_retriesSpin);
+    row->addWidget(buddyLabel(tr("Faults:"), m_faultsEdit, this));
+    row->addWidget(m_faultsEdit, 1);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(2);
@@ -107,7 +118,7 @@ TapFields::TapFields(QWidget *parent)
 
     m_refusalCombo->setEnabled(m_readOnlyCheck->isChecked());
     connect(m_readOnlyCheck, &QCheckBox::toggled, m_refusalCombo, &QWidget::setEnabled);
-    for (QLineEdit *edit : {m_listenEdit, m_routesEdit})
+    for (QLineEdit *edit : {m_listenEdit, m_routesEdit, m_faultsEdit})
         connect(edit, &QLineEdit::textEdited, this, &TapFields::edited);
 }
 
@@ -147,6 +158,15 @@ std::optional<TapSetup> TapFields::setup(const LinkUrl &target, int timeoutMs, Q
     setup.settings.noAnswer = TapSettings::NoAnswer(m_noAnswerCombo->currentData().toInt());
     setup.settings.readOnly = m_readOnlyCheck->isChecked();
     setup.settings.refusal = TapSettings::Refusal(m_refusalCombo->currentData().toInt());
+    setup.faultsFile = m_faultsEdit->text().trimmed();
+    if (!setup.faultsFile.isEmpty()) {
+        const FaultRulesLoadResult rules = ProfileLoader::loadFaults(setup.faultsFile);
+        if (!rules.ok) {
+            *error = tr("Faults: %1").arg(rules.errorText());
+            return std::nullopt;
+        }
+        setup.faults = rules.rules;
+    }
     return setup;
 }
 
@@ -167,6 +187,7 @@ void TapFields::setSetup(const TapSetup &setup)
     m_refusalCombo->setCurrentIndex(qMax(0, m_refusalCombo->findData(int(setup.settings.refusal))));
     m_noAnswerCombo->setCurrentIndex(qMax(0, m_noAnswerCombo->findData(int(setup.settings.noAnswer))));
     m_retriesSpin->setValue(setup.settings.retries);
+    m_faultsEdit->setText(setup.faultsFile);
 }
 
 namespace {
@@ -194,6 +215,7 @@ SessionTap TapFields::sessionTap() const
                                                                                                             : QStringLiteral("exception");
     tap.noAnswer = noAnswerWord(TapSettings::NoAnswer(m_noAnswerCombo->currentData().toInt()));
     tap.retries = m_retriesSpin->value();
+    tap.faults = m_faultsEdit->text().trimmed();
     return tap;
 }
 
@@ -211,6 +233,7 @@ void TapFields::setSessionTap(const SessionTap &tap)
     }
     m_noAnswerCombo->setCurrentIndex(qMax(0, m_noAnswerCombo->findData(int(noAnswer))));
     m_retriesSpin->setValue(tap.retries);
+    m_faultsEdit->setText(tap.faults);
 }
 
 void TapFields::remember() const
@@ -222,6 +245,7 @@ void TapFields::remember() const
     settings.setValue(kRefusalKey, m_refusalCombo->currentData().toInt());
     settings.setValue(kNoAnswerKey, m_noAnswerCombo->currentData().toInt());
     settings.setValue(kRetriesKey, m_retriesSpin->value());
+    settings.setValue(kFaultsKey, m_faultsEdit->text().trimmed());
 }
 
 void TapFields::setRunning(bool running)

@@ -46,6 +46,7 @@ public:
     [[nodiscard]] QLineEdit *listenEdit() const { return m_listenEdit; }
     [[nodiscard]] QLineEdit *routesEdit() const { return m_routesEdit; }
     [[nodiscard]] QCheckBox *readOnlyCheck() const { return m_readOnlyCheck; }
+    [[nodiscard]] QLineEdit *faultsEdit() const { return m_faultsEdit; }
 
 Q_SIGNALS:
     void edited();
@@ -57,6 +58,7 @@ private:
     QComboBox *m_refusalCombo = nullptr;
     QComboBox *m_noAnswerCombo = nullptr;
     QSpinBox *m_retriesSpin = nullptr;
+    QLineEdit *m_faultsEdit = nullptr; // a fault rules file (docs/profiles.md "Faults"), or empty
     QLabel *m_countersLabel = nullptr;
 };
 

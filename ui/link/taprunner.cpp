@@ -1,6 +1,8 @@
 #include "taprunner.h"
 
+#include "sim/faultinjector.h"
 #include "sim/simendpoint.h"
+#include "sim/simfaulthook.h"
 #include "sim/simulator.h"
 #include "tap/tapforwarder.h"
 #include "traffic/trafficlog.h"
@@ -39,6 +41,11 @@ TapRunner::TapRunner(const TapSetup &setup, QObject *parent)
     m_simulator = new Simulator;
     m_forwarder = new TapForwarder(setup.settings);
     m_simulator->setRemote(m_forwarder);
+    if (setup.faults) {
+        m_injector = std::make_unique<FaultInjector>();
+        m_injector->setRules(*setup.faults);
+        m_simulator->setFaultHook(faultHookFor(m_injector.get()));
+    }
     connect(m_forwarder, &TapForwarder::targetOpened, this, &TapRunner::targetOpened);
     connect(m_forwarder, &TapForwarder::targetMessage, this, &TapRunner::targetMessage);
 }

@@ -15,6 +15,7 @@ class QThread;
 
 namespace mbscope {
 
+class FaultInjector;
 class Simulator;
 class TapForwarder;
 class TrafficLog;
@@ -81,6 +82,7 @@ private:
     QObject *m_anchor = nullptr;      // lives in m_thread: the batch timer's parent
     Simulator *m_simulator = nullptr; // lives in m_thread once started
     TapForwarder *m_forwarder = nullptr;
+    std::unique_ptr<FaultInjector> m_injector; // the setup's fault rules; outlives the simulator
     std::unique_ptr<TrafficLog> m_ownLog; // when the window does not record
     TrafficLog *m_log = nullptr;
     quint64 m_next = 0; // the sequence of the first frame not handed over yet

@@ -1,11 +1,14 @@
 #pragma once
 
+#include "profile/faultrule.h"
 #include "tap/tapsettings.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QList>
 #include <QtCore/QMetaType>
 #include <QtCore/QStringList>
+
+#include <optional>
 
 namespace mbscope {
 
@@ -16,6 +19,9 @@ namespace mbscope {
 struct TapSetup {
     QList<LinkUrl> listen; // LinkUse::Listen URLs (port 0: any free port)
     TapSettings settings;
+    // Fault rules applied to the devices' answers on their way back (--faults), read from faultsFile.
+    std::optional<FaultRuleSet> faults;
+    QString faultsFile;
 
     // "tap --listen tcp://127.0.0.1:5020 --target rtu-tcp://127.0.0.1:4001 --read-only": the
     // command line that runs the same tap (for the status bar, the journal and the guide).
@@ -44,6 +50,8 @@ struct TapSetup {
         if (settings.noAnswer != TapSettings::NoAnswer::Auto)
             out << QStringLiteral("--no-answer")
                 << (settings.noAnswer == TapSettings::NoAnswer::Exception ? QStringLiteral("exception") : QStringLiteral("silence"));
+        if (!faultsFile.isEmpty())
+            out << QStringLiteral("--faults") << faultsFile;
         if (settings.readOnly) {
             out << QStringLiteral("--read-only");
             if (settings.refusal == TapSettings::Refusal::Silence)

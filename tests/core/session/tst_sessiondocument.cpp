@@ -101,6 +101,7 @@ void TestSessionDocument::roundTrip_data()
         tap.refuse = QStringLiteral("silence");
         tap.noAnswer = QStringLiteral("exception");
         tap.retries = 3;
+        tap.faults = QStringLiteral("faults/busy.json");
         d.tap = tap;
         QTest::newRow("tap") << d;
         SessionTap plain;
@@ -267,7 +268,7 @@ void TestSessionDocument::writtenDefaultsLeftOut()
     QCOMPARE(json.value(QLatin1String("version")).toInt(), 2);
     QCOMPARE(json.keys(), (QStringList{QStringLiteral("format"), QStringLiteral("requests"), QStringLiteral("version")}));
     SessionDocument tapped = base();
-    tapped.tap = SessionTap{{QStringLiteral("tcp://127.0.0.1:5020")}, {}, false, QStringLiteral("exception"), QStringLiteral("auto"), 0};
+    tapped.tap = SessionTap{{QStringLiteral("tcp://127.0.0.1:5020")}, {}, false, QStringLiteral("exception"), QStringLiteral("auto"), 0, {}};
     const QJsonObject withTap = SessionWriter::toJson(tapped);
     QCOMPARE(withTap.value(QLatin1String("version")).toInt(), SessionDocument::kVersion);
     QCOMPARE(withTap.value(QLatin1String("tap")).toObject().keys(), (QStringList{QStringLiteral("listen"), QStringLiteral("noAnswer")}));

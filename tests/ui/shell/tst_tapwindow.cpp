@@ -23,6 +23,7 @@
 #include "traffic/trafficmonitor.h"
 
 #include <QtCore/QElapsedTimer>
+#include <QtCore/QFile>
 #include <QtCore/QTemporaryDir>
 #include <QtNetwork/QTcpSocket>
 #include <QtTest/QTest>
@@ -85,13 +86,18 @@ void TestTapWindow::tapInTheWindow_data()
     QTest::addColumn<QByteArray>("request"); // Modbus/TCP, from the master
     QTest::addColumn<int>("rows");           // in the traffic list
     QTest::addColumn<QString>("summary");    // the master's answer, decoded in the Answer tab
+    QTest::addColumn<QByteArray>("faults");  // the Tap row's fault rules file ("": none)
 
     // The RosRao read of the first run, 22 registers from 0x79, through the tap.
     QTest::newRow("read") << false << QByteArray::fromHex("002a00000006010300790016") << 4
-                          << QStringLiteral("Read Holding Registers");
+                          << QStringLiteral("Read Holding Registers") << QByteArray();
     // A write on a read-only tap: refused with 01, the device never sees it.
     QTest::newRow("read-only write") << true << QByteArray::fromHex("002b0000000601060079002a") << 2
-                                     << QStringLiteral("exception");
+                                     << QStringLiteral("exception") << QByteArray();
+    // Faults on the way back: the device answers, the master gets exception 06 instead (the
+    // simulator's rules, from the file in the Tap row's Faults field).
+    QTest::newRow("faults") << false << QByteArray::fromHex("002c00000006010300790016") << 4 << QStringLiteral("exception")
+                            << QByteArray(R"({"rules": [{"kind": "exception", "code": 6, "name": "busy"}]})");
 }
 
 void TestTapWindow::tapInTheWindow()
@@ -100,6 +106,15 @@ void TestTapWindow::tapInTheWindow()
     QFETCH(QByteArray, request);
     QFETCH(int, rows);
     QFETCH(QString, summary);
+    QFETCH(QByteArray, faults);
+    QTemporaryDir faultsDir;
+    QString faultsFile;
+    if (!faults.isEmpty()) {
+        faultsFile = faultsDir.filePath(QStringLiteral("busy.json"));
+        QFile f(faultsFile);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(faults);
+    }
 
     MainWindow window;
     QVERIFY(window.startWithSimulator(kAnyPort));
@@ -120,6 +135,7 @@ void TestTapWindow::tapInTheWindow()
     QVERIFY2(guitest::mnemonicClashes(&window).isEmpty(), qPrintable(guitest::mnemonicClashes(&window).join(QLatin1Char('\n'))));
     bar->tapFields()->listenEdit()->setText(QStringLiteral("tcp://127.0.0.1:0"));
     bar->tapFields()->readOnlyCheck()->setChecked(readOnly);
+    bar->tapFields()->faultsEdit()->setText(faultsFile);
     bar->connectButton()->click();
     QVERIFY2(link->isTapping(), qPrintable(bar->errorText()));
     QCOMPARE(link->state(), LinkController::State::Connected);
@@ -156,7 +172,10 @@ void TestTapWindow::tapInTheWindow()
         QTRY_COMPARE(decode->exchange().link, device);
         QCOMPARE(decode->responseDissection().framing, Framing::Rtu);
         QVERIFY(decode->responseDissection().isValid());
-        QCOMPARE(decode->exchange().response.mid(1, decode->exchange().response.size() - 3), answer.mid(7));
+        if (faults.isEmpty())
+            QCOMPARE(decode->exchange().response.mid(1, decode->exchange().response.size() - 3), answer.mid(7));
+        else // the device answered normally; the master got the fault's exception
+            QCOMPARE(answer.mid(7), QByteArray::fromHex("8306"));
         QVERIFY(decode->exchange().latencyNs >= 0);
         QVERIFY(window.linkStatus()->countersText().contains(QStringLiteral("1 request")));
     } else {
