@@ -260,9 +260,10 @@ FaultPlan FaultInjector::plan(const SimExchange &exchange)
     {
         QMutexLocker lock(&m_mutex);
         if (m_rules.rules.isEmpty()) {
-            // FaultContext's unit: the request's (a delimited frame's: the unit that answers).
-            return planWithoutRules(exchange.delimited ? exchange.routedUnitId : exchange.unitId, exchange.responseAdu,
-                                    exchange.responseDelayNs, exchange.responseDelayFixed);
+            // FaultContext::forExchange's unit: the unit that answers (unit 0 or 255 over MBAP is
+            // the endpoint's first unit, whose response time it takes).
+            return planWithoutRules(exchange.routedUnitId, exchange.responseAdu, exchange.responseDelayNs,
+                                    exchange.responseDelayFixed);
         }
     }
     return plan(FaultContext::forExchange(exchange));

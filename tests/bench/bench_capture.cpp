@@ -196,23 +196,23 @@ int main(int argc, char *argv[])
     Run floorRun;
     Run compared;
     for (int round = 0; round < repeat; ++round) {
-        const Run f = runChild(QCoreApplication::applicationFilePath(), {QStringLiteral("--floor"), path}, floorOut);
-        if (round == 0 || f.seconds < floorRun.seconds)
-            floorRun = f;
-        const Run o = runChild(QStringLiteral(MBSCOPE_EXECUTABLE), {QStringLiteral("analyze"), path, QStringLiteral("--json")}, json);
-        if (round == 0 || o.seconds < ours.seconds)
-            ours = o;
+        const Run floorTurn = runChild(QCoreApplication::applicationFilePath(), {QStringLiteral("--floor"), path}, floorOut);
+        if (round == 0 || floorTurn.seconds < floorRun.seconds)
+            floorRun = floorTurn;
+        const Run oursTurn = runChild(QStringLiteral(MBSCOPE_EXECUTABLE), {QStringLiteral("analyze"), path, QStringLiteral("--json")}, json);
+        if (round == 0 || oursTurn.seconds < ours.seconds)
+            ours = oursTurn;
         if (!compare.isEmpty()) {
-            const Run c = runChild(compare, {QStringLiteral("analyze"), path, QStringLiteral("--json")}, {});
-            if (round == 0 || c.seconds < compared.seconds)
-                compared = c;
+            const Run comparedTurn = runChild(compare, {QStringLiteral("analyze"), path, QStringLiteral("--json")}, {});
+            if (round == 0 || comparedTurn.seconds < compared.seconds)
+                compared = comparedTurn;
         }
     }
     printRun("floor: read and pair (capturefloor.cpp)", floorRun, transactions);
     long long floorPairs = -1;
     long long floorRequests = -1;
-    if (QFile f(floorOut); f.open(QIODevice::ReadOnly)) {
-        const QList<QByteArray> fields = f.readAll().simplified().split(' ');
+    if (QFile floorFile(floorOut); floorFile.open(QIODevice::ReadOnly)) {
+        const QList<QByteArray> fields = floorFile.readAll().simplified().split(' ');
         if (fields.size() >= 2) {
             floorPairs = fields.at(0).toLongLong();
             floorRequests = fields.at(1).toLongLong();

@@ -290,10 +290,10 @@ void TestCaptureRoundTrip::roundTrip()
         byUnit[keys.unit].add(e.transaction);
     }
     const QJsonObject json = analysis.toJson(report);
-    const auto compareTable = [](const QJsonArray &table, const std::map<quint8, Statistics> &want, const QString &key) {
-        QCOMPARE(table.size(), qsizetype(want.size()));
+    const auto compareTable = [](const QJsonArray &table, const std::map<quint8, Statistics> &expected, const QString &key) {
+        QCOMPARE(table.size(), qsizetype(expected.size()));
         qsizetype i = 0;
-        for (const auto &[k, statistics] : want) {
+        for (const auto &[k, statistics] : expected) {
             QJsonObject row = table.at(i++).toObject();
             row.remove(QStringLiteral("function"));
             row.remove(QStringLiteral("name"));

@@ -615,10 +615,10 @@ void TestFaultInjector::planOfExchange_data()
     const QByteArray rtu1 = AduBuilder::rtu(QByteArray::fromHex("0300000001"), 1);
     QTest::newRow("mbap unit 1: its distribution") << int(Framing::Tcp) << mbap1 << 1 << 1 << false << false << false;
     QTest::newRow("mbap unit 2: no distribution") << int(Framing::Tcp) << mbap2 << 2 << 2 << false << false << false;
-    QTest::newRow("mbap unit 0 routed to 1: unit 0's stream") << int(Framing::Tcp) << mbap0 << 0 << 1 << false << false << false;
+    QTest::newRow("mbap unit 0 routed to 1: unit 1's stream") << int(Framing::Tcp) << mbap0 << 0 << 1 << false << false << false;
     QTest::newRow("rtu unit 1") << int(Framing::Rtu) << rtu1 << 1 << 1 << false << false << false;
     QTest::newRow("a script's fixed delay") << int(Framing::Tcp) << mbap1 << 1 << 1 << false << true << false;
-    QTest::newRow("delimited frame: the answering unit's stream") << int(Framing::Rtu) << QByteArray("PING\r") << 0 << 1 << true << false
+    QTest::newRow("delimited frame: the answering unit's") << int(Framing::Rtu) << QByteArray("PING\r") << 0 << 1 << true << false
                                                                  << false;
     QTest::newRow("with a rule") << int(Framing::Tcp) << mbap1 << 1 << 1 << false << false << true;
 }
