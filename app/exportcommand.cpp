@@ -124,18 +124,15 @@ int runExport(const QStringList &arguments)
     // One writer per output asked for, each as the window's Save Traffic As writes it.
     struct Output {
         const QCommandLineOption *option;
-        ExchangeWriter::Format format;
+        TrafficFormat format;
         ExchangeWriter writer;
         bool open = false;
     };
     const QString pcapFile = parser.value(pcapOpt);
     Output written[] = {
-        {&csvOpt, ExchangeWriter::Format::Csv, {}, false},
-        {&jsonlOpt, ExchangeWriter::Format::JsonLines, {}, false},
-        {&pcapOpt,
-         CaptureFileWriter::formatFor(pcapFile) == CaptureFileWriter::Format::Pcap ? ExchangeWriter::Format::Pcap
-                                                                                    : ExchangeWriter::Format::Pcapng,
-         {}, false},
+        {&csvOpt, TrafficFormat::Csv, {}, false},
+        {&jsonlOpt, TrafficFormat::JsonLines, {}, false},
+        {&pcapOpt, CaptureFileWriter::formatFor(pcapFile), {}, false},
     };
     for (Output &o : written) {
         if (!parser.isSet(*o.option))
@@ -199,15 +196,15 @@ int runExport(const QStringList &arguments)
         if (!o.writer.close(&error)) {
             err << "mbscope export: " << error << '\n';
             status = ExitUsage;
-        } else if (o.format == ExchangeWriter::Format::Csv) {
+        } else if (o.format == TrafficFormat::Csv) {
             if (file != QLatin1String("-"))
                 note << "csv      " << file << ": " << o.writer.rows() << " row(s)\n";
-        } else if (o.format == ExchangeWriter::Format::JsonLines) {
+        } else if (o.format == TrafficFormat::JsonLines) {
             if (file != QLatin1String("-"))
                 note << "jsonl    " << file << ": " << o.writer.rows() << " line(s)\n";
         } else {
             note << "pcap     " << file << ": " << o.writer.packets() << " packet(s), "
-                 << (o.format == ExchangeWriter::Format::Pcap ? "pcap" : "pcapng") << '\n';
+                 << (o.format == TrafficFormat::Pcap ? "pcap" : "pcapng") << '\n';
             // Ports tshark does not know by itself (Wireshark: Analyze > Decode As...).
             for (const QString &option : o.writer.decodeOptions())
                 note << "         " << option << '\n';

@@ -66,20 +66,28 @@ bool readCount(const QCommandLineParser &parser, const QCommandLineOption &optio
     return true;
 }
 
+// "1 request", "2 requests": a count with its noun in the right number.
+QString counted(quint64 n, const char *one, const char *many)
+{
+    return QStringLiteral("%1 %2").arg(n).arg(QLatin1String(n == 1 ? one : many));
+}
+
 QString countsLine(const TapCounters &c)
 {
-    QString line = QStringLiteral("tap: %1 requests, %2 forwarded: %3 answered, %4 exceptions from devices, %5 without answer, "
-                                  "%6 link errors, %7 damaged; %8 broadcasts, %9 without route, %10 writes refused")
-                       .arg(c.requests)
+    QString line = QStringLiteral("tap: %1, %2 forwarded: %3 answered, %4 from devices, %5 without answer, "
+                                  "%6, %7 damaged; %8, %9 without route, %10 refused")
+                       .arg(counted(c.requests, "request", "requests"))
                        .arg(c.forwarded)
                        .arg(c.answered)
-                       .arg(c.exceptions)
+                       .arg(counted(c.exceptions, "exception", "exceptions"))
                        .arg(c.noAnswer)
-                       .arg(c.linkErrors)
+                       .arg(counted(c.linkErrors, "link error", "link errors"))
                        .arg(c.damaged)
-                       .arg(c.broadcasts)
+                       .arg(counted(c.broadcasts, "broadcast", "broadcasts"))
                        .arg(c.noRoute)
-                       .arg(c.refusedWrites);
+                       .arg(counted(c.refusedWrites, "write", "writes"));
+    if (c.resent > 0)
+        line += QStringLiteral("; %1 sent again after a link closed under them").arg(counted(c.resent, "read", "reads"));
     if (c.deviceLatencyCount > 0)
         line += QStringLiteral("; devices answered in %1 on average")
                     .arg(formatDuration(qint64(c.deviceLatencyNsSum / c.deviceLatencyCount)));

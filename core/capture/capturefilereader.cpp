@@ -6,31 +6,21 @@
 
 namespace mbscope {
 
-CaptureFileReader::Format CaptureFileReader::detect(QByteArrayView first)
+TrafficFormat CaptureFileReader::detect(QByteArrayView first)
 {
     if (first.size() < 4)
-        return Format::Unknown;
+        return TrafficFormat::Unknown;
     const auto b = [&](int i) { return quint8(first[i]); };
     const quint32 be = quint32(b(0)) << 24 | quint32(b(1)) << 16 | quint32(b(2)) << 8 | b(3);
     switch (be) {
     case 0xa1b2c3d4: case 0xd4c3b2a1: // microseconds
     case 0xa1b23c4d: case 0x4d3cb2a1: // nanoseconds
-        return Format::Pcap;
+        return TrafficFormat::Pcap;
     case 0x0a0d0d0a: // a section header block: the same in both byte orders
-        return Format::Pcapng;
+        return TrafficFormat::Pcapng;
     default:
-        return Format::Unknown;
+        return TrafficFormat::Unknown;
     }
-}
-
-QString CaptureFileReader::formatName(Format format)
-{
-    switch (format) {
-    case Format::Pcap: return QStringLiteral("pcap");
-    case Format::Pcapng: return QStringLiteral("pcapng");
-    case Format::Unknown: break;
-    }
-    return QStringLiteral("unknown");
 }
 
 CaptureFileReader::Result CaptureFileReader::readFile(const QString &path, const Sink &sink)
@@ -72,13 +62,17 @@ CaptureFileReader::Result CaptureFileReader::read(CaptureByteSource &source, con
     const QByteArrayView first(head, std::min<qint64>(available, 4));
     result.format = detect(first);
     switch (result.format) {
-    case Format::Pcap:
+    case TrafficFormat::Pcap:
         readPcap(source, sink, result);
         break;
-    case Format::Pcapng:
+    case TrafficFormat::Pcapng:
         readPcapng(source, sink, result);
         break;
-    case Format::Unknown:
+    case TrafficFormat::Journal: // detect() names only captures
+    case TrafficFormat::Csv:
+    case TrafficFormat::JsonLines:
+    case TrafficFormat::Unknown:
+        result.format = TrafficFormat::Unknown;
         result.errorOffset = 0;
         result.error = QStringLiteral("not a capture file: it starts with %1, where a pcap file starts with "
                                       "D4 C3 B2 A1 (or A1 B2 C3 D4, 4D 3C B2 A1, A1 B2 3C 4D) and a pcapng file "

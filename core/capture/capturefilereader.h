@@ -1,5 +1,7 @@
 #pragma once
 
+#include "capture/trafficformat.h"
+
 #include "capture/capturepacket.h"
 
 #include <QtCore/QByteArrayView>
@@ -27,10 +29,9 @@ class CaptureByteSource;
 class CaptureFileReader
 {
 public:
-    enum class Format : quint8 { Unknown, Pcap, Pcapng };
 
     struct Result {
-        Format format = Format::Unknown;
+        TrafficFormat format = TrafficFormat::Unknown; // Pcap, Pcapng or Unknown
         quint64 packets = 0;   // delivered to the sink
         qint64 fileBytes = 0;
         qint64 goodBytes = 0;  // where the last whole record or block ends
@@ -45,8 +46,7 @@ public:
     [[nodiscard]] static Result readBytes(QByteArrayView bytes, const Sink &sink);
 
     // The format the first bytes announce (4 are enough).
-    [[nodiscard]] static Format detect(QByteArrayView firstBytes);
-    [[nodiscard]] static QString formatName(Format format); // "pcap", "pcapng", "unknown"
+    [[nodiscard]] static TrafficFormat detect(QByteArrayView firstBytes); // Pcap, Pcapng or Unknown
 
 private:
     static Result read(CaptureByteSource &source, const Sink &sink);

@@ -46,12 +46,12 @@ CaptureFileWriter::~CaptureFileWriter()
     }
 }
 
-CaptureFileWriter::Format CaptureFileWriter::formatFor(const QString &path)
+TrafficFormat CaptureFileWriter::formatFor(const QString &path)
 {
-    return path.endsWith(QLatin1String(".pcap"), Qt::CaseInsensitive) ? Format::Pcap : Format::Pcapng;
+    return trafficformat::ofEnding(path) == TrafficFormat::Pcap ? TrafficFormat::Pcap : TrafficFormat::Pcapng;
 }
 
-bool CaptureFileWriter::open(const QString &path, Format format, QString *error)
+bool CaptureFileWriter::open(const QString &path, TrafficFormat format, QString *error)
 {
     m_file.setFileName(path);
     if (!m_file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Unbuffered)) {
@@ -66,7 +66,7 @@ bool CaptureFileWriter::open(const QString &path, Format format, QString *error)
     return true;
 }
 
-void CaptureFileWriter::openInMemory(Format format)
+void CaptureFileWriter::openInMemory(TrafficFormat format)
 {
     m_format = format;
     m_inMemory = true;
@@ -77,7 +77,7 @@ void CaptureFileWriter::openInMemory(Format format)
 
 void CaptureFileWriter::writeHeader()
 {
-    if (m_format == Format::Pcap) {
+    if (m_format == TrafficFormat::Pcap) {
         append32(m_buffer, 0xa1b23c4d); // nanosecond time stamps
         append16(m_buffer, 2);
         append16(m_buffer, 4);
@@ -106,7 +106,7 @@ void CaptureFileWriter::writeHeader()
 
 int CaptureFileWriter::addInterface(quint16 linkType, const QString &name, const QString &description)
 {
-    if (m_format == Format::Pcap || !m_open)
+    if (m_format == TrafficFormat::Pcap || !m_open)
         return -1;
     // Interface description block: no snap length limit, nanoseconds.
     QByteArray idb;
@@ -132,7 +132,7 @@ void CaptureFileWriter::write(qint64 timeNs, QByteArrayView frame, quint32 inter
         return;
     const quint64 t = quint64(std::max<qint64>(timeNs, 0));
     const auto length = quint32(frame.size());
-    if (m_format == Format::Pcap) {
+    if (m_format == TrafficFormat::Pcap) {
         append32(m_buffer, quint32(t / 1000000000ULL));
         append32(m_buffer, quint32(t % 1000000000ULL));
         append32(m_buffer, length);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "capture/trafficformat.h"
+
 #include <QtCore/QByteArray>
 #include <QtCore/QByteArrayView>
 #include <QtCore/QFile>
@@ -15,7 +17,6 @@ namespace mbscope {
 class CaptureFileWriter
 {
 public:
-    enum class Format : quint8 { Pcap, Pcapng };
 
     CaptureFileWriter() = default;
     ~CaptureFileWriter();
@@ -23,11 +24,11 @@ public:
     CaptureFileWriter &operator=(const CaptureFileWriter &) = delete;
 
     // ".pcap" gives Pcap, anything else Pcapng.
-    [[nodiscard]] static Format formatFor(const QString &path);
+    [[nodiscard]] static TrafficFormat formatFor(const QString &path);
 
-    [[nodiscard]] bool open(const QString &path, Format format, QString *error);
+    [[nodiscard]] bool open(const QString &path, TrafficFormat format, QString *error);
     // Into memory instead of a file (tests): bytes() holds the file.
-    void openInMemory(Format format);
+    void openInMemory(TrafficFormat format);
     // pcapng only: an interface of another link type, with its name (if_name) and description
     // (if_description); returns its index for write(). -1 for pcap, which has one link type.
     [[nodiscard]] int addInterface(quint16 linkType, const QString &name, const QString &description);
@@ -47,7 +48,7 @@ private:
     void flushBuffer();
 
     QFile m_file;
-    Format m_format = Format::Pcapng;
+    TrafficFormat m_format = TrafficFormat::Pcapng;
     QByteArray m_buffer;
     bool m_inMemory = false;
     bool m_open = false;

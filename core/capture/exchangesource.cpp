@@ -31,7 +31,7 @@ ExchangeSourceReport readPackets(const QString &path, const std::function<Captur
     });
     extractor.finish();
     pairer.finish(std::max<qint64>(endNs, 0));
-    report.kind = report.file.format == CaptureFileReader::Format::Unknown ? ExchangeSourceReport::Kind::Unreadable
+    report.kind = report.file.format == TrafficFormat::Unknown ? ExchangeSourceReport::Kind::Unreadable
                                                                              : ExchangeSourceReport::Kind::Capture;
     report.error = report.file.error;
     report.frames = extractor.counters();
@@ -49,7 +49,7 @@ ExchangeSourceReport readPackets(const QString &path, const std::function<Captur
 QString ExchangeSourceReport::kindName() const
 {
     switch (kind) {
-    case Kind::Capture: return CaptureFileReader::formatName(file.format);
+    case Kind::Capture: return trafficformat::name(file.format);
     case Kind::Journal: return QStringLiteral("journal");
     case Kind::Unreadable: break;
     }

@@ -9,13 +9,16 @@ namespace mbscope {
 ExchangeWriter::ExchangeWriter() = default;
 ExchangeWriter::~ExchangeWriter() = default;
 
-bool ExchangeWriter::open(const QString &path, Format format, QString *error)
+bool ExchangeWriter::open(const QString &path, TrafficFormat format, QString *error)
 {
     m_format = format;
     m_rows = 0;
-    if (format == Format::Pcapng || format == Format::Pcap) {
-        if (!m_capture.open(path, format == Format::Pcap ? CaptureFileWriter::Format::Pcap : CaptureFileWriter::Format::Pcapng,
-                            error))
+    if (format == TrafficFormat::Journal || format == TrafficFormat::Unknown) {
+        *error = QStringLiteral("cannot write %1 as %2: exchanges go to csv, jsonl, pcapng or pcap").arg(path, trafficformat::name(format));
+        return false;
+    }
+    if (trafficformat::isCapture(format)) {
+        if (!m_capture.open(path, format, error))
             return false;
         m_pcap.emplace(m_capture);
         return true;
@@ -28,7 +31,7 @@ bool ExchangeWriter::open(const QString &path, Format format, QString *error)
     }
     m_text = std::make_unique<QTextStream>(&m_file);
     m_text->setEncoding(QStringConverter::Utf8);
-    if (format == Format::Csv)
+    if (format == TrafficFormat::Csv)
         *m_text << ExchangeRow::columns().join(QLatin1Char(',')) << '\n';
     return true;
 }
@@ -51,7 +54,7 @@ void ExchangeWriter::add(const CaptureExchange &exchange)
     if (!m_text)
         return;
     const CaptureConversation *c = exchange.conversation < m_conversations.size() ? &m_conversations[exchange.conversation] : nullptr;
-    if (m_format == Format::Csv) {
+    if (m_format == TrafficFormat::Csv) {
         QStringList cells = ExchangeRow::cells(exchange, c);
         for (QString &cell : cells)
             cell = ExchangeRow::csvCell(cell);

@@ -20,8 +20,6 @@ namespace mbscope {
 class ExchangeWriter
 {
 public:
-    enum class Format : quint8 { Csv, JsonLines, Pcapng, Pcap };
-
     ExchangeWriter();
     ~ExchangeWriter();
     ExchangeWriter(const ExchangeWriter &) = delete;
@@ -29,7 +27,7 @@ public:
 
     // Creates the file (replacing one there; "-": standard output, for CSV and JSON lines); false
     // with *error naming the file and why.
-    bool open(const QString &path, Format format, QString *error);
+    bool open(const QString &path, TrafficFormat format, QString *error);
     void addConversation(const CaptureConversation &conversation);
     void add(const CaptureExchange &exchange);
     // Writes what is held back and closes; false with *error when the file could not be written.
@@ -42,7 +40,7 @@ public:
     [[nodiscard]] QStringList decodeOptions() const;
 
 private:
-    Format m_format = Format::Csv;
+    TrafficFormat m_format = TrafficFormat::Csv;
     QFile m_file;
     std::unique_ptr<QTextStream> m_text;
     CaptureFileWriter m_capture;

@@ -1,5 +1,6 @@
 #include "enginecore.h"
 
+#include "protocol/rtuframer.h"
 #include "protocol/streamframer.h"
 #include "transport/monotonicclock.h"
 #include "transport/seriallink.h"
@@ -39,12 +40,14 @@ EngineCore::EngineCore(QObject *parent)
     , m_deadlineTimer(this)
     , m_silenceTimer(this)
     , m_openTimer(this)
+    , m_gapTimer(this)
 {
     setUpTimer(m_deadlineTimer);
     setUpTimer(m_silenceTimer);
     setUpTimer(m_openTimer);
     connect(&m_deadlineTimer, &QTimer::timeout, this, &EngineCore::onDeadline);
     connect(&m_silenceTimer, &QTimer::timeout, this, &EngineCore::onSilence);
+    connect(&m_gapTimer, &DueTimer::timeout, this, &EngineCore::pump);
     connect(&m_openTimer, &QTimer::timeout, this, [this] {
         if (m_opening)
             onLinkError(LinkError{LinkError::Kind::Timeout,
@@ -89,6 +92,9 @@ void EngineCore::setTarget(const LinkUrl &url, const EngineOptions &options)
     m_verdict = std::make_unique<ResponseVerdict>(m_framing.framing, m_framing.delimited);
     m_stamps.clear();
     m_router.reset(m_framing, options.lateWindow);
+    m_frameGapNs = url.kind == LinkKind::Rtu && m_framing.framing == Framing::Rtu ? RtuFramer::t35Ns(url.serial.baud) : 0;
+    m_lineQuietNs = 0;
+    m_gapTimer.stop();
     updateBroadcastWait();
     m_recorder->setBatchInterval(options.batchIntervalMs);
     m_recorder->setLink(m_url.toString());
@@ -145,7 +151,7 @@ void EngineCore::pump()
             ensureLink();
             break;
         }
-        if (!m_scheduler.mayStage(depth))
+        if (!m_scheduler.mayStage(depth) || !lineQuiet())
             break;
         stageNext();
         if (!together)
@@ -153,6 +159,15 @@ void EngineCore::pump()
     }
     writeStaged();
     m_pumping = false;
+}
+
+bool EngineCore::lineQuiet()
+{
+    if (m_frameGapNs == 0 || monotonicNowNs() >= m_lineQuietNs)
+        return true;
+    if (!m_gapTimer.isActive())
+        m_gapTimer.start(m_lineQuietNs);
+    return false;
 }
 
 void EngineCore::resetFramer()
@@ -195,6 +210,8 @@ void EngineCore::writeStaged()
             p.characterNs = SerialLink::lineCharacterNs(serial->url().serial);
             p.deadlineNs = serial->lineFreeNs() + WriteScheduler::waitNs(p.out.item, broadcastWaitNs());
         }
+        if (m_frameGapNs > 0)
+            m_lineQuietNs = qMax(m_lineQuietNs, serial->lineFreeNs() + m_frameGapNs);
     }
     armDeadline();
     m_recorder->scheduleBatch();

@@ -13,6 +13,7 @@
 #include "exchange/responseverdict.h"
 #include "exchange/transaction.h"
 
+#include "transport/duetimer.h"
 #include "transport/link.h"
 #include "transport/linkreceiver.h"
 #include "transport/linkurl.h"
@@ -98,6 +99,9 @@ private:
     // Writes what stageNext() gathered in one write.
     void writeStaged();
     void armDeadline();
+    // RTU on a serial port: false (and the gap timer armed) while the line has not yet been
+    // silent t3.5 since its last frame (Serial Line V1.02, 2.5.1.1); true on every other link.
+    [[nodiscard]] bool lineQuiet();
     void onBytesWritten(qint64 lastByteNs);
     void onDeadline();
     void resetFramer();
@@ -152,6 +156,12 @@ private:
     qint64 m_deadlineArmedNs = 0; // the deadline m_deadlineTimer fires for, while it is active
     QTimer m_silenceTimer;
     QTimer m_openTimer;
+    // RTU on a serial port: t3.5 of the line's baud rate (0: no gap kept, every other link), the
+    // moment the line will have been silent that long (from the last byte read or sent), and the
+    // timer (microseconds: t3.5 is 1.75 ms above 19200 baud) that sends the next request then.
+    qint64 m_frameGapNs = 0;
+    qint64 m_lineQuietNs = 0;
+    DueTimer m_gapTimer;
     bool m_pumpScheduled = false;
     bool m_pumping = false;
     bool m_deferPump = false;      // inside a link callback: pump from the event loop

@@ -22,6 +22,8 @@ void EngineCore::onBytesReceived(const QByteArray &bytes, qint64 firstNs, qint64
     if (bytes.isEmpty())
         return;
     m_counters.bytesIn += quint64(bytes.size());
+    if (m_frameGapNs > 0) // before the answer is handled: the next request waits for t3.5 after it
+        m_lineQuietNs = qMax(m_lineQuietNs, lastNs + m_frameGapNs);
     m_stamps.add(m_framer->streamSize(), bytes.size(), firstNs, lastNs);
     m_framer->feed(bytes, lastNs);
     // A datagram is whole: nothing in it waits for the next one (Modbus UDP and RTU over UDP

@@ -15,6 +15,8 @@
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
 
+#include <functional>
+
 namespace mbscope {
 
 namespace {
@@ -94,6 +96,68 @@ void readProfile(JsonReader &reader, const QJsonValue &value, SessionProfile *pr
         p.line = p.column = 0;
         problems->append(p);
     }
+}
+
+// A string of an array (URLs, routes): each one a non-empty string, checked by check (an error
+// text, empty when it is fine) when there is one.
+QStringList readStrings(JsonReader &reader, const QJsonArray &array, const QString &at, const std::function<QString(const QString &)> &check)
+{
+    QStringList out;
+    for (qsizetype i = 0; i < array.size(); ++i) {
+        const QString element = JsonReader::element(at, i);
+        const std::optional<QString> text = reader.stringValue(array.at(i), element);
+        if (!text)
+            continue;
+        const QString problem = text->trimmed().isEmpty() ? QStringLiteral("empty") : check ? check(*text) : QString();
+        if (!problem.isEmpty())
+            reader.error(element, problem);
+        else
+            out.append(*text);
+    }
+    return out;
+}
+
+// One of the words an option takes ("auto", "exception", "silence"), or an error naming them.
+QString readWord(JsonReader &reader, const QJsonObject &o, const QString &path, const char *key, const QStringList &words,
+                 const QString &fallback)
+{
+    const std::optional<QString> word = reader.string(o, path, key);
+    if (!word)
+        return fallback;
+    if (!words.contains(*word)) {
+        reader.error(JsonReader::member(path, key),
+                     QStringLiteral("'%1': expected %2").arg(*word, words.join(QStringLiteral(", "))));
+        return fallback;
+    }
+    return *word;
+}
+
+void readTap(JsonReader &reader, const QJsonValue &value, std::optional<SessionTap> *tap)
+{
+    const QString path = QStringLiteral("tap");
+    const auto o = reader.objectValue(value, path);
+    if (!o)
+        return;
+    reader.checkKeys(*o, path, {"listen", "routes", "readOnly", "refuse", "noAnswer", "retries"});
+    SessionTap t;
+    if (reader.require(*o, path, "listen")) {
+        if (const auto listen = reader.array(*o, path, "listen")) {
+            t.listen = readStrings(reader, *listen, JsonReader::member(path, "listen"), [](const QString &text) {
+                const LinkUrl::Result url = LinkUrl::parse(text, LinkUse::Listen);
+                return url.url ? QString() : url.error;
+            });
+            if (listen->isEmpty())
+                reader.error(JsonReader::member(path, "listen"), QStringLiteral("no URL: where do the masters connect?"));
+        }
+    }
+    if (const auto routes = reader.array(*o, path, "routes"))
+        t.routes = readStrings(reader, *routes, JsonReader::member(path, "routes"), {});
+    t.readOnly = reader.boolean(*o, path, "readOnly").value_or(false);
+    t.refuse = readWord(reader, *o, path, "refuse", {QStringLiteral("exception"), QStringLiteral("silence")}, t.refuse);
+    t.noAnswer = readWord(reader, *o, path, "noAnswer", {QStringLiteral("auto"), QStringLiteral("exception"), QStringLiteral("silence")},
+                          t.noAnswer);
+    t.retries = int(reader.integer(*o, path, "retries", 0, 100).value_or(0));
+    *tap = t;
 }
 
 void readCapture(JsonReader &reader, const QJsonValue &value, std::optional<SessionCapture> *capture)
@@ -237,7 +301,7 @@ SessionLoadResult SessionReader::parse(const QByteArray &json, const QString &so
         }
     }
     reader.checkKeys(root, top, {"$schema", "format", "version", "name", "notes", "target", "requests", "poll", "sweep",
-                                 "profile", "capture", "plan", "watches", "watchLinks", "watchLog"});
+                                 "profile", "capture", "plan", "watches", "watchLinks", "watchLog", "tap"});
 
     SessionDocument d;
     d.name = reader.string(root, top, "name").value_or(QString());
@@ -278,6 +342,8 @@ SessionLoadResult SessionReader::parse(const QByteArray &json, const QString &so
         readProfile(reader, root.value(QLatin1String("profile")), &d.profile, &result.problems);
     if (root.contains(QLatin1String("capture")))
         readCapture(reader, root.value(QLatin1String("capture")), &d.capture);
+    if (root.contains(QLatin1String("tap")))
+        readTap(reader, root.value(QLatin1String("tap")), &d.tap);
     if (const auto plan = reader.array(root, top, "plan")) {
         PlanStepReader steps(reader, names);
         d.plan = steps.readSteps(*plan, QStringLiteral("plan"));

@@ -142,7 +142,7 @@ QJsonObject SessionWriter::toJson(const SessionDocument &d)
 {
     QJsonObject root;
     root.insert(QLatin1String("format"), QLatin1String(SessionDocument::kFormat));
-    root.insert(QLatin1String("version"), SessionDocument::kVersion);
+    root.insert(QLatin1String("version"), d.versionNeeded());
     if (!d.name.isEmpty())
         root.insert(QLatin1String("name"), d.name);
     if (!d.notes.isEmpty())
@@ -173,6 +173,20 @@ QJsonObject SessionWriter::toJson(const SessionDocument &d)
         root.insert(QLatin1String("profile"), d.profile.reference);
     else if (d.profile.kind == SessionProfile::Kind::Inline)
         root.insert(QLatin1String("profile"), d.profile.profile);
+    if (d.tap) {
+        QJsonObject t;
+        t.insert(QLatin1String("listen"), QJsonArray::fromStringList(d.tap->listen));
+        if (!d.tap->routes.isEmpty())
+            t.insert(QLatin1String("routes"), QJsonArray::fromStringList(d.tap->routes));
+        if (d.tap->readOnly) {
+            t.insert(QLatin1String("readOnly"), true);
+            t.insert(QLatin1String("refuse"), d.tap->refuse);
+        }
+        t.insert(QLatin1String("noAnswer"), d.tap->noAnswer);
+        if (d.tap->retries > 0)
+            t.insert(QLatin1String("retries"), d.tap->retries);
+        root.insert(QLatin1String("tap"), t);
+    }
     if (d.capture) {
         QJsonObject c;
         c.insert(QLatin1String("journal"), d.capture->journal);
@@ -193,14 +207,18 @@ QByteArray SessionWriter::toBytes(const SessionDocument &document)
     return QJsonDocument(toJson(document)).toJson(QJsonDocument::Indented);
 }
 
-QString SessionWriter::upgradeNotice(int version)
+QString SessionWriter::upgradeNotice(int version, int written)
 {
-    if (version <= 0 || version >= SessionDocument::kVersion)
+    if (version <= 0 || version >= written)
         return {};
-    return QStringLiteral("upgraded from session version %1 to %2 (watches); mbscope versions that read only version %1 "
+    const QString what = version < 2 && written >= 3 ? QStringLiteral("watches, tap")
+                         : version < 2               ? QStringLiteral("watches")
+                                                     : QStringLiteral("tap");
+    return QStringLiteral("upgraded from session version %1 to %2 (%3); mbscope versions that read only version %1 "
                           "no longer open it")
         .arg(version)
-        .arg(SessionDocument::kVersion);
+        .arg(written)
+        .arg(what);
 }
 
 bool SessionWriter::save(const SessionDocument &document, const QString &path, QString *error, QString *notice)
@@ -212,7 +230,7 @@ bool SessionWriter::save(const SessionDocument &document, const QString &path, Q
         if (old.open(QIODevice::ReadOnly) && old.size() < 64 * 1024 * 1024) {
             const QJsonObject previous = QJsonDocument::fromJson(old.readAll()).object();
             if (previous.value(QLatin1String("format")).toString() == QLatin1String(SessionDocument::kFormat))
-                *notice = upgradeNotice(previous.value(QLatin1String("version")).toInt());
+                *notice = upgradeNotice(previous.value(QLatin1String("version")).toInt(), document.versionNeeded());
         }
         if (!notice->isEmpty())
             *notice = QStringLiteral("%1: %2").arg(path, *notice);

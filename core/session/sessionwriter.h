@@ -24,7 +24,7 @@ public:
                      QString *notice = nullptr);
     // "upgraded from session version 1 to 2 ..." for a document read as version; empty when it
     // is the current version already.
-    [[nodiscard]] static QString upgradeNotice(int version);
+    [[nodiscard]] static QString upgradeNotice(int version, int written);
 };
 
 } // namespace mbscope

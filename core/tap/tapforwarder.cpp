@@ -5,7 +5,6 @@
 #include "exchange/requestitem.h"
 #include "exchange/transaction.h"
 #include "protocol/adubuilder.h"
-#include "protocol/rtuframer.h"
 #include "replay/recordedwrite.h"
 #include "tapmetrics.h"
 #include "transport/monotonicclock.h"
@@ -75,12 +74,6 @@ TapForwarder::Target &TapForwarder::targetFor(const LinkUrl &url)
     }
     Target target;
     target.url = key;
-    if (key.kind == LinkKind::Rtu) {
-        target.gapNs = RtuFramer::t35Ns(key.serial.baud);
-        target.timer = new DueTimer(this);
-        const size_t index = m_targets.size();
-        connect(target.timer, &DueTimer::timeout, this, [this, index] { sendNext(m_targets[index]); });
-    }
     target.core = new EngineCore;
     target.core->setTarget(key, m_settings.engine);
     target.core->setTrafficLog(m_log);
@@ -90,20 +83,6 @@ TapForwarder::Target &TapForwarder::targetFor(const LinkUrl &url)
     connect(target.core, &EngineCore::linkMessage, this, [this, name](const QString &message) { Q_EMIT targetMessage(name, message); });
     m_targets.push_back(target);
     return m_targets.back();
-}
-
-void TapForwarder::sendNext(Target &target)
-{
-    if (target.busy || target.queue.isEmpty())
-        return;
-    if (monotonicNowNs() < target.quietNs) {
-        if (!target.timer->isActive())
-            target.timer->start(target.quietNs);
-        return;
-    }
-    const Queued next = target.queue.takeFirst();
-    target.busy = true;
-    target.core->submit(next.item, next.id);
 }
 
 bool TapForwarder::exceptionsFor(Framing masterFraming) const
@@ -158,7 +137,8 @@ void TapForwarder::forward(const Request &request, Done done)
     item.timeoutMs = route->target.responseTimeoutMs > 0 ? route->target.responseTimeoutMs : m_settings.timeoutMs;
     // A write goes once, as its master sent it: a retry after a timeout could apply it twice
     // (the device may have acted and only its answer got lost). Reads are retried.
-    item.retries = RecordedWrite::of(0, request.unitId, request.pdu) ? 0 : m_settings.retries;
+    const bool write = RecordedWrite::of(0, request.unitId, request.pdu).has_value();
+    item.retries = write ? 0 : m_settings.retries;
     Waiting waiting;
     waiting.done = std::move(done);
     waiting.masterFraming = request.framing;
@@ -169,18 +149,15 @@ void TapForwarder::forward(const Request &request, Done done)
     waiting.masterUnit = request.unitId;
     waiting.receivedNs = request.receivedNs;
     waiting.target = target.url.toString();
-    waiting.targetIndex = size_t(&target - m_targets.data());
+    waiting.core = target.core;
+    if (!write && !waiting.broadcast)
+        waiting.resend = item;
     if (waiting.broadcast)
         ++m_counters.broadcasts;
     ++m_counters.forwarded;
     const quint64 id = target.core->reserveId();
     m_waiting.insert(id, std::move(waiting));
-    if (target.gapNs == 0) {
-        target.core->submit(item, id);
-        return;
-    }
-    target.queue.append(Queued{item, id});
-    sendNext(target);
+    target.core->submit(item, id);
 }
 
 void TapForwarder::onRecord(const Transaction &transaction, quint64 /*tag*/)
@@ -190,14 +167,19 @@ void TapForwarder::onRecord(const Transaction &transaction, quint64 /*tag*/)
     const auto it = m_waiting.find(transaction.id);
     if (it == m_waiting.end())
         return;
-    const Waiting waiting = std::move(*it);
+    Waiting waiting = std::move(*it);
     m_waiting.erase(it);
-    if (Target &target = m_targets[waiting.targetIndex]; target.gapNs > 0) {
-        // The line is silent from the answer's last byte (or from now: a timeout, a link error);
-        // the next request after t3.5 of that.
-        target.busy = false;
-        target.quietNs = (transaction.doneNs > 0 ? transaction.doneNs : monotonicNowNs()) + target.gapNs;
-        sendNext(target);
+    if (transaction.status == TransactionStatus::LinkError && transaction.sentNs > 0 && waiting.resend) {
+        // The request went and the link failed before the answer: a device that closes its
+        // connection (after every answer, or idle) closed it as the request arrived. A read is
+        // sent once more, on a new connection; the master sees an answer, not 0B.
+        ++m_counters.resent;
+        const RequestItem item = *std::exchange(waiting.resend, std::nullopt);
+        EngineCore *core = waiting.core;
+        const quint64 id = core->reserveId();
+        m_waiting.insert(id, std::move(waiting));
+        core->submit(item, id);
+        return;
     }
 
     const auto device = QStringLiteral("device %1").arg(formatDuration(std::max<qint64>(0, transaction.latencyNs())));

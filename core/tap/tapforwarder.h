@@ -5,7 +5,6 @@
 #include "engine/recordlistener.h"
 #include "exchange/requestitem.h"
 #include "sim/simremote.h"
-#include "transport/duetimer.h"
 
 #include <QtCore/QHash>
 #include <QtCore/QList>
@@ -13,6 +12,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace mbscope {
@@ -31,9 +31,7 @@ class TrafficLog;
 //   queue, each with its route's timeout and the retries; a Modbus/TCP target numbers its own
 //   transaction ids (the masters' ids are kept for their answers). On an RTU serial port one
 //   request at a time, the next never before t3.5 of silence after the previous answer's last
-//   byte (Serial Line V1.02, 2.5.1.1): the tap keeps those requests and hands the engine the next
-//   one when the line has been quiet that long (a DueTimer: t3.5 is 1.75 ms above 19200 baud,
-//   which a QTimer's milliseconds would stretch by a quarter).
+//   byte: the engine keeps that gap on every RTU serial link (EngineCore::lineQuiet).
 // - An answer is framed by what arrived (the engine's framer: an exception is complete with its
 //   5 bytes and passed on at once), never by waiting for the timeout.
 // - Same serial framing on both sides and no renumbering: the device's bytes go back exactly as
@@ -68,19 +66,9 @@ Q_SIGNALS:
     void targetMessage(const QString &target, const QString &message);
 
 private:
-    struct Queued {
-        RequestItem item;
-        quint64 id = 0;
-    };
     struct Target {
         LinkUrl url; // without a response timeout: routes differing only in timeout= share it
         EngineCore *core = nullptr;
-        // An RTU serial port: t3.5 of silence before each request (0: the engine sends at once).
-        qint64 gapNs = 0;
-        QList<Queued> queue;       // requests waiting for the line (gapNs > 0 only)
-        bool busy = false;         // a request is with the engine
-        qint64 quietNs = 0;        // the line has been silent t3.5 from then
-        DueTimer *timer = nullptr; // wakes the queue at quietNs
     };
     struct Waiting {
         Done done;
@@ -92,13 +80,15 @@ private:
         quint8 masterUnit = 0;
         qint64 receivedNs = 0; // the master's request in
         QString target;
-        size_t targetIndex = 0; // in m_targets
+        // A read, to send once more on a new connection when the link fails under it (the
+        // device closed just as the request went: some close after every answer). Empty for
+        // writes and broadcasts, and once re-sent.
+        std::optional<RequestItem> resend;
+        EngineCore *core = nullptr;
     };
 
     void onRecord(const Transaction &transaction, quint64 tag) override;
     Target &targetFor(const LinkUrl &url);
-    // Hands a paced target's engine its next request once the line has been quiet t3.5.
-    void sendNext(Target &target);
     // What a master gets instead of an answer: exception `code` when the policy says so.
     [[nodiscard]] Answer nothing(Framing masterFraming, quint8 function, quint8 code, const QString &why) const;
     [[nodiscard]] bool exceptionsFor(Framing masterFraming) const;

@@ -60,6 +60,7 @@ struct TapCounters {
     quint64 noRoute = 0;       // units no route serves
     quint64 refusedWrites = 0; // writes refused by read-only mode
     quint64 broadcasts = 0;    // serial broadcasts forwarded (nobody answers them)
+    quint64 resent = 0;        // reads sent once more after the link failed under them
     quint64 deviceLatencyNsSum = 0; // of the answered and the exceptions: the devices' own time
     quint64 deviceLatencyCount = 0;
 };

@@ -10,7 +10,6 @@ namespace mbscope {
 namespace {
 
 constexpr qint64 kNsPerUs = 1000;
-constexpr qint64 kNsPerMs = 1000000;
 
 QString levelName(bool up)
 {
@@ -43,9 +42,7 @@ RtsDirection::RtsDirection(const Rs485Settings &settings, const QString &device,
     , m_clock(&monotonicNowNs)
     , m_timer(this) // a child, so that moveToThread() takes it along
 {
-    m_timer.setSingleShot(true);
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &RtsDirection::service);
+    connect(&m_timer, &DueTimer::timeout, this, &RtsDirection::service);
 }
 
 qint64 RtsDirection::now() const
@@ -206,8 +203,9 @@ void RtsDirection::arm()
         m_timer.stop();
         return;
     }
-    const qint64 wait = due - now();
-    m_timer.start(int(qMax<qint64>(0, (wait + kNsPerMs - 1) / kNsPerMs)));
+    // The due time on this object's clock (a test's own, or the monotonic one), as a moment on
+    // the monotonic clock the timer counts on.
+    m_timer.start(monotonicNowNs() + qMax<qint64>(0, due - now()));
 }
 
 } // namespace mbscope

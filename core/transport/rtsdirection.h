@@ -1,5 +1,6 @@
 #pragma once
 
+#include "duetimer.h"
 #include "linecontrol.h"
 #include "rs485settings.h"
 
@@ -7,7 +8,6 @@
 #include <QtCore/QList>
 #include <QtCore/QObject>
 #include <QtCore/QString>
-#include <QtCore/QTimer>
 
 #include <functional>
 #include <memory>
@@ -19,9 +19,10 @@ namespace mbscope {
 // but without blocking the thread: libmodbus sleeps (usleep) and waits for the UART (tcdrain);
 // here the bytes are held back by a timer and RTS is put back by another, at the time the port's
 // owner says the last byte will have left the line (SerialLink's lineFreeNs, from the line
-// settings). Timers have a grain of a millisecond, so each wait lasts at least what is asked,
-// rounded up to the next millisecond; a device that answers sooner than that after the last byte
-// finds the transmitter still on (rs485=kernel switches in the driver, at the bit).
+// settings). The timer is a DueTimer (timerfd, to the microsecond, spinning its last 200 us), so
+// RTS goes back within tens of microseconds of lineFreeNs + rts_after on an idle machine, not on
+// the next millisecond tick; a device that answers sooner than that after the last byte still
+// finds the transmitter on (rs485=kernel switches in the driver, at the bit).
 //
 // With rs485=kernel, start() turns the driver's RS-485 mode on (TIOCSRS485: the level and the
 // delays, in whole milliseconds) and sends go straight through; stop() puts the driver's former
@@ -82,7 +83,7 @@ private:
     Writer m_writer;
     Clock m_clock;
     std::unique_ptr<LineControl> m_lines;
-    QTimer m_timer;
+    DueTimer m_timer;
     QList<QByteArray> m_held; // sends waiting for rts_before
     qint64 m_sendAtNs = 0;    // when the held sends go
     qint64 m_restAtNs = 0;    // when RTS goes back to rest (0: not planned)

@@ -259,7 +259,7 @@
 <context>
     <name>TrafficSaver</name>
     <message>
-        <location filename="../../ui/traffic/trafficsaver.cpp" line="+90"/>
+        <location filename="../../ui/traffic/trafficsaver.cpp" line="+69"/>
         <source>Traffic journal (*.mbscope.journal)</source>
         <translation>Jurnal lalu lintas (*.mbscope.journal)</translation>
     </message>
@@ -284,7 +284,7 @@
         <translation>Baris JSON, satu objek per transaksi (*.jsonl)</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+16"/>
         <source>Traffic not saved to %1: %2</source>
         <translation>Lalu lintas tidak disimpan ke %1: %2</translation>
     </message>
@@ -299,7 +299,7 @@
         <translation>%1 frame disimpan ke %2 sebagai %3 paket</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1 frame(s) saved to %2 as %3 transaction(s)</source>
         <translation>%1 frame disimpan ke %2 sebagai %3 transaksi</translation>
     </message>
@@ -314,7 +314,7 @@
         <translation>tidak ada tempat untuk jurnal sementara: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+24"/>
         <source>cannot move %1 to %2</source>
         <translation>tidak dapat memindahkan %1 ke %2</translation>
     </message>
@@ -526,12 +526,12 @@
     </message>
     <message>
         <location line="+19"/>
-        <location line="+226"/>
+        <location line="+281"/>
         <source>&amp;Connect</source>
         <translation>Sa&amp;mbungkan</translation>
     </message>
     <message>
-        <location line="-223"/>
+        <location line="-278"/>
         <source>Disconnect</source>
         <translation>Putuskan</translation>
     </message>
@@ -546,7 +546,7 @@
         <translation>Target yang pernah disambungkan</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>&amp;Link:</source>
         <translation>&amp;Link:</translation>
     </message>
@@ -561,7 +561,12 @@
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+85"/>
+        <source>Options of this target that no field here shows, used on Connect: %1. They came with the target (a recent target, a session or the command line); choose another link type to drop them.</source>
+        <translation>Opsi target ini yang tidak ditampilkan kolom mana pun di sini, dipakai saat Sambung: %1. Opsi ini datang bersama target (target terakhir, sesi, atau baris perintah); pilih jenis tautan lain untuk membuangnya.</translation>
+    </message>
+    <message>
+        <location line="+41"/>
         <source>No serial port found: plug in the adapter and press Refresh, or type the device path</source>
         <translation>Tidak ada port serial: colokkan adaptor lalu tekan Segarkan, atau ketik path perangkatnya</translation>
     </message>
@@ -571,7 +576,7 @@
         <translation>Port serial yang ditemukan: %1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>Choose a serial port: none was found. Plug in the adapter and press Refresh, or type its path (/dev/ttyUSB0).</source>
         <translation>Pilih port serial: tidak ada yang ditemukan. Colokkan adaptor lalu tekan Segarkan, atau ketik path-nya (/dev/ttyUSB0).</translation>
     </message>
@@ -606,7 +611,7 @@
         <translation>Target ini tidak bisa dipakai: %1</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+61"/>
         <source>Dis&amp;connect</source>
         <translation>Putus&amp;kan</translation>
     </message>
@@ -1020,7 +1025,7 @@
         <location filename="../../core/protocol/adurtu.cpp" line="+37"/>
         <location line="+7"/>
         <location line="+39"/>
-        <location filename="../../core/protocol/pduchecks.cpp" line="+12"/>
+        <location filename="../../core/protocol/pduchecks.cpp" line="+13"/>
         <source>Missing bytes</source>
         <translation>Byte yang hilang</translation>
     </message>
@@ -1480,7 +1485,7 @@
     </message>
     <message>
         <location line="+68"/>
-        <location filename="../../core/protocol/pdumultiplewrite.cpp" line="+17"/>
+        <location filename="../../core/protocol/pdumultiplewrite.cpp" line="+18"/>
         <location line="+6"/>
         <source>Start address</source>
         <translation>Alamat awal</translation>
@@ -1497,9 +1502,9 @@
         <location filename="../../core/protocol/pducommevents.cpp" line="+161"/>
         <location filename="../../core/protocol/pdufilerecord.cpp" line="+84"/>
         <location line="+67"/>
-        <location filename="../../core/protocol/pdumaskfifo.cpp" line="+61"/>
+        <location filename="../../core/protocol/pdumaskfifo.cpp" line="+62"/>
         <location filename="../../core/protocol/pdumultiplewrite.cpp" line="+24"/>
-        <location filename="../../core/protocol/pdureadbits.cpp" line="+23"/>
+        <location filename="../../core/protocol/pdureadbits.cpp" line="+24"/>
         <location filename="../../core/protocol/pdureportserverid.cpp" line="+25"/>
         <source>Byte count</source>
         <translation>Jumlah byte</translation>
@@ -2033,7 +2038,7 @@
         <translation>Indeks input</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdureadwrite.cpp" line="+17"/>
+        <location filename="../../core/protocol/pdureadwrite.cpp" line="+18"/>
         <source>Read start address</source>
         <translation>Alamat awal baca</translation>
     </message>

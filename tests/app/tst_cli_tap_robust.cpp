@@ -147,14 +147,16 @@ QByteArray answerPdu(const QString &url, int address, int quantity, int timeoutM
 struct TapCounts {
     bool found = false;
     qint64 requests = -1, forwarded = -1, answered = -1, exceptions = -1, noAnswer = -1, linkErrors = -1, malformed = -1;
+    qint64 resent = 0; // said only when some were
 };
 
 TapCounts tapCounts(const QString &out)
 {
     TapCounts c;
-    static const QRegularExpression line(QStringLiteral("tap: (\\d+) requests, (\\d+) forwarded: (\\d+) answered, (\\d+) exceptions from "
-                                                        "devices, (\\d+) without answer, (\\d+) link errors"));
+    static const QRegularExpression line(QStringLiteral("tap: (\\d+) requests?, (\\d+) forwarded: (\\d+) answered, (\\d+) exceptions? from "
+                                                        "devices, (\\d+) without answer, (\\d+) link errors?"));
     static const QRegularExpression malformed(QStringLiteral("(\\d+) malformed;"));
+    static const QRegularExpression resent(QStringLiteral("(\\d+) reads? sent again after a link closed"));
     const QRegularExpressionMatch m = line.match(out);
     if (!m.hasMatch())
         return c;
@@ -167,6 +169,8 @@ TapCounts tapCounts(const QString &out)
     c.linkErrors = m.captured(6).toLongLong();
     const QRegularExpressionMatch bad = malformed.match(out);
     c.malformed = bad.hasMatch() ? bad.captured(1).toLongLong() : -1;
+    if (const QRegularExpressionMatch again = resent.match(out); again.hasMatch())
+        c.resent = again.captured(1).toLongLong();
     return c;
 }
 
@@ -177,6 +181,22 @@ bool stopsCleanly(Background &tap, QString *out)
     QByteArray err;
     *out = QString::fromUtf8(tap.stop(&err)) + QString::fromUtf8(err);
     return running && out->contains(QLatin1String("interrupted: "));
+}
+
+// Every silence the relay measured before a request (expected of them) lasted t3.5 at least.
+bool keptTheLineGap(const testpeers::PacedLine::Timing &timing, int baud, size_t expected)
+{
+    if (timing.masterGapsNs.size() != expected) {
+        qWarning("%zu silences before a request measured, %zu expected", timing.masterGapsNs.size(), expected);
+        return false;
+    }
+    const qint64 t35 = RtuFramer::t35Ns(baud);
+    const qint64 shortest = *std::min_element(timing.masterGapsNs.begin(), timing.masterGapsNs.end());
+    if (shortest < t35) {
+        qWarning("%.1f us of silence before a request; t3.5 at %d baud is %.1f us", double(shortest) / 1000, baud, double(t35) / 1000);
+        return false;
+    }
+    return true;
 }
 
 } // namespace
@@ -201,6 +221,8 @@ private Q_SLOTS:
     void soak();
     void serialLineGap_data();
     void serialLineGap();
+    void pollKeepsTheLineGap_data();
+    void pollKeepsTheLineGap();
 
 private:
     bool writeFaults(const QString &name, const QByteArray &json, QString *path);
@@ -290,10 +312,17 @@ void TestCliTapRobust::targetDropsConnection_data()
     QTest::addColumn<bool>("restart");   // the device stops and starts again on its port instead
     QTest::addColumn<QString>("first");  // the PDU the master gets for its read at 60
     QTest::addColumn<int>("linkErrors");
-    QTest::newRow("closed before the answer") << QStringLiteral("before") << false << QStringLiteral("83 0B") << 1;
-    QTest::newRow("closed halfway through the answer") << QStringLiteral("midway") << false << QStringLiteral("83 0B") << 1;
-    QTest::newRow("closed after the answer") << QStringLiteral("after") << false << QString() << 0;
-    QTest::newRow("device gone, then back on its port") << QString() << true << QStringLiteral("83 0B") << 1;
+    QTest::addColumn<bool>("once");   // the rule fires only after a pause (the read sent again finds the device answering)
+    QTest::addColumn<int>("resent");  // reads the tap sent again on a new connection
+    // Closed every time: the read sent again meets the same close, and the master gets 0B.
+    QTest::newRow("closed before the answer") << QStringLiteral("before") << false << QStringLiteral("83 0B") << 1 << false << 1;
+    QTest::newRow("closed halfway through the answer") << QStringLiteral("midway") << false << QStringLiteral("83 0B") << 1 << false << 1;
+    QTest::newRow("closed after the answer") << QStringLiteral("after") << false << QString() << 0 << false << 0;
+    // Closed as the request arrived, once (a device that closes idle connections): the read goes
+    // again on a new connection and the master gets its answer.
+    QTest::newRow("closed once before the answer") << QStringLiteral("before") << false << QString() << 0 << true << 1;
+    QTest::newRow("closed once halfway through the answer") << QStringLiteral("midway") << false << QString() << 0 << true << 1;
+    QTest::newRow("device gone, then back on its port") << QString() << true << QStringLiteral("83 0B") << 1 << false << -1;
 }
 
 void TestCliTapRobust::targetDropsConnection()
@@ -302,11 +331,16 @@ void TestCliTapRobust::targetDropsConnection()
     QFETCH(bool, restart);
     QFETCH(QString, first);
     QFETCH(int, linkErrors);
+    QFETCH(bool, once);
+    QFETCH(int, resent);
     QStringList more;
     if (!rule.isEmpty()) {
         QString faults;
-        QVERIFY(writeFaults(QStringLiteral("close-%1.json").arg(rule),
-                            QStringLiteral(R"({"rules": [{"kind": "close", "when": "%1", "start": 60}]})").arg(rule).toUtf8(), &faults));
+        // once: fires only on a request that comes more than 100 ms after the one before it.
+        const QString probability = once ? QStringLiteral(R"(, "probability": {"byIntervalMs": [[100, 0], [101, 1]]})") : QString();
+        QVERIFY(writeFaults(QStringLiteral("close-%1-%2.json").arg(rule).arg(once),
+                            QStringLiteral(R"({"rules": [{"kind": "close", "when": "%1", "start": 60%2}]})").arg(rule, probability).toUtf8(),
+                            &faults));
         more = QStringList{QStringLiteral("--faults"), faults};
     }
     const QString listen = QStringLiteral("tcp://127.0.0.1:%1").arg(closedPort());
@@ -325,6 +359,7 @@ void TestCliTapRobust::targetDropsConnection()
     QCOMPARE(AduBuilder::parse(master.read(13, 5000), Framing::Tcp).pdu, readAnswerPdu(0, 2));
     if (restart)
         device->stop();
+    QTest::qWait(300);
     master.write(readRequest(tap.url(), 60, 2, 2));
     const QByteArray got = AduBuilder::parse(master.read(first.isEmpty() ? 13 : 9, 5000), Framing::Tcp).pdu;
     QCOMPARE(QString::fromLatin1(got.toHex(' ')).toUpper(), first.isEmpty() ? QString::fromLatin1(readAnswerPdu(60, 2).toHex(' ')).toUpper() : first);
@@ -345,6 +380,8 @@ void TestCliTapRobust::targetDropsConnection()
     QCOMPARE(c.requests, 3);
     QCOMPARE(c.linkErrors, qint64(linkErrors));
     QCOMPARE(c.answered, qint64(3 - linkErrors));
+    if (resent >= 0)
+        QCOMPARE(c.resent, qint64(resent));
     if (linkErrors > 0) // said as it happened
         QVERIFY2(out.contains(QStringLiteral("target %1: ").arg(device->url())), qPrintable(out));
 }
@@ -595,13 +632,36 @@ void TestCliTapRobust::serialLineGap()
     QVERIFY2(stopsCleanly(tap, &out), qPrintable(out));
     // Every request but the first followed an answer; the relay measures each silence as no
     // shorter than the tap kept it.
-    QCOMPARE(timing.masterGapsNs.size(), size_t(35));
-    const qint64 t35 = RtuFramer::t35Ns(baud);
-    const qint64 shortest = *std::min_element(timing.masterGapsNs.begin(), timing.masterGapsNs.end());
-    QVERIFY2(shortest >= t35, qPrintable(QStringLiteral("%1 us of silence before a request; t3.5 at %2 baud is %3 us")
-                                             .arg(double(shortest) / 1000, 0, 'f', 1)
-                                             .arg(baud)
-                                             .arg(double(t35) / 1000, 0, 'f', 1)));
+    QVERIFY(keptTheLineGap(timing, baud, 35));
+}
+
+void TestCliTapRobust::pollKeepsTheLineGap_data()
+{
+    serialLineGap_data();
+}
+
+void TestCliTapRobust::pollKeepsTheLineGap()
+{
+    // The gap is the engine's (EngineCore::lineQuiet), not the tap's: `mbscope poll` back to back
+    // on an RTU serial line keeps t3.5 of silence after each answer too. (Before, the next request
+    // left as soon as the answer was read: 20 us of silence on the bare pty pair.)
+    QFETCH(int, baud);
+    QFETCH(bool, paced);
+    const LinkUrl::Result line = LinkUrl::parse(QStringLiteral("rtu:///dev/null?baud=%1").arg(baud));
+    QVERIFY(line.url);
+    testpeers::PacedLine pair;
+    QString error;
+    QVERIFY2(pair.start(paced ? SerialLink::lineCharacterNs(line.url->serial) : 0, &error), qPrintable(error));
+    const QString options = QStringLiteral("?baud=%1").arg(baud);
+    Background device;
+    QVERIFY2(device.start(simulateArgs(QStringLiteral("rtu://") + pair.deviceEnd() + options), &error), qPrintable(error));
+    const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), QStringLiteral("rtu://") + pair.masterEnd() + options,
+                                       QStringLiteral("--unit"), QStringLiteral("1"), QStringLiteral("--address"), QStringLiteral("0"),
+                                       QStringLiteral("--quantity"), QStringLiteral("4"), QStringLiteral("--count"), QStringLiteral("20"),
+                                       QStringLiteral("--interval"), QStringLiteral("0")});
+    QVERIFY2(poll.exitCode == 0, qPrintable(poll.outText() + poll.errText()));
+    const testpeers::PacedLine::Timing timing = pair.take();
+    QVERIFY(keptTheLineGap(timing, baud, 19));
 }
 
 QTEST_GUILESS_MAIN(TestCliTapRobust)

@@ -151,7 +151,7 @@ int main(int argc, char *argv[])
     const qint64 generateStart = nowNs();
     CaptureFileWriter writer;
     QString error;
-    if (!writer.open(path, CaptureFileWriter::Format::Pcapng, &error)) {
+    if (!writer.open(path, TrafficFormat::Pcapng, &error)) {
         std::fprintf(stderr, "bench_capture: %s\n", qPrintable(error));
         return 1;
     }

@@ -69,6 +69,8 @@ void ConnectionBar::watchFields()
         connect(spin, &QSpinBox::valueChanged, this, &ConnectionBar::stateChanged);
     for (QComboBox *combo : findChildren<QComboBox *>())
         connect(combo, &QComboBox::currentIndexChanged, this, &ConnectionBar::stateChanged);
+    for (QCheckBox *check : findChildren<QCheckBox *>()) // Tap, Listen, the Tap row's Read-only
+        connect(check, &QCheckBox::toggled, this, &ConnectionBar::stateChanged);
 }
 
 void ConnectionBar::buildUi()
@@ -208,6 +210,10 @@ void ConnectionBar::buildUi()
     connect(m_tlsFiles, &TlsFilesField::edited, this, &ConnectionBar::clearError);
 
     m_errorLabel = hexerrormark::newErrorLabel(QStringLiteral("connectionErrorLabel"), this);
+    m_keptLabel = new QLabel(this);
+    m_keptLabel->setObjectName(QStringLiteral("keptOptionsLabel"));
+    m_keptLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_keptLabel->hide();
 
     auto *row = new QHBoxLayout;
     row->addWidget(buddyLabel(tr("&Link:"), m_kindCombo, this));
@@ -218,6 +224,7 @@ void ConnectionBar::buildUi()
     row->addWidget(m_unitSpin);
     row->addWidget(buddyLabel(tr("Ti&meout:"), m_timeoutSpin, this));
     row->addWidget(m_timeoutSpin);
+    row->addWidget(m_keptLabel);
     row->addWidget(m_listenOnlyCheck);
     row->addWidget(m_tapCheck);
     row->addWidget(m_connectButton);
@@ -261,8 +268,54 @@ Framing ConnectionBar::framing() const
     return probe.framing();
 }
 
+namespace {
+
+// The URL's options no field of the bar shows (its own defaults for everything else).
+QStringList hiddenOptions(const LinkUrl &url)
+{
+    LinkUrl shown = url;
+    const LinkUrl defaults;
+    shown.serial.turnaroundUs = defaults.serial.turnaroundUs;
+    shown.serial.rs485 = defaults.serial.rs485;
+    shown.delimited = defaults.delimited;
+    shown.connectTimeoutMs = defaults.connectTimeoutMs;
+    shown.listen = defaults.listen;
+    shown.busy = defaults.busy;
+    const auto options = [](const QString &text) {
+        const qsizetype q = text.indexOf(QLatin1Char('?'));
+        return q < 0 ? QStringList() : text.mid(q + 1).split(QLatin1Char('&'), Qt::SkipEmptyParts);
+    };
+    const QStringList plain = options(shown.toString());
+    QStringList hidden;
+    for (const QString &option : options(url.toString())) {
+        if (!plain.contains(option))
+            hidden.append(option);
+    }
+    return hidden;
+}
+
+} // namespace
+
+QString ConnectionBar::keptOptions() const
+{
+    if (!m_kept || m_kept->kind != kind())
+        return {};
+    return hiddenOptions(*m_kept).join(QLatin1Char('&'));
+}
+
+void ConnectionBar::showKept()
+{
+    const QString kept = keptOptions();
+    m_keptLabel->setText(kept.isEmpty() ? QString() : QStringLiteral("+ ") + kept);
+    m_keptLabel->setToolTip(tr("Options of this target that no field here shows, used on Connect: %1. They came with the "
+                               "target (a recent target, a session or the command line); choose another link type to drop them.")
+                                .arg(kept));
+    m_keptLabel->setVisible(!kept.isEmpty());
+}
+
 void ConnectionBar::onKindChanged()
 {
+    showKept();
     const bool serial = kind() == LinkKind::Rtu || kind() == LinkKind::Ascii;
     m_networkPage->setVisible(!serial);
     m_serialPage->setVisible(serial);
@@ -303,7 +356,9 @@ void ConnectionBar::refreshSerialPorts()
 
 std::optional<LinkUrl> ConnectionBar::url()
 {
-    LinkUrl url;
+    // What no field shows comes from the URL set last, while the link type is the same; the
+    // fields then give the rest.
+    LinkUrl url = m_kept && m_kept->kind == kind() ? *m_kept : LinkUrl{};
     url.kind = kind();
     if (url.isSerial()) {
         url.serial.device = m_serialPortCombo->currentText().trimmed();
@@ -366,7 +421,9 @@ std::optional<LinkUrl> ConnectionBar::url()
 
 void ConnectionBar::setUrl(const LinkUrl &url)
 {
+    m_kept = url;
     m_kindCombo->setCurrentIndex(qMax(0, m_kindCombo->findData(int(url.kind))));
+    showKept();
     if (url.isSerial()) {
         m_serialPortCombo->setCurrentText(url.serial.device);
         m_baudCombo->setCurrentText(QString::number(url.serial.baud));

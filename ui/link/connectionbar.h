@@ -52,8 +52,13 @@ public:
 
     // The target as the fields say, with the timeout as ?timeout=; nullopt with errorText() set.
     [[nodiscard]] std::optional<LinkUrl> url();
-    // Fills the fields from a URL (recent target, first run).
+    // Fills the fields from a URL (recent target, first run, session). What the fields do not
+    // show (rts=, rts_before=, rs485=, turnaround=, mode=listen, busy=, connect=, framing
+    // delimiters) is kept and shown beside them (keptOptions()) and goes into url() for as long
+    // as the link type stays the same.
     void setUrl(const LinkUrl &url);
+    // The kept options in URL form ("rts=up&rts_after=1ms"), empty when none apply.
+    [[nodiscard]] QString keptOptions() const;
     [[nodiscard]] int unitId() const;
     void setUnitId(int unit);
     [[nodiscard]] int timeoutMs() const;
@@ -130,6 +135,9 @@ private:
     QPushButton *m_connectButton = nullptr;
     QToolButton *m_recentButton = nullptr;
     QLabel *m_errorLabel = nullptr;
+    QLabel *m_keptLabel = nullptr;  // the options of the last URL set that no field shows
+    std::optional<LinkUrl> m_kept;  // that URL
+    void showKept();
     TlsFilesField *m_tlsFiles = nullptr; // certificate, key and CA of tls:// targets
     LinkKind m_lastKind = LinkKind::Tcp;
     bool m_connected = false;

@@ -169,6 +169,50 @@ void TapFields::setSetup(const TapSetup &setup)
     m_retriesSpin->setValue(setup.settings.retries);
 }
 
+namespace {
+
+// The words of `mbscope tap`'s --no-answer and --refuse, as sessions keep them.
+QString noAnswerWord(TapSettings::NoAnswer noAnswer)
+{
+    switch (noAnswer) {
+    case TapSettings::NoAnswer::Exception: return QStringLiteral("exception");
+    case TapSettings::NoAnswer::Silence: return QStringLiteral("silence");
+    case TapSettings::NoAnswer::Auto: break;
+    }
+    return QStringLiteral("auto");
+}
+
+} // namespace
+
+SessionTap TapFields::sessionTap() const
+{
+    SessionTap tap;
+    tap.listen = words(m_listenEdit->text());
+    tap.routes = words(m_routesEdit->text());
+    tap.readOnly = m_readOnlyCheck->isChecked();
+    tap.refuse = TapSettings::Refusal(m_refusalCombo->currentData().toInt()) == TapSettings::Refusal::Silence ? QStringLiteral("silence")
+                                                                                                            : QStringLiteral("exception");
+    tap.noAnswer = noAnswerWord(TapSettings::NoAnswer(m_noAnswerCombo->currentData().toInt()));
+    tap.retries = m_retriesSpin->value();
+    return tap;
+}
+
+void TapFields::setSessionTap(const SessionTap &tap)
+{
+    m_listenEdit->setText(tap.listen.join(QLatin1Char(' ')));
+    m_routesEdit->setText(tap.routes.join(QLatin1Char(' ')));
+    m_readOnlyCheck->setChecked(tap.readOnly);
+    const TapSettings::Refusal refusal = tap.refuse == QLatin1String("silence") ? TapSettings::Refusal::Silence : TapSettings::Refusal::Exception;
+    m_refusalCombo->setCurrentIndex(qMax(0, m_refusalCombo->findData(int(refusal))));
+    TapSettings::NoAnswer noAnswer = TapSettings::NoAnswer::Auto;
+    for (TapSettings::NoAnswer n : {TapSettings::NoAnswer::Exception, TapSettings::NoAnswer::Silence}) {
+        if (tap.noAnswer == noAnswerWord(n))
+            noAnswer = n;
+    }
+    m_noAnswerCombo->setCurrentIndex(qMax(0, m_noAnswerCombo->findData(int(noAnswer))));
+    m_retriesSpin->setValue(tap.retries);
+}
+
 void TapFields::remember() const
 {
     QSettings settings;

@@ -2,6 +2,8 @@
 
 #include "tapsetup.h"
 
+#include "session/sessiontap.h"
+
 #include <QtWidgets/QWidget>
 
 #include <optional>
@@ -32,6 +34,9 @@ public:
     void setSetup(const TapSetup &setup);
     // Keeps the fields for the next start.
     void remember() const;
+    // The fields as a session keeps them (what was typed, checked when the tap starts), and back.
+    [[nodiscard]] SessionTap sessionTap() const;
+    void setSessionTap(const SessionTap &tap);
 
     // A running tap's fields are what it uses: locked until it stops.
     void setRunning(bool running);

@@ -1,6 +1,7 @@
 #include "sessioncontroller.h"
 
 #include "link/connectionbar.h"
+#include "link/tapfields.h"
 #include "compose/requestcomposer.h"
 #include "compose/savedrequests.h"
 
@@ -98,6 +99,9 @@ SessionDocument SessionController::currentDocument() const
     const ConnectionBar::State bar = m_bar->state();
     d.target.url = bar.target ? bar.target->toString() : QString();
     d.target.timeoutMs = bar.timeoutMs > 0 ? bar.timeoutMs : -1;
+    d.tap.reset();
+    if (m_bar->isTap())
+        d.tap = m_bar->tapFields()->sessionTap();
     d.requests.clear();
     d.poll.reset();
     const RequestComposer::State composer = m_composer->state();
@@ -176,6 +180,10 @@ void SessionController::apply(const SessionDocument &document)
             m_composer->setFraming(url->framing());
         }
     }
+    // The Tap row as the document has it; a document without a tap leaves Tap unticked.
+    if (document.tap)
+        m_bar->tapFields()->setSessionTap(*document.tap);
+    m_bar->setTap(document.tap.has_value());
     // The named requests join the composer's list, merged into what QSettings holds now (another
     // window may have added some since this one read it): a name the list has already takes the
     // document's bytes.

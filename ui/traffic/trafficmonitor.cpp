@@ -236,17 +236,17 @@ void TrafficMonitor::saveTrafficAs()
     if (m_lastSaveDirectory.isEmpty())
         m_lastSaveDirectory = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
     dialog.setDirectory(m_lastSaveDirectory);
-    dialog.selectFile(QStringLiteral("traffic") + TrafficSaver::suffix(TrafficSaver::Format::Journal));
+    dialog.selectFile(QStringLiteral("traffic") + trafficformat::suffix(TrafficFormat::Journal));
     connect(&dialog, &QFileDialog::filterSelected, &dialog, [&dialog](const QString &filter) {
         // The name follows the format picked, so the file is found again under that filter.
         const QStringList picked = dialog.selectedFiles();
         if (picked.isEmpty())
             return;
         QString name = QFileInfo(picked.constFirst()).fileName();
-        const TrafficSaver::Format was = TrafficSaver::formatFor(name);
-        if (name.endsWith(TrafficSaver::suffix(was), Qt::CaseInsensitive))
-            name.chop(TrafficSaver::suffix(was).size());
-        dialog.selectFile(name + TrafficSaver::suffix(TrafficSaver::formatOfFilter(filter)));
+        const TrafficFormat was = TrafficSaver::formatFor(name);
+        if (name.endsWith(trafficformat::suffix(was), Qt::CaseInsensitive))
+            name.chop(trafficformat::suffix(was).size());
+        dialog.selectFile(name + trafficformat::suffix(TrafficSaver::formatOfFilter(filter)));
     });
     if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
         return;
@@ -254,10 +254,10 @@ void TrafficMonitor::saveTrafficAs()
     // A name typed with a format's ending ("bench.pcapng") is saved in that format, whatever the
     // filter says; a name without one gets the filter's format and its ending, so the file shows
     // under the same filter later.
-    const std::optional<TrafficSaver::Format> typed = TrafficSaver::formatOfEnding(path);
-    const TrafficSaver::Format format = typed.value_or(TrafficSaver::formatOfFilter(dialog.selectedNameFilter()));
+    const std::optional<TrafficFormat> typed = trafficformat::ofEnding(path);
+    const TrafficFormat format = typed.value_or(TrafficSaver::formatOfFilter(dialog.selectedNameFilter()));
     if (!typed)
-        path += TrafficSaver::suffix(format);
+        path += trafficformat::suffix(format);
     m_lastSaveDirectory = QFileInfo(path).absolutePath();
     const TrafficSaver::Result result = saveTo(path, format, shownOnly);
     auto *box = new QMessageBox(result.ok ? QMessageBox::Information : QMessageBox::Warning, tr("Save Traffic"),
@@ -268,7 +268,7 @@ void TrafficMonitor::saveTrafficAs()
     box->open();
 }
 
-TrafficSaver::Result TrafficMonitor::saveTo(const QString &path, TrafficSaver::Format format, bool shownOnly)
+TrafficSaver::Result TrafficMonitor::saveTo(const QString &path, TrafficFormat format, bool shownOnly)
 {
     const QStringList &links = m_model->links().names();
     const TrafficSaver::Result result =

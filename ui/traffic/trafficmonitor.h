@@ -40,7 +40,7 @@ public:
     [[nodiscard]] QAction *saveAction() const { return m_saveAction; }
     // Saves without asking (saveTrafficAs asks where, what and in which format, then calls it);
     // the outcome is shown in the status line and emitted.
-    TrafficSaver::Result saveTo(const QString &path, TrafficSaver::Format format, bool shownOnly);
+    TrafficSaver::Result saveTo(const QString &path, TrafficFormat format, bool shownOnly);
 
     [[nodiscard]] bool isPaused() const;
     // The shown row selected, or -1.

@@ -59,30 +59,9 @@ bool writeJournal(const TrafficModel &model, bool shownOnly, const QString &path
 
 } // namespace
 
-TrafficSaver::Format TrafficSaver::formatFor(const QString &path)
+TrafficFormat TrafficSaver::formatFor(const QString &path)
 {
-    const QString name = QFileInfo(path).fileName().toLower();
-    if (name.endsWith(QLatin1String(".pcapng")))
-        return Format::Pcapng;
-    if (name.endsWith(QLatin1String(".pcap")))
-        return Format::Pcap;
-    if (name.endsWith(QLatin1String(".csv")))
-        return Format::Csv;
-    if (name.endsWith(QLatin1String(".jsonl")) || name.endsWith(QLatin1String(".json")))
-        return Format::JsonLines;
-    return Format::Journal;
-}
-
-std::optional<TrafficSaver::Format> TrafficSaver::formatOfEnding(const QString &path)
-{
-    const QString name = QFileInfo(path).fileName().toLower();
-    if (name.endsWith(QLatin1String(".json")))
-        return Format::JsonLines;
-    for (Format format : {Format::Journal, Format::Pcapng, Format::Pcap, Format::Csv, Format::JsonLines}) {
-        if (name.endsWith(suffix(format)))
-            return format;
-    }
-    return std::nullopt;
+    return trafficformat::ofEnding(path).value_or(TrafficFormat::Journal);
 }
 
 QStringList TrafficSaver::nameFilters()
@@ -92,25 +71,15 @@ QStringList TrafficSaver::nameFilters()
             tr("JSON lines, an object per transaction (*.jsonl)")};
 }
 
-TrafficSaver::Format TrafficSaver::formatOfFilter(const QString &filter)
+TrafficFormat TrafficSaver::formatOfFilter(const QString &filter)
 {
+    static constexpr TrafficFormat inOrder[] = {TrafficFormat::Journal, TrafficFormat::Pcapng, TrafficFormat::Pcap, TrafficFormat::Csv,
+                                                TrafficFormat::JsonLines};
     const qsizetype i = nameFilters().indexOf(filter);
-    return i < 0 ? Format::Journal : Format(i);
+    return i < 0 ? TrafficFormat::Journal : inOrder[i];
 }
 
-QString TrafficSaver::suffix(Format format)
-{
-    switch (format) {
-    case Format::Journal: return QStringLiteral(".mbscope.journal");
-    case Format::Pcapng: return QStringLiteral(".pcapng");
-    case Format::Pcap: return QStringLiteral(".pcap");
-    case Format::Csv: return QStringLiteral(".csv");
-    case Format::JsonLines: return QStringLiteral(".jsonl");
-    }
-    return {};
-}
-
-QString TrafficSaver::Result::summary(Format format, const QString &path) const
+QString TrafficSaver::Result::summary(TrafficFormat format, const QString &path) const
 {
     const QLocale locale;
     const QString name = QDir::toNativeSeparators(path);
@@ -118,15 +87,16 @@ QString TrafficSaver::Result::summary(Format format, const QString &path) const
         return tr("Traffic not saved to %1: %2").arg(name, error);
     QString text;
     switch (format) {
-    case Format::Journal:
+    case TrafficFormat::Journal:
         text = tr("%1 frame(s) saved to %2").arg(locale.toString(frames), name);
         break;
-    case Format::Pcapng:
-    case Format::Pcap:
+    case TrafficFormat::Pcapng:
+    case TrafficFormat::Pcap:
         text = tr("%1 frame(s) saved to %2 as %3 packet(s)").arg(locale.toString(frames), name, locale.toString(written));
         break;
-    case Format::Csv:
-    case Format::JsonLines:
+    case TrafficFormat::Csv:
+    case TrafficFormat::JsonLines:
+    case TrafficFormat::Unknown: // save() writes no other
         text = tr("%1 frame(s) saved to %2 as %3 transaction(s)").arg(locale.toString(frames), name, locale.toString(written));
         break;
     }
@@ -135,7 +105,7 @@ QString TrafficSaver::Result::summary(Format format, const QString &path) const
     return text;
 }
 
-TrafficSaver::Result TrafficSaver::save(const TrafficModel &model, bool shownOnly, const QString &path, Format format,
+TrafficSaver::Result TrafficSaver::save(const TrafficModel &model, bool shownOnly, const QString &path, TrafficFormat format,
                                         const QString &target)
 {
     Result result;
@@ -143,7 +113,7 @@ TrafficSaver::Result TrafficSaver::save(const TrafficModel &model, bool shownOnl
     // there as it was.
     const QString part = path + QStringLiteral(".part");
     QFile::remove(part);
-    if (format == Format::Journal) {
+    if (format == TrafficFormat::Journal) {
         if (!writeJournal(model, shownOnly, part, target, &result.frames, &result.error)) {
             QFile::remove(part);
             return result;
@@ -159,11 +129,7 @@ TrafficSaver::Result TrafficSaver::save(const TrafficModel &model, bool shownOnl
         if (!writeJournal(model, shownOnly, journal, target, &result.frames, &result.error))
             return result;
         ExchangeWriter writer;
-        const ExchangeWriter::Format as = format == Format::Csv      ? ExchangeWriter::Format::Csv
-                                          : format == Format::Pcap   ? ExchangeWriter::Format::Pcap
-                                          : format == Format::Pcapng ? ExchangeWriter::Format::Pcapng
-                                                                     : ExchangeWriter::Format::JsonLines;
-        if (!writer.open(part, as, &result.error))
+        if (!writer.open(part, format, &result.error))
             return result;
         const ExchangeSourceReport report = ExchangeSource::read(
             journal, CaptureOptions{}, [&writer](const CaptureExchange &e) { writer.add(e); },
@@ -175,7 +141,7 @@ TrafficSaver::Result TrafficSaver::save(const TrafficModel &model, bool shownOnl
             QFile::remove(part);
             return result;
         }
-        result.written = as == ExchangeWriter::Format::Pcap || as == ExchangeWriter::Format::Pcapng ? writer.packets() : writer.rows();
+        result.written = trafficformat::isCapture(format) ? writer.packets() : writer.rows();
         result.decodeOptions = writer.decodeOptions();
     }
     QFile::remove(path);

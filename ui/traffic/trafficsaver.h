@@ -1,5 +1,7 @@
 #pragma once
 
+#include "capture/trafficformat.h"
+
 #include <QtCore/QCoreApplication>
 #include <QtCore/QString>
 #include <QtCore/QStringList>
@@ -19,8 +21,6 @@ class TrafficSaver
     Q_DECLARE_TR_FUNCTIONS(TrafficSaver)
 
 public:
-    enum class Format : quint8 { Journal, Pcapng, Pcap, Csv, JsonLines };
-
     struct Result {
         bool ok = false;
         QString error;
@@ -28,22 +28,20 @@ public:
         quint64 written = 0;  // transactions (CSV, JSON lines), packets (captures), frames (journal)
         QStringList decodeOptions; // captures: tshark options for RTU ports
         // One line for the status bar or a message box.
-        [[nodiscard]] QString summary(Format format, const QString &path) const;
+        [[nodiscard]] QString summary(TrafficFormat format, const QString &path) const;
     };
 
-    // By the name's ending: .pcapng, .pcap, .csv, .jsonl (or .json), else a journal.
-    [[nodiscard]] static Format formatFor(const QString &path);
-    // The format whose ending path has (".pcapng", ".mbscope.journal", ".json"...), or nothing.
-    [[nodiscard]] static std::optional<Format> formatOfEnding(const QString &path);
-    // The file dialog's filters, in Format order, and the format of the one picked.
+    // By the name's ending (trafficformat::ofEnding), else a journal.
+    [[nodiscard]] static TrafficFormat formatFor(const QString &path);
+    // The file dialog's filters (journal, pcapng, pcap, CSV, JSON lines), and the format of the
+    // one picked (a journal for a filter not in the list).
     [[nodiscard]] static QStringList nameFilters();
-    [[nodiscard]] static Format formatOfFilter(const QString &filter);
-    [[nodiscard]] static QString suffix(Format format); // ".mbscope.journal", ".pcapng"...
+    [[nodiscard]] static TrafficFormat formatOfFilter(const QString &filter);
 
     // Writes what the model holds (shownOnly: the rows shown now, in order) to path, replacing a
     // file there only once the new one is complete. target: the window's link, for the journal's
     // header.
-    [[nodiscard]] static Result save(const TrafficModel &model, bool shownOnly, const QString &path, Format format,
+    [[nodiscard]] static Result save(const TrafficModel &model, bool shownOnly, const QString &path, TrafficFormat format,
                                      const QString &target);
 };
 

@@ -59,32 +59,32 @@ void TestCaptureFileReader::variants_data()
         const QString order = big ? QStringLiteral("big-endian") : QStringLiteral("little-endian");
         QTest::addRow("pcap %s microseconds", qPrintable(order))
             << pcapHeader(big, false, 1) + pcapRecord(big, 1700000000, 123456, kFirst) + pcapRecord(big, 1700000001, 999999, kSecond)
-            << int(CaptureFileReader::Format::Pcap) << 1700000000123456000LL << 1700000001999999000LL << 1u;
+            << int(TrafficFormat::Pcap) << 1700000000123456000LL << 1700000001999999000LL << 1u;
         QTest::addRow("pcap %s nanoseconds", qPrintable(order))
             << pcapHeader(big, true, 113) + pcapRecord(big, 1700000000, 123456789, kFirst) + pcapRecord(big, 1700000001, 5, kSecond)
-            << int(CaptureFileReader::Format::Pcap) << 1700000000123456789LL << 1700000001000000005LL << 113u;
+            << int(TrafficFormat::Pcap) << 1700000000123456789LL << 1700000001000000005LL << 113u;
         QTest::addRow("pcapng %s default microseconds", qPrintable(order))
             << sectionHeader(big) + interfaceDescription(big, 1) + enhancedPacket(big, 0, 1700000000123456ULL, kFirst)
                    + enhancedPacket(big, 0, 1700000001000001ULL, kSecond)
-            << int(CaptureFileReader::Format::Pcapng) << 1700000000123456000LL << 1700000001000001000LL << 1u;
+            << int(TrafficFormat::Pcapng) << 1700000000123456000LL << 1700000001000001000LL << 1u;
         QTest::addRow("pcapng %s nanoseconds, name block between", qPrintable(order))
             << sectionHeader(big) + interfaceDescription(big, 276, 9) + block(big, 4, QByteArray(8, '\0'))
                    + enhancedPacket(big, 0, 1700000000123456789ULL, kFirst) + enhancedPacket(big, 0, 1700000001000000001ULL, kSecond)
-            << int(CaptureFileReader::Format::Pcapng) << 1700000000123456789LL << 1700000001000000001LL << 276u;
+            << int(TrafficFormat::Pcapng) << 1700000000123456789LL << 1700000001000000001LL << 276u;
         QTest::addRow("pcapng %s 2^-10 s and an offset", qPrintable(order))
             << sectionHeader(big) + interfaceDescription(big, 0, 0x80 | 10, 100) + enhancedPacket(big, 0, 1024 + 512, kFirst)
                    + enhancedPacket(big, 0, 2048 + 1, kSecond)
-            << int(CaptureFileReader::Format::Pcapng) << 101500000000LL << 102000976563LL << 0u;
+            << int(TrafficFormat::Pcapng) << 101500000000LL << 102000976563LL << 0u;
         QTest::addRow("pcapng %s obsolete packet blocks", qPrintable(order))
             << sectionHeader(big) + interfaceDescription(big, 1) + obsoletePacket(big, 0, 1700000000123456ULL, kFirst)
                    + obsoletePacket(big, 0, 1700000001000001ULL, kSecond)
-            << int(CaptureFileReader::Format::Pcapng) << 1700000000123456000LL << 1700000001000001000LL << 1u;
+            << int(TrafficFormat::Pcapng) << 1700000000123456000LL << 1700000001000001000LL << 1u;
     }
     // Two sections, the second with its own interfaces: interface 0 is a new one there.
     QTest::newRow("pcapng two sections")
         << sectionHeader(false) + interfaceDescription(false, 1, 9) + enhancedPacket(false, 0, 1000, kFirst) + sectionHeader(true)
                + interfaceDescription(true, 101, 6) + enhancedPacket(true, 0, 2000, kSecond)
-        << int(CaptureFileReader::Format::Pcapng) << 1000LL << 2000000LL << 101u;
+        << int(TrafficFormat::Pcapng) << 1000LL << 2000000LL << 101u;
 }
 
 void TestCaptureFileReader::variants()

@@ -71,7 +71,7 @@ QByteArray capture(const std::vector<Segment> &segments, const QList<int> &dropp
     endpoints.clientPort = 40000;
     endpoints.serverPort = serverPort;
     CaptureFileWriter writer;
-    writer.openInMemory(CaptureFileWriter::Format::Pcapng);
+    writer.openInMemory(TrafficFormat::Pcapng);
     quint32 clientNext = 1000;
     quint32 serverNext = 5000;
     if (handshake) {

@@ -207,7 +207,7 @@ void TestCaptureRoundTrip::roundTrip()
     QFETCH(bool, classicPcap);
 
     CaptureFileWriter writer;
-    writer.openInMemory(classicPcap ? CaptureFileWriter::Format::Pcap : CaptureFileWriter::Format::Pcapng);
+    writer.openInMemory(classicPcap ? TrafficFormat::Pcap : TrafficFormat::Pcapng);
     ExchangePcapExporter exporter(writer);
     for (const CaptureConversation &c : conversations)
         exporter.addConversation(c);
@@ -332,7 +332,7 @@ void TestCaptureRoundTrip::malformedRequests()
     QFETCH(int, malformed);
     const Framing framing = rtuFraming ? Framing::Rtu : Framing::Tcp;
     CaptureFileWriter writer;
-    writer.openInMemory(CaptureFileWriter::Format::Pcapng);
+    writer.openInMemory(TrafficFormat::Pcapng);
     ExchangePcapExporter exporter(writer);
     exporter.addConversation(conversation(0, framing, rtuFraming ? 4001 : 502));
     for (qsizetype i = 0; i < pdus.size(); ++i) {

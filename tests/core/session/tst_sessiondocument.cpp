@@ -93,6 +93,23 @@ void TestSessionDocument::roundTrip_data()
     QTest::newRow("empty") << SessionDocument{};
     {
         SessionDocument d;
+        d.target.url = QStringLiteral("rtu-tcp://127.0.0.1:4001");
+        SessionTap tap;
+        tap.listen = {QStringLiteral("tcp://127.0.0.1:5020"), QStringLiteral("udp://127.0.0.1:5020")};
+        tap.routes = {QStringLiteral("1-10=rtu:///dev/ttyUSB0?baud=19200"), QStringLiteral("20:1=tcp://10.0.0.5:502")};
+        tap.readOnly = true;
+        tap.refuse = QStringLiteral("silence");
+        tap.noAnswer = QStringLiteral("exception");
+        tap.retries = 3;
+        d.tap = tap;
+        QTest::newRow("tap") << d;
+        SessionTap plain;
+        plain.listen = {QStringLiteral("tcp://0.0.0.0:502")};
+        d.tap = plain;
+        QTest::newRow("tap, defaults") << d;
+    }
+    {
+        SessionDocument d;
         d.name = QStringLiteral("RosRao bench \u00b5 \"quoted\"");
         d.notes = QStringLiteral("two\nlines");
         QTest::newRow("name and notes") << d;
@@ -246,8 +263,14 @@ void TestSessionDocument::writtenDefaultsLeftOut()
 {
     const QJsonObject json = SessionWriter::toJson(base());
     QCOMPARE(json.value(QLatin1String("format")).toString(), QStringLiteral("mbscope-session"));
-    QCOMPARE(json.value(QLatin1String("version")).toInt(), SessionDocument::kVersion);
+    // Without a tap, the version an mbscope reading version 2 still opens.
+    QCOMPARE(json.value(QLatin1String("version")).toInt(), 2);
     QCOMPARE(json.keys(), (QStringList{QStringLiteral("format"), QStringLiteral("requests"), QStringLiteral("version")}));
+    SessionDocument tapped = base();
+    tapped.tap = SessionTap{{QStringLiteral("tcp://127.0.0.1:5020")}, {}, false, QStringLiteral("exception"), QStringLiteral("auto"), 0};
+    const QJsonObject withTap = SessionWriter::toJson(tapped);
+    QCOMPARE(withTap.value(QLatin1String("version")).toInt(), SessionDocument::kVersion);
+    QCOMPARE(withTap.value(QLatin1String("tap")).toObject().keys(), (QStringList{QStringLiteral("listen"), QStringLiteral("noAnswer")}));
 }
 
 void TestSessionDocument::saveReplaces()

@@ -105,6 +105,7 @@ void TestSessionSchema::brokenDocumentsRefused_data()
     QTest::newRow("poll-without-end") << "poll-without-end" << "poll";
     QTest::newRow("bad-inline-profile") << "bad-inline-profile" << "profile";
     QTest::newRow("bad-watches") << "bad-watches" << "watchLinks[0].gapMs";
+    QTest::newRow("bad-tap") << "bad-tap" << "tap";
 }
 
 void TestSessionSchema::brokenDocumentsRefused()

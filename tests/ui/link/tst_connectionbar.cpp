@@ -9,6 +9,7 @@
 #include <QtSerialPort/QSerialPortInfo>
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QComboBox>
+#include <QtWidgets/QLabel>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QMenu>
@@ -34,6 +35,7 @@ private Q_SLOTS:
     void rtuNeedsEightDataBits();
     void setUrlRoundTrip_data();
     void setUrlRoundTrip();
+    void keptOptionsGoWithTheLinkType();
     void connectAndDisconnectSignals();
     void recentTargets();
     void serialListIsReadAgainWhenOpened();
@@ -160,6 +162,11 @@ void TestConnectionBar::setUrlRoundTrip_data()
     QTest::newRow("rtu-tcp") << QStringLiteral("rtu-tcp://127.0.0.1:4001?timeout=1000ms");
     QTest::newRow("rtu") << QStringLiteral("rtu:///dev/ttyUSB1?baud=38400&parity=O&data=8&stop=1&timeout=200ms");
     QTest::newRow("ascii") << QStringLiteral("ascii:///dev/ttyS1?baud=9600&parity=E&data=7&stop=1&timeout=1000ms");
+    // Options no field shows are kept (they were dropped: a session's rts=up came back without it).
+    QTest::newRow("rtu, RTS direction") << QStringLiteral("rtu:///dev/ttyUSB0?baud=19200&parity=E&rts=up&rts_before=500us&rts_after=1ms&timeout=1000ms");
+    QTest::newRow("rtu, kernel RS-485") << QStringLiteral("rtu:///dev/ttyAMA0?baud=9600&rs485=kernel&turnaround=2ms&timeout=1000ms");
+    QTest::newRow("tcp, reverse connection") << QStringLiteral("tcp://0.0.0.0:1502?mode=listen&busy=queue&timeout=1000ms");
+    QTest::newRow("rtu-tcp, reverse connection") << QStringLiteral("rtu-tcp://127.0.0.1:4001?mode=listen&busy=refuse&timeout=800ms");
 }
 
 void TestConnectionBar::setUrlRoundTrip()
@@ -172,6 +179,40 @@ void TestConnectionBar::setUrlRoundTrip()
     const std::optional<LinkUrl> back = bar.url();
     QVERIFY2(back, qPrintable(bar.errorText()));
     QCOMPARE(back->toString(), parsed.url->toString());
+    // What no field shows is said beside the fields, and only that.
+    auto *kept = bar.findChild<QLabel *>(QStringLiteral("keptOptionsLabel"));
+    QVERIFY(kept);
+    const bool hidden = url.contains(QLatin1String("rts")) || url.contains(QLatin1String("mode=")) || url.contains(QLatin1String("turnaround"));
+    QCOMPARE(kept->isVisibleTo(&bar), hidden);
+    QCOMPARE(bar.keptOptions().isEmpty(), !hidden);
+    for (const QString &option : bar.keptOptions().split(QLatin1Char('&'), Qt::SkipEmptyParts))
+        QVERIFY2(parsed.url->toString().contains(option) && kept->text().contains(option), qPrintable(option));
+}
+
+void TestConnectionBar::keptOptionsGoWithTheLinkType()
+{
+    const LinkUrl::Result parsed = LinkUrl::parse(QStringLiteral("rtu:///dev/ttyUSB0?baud=19200&rts=up&rts_after=1ms"));
+    QVERIFY(parsed.url);
+    ConnectionBar bar;
+    bar.setUrl(*parsed.url);
+    QCOMPARE(bar.keptOptions(), QStringLiteral("rts=up&rts_after=1ms"));
+    // Another port typed in: the options stay.
+    bar.findChild<QComboBox *>(QStringLiteral("serialPortCombo"))->setCurrentText(QStringLiteral("/dev/ttyUSB1"));
+    std::optional<LinkUrl> url = bar.url();
+    QVERIFY2(url, qPrintable(bar.errorText()));
+    QVERIFY2(url->toString().contains(QLatin1String("rts=up&rts_after=1ms")) && url->serial.device == QLatin1String("/dev/ttyUSB1"),
+             qPrintable(url->toString()));
+    // Another link type: they go, and the label says nothing.
+    chooseKind(bar, LinkKind::Tcp);
+    bar.findChild<QLineEdit *>(QStringLiteral("hostEdit"))->setText(QStringLiteral("127.0.0.1"));
+    url = bar.url();
+    QVERIFY2(url, qPrintable(bar.errorText()));
+    QVERIFY2(!url->toString().contains(QLatin1String("rts")), qPrintable(url->toString()));
+    QVERIFY(bar.keptOptions().isEmpty());
+    QVERIFY(!bar.findChild<QLabel *>(QStringLiteral("keptOptionsLabel"))->isVisibleTo(&bar));
+    // Back to RTU serial: the target set last still holds them.
+    chooseKind(bar, LinkKind::Rtu);
+    QCOMPARE(bar.keptOptions(), QStringLiteral("rts=up&rts_after=1ms"));
 }
 
 void TestConnectionBar::connectAndDisconnectSignals()

@@ -2,6 +2,7 @@
 // requests; a broken file is refused with its problems and changes nothing; the modified flag and
 // the title follow edits; the unsaved-changes prompt is answered without a modal dialog.
 #include "link/connectionbar.h"
+#include "link/tapfields.h"
 #include "guitestsupport.h"
 #include "shell/mainwindow.h"
 #include "compose/rawrequesteditor.h"
@@ -18,7 +19,9 @@
 #include <QtCore/QFile>
 #include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
+#include <QtWidgets/QCheckBox>
 #include <QtWidgets/QDockWidget>
+#include <QtWidgets/QLineEdit>
 #include <QtWidgets/QSpinBox>
 #include <QtWidgets/QStatusBar>
 #include <QtTest/QtTest>
@@ -62,6 +65,7 @@ private Q_SLOTS:
     void layoutIsRestored();
     void versionOneSavedSaysUpgraded();
     void watchesKeptWhenSaved();
+    void tapKeptWhenSaved();
     void trafficNamesTheConnectedLink();
     void quitAfterFirstRunAsksNothing();
 };
@@ -314,6 +318,58 @@ void TestSessionMenu::watchesKeptWhenSaved()
     const SessionLoadResult written = SessionReader::load(copy);
     QVERIFY2(written.ok(), qPrintable(written.errorText()));
     QCOMPARE(written.document->watches, original.document->watches);
+}
+
+void TestSessionMenu::tapKeptWhenSaved()
+{
+    // The connection bar's Tap row goes into the session (version 3) and comes back with it; a
+    // session without a tap unticks Tap. (Before, the tap's set-up lived only in the settings.)
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("tap.mbscope.json"));
+    {
+        MainWindow window;
+        ConnectionBar *bar = window.connectionBar();
+        bar->setUrl(*LinkUrl::parse(QStringLiteral("rtu-tcp://127.0.0.1:4001")).url);
+        bar->setTap(true);
+        bar->tapFields()->listenEdit()->setText(QStringLiteral("tcp://127.0.0.1:5020 udp://127.0.0.1:5020"));
+        bar->tapFields()->routesEdit()->setText(QStringLiteral("20:1=tcp://10.0.0.6:502"));
+        bar->tapFields()->readOnlyCheck()->setChecked(true);
+        QVERIFY(window.session()->isModified());
+        QVERIFY(window.session()->saveAs(path));
+    }
+    const SessionLoadResult saved = SessionReader::load(path);
+    QVERIFY2(saved.ok(), qPrintable(saved.errorText()));
+    QCOMPARE(saved.version, 3);
+    QVERIFY(saved.document->tap);
+    QCOMPARE(saved.document->tap->listen, (QStringList{QStringLiteral("tcp://127.0.0.1:5020"), QStringLiteral("udp://127.0.0.1:5020")}));
+    QCOMPARE(saved.document->tap->routes, QStringList{QStringLiteral("20:1=tcp://10.0.0.6:502")});
+    QVERIFY(saved.document->tap->readOnly);
+
+    MainWindow window;
+    ConnectionBar *bar = window.connectionBar();
+    bar->setTap(false);
+    bar->tapFields()->listenEdit()->setText(QStringLiteral("tcp://127.0.0.1:9999"));
+    QVERIFY(window.session()->open(path));
+    QVERIFY(bar->isTap());
+    QCOMPARE(bar->tapFields()->listenEdit()->text(), QStringLiteral("tcp://127.0.0.1:5020 udp://127.0.0.1:5020"));
+    QCOMPARE(bar->tapFields()->routesEdit()->text(), QStringLiteral("20:1=tcp://10.0.0.6:502"));
+    QVERIFY(bar->tapFields()->readOnlyCheck()->isChecked());
+    QVERIFY(!window.session()->isModified());
+    // The tap the fields make is the one saved: the routes, then the session's target.
+    const std::optional<TapSetup> setup = bar->tapSetup();
+    QVERIFY2(setup, qPrintable(bar->errorText()));
+    QVERIFY2(setup->arguments().join(QLatin1Char(' ')).contains(QLatin1String("--route 20:1=tcp://10.0.0.6:502 --target rtu-tcp://127.0.0.1:4001")),
+             qPrintable(setup->arguments().join(QLatin1Char(' '))));
+    // Unticking Tap is a change of the document; a session without a tap unticks it.
+    bar->setTap(false);
+    QVERIFY(window.session()->isModified());
+    const QString plain = dir.filePath(QStringLiteral("plain.mbscope.json"));
+    QVERIFY(window.session()->saveAs(plain));
+    QCOMPARE(SessionReader::load(plain).version, 2);
+    QVERIFY(window.session()->open(path));
+    QVERIFY(bar->isTap());
+    QVERIFY(window.session()->open(plain));
+    QVERIFY(!bar->isTap());
 }
 
 void TestSessionMenu::layoutIsRestored()

@@ -175,7 +175,7 @@ void TestTapWindow::tapInTheWindow()
     // Save Traffic As keeps both legs, the master's as the master saw it.
     QTemporaryDir folder;
     const QString saved = folder.filePath(QStringLiteral("tap.mbscope.journal"));
-    QVERIFY(window.trafficMonitor()->saveTo(saved, TrafficSaver::Format::Journal, false).ok);
+    QVERIFY(window.trafficMonitor()->saveTo(saved, TrafficFormat::Journal, false).ok);
     QList<CaptureExchange> exchanges;
     const JournalExchangeReader::Result read = JournalExchangeReader::read(saved, [&](const CaptureExchange &e) { exchanges.append(e); });
     QVERIFY2(read.recovery.frames == quint64(rows), qPrintable(read.recovery.message));

@@ -99,7 +99,7 @@ void TestTrafficSave::initTestCase()
 void TestTrafficSave::journalHoldsTheFrames()
 {
     const QString path = m_dir.filePath(QStringLiteral("all.mbscope.journal"));
-    const TrafficSaver::Result r = m_monitor->saveTo(path, TrafficSaver::Format::Journal, false);
+    const TrafficSaver::Result r = m_monitor->saveTo(path, TrafficFormat::Journal, false);
     QVERIFY2(r.ok, qPrintable(r.error));
     QCOMPARE(r.frames, quint64(2 * kReads));
     QList<TrafficFrame> frames;
@@ -122,7 +122,7 @@ void TestTrafficSave::journalHoldsTheFrames()
 void TestTrafficSave::pcapngDecodedByTshark()
 {
     const QString path = m_dir.filePath(QStringLiteral("all.pcapng"));
-    const TrafficSaver::Result r = m_monitor->saveTo(path, TrafficSaver::Format::Pcapng, false);
+    const TrafficSaver::Result r = m_monitor->saveTo(path, TrafficFormat::Pcapng, false);
     QVERIFY2(r.ok, qPrintable(r.error));
     // One option for the RTU port; the traffic list does not keep the connection's client address
     // (the engine's journal does), so the capture says which address stands for it.
@@ -130,7 +130,7 @@ void TestTrafficSave::pcapngDecodedByTshark()
     QVERIFY2(options.size() == 1, qPrintable(r.decodeOptions.join(QStringLiteral(" / "))));
     QVERIFY2(r.decodeOptions.size() == 1 || r.decodeOptions.filter(QStringLiteral("stands for it")).size() == 1,
              qPrintable(r.decodeOptions.join(QStringLiteral(" / "))));
-    const QString summary = r.summary(TrafficSaver::Format::Pcapng, path);
+    const QString summary = r.summary(TrafficFormat::Pcapng, path);
     QVERIFY2(summary.contains(QStringLiteral("-o mbrtu.tcp.port:")), qPrintable(summary));
     if (QStandardPaths::findExecutable(QStringLiteral("tshark")).isEmpty())
         QSKIP("tshark is not installed (Debian: apt-get install tshark)");
@@ -161,8 +161,8 @@ void TestTrafficSave::csvAndJsonLines_data()
     QTest::addColumn<QString>("name");
     QTest::addColumn<int>("header");
     QTest::addColumn<QString>("exception"); // how the exception's row says so
-    QTest::newRow("csv") << int(TrafficSaver::Format::Csv) << QStringLiteral("all.csv") << 1 << QStringLiteral(",exception,0x02");
-    QTest::newRow("json lines") << int(TrafficSaver::Format::JsonLines) << QStringLiteral("all.jsonl") << 0
+    QTest::newRow("csv") << int(TrafficFormat::Csv) << QStringLiteral("all.csv") << 1 << QStringLiteral(",exception,0x02");
+    QTest::newRow("json lines") << int(TrafficFormat::JsonLines) << QStringLiteral("all.jsonl") << 0
                                 << QStringLiteral("\"status\":\"exception\"");
 }
 
@@ -173,7 +173,7 @@ void TestTrafficSave::csvAndJsonLines()
     QFETCH(int, header);
     QFETCH(QString, exception);
     const QString path = m_dir.filePath(name);
-    const TrafficSaver::Result r = m_monitor->saveTo(path, TrafficSaver::Format(format), false);
+    const TrafficSaver::Result r = m_monitor->saveTo(path, TrafficFormat(format), false);
     QVERIFY2(r.ok, qPrintable(r.error));
     QCOMPARE(r.written, quint64(m_transactions));
     const QStringList rows = lines(path);
@@ -189,7 +189,7 @@ void TestTrafficSave::shownFramesOnly()
     direction->setCurrentIndex(2);
     QCOMPARE(m_monitor->model()->rowCount(), kReads);
     const QString path = m_dir.filePath(QStringLiteral("answers.mbscope.journal"));
-    const TrafficSaver::Result r = m_monitor->saveTo(path, TrafficSaver::Format::Journal, true);
+    const TrafficSaver::Result r = m_monitor->saveTo(path, TrafficFormat::Journal, true);
     QVERIFY2(r.ok, qPrintable(r.error));
     QCOMPARE(r.frames, quint64(kReads));
     QList<TrafficFrame> frames;
@@ -215,7 +215,7 @@ void TestTrafficSave::throughTheDialogs()
         // Then the file dialog: CSV picked, a name typed without its ending.
         whenShown<QFileDialog>([this](QFileDialog *dialog) {
             dialog->setOption(QFileDialog::DontUseNativeDialog);
-            dialog->selectNameFilter(TrafficSaver::nameFilters().at(int(TrafficSaver::Format::Csv)));
+            dialog->selectNameFilter(TrafficSaver::nameFilters().at(int(TrafficFormat::Csv)));
             dialog->selectFile(m_dir.filePath(QStringLiteral("picked")));
             QMetaObject::invokeMethod(dialog, "accept");
         });
@@ -240,7 +240,7 @@ void TestTrafficSave::typedEndingChoosesTheFormat()
     QTRY_VERIFY(!m_monitor->findChild<QMessageBox *>(QStringLiteral("trafficSavedMessage")));
     whenShown<QFileDialog>([this](QFileDialog *dialog) {
         dialog->setOption(QFileDialog::DontUseNativeDialog);
-        QCOMPARE(dialog->selectedNameFilter(), TrafficSaver::nameFilters().at(int(TrafficSaver::Format::Journal)));
+        QCOMPARE(dialog->selectedNameFilter(), TrafficSaver::nameFilters().at(int(TrafficFormat::Journal)));
         dialog->selectFile(m_dir.filePath(QStringLiteral("typed.pcapng")));
         QMetaObject::invokeMethod(dialog, "accept");
     });
@@ -260,7 +260,7 @@ void TestTrafficSave::typedEndingChoosesTheFormat()
     // A name without an ending: the filter's format (pcap) and its ending.
     whenShown<QFileDialog>([this](QFileDialog *dialog) {
         dialog->setOption(QFileDialog::DontUseNativeDialog);
-        dialog->selectNameFilter(TrafficSaver::nameFilters().at(int(TrafficSaver::Format::Pcap)));
+        dialog->selectNameFilter(TrafficSaver::nameFilters().at(int(TrafficFormat::Pcap)));
         dialog->selectFile(m_dir.filePath(QStringLiteral("plain")));
         QMetaObject::invokeMethod(dialog, "accept");
     });
