@@ -44,7 +44,39 @@ void CaptureAnalysis::add(const CaptureExchange &exchange)
         ++m_unansweredAtEnd;
         return;
     }
+    // The function code and the unit id alone (ExchangeFields would also format the values: not needed here).
+    FrameKeys keys = ResponseMatcher::keysOf(t.request, exchange.framing);
+    if (!keys.valid)
+        keys = ResponseMatcher::keysOf(t.response, exchange.framing);
+    // While every exchange has had the same function code (unit id), its table's figures are the
+    // overall ones (a null entry): kept apart only from the first exchange that differs, as a
+    // copy of the overall figures then. A capture of one kind of request keeps its samples once.
+    std::unique_ptr<Statistics> *entries[2] = {nullptr, nullptr};
+    const quint8 tableKeys[2] = {quint8(keys.functionCode & 0x7f), keys.unit};
+    std::map<quint8, std::unique_ptr<Statistics>> *tables[2] = {&m_byFunction, &m_byUnit};
+    for (int i = 0; i < 2; ++i) {
+        auto &table = *tables[i];
+        if (table.empty() && m_overallAdded == 0 && keys.valid) {
+            table.emplace(tableKeys[i], nullptr);
+            continue;
+        }
+        if (table.size() == 1 && !table.begin()->second) {
+            if (keys.valid && table.begin()->first == tableKeys[i])
+                continue;
+            table.begin()->second = std::make_unique<Statistics>(m_overall);
+        }
+        if (keys.valid) {
+            entries[i] = &table[tableKeys[i]];
+            if (!*entries[i])
+                *entries[i] = std::make_unique<Statistics>(m_spec);
+        }
+    }
     m_overall.add(t);
+    ++m_overallAdded;
+    for (std::unique_ptr<Statistics> *entry : entries) {
+        if (entry)
+            (*entry)->add(t);
+    }
     if (exchange.recordedAs != CaptureExchange::RecordedAs::Unknown) {
         std::unique_ptr<Statistics> &leg = exchange.recordedAs == CaptureExchange::RecordedAs::Server ? m_answered : m_sent;
         if (!leg)
@@ -58,17 +90,11 @@ void CaptureAnalysis::add(const CaptureExchange &exchange)
         else if (t.status != TransactionStatus::Broadcast)
             ++c.failed;
     }
-    // The function code and the unit id alone (ExchangeFields would also format the values: not needed here).
-    FrameKeys keys = ResponseMatcher::keysOf(t.request, exchange.framing);
-    if (!keys.valid)
-        keys = ResponseMatcher::keysOf(t.response, exchange.framing);
-    if (!keys.valid)
-        return;
-    for (auto *slot : {&m_byFunction[quint8(keys.functionCode & 0x7f)], &m_byUnit[keys.unit]}) {
-        if (!*slot)
-            *slot = std::make_unique<Statistics>(m_spec);
-        (*slot)->add(t);
-    }
+}
+
+const Statistics &CaptureAnalysis::tableStatistics(const std::unique_ptr<Statistics> &entry) const
+{
+    return entry ? *entry : m_overall;
 }
 
 QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
@@ -155,7 +181,7 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
     }
     QJsonArray functions;
     for (const auto &[code, statistics] : m_byFunction) {
-        QJsonObject f = statistics->toJson();
+        QJsonObject f = tableStatistics(statistics).toJson();
         f.insert(QStringLiteral("function"), QStringLiteral("0x%1").arg(hexNumber(code, 2)));
         f.insert(QStringLiteral("name"), QString::fromLatin1(functionName(code)));
         functions.append(f);
@@ -163,7 +189,7 @@ QJsonObject CaptureAnalysis::toJson(const ExchangeSourceReport &report) const
     o.insert(QStringLiteral("functions"), functions);
     QJsonArray units;
     for (const auto &[id, statistics] : m_byUnit) {
-        QJsonObject u = statistics->toJson();
+        QJsonObject u = tableStatistics(statistics).toJson();
         u.insert(QStringLiteral("unit"), int(id));
         units.append(u);
     }
@@ -239,10 +265,10 @@ QString CaptureAnalysis::summary(const ExchangeSourceReport &report) const
         QList<QList<QStringList>> tables(2);
         tables[0].append(header(QStringLiteral("FUNCTION")));
         for (const auto &[code, s] : m_byFunction)
-            tables[0].append(row(QStringLiteral("0x%1 %2").arg(hexNumber(code, 2)).arg(QString::fromLatin1(functionName(code))), *s));
+            tables[0].append(row(QStringLiteral("0x%1 %2").arg(hexNumber(code, 2)).arg(QString::fromLatin1(functionName(code))), tableStatistics(s)));
         tables[1].append(header(QStringLiteral("UNIT")));
         for (const auto &[id, s] : m_byUnit)
-            tables[1].append(row(QString::number(id), *s));
+            tables[1].append(row(QString::number(id), tableStatistics(s)));
         if (hasTwoLegs()) {
             // The tap's two legs: what its masters saw (their requests it answered) and what the
             // devices took (the requests it sent them); the difference is the tap's own time.

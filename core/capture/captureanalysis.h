@@ -61,8 +61,11 @@ private:
         quint64 unmatched = 0;
     };
 
+    [[nodiscard]] const Statistics &tableStatistics(const std::unique_ptr<Statistics> &entry) const;
+
     HistogramSpec m_spec;
     Statistics m_overall;
+    // A null entry: the only one of its table, every exchange so far in it: m_overall's figures.
     std::map<quint8, std::unique_ptr<Statistics>> m_byFunction;
     std::map<quint8, std::unique_ptr<Statistics>> m_byUnit; // the request's unit id (RTU/ASCII address, MBAP unit id)
     // Journals: the requests the recorder answered and those it sent. Both only in the inline
@@ -71,6 +74,7 @@ private:
     std::unique_ptr<Statistics> m_sent;
     [[nodiscard]] bool hasTwoLegs() const { return m_answered && m_sent; }
     std::vector<ConversationCounts> m_conversations;
+    quint64 m_overallAdded = 0; // exchanges in m_overall, Late ones included
     quint64 m_unmatched = 0;
     quint64 m_unansweredAtEnd = 0;
     qint64 m_firstNs = 0;

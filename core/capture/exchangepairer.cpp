@@ -91,23 +91,38 @@ void ExchangePairer::answersLost(quint32 id)
     emitReady();
 }
 
+void ExchangePairer::noteRequestProblems(const CapturedFrame &frame)
+{
+    Dissector::dissect(frame.bytes, DissectOptions{frame.framing, Direction::Request, {}}, m_requestDissection);
+    if (m_requestDissection.fields.worstSeverity() < Severity::Error) {
+        m_lastGoodRequest = frame.bytes;
+        m_lastGoodFraming = frame.framing;
+        return;
+    }
+    ++m_counters.malformedRequests;
+    QString first;
+    for (const Field &f : m_requestDissection.fields.fields()) {
+        if (f.severity >= Severity::Error) {
+            first = f.message;
+            break;
+        }
+    }
+    problem(QStringLiteral("packet %1: malformed request %2: %3")
+                .arg(frame.packet)
+                .arg(QString::fromLatin1(frame.bytes.left(24).toHex(' ').toUpper()), first));
+}
+
 void ExchangePairer::addRequest(const CapturedFrame &frame)
 {
     ++m_counters.requests;
-    Dissector::dissect(frame.bytes, DissectOptions{frame.framing, Direction::Request, {}}, m_requestDissection);
-    if (m_requestDissection.fields.worstSeverity() >= Severity::Error) {
-        ++m_counters.malformedRequests;
-        QString first;
-        for (const Field &f : m_requestDissection.fields.fields()) {
-            if (f.severity >= Severity::Error) {
-                first = f.message;
-                break;
-            }
-        }
-        problem(QStringLiteral("packet %1: malformed request %2: %3")
-                    .arg(frame.packet)
-                    .arg(QString::fromLatin1(frame.bytes.left(24).toHex(' ').toUpper()), first));
-    }
+    // A poll repeats its requests: bytes the last well-formed request had (the MBAP transaction
+    // id apart, which nothing checks) are well-formed too, and are not dissected again.
+    const qsizetype same = frame.framing == Framing::Tcp || frame.framing == Framing::Udp ? 2 : 0;
+    const bool known = !m_lastGoodRequest.isEmpty() && frame.framing == m_lastGoodFraming
+        && frame.bytes.size() == m_lastGoodRequest.size() && frame.bytes.size() >= same
+        && QByteArrayView(frame.bytes).sliced(same) == QByteArrayView(m_lastGoodRequest).sliced(same);
+    if (!known)
+        noteRequestProblems(frame);
 
     const quint64 index = m_firstSlot + m_slots.size();
     Slot &s = m_slots.emplace_back();

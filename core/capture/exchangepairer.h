@@ -83,6 +83,8 @@ private:
         TimedOut lastTimedOut;                // RTU
     };
 
+    // Dissects a request, counts and reports it when malformed, remembers it when well-formed.
+    void noteRequestProblems(const CapturedFrame &frame);
     void addRequest(const CapturedFrame &frame);
     void addResponse(const CapturedFrame &frame);
     void answer(quint64 slotIndex, const CapturedFrame &frame, bool keysMatch, const QString &mismatch);
@@ -104,6 +106,8 @@ private:
     std::vector<std::unique_ptr<Conversation>> m_conversations;
     std::unique_ptr<ResponseVerdict> m_verdicts[4]; // Tcp, Udp, Rtu, Ascii
     Dissection m_requestDissection;
+    QByteArray m_lastGoodRequest; // the last request found well-formed, and its framing
+    Framing m_lastGoodFraming = Framing::Auto;
     QStringList m_problems;
     quint64 m_problemCount = 0;
 };

@@ -24,6 +24,9 @@ struct ModbusFrameExtractor::Flow {
     std::unique_ptr<TcpStreamReassembler> streams[2];
     qint64 lastFeedNs[2]{};
     quint64 lastPacket[2]{};
+    // What the framers cut, swapped out of them (StreamFramer::takeOutput): no list per frame.
+    QList<StreamFrame> frames[2];
+    QList<SkippedBytes> skipped[2];
 };
 
 std::size_t ModbusFrameExtractor::FlowKeyHash::operator()(const FlowKey &key) const noexcept
@@ -257,8 +260,10 @@ void ModbusFrameExtractor::flushDirection(Flow &flow, int direction)
 void ModbusFrameExtractor::collect(Flow &flow, int direction)
 {
     StreamFramer &framer = *flow.framers[direction];
-    const QList<StreamFrame> frames = framer.hasFrames() ? framer.takeFrames() : QList<StreamFrame>();
-    const QList<SkippedBytes> skipped = framer.takeSkipped();
+    QList<StreamFrame> &frames = flow.frames[direction];
+    QList<SkippedBytes> &skipped = flow.skipped[direction];
+    if (!framer.takeOutput(frames, skipped))
+        return;
     const auto emitFrame = [&](const QByteArray &bytes, qint64 timeNs, FrameStatus status, bool undelimited) {
         CapturedFrame frame;
         frame.timeNs = timeNs;

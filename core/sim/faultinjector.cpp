@@ -238,25 +238,44 @@ bool FaultInjector::fires(const FaultRule &rule, const FaultContext &context, Si
     return random.chance(rule.probability);
 }
 
+FaultPlan FaultInjector::planWithoutRules(quint8 unit, const QByteArray &response, qint64 responseDelayNs, bool delayFixed)
+{
+    // No rule: the answer as built after the unit's response time, without the rule machinery
+    // of plan() (its lists cost more than the rest of a request, issue 15). The delay is drawn
+    // as there, so the draws are the same with and without this path. A script's own delay
+    // (delayFixed) stands, as there.
+    FaultPlan plan;
+    qint64 delayNs = responseDelayNs;
+    if (const auto it = m_delays.constFind(unit); it != m_delays.constEnd()) {
+        const qint64 drawn = it->sampleNs(delayRandom(unit));
+        if (!delayFixed)
+            delayNs = drawn;
+    }
+    plan.chunks.append(ResponseChunk{response, delayNs});
+    return plan;
+}
+
+FaultPlan FaultInjector::plan(const SimExchange &exchange)
+{
+    {
+        QMutexLocker lock(&m_mutex);
+        if (m_rules.rules.isEmpty()) {
+            // FaultContext::forExchange's unit: the unit that answers (unit 0 or 255 over MBAP is
+            // the endpoint's first unit, whose response time it takes).
+            return planWithoutRules(exchange.routedUnitId, exchange.responseAdu, exchange.responseDelayNs,
+                                    exchange.responseDelayFixed);
+        }
+    }
+    return plan(FaultContext::forExchange(exchange));
+}
+
 FaultPlan FaultInjector::plan(const FaultContext &context)
 {
     QMutexLocker lock(&m_mutex);
     using K = FaultRule::Kind;
     FaultPlan plan;
-    if (m_rules.rules.isEmpty()) {
-        // No rule: the answer as built after the unit's response time, without the rule
-        // machinery below (its lists cost more than the rest of a request, issue 15). The delay
-        // is drawn as below, so the draws are the same with and without this path.
-        // A script's own delay (responseDelayFixed) stands, as below.
-        qint64 delayNs = context.responseDelayNs;
-        if (const auto it = m_delays.constFind(context.unit); it != m_delays.constEnd()) {
-            const qint64 drawn = it->sampleNs(delayRandom(context.unit));
-            if (!context.responseDelayFixed)
-                delayNs = drawn;
-        }
-        plan.chunks.append(ResponseChunk{context.response, delayNs});
-        return plan;
-    }
+    if (m_rules.rules.isEmpty())
+        return planWithoutRules(context.unit, context.response, context.responseDelayNs, context.responseDelayFixed);
 
     // Which rules fire: each matching rule draws once from its own stream.
     QList<qsizetype> fired;

@@ -87,6 +87,9 @@ public:
     void reset();
 
     [[nodiscard]] FaultPlan plan(const FaultContext &context);
+    // The same for a simulator's exchange: without rules, the plan is made from the exchange as
+    // it is (no FaultContext, whose request is parsed again, per request).
+    [[nodiscard]] FaultPlan plan(const SimExchange &exchange);
 
     // Whether rule could apply to this answer (unit, function, the addresses it meets, its exact
     // start, quantity and written values, and what the fault needs: a checksum, an MBAP header,
@@ -99,6 +102,8 @@ public:
 
 private:
     [[nodiscard]] SimRandom &delayRandom(quint8 unit);
+    // No rule: the answer after the unit's response time (m_mutex held).
+    [[nodiscard]] FaultPlan planWithoutRules(quint8 unit, const QByteArray &response, qint64 responseDelayNs, bool delayFixed);
     void resetStreams(); // with m_mutex held
 
     mutable QMutex m_mutex;

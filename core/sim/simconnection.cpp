@@ -149,6 +149,15 @@ void SimConnection::drain()
         const StreamFrame &frame = frames.at(f++);
         const qint64 received = frame.lastByteNs != 0 ? frame.lastByteNs : monotonicNowNs();
         QPointer<SimConnection> self(this);
+        if (m_simulator->answersLocally(m_endpoint)) {
+            // The units answer at once: no sink to build (a std::function allocated per request).
+            const FaultPlan plan = m_simulator->handleFrame(m_endpoint, frame.bytes, frame.status, m_peer, received, m_connectedNs);
+            if (!self)
+                return;
+            if (!m_closing)
+                enqueue(plan, received);
+            continue;
+        }
         m_simulator->takeFrame(m_endpoint, frame.bytes, frame.status, m_peer, received, m_connectedNs,
                                [self, received](const FaultPlan &plan) {
                                    if (self && !self->m_closing)

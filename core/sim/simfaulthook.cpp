@@ -7,7 +7,7 @@ namespace mbscope {
 Simulator::FaultHook faultHookFor(FaultInjector *injector)
 {
     return [injector](const SimExchange &exchange) {
-        return injector->plan(FaultContext::forExchange(exchange));
+        return injector->plan(exchange);
     };
 }
 

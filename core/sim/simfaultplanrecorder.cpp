@@ -10,7 +10,7 @@ SimFaultPlanRecorder::SimFaultPlanRecorder(Simulator *simulator, FaultInjector *
     : QObject(parent), m_simulator(simulator)
 {
     simulator->setFaultHook([this, injector](const SimExchange &exchange) {
-        m_plan = injector->plan(FaultContext::forExchange(exchange));
+        m_plan = injector->plan(exchange);
         return *m_plan;
     });
     connect(simulator, &Simulator::logged, this, &SimFaultPlanRecorder::onLogged, Qt::DirectConnection);

@@ -197,9 +197,9 @@ void Simulator::setTrafficLog(TrafficLog *log)
     m_trafficPeers.clear();
 }
 
-QList<Simulator::Slot *> Simulator::slotsOf(const SimEndpoint *endpoint)
+Simulator::SlotList Simulator::slotsOf(const SimEndpoint *endpoint)
 {
-    QList<Slot *> out;
+    SlotList out;
     const QList<quint8> &only = endpoint->options().units;
     for (auto &entry : m_units) {
         if (only.isEmpty() || only.contains(entry.first))
@@ -312,7 +312,7 @@ FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, Fra
     if (warmingUp(endpoint, peer, -1, frame, receivedNs, connectedNs))
         return silence;
     const QByteArrayView body = framing.checksum == DelimitedChecksum::None ? frame : frame.first(std::max<qsizetype>(0, frame.size() - 1));
-    const QList<Slot *> units = slotsOf(endpoint);
+    const SlotList units = slotsOf(endpoint);
     std::optional<LineAnswer> scripted;
     qint64 scriptDelayNs = -1;
     if (m_lineScript && m_lineScript->handlesFrames())
@@ -365,7 +365,7 @@ FaultPlan Simulator::handleLine(SimEndpoint *endpoint, QByteArrayView frame, Fra
 }
 
 bool Simulator::acceptModbusFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status, const QString &peer,
-                                  const QList<Slot *> &units, AduParts *out)
+                                  const SlotList &units, AduParts *out)
 {
     const Framing framing = endpoint->framing();
     const bool serial = isSerialFraming(framing);
@@ -417,7 +417,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
     silence.drop = true;
     const Framing framing = endpoint->framing();
     const bool serial = isSerialFraming(framing);
-    const QList<Slot *> units = slotsOf(endpoint);
+    const SlotList units = slotsOf(endpoint);
     AduParts parts;
     if (!acceptModbusFrame(endpoint, adu, status, peer, units, &parts))
         return silence;
@@ -648,10 +648,15 @@ quint64 Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, Q
 
 // ---- Requests answered by the remote (setRemote) ----
 
+bool Simulator::answersLocally(const SimEndpoint *endpoint) const
+{
+    return !m_remote || endpoint->url().delimited.enabled;
+}
+
 void Simulator::takeFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status, const QString &peer,
                           qint64 receivedNs, qint64 connectedNs, const PlanSink &sink)
 {
-    if (!m_remote || endpoint->url().delimited.enabled) {
+    if (answersLocally(endpoint)) {
         sink(handleFrame(endpoint, adu, status, peer, receivedNs, connectedNs));
         return;
     }

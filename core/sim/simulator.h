@@ -16,6 +16,7 @@
 #include <QtCore/QList>
 #include <QtCore/QObject>
 #include <QtCore/QPointer>
+#include <QtCore/QVarLengthArray>
 
 #include <functional>
 #include <map>
@@ -124,6 +125,9 @@ public:
     // What the endpoints call: sink gets the plan to execute, at once (the units answer
     // synchronously) or later (a remote's answer); not at all when the simulator or the endpoint
     // is gone by then. The endpoint must check that its output still exists when sink runs.
+    // True when takeFrame would call its sink at once with handleFrame's plan (no remote, or a
+    // delimited endpoint): the endpoint may then call handleFrame itself and build no sink.
+    [[nodiscard]] bool answersLocally(const SimEndpoint *endpoint) const;
     using PlanSink = std::function<void(const FaultPlan &plan)>;
     void takeFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status, const QString &peer,
                    qint64 receivedNs, qint64 connectedNs, const PlanSink &sink);
@@ -152,7 +156,9 @@ private:
         std::unique_ptr<SimProcessor> processor;
         ScriptHost *script = nullptr;
     };
-    [[nodiscard]] QList<Slot *> slotsOf(const SimEndpoint *endpoint);
+    // The units an endpoint serves; inline up to 8, so that a request allocates no list.
+    using SlotList = QVarLengthArray<Slot *, 8>;
+    [[nodiscard]] SlotList slotsOf(const SimEndpoint *endpoint);
     // Returns the traffic id the request was logged with (0: no traffic log, or no request).
     quint64 log(SimEndpoint *endpoint, const QString &peer, int unitId, QByteArrayView request,
                 const QByteArray &response, SimLogEntry::Verdict verdict, const QString &reason,
@@ -167,7 +173,7 @@ private:
     // The frame checks every request passes first (checksum, MBAP header, a function code):
     // false, logged, when it is dropped; *out holds its parts.
     bool acceptModbusFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status, const QString &peer,
-                           const QList<Slot *> &units, AduParts *out);
+                           const SlotList &units, AduParts *out);
     // A request the remote is answering.
     struct Pending {
         QPointer<SimEndpoint> endpoint;

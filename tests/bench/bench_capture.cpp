@@ -6,11 +6,18 @@
 // output thrown away:
 //   mbscope analyze FILE --json                       (pairs, decodes, statistics, histogram)
 //   tshark -r FILE -T fields -e modbus.func_code      (tshark's single pass with its dissectors)
+//   bench_capture --floor FILE                        (the floor: capturefloor.cpp, a C loop that
+//                                                      only reads the file and pairs by transaction id)
 // and prints the wall time and peak resident memory (getrusage/wait4 ru_maxrss) of each, and
-// transactions per second. Figures are printed, never asserted; mbscope's JSON count is checked,
-// so the run also proves the analysis saw every transaction.
+// transactions per second, and mbscope's time and memory as a ratio to the floor's. Figures are
+// printed, never asserted; mbscope's JSON count and the floor's pairs are checked, so the run also
+// proves both saw every transaction.
 //
-// Usage: bench_capture [--transactions N] [--keep FILE] [--no-tshark]
+// --compare PATH runs another mbscope build's analyze in the same turns (before and after figures).
+//
+// Usage: bench_capture [--transactions N] [--keep FILE] [--no-tshark] [--repeat N] [--compare PATH]
+#include "capturefloor.h"
+
 #include "capture/capturefilewriter.h"
 #include "capture/exchangepcapexporter.h"
 #include "protocol/adubuilder.h"
@@ -29,6 +36,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <vector>
 
@@ -97,12 +105,24 @@ void printRun(const char *name, const Run &run, qint64 transactions)
 
 } // namespace
 
+// The floor's own process (bench_capture --floor FILE): prints "pairs requests packets" and exits.
+int runFloor(const char *path)
+{
+    const CaptureFloorResult r = captureFloorRun(path, 502);
+    std::printf("%lld %lld %lld %lld\n", r.pairs, r.requests, r.packets, r.latencyNsSum);
+    return r.error;
+}
+
 int main(int argc, char *argv[])
 {
+    if (argc == 3 && std::strcmp(argv[1], "--floor") == 0)
+        return runFloor(argv[2]);
     QCoreApplication app(argc, argv);
     qint64 transactions = 1'000'000;
     QString keep;
     bool withTshark = true;
+    int repeat = 1;
+    QString compare;
     const QStringList args = QCoreApplication::arguments();
     for (qsizetype i = 1; i < args.size(); ++i) {
         if (args.at(i) == QLatin1String("--transactions") && i + 1 < args.size())
@@ -111,13 +131,17 @@ int main(int argc, char *argv[])
             keep = args.at(++i);
         else if (args.at(i) == QLatin1String("--no-tshark"))
             withTshark = false;
+        else if (args.at(i) == QLatin1String("--repeat") && i + 1 < args.size())
+            repeat = args.at(++i).toInt();
+        else if (args.at(i) == QLatin1String("--compare") && i + 1 < args.size())
+            compare = args.at(++i);
         else {
-            std::fprintf(stderr, "usage: bench_capture [--transactions N] [--keep FILE] [--no-tshark]\n");
+            std::fprintf(stderr, "usage: bench_capture [--transactions N] [--keep FILE] [--no-tshark] [--repeat N] [--compare PATH]\n");
             return 2;
         }
     }
-    if (transactions <= 0) {
-        std::fprintf(stderr, "bench_capture: --transactions must be a positive number\n");
+    if (transactions <= 0 || repeat <= 0) {
+        std::fprintf(stderr, "bench_capture: --transactions and --repeat must be positive numbers\n");
         return 2;
     }
     QTemporaryDir dir;
@@ -165,9 +189,46 @@ int main(int argc, char *argv[])
                 static_cast<long long>(transactions), static_cast<unsigned long long>(writer.packets()),
                 double(QFileInfo(path).size()) / 1048576.0, generateSeconds);
 
+    // The floor and mbscope take turns (--repeat N: each N times, the fastest of each kept).
     const QString json = dir.filePath(QStringLiteral("analyze.json"));
-    const Run ours = runChild(QStringLiteral(MBSCOPE_EXECUTABLE), {QStringLiteral("analyze"), path, QStringLiteral("--json")}, json);
+    const QString floorOut = dir.filePath(QStringLiteral("floor.txt"));
+    Run ours;
+    Run floorRun;
+    Run compared;
+    for (int round = 0; round < repeat; ++round) {
+        const Run floorTurn = runChild(QCoreApplication::applicationFilePath(), {QStringLiteral("--floor"), path}, floorOut);
+        if (round == 0 || floorTurn.seconds < floorRun.seconds)
+            floorRun = floorTurn;
+        const Run oursTurn = runChild(QStringLiteral(MBSCOPE_EXECUTABLE), {QStringLiteral("analyze"), path, QStringLiteral("--json")}, json);
+        if (round == 0 || oursTurn.seconds < ours.seconds)
+            ours = oursTurn;
+        if (!compare.isEmpty()) {
+            const Run comparedTurn = runChild(compare, {QStringLiteral("analyze"), path, QStringLiteral("--json")}, {});
+            if (round == 0 || comparedTurn.seconds < compared.seconds)
+                compared = comparedTurn;
+        }
+    }
+    printRun("floor: read and pair (capturefloor.cpp)", floorRun, transactions);
+    long long floorPairs = -1;
+    long long floorRequests = -1;
+    if (QFile floorFile(floorOut); floorFile.open(QIODevice::ReadOnly)) {
+        const QList<QByteArray> fields = floorFile.readAll().simplified().split(' ');
+        if (fields.size() >= 2) {
+            floorPairs = fields.at(0).toLongLong();
+            floorRequests = fields.at(1).toLongLong();
+        }
+    }
+    std::printf("%-44s %lld requests, %lld paired\n", "  the floor found", floorRequests, floorPairs);
     printRun("mbscope analyze FILE --json", ours, transactions);
+    if (floorRun.seconds > 0 && floorRun.maxRssKb > 0)
+        std::printf("mbscope takes %.2fx the floor's time and %.2fx its peak memory (%.1f MiB more)\n", ours.seconds / floorRun.seconds,
+                    double(ours.maxRssKb) / double(floorRun.maxRssKb), double(ours.maxRssKb - floorRun.maxRssKb) / 1024.0);
+    if (!compare.isEmpty()) {
+        printRun("compared: PATH analyze FILE --json", compared, transactions);
+        if (floorRun.seconds > 0)
+            std::printf("the compared build takes %.2fx the floor's time (%.1f MiB peak)\n", compared.seconds / floorRun.seconds,
+                        double(compared.maxRssKb) / 1024.0);
+    }
     QFile result(json);
     const QJsonObject analysis = result.open(QIODevice::ReadOnly) ? QJsonDocument::fromJson(result.readAll()).object() : QJsonObject();
     // A request the capture ends within the timeout of is unanswered at its end, in no figure.
@@ -192,6 +253,11 @@ int main(int argc, char *argv[])
                         double(ours.maxRssKb) / double(std::max(1L, theirs.maxRssKb)));
     } else {
         std::printf("tshark: not run (%s)\n", withTshark ? "not installed: apt-get install tshark" : "--no-tshark");
+    }
+    if (!floorRun.ok || floorRun.exitCode != 0 || floorRequests != transactions) {
+        std::fprintf(stderr, "bench_capture: the floor read %lld of %lld requests (exit %d)\n", floorRequests,
+                     static_cast<long long>(transactions), floorRun.exitCode);
+        return 1;
     }
     if (!ours.ok || counted != transactions) {
         std::fprintf(stderr, "bench_capture: mbscope analyze counted %lld of %lld transactions\n", static_cast<long long>(counted),

@@ -6,10 +6,15 @@
 #include "capture/capturefilewriter.h"
 #include "capture/exchangepcapexporter.h"
 #include "capture/exchangesource.h"
+#include "exchange/responsematcher.h"
 #include "protocol/adubuilder.h"
+
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
 
 #include <QtTest/QTest>
 
+#include <map>
 #include <vector>
 
 using namespace mbscope;
@@ -88,6 +93,8 @@ class TestCaptureRoundTrip : public QObject
 private slots:
     void roundTrip_data();
     void roundTrip();
+    void malformedRequests_data();
+    void malformedRequests();
 };
 
 void TestCaptureRoundTrip::roundTrip_data()
@@ -155,6 +162,20 @@ void TestCaptureRoundTrip::roundTrip_data()
             << std::vector{conversation(0, tcp, 502)}
             << std::vector{exchange(0, tcp, mbap(8, 1, "0300000001"), kStart, mbap(8, 1, "03020001"), kStart + kMs, ok), cut}
             << false;
+    }
+    {
+        // One function code and unit for ten reads, then others: the per-function and per-unit
+        // tables, the overall figures while they are alike, are kept apart from the first that differs.
+        std::vector<CaptureExchange> e;
+        for (int i = 0; i < 10; ++i) {
+            const qint64 t = kStart + i * 10 * kMs;
+            e.push_back(exchange(0, tcp, mbap(quint16(i), 1, "0300000001"), t, mbap(quint16(i), 1, "03020001"), t + kMs + i * 7000, ok));
+        }
+        e.push_back(exchange(0, tcp, mbap(10, 2, "0300000001"), kStart + 200 * kMs, mbap(10, 2, "03020001"), kStart + 203 * kMs, ok));
+        e.push_back(exchange(0, tcp, mbap(11, 2, "0600010003"), kStart + 300 * kMs, mbap(11, 2, "8602"), kStart + 302 * kMs,
+                             TransactionStatus::Exception, 2));
+        e.push_back(exchange(0, tcp, mbap(12, 1, "0300000001"), kStart + 400 * kMs, mbap(12, 1, "03020001"), kStart + 409 * kMs, ok));
+        QTest::newRow("mbap: one function and unit, then others") << std::vector{conversation(0, tcp, 502)} << e << false;
     }
     QTest::newRow("mbap over ipv6, two conversations")
         << std::vector{conversation(0, tcp, 502, true), conversation(1, tcp, 1502)}
@@ -257,6 +278,76 @@ void TestCaptureRoundTrip::roundTrip()
     QCOMPARE(analysis.statistics().latency().count(), truth.latency().count());
     QCOMPARE(analysis.statistics().latency().maxNs(), truth.latency().maxNs());
     QCOMPARE(analysis.statistics().latency().medianNs(), truth.latency().medianNs());
+
+    // Per function code and per unit id: the figures of the transactions with that code or unit.
+    std::map<quint8, Statistics> byFunction;
+    std::map<quint8, Statistics> byUnit;
+    for (const CaptureExchange &e : exchanges) {
+        const FrameKeys keys = ResponseMatcher::keysOf(e.transaction.request, e.framing);
+        if (e.kind != CaptureExchange::Kind::Transaction || !keys.valid)
+            continue;
+        byFunction[quint8(keys.functionCode & 0x7f)].add(e.transaction);
+        byUnit[keys.unit].add(e.transaction);
+    }
+    const QJsonObject json = analysis.toJson(report);
+    const auto compareTable = [](const QJsonArray &table, const std::map<quint8, Statistics> &expected, const QString &key) {
+        QCOMPARE(table.size(), qsizetype(expected.size()));
+        qsizetype i = 0;
+        for (const auto &[k, statistics] : expected) {
+            QJsonObject row = table.at(i++).toObject();
+            row.remove(QStringLiteral("function"));
+            row.remove(QStringLiteral("name"));
+            row.remove(QStringLiteral("unit"));
+            QVERIFY2(row == statistics.toJson(), qPrintable(QStringLiteral("%1 %2: %3").arg(key).arg(int(k)).arg(
+                                                     QString::fromUtf8(QJsonDocument(row).toJson(QJsonDocument::Compact)))));
+        }
+    };
+    compareTable(json.value(QStringLiteral("functions")).toArray(), byFunction, QStringLiteral("function"));
+    compareTable(json.value(QStringLiteral("units")).toArray(), byUnit, QStringLiteral("unit"));
+}
+
+// Every malformed request is counted, however often well-formed ones with nearly the same bytes
+// came before it (the pairer dissects a request again only when its bytes differ from the last
+// well-formed one's, the MBAP transaction id apart).
+void TestCaptureRoundTrip::malformedRequests_data()
+{
+    QTest::addColumn<bool>("rtuFraming");
+    QTest::addColumn<QList<QByteArray>>("pdus"); // hex, one request each, unit 1
+    QTest::addColumn<int>("malformed");
+    const QByteArray good = "0300000002";
+    const QByteArray zero = "0300000000"; // quantity 0: outside 1-125
+    const QByteArray over = "030000007e"; // 126 registers
+    QTest::newRow("mbap: one request repeated") << false << QList<QByteArray>{good, good, good, good} << 0;
+    QTest::newRow("mbap: good, bad of the same size, good") << false << QList<QByteArray>{good, zero, good} << 1;
+    QTest::newRow("mbap: the same bad request twice") << false << QList<QByteArray>{zero, zero} << 2;
+    QTest::newRow("mbap: good, two bad ones, good, bad") << false << QList<QByteArray>{good, zero, over, good, over} << 3;
+    QTest::newRow("rtu: good, bad, good, bad") << true << QList<QByteArray>{good, zero, good, zero} << 2;
+    QTest::newRow("rtu: one request repeated") << true << QList<QByteArray>{good, good, good} << 0;
+}
+
+void TestCaptureRoundTrip::malformedRequests()
+{
+    QFETCH(bool, rtuFraming);
+    QFETCH(QList<QByteArray>, pdus);
+    QFETCH(int, malformed);
+    const Framing framing = rtuFraming ? Framing::Rtu : Framing::Tcp;
+    CaptureFileWriter writer;
+    writer.openInMemory(TrafficFormat::Pcapng);
+    ExchangePcapExporter exporter(writer);
+    exporter.addConversation(conversation(0, framing, rtuFraming ? 4001 : 502));
+    for (qsizetype i = 0; i < pdus.size(); ++i) {
+        const QByteArray request = rtuFraming ? rtu(1, pdus.at(i)) : mbap(quint16(i), 1, pdus.at(i).constData());
+        exporter.add(exchange(0, framing, request, kStart + i * 2000 * kMs, {}, 0, TransactionStatus::Timeout));
+    }
+    exporter.finish();
+    QString error;
+    QVERIFY(writer.close(&error));
+    CaptureOptions options;
+    options.mbapPorts = {502};
+    options.rtuPorts = {4001};
+    const ExchangeSourceReport report = ExchangeSource::readCapture(writer.bytes(), options, [](const CaptureExchange &) {});
+    QCOMPARE(report.pairs.requests, quint64(pdus.size()));
+    QCOMPARE(report.pairs.malformedRequests, quint64(malformed));
 }
 
 QTEST_GUILESS_MAIN(TestCaptureRoundTrip)

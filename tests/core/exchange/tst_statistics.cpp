@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -145,6 +146,46 @@ private slots:
         // Population standard deviation of 1..n: sqrt((n^2 - 1) / 12).
         QVERIFY(qAbs(s.stddevNs() - std::sqrt((1e12 - 1.0) / 12.0)) < 1e-6);
         QVERIFY(s.memoryBytes() <= 8 * 1000000 + 64);
+    }
+
+    // Large batches are radix sorted over their range: every shape of range gives std::sort's order,
+    // and samples added after a query are sorted and merged into the ones already sorted.
+    void sortedLikeStdSort_data()
+    {
+        QTest::addColumn<qint64>("low");
+        QTest::addColumn<qint64>("high");
+        QTest::addColumn<int>("count");
+        QTest::addColumn<int>("queryAfter"); // a percentile asked after this many samples, 0: only at the end
+        QTest::newRow("microseconds: 2 passes") << 100000LL << 2200000LL << 100000 << 0;
+        QTest::newRow("seconds: 3 passes") << 0LL << 5000000000LL << 100000 << 0;
+        QTest::newRow("all equal") << 7LL << 7LL << 10000 << 0;
+        QTest::newRow("negative and positive") << -3000000LL << 3000000LL << 50000 << 0;
+        QTest::newRow("the whole 64-bit range") << std::numeric_limits<qint64>::min() << std::numeric_limits<qint64>::max() << 50000 << 0;
+        QTest::newRow("few distinct values") << 1000LL << 1003LL << 20000 << 0;
+        QTest::newRow("below the radix threshold") << 0LL << 1000000LL << 4000 << 0;
+        QTest::newRow("sorted, then a large batch merged") << 0LL << 3000000LL << 60000 << 20000;
+        QTest::newRow("large batch, then a small one merged") << 0LL << 3000000LL << 30000 << 29000;
+    }
+    void sortedLikeStdSort()
+    {
+        QFETCH(qint64, low);
+        QFETCH(qint64, high);
+        QFETCH(int, count);
+        QFETCH(int, queryAfter);
+        std::mt19937_64 random(42);
+        std::uniform_int_distribution<qint64> draw(low, high);
+        std::vector<qint64> values;
+        LatencySamples s;
+        for (int i = 0; i < count; ++i) {
+            values.push_back(draw(random));
+            s.add(values.back());
+            if (i + 1 == queryAfter)
+                (void)s.medianNs();
+        }
+        std::sort(values.begin(), values.end());
+        const std::span<const qint64> sorted = s.sorted();
+        QVERIFY(std::equal(sorted.begin(), sorted.end(), values.begin(), values.end()));
+        QCOMPARE(s.percentileNs(99), values[std::size_t(std::ceil(0.99 * count - 1e-9)) - 1]);
     }
 
     void counters()

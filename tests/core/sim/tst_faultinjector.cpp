@@ -4,6 +4,7 @@
 #include "protocol/adubuilder.h"
 #include "sim/faultbytes.h"
 #include "sim/faultinjector.h"
+#include "sim/simexchange.h"
 
 #include <QtCore/QJsonDocument>
 #include <QtCore/QThread>
@@ -238,6 +239,8 @@ private slots:
     void delayDistributions_data();
     void delayDistributions();
     void unitResponseDelay();
+    void planOfExchange_data();
+    void planOfExchange();
     void reproducible();
     void setRulesWhileRunning();
     void setRulesFromAnotherThread();
@@ -592,6 +595,80 @@ void TestFaultInjector::unitResponseDelay()
     injector.setRules(FaultRuleSet());
     injector.clearResponseDelays();
     QCOMPARE(injector.plan(rtuContext()).chunks.at(0).delayNs, kUnitDelayNs);
+}
+
+// plan(SimExchange), which skips FaultContext when there is no rule, plans what
+// plan(FaultContext::forExchange()) does: the same bytes, the same delays drawn from the same
+// unit's stream, a script's delay kept; with a rule, the rule's plan.
+void TestFaultInjector::planOfExchange_data()
+{
+    QTest::addColumn<int>("framing");
+    QTest::addColumn<QByteArray>("request");
+    QTest::addColumn<int>("unitId");
+    QTest::addColumn<int>("routedUnitId");
+    QTest::addColumn<bool>("delimited");
+    QTest::addColumn<bool>("delayFixed");
+    QTest::addColumn<bool>("withRule");
+    const QByteArray mbap1 = AduBuilder::mbap(QByteArray::fromHex("0300000001"), 1, 7);
+    const QByteArray mbap0 = AduBuilder::mbap(QByteArray::fromHex("0300000001"), 0, 8);
+    const QByteArray mbap2 = AduBuilder::mbap(QByteArray::fromHex("0300000001"), 2, 9);
+    const QByteArray rtu1 = AduBuilder::rtu(QByteArray::fromHex("0300000001"), 1);
+    QTest::newRow("mbap unit 1: its distribution") << int(Framing::Tcp) << mbap1 << 1 << 1 << false << false << false;
+    QTest::newRow("mbap unit 2: no distribution") << int(Framing::Tcp) << mbap2 << 2 << 2 << false << false << false;
+    QTest::newRow("mbap unit 0 routed to 1: unit 1's stream") << int(Framing::Tcp) << mbap0 << 0 << 1 << false << false << false;
+    QTest::newRow("rtu unit 1") << int(Framing::Rtu) << rtu1 << 1 << 1 << false << false << false;
+    QTest::newRow("a script's fixed delay") << int(Framing::Tcp) << mbap1 << 1 << 1 << false << true << false;
+    QTest::newRow("delimited frame: the answering unit's") << int(Framing::Rtu) << QByteArray("PING\r") << 0 << 1 << true << false
+                                                                 << false;
+    QTest::newRow("with a rule") << int(Framing::Tcp) << mbap1 << 1 << 1 << false << false << true;
+}
+
+void TestFaultInjector::planOfExchange()
+{
+    QFETCH(int, framing);
+    QFETCH(QByteArray, request);
+    QFETCH(int, unitId);
+    QFETCH(int, routedUnitId);
+    QFETCH(bool, delimited);
+    QFETCH(bool, delayFixed);
+    QFETCH(bool, withRule);
+    DelaySpec normal;
+    normal.kind = DelaySpec::Kind::Normal;
+    normal.meanMs = 4;
+    normal.stddevMs = 1.5;
+    FaultInjector byExchange;
+    FaultInjector byContext;
+    for (FaultInjector *injector : {&byExchange, &byContext}) {
+        injector->setResponseDelay(1, normal);
+        if (withRule) {
+            FaultRule r = rule(FaultRule::Kind::Delay);
+            r.probability = 0.5;
+            r.delay = DelaySpec::fixed(30);
+            FaultRuleSet rules;
+            rules.rules.append(r);
+            injector->setRules(rules);
+        }
+    }
+    SimExchange exchange;
+    exchange.framing = Framing(framing);
+    exchange.unitId = quint8(unitId);
+    exchange.routedUnitId = quint8(routedUnitId);
+    exchange.delimited = delimited;
+    exchange.requestAdu = request;
+    exchange.responseAdu = request; // an echo: the bytes only have to come back unchanged
+    exchange.responseDelayNs = 2'000'000;
+    exchange.responseDelayFixed = delayFixed;
+    for (int i = 0; i < 20; ++i) {
+        const FaultPlan a = byExchange.plan(exchange);
+        const FaultPlan b = byContext.plan(FaultContext::forExchange(exchange));
+        QCOMPARE(a.chunks.size(), b.chunks.size());
+        for (qsizetype c = 0; c < a.chunks.size(); ++c) {
+            QCOMPARE(a.chunks.at(c).bytes, b.chunks.at(c).bytes);
+            QCOMPARE(a.chunks.at(c).delayNs, b.chunks.at(c).delayNs);
+        }
+        QCOMPARE(a.faults, b.faults);
+        QCOMPARE(a.drop, b.drop);
+    }
 }
 
 // The same rules, seed and requests give the same plans; a rule that never matches does not
