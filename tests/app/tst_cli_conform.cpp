@@ -236,7 +236,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("only");
         QTest::addColumn<bool>("passes");
         QTest::newRow("tcp passes") << "tcp://127.0.0.1:0" << "" << "" << true;
-        QTest::newRow("rtu-tcp passes") << "rtu-tcp://127.0.0.1:0" << "" << "read.03,serial,diag" << true;
+        QTest::newRow("rtu-tcp passes") << "rtu-tcp://127.0.0.1:0" << "" << "read.03,serial.broadcast,serial.reserved,diag" << true;
         QTest::newRow("wrong exception code fails") << "tcp://127.0.0.1:0" << R"({"kind": "exception", "code": 2, "functions": ["0x03"], "quantity": 0})"
                                                     << "read.03,mbap" << false;
     }
