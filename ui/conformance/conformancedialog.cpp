@@ -208,8 +208,10 @@ void ConformanceDialog::run(const ConformanceSettings &settings)
     if (result.linkFailed) {
         ScanForm::showProblem(m_status, tr("Not tested: %1").arg(result.linkMessage));
     } else {
+        QString verdict = result.verdictSentence();
+        verdict[0] = verdict.at(0).toUpper();
         const QString text = QStringLiteral("%1. %2 in %3.")
-                                 .arg(result.verdictSentence(), result.countsSentence(), ScanForm::duration(result.elapsedNs / 1000000));
+                                 .arg(verdict, result.countsSentence(), ScanForm::duration(result.elapsedNs / 1000000));
         if (result.passed())
             m_status->setText(text);
         else

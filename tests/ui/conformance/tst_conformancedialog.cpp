@@ -130,7 +130,7 @@ void TestConformanceDialog::runFillsTheScorecard()
     const QMap<QString, QString> v = verdicts(dialog.model());
     QVERIFY2(!v.values().contains(QStringLiteral("failed")), qPrintable(QStringList(v.keys(QStringLiteral("failed"))).join(QLatin1Char(' '))));
     QCOMPARE(v.value(QStringLiteral("write.06.echo")), writeVerdict);
-    QVERIFY(dialog.findChild<QLabel *>(QStringLiteral("conformStatus"))->text().contains(QStringLiteral("every mandatory check passed")));
+    QVERIFY(dialog.findChild<QLabel *>(QStringLiteral("conformStatus"))->text().contains(QStringLiteral("Every mandatory check passed")));
     // The table shows what the model holds: a pass is green, its request and answer as hex.
     int row = -1;
     for (int i = 0; i < rows && row < 0; ++i)
@@ -197,7 +197,7 @@ void TestConformanceDialog::stopEndsTheRun()
     QCOMPARE(finished.first().first().toBool(), false); // interrupted is not a pass
     QCOMPARE(dialog.model()->rowCount(), 3);
     QVERIFY(dialog.result()->interrupted);
-    QVERIFY(dialog.findChild<QLabel *>(QStringLiteral("conformStatus"))->text().contains(QStringLiteral("interrupted")));
+    QVERIFY(dialog.findChild<QLabel *>(QStringLiteral("conformStatus"))->text().contains(QStringLiteral("Interrupted")));
     QVERIFY(dialog.findChild<QPushButton *>(QStringLiteral("conformStart"))->isEnabled());
 }
 
