@@ -6,6 +6,7 @@
 #include "recordoptions.h"
 #include "targetoptions.h"
 
+#include "conformance/conformancehtml.h"
 #include "conformance/conformancerunner.h"
 #include "profile/profileloader.h"
 #include "session/junitreport.h"
@@ -56,8 +57,11 @@ int runConform(const QStringList &arguments)
         "clause requires. Checks: exception codes 01, 02 and 03 (quantity 0, above the maximum, a block past the "
         "address space or the map), quantity limits, byte counts, bit order, the MBAP header, protocol ids, unit 0xFF, "
         "pipelined requests, broadcasts, reserved unit ids, wrong checksums, a request cut short, one answer per "
-        "request, the connection kept, reconnects, a second client, 08/0000 echo, device identification, response "
-        "times; with --writable, 05, 06, 0F, 10, 16 and 17 too.\n"
+        "request, the connection kept, reconnects, a second client and up to 8 more connections at once, on an RTU serial "
+        "port the line timing (t3.5 before the answer, no silence over t1.5 inside it; not judged when the link's times "
+        "cannot show it), 08/0000 echo, device identification, response times; with --writable, 05, 06, 0F, 10, 16 and "
+        "17 too. --html writes the scorecard as one self-contained page; Tools > Conformance in the window runs the "
+        "same battery.\n"
         "Safe by default: it only reads. A check that writes runs only on the addresses --writable names, and puts back "
         "the value it found. Checks of what the device does not support (exception 01 to the survey's read, or not in "
         "the --profile's functions) are skipped with the reason.\n"
@@ -95,8 +99,12 @@ int runConform(const QStringList &arguments)
     const QCommandLineOption junit(QStringLiteral("junit"),
                                    QStringLiteral("Write the scorecard as JUnit XML to FILE, one test case per check (for CI)."),
                                    QStringLiteral("file"));
+    const QCommandLineOption html(QStringLiteral("html"),
+                                  QStringLiteral("Write the scorecard as one self-contained HTML page to FILE: the verdict first, "
+                                                 "then every check with its clause, verdict, request and answer (prints well)."),
+                                  QStringLiteral("file"));
     const QCommandLineOption list(QStringLiteral("list"), QStringLiteral("List the checks (id, level, title, clause) and exit."));
-    parser.addOptions({unit, profile, readable, missing, writable, only, samples, json, junit, list});
+    parser.addOptions({unit, profile, readable, missing, writable, only, samples, json, junit, html, list});
     const RecordOptions recordOptions;
     recordOptions.addTo(parser);
     if (!parser.parse(arguments)) {
@@ -167,15 +175,18 @@ int runConform(const QStringList &arguments)
         }
     }
     const bool force = parser.isSet(QStringLiteral("force"));
-    if (parser.isSet(junit)) {
-        const QString problem = OutputPath::problem(QStringLiteral("--junit"), parser.value(junit), QStringLiteral("--junit conform.xml"), force);
+    for (const auto &[option, example] : {std::pair{&junit, "--junit conform.xml"}, std::pair{&html, "--html conform.html"}}) {
+        if (!parser.isSet(*option))
+            continue;
+        const QString name = QStringLiteral("--") + option->names().constFirst();
+        const QString problem = OutputPath::problem(name, parser.value(*option), QLatin1String(example), force);
         if (!problem.isEmpty()) {
             err << "mbscope conform: " << problem << '\n';
             return ExitUsage;
         }
     }
     RecordSettings record;
-    if (!recordOptions.read(parser, QStringLiteral("conform"), record, err, parser.isSet(junit)))
+    if (!recordOptions.read(parser, QStringLiteral("conform"), record, err, parser.isSet(junit) || parser.isSet(html)))
         return ExitUsage;
     TrafficRecording recording;
     TrafficMetadata metadata = commandMetadata(QStringLiteral("conform"), arguments);
@@ -218,6 +229,15 @@ int runConform(const QStringList &arguments)
         }
         if (!asJson)
             out << "junit      " << parser.value(junit) << '\n';
+    }
+    if (parser.isSet(html) && !result.linkFailed) {
+        QString error;
+        if (!ConformanceHtml::write(result, parser.value(html), &error)) {
+            err << "mbscope conform: --html: " << error << '\n';
+            return ExitUsage;
+        }
+        if (!asJson)
+            out << "html       " << parser.value(html) << '\n';
     }
     if (result.linkFailed)
         return ExitLinkError;

@@ -88,6 +88,17 @@ else
     echo "screenshots: scan.png, scan-map.png, scan-timing.png and scan-line.png skipped: $scan_test is not built"
 fi
 
+# Tools > Conformance: the scorecard of the simulator's conformance profile, writes allowed,
+# rendered by its GUI test.
+conform_test=$build/tests/ui/tst_conformancedialog
+if [[ -x $conform_test ]]; then
+    MBSCOPE_CONFORMANCE_SCREENSHOT="$out/conformance.png" "$conform_test" "runFillsTheScorecard:writes where allowed" \
+        >"$scratch/conform.out" 2>&1 || { echo "screenshots: tst_conformancedialog failed:" >&2; cat "$scratch/conform.out" >&2; exit 1; }
+    echo "screenshots: conformance.png"
+else
+    echo "screenshots: conformance.png skipped: $conform_test is not built"
+fi
+
 # The window as a tap in front of the first-run simulator, a master's read through it: rendered
 # by its GUI test.
 tap_test=$build/tests/ui/tst_tapwindow

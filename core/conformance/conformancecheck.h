@@ -36,6 +36,7 @@ struct CheckNeeds {
     bool mbap = false;       // a framing with an MBAP header (tcp, udp, tls)
     bool serial = false;     // a serial framing (rtu, ascii; also over TCP or UDP)
     bool stream = false;     // a connection (tcp, tls, rtu-tcp, ascii-tcp): several, closed, reopened
+    bool serialPort = false; // RTU on a serial port (rtu://): the line's timing
     int readable = -1;       // a table (SimTable) with a readable address known; -1: none
     int writable = -1;       // a table (SimTable) with a writable address the user named; -1: none
 };

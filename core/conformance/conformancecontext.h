@@ -9,8 +9,10 @@
 
 namespace mbscope {
 
-// Whether the device supports a function code, as its answers (the survey) say.
-enum class FunctionSupport : quint8 {
+// Whether the device supports a function code, as its answers (the survey) say. (Not
+// discovery's FunctionSupport, the map scan's record of one function: one name, two types, broke
+// the build once both reached one translation unit.)
+enum class SurveyedSupport : quint8 {
     Unknown,     // not asked, or no usable answer
     Supported,   // a normal answer, or an exception other than 01
     Unsupported, // exception 01
@@ -32,9 +34,9 @@ public:
     [[nodiscard]] ConformanceLink &link() { return m_link; }
     [[nodiscard]] quint8 unit() const { return m_settings.unit; }
 
-    [[nodiscard]] FunctionSupport support(quint8 function) const { return m_support.value(function, FunctionSupport::Unknown); }
-    void setSupport(quint8 function, FunctionSupport support) { m_support.insert(function, support); }
-    [[nodiscard]] const QMap<quint8, FunctionSupport> &supportTable() const { return m_support; }
+    [[nodiscard]] SurveyedSupport support(quint8 function) const { return m_support.value(function, SurveyedSupport::Unknown); }
+    void setSupport(quint8 function, SurveyedSupport support) { m_support.insert(function, support); }
+    [[nodiscard]] const QMap<quint8, SurveyedSupport> &supportTable() const { return m_support; }
     // An address of table the device answered a read of (-1: none known).
     [[nodiscard]] int readable(SimTable table) const { return m_readable[int(table)]; }
     void setReadable(SimTable table, int address) { m_readable[int(table)] = address; }
@@ -45,7 +47,7 @@ public:
 private:
     const ConformanceSettings &m_settings;
     ConformanceLink &m_link;
-    QMap<quint8, FunctionSupport> m_support;
+    QMap<quint8, SurveyedSupport> m_support;
     std::array<int, SimTableCount> m_readable{};
 };
 

@@ -15,22 +15,53 @@ QString code(quint8 function)
     return QString::number(function, 16).toUpper().rightJustified(2, QLatin1Char('0'));
 }
 
-const char *label(const CheckResult &r)
+} // namespace
+
+const char *ConformanceResult::label(const CheckResult &r)
 {
     switch (r.verdict) {
     case CheckVerdict::Passed:
-        return r.level == CheckLevel::Informational ? "INFO " : "PASS ";
+        return r.level == CheckLevel::Informational ? "INFO" : "PASS";
     case CheckVerdict::Failed:
-        return r.level == CheckLevel::Mandatory ? "FAIL " : "WARN ";
+        return r.level == CheckLevel::Mandatory ? "FAIL" : "WARN";
     case CheckVerdict::Skipped:
-        return "SKIP ";
+        return "SKIP";
     case CheckVerdict::Error:
         return "ERROR";
     }
     return "";
 }
 
-} // namespace
+QString ConformanceResult::verdictSentence() const
+{
+    if (passed())
+        return QStringLiteral("every mandatory check passed");
+    if (linkFailed)
+        return QStringLiteral("not tested: ") + linkMessage;
+    if (interrupted)
+        return QStringLiteral("interrupted");
+    return QStringLiteral("%1 mandatory check(s) failed").arg(failed(CheckLevel::Mandatory) + count(CheckVerdict::Error));
+}
+
+QString ConformanceResult::countsSentence() const
+{
+    return QStringLiteral("%1 checks: %2 passed, %3 failed (%4 mandatory, %5 recommended), %6 skipped, %7 errors")
+        .arg(checks.size())
+        .arg(count(CheckVerdict::Passed))
+        .arg(count(CheckVerdict::Failed))
+        .arg(failed(CheckLevel::Mandatory))
+        .arg(failed(CheckLevel::Recommended))
+        .arg(count(CheckVerdict::Skipped))
+        .arg(count(CheckVerdict::Error));
+}
+
+QString ConformanceResult::supportSentence() const
+{
+    QStringList functions;
+    for (auto it = support.cbegin(); it != support.cend(); ++it)
+        functions.append(QStringLiteral("%1 %2").arg(code(it.key()), QLatin1String(supportName(it.value()))));
+    return functions.join(QLatin1String(", "));
+}
 
 const char *checkLevelName(CheckLevel level)
 {
@@ -53,13 +84,13 @@ const char *checkVerdictName(CheckVerdict verdict)
     return "";
 }
 
-const char *ConformanceResult::supportName(FunctionSupport support)
+const char *ConformanceResult::supportName(SurveyedSupport support)
 {
     switch (support) {
-    case FunctionSupport::Supported: return "supported";
-    case FunctionSupport::Unsupported: return "unsupported";
-    case FunctionSupport::Silent: return "silent";
-    case FunctionSupport::Unknown: return "unknown";
+    case SurveyedSupport::Supported: return "supported";
+    case SurveyedSupport::Unsupported: return "unsupported";
+    case SurveyedSupport::Silent: return "silent";
+    case SurveyedSupport::Unknown: return "unknown";
     }
     return "";
 }
@@ -84,31 +115,16 @@ QString ConformanceResult::toText() const
 {
     QString out;
     out += QStringLiteral("target     %1, unit %2\n").arg(target).arg(unit);
-    if (!support.isEmpty()) {
-        QStringList functions;
-        for (auto it = support.cbegin(); it != support.cend(); ++it)
-            functions.append(QStringLiteral("%1 %2").arg(code(it.key()), QLatin1String(supportName(it.value()))));
-        out += QStringLiteral("functions  %1\n").arg(functions.join(QLatin1String(", ")));
-    }
+    if (!support.isEmpty())
+        out += QStringLiteral("functions  %1\n").arg(supportSentence());
     out += QLatin1Char('\n');
     for (const CheckResult &c : checks) {
-        out += QStringLiteral("%1  %2  %3  [%4]\n").arg(QLatin1String(label(c)), c.id, c.title, c.clause);
+        out += QStringLiteral("%1  %2  %3  [%4]\n").arg(QString::fromLatin1(label(c)).leftJustified(5), c.id, c.title, c.clause);
         if (c.verdict != CheckVerdict::Passed || c.level == CheckLevel::Informational)
             out += QStringLiteral("       %1\n").arg(c.sentence);
     }
-    out += QStringLiteral("\n%1 checks: %2 passed, %3 failed (%4 mandatory, %5 recommended), %6 skipped, %7 errors in %8 s\n")
-               .arg(checks.size())
-               .arg(count(CheckVerdict::Passed))
-               .arg(count(CheckVerdict::Failed))
-               .arg(failed(CheckLevel::Mandatory))
-               .arg(failed(CheckLevel::Recommended))
-               .arg(count(CheckVerdict::Skipped))
-               .arg(count(CheckVerdict::Error))
-               .arg(double(elapsedNs) / 1e9, 0, 'f', 3);
-    out += passed() ? QStringLiteral("verdict    every mandatory check passed\n")
-                    : QStringLiteral("verdict    %1\n").arg(linkFailed ? QString(QStringLiteral("not tested: ") + linkMessage)
-                                                                      : interrupted ? QStringLiteral("interrupted")
-                                                                                    : QStringLiteral("%1 mandatory check(s) failed").arg(failed(CheckLevel::Mandatory) + count(CheckVerdict::Error)));
+    out += QStringLiteral("\n%1 in %2 s\n").arg(countsSentence()).arg(double(elapsedNs) / 1e9, 0, 'f', 3);
+    out += QStringLiteral("verdict    %1\n").arg(verdictSentence());
     return out;
 }
 

@@ -20,7 +20,7 @@ struct ConformanceResult {
     QDateTime started;
     qint64 elapsedNs = 0;
     QList<CheckResult> checks;
-    QMap<quint8, FunctionSupport> support;
+    QMap<quint8, SurveyedSupport> support;
     bool linkFailed = false;  // the target could not be reached, or answered nothing at all
     QString linkMessage;
     bool interrupted = false;
@@ -29,6 +29,16 @@ struct ConformanceResult {
     [[nodiscard]] int failed(CheckLevel level) const;
     // Every mandatory check passed or was skipped, and the run went through.
     [[nodiscard]] bool passed() const { return !linkFailed && !interrupted && failed(CheckLevel::Mandatory) == 0 && count(CheckVerdict::Error) == 0; }
+
+    // "every mandatory check passed", "3 mandatory check(s) failed", "not tested: ...", "interrupted"
+    [[nodiscard]] QString verdictSentence() const;
+    // "67 checks: 60 passed, 1 failed (1 mandatory, 0 recommended), 6 skipped, 0 errors"
+    [[nodiscard]] QString countsSentence() const;
+    // "01 supported, 02 supported, 07 unsupported..."
+    [[nodiscard]] QString supportSentence() const;
+    // The verdict as the text report and the window show it: "PASS", "INFO" (an informational
+    // check that measured), "FAIL" (mandatory), "WARN" (a recommended check failed), "SKIP", "ERROR".
+    [[nodiscard]] static const char *label(const CheckResult &check);
 
     // The readable report: a line per check, the failures' sentences, the summary.
     [[nodiscard]] QString toText() const;
@@ -39,7 +49,7 @@ struct ConformanceResult {
     // One test case per check, for JUnitReport.
     [[nodiscard]] JUnitTestSuite toJUnit() const;
     // "supported", "unsupported", "silent", "unknown"
-    [[nodiscard]] static const char *supportName(FunctionSupport support);
+    [[nodiscard]] static const char *supportName(SurveyedSupport support);
 };
 
 } // namespace mbscope

@@ -7,6 +7,7 @@
 #include "linkchecks.h"
 #include "mbapchecks.h"
 #include "readchecks.h"
+#include "serialtimingchecks.h"
 #include "writechecks.h"
 
 #include "profile/profiletablereader.h"
@@ -34,6 +35,7 @@ QList<ConformanceCheck> ConformanceRunner::battery()
     all += ReadChecks::checks();
     all += MbapChecks::checks();
     all += LinkChecks::checks();
+    all += SerialTimingChecks::checks();
     all += IdentityChecks::checks();
     all += WriteChecks::checks();
     all += LinkChecks::afterChecks();
@@ -48,6 +50,10 @@ QString ConformanceRunner::skipReason(const ConformanceCheck &check, const Confo
         return QStringLiteral("the link's framing (%1) has no MBAP header").arg(framingName(link.framing()));
     if (n.serial && !link.isSerialFraming())
         return QStringLiteral("a serial framing's rule (rtu or ascii), and the link's framing is %1").arg(framingName(link.framing()));
+    if (n.serialPort && !(link.url().isSerial() && link.framing() == Framing::Rtu))
+        return QStringLiteral("not measurable on this link: the line's timing, and %1 is not RTU on a serial port (behind a "
+                              "gateway or a device server the line is out of sight)")
+            .arg(LinkUrl::schemeName(link.url().kind));
     if (n.stream && !link.isStream())
         return QStringLiteral("a rule of connections, and %1 has none").arg(LinkUrl::schemeName(link.url().kind));
     if (n.function != 0) {
@@ -55,12 +61,12 @@ QString ConformanceRunner::skipReason(const ConformanceCheck &check, const Confo
         if (ctx.settings().promised && !ctx.settings().promisedFunctions.contains(n.function))
             return QStringLiteral("%1 does not promise function %2").arg(ctx.settings().promiseSource, fc);
         switch (ctx.support(n.function)) {
-        case FunctionSupport::Unsupported:
+        case SurveyedSupport::Unsupported:
             return QStringLiteral("the device answers function %1 with exception 01: it does not support it").arg(fc);
-        case FunctionSupport::Silent:
+        case SurveyedSupport::Silent:
             return QStringLiteral("the device did not answer function %1 at all (see exception.unsupported-function)").arg(fc);
-        case FunctionSupport::Supported:
-        case FunctionSupport::Unknown:
+        case SurveyedSupport::Supported:
+        case SurveyedSupport::Unknown:
             break;
         }
     }

@@ -45,6 +45,7 @@ struct ConformanceSettings {
     bool promised = false;
     QString promiseSource; // "profile conformance (unit 1)"
     int timingSamples = 20;  // requests timed for the response-time check
+    int maxClients = 8;      // tcp.clients: connections opened beside the battery's own, at most
     QStringList only;        // run only checks whose id starts with one of these (empty: all)
 
     // Readable and missing addresses and the functions from a profile's unit (the one whose id is

@@ -61,13 +61,13 @@ ConformanceSurvey::Outcome ConformanceSurvey::run(ConformanceContext &ctx)
             continue;
         }
         const Transaction &t = e.transaction;
-        FunctionSupport s = FunctionSupport::Unknown;
+        SurveyedSupport s = SurveyedSupport::Unknown;
         if (e.silent())
-            s = FunctionSupport::Silent;
+            s = SurveyedSupport::Silent;
         else if (t.status == TransactionStatus::Exception)
-            s = t.exceptionCode == 0x01 ? FunctionSupport::Unsupported : FunctionSupport::Supported;
+            s = t.exceptionCode == 0x01 ? SurveyedSupport::Unsupported : SurveyedSupport::Supported;
         else if (t.status == TransactionStatus::Ok || t.status == TransactionStatus::Malformed)
-            s = FunctionSupport::Supported;
+            s = SurveyedSupport::Supported;
         answered = answered || !e.silent();
         ctx.setSupport(f, s);
         const int table = ReadChecks::tableOf(f);
@@ -80,8 +80,8 @@ ConformanceSurvey::Outcome ConformanceSurvey::run(ConformanceContext &ctx)
     const QList<quint8> surveyed = functions();
     for (qsizetype i = 0; i < outcome.exchanges.size() && i < surveyed.size(); ++i) {
         const ConformanceExchange &e = outcome.exchanges.at(i);
-        if (ctx.support(surveyed.at(i)) == FunctionSupport::Silent && ctx.link().answeredLate(e.transaction.id)) {
-            ctx.setSupport(surveyed.at(i), FunctionSupport::Supported);
+        if (ctx.support(surveyed.at(i)) == SurveyedSupport::Silent && ctx.link().answeredLate(e.transaction.id)) {
+            ctx.setSupport(surveyed.at(i), SurveyedSupport::Supported);
             answered = true;
         }
     }
@@ -108,9 +108,9 @@ QList<ConformanceCheck> ConformanceSurvey::checks()
         QList<quint8> quiet;
         QList<quint8> refused;
         for (quint8 f : functions()) {
-            if (ctx.support(f) == FunctionSupport::Silent)
+            if (ctx.support(f) == SurveyedSupport::Silent)
                 quiet.append(f);
-            else if (ctx.support(f) == FunctionSupport::Unsupported)
+            else if (ctx.support(f) == SurveyedSupport::Unsupported)
                 refused.append(f);
         }
         if (quiet.isEmpty()) {
@@ -137,10 +137,10 @@ QList<ConformanceCheck> ConformanceSurvey::checks()
         QList<quint8> extra;
         for (quint8 f : functions()) {
             const bool promised = ctx.settings().promisedFunctions.contains(f);
-            const FunctionSupport s = ctx.support(f);
-            if (promised && (s == FunctionSupport::Unsupported || s == FunctionSupport::Silent))
+            const SurveyedSupport s = ctx.support(f);
+            if (promised && (s == SurveyedSupport::Unsupported || s == SurveyedSupport::Silent))
                 missing.append(f);
-            else if (!promised && s == FunctionSupport::Supported)
+            else if (!promised && s == SurveyedSupport::Supported)
                 extra.append(f);
         }
         if (missing.isEmpty() && extra.isEmpty()) {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <vector>
 
 namespace mbscope {
 
@@ -18,7 +19,7 @@ QByteArray harmlessRead(const ConformanceContext &ctx)
 {
     for (quint8 f : {quint8(0x03), quint8(0x04), quint8(0x01), quint8(0x02)}) {
         const int at = ctx.readable(SimTable(ReadChecks::tableOf(f)));
-        if (at >= 0 && ctx.support(f) == FunctionSupport::Supported)
+        if (at >= 0 && ctx.support(f) == SurveyedSupport::Supported)
             return ReadChecks::readPdu(f, at, 1);
     }
     return ReadChecks::readPdu(0x03, 0, 1);
@@ -185,6 +186,81 @@ QList<ConformanceCheck> LinkChecks::checks()
         });
     concurrent.needs.stream = true;
     out.append(concurrent);
+
+    // How many connections at once (reads only): client k opens while the k - 1 before it and the
+    // battery's own stay open; each is asked again once the last has connected. At its limit a
+    // server closes its oldest idle connection to take the new one (TCP/IP Guide V1.0b, 4.2.1).
+    ConformanceCheck clients = check(
+        "tcp.clients", "connections at once: each stays served, and at the limit the oldest idle one makes room",
+        "TCP/IP Guide V1.0b, 4.2.1", CheckLevel::Recommended, [](ConformanceContext &ctx, CheckResult &res) {
+            const QByteArray pdu = harmlessRead(ctx);
+            const int most = ctx.settings().maxClients;
+            std::vector<std::unique_ptr<ConformanceLink>> held;
+            enum class Asked : quint8 { Served, Dropped, Unanswered };
+            const auto ask = [&](ConformanceLink &link, ConformanceExchange *seen) {
+                const int opensBefore = link.opens();
+                *seen = link.ask(ctx.unit(), pdu);
+                // A link that had to connect again, or found its connection closed, lost it.
+                if (seen->linkFailed() || (opensBefore > 0 && link.opens() != opensBefore))
+                    return Asked::Dropped;
+                return !seen->silent() && seen->transaction.status == TransactionStatus::Ok ? Asked::Served : Asked::Unanswered;
+            };
+            const auto served = [&](ConformanceLink &link, ConformanceExchange *seen) { return ask(link, seen) == Asked::Served; };
+            ConformanceExchange seen;
+            if (!served(ctx.link(), &seen)) {
+                ConformanceJudge::record(res, seen);
+                res.skip(QStringLiteral("not judged: the battery's own connection was not answered a read"));
+                return;
+            }
+            for (int k = 1; k <= most; ++k) {
+                auto client = std::make_unique<ConformanceLink>(ctx.link().url(), ctx.link().timeoutMs());
+                const bool newServed = served(*client, &seen);
+                ConformanceJudge::record(res, seen);
+                if (!newServed) {
+                    res.measured = QStringLiteral("%1 connections at once").arg(k);
+                    res.fail(QStringLiteral("with %1 connections open and served, connection %2 got %3; %4 has a server at "
+                                            "its limit close its oldest idle connection and serve the new one")
+                                 .arg(k)
+                                 .arg(k + 1)
+                                 .arg(ConformanceJudge::seen(seen), res.clause));
+                    return;
+                }
+                held.push_back(std::move(client));
+                // Every connection still served: the oldest (the battery's own) first.
+                for (int i = -1; i < int(held.size()) - 1; ++i) {
+                    ConformanceLink &older = i < 0 ? ctx.link() : *held.at(size_t(i));
+                    const Asked asked = ask(older, &seen);
+                    if (asked == Asked::Served)
+                        continue;
+                    ConformanceJudge::record(res, seen);
+                    if (i == -1 && asked == Asked::Dropped) {
+                        res.measured = QStringLiteral("%1 connections at once").arg(k);
+                        res.pass(QStringLiteral("%1 connections served at once; connection %2 was served by closing the "
+                                                "oldest idle one, as %3 asks of a server at its limit")
+                                     .arg(k)
+                                     .arg(k + 1)
+                                     .arg(res.clause));
+                        ctx.link().closeLink(); // the next check connects again
+                        return;
+                    }
+                    res.measured = QStringLiteral("%1 connections at once").arg(k + 1);
+                    res.fail(QStringLiteral("with %1 connections open, connection %2 got %3 once connection %1 came; %4 asks "
+                                            "a server to keep serving the connections it accepted (at its limit, to close the "
+                                            "oldest idle one only)")
+                                 .arg(k + 1)
+                                 .arg(i + 2)
+                                 .arg(ConformanceJudge::seen(seen), res.clause));
+                    return;
+                }
+            }
+            res.measured = QStringLiteral("%1 connections at once or more").arg(most + 1);
+            res.pass(QStringLiteral("%1 connections open at once (the battery's own and %2 more), each answered again once the "
+                                    "last had connected")
+                         .arg(most + 1)
+                         .arg(most));
+        });
+    clients.needs.stream = true;
+    out.append(clients);
 
     out.append(check("timing.response", "response time distribution", "Application Protocol V1.1b3, 4.1 (informational)",
                      CheckLevel::Informational, [](ConformanceContext &ctx, CheckResult &res) {

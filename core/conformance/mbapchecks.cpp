@@ -15,7 +15,7 @@ QByteArray harmlessRead(const ConformanceContext &ctx, int quantity = 1)
 {
     for (quint8 f : {quint8(0x03), quint8(0x04), quint8(0x01), quint8(0x02)}) {
         const int at = ctx.readable(SimTable(ReadChecks::tableOf(f)));
-        if (at >= 0 && ctx.support(f) == FunctionSupport::Supported)
+        if (at >= 0 && ctx.support(f) == SurveyedSupport::Supported)
             return ReadChecks::readPdu(f, at, quantity);
     }
     return ReadChecks::readPdu(0x03, 0, quantity);

@@ -378,6 +378,239 @@
     </message>
 </context>
 <context>
+    <name>mbscope::ConformanceDialog</name>
+    <message>
+        <location filename="../../ui/conformance/conformancedialog.cpp" line="+34"/>
+        <source> ms</source>
+        <translation> md</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Jalankan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sto&amp;p</source>
+        <translation>&amp;Hentikan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Save report…</source>
+        <translation>&amp;Simpan laporan…</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Conformance</source>
+        <translation>Kesesuaian</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The link of the slave under test. The battery opens a connection of its own.</source>
+        <translation>Link slave yang diuji. Rangkaian uji membuka sambungannya sendiri.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The unit id under test, 1-247.</source>
+        <translation>Id unit yang diuji, 1-247.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How long each request waits for its answer.</source>
+        <translation>Berapa lama setiap permintaan menunggu jawabannya.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>none: what the device supports is read from its answers</source>
+        <translation>tidak ada: apa yang didukung perangkat dibaca dari jawabannya</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A device profile (shipped name or JSON file) that declares what the device promises: its functions, and its tables&apos; readable and missing addresses.</source>
+        <translation>Profil perangkat (nama bawaan atau berkas JSON) yang menyatakan janji perangkat: fungsinya, serta alamat tabel yang dapat dibaca dan yang tidak ada.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>none: the battery only reads</source>
+        <translation>tidak ada: rangkaian uji hanya membaca</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Addresses the write checks may use, each value found is put back: holding:10-13, coils:10-17. Empty: nothing is written.</source>
+        <translation>Alamat yang boleh dipakai pemeriksaan tulis, setiap nilai yang ditemukan dikembalikan: holding:10-13, coils:10-17. Kosong: tidak ada yang ditulis.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>every check</source>
+        <translation>semua pemeriksaan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run only the checks whose id starts with one of these, comma-separated: read.03, mbap</source>
+        <translation>Jalankan hanya pemeriksaan yang id-nya diawali salah satu dari ini, dipisah koma: read.03, mbap</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Save the scorecard as an HTML page, JSON or JUnit XML</source>
+        <translation>Simpan kartu skor sebagai halaman HTML, JSON atau JUnit XML</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>&amp;Target:</source>
+        <translation>Ta&amp;rget:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>timeout</source>
+        <translation>batas waktu</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Unit:</source>
+        <translation>&amp;Unit:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Profile:</source>
+        <translation>&amp;Profil:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Writable:</source>
+        <translation>Dapat &amp;ditulis:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Only:</source>
+        <translation>Hany&amp;a:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Close</source>
+        <translation>&amp;Tutup</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Reads only, unless Writable names addresses. A failure says what was sent, what came back and what the clause requires.</source>
+        <translation>Hanya membaca, kecuali Dapat ditulis menyebut alamat. Kegagalan menyebut apa yang dikirim, apa yang kembali, dan apa yang diwajibkan pasalnya.</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Type the link of the slave under test.</source>
+        <translation>Ketik link slave yang diuji.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Writable: %1</source>
+        <translation>Dapat ditulis: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Only: %1 selects no check.</source>
+        <translation>Hanya: %1 tidak memilih pemeriksaan apa pun.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+5"/>
+        <source>Profile %1: %2</source>
+        <translation>Profil %1: %2</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Running: reads only…</source>
+        <translation>Berjalan: hanya membaca…</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Running: writes allowed on %1…</source>
+        <translation>Berjalan: boleh menulis pada %1…</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Not tested: %1</source>
+        <translation>Tidak diuji: %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Stopping after the check that runs now…</source>
+        <translation>Berhenti setelah pemeriksaan yang sedang berjalan…</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>There is no scorecard to save: run the battery first.</source>
+        <translation>Belum ada kartu skor untuk disimpan: jalankan rangkaian uji dulu.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: name the file .html, .json or .xml (JUnit) to say which report to save.</source>
+        <translation>%1: beri nama berkas .html, .json atau .xml (JUnit) untuk menyebut laporan mana yang disimpan.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+3"/>
+        <source>cannot write %1: %2</source>
+        <translation>tidak dapat menulis %1: %2</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Save the scorecard</source>
+        <translation>Simpan kartu skor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>HTML page (*.html);;JSON (*.json);;JUnit XML (*.xml)</source>
+        <translation>Halaman HTML (*.html);;JSON (*.json);;JUnit XML (*.xml)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Saved %1.</source>
+        <translation>Disimpan %1.</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::ConformanceResultModel</name>
+    <message>
+        <location filename="../../ui/conformance/conformanceresultmodel.cpp" line="+71"/>
+        <source>(none)</source>
+        <translation>(tidak ada)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Verdict</source>
+        <translation>Hasil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Check</source>
+        <translation>Pemeriksaan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Clause</source>
+        <translation>Pasal</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Why</source>
+        <translation>Alasan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Request</source>
+        <translation>Permintaan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Answer</source>
+        <translation>Jawaban</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::ConnectionBar</name>
     <message>
         <location filename="../../ui/link/connectionbar.cpp" line="+34"/>
@@ -7900,7 +8133,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ToolsMenu</name>
     <message>
-        <location filename="../../ui/shell/toolsmenu.cpp" line="+33"/>
+        <location filename="../../ui/shell/toolsmenu.cpp" line="+34"/>
         <source>&amp;Tools</source>
         <translation>&amp;Alat</translation>
     </message>
@@ -7913,6 +8146,16 @@ Klik kanan untuk mengganti format</translation>
         <location line="+2"/>
         <source>Ask every unit id of a link the same read and list what each did</source>
         <translation>Tanyai setiap id unit pada satu link dengan pembacaan yang sama dan tampilkan apa yang dilakukan masing-masing</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Conformance…</source>
+        <translation>&amp;Kesesuaian…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run the conformance battery of mbscope conform against a slave: a verdict per check with its clause</source>
+        <translation>Jalankan rangkaian uji kesesuaian mbscope conform terhadap sebuah slave: satu hasil per pemeriksaan beserta pasalnya</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -7930,7 +8173,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Tentang mbscope</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+62"/>
         <source>Recording settings apply from the next connection.</source>
         <translation>Pengaturan perekaman berlaku mulai sambungan berikutnya.</translation>
     </message>

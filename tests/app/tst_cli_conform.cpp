@@ -5,6 +5,7 @@
 // fails falsely. Also: the scorecard's JSON and JUnit, usage errors, an unreachable target.
 
 #include "clitest.h"
+#include "pacedline.h"
 
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
@@ -225,6 +226,219 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, card.value(QStringLiteral("counts")).toObject().value(QStringLiteral("failed_mandatory")).toInt() > 0 ? 1 : 0);
     }
 
+    // --html: one self-contained page, read back as XML: the summary before the first check, a
+    // section per check of the JSON scorecard with its clause, verdict, request and answer, the
+    // failures listed and linked, and nothing loaded from outside (no src, no href but #anchors).
+    void htmlReport_data()
+    {
+        QTest::addColumn<QString>("listen");
+        QTest::addColumn<QString>("faults");
+        QTest::addColumn<QString>("only");
+        QTest::addColumn<bool>("passes");
+        QTest::newRow("tcp passes") << "tcp://127.0.0.1:0" << "" << "" << true;
+        QTest::newRow("rtu-tcp passes") << "rtu-tcp://127.0.0.1:0" << "" << "read.03,serial.broadcast,serial.reserved,diag" << true;
+        QTest::newRow("wrong exception code fails") << "tcp://127.0.0.1:0" << R"({"kind": "exception", "code": 2, "functions": ["0x03"], "quantity": 0})"
+                                                    << "read.03,mbap" << false;
+    }
+    void htmlReport()
+    {
+        QFETCH(QString, listen);
+        QFETCH(QString, faults);
+        QFETCH(QString, only);
+        QFETCH(bool, passes);
+        const QString tag = QString::fromLatin1(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('-'));
+        QStringList simArgs{QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"), listen,
+                            QStringLiteral("--quiet")};
+        if (!faults.isEmpty()) {
+            const QString path = m_dir.filePath(tag + QStringLiteral("-html-faults.json"));
+            QVERIFY(writeFile(path, QStringLiteral(R"({"seed": 1, "rules": [%1]})").arg(faults).toUtf8()));
+            simArgs += {QStringLiteral("--faults"), path};
+        }
+        Background sim;
+        QString error;
+        QVERIFY2(sim.start(simArgs, &error), qPrintable(error));
+        const QString html = m_dir.filePath(tag + QStringLiteral(".html"));
+        QStringList args{QStringLiteral("conform"), QStringLiteral("--target"), sim.url(), QStringLiteral("--profile"), QStringLiteral("conformance"),
+                         QStringLiteral("--json"), QStringLiteral("--html"), html};
+        if (!only.isEmpty())
+            args += {QStringLiteral("--only"), only};
+        const CliResult r = runMbscope(args + kTimeout);
+        QVERIFY2(r.finished, r.describe());
+        QCOMPARE(r.exitCode, passes ? 0 : 1);
+        const QJsonObject card = r.json();
+        const QJsonArray checks = card.value(QStringLiteral("checks")).toArray();
+        QVERIFY(!checks.isEmpty());
+
+        QFile file(html);
+        QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(html));
+        QXmlStreamReader reader(&file);
+        int section = -1;           // index of the check section being read
+        bool summarySeen = false;
+        QString verdictClass;
+        QString cell;               // the class of the <td> being read
+        QStringList failuresListed;
+        QString inLi;
+        QList<QJsonObject> seen;    // per check section: what the page says
+        while (!reader.atEnd()) {
+            reader.readNext();
+            if (reader.isStartElement()) {
+                const QXmlStreamAttributes a = reader.attributes();
+                const QString name = reader.name().toString();
+                QVERIFY2(!a.hasAttribute(QStringLiteral("src")), "an element loads something");
+                if (a.hasAttribute(QStringLiteral("href")))
+                    QVERIFY2(a.value(QStringLiteral("href")).startsWith(QLatin1Char('#')), qPrintable(a.value(QStringLiteral("href")).toString()));
+                QVERIFY2(name != QLatin1String("script") && name != QLatin1String("link") && name != QLatin1String("img"), qPrintable(name));
+                const QString cls = a.value(QStringLiteral("class")).toString();
+                if (name == QLatin1String("section") && a.value(QStringLiteral("id")) == QLatin1String("summary")) {
+                    QCOMPARE(section, -1); // the summary comes first
+                    summarySeen = true;
+                } else if (name == QLatin1String("section") && cls == QLatin1String("check")) {
+                    ++section;
+                    QJsonObject o;
+                    o.insert(QStringLiteral("id"), a.value(QStringLiteral("id")).toString());
+                    o.insert(QStringLiteral("verdict"), a.value(QStringLiteral("data-verdict")).toString());
+                    seen.append(o);
+                } else if (name == QLatin1String("p") && cls.startsWith(QLatin1String("verdict "))) {
+                    verdictClass = cls.mid(8);
+                } else if (name == QLatin1String("td")) {
+                    cell = cls;
+                } else if (name == QLatin1String("li")) {
+                    inLi = QStringLiteral("?");
+                } else if (name == QLatin1String("a") && !inLi.isEmpty()) {
+                    failuresListed.append(a.value(QStringLiteral("href")).mid(1).toString());
+                }
+            } else if (reader.isEndElement() && reader.name() == QLatin1String("td")) {
+                cell.clear();
+            } else if (reader.isEndElement() && reader.name() == QLatin1String("li")) {
+                inLi.clear();
+            } else if (reader.isCharacters() && !reader.isWhitespace() && section >= 0 && !cell.isEmpty()) {
+                QJsonObject &o = seen[section];
+                o.insert(cell, o.value(cell).toString() + reader.text().toString());
+            }
+        }
+        QVERIFY2(!reader.hasError(), qPrintable(QStringLiteral("%1 at line %2").arg(reader.errorString()).arg(reader.lineNumber())));
+        QVERIFY(summarySeen);
+        QCOMPARE(verdictClass, passes ? QStringLiteral("passed") : QStringLiteral("failed"));
+        QCOMPARE(seen.size(), checks.size());
+        QStringList failed;
+        for (qsizetype i = 0; i < checks.size(); ++i) {
+            const QJsonObject want = checks.at(i).toObject();
+            const QJsonObject got = seen.at(i);
+            const QString id = want.value(QStringLiteral("id")).toString();
+            QCOMPARE(got.value(QStringLiteral("id")).toString(), id);
+            QCOMPARE(got.value(QStringLiteral("verdict")).toString(), want.value(QStringLiteral("verdict")).toString());
+            QCOMPARE(got.value(QStringLiteral("clause")).toString(), want.value(QStringLiteral("clause")).toString());
+            QCOMPARE(got.value(QStringLiteral("level")).toString(), want.value(QStringLiteral("level")).toString());
+            const QString request = want.value(QStringLiteral("request")).toString();
+            const QString answer = want.value(QStringLiteral("answer")).toString();
+            QCOMPARE(got.value(QStringLiteral("request")).toString(), request.isEmpty() ? QStringLiteral("(none sent)") : request);
+            QCOMPARE(got.value(QStringLiteral("answer")).toString(), answer.isEmpty() ? QStringLiteral("(none)") : answer);
+            if (want.value(QStringLiteral("verdict")).toString() == QLatin1String("failed"))
+                failed.append(id);
+        }
+        QCOMPARE(failuresListed, failed);
+        QCOMPARE(failed.isEmpty(), passes);
+    }
+
+    // The line timing on an RTU serial port, at 600 baud 8N1 (a character 16.7 ms, t1.5 27.5 ms,
+    // t3.5 64.2 ms): the simulator behind a line relay that takes each character's time
+    // (PacedLine) answers as soon as a request's length is in, sooner than t3.5; a delay fault
+    // makes it wait; a trickle fault puts 38 ms of silence between its characters (under t3.5,
+    // so still one frame). A bare pty pair carries bytes at once: its times are not the line's.
+    void serialTiming_data()
+    {
+        QTest::addColumn<bool>("paced");
+        QTest::addColumn<QString>("faults");
+        QTest::addColumn<QString>("t35");  // serial.t35-before-answer's verdict
+        QTest::addColumn<QString>("t15");  // serial.t15-within-answer's
+        QTest::addColumn<QString>("says"); // in t15's sentence, or t35's when t15 says nothing new
+        QTest::newRow("bare pty pair") << false << "" << "skipped" << "skipped" << "not measurable on this link";
+        QTest::newRow("paced, answers at once") << true << "" << "failed" << "skipped" << "came in one read";
+        QTest::newRow("paced, waits 100 ms") << true << R"({"kind": "delay", "delay": 100})" << "passed" << "skipped" << "came in one read";
+        QTest::newRow("paced, silences inside the answer") << true << R"({"kind": "trickle", "gapMs": 55})" << "failed" << "failed"
+                                                           << "at least one silence between its characters";
+    }
+    void serialTiming()
+    {
+        QFETCH(bool, paced);
+        QFETCH(QString, faults);
+        QFETCH(QString, t35);
+        QFETCH(QString, t15);
+        QFETCH(QString, says);
+        constexpr int kBaud = 600;
+        const qint64 characterNs = 10LL * 1000000000LL / kBaud; // 8N1: start, 8 data, stop
+        mbscope::testpeers::PacedLine line;
+        QString error;
+        QVERIFY2(line.start(paced ? characterNs : 0, &error), qPrintable(error));
+        const QString options = QStringLiteral("?baud=%1&parity=N").arg(kBaud);
+        QStringList simArgs{QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                            QStringLiteral("rtu://") + line.deviceEnd() + options, QStringLiteral("--quiet")};
+        if (!faults.isEmpty()) {
+            const QString path = m_dir.filePath(QString::fromLatin1(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('-')) + QStringLiteral("-line.json"));
+            QVERIFY(writeFile(path, QStringLiteral(R"({"seed": 1, "rules": [%1]})").arg(faults).toUtf8()));
+            simArgs += {QStringLiteral("--faults"), path};
+        }
+        Background sim;
+        QVERIFY2(sim.start(simArgs, &error), qPrintable(error));
+        const CliResult r = runMbscope({QStringLiteral("conform"), QStringLiteral("--target"), QStringLiteral("rtu://") + line.masterEnd() + options,
+                                        QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--only"),
+                                        QStringLiteral("serial.t"), QStringLiteral("--timeout"), QStringLiteral("2s"), QStringLiteral("--json")});
+        QVERIFY2(r.finished, r.describe());
+        const QJsonObject card = r.json();
+        const QJsonObject c35 = checkOf(card, QStringLiteral("serial.t35-before-answer"));
+        const QJsonObject c15 = checkOf(card, QStringLiteral("serial.t15-within-answer"));
+        QVERIFY2(c35.value(QStringLiteral("verdict")).toString() == t35, r.describe());
+        QVERIFY2(c15.value(QStringLiteral("verdict")).toString() == t15, r.describe());
+        const QString sentence = c15.value(QStringLiteral("sentence")).toString();
+        QVERIFY2(sentence.contains(says), qPrintable(sentence));
+        // Never a pass without evidence: what is not judged says so.
+        for (const QJsonObject &c : {c35, c15}) {
+            if (c.value(QStringLiteral("verdict")).toString() == QLatin1String("skipped"))
+                QVERIFY2(c.value(QStringLiteral("sentence")).toString().startsWith(QLatin1String("not judged")), r.describe());
+        }
+        QCOMPARE(r.exitCode, t35 == QLatin1String("failed") || t15 == QLatin1String("failed") ? 1 : 0);
+    }
+
+    // Connections at once: the simulator takes 64 by default (the check's 8 beside its own pass);
+    // with maxClients 3 it refuses the fourth (a deviation: TCP/IP Guide 4.2.1 has the oldest idle
+    // one closed instead), or closes the oldest (what the guide asks).
+    void tcpClients_data()
+    {
+        QTest::addColumn<QString>("limits");
+        QTest::addColumn<QString>("verdict");
+        QTest::addColumn<QString>("measured");
+        QTest::addColumn<QString>("says");
+        QTest::newRow("no limit") << "" << "passed" << "9 connections at once or more" << "each answered again";
+        QTest::newRow("refuses the fourth") << R"({"maxClients": 3})" << "failed" << "3 connections at once" << "connection 4 got";
+        QTest::newRow("drops the oldest") << R"({"maxClients": 3, "extraClients": "dropOldest"})" << "passed" << "3 connections at once"
+                                          << "by closing the oldest idle one";
+    }
+    void tcpClients()
+    {
+        QFETCH(QString, limits);
+        QFETCH(QString, verdict);
+        QFETCH(QString, measured);
+        QFETCH(QString, says);
+        const QString path = m_dir.filePath(QString::fromLatin1(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('-')) + QStringLiteral("-clients.json"));
+        QVERIFY(writeFile(path, QStringLiteral(R"({"name": "clients", %1 "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})")
+                                    .arg(limits.isEmpty() ? QString() : QStringLiteral("\"limits\": %1,").arg(limits))
+                                    .toUtf8()));
+        Background sim;
+        QString error;
+        QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), path, QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"),
+                            QStringLiteral("--quiet")},
+                           &error),
+                 qPrintable(error));
+        const CliResult r = runMbscope({QStringLiteral("conform"), QStringLiteral("--target"), sim.url(), QStringLiteral("--only"),
+                                        QStringLiteral("tcp.clients"), QStringLiteral("--timeout"), QStringLiteral("500ms"), QStringLiteral("--json")});
+        QVERIFY2(r.finished, r.describe());
+        const QJsonObject c = checkOf(r.json(), QStringLiteral("tcp.clients"));
+        QVERIFY2(c.value(QStringLiteral("verdict")).toString() == verdict, r.describe());
+        QVERIFY2(c.value(QStringLiteral("measured")).toString() == measured, r.describe());
+        QVERIFY2(c.value(QStringLiteral("sentence")).toString().contains(says), r.describe());
+        QCOMPARE(r.exitCode, 0); // a recommended check: a deviation, not a failed device
+    }
+
     void usageErrors_data()
     {
         QTest::addColumn<QStringList>("args");
@@ -235,6 +449,8 @@ private Q_SLOTS:
         QTest::newRow("unit 0") << QStringList{"--target", "tcp://127.0.0.1:1", "--unit", "0"} << "--unit 0 is out of range: expected 1 to 247";
         QTest::newRow("only selects nothing") << QStringList{"--target", "tcp://127.0.0.1:1", "--only", "nosuch"} << "--only nosuch selects no check";
         QTest::newRow("unknown profile") << QStringList{"--target", "tcp://127.0.0.1:1", "--profile", "nosuch"} << "--profile nosuch";
+        QTest::newRow("html folder missing") << QStringList{"--target", "tcp://127.0.0.1:1", "--html", "/nonexistent/conform.html"}
+                                             << "--html: cannot write /nonexistent/conform.html";
         QTest::newRow("positional") << QStringList{"tcp://127.0.0.1:1"} << "the device is given with --target URL";
     }
     void usageErrors()

@@ -98,6 +98,7 @@ QMap<QString, int> IncludeRules::uiTiers()
         {QStringLiteral("traffic"), 1},  {QStringLiteral("registers"), 1}, {QStringLiteral("sim"), 1},
         {QStringLiteral("discovery"), 1},
         {QStringLiteral("analysis"), 2}, {QStringLiteral("session"), 2}, {QStringLiteral("watch"), 2},
+        {QStringLiteral("conformance"), 2},
         {QStringLiteral("shell"), 3},
     };
 }

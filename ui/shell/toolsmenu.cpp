@@ -1,5 +1,6 @@
 #include "toolsmenu.h"
 
+#include "conformance/conformancedialog.h"
 #include "discovery/scandialog.h"
 #include "link/connectionbar.h"
 #include "link/linkcontroller.h"
@@ -34,6 +35,9 @@ void ToolsMenu::addMenus(QMenuBar *menuBar)
     QAction *scan = tools->addAction(tr("&Scan for units\u2026"), this, &ToolsMenu::showScanDialog);
     scan->setObjectName(QStringLiteral("scanAction"));
     scan->setToolTip(tr("Ask every unit id of a link the same read and list what each did"));
+    QAction *conform = tools->addAction(tr("&Conformance\u2026"), this, &ToolsMenu::showConformanceDialog);
+    conform->setObjectName(QStringLiteral("conformanceAction"));
+    conform->setToolTip(tr("Run the conformance battery of mbscope conform against a slave: a verdict per check with its clause"));
     tools->addSeparator();
     QAction *preferences = tools->addAction(tr("&Preferences\u2026"), this, &ToolsMenu::showPreferences);
     preferences->setMenuRole(QAction::PreferencesRole);
@@ -59,6 +63,27 @@ ScanDialog *ToolsMenu::scanDialog()
 void ToolsMenu::showScanDialog()
 {
     ScanDialog *dialog = scanDialog();
+    if (!dialog->isRunning()) {
+        if (m_link->isConnected())
+            dialog->setTarget(m_link->url());
+        else if (const ConnectionBar::State state = m_connectionBar->state(); state.target)
+            dialog->setTarget(*state.target);
+    }
+    dialog->show();
+    dialog->raise();
+    dialog->activateWindow();
+}
+
+ConformanceDialog *ToolsMenu::conformanceDialog()
+{
+    if (!m_conformanceDialog)
+        m_conformanceDialog = new ConformanceDialog(m_window);
+    return m_conformanceDialog;
+}
+
+void ToolsMenu::showConformanceDialog()
+{
+    ConformanceDialog *dialog = conformanceDialog();
     if (!dialog->isRunning()) {
         if (m_link->isConnected())
             dialog->setTarget(m_link->url());

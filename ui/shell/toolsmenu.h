@@ -10,13 +10,14 @@ class QMenuBar;
 
 namespace mbscope {
 
+class ConformanceDialog;
 class ConnectionBar;
 class LinkController;
 class RecordingControl;
 class ScanDialog;
 class TrafficMonitor;
 
-// The Tools menu (Scan for units, Preferences) and the Help menu (About). The scan dialog is made
+// The Tools menu (Scan for units, Conformance, Preferences) and the Help menu (About). The scan dialog is made
 // when first asked for; its frames reach the traffic list and the connection's recording as the
 // composer's do, and the units it finds are offered to the window as watches (watchesFound).
 // MainWindow makes one and adds its menus.
@@ -34,6 +35,9 @@ public:
     // Opens the scan dialog on the window's target: the connected link, else what the
     // connection bar makes.
     void showScanDialog();
+    // Tools > Conformance's dialog (made on first use), opened on the window's target as the scan's is.
+    [[nodiscard]] ConformanceDialog *conformanceDialog();
+    void showConformanceDialog();
 
 Q_SIGNALS:
     // "Add as watches" in the scan dialog.
@@ -50,6 +54,7 @@ private:
     TrafficMonitor *m_traffic;
     RecordingControl *m_recording;
     ScanDialog *m_scanDialog = nullptr;
+    ConformanceDialog *m_conformanceDialog = nullptr;
 };
 
 } // namespace mbscope

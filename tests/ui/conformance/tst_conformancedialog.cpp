@@ -1,0 +1,291 @@
+// Tools > Conformance (ConformanceDialog) offscreen against the embedded simulator's shipped
+// conformance profile: the battery's rows fill the table as checks are decided, the progress bar
+// follows, nothing fails, write checks are skipped unless Writable names addresses (and pass when
+// it does), Stop ends a run early, bad fields are said, the verdict colours follow the level, the
+// scorecard is saved as HTML, JSON and JUnit, and the window's Tools menu opens the dialog on its
+// target.
+
+#include "conformance/conformancedialog.h"
+#include "conformance/conformanceresultmodel.h"
+#include "common/severitystyle.h"
+#include "guitestsupport.h"
+#include "link/connectionbar.h"
+#include "shell/mainwindow.h"
+#include "sim/embeddedsimulator.h"
+
+#include <QtCore/QFile>
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
+#include <QtCore/QTemporaryDir>
+#include <QtCore/QXmlStreamReader>
+#include <QtGui/QAction>
+#include <QtTest/QAbstractItemModelTester>
+#include <QtTest/QSignalSpy>
+#include <QtTest/QTest>
+#include <QtWidgets/QApplication>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QProgressBar>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSpinBox>
+
+using namespace mbscope;
+
+namespace {
+
+// The verdicts of the model, by check id.
+QMap<QString, QString> verdicts(const ConformanceResultModel *model)
+{
+    QMap<QString, QString> out;
+    for (const CheckResult &r : model->results())
+        out.insert(r.id, QLatin1String(checkVerdictName(r.verdict)));
+    return out;
+}
+
+} // namespace
+
+class TestConformanceDialog : public QObject
+{
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void runFillsTheScorecard_data();
+    void runFillsTheScorecard();
+    void stopEndsTheRun();
+    void badFieldsAreSaid_data();
+    void badFieldsAreSaid();
+    void verdictColours_data();
+    void verdictColours();
+    void toolsMenuOpensIt();
+
+private:
+    void fill(ConformanceDialog &dialog, const QString &writable, const QString &only);
+
+    EmbeddedSimulator m_sim;
+    LinkUrl m_url;
+    QTemporaryDir m_dir;
+};
+
+void TestConformanceDialog::initTestCase()
+{
+    guitest::isolateSettings();
+    QVERIFY(m_dir.isValid());
+    const EmbeddedSimulator::Started started = m_sim.start(QStringLiteral("conformance"), QStringLiteral("tcp://127.0.0.1:0"));
+    QVERIFY2(started.ok, qPrintable(started.error));
+    m_url = started.url;
+}
+
+void TestConformanceDialog::fill(ConformanceDialog &dialog, const QString &writable, const QString &only)
+{
+    dialog.setTarget(m_url);
+    dialog.findChild<QSpinBox *>(QStringLiteral("conformTimeout"))->setValue(300);
+    dialog.findChild<QLineEdit *>(QStringLiteral("conformProfile"))->setText(QStringLiteral("conformance"));
+    dialog.findChild<QLineEdit *>(QStringLiteral("conformWritable"))->setText(writable);
+    dialog.findChild<QLineEdit *>(QStringLiteral("conformOnly"))->setText(only);
+}
+
+void TestConformanceDialog::runFillsTheScorecard_data()
+{
+    QTest::addColumn<QString>("writable");
+    QTest::addColumn<QString>("only");
+    QTest::addColumn<QString>("writeVerdict"); // write.06.echo's
+    QTest::addColumn<QString>("screenshot");
+    QTest::newRow("reads only") << "" << "" << "skipped" << "";
+    QTest::newRow("writes where allowed") << "holding:10-13, coils:10-17" << "read.03,read.01,mbap,exception,write,ident,diag" << "passed"
+                                          << "conformance.png";
+}
+
+void TestConformanceDialog::runFillsTheScorecard()
+{
+    QFETCH(QString, writable);
+    QFETCH(QString, only);
+    QFETCH(QString, writeVerdict);
+    QFETCH(QString, screenshot);
+    ConformanceDialog dialog;
+    QAbstractItemModelTester tester(dialog.model(), QAbstractItemModelTester::FailureReportingMode::QtTest);
+    fill(dialog, writable, only);
+    dialog.show();
+    auto *save = dialog.findChild<QPushButton *>(QStringLiteral("conformSave"));
+    QVERIFY(!save->isEnabled());
+    QSignalSpy finished(&dialog, &ConformanceDialog::finished);
+    QSignalSpy decided(&dialog, &ConformanceDialog::checkDecided);
+    QTest::mouseClick(dialog.findChild<QPushButton *>(QStringLiteral("conformStart")), Qt::LeftButton);
+    QVERIFY(dialog.isRunning());
+    QVERIFY(!dialog.findChild<QPushButton *>(QStringLiteral("conformStart"))->isEnabled());
+    QVERIFY(dialog.findChild<QPushButton *>(QStringLiteral("conformStop"))->isEnabled());
+    QVERIFY(finished.wait(240000));
+    QCOMPARE(finished.first().first().toBool(), true);
+    QVERIFY(!dialog.isRunning());
+
+    // A row per check decided, the bar at its end, nothing failed.
+    const int rows = dialog.model()->rowCount();
+    QVERIFY(rows > 10);
+    QCOMPARE(decided.size(), rows);
+    QCOMPARE(decided.last().at(1).toInt(), rows);
+    auto *bar = dialog.findChild<QProgressBar *>(QStringLiteral("conformProgress"));
+    QCOMPARE(bar->value(), rows);
+    QCOMPARE(bar->maximum(), rows);
+    const QMap<QString, QString> v = verdicts(dialog.model());
+    QVERIFY2(!v.values().contains(QStringLiteral("failed")), qPrintable(QStringList(v.keys(QStringLiteral("failed"))).join(QLatin1Char(' '))));
+    QCOMPARE(v.value(QStringLiteral("write.06.echo")), writeVerdict);
+    QVERIFY(dialog.findChild<QLabel *>(QStringLiteral("conformStatus"))->text().contains(QStringLiteral("Every mandatory check passed")));
+    // The table shows what the model holds: a pass is green, its request and answer as hex.
+    int row = -1;
+    for (int i = 0; i < rows && row < 0; ++i)
+        row = dialog.model()->results().at(i).id == QLatin1String("read.03.quantity-zero") ? i : -1;
+    QVERIFY(row >= 0);
+    const QAbstractItemModel *m = dialog.model();
+    QCOMPARE(m->index(row, ConformanceResultModel::VerdictColumn).data().toString(), QStringLiteral("PASS"));
+    QVERIFY(m->index(row, ConformanceResultModel::VerdictColumn).data(Qt::BackgroundRole).value<QColor>().isValid());
+    QVERIFY(m->index(row, ConformanceResultModel::ClauseColumn).data().toString().contains(QStringLiteral("V1.1b3")));
+    QVERIFY(m->index(row, ConformanceResultModel::RequestColumn).data().toString().endsWith(QStringLiteral("00 00")));
+    QVERIFY(m->index(row, ConformanceResultModel::AnswerColumn).data().toString().contains(QStringLiteral("83 03")));
+
+    // Saved in the three formats, by suffix.
+    QVERIFY(save->isEnabled());
+    const QString tag = QString::fromLatin1(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('-'));
+    QString error;
+    const QString json = m_dir.filePath(tag + QStringLiteral(".json"));
+    QVERIFY2(dialog.saveReport(json, &error), qPrintable(error));
+    QFile jf(json);
+    QVERIFY(jf.open(QIODevice::ReadOnly));
+    const QJsonObject card = QJsonDocument::fromJson(jf.readAll()).object();
+    QCOMPARE(card.value(QStringLiteral("checks")).toArray().size(), rows);
+    QCOMPARE(card.value(QStringLiteral("passed")).toBool(), true);
+    for (const QString &suffix : {QStringLiteral(".html"), QStringLiteral(".xml")}) {
+        const QString path = m_dir.filePath(tag + suffix);
+        QVERIFY2(dialog.saveReport(path, &error), qPrintable(error));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QXmlStreamReader reader(&f);
+        int items = 0;
+        while (!reader.atEnd()) {
+            reader.readNext();
+            if (reader.isStartElement()
+                && (reader.name() == QLatin1String("testcase")
+                    || (reader.name() == QLatin1String("section") && reader.attributes().value(QStringLiteral("class")) == QLatin1String("check"))))
+                ++items;
+        }
+        QVERIFY2(!reader.hasError(), qPrintable(reader.errorString()));
+        QCOMPARE(items, rows);
+    }
+    QVERIFY(!dialog.saveReport(m_dir.filePath(tag + QStringLiteral(".txt")), &error));
+    QVERIFY2(error.contains(QStringLiteral(".html, .json or .xml")), qPrintable(error));
+
+    // scripts/screenshots.sh renders the guide's picture from here.
+    if (const QString path = qEnvironmentVariable("MBSCOPE_CONFORMANCE_SCREENSHOT"); !path.isEmpty() && !screenshot.isEmpty()) {
+        dialog.resize(1400, 760);
+        QCoreApplication::sendPostedEvents();
+        QVERIFY(dialog.grab().save(path, "PNG"));
+    }
+}
+
+void TestConformanceDialog::stopEndsTheRun()
+{
+    ConformanceDialog dialog;
+    fill(dialog, QString(), QString());
+    dialog.show();
+    QSignalSpy finished(&dialog, &ConformanceDialog::finished);
+    connect(&dialog, &ConformanceDialog::checkDecided, &dialog, [&dialog](int done) {
+        if (done == 3)
+            QTest::mouseClick(dialog.findChild<QPushButton *>(QStringLiteral("conformStop")), Qt::LeftButton);
+    });
+    dialog.start();
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.first().first().toBool(), false); // interrupted is not a pass
+    QCOMPARE(dialog.model()->rowCount(), 3);
+    QVERIFY(dialog.result()->interrupted);
+    QVERIFY(dialog.findChild<QLabel *>(QStringLiteral("conformStatus"))->text().contains(QStringLiteral("Interrupted")));
+    QVERIFY(dialog.findChild<QPushButton *>(QStringLiteral("conformStart"))->isEnabled());
+}
+
+void TestConformanceDialog::badFieldsAreSaid_data()
+{
+    QTest::addColumn<QString>("field");
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<QString>("says");
+    QTest::newRow("no target") << "conformTarget" << "" << "Type the link of the slave under test";
+    QTest::newRow("bad target") << "conformTarget" << "tcpp://1.2.3.4" << "tcpp";
+    QTest::newRow("bad writable") << "conformWritable" << "holdings:1" << "'holdings' is not a table";
+    QTest::newRow("only selects nothing") << "conformOnly" << "nosuch" << "nosuch selects no check";
+    QTest::newRow("unknown profile") << "conformProfile" << "nosuch-profile" << "Profile nosuch-profile";
+}
+
+void TestConformanceDialog::badFieldsAreSaid()
+{
+    QFETCH(QString, field);
+    QFETCH(QString, text);
+    QFETCH(QString, says);
+    ConformanceDialog dialog;
+    fill(dialog, QString(), QString());
+    dialog.findChild<QLineEdit *>(field)->setText(text);
+    QSignalSpy finished(&dialog, &ConformanceDialog::finished);
+    dialog.start();
+    QVERIFY(!dialog.isRunning());
+    QVERIFY(!dialog.settings());
+    const QString status = dialog.findChild<QLabel *>(QStringLiteral("conformStatus"))->text();
+    QVERIFY2(status.contains(says.toHtmlEscaped()), qPrintable(status));
+    QCOMPARE(dialog.model()->rowCount(), 0);
+}
+
+void TestConformanceDialog::verdictColours_data()
+{
+    QTest::addColumn<int>("verdict");
+    QTest::addColumn<int>("level");
+    QTest::addColumn<QString>("label");
+    QTest::addColumn<int>("severity"); // -1: green (a pass), -2: no colour
+    QTest::newRow("mandatory failed") << int(CheckVerdict::Failed) << int(CheckLevel::Mandatory) << "FAIL" << int(Severity::Error);
+    QTest::newRow("recommended failed") << int(CheckVerdict::Failed) << int(CheckLevel::Recommended) << "WARN" << int(Severity::Warning);
+    QTest::newRow("error") << int(CheckVerdict::Error) << int(CheckLevel::Mandatory) << "ERROR" << int(Severity::Error);
+    QTest::newRow("measured") << int(CheckVerdict::Passed) << int(CheckLevel::Informational) << "INFO" << int(Severity::Info);
+    QTest::newRow("passed") << int(CheckVerdict::Passed) << int(CheckLevel::Mandatory) << "PASS" << -1;
+    QTest::newRow("skipped") << int(CheckVerdict::Skipped) << int(CheckLevel::Mandatory) << "SKIP" << -2;
+}
+
+void TestConformanceDialog::verdictColours()
+{
+    QFETCH(int, verdict);
+    QFETCH(int, level);
+    QFETCH(QString, label);
+    QFETCH(int, severity);
+    ConformanceResultModel model;
+    CheckResult r;
+    r.id = QStringLiteral("x.y");
+    r.verdict = CheckVerdict(verdict);
+    r.level = CheckLevel(level);
+    model.append(r);
+    const QModelIndex cell = model.index(0, ConformanceResultModel::VerdictColumn);
+    QCOMPARE(cell.data().toString(), label);
+    const QColor colour = cell.data(Qt::BackgroundRole).value<QColor>();
+    if (severity >= 0) {
+        QCOMPARE(colour, SeverityStyle::backgroundColor(Severity(severity)));
+    } else if (severity == -1) {
+        QVERIFY(colour.isValid());
+        QVERIFY(colour.green() > colour.red());
+    } else {
+        QVERIFY(!colour.isValid());
+    }
+}
+
+void TestConformanceDialog::toolsMenuOpensIt()
+{
+    MainWindow window;
+    window.connectionBar()->setUrl(m_url);
+    auto *action = window.findChild<QAction *>(QStringLiteral("conformanceAction"));
+    QVERIFY(action);
+    action->trigger();
+    auto *dialog = window.findChild<ConformanceDialog *>();
+    QVERIFY(dialog);
+    QVERIFY(dialog->isVisible());
+    const std::optional<ConformanceSettings> settings = dialog->settings();
+    QVERIFY(settings);
+    QCOMPARE(settings->url.port, m_url.port);
+    QCOMPARE(settings->url.kind, m_url.kind);
+    QVERIFY(settings->writable.isEmpty()); // never writes unless told where
+    dialog->close();
+}
+
+QTEST_MAIN(TestConformanceDialog)
+#include "tst_conformancedialog.moc"

@@ -1,0 +1,80 @@
+#pragma once
+
+#include "conformance/conformanceresult.h"
+#include "conformance/conformancesettings.h"
+#include "transport/linkurl.h"
+
+#include <QtWidgets/QDialog>
+
+#include <memory>
+#include <optional>
+
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTableView;
+
+namespace mbscope {
+
+class ConformanceResultModel;
+class ConformanceRunner;
+
+// Tools > Conformance: the battery of `mbscope conform` (core/conformance's ConformanceRunner)
+// against the window's link, a row per check as it is decided, a progress bar, Stop, and the
+// scorecard saved as HTML, JSON or JUnit XML. Reads only unless Writable names addresses, as
+// --writable does on the command line.
+class ConformanceDialog : public QDialog
+{
+    Q_OBJECT
+public:
+    explicit ConformanceDialog(QWidget *parent = nullptr);
+    ~ConformanceDialog() override;
+
+    void setTarget(const LinkUrl &url);
+    // The settings the fields make; nullopt, with what is wrong shown in the status line.
+    [[nodiscard]] std::optional<ConformanceSettings> settings();
+    [[nodiscard]] bool isRunning() const { return m_running; }
+    [[nodiscard]] ConformanceResultModel *model() const { return m_model; }
+    [[nodiscard]] const std::optional<ConformanceResult> &result() const { return m_result; }
+    // The scorecard to path, in the format its suffix names (.html or .htm, .json, .xml for
+    // JUnit); false with *error when there is none yet, the suffix is unknown or the file cannot be written.
+    bool saveReport(const QString &path, QString *error = nullptr);
+
+public Q_SLOTS:
+    // Starts the battery (from the event loop: the call returns at once; finished() follows).
+    void start();
+    void stop();
+    void save();
+
+Q_SIGNALS:
+    void checkDecided(int done, int total);
+    void finished(bool passed);
+
+protected:
+    void reject() override;
+
+private:
+    void run(const ConformanceSettings &settings);
+    void updateButtons();
+
+    ConformanceResultModel *m_model;
+    QLineEdit *m_target;
+    QSpinBox *m_unit;
+    QSpinBox *m_timeout;
+    QLineEdit *m_profile;
+    QLineEdit *m_writable;
+    QLineEdit *m_only;
+    QPushButton *m_start;
+    QPushButton *m_stop;
+    QPushButton *m_save;
+    QProgressBar *m_progress;
+    QLabel *m_status;
+    QTableView *m_table;
+    bool m_running = false;
+    std::unique_ptr<ConformanceRunner> m_runner;
+    std::optional<ConformanceResult> m_result;
+};
+
+} // namespace mbscope
