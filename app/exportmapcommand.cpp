@@ -27,10 +27,10 @@ LinkUrl defaultEndpoint(const DeviceProfile &profile, MapExportFormat format)
 {
     for (const QString &text : profile.endpoints) {
         const LinkUrl::Result parsed = LinkUrl::parse(text);
-        if (parsed.ok && MapExporter::unsupportedEndpoint(format, parsed.url).isEmpty())
-            return parsed.url;
+        if (parsed.url && MapExporter::unsupportedEndpoint(format, *parsed.url).isEmpty())
+            return *parsed.url;
     }
-    return LinkUrl::parse(u"tcp://127.0.0.1:502").url;
+    return *LinkUrl::parse(u"tcp://127.0.0.1:502").url;
 }
 
 // One read of every block through target; bits come back as 0/1 words.
@@ -182,9 +182,9 @@ int runExportMap(const QStringList &arguments)
     input.timeoutMs = int(std::min<qint64>(wait.ns / Duration::Millisecond, 600000));
     if (parser.isSet(endpoint)) {
         const LinkUrl::Result parsed = LinkUrl::parse(parser.value(endpoint));
-        if (!parsed.ok)
+        if (!parsed.url)
             return usage(QStringLiteral("--endpoint %1").arg(parsed.error));
-        input.endpoint = parsed.url;
+        input.endpoint = *parsed.url;
     } else {
         input.endpoint = defaultEndpoint(profile, *format);
     }
@@ -205,10 +205,10 @@ int runExportMap(const QStringList &arguments)
 
     if (parser.isSet(verify)) {
         const LinkUrl::Result parsed = LinkUrl::parse(parser.value(verify));
-        if (!parsed.ok)
+        if (!parsed.url)
             return usage(QStringLiteral("--verify %1").arg(parsed.error));
         TargetSettings target;
-        target.url = parsed.url;
+        target.url = *parsed.url;
         target.timeoutMs = input.timeoutMs;
         const QList<MapVerdict> verdicts = MapVerifier::judge(input.points, input.blocks,
                                                               readBlocks(target, input.points, input.blocks));
@@ -218,7 +218,7 @@ int runExportMap(const QStringList &arguments)
             if (v.ok())
                 continue;
             ++bad;
-            err << "mbscope export-map: " << profile.source << ": unit " << p.unitId << ' ' << p.tableKey() << ' '
+            err << "mbscope export-map: " << profile.source << ": unit " << int(p.unitId) << ' ' << p.tableKey() << ' '
                 << p.address << " (" << p.label << "): " << v.problem << '\n';
         }
         if (bad > 0) {

@@ -91,7 +91,7 @@ QString HomeAssistantWriter::write(const MapExportInput &input)
             binary += QStringLiteral("      - name: %1\n        unique_id: %2\n        device_address: %3\n"
                                      "        address: %4\n        input_type: %5\n        scan_interval: %6\n")
                           .arg(yamlString(p.label), yamlString(hub + QLatin1Char('_') + p.name))
-                          .arg(p.unitId).arg(p.address)
+                          .arg(int(p.unitId)).arg(p.address)
                           .arg(p.table == SimTable::Coils ? QStringLiteral("coil") : QStringLiteral("discrete_input"))
                           .arg(seconds);
             continue;
@@ -99,7 +99,7 @@ QString HomeAssistantWriter::write(const MapExportInput &input)
         QString s = QStringLiteral("      - name: %1\n        unique_id: %2\n        device_address: %3\n"
                                    "        address: %4\n        input_type: %5\n        data_type: %6\n")
                         .arg(yamlString(p.label), yamlString(hub + QLatin1Char('_') + p.name))
-                        .arg(p.unitId).arg(p.address)
+                        .arg(int(p.unitId)).arg(p.address)
                         .arg(p.table == SimTable::HoldingRegisters ? QStringLiteral("holding") : QStringLiteral("input"),
                              dataType(p));
         if (p.isString()) {

@@ -34,7 +34,7 @@ QString endianness(const MapPoint &p)
     switch (p.format.order()) {
     case RegisterOrder::ABCD: return QStringLiteral("big");
     case RegisterOrder::DCBA: return QStringLiteral("little");
-    case RegisterOrder::BADC: return QStringLiteral(p.registers == 1 ? "little" : "mixed");
+    case RegisterOrder::BADC: return p.registers == 1 ? QStringLiteral("little") : QStringLiteral("mixed");
     case RegisterOrder::CDAB: return QStringLiteral("yolo");
     }
     return QStringLiteral("big");
@@ -62,20 +62,34 @@ QString ModbusExporterWriter::write(const MapExportInput &input)
                    .arg(yamlString(p.description.isEmpty() ? p.label + (p.unit.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(p.unit))
                                                            : p.description));
         if (input.points.constFirst().unitId != p.unitId || p.unitId != 1)
-            out += QStringLiteral("        # unit %1: scrape with sub_target=%1\n").arg(p.unitId);
-        out += QStringLiteral("        address: %1%2\n").arg(p.readFunction()).arg(p.address, 5, 10, QLatin1Char('0'));
+            out += QStringLiteral("        # unit %1: scrape with sub_target=%1\n").arg(int(p.unitId));
+        out += QStringLiteral("        address: %1%2\n").arg(int(p.readFunction())).arg(p.address, 5, 10, QLatin1Char('0'));
         out += QStringLiteral("        dataType: %1\n").arg(dataType(p));
         if (p.isBit())
             out += QStringLiteral("        bitOffset: 0\n");
         else
             out += QStringLiteral("        endianness: %1\n").arg(endianness(p));
-        out += QStringLiteral("        metricType: %1\n")
-                   .arg(p.kind == ValueKind::Counter ? QStringLiteral("counter") : QStringLiteral("gauge"));
+        // modbus_exporter's counter adds each reading to the metric: a device's total is a gauge.
+        out += QStringLiteral("        metricType: gauge\n");
         if (!p.isBit() && p.scale != 1)
             out += QStringLiteral("        factor: %1\n").arg(QString::number(p.scale, 'g', 17));
         if (p.offset != 0)
             out += QStringLiteral("        # offset %1 is not applied: modbus_exporter has none\n")
                        .arg(QString::number(p.offset, 'g', 17));
+        // Named bits of a one-register value: a bool metric each (bitOffset counts from the
+        // register's least significant bit, the register read high byte first).
+        if (p.registers == 1 && !p.isBit() && !p.format.isByteSwapped()) {
+            for (auto it = p.bitNames.cbegin(); it != p.bitNames.cend(); ++it) {
+                const QString bit = MapPoint::slug(it.value()).isEmpty() ? QString::number(it.key()) : MapPoint::slug(it.value());
+                out += QStringLiteral("      - name: %1\n        help: %2\n        address: %3%4\n        dataType: bool\n"
+                                      "        bitOffset: %5\n        metricType: gauge\n")
+                           .arg(yamlString(p.name + QLatin1Char('_') + bit),
+                                yamlString(QStringLiteral("%1, bit %2: %3").arg(p.label).arg(it.key()).arg(it.value())))
+                           .arg(int(p.readFunction()))
+                           .arg(p.address, 5, 10, QLatin1Char('0'))
+                           .arg(it.key());
+            }
+        }
     }
     return out;
 }

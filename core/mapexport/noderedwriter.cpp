@@ -180,7 +180,7 @@ QString NodeRedWriter::write(const MapExportInput &input)
         const QString convert = id();
         const QString debug = id();
         const QString what = QStringLiteral("unit %1 %2 %3-%4")
-                                 .arg(b.unitId)
+                                 .arg(int(b.unitId))
                                  .arg(input.points.at(b.points.constFirst()).tableKey())
                                  .arg(b.start)
                                  .arg(b.start + b.quantity - 1);

@@ -114,7 +114,7 @@ QString TelegrafWriter::write(const MapExportInput &input)
     }
     for (const Key &k : order) {
         out += QStringLiteral("\n  [[inputs.modbus.request]]\n");
-        out += QStringLiteral("    slave_id = %1\n").arg(k.unit);
+        out += QStringLiteral("    slave_id = %1\n").arg(int(k.unit));
         out += QStringLiteral("    byte_order = \"%1\"\n").arg(k.order);
         out += QStringLiteral("    register = \"%1\"\n").arg(registerName(k.table));
         out += QStringLiteral("    fields = [\n");

@@ -97,17 +97,17 @@ private slots:
         QTest::addColumn<QStringList>("read");
         QTest::addColumn<int>("exitCode");
         QTest::addColumn<QString>("expected"); // read -q's values, one a line
-        QTest::newRow("03 reads the f32") << QStringList{"-f", "3", "-a", "0", "-n", "2", "--format", "f32-cdab"} << 0 << "230.5\n";
+        QTest::newRow("03 reads the f32") << QStringList{QStringLiteral("-f"), QStringLiteral("3"), QStringLiteral("-a"), QStringLiteral("0"), QStringLiteral("-n"), QStringLiteral("2"), QStringLiteral("--format"), QStringLiteral("f32-cdab")} << 0 << QStringLiteral("230.5\n");
         QTest::newRow("04 reads the same registers")
-            << QStringList{"-f", "4", "-a", "0", "-n", "2", "--format", "f32-cdab"} << 0 << "230.5\n";
-        QTest::newRow("02 reads the coils") << QStringList{"-f", "2", "-a", "0", "-n", "2"} << 0 << "1\n0\n";
-        QTest::newRow("gap: zeros between entries") << QStringList{"-f", "3", "-a", "36", "-n", "5"} << 0 << "0\n0\n0\n0\n21326\n";
-        QTest::newRow("gap: 02 past the last entry") << QStringList{"-f", "3", "-a", "50", "-n", "2"} << 1 << "";
-        QTest::newRow("string of 7, space padded") << QStringList{"-f", "3", "-a", "40", "-n", "4", "--format", "ascii"} << 0
-                                                    << "SN\n-4\n2 \n  \n";
-        QTest::newRow("sentinel served raw") << QStringList{"-f", "3", "-a", "5", "-n", "1", "--format", "hex"} << 0 << "0x8000\n";
+            << QStringList{QStringLiteral("-f"), QStringLiteral("4"), QStringLiteral("-a"), QStringLiteral("0"), QStringLiteral("-n"), QStringLiteral("2"), QStringLiteral("--format"), QStringLiteral("f32-cdab")} << 0 << QStringLiteral("230.5\n");
+        QTest::newRow("02 reads the coils") << QStringList{QStringLiteral("-f"), QStringLiteral("2"), QStringLiteral("-a"), QStringLiteral("0"), QStringLiteral("-n"), QStringLiteral("2")} << 0 << QStringLiteral("1\n0\n");
+        QTest::newRow("gap: zeros between entries") << QStringList{QStringLiteral("-f"), QStringLiteral("3"), QStringLiteral("-a"), QStringLiteral("36"), QStringLiteral("-n"), QStringLiteral("5")} << 0 << QStringLiteral("0\n0\n0\n0\n21326\n");
+        QTest::newRow("gap: 02 past the last entry") << QStringList{QStringLiteral("-f"), QStringLiteral("3"), QStringLiteral("-a"), QStringLiteral("50"), QStringLiteral("-n"), QStringLiteral("2")} << 1 << QStringLiteral("");
+        QTest::newRow("string of 7, space padded") << QStringList{QStringLiteral("-f"), QStringLiteral("3"), QStringLiteral("-a"), QStringLiteral("40"), QStringLiteral("-n"), QStringLiteral("4"), QStringLiteral("--format"), QStringLiteral("ascii")} << 0
+                                                    << QStringLiteral("SN\n-4\n2 \n  \n");
+        QTest::newRow("sentinel served raw") << QStringList{QStringLiteral("-f"), QStringLiteral("3"), QStringLiteral("-a"), QStringLiteral("5"), QStringLiteral("-n"), QStringLiteral("1"), QStringLiteral("--format"), QStringLiteral("hex")} << 0 << QStringLiteral("0x8000\n");
         QTest::newRow("scale from a register: 1250 W is raw 125")
-            << QStringList{"-f", "3", "-a", "26", "-n", "2"} << 0 << "125\n1\n";
+            << QStringList{QStringLiteral("-f"), QStringLiteral("3"), QStringLiteral("-a"), QStringLiteral("26"), QStringLiteral("-n"), QStringLiteral("2")} << 0 << QStringLiteral("125\n1\n");
     }
 
     void servedAsDeclared()
@@ -137,25 +137,25 @@ private slots:
     {
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("message");
-        QTest::newRow("no profile") << QStringList{"--to", "csv"}
-                                    << "mbscope export-map: which profile? expected a shipped profile's name or a JSON file";
-        QTest::newRow("no format") << QStringList{"PROFILE"}
-                                   << "mbscope export-map: --to is missing: expected nodered, telegraf, homeassistant, "
-                                      "modbus_exporter or csv";
-        QTest::newRow("unknown format") << QStringList{"PROFILE", "--to", "influx"}
-                                        << "mbscope export-map: --to 'influx' is not a format: expected nodered, telegraf, "
-                                           "homeassistant, modbus_exporter or csv";
-        QTest::newRow("unit not in the profile") << QStringList{"PROFILE", "--to", "csv", "--unit", "9"}
-                                                 << "mbscope export-map: --unit 9: the profile has no such unit";
+        QTest::newRow("no profile") << QStringList{QStringLiteral("--to"), QStringLiteral("csv")}
+                                    << QStringLiteral("mbscope export-map: which profile? expected a shipped profile's name or a JSON file");
+        QTest::newRow("no format") << QStringList{QStringLiteral("PROFILE")}
+                                   << QStringLiteral("mbscope export-map: --to is missing: expected nodered, telegraf, homeassistant, "
+                                      "modbus_exporter or csv");
+        QTest::newRow("unknown format") << QStringList{QStringLiteral("PROFILE"), QStringLiteral("--to"), QStringLiteral("influx")}
+                                        << QStringLiteral("mbscope export-map: --to 'influx' is not a format: expected nodered, telegraf, "
+                                           "homeassistant, modbus_exporter or csv");
+        QTest::newRow("unit not in the profile") << QStringList{QStringLiteral("PROFILE"), QStringLiteral("--to"), QStringLiteral("csv"), QStringLiteral("--unit"), QStringLiteral("9")}
+                                                 << QStringLiteral("mbscope export-map: --unit 9: the profile has no such unit");
         QTest::newRow("serial endpoint for modbus_exporter")
-            << QStringList{"PROFILE", "--to", "modbus_exporter", "--endpoint", "rtu:///dev/ttyUSB0"}
-            << "modbus_exporter reads Modbus/TCP only";
-        QTest::newRow("udp for telegraf") << QStringList{"PROFILE", "--to", "telegraf", "--endpoint", "udp://127.0.0.1:502"}
-                                          << "telegraf takes tcp://, rtu-tcp:// or rtu:// endpoints, not udp://";
-        QTest::newRow("bad interval") << QStringList{"PROFILE", "--to", "csv", "--interval", "soon"} << "--interval";
+            << QStringList{QStringLiteral("PROFILE"), QStringLiteral("--to"), QStringLiteral("modbus_exporter"), QStringLiteral("--endpoint"), QStringLiteral("rtu:///dev/ttyUSB0")}
+            << QStringLiteral("modbus_exporter reads Modbus/TCP only");
+        QTest::newRow("udp for telegraf") << QStringList{QStringLiteral("PROFILE"), QStringLiteral("--to"), QStringLiteral("telegraf"), QStringLiteral("--endpoint"), QStringLiteral("udp://127.0.0.1:502")}
+                                          << QStringLiteral("telegraf takes tcp://, rtu-tcp:// or rtu:// endpoints, not udp://");
+        QTest::newRow("bad interval") << QStringList{QStringLiteral("PROFILE"), QStringLiteral("--to"), QStringLiteral("csv"), QStringLiteral("--interval"), QStringLiteral("soon")} << QStringLiteral("--interval");
         QTest::newRow("profile that does not load: file, row, field")
-            << QStringList{"BROKEN", "--to", "csv"}
-            << "broken.json: units[0].tables.holding[0].bits.16: '16' is not a bit of a u16: expected 0-15";
+            << QStringList{QStringLiteral("BROKEN"), QStringLiteral("--to"), QStringLiteral("csv")}
+            << QStringLiteral("broken.json: units[0].tables.holding[0].bits.16: '16' is not a bit of a u16: expected 0-15");
     }
 
     void usageErrors()
@@ -199,14 +199,14 @@ private slots:
         QTest::addColumn<int>("exitCode");
         QTest::addColumn<QString>("message");
         QTest::newRow("every value usable") << QStringList{} << 0
-                                            << "verified: 22 values read from %1 are finite and inside their ranges\n";
-        QTest::newRow("above max") << QStringList{"--address", "50", "--registers", "9000"} << 1
-                                   << "map-test.json: unit 3 holding 50 (CT ratio): 9000 is above max 5000\n";
-        QTest::newRow("below min") << QStringList{"--address", "0", "--registers", "0,0x4300", "--format", "u16"} << 1
-                                   << "map-test.json: unit 3 holding 0 (Voltage): 128 is below min 180\n";
-        QTest::newRow("not finite") << QStringList{"--address", "30", "--registers", "0x7FC0,0"} << 1
-                                    << "map-test.json: unit 3 holding 30 (Float big): NaN is not finite\n";
-        QTest::newRow("a sentinel is accepted") << QStringList{"--address", "5", "--registers", "0x8000"} << 0 << "verified: ";
+                                            << QStringLiteral("verified: 22 values read from %1 are finite and inside their ranges\n");
+        QTest::newRow("above max") << QStringList{QStringLiteral("--address"), QStringLiteral("50"), QStringLiteral("--registers"), QStringLiteral("9000")} << 1
+                                   << QStringLiteral("map-test.json: unit 3 holding 50 (CT ratio): 9000 is above max 5000\n");
+        QTest::newRow("below min") << QStringList{QStringLiteral("--address"), QStringLiteral("0"), QStringLiteral("--registers"), QStringLiteral("0,0x4300"), QStringLiteral("--format"), QStringLiteral("u16")} << 1
+                                   << QStringLiteral("map-test.json: unit 3 holding 0 (Voltage): 128 is below min 180\n");
+        QTest::newRow("not finite") << QStringList{QStringLiteral("--address"), QStringLiteral("30"), QStringLiteral("--registers"), QStringLiteral("0x7FC0,0")} << 1
+                                    << QStringLiteral("map-test.json: unit 3 holding 30 (Float big): NaN is not finite\n");
+        QTest::newRow("a sentinel is accepted") << QStringList{QStringLiteral("--address"), QStringLiteral("5"), QStringLiteral("--registers"), QStringLiteral("0x8000")} << 0 << QStringLiteral("verified: ");
     }
 
     // --verify reads every value once through the map and refuses what is not usable, naming it;
