@@ -34,11 +34,11 @@ LinkUrl defaultEndpoint(const DeviceProfile &profile, MapExportFormat format)
 }
 
 // One read of every block through target; bits come back as 0/1 words.
-QList<MapBlockReading> readBlocks(const TargetSettings &target, const QList<MapPoint> &points,
-                                  const QList<MapBlock> &blocks)
+QList<ExportBlockReading> readBlocks(const TargetSettings &target, const QList<MapPoint> &points,
+                                  const QList<ExportBlock> &blocks)
 {
     QList<PlannedRequest> requests;
-    for (const MapBlock &b : blocks) {
+    for (const ExportBlock &b : blocks) {
         const quint8 function = points.at(b.points.constFirst()).readFunction();
         QByteArray pdu;
         pdu.append(char(function));
@@ -57,9 +57,9 @@ QList<MapBlockReading> readBlocks(const TargetSettings &target, const QList<MapP
         requests.append(r);
     }
     const QList<Transaction> records = exchange(target, requests);
-    QList<MapBlockReading> readings;
+    QList<ExportBlockReading> readings;
     for (qsizetype i = 0; i < blocks.size(); ++i) {
-        MapBlockReading reading;
+        ExportBlockReading reading;
         if (i >= records.size()) {
             reading.error = QStringLiteral("not read: the link failed before");
         } else if (records.at(i).status != TransactionStatus::Ok) {
@@ -194,7 +194,7 @@ int runExportMap(const QStringList &arguments)
     input.points = MapPoint::fromProfile(profile, unitId);
     if (input.points.isEmpty())
         return usage(QStringLiteral("%1 has no table entries to export").arg(profile.source));
-    input.blocks = MapBlock::group(input.points, &profile.limits); // as many a request as the device takes
+    input.blocks = ExportBlock::group(input.points, &profile.limits); // as many a request as the device takes
 
     const QString path = parser.value(output);
     if (parser.isSet(output) && path != QLatin1String("-")) {

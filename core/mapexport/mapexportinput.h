@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mapblock.h"
+#include "exportblock.h"
 #include "mappoint.h"
 
 #include "transport/linkurl.h"
@@ -19,7 +19,7 @@ struct MapExportInput {
     int intervalMs = 1000;   // poll interval
     int timeoutMs = 1000;
     QList<MapPoint> points;
-    QList<MapBlock> blocks;  // MapBlock::group(points, the device's limits)
+    QList<ExportBlock> blocks;  // ExportBlock::group(points, the device's limits)
 };
 
 } // namespace mbscope

@@ -110,7 +110,7 @@ QList<MapPoint> MapPoint::fromProfile(const DeviceProfile &profile, std::optiona
                 p.notImplemented = e.notImplemented;
                 p.notImplementedNaN = e.notImplementedNaN;
                 p.scaleRegister = e.scaleRegister;
-                const QString base = e.name.isEmpty() ? QStringLiteral("%1 %2").arg(p.tableKey()).arg(p.address) : e.name;
+                const QString base = e.name.isEmpty() ? QStringLiteral("%1 %2").arg(p.tableKey()).arg(e.address) : e.name;
                 p.label = n > 1 ? QStringLiteral("%1 %2").arg(base).arg(i + 1) : base;
                 QString name = slug(p.label);
                 if (name.isEmpty())

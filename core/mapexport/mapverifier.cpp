@@ -17,13 +17,13 @@ QString numberText(double v)
 
 } // namespace
 
-QList<MapVerdict> MapVerifier::judge(const QList<MapPoint> &points, const QList<MapBlock> &blocks,
-                                     const QList<MapBlockReading> &readings)
+QList<MapVerdict> MapVerifier::judge(const QList<MapPoint> &points, const QList<ExportBlock> &blocks,
+                                     const QList<ExportBlockReading> &readings)
 {
     QList<MapVerdict> verdicts;
     for (qsizetype b = 0; b < blocks.size(); ++b) {
-        const MapBlock &block = blocks.at(b);
-        const MapBlockReading reading = b < readings.size() ? readings.at(b) : MapBlockReading{{}, QStringLiteral("not read")};
+        const ExportBlock &block = blocks.at(b);
+        const ExportBlockReading reading = b < readings.size() ? readings.at(b) : ExportBlockReading{{}, QStringLiteral("not read")};
         for (qsizetype index : block.points) {
             const MapPoint &p = points.at(index);
             MapVerdict v;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "mapblock.h"
+#include "exportblock.h"
 #include "mappoint.h"
 
 #include <QtCore/QList>
@@ -17,7 +17,7 @@ struct MapVerdict {
 };
 
 // What one block's read gave: its registers (bits as 0/1), or what went wrong.
-struct MapBlockReading {
+struct ExportBlockReading {
     QList<quint16> words;
     QString error;        // "exception 02 (illegal data address)", "timeout after 1000 ms"
 };
@@ -28,8 +28,8 @@ struct MapBlockReading {
 class MapVerifier
 {
 public:
-    [[nodiscard]] static QList<MapVerdict> judge(const QList<MapPoint> &points, const QList<MapBlock> &blocks,
-                                                 const QList<MapBlockReading> &readings);
+    [[nodiscard]] static QList<MapVerdict> judge(const QList<MapPoint> &points, const QList<ExportBlock> &blocks,
+                                                 const QList<ExportBlockReading> &readings);
 };
 
 } // namespace mbscope

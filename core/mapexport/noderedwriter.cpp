@@ -175,7 +175,7 @@ QString NodeRedWriter::write(const MapExportInput &input)
     flow.append(c);
 
     int y = 60;
-    for (const MapBlock &b : input.blocks) {
+    for (const ExportBlock &b : input.blocks) {
         const QString read = id();
         const QString convert = id();
         const QString debug = id();

@@ -153,10 +153,12 @@ void ProfileUnitReader::readSharedTables(JsonReader &reader, const QJsonValue &v
         unit->sharedTables.insert(*asked, *answering);
     }
     for (auto it = unit->sharedTables.cbegin(); it != unit->sharedTables.cend(); ++it) {
-        if (unit->sharedTables.contains(it.value()))
+        if (unit->sharedTables.contains(it.value())) {
             reader.error(path, QStringLiteral("%1 and %2 are shared with each other: one of them must hold the entries")
                                    .arg(QLatin1String(ProfileTableReader::tableKey(it.key())),
                                         QLatin1String(ProfileTableReader::tableKey(it.value()))));
+            break; // said once for the pair
+        }
     }
 }
 

@@ -196,7 +196,7 @@ inline void addErrorRows()
         "units[0].sharedTables.input",
         S("the input table has entries of its own: a shared table is read through holding and has none"));
     row("sharedTables both ways", unit(R"(, "sharedTables": {"input": "holding", "holding": "input"})"), "units[0].sharedTables",
-        S("holding and input are shared with each other: one of them must hold the entries"));
+        S("input and holding are shared with each other: one of them must hold the entries"));
     row("writable a string", holding(R"({"address": 0, "writable": "yes"})"), "units[0].tables.holding[0].writable",
         S("expected true or false, found a string \"yes\""));
 

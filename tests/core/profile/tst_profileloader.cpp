@@ -6,6 +6,8 @@
 #include "profilecases.h"
 
 #include <QtCore/QFile>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
 
@@ -522,15 +524,17 @@ void TestProfileLoader::documentedExamples()
     QVERIFY2(profile.warnings.isEmpty(), qPrintable(profile.warningText()));
     QCOMPARE(profile.profile.units.at(0).entries.size(), 5);
     QCOMPARE(profile.profile.faults.rules.size(), 2);
-    // The first faults file (the first example without units).
-    const auto firstFaults = std::find_if(blocks.cbegin(), blocks.cend(), [](const QByteArray &b) { return !b.contains("\"units\""); });
+    // A profile has units at the top; a faults file has rules.
+    const auto isProfile = [](const QByteArray &b) { return QJsonDocument::fromJson(b).object().contains(QLatin1String("units")); };
+    // The first faults file.
+    const auto firstFaults = std::find_if(blocks.cbegin(), blocks.cend(), [&](const QByteArray &b) { return !isProfile(b); });
     QVERIFY(firstFaults != blocks.cend());
     const FaultRulesLoadResult faults = ProfileLoader::parseFaults(*firstFaults, QStringLiteral("profiles.md"));
     QVERIFY2(faults.ok, qPrintable(faults.errorText()));
     QCOMPARE(faults.rules.rules.size(), 4);
     // Every further example: a profile when it has units, else a faults file.
     for (qsizetype i = 1; i < blocks.size(); ++i) {
-        if (blocks.at(i).contains("\"units\"")) {
+        if (isProfile(blocks.at(i))) {
             const ProfileLoadResult r = ProfileLoader::parse(blocks.at(i), QStringLiteral("profiles.md block %1").arg(i));
             QVERIFY2(r.ok, qPrintable(r.errorText()));
             QVERIFY2(r.warnings.isEmpty(), qPrintable(r.warningText()));

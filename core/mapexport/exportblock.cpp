@@ -1,4 +1,4 @@
-#include "mapblock.h"
+#include "exportblock.h"
 
 #include <algorithm>
 
@@ -13,7 +13,7 @@ int protocolLimit(SimTable table)
 
 } // namespace
 
-int MapBlock::maxQuantity(SimTable table, const DeviceLimits *limits)
+int ExportBlock::maxQuantity(SimTable table, const DeviceLimits *limits)
 {
     MapPoint p;
     p.table = table;
@@ -22,14 +22,14 @@ int MapBlock::maxQuantity(SimTable table, const DeviceLimits *limits)
     return declared > 0 ? std::min(limit, declared) : limit;
 }
 
-QList<MapBlock> MapBlock::group(const QList<MapPoint> &points, const DeviceLimits *limits)
+QList<ExportBlock> ExportBlock::group(const QList<MapPoint> &points, const DeviceLimits *limits)
 {
-    QList<MapBlock> blocks;
+    QList<ExportBlock> blocks;
     for (qsizetype i = 0; i < points.size(); ++i) {
         const MapPoint &p = points.at(i);
         const int limit = maxQuantity(p.table, limits);
         if (!blocks.isEmpty()) {
-            MapBlock &b = blocks.last();
+            ExportBlock &b = blocks.last();
             if (b.unitId == p.unitId && b.table == p.table && b.start + b.quantity == p.address
                 && b.quantity + p.registers <= limit) {
                 b.quantity += p.registers;
@@ -37,7 +37,7 @@ QList<MapBlock> MapBlock::group(const QList<MapPoint> &points, const DeviceLimit
                 continue;
             }
         }
-        MapBlock b;
+        ExportBlock b;
         b.unitId = p.unitId;
         b.table = p.table;
         b.start = p.address;
