@@ -1,5 +1,6 @@
 #include "csvmapwriter.h"
 
+#include <QtCore/QLocale>
 #include <QtCore/QStringList>
 
 namespace mbscope {
@@ -17,7 +18,7 @@ QString quoted(const QString &field)
 
 QString number(const std::optional<double> &v)
 {
-    return v ? QString::number(*v, 'g', 17) : QString();
+    return v ? QString::number(*v, 'g', QLocale::FloatingPointShortest) : QString();
 }
 
 } // namespace
@@ -48,8 +49,8 @@ QString CsvMapWriter::write(const MapExportInput &input)
             p.label,
             p.isBit() ? QStringLiteral("bit") : (p.isString() ? QStringLiteral("string") : p.format.typeName()),
             p.isBit() ? QString() : p.format.orderName(),
-            QString::number(p.scale, 'g', 17),
-            QString::number(p.offset, 'g', 17),
+            QString::number(p.scale, 'g', QLocale::FloatingPointShortest),
+            QString::number(p.offset, 'g', QLocale::FloatingPointShortest),
             p.unit,
             valueKindName(p.kind),
             number(p.min),

@@ -1,5 +1,6 @@
 #include "homeassistantwriter.h"
 
+#include <QtCore/QLocale>
 #include <QtCore/QStringList>
 
 #include <algorithm>
@@ -58,7 +59,7 @@ int precision(const MapPoint &p)
 
 QString number(double v)
 {
-    return QString::number(v, 'g', 17);
+    return QString::number(v, 'g', QLocale::FloatingPointShortest);
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 #include "modbusexporterwriter.h"
 
+#include <QtCore/QLocale>
+
 namespace mbscope {
 
 namespace {
@@ -72,10 +74,10 @@ QString ModbusExporterWriter::write(const MapExportInput &input)
         // modbus_exporter's counter adds each reading to the metric: a device's total is a gauge.
         out += QStringLiteral("        metricType: gauge\n");
         if (!p.isBit() && p.scale != 1)
-            out += QStringLiteral("        factor: %1\n").arg(QString::number(p.scale, 'g', 17));
+            out += QStringLiteral("        factor: %1\n").arg(QString::number(p.scale, 'g', QLocale::FloatingPointShortest));
         if (p.offset != 0)
             out += QStringLiteral("        # offset %1 is not applied: modbus_exporter has none\n")
-                       .arg(QString::number(p.offset, 'g', 17));
+                       .arg(QString::number(p.offset, 'g', QLocale::FloatingPointShortest));
         // Named bits of a one-register value: a bool metric each (bitOffset counts from the
         // register's least significant bit, the register read high byte first).
         if (p.registers == 1 && !p.isBit() && !p.format.isByteSwapped()) {

@@ -1,5 +1,6 @@
 #include "telegrafwriter.h"
 
+#include <QtCore/QLocale>
 #include <QtCore/QMap>
 #include <QtCore/QStringList>
 
@@ -103,11 +104,11 @@ QString TelegrafWriter::write(const MapExportInput &input)
             if (p.isString())
                 f += QStringLiteral(", length=%1").arg(p.registers);
             else if (p.scale != 1)
-                f += QStringLiteral(", scale=%1").arg(QString::number(p.scale, 'g', 17));
+                f += QStringLiteral(", scale=%1").arg(QString::number(p.scale, 'g', QLocale::FloatingPointShortest));
         }
         f += QStringLiteral(" },");
         if (p.offset != 0)
-            f += QStringLiteral("  # offset %1 is not applied: Telegraf has none").arg(QString::number(p.offset, 'g', 17));
+            f += QStringLiteral("  # offset %1 is not applied: Telegraf has none").arg(QString::number(p.offset, 'g', QLocale::FloatingPointShortest));
         else if (p.notImplemented || p.notImplementedNaN)
             f += QStringLiteral("  # the device reports \"not implemented\" as a sentinel value");
         fields[k].append(f);

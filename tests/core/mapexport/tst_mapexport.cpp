@@ -185,6 +185,7 @@ private slots:
         row(F::Csv, "voltage.unit", "V");
         row(F::Csv, "voltage.kind", "measurement");
         row(F::Csv, "energy.scale", "0.001");
+        row(F::Csv, "setpoint.scale", "0.1"); // the shortest text, not 0.10000000000000001
         row(F::Csv, "setpoint.min", "5");
         row(F::Csv, "setpoint.max", "35");
         row(F::Csv, "setpoint.writable", "yes");
