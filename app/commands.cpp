@@ -5,6 +5,7 @@
 #include "conformcommand.h"
 #include "decodecommand.h"
 #include "exportcommand.h"
+#include "exportmapcommand.h"
 #include "jsonfailure.h"
 #include "monitorcommand.h"
 #include "simulatecommand.h"
@@ -49,6 +50,7 @@ const Subcommand kSubcommands[] = {
     {"tap", "sit between masters and devices: forward every request (TCP to RTU and back, any link), record both legs, inject faults", runTap},
     {"analyze", "read a pcap, pcapng or traffic journal offline: pairs, decoded frames, statistics, histogram", runAnalyze},
     {"export", "write a capture or journal as CSV, JSON lines, pcapng for Wireshark, or latency plots", runExport},
+    {"export-map", "write a device profile's register map for Node-RED, Telegraf, Home Assistant, modbus_exporter or CSV, verified first if asked", runExportMap},
     {"replay", "re-send a recording to a device and compare the answers, or serve it as a stand-in device", runReplay},
     {"completion", "print a bash or zsh completion script for these subcommands and their options", runCompletion},
 };

@@ -29,6 +29,33 @@ if [[ "${1:-}" == "--tests" ]]; then
   want+=("${test_pkgs[@]}")
 fi
 
+# Node-RED with node-red-contrib-modbus, for tst_cli_exportmap (an exported flow run for real), from
+# the npm registry into a folder of its own (never Debian's npm package; node and npm must be there).
+# node-red-contrib-modbus 5.23.3 is the newest whose dependencies all come from the npm registry
+# (later ones fetch modbus-serial from a tarball on another host). Quick when already installed.
+nodered_dir=/opt/mbscope-nodered
+nodered_pkgs=(node-red@4.1.15 node-red-contrib-modbus@5.23.3)
+install_nodered() {
+  local have
+  have=$(node -e "try{const v=p=>require('$nodered_dir/node_modules/'+p+'/package.json').version;console.log('node-red@'+v('node-red')+' node-red-contrib-modbus@'+v('node-red-contrib-modbus'))}catch(e){}" 2>/dev/null || true)
+  if [[ "$have" == "${nodered_pkgs[*]}" ]]; then
+    echo "install-deps: ${nodered_pkgs[*]} present in $nodered_dir"
+    return 0
+  fi
+  if ! command -v npm >/dev/null || ! command -v node >/dev/null; then
+    echo "install-deps: node and npm are not installed: Node-RED (${nodered_pkgs[*]}) left out; tst_cli_exportmap skips its flow run" >&2
+    return 0
+  fi
+  echo "install-deps: installing ${nodered_pkgs[*]} into $nodered_dir"
+  local sudo=""
+  if [[ $(id -u) -ne 0 ]]; then sudo="sudo"; fi
+  $sudo mkdir -p "$nodered_dir"
+  $sudo npm install --prefix "$nodered_dir" --no-audit --no-fund --loglevel=error "${nodered_pkgs[@]}"
+}
+if [[ "${1:-}" == "--tests" ]]; then
+  install_nodered
+fi
+
 missing=()
 for p in "${want[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then

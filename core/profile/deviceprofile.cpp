@@ -1,6 +1,20 @@
 #include "deviceprofile.h"
 
+#include "protocol/registervalue.h"
+
 namespace mbscope {
+
+bool TableEntry::isNotImplemented(std::span<const quint16> words) const
+{
+    if (isBitTable(table) || isString() || int(words.size()) != width() || (!notImplemented && !notImplementedNaN))
+        return false;
+    const RegisterValueResult v = RegisterValue::fromRegisters(words, format);
+    if (!v.ok)
+        return false;
+    if (notImplementedNaN && v.value.isNaN())
+        return true;
+    return notImplemented && v.value.bits() == *notImplemented;
+}
 
 QList<TableEntry> UnitProfile::entriesOf(SimTable table) const
 {

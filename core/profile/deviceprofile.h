@@ -8,6 +8,7 @@
 #include "generatorspec.h"
 #include "linerule.h"
 #include "simtable.h"
+#include "valuekind.h"
 
 #include <QtCore/QByteArray>
 #include <QtCore/QList>
@@ -16,6 +17,7 @@
 #include <QtCore/QStringList>
 
 #include <optional>
+#include <span>
 
 namespace mbscope {
 
@@ -36,6 +38,21 @@ struct TableEntry {
     bool writable = true;        // coils and holding registers; the other tables are read-only
     QList<quint16> initial;      // count raw words (bits as 0/1), wire order
     std::optional<GeneratorSpec> generator; // drives every value of the entry
+
+    // What a register map says besides the numbers (docs/profiles.md, "What a register map says").
+    ValueKind kind = ValueKind::Unspecified; // "kind"
+    std::optional<double> min, max;          // "min", "max": the declared range, engineering values
+    std::optional<quint16> scaleRegister;    // "scaleRegister": scale = 10^(i16 at this address, same table)
+    QMap<int, QString> bitNames;             // "bits": bit 0 (least significant) .. 63 -> name
+    QMap<qint64, QString> enumNames;         // "enum": raw value -> meaning
+    int stringLength = 0;                    // "length": an ascii entry is one string of this many characters
+    bool spacePadded = false;                // "padding": "space" (else NUL) after the text of a string
+    std::optional<quint64> notImplemented;   // "notImplemented": raw bit pattern that means "no value"
+    bool notImplementedNaN = false;          // "notImplemented": "NaN": any NaN means "no value"
+
+    [[nodiscard]] bool isString() const { return stringLength > 0; }
+    // The raw words of one value (width() registers, wire order) are the "not implemented" sentinel.
+    [[nodiscard]] bool isNotImplemented(std::span<const quint16> words) const;
 
     [[nodiscard]] int end() const { return int(address) + count; }
     [[nodiscard]] int width() const { return isBitTable(table) ? 1 : format.registerCount(); }
@@ -73,6 +90,12 @@ struct UnitProfile {
     std::optional<ServerIdSpec> serverId;
     quint8 exceptionStatus = 0;        // 07 (V1.1b3 6.7)
     ScriptSettings script;             // "script": answers computed in JavaScript (empty: none)
+    // "gapReads": a read that spans addresses between entries of a table gets exception 02
+    // (false) or zeros there (true); a read outside the first..last entry always gets 02.
+    bool gapReadsZeros = false;
+    // "sharedTables": a table read through another's function code ({"input": "holding"}: 04 reads
+    // the holding registers, as 03 does). Key: the table asked for; value: the table answering.
+    QMap<SimTable, SimTable> sharedTables;
 
     [[nodiscard]] QList<TableEntry> entriesOf(SimTable table) const;
     // The entry holding address in table, or nullptr.

@@ -1,5 +1,6 @@
 #include "profiletablereader.h"
 
+#include "entrymeaningreader.h"
 #include "json/jsonreader.h"
 #include "scaledvalue.h"
 
@@ -69,16 +70,22 @@ void ProfileTableReader::readTables(JsonReader &reader, const QJsonValue &value,
     reader.checkKeys(*o, path, {"coils", "discrete", "input", "holding"});
     QList<TableEntry> entries;
     QStringList paths;
-    for (SimTable table : kTables) {
-        const auto list = reader.array(*o, path, tableKey(table));
-        if (!list)
-            continue;
-        const QString at = JsonReader::member(path, tableKey(table));
-        for (qsizetype i = 0; i < list->size(); ++i) {
-            const QString entryPath = JsonReader::element(at, i);
-            if (auto entry = readEntry(reader, list->at(i), entryPath, table)) {
-                entries.append(*entry);
-                paths.append(entryPath);
+    // Entries whose scale is read from another register come second, once that register is known.
+    for (const bool scaledByRegister : {false, true}) {
+        for (SimTable table : kTables) {
+            const auto list = scaledByRegister ? std::optional<QJsonArray>(o->value(QLatin1String(tableKey(table))).toArray())
+                                               : reader.array(*o, path, tableKey(table));
+            if (!list)
+                continue;
+            const QString at = JsonReader::member(path, tableKey(table));
+            for (qsizetype i = 0; i < list->size(); ++i) {
+                if (list->at(i).toObject().contains(QLatin1String("scaleRegister")) != scaledByRegister)
+                    continue;
+                const QString entryPath = JsonReader::element(at, i);
+                if (auto entry = readEntry(reader, list->at(i), entryPath, table, entries)) {
+                    entries.append(*entry);
+                    paths.append(entryPath);
+                }
             }
         }
     }
@@ -126,7 +133,8 @@ void ProfileTableReader::readTables(JsonReader &reader, const QJsonValue &value,
 }
 
 std::optional<TableEntry> ProfileTableReader::readEntry(JsonReader &reader, const QJsonValue &value,
-                                                        const QString &path, SimTable table)
+                                                        const QString &path, SimTable table,
+                                                        const QList<TableEntry> &known)
 {
     const auto o = reader.objectValue(value, path);
     if (!o)
@@ -134,16 +142,14 @@ std::optional<TableEntry> ProfileTableReader::readEntry(JsonReader &reader, cons
     const int before = reader.problemCount();
     const bool bits = isBitTable(table);
     const bool writableTable = table == SimTable::Coils || table == SimTable::HoldingRegisters;
-    if (bits && writableTable)
-        reader.checkKeys(*o, path, {"address", "count", "name", "description", "writable", "value", "values", "generator"});
-    else if (bits)
-        reader.checkKeys(*o, path, {"address", "count", "name", "description", "value", "values", "generator"});
-    else if (writableTable)
-        reader.checkKeys(*o, path, {"address", "count", "name", "description", "unit", "type", "scale", "offset",
-                                    "writable", "value", "values", "generator"});
-    else
-        reader.checkKeys(*o, path, {"address", "count", "name", "description", "unit", "type", "scale", "offset",
-                                    "value", "values", "generator"});
+    QList<const char *> keys{"address", "count", "name", "description"};
+    if (!bits)
+        keys.append({"unit", "type", "scale", "offset"});
+    if (writableTable)
+        keys.append("writable");
+    keys.append({"value", "values", "generator"});
+    keys.append(EntryMeaningReader::keys(bits));
+    reader.checkKeys(*o, path, keys);
 
     TableEntry entry;
     entry.table = table;
@@ -169,13 +175,29 @@ std::optional<TableEntry> ProfileTableReader::readEntry(JsonReader &reader, cons
             entry.scale = *scale;
     }
     entry.offset = reader.number(*o, path, "offset", -1e300, 1e300).value_or(0);
+    if (reader.problemCount() == before)
+        EntryMeaningReader::read(reader, *o, path, &entry);
+    if (reader.problemCount() == before)
+        EntryMeaningReader::resolveScaleRegister(reader, known, path, &entry);
     if (reader.problemCount() != before)
         return std::nullopt; // the values cannot be read without a valid type and scale
 
     const int width = entry.width();
     const QString kind = bits ? QStringLiteral("bits") : QStringLiteral("registers");
     const qsizetype listed = o->value(QLatin1String("values")).toArray().size();
-    if (const auto count = reader.integer(*o, path, "count", 1, 65536)) {
+    const int stringRegisters = (entry.stringLength + 1) / 2;
+    if (entry.isString() && o->contains(QLatin1String("values")))
+        reader.error(JsonReader::member(path, "values"),
+                     QStringLiteral("a string entry holds one text: give it as 'value'"));
+    else if (entry.isString() && o->contains(QLatin1String("generator")))
+        reader.error(JsonReader::member(path, "generator"), QStringLiteral("a string entry takes no generator"));
+    if (entry.isString()) {
+        entry.count = int(reader.integer(*o, path, "count", 1, 65536).value_or(stringRegisters));
+        if (entry.count != stringRegisters)
+            reader.error(JsonReader::member(path, "count"),
+                         QStringLiteral("a string of %1 characters takes %2 registers, not %3")
+                             .arg(entry.stringLength).arg(stringRegisters).arg(entry.count));
+    } else if (const auto count = reader.integer(*o, path, "count", 1, 65536)) {
         entry.count = int(*count);
         if (entry.count % width != 0)
             reader.error(JsonReader::member(path, "count"),
@@ -231,6 +253,28 @@ bool ProfileTableReader::readInitialValues(JsonReader &reader, const QJsonObject
             at = JsonReader::member(path, "value");
         } else {
             break; // the rest stays raw 0
+        }
+        if (entry->isString()) {
+            if (!v.isString()) {
+                reader.error(at, QStringLiteral("expected the text of the string, found %1").arg(JsonReader::describe(v)));
+                break;
+            }
+            const QString text = v.toString();
+            if (text.size() > entry->stringLength) {
+                reader.error(at, QStringLiteral("\"%1\" has %2 characters, more than length %3")
+                                     .arg(text).arg(text.size()).arg(entry->stringLength));
+                break;
+            }
+            QString padded = text.leftJustified(entry->stringLength, entry->spacePadded ? QLatin1Char(' ') : QChar(0));
+            if (padded.size() % 2)
+                padded.append(entry->spacePadded ? QLatin1Char(' ') : QChar(0));
+            const RegisterListResult words = RegisterValue::asciiRegisters(padded, entry->format.isByteSwapped());
+            if (!words.ok) {
+                reader.error(at, words.error);
+                break;
+            }
+            std::copy(words.registers.cbegin(), words.registers.cend(), entry->initial.begin());
+            break;
         }
         if (bits) {
             if (v.isBool())

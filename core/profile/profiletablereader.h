@@ -25,8 +25,9 @@ public:
     [[nodiscard]] static std::optional<SimTable> tableFromKey(QStringView key);
 
 private:
+    // known: the entries read so far (a scaleRegister's source is among them).
     static std::optional<TableEntry> readEntry(JsonReader &reader, const QJsonValue &value, const QString &path,
-                                               SimTable table);
+                                               SimTable table, const QList<TableEntry> &known);
     static bool readInitialValues(JsonReader &reader, const QJsonObject &o, const QString &path, TableEntry *entry);
     static std::optional<GeneratorSpec> readGenerator(JsonReader &reader, const QJsonValue &value,
                                                       const QString &path, const TableEntry &entry);

@@ -63,7 +63,7 @@ std::optional<UnitProfile> ProfileUnitReader::read(JsonReader &reader, const QJs
         return std::nullopt;
     const int before = reader.problemCount();
     reader.checkKeys(*o, path, {"id", "name", "description", "functions", "responseDelay", "tables", "fifos", "files",
-                                "deviceIdentification", "serverId", "exceptionStatus", "script"});
+                                "deviceIdentification", "serverId", "exceptionStatus", "script", "gapReads", "sharedTables"});
     UnitProfile unit;
     if (reader.require(*o, path, "id")) {
         const QJsonValue id = o->value(QLatin1String("id"));
@@ -92,6 +92,16 @@ std::optional<UnitProfile> ProfileUnitReader::read(JsonReader &reader, const QJs
     }
     if (o->contains(QLatin1String("tables")))
         ProfileTableReader::readTables(reader, o->value(QLatin1String("tables")), JsonReader::member(path, "tables"), &unit);
+    if (o->contains(QLatin1String("sharedTables")))
+        readSharedTables(reader, o->value(QLatin1String("sharedTables")), JsonReader::member(path, "sharedTables"), &unit);
+    if (const auto gaps = reader.string(*o, path, "gapReads")) {
+        if (*gaps == QLatin1String("zeros"))
+            unit.gapReadsZeros = true;
+        else if (*gaps != QLatin1String("exception"))
+            reader.error(JsonReader::member(path, "gapReads"),
+                         QStringLiteral("'%1' is not how a read over a gap is answered: expected exception (02) or "
+                                        "zeros").arg(*gaps));
+    }
     if (o->contains(QLatin1String("fifos")))
         readFifos(reader, o->value(QLatin1String("fifos")), JsonReader::member(path, "fifos"), &unit);
     if (o->contains(QLatin1String("files")))
@@ -109,6 +119,47 @@ std::optional<UnitProfile> ProfileUnitReader::read(JsonReader &reader, const QJs
     if (reader.problemCount() != before)
         return std::nullopt;
     return unit;
+}
+
+void ProfileUnitReader::readSharedTables(JsonReader &reader, const QJsonValue &value, const QString &path,
+                                         UnitProfile *unit)
+{
+    const auto o = reader.objectValue(value, path);
+    if (!o)
+        return;
+    for (auto it = o->begin(); it != o->end(); ++it) {
+        const QString at = JsonReader::member(path, it.key());
+        const auto asked = ProfileTableReader::tableFromKey(it.key());
+        if (!asked) {
+            reader.error(at, QStringLiteral("'%1' is not a table: expected coils, discrete, input or holding").arg(it.key()));
+            continue;
+        }
+        const auto name = reader.stringValue(it.value(), at);
+        if (!name)
+            continue;
+        const auto answering = ProfileTableReader::tableFromKey(*name);
+        if (!answering || *answering == *asked || isBitTable(*answering) != isBitTable(*asked)) {
+            reader.error(at, QStringLiteral("'%1' cannot answer reads of %2: expected %3")
+                                 .arg(*name, it.key(),
+                                      isBitTable(*asked) ? QStringLiteral("the other bit table (coils or discrete)")
+                                                         : QStringLiteral("the other register table (input or holding)")));
+            continue;
+        }
+        if (!unit->entriesOf(*asked).isEmpty()) {
+            reader.error(at, QStringLiteral("the %1 table has entries of its own: a shared table is read through "
+                                            "%2 and has none").arg(it.key(), *name));
+            continue;
+        }
+        unit->sharedTables.insert(*asked, *answering);
+    }
+    for (auto it = unit->sharedTables.cbegin(); it != unit->sharedTables.cend(); ++it) {
+        if (unit->sharedTables.contains(it.value())) {
+            reader.error(path, QStringLiteral("%1 and %2 are shared with each other: one of them must hold the entries")
+                                   .arg(QLatin1String(ProfileTableReader::tableKey(it.key())),
+                                        QLatin1String(ProfileTableReader::tableKey(it.value()))));
+            break; // said once for the pair
+        }
+    }
 }
 
 void ProfileUnitReader::readFunctions(JsonReader &reader, const QJsonValue &value, const QString &path,

@@ -20,6 +20,8 @@ public:
                                                          const QString &path);
 
 private:
+    // "sharedTables" (after the tables, whose entries it checks) and "gapReads".
+    static void readSharedTables(JsonReader &reader, const QJsonValue &value, const QString &path, UnitProfile *unit);
     static void readFunctions(JsonReader &reader, const QJsonValue &value, const QString &path, UnitProfile *unit);
     static void readFifos(JsonReader &reader, const QJsonValue &value, const QString &path, UnitProfile *unit);
     static void readFiles(JsonReader &reader, const QJsonValue &value, const QString &path, UnitProfile *unit);

@@ -15,8 +15,11 @@ bool ProfileApplier::apply(const UnitProfile &profile, SimUnit *unit, QString *e
     unit->setResponseDelayNs(qint64(std::llround(profile.responseDelay.nominalMs() * 1e6)));
 
     for (SimTable table : {SimTable::Coils, SimTable::DiscreteInputs, SimTable::InputRegisters,
-                           SimTable::HoldingRegisters})
+                           SimTable::HoldingRegisters}) {
         unit->clearRanges(table);
+        unit->setSharedTable(table, profile.sharedTables.value(table, table));
+    }
+    unit->setGapReadsZeros(profile.gapReadsZeros);
     for (const TableEntry &entry : profile.entries) {
         SimRange range;
         range.table = entry.table;

@@ -163,8 +163,9 @@ bool SimUnit::isWritable(SimTable table, int start, int count) const
     return inside && writable;
 }
 
-std::optional<quint16> SimUnit::value(SimTable table, int address) const
+std::optional<quint16> SimUnit::value(SimTable asked, int address) const
 {
+    const SimTable table = answeringTable(asked);
     if (address < 0 || address > 0xFFFF)
         return std::nullopt;
     const int bi = blockIndex(table, address);
@@ -174,8 +175,9 @@ std::optional<quint16> SimUnit::value(SimTable table, int address) const
     return b.values.at(address - int(b.start));
 }
 
-QList<quint16> SimUnit::values(SimTable table, int start, int count) const
+QList<quint16> SimUnit::values(SimTable asked, int start, int count) const
 {
+    const SimTable table = answeringTable(asked);
     QList<quint16> out;
     if (count < 1)
         return out;
@@ -185,8 +187,18 @@ QList<quint16> SimUnit::values(SimTable table, int start, int count) const
         const auto &v = blocks.at(block).values;
         std::copy(v.begin() + offset, v.begin() + offset + length, out.begin() + index);
     });
-    if (!inside)
-        out.clear();
+    if (inside)
+        return out;
+    // A device that answers zeros over the gaps of its map, but 02 outside it.
+    if (!m_gapReadsZeros || blocks.isEmpty() || start < int(blocks.constFirst().start)
+        || start + count > blocks.constLast().end())
+        return {};
+    out.fill(0);
+    for (int i = 0; i < count; ++i) {
+        const int bi = blockIndex(table, start + i);
+        if (bi >= 0)
+            out[i] = blocks.at(bi).values.at(start + i - int(blocks.at(bi).start));
+    }
     return out;
 }
 

@@ -49,8 +49,9 @@ public:
     [[nodiscard]] bool isWritable(SimTable table, int start, int count = 1) const;
 
     // Local access (no writable check). Bits read and write as 0/1 (a non-zero bit value is 1).
+    // value() and values() read through a shared table (setSharedTable).
     [[nodiscard]] std::optional<quint16> value(SimTable table, int address) const;
-    // All count values, or an empty list when any address is missing.
+    // All count values, or an empty list when any address is missing (unless gap reads are zeros).
     [[nodiscard]] QList<quint16> values(SimTable table, int start, int count) const;
     bool setValue(SimTable table, int address, quint16 value);
     // All or nothing: false (and no change) when any address is missing.
@@ -59,6 +60,16 @@ public:
     // Client access, used by the request processor: refuses (false, no change) when an address is
     // missing or not writable; emits clientWrote() after valuesChanged().
     bool clientWrite(SimTable table, int start, const QList<quint16> &values);
+
+    // ---- How reads are answered (a device profile's "sharedTables" and "gapReads") ----
+    // Reads of asked (values(), value()) answer answering's values instead: a device whose 03 and
+    // 04 read the same registers, or whose 02 reads the coils 05 writes. Writes are not affected.
+    void setSharedTable(SimTable asked, SimTable answering) { m_answering[size_t(asked)] = answering; }
+    [[nodiscard]] SimTable answeringTable(SimTable asked) const { return m_answering[size_t(asked)]; }
+    // On: values() of a span between the first and the last address of a table's ranges answers 0
+    // for the addresses no range holds, instead of failing (which the processor answers with 02).
+    void setGapReadsZeros(bool on) { m_gapReadsZeros = on; }
+    [[nodiscard]] bool gapReadsZeros() const { return m_gapReadsZeros; }
 
     // ---- Function codes ----
     // Function codes the unit answers; any other gets exception 01 (V1.1b3, 7). By default every
@@ -163,6 +174,9 @@ private:
     quint8 m_id = 1;
     QString m_name;
     std::array<QList<Block>, SimTableCount> m_tables;
+    std::array<SimTable, SimTableCount> m_answering{SimTable::Coils, SimTable::DiscreteInputs,
+                                                    SimTable::InputRegisters, SimTable::HoldingRegisters};
+    bool m_gapReadsZeros = false;
     std::bitset<256> m_functions;
     quint8 m_exceptionStatus = 0;
     QByteArray m_serverId;

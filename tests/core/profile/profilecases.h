@@ -76,7 +76,7 @@ inline void addErrorRows()
         S("unit 3 is given twice (also an earlier unit)"));
     row("unit unknown key", unit(R"(, "table": {})"), "units[0]",
         S("unknown key 'table': expected one of id, name, description, functions, responseDelay, tables, fifos, files, "
-          "deviceIdentification, serverId, exceptionStatus, script"));
+          "deviceIdentification, serverId, exceptionStatus, script, gapReads, sharedTables"));
     row("function not implemented", unit(R"(, "functions": ["0x03", "0x41"])"), "units[0].functions[1]",
         S("function code 41 is not one the simulator implements (01, 02, 03, 04, 05, 06, 07, 08, 0B, 0C, 0F, 10, 11, 14, "
           "15, 16, 17, 18, 2B)"));
@@ -131,10 +131,72 @@ inline void addErrorRows()
     row("coil value 2", table("coils", R"({"address": 0, "values": [1, 2]})"), "units[0].tables.coils[0].values[1]",
         S("expected true, false, 0 or 1, found the number 2"));
     row("type on coils", table("coils", R"({"address": 0, "type": "u16"})"), "units[0].tables.coils[0]",
-        S("unknown key 'type': expected one of address, count, name, description, writable, value, values, generator"));
+        S("unknown key 'type': expected one of address, count, name, description, writable, value, values, generator, "
+          "kind"));
     row("writable on input registers", table("input", R"({"address": 0, "writable": true})"), "units[0].tables.input[0]",
         S("unknown key 'writable': expected one of address, count, name, description, unit, type, scale, offset, value, "
-          "values, generator"));
+          "values, generator, kind, min, max, scaleRegister, bits, enum, length, padding, notImplemented"));
+
+    // What a register map says (docs/profiles.md, "What a register map says")
+    row("kind unknown", holding(R"({"address": 0, "kind": "gauge"})"), "units[0].tables.holding[0].kind",
+        S("'gauge' is not a kind of value: expected measurement, counter, setting, status, enumeration, constant or "
+          "reserved"));
+    row("max below min", holding(R"({"address": 0, "min": 5, "max": 1})"), "units[0].tables.holding[0].max",
+        S("1 is below min 5"));
+    row("bits of a float", holding(R"({"address": 0, "type": "f32", "bits": {"0": "alarm"}})"),
+        "units[0].tables.holding[0].bits", S("a f32-abcd value has no bits to name: expected an integer type (u16, u32, hex, bin...)"));
+    row("bit 16 of a u16", holding(R"({"address": 0, "bits": {"16": "alarm"}})"), "units[0].tables.holding[0].bits.16",
+        S("'16' is not a bit of a u16: expected 0-15 (0 the least significant)"));
+    row("bit 31 of a u32 is fine, 32 is not", holding(R"({"address": 0, "type": "u32", "bits": {"31": "a", "32": "b"}})"),
+        "units[0].tables.holding[0].bits.32", S("'32' is not a bit of a u32-abcd: expected 0-31 (0 the least significant)"));
+    row("bit name a number", holding(R"({"address": 0, "bits": {"3": 4}})"), "units[0].tables.holding[0].bits.3",
+        S("expected a string, found the number 4"));
+    row("enum of a float", holding(R"({"address": 0, "type": "f64", "enum": {"0": "off"}})"),
+        "units[0].tables.holding[0].enum", S("a f64-abcdefgh value cannot be an enumeration: expected an integer type"));
+    row("enum key out of range", holding(R"({"address": 0, "type": "i16", "enum": {"40000": "x"}})"),
+        "units[0].tables.holding[0].enum.40000",
+        S("'40000' is not a raw i16 value: expected a whole number -32768 to 32767 (decimal or 0x hex)"));
+    row("length on a u16", holding(R"({"address": 0, "length": 8})"), "units[0].tables.holding[0].length",
+        S("a string of characters is an ascii entry: expected \"type\": \"ascii\" (or \"ascii-ba\"), found u16"));
+    row("padding unknown", holding(R"({"address": 0, "type": "ascii", "length": 4, "padding": "zero"})"),
+        "units[0].tables.holding[0].padding", S("'zero' is not a padding: expected nul or space"));
+    row("padding without length", holding(R"({"address": 0, "type": "ascii", "padding": "space"})"),
+        "units[0].tables.holding[0].padding", S("padding needs 'length' (a string)"));
+    row("string too long", holding(R"({"address": 0, "type": "ascii", "length": 4, "value": "ABCDE"})"),
+        "units[0].tables.holding[0].value", S("\"ABCDE\" has 5 characters, more than length 4"));
+    row("string count disagrees", holding(R"({"address": 0, "type": "ascii", "length": 5, "count": 2})"),
+        "units[0].tables.holding[0].count", S("a string of 5 characters takes 3 registers, not 2"));
+    row("string with values", holding(R"({"address": 0, "type": "ascii", "length": 4, "values": ["AB"]})"),
+        "units[0].tables.holding[0].values", S("a string entry holds one text: give it as 'value'"));
+    row("notImplemented NaN on a u16", holding(R"({"address": 0, "notImplemented": "NaN"})"),
+        "units[0].tables.holding[0].notImplemented", S("'NaN' is not a whole number: u16 takes decimal digits with an optional sign, or a 0x or 0b bit pattern"));
+    row("notImplemented an array", holding(R"({"address": 0, "notImplemented": [1]})"),
+        "units[0].tables.holding[0].notImplemented",
+        S("expected the raw value as text (\"0x8000\", \"0xFFFF\", \"NaN\"), found an array"));
+    row("scaleRegister and scale", holding(R"({"address": 0, "scale": 0.1, "scaleRegister": 1}, {"address": 1, "type": "i16"})"),
+        "units[0].tables.holding[0].scaleRegister",
+        S("give 'scale' (a fixed factor) or 'scaleRegister' (a factor read from a register), not both"));
+    row("scaleRegister missing", holding(R"({"address": 0, "scaleRegister": 9})"), "units[0].tables.holding[0].scaleRegister",
+        S("holding 9 is not in any holding entry of this unit (without a scaleRegister of its own)"));
+    row("scaleRegister a float", holding(R"({"address": 0, "scaleRegister": 2}, {"address": 2, "type": "f32"})"),
+        "units[0].tables.holding[0].scaleRegister",
+        S("holding 2 is a f32-abcd value: a scale factor is one i16 register (a power of ten)"));
+    row("scaleRegister too large", holding(R"({"address": 0, "scaleRegister": 1}, {"address": 1, "type": "i16", "value": 40})"),
+        "units[0].tables.holding[0].scaleRegister",
+        S("holding 1 holds 40: a scale factor of 10^40 is outside 10^-10..10^10"));
+    row("kind on coils takes no min", table("coils", R"({"address": 0, "kind": "status", "min": 0})"), "units[0].tables.coils[0]",
+        S("unknown key 'min': expected one of address, count, name, description, writable, value, values, generator, kind"));
+    row("gapReads unknown", unit(R"(, "gapReads": "ones")"), "units[0].gapReads",
+        S("'ones' is not how a read over a gap is answered: expected exception (02) or zeros"));
+    row("sharedTables bits with registers", unit(R"(, "sharedTables": {"input": "coils"})"), "units[0].sharedTables.input",
+        S("'coils' cannot answer reads of input: expected the other register table (input or holding)"));
+    row("sharedTables unknown table", unit(R"(, "sharedTables": {"inputs": "holding"})"), "units[0].sharedTables.inputs",
+        S("'inputs' is not a table: expected coils, discrete, input or holding"));
+    row("sharedTables table with entries", unit(R"(, "tables": {"input": [{"address": 0}]}, "sharedTables": {"input": "holding"})"),
+        "units[0].sharedTables.input",
+        S("the input table has entries of its own: a shared table is read through holding and has none"));
+    row("sharedTables both ways", unit(R"(, "sharedTables": {"input": "holding", "holding": "input"})"), "units[0].sharedTables",
+        S("input and holding are shared with each other: one of them must hold the entries"));
     row("writable a string", holding(R"({"address": 0, "writable": "yes"})"), "units[0].tables.holding[0].writable",
         S("expected true or false, found a string \"yes\""));
 
@@ -332,6 +394,16 @@ inline void addEncodingRows()
     row("5678 1234 u32-cdab", R"({"address": 0, "type": "u32-cdab", "value": 305419896})", {0x5678, 0x1234});
     row("FFFF FFFE i32 -2", R"({"address": 0, "type": "i32", "value": -2})", {0xFFFF, 0xFFFE});
     row("FF83 i16 scale 0.1 -12.5", R"({"address": 0, "type": "i16", "scale": 0.1, "value": -12.5})", {0xFF83});
+    // Strings of N characters, NUL or space padded, in either byte order
+    row("string MB1 nul padded", R"({"address": 0, "type": "ascii", "length": 6, "value": "MB1"})", {0x4D42, 0x3100, 0x0000});
+    row("string MB1 space padded", R"({"address": 0, "type": "ascii", "length": 6, "padding": "space", "value": "MB1"})",
+        {0x4D42, 0x3120, 0x2020});
+    row("string odd length", R"({"address": 0, "type": "ascii", "length": 3, "padding": "space", "value": "AB"})",
+        {0x4142, 0x2020});
+    row("string byte swapped", R"({"address": 0, "type": "ascii-ba", "length": 4, "value": "ABCD"})", {0x4241, 0x4443});
+    // A sentinel as the initial value, given raw
+    row("i16 0x8000 not implemented", R"({"address": 0, "type": "i16", "notImplemented": "0x8000", "value": "0x8000"})",
+        {0x8000});
     row("2C3D u16 scale 0.01 offset 900", R"({"address": 0, "scale": 0.01, "offset": 900, "value": 1013.25})", {11325});
     row("0004 u16 rounds 3.6", R"({"address": 0, "value": 3.6})", {4});
     row("4009 21FB 5444 2D18 f64 pi", R"({"address": 0, "type": "f64", "value": 3.141592653589793})",

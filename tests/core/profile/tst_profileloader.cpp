@@ -6,8 +6,13 @@
 #include "profilecases.h"
 
 #include <QtCore/QFile>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
+
+#include <array>
+#include <cmath>
 
 using namespace mbscope;
 
@@ -227,6 +232,11 @@ private slots:
     void applier();
     void documentedExamples();
     void unreadableTableWarned();
+    void mapMeanings();
+    void scaleRegister_data();
+    void scaleRegister();
+    void sharedTablesAndGaps_data();
+    void sharedTablesAndGaps();
 };
 
 void TestProfileLoader::contentErrors_data()
@@ -514,12 +524,17 @@ void TestProfileLoader::documentedExamples()
     QVERIFY2(profile.warnings.isEmpty(), qPrintable(profile.warningText()));
     QCOMPARE(profile.profile.units.at(0).entries.size(), 5);
     QCOMPARE(profile.profile.faults.rules.size(), 2);
-    const FaultRulesLoadResult faults = ProfileLoader::parseFaults(blocks.at(1), QStringLiteral("profiles.md"));
+    // A profile has units at the top; a faults file has rules.
+    const auto isProfile = [](const QByteArray &b) { return QJsonDocument::fromJson(b).object().contains(QLatin1String("units")); };
+    // The first faults file.
+    const auto firstFaults = std::find_if(blocks.cbegin(), blocks.cend(), [&](const QByteArray &b) { return !isProfile(b); });
+    QVERIFY(firstFaults != blocks.cend());
+    const FaultRulesLoadResult faults = ProfileLoader::parseFaults(*firstFaults, QStringLiteral("profiles.md"));
     QVERIFY2(faults.ok, qPrintable(faults.errorText()));
     QCOMPARE(faults.rules.rules.size(), 4);
     // Every further example: a profile when it has units, else a faults file.
-    for (qsizetype i = 2; i < blocks.size(); ++i) {
-        if (blocks.at(i).contains("\"units\"")) {
+    for (qsizetype i = 1; i < blocks.size(); ++i) {
+        if (isProfile(blocks.at(i))) {
             const ProfileLoadResult r = ProfileLoader::parse(blocks.at(i), QStringLiteral("profiles.md block %1").arg(i));
             QVERIFY2(r.ok, qPrintable(r.errorText()));
             QVERIFY2(r.warnings.isEmpty(), qPrintable(r.warningText()));
@@ -546,6 +561,123 @@ void TestProfileLoader::unreadableTableWarned()
                             "functions: every read of it gets exception 01 (add \"0x01\" to functions)\n"
                             "x.json: units[1].tables.input: the table has entries but its read function 04 (Read Input Registers) "
                             "is not in functions: every read of it gets exception 01 (add \"0x04\" to functions)"));
+}
+
+// What a register map says besides the numbers reaches the entry.
+void TestProfileLoader::mapMeanings()
+{
+    const ProfileLoadResult r = ProfileLoader::parse(unitWithTables(R"({"holding": [
+        {"address": 0, "type": "u32", "kind": "status", "bits": {"0": "run", "31": "fault"}},
+        {"address": 2, "kind": "enumeration", "enum": {"0": "off", "0x1": "on", "2": "fault"}},
+        {"address": 3, "type": "i16", "kind": "measurement", "min": -40, "max": 125, "notImplemented": "0x8000"},
+        {"address": 4, "type": "f32-cdab", "notImplemented": "NaN"},
+        {"address": 6, "type": "ascii", "length": 8, "padding": "space", "value": "SN42", "kind": "constant"},
+        {"address": 10, "count": 2, "kind": "reserved"}],
+        "coils": [{"address": 0, "kind": "setting"}]})"),
+                                                     QStringLiteral("p.json"));
+    QVERIFY2(r.ok, qPrintable(r.errorText()));
+    const UnitProfile &u = r.profile.units.at(0);
+    const TableEntry *bits = u.entryAt(SimTable::HoldingRegisters, 0);
+    QCOMPARE(bits->kind, ValueKind::Status);
+    QCOMPARE(bits->bitNames, (QMap<int, QString>{{0, QStringLiteral("run")}, {31, QStringLiteral("fault")}}));
+    const TableEntry *state = u.entryAt(SimTable::HoldingRegisters, 2);
+    QCOMPARE(state->enumNames.value(1), QStringLiteral("on"));
+    QCOMPARE(state->enumNames.size(), 3);
+    const TableEntry *temperature = u.entryAt(SimTable::HoldingRegisters, 3);
+    QCOMPARE(temperature->min, std::optional<double>(-40));
+    QCOMPARE(temperature->max, std::optional<double>(125));
+    QCOMPARE(temperature->notImplemented, std::optional<quint64>(0x8000));
+    QVERIFY(temperature->isNotImplemented(std::array<quint16, 1>{0x8000}));
+    QVERIFY(!temperature->isNotImplemented(std::array<quint16, 1>{0x7FFF}));
+    const TableEntry *flow = u.entryAt(SimTable::HoldingRegisters, 4);
+    QVERIFY(flow->notImplementedNaN);
+    QVERIFY(flow->isNotImplemented(std::array<quint16, 2>{0x0000, 0x7FC0})); // CDAB NaN
+    QVERIFY(!flow->isNotImplemented(std::array<quint16, 2>{0x0000, 0x3F80}));
+    const TableEntry *serial = u.entryAt(SimTable::HoldingRegisters, 6);
+    QCOMPARE(serial->stringLength, 8);
+    QCOMPARE(serial->count, 4);
+    QCOMPARE(serial->valueCount(), 4); // four registers; one string for the exports
+    QCOMPARE(serial->initial, words({0x534E, 0x3432, 0x2020, 0x2020}));
+    QCOMPARE(u.entryAt(SimTable::HoldingRegisters, 10)->kind, ValueKind::Reserved);
+    QCOMPARE(u.entryAt(SimTable::Coils, 0)->kind, ValueKind::Setting);
+    // Without the new keys nothing changes.
+    QCOMPARE(u.entryAt(SimTable::HoldingRegisters, 2)->format, RegisterFormat());
+    QVERIFY(!u.gapReadsZeros);
+    QVERIFY(u.sharedTables.isEmpty());
+}
+
+void TestProfileLoader::scaleRegister_data()
+{
+    QTest::addColumn<int>("exponent");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QList<quint16>>("raw");
+    QTest::newRow("10^-1: 230.4 is raw 2304") << -1 << 230.4 << words({2304});
+    QTest::newRow("10^-3: 1.234 is raw 1234") << -3 << 1.234 << words({1234});
+    QTest::newRow("10^0: 17 is raw 17") << 0 << 17.0 << words({17});
+    QTest::newRow("10^2: 4500 is raw 45") << 2 << 4500.0 << words({45});
+}
+
+// A SunSpec scale factor: the entry's scale is 10 to the power of another register, whichever
+// comes first in the file.
+void TestProfileLoader::scaleRegister()
+{
+    QFETCH(int, exponent);
+    QFETCH(double, value);
+    QFETCH(QList<quint16>, raw);
+    const QByteArray json = unitWithTables(QStringLiteral(R"({"holding": [
+        {"address": 0, "name": "V", "scaleRegister": 5, "value": %1},
+        {"address": 5, "name": "V_SF", "type": "i16", "value": %2, "kind": "constant"}]})")
+                                               .arg(value, 0, 'g', 17).arg(exponent).toUtf8().constData());
+    const ProfileLoadResult r = ProfileLoader::parse(json, QStringLiteral("p.json"));
+    QVERIFY2(r.ok, qPrintable(r.errorText()));
+    const TableEntry *v = r.profile.units.at(0).entryAt(SimTable::HoldingRegisters, 0);
+    QCOMPARE(v->scaleRegister, std::optional<quint16>(5));
+    QCOMPARE(v->scale, std::pow(10.0, exponent));
+    QCOMPARE(v->initial, raw);
+    QCOMPARE(r.profile.units.at(0).entries.at(0).address, quint16(0)); // still in address order
+}
+
+void TestProfileLoader::sharedTablesAndGaps_data()
+{
+    QTest::addColumn<QByteArray>("unitKeys");
+    QTest::addColumn<int>("table");
+    QTest::addColumn<int>("start");
+    QTest::addColumn<int>("count");
+    QTest::addColumn<QList<quint16>>("expected"); // empty: the read fails (exception 02)
+    const QByteArray shared = R"("sharedTables": {"input": "holding", "discrete": "coils"})";
+    const int holding = int(SimTable::HoldingRegisters), input = int(SimTable::InputRegisters);
+    const int coils = int(SimTable::Coils), discrete = int(SimTable::DiscreteInputs);
+    QTest::newRow("03 reads holding") << shared << holding << 0 << 2 << words({11, 12});
+    QTest::newRow("04 reads the same registers") << shared << input << 0 << 2 << words({11, 12});
+    QTest::newRow("02 reads the coils") << shared << discrete << 0 << 2 << words({1, 0});
+    QTest::newRow("01 reads the coils") << shared << coils << 0 << 2 << words({1, 0});
+    QTest::newRow("not shared: 04 has nothing") << QByteArray(R"("gapReads": "exception")") << input << 0 << 1 << words({});
+    QTest::newRow("gap: exception 02") << QByteArray(R"("gapReads": "exception")") << holding << 0 << 6 << words({});
+    QTest::newRow("gap: zeros") << QByteArray(R"("gapReads": "zeros")") << holding << 0 << 6 << words({11, 12, 0, 0, 0, 15});
+    QTest::newRow("gap: zeros, but 02 past the end") << QByteArray(R"("gapReads": "zeros")") << holding << 5 << 2 << words({});
+    QTest::newRow("gap: zeros, but 02 past the last coil") << QByteArray(R"("gapReads": "zeros")") << coils << 0 << 3 << words({});
+    QTest::newRow("gap: zeros through a shared table") << QByteArray(R"("gapReads": "zeros", )" + shared) << input << 1 << 4
+                                                       << words({12, 0, 0, 0});
+}
+
+// The simulator's unit answers as the profile says: a table read through another function, and
+// zeros (or exception 02) over the gaps of a map.
+void TestProfileLoader::sharedTablesAndGaps()
+{
+    QFETCH(QByteArray, unitKeys);
+    QFETCH(int, table);
+    QFETCH(int, start);
+    QFETCH(int, count);
+    QFETCH(QList<quint16>, expected);
+    const QByteArray json = R"({"name": "t", "units": [{"id": 1, )" + unitKeys + R"(, "tables": {
+        "holding": [{"address": 0, "values": [11, 12]}, {"address": 5, "value": 15}],
+        "coils": [{"address": 0, "values": [true, false]}]}}]})";
+    const ProfileLoadResult r = ProfileLoader::parse(json, QStringLiteral("p.json"));
+    QVERIFY2(r.ok, qPrintable(r.errorText()));
+    SimUnit unit(1);
+    QString error;
+    QVERIFY2(ProfileApplier::apply(r.profile.units.at(0), &unit, &error), qPrintable(error));
+    QCOMPARE(unit.values(SimTable(table), start, count), expected);
 }
 
 QTEST_GUILESS_MAIN(TestProfileLoader)
