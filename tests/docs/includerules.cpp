@@ -86,6 +86,7 @@ QMap<QString, int> IncludeRules::coreLayers()
         {QStringLiteral("watch"), 4},    {QStringLiteral("fleet"), 5},    {QStringLiteral("discovery"), 5},
         {QStringLiteral("sim"), 5},      {QStringLiteral("session"), 5}, {QStringLiteral("monitor"), 5},
         {QStringLiteral("replay"), 6},   {QStringLiteral("service"), 6}, {QStringLiteral("conformance"), 6},
+        {QStringLiteral("inference"), 6},
         {QStringLiteral("tap"), 7},
     };
 }

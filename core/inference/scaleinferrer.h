@@ -1,0 +1,27 @@
+#pragma once
+
+#include "blocksamples.h"
+#include "valueguess.h"
+
+#include <QtCore/QList>
+
+namespace mbscope {
+
+// Proposes each value's scale (a power of ten) and unit:
+// - a scale-factor register, as SunSpec devices have: a register that stays at a small negative
+//   number (-1 to -6 as i16) right after moving values scales those values by 10^n; counted only
+//   when a block has two or more such registers;
+// - else a quantity the values are recognised as at one power of ten: mains voltage (180-260 V
+//   or 340-440 V line to line, 100-130 V), frequency (45-65 Hz, nearly still), power factor
+//   (0.3-1, nearly still), temperature (-40 to 90 degC); tenths are tried first, as devices
+//   send them most;
+// - else 1. Floats keep scale 1; their unit is named the same way.
+class ScaleInferrer
+{
+public:
+    // Sets scale, unit, quantity, scaleRegister and scaleEvidence of the guesses of one block (in
+    // address order), and their engineering minimum, maximum, last and typical step.
+    static void apply(QList<ValueGuess> &guesses, const BlockSamples &block);
+};
+
+} // namespace mbscope
