@@ -12,6 +12,7 @@
 #include "inference/blockinferrer.h"
 #include "inference/blocksampler.h"
 #include "inference/inferencedraft.h"
+#include "inference/scaleinferrer.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QFile>
@@ -213,6 +214,12 @@ int runInfer(const QStringList &arguments)
         readable += s.samples.isEmpty() ? 0 : 1;
         all += b.guesses;
         inferred.append(b);
+    }
+    // Setpoints beside temperatures, across the unit's blocks.
+    ScaleInferrer::applyNeighbours(all);
+    for (qsizetype i = 0, at = 0; i < inferred.size(); ++i) {
+        for (ValueGuess &g : inferred[i].guesses)
+            g = all.at(at++);
     }
     if (readable == 0) {
         err << "mbscope infer: nothing could be read" << (sampler.problem().isEmpty() ? QString() : QStringLiteral(": ") + sampler.problem())

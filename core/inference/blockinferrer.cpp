@@ -37,17 +37,18 @@ ValueKind BlockInferrer::kindOf(const QList<double> &values, const QList<quint16
     if (!words.isEmpty()) {
         QSet<quint16> distinct(words.cbegin(), words.cend());
         bool bitFlips = true;
-        bool wideJump = false;
+        bool highBit = false;
         for (qsizetype i = 1; i < words.size(); ++i) {
             const quint16 x = words.at(i) ^ words.at(i - 1);
             if (x == 0)
                 continue;
             if (std::popcount(unsigned(x)) > 2)
                 bitFlips = false;
-            if (std::abs(int(words.at(i)) - int(words.at(i - 1))) >= 2)
-                wideJump = true;
+            if (x >= 4)
+                highBit = true;
         }
-        if (bitFlips && distinct.size() <= 8 && (wideJump || distinct.size() == 2)) {
+        const bool zeroOne = distinct.size() == 2 && distinct.contains(0) && distinct.contains(1);
+        if (bitFlips && distinct.size() <= 4 && (highBit || zeroOne)) {
             *why = QStringLiteral("%1 distinct values, each change one or two bits flipping").arg(distinct.size());
             return ValueKind::Status;
         }

@@ -3,8 +3,10 @@
 #include "wordseries.h"
 
 #include <algorithm>
+#include <string_view>
 #include <optional>
 #include <cmath>
+#include <cstdlib>
 
 namespace mbscope {
 
@@ -30,9 +32,13 @@ constexpr Quantity kQuantities[] = {
 
 constexpr int kExponents[] = {1, 2, 0, 3}; // tenths first: the most common device scale
 
-const Quantity *recognise(double low, double high)
+// Temperatures are sent in tenths of a degree by nearly every device, in one register: read as
+// one only then (a power near 0 in hundredths reads as a temperature too).
+const Quantity *recognise(double low, double high, int exponent, int registers)
 {
     for (const Quantity &q : kQuantities) {
+        if (q.unit == std::string_view("degC") && (exponent != 1 || registers != 1))
+            continue;
         if (low < q.low || high > q.high)
             continue;
         const double largest = std::max(std::fabs(low), std::fabs(high));
@@ -123,7 +129,7 @@ void ScaleInferrer::apply(QList<ValueGuess> &guesses, const BlockSamples &block)
             for (const int k : kExponents) {
                 const double s = std::pow(10.0, -k);
                 // An unsigned register read as signed for temperatures: the same numbers while positive.
-                const Quantity *q = recognise(low * s, high * s);
+                const Quantity *q = recognise(low * s, high * s, k, g.registers);
                 if (!q)
                     continue;
                 g.scale = s;
@@ -138,13 +144,13 @@ void ScaleInferrer::apply(QList<ValueGuess> &guesses, const BlockSamples &block)
                 break;
             }
         } else if (g.format.isFloat() && g.kind == ValueKind::Measurement) {
-            if (const Quantity *q = recognise(low, high)) {
+            if (const Quantity *q = recognise(low, high, 1, 1)) {
                 g.quantity = QString::fromLatin1(q->name);
                 g.unit = QString::fromLatin1(q->unit);
                 g.scaleEvidence = QStringLiteral("%1 to %2: reads as %3").arg(WordSeries::number(low), WordSeries::number(high), g.quantity);
             }
         } else if (g.scaleRegister >= 0) {
-            const Quantity *q = recognise(low * g.scale, high * g.scale);
+            const Quantity *q = recognise(low * g.scale, high * g.scale, int(std::lround(-std::log10(g.scale))), g.registers);
             if (q && g.kind == ValueKind::Measurement) {
                 g.quantity = QString::fromLatin1(q->name);
                 g.unit = QString::fromLatin1(q->unit);
@@ -160,6 +166,47 @@ void ScaleInferrer::apply(QList<ValueGuess> &guesses, const BlockSamples &block)
         g.last = values.constLast();
         g.typicalStep = WordSeries::medianStep(values);
         g.lastText = WordSeries::number(g.last);
+    }
+}
+
+void ScaleInferrer::applyNeighbours(QList<ValueGuess> &guesses)
+{
+    // Temperatures in tenths of a degree, by table, and whether any was seen.
+    int temperatures = 0;
+    for (const ValueGuess &g : guesses)
+        temperatures += (g.quantity == QLatin1String("temperature") && std::fabs(g.scale - 0.1) < 1e-12) ? 1 : 0;
+    if (temperatures == 0)
+        return;
+    for (ValueGuess &g : guesses) {
+        if (g.text || g.bit || g.registers != 1 || g.kind != ValueKind::Constant || g.scale != 1 || g.scaleRegister >= 0
+            || g.format.isFloat() || g.quantity == QLatin1String("scale factor"))
+            continue;
+        const quint16 raw = g.lastWords.value(0);
+        if (raw < 50 || raw > 900)
+            continue; // 5.0 to 90.0 degrees: a setpoint's range
+        // A still register beside temperatures of its table (16 addresses at most), or in a block
+        // of still values (settings) of a device that measures temperatures in tenths.
+        bool beside = false;
+        bool settingsBlock = raw % 5 == 0;
+        for (const ValueGuess &o : std::as_const(guesses)) {
+            if (o.function != g.function)
+                continue;
+            const bool temperature = o.quantity == QLatin1String("temperature") && std::fabs(o.scale - 0.1) < 1e-12;
+            if (temperature && std::abs(int(o.address) - int(g.address)) <= 16)
+                beside = true;
+            if (std::abs(int(o.address) - int(g.address)) <= 8 && (o.kind != ValueKind::Constant || o.text))
+                settingsBlock = false;
+        }
+        if (!beside && !(settingsBlock && temperatures >= 2))
+            continue;
+        g.scale = 0.1;
+        g.unit = QStringLiteral("degC");
+        g.quantity = QStringLiteral("temperature");
+        g.format = RegisterFormat(RegisterType::Int16, g.format.order());
+        g.minimum = g.maximum = g.last = raw * 0.1;
+        g.lastText = WordSeries::number(g.last);
+        g.scaleEvidence = beside ? QStringLiteral("still at raw %1; x 0.1 = %2 degC, a setpoint beside temperatures in tenths").arg(raw).arg(g.last)
+                                 : QStringLiteral("still at raw %1 among settings; x 0.1 = %2 degC, as the device's temperatures").arg(raw).arg(g.last);
     }
 }
 

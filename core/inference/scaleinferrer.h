@@ -22,6 +22,10 @@ public:
     // Sets scale, unit, quantity, scaleRegister and scaleEvidence of the guesses of one block (in
     // address order), and their engineering minimum, maximum, last and typical step.
     static void apply(QList<ValueGuess> &guesses, const BlockSamples &block);
+    // Across a unit's blocks: a still register of 5.0-90.0 at x0.1 beside temperatures in tenths
+    // (16 addresses at most, same table), or among still settings of a device that measures
+    // temperatures in tenths, is taken as a temperature in tenths too (a setpoint).
+    static void applyNeighbours(QList<ValueGuess> &guesses);
 };
 
 } // namespace mbscope

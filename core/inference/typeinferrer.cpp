@@ -88,10 +88,25 @@ public:
         }
         const auto [low, high] = std::minmax_element(values.cbegin(), values.cend());
         const bool moving = *low != *high;
+        const QList<QList<quint16>> w = words(offset, n, order);
+        if (moving) {
+            // A measured float's least significant word is mantissa noise: it moves. A float whose
+            // low words stay put while it moves is integers read as one (a count beside a 0).
+            if (WordSeries::isConstant(w.constLast()))
+                return c;
+            if (n == 4 && WordSeries::isConstant(w.at(2)))
+                return c;
+            // Measurements move smoothly: the binary exponent rarely jumps by 2 or more. Small
+            // integers read with their bytes swapped land in the exponent and jump at every step.
+            if (!WordSeries::smoothExponent(values))
+                return c;
+        } else if (WordSeries::significantDigits(*low, n == 2) > 6) {
+            // A value that never moves is a setting or a constant: a round number.
+            return c;
+        }
         c.score = n * (moving ? kFloatMoving : kFloatStill);
         c.confidence = moving ? 0.9 : 0.6;
         // The same words as an integer: how far the least significant word jumps.
-        const QList<QList<quint16>> w = words(offset, n, order);
         const int jumpBits = WordSeries::largestJumpBits(w.constLast());
         c.evidence = QStringLiteral("%1 %2: %3 samples all finite, %4%5")
                          .arg(format.typeName(), format.orderName())
@@ -159,7 +174,14 @@ public:
             return c;
         }
         if (n == 4)
-            perRegister = std::min(perRegister, kIntMedium);
+            perRegister += 0.05; // one 64-bit value over two 32-bit readings of the same strength
+        // The right byte order makes the low word move in small steps; read with its bytes
+        // swapped the same word jumps by hundreds.
+        QList<quint16> swapped = lo;
+        for (quint16 &x : swapped)
+            x = quint16((x << 8) | (x >> 8));
+        if (WordSeries::totalVariation(lo) <= WordSeries::totalVariation(swapped))
+            perRegister += 0.02;
         const bool isSigned = e.negative;
         c.format = RegisterFormat(n == 2 ? (isSigned ? RegisterType::Int32 : RegisterType::UInt32)
                                          : (isSigned ? RegisterType::Int64 : RegisterType::UInt64),
@@ -296,13 +318,17 @@ TypedField single(const BlockSamples &block, int offset)
         nearZero = nearZero && (w < 0x4000 || w >= 0xC000);
     }
     const bool sentinel = WordSeries::isConstant(words, 0x8000);
-    const bool isSigned = (high && nearZero) || sentinel;
+    const bool allOnes = WordSeries::isConstant(words, 0xFFFF); // a u16's "not implemented", or -1
+    const bool isSigned = ((high && nearZero) || sentinel) && !allOnes;
     f.format = RegisterFormat(isSigned ? RegisterType::Int16 : RegisterType::UInt16,
                               byteSwap ? RegisterOrder::BADC : RegisterOrder::ABCD);
     if (byteSwap) {
         f.confidence = 0.7;
         f.evidence = QStringLiteral("%1 BA: read low byte first the value changes by %2 in all, high byte first by %3")
                          .arg(f.format.typeName()).arg(crossed).arg(straight);
+    } else if (allOnes) {
+        f.confidence = 0.4;
+        f.evidence = QStringLiteral("u16: FFFF in every sample, the usual 'not implemented' of an unsigned register (or -1)");
     } else if (sentinel) {
         f.confidence = 0.5;
         f.evidence = QStringLiteral("i16: 8000 in every sample, the usual 'not available' of a signed register");

@@ -98,6 +98,35 @@ QString smoothness(const QList<double> &values)
     return largest <= range * 0.5 ? QStringLiteral(", smooth") : QStringLiteral(", jumpy");
 }
 
+bool smoothExponent(const QList<double> &values)
+{
+    int steps = 0;
+    int jumps = 0;
+    for (qsizetype i = 1; i < values.size(); ++i) {
+        const double a = std::fabs(values.at(i - 1));
+        const double b = std::fabs(values.at(i));
+        if (a == 0 || b == 0 || a == b)
+            continue;
+        ++steps;
+        if (std::abs(std::ilogb(a) - std::ilogb(b)) >= 2)
+            ++jumps;
+    }
+    return jumps * 5 <= steps;
+}
+
+int significantDigits(double value, bool single)
+{
+    if (value == 0 || !std::isfinite(value))
+        return 1;
+    const int most = single ? 9 : 17;
+    for (int digits = 1; digits < most; ++digits) {
+        const double back = QString::number(value, 'g', digits).toDouble();
+        if (single ? float(back) == float(value) : back == value)
+            return digits;
+    }
+    return most;
+}
+
 QString number(double value)
 {
     if (std::isnan(value))
@@ -160,11 +189,9 @@ PairEvidence pairEvidence(const QList<quint16> &hi, const QList<quint16> &lo)
         e.text = QStringLiteral("high word FFFF over a low word with its sign bit set: a small negative value");
         return e;
     }
-    if (!hiStill && smallHighSteps && highChanges * 2 <= lowChanges && hi.constFirst() < 0x1000) {
-        e.strength = Strength::Medium;
-        e.text = QStringLiteral("the high word moves by 1 or 2 in %1 samples, the low word in %2").arg(highChanges).arg(lowChanges);
-        return e;
-    }
+    Q_UNUSED(smallHighSteps);
+    Q_UNUSED(highChanges);
+    Q_UNUSED(lowChanges);
     if (hiStill && hi.constFirst() != 0 && hi.constFirst() <= 0x0FFF && !loStill) {
         e.strength = Strength::Medium;
         e.text = QStringLiteral("the high word stays %1 while the low word moves").arg(hi.constFirst());

@@ -27,6 +27,11 @@ namespace WordSeries {
 [[nodiscard]] double medianStep(const QList<double> &values);
 // ", smooth" when the changes are small against the range, else ", jumpy".
 [[nodiscard]] QString smoothness(const QList<double> &values);
+// Whether a moving float series moves as measurements do: the binary exponent jumps by 2 or
+// more (a factor of 4) in at most a fifth of the steps (zeros and sign changes aside).
+[[nodiscard]] bool smoothExponent(const QList<double> &values);
+// The significant digits of the shortest text that reads back to value (as a float when single).
+[[nodiscard]] int significantDigits(double value, bool single);
 // A number as a person writes it: at most 7 significant digits.
 [[nodiscard]] QString number(double value);
 

@@ -127,14 +127,14 @@ private Q_SLOTS:
         else if (motion == QLatin1String("constant"))
             raw = [](int) { return 1234.0; };
         else if (motion == QLatin1String("status"))
-            raw = [](int t) { static const int v[] = {0x0001, 0x0005, 0x0004, 0x0044, 0x0045}; return double(v[(t * 7 / 5) % 5]); };
+            raw = [](int t) { static const int v[] = {0x0011, 0x0015, 0x0011, 0x0091}; return double(v[(t / 3) % 4]); };
         const QList<ValueGuess> guesses = BlockInferrer::infer(makeBlock({Field{format, raw}}));
         QVERIFY2(!guesses.isEmpty(), "no guess");
         const ValueGuess &g = guesses.constFirst();
         QString all;
         for (const ValueGuess &x : guesses)
             all += QStringLiteral("%1@%2 ").arg(x.typeName()).arg(x.address);
-        QCOMPARE(g.typeName(), expected);
+        QVERIFY2(g.typeName() == RegisterFormat::parse(expected).format.name(), qPrintable(all + g.evidence));
         QVERIFY2(guesses.size() == 1, qPrintable(all));
         QCOMPARE(valueKindName(g.kind), kind);
         QVERIFY2(!g.evidence.isEmpty(), "no evidence");
@@ -173,6 +173,10 @@ private Q_SLOTS:
         QTest::newRow("controller: status") << "controller" << 2 << "bin" << "status bits" << 1.0 << "";
         QTest::newRow("controller: serial") << "controller" << 3 << "ascii[8]" << "constant" << 1.0 << "";
         QTest::newRow("controller: setpoint") << "controller" << 11 << "u16" << "constant" << 1.0 << "";
+        // Still small integers side by side: no float read with its bytes swapped.
+        QTest::newRow("settings: small integers") << "settings" << 0 << "u16" << "constant" << 1.0 << "";
+        QTest::newRow("settings: next") << "settings" << 1 << "u16" << "constant" << 1.0 << "";
+        QTest::newRow("settings: round float") << "settings" << 3 << "f32-abcd" << "constant" << 1.0 << "";
     }
     void deviceBlocks()
     {
@@ -187,7 +191,7 @@ private Q_SLOTS:
             block = makeBlock({{QStringLiteral("f32"), [](int t) { return sine(t, 231.2, 0.8); }},
                                {QStringLiteral("f32"), [](int t) { return sine(t, 4.7, 0.3); }},
                                {QStringLiteral("f32"), [](int) { return 0.0; }},
-                               {QStringLiteral("f32"), [](int t) { return sine(t, 50.0, 0.02); }},
+                               {QStringLiteral("f32"), [](int t) { return 50.0 + 0.02 * std::sin(t * 0.9); }},
                                {QStringLiteral("f32"), [](int t) { return 1523.25 + 0.01 * t; }}});
         } else if (device == QLatin1String("ints")) {
             block = makeBlock({{QStringLiteral("u32-cdab"), [](int t) { return std::round(sine(t, 2305, 12)); }},
@@ -204,6 +208,11 @@ private Q_SLOTS:
                                {QStringLiteral("i16"), [](int) { return 0.0; }},
                                {QStringLiteral("u16"), [](int t) { return std::round(sine(t, 5000, 3)); }},
                                {QStringLiteral("i16"), [](int) { return -2.0; }}});
+        } else if (device == QLatin1String("settings")) {
+            block = makeBlock({{QStringLiteral("u16"), [](int) { return 190.0; }},
+                               {QStringLiteral("u16"), [](int) { return 60.0; }},
+                               {QStringLiteral("u16"), [](int) { return 3.0; }},
+                               {QStringLiteral("f32"), [](int) { return 60.0; }}});
         } else {
             block = withText({{QStringLiteral("i16"), [](int t) { return std::round(sine(t, 215, 8)); }},
                               {QStringLiteral("i16"), [](int t) { return std::round(sine(t, -32, 15)); }},
