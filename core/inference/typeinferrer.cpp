@@ -454,6 +454,35 @@ QList<TypedField> TypeInferrer::infer(const BlockSamples &block)
         }
         fields = merged;
     }
+    // A run of four or more registers that stay 0, of even length, in a block that has 32-bit
+    // integers: taken two by two as such integers in the block's order (flags and counters not
+    // started; a guess, said with little confidence).
+    bool wideIntegers = false;
+    for (const TypedField &f : std::as_const(fields))
+        wideIntegers = wideIntegers || (f.registers == 2 && !f.text && !f.format.isFloat());
+    if (wideIntegers) {
+        QList<TypedField> merged;
+        for (int i = 0; i < fields.size();) {
+            int j = i;
+            while (j < fields.size() && fields.at(j).registers == 1 && !fields.at(j).text
+                   && fields.at(j).offset == fields.at(i).offset + (j - i)
+                   && WordSeries::isConstant(block.column(fields.at(j).offset), 0))
+                ++j;
+            const int run = j - i;
+            if (run >= 4 && run % 2 == 0) {
+                const RegisterFormat format(RegisterType::UInt32, bestOrder);
+                for (int k = i; k < j; k += 2)
+                    merged.append(TypedField{fields.at(k).offset, 2, format, false, 0.3,
+                                             QStringLiteral("%1 %2: one of %3 registers that stay 0, taken two by two as the block's other 32-bit integers")
+                                                 .arg(format.typeName(), format.orderName()).arg(run)});
+                i = j;
+                continue;
+            }
+            merged.append(fields.at(i));
+            ++i;
+        }
+        fields = merged;
+    }
     return fields;
 }
 
