@@ -478,8 +478,9 @@ QList<TypedField> TypeInferrer::infer(const BlockSamples &block)
                 i = j;
                 continue;
             }
-            merged.append(fields.at(i));
-            ++i;
+            const int end = std::max(j, i + 1); // a shorter or odd run stays as it is, whole
+            for (; i < end; ++i)
+                merged.append(fields.at(i));
         }
         fields = merged;
     }
