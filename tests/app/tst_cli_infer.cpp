@@ -57,6 +57,7 @@ private Q_SLOTS:
         QTest::newRow("sunspec serial number") << "sunspec-inverter" << sun << 40052 << "ascii" << 1.0 << "constant";
         QTest::newRow("sunspec current scale factor -2") << "sunspec-inverter" << sun << 40072 << "u16" << 0.01 << "measurement";
         QTest::newRow("sunspec frequency scale factor -2") << "sunspec-inverter" << sun << 40086 << "u16" << 0.01 << "measurement";
+        QTest::newRow("sunspec event flags that stay 0") << "sunspec-inverter" << sun << 40110 << "u32-abcd" << 1.0 << "constant";
         QTest::newRow("sunspec energy acc32") << "sunspec-inverter" << sun << 40094 << "u32-abcd" << 1.0 << "counter";
         const QStringList hp{QStringLiteral("--block"), QStringLiteral("4:500:13"), QStringLiteral("--block"), QStringLiteral("4:2500:2")};
         QTest::newRow("controller temperature i16 x0.1") << "heatpump-controller" << hp << 500 << "i16" << 0.1 << "measurement";
