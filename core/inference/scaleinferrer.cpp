@@ -144,7 +144,7 @@ void ScaleInferrer::apply(QList<ValueGuess> &guesses, const BlockSamples &block)
                 break;
             }
         } else if (g.format.isFloat() && g.kind == ValueKind::Measurement) {
-            if (const Quantity *q = recognise(low, high, 1, 1)) {
+            if (const Quantity *q = recognise(low, high, 0, g.registers)) {
                 g.quantity = QString::fromLatin1(q->name);
                 g.unit = QString::fromLatin1(q->unit);
                 g.scaleEvidence = QStringLiteral("%1 to %2: reads as %3").arg(WordSeries::number(low), WordSeries::number(high), g.quantity);

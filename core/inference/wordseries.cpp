@@ -178,7 +178,9 @@ PairEvidence pairEvidence(const QList<quint16> &hi, const QList<quint16> &lo)
         e.text = QStringLiteral("the high word is 0000 or FFFF as the low word's sign bit says: one signed value around 0");
         return e;
     }
-    if (carries > 0) {
+    // A high word of 0x1000 or more is a value beyond 2^28: more likely the top of a float
+    // whose mantissa carried (230.99 to 231.01 V) than an integer.
+    if (carries > 0 && (hi.constFirst() < 0x1000 || hi.constFirst() >= 0xF000)) {
         e.strength = Strength::Strong;
         e.text = QStringLiteral("the high word steps by 1 exactly when the low word wraps (%1 carries)").arg(carries);
         return e;
