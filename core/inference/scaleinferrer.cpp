@@ -22,10 +22,9 @@ struct Quantity {
 
 // In the order tried at each power of ten.
 constexpr Quantity kQuantities[] = {
-    {"frequency", "Hz", 45, 65, 0.05},
-    {"voltage", "V", 180, 260, 0.25},
-    {"voltage", "V", 340, 440, 0.25},
-    {"voltage", "V", 100, 130, 0.25},
+    {"frequency", "Hz", 45, 65, 0.01},
+    {"voltage", "V", 207, 253, 0.05},
+    {"voltage", "V", 380, 420, 0.05},
     {"power factor", "", 0.3, 1.0, 0.5},
     {"temperature", "degC", -40, 90, 0},
 };

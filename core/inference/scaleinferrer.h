@@ -11,10 +11,10 @@ namespace mbscope {
 // - a scale-factor register, as SunSpec devices have: a register that stays at a small negative
 //   number (-1 to -6 as i16) right after moving values scales those values by 10^n; counted only
 //   when a block has two or more such registers;
-// - else a quantity the values are recognised as at one power of ten: mains voltage (180-260 V
-//   or 340-440 V line to line, 100-130 V), frequency (45-65 Hz, nearly still), power factor
-//   (0.3-1, nearly still), temperature (-40 to 90 degC); tenths are tried first, as devices
-//   send them most;
+// - else a quantity the values are recognised as at one power of ten: 230 V mains voltage
+//   (207-253 V, 380-420 V line to line, within 5 %), frequency (45-65 Hz, within 1 %), power
+//   factor (0.3-1), temperature (-40 to 90 degC, tenths of one register only); tenths are tried
+//   first, as devices send them most;
 // - else 1. Floats keep scale 1; their unit is named the same way.
 class ScaleInferrer
 {

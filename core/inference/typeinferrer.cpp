@@ -163,7 +163,14 @@ public:
         double perRegister = 0;
         switch (e.strength) {
         case WordSeries::Strength::Strong: perRegister = kIntStrong; c.confidence = 0.85; break;
-        case WordSeries::Strength::Medium: perRegister = kIntMedium; c.confidence = 0.65; break;
+        case WordSeries::Strength::Medium:
+            // A still, small high word beside a moving one is as often a setting beside a
+            // measurement: one value only when the low word counts up, or among wide values.
+            if (!e.negative && !WordSeries::countsUp(lo) && !(haveHint && n == 2 && inWideRun(offset, order)))
+                return c;
+            perRegister = kIntMedium;
+            c.confidence = 0.65;
+            break;
         case WordSeries::Strength::Weak:
             if (!haveHint || n != 2 || !inWideRun(offset, order))
                 return c;

@@ -127,6 +127,17 @@ int significantDigits(double value, bool single)
     return most;
 }
 
+bool countsUp(const QList<quint16> &words)
+{
+    bool rose = false;
+    for (qsizetype i = 1; i < words.size(); ++i) {
+        if (words.at(i) < words.at(i - 1))
+            return false;
+        rose = rose || words.at(i) > words.at(i - 1);
+    }
+    return rose;
+}
+
 QString number(double value)
 {
     if (std::isnan(value))

@@ -32,6 +32,8 @@ namespace WordSeries {
 [[nodiscard]] bool smoothExponent(const QList<double> &values);
 // The significant digits of the shortest text that reads back to value (as a float when single).
 [[nodiscard]] int significantDigits(double value, bool single);
+// Never falls and rises at least once (a counter's low word between carries).
+[[nodiscard]] bool countsUp(const QList<quint16> &words);
 // A number as a person writes it: at most 7 significant digits.
 [[nodiscard]] QString number(double value);
 
