@@ -10,7 +10,7 @@
 //   const->meas values that never move in the profile (no generator, or a constant one) that
 //               the guess calls a measurement.
 // Goals: type+order >= 90 %, scale >= 80 %, const->meas 0. --check fails the run when a goal is
-// missed. Usage: bench_infer [--samples 40] [--interval 250] [--device NAME] [--check]
+// missed. Usage: bench_infer [--samples 40] [--interval 500] [--device NAME] [--check]
 
 #include "benchprocess.h"
 
@@ -167,7 +167,7 @@ int main(int argc, char **argv)
     QTextStream out(stdout);
     QTextStream err(stderr);
     int samples = 40;
-    int intervalMs = 250;
+    int intervalMs = 500;
     bool check = false;
     QString only;
     const QStringList args = app.arguments();
