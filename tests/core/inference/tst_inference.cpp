@@ -91,7 +91,7 @@ private Q_SLOTS:
             QTest::addRow("f32-%s voltage", order) << QStringLiteral("f32-") + o << "voltage" << QStringLiteral("f32-") + o << "measurement";
             QTest::addRow("f64-%s measurement", order) << QStringLiteral("f64-") + o << "f64" << QStringLiteral("f64-") + o << "measurement";
             QTest::addRow("u32-%s counter with carries", order) << QStringLiteral("u32-") + o << "carry" << QStringLiteral("u32-") + o << "counter";
-            QTest::addRow("u32-%s above 65535", order) << QStringLiteral("u32-") + o << "high" << QStringLiteral("u32-") + o << "measurement";
+            QTest::addRow("u32-%s counter above 65535, no carry", order) << QStringLiteral("u32-") + o << "high" << QStringLiteral("u32-") + o << "counter";
             QTest::addRow("i32-%s around zero", order) << QStringLiteral("i32-") + o << "signed" << QStringLiteral("i32-") + o << "measurement";
             QTest::addRow("u64-%s counter past 2^32", order) << QStringLiteral("u64-") + o << "u64" << QStringLiteral("u64-") + o << "counter";
         }
@@ -115,7 +115,7 @@ private Q_SLOTS:
         else if (motion == QLatin1String("carry"))
             raw = [](int t) { return 65400.0 + 9 * t; };
         else if (motion == QLatin1String("high"))
-            raw = [](int t) { return std::round(sine(t, 300000, 900)); };
+            raw = [](int t) { return 300000.0 + 5 * t; };
         else if (motion == QLatin1String("signed"))
             raw = [](int t) { return std::round(sine(t, 0, 1500)); };
         else if (motion == QLatin1String("u64"))
