@@ -29,7 +29,7 @@ ValueKind BlockInferrer::kindOf(const QList<double> &values, const QList<quint16
         else if (values.at(i) < values.at(i - 1))
             ++downs;
     }
-    if (downs <= 1 && ups >= 2 && ups > 4 * downs) {
+    if (downs <= 1 && ups >= 3 && ups > 4 * downs) {
         *why = downs == 0 ? QStringLiteral("grew %1 times, never fell").arg(ups)
                           : QStringLiteral("grew %1 times, fell once (a wrap)").arg(ups);
         return ValueKind::Counter;

