@@ -112,18 +112,21 @@ private Q_SLOTS:
         QVERIFY2(again.exitCode == 0, again.describe());
         const QMap<int, QJsonObject> a = guessesOf(first.json());
         const QMap<int, QJsonObject> b = guessesOf(again.json());
-        // Every 32-bit value comes back with its type, order and scale (the draft's generators move
+        // Every moving 32-bit value comes back with its type, order and scale (the draft's generators move
         // the 16-bit ones otherwise than the meter did, so their kinds may differ).
         int wide = 0;
         for (auto it = a.cbegin(); it != a.cend(); ++it) {
-            if (it.value().value(QStringLiteral("registers")).toInt() != 2)
+            // Moving values only: a pair that happened to stay still (the kvarh counter between
+            // its steps) may be read either way.
+            if (it.value().value(QStringLiteral("registers")).toInt() != 2
+                || it.value().value(QStringLiteral("kind")).toString() != QLatin1String("measurement"))
                 continue;
             ++wide;
             QVERIFY2(b.contains(it.key()), qPrintable(QStringLiteral("nothing at %1 the second time").arg(it.key())));
             QCOMPARE(b.value(it.key()).value(QStringLiteral("type")), it.value().value(QStringLiteral("type")));
             QCOMPARE(b.value(it.key()).value(QStringLiteral("scale")), it.value().value(QStringLiteral("scale")));
         }
-        QVERIFY(wide >= 20);
+        QVERIFY(wide >= 15);
     }
 
     void textReport()
