@@ -122,13 +122,13 @@ private Q_SLOTS:
                 || it.value().value(QStringLiteral("kind")).toString() != QLatin1String("measurement"))
                 continue;
             ++wide;
-            const QJsonObject again = b.value(it.key());
-            if (again.value(QStringLiteral("type")) == it.value().value(QStringLiteral("type"))
-                && again.value(QStringLiteral("scale")) == it.value().value(QStringLiteral("scale")))
+            const QJsonObject second = b.value(it.key());
+            if (second.value(QStringLiteral("type")) == it.value().value(QStringLiteral("type"))
+                && second.value(QStringLiteral("scale")) == it.value().value(QStringLiteral("scale")))
                 ++same;
             else
                 differ.append(QStringLiteral("%1: %2 then %3").arg(it.key()).arg(it.value().value(QStringLiteral("type")).toString(),
-                                                                            again.value(QStringLiteral("type")).toString()));
+                                                                            second.value(QStringLiteral("type")).toString()));
         }
         QVERIFY(wide >= 15);
         // The benchmark's goal: 90 % of the values with the right type, order (and here scale).
