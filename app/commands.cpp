@@ -6,6 +6,7 @@
 #include "decodecommand.h"
 #include "exportcommand.h"
 #include "exportmapcommand.h"
+#include "infercommand.h"
 #include "jsonfailure.h"
 #include "monitorcommand.h"
 #include "simulatecommand.h"
@@ -44,6 +45,7 @@ const Subcommand kSubcommands[] = {
     {"watch", "run a session's watches headless: many devices at once, CSV, Prometheus metrics, MQTT", runWatch},
     {"sweep", "poll at several intervals and print error rate and latency per interval", runSweep},
     {"scan", "find what is on a link: unit ids that answer, a unit's register map (as a profile draft), limits", runScan},
+    {"infer", "sample a unit's registers and propose types, orders, scales, units and kinds (a profile draft)", runInfer},
     {"conform", "judge a slave against the Modbus specifications: a scorecard of checks, each citing its clause", runConform},
     {"run", "run a session's test plan against a device; pass/fail per step, JUnit XML for CI", runRun},
     {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},

@@ -25,17 +25,17 @@ bool ScanOptionReader::range(const QCommandLineOption &option, int low, int high
     const QString text = parser.value(option).trimmed();
     const QStringList parts = text.split(QLatin1Char('-'));
     if (parts.size() > 2 || text.isEmpty()) {
-        err << "mbscope scan: " << optionName(option) << " '" << text << "': expected FIRST-LAST (e.g. 1-247) or one number\n";
+        err << "mbscope " << command << ": " << optionName(option) << " '" << text << "': expected FIRST-LAST (e.g. 1-247) or one number\n";
         return false;
     }
     const IntegerResult a = parseInteger(optionName(option), parts.constFirst(), low, high);
     const IntegerResult b = parseInteger(optionName(option), parts.constLast(), low, high);
     if (!a.ok || !b.ok) {
-        err << "mbscope scan: " << (a.ok ? b.error : a.error) << '\n';
+        err << "mbscope " << command << ": " << (a.ok ? b.error : a.error) << '\n';
         return false;
     }
     if (a.value > b.value) {
-        err << "mbscope scan: " << optionName(option) << " '" << text << "': the first is above the last\n";
+        err << "mbscope " << command << ": " << optionName(option) << " '" << text << "': the first is above the last\n";
         return false;
     }
     *first = int(a.value);
@@ -49,12 +49,12 @@ bool ScanOptionReader::durationMs(const QCommandLineOption &option, qint64 lowMs
         return true;
     const DurationResult d = parseDuration(parser.value(option));
     if (!d.ok()) {
-        err << "mbscope scan: " << optionName(option) << ": " << d.error << '\n';
+        err << "mbscope " << command << ": " << optionName(option) << ": " << d.error << '\n';
         return false;
     }
     const qint64 value = d.ns / 1'000'000;
     if (value < lowMs || value > highMs) {
-        err << "mbscope scan: " << optionName(option) << ' ' << parser.value(option) << " is out of range: expected "
+        err << "mbscope " << command << ": " << optionName(option) << ' ' << parser.value(option) << " is out of range: expected "
             << lowMs << " ms to " << highMs << " ms\n";
         return false;
     }
@@ -68,7 +68,7 @@ bool ScanOptionReader::integer(const QCommandLineOption &option, qint64 low, qin
         return true;
     const IntegerResult r = parseInteger(optionName(option), parser.value(option), low, high);
     if (!r.ok) {
-        err << "mbscope scan: " << r.error << '\n';
+        err << "mbscope " << command << ": " << r.error << '\n';
         return false;
     }
     *value = r.value;
@@ -83,13 +83,13 @@ bool ScanOptionReader::integers(const QCommandLineOption &option, qint64 low, qi
     for (const QString &part : parser.value(option).split(QLatin1Char(','), Qt::SkipEmptyParts)) {
         const IntegerResult r = parseInteger(optionName(option), part, low, high);
         if (!r.ok) {
-            err << "mbscope scan: " << r.error << '\n';
+            err << "mbscope " << command << ": " << r.error << '\n';
             return false;
         }
         out.append(r.value);
     }
     if (out.isEmpty()) {
-        err << "mbscope scan: " << optionName(option) << " is empty: expected a comma-separated list\n";
+        err << "mbscope " << command << ": " << optionName(option) << " is empty: expected a comma-separated list\n";
         return false;
     }
     *values = out;

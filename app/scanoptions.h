@@ -10,11 +10,12 @@ class QTextStream;
 
 namespace mbscope::app {
 
-// Small readers of mbscope scan's options; each writes "mbscope scan: ..." and returns false on
+// Small readers of mbscope scan's (and infer's) options; each writes "mbscope scan: ..." and returns false on
 // bad input, naming the option and what was expected.
 struct ScanOptionReader {
     const QCommandLineParser &parser;
     QTextStream &err;
+    QString command = QStringLiteral("scan"); // the subcommand the messages name
 
     // "FIRST-LAST" or one number, within [low, high].
     bool range(const QCommandLineOption &option, int low, int high, int *first, int *last) const;

@@ -87,6 +87,7 @@ QMap<QString, int> IncludeRules::coreLayers()
         {QStringLiteral("sim"), 5},      {QStringLiteral("session"), 5}, {QStringLiteral("monitor"), 5},
         {QStringLiteral("mapexport"), 5},
         {QStringLiteral("replay"), 6},   {QStringLiteral("service"), 6}, {QStringLiteral("conformance"), 6},
+        {QStringLiteral("inference"), 6},
         {QStringLiteral("tap"), 7},
     };
 }

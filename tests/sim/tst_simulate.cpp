@@ -80,7 +80,7 @@ void tst_Simulate::errors_data()
     QTest::addColumn<QStringList>("expected"); // in stderr
     const QString gamma = QStringLiteral("rosrao-gamma");
     QTest::newRow("unknown profile") << QStringList{QStringLiteral("--profile"), QStringLiteral("rosrao-gama")}
-                                     << QStringList{QStringLiteral("unknown profile 'rosrao-gama'"), QStringLiteral("shipped profiles: arduino-rs485, conformance, libmodbus-unit-test, m221-plc, rosrao-gamma, scada-rs485, scripted-meter"),
+                                     << QStringList{QStringLiteral("unknown profile 'rosrao-gama'"), QStringLiteral("shipped profiles: arduino-rs485, conformance, em340-meter, heatpump-controller, libmodbus-unit-test, m221-plc, rosrao-gamma, scada-rs485, scripted-meter, sdm630-meter, sunspec-inverter"),
                                                     QStringLiteral("conformance")};
     QTest::newRow("no profile") << QStringList{} << QStringList{QStringLiteral("--profile")};
     QTest::newRow("bad url") << QStringList{QStringLiteral("--profile"), gamma, QStringLiteral("--listen"), QStringLiteral("tpc://127.0.0.1:0")}

@@ -199,7 +199,7 @@ private slots:
     {
         QTest::addColumn<QString>("name");
         for (const char *name : {"rosrao-gamma", "m221-plc", "arduino-rs485", "conformance", "libmodbus-unit-test", "scada-rs485",
-                                  "scripted-meter"})
+                                  "scripted-meter", "sdm630-meter", "em340-meter", "sunspec-inverter", "heatpump-controller"})
             QTest::newRow(name) << QString::fromLatin1(name);
     }
     void shippedProfilesLoad()
