@@ -65,9 +65,12 @@ QByteArray InferenceDraft::toJson(const QList<ValueGuess> &guesses, quint8 unit,
             e.insert(QStringLiteral("values"), values);
         } else {
             e.insert(QStringLiteral("type"), g.format.name());
+            e.insert(QStringLiteral("kind"), valueKindName(g.kind));
             if (!g.unit.isEmpty())
                 e.insert(QStringLiteral("unit"), g.unit);
-            if (g.scale != 1)
+            if (g.scaleRegister >= 0)
+                e.insert(QStringLiteral("scaleRegister"), g.scaleRegister); // the scale follows that register, as on the device
+            else if (g.scale != 1)
                 e.insert(QStringLiteral("scale"), g.scale);
             // The raw words, as text: exact whatever the scale (a NaN or an odd float included).
             const RegisterValueResult raw = RegisterValue::fromRegisters(

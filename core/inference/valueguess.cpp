@@ -2,17 +2,6 @@
 
 namespace mbscope {
 
-QString valueKindName(ValueKind kind)
-{
-    switch (kind) {
-    case ValueKind::Constant: return QStringLiteral("constant");
-    case ValueKind::Counter: return QStringLiteral("counter");
-    case ValueKind::Measurement: return QStringLiteral("measurement");
-    case ValueKind::Status: return QStringLiteral("status bits");
-    }
-    return QStringLiteral("constant");
-}
-
 QString ValueGuess::typeName() const
 {
     if (bit)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "profile/valuekind.h"
 #include "protocol/registerformat.h"
 
 #include <QtCore/QList>
@@ -10,16 +11,6 @@
 
 namespace mbscope {
 
-// What a value does over the samples.
-enum class ValueKind : quint8 {
-    Constant,    // the same raw words in every sample
-    Counter,     // only grows (a wrap back to a low value allowed once)
-    Measurement, // moves up and down
-    Status,      // a few values, each change a bit or two flipping (a bit field)
-};
-
-[[nodiscard]] QString valueKindName(ValueKind kind); // "measurement"
-
 // What inference proposes for one group of registers (or one bit): its type and order, scale,
 // unit and kind, each a guess with a confidence (0-1) and the evidence in words.
 struct ValueGuess {
@@ -29,6 +20,9 @@ struct ValueGuess {
     RegisterFormat format;   // registers; Ascii for a string of `registers` registers
     bool text = false;       // an ASCII string (format ascii)
     bool bit = false;        // a coil or discrete input
+    // What the value did over the samples: Constant (the same raw words in every sample),
+    // Counter (only grows; one wrap allowed), Measurement (up and down) or Status (a few values,
+    // each change a bit or two flipping): the profile format's kinds (core/profile/valuekind.h).
     ValueKind kind = ValueKind::Constant;
     double scale = 1;        // a power of ten
     QString unit;            // "V", "Hz", "degC"; empty when nothing suggests one

@@ -63,7 +63,7 @@ private Q_SLOTS:
         QTest::newRow("controller temperature i16 x0.1") << "heatpump-controller" << hp << 500 << "i16" << 0.1 << "measurement";
         QTest::newRow("controller outside below 0") << "heatpump-controller" << hp << 504 << "i16" << 0.1 << "measurement";
         QTest::newRow("controller setpoint beside temperatures") << "heatpump-controller" << hp << 501 << "i16" << 0.1 << "constant";
-        QTest::newRow("controller status bits") << "heatpump-controller" << hp << 2500 << "bin" << 1.0 << "status bits";
+        QTest::newRow("controller status bits") << "heatpump-controller" << hp << 2500 << "bin" << 1.0 << "status";
     }
     void knownDevices()
     {

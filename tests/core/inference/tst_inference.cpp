@@ -99,7 +99,7 @@ private Q_SLOTS:
         QTest::addRow("u16-ba counter") << "u16-ba" << "counter16" << "u16-ba" << "counter";
         QTest::addRow("i16 below zero") << "i16" << "cold" << "i16" << "measurement";
         QTest::addRow("u16 constant") << "u16" << "constant" << "u16" << "constant";
-        QTest::addRow("status bits") << "u16" << "status" << "bin" << "status bits";
+        QTest::addRow("status bits") << "u16" << "status" << "bin" << "status";
     }
     void typeAndOrder()
     {
@@ -170,7 +170,7 @@ private Q_SLOTS:
         // A controller: temperatures in tenths, status bits, a serial number.
         QTest::newRow("controller: temperature") << "controller" << 0 << "i16" << "measurement" << 0.1 << "degC";
         QTest::newRow("controller: outdoor below 0") << "controller" << 1 << "i16" << "measurement" << 0.1 << "degC";
-        QTest::newRow("controller: status") << "controller" << 2 << "bin" << "status bits" << 1.0 << "";
+        QTest::newRow("controller: status") << "controller" << 2 << "bin" << "status" << 1.0 << "";
         QTest::newRow("controller: serial") << "controller" << 3 << "ascii[8]" << "constant" << 1.0 << "";
         QTest::newRow("controller: setpoint") << "controller" << 11 << "u16" << "constant" << 1.0 << "";
         // Still small integers side by side: no float read with its bytes swapped.
