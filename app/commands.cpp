@@ -32,8 +32,18 @@ namespace {
 struct Subcommand {
     const char *name;
     const char *summary;
-    int (*run)(const QStringList &arguments);
+    int (*run)(const QStringList &arguments); // nullptr: runs in mbscope-full (see runsHere)
 };
+
+// The commands that need what the light executable leaves out (the simulator and its device
+// scripts, Qt SerialBus, the watch service's HTTP server and MQTT, every subcommand's help at
+// once) run in mbscope-full: `mbscope` execs it before it starts Qt (launcher.h). This file is
+// compiled into both executables; MBSCOPE_LIGHT is defined for `mbscope`.
+#ifdef MBSCOPE_LIGHT
+#define MBSCOPE_FULL_ONLY(run) nullptr
+#else
+#define MBSCOPE_FULL_ONLY(run) run
+#endif
 
 const Subcommand kSubcommands[] = {
     {"decode", "explain a Modbus frame field by field (hex argument or standard input)", runDecode},
@@ -42,19 +52,19 @@ const Subcommand kSubcommands[] = {
     {"write", "write coils or holding registers", runWrite},
     {"poll", "send requests in cycles and print statistics: counts, latency percentiles, histogram", runPoll},
     {"monitor", "listen to a bus another master drives, never sending: every exchange paired and measured", runMonitor},
-    {"watch", "run a session's watches headless: many devices at once, CSV, Prometheus metrics, MQTT", runWatch},
+    {"watch", "run a session's watches headless: many devices at once, CSV, Prometheus metrics, MQTT", MBSCOPE_FULL_ONLY(runWatch)},
     {"sweep", "poll at several intervals and print error rate and latency per interval", runSweep},
     {"scan", "find what is on a link: unit ids that answer, a unit's register map (as a profile draft), limits", runScan},
-    {"infer", "sample a unit's registers and propose types, orders, scales, units and kinds (a profile draft)", runInfer},
-    {"conform", "judge a slave against the Modbus specifications: a scorecard of checks, each citing its clause", runConform},
-    {"run", "run a session's test plan against a device; pass/fail per step, JUnit XML for CI", runRun},
-    {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", runSimulate},
-    {"tap", "sit between masters and devices: forward every request (TCP to RTU and back, any link), record both legs, inject faults", runTap},
-    {"analyze", "read a pcap, pcapng or traffic journal offline: pairs, decoded frames, statistics, histogram", runAnalyze},
-    {"export", "write a capture or journal as CSV, JSON lines, pcapng for Wireshark, or latency plots", runExport},
-    {"export-map", "write a device profile's register map for Node-RED, Telegraf, Home Assistant, modbus_exporter or CSV, verified first if asked", runExportMap},
-    {"replay", "re-send a recording to a device and compare the answers, or serve it as a stand-in device", runReplay},
-    {"completion", "print a bash or zsh completion script for these subcommands and their options", runCompletion},
+    {"infer", "sample a unit's registers and propose types, orders, scales, units and kinds (a profile draft)", MBSCOPE_FULL_ONLY(runInfer)},
+    {"conform", "judge a slave against the Modbus specifications: a scorecard of checks, each citing its clause", MBSCOPE_FULL_ONLY(runConform)},
+    {"run", "run a session's test plan against a device; pass/fail per step, JUnit XML for CI", MBSCOPE_FULL_ONLY(runRun)},
+    {"simulate", "serve a device profile as a Modbus server (the built-in simulator) until Ctrl-C", MBSCOPE_FULL_ONLY(runSimulate)},
+    {"tap", "sit between masters and devices: forward every request (TCP to RTU and back, any link), record both legs, inject faults", MBSCOPE_FULL_ONLY(runTap)},
+    {"analyze", "read a pcap, pcapng or traffic journal offline: pairs, decoded frames, statistics, histogram", MBSCOPE_FULL_ONLY(runAnalyze)},
+    {"export", "write a capture or journal as CSV, JSON lines, pcapng for Wireshark, or latency plots", MBSCOPE_FULL_ONLY(runExport)},
+    {"export-map", "write a device profile's register map for Node-RED, Telegraf, Home Assistant, modbus_exporter or CSV, verified first if asked", MBSCOPE_FULL_ONLY(runExportMap)},
+    {"replay", "re-send a recording to a device and compare the answers, or serve it as a stand-in device", MBSCOPE_FULL_ONLY(runReplay)},
+    {"completion", "print a bash or zsh completion script for these subcommands and their options", MBSCOPE_FULL_ONLY(runCompletion)},
 };
 
 void printUsage(QTextStream &out)
@@ -81,7 +91,8 @@ QList<SubcommandHelp> subcommandHelps()
     QList<SubcommandHelp> helps;
     HelpCapture capture;
     for (const Subcommand &s : kSubcommands) {
-        s.run({QString::fromLatin1(s.name), QStringLiteral("--help")});
+        if (s.run)
+            s.run({QString::fromLatin1(s.name), QStringLiteral("--help")});
         helps.append({QString::fromLatin1(s.name), QString::fromLatin1(s.summary), capture.take()});
     }
     return helps;
@@ -101,9 +112,18 @@ bool isSubcommand(const char *name)
     return false;
 }
 
+bool runsHere(const char *name)
+{
+    for (const Subcommand &s : kSubcommands) {
+        if (std::strcmp(s.name, name) == 0)
+            return s.run != nullptr;
+    }
+    return false;
+}
+
 bool hasGui()
 {
-#ifdef MBSCOPE_HAVE_UI
+#if defined(MBSCOPE_HAVE_UI) && !defined(MBSCOPE_LIGHT)
     return true;
 #else
     return false;
@@ -125,7 +145,8 @@ int runHeadless(const QStringList &arguments)
         for (const Subcommand &s : kSubcommands) {
             out << "\n== mbscope " << s.name << " ==\n";
             out.flush();
-            s.run({QString::fromLatin1(s.name), QStringLiteral("--help")});
+            if (s.run)
+                s.run({QString::fromLatin1(s.name), QStringLiteral("--help")});
         }
         return ExitOk;
     }
@@ -136,6 +157,11 @@ int runHeadless(const QStringList &arguments)
     for (const Subcommand &s : kSubcommands) {
         if (first != QLatin1String(s.name))
             continue;
+        if (!s.run) {
+            // `mbscope` execs mbscope-full for these before it gets here (launcher.h).
+            err << "mbscope: '" << first << "' runs in mbscope-full, which this executable could not start\n";
+            return ExitUsage;
+        }
         if (!arguments.contains(QLatin1String("--json")))
             return s.run(arguments.mid(1));
         // --json: standard output holds one JSON document, an error object when the command fails

@@ -1,6 +1,7 @@
 #pragma once
 
 // The dispatcher: which subcommand runs, or the window. What subcommands share is cli.h.
+// commands.cpp is compiled into both executables, `mbscope` (MBSCOPE_LIGHT) and mbscope-full.
 
 #include "cli.h"
 
@@ -15,6 +16,9 @@ class QApplication;
 namespace mbscope::app {
 
 [[nodiscard]] bool isSubcommand(const char *name);
+// Whether this executable runs the subcommand itself: every one in mbscope-full; in `mbscope`
+// (built with MBSCOPE_LIGHT) the light ones, the others are handed to mbscope-full (launcher.h).
+[[nodiscard]] bool runsHere(const char *name);
 
 struct SubcommandHelp {
     QString name;

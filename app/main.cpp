@@ -1,4 +1,5 @@
-// mbscope: the window when run without a subcommand, headless subcommands otherwise.
+// mbscope-full: the window when run without a subcommand, every headless subcommand otherwise.
+// `mbscope` (lightmain.cpp) execs it for what it does not run itself (launcher.h).
 #include "commands.h"
 #include "histogramplot.h"
 

@@ -189,3 +189,5 @@ std::optional<QList<LineTrial>> LineScanner::run(const LineScanSettings &setting
 }
 
 } // namespace mbscope
+
+#include "moc_linescanner.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -314,3 +314,5 @@ void MapScanner::report(int tableIndex, int address)
 }
 
 } // namespace mbscope
+
+#include "moc_mapscanner.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -175,3 +175,5 @@ void ProbeChannel::closeLink()
 }
 
 } // namespace mbscope
+
+#include "moc_probechannel.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -468,3 +468,5 @@ void TimingScanner::clients(TimingReport &report)
 }
 
 } // namespace mbscope
+
+#include "moc_timingscanner.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -99,3 +99,5 @@ void UnitScanner::end(ScanEnd how)
 }
 
 } // namespace mbscope
+
+#include "moc_unitscanner.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -308,3 +308,5 @@ void EngineCore::record(Transaction transaction, quint64 tag)
 }
 
 } // namespace mbscope
+
+#include "moc_enginecore.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -318,3 +318,5 @@ void EngineEventDispatcher::interrupt()
 }
 
 } // namespace mbscope
+
+#include "moc_engineeventdispatcher.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -193,3 +193,5 @@ void EngineRecorder::flushBatch()
 }
 
 } // namespace mbscope
+
+#include "moc_enginerecorder.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -166,3 +166,5 @@ void Poller::finish()
 }
 
 } // namespace mbscope
+
+#include "moc_poller.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -68,3 +68,5 @@ void Sweep::onRunFinished()
 }
 
 } // namespace mbscope
+
+#include "moc_sweep.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -187,3 +187,5 @@ void TransactionEngine::closeLink()
 }
 
 } // namespace mbscope
+
+#include "moc_transactionengine.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -119,3 +119,5 @@ void WatchFleet::flush()
 }
 
 } // namespace mbscope
+
+#include "moc_watchfleet.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

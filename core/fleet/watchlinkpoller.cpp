@@ -431,3 +431,5 @@ void WatchLinkPoller::setState(WatchLinkState::State state, const QString &messa
 }
 
 } // namespace mbscope
+
+#include "moc_watchlinkpoller.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -247,3 +247,5 @@ void WatchLogWriter::appendEvent(const WatchRuleEvent &event)
 }
 
 } // namespace mbscope
+
+#include "moc_watchlogwriter.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -143,3 +143,5 @@ void WatchRunner::onSampled(const QList<WatchSample> &samples, const QList<Watch
 }
 
 } // namespace mbscope
+
+#include "moc_watchrunner.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -88,3 +88,5 @@ QList<BlockSamples> BlockSampler::run(const SampleSettings &settings)
 }
 
 } // namespace mbscope
+
+#include "moc_blocksampler.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

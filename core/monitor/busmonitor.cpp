@@ -174,3 +174,5 @@ void BusMonitor::onGarbage(const SkippedBytes &run, qint64 timeNs)
 }
 
 } // namespace mbscope
+
+#include "moc_busmonitor.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -104,3 +104,5 @@ void ScriptBridge::log(const QString &text)
 }
 
 } // namespace mbscope
+
+#include "moc_scriptbridge.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -425,3 +425,5 @@ bool ScriptHost::tick()
 }
 
 } // namespace mbscope
+
+#include "moc_scripthost.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -186,3 +186,5 @@ void GeneratorDriver::advance(double ms)
 }
 
 } // namespace mbscope
+
+#include "moc_generatordriver.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

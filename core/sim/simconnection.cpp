@@ -219,3 +219,5 @@ void SimConnection::onDisconnected()
 }
 
 } // namespace mbscope
+
+#include "moc_simconnection.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -82,3 +82,5 @@ void SimDatagramEndpoint::onReadyRead()
 }
 
 } // namespace mbscope
+
+#include "moc_simdatagramendpoint.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

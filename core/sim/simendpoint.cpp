@@ -25,3 +25,5 @@ void SimEndpoint::setBound(const LinkUrl &bound, bool listening)
 }
 
 } // namespace mbscope
+
+#include "moc_simendpoint.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -33,3 +33,5 @@ void SimFaultPlanRecorder::onLogged(const SimLogEntry &entry)
 }
 
 } // namespace mbscope
+
+#include "moc_simfaultplanrecorder.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

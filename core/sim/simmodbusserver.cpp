@@ -84,3 +84,5 @@ bool SimModbusServer::writeData(const QModbusDataUnit &unit)
 }
 
 } // namespace mbscope
+
+#include "moc_simmodbusserver.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

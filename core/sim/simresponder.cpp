@@ -126,3 +126,5 @@ void SimResponder::arm()
 }
 
 } // namespace mbscope
+
+#include "moc_simresponder.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -134,3 +134,5 @@ QStringList SimScriptDriver::describe() const
 }
 
 } // namespace mbscope
+
+#include "moc_simscriptdriver.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -177,3 +177,5 @@ bool SimSerialEndpoint::writeAnswer(const QByteArray &answer)
 }
 
 } // namespace mbscope
+
+#include "moc_simserialendpoint.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

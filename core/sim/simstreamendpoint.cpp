@@ -173,3 +173,5 @@ void SimStreamEndpoint::onNewConnection()
 }
 
 } // namespace mbscope
+
+#include "moc_simstreamendpoint.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

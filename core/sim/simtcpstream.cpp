@@ -162,3 +162,5 @@ void SimTcpStream::closeNow()
 }
 
 } // namespace mbscope
+
+#include "moc_simtcpstream.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -734,3 +734,5 @@ void Simulator::finishForward(const Pending &pending, const SimRemote::Answer &a
 }
 
 } // namespace mbscope
+
+#include "moc_simulator.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -292,3 +292,5 @@ void SimulatorHost::report()
 }
 
 } // namespace mbscope
+
+#include "moc_simulatorhost.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -272,3 +272,5 @@ void SimUnit::logEvent(quint8 event)
 }
 
 } // namespace mbscope
+
+#include "moc_simunit.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -252,3 +252,5 @@ void TapForwarder::onRecord(const Transaction &transaction, quint64 /*tag*/)
 }
 
 } // namespace mbscope
+
+#include "moc_tapforwarder.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

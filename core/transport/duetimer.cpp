@@ -78,3 +78,5 @@ void DueTimer::onActivated()
 }
 
 } // namespace mbscope
+
+#include "moc_duetimer.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -75,3 +75,5 @@ QString Link::osAnswer(const QString &errorString)
 }
 
 } // namespace mbscope
+
+#include "moc_link.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

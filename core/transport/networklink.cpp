@@ -53,3 +53,5 @@ void NetworkLink::noteEndpoints(const QAbstractSocket &socket)
 }
 
 } // namespace mbscope
+
+#include "moc_networklink.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

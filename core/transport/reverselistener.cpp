@@ -156,3 +156,5 @@ QString ReverseListener::peerOf(int fd)
 }
 
 } // namespace mbscope
+
+#include "moc_reverselistener.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -209,3 +209,5 @@ void RtsDirection::arm()
 }
 
 } // namespace mbscope
+
+#include "moc_rtsdirection.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

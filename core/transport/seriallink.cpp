@@ -354,3 +354,5 @@ void SerialLink::onPortError(QSerialPort::SerialPortError error)
 }
 
 } // namespace mbscope
+
+#include "moc_seriallink.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

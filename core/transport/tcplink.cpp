@@ -505,3 +505,5 @@ void TcpLink::onConnectTimeout()
 }
 
 } // namespace mbscope
+
+#include "moc_tcplink.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

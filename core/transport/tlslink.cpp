@@ -146,3 +146,5 @@ TcpLink::Failure TlsLink::describeTls(QAbstractSocket::SocketError error, bool o
 }
 
 } // namespace mbscope
+
+#include "moc_tlslink.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

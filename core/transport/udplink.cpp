@@ -141,3 +141,5 @@ void UdpLink::onConnectTimeout()
 }
 
 } // namespace mbscope
+
+#include "moc_udplink.cpp" // its meta-object code here: linked only with the class (docs/architecture.md)

@@ -3,9 +3,12 @@
 // mbpoll's short options mean what they mean in mbpoll (the same request bytes as the long
 // options), the target may be a host or a device with its pieces (-m, -p, -b, -P, -d, -s),
 // --one-based counts registers from 1 and says so, the hint for a reference that looks counted
-// from 1, read -q prints the value lines mbpoll -1 prints, and the live frame log.
+// from 1, read -q prints the value lines mbpoll -1 prints, and the live frame log. Start-up: the
+// commands of the light `mbscope` load no library of the window, the plots, the simulator or the
+// watch service; what needs them runs in mbscope-full, which mbscope execs.
 #include "clitest.h"
 
+#include <QtCore/QDir>
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QRegularExpression>
@@ -53,6 +56,17 @@ QStringList valueLines(const QByteArray &output)
     return lines;
 }
 
+// The shared libraries a process initialised, by file name, from the dynamic loader's own
+// report (LD_DEBUG=libs: "calling init: /usr/lib/.../libQt6Core.so.6"), exec'd images included.
+QStringList initialisedLibraries(const QByteArray &err)
+{
+    static const QRegularExpression init(QStringLiteral(R"(calling init: (\S+))"));
+    QStringList names;
+    for (auto it = init.globalMatch(QString::fromUtf8(err)); it.hasNext();)
+        names.append(it.next().captured(1).section(QLatin1Char('/'), -1));
+    return names;
+}
+
 } // namespace
 
 class TestCliHabits : public QObject
@@ -83,6 +97,9 @@ private slots:
     void frameLog_data();
     void frameLog();
     void frameLogFile();
+    void startLoadsOnlyWhatItUses_data();
+    void startLoadsOnlyWhatItUses();
+    void withoutTheFullPartSaysWhy();
 };
 
 void TestCliHabits::initTestCase()
@@ -489,6 +506,77 @@ void TestCliHabits::frameLogFile()
     QVERIFY2(again.exitCode == 2 && again.errText().contains(QLatin1String("--frame-log")), again.describe());
     const CliResult forced = runMbscope(QStringList(arguments) << QStringLiteral("--force"));
     QVERIFY2(forced.exitCode == 0, forced.describe());
+}
+
+
+// What a command loads: the light commands none of the window (Qt Gui, Widgets, QCustomPlot),
+// the simulator (Qt SerialBus, the script engine Qt Qml) or the watch service (Qt HttpServer,
+// libmosquitto); simulate and the plots run in mbscope-full, which loads them.
+void TestCliHabits::startLoadsOnlyWhatItUses_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::addColumn<QStringList>("mustLoad");
+    QTest::addColumn<QStringList>("mustNotLoad");
+    const QStringList heavy = sl({"libQt6Gui.so.6", "libQt6Widgets.so.6", "libQCustomPlotQt6.so.2.1", "libQt6Qml.so.6",
+                                  "libQt6SerialBus.so.6", "libQt6HttpServer.so.6", "libmosquitto.so.1"});
+    QTest::newRow("read") << sl({"read", "-r", "121", "-c", "2", "TARGET"}) << sl({"libQt6Network.so.6"}) << heavy;
+    QTest::newRow("read -1 -q, as mbpoll") << sl({"read", "-1", "-q", "-r", "121", "-c", "2", "TARGET"})
+                                           << sl({"libQt6Network.so.6"}) << heavy;
+    QTest::newRow("send") << sl({"send", "--target", "TARGET", "--hex", "00 01 00 00 00 06 01 03 00 79 00 01"}) << sl({"libQt6Network.so.6"})
+                          << heavy;
+    QTest::newRow("poll") << sl({"poll", "-r", "121", "-c", "2", "-l", "10", "-1", "TARGET"})
+                          << sl({"libQt6Network.so.6"}) << heavy;
+    QTest::newRow("decode") << sl({"decode", "01 03 00 79 00 16 15 DD"}) << sl({"libQt6Core.so.6"}) << heavy;
+    QTest::newRow("--version") << sl({"--version"}) << sl({"libQt6Core.so.6"}) << heavy;
+    QTest::newRow("read --help") << sl({"read", "--help"}) << sl({"libQt6Core.so.6"}) << heavy;
+    QTest::newRow("simulate runs in mbscope-full")
+        << sl({"simulate", "--list-profiles"}) << sl({"libQt6SerialBus.so.6", "libQt6Qml.so.6"}) << QStringList();
+#ifdef MBSCOPE_HAVE_UI
+    QTest::newRow("a plot runs in mbscope-full")
+        << sl({"poll", "-r", "121", "-c", "2", "-1", "--histogram", "DIR/startup.png", "--force", "TARGET"})
+        << sl({"libQt6Widgets.so.6", "libQCustomPlotQt6.so.2.1"}) << QStringList();
+#endif
+}
+
+void TestCliHabits::startLoadsOnlyWhatItUses()
+{
+    QFETCH(QStringList, arguments);
+    QFETCH(QStringList, mustLoad);
+    QFETCH(QStringList, mustNotLoad);
+    for (QString &a : arguments)
+        a.replace(QStringLiteral("DIR"), m_dir.path());
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("LD_DEBUG"), QStringLiteral("libs"));
+    const CliResult run = runMbscope(withTarget(arguments, m_url), 60000, env);
+    QVERIFY2(run.finished && run.exitCode == 0, run.describe().right(4000).constData());
+    const QStringList loaded = initialisedLibraries(run.err);
+    for (const QString &library : mustLoad)
+        QVERIFY2(loaded.contains(library), qPrintable(library + QStringLiteral(" not loaded: ") + loaded.join(QLatin1Char(' '))));
+    for (const QString &library : mustNotLoad)
+        QVERIFY2(!loaded.contains(library), qPrintable(library + QStringLiteral(" loaded: ") + loaded.join(QLatin1Char(' '))));
+}
+
+// mbscope alone, without mbscope-full beside it (a copy taken out of its folder): the light
+// commands run, the others say what is missing and where it was looked for.
+void TestCliHabits::withoutTheFullPartSaysWhy()
+{
+    const QString alone = m_dir.filePath(QStringLiteral("alone/mbscope"));
+    QVERIFY(QDir().mkpath(m_dir.filePath(QStringLiteral("alone"))));
+    QFile::remove(alone);
+    QVERIFY(QFile::copy(mbscopePath(), alone));
+    QProcess light;
+    light.start(alone, withTarget(sl({"read", "-1", "-q", "-r", "121", "-c", "2", "TARGET"}), m_url));
+    QVERIFY(light.waitForFinished(60000));
+    const QByteArray lightOut = light.readAllStandardOutput();
+    QVERIFY2(light.exitCode() == 0, (lightOut + light.readAllStandardError()).constData());
+    QCOMPARE(valueLines(lightOut).size(), 2);
+    QProcess heavy;
+    heavy.start(alone, sl({"simulate", "--list-profiles"}));
+    QVERIFY(heavy.waitForFinished(60000));
+    QCOMPARE(heavy.exitCode(), 2);
+    const QString err = QString::fromUtf8(heavy.readAllStandardError());
+    QVERIFY2(err.startsWith(QStringLiteral("mbscope: cannot start %1-full,").arg(alone)), qPrintable(err));
+    QVERIFY2(err.contains(QLatin1String("No such file or directory")), qPrintable(err));
 }
 
 QTEST_GUILESS_MAIN(TestCliHabits)

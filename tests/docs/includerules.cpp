@@ -143,6 +143,15 @@ void IncludeRules::checkQuoted(const QString &file, int line, const QString &nam
     const QString written = QLatin1Char('"') + name + QLatin1Char('"');
     const auto fail = [&](const QString &reason) { out.append(IncludeViolation{file, line, written, reason}); };
 
+    // AUTOMOC's meta-object code of the file's own header (moc_X.cpp for X.h beside it), included
+    // at the end of X.cpp so that it is linked only with the class.
+    if (name.startsWith(QLatin1String("moc_")) && name.endsWith(QLatin1String(".cpp")) && !name.contains(QLatin1Char('/'))) {
+        const QString header = file.section(QLatin1Char('/'), 0, -2) + QLatin1Char('/') + name.mid(4).chopped(4)
+                               + QLatin1String(".h");
+        if (!m_known.contains(header))
+            fail(QStringLiteral("includes the meta-object code of %1, which does not exist").arg(header));
+        return;
+    }
     const Resolution found = resolve(file, name);
     if (found.target.isEmpty()) {
         // Tests include generated .moc files and helpers of their own folders.

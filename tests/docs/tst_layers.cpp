@@ -218,6 +218,8 @@ void TestLayers::checkerCatches_data()
         "core/newthing has no layer");
     row("name nothing", "core/engine/made.cpp", "#include \"engine/nosuchfile.h\"",
         "names no file under core/, ui/ or app/");
+    row("the moc of a header that is not there", "core/sim/made.cpp", "#include \"moc_nosuchheader.cpp\"",
+        "includes the meta-object code of core/sim/nosuchheader.h, which does not exist");
     row("name reaching two roots", "ui/sim/made.cpp", "#include \"sim/simunit.h\"",
         "reaches both ui/sim/simunit.h and core/sim/simunit.h", {QStringLiteral("ui/sim/simunit.h")});
     row("ui/common includes a wing", "ui/common/made.cpp", "#include \"decode/hexview.h\"",
@@ -288,6 +290,8 @@ void TestLayers::checkerAllows_data()
                                  << QStringLiteral("#include \"sim/simulator.h\"\n#include \"time/duration.h\"\n");
     QTest::newRow("the exception, by its file") << QStringLiteral("core/profile/delayspec.cpp")
                                                 << QStringLiteral("#include \"sim/simrandom.h\"\n");
+    QTest::newRow("its own header's moc") << QStringLiteral("core/sim/simmodbusserver.cpp")
+                                          << QStringLiteral("#include \"moc_simmodbusserver.cpp\"\n");
     QTest::newRow("core/sim uses QtSerialBus") << QStringLiteral("core/sim/made.cpp")
                                                << QStringLiteral("#include <QtSerialBus/QModbusServer>\n");
     QTest::newRow("ui/session includes core/sim") << QStringLiteral("ui/session/made.cpp")

@@ -70,6 +70,7 @@ private slots:
     void changelogNamesTheVersion();
     void installedBinaryRuns_data();
     void installedBinaryRuns();
+    void installedBinaryNamesNoBuildTree_data();
     void installedBinaryNamesNoBuildTree();
     void desktopFileValidates();
     void metainfoValidates();
@@ -160,6 +161,7 @@ void TestPackage::containsFile_data()
     QTest::addColumn<QString>("path");
     const QStringList paths{
         QStringLiteral("usr/bin/mbscope"),
+        QStringLiteral("usr/bin/mbscope-full"), // the window and the heavy commands, which mbscope execs
         QStringLiteral("usr/share/applications/%1.desktop").arg(kAppId),
         QStringLiteral("usr/share/metainfo/%1.metainfo.xml").arg(kAppId),
         QStringLiteral("usr/share/icons/hicolor/scalable/apps/mbscope.svg"),
@@ -253,6 +255,7 @@ void TestPackage::installedBinaryRuns_data()
                        QStringLiteral("79"), QStringLiteral("00"), QStringLiteral("16"), QStringLiteral("15"),
                        QStringLiteral("DD")}
         << QStringList{QStringLiteral("Read Holding Registers"), QStringLiteral("15 DD")};
+    // simulate runs in mbscope-full, which the installed mbscope finds beside itself.
     QTest::newRow("simulate --list-profiles (compiled in)")
         << QStringList{QStringLiteral("simulate"), QStringLiteral("--list-profiles")}
         << QStringList{QStringLiteral("rosrao-gamma")};
@@ -270,15 +273,23 @@ void TestPackage::installedBinaryRuns()
         QVERIFY2(run.outText().contains(text), qPrintable(QStringLiteral("'%1' not in:\n%2").arg(text, run.outText())));
 }
 
+void TestPackage::installedBinaryNamesNoBuildTree_data()
+{
+    QTest::addColumn<QString>("binary");
+    QTest::newRow("mbscope") << QStringLiteral("usr/bin/mbscope");
+    QTest::newRow("mbscope-full") << QStringLiteral("usr/bin/mbscope-full");
+}
+
 void TestPackage::installedBinaryNamesNoBuildTree()
 {
-    const QByteArray binary = readAll(rootPath(QStringLiteral("usr/bin/mbscope")));
-    QVERIFY(!binary.isEmpty());
-    QVERIFY2(!binary.contains(QByteArrayLiteral(MBSCOPE_BUILD_DIR)), "the installed binary names the build directory");
+    QFETCH(QString, binary);
+    const QByteArray bytes = readAll(rootPath(binary));
+    QVERIFY(!bytes.isEmpty());
+    QVERIFY2(!bytes.contains(QByteArrayLiteral(MBSCOPE_BUILD_DIR)), "the installed binary names the build directory");
     const QString readelf = findProgram(QStringLiteral("readelf"));
     if (readelf.isEmpty())
         QSKIP("readelf is not installed (Debian: binutils): RPATH not checked");
-    const ProcessRun dynamic = runProcess(readelf, {QStringLiteral("-d"), rootPath(QStringLiteral("usr/bin/mbscope"))});
+    const ProcessRun dynamic = runProcess(readelf, {QStringLiteral("-d"), rootPath(binary)});
     QVERIFY2(dynamic.succeeded(), dynamic.describe().constData());
     QVERIFY2(!dynamic.outText().contains(QLatin1String("RPATH")) && !dynamic.outText().contains(QLatin1String("RUNPATH")),
              dynamic.out.constData());
