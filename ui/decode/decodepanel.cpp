@@ -235,7 +235,7 @@ void DecodePanel::showDissection(const Dissection &dissection)
     // keeps to the spec, coloured by the worst problem found.
     const Severity worst = dissection.fields.worstSeverity();
     setVerdict(dissection.isValid() ? tr("Valid:") : tr("Invalid:"),
-               worst >= Severity::Warning ? SeverityStyle::textColor(worst) : palette().color(QPalette::WindowText));
+               worst >= Severity::Warning ? worst : Severity::Ok);
     m_summaryLabel->setText(DissectionSummary::text(dissection));
 
     const QString framingReason = dissection.framingReason.isEmpty() ? tr("as chosen") : dissection.framingReason.toString();
@@ -251,7 +251,7 @@ void DecodePanel::showEmpty()
     m_inputError.clear();
     m_errorLabel->hide();
     m_model->clear();
-    setVerdict({}, palette().color(QPalette::WindowText));
+    setVerdict({}, Severity::Ok);
     m_summaryLabel->setText(tr("Type or paste a frame as hex; the fields appear as you type."));
     m_reasonLabel->clear();
     Q_EMIT decoded();
@@ -270,11 +270,9 @@ void DecodePanel::showInputError(const QString &what, const HexTextError &error,
     Q_EMIT decoded();
 }
 
-void DecodePanel::setVerdict(const QString &text, const QColor &color)
+void DecodePanel::setVerdict(const QString &text, Severity severity)
 {
-    QPalette p = m_verdictLabel->palette();
-    p.setColor(QPalette::WindowText, color);
-    m_verdictLabel->setPalette(p);
+    SeverityStyle::setTextColour(m_verdictLabel, severity);
     m_verdictLabel->setText(text);
     m_verdictLabel->setVisible(!text.isEmpty());
 }

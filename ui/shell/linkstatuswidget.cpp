@@ -33,17 +33,18 @@ LinkStatusWidget::LinkStatusWidget(QWidget *parent)
 void LinkStatusWidget::setState(LinkController::State state, const QString &message)
 {
     QString word;
-    QColor colour = palette().color(QPalette::WindowText);
+    QColor colour; // none: the palette's text colour, whatever the theme becomes
     switch (state) {
     case LinkController::State::Disconnected: word = tr("Not connected"); break;
     case LinkController::State::Ready: word = tr("Connecting"); colour = SeverityStyle::textColor(Severity::Info); break;
-    case LinkController::State::Connected: word = tr("Connected"); colour = QColor(0x1b, 0x7f, 0x2a); break;
+    case LinkController::State::Connected: word = tr("Connected"); colour = SeverityStyle::goodColor(); break;
     case LinkController::State::Failed: word = tr("Link failed"); colour = SeverityStyle::textColor(Severity::Error); break;
     }
     // The state word is coloured; the detail (target or the link's words) stays readable text.
     const QString detail = state == LinkController::State::Disconnected ? QString() : message;
-    m_stateLabel->setText(QStringLiteral("<b style=\"color:%1\">\u25CF %2</b>%3")
-                              .arg(colour.name(), word.toHtmlEscaped(),
+    m_stateLabel->setText(QStringLiteral("<b%1>\u25CF %2</b>%3")
+                              .arg(colour.isValid() ? QStringLiteral(" style=\"color:%1\"").arg(colour.name()) : QString(),
+                                   word.toHtmlEscaped(),
                                    detail.isEmpty() ? QString() : QStringLiteral("&nbsp; ") + detail.toHtmlEscaped()));
     m_stateLabel->setToolTip(detail);
 }
