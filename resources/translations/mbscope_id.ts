@@ -2290,7 +2290,7 @@
     <message>
         <location line="+1"/>
         <source>Field</source>
-        <translation>Field</translation>
+        <translation>Bidang</translation>
     </message>
     <message>
         <location line="+1"/>

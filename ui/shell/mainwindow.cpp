@@ -447,13 +447,14 @@ bool MainWindow::startAsConfigured(const QString &url)
     QSettings settings;
     const bool firstRun = !settings.value(QStringLiteral("startup/started")).toBool();
     settings.setValue(QStringLiteral("startup/started"), true);
-    if (firstRun || PreferencesDialog::startsSimulator())
-        return startWithSimulator(url);
-    // The poll interval and count as they were left (a session opened next sets its own).
+    // The poll interval and count as they were left, on the simulator too (a session opened
+    // next sets its own).
     if (settings.contains(QStringLiteral("composer/intervalMs"))) {
         m_composer->intervalSpin()->setValue(settings.value(QStringLiteral("composer/intervalMs")).toInt());
         m_composer->countSpin()->setValue(settings.value(QStringLiteral("composer/count")).toInt());
     }
+    if (firstRun || PreferencesDialog::startsSimulator())
+        return startWithSimulator(url);
     m_registers->restoreFormats(); // the value columns as they were left
     const QString last = settings.value(QStringLiteral("session/last")).toString();
     if (!last.isEmpty() && QFileInfo::exists(last) && m_session->open(last))
