@@ -11,6 +11,7 @@
 #include "link/linkcontroller.h"
 #include "linkstatuswidget.h"
 #include "common/noticebanner.h"
+#include "plotdockheight.h"
 #include "preferencesdialog.h"
 #include "session/recordingcontrol.h"
 #include "compose/rawrequesteditor.h"
@@ -51,7 +52,6 @@
 #include <QtWidgets/QStatusBar>
 #include <QtWidgets/QTabWidget>
 #include <QtWidgets/QVBoxLayout>
-
 
 namespace mbscope {
 
@@ -292,6 +292,7 @@ void MainWindow::buildDocks()
     m_simulatorDock->setWidget(m_simulatorPanel);
     addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
     tabifyDockWidget(m_analysisDock, m_simulatorDock);
+    new PlotDockHeight(this, m_analysisDock); // the plots get half the window while in front
     m_trafficDock->raise();
 }
 
