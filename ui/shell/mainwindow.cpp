@@ -28,6 +28,7 @@
 #include "toolsmenu.h"
 #include "traffic/trafficmodel.h"
 #include "traffic/trafficmonitor.h"
+#include "windowlayout.h"
 #include "decode/transactionview.h"
 #include "analysis/trendpanels.h"
 #include "watch/watchfactory.h"
@@ -233,19 +234,14 @@ void MainWindow::closeEvent(QCloseEvent *event)
 
 bool MainWindow::restoreLayout()
 {
-    const QSettings settings;
-    const QByteArray geometry = settings.value(QStringLiteral("window/geometry")).toByteArray();
-    const QByteArray state = settings.value(QStringLiteral("window/state")).toByteArray();
-    const bool geometryRestored = !geometry.isEmpty() && restoreGeometry(geometry);
-    m_layoutRestored = !state.isEmpty() && restoreState(state);
-    return geometryRestored || m_layoutRestored;
+    const WindowLayout::Restored restored = WindowLayout::restore(*this, WindowLayout::screenSize(*this));
+    m_layoutRestored = restored.state;
+    return restored.geometry || restored.state;
 }
 
 void MainWindow::saveLayout() const
 {
-    QSettings settings;
-    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("window/state"), saveState());
+    WindowLayout::save(*this, WindowLayout::screenSize(*this));
 }
 
 // The composer needs about 450 px for its poll row; the answer gets the rest. The docks take a

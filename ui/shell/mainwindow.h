@@ -85,8 +85,9 @@ public:
     // Shows the main area's tab: "answer", "decode" or "watches"; false for another name.
     bool showTab(const QString &name);
 
-    // Window geometry and dock layout kept in QSettings ("window/geometry", "window/state"):
-    // restoreLayout() puts back what the last close saved; false when nothing was saved.
+    // Window geometry and dock layout kept in QSettings per screen size (WindowLayout):
+    // restoreLayout() puts back what the last close on this screen saved (or on any screen, when
+    // none was made on this one); false when nothing was saved.
     bool restoreLayout();
     void saveLayout() const;
 
