@@ -20,12 +20,20 @@
 #include "link/linkcontroller.h"
 #include "session/replaypanel.h"
 #include "shell/mainwindow.h"
+#include "shell/preferencesdialog.h"
+#include "watch/watchdialog.h"
+#include "watch/watchlogdialog.h"
+#include "watch/watchprofiledialog.h"
+#include "discovery/linescandialog.h"
+#include "discovery/mapscandialog.h"
+#include "discovery/timingscandialog.h"
 #include "shell/sessiontools.h"
 #include "shell/translationloader.h"
 #include "watch/watchfactory.h"
 #include "watch/watchworkspace.h"
 
 #include <QtCore/QDir>
+#include <memory>
 #include <QtCore/QSettings>
 #include <QtGui/QStandardItemModel>
 #include <QtTest/QSignalSpy>
@@ -104,6 +112,8 @@ private Q_SLOTS:
     void contrastOfVerdictColours();
     void screens_data();
     void screens();
+    void dialogs_data();
+    void dialogs();
 };
 
 void TestWindowFit::initTestCase()
@@ -298,6 +308,52 @@ void TestWindowFit::screens()
         qWarning("%s", qPrintable(p));
     QVERIFY2(problems.isEmpty(), qPrintable(QStringLiteral("%1 problem(s), listed above; the first: %2")
                                                 .arg(problems.size()).arg(problems.value(0))));
+}
+
+void TestWindowFit::dialogs_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QString>("dialog");
+    for (const char *language : {"en", "id"}) {
+        for (const char *dialog : {"preferences", "watch", "watch-profile", "watch-log", "map-scan", "line-scan", "timing-scan"})
+            QTest::newRow(qPrintable(QStringLiteral("%1-%2").arg(QLatin1String(language), QLatin1String(dialog))))
+                << QString::fromLatin1(language) << QString::fromLatin1(dialog);
+    }
+}
+
+// The dialogs as they open, in both languages: each accelerator once (Alt+P was two things in
+// Indonesian), no literal '&' ("&Profile:"), nothing cut or outside.
+void TestWindowFit::dialogs()
+{
+    QFETCH(QString, language);
+    QFETCH(QString, dialog);
+    TranslationLoader::install(*qApp, TranslationLoader::localeFor(*TranslationLoader::parse(language)));
+    Theme::apply(Theme::Choice::Light);
+    std::unique_ptr<QDialog> shown;
+    if (dialog == QLatin1String("preferences"))
+        shown = std::make_unique<PreferencesDialog>();
+    else if (dialog == QLatin1String("watch"))
+        shown = std::make_unique<WatchDialog>();
+    else if (dialog == QLatin1String("watch-profile"))
+        shown = std::make_unique<WatchProfileDialog>();
+    else if (dialog == QLatin1String("watch-log"))
+        shown = std::make_unique<WatchLogDialog>();
+    else if (dialog == QLatin1String("map-scan"))
+        shown = std::make_unique<MapScanDialog>();
+    else if (dialog == QLatin1String("line-scan"))
+        shown = std::make_unique<LineScanDialog>();
+    else
+        shown = std::make_unique<TimingScanDialog>();
+    shown->show();
+    QVERIFY(QTest::qWaitForWindowExposed(shown.get()));
+    QCoreApplication::processEvents();
+    QVERIFY(guitest::saveShot(shown.get(), QStringLiteral("windowfit/dialog-%1-%2.png").arg(language, dialog)));
+    QStringList problems = problemsOf(shown.get());
+    shown.reset();
+    TranslationLoader::install(*qApp, TranslationLoader::localeFor(TranslationLoader::Choice::English));
+    for (const QString &p : std::as_const(problems))
+        qWarning("%s", qPrintable(p));
+    QVERIFY2(problems.isEmpty(), qPrintable(problems.value(0)));
 }
 
 QTEST_MAIN(TestWindowFit)
