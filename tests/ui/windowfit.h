@@ -19,6 +19,7 @@
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QRadioButton>
 #include <QtWidgets/QScrollBar>
+#include <QtWidgets/QStatusBar>
 #include <QtWidgets/QStyle>
 #include <QtWidgets/QToolButton>
 #include <QtWidgets/QWidget>
@@ -151,6 +152,22 @@ inline QStringList elidedText(QWidget *root)
                             .arg(pathOf(button, root->parent()), shownText(button->text()))
                             .arg(button->width())
                             .arg(needed);
+    }
+    // The status bar's message in the room the permanent widgets leave it.
+    for (QStatusBar *bar : root->findChildren<QStatusBar *>()) {
+        if (!shown(bar, root) || bar->currentMessage().isEmpty())
+            continue;
+        int room = bar->width() - 12; // the size grip's and the frame's margins
+        for (QWidget *permanent : bar->findChildren<QWidget *>(Qt::FindDirectChildrenOnly)) {
+            if (permanent->isVisible() && !permanent->inherits("QSizeGrip"))
+                room -= permanent->width() + 4;
+        }
+        const int needed = bar->fontMetrics().horizontalAdvance(bar->currentMessage());
+        if (needed > room)
+            problems << QStringLiteral("%1: status message \"%2\" needs %3 px, has %4")
+                            .arg(pathOf(bar, root->parent()), bar->currentMessage())
+                            .arg(needed)
+                            .arg(room);
     }
     // A label on one line narrower than its text is cut (the status bar's link state, a form's label).
     for (QLabel *label : root->findChildren<QLabel *>()) {
