@@ -70,7 +70,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../app/gui.cpp" line="+270"/>
+        <location filename="../../app/gui.cpp" line="+327"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
@@ -629,7 +629,7 @@
 <context>
     <name>mbscope::CsvExportAction</name>
     <message>
-        <location filename="../../ui/common/csvexportaction.cpp" line="+11"/>
+        <location filename="../../ui/common/csvexportaction.cpp" line="+13"/>
         <source>Export table as &amp;CSV…</source>
         <translation>Ekspor tabel sebagai &amp;CSV…</translation>
     </message>
@@ -649,7 +649,7 @@
         <translation>Berkas CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Table saved to %1</source>
         <translation>Tabel disimpan ke %1</translation>
     </message>
@@ -859,7 +859,7 @@
         <translation>setelah %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>latency %1 to the answer&apos;s last byte</source>
         <translation>latensi %1 sampai byte terakhir jawaban</translation>
     </message>
@@ -1020,7 +1020,7 @@
         <location filename="../../core/protocol/adurtu.cpp" line="+37"/>
         <location line="+7"/>
         <location line="+39"/>
-        <location filename="../../core/protocol/pduchecks.cpp" line="+12"/>
+        <location filename="../../core/protocol/pduchecks.cpp" line="+13"/>
         <source>Missing bytes</source>
         <translation>Byte yang hilang</translation>
     </message>
@@ -1480,7 +1480,7 @@
     </message>
     <message>
         <location line="+68"/>
-        <location filename="../../core/protocol/pdumultiplewrite.cpp" line="+17"/>
+        <location filename="../../core/protocol/pdumultiplewrite.cpp" line="+18"/>
         <location line="+6"/>
         <source>Start address</source>
         <translation>Alamat awal</translation>
@@ -1497,9 +1497,9 @@
         <location filename="../../core/protocol/pducommevents.cpp" line="+161"/>
         <location filename="../../core/protocol/pdufilerecord.cpp" line="+84"/>
         <location line="+67"/>
-        <location filename="../../core/protocol/pdumaskfifo.cpp" line="+61"/>
+        <location filename="../../core/protocol/pdumaskfifo.cpp" line="+62"/>
         <location filename="../../core/protocol/pdumultiplewrite.cpp" line="+24"/>
-        <location filename="../../core/protocol/pdureadbits.cpp" line="+23"/>
+        <location filename="../../core/protocol/pdureadbits.cpp" line="+24"/>
         <location filename="../../core/protocol/pdureportserverid.cpp" line="+25"/>
         <source>Byte count</source>
         <translation>Jumlah byte</translation>
@@ -2033,7 +2033,7 @@
         <translation>Indeks input</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/pdureadwrite.cpp" line="+17"/>
+        <location filename="../../core/protocol/pdureadwrite.cpp" line="+18"/>
         <source>Read start address</source>
         <translation>Alamat awal baca</translation>
     </message>
@@ -3080,7 +3080,7 @@
         <translation>Link gagal</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>TX %1 B  RX %2 B  ·  %3</source>
         <translation>TX %1 B  RX %2 B  ·  %3</translation>
     </message>
@@ -3138,7 +3138,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+93"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+94"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -3158,7 +3158,7 @@
         <translation>Pantauan</translation>
     </message>
     <message>
-        <location line="+141"/>
+        <location line="+136"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
@@ -3178,7 +3178,7 @@
         <translation>Simulator</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>The connection bar names no target: %1</source>
         <translation>Bilah koneksi tidak menyebut target: %1</translation>
     </message>
@@ -3218,7 +3218,7 @@
         <translation>Terkirim: %1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Not connected: press Connect to use %1 again</source>
         <translation>Tidak tersambung: tekan Sambungkan untuk memakai %1 lagi</translation>
     </message>
@@ -3387,7 +3387,7 @@
 <context>
     <name>mbscope::MapScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/mapscandialog.cpp" line="+36"/>
+        <location filename="../../ui/discovery/mapscandialog.cpp" line="+38"/>
         <source>&amp;Optional functions (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)</source>
         <translation>Fungsi &amp;opsional (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)</translation>
     </message>
@@ -3595,7 +3595,7 @@
         <translation>Simpan draf profil</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Device profiles (*.json)</source>
         <translation>Profil perangkat (*.json)</translation>
     </message>
@@ -3669,17 +3669,17 @@
 <context>
     <name>mbscope::PlanPanel</name>
     <message>
-        <location filename="../../ui/session/planpanel.cpp" line="+22"/>
+        <location filename="../../ui/session/planpanel.cpp" line="+24"/>
         <source>Export the results as JUnit XML</source>
         <translation>Ekspor hasil sebagai JUnit XML</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>JUnit XML (*.xml);;All files (*)</source>
         <translation>JUnit XML (*.xml);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Run plan</source>
         <translation>Jalankan rencana</translation>
     </message>
@@ -3739,7 +3739,7 @@
 <context>
     <name>mbscope::PlanResultModel</name>
     <message>
-        <location filename="../../ui/session/planresultmodel.cpp" line="+37"/>
+        <location filename="../../ui/session/planresultmodel.cpp" line="+39"/>
         <source>PASS</source>
         <translation>LULUS</translation>
     </message>
@@ -3840,7 +3840,7 @@
 <context>
     <name>mbscope::PlotExportMenu</name>
     <message>
-        <location filename="../../ui/common/plotexportmenu.cpp" line="+18"/>
+        <location filename="../../ui/common/plotexportmenu.cpp" line="+20"/>
         <source>&amp;Save plot as…</source>
         <translation>&amp;Simpan plot sebagai…</translation>
     </message>
@@ -3865,7 +3865,7 @@
         <translation>Simpan plot</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Plot saved to %1</source>
         <translation>Plot disimpan ke %1</translation>
     </message>
@@ -4225,7 +4225,27 @@
 <context>
     <name>mbscope::RecordingControl</name>
     <message>
-        <location filename="../../ui/session/recordingcontrol.cpp" line="+48"/>
+        <location filename="../../ui/session/recordingcontrol.cpp" line="+26"/>
+        <source>it ends cleanly, at byte %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>it stops after the last complete batch, at byte %1; what was not written yet is not in it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the last batch was cut short at byte %1 and is left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the batch at byte %1 is damaged: it and all after it are left out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+41"/>
         <source>Not recording: %1</source>
         <translation>Tidak merekam: %1</translation>
     </message>
@@ -4275,7 +4295,7 @@
 <context>
     <name>mbscope::RegisterTable</name>
     <message>
-        <location filename="../../ui/registers/registertable.cpp" line="+38"/>
+        <location filename="../../ui/registers/registertable.cpp" line="+40"/>
         <source>AB (high byte first)</source>
         <translation>AB (byte atas dulu)</translation>
     </message>
@@ -4904,7 +4924,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ReplayDifferencesModel</name>
     <message>
-        <location filename="../../ui/session/replaydifferencesmodel.cpp" line="+79"/>
+        <location filename="../../ui/session/replaydifferencesmodel.cpp" line="+81"/>
         <source>the same</source>
         <translation>sama</translation>
     </message>
@@ -4998,7 +5018,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ReplayPanel</name>
     <message>
-        <location filename="../../ui/session/replaypanel.cpp" line="+29"/>
+        <location filename="../../ui/session/replaypanel.cpp" line="+31"/>
         <source>Open a capture or a session</source>
         <translation>Buka capture atau sesi</translation>
     </message>
@@ -5008,7 +5028,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Capture dan sesi (*.pcap *.pcapng *.cap *.json *.journal);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>Replaying the recorded requests to the target (%1 in all)…</source>
         <translation>Memutar ulang permintaan terekam ke target (%1 seluruhnya)…</translation>
     </message>
@@ -5873,7 +5893,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ScanResultModel</name>
     <message>
-        <location filename="../../ui/discovery/scanresultmodel.cpp" line="+34"/>
+        <location filename="../../ui/discovery/scanresultmodel.cpp" line="+36"/>
         <source>answers</source>
         <translation>menjawab</translation>
     </message>
@@ -5956,7 +5976,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SessionController</name>
     <message>
-        <location filename="../../ui/session/sessioncontroller.cpp" line="+38"/>
+        <location filename="../../ui/session/sessioncontroller.cpp" line="+40"/>
         <source>Unsaved changes</source>
         <translation>Perubahan belum disimpan</translation>
     </message>
@@ -5966,7 +5986,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Sesi %1 punya perubahan yang belum disimpan.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
@@ -5976,22 +5996,22 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 tidak dibuka; tidak ada yang diubah.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>mbscope sessions (*.mbscope.json *.json);;All files (*)</source>
         <translation>Sesi mbscope (*.mbscope.json *.json);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Save session</source>
         <translation>Simpan sesi</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Open session</source>
         <translation>Buka sesi</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>&amp;New session</source>
         <translation>Sesi ba&amp;ru</translation>
     </message>
@@ -6102,7 +6122,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimFaultForm</name>
     <message>
-        <location filename="../../ui/sim/simfaultform.cpp" line="+38"/>
+        <location filename="../../ui/sim/simfaultform.cpp" line="+40"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
@@ -6178,23 +6198,23 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+377"/>
+        <location line="+378"/>
         <source>any unit</source>
         <translation>unit apa pun</translation>
     </message>
     <message>
-        <location line="-376"/>
+        <location line="-377"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+370"/>
+        <location line="+371"/>
         <source>any function</source>
         <translation>fungsi apa pun</translation>
     </message>
     <message>
-        <location line="-369"/>
+        <location line="-370"/>
         <source>Function &amp;code:</source>
         <translation>&amp;Kode fungsi:</translation>
     </message>
@@ -6463,7 +6483,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Aturan gangguan (*.json);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>(none: every answer is correct)</source>
         <translation>(tidak ada: setiap jawaban benar)</translation>
     </message>
@@ -6631,7 +6651,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimRegisterModel</name>
     <message>
-        <location filename="../../ui/sim/simregistermodel.cpp" line="+100"/>
+        <location filename="../../ui/sim/simregistermodel.cpp" line="+102"/>
         <source>coil</source>
         <translation>coil</translation>
     </message>
@@ -6780,7 +6800,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimTrafficModel</name>
     <message>
-        <location filename="../../ui/sim/simtrafficmodel.cpp" line="+108"/>
+        <location filename="../../ui/sim/simtrafficmodel.cpp" line="+110"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -6921,7 +6941,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimulatorPanel</name>
     <message>
-        <location filename="../../ui/sim/simulatorpanel.cpp" line="+46"/>
+        <location filename="../../ui/sim/simulatorpanel.cpp" line="+48"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
@@ -7070,7 +7090,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Profil perangkat (*.json);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Choose a profile first: a built-in one from the list, or a profile file.</source>
         <translation>Pilih profil dulu: profil bawaan dari daftar, atau berkas profil.</translation>
     </message>
@@ -7469,7 +7489,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TimingResultTree</name>
     <message>
-        <location filename="../../ui/discovery/timingresulttree.cpp" line="+11"/>
+        <location filename="../../ui/discovery/timingresulttree.cpp" line="+13"/>
         <location line="+47"/>
         <location line="+8"/>
         <location line="+16"/>
@@ -7777,7 +7797,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TlsFilesField</name>
     <message>
-        <location filename="../../ui/link/tlsfilesfield.cpp" line="+17"/>
+        <location filename="../../ui/link/tlsfilesfield.cpp" line="+19"/>
         <source>C&amp;ertificate:</source>
         <translation>S&amp;ertifikat:</translation>
     </message>
@@ -7832,7 +7852,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Berkas PEM (*.pem *.crt *.cer *.key);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>The %1 file &apos;%2&apos; does not exist: choose it with the … button beside the field.</source>
         <translation>Berkas %1 &apos;%2&apos; tidak ada: pilih dengan tombol … di samping kolomnya.</translation>
     </message>
@@ -8026,7 +8046,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficMonitor</name>
     <message>
-        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+71"/>
+        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+73"/>
         <location line="+5"/>
         <location line="+15"/>
         <source>any</source>
@@ -8054,12 +8074,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+219"/>
+        <location line="+220"/>
         <source>Pause</source>
         <translation>Jeda</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-218"/>
         <source>Hold new frames back from the list; nothing is dropped, they appear on resume</source>
         <translation>Tahan frame baru dari daftar; tidak ada yang dibuang, frame muncul saat dilanjutkan</translation>
     </message>
@@ -8130,12 +8150,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>Save Traffic</source>
         <translation>Simpan Lalu Lintas</translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-45"/>
         <source>The filter shows %1 of the %2 frames listed. Save which?</source>
         <translation>Filter menampilkan %1 dari %2 frame yang terdaftar. Simpan yang mana?</translation>
     </message>
@@ -8155,7 +8175,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Simpan Lalu Lintas Sebagai</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+87"/>
         <source>Resume</source>
         <translation>Lanjutkan</translation>
     </message>
@@ -8742,7 +8762,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchProfileDialog</name>
     <message>
-        <location filename="../../ui/watch/watchprofiledialog.cpp" line="+25"/>
+        <location filename="../../ui/watch/watchprofiledialog.cpp" line="+28"/>
         <source>Watches from a device profile</source>
         <translation>Pantauan dari profil perangkat</translation>
     </message>
@@ -8767,17 +8787,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Profil (*.json)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Profile:</source>
         <translation>&amp;Profil:</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>

@@ -93,11 +93,9 @@ private Q_SLOTS:
     void smallScreens_data();
     void smallScreens();
     void resavedExampleIsWhatWasLoaded();
-    void secondStartHandsOverItsSession_data();
     void fileDialogsOpenWhereTheUserWas_data();
     void fileDialogsOpenWhereTheUserWas();
     void openSessionDialogStartsInTheLastFolder();
-    void secondStartHandsOverItsSession();
 };
 
 void TestDailyUse::initTestCase()
