@@ -4227,22 +4227,22 @@
     <message>
         <location filename="../../ui/session/recordingcontrol.cpp" line="+26"/>
         <source>it ends cleanly, at byte %1</source>
-        <translation type="unfinished"></translation>
+        <translation>berakhir dengan rapi di byte %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>it stops after the last complete batch, at byte %1; what was not written yet is not in it</source>
-        <translation type="unfinished"></translation>
+        <translation>berhenti setelah batch lengkap terakhir, di byte %1; yang belum sempat ditulis tidak ada di dalamnya</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>the last batch was cut short at byte %1 and is left out</source>
-        <translation type="unfinished"></translation>
+        <translation>batch terakhir terpotong di byte %1 dan tidak disertakan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>the batch at byte %1 is damaged: it and all after it are left out</source>
-        <translation type="unfinished"></translation>
+        <translation>batch di byte %1 rusak: batch itu dan semua sesudahnya tidak disertakan</translation>
     </message>
     <message>
         <location line="+41"/>
