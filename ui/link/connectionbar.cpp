@@ -77,6 +77,9 @@ void ConnectionBar::buildUi()
     m_kindCombo->setObjectName(QStringLiteral("linkKindCombo"));
     for (const KindChoice &choice : kKinds)
         m_kindCombo->addItem(tr(choice.label), int(choice.kind));
+    // As wide as "ASCII over TCP", not as the longest choice: the bar fits 1024 px in both languages.
+    m_kindCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_kindCombo->setMinimumContentsLength(15);
 
     // Network target
     m_hostEdit = new QLineEdit(QStringLiteral("127.0.0.1"), this);

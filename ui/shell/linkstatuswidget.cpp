@@ -40,13 +40,16 @@ void LinkStatusWidget::setState(LinkController::State state, const QString &mess
     case LinkController::State::Connected: word = tr("Connected"); colour = SeverityStyle::goodColor(); break;
     case LinkController::State::Failed: word = tr("Link failed"); colour = SeverityStyle::textColor(Severity::Error); break;
     }
-    // The state word is coloured; the detail (target or the link's words) stays readable text.
-    const QString detail = state == LinkController::State::Disconnected ? QString() : message;
+    // The state word is coloured; the detail (the link's words) stays readable text. Connected,
+    // the target is in the connection bar already: here only in the tooltip, so the status bar
+    // keeps room for its messages at 1024 px (issue 31: a poll's summary was cut).
+    const bool inline_ = state == LinkController::State::Ready || state == LinkController::State::Failed;
+    const QString detail = inline_ ? message : QString();
     m_stateLabel->setText(QStringLiteral("<b%1>\u25CF %2</b>%3")
                               .arg(colour.isValid() ? QStringLiteral(" style=\"color:%1\"").arg(colour.name()) : QString(),
                                    word.toHtmlEscaped(),
                                    detail.isEmpty() ? QString() : QStringLiteral("&nbsp; ") + detail.toHtmlEscaped()));
-    m_stateLabel->setToolTip(detail);
+    m_stateLabel->setToolTip(state == LinkController::State::Disconnected ? QString() : message);
 }
 
 void LinkStatusWidget::setCounters(const EngineCounters &counters)
