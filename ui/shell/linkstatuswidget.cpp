@@ -43,8 +43,8 @@ void LinkStatusWidget::setState(LinkController::State state, const QString &mess
     // The state word is coloured; the detail (the link's words) stays readable text. Connected,
     // the target is in the connection bar already: here only in the tooltip, so the status bar
     // keeps room for its messages at 1024 px (issue 31: a poll's summary was cut).
-    const bool inline_ = state == LinkController::State::Ready || state == LinkController::State::Failed;
-    const QString detail = inline_ ? message : QString();
+    const bool withDetail = state == LinkController::State::Ready || state == LinkController::State::Failed;
+    const QString detail = withDetail ? message : QString();
     m_stateLabel->setText(QStringLiteral("<b%1>\u25CF %2</b>%3")
                               .arg(colour.isValid() ? QStringLiteral(" style=\"color:%1\"").arg(colour.name()) : QString(),
                                    word.toHtmlEscaped(),
