@@ -719,23 +719,23 @@
     </message>
     <message>
         <location line="+3"/>
-        <source>&amp;Frame:</source>
-        <translation>&amp;Frame:</translation>
+        <source>Frame:</source>
+        <translation>Frame:</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Fr&amp;aming:</source>
-        <translation>Fr&amp;aming:</translation>
+        <source>Framin&amp;g:</source>
+        <translation>Framin&amp;g:</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>&amp;Direction:</source>
-        <translation>&amp;Arah:</translation>
+        <source>Direction:</source>
+        <translation>Arah:</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Matching &amp;request:</source>
-        <translation>&amp;Permintaan yang cocok:</translation>
+        <source>Matching re&amp;quest:</source>
+        <translation>Permintaan yang &amp;cocok:</translation>
     </message>
     <message>
         <location line="+113"/>
@@ -3991,7 +3991,7 @@
     <message>
         <location line="+22"/>
         <source>New journal &amp;part every (MiB):</source>
-        <translation>&amp;Bagian jurnal baru setiap (MiB):</translation>
+        <translation>Bagian jurnal bar&amp;u setiap (MiB):</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -8804,7 +8804,7 @@ Klik kanan untuk mengganti format</translation>
     <message>
         <location line="+1"/>
         <source>&amp;Target:</source>
-        <translation>&amp;Target:</translation>
+        <translation>Tu&amp;juan:</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -9147,12 +9147,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Move watch &amp;left</source>
+        <source>Move watch le&amp;ft</source>
         <translation>Geser pantauan ke &amp;kiri</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Move watch ri&amp;ght</source>
+        <source>Move watch r&amp;ight</source>
         <translation>Geser pantauan ke ka&amp;nan</translation>
     </message>
     <message>

@@ -83,13 +83,16 @@ void DecodePanel::buildUi()
     m_requestEdit->setToolTip(tr("With the matching request, a response's byte count, echoed values and "
                                  "transaction id are checked against what was asked"));
 
-    auto *frameLabel = new QLabel(tr("&Frame:"), this);
+    // Frame and Direction have no accelerator: every letter of them is the window's already
+    // (File, Request, Answer, Timeout, Saved; Decode, Listen, Connect, Tools, Host, Send): Tab
+    // reaches them.
+    auto *frameLabel = new QLabel(tr("Frame:"), this);
     frameLabel->setBuddy(m_frameEdit);
-    auto *framingLabel = new QLabel(tr("Fr&aming:"), this);
+    auto *framingLabel = new QLabel(tr("Framin&g:"), this);
     framingLabel->setBuddy(m_framingCombo);
-    auto *directionLabel = new QLabel(tr("&Direction:"), this);
+    auto *directionLabel = new QLabel(tr("Direction:"), this);
     directionLabel->setBuddy(m_directionCombo);
-    auto *requestLabel = new QLabel(tr("Matching &request:"), this);
+    auto *requestLabel = new QLabel(tr("Matching re&quest:"), this);
     requestLabel->setBuddy(m_requestEdit);
 
     // The window fits 1024 px: the combos give way rather than widen the Decode tab.
