@@ -74,9 +74,11 @@ inline bool hasMnemonicMark(const QString &text)
     return single.match(QString(text).remove(QStringLiteral("&&"))).hasMatch();
 }
 
+// Shown on the screen: visible, and not behind another dock of its tab group (Qt keeps those
+// "visible" but moves them out of the window).
 inline bool shown(const QWidget *w, const QWidget *root)
 {
-    return w->isVisibleTo(root) && w->isVisible();
+    return w->isVisibleTo(root) && w->isVisible() && !w->visibleRegion().isEmpty();
 }
 
 // Children placed (partly) outside their parent's rectangle: cut off, unreachable. The contents of
@@ -90,7 +92,7 @@ inline QStringList outsideParent(QWidget *root)
             continue;
         if (auto *area = qobject_cast<QAbstractScrollArea *>(parent->parentWidget()); area && area->viewport() == parent)
             continue;
-        if (w->geometry().isEmpty())
+        if (w->geometry().isEmpty() || !shown(parent, root))
             continue;
         if (!parent->rect().contains(w->geometry()))
             problems << QStringLiteral("%1 at (%2,%3 %4x%5) lies outside its parent (%6x%7)")
@@ -142,11 +144,12 @@ inline QStringList elidedText(QWidget *root)
         if (qobject_cast<QCheckBox *>(button) || qobject_cast<QRadioButton *>(button)
             || qobject_cast<QToolButton *>(button))
             needed = button->sizeHint().width(); // their hint is exactly indicator or icon plus text
-        else
+        else // a push button draws its text inside its frame: cut when the frame leaves it less room
             needed = textWidth(button->fontMetrics(), shownText(button->text()))
                 + (button->icon().isNull() ? 0 : button->iconSize().width() + 4)
-                + 2 * button->style()->pixelMetric(QStyle::PM_ButtonMargin, nullptr, button)
-                + (qobject_cast<QPushButton *>(button) && qobject_cast<QPushButton *>(button)->menu() ? 12 : 0);
+                + 2 * button->style()->pixelMetric(QStyle::PM_DefaultFrameWidth, nullptr, button)
+                + (qobject_cast<QPushButton *>(button) && qobject_cast<QPushButton *>(button)->menu()
+                       ? button->style()->pixelMetric(QStyle::PM_MenuButtonIndicator, nullptr, button) : 0);
         if (button->width() < needed)
             problems << QStringLiteral("%1: button \"%2\" is %3 px, its text needs %4")
                             .arg(pathOf(button, root->parent()), shownText(button->text()))
@@ -239,7 +242,7 @@ inline QStringList lowContrast(QWidget *root)
     };
     for (QAbstractItemView *view : root->findChildren<QAbstractItemView *>()) {
         QAbstractItemModel *model = view->model();
-        if (!shown(view, root) || !model)
+        if (!shown(view, root) || !model || !view->isEnabled())
             continue;
         const QPalette palette = view->palette();
         // The cells the view shows (and their first children in a tree), at most 60 rows.
@@ -266,8 +269,8 @@ inline QStringList lowContrast(QWidget *root)
     static const QRegularExpression colourStyle(QStringLiteral("color:\\s*(#[0-9a-fA-F]{6}|[a-z]+)"));
     const QPalette app = QGuiApplication::palette();
     for (QLabel *label : root->findChildren<QLabel *>()) {
-        if (!shown(label, root) || label->text().isEmpty())
-            continue;
+        if (!shown(label, root) || label->text().isEmpty() || !label->isEnabled())
+            continue; // WCAG leaves out the text of controls that cannot be used
         const QColor back = label->palette().color(label->backgroundRole());
         const QString plain = Qt::mightBeRichText(label->text()) ? QTextDocumentFragment::fromHtml(label->text()).toPlainText()
                                                                  : label->text();
