@@ -2,6 +2,7 @@
 
 #include "common/severitystyle.h"
 
+#include <QtCore/QEvent>
 #include <QtCore/QLocale>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
@@ -30,8 +31,18 @@ LinkStatusWidget::LinkStatusWidget(QWidget *parent)
     setCounters({});
 }
 
+void LinkStatusWidget::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    // Another theme: the state word's colour is written into its text, so the text is made again.
+    if (event->type() == QEvent::ApplicationPaletteChange)
+        setState(m_state, m_message);
+}
+
 void LinkStatusWidget::setState(LinkController::State state, const QString &message)
 {
+    m_state = state;
+    m_message = message;
     QString word;
     QColor colour; // none: the palette's text colour, whatever the theme becomes
     switch (state) {
