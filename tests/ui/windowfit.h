@@ -267,15 +267,15 @@ inline QStringList lowContrast(QWidget *root)
         }
     }
     static const QRegularExpression colourStyle(QStringLiteral("color:\\s*(#[0-9a-fA-F]{6}|[a-z]+)"));
-    const QPalette app = QGuiApplication::palette();
     for (QLabel *label : root->findChildren<QLabel *>()) {
         if (!shown(label, root) || label->text().isEmpty() || !label->isEnabled())
             continue; // WCAG leaves out the text of controls that cannot be used
         const QColor back = label->palette().color(label->backgroundRole());
         const QString plain = Qt::mightBeRichText(label->text()) ? QTextDocumentFragment::fromHtml(label->text()).toPlainText()
                                                                  : label->text();
-        if (label->palette().color(QPalette::WindowText) != app.color(QPalette::WindowText)
-            && label->foregroundRole() == QPalette::WindowText)
+        // Its text on what it is drawn on: a tinted banner's text included (after a change of
+        // theme a tint made for the other one showed light text on pale blue).
+        if (label->foregroundRole() == QPalette::WindowText)
             report(pathOf(label, root->parent()), plain, label->palette().color(QPalette::WindowText), back);
         auto it = colourStyle.globalMatch(label->text());
         while (it.hasNext()) {

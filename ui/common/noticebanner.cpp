@@ -2,11 +2,29 @@
 
 #include "severitystyle.h"
 
+#include <QtCore/QEvent>
+#include <QtGui/QGuiApplication>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QToolButton>
 
 namespace mbscope {
+
+// The information tint of the palette in use: made again when the theme changes, or the light
+// theme's pale blue would stay under the dark theme's light text (issue 31, tst_windowfit).
+void NoticeBanner::applyTint()
+{
+    QPalette p = QGuiApplication::palette();
+    p.setColor(QPalette::Window, SeverityStyle::backgroundColor(Severity::Info));
+    setPalette(p);
+}
+
+void NoticeBanner::changeEvent(QEvent *event)
+{
+    QFrame::changeEvent(event);
+    if (event->type() == QEvent::ApplicationPaletteChange)
+        applyTint();
+}
 
 NoticeBanner::NoticeBanner(QWidget *parent)
     : QFrame(parent)
@@ -15,9 +33,7 @@ NoticeBanner::NoticeBanner(QWidget *parent)
     setObjectName(QStringLiteral("noticeBanner"));
     setFrameShape(QFrame::StyledPanel);
     setAutoFillBackground(true);
-    QPalette p = palette();
-    p.setColor(QPalette::Window, SeverityStyle::backgroundColor(Severity::Info));
-    setPalette(p);
+    applyTint();
     m_label->setObjectName(QStringLiteral("noticeText"));
     m_label->setWordWrap(true);
     m_label->setTextFormat(Qt::RichText);
