@@ -725,7 +725,7 @@
     <message>
         <location line="+2"/>
         <source>Framin&amp;g:</source>
-        <translation>Framin&amp;g:</translation>
+        <translation>Fra&amp;ming:</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -3,7 +3,6 @@
 #include "severitystyle.h"
 
 #include <QtCore/QEvent>
-#include <QtGui/QGuiApplication>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QToolButton>
@@ -14,15 +13,17 @@ namespace mbscope {
 // theme's pale blue would stay under the dark theme's light text (issue 31, tst_windowfit).
 void NoticeBanner::applyTint()
 {
-    QPalette p = QGuiApplication::palette();
-    p.setColor(QPalette::Window, SeverityStyle::backgroundColor(Severity::Info));
-    setPalette(p);
+    QPalette tint; // the window colour only: the text and the rest come from the window's palette
+    tint.setColor(QPalette::Window, SeverityStyle::backgroundColor(Severity::Info));
+    setPalette(tint);
 }
 
 void NoticeBanner::changeEvent(QEvent *event)
 {
     QFrame::changeEvent(event);
-    if (event->type() == QEvent::ApplicationPaletteChange)
+    // (Its own setPalette sends a PaletteChange too: the tint is set only when it differs.)
+    if ((event->type() == QEvent::ApplicationPaletteChange || event->type() == QEvent::PaletteChange)
+        && palette().color(QPalette::Window) != SeverityStyle::backgroundColor(Severity::Info))
         applyTint();
 }
 

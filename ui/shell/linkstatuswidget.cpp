@@ -35,7 +35,7 @@ void LinkStatusWidget::changeEvent(QEvent *event)
 {
     QWidget::changeEvent(event);
     // Another theme: the state word's colour is written into its text, so the text is made again.
-    if (event->type() == QEvent::ApplicationPaletteChange)
+    if (event->type() == QEvent::ApplicationPaletteChange || event->type() == QEvent::PaletteChange)
         setState(m_state, m_message);
 }
 
