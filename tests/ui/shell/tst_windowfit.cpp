@@ -150,11 +150,18 @@ void TestWindowFit::checksFindFaults()
     QWidget window;
     window.resize(400, 300);
     QStringList problems;
+    // Shown and laid out (a view places its header when it is), then checked.
+    auto check = [&window](QStringList (*checker)(QWidget *)) {
+        window.show();
+        if (!QTest::qWaitForWindowExposed(&window))
+            return QStringList{QStringLiteral("the window was not shown")};
+        QCoreApplication::processEvents();
+        return checker(&window);
+    };
     if (fault == QLatin1String("outside")) {
         auto *child = new QWidget(&window);
         child->setGeometry(broken ? QRect(350, 10, 100, 20) : QRect(250, 10, 100, 20));
-        window.show();
-        problems = windowfit::outsideParent(&window);
+        problems = check(windowfit::outsideParent);
     } else if (fault == QLatin1String("header")) {
         auto *model = new QStandardItemModel(1, 2, &window);
         model->setHorizontalHeaderLabels({QStringLiteral("Latency (ms)"), QStringLiteral("Verdict")});
@@ -163,32 +170,27 @@ void TestWindowFit::checksFindFaults()
         view->setGeometry(0, 0, 400, 300);
         view->horizontalHeader()->setStretchLastSection(false);
         view->setColumnWidth(0, broken ? 30 : 150);
-        window.show();
-        problems = windowfit::elidedText(&window);
+        problems = check(windowfit::elidedText);
     } else if (fault == QLatin1String("button")) {
         auto *button = new QPushButton(QStringLiteral("Save traffic as"), &window);
         button->setGeometry(0, 0, broken ? 40 : 200, 30);
-        window.show();
-        problems = windowfit::elidedText(&window);
+        problems = check(windowfit::elidedText);
     } else if (fault == QLatin1String("label")) {
         auto *label = new QLabel(QStringLiteral("<b style=\"color:#1b7f2a\">Connected</b> rtu-tcp://127.0.0.1:4001"), &window);
         label->setGeometry(0, 0, broken ? 60 : 390, 20);
-        window.show();
-        problems = windowfit::elidedText(&window);
+        problems = check(windowfit::elidedText);
     } else if (fault == QLatin1String("ampersand")) {
         auto *label = new QLabel(QStringLiteral("&Profile:"), &window);
         auto *edit = new QLabel(QStringLiteral("x"), &window);
         if (!broken)
             label->setBuddy(edit);
-        window.show();
-        problems = windowfit::literalAmpersands(&window);
+        problems = check(windowfit::literalAmpersands);
     } else if (fault == QLatin1String("contrast")) {
         // The dark "ok" green of the dark theme on the light one's grey, and the light one's.
         auto *label = new QLabel(&window);
         label->setText(QStringLiteral("<b style=\"color:%1\">ok</b>").arg(broken ? QStringLiteral("#81c995") : QStringLiteral("#1b6e2a")));
         label->setGeometry(0, 0, 200, 20);
-        window.show();
-        problems = windowfit::lowContrast(&window);
+        problems = check(windowfit::lowContrast);
     }
     QCOMPARE(problems.isEmpty(), !broken);
 }
