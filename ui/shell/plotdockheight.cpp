@@ -19,7 +19,11 @@ void PlotDockHeight::follow(bool visible)
     if (m_plots->isFloating() || m_window->dockWidgetArea(m_plots) != Qt::BottomDockWidgetArea)
         return;
     if (visible) {
-        const int wanted = m_window->height() * kSharePercent / 100;
+        int wanted = m_window->height() * kSharePercent / 100;
+        // Never below what the central area needs (at 1024x700 the composer's rows overlapped):
+        // the menu bar, the status bar and the dock's title and tabs take about 100 px besides.
+        if (const QWidget *central = m_window->centralWidget())
+            wanted = qMin(wanted, m_window->height() - central->minimumSizeHint().height() - 100);
         if (m_plots->height() >= wanted)
             return;
         m_before = m_plots->height();
