@@ -725,7 +725,7 @@
     <message>
         <location line="+2"/>
         <source>Framin&amp;g:</source>
-        <translation>Fra&amp;ming:</translation>
+        <translation>F&amp;raming:</translation>
     </message>
     <message>
         <location line="+2"/>

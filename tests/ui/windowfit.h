@@ -78,7 +78,10 @@ inline bool hasMnemonicMark(const QString &text)
 // "visible" but moves them out of the window).
 inline bool shown(const QWidget *w, const QWidget *root)
 {
-    return w->isVisibleTo(root) && w->isVisible() && !w->visibleRegion().isEmpty();
+    if (!w->isVisibleTo(root) || !w->isVisible())
+        return false;
+    const QRect inWindow(w->mapTo(w->window(), QPoint(0, 0)), w->size());
+    return inWindow.intersects(w->window()->rect());
 }
 
 // Children placed (partly) outside their parent's rectangle: cut off, unreachable. The contents of

@@ -74,7 +74,7 @@ void RawRequestEditor::buildUi()
     m_savedCombo = new QComboBox(this);
     // Long names do not widen the composer (the window fits 1024 px); the list opens wide enough.
     m_savedCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_savedCombo->setMinimumContentsLength(14); // the window fits 1024 px in Indonesian too
+    m_savedCombo->setMinimumContentsLength(10); // the window fits 1024 px in Indonesian too
     m_savedCombo->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed); // wider when there is room
     m_savedCombo->setObjectName(QStringLiteral("savedRequestsCombo"));
     m_savedCombo->setToolTip(tr("Named requests: choose one to put its bytes in the editor"));
@@ -225,7 +225,8 @@ void RawRequestEditor::changeEvent(QEvent *event)
 {
     QWidget::changeEvent(event);
     // Another theme: the line's colour is taken again from the new palette.
-    if (event->type() == QEvent::ApplicationPaletteChange || event->type() == QEvent::PaletteChange)
+    if ((event->type() == QEvent::ApplicationPaletteChange || event->type() == QEvent::PaletteChange) && m_infoLabel
+        && m_countLabel)
         updateInfo();
 }
 

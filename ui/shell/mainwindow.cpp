@@ -100,6 +100,7 @@ MainWindow::~MainWindow()
     // The engine's link goes first, so the simulator does not log a client vanishing mid-request.
     delete m_controller;
     m_controller = nullptr;
+    delete m_plotHeight; // before the docks go: their hiding must not resize a window being taken apart
     m_simulator->stop();
 }
 
@@ -288,7 +289,7 @@ void MainWindow::buildDocks()
     m_simulatorDock->setWidget(m_simulatorPanel);
     addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
     tabifyDockWidget(m_analysisDock, m_simulatorDock);
-    new PlotDockHeight(this, m_analysisDock); // the plots get half the window while in front
+    m_plotHeight = new PlotDockHeight(this, m_analysisDock); // the plots get half the window in front
     m_trafficDock->raise();
 }
 

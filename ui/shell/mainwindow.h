@@ -20,6 +20,7 @@ class LatencyAnalysis;
 class LinkController;
 class LinkStatusWidget;
 class NoticeBanner;
+class PlotDockHeight;
 class RecordingControl;
 class RegisterTable;
 class RequestComposer;
@@ -138,6 +139,7 @@ private:
     RecordingControl *m_recording = nullptr;
     SimulatorPanel *m_simulatorPanel = nullptr;
     QDockWidget *m_simulatorDock = nullptr;
+    PlotDockHeight *m_plotHeight = nullptr;
     WatchWorkspace *m_workspace = nullptr;
     SimulatorNotice *m_simulatorNotice = nullptr; // the banner about the built-in simulator
     QByteArray m_lastRead; // the read whose answer the register table shows: sent again after a write
