@@ -294,6 +294,8 @@ void TestWindowFit::screens()
             // The plots are worth looking at from the default size up.
             if (screen == QLatin1String("analysis") && size.height() >= 900) {
                 for (QWidget *plot : window.analysisDock()->findChildren<QWidget *>()) {
+                    if (plot->inherits("QCustomPlot") && plot->isVisible())
+                        qInfo("%s: plot %dx%d", qPrintable(name), plot->width(), plot->height());
                     if (plot->inherits("QCustomPlot") && plot->isVisible() && plot->height() < 300)
                         problems << QStringLiteral("%1: the plot %2 is %3 px high (300 wanted)")
                                         .arg(name, windowfit::pathOf(plot, &window)).arg(plot->height());
