@@ -724,8 +724,8 @@
     </message>
     <message>
         <location line="+2"/>
-        <source>Framin&amp;g:</source>
-        <translation>F&amp;raming:</translation>
+        <source>Framing:</source>
+        <translation>Framing:</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -83,12 +83,12 @@ void DecodePanel::buildUi()
     m_requestEdit->setToolTip(tr("With the matching request, a response's byte count, echoed values and "
                                  "transaction id are checked against what was asked"));
 
-    // Frame and Direction have no accelerator: every letter of them is the window's already
-    // (File, Request, Answer, Timeout, Saved; Decode, Listen, Connect, Tools, Host, Send): Tab
-    // reaches them.
+    // Frame, Framing and Direction have no accelerator: every letter of them is the window's
+    // already, in English or in Indonesian (File, Request, Answer, Timeout, Saved, Decode, Listen,
+    // Connect, Tools, Host, Send; Kirim, Simak, Mulai polling...): Tab reaches them.
     auto *frameLabel = new QLabel(tr("Frame:"), this);
     frameLabel->setBuddy(m_frameEdit);
-    auto *framingLabel = new QLabel(tr("Framin&g:"), this);
+    auto *framingLabel = new QLabel(tr("Framing:"), this);
     framingLabel->setBuddy(m_framingCombo);
     auto *directionLabel = new QLabel(tr("Direction:"), this);
     directionLabel->setBuddy(m_directionCombo);
