@@ -1,5 +1,6 @@
 // The window: what `mbscope` runs without a subcommand.
 #include "commands.h"
+#include "instancehandover.h"
 #include "interruptwatcher.h"
 
 #include "link/linkcontroller.h"
@@ -12,6 +13,8 @@
 #include "common/theme.h"
 
 #include <QtCore/QCommandLineParser>
+#include <QtCore/QFileInfo>
+#include <QtCore/QJsonObject>
 #include <QtCore/QRegularExpression>
 #include <QtCore/QTimer>
 #include <QtGui/QPixmap>
@@ -102,6 +105,36 @@ void scheduleScreenshot(QApplication &app, MainWindow &window, const QString &pa
     QTimer::singleShot(0, &window, [&window] { window.composer()->send(); });
 }
 
+// What a second start handed over (InstanceHandover): its session opened (asking about unsaved
+// changes first), its tab and dock shown, the window brought forward; the line the start prints.
+QString takeRequest(MainWindow &window, const QJsonObject &request)
+{
+    if (window.isMinimized())
+        window.showNormal();
+    window.raise();
+    window.activateWindow();
+    QStringList done;
+    const QString session = request.value(QStringLiteral("session")).toString();
+    if (!session.isEmpty()) {
+        if (!window.session()->openWithPrompt(session))
+            return QStringLiteral("error: the running window did not open %1: %2")
+                .arg(session, window.session()->lastProblems().isEmpty() ? QStringLiteral("kept the session it has")
+                                                                         : window.session()->lastProblems().join(QStringLiteral("; ")));
+        done << QStringLiteral("opened %1").arg(session);
+    }
+    const QString tab = request.value(QStringLiteral("tab")).toString();
+    if (!tab.isEmpty() && !window.showTab(tab))
+        return QStringLiteral("error: --tab '%1' names no tab of the main area (it has: answer, decode, watches)").arg(tab);
+    const QString dock = request.value(QStringLiteral("dock")).toString();
+    if (!dock.isEmpty() && !raiseDock(window, dock))
+        return QStringLiteral("error: --dock '%1' names no dock of the window").arg(dock);
+    if (done.isEmpty())
+        done << QStringLiteral("came forward");
+    return QStringLiteral("ok: the running window (pid %1) %2; --new-instance opens another")
+        .arg(QCoreApplication::applicationPid())
+        .arg(done.join(QStringLiteral(", ")));
+}
+
 } // namespace
 
 bool guiWantsOffscreen(int argc, char *argv[])
@@ -177,10 +210,13 @@ int runGui(QApplication &app)
     const QCommandLineOption startWatchesOption(QStringLiteral("start-watches"),
                                                 QStringLiteral("Start the session's watches at start (Workspace > Start all); "
                                                                "with --screenshot, render a few seconds later."));
+    const QCommandLineOption newInstanceOption(QStringLiteral("new-instance"),
+                                               QStringLiteral("Open a window of its own even when one is running (without it, "
+                                                              "--session, --tab and --dock go to the running window)."));
     parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption, beforeSendOption, dockOption, pollOption,
-                       langOption, themeOption, tabOption, startWatchesOption});
+                       langOption, themeOption, tabOption, startWatchesOption, newInstanceOption});
     if (!parser.parse(QCoreApplication::arguments())) {
-        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT] [--dock NAME] [--lang CODE] [--theme NAME] [--tab NAME] [--start-watches]\n",
+        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT] [--dock NAME] [--lang CODE] [--theme NAME] [--tab NAME] [--start-watches] [--new-instance]\n",
                      qPrintable(parser.errorText()));
         return ExitUsage;
     }
@@ -250,16 +286,37 @@ int runGui(QApplication &app)
         app.exit(ExitOk);
     });
 
-    MainWindow window;
-    // A screenshot or an asked size is reproducible: the layout the last close saved is not used.
-    if (!screenshot.isEmpty() || parser.isSet(sizeOption) || !window.restoreLayout())
-        window.resize(size);
-    bool simulated = false;
     const QString sessionPath = parser.isSet(sessionOption) ? parser.value(sessionOption) : g_sessionArgument;
     if (g_sessionArgumentMissing || (parser.isSet(sessionOption) && sessionPath.isEmpty())) {
         std::fprintf(stderr, "mbscope: --session needs a FILE (a *.mbscope.json session)\n");
         return ExitUsage;
     }
+    // A window already running on the same data (journal, layout, ports) takes this start's
+    // session, tab and dock; a screenshot is a run of its own.
+    InstanceHandover handover;
+    const bool ownWindow = parser.isSet(newInstanceOption) || !screenshot.isEmpty();
+    if (!ownWindow) {
+        QJsonObject request;
+        if (!sessionPath.isEmpty())
+            request.insert(QStringLiteral("session"), QFileInfo(sessionPath).absoluteFilePath());
+        if (parser.isSet(tabOption))
+            request.insert(QStringLiteral("tab"), parser.value(tabOption));
+        if (parser.isSet(dockOption))
+            request.insert(QStringLiteral("dock"), parser.value(dockOption));
+        QString answer;
+        if (InstanceHandover::handOver(request, &answer)) {
+            std::fprintf(stderr, "mbscope: %s\n", qPrintable(answer));
+            return answer.startsWith(QLatin1String("ok")) ? ExitOk : ExitFailure;
+        }
+    }
+
+    MainWindow window;
+    if (!ownWindow && !handover.listen([&window](const QJsonObject &request) { return takeRequest(window, request); }))
+        std::fprintf(stderr, "mbscope: later starts open windows of their own (%s)\n", qPrintable(handover.errorString()));
+    // A screenshot or an asked size is reproducible: the layout the last close saved is not used.
+    if (!screenshot.isEmpty() || parser.isSet(sizeOption) || !window.restoreLayout())
+        window.resize(size);
+    bool simulated = false;
     if (!sessionPath.isEmpty()) {
         // Said on standard error too: a screenshot run has nobody to read a dialog.
         window.session()->setProblemReport([&screenshot, &window](const QString &path, const QStringList &problems) {

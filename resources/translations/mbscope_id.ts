@@ -70,7 +70,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../app/gui.cpp" line="+270"/>
+        <location filename="../../app/gui.cpp" line="+327"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
@@ -867,7 +867,7 @@
 <context>
     <name>mbscope::CsvExportAction</name>
     <message>
-        <location filename="../../ui/common/csvexportaction.cpp" line="+11"/>
+        <location filename="../../ui/common/csvexportaction.cpp" line="+13"/>
         <source>Export table as &amp;CSV…</source>
         <translation>Ekspor tabel sebagai &amp;CSV…</translation>
     </message>
@@ -887,7 +887,7 @@
         <translation>Berkas CSV (*.csv)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Table saved to %1</source>
         <translation>Tabel disimpan ke %1</translation>
     </message>
@@ -957,23 +957,23 @@
     </message>
     <message>
         <location line="+3"/>
-        <source>&amp;Frame:</source>
-        <translation>&amp;Frame:</translation>
+        <source>Frame:</source>
+        <translation>Frame:</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Fr&amp;aming:</source>
-        <translation>Fr&amp;aming:</translation>
+        <source>Framing:</source>
+        <translation>Framing:</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>&amp;Direction:</source>
-        <translation>&amp;Arah:</translation>
+        <source>Direction:</source>
+        <translation>Arah:</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>Matching &amp;request:</source>
-        <translation>&amp;Permintaan yang cocok:</translation>
+        <source>Matching re&amp;quest:</source>
+        <translation>Permintaan yang &amp;cocok:</translation>
     </message>
     <message>
         <location line="+113"/>
@@ -1097,7 +1097,7 @@
         <translation>setelah %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>latency %1 to the answer&apos;s last byte</source>
         <translation>latensi %1 sampai byte terakhir jawaban</translation>
     </message>
@@ -2528,7 +2528,7 @@
     <message>
         <location line="+1"/>
         <source>Field</source>
-        <translation>Field</translation>
+        <translation>Bidang</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -3318,7 +3318,7 @@
         <translation>Link gagal</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>TX %1 B  RX %2 B  ·  %3</source>
         <translation>TX %1 B  RX %2 B  ·  %3</translation>
     </message>
@@ -3376,7 +3376,7 @@
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+93"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+94"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -3396,7 +3396,7 @@
         <translation>Pantauan</translation>
     </message>
     <message>
-        <location line="+141"/>
+        <location line="+136"/>
         <source>Traffic</source>
         <translation>Lalu lintas</translation>
     </message>
@@ -3416,7 +3416,7 @@
         <translation>Simulator</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>The connection bar names no target: %1</source>
         <translation>Bilah koneksi tidak menyebut target: %1</translation>
     </message>
@@ -3456,7 +3456,7 @@
         <translation>Terkirim: %1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>Not connected: press Connect to use %1 again</source>
         <translation>Tidak tersambung: tekan Sambungkan untuk memakai %1 lagi</translation>
     </message>
@@ -3625,7 +3625,7 @@
 <context>
     <name>mbscope::MapScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/mapscandialog.cpp" line="+36"/>
+        <location filename="../../ui/discovery/mapscandialog.cpp" line="+38"/>
         <source>&amp;Optional functions (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)</source>
         <translation>Fungsi &amp;opsional (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)</translation>
     </message>
@@ -3833,7 +3833,7 @@
         <translation>Simpan draf profil</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Device profiles (*.json)</source>
         <translation>Profil perangkat (*.json)</translation>
     </message>
@@ -3907,17 +3907,17 @@
 <context>
     <name>mbscope::PlanPanel</name>
     <message>
-        <location filename="../../ui/session/planpanel.cpp" line="+22"/>
+        <location filename="../../ui/session/planpanel.cpp" line="+24"/>
         <source>Export the results as JUnit XML</source>
         <translation>Ekspor hasil sebagai JUnit XML</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>JUnit XML (*.xml);;All files (*)</source>
         <translation>JUnit XML (*.xml);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Run plan</source>
         <translation>Jalankan rencana</translation>
     </message>
@@ -3977,7 +3977,7 @@
 <context>
     <name>mbscope::PlanResultModel</name>
     <message>
-        <location filename="../../ui/session/planresultmodel.cpp" line="+37"/>
+        <location filename="../../ui/session/planresultmodel.cpp" line="+39"/>
         <source>PASS</source>
         <translation>LULUS</translation>
     </message>
@@ -4078,7 +4078,7 @@
 <context>
     <name>mbscope::PlotExportMenu</name>
     <message>
-        <location filename="../../ui/common/plotexportmenu.cpp" line="+18"/>
+        <location filename="../../ui/common/plotexportmenu.cpp" line="+20"/>
         <source>&amp;Save plot as…</source>
         <translation>&amp;Simpan plot sebagai…</translation>
     </message>
@@ -4103,7 +4103,7 @@
         <translation>Simpan plot</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Plot saved to %1</source>
         <translation>Plot disimpan ke %1</translation>
     </message>
@@ -4229,7 +4229,7 @@
     <message>
         <location line="+22"/>
         <source>New journal &amp;part every (MiB):</source>
-        <translation>&amp;Bagian jurnal baru setiap (MiB):</translation>
+        <translation>Bagian jurnal bar&amp;u setiap (MiB):</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4463,7 +4463,27 @@
 <context>
     <name>mbscope::RecordingControl</name>
     <message>
-        <location filename="../../ui/session/recordingcontrol.cpp" line="+48"/>
+        <location filename="../../ui/session/recordingcontrol.cpp" line="+26"/>
+        <source>it ends cleanly, at byte %1</source>
+        <translation>berakhir dengan rapi di byte %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>it stops after the last complete batch, at byte %1; what was not written yet is not in it</source>
+        <translation>berhenti setelah batch lengkap terakhir, di byte %1; yang belum sempat ditulis tidak ada di dalamnya</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the last batch was cut short at byte %1 and is left out</source>
+        <translation>batch terakhir terpotong di byte %1 dan tidak disertakan</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the batch at byte %1 is damaged: it and all after it are left out</source>
+        <translation>batch di byte %1 rusak: batch itu dan semua sesudahnya tidak disertakan</translation>
+    </message>
+    <message>
+        <location line="+41"/>
         <source>Not recording: %1</source>
         <translation>Tidak merekam: %1</translation>
     </message>
@@ -4513,7 +4533,7 @@
 <context>
     <name>mbscope::RegisterTable</name>
     <message>
-        <location filename="../../ui/registers/registertable.cpp" line="+38"/>
+        <location filename="../../ui/registers/registertable.cpp" line="+40"/>
         <source>AB (high byte first)</source>
         <translation>AB (byte atas dulu)</translation>
     </message>
@@ -5142,7 +5162,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ReplayDifferencesModel</name>
     <message>
-        <location filename="../../ui/session/replaydifferencesmodel.cpp" line="+79"/>
+        <location filename="../../ui/session/replaydifferencesmodel.cpp" line="+81"/>
         <source>the same</source>
         <translation>sama</translation>
     </message>
@@ -5236,7 +5256,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ReplayPanel</name>
     <message>
-        <location filename="../../ui/session/replaypanel.cpp" line="+29"/>
+        <location filename="../../ui/session/replaypanel.cpp" line="+31"/>
         <source>Open a capture or a session</source>
         <translation>Buka capture atau sesi</translation>
     </message>
@@ -5246,7 +5266,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Capture dan sesi (*.pcap *.pcapng *.cap *.json *.journal);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>Replaying the recorded requests to the target (%1 in all)…</source>
         <translation>Memutar ulang permintaan terekam ke target (%1 seluruhnya)…</translation>
     </message>
@@ -6111,7 +6131,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ScanResultModel</name>
     <message>
-        <location filename="../../ui/discovery/scanresultmodel.cpp" line="+34"/>
+        <location filename="../../ui/discovery/scanresultmodel.cpp" line="+36"/>
         <source>answers</source>
         <translation>menjawab</translation>
     </message>
@@ -6194,7 +6214,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SessionController</name>
     <message>
-        <location filename="../../ui/session/sessioncontroller.cpp" line="+39"/>
+        <location filename="../../ui/session/sessioncontroller.cpp" line="+40"/>
         <source>Unsaved changes</source>
         <translation>Perubahan belum disimpan</translation>
     </message>
@@ -6204,7 +6224,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Sesi %1 punya perubahan yang belum disimpan.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
@@ -6214,22 +6234,22 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 tidak dibuka; tidak ada yang diubah.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>mbscope sessions (*.mbscope.json *.json);;All files (*)</source>
         <translation>Sesi mbscope (*.mbscope.json *.json);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Save session</source>
         <translation>Simpan sesi</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Open session</source>
         <translation>Buka sesi</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+16"/>
         <source>&amp;New session</source>
         <translation>Sesi ba&amp;ru</translation>
     </message>
@@ -6340,7 +6360,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimFaultForm</name>
     <message>
-        <location filename="../../ui/sim/simfaultform.cpp" line="+38"/>
+        <location filename="../../ui/sim/simfaultform.cpp" line="+40"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
@@ -6416,23 +6436,23 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+377"/>
+        <location line="+378"/>
         <source>any unit</source>
         <translation>unit apa pun</translation>
     </message>
     <message>
-        <location line="-376"/>
+        <location line="-377"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+370"/>
+        <location line="+371"/>
         <source>any function</source>
         <translation>fungsi apa pun</translation>
     </message>
     <message>
-        <location line="-369"/>
+        <location line="-370"/>
         <source>Function &amp;code:</source>
         <translation>&amp;Kode fungsi:</translation>
     </message>
@@ -6701,7 +6721,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Aturan gangguan (*.json);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>(none: every answer is correct)</source>
         <translation>(tidak ada: setiap jawaban benar)</translation>
     </message>
@@ -6869,7 +6889,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimRegisterModel</name>
     <message>
-        <location filename="../../ui/sim/simregistermodel.cpp" line="+100"/>
+        <location filename="../../ui/sim/simregistermodel.cpp" line="+102"/>
         <source>coil</source>
         <translation>coil</translation>
     </message>
@@ -7018,7 +7038,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimTrafficModel</name>
     <message>
-        <location filename="../../ui/sim/simtrafficmodel.cpp" line="+108"/>
+        <location filename="../../ui/sim/simtrafficmodel.cpp" line="+110"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -7159,7 +7179,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimulatorPanel</name>
     <message>
-        <location filename="../../ui/sim/simulatorpanel.cpp" line="+46"/>
+        <location filename="../../ui/sim/simulatorpanel.cpp" line="+48"/>
         <source>Modbus TCP</source>
         <translation>Modbus TCP</translation>
     </message>
@@ -7308,7 +7328,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Profil perangkat (*.json);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>Choose a profile first: a built-in one from the list, or a profile file.</source>
         <translation>Pilih profil dulu: profil bawaan dari daftar, atau berkas profil.</translation>
     </message>
@@ -7727,7 +7747,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TimingResultTree</name>
     <message>
-        <location filename="../../ui/discovery/timingresulttree.cpp" line="+11"/>
+        <location filename="../../ui/discovery/timingresulttree.cpp" line="+13"/>
         <location line="+47"/>
         <location line="+8"/>
         <location line="+16"/>
@@ -8035,7 +8055,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TlsFilesField</name>
     <message>
-        <location filename="../../ui/link/tlsfilesfield.cpp" line="+17"/>
+        <location filename="../../ui/link/tlsfilesfield.cpp" line="+19"/>
         <source>C&amp;ertificate:</source>
         <translation>S&amp;ertifikat:</translation>
     </message>
@@ -8090,7 +8110,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Berkas PEM (*.pem *.crt *.cer *.key);;Semua berkas (*)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>The %1 file &apos;%2&apos; does not exist: choose it with the … button beside the field.</source>
         <translation>Berkas %1 &apos;%2&apos; tidak ada: pilih dengan tombol … di samping kolomnya.</translation>
     </message>
@@ -8294,7 +8314,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficMonitor</name>
     <message>
-        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+71"/>
+        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+73"/>
         <location line="+5"/>
         <location line="+15"/>
         <source>any</source>
@@ -8322,12 +8342,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+6"/>
-        <location line="+219"/>
+        <location line="+220"/>
         <source>Pause</source>
         <translation>Jeda</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-218"/>
         <source>Hold new frames back from the list; nothing is dropped, they appear on resume</source>
         <translation>Tahan frame baru dari daftar; tidak ada yang dibuang, frame muncul saat dilanjutkan</translation>
     </message>
@@ -8398,12 +8418,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>Save Traffic</source>
         <translation>Simpan Lalu Lintas</translation>
     </message>
     <message>
-        <location line="-44"/>
+        <location line="-45"/>
         <source>The filter shows %1 of the %2 frames listed. Save which?</source>
         <translation>Filter menampilkan %1 dari %2 frame yang terdaftar. Simpan yang mana?</translation>
     </message>
@@ -8423,7 +8443,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Simpan Lalu Lintas Sebagai</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+87"/>
         <source>Resume</source>
         <translation>Lanjutkan</translation>
     </message>
@@ -9010,7 +9030,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchProfileDialog</name>
     <message>
-        <location filename="../../ui/watch/watchprofiledialog.cpp" line="+25"/>
+        <location filename="../../ui/watch/watchprofiledialog.cpp" line="+28"/>
         <source>Watches from a device profile</source>
         <translation>Pantauan dari profil perangkat</translation>
     </message>
@@ -9035,24 +9055,24 @@ Klik kanan untuk mengganti format</translation>
         <translation>Profil (*.json)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source> ms</source>
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Profile:</source>
         <translation>&amp;Profil:</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+3"/>
         <source>&amp;Unit:</source>
         <translation>&amp;Unit:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Target:</source>
-        <translation>&amp;Target:</translation>
+        <translation>Tu&amp;juan:</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -9395,12 +9415,12 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Move watch &amp;left</source>
+        <source>Move watch le&amp;ft</source>
         <translation>Geser pantauan ke &amp;kiri</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Move watch ri&amp;ght</source>
+        <source>Move watch r&amp;ight</source>
         <translation>Geser pantauan ke ka&amp;nan</translation>
     </message>
     <message>

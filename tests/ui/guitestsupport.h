@@ -17,6 +17,9 @@
 #include <QtWidgets/QGroupBox>
 #include <QtWidgets/QAbstractButton>
 #include <QtCore/QMultiMap>
+#include <QtCore/QHash>
+#include <QtCore/QRegularExpression>
+#include <QtWidgets/QMenu>
 #include <QtTest/QTest>
 
 namespace mbscope::guitest {
@@ -122,6 +125,30 @@ inline QStringList mnemonicClashes(QWidget *window)
             clashes << QStringLiteral("Alt+%1: %2").arg(letter.toUpper(), owners.join(QLatin1String(", ")));
     }
     return clashes;
+}
+
+// Menus whose &-accelerators repeat a letter: the second one cannot be reached with Alt.
+inline QStringList repeatedAccelerators(const QString &where, const QList<QAction *> &actions)
+{
+    QStringList problems;
+    QHash<QChar, QString> used;
+    static const QRegularExpression accelerator(QStringLiteral("&([^&\\s])"));
+    for (QAction *a : actions) {
+        if (a->isSeparator() || !a->isVisible())
+            continue;
+        const QRegularExpressionMatch m = accelerator.match(QString(a->text()).remove(QStringLiteral("&&")));
+        if (m.hasMatch()) {
+            const QChar key = m.captured(1).at(0).toLower();
+            if (used.contains(key))
+                problems << QStringLiteral("%1: '%2' and '%3' share the accelerator %4")
+                                .arg(where, used.value(key), a->text(), QString(key));
+            else
+                used.insert(key, a->text());
+        }
+        if (QMenu *sub = a->menu())
+            problems << repeatedAccelerators(where + QStringLiteral(" > ") + QString(a->text()).remove(QLatin1Char('&')), sub->actions());
+    }
+    return problems;
 }
 
 } // namespace mbscope::guitest

@@ -1,5 +1,7 @@
 #include "csvexportaction.h"
 
+#include "lastfolder.h"
+
 #include "tablecsv.h"
 
 #include <QtWidgets/QFileDialog>
@@ -19,8 +21,9 @@ CsvExportAction::CsvExportAction(const QAbstractItemModel *model, const QString 
 
 void CsvExportAction::askAndSave()
 {
-    const QString path = QFileDialog::getSaveFileName(m_dialogParent, tr("Export table"), m_baseName + QStringLiteral(".csv"),
+    const QString path = QFileDialog::getSaveFileName(m_dialogParent, tr("Export table"), LastFolder::start(m_baseName + QStringLiteral(".csv")),
                                                       tr("CSV file (*.csv)"));
+    LastFolder::remember(path);
     if (path.isEmpty())
         return;
     QString error;

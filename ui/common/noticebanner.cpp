@@ -2,11 +2,30 @@
 
 #include "severitystyle.h"
 
+#include <QtCore/QEvent>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QToolButton>
 
 namespace mbscope {
+
+// The information tint of the palette in use: made again when the theme changes, or the light
+// theme's pale blue would stay under the dark theme's light text (issue 31, tst_windowfit).
+void NoticeBanner::applyTint()
+{
+    QPalette tint; // the window colour only: the text and the rest come from the window's palette
+    tint.setColor(QPalette::Window, SeverityStyle::backgroundColor(Severity::Info));
+    setPalette(tint);
+}
+
+void NoticeBanner::changeEvent(QEvent *event)
+{
+    QFrame::changeEvent(event);
+    // (Its own setPalette sends a PaletteChange too: the tint is set only when it differs.)
+    if ((event->type() == QEvent::ApplicationPaletteChange || event->type() == QEvent::PaletteChange)
+        && palette().color(QPalette::Window) != SeverityStyle::backgroundColor(Severity::Info))
+        applyTint();
+}
 
 NoticeBanner::NoticeBanner(QWidget *parent)
     : QFrame(parent)
@@ -15,9 +34,7 @@ NoticeBanner::NoticeBanner(QWidget *parent)
     setObjectName(QStringLiteral("noticeBanner"));
     setFrameShape(QFrame::StyledPanel);
     setAutoFillBackground(true);
-    QPalette p = palette();
-    p.setColor(QPalette::Window, SeverityStyle::backgroundColor(Severity::Info));
-    setPalette(p);
+    applyTint();
     m_label->setObjectName(QStringLiteral("noticeText"));
     m_label->setWordWrap(true);
     m_label->setTextFormat(Qt::RichText);

@@ -23,7 +23,12 @@ Q_SIGNALS:
     void linkActivated(const QString &href);
     void dismissed();
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
+    void applyTint();
+
     QLabel *m_label = nullptr;
 };
 

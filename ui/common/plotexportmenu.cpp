@@ -1,5 +1,7 @@
 #include "plotexportmenu.h"
 
+#include "lastfolder.h"
+
 #include "plotsaver.h"
 
 #include <QtGui/QAction>
@@ -45,8 +47,9 @@ void PlotExportMenu::copyToClipboard() const
 
 void PlotExportMenu::askAndSave()
 {
-    const QString path = QFileDialog::getSaveFileName(m_plot, tr("Save plot"), m_baseName + QStringLiteral(".png"),
+    const QString path = QFileDialog::getSaveFileName(m_plot, tr("Save plot"), LastFolder::start(m_baseName + QStringLiteral(".png")),
                                                       PlotSaver::fileFilter());
+    LastFolder::remember(path);
     if (path.isEmpty())
         return;
     QString error;

@@ -5,6 +5,7 @@
 #include <QtGui/QPainterPath>
 #include <QtGui/QPalette>
 #include <QtGui/QPixmap>
+#include <QtWidgets/QWidget>
 
 namespace mbscope {
 
@@ -34,6 +35,27 @@ QColor SeverityStyle::textColor(Severity severity)
     case Severity::Ok: break;
     }
     return QGuiApplication::palette().color(QPalette::Text);
+}
+
+QColor SeverityStyle::goodColor()
+{
+    return darkPalette() ? QColor(0x81, 0xc9, 0x95) : QColor(0x1b, 0x6e, 0x2a);
+}
+
+QColor SeverityStyle::mutedColor()
+{
+    return darkPalette() ? QColor(0xa0, 0xa0, 0xa0) : QColor(0x66, 0x66, 0x66);
+}
+
+void SeverityStyle::setTextColour(QWidget *label, Severity severity)
+{
+    if (severity == Severity::Ok) {
+        label->setPalette(QPalette()); // nothing of its own: the window's palette, whatever it becomes
+        return;
+    }
+    QPalette p = label->palette();
+    p.setColor(QPalette::WindowText, textColor(severity));
+    label->setPalette(p);
 }
 
 QColor SeverityStyle::backgroundColor(Severity severity)

@@ -9,6 +9,7 @@
 #include "protocol/functioncode.h"
 #include "protocol/pdusize.h"
 
+#include <QtCore/QEvent>
 #include <QtGui/QFontDatabase>
 #include <QtGui/QTextBlock>
 #include <QtWidgets/QComboBox>
@@ -73,10 +74,9 @@ void RawRequestEditor::buildUi()
     m_savedCombo = new QComboBox(this);
     // Long names do not widen the composer (the window fits 1024 px); the list opens wide enough.
     m_savedCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_savedCombo->setMinimumContentsLength(14);
+    m_savedCombo->setMinimumContentsLength(10); // the window fits 1024 px in Indonesian too
+    m_savedCombo->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed); // wider when there is room
     m_savedCombo->setObjectName(QStringLiteral("savedRequestsCombo"));
-    m_savedCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_savedCombo->setMinimumContentsLength(24);
     m_savedCombo->setToolTip(tr("Named requests: choose one to put its bytes in the editor"));
     auto *save = new QToolButton(this);
     save->setObjectName(QStringLiteral("saveRequestButton"));
@@ -221,19 +221,25 @@ QString RawRequestEditor::infoText() const
     return m_countLabel->text() + QStringLiteral(" \u00B7 ") + m_infoLabel->text();
 }
 
+void RawRequestEditor::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    // Another theme: the line's colour is taken again from the new palette.
+    if ((event->type() == QEvent::ApplicationPaletteChange || event->type() == QEvent::PaletteChange) && m_infoLabel
+        && m_countLabel)
+        updateInfo();
+}
+
 void RawRequestEditor::updateInfo()
 {
-    QPalette p = m_infoLabel->palette();
-    p.setColor(QPalette::WindowText, palette().color(QPalette::WindowText));
     if (!m_error.message.isEmpty()) {
         m_countLabel->setText(tr("not hex"));
         m_infoLabel->setText(m_error.message);
-        p.setColor(QPalette::WindowText, SeverityStyle::textColor(Severity::Error));
-        m_infoLabel->setPalette(p);
+        SeverityStyle::setTextColour(m_infoLabel, Severity::Error);
         return;
     }
     m_countLabel->setText(m_bytes.size() == 1 ? tr("1 byte") : tr("%1 bytes").arg(m_bytes.size()));
-    m_infoLabel->setPalette(p);
+    SeverityStyle::setTextColour(m_infoLabel, Severity::Ok);
     if (m_bytes.isEmpty()) {
         m_infoLabel->setText(tr("Type the request as hex, choose a saved one, or build it in the Form tab."));
         return;
@@ -263,8 +269,7 @@ void RawRequestEditor::updateInfo()
                        .arg(parts.unitId)
                        .arg(what, sum, hex2(parts.checksum & 0xFF) + QLatin1Char(' ') + hex2(parts.checksum >> 8),
                             hex2(parts.expectedChecksum & 0xFF) + QLatin1Char(' ') + hex2(parts.expectedChecksum >> 8));
-            p.setColor(QPalette::WindowText, SeverityStyle::textColor(Severity::Warning));
-            m_infoLabel->setPalette(p);
+            SeverityStyle::setTextColour(m_infoLabel, Severity::Warning);
         }
         break;
     }

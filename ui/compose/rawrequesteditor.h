@@ -59,6 +59,9 @@ Q_SIGNALS:
     // After every edit: the bytes when the text is hex (valid), else empty bytes and false.
     void bytesChanged(const QByteArray &bytes, bool valid);
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     void buildUi();
     void onTextChanged();

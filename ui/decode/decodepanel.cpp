@@ -83,13 +83,16 @@ void DecodePanel::buildUi()
     m_requestEdit->setToolTip(tr("With the matching request, a response's byte count, echoed values and "
                                  "transaction id are checked against what was asked"));
 
-    auto *frameLabel = new QLabel(tr("&Frame:"), this);
+    // Frame, Framing and Direction have no accelerator: every letter of them is the window's
+    // already, in English or in Indonesian (File, Request, Answer, Timeout, Saved, Decode, Listen,
+    // Connect, Tools, Host, Send; Kirim, Simak, Mulai polling...): Tab reaches them.
+    auto *frameLabel = new QLabel(tr("Frame:"), this);
     frameLabel->setBuddy(m_frameEdit);
-    auto *framingLabel = new QLabel(tr("Fr&aming:"), this);
+    auto *framingLabel = new QLabel(tr("Framing:"), this);
     framingLabel->setBuddy(m_framingCombo);
-    auto *directionLabel = new QLabel(tr("&Direction:"), this);
+    auto *directionLabel = new QLabel(tr("Direction:"), this);
     directionLabel->setBuddy(m_directionCombo);
-    auto *requestLabel = new QLabel(tr("Matching &request:"), this);
+    auto *requestLabel = new QLabel(tr("Matching re&quest:"), this);
     requestLabel->setBuddy(m_requestEdit);
 
     // The window fits 1024 px: the combos give way rather than widen the Decode tab.
@@ -235,7 +238,7 @@ void DecodePanel::showDissection(const Dissection &dissection)
     // keeps to the spec, coloured by the worst problem found.
     const Severity worst = dissection.fields.worstSeverity();
     setVerdict(dissection.isValid() ? tr("Valid:") : tr("Invalid:"),
-               worst >= Severity::Warning ? SeverityStyle::textColor(worst) : palette().color(QPalette::WindowText));
+               worst >= Severity::Warning ? worst : Severity::Ok);
     m_summaryLabel->setText(DissectionSummary::text(dissection));
 
     const QString framingReason = dissection.framingReason.isEmpty() ? tr("as chosen") : dissection.framingReason.toString();
@@ -251,7 +254,7 @@ void DecodePanel::showEmpty()
     m_inputError.clear();
     m_errorLabel->hide();
     m_model->clear();
-    setVerdict({}, palette().color(QPalette::WindowText));
+    setVerdict({}, Severity::Ok);
     m_summaryLabel->setText(tr("Type or paste a frame as hex; the fields appear as you type."));
     m_reasonLabel->clear();
     Q_EMIT decoded();
@@ -270,11 +273,9 @@ void DecodePanel::showInputError(const QString &what, const HexTextError &error,
     Q_EMIT decoded();
 }
 
-void DecodePanel::setVerdict(const QString &text, const QColor &color)
+void DecodePanel::setVerdict(const QString &text, Severity severity)
 {
-    QPalette p = m_verdictLabel->palette();
-    p.setColor(QPalette::WindowText, color);
-    m_verdictLabel->setPalette(p);
+    SeverityStyle::setTextColour(m_verdictLabel, severity);
     m_verdictLabel->setText(text);
     m_verdictLabel->setVisible(!text.isEmpty());
 }

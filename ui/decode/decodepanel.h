@@ -61,7 +61,7 @@ private:
     void showDissection(const Dissection &dissection);
     void showEmpty();
     void showInputError(const QString &what, const HexTextError &error, bool inFrame);
-    void setVerdict(const QString &text, const QColor &color);
+    void setVerdict(const QString &text, Severity severity);
 
     QPlainTextEdit *m_frameEdit = nullptr;
     QComboBox *m_framingCombo = nullptr;

@@ -172,9 +172,11 @@ void DecodeView::updateHeader()
     const Dissection &main = e.hasRequest() ? requestDissection() : responseDissection();
     QStringList parts;
     const Severity severity = TrafficStyle::severity(e.verdict);
-    const QColor color = severity == Severity::Ok ? palette().color(QPalette::WindowText) : SeverityStyle::textColor(severity);
-    parts << QStringLiteral("<b style=\"color:%1\">%2</b>")
-                 .arg(color.name(), TrafficStyle::verdictText(e.verdict).toHtmlEscaped());
+    // "ok" in the palette's text colour, named nowhere: a colour written into the HTML would stay
+    // when the theme changes (black on dark grey).
+    const QString verdict = TrafficStyle::verdictText(e.verdict).toHtmlEscaped();
+    parts << (severity == Severity::Ok ? QStringLiteral("<b>%1</b>").arg(verdict)
+                                       : QStringLiteral("<b style=\"color:%1\">%2</b>").arg(SeverityStyle::textColor(severity).name(), verdict));
     if (!main.fields.isEmpty())
         parts << DissectionSummary::text(main).toHtmlEscaped();
     // Two measures of latency exist (the traffic list's and the Analysis dock's): the header

@@ -1,5 +1,7 @@
 #include "mapscandialog.h"
 
+#include "common/lastfolder.h"
+
 #include "mapresulttree.h"
 #include "scanform.h"
 
@@ -248,8 +250,10 @@ bool MapScanDialog::saveDraft(const QString &path)
 
 void MapScanDialog::chooseDraftFile()
 {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save profile draft"), QStringLiteral("unit-%1.json").arg(m_map ? m_map->unit : 1),
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save profile draft"),
+                                                      LastFolder::start(QStringLiteral("unit-%1.json").arg(m_map ? m_map->unit : 1)),
                                                       tr("Device profiles (*.json)"));
+    LastFolder::remember(path);
     if (!path.isEmpty())
         saveDraft(path);
 }

@@ -1,5 +1,7 @@
 #include "scanresultmodel.h"
 
+#include "common/severitystyle.h"
+
 #include "protocol/functioncode.h"
 
 #include <QtGui/QBrush>
@@ -83,7 +85,7 @@ QVariant ScanResultModel::data(const QModelIndex &index, int role) const
         return bold;
     }
     if (role == Qt::ForegroundRole && (p.kind == UnitProbeKind::Silent || p.kind == UnitProbeKind::GatewayTargetFailed))
-        return QBrush(QColor(0x80, 0x80, 0x80));
+        return QBrush(SeverityStyle::mutedColor());
     if (role == Qt::TextAlignmentRole && (index.column() == UnitColumn || index.column() == LatencyColumn))
         return int(Qt::AlignRight | Qt::AlignVCenter);
     if (role != Qt::DisplayRole && role != Qt::ToolTipRole)

@@ -1,5 +1,7 @@
 #include "timingresulttree.h"
 
+#include "common/severitystyle.h"
+
 #include <QtWidgets/QHeaderView>
 
 namespace mbscope {
@@ -58,7 +60,7 @@ void TimingResultTree::showReport(const TimingScanSettings &s, const TimingRepor
             QTreeWidgetItem *trial = row(gaps, tr("%1 ms").arg(g.gapMs),
                                          tr("%1 ok, %2 failed, slowest %3").arg(g.ok).arg(g.failed).arg(milliseconds(g.maxLatencyUs)));
             if (g.failed > 0)
-                trial->setForeground(ResultColumn, QColor(0xc0, 0x39, 0x2b));
+                trial->setForeground(ResultColumn, SeverityStyle::textColor(Severity::Error));
         }
         gaps->setExpanded(true);
     }

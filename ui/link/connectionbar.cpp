@@ -79,12 +79,15 @@ void ConnectionBar::buildUi()
     m_kindCombo->setObjectName(QStringLiteral("linkKindCombo"));
     for (const KindChoice &choice : kKinds)
         m_kindCombo->addItem(tr(choice.label), int(choice.kind));
+    // As wide as "ASCII over TCP", not as the longest choice: the bar fits 1024 px in both languages.
+    m_kindCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_kindCombo->setMinimumContentsLength(15);
 
     // Network target
     m_hostEdit = new QLineEdit(QStringLiteral("127.0.0.1"), this);
     m_hostEdit->setObjectName(QStringLiteral("hostEdit"));
     m_hostEdit->setPlaceholderText(tr("host name or IP address"));
-    m_hostEdit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("192.168.127.254___")));
+    m_hostEdit->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("192.168.127.254_")));
     // A host name is rarely longer than this; a wider field only pushes the port away from it.
     m_hostEdit->setMaximumWidth(fontMetrics().horizontalAdvance(QStringLiteral("modbus-gateway.example.org____")));
     m_portSpin = new QSpinBox(this);

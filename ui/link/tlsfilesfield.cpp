@@ -1,5 +1,7 @@
 #include "tlsfilesfield.h"
 
+#include "common/lastfolder.h"
+
 #include <QtCore/QFileInfo>
 #include <QtWidgets/QFileDialog>
 #include <QtWidgets/QHBoxLayout>
@@ -38,11 +40,12 @@ QLineEdit *TlsFilesField::addFile(const QString &label, const QString &objectNam
     choose->setText(QStringLiteral("\u2026"));
     choose->setToolTip(chooserTitle);
     connect(choose, &QToolButton::clicked, this, [this, edit, chooserTitle] {
-        const QString start = edit->text().isEmpty() ? QString() : QFileInfo(edit->text()).absolutePath();
+        const QString start = edit->text().isEmpty() ? LastFolder::start() : QFileInfo(edit->text()).absolutePath();
         const QString path = QFileDialog::getOpenFileName(this, chooserTitle, start,
                                                           tr("PEM files (*.pem *.crt *.cer *.key);;All files (*)"));
         if (path.isEmpty())
             return;
+        LastFolder::remember(path);
         edit->setText(path);
         Q_EMIT edited();
     });

@@ -1,5 +1,7 @@
 #include "registertable.h"
 
+#include "common/editablecellsview.h"
+
 #include "common/coretext.h"
 #include "registertablemodel.h"
 
@@ -50,7 +52,7 @@ QString orderLabel(RegisterType type, RegisterOrder order)
 RegisterTable::RegisterTable(QWidget *parent)
     : QWidget(parent),
       m_model(new RegisterTableModel(this)),
-      m_view(new QTableView(this)),
+      m_view(new EditableCellsView(this)),
       m_toolBar(new QToolBar(this)),
       m_message(new QLabel(this))
 {

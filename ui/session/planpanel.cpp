@@ -1,5 +1,7 @@
 #include "planpanel.h"
 
+#include "common/lastfolder.h"
+
 #include "plancontroller.h"
 #include "planresultmodel.h"
 
@@ -19,8 +21,11 @@ PlanPanel::PlanPanel(PlanController *controller, DocumentSource document, QWidge
     : QWidget(parent), m_controller(controller), m_document(std::move(document))
 {
     m_chooser = [this] {
-        return QFileDialog::getSaveFileName(this, tr("Export the results as JUnit XML"), QStringLiteral("results.xml"),
-                                            tr("JUnit XML (*.xml);;All files (*)"));
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export the results as JUnit XML"),
+                                                          LastFolder::start(QStringLiteral("results.xml")),
+                                                          tr("JUnit XML (*.xml);;All files (*)"));
+        LastFolder::remember(path);
+        return path;
     };
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);

@@ -1,5 +1,7 @@
 #include "planresultmodel.h"
 
+#include "common/severitystyle.h"
+
 #include <QtCore/QRegularExpression>
 #include <QtGui/QBrush>
 #include <QtGui/QColor>
@@ -132,12 +134,12 @@ QVariant PlanResultModel::data(const QModelIndex &index, int role) const
     if (role == Qt::ForegroundRole && index.column() == OutcomeColumn) {
         switch (step.outcome) {
         case StepResult::Outcome::Passed:
-            return QBrush(QColor(0x1e, 0x7b, 0x34));
+            return QBrush(SeverityStyle::goodColor());
         case StepResult::Outcome::Failed:
         case StepResult::Outcome::Error:
-            return QBrush(QColor(0xb0, 0x20, 0x20));
+            return QBrush(SeverityStyle::textColor(Severity::Error));
         case StepResult::Outcome::Skipped:
-            return QBrush(QColor(0x70, 0x70, 0x70));
+            return QBrush(SeverityStyle::mutedColor());
         }
     }
     if (role == Qt::TextAlignmentRole && index.column() == TimeColumn)

@@ -15,6 +15,32 @@
 
 namespace mbscope {
 
+namespace {
+
+// How the recovered journal ends, in the window's language (the core's message is English).
+QString recoveryEnding(const TrafficJournalRecovery &r)
+{
+    const QLocale locale;
+    switch (r.ending) {
+    case TrafficJournalRecovery::Ending::Clean:
+        return RecordingControl::tr("it ends cleanly, at byte %1").arg(locale.toString(r.fileBytes));
+    case TrafficJournalRecovery::Ending::NotClosed:
+        return RecordingControl::tr("it stops after the last complete batch, at byte %1; what was not written yet is not in it")
+            .arg(locale.toString(r.fileBytes));
+    case TrafficJournalRecovery::Ending::CutShort:
+        return RecordingControl::tr("the last batch was cut short at byte %1 and is left out").arg(locale.toString(r.fileBytes));
+    case TrafficJournalRecovery::Ending::Corrupt:
+        return RecordingControl::tr("the batch at byte %1 is damaged: it and all after it are left out")
+            .arg(locale.toString(r.goodBytes));
+    case TrafficJournalRecovery::Ending::NotAJournal:
+    case TrafficJournalRecovery::Ending::Unreadable:
+        break;
+    }
+    return r.message;
+}
+
+} // namespace
+
 RecordingControl::RecordingControl(LinkController *link, SessionController *session, ReplayController *replay,
                                    QObject *parent)
     : QObject(parent)
@@ -65,7 +91,7 @@ QString RecordingControl::offerRecovery()
                       "%4 frames in all: %5.")
                        .arg(QFileInfo(m_offered).fileName().toHtmlEscaped(),
                             locale.toString(QFileInfo(m_offered).lastModified(), QLocale::ShortFormat),
-                            locale.toString(requests), locale.toString(r.frames), r.message.toHtmlEscaped());
+                            locale.toString(requests), locale.toString(r.frames), recoveryEnding(r).toHtmlEscaped());
     if (left.size() > 1)
         text += tr(" %n older recording(s) were also left open.", nullptr, int(left.size() - 1));
     text += QStringLiteral(" <a href=\"open\">%1</a> &nbsp; <a href=\"keep\">%2</a>")

@@ -1,5 +1,7 @@
 #include "replaydifferencesmodel.h"
 
+#include "common/severitystyle.h"
+
 #include "protocol/adubuilder.h"
 #include "protocol/hextext.h"
 #include "replay/replayscript.h"
@@ -210,7 +212,7 @@ QVariant ReplayDifferencesModel::data(const QModelIndex &index, int role) const
         return {};
     }
     if (role == Qt::ForegroundRole && index.column() == KindColumn && row.kind != Kind::Same)
-        return QBrush(row.kind == Kind::Latency ? QColor(0x9a, 0x67, 0x00) : QColor(0xb0, 0x20, 0x20));
+        return QBrush(SeverityStyle::textColor(row.kind == Kind::Latency ? Severity::Warning : Severity::Error));
     if (role == Qt::TextAlignmentRole && (index.column() == IndexColumn || index.column() >= RecordedLatencyColumn))
         return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
     return {};

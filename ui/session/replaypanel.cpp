@@ -1,5 +1,7 @@
 #include "replaypanel.h"
 
+#include "common/lastfolder.h"
+
 #include "replaycontroller.h"
 #include "replaydifferencesmodel.h"
 #include "replayserver.h"
@@ -26,8 +28,10 @@ ReplayPanel::ReplayPanel(ReplayController *controller, QWidget *parent)
     : QWidget(parent), m_controller(controller)
 {
     m_chooser = [this] {
-        return QFileDialog::getOpenFileName(this, tr("Open a capture or a session"), QString(),
-                                            tr("Captures and sessions (*.pcap *.pcapng *.cap *.json *.journal);;All files (*)"));
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open a capture or a session"), LastFolder::start(),
+                                                          tr("Captures and sessions (*.pcap *.pcapng *.cap *.json *.journal);;All files (*)"));
+        LastFolder::remember(path);
+        return path;
     };
     m_writesAsker = [](QMessageBox &question) { return QMessageBox::StandardButton(question.exec()); };
     buildUi();

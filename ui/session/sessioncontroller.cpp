@@ -1,5 +1,7 @@
 #include "sessioncontroller.h"
 
+#include "common/lastfolder.h"
+
 #include "link/connectionbar.h"
 #include "link/tapfields.h"
 #include "compose/requestcomposer.h"
@@ -44,17 +46,25 @@ SessionController::SessionController(QMainWindow *window, ConnectionBar *bar, Re
         return answer == QMessageBox::Discard ? Choice::Discard : Choice::Cancel;
     };
     m_report = [this](const QString &path, const QStringList &problems) {
-        QMessageBox box(QMessageBox::Warning, tr("Session not opened"),
-                        tr("%1 was not opened; nothing was changed.").arg(QDir::toNativeSeparators(path)),
-                        QMessageBox::Ok, m_window);
-        box.setInformativeText(problems.mid(0, 8).join(QLatin1Char('\n')));
-        box.setDetailedText(problems.join(QLatin1Char('\n')));
-        box.exec();
+        // Window-modal but not waited for: the caller goes on (a second start handing its session
+        // over is told the problems at once, polls keep running while the box is read).
+        auto *box = new QMessageBox(QMessageBox::Warning, tr("Session not opened"),
+                                    tr("%1 was not opened; nothing was changed.").arg(QDir::toNativeSeparators(path)),
+                                    QMessageBox::Ok, m_window);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->setInformativeText(problems.mid(0, 8).join(QLatin1Char('\n')));
+        box->setDetailedText(problems.join(QLatin1Char('\n')));
+        box->open();
     };
     m_chooser = [this](bool forSave) {
         const QString filter = tr("mbscope sessions (*.mbscope.json *.json);;All files (*)");
-        return forSave ? QFileDialog::getSaveFileName(m_window, tr("Save session"), m_path, filter)
-                       : QFileDialog::getOpenFileName(m_window, tr("Open session"), QFileInfo(m_path).path(), filter);
+        // An untitled session starts where the user last picked a file (LastFolder).
+        const QString path = forSave ? QFileDialog::getSaveFileName(m_window, tr("Save session"),
+                                                                    m_path.isEmpty() ? LastFolder::start() : m_path, filter)
+                                     : QFileDialog::getOpenFileName(m_window, tr("Open session"),
+                                                                    m_path.isEmpty() ? LastFolder::start() : QFileInfo(m_path).path(), filter);
+        LastFolder::remember(path);
+        return path;
     };
     m_savedAtOpen = m_composer->state().savedRequests;
     m_clean = currentDocument();

@@ -2,6 +2,7 @@
 
 #include "common/severitystyle.h"
 
+#include <QtCore/QEvent>
 #include <QtCore/QLocale>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
@@ -30,22 +31,36 @@ LinkStatusWidget::LinkStatusWidget(QWidget *parent)
     setCounters({});
 }
 
+void LinkStatusWidget::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    // Another theme: the state word's colour is written into its text, so the text is made again.
+    if (event->type() == QEvent::ApplicationPaletteChange || event->type() == QEvent::PaletteChange)
+        setState(m_state, m_message);
+}
+
 void LinkStatusWidget::setState(LinkController::State state, const QString &message)
 {
+    m_state = state;
+    m_message = message;
     QString word;
-    QColor colour = palette().color(QPalette::WindowText);
+    QColor colour; // none: the palette's text colour, whatever the theme becomes
     switch (state) {
     case LinkController::State::Disconnected: word = tr("Not connected"); break;
     case LinkController::State::Ready: word = tr("Connecting"); colour = SeverityStyle::textColor(Severity::Info); break;
-    case LinkController::State::Connected: word = tr("Connected"); colour = QColor(0x1b, 0x7f, 0x2a); break;
+    case LinkController::State::Connected: word = tr("Connected"); colour = SeverityStyle::goodColor(); break;
     case LinkController::State::Failed: word = tr("Link failed"); colour = SeverityStyle::textColor(Severity::Error); break;
     }
-    // The state word is coloured; the detail (target or the link's words) stays readable text.
-    const QString detail = state == LinkController::State::Disconnected ? QString() : message;
-    m_stateLabel->setText(QStringLiteral("<b style=\"color:%1\">\u25CF %2</b>%3")
-                              .arg(colour.name(), word.toHtmlEscaped(),
+    // The state word is coloured; the detail (the link's words) stays readable text. Connected,
+    // the target is in the connection bar already: here only in the tooltip, so the status bar
+    // keeps room for its messages at 1024 px (issue 31: a poll's summary was cut).
+    const bool withDetail = state == LinkController::State::Ready || state == LinkController::State::Failed;
+    const QString detail = withDetail ? message : QString();
+    m_stateLabel->setText(QStringLiteral("<b%1>\u25CF %2</b>%3")
+                              .arg(colour.isValid() ? QStringLiteral(" style=\"color:%1\"").arg(colour.name()) : QString(),
+                                   word.toHtmlEscaped(),
                                    detail.isEmpty() ? QString() : QStringLiteral("&nbsp; ") + detail.toHtmlEscaped()));
-    m_stateLabel->setToolTip(detail);
+    m_stateLabel->setToolTip(state == LinkController::State::Disconnected ? QString() : message);
 }
 
 void LinkStatusWidget::setCounters(const EngineCounters &counters)

@@ -27,10 +27,15 @@ public:
     void addWatchTraffic(const QList<mbscope::WatchSample> &samples);
     [[nodiscard]] QString watchTrafficText() const;
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     QLabel *m_stateLabel = nullptr;
     QLabel *m_countersLabel = nullptr;
     QLabel *m_watchLabel = nullptr;
+    LinkController::State m_state = LinkController::State::Disconnected;
+    QString m_message;
     quint64 m_watchPolls = 0;
     quint64 m_watchFailures = 0;
     qint64 m_watchBytesOut = 0;

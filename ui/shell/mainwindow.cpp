@@ -11,6 +11,7 @@
 #include "link/linkcontroller.h"
 #include "linkstatuswidget.h"
 #include "common/noticebanner.h"
+#include "plotdockheight.h"
 #include "preferencesdialog.h"
 #include "session/recordingcontrol.h"
 #include "compose/rawrequesteditor.h"
@@ -27,6 +28,7 @@
 #include "toolsmenu.h"
 #include "traffic/trafficmodel.h"
 #include "traffic/trafficmonitor.h"
+#include "windowlayout.h"
 #include "decode/transactionview.h"
 #include "analysis/trendpanels.h"
 #include "watch/watchfactory.h"
@@ -51,7 +53,6 @@
 #include <QtWidgets/QStatusBar>
 #include <QtWidgets/QTabWidget>
 #include <QtWidgets/QVBoxLayout>
-
 
 namespace mbscope {
 
@@ -99,6 +100,7 @@ MainWindow::~MainWindow()
     // The engine's link goes first, so the simulator does not log a client vanishing mid-request.
     delete m_controller;
     m_controller = nullptr;
+    delete m_plotHeight; // before the docks go: their hiding must not resize a window being taken apart
     m_simulator->stop();
 }
 
@@ -233,19 +235,14 @@ void MainWindow::closeEvent(QCloseEvent *event)
 
 bool MainWindow::restoreLayout()
 {
-    const QSettings settings;
-    const QByteArray geometry = settings.value(QStringLiteral("window/geometry")).toByteArray();
-    const QByteArray state = settings.value(QStringLiteral("window/state")).toByteArray();
-    const bool geometryRestored = !geometry.isEmpty() && restoreGeometry(geometry);
-    m_layoutRestored = !state.isEmpty() && restoreState(state);
-    return geometryRestored || m_layoutRestored;
+    const WindowLayout::Restored restored = WindowLayout::restore(*this, WindowLayout::screenSize(*this));
+    m_layoutRestored = restored.state;
+    return restored.geometry || restored.state;
 }
 
 void MainWindow::saveLayout() const
 {
-    QSettings settings;
-    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("window/state"), saveState());
+    WindowLayout::save(*this, WindowLayout::screenSize(*this));
 }
 
 // The composer needs about 450 px for its poll row; the answer gets the rest. The docks take a
@@ -292,6 +289,7 @@ void MainWindow::buildDocks()
     m_simulatorDock->setWidget(m_simulatorPanel);
     addDockWidget(Qt::BottomDockWidgetArea, m_simulatorDock);
     tabifyDockWidget(m_analysisDock, m_simulatorDock);
+    m_plotHeight = new PlotDockHeight(this, m_analysisDock); // the plots get half the window in front
     m_trafficDock->raise();
 }
 
@@ -447,13 +445,14 @@ bool MainWindow::startAsConfigured(const QString &url)
     QSettings settings;
     const bool firstRun = !settings.value(QStringLiteral("startup/started")).toBool();
     settings.setValue(QStringLiteral("startup/started"), true);
-    if (firstRun || PreferencesDialog::startsSimulator())
-        return startWithSimulator(url);
-    // The poll interval and count as they were left (a session opened next sets its own).
+    // The poll interval and count as they were left, on the simulator too (a session opened
+    // next sets its own).
     if (settings.contains(QStringLiteral("composer/intervalMs"))) {
         m_composer->intervalSpin()->setValue(settings.value(QStringLiteral("composer/intervalMs")).toInt());
         m_composer->countSpin()->setValue(settings.value(QStringLiteral("composer/count")).toInt());
     }
+    if (firstRun || PreferencesDialog::startsSimulator())
+        return startWithSimulator(url);
     m_registers->restoreFormats(); // the value columns as they were left
     const QString last = settings.value(QStringLiteral("session/last")).toString();
     if (!last.isEmpty() && QFileInfo::exists(last) && m_session->open(last))

@@ -20,6 +20,7 @@ class LatencyAnalysis;
 class LinkController;
 class LinkStatusWidget;
 class NoticeBanner;
+class PlotDockHeight;
 class RecordingControl;
 class RegisterTable;
 class RequestComposer;
@@ -85,8 +86,9 @@ public:
     // Shows the main area's tab: "answer", "decode" or "watches"; false for another name.
     bool showTab(const QString &name);
 
-    // Window geometry and dock layout kept in QSettings ("window/geometry", "window/state"):
-    // restoreLayout() puts back what the last close saved; false when nothing was saved.
+    // Window geometry and dock layout kept in QSettings per screen size (WindowLayout):
+    // restoreLayout() puts back what the last close on this screen saved (or on any screen, when
+    // none was made on this one); false when nothing was saved.
     bool restoreLayout();
     void saveLayout() const;
 
@@ -137,6 +139,7 @@ private:
     RecordingControl *m_recording = nullptr;
     SimulatorPanel *m_simulatorPanel = nullptr;
     QDockWidget *m_simulatorDock = nullptr;
+    PlotDockHeight *m_plotHeight = nullptr;
     WatchWorkspace *m_workspace = nullptr;
     SimulatorNotice *m_simulatorNotice = nullptr; // the banner about the built-in simulator
     QByteArray m_lastRead; // the read whose answer the register table shows: sent again after a write

@@ -1,5 +1,7 @@
 #include "simfaultform.h"
 
+#include "common/lastfolder.h"
+
 #include "profile/profileloader.h"
 
 #include <QtWidgets/QComboBox>
@@ -366,8 +368,9 @@ QString SimFaultForm::message() const
 
 void SimFaultForm::chooseRulesFile()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Load fault rules"), QString(),
+    const QString path = QFileDialog::getOpenFileName(this, tr("Load fault rules"), LastFolder::start(),
                                                       tr("Fault rules (*.json);;All files (*)"));
+    LastFolder::remember(path);
     if (!path.isEmpty())
         loadRulesFile(path);
 }

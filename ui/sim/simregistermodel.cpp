@@ -1,5 +1,7 @@
 #include "simregistermodel.h"
 
+#include "common/severitystyle.h"
+
 #include <QtGui/QBrush>
 #include <QtGui/QColor>
 
@@ -164,7 +166,7 @@ QVariant SimRegisterModel::data(const QModelIndex &index, int role) const
         return {};
     case Qt::BackgroundRole:
         if (m_changed.contains(index.row()))
-            return QBrush(QColor(255, 236, 170));
+            return QBrush(SeverityStyle::backgroundColor(Severity::Warning));
         return {};
     case AddressRole: return int(row.address);
     case TableRole: return int(row.table);

@@ -1,5 +1,7 @@
 #include "simtrafficmodel.h"
 
+#include "common/severitystyle.h"
+
 #include "common/coretext.h"
 
 #include "protocol/adubuilder.h"
@@ -168,9 +170,9 @@ QVariant SimTrafficModel::data(const QModelIndex &index, int role) const
         return {};
     case Qt::BackgroundRole:
         if (record.isFaulted())
-            return QBrush(QColor(255, 214, 170));
+            return QBrush(SeverityStyle::backgroundColor(Severity::Error));
         if (exceptionCodeOf(record) != 0)
-            return QBrush(QColor(255, 240, 200));
+            return QBrush(SeverityStyle::backgroundColor(Severity::Warning));
         return {};
     case FaultedRole: return record.isFaulted();
     case ExceptionCodeRole: return exceptionCodeOf(record);

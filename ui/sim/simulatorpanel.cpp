@@ -1,5 +1,7 @@
 #include "simulatorpanel.h"
 
+#include "common/lastfolder.h"
+
 #include "simfaultform.h"
 #include "simscriptpanel.h"
 #include "simregistermodel.h"
@@ -309,8 +311,9 @@ void SimulatorPanel::onUrlEdited(const QString &text)
 
 void SimulatorPanel::chooseProfileFile()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open a device profile"), QString(),
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open a device profile"), LastFolder::start(),
                                                       tr("Device profiles (*.json);;All files (*)"));
+    LastFolder::remember(path);
     if (!path.isEmpty())
         m_profile->setEditText(path);
 }

@@ -1,5 +1,7 @@
 #include "trafficmonitor.h"
 
+#include "common/lastfolder.h"
+
 #include "common/coretext.h"
 
 #include "common/severitystyle.h"
@@ -234,7 +236,7 @@ void TrafficMonitor::saveTrafficAs()
     dialog.setFileMode(QFileDialog::AnyFile);
     dialog.setNameFilters(TrafficSaver::nameFilters());
     if (m_lastSaveDirectory.isEmpty())
-        m_lastSaveDirectory = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+        m_lastSaveDirectory = LastFolder::folder();
     dialog.setDirectory(m_lastSaveDirectory);
     dialog.selectFile(QStringLiteral("traffic") + trafficformat::suffix(TrafficFormat::Journal));
     connect(&dialog, &QFileDialog::filterSelected, &dialog, [&dialog](const QString &filter) {
@@ -259,6 +261,7 @@ void TrafficMonitor::saveTrafficAs()
     if (!typed)
         path += trafficformat::suffix(format);
     m_lastSaveDirectory = QFileInfo(path).absolutePath();
+    LastFolder::remember(path);
     const TrafficSaver::Result result = saveTo(path, format, shownOnly);
     auto *box = new QMessageBox(result.ok ? QMessageBox::Information : QMessageBox::Warning, tr("Save Traffic"),
                                 result.summary(format, path), QMessageBox::Ok, this);
@@ -431,10 +434,7 @@ void TrafficMonitor::updateStatus()
         text += tr(" \u00B7 paused: %1 new frames held").arg(locale.toString(qlonglong(m_model->heldCount())));
     if (m_model->droppedCount() > 0)
         text += tr(" \u00B7 %1 oldest dropped from the list").arg(locale.toString(qulonglong(m_model->droppedCount())));
-    QPalette p = m_statusLabel->palette();
-    p.setColor(QPalette::WindowText, m_findMessage.isEmpty() ? palette().color(QPalette::WindowText)
-                                                             : SeverityStyle::textColor(Severity::Warning));
-    m_statusLabel->setPalette(p);
+    SeverityStyle::setTextColour(m_statusLabel, m_findMessage.isEmpty() ? Severity::Ok : Severity::Warning);
     if (!m_findMessage.isEmpty())
         text += QStringLiteral(" \u00B7 ") + m_findMessage;
     m_statusLabel->setText(text);

@@ -1,11 +1,14 @@
 #include "watchprofiledialog.h"
 
+#include "common/lastfolder.h"
+
 #include "profile/profileloader.h"
 
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QDialogButtonBox>
 #include <QtWidgets/QFileDialog>
 #include <QtWidgets/QFormLayout>
+#include <QtWidgets/QLabel>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QSpinBox>
@@ -30,7 +33,8 @@ WatchProfileDialog::WatchProfileDialog(QWidget *parent)
     auto *browse = new QToolButton(this);
     browse->setText(tr("&Browse\u2026"));
     connect(browse, &QToolButton::clicked, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Device profile"), QString(), tr("Profiles (*.json)"));
+        const QString path = QFileDialog::getOpenFileName(this, tr("Device profile"), LastFolder::start(), tr("Profiles (*.json)"));
+        LastFolder::remember(path);
         if (!path.isEmpty())
             m_profile->setCurrentText(path);
     });
@@ -45,7 +49,10 @@ WatchProfileDialog::WatchProfileDialog(QWidget *parent)
     m_interval->setValue(1000);
 
     auto *form = new QFormLayout;
-    form->addRow(tr("&Profile:"), profileRow);
+    // A row that is a layout gets no buddy from the form: the label would show "&Profile:".
+    auto *profileLabel = new QLabel(tr("&Profile:"), this);
+    profileLabel->setBuddy(m_profile);
+    form->addRow(profileLabel, profileRow);
     form->addRow(tr("&Unit:"), m_unit);
     form->addRow(tr("&Target:"), m_target);
     form->addRow(tr("&Interval:"), m_interval);

@@ -46,8 +46,8 @@ void WatchWorkspace::createActions()
     m_editAction = make(tr("&Edit watch\u2026"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E), &WatchWorkspace::editCurrent);
     m_duplicateAction = make(tr("&Duplicate watch"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_D), [this] { duplicateWatch(currentIndex()); });
     m_closeAction = make(tr("&Close watch"), QKeySequence(Qt::CTRL | Qt::Key_W), [this] { removeWatch(currentIndex()); });
-    m_moveLeftAction = make(tr("Move watch &left"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_PageUp), [this] { moveWatch(currentIndex(), -1); });
-    m_moveRightAction = make(tr("Move watch ri&ght"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_PageDown), [this] { moveWatch(currentIndex(), 1); });
+    m_moveLeftAction = make(tr("Move watch le&ft"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_PageUp), [this] { moveWatch(currentIndex(), -1); });
+    m_moveRightAction = make(tr("Move watch r&ight"), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_PageDown), [this] { moveWatch(currentIndex(), 1); });
     m_startAction = make(tr("&Start all"), QKeySequence(Qt::Key_F5), &WatchWorkspace::startAll);
     m_startAction->setObjectName(QStringLiteral("startWatchesAction"));
     m_stopAction = make(tr("S&top all"), QKeySequence(Qt::SHIFT | Qt::Key_F5), &WatchWorkspace::stopAll);

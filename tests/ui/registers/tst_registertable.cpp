@@ -8,6 +8,7 @@
 #include "registers/registertablemodel.h"
 #include "profile/profileloader.h"
 
+#include <QtWidgets/QVBoxLayout>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QtTest>
 #include <QtWidgets/QApplication>
@@ -79,6 +80,8 @@ private Q_SLOTS:
     void editTypedInTheView_data();
     void editTypedInTheView();
     void refusedEditIsShown();
+    void tabSkipsReadOnlyCells_data();
+    void tabSkipsReadOnlyCells();
     void refusedAnswerIsShown();
     void screenshot();
     void screenshotCoils();
@@ -216,6 +219,57 @@ void TestRegisterTable::editTypedInTheView()
     QTRY_COMPARE(writes.count(), 1);
     QCOMPARE(writes.at(0).at(0).toByteArray().toHex(' '), pdu.toHex(' '));
     QVERIFY(table.message().startsWith(u"Write requested: "_s));
+}
+
+void TestRegisterTable::tabSkipsReadOnlyCells_data()
+{
+    QTest::addColumn<int>("fromRow");
+    QTest::addColumn<int>("fromValue"); // index of the value column, -1 the address column
+    QTest::addColumn<bool>("back");
+    QTest::addColumn<int>("toRow"); // -1: the table lets the focus go
+    QTest::addColumn<int>("toValue");
+    QTest::newRow("tab to the next value") << 0 << 0 << false << 0 << 1;
+    QTest::newRow("tab past the row's last value") << 0 << 1 << false << 1 << 0;
+    QTest::newRow("shift+tab to the row above") << 1 << 0 << true << 0 << 1;
+    QTest::newRow("tab from the address") << 3 << -1 << false << 3 << 0;
+    QTest::newRow("tab past the last row") << 21 << 1 << false << -1 << 0;
+}
+
+// Issue 31: Tab goes from value to value; it stopped on the Address (and Reference, Name) cells
+// of every row, which cannot be edited.
+void TestRegisterTable::tabSkipsReadOnlyCells()
+{
+    QFETCH(int, fromRow);
+    QFETCH(int, fromValue);
+    QFETCH(bool, back);
+    QFETCH(int, toRow);
+    QFETCH(int, toValue);
+    QWidget window;
+    auto *before = new QLineEdit(&window);
+    auto *table = new RegisterTable(&window);
+    auto *after = new QLineEdit(&window);
+    auto *layout = new QVBoxLayout(&window);
+    layout->addWidget(before);
+    layout->addWidget(table);
+    layout->addWidget(after);
+    table->model()->setValueFormats({RegisterFormat(RegisterType::UInt16), RegisterFormat(RegisterType::Int16)});
+    window.resize(800, 500);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(table->showAnswer(kRosRaoRequest, rosRaoResponse()));
+    const int first = RegisterTableModel::FirstValueColumn;
+    QVERIFY(table->model()->flags(table->model()->index(0, first)) & Qt::ItemIsEditable);
+    QVERIFY(!(table->model()->flags(table->model()->index(0, RegisterTableModel::AddressColumn)) & Qt::ItemIsEditable));
+    table->view()->setFocus();
+    table->view()->setCurrentIndex(table->model()->index(fromRow, fromValue < 0 ? RegisterTableModel::AddressColumn : first + fromValue));
+    QTest::keyClick(QApplication::focusWidget(), back ? Qt::Key_Backtab : Qt::Key_Tab, back ? Qt::ShiftModifier : Qt::NoModifier);
+    if (toRow < 0) {
+        QVERIFY(!table->view()->hasFocus());
+        return;
+    }
+    const QModelIndex current = table->view()->currentIndex();
+    QCOMPARE(current.row(), toRow);
+    QCOMPARE(current.column(), first + toValue);
 }
 
 void TestRegisterTable::refusedEditIsShown()

@@ -5,6 +5,7 @@
 #include "link/tapfields.h"
 #include "guitestsupport.h"
 #include "shell/mainwindow.h"
+#include "shell/windowlayout.h"
 #include "compose/rawrequesteditor.h"
 #include "compose/requestcomposer.h"
 #include "compose/savedrequests.h"
@@ -63,6 +64,8 @@ private Q_SLOTS:
     void recentFilesKeepTheLastEight();
     void savingKeepsWhatTheWindowDoesNotShow();
     void layoutIsRestored();
+    void layoutIsRememberedPerScreenSize_data();
+    void layoutIsRememberedPerScreenSize();
     void versionOneSavedSaysUpgraded();
     void watchesKeptWhenSaved();
     void tapKeptWhenSaved();
@@ -370,6 +373,34 @@ void TestSessionMenu::tapKeptWhenSaved()
     QVERIFY(bar->isTap());
     QVERIFY(window.session()->open(plain));
     QVERIFY(!bar->isTap());
+void TestSessionMenu::layoutIsRememberedPerScreenSize_data()
+{
+    QTest::addColumn<QSize>("screen");
+    QTest::addColumn<QSize>("restored");
+    QTest::newRow("the monitor's") << QSize(1920, 1080) << QSize(1600, 1000);
+    QTest::newRow("the laptop's") << QSize(1366, 768) << QSize(1200, 700);
+    QTest::newRow("a new screen: the last saved") << QSize(2560, 1440) << QSize(1200, 700);
+}
+
+// Issue 31: the layout is remembered per screen size; a screen never used gets the last one.
+void TestSessionMenu::layoutIsRememberedPerScreenSize()
+{
+    QFETCH(QSize, screen);
+    QFETCH(QSize, restored);
+    QSettings().remove(QStringLiteral("window"));
+    for (const auto &[on, size] : {std::pair{QSize(1920, 1080), QSize(1600, 1000)}, std::pair{QSize(1366, 768), QSize(1200, 700)}}) {
+        MainWindow window;
+        window.resize(size);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        WindowLayout::save(window, on);
+    }
+    MainWindow reopened;
+    QVERIFY(WindowLayout::restore(reopened, screen).geometry);
+    reopened.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&reopened));
+    QCOMPARE(reopened.size(), restored);
+    QSettings().remove(QStringLiteral("window"));
 }
 
 void TestSessionMenu::layoutIsRestored()

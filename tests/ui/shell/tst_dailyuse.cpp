@@ -23,8 +23,10 @@
 #include "sim/embeddedsimulator.h"
 #include "sim/simulatorhost.h"
 #include "sim/simtrafficrecord.h"
+#include "common/lastfolder.h"
 
 #include <QtCore/QFile>
+#include <QtCore/QTimer>
 #include <QtCore/QSettings>
 #include <QtWidgets/QSpinBox>
 #include <QtCore/QJsonArray>
@@ -35,6 +37,8 @@
 #include <QtWidgets/QAbstractButton>
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QDockWidget>
+#include <QtWidgets/QFileDialog>
+#include <QtWidgets/QMenuBar>
 #include <QtWidgets/QGroupBox>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QLineEdit>
@@ -89,6 +93,9 @@ private Q_SLOTS:
     void smallScreens_data();
     void smallScreens();
     void resavedExampleIsWhatWasLoaded();
+    void fileDialogsOpenWhereTheUserWas_data();
+    void fileDialogsOpenWhereTheUserWas();
+    void openSessionDialogStartsInTheLastFolder();
 };
 
 void TestDailyUse::initTestCase()
@@ -299,6 +306,8 @@ void TestDailyUse::laterStartsPutBackTheLastTarget()
         MainWindow always;
         QVERIFY(always.startAsConfigured(kAnyPort));
         QVERIFY(always.simulator()->isRunning());
+        // Issue 31: the poll interval comes back when every start is on the simulator too.
+        QCOMPARE(always.composer()->intervalSpin()->value(), 250);
     }
     QSettings().remove(QLatin1String(PreferencesDialog::kStartSimulatorKey));
 }
@@ -470,6 +479,75 @@ void TestDailyUse::smallScreens()
                  qPrintable(QStringLiteral("%1 bytes a line").arg(response->hexView()->bytesPerLine())));
     // The docks keep a usable share: the traffic list is not squeezed out.
     QVERIFY(window.trafficMonitor()->view()->viewport()->height() >= 60);
+}
+
+void TestDailyUse::fileDialogsOpenWhereTheUserWas_data()
+{
+    QTest::addColumn<QStringList>("picked"); // what the user picked, in order ("" cancelled); relative to a temporary folder
+    QTest::addColumn<QString>("suggested");
+    QTest::addColumn<QString>("opensAt"); // relative to the temporary folder; "~" the home folder
+    QTest::newRow("nothing picked yet") << QStringList{} << QStringLiteral("traffic.csv") << QStringLiteral("~/traffic.csv");
+    QTest::newRow("a file picked") << QStringList{QStringLiteral("bench/a.json")} << QStringLiteral("traffic.csv")
+                                   << QStringLiteral("bench/traffic.csv");
+    QTest::newRow("a folder picked") << QStringList{QStringLiteral("bench")} << QString() << QStringLiteral("bench");
+    QTest::newRow("a save as, new file") << QStringList{QStringLiteral("bench/new.mbscope.json")} << QString()
+                                         << QStringLiteral("bench");
+    QTest::newRow("cancelled after") << QStringList{QStringLiteral("bench/a.json"), QString()} << QString()
+                                     << QStringLiteral("bench");
+    QTest::newRow("the last pick wins") << QStringList{QStringLiteral("bench/a.json"), QStringLiteral("a.json")}
+                                        << QString() << QString();
+    QTest::newRow("folder gone since") << QStringList{QStringLiteral("gone/a.json")} << QString() << QStringLiteral("~");
+}
+
+// Issue 31: file dialogs open where the user last picked or saved a file, in any of them and
+// across starts (QSettings), not in the working directory.
+void TestDailyUse::fileDialogsOpenWhereTheUserWas()
+{
+    QFETCH(QStringList, picked);
+    QFETCH(QString, suggested);
+    QFETCH(QString, opensAt);
+    QSettings().remove(QLatin1String(LastFolder::kSettingsKey));
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkpath(QStringLiteral("bench")));
+    for (const QString &path : std::as_const(picked))
+        LastFolder::remember(path.isEmpty() ? QString() : dir.filePath(path));
+    if (picked.contains(QStringLiteral("gone/a.json")))
+        QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("gone"))));
+    const QString expected = opensAt.startsWith(QLatin1Char('~'))
+        ? QDir::cleanPath(QDir::homePath() + opensAt.mid(1))
+        : QDir::cleanPath(dir.filePath(opensAt));
+    QCOMPARE(QDir::cleanPath(LastFolder::start(suggested)), expected);
+    QSettings().remove(QLatin1String(LastFolder::kSettingsKey));
+}
+
+// The File menu's Open session dialog of an untitled session opens in the folder last used.
+void TestDailyUse::openSessionDialogStartsInTheLastFolder()
+{
+    QTemporaryDir dir;
+    LastFolder::remember(dir.filePath(QStringLiteral("elsewhere.pcapng")));
+    MainWindow window;
+    window.show();
+    QAction *open = nullptr;
+    for (QAction *menu : window.menuBar()->actions()) {
+        for (QAction *a : menu->menu()->actions()) {
+            if (a->shortcut() == QKeySequence(QKeySequence::Open))
+                open = a;
+        }
+    }
+    QVERIFY(open);
+    QString shownDirectory;
+    QTimer::singleShot(0, &window, [&] {
+        QTRY_VERIFY(QApplication::activeModalWidget() || window.findChild<QFileDialog *>());
+        auto *dialog = window.findChild<QFileDialog *>();
+        if (!dialog)
+            dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        shownDirectory = dialog->directory().absolutePath();
+        dialog->reject();
+    });
+    open->trigger();
+    QCOMPARE(QDir::cleanPath(shownDirectory), QDir::cleanPath(dir.path()));
+    QSettings().remove(QLatin1String(LastFolder::kSettingsKey));
 }
 
 QTEST_MAIN(TestDailyUse)

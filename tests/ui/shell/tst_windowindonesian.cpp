@@ -56,7 +56,7 @@ const QSet<QString> &keptEnglish()
         QStringLiteral("ON"), QStringLiteral("OFF"), QStringLiteral("bit"), QStringLiteral("broadcast"),
         // Engineering words Indonesian engineers write in English (and spelled the same in Indonesian:
         // data, status, format, normal, valid, unit, port, link).
-        QStringLiteral("Hex"), QStringLiteral("Offset"), QStringLiteral("Field"), QStringLiteral("Frame"),
+        QStringLiteral("Hex"), QStringLiteral("Offset"), QStringLiteral("Frame"),
         QStringLiteral("Framing"), QStringLiteral("Data"), QStringLiteral("Status"), QStringLiteral("Output"),
         QStringLiteral("Event"), QStringLiteral("Record"), QStringLiteral("Polling"),
         // Not Replay, Sweep or exception: try-out 8 (item 16) read the Analysis dock's "Exception",
@@ -283,30 +283,6 @@ QStringList englishLeft(const QList<VisibleText> &texts, const QSet<QString> &so
     return problems;
 }
 
-// Menus whose &-accelerators repeat a letter: the second one cannot be reached with Alt.
-QStringList repeatedAccelerators(const QString &where, const QList<QAction *> &actions)
-{
-    QStringList problems;
-    QHash<QChar, QString> used;
-    static const QRegularExpression accelerator(QStringLiteral("&([^&\\s])"));
-    for (QAction *a : actions) {
-        if (a->isSeparator() || !a->isVisible())
-            continue;
-        const QRegularExpressionMatch m = accelerator.match(QString(a->text()).remove(QStringLiteral("&&")));
-        if (m.hasMatch()) {
-            const QChar key = m.captured(1).at(0).toLower();
-            if (used.contains(key))
-                problems << QStringLiteral("%1: '%2' and '%3' share the accelerator %4")
-                                .arg(where, used.value(key), a->text(), QString(key));
-            else
-                used.insert(key, a->text());
-        }
-        if (QMenu *sub = a->menu())
-            problems << repeatedAccelerators(where + QStringLiteral(" > ") + normalized(a->text()), sub->actions());
-    }
-    return problems;
-}
-
 } // namespace
 
 class TestWindowIndonesian : public QObject
@@ -403,7 +379,7 @@ void TestWindowIndonesian::windowHasNoEnglishLeft()
 void TestWindowIndonesian::menuAcceleratorsAreUnique()
 {
     MainWindow window;
-    const QStringList problems = repeatedAccelerators(QStringLiteral("menu bar"), window.menuBar()->actions());
+    const QStringList problems = guitest::repeatedAccelerators(QStringLiteral("menu bar"), window.menuBar()->actions());
     QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
 }
 
