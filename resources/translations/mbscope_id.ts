@@ -531,7 +531,7 @@
         <translation>Tidak diuji: %1</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>Stopping after the check that runs now…</source>
         <translation>Berhenti setelah pemeriksaan yang sedang berjalan…</translation>
     </message>
@@ -653,7 +653,7 @@
         <translation>ASCII (serial)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+48"/>
         <source>host name or IP address</source>
         <translation>nama host atau alamat IP</translation>
     </message>
@@ -956,7 +956,7 @@
         <translation>Dengan permintaan yang cocok, jumlah byte, nilai yang dikembalikan dan ID transaksi respons diperiksa terhadap yang diminta</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>Frame:</source>
         <translation>Frame:</translation>
     </message>
@@ -3293,12 +3293,12 @@
 <context>
     <name>mbscope::LinkStatusWidget</name>
     <message>
-        <location filename="../../ui/shell/linkstatuswidget.cpp" line="+18"/>
+        <location filename="../../ui/shell/linkstatuswidget.cpp" line="+19"/>
         <source>What the watches of the Watches tab sent and received on their own links</source>
         <translation>Yang dikirim dan diterima pantauan di tab Pantauan lewat link mereka sendiri</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+30"/>
         <source>Not connected</source>
         <translation>Tidak tersambung</translation>
     </message>
@@ -3318,7 +3318,7 @@
         <translation>Link gagal</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>TX %1 B  RX %2 B  ·  %3</source>
         <translation>TX %1 B  RX %2 B  ·  %3</translation>
     </message>
@@ -3381,7 +3381,7 @@
         <translation>Siap</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>&amp;Answer</source>
         <translation>&amp;Jawaban</translation>
     </message>
@@ -3841,7 +3841,7 @@
 <context>
     <name>mbscope::NoticeBanner</name>
     <message>
-        <location filename="../../ui/common/noticebanner.cpp" line="+29"/>
+        <location filename="../../ui/common/noticebanner.cpp" line="+46"/>
         <source>Dismiss</source>
         <translation>Tutup</translation>
     </message>
@@ -4270,7 +4270,7 @@
 <context>
     <name>mbscope::RawRequestEditor</name>
     <message>
-        <location filename="../../ui/compose/rawrequesteditor.cpp" line="+42"/>
+        <location filename="../../ui/compose/rawrequesteditor.cpp" line="+43"/>
         <source>Add MBAP header</source>
         <translation>Tambahkan header MBAP</translation>
     </message>
@@ -4290,7 +4290,7 @@
         <translation>Lengkapi</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+34"/>
         <source>Named requests: choose one to put its bytes in the editor</source>
         <translation>Permintaan bernama: pilih salah satu untuk menaruh byte-nya di editor</translation>
     </message>
@@ -4325,12 +4325,12 @@
         <translation>Ters&amp;impan:</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+108"/>
         <source>not hex</source>
         <translation>bukan hex</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>1 byte</source>
         <translation>1 byte</translation>
     </message>
@@ -4380,7 +4380,7 @@
         <translation>Frame %1: unit %2, %3, %4 %5 salah (seharusnya %6); dikirim sesuai ketikan.</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Not a whole MBAP frame (%1). Send it as it is, or use “%2” if it is a PDU.</source>
         <translation>Bukan frame MBAP yang utuh (%1). Kirim apa adanya, atau pakai “%2” jika ini PDU.</translation>
     </message>
@@ -6214,7 +6214,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SessionController</name>
     <message>
-        <location filename="../../ui/session/sessioncontroller.cpp" line="+40"/>
+        <location filename="../../ui/session/sessioncontroller.cpp" line="+41"/>
         <source>Unsaved changes</source>
         <translation>Perubahan belum disimpan</translation>
     </message>
