@@ -373,6 +373,8 @@ void TestSessionMenu::tapKeptWhenSaved()
     QVERIFY(bar->isTap());
     QVERIFY(window.session()->open(plain));
     QVERIFY(!bar->isTap());
+}
+
 void TestSessionMenu::layoutIsRememberedPerScreenSize_data()
 {
     QTest::addColumn<QSize>("screen");
