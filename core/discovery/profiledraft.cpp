@@ -1,5 +1,7 @@
 #include "profiledraft.h"
 
+#include "profile/profiletablereader.h"
+
 #include <QtCore/QDateTime>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
@@ -14,16 +16,6 @@ namespace {
 QString hexCode(int code)
 {
     return QStringLiteral("0x%1").arg(code, 2, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x"));
-}
-
-const char *tableKey(quint8 function)
-{
-    switch (function) {
-    case 1: return "coils";
-    case 2: return "discrete";
-    case 4: return "input";
-    default: return "holding";
-    }
 }
 
 // Functions the simulator implements (docs/profiles.md, units: functions): a draft names no other.
@@ -55,7 +47,7 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
             entries.append(entry);
         }
         if (!entries.isEmpty())
-            tables.insert(QLatin1String(tableKey(t.function)), entries);
+            tables.insert(QLatin1String(ProfileTableReader::tableKey(readTable(t.function))), entries);
     }
     for (const FunctionSupport &s : map.functions) {
         if (s.known() && simulatorImplements(s.function) && !functions.contains(s.function))

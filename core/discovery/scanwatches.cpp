@@ -3,6 +3,8 @@
 #include "registermap.h"
 #include "unitscansettings.h"
 
+#include "profile/profiletablereader.h"
+
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
@@ -11,26 +13,16 @@ namespace mbscope {
 
 namespace {
 
-const char *tableWord(quint8 function)
-{
-    switch (function) {
-    case 1: return "coils";
-    case 2: return "discrete";
-    case 4: return "input";
-    default: return "holding";
-    }
-}
-
 WatchDefinition watch(const QString &target, quint8 unit, quint8 function, quint16 address, quint16 quantity)
 {
     WatchDefinition w;
-    w.name = QStringLiteral("unit%1-%2-%3").arg(unit).arg(QLatin1String(tableWord(function))).arg(address);
+    w.name = QStringLiteral("unit%1-%2-%3").arg(unit).arg(QLatin1String(ProfileTableReader::tableKey(readTable(function)))).arg(address);
     w.target = target;
     w.unit = unit;
     w.function = function;
     w.address = address;
     w.quantity = quantity;
-    w.profileBlock = QStringLiteral("scan/unit %1/%2 %3").arg(unit).arg(QLatin1String(tableWord(function))).arg(address);
+    w.profileBlock = QStringLiteral("scan/unit %1/%2 %3").arg(unit).arg(QLatin1String(ProfileTableReader::tableKey(readTable(function)))).arg(address);
     return w;
 }
 

@@ -2,6 +2,8 @@
 
 #include "protocol/registervalue.h"
 
+#include "profile/profiletablereader.h"
+
 #include <QtCore/QDateTime>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
@@ -14,16 +16,6 @@
 namespace mbscope {
 
 namespace {
-
-const char *tableKey(quint8 function)
-{
-    switch (function) {
-    case 1: return "coils";
-    case 2: return "discrete";
-    case 4: return "input";
-    default: return "holding";
-    }
-}
 
 QString entryName(const ValueGuess &g)
 {
@@ -98,7 +90,7 @@ QByteArray InferenceDraft::toJson(const QList<ValueGuess> &guesses, quint8 unit,
     QJsonObject tableObject;
     QJsonArray functions;
     for (auto it = tables.cbegin(); it != tables.cend(); ++it) {
-        tableObject.insert(QLatin1String(tableKey(it.key())), it.value());
+        tableObject.insert(QLatin1String(ProfileTableReader::tableKey(readTable(it.key()))), it.value());
         functions.append(QStringLiteral("0x%1").arg(int(it.key()), 2, 16, QLatin1Char('0')));
     }
     const QJsonObject unitObject{{QStringLiteral("id"), int(unit)},

@@ -10,28 +10,11 @@ namespace mbscope {
 
 namespace {
 
-// YAML double-quoted scalar.
-QString yamlString(const QString &s)
-{
-    QString q = s;
-    q.replace(QLatin1String("\\"), QLatin1String("\\\\")).replace(QLatin1String("\""), QLatin1String("\\\""));
-    return QLatin1Char('"') + q + QLatin1Char('"');
-}
-
 QString dataType(const MapPoint &p)
 {
     if (p.isString())
         return QStringLiteral("string");
-    switch (p.format.type()) {
-    case RegisterType::Int16: return QStringLiteral("int16");
-    case RegisterType::UInt32: return QStringLiteral("uint32");
-    case RegisterType::Int32: return QStringLiteral("int32");
-    case RegisterType::UInt64: return QStringLiteral("uint64");
-    case RegisterType::Int64: return QStringLiteral("int64");
-    case RegisterType::Float32: return QStringLiteral("float32");
-    case RegisterType::Float64: return QStringLiteral("float64");
-    default: return QStringLiteral("uint16");
-    }
+    return p.numberType();
 }
 
 // Home Assistant's swap: byte (each register's bytes), word (the registers), word_byte (both).
@@ -70,17 +53,17 @@ QString HomeAssistantWriter::write(const MapExportInput &input)
     const int seconds = std::max(1, (input.intervalMs + 999) / 1000);
     QString out;
     out += QStringLiteral("# Home Assistant modbus for %1, written by mbscope export-map from %2\n").arg(input.name, input.source);
-    out += QStringLiteral("modbus:\n  - name: %1\n").arg(yamlString(hub));
+    out += QStringLiteral("modbus:\n  - name: %1\n").arg(MapPoint::yamlQuoted(hub));
     const LinkUrl &e = input.endpoint;
     if (e.isSerial()) {
         out += QStringLiteral("    type: serial\n    method: rtu\n    port: %1\n    baudrate: %2\n    bytesize: %3\n"
                               "    parity: %4\n    stopbits: %5\n")
-                   .arg(yamlString(e.serial.device)).arg(e.serial.baud).arg(e.serial.dataBits)
+                   .arg(MapPoint::yamlQuoted(e.serial.device)).arg(e.serial.baud).arg(e.serial.dataBits)
                    .arg(QChar::fromLatin1(e.serial.parity)).arg(e.serial.stopBits);
     } else {
         out += QStringLiteral("    type: %1\n    host: %2\n    port: %3\n")
                    .arg(e.kind == LinkKind::RtuTcp ? QStringLiteral("rtuovertcp") : QStringLiteral("tcp"),
-                        yamlString(e.host))
+                        MapPoint::yamlQuoted(e.host))
                    .arg(e.port);
     }
     out += QStringLiteral("    timeout: %1\n").arg(std::max(1, (input.timeoutMs + 999) / 1000));
@@ -91,7 +74,7 @@ QString HomeAssistantWriter::write(const MapExportInput &input)
         if (p.isBit()) {
             binary += QStringLiteral("      - name: %1\n        unique_id: %2\n        device_address: %3\n"
                                      "        address: %4\n        input_type: %5\n        scan_interval: %6\n")
-                          .arg(yamlString(p.label), yamlString(hub + QLatin1Char('_') + p.name))
+                          .arg(MapPoint::yamlQuoted(p.label), MapPoint::yamlQuoted(hub + QLatin1Char('_') + p.name))
                           .arg(int(p.unitId)).arg(p.address)
                           .arg(p.table == SimTable::Coils ? QStringLiteral("coil") : QStringLiteral("discrete_input"))
                           .arg(seconds);
@@ -99,7 +82,7 @@ QString HomeAssistantWriter::write(const MapExportInput &input)
         }
         QString s = QStringLiteral("      - name: %1\n        unique_id: %2\n        device_address: %3\n"
                                    "        address: %4\n        input_type: %5\n        data_type: %6\n")
-                        .arg(yamlString(p.label), yamlString(hub + QLatin1Char('_') + p.name))
+                        .arg(MapPoint::yamlQuoted(p.label), MapPoint::yamlQuoted(hub + QLatin1Char('_') + p.name))
                         .arg(int(p.unitId)).arg(p.address)
                         .arg(p.table == SimTable::HoldingRegisters ? QStringLiteral("holding") : QStringLiteral("input"),
                              dataType(p));
@@ -109,7 +92,7 @@ QString HomeAssistantWriter::write(const MapExportInput &input)
             s += QStringLiteral("        swap: %1\n        scale: %2\n        offset: %3\n        precision: %4\n")
                      .arg(swap(p), number(p.scale), number(p.offset)).arg(precision(p));
             if (!p.unit.isEmpty())
-                s += QStringLiteral("        unit_of_measurement: %1\n").arg(yamlString(p.unit));
+                s += QStringLiteral("        unit_of_measurement: %1\n").arg(MapPoint::yamlQuoted(p.unit));
             if (p.kind == ValueKind::Counter)
                 s += QStringLiteral("        state_class: total_increasing\n");
             else if (p.kind == ValueKind::Measurement)

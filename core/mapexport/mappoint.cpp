@@ -129,4 +129,25 @@ QList<MapPoint> MapPoint::fromProfile(const DeviceProfile &profile, std::optiona
     return points;
 }
 
+QString MapPoint::numberType() const
+{
+    switch (format.type()) {
+    case RegisterType::Int16: return QStringLiteral("int16");
+    case RegisterType::UInt32: return QStringLiteral("uint32");
+    case RegisterType::Int32: return QStringLiteral("int32");
+    case RegisterType::UInt64: return QStringLiteral("uint64");
+    case RegisterType::Int64: return QStringLiteral("int64");
+    case RegisterType::Float32: return QStringLiteral("float32");
+    case RegisterType::Float64: return QStringLiteral("float64");
+    default: return QStringLiteral("uint16");
+    }
+}
+
+QString MapPoint::yamlQuoted(const QString &s)
+{
+    QString q = s;
+    q.replace(QLatin1String("\\"), QLatin1String("\\\\")).replace(QLatin1String("\""), QLatin1String("\\\""));
+    return QLatin1Char('"') + q + QLatin1Char('"');
+}
+
 } // namespace mbscope

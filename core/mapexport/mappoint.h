@@ -43,6 +43,11 @@ struct MapPoint {
     [[nodiscard]] quint8 readFunction() const;
     // "coils", "discrete", "input", "holding".
     [[nodiscard]] QString tableKey() const;
+    // The number type as YAML configs name it: "int16", "uint32", "float32"... ("uint16" for
+    // u16 and anything not numeric: callers handle strings and bits first).
+    [[nodiscard]] QString numberType() const;
+    // A YAML double-quoted scalar of s (Home Assistant's and modbus_exporter's files).
+    [[nodiscard]] static QString yamlQuoted(const QString &s);
 
     // The engineering value of the point in registers (its own, wire order; bits: one 0/1):
     // raw * scale + offset; nullopt for the "not implemented" sentinel and for strings.

@@ -6,27 +6,11 @@ namespace mbscope {
 
 namespace {
 
-QString yamlString(const QString &s)
-{
-    QString q = s;
-    q.replace(QLatin1String("\\"), QLatin1String("\\\\")).replace(QLatin1String("\""), QLatin1String("\\\""));
-    return QLatin1Char('"') + q + QLatin1Char('"');
-}
-
 QString dataType(const MapPoint &p)
 {
     if (p.isBit())
         return QStringLiteral("bool");
-    switch (p.format.type()) {
-    case RegisterType::Int16: return QStringLiteral("int16");
-    case RegisterType::UInt32: return QStringLiteral("uint32");
-    case RegisterType::Int32: return QStringLiteral("int32");
-    case RegisterType::UInt64: return QStringLiteral("uint64");
-    case RegisterType::Int64: return QStringLiteral("int64");
-    case RegisterType::Float32: return QStringLiteral("float32");
-    case RegisterType::Float64: return QStringLiteral("float64");
-    default: return QStringLiteral("uint16");
-    }
+    return p.numberType();
 }
 
 // modbus_exporter's endianness of the bytes 1 2 3 4: big (1 2 3 4), little (4 3 2 1),
@@ -52,16 +36,16 @@ QString ModbusExporterWriter::write(const MapExportInput &input)
                .arg(input.name, input.source, input.endpoint.host)
                .arg(input.endpoint.port);
     out += QStringLiteral("modules:\n  - name: %1\n    protocol: \"tcp/ip\"\n    metrics:\n")
-               .arg(yamlString(MapPoint::slug(input.name)));
+               .arg(MapPoint::yamlQuoted(MapPoint::slug(input.name)));
     for (const MapPoint &p : input.points) {
         if (p.isString()) {
             out += QStringLiteral("      # %1 (%2 %3): a string, which modbus_exporter cannot read\n")
                        .arg(p.name, p.tableKey()).arg(p.address);
             continue;
         }
-        out += QStringLiteral("      - name: %1\n").arg(yamlString(p.name));
+        out += QStringLiteral("      - name: %1\n").arg(MapPoint::yamlQuoted(p.name));
         out += QStringLiteral("        help: %1\n")
-                   .arg(yamlString(p.description.isEmpty() ? p.label + (p.unit.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(p.unit))
+                   .arg(MapPoint::yamlQuoted(p.description.isEmpty() ? p.label + (p.unit.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(p.unit))
                                                            : p.description));
         if (input.points.constFirst().unitId != p.unitId || p.unitId != 1)
             out += QStringLiteral("        # unit %1: scrape with sub_target=%1\n").arg(int(p.unitId));
@@ -85,8 +69,8 @@ QString ModbusExporterWriter::write(const MapExportInput &input)
                 const QString bit = MapPoint::slug(it.value()).isEmpty() ? QString::number(it.key()) : MapPoint::slug(it.value());
                 out += QStringLiteral("      - name: %1\n        help: %2\n        address: %3%4\n        dataType: bool\n"
                                       "        bitOffset: %5\n        metricType: gauge\n")
-                           .arg(yamlString(p.name + QLatin1Char('_') + bit),
-                                yamlString(QStringLiteral("%1, bit %2: %3").arg(p.label).arg(it.key()).arg(it.value())))
+                           .arg(MapPoint::yamlQuoted(p.name + QLatin1Char('_') + bit),
+                                MapPoint::yamlQuoted(QStringLiteral("%1, bit %2: %3").arg(p.label).arg(it.key()).arg(it.value())))
                            .arg(int(p.readFunction()))
                            .arg(p.address, 5, 10, QLatin1Char('0'))
                            .arg(it.key());

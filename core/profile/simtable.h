@@ -15,6 +15,18 @@ enum class SimTable : quint8 {
 
 inline constexpr int SimTableCount = 4;
 
+// The table a read function reads: 01 coils, 02 discrete inputs, 04 input registers, else
+// (03, 17, 18) holding registers.
+[[nodiscard]] constexpr SimTable readTable(quint8 function)
+{
+    switch (function) {
+    case 0x01: return SimTable::Coils;
+    case 0x02: return SimTable::DiscreteInputs;
+    case 0x04: return SimTable::InputRegisters;
+    default: return SimTable::HoldingRegisters;
+    }
+}
+
 [[nodiscard]] constexpr bool isBitTable(SimTable table)
 {
     return table == SimTable::Coils || table == SimTable::DiscreteInputs;
