@@ -250,7 +250,7 @@ void TapFields::remember() const
 
 void TapFields::setRunning(bool running)
 {
-    for (QWidget *w : std::initializer_list<QWidget *>{m_listenEdit, m_routesEdit, m_readOnlyCheck, m_noAnswerCombo, m_retriesSpin})
+    for (QWidget *w : std::initializer_list<QWidget *>{m_listenEdit, m_routesEdit, m_readOnlyCheck, m_noAnswerCombo, m_retriesSpin, m_faultsEdit})
         w->setEnabled(!running);
     m_refusalCombo->setEnabled(!running && m_readOnlyCheck->isChecked());
     if (running) {

@@ -142,6 +142,7 @@ void TestTapWindow::tapInTheWindow()
     const QString endpoint = link->tap()->endpoints().value(0);
     const QString device = window.simulator()->started().url.toString();
     QVERIFY(!bar->tapFields()->listenEdit()->isEnabled()); // locked while the tap runs
+    QVERIFY(!bar->tapFields()->faultsEdit()->isEnabled());
     QVERIFY(!window.composer()->findChild<QPushButton *>(QStringLiteral("sendButton"))->isEnabled());
     QVERIFY2(window.banner()->text().contains(endpoint), qPrintable(window.banner()->text()));
 
