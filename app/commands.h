@@ -3,7 +3,7 @@
 // The dispatcher: which subcommand runs, or the window. What subcommands share is cli.h.
 // commands.cpp is compiled into both executables, `mbscope` (MBSCOPE_LIGHT) and mbscope-full.
 
-#include "cli.h"
+#include "common/cli.h"
 
 #include <QtCore/QList>
 #include <QtCore/QString>

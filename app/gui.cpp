@@ -1,7 +1,7 @@
 // The window: what `mbscope` runs without a subcommand.
 #include "commands.h"
 #include "instancehandover.h"
-#include "interruptwatcher.h"
+#include "common/interruptwatcher.h"
 
 #include "link/linkcontroller.h"
 #include "compose/requestcomposer.h"

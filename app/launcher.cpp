@@ -1,8 +1,8 @@
 #include "launcher.h"
 
-#include "cli.h"
+#include "common/cli.h"
 #include "commands.h"
-#include "histogramplot.h"
+#include "plot/histogramplot.h"
 
 #include <cerrno>
 #include <cstdio>

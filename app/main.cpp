@@ -1,7 +1,7 @@
 // mbscope-full: the window when run without a subcommand, every headless subcommand otherwise.
 // `mbscope` (lightmain.cpp) execs it for what it does not run itself (launcher.h).
 #include "commands.h"
-#include "histogramplot.h"
+#include "plot/histogramplot.h"
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QStringList>

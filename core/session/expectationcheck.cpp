@@ -60,7 +60,7 @@ QString ExpectationCheck::requestProblem(const Transaction &t, Framing framing, 
     // A read to unit 0 on a serial framing is a well-formed broadcast that nobody can answer.
     if (const QString why = BroadcastRule::broadcastReadProblem(t.request, framing); errors == 1 && !why.isEmpty())
         return QString(kUnanswerable) + why;
-    // send says the same of one frame (app/transactionreport.cpp calls this).
+    // send says the same of one frame (app/common/transactionreport.cpp calls this).
     return QStringLiteral("the request itself is malformed, %1 error(s) (%2)").arg(errors).arg(first);
 }
 

@@ -30,7 +30,9 @@ QString folderOf(const QString &path)
 // The include roots of each part, in the order its target hands them to the compiler.
 QStringList rootsOf(const QString &part)
 {
-    if (part == QLatin1String("ui") || part == QLatin1String("app"))
+    if (part == QLatin1String("app"))
+        return {QStringLiteral("app"), QStringLiteral("ui"), QStringLiteral("core")};
+    if (part == QLatin1String("ui"))
         return {QStringLiteral("ui"), QStringLiteral("core")};
     return {QStringLiteral("core")};
 }

@@ -202,7 +202,7 @@ void TestLayers::checkerCatches_data()
         "core/profile (layer 4) includes only lower layers, and core/sim is layer 5");
     row("core includes ui", "core/engine/made.cpp", "#include \"common/tablecsv.h\"",
         "core includes nothing from ui/");
-    row("core includes app", "core/session/made.cpp", "#include \"../../app/cli.h\"", "core includes nothing from app/");
+    row("core includes app", "core/session/made.cpp", "#include \"../../app/common/cli.h\"", "core includes nothing from app/");
     row("core includes QtWidgets", "core/sim/made.cpp", "#include <QtWidgets/QWidget>",
         "core uses QtCore, QtNetwork, QtSerialPort, QtSerialBus and QtQml only, not QtWidgets");
     row("core includes QtGui", "core/protocol/made.h", "#include <QtGui/QColor>",
@@ -233,7 +233,7 @@ void TestLayers::checkerCatches_data()
     row("ui/link includes ui/shell", "ui/link/made.cpp", "#include \"shell/mainwindow.h\"",
         "ui/link (tier 1) includes only wings of a lower tier, and ui/shell is tier 3");
     row("ui wing with no tier", "ui/newwing/made.cpp", "#include \"common/tablecsv.h\"", "ui/newwing has no tier");
-    row("ui includes app", "ui/shell/made.cpp", "#include \"../../app/cli.h\"", "ui includes nothing from app/");
+    row("ui includes app", "ui/shell/made.cpp", "#include \"../../app/common/cli.h\"", "ui includes nothing from app/");
     row("app includes ui unguarded", "app/made.cpp", "#include \"common/tablecsv.h\"",
         "app includes ui/ only in gui.cpp or under #ifdef MBSCOPE_HAVE_UI");
     row("app includes QtWidgets unguarded", "app/made.cpp", "#include <QtWidgets/QApplication>",
@@ -251,7 +251,7 @@ void TestLayers::checkerCatches_data()
         << 4 << QStringLiteral("app includes ui/ only in gui.cpp") << QStringList();
     QTest::newRow("app: #ifndef of the guard")
         << QStringLiteral("app/made.cpp")
-        << QStringLiteral("#include \"cli.h\"\n#ifndef MBSCOPE_HAVE_UI\n#include <QtGui/QColor>\n#endif\n") << 3
+        << QStringLiteral("#include \"common/cli.h\"\n#ifndef MBSCOPE_HAVE_UI\n#include <QtGui/QColor>\n#endif\n") << 3
         << QStringLiteral("app uses QtGui only in gui.cpp") << QStringList();
     QTest::newRow("app: after the guard closed")
         << QStringLiteral("app/made.cpp")

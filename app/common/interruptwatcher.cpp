@@ -1,0 +1,113 @@
+#include "common/interruptwatcher.h"
+
+#include <QtCore/QSocketNotifier>
+
+#ifdef Q_OS_UNIX
+#include <cerrno>
+#include <fcntl.h>
+#include <signal.h>
+#include <unistd.h>
+#endif
+
+namespace mbscope::app {
+
+#ifdef Q_OS_UNIX
+
+namespace {
+
+int s_pipe[2] = {-1, -1};
+struct sigaction s_oldInt;
+struct sigaction s_oldTerm;
+struct sigaction s_oldHup;
+
+void onSignal(int number)
+{
+    const int saved = errno;
+    const char byte = char(number);
+    // Nothing to do when the pipe is full: the bytes already there say it.
+    [[maybe_unused]] const ssize_t n = ::write(s_pipe[1], &byte, 1);
+    errno = saved;
+}
+
+} // namespace
+
+InterruptWatcher::InterruptWatcher(QObject *parent)
+    : QObject(parent)
+{
+    if (::pipe2(s_pipe, O_CLOEXEC | O_NONBLOCK) != 0) {
+        s_pipe[0] = s_pipe[1] = -1;
+        return; // Ctrl-C then ends the process as usual; nothing worse
+    }
+    struct sigaction action = {};
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    // SA_RESETHAND: the default action is back once the handler has run, for a second Ctrl-C.
+    action.sa_flags = SA_RESTART | SA_RESETHAND;
+    sigaction(SIGINT, &action, &s_oldInt);
+    sigaction(SIGTERM, &action, &s_oldTerm);
+    m_notifier = new QSocketNotifier(qintptr(s_pipe[0]), QSocketNotifier::Read, this);
+    connect(m_notifier, &QSocketNotifier::activated, this, &InterruptWatcher::onReadable);
+}
+
+InterruptWatcher::~InterruptWatcher()
+{
+    if (s_pipe[0] < 0)
+        return;
+    delete m_notifier;
+    sigaction(SIGINT, &s_oldInt, nullptr);
+    sigaction(SIGTERM, &s_oldTerm, nullptr);
+    if (m_hangup)
+        sigaction(SIGHUP, &s_oldHup, nullptr);
+    ::close(s_pipe[0]);
+    ::close(s_pipe[1]);
+    s_pipe[0] = s_pipe[1] = -1;
+}
+
+void InterruptWatcher::watchHangup()
+{
+    if (s_pipe[0] < 0 || m_hangup)
+        return;
+    struct sigaction action = {};
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART; // stays: a service is reloaded many times
+    sigaction(SIGHUP, &action, &s_oldHup);
+    m_hangup = true;
+}
+
+void InterruptWatcher::onReadable()
+{
+    char bytes[16];
+    ssize_t n = 0;
+    bool sawInterrupt = false;
+    bool sawHangup = false;
+    while ((n = ::read(s_pipe[0], bytes, sizeof bytes)) > 0) {
+        for (ssize_t i = 0; i < n; ++i) {
+            const int number = int(quint8(bytes[i]));
+            if (number == SIGHUP) {
+                sawHangup = true;
+            } else {
+                sawInterrupt = true;
+                if (m_signal == 0)
+                    m_signal = number;
+            }
+        }
+    }
+    if (sawHangup && !m_interrupted)
+        Q_EMIT hangup();
+    if (sawInterrupt && !m_interrupted) {
+        m_interrupted = true;
+        Q_EMIT interrupted();
+    }
+}
+
+#else
+
+InterruptWatcher::InterruptWatcher(QObject *parent) : QObject(parent) {}
+InterruptWatcher::~InterruptWatcher() = default;
+void InterruptWatcher::watchHangup() {}
+void InterruptWatcher::onReadable() {}
+
+#endif
+
+} // namespace mbscope::app

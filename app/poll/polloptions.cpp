@@ -1,0 +1,200 @@
+#include "poll/polloptions.h"
+
+#include "time/duration.h"
+#include "plot/histogramplot.h"
+#include "common/outputpath.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QDir>
+#include <QtCore/QFileInfo>
+#include <QtCore/QTextStream>
+
+namespace mbscope::app {
+
+namespace {
+
+// Far more in flight than any gateway buffers; MBAP transaction ids would allow 65536.
+constexpr int kMaxPipeline = 1000;
+
+} // namespace
+
+PollOptions::PollOptions(bool sweep)
+    : m_sweep(sweep)
+    , m_command(sweep ? QStringLiteral("sweep") : QStringLiteral("poll"))
+    , m_requests(RequestOptions::Hex | RequestOptions::Read | RequestOptions::Write, true)
+    , m_interval(QStringList{QStringLiteral("l"), QStringLiteral("interval")},
+                 QStringLiteral("Time from the start of one cycle to the start of the next: 100ms, 1s..., a bare number "
+                                "in milliseconds as mbpoll's -l (default 1s; 0: back to back)."),
+                 QStringLiteral("duration"), QStringLiteral("1s"))
+    , m_intervals(QStringLiteral("intervals"),
+                  QStringLiteral("The poll intervals to run, in order, separated by commas: 100,200,300 (bare numbers "
+                                 "are milliseconds) or 100ms,1s."),
+                  QStringLiteral("list"))
+    , m_count(QStringLiteral("count"),
+              sweep ? QStringLiteral("Cycles (polls) per interval.") : QStringLiteral("Cycles (polls) to run; each cycle "
+                                                                                      "sends every request once."),
+              QStringLiteral("n"))
+    , m_duration(QStringLiteral("duration"),
+                 sweep ? QStringLiteral("How long each interval runs (with or instead of --count): 60s, 5min...")
+                       : QStringLiteral("How long to poll (with or instead of --count): 60s, 5min... Without --count and "
+                                        "--duration the poll runs until Ctrl-C."),
+                 QStringLiteral("duration"))
+    , m_once(QStringList{QStringLiteral("1"), QStringLiteral("once")},
+             QStringLiteral("Poll once: --count 1 (mbpoll's -1)."))
+    , m_pipeline(QStringLiteral("pipeline"),
+                 QStringLiteral("Requests in flight at once, with distinct transaction ids (tcp, tls and udp targets; "
+                                "default 1)."),
+                 QStringLiteral("n"), QStringLiteral("1"))
+    , m_stats(QStringLiteral("stats"),
+              QStringLiteral("Detailed statistics: the latency histogram as text, and what the engine counted "
+                             "(retries, late and unsolicited answers, bytes, connections)%1.")
+                  .arg(sweep ? QStringLiteral("; each interval's full statistics") : QString()))
+    , m_histogram(QStringLiteral("histogram"),
+                  QStringLiteral("Draw the latency histogram into the file: .png, .svg or .pdf by its extension (no display needed)."),
+                  QStringLiteral("file"))
+    , m_json(QStringLiteral("json"), QStringLiteral("Print the statistics as JSON."))
+    , m_print(!sweep)
+    , m_csv(QStringLiteral("csv"),
+            QStringLiteral("Write one CSV row per transaction as it happens: time, item, status, latency_ms, then the values "
+                           "(a column per --format)."),
+            QStringLiteral("file"))
+{
+}
+
+void PollOptions::addTo(QCommandLineParser &parser) const
+{
+    m_target.addTo(parser);
+    m_requests.addTo(parser);
+    parser.addOption(m_sweep ? m_intervals : m_interval);
+    parser.addOptions({m_count, m_duration, m_pipeline, m_stats, m_histogram, m_json});
+    if (!m_sweep)
+        parser.addOptions({m_once, m_csv});
+    m_print.addTo(parser);
+    m_record.addTo(parser);
+}
+
+bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextStream &err) const
+{
+    const QString prefix = QStringLiteral("mbscope %1: ").arg(m_command);
+    if (!m_target.read(parser, m_command, out.target, err))
+        return false;
+
+    if (m_sweep) {
+        if (!parser.isSet(m_intervals)) {
+            err << prefix << "--intervals is required: the poll intervals to compare, e.g. --intervals 100,200,300,400\n";
+            return false;
+        }
+        const DurationListResult list = parseDurationList(parser.value(m_intervals));
+        if (!list.ok) {
+            err << prefix << "--intervals: " << list.error << '\n';
+            return false;
+        }
+        out.settings.intervalsNs = list.ns;
+    } else {
+        const DurationResult interval = parseDuration(parser.value(m_interval));
+        if (!interval.ok()) {
+            err << prefix << "--interval: " << interval.error << '\n';
+            return false;
+        }
+        out.settings.poll.intervalNs = interval.ns;
+        out.settings.intervalsNs = {interval.ns};
+    }
+
+    if (parser.isSet(m_count)) {
+        const IntegerResult count = parseInteger(QStringLiteral("--count"), parser.value(m_count), 1,
+                                                 1'000'000'000LL, QStringLiteral("cycles"));
+        if (!count.ok) {
+            err << prefix << count.error << '\n';
+            return false;
+        }
+        out.settings.poll.count = quint64(count.value);
+    }
+    if (!m_sweep && parser.isSet(m_once)) {
+        if (parser.isSet(m_count) || parser.isSet(m_duration)) {
+            err << prefix << "-1/--once is --count 1: give it without --count and --duration\n";
+            return false;
+        }
+        out.settings.poll.count = 1;
+    }
+    if (parser.isSet(m_duration)) {
+        const DurationResult duration = parseDuration(parser.value(m_duration));
+        if (!duration.ok()) {
+            err << prefix << "--duration: " << duration.error << '\n';
+            return false;
+        }
+        if (duration.ns == 0) {
+            err << prefix << "--duration 0 would poll nothing: give a length such as 60s\n";
+            return false;
+        }
+        out.settings.poll.durationNs = duration.ns;
+    }
+    if (m_sweep && out.settings.poll.count == 0 && out.settings.poll.durationNs == 0) {
+        err << prefix << "give --count (cycles per interval) or --duration (time per interval): without them the "
+            << "first interval would never end\n";
+        return false;
+    }
+
+    const IntegerResult pipeline = parseInteger(QStringLiteral("--pipeline"), parser.value(m_pipeline), 1, kMaxPipeline);
+    if (!pipeline.ok) {
+        err << prefix << pipeline.error << '\n';
+        return false;
+    }
+    const Framing framing = out.target.url.framing();
+    const bool mbap = !out.target.url.delimited.enabled && (framing == Framing::Tcp || framing == Framing::Udp);
+    if (pipeline.value > 1 && !mbap) {
+        err << prefix << "--pipeline " << pipeline.value << ": pipelining needs MBAP transaction ids to tell answers "
+            << "apart (tcp://, tls:// and udp:// targets); " << LinkUrl::schemeName(out.target.url.kind) << "://"
+            << (out.target.url.delimited.enabled ? " with delimited framing" : "")
+            << " carries one request at a time\n";
+        return false;
+    }
+    out.engine.pipelineDepth = int(pipeline.value);
+
+    // --record and --force first: --force is the policy for --histogram and --csv too.
+    if (!m_record.read(parser, m_command, out.record, err,
+                       parser.isSet(m_histogram) || (!m_sweep && parser.isSet(m_csv)) || m_print.frameLogSet(parser)))
+        return false;
+    const bool force = out.record.overwrite;
+    if (!m_print.read(parser, m_command, force, out.print, err))
+        return false;
+    if (parser.isSet(m_histogram)) {
+        if (!HistogramPlot::isAvailable()) {
+            err << prefix << "--histogram: " << HistogramPlot::unavailableReason() << '\n';
+            return false;
+        }
+        const QString path = parser.value(m_histogram);
+        // Said now, not after a 60 s poll: the name, the folder and the format the name says.
+        const QString problem = OutputPath::plotProblem(QStringLiteral("--histogram"), path, force);
+        if (!problem.isEmpty()) {
+            err << prefix << problem << '\n';
+            return false;
+        }
+        out.histogramPath = path;
+    }
+    out.stats = parser.isSet(m_stats);
+    out.json = parser.isSet(m_json);
+    if (out.print.values) {
+        if (out.json) {
+            err << prefix << "--print values writes text lines, --json one JSON document: give one of them (--csv FILE "
+                << "keeps every answer's values with --json)\n";
+            return false;
+        }
+        out.printValues = true;
+    }
+    if (!m_sweep && parser.isSet(m_csv)) {
+        const QString path = parser.value(m_csv);
+        const QString problem = OutputPath::problem(QStringLiteral("--csv"), path, QStringLiteral("--csv poll.csv"), force);
+        if (!problem.isEmpty()) {
+            err << prefix << problem << '\n';
+            return false;
+        }
+        out.csvPath = path;
+    }
+    if (!m_requests.read(parser, m_command, out.target, out.plan, err))
+        return false;
+    for (const PlannedRequest &r : out.plan.requests)
+        out.settings.poll.items.append(r.item);
+    return true;
+}
+
+} // namespace mbscope::app

@@ -1,0 +1,150 @@
+#include "scan/scantiming.h"
+
+#include "common/cli.h"
+#include "common/interruptwatcher.h"
+#include "common/progressline.h"
+#include "scan/scanreport.h"
+
+#include "traffic/trafficrecording.h"
+
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
+#include <QtCore/QTextStream>
+
+namespace mbscope::app {
+
+namespace {
+
+QString text(const TimingScanSettings &s, const TimingReport &r, ScanEnd end)
+{
+    QString t = QStringLiteral("TIMING %1 unit %2\n\n").arg(s.url.toString()).arg(s.unit);
+    t += QStringLiteral("first answer after connecting   %1 ms (%2 failed before it)\n").arg(r.firstAnswerMs).arg(r.warmupFailures);
+    for (const TimingReport::GapTrial &g : r.gaps)
+        t += QStringLiteral("gap %1 ms%2%3 ok, %4 failed, slowest %5 ms\n")
+                 .arg(g.gapMs)
+                 .arg(QString(), 24 - QString::number(g.gapMs).size())
+                 .arg(g.ok)
+                 .arg(g.failed)
+                 .arg(QString::number(double(g.maxLatencyUs) / 1000.0, 'f', 2));
+    t += QStringLiteral("shortest gap without errors     %1\n")
+             .arg(r.shortestCleanGapMs < 0 ? QStringLiteral("none of those tried") : QStringLiteral("%1 ms").arg(r.shortestCleanGapMs));
+    t += QStringLiteral("largest read answered           %1 at address %2 (an answer PDU of %3 bytes)\n")
+             .arg(r.largestQuantity)
+             .arg(s.address)
+             .arg(r.largestAnswerPdu);
+    if (r.pipelineSent > 0)
+        t += QStringLiteral("pipelined requests              %1 of %2 answered%3\n")
+                 .arg(r.pipelineOk)
+                 .arg(r.pipelineSent)
+                 .arg(r.pipelineOk == r.pipelineSent ? QStringLiteral(": pipelining works") : QStringLiteral(": send one at a time"));
+    if (r.clientsTried > 0)
+        t += QStringLiteral("TCP clients served at once      %1%2\n")
+                 .arg(r.clientsServed)
+                 .arg(r.oldestDropped ? QStringLiteral(" (client %1 was served by closing client 1: the device knocks its oldest "
+                                                       "client off, as extraClients dropOldest)")
+                                            .arg(r.clientsTried)
+                      : r.clientsServed == s.maxClients ? QStringLiteral(" (all tried; there may be room for more)")
+                                                        : QStringLiteral(" (client %1 was not served)").arg(r.clientsTried));
+    if (end == ScanEnd::Stopped)
+        t += QStringLiteral("\nstopped (Ctrl-C): later measurements were not made\n");
+    else if (end == ScanEnd::TimeLimit)
+        t += QStringLiteral("\ntime limit (--max-time %1) reached: later measurements were not made\n")
+                 .arg(ScanReport::durationText(s.maxDurationMs));
+    const int gap = r.recommendedGapMs();
+    const int timeout = r.recommendedTimeoutMs();
+    t += QStringLiteral("\nSettings (twice the shortest clean gap, three times the slowest answer):\n");
+    t += QStringLiteral("  mbscope watch link:    \"gapMs\": %1, \"timeoutMs\": %2\n").arg(gap).arg(timeout);
+    t += QStringLiteral("  mbscope poll/read:     --timeout %1ms\n").arg(timeout);
+    t += QStringLiteral("  Telegraf inputs.modbus: timeout = \"%1ms\"\n").arg(timeout);
+    t += QStringLiteral("    [inputs.modbus.workarounds] pause_between_requests = \"%1ms\", pause_after_connect = \"%2ms\"\n")
+             .arg(gap)
+             .arg(r.warmupFailures > 0 ? r.firstAnswerMs : 0);
+    return t;
+}
+
+QJsonObject json(const TimingScanSettings &s, const TimingReport &r, ScanEnd end)
+{
+    QJsonArray gaps;
+    for (const TimingReport::GapTrial &g : r.gaps)
+        gaps.append(QJsonObject{{QStringLiteral("gap_ms"), g.gapMs},
+                                {QStringLiteral("ok"), g.ok},
+                                {QStringLiteral("failed"), g.failed},
+                                {QStringLiteral("max_latency_ms"), double(g.maxLatencyUs) / 1000.0}});
+    return QJsonObject{
+        {QStringLiteral("target"), s.url.toString()},
+        {QStringLiteral("unit"), int(s.unit)},
+        {QStringLiteral("first_answer_ms"), double(r.firstAnswerMs)},
+        {QStringLiteral("warmup_failures"), r.warmupFailures},
+        {QStringLiteral("gaps"), gaps},
+        {QStringLiteral("shortest_clean_gap_ms"), r.shortestCleanGapMs},
+        {QStringLiteral("largest_quantity"), r.largestQuantity},
+        {QStringLiteral("largest_answer_pdu"), r.largestAnswerPdu},
+        {QStringLiteral("pipeline_sent"), r.pipelineSent},
+        {QStringLiteral("pipeline_ok"), r.pipelineOk},
+        {QStringLiteral("clients_tried"), r.clientsTried},
+        {QStringLiteral("clients_served"), r.clientsServed},
+        {QStringLiteral("clients_extra"), r.clientsTried == 0 || r.clientsServed == r.clientsTried
+                                              ? QStringLiteral("not reached")
+                                              : (r.oldestDropped ? QStringLiteral("drop_oldest") : QStringLiteral("refuse"))},
+        {QStringLiteral("stopped"), end == ScanEnd::Stopped},
+        {QStringLiteral("end"), QString::fromLatin1(scanEndName(end))},
+        {QStringLiteral("recommended"),
+         QJsonObject{{QStringLiteral("gap_ms"), r.recommendedGapMs()},
+                     {QStringLiteral("timeout_ms"), r.recommendedTimeoutMs()},
+                     {QStringLiteral("telegraf_pause_between_requests"), QStringLiteral("%1ms").arg(r.recommendedGapMs())},
+                     {QStringLiteral("telegraf_pause_after_connect"),
+                      QStringLiteral("%1ms").arg(r.warmupFailures > 0 ? r.firstAnswerMs : 0)}}},
+    };
+}
+
+} // namespace
+
+int runTimingScan(const TimingScanSettings &settings, bool asJson, const ScanRecord &record, QTextStream &out, QTextStream &err)
+{
+    if (const QString problem = settings.problem(); !problem.isEmpty()) {
+        err << "mbscope scan: " << problem << '\n';
+        return ExitUsage;
+    }
+    TrafficRecording recording;
+    if (!openRecording(recording, record.settings, record.metadata, QStringLiteral("scan"), err))
+        return ExitUsage;
+    recording.log()->setShared(true); // the pipelined burst and every client on engines of their own
+    TimingScanner scanner;
+    if (recording.isOpen())
+        scanner.setTrafficLog(recording.log());
+    InterruptWatcher interrupts;
+    ProgressLine line;
+    QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &TimingScanner::stop);
+    QString part; // what is being measured: "gap 50 ms"
+    QObject::connect(&scanner, &TimingScanner::step, &scanner, [&](const QString &what) { part = what; });
+    QObject::connect(&scanner, &TimingScanner::progressChanged, &scanner,
+                     [&](const ScanProgress &p) { line.show(ScanReport::progressText(QStringLiteral("steps"), p, part)); });
+    const std::optional<TimingReport> report = scanner.run(settings);
+    line.clear();
+    scanner.setTrafficLog(nullptr); // the last frames reach the journal
+    finishRecording(recording, err);
+    if (!report)
+        return ExitUsage;
+    if (report->firstAnswerMs < 0) {
+        if (scanner.end() == ScanEnd::TimeLimit)
+            err << "mbscope scan: the time limit (" << ScanReport::durationText(settings.maxDurationMs) << ") came before unit "
+                << settings.unit << " at " << settings.url.toString() << " answered: nothing to time\n";
+        else if (scanner.end() == ScanEnd::Stopped)
+            err << "mbscope scan: stopped before unit " << settings.unit << " at " << settings.url.toString()
+                << " answered: nothing to time\n";
+        else
+            err << "mbscope scan: unit " << settings.unit << " at " << settings.url.toString() << " never answered within "
+                << settings.warmupLimitMs << " ms: nothing to time\n";
+        if (!asJson)
+            return ExitFailure;
+    }
+    if (asJson)
+        out << QJsonDocument(json(settings, *report, scanner.end())).toJson(QJsonDocument::Indented);
+    else
+        out << text(settings, *report, scanner.end());
+    out.flush();
+    return report->firstAnswerMs < 0 ? ExitFailure : ExitOk;
+}
+
+} // namespace mbscope::app

@@ -1,0 +1,15 @@
+#pragma once
+
+#include "scan/scanoptions.h"
+
+#include "discovery/timingscanner.h"
+
+class QTextStream;
+
+namespace mbscope::app {
+
+// mbscope scan --timing UNIT: the timing scan run, its measurements and the settings they give
+// (mbscope's watch link gapMs and timeoutMs, poll's --timeout, Telegraf's modbus input), or JSON.
+int runTimingScan(const TimingScanSettings &settings, bool json, const ScanRecord &record, QTextStream &out, QTextStream &err);
+
+} // namespace mbscope::app
