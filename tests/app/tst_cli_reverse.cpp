@@ -153,8 +153,8 @@ private slots:
         QVERIFY2(r.errText().contains(said) || r.outText().contains(said), r.describe());
     }
 
-    // The device hangs up after 4 answers and dials again: the poll goes on over the new
-    // connection, and every request is answered.
+    // The device hangs up on the 5th request and dials again: the poll goes on over the new
+    // connection, and every request but the one it hung up on is answered.
     void deviceDialsAgain()
     {
         const quint16 port = closedPort();
@@ -162,21 +162,28 @@ private slots:
         device.start(mbscope::testpeers::systemPython(),
                      {mbscope::testpeers::peersDir() + QStringLiteral("/dialout_device.py"), QString::number(port),
                       QString::number(portOf(m_simulatorUrl)), QStringLiteral("--answers"), QStringLiteral("4"),
-                      QStringLiteral("--connections"), QStringLiteral("3")});
+                      QStringLiteral("--connections"), QStringLiteral("2"), QStringLiteral("--hang-up-on-request")});
         QVERIFY2(device.waitForStarted(10000), qPrintable(device.errorString()));
         const CliResult r = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"),
                                         QStringLiteral("rtu-tcp://127.0.0.1:%1?mode=listen&connect_timeout=20s").arg(port),
                                         QStringLiteral("--hex"), kRequest, QStringLiteral("--interval"), QStringLiteral("100ms"),
-                                        QStringLiteral("--count"), QStringLiteral("10"), QStringLiteral("--json"), QStringLiteral("--stats")});
+                                        QStringLiteral("--count"), QStringLiteral("9"), QStringLiteral("--json"), QStringLiteral("--stats")});
         device.closeWriteChannel();
         QVERIFY(device.waitForFinished(10000));
         const QString log = QString::fromUtf8(device.readAllStandardOutput());
-        QVERIFY2(log.contains(QStringLiteral("CONNECTED 3")), qPrintable(log));
-        QVERIFY2(log.contains(QStringLiteral("ANSWERED 3 2")), qPrintable(log)); // 4 + 4 + 2
-        QVERIFY2(r.exitCode == 0, r.describe());
+        QVERIFY2(log.contains(QStringLiteral("DROPPED 1")), qPrintable(log));
+        QVERIFY2(log.contains(QStringLiteral("CONNECTED 2")), qPrintable(log));
+        QVERIFY2(log.contains(QStringLiteral("ANSWERED 2 4")), qPrintable(log)); // 4 + the one dropped + 4
+        // The 5th request met the hang-up: one link error, said as such, and the exit status says
+        // the run was not clean; the other 8 were answered over two connections.
+        QVERIFY2(r.exitCode == 1, r.describe());
         const QJsonObject o = r.json();
-        QCOMPARE(o.value(QStringLiteral("count")).toDouble(), 10.0);
-        QCOMPARE(o.value(QStringLiteral("ok")).toDouble(), 10.0);
+        QCOMPARE(o.value(QStringLiteral("count")).toDouble(), 9.0);
+        QCOMPARE(o.value(QStringLiteral("ok")).toDouble(), 8.0);
+        const QJsonObject engine = o.value(QStringLiteral("engine")).toObject();
+        QCOMPARE(engine.value(QStringLiteral("connects")).toDouble(), 2.0);
+        QCOMPARE(engine.value(QStringLiteral("requests_sent")).toDouble(), 9.0);
+        QVERIFY2(engine.value(QStringLiteral("link_errors")).toDouble() >= 1.0, r.describe());
     }
 
     // A URL mistake is said before anything listens.

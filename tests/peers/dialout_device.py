@@ -4,13 +4,16 @@ connect to a server and then expect Modbus requests on that connection), for mbs
 connection tests (--target URL?mode=listen).
 
   dialout_device.py MASTER_PORT SERVER_PORT [--framing rtu|tcp] [--answers N] [--connections C]
-                    [--lifetime S]
+                    [--lifetime S] [--hang-up-on-request]
 
 Connects to 127.0.0.1:MASTER_PORT, trying again every 50 ms until something listens there, and
 relays each request that comes on that connection to the Modbus server on 127.0.0.1:SERVER_PORT
 (mbscope simulate, say), and its answer back. Frames are cut by their own lengths: RTU (MODBUS over
 Serial Line V1.02) or MBAP (Messaging on TCP/IP V1.0b). After N answers on one connection (0: no
-limit) it closes that connection and dials again, C connections in all, then exits.
+limit) it closes that connection and dials again, C connections in all, then exits. With
+--hang-up-on-request it first waits for the next request and closes instead of answering it: the
+master then knows which request met the hang-up (closing between requests races the master's next
+request, which may or may not see the close before it is sent).
 
 Prints "CONNECTED k" when connection k is up, "ANSWERED k n" after the n-th answer on it, and
 "CLOSED k" when it ends (by us or by the master). Exits when its standard input closes, or after
@@ -76,6 +79,7 @@ def main():
     parser.add_argument("--answers", type=int, default=0)
     parser.add_argument("--connections", type=int, default=1)
     parser.add_argument("--lifetime", type=float, default=120)
+    parser.add_argument("--hang-up-on-request", action="store_true")
     args = parser.parse_args()
 
     def watch_stdin():
@@ -99,6 +103,9 @@ def main():
                 master.sendall(read_answer(server))
                 answered += 1
                 print("ANSWERED %d %d" % (k, answered), flush=True)
+            if args.hang_up_on_request:
+                read_request(master)
+                print("DROPPED %d" % k, flush=True)
         except (ConnectionError, OSError):
             pass
         master.close()
