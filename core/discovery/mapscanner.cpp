@@ -4,6 +4,7 @@
 
 #include "protocol/adubuilder.h"
 #include "protocol/readanswer.h"
+#include "protocol/quantitylimits.h"
 
 namespace mbscope {
 
@@ -176,7 +177,7 @@ void MapScanner::mapTable(TableMap &table)
     if (probe.reply == Reply::IllegalFunction || probe.reply == Reply::Silent || probe.reply == Reply::Bad)
         return;
     table.supported = true;
-    const int specMax = table.function <= 2 ? 2000 : 125; // V1.1b3, 6.1-6.4
+    const int specMax = QuantityLimits::maxQuantity(quint8(table.function));
     table.maxQuantity = findMaxQuantity(table, specMax);
 
     // Between blocks, one address every `step`; an address that answers may belong to a block that

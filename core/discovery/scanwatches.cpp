@@ -4,6 +4,7 @@
 #include "unitscansettings.h"
 
 #include "profile/profiletablereader.h"
+#include "protocol/quantitylimits.h"
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
@@ -39,7 +40,7 @@ QList<WatchDefinition> ScanWatches::fromMap(const QString &target, const Registe
 {
     QList<WatchDefinition> out;
     for (const TableMap &t : map.tables) {
-        const int most = qMax(1, t.maxQuantity > 0 ? t.maxQuantity : (t.function <= 2 ? 2000 : 125));
+        const int most = qMax(1, t.maxQuantity > 0 ? t.maxQuantity : QuantityLimits::maxQuantity(quint8(t.function)));
         for (const MapBlock &b : t.blocks) {
             for (int at = 0; at < b.count(); at += most)
                 out.append(watch(target, map.unit, t.function, quint16(b.address + at), quint16(qMin(most, b.count() - at))));

@@ -5,6 +5,7 @@
 #include "engine/transactionengine.h"
 #include "exchange/requestitem.h"
 #include "protocol/adubuilder.h"
+#include "protocol/quantitylimits.h"
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QEventLoop>
@@ -188,7 +189,7 @@ std::optional<TimingReport> TimingScanner::run(const TimingScanSettings &setting
     // The plan: one step for the first answer, every request of every gap, the largest read's
     // first request and its bisection at worst (ceil(log2(spec maximum + 1)) more), the pipelined
     // burst (MBAP links), every client (stream links).
-    const int specMax = settings.function <= 2 ? 2000 : 125; // V1.1b3, 6.1-6.4
+    const int specMax = QuantityLimits::maxQuantity(quint8(settings.function));
     int bisection = 0;
     for (int span = specMax + 1; span > 1; span = (span + 1) / 2)
         ++bisection;
@@ -287,7 +288,7 @@ void TimingScanner::largestRead(TimingReport &report)
     beginPart(Largest, QStringLiteral("largest read"));
     const int gap = qMax(0, report.recommendedGapMs());
     m_channel->setGapMs(gap);
-    const int specMax = m_settings.function <= 2 ? 2000 : 125; // V1.1b3, 6.1-6.4
+    const int specMax = QuantityLimits::maxQuantity(quint8(m_settings.function));
     // Whether quantity q is answered; nullopt when it was not asked (stopped, or out of time).
     const auto answers = [&](int q) -> std::optional<bool> {
         if (!mayContinue(gap + m_settings.timeoutMs))

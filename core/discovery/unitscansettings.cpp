@@ -1,4 +1,5 @@
 #include "unitscansettings.h"
+#include "protocol/quantitylimits.h"
 
 namespace mbscope {
 
@@ -16,7 +17,7 @@ QString UnitScanSettings::problem() const
             .arg(framingName(url.framing()));
     if (function < 1 || function > 4)
         return QStringLiteral("function %1 is not a read: a scan asks with 01, 02, 03 or 04").arg(function);
-    const int maxQuantity = function <= 2 ? 2000 : 125; // V1.1b3, 6.1-6.4
+    const int maxQuantity = QuantityLimits::maxQuantity(quint8(function));
     if (quantity < 1 || quantity > maxQuantity)
         return QStringLiteral("quantity %1 is out of range: function %2 reads 1-%3")
             .arg(quantity).arg(function).arg(maxQuantity);

@@ -3,6 +3,7 @@
 #include "discovery/unitscanner.h"
 #include "protocol/adubuilder.h"
 #include "protocol/readanswer.h"
+#include "protocol/quantitylimits.h"
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QEventLoop>
@@ -26,7 +27,8 @@ void BlockSampler::stop()
 bool BlockSampler::readBlock(const SampleSettings &settings, const BlockRequest &block, QList<quint16> *words)
 {
     const bool bits = block.function <= 2;
-    const int most = bits ? std::min(2000, settings.maxQuantity * 16) : std::min(125, settings.maxQuantity);
+    const int most = bits ? std::min(QuantityLimits::kReadBits, settings.maxQuantity * 16)
+                           : std::min(QuantityLimits::kReadRegisters, settings.maxQuantity);
     words->clear();
     for (int at = 0; at < block.count; at += most) {
         const int quantity = std::min(most, block.count - at);

@@ -1,6 +1,7 @@
 #include "devicelimitsreader.h"
 
 #include "json/jsonreader.h"
+#include "protocol/quantitylimits.h"
 
 namespace mbscope {
 
@@ -46,7 +47,7 @@ void readMaxQuantity(JsonReader &reader, const QJsonObject &limits, const QStrin
         const QString key = it.key();
         const int function = key.startsWith(QLatin1String("0x"), Qt::CaseInsensitive) ? key.mid(2).toInt(&ok, 16)
                                                                                         : key.toInt(&ok, 10);
-        const int spec = ok ? DeviceLimitsReader::specMaxQuantity(quint8(function)) : 0;
+        const int spec = ok ? QuantityLimits::maxQuantity(quint8(function)) : 0;
         if (!ok || function < 1 || function > 255) {
             reader.error(keyAt, QStringLiteral("'%1' is not a function code: expected hex text such as \"0x03\"").arg(key));
             continue;
@@ -63,17 +64,6 @@ void readMaxQuantity(JsonReader &reader, const QJsonObject &limits, const QStrin
 }
 
 } // namespace
-
-int DeviceLimitsReader::specMaxQuantity(quint8 function)
-{
-    switch (function) {
-    case 0x01: case 0x02: return 2000;
-    case 0x03: case 0x04: case 0x17: return 125;
-    case 0x0F: return 1968;
-    case 0x10: return 123;
-    default: return 0;
-    }
-}
 
 DeviceLimits DeviceLimitsReader::read(JsonReader &reader, const QJsonObject &root)
 {

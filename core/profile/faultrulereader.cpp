@@ -2,6 +2,7 @@
 
 #include "protocol/hextext.h"
 #include "json/jsonreader.h"
+#include "protocol/quantitylimits.h"
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonObject>
@@ -147,8 +148,9 @@ void readValues(JsonReader &reader, const QJsonObject &o, const QString &path, F
         return;
     }
     const QJsonArray a = v.toArray();
-    if (a.isEmpty() || a.size() > 123) {
-        reader.error(at, QStringLiteral("expected 1 to 123 values (a write carries at most 123 registers), found %1").arg(a.size()));
+    if (a.isEmpty() || a.size() > QuantityLimits::kWriteRegisters) {
+        reader.error(at, QStringLiteral("expected 1 to %1 values (a write carries at most %1 registers), found %2")
+                             .arg(QuantityLimits::kWriteRegisters).arg(a.size()));
         return;
     }
     for (qsizetype i = 0; i < a.size(); ++i) {
@@ -335,7 +337,7 @@ std::optional<FaultRule> FaultRuleReader::readRule(JsonReader &reader, const QJs
         break;
     case K::FewerRegisters:
         reader.checkKeys(*o, path, ruleKeys({"fewer"}));
-        rule.fewer = int(reader.integer(*o, path, "fewer", 1, 125).value_or(1));
+        rule.fewer = int(reader.integer(*o, path, "fewer", 1, QuantityLimits::kReadRegisters).value_or(1));
         break;
     case K::Chunks:
         reader.checkKeys(*o, path, ruleKeys({"chunkBytes", "gapMs"}));

@@ -1,6 +1,7 @@
 #include "watchblock.h"
 
 #include "watch/watchdecoder.h"
+#include "protocol/quantitylimits.h"
 
 namespace mbscope {
 
@@ -22,11 +23,11 @@ int WatchBlock::maxQuantity(quint8 function, bool enron32)
 {
     switch (function) {
     case 1: case 2:
-        return 2000;
+        return QuantityLimits::kReadBits;
     case 3: case 4:
-        return enron32 ? 62 : 125;
+        return enron32 ? QuantityLimits::kReadRegisters / 2 : QuantityLimits::kReadRegisters;
     case 0x18:
-        return 31;
+        return QuantityLimits::kFifoValues;
     default:
         return 0;
     }

@@ -9,6 +9,7 @@
 #include "protocol/functioncode.h"
 #include "protocol/hextext.h"
 #include "protocol/requestbuilder.h"
+#include "protocol/quantitylimits.h"
 
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
@@ -25,30 +26,26 @@ namespace mbscope {
 
 namespace {
 
-// Quantity limits of V1.1b3, 6.1-6.4, 6.11, 6.12 and 6.17.
+// What the quantity of each function with a limit counts; the limits are core/protocol's
+// QuantityLimits (V1.1b3, 6.1-6.4, 6.11, 6.12 and 6.17).
 struct QuantityLimit {
     int code;
-    int max;
     const char *unit;
 };
 constexpr QuantityLimit kLimits[] = {
-    {0x01, 2000, QT_TRANSLATE_NOOP("mbscope::RequestForm", "coils")},
-    {0x02, 2000, QT_TRANSLATE_NOOP("mbscope::RequestForm", "inputs")},
-    {0x03, 125, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
-    {0x04, 125, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
-    {0x0F, 1968, QT_TRANSLATE_NOOP("mbscope::RequestForm", "coils")},
-    {0x10, 123, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
-    {0x17, 125, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
+    {0x01, QT_TRANSLATE_NOOP("mbscope::RequestForm", "coils")},
+    {0x02, QT_TRANSLATE_NOOP("mbscope::RequestForm", "inputs")},
+    {0x03, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
+    {0x04, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
+    {0x0F, QT_TRANSLATE_NOOP("mbscope::RequestForm", "coils")},
+    {0x10, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
+    {0x17, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
 };
-constexpr int kMaxReadWriteWrite = 121; // 0x17's write quantity (V1.1b3, 6.17)
+constexpr int kMaxReadWriteWrite = QuantityLimits::kReadWriteWrite; // 0x17's write quantity (V1.1b3, 6.17)
 
 int quantityMax(int code)
 {
-    for (const QuantityLimit &limit : kLimits) {
-        if (limit.code == code)
-            return limit.max;
-    }
-    return 0;
+    return QuantityLimits::maxQuantity(quint8(code));
 }
 
 // Upper-case hex digits, zero-padded to width.
@@ -450,7 +447,7 @@ BuildResult RequestForm::build() const
         for (const QuantityLimit &limit : kLimits) {
             if (limit.code != code)
                 continue;
-            const QString why = quantityError(code == 0x17 ? tr("read quantity") : tr("quantity"), q, limit.max, limit.unit);
+            const QString why = quantityError(code == 0x17 ? tr("read quantity") : tr("quantity"), q, quantityMax(code), limit.unit);
             if (!why.isEmpty())
                 failed.errors.append({QStringLiteral("quantity"), why});
         }
@@ -582,7 +579,7 @@ bool RequestForm::setFromPdu(const QByteArray &pdu)
              && size == 6 + quint8(pdu.at(5));
         break;
     case 0x17:
-        ok = size >= 10 && word(pdu, 3) >= 1 && word(pdu, 3) <= 125 && word(pdu, 7) >= 1 && word(pdu, 7) <= kMaxReadWriteWrite
+        ok = size >= 10 && word(pdu, 3) >= 1 && word(pdu, 3) <= QuantityLimits::kReadRegisters && word(pdu, 7) >= 1 && word(pdu, 7) <= kMaxReadWriteWrite
              && quint8(pdu.at(9)) == 2 * word(pdu, 7) && size == 10 + quint8(pdu.at(9));
         break;
     case 0x18: ok = size == 3; break;

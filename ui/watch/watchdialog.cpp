@@ -6,6 +6,8 @@
 #include "compose/addressfield.h"
 
 #include "transport/linkurl.h"
+#include "protocol/quantitylimits.h"
+#include "watch/watchblock.h"
 
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
@@ -67,7 +69,7 @@ WatchDialog::WatchDialog(QWidget *parent)
     m_function->addItem(tr("04 Read input registers"), 4);
     m_function->addItem(tr("18 Read FIFO queue"), 0x18);
     m_function->setCurrentIndex(2);
-    m_quantity->setRange(1, 2000);
+    m_quantity->setRange(1, QuantityLimits::kReadBits);
     m_quantity->setValue(10);
     m_interval->setRange(0, 24 * 3600 * 1000);
     m_interval->setSuffix(tr(" ms"));
@@ -152,7 +154,7 @@ void WatchDialog::onFunctionChanged()
 {
     const int function = m_function->currentData().toInt();
     m_address->setTable(tableOf(function));
-    m_quantity->setMaximum(function <= 2 ? 2000 : function == 0x18 ? 31 : (m_enron->isChecked() ? 62 : 125));
+    m_quantity->setMaximum(WatchBlock::maxQuantity(quint8(function), m_enron->isChecked()));
     m_enron->setEnabled(function == 3 || function == 4);
 }
 
