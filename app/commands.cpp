@@ -45,6 +45,13 @@ struct Subcommand {
 #define MBSCOPE_FULL_ONLY(run) run
 #endif
 
+#ifndef MBSCOPE_LIGHT
+int runCompletionOfThese(const QStringList &arguments)
+{
+    return runCompletion(arguments, CommandLineIndex{&subcommandHelps, topLevelOptions()});
+}
+#endif
+
 const Subcommand kSubcommands[] = {
     {"decode", "explain a Modbus frame field by field (hex argument or standard input)", runDecode},
     {"send", "send bytes exactly (or a PDU completed) and show the answer decoded and the latency", runSend},
@@ -64,7 +71,7 @@ const Subcommand kSubcommands[] = {
     {"export", "write a capture or journal as CSV, JSON lines, pcapng for Wireshark, or latency plots", MBSCOPE_FULL_ONLY(runExport)},
     {"export-map", "write a device profile's register map for Node-RED, Telegraf, Home Assistant, modbus_exporter or CSV, verified first if asked", MBSCOPE_FULL_ONLY(runExportMap)},
     {"replay", "re-send a recording to a device and compare the answers, or serve it as a stand-in device", MBSCOPE_FULL_ONLY(runReplay)},
-    {"completion", "print a bash or zsh completion script for these subcommands and their options", MBSCOPE_FULL_ONLY(runCompletion)},
+    {"completion", "print a bash or zsh completion script for these subcommands and their options", MBSCOPE_FULL_ONLY(runCompletionOfThese)},
 };
 
 void printUsage(QTextStream &out)

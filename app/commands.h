@@ -20,11 +20,6 @@ namespace mbscope::app {
 // (built with MBSCOPE_LIGHT) the light ones, the others are handed to mbscope-full (launcher.h).
 [[nodiscard]] bool runsHere(const char *name);
 
-struct SubcommandHelp {
-    QString name;
-    QString summary; // the line `mbscope --help` shows
-    QString help;    // what `mbscope NAME --help` prints
-};
 // Every subcommand with its --help text, in the order `mbscope --help` lists them.
 [[nodiscard]] QList<SubcommandHelp> subcommandHelps();
 // The options `mbscope` takes without a subcommand that runHeadless answers (--help...).

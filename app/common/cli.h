@@ -1,6 +1,8 @@
 #pragma once
 
+#include <QtCore/QList>
 #include <QtCore/QString>
+#include <QtCore/QStringList>
 
 // What every subcommand shares: exit statuses and the --help text's usage line.
 // The dispatcher (which subcommand runs) is commands.h.
@@ -28,6 +30,20 @@ private:
     friend QString subcommandHelp(const QString &helpText, const char *name);
     HelpCapture *m_previous = nullptr;
     QString m_text;
+};
+
+// A subcommand as `mbscope --help` lists it, with what its own --help prints.
+struct SubcommandHelp {
+    QString name;
+    QString summary; // the line `mbscope --help` shows
+    QString help;    // what `mbscope NAME --help` prints
+};
+
+// What the dispatcher knows that a command about the command line needs (completion): every
+// subcommand with its --help, read only when asked, and the options mbscope takes without one.
+struct CommandLineIndex {
+    QList<SubcommandHelp> (*subcommands)() = nullptr;
+    QStringList topLevelOptions;
 };
 
 // Exit statuses shared by every subcommand.

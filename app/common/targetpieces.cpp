@@ -1,6 +1,6 @@
 #include "common/targetpieces.h"
 
-#include "common/targetoptions.h"
+#include "common/integeroption.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QStringList>

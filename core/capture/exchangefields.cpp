@@ -1,4 +1,7 @@
 #include "exchangefields.h"
+#include "protocol/framingtraits.h"
+
+#include "protocol/adubuilder.h"
 
 #include "protocol/hexnumber.h"
 
@@ -40,36 +43,15 @@ QString bits(const QByteArray &pdu, qsizetype at, qsizetype count)
 
 QByteArray ExchangeFields::pduOf(const QByteArray &adu, Framing framing, quint8 *unit)
 {
-    switch (framing) {
-    case Framing::Tcp:
-    case Framing::Udp:
-        if (adu.size() < 8)
-            return {};
-        *unit = quint8(adu[6]);
-        return adu.mid(7);
-    case Framing::Rtu:
-        if (adu.size() < 4)
-            return {};
-        *unit = quint8(adu[0]);
-        return adu.mid(1, adu.size() - 3);
-    case Framing::Ascii: {
-        // ':' + hex digits + LRC + CR LF
-        QByteArray digits = adu.mid(1);
-        while (digits.endsWith('\n') || digits.endsWith('\r'))
-            digits.chop(1);
-        const QByteArray bytes = QByteArray::fromHex(digits);
-        if (bytes.size() < 3)
-            return {};
-        *unit = quint8(bytes[0]);
-        return bytes.mid(1, bytes.size() - 2);
-    }
-    case Framing::Pdu:
-        *unit = 0;
-        return adu;
-    case Framing::Auto:
-        break;
-    }
-    return {};
+    if (framing == Framing::Auto)
+        return {};
+    // AduBuilder::parse reads every framing; a frame whose check is wrong still has its PDU.
+    const AduParts parts = AduBuilder::parse(adu, framing);
+    const bool whole = isSerialLine(framing) ? parts.checksumPresent : parts.complete;
+    if (!whole || parts.pdu.isEmpty())
+        return {};
+    *unit = framing == Framing::Pdu ? 0 : parts.unitId;
+    return parts.pdu;
 }
 
 ExchangeFields ExchangeFields::of(const Transaction &t, Framing framing)

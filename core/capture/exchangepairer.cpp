@@ -1,4 +1,5 @@
 #include "exchangepairer.h"
+#include "protocol/framingtraits.h"
 
 #include <algorithm>
 
@@ -24,11 +25,6 @@ namespace {
 
 // RTU and ASCII travel on a serial line (or tunnelled from one): one transaction at a time,
 // answers known by unit and function code, not by an id.
-bool isSerialFraming(Framing framing)
-{
-    return framing == Framing::Rtu || framing == Framing::Ascii;
-}
-
 } // namespace
 
 ResponseVerdict &ExchangePairer::verdictFor(Framing framing)
@@ -137,7 +133,7 @@ void ExchangePairer::addRequest(const CapturedFrame &frame)
 
     const FrameKeys keys = ResponseMatcher::keysOf(frame.bytes, frame.framing);
     Conversation &c = conversation(frame.conversation);
-    if (isSerialFraming(frame.framing)) {
+    if (isSerialLine(frame.framing)) {
         if (keys.valid && keys.unit == 0) {
             t.status = TransactionStatus::Broadcast;
             s.done = true;
@@ -179,7 +175,7 @@ void ExchangePairer::addResponse(const CapturedFrame &frame)
         return;
     }
     Conversation &c = conversation(frame.conversation);
-    if (!isSerialFraming(frame.framing)) {
+    if (!isSerialLine(frame.framing)) {
         const auto waiting = c.waitingById.find(keys.transactionId);
         if (waiting != c.waitingById.end()) {
             const quint64 index = waiting.value();
@@ -317,7 +313,7 @@ void ExchangePairer::timeOut(Slot &s, const QString &why)
     Conversation &c = conversation(s.exchange.conversation);
     const FrameKeys keys = ResponseMatcher::keysOf(t.request, s.exchange.framing);
     const TimedOut record{t.request, t.sentNs, s.exchange.requestPacket, t.id};
-    if (isSerialFraming(s.exchange.framing)) {
+    if (isSerialLine(s.exchange.framing)) {
         for (auto it = c.waitingInOrder.begin(); it != c.waitingInOrder.end(); ++it) {
             if (*it == t.id) {
                 c.waitingInOrder.erase(it);

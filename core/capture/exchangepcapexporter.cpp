@@ -1,4 +1,5 @@
 #include "exchangepcapexporter.h"
+#include "protocol/framingtraits.h"
 
 #include <QtCore/QtEndian>
 
@@ -31,7 +32,7 @@ ExchangePcapExporter::Stream &ExchangePcapExporter::stream(quint32 conversation,
         s.info.client.bytes = {10, 0, 0, 1};
         s.info.server.bytes = {10, 0, 0, 2};
         s.info.clientPort = quint16(49152 + conversation);
-        s.info.serverPort = framing == Framing::Rtu || framing == Framing::Ascii ? 4001 : 502;
+        s.info.serverPort = isSerialLine(framing) ? 4001 : 502;
         s.known = true;
     }
     if (s.endpoints.serverPort == 0) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "exchange/trafficentry.h"
+#include "protocol/framingtraits.h"
 #include "exchange/transaction.h"
 #include "transport/linkurl.h"
 
@@ -39,7 +40,7 @@ public:
     [[nodiscard]] const LinkUrl &url() const { return m_url; }
     [[nodiscard]] Framing framing() const { return m_url.framing(); }
     [[nodiscard]] bool isMbap() const { return framing() == Framing::Tcp || framing() == Framing::Udp; }
-    [[nodiscard]] bool isSerialFraming() const { return framing() == Framing::Rtu || framing() == Framing::Ascii; }
+    [[nodiscard]] bool isSerialFraming() const { return isSerialLine(framing()); }
     [[nodiscard]] bool isStream() const { return !m_url.isSerial() && !m_url.isDatagram(); }
     [[nodiscard]] int timeoutMs() const { return m_timeoutMs; }
 

@@ -10,7 +10,7 @@
 #include "serialtimingchecks.h"
 #include "writechecks.h"
 
-#include "profile/profiletablereader.h"
+#include "profile/simtable.h"
 #include "transport/monotonicclock.h"
 
 namespace mbscope {
@@ -71,12 +71,12 @@ QString ConformanceRunner::skipReason(const ConformanceCheck &check, const Confo
         }
     }
     if (n.readable >= 0 && ctx.readable(SimTable(n.readable)) < 0) {
-        const char *key = ProfileTableReader::tableKey(SimTable(n.readable));
+        const char *key = simTableKey(SimTable(n.readable));
         return QStringLiteral("no readable address of the %1 is known (a read at 0 was refused): name one with --readable %2:ADDRESS")
             .arg(QLatin1String(simTableName(SimTable(n.readable))), QLatin1String(key));
     }
     if (n.writable >= 0 && !ctx.settings().writableIn(SimTable(n.writable))) {
-        const char *key = ProfileTableReader::tableKey(SimTable(n.writable));
+        const char *key = simTableKey(SimTable(n.writable));
         return QStringLiteral("safe by default: it writes only where --writable %1:ADDRESS allows (the value found is put back)")
             .arg(QLatin1String(key));
     }

@@ -1,7 +1,7 @@
 #include "conformancesettings.h"
 
 #include "profile/deviceprofile.h"
-#include "profile/profiletablereader.h"
+#include "profile/simtable.h"
 #include "sim/simunit.h"
 
 namespace mbscope {
@@ -30,7 +30,7 @@ std::optional<TableRange> TableRange::parse(const QString &text, QString *error)
     };
     if (colon < 0)
         return fail(QStringLiteral("no ':' between the table and the address"));
-    const std::optional<SimTable> table = ProfileTableReader::tableFromKey(QStringView(text).left(colon));
+    const std::optional<SimTable> table = simTableFromKey(QStringView(text).left(colon));
     if (!table)
         return fail(QStringLiteral("'%1' is not a table").arg(text.left(colon)));
     const QStringView rest = QStringView(text).mid(colon + 1);
@@ -48,7 +48,7 @@ std::optional<TableRange> TableRange::parse(const QString &text, QString *error)
 
 QString TableRange::toString() const
 {
-    const QString key = QLatin1String(ProfileTableReader::tableKey(table));
+    const QString key = QLatin1String(simTableKey(table));
     return first == last ? QStringLiteral("%1:%2").arg(key).arg(first) : QStringLiteral("%1:%2-%3").arg(key).arg(first).arg(last);
 }
 

@@ -1,6 +1,6 @@
 #include "profiledraft.h"
 
-#include "profile/profiletablereader.h"
+#include "profile/simtable.h"
 
 #include <QtCore/QDateTime>
 #include <QtCore/QJsonArray>
@@ -47,7 +47,7 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
             entries.append(entry);
         }
         if (!entries.isEmpty())
-            tables.insert(QLatin1String(ProfileTableReader::tableKey(readTable(t.function))), entries);
+            tables.insert(QLatin1String(simTableKey(readTable(t.function))), entries);
     }
     for (const FunctionSupport &s : map.functions) {
         if (s.known() && simulatorImplements(s.function) && !functions.contains(s.function))

@@ -3,7 +3,7 @@
 #include "registermap.h"
 #include "unitscansettings.h"
 
-#include "profile/profiletablereader.h"
+#include "profile/simtable.h"
 #include "protocol/quantitylimits.h"
 
 #include <QtCore/QJsonArray>
@@ -17,13 +17,13 @@ namespace {
 WatchDefinition watch(const QString &target, quint8 unit, quint8 function, quint16 address, quint16 quantity)
 {
     WatchDefinition w;
-    w.name = QStringLiteral("unit%1-%2-%3").arg(unit).arg(QLatin1String(ProfileTableReader::tableKey(readTable(function)))).arg(address);
+    w.name = QStringLiteral("unit%1-%2-%3").arg(unit).arg(QLatin1String(simTableKey(readTable(function)))).arg(address);
     w.target = target;
     w.unit = unit;
     w.function = function;
     w.address = address;
     w.quantity = quantity;
-    w.profileBlock = QStringLiteral("scan/unit %1/%2 %3").arg(unit).arg(QLatin1String(ProfileTableReader::tableKey(readTable(function)))).arg(address);
+    w.profileBlock = QStringLiteral("scan/unit %1/%2 %3").arg(unit).arg(QLatin1String(simTableKey(readTable(function)))).arg(address);
     return w;
 }
 

@@ -1,5 +1,7 @@
 #include "requestitem.h"
 
+#include "protocol/framingtraits.h"
+
 #include "protocol/adubuilder.h"
 #include "protocol/broadcastrule.h"
 #include "protocol/dissector.h"
@@ -44,23 +46,16 @@ RequestItem RequestItem::fromBytes(const QByteArray &bytes, Framing framing, boo
         return item;
     item.unit = parts.unitId;
     item.functionCode = quint8(parts.pdu.at(0));
-    switch (framing) {
-    case Framing::Tcp:
-    case Framing::Udp:
+    const FramingTraits &traits = framingTraits(framing);
+    if (traits.mbap) {
         item.rule = MatchRule::Mbap;
         item.transactionId = parts.transactionId;
-        break;
-    case Framing::Rtu:
-    case Framing::Ascii:
+    } else if (traits.serialLine) {
         item.rule = MatchRule::UnitFunction;
         // Only a well-formed frame to unit 0 is a broadcast: bytes mbscope judges malformed (MBAP
         // bytes sent to an RTU link start with a transaction id whose high byte is often 0) wait
         // for an answer like any request, and their verdict says what came back.
         item.broadcast = parts.unitId == 0 && isWellFormedRequest(bytes, framing);
-        break;
-    case Framing::Pdu:
-    case Framing::Auto:
-        break;
     }
     return item;
 }

@@ -2,7 +2,7 @@
 
 #include "protocol/registervalue.h"
 
-#include "profile/profiletablereader.h"
+#include "profile/simtable.h"
 
 #include <QtCore/QDateTime>
 #include <QtCore/QJsonArray>
@@ -90,7 +90,7 @@ QByteArray InferenceDraft::toJson(const QList<ValueGuess> &guesses, quint8 unit,
     QJsonObject tableObject;
     QJsonArray functions;
     for (auto it = tables.cbegin(); it != tables.cend(); ++it) {
-        tableObject.insert(QLatin1String(ProfileTableReader::tableKey(readTable(it.key()))), it.value());
+        tableObject.insert(QLatin1String(simTableKey(readTable(it.key()))), it.value());
         functions.append(QStringLiteral("0x%1").arg(int(it.key()), 2, 16, QLatin1Char('0')));
     }
     const QJsonObject unitObject{{QStringLiteral("id"), int(unit)},

@@ -1,6 +1,6 @@
 #include "mappoint.h"
 
-#include "profile/profiletablereader.h"
+#include "profile/simtable.h"
 #include "profile/scaledvalue.h"
 #include "protocol/registervalue.h"
 
@@ -24,7 +24,7 @@ quint8 MapPoint::readFunction() const
 
 QString MapPoint::tableKey() const
 {
-    return QLatin1String(ProfileTableReader::tableKey(table));
+    return QLatin1String(simTableKey(table));
 }
 
 bool MapPoint::isNotImplemented(std::span<const quint16> words) const

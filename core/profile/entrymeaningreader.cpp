@@ -2,7 +2,7 @@
 
 #include "json/jsonreader.h"
 #include "protocol/registervalue.h"
-#include "profiletablereader.h"
+#include "simtable.h"
 #include "scaledvalue.h"
 
 #include <QtCore/QStringList>
@@ -186,7 +186,7 @@ bool EntryMeaningReader::resolveScaleRegister(JsonReader &reader, const QList<Ta
         return s.table == entry->table && address >= s.address && address < s.end();
     });
     const QString at = JsonReader::member(path, "scaleRegister");
-    const QString table = QLatin1String(ProfileTableReader::tableKey(entry->table));
+    const QString table = QLatin1String(simTableKey(entry->table));
     if (source == known.cend()) {
         reader.error(at, QStringLiteral("%1 %2 is not in any %1 entry of this unit (without a scaleRegister of its own)")
                              .arg(table).arg(address));

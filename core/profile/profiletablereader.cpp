@@ -37,30 +37,6 @@ QString rangeText(int first, int end)
 
 } // namespace
 
-const char *ProfileTableReader::tableKey(SimTable table)
-{
-    switch (table) {
-    case SimTable::Coils:
-        return "coils";
-    case SimTable::DiscreteInputs:
-        return "discrete";
-    case SimTable::InputRegisters:
-        return "input";
-    case SimTable::HoldingRegisters:
-        return "holding";
-    }
-    return "holding";
-}
-
-std::optional<SimTable> ProfileTableReader::tableFromKey(QStringView key)
-{
-    for (SimTable table : kTables) {
-        if (key == QLatin1String(tableKey(table)))
-            return table;
-    }
-    return std::nullopt;
-}
-
 void ProfileTableReader::readTables(JsonReader &reader, const QJsonValue &value, const QString &path,
                                     UnitProfile *unit)
 {
@@ -73,11 +49,11 @@ void ProfileTableReader::readTables(JsonReader &reader, const QJsonValue &value,
     // Entries whose scale is read from another register come second, once that register is known.
     for (const bool scaledByRegister : {false, true}) {
         for (SimTable table : kTables) {
-            const auto list = scaledByRegister ? std::optional<QJsonArray>(o->value(QLatin1String(tableKey(table))).toArray())
-                                               : reader.array(*o, path, tableKey(table));
+            const auto list = scaledByRegister ? std::optional<QJsonArray>(o->value(QLatin1String(simTableKey(table))).toArray())
+                                               : reader.array(*o, path, simTableKey(table));
             if (!list)
                 continue;
-            const QString at = JsonReader::member(path, tableKey(table));
+            const QString at = JsonReader::member(path, simTableKey(table));
             for (qsizetype i = 0; i < list->size(); ++i) {
                 if (list->at(i).toObject().contains(QLatin1String("scaleRegister")) != scaledByRegister)
                     continue;
@@ -117,11 +93,11 @@ void ProfileTableReader::readTables(JsonReader &reader, const QJsonValue &value,
         const QString at = JsonReader::member(JsonReader::member(paths.at(i), "generator"), "address");
         if (source == entries.cend())
             reader.error(at, QStringLiteral("%1 %2 is not in any %1 entry of this unit")
-                                 .arg(QLatin1String(tableKey(t))).arg(address));
+                                 .arg(QLatin1String(simTableKey(t))).arg(address));
         else if ((address - source->address) % source->width() != 0)
             reader.error(at, QStringLiteral("%1 %2 is inside a %3 value that starts at %4: expected the first "
                                             "address of a value")
-                                 .arg(QLatin1String(tableKey(t))).arg(address)
+                                 .arg(QLatin1String(simTableKey(t))).arg(address)
                                  .arg(source->format.name())
                                  .arg(address - (address - source->address) % source->width()));
     }
@@ -362,7 +338,7 @@ std::optional<GeneratorSpec> ProfileTableReader::readGenerator(JsonReader &reade
         reader.checkKeys(*o, path, {"kind", "periodMs", "seed", "table", "address"});
         spec.sourceTable = entry.table;
         if (const auto table = reader.string(*o, path, "table")) {
-            if (const auto t = tableFromKey(*table))
+            if (const auto t = simTableFromKey(*table))
                 spec.sourceTable = *t;
             else
                 reader.error(JsonReader::member(path, "table"),

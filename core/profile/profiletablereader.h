@@ -20,9 +20,7 @@ public:
     // Appends the entries to unit->entries, sorted by table then address.
     static void readTables(JsonReader &reader, const QJsonValue &value, const QString &path, UnitProfile *unit);
 
-    // "coils", "discrete", "input", "holding": the keys of "tables" and of a copy's "table".
-    [[nodiscard]] static const char *tableKey(SimTable table);
-    [[nodiscard]] static std::optional<SimTable> tableFromKey(QStringView key);
+    // The keys of "tables" and of a copy's "table" are simTableKey's (simtable.h).
 
 private:
     // known: the entries read so far (a scaleRegister's source is among them).

@@ -129,7 +129,7 @@ void ProfileUnitReader::readSharedTables(JsonReader &reader, const QJsonValue &v
         return;
     for (auto it = o->begin(); it != o->end(); ++it) {
         const QString at = JsonReader::member(path, it.key());
-        const auto asked = ProfileTableReader::tableFromKey(it.key());
+        const auto asked = simTableFromKey(it.key());
         if (!asked) {
             reader.error(at, QStringLiteral("'%1' is not a table: expected coils, discrete, input or holding").arg(it.key()));
             continue;
@@ -137,7 +137,7 @@ void ProfileUnitReader::readSharedTables(JsonReader &reader, const QJsonValue &v
         const auto name = reader.stringValue(it.value(), at);
         if (!name)
             continue;
-        const auto answering = ProfileTableReader::tableFromKey(*name);
+        const auto answering = simTableFromKey(*name);
         if (!answering || *answering == *asked || isBitTable(*answering) != isBitTable(*asked)) {
             reader.error(at, QStringLiteral("'%1' cannot answer reads of %2: expected %3")
                                  .arg(*name, it.key(),
@@ -155,8 +155,8 @@ void ProfileUnitReader::readSharedTables(JsonReader &reader, const QJsonValue &v
     for (auto it = unit->sharedTables.cbegin(); it != unit->sharedTables.cend(); ++it) {
         if (unit->sharedTables.contains(it.value())) {
             reader.error(path, QStringLiteral("%1 and %2 are shared with each other: one of them must hold the entries")
-                                   .arg(QLatin1String(ProfileTableReader::tableKey(it.key())),
-                                        QLatin1String(ProfileTableReader::tableKey(it.value()))));
+                                   .arg(QLatin1String(simTableKey(it.key())),
+                                        QLatin1String(simTableKey(it.value()))));
             break; // said once for the pair
         }
     }

@@ -1,6 +1,9 @@
 #pragma once
 
+#include <QtCore/QStringView>
 #include <QtCore/QtGlobal>
+
+#include <optional>
 
 namespace mbscope {
 
@@ -34,5 +37,9 @@ inline constexpr int SimTableCount = 4;
 
 // "coils", "discrete inputs", "input registers", "holding registers" (for messages).
 [[nodiscard]] const char *simTableName(SimTable table);
+// A table's key in a device profile's "tables" (docs/profiles.md): "coils", "discrete", "input",
+// "holding"; and back (nullopt for any other text).
+[[nodiscard]] const char *simTableKey(SimTable table);
+[[nodiscard]] std::optional<SimTable> simTableFromKey(QStringView key);
 
 } // namespace mbscope

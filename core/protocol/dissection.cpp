@@ -1,31 +1,15 @@
 #include "dissection.h"
+#include "framingtraits.h"
 
 #include "functioncode.h"
 #include "hexformat.h"
 
 namespace mbscope {
 
-namespace {
-
-QString framingTitle(Framing framing)
-{
-    switch (framing) {
-    case Framing::Rtu: return QStringLiteral("RTU");
-    case Framing::Ascii: return QStringLiteral("ASCII");
-    case Framing::Tcp: return QStringLiteral("Modbus TCP");
-    case Framing::Udp: return QStringLiteral("Modbus UDP");
-    case Framing::Pdu: return QStringLiteral("PDU");
-    case Framing::Auto: break;
-    }
-    return QStringLiteral("Frame");
-}
-
-} // namespace
-
 QString Dissection::summary() const
 {
     const FieldTree &t = fields;
-    QString text = framingTitle(framing);
+    QString text = QLatin1String(framingTraits(framing).title);
     if (direction != Direction::Auto)
         text += QLatin1Char(' ') + directionName(direction);
     for (const char *key : {"rtu.unit_id", "mbap.unit_id", "ascii.unit_id"}) {

@@ -1,4 +1,5 @@
 #include "dissector.h"
+#include "framingtraits.h"
 
 #include "adudissectors.h"
 #include "broadcastrule.h"
@@ -9,9 +10,7 @@ namespace mbscope {
 
 namespace {
 
-// The largest frame each framing allows: a PDU is at most 253 bytes (V1.1b3, 4.1), so an RTU
-// ADU at most 256 (Serial Line V1.02, 2.5.1.1), an MBAP ADU at most 260 (Messaging on TCP/IP
-// V1.0b, 4.1) and an ASCII frame at most 513 characters (Serial Line V1.02, 2.5.2.1).
+// The largest frame each framing allows (framingtraits.h).
 struct AduLimit {
     int bytes;
     const char *what;
@@ -20,15 +19,8 @@ struct AduLimit {
 
 AduLimit aduLimit(Framing framing)
 {
-    switch (framing) {
-    case Framing::Rtu: return {256, "an RTU ADU is at most 256 bytes", "MODBUS over Serial Line V1.02, 2.5.1.1"};
-    case Framing::Ascii: return {513, "an ASCII frame is at most 513 characters", "MODBUS over Serial Line V1.02, 2.5.2.1"};
-    case Framing::Tcp:
-    case Framing::Udp: return {260, "an MBAP ADU is at most 260 bytes", "MODBUS Messaging on TCP/IP V1.0b, 4.1"};
-    case Framing::Pdu:
-    case Framing::Auto: break;
-    }
-    return {253, "a PDU is at most 253 bytes", "MODBUS Application Protocol V1.1b3, 4.1"};
+    const FramingTraits &t = framingTraits(framing);
+    return {t.maxFrameBytes, t.maxFrameRule, t.maxFrameClause};
 }
 
 // n is the frame's size as it travels: for ASCII its characters, although the tree then holds
@@ -53,7 +45,7 @@ void checkAduSize(FieldTree &tree, Framing framing, int n)
 // sent to an RTU link read as "unit 0").
 void checkBroadcastRead(Dissection &out)
 {
-    if (out.direction != Direction::Request || (out.framing != Framing::Rtu && out.framing != Framing::Ascii)
+    if (out.direction != Direction::Request || !isSerialLine(out.framing)
         || out.fields.worstSeverity() >= Severity::Error)
         return;
     const int unit = out.fields.indexOf(out.framing == Framing::Rtu ? "rtu.unit_id" : "ascii.unit_id");

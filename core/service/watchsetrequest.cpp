@@ -2,6 +2,7 @@
 
 #include "protocol/registervalue.h"
 #include "watch/watchdecoder.h"
+#include "watch/watchblock.h"
 
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
@@ -101,7 +102,7 @@ WatchSetRequest WatchSetRequest::parse(const WatchDefinition &watch, const QByte
             request.writes.append(write);
             continue;
         }
-        const RegisterFormat format = WatchDecoder::effectiveFormat(watch, *point);
+        const RegisterFormat format = WatchBlock::effectiveFormat(watch, *point);
         RegisterValueResult encoded;
         if (value.isString()) {
             encoded = RegisterValue::fromText(value.toString(), format);

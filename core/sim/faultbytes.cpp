@@ -1,4 +1,5 @@
 #include "sim/faultbytes.h"
+#include "protocol/framingtraits.h"
 
 #include "sim/simrandom.h"
 
@@ -10,16 +11,6 @@ namespace mbscope {
 
 namespace {
 
-bool isMbap(Framing framing)
-{
-    return framing == Framing::Tcp || framing == Framing::Udp;
-}
-
-bool isSerial(Framing framing)
-{
-    return framing == Framing::Rtu || framing == Framing::Ascii;
-}
-
 char hexDigit(int value)
 {
     return "0123456789ABCDEF"[value & 0x0F];
@@ -30,24 +21,12 @@ char hexDigit(int value)
 QByteArray FaultBytes::rewrap(QByteArrayView adu, Framing framing, QByteArrayView pdu, quint8 unit)
 {
     const AduParts parts = AduBuilder::parse(adu, framing);
-    switch (framing) {
-    case Framing::Tcp:
-    case Framing::Udp:
-        return AduBuilder::mbap(pdu, unit, parts.transactionId, parts.protocolId);
-    case Framing::Rtu:
-        return AduBuilder::rtu(pdu, unit);
-    case Framing::Ascii:
-        return AduBuilder::ascii(pdu, unit);
-    case Framing::Pdu:
-    case Framing::Auto:
-        break;
-    }
-    return pdu.toByteArray();
+    return AduBuilder::complete(pdu, AduOptions{framing, unit, parts.transactionId, parts.protocolId});
 }
 
 QByteArray FaultBytes::wrongChecksum(QByteArrayView adu, Framing framing)
 {
-    if (!isSerial(framing))
+    if (!isSerialLine(framing))
         return {};
     QByteArray out = adu.toByteArray();
     if (framing == Framing::Rtu) {
@@ -73,7 +52,7 @@ QByteArray FaultBytes::wrongChecksum(QByteArrayView adu, Framing framing)
 
 QByteArray FaultBytes::wrongTransactionId(QByteArrayView adu, Framing framing, int delta)
 {
-    if (!isMbap(framing) || adu.size() < 7)
+    if (!framingTraits(framing).mbap || adu.size() < 7)
         return {};
     QByteArray out = adu.toByteArray();
     const quint16 tid = quint16((quint8(out.at(0)) << 8 | quint8(out.at(1))) + delta);

@@ -1,4 +1,5 @@
 #include "sim/faultinjector.h"
+#include "protocol/framingtraits.h"
 
 #include "protocol/adubuilder.h"
 #include "sim/faultbytes.h"
@@ -214,7 +215,7 @@ bool FaultInjector::matches(const FaultRule &rule, const FaultContext &context)
     }
     switch (rule.kind) {
     case K::WrongChecksum:
-        return context.framing == Framing::Rtu || context.framing == Framing::Ascii;
+        return isSerialLine(context.framing);
     case K::WrongTransactionId:
         return context.framing == Framing::Tcp || context.framing == Framing::Udp;
     case K::FewerRegisters:

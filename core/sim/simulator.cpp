@@ -1,15 +1,14 @@
 #include "sim/simulator.h"
+#include "protocol/framingtraits.h"
 
 #include "traffic/trafficlog.h"
 #include "protocol/adubuilder.h"
 #include "protocol/delimitedframer.h"
 #include "sim/lineresponder.h"
-#include "sim/simdatagramendpoint.h"
 #include "script/scripthost.h"
 #include "sim/simprocessor.h"
 #include "sim/simscriptreply.h"
-#include "sim/simserialendpoint.h"
-#include "sim/simstreamendpoint.h"
+#include "sim/simendpoint.h"
 #include "sim/simunit.h"
 #include "sim/simremote.h"
 #include "transport/linkurl.h"
@@ -22,20 +21,6 @@
 namespace mbscope {
 
 namespace {
-
-bool isSerialFraming(Framing framing)
-{
-    return framing == Framing::Rtu || framing == Framing::Ascii;
-}
-
-QByteArray frameAnswer(const QByteArray &pdu, Framing framing, quint8 unitId, quint16 transactionId)
-{
-    switch (framing) {
-    case Framing::Rtu: return AduBuilder::rtu(pdu, unitId);
-    case Framing::Ascii: return AduBuilder::ascii(pdu, unitId);
-    default: return AduBuilder::mbap(pdu, unitId, transactionId);
-    }
-}
 
 TrafficVerdict trafficVerdictOf(SimLogEntry::Verdict verdict)
 {
@@ -123,54 +108,6 @@ ScriptHost *Simulator::script(quint8 unitId) const
 {
     const auto it = m_units.find(unitId);
     return it == m_units.end() ? nullptr : it->second.script;
-}
-
-SimEndpoint *Simulator::listen(const QString &url, const SimEndpointOptions &options, QString *error)
-{
-    const LinkUrl::Result parsed = LinkUrl::parse(url, LinkUse::Listen);
-    if (!parsed.url) {
-        if (error)
-            *error = parsed.error;
-        return nullptr;
-    }
-    return listen(*parsed.url, options, error);
-}
-
-SimEndpoint *Simulator::listen(const LinkUrl &url, const SimEndpointOptions &options, QString *error)
-{
-    if (url.delimited.enabled && m_lineTable.isEmpty() && !m_lineScript) {
-        if (error)
-            *error = url.toString() + QStringLiteral(": framing=delimited needs a profile with a 'delimited' table of requests "
-                                                     "and answers or a script (docs/profiles.md, \"Delimited protocols\")");
-        return nullptr;
-    }
-    SimEndpoint *endpoint = nullptr;
-    switch (url.kind) {
-    case LinkKind::Tcp:
-    case LinkKind::RtuTcp:
-    case LinkKind::AsciiTcp:
-    case LinkKind::Tls:
-        endpoint = new SimStreamEndpoint(this, url, options);
-        break;
-    case LinkKind::Udp:
-    case LinkKind::RtuUdp:
-        endpoint = new SimDatagramEndpoint(this, url, options);
-        break;
-    case LinkKind::Rtu:
-    case LinkKind::Ascii:
-        endpoint = new SimSerialEndpoint(this, url, options);
-        break;
-    }
-    QString why;
-    if (!endpoint->start(&why)) {
-        delete endpoint;
-        if (error)
-            *error = why;
-        return nullptr;
-    }
-    endpoint->setParent(this);
-    m_endpoints.append(endpoint);
-    return endpoint;
 }
 
 void Simulator::closeEndpoint(SimEndpoint *endpoint)
@@ -368,7 +305,7 @@ bool Simulator::acceptModbusFrame(SimEndpoint *endpoint, QByteArrayView adu, Fra
                                   const SlotList &units, AduParts *out)
 {
     const Framing framing = endpoint->framing();
-    const bool serial = isSerialFraming(framing);
+    const bool serial = isSerialLine(framing);
     *out = AduBuilder::parse(adu, framing);
     const AduParts &parts = *out;
     const int unitForLog = parts.complete || !parts.pdu.isEmpty() ? parts.unitId : -1;
@@ -416,7 +353,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
     FaultPlan silence;
     silence.drop = true;
     const Framing framing = endpoint->framing();
-    const bool serial = isSerialFraming(framing);
+    const bool serial = isSerialLine(framing);
     const SlotList units = slotsOf(endpoint);
     AduParts parts;
     if (!acceptModbusFrame(endpoint, adu, status, peer, units, &parts))
@@ -494,7 +431,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         log(endpoint, peer, unitId, adu, {}, verdict, reply.note);
         return silence;
     }
-    const QByteArray answer = exactAnswer.isEmpty() ? frameAnswer(reply.pdu, framing, unitId, parts.transactionId) : exactAnswer;
+    const QByteArray answer = exactAnswer.isEmpty() ? AduBuilder::complete(reply.pdu, AduOptions{framing, unitId, parts.transactionId, 0}) : exactAnswer;
     FaultPlan plan;
     if (m_faultHook) {
         SimExchange exchange;
@@ -523,7 +460,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
 
 void Simulator::noteSkipped(SimEndpoint *endpoint, const SkippedBytes &skipped, const QString &peer)
 {
-    if (isSerialFraming(endpoint->framing())) {
+    if (isSerialLine(endpoint->framing())) {
         for (Slot *slot : slotsOf(endpoint)) {
             if (skipped.reason == SkipReason::TooLong)
                 SimProcessor::noteOverrun(*slot->unit);
@@ -644,93 +581,6 @@ quint64 Simulator::log(SimEndpoint *endpoint, const QString &peer, int unitId, Q
         logUnanswered(endpoint, id, verdict == SimLogEntry::Verdict::NoAnswer && unitId == 0, tNs);
     emitEntry(endpoint, peer, unitId, request, response, verdict, reason, faults);
     return id;
-}
-
-// ---- Requests answered by the remote (setRemote) ----
-
-bool Simulator::answersLocally(const SimEndpoint *endpoint) const
-{
-    return !m_remote || endpoint->url().delimited.enabled;
-}
-
-void Simulator::takeFrame(SimEndpoint *endpoint, QByteArrayView adu, FrameStatus status, const QString &peer,
-                          qint64 receivedNs, qint64 connectedNs, const PlanSink &sink)
-{
-    if (answersLocally(endpoint)) {
-        sink(handleFrame(endpoint, adu, status, peer, receivedNs, connectedNs));
-        return;
-    }
-    FaultPlan silence;
-    silence.drop = true;
-    AduParts parts;
-    if (!acceptModbusFrame(endpoint, adu, status, peer, {}, &parts)) {
-        sink(silence);
-        return;
-    }
-    const qint64 intervalNs = intervalSince(endpoint, receivedNs);
-    SimRemote::Request request;
-    request.unitId = parts.unitId;
-    request.pdu = parts.pdu;
-    request.framing = endpoint->framing();
-    request.broadcast = isSerialFraming(request.framing) && parts.unitId == 0;
-    request.endpoint = endpoint->name();
-    request.peer = peer;
-    request.receivedNs = receivedNs;
-    // The request is in the journal from the moment it came (the answer may take a while, and
-    // requests of other clients come meanwhile).
-    Pending pending{QPointer<SimEndpoint>(endpoint), peer, adu.toByteArray(), parts, receivedNs, intervalNs,
-                    logArrival(endpoint, peer, adu, TrafficVerdict::Ok, receivedNs), sink};
-    QPointer<Simulator> self(this);
-    m_remote->forward(request, [self, pending = std::move(pending)](const SimRemote::Answer &answer) {
-        if (self && pending.endpoint)
-            self->finishForward(pending, answer);
-    });
-}
-
-void Simulator::finishForward(const Pending &pending, const SimRemote::Answer &answer)
-{
-    SimEndpoint *endpoint = pending.endpoint;
-    const AduParts &parts = pending.parts;
-    const bool broadcast = isSerialFraming(endpoint->framing()) && parts.unitId == 0;
-    if (!answer.reply.hasAnswer() && answer.exactAdu.isEmpty()) {
-        logUnanswered(endpoint, pending.trafficId, broadcast, monotonicNowNs());
-        emitEntry(endpoint, pending.peer, parts.unitId, pending.adu, {}, SimLogEntry::Verdict::NoAnswer, answer.reply.note);
-        FaultPlan silence;
-        silence.drop = true;
-        pending.sink(silence);
-        return;
-    }
-    const QByteArray bytes = !answer.exactAdu.isEmpty()
-                                 ? answer.exactAdu
-                                 : frameAnswer(answer.reply.pdu, endpoint->framing(), parts.unitId, parts.transactionId);
-    const AduParts sent = AduBuilder::parse(bytes, endpoint->framing());
-    const bool exception = !sent.pdu.isEmpty() && (quint8(sent.pdu.at(0)) & 0x80) != 0;
-    const SimLogEntry::Verdict verdict = exception ? SimLogEntry::Verdict::Exception : SimLogEntry::Verdict::Answered;
-    FaultPlan plan;
-    if (m_faultHook) {
-        SimExchange exchange;
-        exchange.endpoint = endpoint->name();
-        exchange.peer = pending.peer;
-        exchange.framing = endpoint->framing();
-        exchange.unitId = parts.unitId;
-        exchange.routedUnitId = parts.unitId;
-        exchange.transactionId = parts.transactionId;
-        exchange.requestAdu = pending.adu;
-        exchange.requestPdu = parts.pdu;
-        exchange.reply = answer.reply;
-        exchange.responseAdu = bytes;
-        exchange.responseDelayNs = 0; // the device's own time has passed already
-        exchange.responseDelayFixed = true;
-        exchange.receivedNs = pending.receivedNs;
-        exchange.intervalNs = pending.intervalNs;
-        plan = m_faultHook(exchange);
-    } else {
-        plan.chunks.append(ResponseChunk{bytes, 0});
-    }
-    plan.trafficId = pending.trafficId;
-    emitEntry(endpoint, pending.peer, parts.unitId, pending.adu, bytes, verdict, answer.reply.note, plan.faults);
-    noteFaultPlan(endpoint, plan);
-    pending.sink(plan);
 }
 
 } // namespace mbscope

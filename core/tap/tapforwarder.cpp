@@ -1,4 +1,5 @@
 #include "tapforwarder.h"
+#include "protocol/framingtraits.h"
 
 #include "engine/enginecore.h"
 #include "engine/enginerecorder.h"
@@ -14,18 +15,10 @@ namespace mbscope {
 
 namespace {
 
-bool isSerial(Framing framing)
-{
-    return framing == Framing::Rtu || framing == Framing::Ascii;
-}
-
 QByteArray frameFor(Framing framing, const QByteArray &pdu, quint8 unit)
 {
-    switch (framing) {
-    case Framing::Rtu: return AduBuilder::rtu(pdu, unit);
-    case Framing::Ascii: return AduBuilder::ascii(pdu, unit);
-    default: return AduBuilder::mbap(pdu, unit, 0); // the engine numbers it (RequestItem::engineNumbered)
-    }
+    // MBAP's transaction id 0: the engine numbers it (RequestItem::engineNumbered).
+    return AduBuilder::complete(pdu, AduOptions{framing, unit, 0, 0});
 }
 
 LinkUrl withoutTimeout(LinkUrl url)
@@ -92,7 +85,7 @@ bool TapForwarder::exceptionsFor(Framing masterFraming) const
     case TapSettings::NoAnswer::Silence: return false;
     case TapSettings::NoAnswer::Auto: break;
     }
-    return !isSerial(masterFraming);
+    return !isSerialLine(masterFraming);
 }
 
 SimRemote::Answer TapForwarder::nothing(Framing masterFraming, quint8 function, quint8 code, const QString &why) const
@@ -143,7 +136,7 @@ void TapForwarder::forward(const Request &request, Done done)
     waiting.done = std::move(done);
     waiting.masterFraming = request.framing;
     waiting.deviceFraming = deviceFraming;
-    waiting.passThrough = isSerial(request.framing) && request.framing == deviceFraming && deviceUnit == request.unitId;
+    waiting.passThrough = isSerialLine(request.framing) && request.framing == deviceFraming && deviceUnit == request.unitId;
     waiting.broadcast = request.broadcast || item.broadcast;
     waiting.function = function;
     waiting.masterUnit = request.unitId;

@@ -1,10 +1,5 @@
 #include "link.h"
 
-#include "seriallink.h"
-#include "tcplink.h"
-#include "tlslink.h"
-#include "udplink.h"
-
 namespace mbscope {
 
 Link::Link(const LinkUrl &url, QObject *parent)
@@ -15,21 +10,6 @@ Link::Link(const LinkUrl &url, QObject *parent)
 }
 
 Link::~Link() = default;
-
-Link *Link::create(const LinkUrl &url, QObject *parent)
-{
-    switch (url.kind) {
-    case LinkKind::Tcp:
-    case LinkKind::RtuTcp:
-    case LinkKind::AsciiTcp: return new TcpLink(url, parent);
-    case LinkKind::Udp:
-    case LinkKind::RtuUdp: return new UdpLink(url, parent);
-    case LinkKind::Rtu:
-    case LinkKind::Ascii: return new SerialLink(url, parent);
-    case LinkKind::Tls: return new TlsLink(url, parent);
-    }
-    return new TcpLink(url, parent);
-}
 
 bool Link::refuseWriteWhenListening(qsizetype byteCount)
 {

@@ -1,6 +1,5 @@
 #include "watchblock.h"
 
-#include "watch/watchdecoder.h"
 #include "protocol/quantitylimits.h"
 
 namespace mbscope {
@@ -18,6 +17,19 @@ quint16 word(QByteArrayView pdu, qsizetype at)
 }
 
 } // namespace
+
+RegisterFormat WatchBlock::effectiveFormat(const WatchDefinition &watch, const WatchPoint &point)
+{
+    if (wordsPerAddress(watch) != 2 || point.format.registerCount() != 1)
+        return point.format;
+    const RegisterOrder order = point.format.isByteSwapped() ? RegisterOrder::BADC : RegisterOrder::ABCD;
+    switch (point.format.type()) {
+    case RegisterType::Int16:
+        return RegisterFormat(RegisterType::Int32, order);
+    default:
+        return RegisterFormat(RegisterType::UInt32, order);
+    }
+}
 
 int WatchBlock::maxQuantity(quint8 function, bool enron32)
 {
@@ -157,7 +169,7 @@ QByteArray WatchBlock::writePdu(const WatchDefinition &watch, quint16 address, c
         return pdu;
     }
     const int perAddress = wordsPerAddress(watch);
-    const int expected = qMax(perAddress, WatchDecoder::effectiveFormat(watch, *point).registerCount());
+    const int expected = qMax(perAddress, effectiveFormat(watch, *point).registerCount());
     if (words.size() != expected)
         return refuse(QStringLiteral("%1: the point holds %2 registers, %3 given").arg(where).arg(expected).arg(words.size()));
     if (expected == 1) {

@@ -28,6 +28,9 @@ struct WatchAnswer {
 class WatchBlock
 {
 public:
+    // A point's format as the watch reads it: in an Enron watch a 16-bit format reads the whole
+    // 32-bit register (u16 as u32, i16 as i32, with the format's order), other formats as given.
+    [[nodiscard]] static RegisterFormat effectiveFormat(const WatchDefinition &watch, const WatchPoint &point);
     // Most addresses one read of the function may ask for (0 for a function no watch reads).
     [[nodiscard]] static int maxQuantity(quint8 function, bool enron32);
     [[nodiscard]] static bool isBitFunction(quint8 function) { return function == 1 || function == 2; }

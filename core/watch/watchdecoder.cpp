@@ -8,19 +8,6 @@
 
 namespace mbscope {
 
-RegisterFormat WatchDecoder::effectiveFormat(const WatchDefinition &watch, const WatchPoint &point)
-{
-    if (WatchBlock::wordsPerAddress(watch) != 2 || point.format.registerCount() != 1)
-        return point.format;
-    const RegisterOrder order = point.format.isByteSwapped() ? RegisterOrder::BADC : RegisterOrder::ABCD;
-    switch (point.format.type()) {
-    case RegisterType::Int16:
-        return RegisterFormat(RegisterType::Int32, order);
-    default:
-        return RegisterFormat(RegisterType::UInt32, order);
-    }
-}
-
 quint32 WatchDecoder::bitFieldValue(const WatchBitField &field, quint64 raw)
 {
     const quint64 mask = field.bitCount >= 32 ? 0xFFFFFFFFULL : ((1ULL << field.bitCount) - 1);
@@ -71,7 +58,7 @@ QList<WatchPointValue> WatchDecoder::decode(const WatchDefinition &watch, const 
         v.address = quint16(watch.address + i);
         const auto p = pointAt.constFind(v.address);
         const WatchPoint *point = p != pointAt.constEnd() ? &watch.points.at(*p) : nullptr;
-        RegisterFormat format = point ? effectiveFormat(watch, *point)
+        RegisterFormat format = point ? WatchBlock::effectiveFormat(watch, *point)
                                       : (perAddress == 2 ? RegisterFormat(RegisterType::UInt32) : RegisterFormat());
         // Addresses the value occupies: a u32 spans two 16-bit addresses, one 32-bit Enron address.
         const int width = qMax(1, format.registerCount() / perAddress);

@@ -17,9 +17,6 @@ class WatchDecoder
 public:
     [[nodiscard]] static QList<WatchPointValue> decode(const WatchDefinition &watch, const QList<quint16> &words,
                                                        const QList<bool> &bits);
-    // A point's format as the watch reads it: in an Enron watch a 16-bit format reads the whole
-    // 32-bit register (u16 as u32, i16 as i32, with the format's order), other formats as given.
-    [[nodiscard]] static RegisterFormat effectiveFormat(const WatchDefinition &watch, const WatchPoint &point);
     // The value of a bit field of a raw register.
     [[nodiscard]] static quint32 bitFieldValue(const WatchBitField &field, quint64 raw);
     // "123.4": a number with at most ten significant digits, no trailing zeros.

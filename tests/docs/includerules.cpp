@@ -138,6 +138,19 @@ IncludeRules::Resolution IncludeRules::resolve(const QString &file, const QStrin
     return result;
 }
 
+QStringList IncludeRules::includedFiles(const QString &file, const QString &text) const
+{
+    static const QRegularExpression quoted(QStringLiteral(R"re(^\s*#\s*include\s*"([^"]+)")re"),
+                                           QRegularExpression::MultilineOption);
+    QStringList out;
+    for (auto it = quoted.globalMatch(text); it.hasNext();) {
+        const QString target = resolve(file, it.next().captured(1)).target;
+        if (!target.isEmpty() && !out.contains(target))
+            out.append(target);
+    }
+    return out;
+}
+
 void IncludeRules::checkQuoted(const QString &file, int line, const QString &name, bool uiGuarded,
                                QList<IncludeViolation> &out) const
 {

@@ -44,6 +44,10 @@ public:
     // The violations of one file's text; file is where it lives (it need not be in knownFiles).
     [[nodiscard]] QList<IncludeViolation> check(const QString &file, const QString &text) const;
 
+    // The files a file's quoted includes reach (resolved as the compiler does; names that reach no
+    // file and the file's own moc are left out).
+    [[nodiscard]] QStringList includedFiles(const QString &file, const QString &text) const;
+
     // Every .h and .cpp under the folders checked (core/, ui/, app/, tests/core/), relative.
     [[nodiscard]] static QStringList sourceFiles(const QString &sourceDir);
     // Every file the includes may name: sourceFiles plus the rest of tests/.

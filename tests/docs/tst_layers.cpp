@@ -1,6 +1,7 @@
 // The layering docs/architecture.md describes ("Layers") is the one the code keeps: every #include
 // in core/, ui/, app/ and tests/core/ is checked against IncludeRules, the doc's tables are
 // compared with the rules' own, and made-up violating includes prove the checker catches each rule.
+#include "classcycles.h"
 #include "includerules.h"
 
 #include <QtCore/QDir>
@@ -85,6 +86,9 @@ class TestLayers : public QObject
 private Q_SLOTS:
     void initTestCase();
     void treeKeepsTheLayers();
+    void noClassesDependOnEachOther();
+    void cyclesFound_data();
+    void cyclesFound();
     void docStatesTheSameRules();
     void everyFolderHasALayer_data();
     void everyFolderHasALayer();
@@ -127,6 +131,58 @@ void TestLayers::treeKeepsTheLayers()
              qPrintable(QStringLiteral("%1 includes break the layering (docs/architecture.md, Layers):\n%2")
                             .arg(violations.size())
                             .arg(listed(violations))));
+}
+
+// No two classes of core/, ui/ or app/ depend on each other (docs/architecture.md, Layers).
+void TestLayers::noClassesDependOnEachOther()
+{
+    const IncludeRules rules(m_known);
+    QMap<QString, QStringList> includes;
+    for (const QString &file : std::as_const(m_sources)) {
+        if (!file.startsWith(QLatin1String("tests/")))
+            includes.insert(file, rules.includedFiles(file, readText(kSourceDir + QLatin1Char('/') + file)));
+    }
+    QVERIFY(includes.size() > 500);
+    QStringList groups;
+    for (const QStringList &cycle : classCycles(includes))
+        groups.append(cycle.join(QLatin1String(" <-> ")));
+    QVERIFY2(groups.isEmpty(), qPrintable(QStringLiteral("classes that depend on each other (move what one needs of "
+                                                         "the other into a file of its own):\n")
+                                          + groups.join(QLatin1Char('\n'))));
+}
+
+void TestLayers::cyclesFound_data()
+{
+    QTest::addColumn<QStringList>("edges"); // "from.cpp>to.h"
+    QTest::addColumn<QStringList>("cycles");
+    QTest::newRow("a factory in the base class")
+        << QStringList{QStringLiteral("t/link.cpp>t/link.h"), QStringLiteral("t/link.cpp>t/tcplink.h"),
+                       QStringLiteral("t/tcplink.h>t/link.h"), QStringLiteral("t/tcplink.cpp>t/tcplink.h")}
+        << QStringList{QStringLiteral("t/link t/tcplink")};
+    QTest::newRow("the factory in a file of its own")
+        << QStringList{QStringLiteral("t/link.cpp>t/link.h"), QStringLiteral("t/linkfactory.cpp>t/link.h"),
+                       QStringLiteral("t/linkfactory.cpp>t/tcplink.h"), QStringLiteral("t/tcplink.h>t/link.h")}
+        << QStringList{};
+    QTest::newRow("three around")
+        << QStringList{QStringLiteral("a.cpp>b.h"), QStringLiteral("b.cpp>c.h"), QStringLiteral("c.cpp>a.h"),
+                       QStringLiteral("d.cpp>a.h")}
+        << QStringList{QStringLiteral("a b c")};
+    QTest::newRow("two apart") << QStringList{QStringLiteral("a.cpp>b.h"), QStringLiteral("b.cpp>a.h"),
+                                              QStringLiteral("x.h>y.h"), QStringLiteral("y.cpp>x.h")}
+                               << QStringList{QStringLiteral("a b"), QStringLiteral("x y")};
+}
+
+void TestLayers::cyclesFound()
+{
+    QFETCH(QStringList, edges);
+    QFETCH(QStringList, cycles);
+    QMap<QString, QStringList> includes;
+    for (const QString &edge : std::as_const(edges))
+        includes[edge.section(QLatin1Char('>'), 0, 0)].append(edge.section(QLatin1Char('>'), 1));
+    QStringList found;
+    for (const QStringList &cycle : classCycles(includes))
+        found.append(cycle.join(QLatin1Char(' ')));
+    QCOMPARE(found, cycles);
 }
 
 void TestLayers::docStatesTheSameRules()

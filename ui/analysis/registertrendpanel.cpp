@@ -14,7 +14,6 @@
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
-#include <QtCore/QJsonObject>
 #include <QtCore/QSettings>
 #include <QtGui/QAction>
 #include <QtWidgets/QComboBox>
@@ -47,53 +46,6 @@ QColor seriesColour(int index)
 // Where the plotted series are kept between runs (issue 14, item 3: trend choices survive a
 // restart): one JSON object a series.
 const QString kShownKey = QStringLiteral("trends/shown");
-
-QJsonObject seriesToJson(const TrendSeries &s)
-{
-    return QJsonObject{{QStringLiteral("unitId"), s.unitId},
-                       {QStringLiteral("table"), int(s.table)},
-                       {QStringLiteral("address"), s.address},
-                       {QStringLiteral("format"), s.format.name()},
-                       {QStringLiteral("scale"), s.scale},
-                       {QStringLiteral("offset"), s.offset},
-                       {QStringLiteral("name"), s.name},
-                       {QStringLiteral("unit"), s.unit},
-                       {QStringLiteral("profile"), s.profileName},
-                       {QStringLiteral("watch"), s.watchName}};
-}
-
-std::optional<TrendSeries> seriesFromJson(const QJsonObject &o)
-{
-    const QString watch = o.value(QStringLiteral("watch")).toString();
-    if (!watch.isEmpty()) {
-        const int address = o.value(QStringLiteral("address")).toInt(-1);
-        if (address < 0 || address > 0xFFFF)
-            return std::nullopt;
-        TrendSeries s;
-        s.watchName = watch;
-        s.address = address;
-        s.name = o.value(QStringLiteral("name")).toString();
-        s.unit = o.value(QStringLiteral("unit")).toString();
-        return s;
-    }
-    const int table = o.value(QStringLiteral("table")).toInt(-1);
-    const int address = o.value(QStringLiteral("address")).toInt(-1);
-    const RegisterFormatResult format = RegisterFormat::parse(o.value(QStringLiteral("format")).toString());
-    if (table < int(ModbusTable::Coils) || table > int(ModbusTable::HoldingRegisters) || address < 0 || address > 0xFFFF
-        || !format.ok)
-        return std::nullopt;
-    TrendSeries s;
-    s.unitId = o.value(QStringLiteral("unitId")).toInt(-1);
-    s.table = ModbusTable(table);
-    s.address = address;
-    s.format = format.format;
-    s.scale = o.value(QStringLiteral("scale")).toDouble(1);
-    s.offset = o.value(QStringLiteral("offset")).toDouble(0);
-    s.name = o.value(QStringLiteral("name")).toString();
-    s.unit = o.value(QStringLiteral("unit")).toString();
-    s.profileName = o.value(QStringLiteral("profile")).toString();
-    return s;
-}
 
 } // namespace
 
@@ -251,7 +203,7 @@ void RegisterTrendPanel::saveChoices() const
     QJsonArray shown;
     for (const Row &row : m_rows) {
         if (row.graph && row.graph->visible())
-            shown.append(seriesToJson(row.series));
+            shown.append(row.series.toJson());
     }
     QSettings().setValue(kShownKey, QString::fromUtf8(QJsonDocument(shown).toJson(QJsonDocument::Compact)));
 }
@@ -261,7 +213,7 @@ void RegisterTrendPanel::restoreChoices()
     const QJsonArray saved = QJsonDocument::fromJson(QSettings().value(kShownKey).toString().toUtf8()).array();
     m_restoring = true;
     for (const QJsonValue &value : saved) {
-        const std::optional<TrendSeries> series = seriesFromJson(value.toObject());
+        const std::optional<TrendSeries> series = TrendSeries::fromJson(value.toObject());
         if (!series)
             continue;
         const auto row = std::find_if(m_rows.cbegin(), m_rows.cend(),

@@ -106,4 +106,52 @@ QList<TrendSeries> TrendSeries::fromProfile(const UnitProfile &unit, const QStri
     return out;
 }
 
+QJsonObject TrendSeries::toJson() const
+{
+    const TrendSeries &s = *this;
+    return QJsonObject{{QStringLiteral("unitId"), s.unitId},
+                       {QStringLiteral("table"), int(s.table)},
+                       {QStringLiteral("address"), s.address},
+                       {QStringLiteral("format"), s.format.name()},
+                       {QStringLiteral("scale"), s.scale},
+                       {QStringLiteral("offset"), s.offset},
+                       {QStringLiteral("name"), s.name},
+                       {QStringLiteral("unit"), s.unit},
+                       {QStringLiteral("profile"), s.profileName},
+                       {QStringLiteral("watch"), s.watchName}};
+}
+
+std::optional<TrendSeries> TrendSeries::fromJson(const QJsonObject &o)
+{
+    const QString watch = o.value(QStringLiteral("watch")).toString();
+    if (!watch.isEmpty()) {
+        const int address = o.value(QStringLiteral("address")).toInt(-1);
+        if (address < 0 || address > 0xFFFF)
+            return std::nullopt;
+        TrendSeries s;
+        s.watchName = watch;
+        s.address = address;
+        s.name = o.value(QStringLiteral("name")).toString();
+        s.unit = o.value(QStringLiteral("unit")).toString();
+        return s;
+    }
+    const int table = o.value(QStringLiteral("table")).toInt(-1);
+    const int address = o.value(QStringLiteral("address")).toInt(-1);
+    const RegisterFormatResult format = RegisterFormat::parse(o.value(QStringLiteral("format")).toString());
+    if (table < int(ModbusTable::Coils) || table > int(ModbusTable::HoldingRegisters) || address < 0 || address > 0xFFFF
+        || !format.ok)
+        return std::nullopt;
+    TrendSeries s;
+    s.unitId = o.value(QStringLiteral("unitId")).toInt(-1);
+    s.table = ModbusTable(table);
+    s.address = address;
+    s.format = format.format;
+    s.scale = o.value(QStringLiteral("scale")).toDouble(1);
+    s.offset = o.value(QStringLiteral("offset")).toDouble(0);
+    s.name = o.value(QStringLiteral("name")).toString();
+    s.unit = o.value(QStringLiteral("unit")).toString();
+    s.profileName = o.value(QStringLiteral("profile")).toString();
+    return s;
+}
+
 } // namespace mbscope

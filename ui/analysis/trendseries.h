@@ -5,6 +5,7 @@
 #include "protocol/registerformat.h"
 #include "profile/deviceprofile.h"
 
+#include <QtCore/QJsonObject>
 #include <QtCore/QList>
 #include <QtCore/QString>
 
@@ -41,6 +42,11 @@ struct TrendSeries {
     [[nodiscard]] bool sameRegister(const TrendSeries &other) const;
     // The scaled value this answer holds, if it holds all of the series' registers.
     [[nodiscard]] std::optional<double> valueIn(const ReadAnswer &answer) const;
+
+    // As the trend panel keeps it between runs (one JSON object a series), and back; nullopt for
+    // an object that does not name a register (a table, an address or a format out of range).
+    [[nodiscard]] QJsonObject toJson() const;
+    [[nodiscard]] static std::optional<TrendSeries> fromJson(const QJsonObject &object);
 
     // One series per value of each register or bit entry of the unit's profile, in table order.
     [[nodiscard]] static QList<TrendSeries> fromProfile(const UnitProfile &unit, const QString &profileName);

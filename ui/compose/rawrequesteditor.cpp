@@ -1,4 +1,5 @@
 #include "rawrequesteditor.h"
+#include "protocol/framingtraits.h"
 
 #include "common/coretext.h"
 
@@ -299,7 +300,7 @@ void RawRequestEditor::updateCompleteMenu()
     QMenu *menu = m_completeButton->menu();
     menu->clear();
     menu->addAction(tr("%1 (the bytes are a PDU)").arg(completionName(m_framing)), this, &RawRequestEditor::completePdu);
-    if (m_framing == Framing::Rtu || m_framing == Framing::Ascii)
+    if (isSerialLine(m_framing))
         menu->addAction(m_framing == Framing::Rtu ? tr("Append CRC only (the bytes are unit + PDU)")
                                                   : tr("Add LRC and delimiters only (the bytes are unit + PDU)"),
                         this, &RawRequestEditor::addChecksum);

@@ -2,6 +2,7 @@
 
 #include "common/coretext.h"
 
+#include "protocol/framingtraits.h"
 #include "protocol/functioncode.h"
 #include "protocol/hexformat.h"
 
@@ -11,15 +12,10 @@ namespace {
 
 QString framingTitle(Framing framing)
 {
-    switch (framing) {
-    case Framing::Rtu: return QStringLiteral("RTU");
-    case Framing::Ascii: return QStringLiteral("ASCII");
-    case Framing::Tcp: return QStringLiteral("Modbus TCP");
-    case Framing::Udp: return QStringLiteral("Modbus UDP");
-    case Framing::Pdu: return QStringLiteral("PDU");
-    case Framing::Auto: break;
-    }
-    return DissectionSummary::tr("Frame");
+    // The framing's own names are the standard's, left in English (framingtraits.h).
+    if (framing == Framing::Auto)
+        return DissectionSummary::tr("Frame");
+    return QLatin1String(framingTraits(framing).title);
 }
 
 } // namespace

@@ -1,4 +1,5 @@
 #include "scandialog.h"
+#include "protocol/framingtraits.h"
 
 #include "linescandialog.h"
 #include "mapscandialog.h"
@@ -157,7 +158,7 @@ ScanDialog::~ScanDialog()
 void ScanDialog::setTarget(const LinkUrl &url)
 {
     m_target->setText(url.toString());
-    if (url.isSerial() || url.framing() == Framing::Rtu || url.framing() == Framing::Ascii) {
+    if (url.isSerial() || isSerialLine(url.framing())) {
         m_first->setValue(qMax(1, m_first->value()));
         m_last->setValue(qMin(247, m_last->value()));
     }

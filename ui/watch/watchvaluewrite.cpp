@@ -4,6 +4,7 @@
 #include "protocol/registervalue.h"
 #include "protocol/tablewrite.h"
 #include "watch/watchdecoder.h"
+#include "watch/watchblock.h"
 
 #include <QtCore/QLocale>
 
@@ -34,7 +35,7 @@ WatchWriteWords WatchValueWrite::words(const WatchDefinition &watch, int index, 
             result.words = {quint16(*on ? 1 : 0)};
         return result;
     }
-    const RegisterFormat format = WatchDecoder::effectiveFormat(watch, point);
+    const RegisterFormat format = WatchBlock::effectiveFormat(watch, point);
     QString number = text.trimmed();
     if (!point.unit.isEmpty() && number.endsWith(point.unit))
         number = number.chopped(point.unit.size()).trimmed();

@@ -1,4 +1,5 @@
 #include "protocol/adubuilder.h"
+#include "protocol/framingtraits.h"
 
 #include <QtTest/QtTest>
 
@@ -228,6 +229,53 @@ private slots:
     }
 
     // Round trip: build then take apart, for every unit id and a spread of PDU sizes.
+    // The framing table (framingtraits.h) against what AduBuilder really adds and the limits the
+    // specifications give: V1.1b3 4.1 (PDU 253), Serial Line V1.02 2.5.1.1 (RTU 256) and 2.5.2.1
+    // (ASCII 513 characters), TCP/IP V1.0b 4.1 (MBAP 260).
+    void framingTraits_data()
+    {
+        QTest::addColumn<Framing>("framing");
+        QTest::addColumn<bool>("serialLine");
+        QTest::addColumn<bool>("mbap");
+        QTest::addColumn<int>("maxFrame");
+        QTest::addColumn<QString>("title");
+        QTest::addColumn<QString>("check");
+        QTest::newRow("rtu") << Framing::Rtu << true << false << 256 << "RTU" << "CRC";
+        QTest::newRow("ascii") << Framing::Ascii << true << false << 513 << "ASCII" << "LRC";
+        QTest::newRow("tcp") << Framing::Tcp << false << true << 260 << "Modbus TCP" << QString();
+        QTest::newRow("udp") << Framing::Udp << false << true << 260 << "Modbus UDP" << QString();
+        QTest::newRow("pdu") << Framing::Pdu << false << false << 253 << "PDU" << QString();
+    }
+    void framingTraits()
+    {
+        QFETCH(Framing, framing);
+        QFETCH(bool, serialLine);
+        QFETCH(bool, mbap);
+        QFETCH(int, maxFrame);
+        QFETCH(QString, title);
+        QFETCH(QString, check);
+        const FramingTraits &t = mbscope::framingTraits(framing);
+        QCOMPARE(t.serialLine, serialLine);
+        QCOMPARE(isSerialLine(framing), serialLine);
+        QCOMPARE(t.mbap, mbap);
+        QCOMPARE(t.maxFrameBytes, maxFrame);
+        QCOMPARE(QLatin1String(t.title), title);
+        QCOMPARE(t.checkName ? QString::fromLatin1(t.checkName) : QString(), check);
+        QVERIFY(QByteArray(t.maxFrameRule).contains(QByteArray::number(maxFrame)));
+
+        // What the framing adds to a PDU, once decoded, is headerBytes before it and checkBytes after.
+        const QByteArray pdu = QByteArray::fromHex("0300790016");
+        const QByteArray adu = AduBuilder::complete(pdu, AduOptions{framing, 1, 7, 0});
+        const AduParts parts = AduBuilder::parse(adu, framing);
+        QCOMPARE(parts.pdu, pdu);
+        const qsizetype decoded = framing == Framing::Ascii ? (adu.size() - 3) / 2 : adu.size();
+        QCOMPARE(decoded, t.headerBytes + pdu.size() + t.checkBytes);
+
+        // The largest PDU (253 bytes) makes the largest frame.
+        const QByteArray largest = AduBuilder::complete(QByteArray(253, '\x03'), AduOptions{framing, 1, 7, 0});
+        QCOMPARE(int(largest.size()), maxFrame);
+    }
+
     void roundTrip()
     {
         QByteArray pdu;

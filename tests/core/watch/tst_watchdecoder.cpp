@@ -170,7 +170,7 @@ void TestWatchDecoder::enronValues()
     QCOMPARE(values.at(1).value, 65536.0);
     QCOMPARE(values.at(2).address, quint16(7002));
     QCOMPARE(values.at(2).text, QStringLiteral("4294967295")); // unnamed: u32
-    QCOMPARE(WatchDecoder::effectiveFormat(w, w.points.at(1)).name(), QStringLiteral("u32-abcd"));
+    QCOMPARE(WatchBlock::effectiveFormat(w, w.points.at(1)).name(), QStringLiteral("u32-abcd"));
 }
 
 void TestWatchDecoder::bitFields()
