@@ -47,7 +47,11 @@ void MetricFamily::add(const QStringList &labelValues, double amount)
 
 void MetricFamily::observe(const QStringList &labelValues, double value)
 {
-    MetricSeries &s = at(labelValues);
+    observe(at(labelValues), value);
+}
+
+void MetricFamily::observe(MetricSeries &s, double value) const
+{
     // The first bound the value does not exceed (le: less than or equal); past the last, +Inf.
     const auto bound = std::lower_bound(m_buckets.cbegin(), m_buckets.cend(), value);
     ++s.bucketCounts[bound - m_buckets.cbegin()];
@@ -57,20 +61,22 @@ void MetricFamily::observe(const QStringList &labelValues, double value)
 
 void MetricFamily::touch(const QStringList &labelValues)
 {
-    at(labelValues);
+    (void)at(labelValues);
 }
 
 void MetricFamily::remove(const QStringList &labelValues)
 {
-    m_series.erase(normalised(labelValues));
+    if (m_series.erase(normalised(labelValues)) > 0)
+        ++m_removals;
 }
 
 void MetricFamily::removeWhere(int labelIndex, const QString &value)
 {
     for (auto it = m_series.begin(); it != m_series.end();) {
-        if (it->first.value(labelIndex) == value)
+        if (it->first.value(labelIndex) == value) {
             it = m_series.erase(it);
-        else
+            ++m_removals;
+        } else
             ++it;
     }
 }

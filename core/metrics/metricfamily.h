@@ -42,19 +42,31 @@ public:
     void set(const QStringList &labelValues, double value);
     void add(const QStringList &labelValues, double amount = 1);
     void observe(const QStringList &labelValues, double value);
+    // The same on a series of this family (at()).
+    void observe(MetricSeries &series, double value) const;
     // The series exists (0, or an empty histogram) without changing it when it already did.
     void touch(const QStringList &labelValues);
     void remove(const QStringList &labelValues);
     // Every series whose label at labelIndex has this value ("all values of watch w").
     void removeWhere(int labelIndex, const QString &value);
-    void clear() { m_series.clear(); }
+    void clear()
+    {
+        m_series.clear();
+        ++m_removals;
+    }
 
     [[nodiscard]] const std::map<QStringList, MetricSeries> &series() const { return m_series; }
     // The series, or nullptr when it does not exist.
     [[nodiscard]] const MetricSeries *find(const QStringList &labelValues) const;
 
+    // The series of these labels, made when it did not exist. The reference stays valid while
+    // removals() stays the same (a series is only ever lost by remove, removeWhere or clear), so
+    // a writer that updates the same series many times a second looks its labels up once
+    // (MetricSeriesSlot).
+    [[nodiscard]] MetricSeries &at(const QStringList &labelValues);
+    [[nodiscard]] quint64 removals() const { return m_removals; }
+
 private:
-    MetricSeries &at(const QStringList &labelValues);
     [[nodiscard]] QStringList normalised(const QStringList &labelValues) const;
 
     QString m_name;
@@ -63,6 +75,28 @@ private:
     QStringList m_labelNames;
     QList<double> m_buckets;
     std::map<QStringList, MetricSeries> m_series;
+    quint64 m_removals = 0;
+};
+
+// A series found once and kept while its family has lost none (MetricFamily::removals).
+class MetricSeriesSlot
+{
+public:
+    // labels() is called only when the series must be looked up again.
+    template<typename Labels>
+    MetricSeries &get(MetricFamily &family, Labels labels)
+    {
+        if (!m_series || m_removals != family.removals()) {
+            m_series = &family.at(labels());
+            m_removals = family.removals();
+        }
+        return *m_series;
+    }
+    void forget() { m_series = nullptr; }
+
+private:
+    MetricSeries *m_series = nullptr;
+    quint64 m_removals = 0;
 };
 
 } // namespace mbscope

@@ -102,6 +102,7 @@ void WatchMetrics::reset(const SessionWatches &watches)
     m_registry.clearSeries();
     setBuildInfo();
     m_watches = watches;
+    m_slots = QList<WatchSlots>(m_watches.watches.size());
     for (int i = 0; i < m_watches.watches.size(); ++i) {
         if (!m_watches.watches.at(i).enabled)
             continue;
@@ -122,29 +123,52 @@ void WatchMetrics::addSamples(const QList<WatchSample> &samples)
     for (const WatchSample &s : samples) {
         if (s.watch < 0 || s.watch >= m_watches.watches.size())
             continue;
-        const WatchDefinition &w = m_watches.watches.at(s.watch);
-        const QStringList labels = watchLabels(s.watch);
-        m_up.set(labels, s.isOk() ? 1 : 0);
+        WatchSlots &slots = m_slots[s.watch];
+        auto labels = [&] { return watchLabels(s.watch); };
+        slots.up.get(m_up, labels).value = s.isOk() ? 1 : 0;
         if (s.latencyNs >= 0)
-            m_latency.observe(labels, double(s.latencyNs) / 1e9);
+            m_latency.observe(slots.latency.get(m_latency, labels), double(s.latencyNs) / 1e9);
         if (!s.isOk()) {
             // No value is better than a stale one: the series shows a gap while the device is away.
-            m_value.removeWhere(0, w.name);
-            m_bitField.removeWhere(0, w.name);
+            const QString &name = m_watches.watches.at(s.watch).name;
+            m_value.removeWhere(0, name);
+            m_bitField.removeWhere(0, name);
             continue;
         }
-        const QString unit = QString::number(w.unit);
-        const QString table = tableName(w.function);
-        for (const WatchPointValue &v : s.values) {
-            QStringList valueLabels{w.name, w.target, unit, table, QString::number(v.address), v.name, v.unit};
-            m_value.set(valueLabels, v.value);
-            if (v.bitFields.isEmpty())
-                continue;
-            valueLabels.append(QString());
-            for (const WatchBitFieldValue &field : v.bitFields) {
-                valueLabels.last() = field.name;
-                m_bitField.set(valueLabels, double(field.value));
+        addValues(s.watch, s.values);
+    }
+}
+
+void WatchMetrics::addValues(int watch, const QList<WatchPointValue> &values)
+{
+    const WatchDefinition &w = m_watches.watches.at(watch);
+    QList<ValueSlots> &slots = m_slots[watch].values;
+    if (slots.size() != values.size())
+        slots.resize(values.size());
+    for (qsizetype i = 0; i < values.size(); ++i) {
+        const WatchPointValue &v = values.at(i);
+        ValueSlots &slot = slots[i];
+        if (slot.address != v.address || slot.name != v.name || slot.unit != v.unit) {
+            slot = ValueSlots{v.address, v.name, v.unit, {}, {}, {}};
+        }
+        auto labels = [&] {
+            return QStringList{w.name, w.target, QString::number(w.unit), tableName(w.function), QString::number(v.address),
+                               v.name, v.unit};
+        };
+        slot.value.get(m_value, labels).value = v.value;
+        if (v.bitFields.isEmpty())
+            continue;
+        if (slot.fields.size() != v.bitFields.size()) {
+            slot.fields = QList<MetricSeriesSlot>(v.bitFields.size());
+            slot.fieldNames = QList<QString>(v.bitFields.size());
+        }
+        for (qsizetype f = 0; f < v.bitFields.size(); ++f) {
+            const WatchBitFieldValue &field = v.bitFields.at(f);
+            if (slot.fieldNames.at(f) != field.name) {
+                slot.fieldNames[f] = field.name;
+                slot.fields[f].forget();
             }
+            slot.fields[f].get(m_bitField, [&] { return plus(labels(), field.name); }).value = double(field.value);
         }
     }
 }

@@ -24,9 +24,15 @@ QString WatchDecoder::numberText(double value)
 QList<WatchPointValue> WatchDecoder::decode(const WatchDefinition &watch, const QList<quint16> &words,
                                             const QList<bool> &bits)
 {
-    QHash<quint16, int> pointAt;
-    for (int i = 0; i < watch.points.size(); ++i)
-        pointAt.insert(watch.points.at(i).address, i);
+    // The point at an address; a watch has a few points, so a scan beats a hash made each poll.
+    // The last point of an address wins, as it did when this was a hash.
+    const auto pointAt = [&watch](quint16 address) -> int {
+        for (qsizetype i = watch.points.size() - 1; i >= 0; --i) {
+            if (watch.points.at(i).address == address)
+                return int(i);
+        }
+        return -1;
+    };
 
     QList<WatchPointValue> values;
     if (WatchBlock::isBitFunction(watch.function)) {
@@ -37,14 +43,13 @@ QList<WatchPointValue> WatchDecoder::decode(const WatchDefinition &watch, const 
             v.raw = bits.at(i) ? 1 : 0;
             v.value = double(v.raw);
             v.text = bits.at(i) ? QStringLiteral("1") : QStringLiteral("0");
-            const auto p = pointAt.constFind(v.address);
-            if (p != pointAt.constEnd()) {
-                const WatchPoint &point = watch.points.at(*p);
-                v.point = *p;
+            if (const int p = pointAt(v.address); p >= 0) {
+                const WatchPoint &point = watch.points.at(p);
+                v.point = p;
                 v.name = point.name;
                 v.unit = point.unit;
             }
-            values.append(v);
+            values.append(std::move(v));
         }
         return values;
     }
@@ -56,8 +61,8 @@ QList<WatchPointValue> WatchDecoder::decode(const WatchDefinition &watch, const 
     for (int i = 0; i < addresses;) {
         WatchPointValue v;
         v.address = quint16(watch.address + i);
-        const auto p = pointAt.constFind(v.address);
-        const WatchPoint *point = p != pointAt.constEnd() ? &watch.points.at(*p) : nullptr;
+        const int p = pointAt(v.address);
+        const WatchPoint *point = p >= 0 ? &watch.points.at(p) : nullptr;
         RegisterFormat format = point ? WatchBlock::effectiveFormat(watch, *point)
                                       : (perAddress == 2 ? RegisterFormat(RegisterType::UInt32) : RegisterFormat());
         // Addresses the value occupies: a u32 spans two 16-bit addresses, one 32-bit Enron address.
@@ -77,7 +82,7 @@ QList<WatchPointValue> WatchDecoder::decode(const WatchDefinition &watch, const 
         v.raw = decoded.value.bits();
         const double number = decoded.value.toDouble();
         if (point) {
-            v.point = *p;
+            v.point = p;
             v.name = point->name;
             v.unit = point->unit;
             v.value = number * point->scale + point->offset;
@@ -95,7 +100,7 @@ QList<WatchPointValue> WatchDecoder::decode(const WatchDefinition &watch, const 
             v.value = number;
             v.text = decoded.value.toText();
         }
-        values.append(v);
+        values.append(std::move(v));
         i += used;
     }
     return values;

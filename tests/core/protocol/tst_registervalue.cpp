@@ -78,6 +78,10 @@ private slots:
         // 16-bit
         row("FFFF", "i16", QStringLiteral("-1"));
         row("FFFF", "u16", QStringLiteral("65535"));
+        row("0000", "u16", QStringLiteral("0"));
+        row("0000", "i16", QStringLiteral("0"));
+        row("0009", "u16", QStringLiteral("9"));
+        row("000A", "u16", QStringLiteral("10"));
         row("8000", "i16", QStringLiteral("-32768"));
         row("7FFF", "i16", QStringLiteral("32767"));
         row("FFFE", "i16-ba", QStringLiteral("-257"));
@@ -137,6 +141,8 @@ private slots:
         row("FFFF FFFF FFFF FFFF", "u64-abcdefgh", QStringLiteral("18446744073709551615"));
         row("FFFF FFFF FFFF FFFF", "i64-abcdefgh", QStringLiteral("-1"));
         row("8000 0000 0000 0000", "i64-abcdefgh", QStringLiteral("-9223372036854775808"));
+        row("7FFF FFFF FFFF FFFF", "i64-abcdefgh", QStringLiteral("9223372036854775807"));
+        row("0000 0000 0000 0000", "i64-abcdefgh", QStringLiteral("0"));
         row("0000 0000 0000 0080", "i64-hgfedcba", QStringLiteral("-9223372036854775808"));
         row("FFFE FFFF FFFF FFFF", "i64-ghefcdab", QStringLiteral("-2"));
         // Register pairs from published responses

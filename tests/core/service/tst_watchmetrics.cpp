@@ -39,6 +39,7 @@ class TestWatchMetrics : public QObject
     Q_OBJECT
 private Q_SLOTS:
     void resetStartsOver();
+    void valuesFollowTheSamples();
 };
 
 void TestWatchMetrics::resetStartsOver()
@@ -71,6 +72,71 @@ void TestWatchMetrics::resetStartsOver()
     QVERIFY(polls);
     QCOMPARE(polls->value, 0.0);
     QVERIFY(metrics.registry().find(QStringLiteral("mbscope_build_info"))->find({QStringLiteral("9.9.9")}));
+}
+
+namespace {
+
+WatchSample okSample(double first, const QString &name, quint32 field)
+{
+    WatchSample s;
+    s.watch = 0;
+    s.status = WatchSample::Status::Ok;
+    s.latencyNs = 2'000'000;
+    WatchPointValue a;
+    a.address = 0;
+    a.name = name;
+    a.unit = QStringLiteral("V");
+    a.value = first;
+    a.bitFields.append(WatchBitFieldValue{QStringLiteral("alarm"), field, {}});
+    WatchPointValue b;
+    b.address = 1;
+    b.value = 7;
+    s.values = {a, b};
+    return s;
+}
+
+const MetricSeries *valueOf(const WatchMetrics &m, const QString &address, const QString &name, const QString &unit)
+{
+    return m.registry().find(QStringLiteral("mbscope_watch_value"))
+        ->find({QStringLiteral("w"), QStringLiteral("tcp://127.0.0.1:5020"), QStringLiteral("1"), QStringLiteral("holding_registers"),
+                address, name, unit});
+}
+
+} // namespace
+
+// The service keeps each value's series from poll to poll (issue 32): what it shows must still
+// follow every sample: new values, a failed poll's gap, values back after it, a renamed point.
+void TestWatchMetrics::valuesFollowTheSamples()
+{
+    WatchMetrics metrics(QStringLiteral("9.9.9"));
+    metrics.reset(session(QStringLiteral("w")));
+    metrics.addSamples({okSample(230.5, QStringLiteral("voltage"), 1)});
+    metrics.addSamples({okSample(231.5, QStringLiteral("voltage"), 0)});
+    QCOMPARE(valueOf(metrics, QStringLiteral("0"), QStringLiteral("voltage"), QStringLiteral("V"))->value, 231.5);
+    QCOMPARE(valueOf(metrics, QStringLiteral("1"), QString(), QString())->value, 7.0);
+    const MetricFamily *fields = metrics.registry().find(QStringLiteral("mbscope_watch_bit_field_value"));
+    QCOMPARE(fields->series().size(), std::size_t(1));
+    QCOMPARE(fields->series().begin()->second.value, 0.0);
+    const MetricFamily *latency = metrics.registry().find(QStringLiteral("mbscope_watch_latency_seconds"));
+    QCOMPARE(latency->find({QStringLiteral("w"), QStringLiteral("tcp://127.0.0.1:5020")})->count, quint64(2));
+
+    WatchSample failed;
+    failed.watch = 0;
+    failed.status = WatchSample::Status::Timeout;
+    metrics.addSamples({failed});
+    QVERIFY(!valueOf(metrics, QStringLiteral("0"), QStringLiteral("voltage"), QStringLiteral("V")));
+    QVERIFY(fields->series().empty());
+    QCOMPARE(metrics.registry().find(QStringLiteral("mbscope_watch_up"))->series().begin()->second.value, 0.0);
+
+    metrics.addSamples({okSample(229.0, QStringLiteral("voltage"), 1)});
+    QCOMPARE(valueOf(metrics, QStringLiteral("0"), QStringLiteral("voltage"), QStringLiteral("V"))->value, 229.0);
+    QCOMPARE(fields->series().begin()->second.value, 1.0);
+    QCOMPARE(metrics.registry().find(QStringLiteral("mbscope_watch_up"))->series().begin()->second.value, 1.0);
+
+    // A point named otherwise (a reloaded definition) is a series of its own.
+    metrics.addSamples({okSample(228.0, QStringLiteral("mains"), 1)});
+    QCOMPARE(valueOf(metrics, QStringLiteral("0"), QStringLiteral("mains"), QStringLiteral("V"))->value, 228.0);
+    QCOMPARE(valueOf(metrics, QStringLiteral("0"), QStringLiteral("voltage"), QStringLiteral("V"))->value, 229.0);
 }
 
 QTEST_GUILESS_MAIN(TestWatchMetrics)
