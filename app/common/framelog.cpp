@@ -1,5 +1,7 @@
 #include "common/framelog.h"
 
+#include "common/progressline.h"
+
 #include "engine/transactionengine.h"
 #include "transport/monotonicclock.h"
 
@@ -29,8 +31,6 @@ void appendDigits(QByteArray &out, qint64 value, int digits)
 FrameLog::FrameLog(QObject *parent)
     : QObject(parent)
 {
-    const QDateTime now = QDateTime::currentDateTime();
-    m_localOffsetNs = (now.toMSecsSinceEpoch() + qint64(now.offsetFromUtc()) * 1000) * 1'000'000 - monotonicNowNs();
 }
 
 FrameLog::~FrameLog()
@@ -40,6 +40,10 @@ FrameLog::~FrameLog()
 
 bool FrameLog::open(const QString &path, QString *error)
 {
+    // The local time zone is read here, not in the constructor: a command without a frame log
+    // does not pay for it at start.
+    const QDateTime now = QDateTime::currentDateTime();
+    m_localOffsetNs = (now.toMSecsSinceEpoch() + qint64(now.offsetFromUtc()) * 1000) * 1'000'000 - monotonicNowNs();
     if (path.isEmpty()) {
         m_open = m_file.open(stderr, QIODevice::WriteOnly | QIODevice::Unbuffered);
     } else {
@@ -55,8 +59,16 @@ bool FrameLog::open(const QString &path, QString *error)
 void FrameLog::attach(TransactionEngine *engine)
 {
     engine->setFramesPublished(true);
-    connect(engine, &TransactionEngine::framesLogged, this,
-            [this](const QList<TrafficFrame> &frames, const QString &) { add(frames); });
+    connect(engine, &TransactionEngine::framesLogged, this, &FrameLog::addFrames);
+}
+
+void FrameLog::addFrames(const QList<TrafficFrame> &frames, const QString &link)
+{
+    if (m_namesLinks && m_open && !frames.isEmpty() && link != m_lastLink) {
+        m_lastLink = link;
+        m_file.write("-- link " + link.toUtf8() + '\n');
+    }
+    add(frames);
 }
 
 QByteArray FrameLog::line(const TrafficFrame &frame, qint64 localOffsetNs)
@@ -87,6 +99,8 @@ void FrameLog::add(const QList<TrafficFrame> &frames)
 {
     if (!m_open || frames.isEmpty())
         return;
+    if (m_progress && m_file.handle() == fileno(stderr))
+        m_progress->clear();
     m_buffer.clear();
     for (const TrafficFrame &f : frames) {
         m_buffer += line(f, m_localOffsetNs);
