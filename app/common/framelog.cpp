@@ -71,10 +71,8 @@ void FrameLog::addFrames(const QList<TrafficFrame> &frames, const QString &link)
     add(frames);
 }
 
-QByteArray FrameLog::line(const TrafficFrame &frame, qint64 localOffsetNs)
+void FrameLog::appendLine(QByteArray &out, const TrafficFrame &frame, qint64 localOffsetNs)
 {
-    QByteArray out;
-    out.reserve(40 + 3 * int(frame.bytes.size()));
     const qint64 ns = frame.tNs + localOffsetNs;
     const qint64 dayNs = ((ns % (86400 * 1'000'000'000LL)) + 86400 * 1'000'000'000LL) % (86400 * 1'000'000'000LL);
     const qint64 seconds = dayNs / 1'000'000'000LL;
@@ -89,10 +87,22 @@ QByteArray FrameLog::line(const TrafficFrame &frame, qint64 localOffsetNs)
     const char *verdict = trafficVerdictName(frame.verdict);
     out.append(verdict);
     if (!frame.bytes.isEmpty()) {
-        out.append(QByteArray(qMax(1, kVerdictWidth + 1 - int(qstrlen(verdict))), ' '));
-        out.append(frame.bytes.toHex(' ').toUpper());
+        static const char digits[] = "0123456789ABCDEF";
+        const qsizetype pad = qMax(1, kVerdictWidth + 1 - int(qstrlen(verdict)));
+        const qsizetype start = out.size();
+        out.resize(start + pad + 3 * frame.bytes.size() - 1);
+        char *p = out.data() + start;
+        for (qsizetype i = 0; i < pad; ++i)
+            *p++ = ' ';
+        for (qsizetype i = 0; i < frame.bytes.size(); ++i) {
+            if (i > 0)
+                *p++ = ' ';
+            const auto b = quint8(frame.bytes.at(i));
+            *p++ = digits[b >> 4];
+            *p++ = digits[b & 0xF];
+        }
     }
-    return out;
+    out.append('\n');
 }
 
 void FrameLog::add(const QList<TrafficFrame> &frames)
@@ -101,11 +111,9 @@ void FrameLog::add(const QList<TrafficFrame> &frames)
         return;
     if (m_progress && m_file.handle() == fileno(stderr))
         m_progress->clear();
-    m_buffer.clear();
-    for (const TrafficFrame &f : frames) {
-        m_buffer += line(f, m_localOffsetNs);
-        m_buffer += '\n';
-    }
+    m_buffer.resize(0); // keeps its capacity for the next batch
+    for (const TrafficFrame &f : frames)
+        appendLine(m_buffer, f, m_localOffsetNs);
     m_lines += quint64(frames.size());
     m_file.write(m_buffer);
     m_file.flush();

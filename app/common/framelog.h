@@ -54,9 +54,10 @@ public:
     void close();
     [[nodiscard]] quint64 lines() const { return m_lines; }
 
-    // One frame's line (without its newline), for a wall-clock offset (wall ns minus monotonic ns)
-    // that includes the local time zone's.
-    [[nodiscard]] static QByteArray line(const TrafficFrame &frame, qint64 localOffsetNs);
+    // Appends one frame's line (with its newline) to out, for a wall-clock offset (wall ns minus
+    // monotonic ns) that includes the local time zone's; the hex is written in place, with no
+    // allocation beyond out's own growth.
+    static void appendLine(QByteArray &out, const TrafficFrame &frame, qint64 localOffsetNs);
 
 private:
     QFile m_file;
