@@ -70,6 +70,9 @@ int runDecode(const QStringList &arguments)
         "The frame is given as hex (\"01 03 00 79 00 16 15 DD\", \"0x01,0x03\", \"01-03\"...) in the arguments or on "
         "standard input; an ASCII frame as its characters (\":070300C800042A\") or as the hex of its characters "
         "(\"3A 30 37 30 33 ... 0D 0A\", as a serial analyser shows it).\n"
+        "Examples:\n"
+        "  mbscope decode 01 03 00 79 00 16 15 DD\n"
+        "  mbscope decode --request \"01 03 00 79 00 02 15 D2\" 01 03 04 04 1A 00 00 DA C4\n"
         "Exit status: 0 valid frame, 1 frame with errors, 2 unusable input."));
     parser.addHelpOption();
     const QCommandLineOption framingOpt(QStringLiteral("framing"),

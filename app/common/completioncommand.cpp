@@ -307,6 +307,8 @@ int runCompletion(const QStringList &arguments, const CommandLineIndex &index)
                        "~/.local/share/bash-completion/completions/mbscope.\n"
                        "zsh: save it as _mbscope in a directory of $fpath (before compinit), or source <(mbscope completion zsh) after compinit.\n"
                        "The package installs both (share/bash-completion/completions/mbscope, share/zsh/vendor-completions/_mbscope).\n"
+                       "Example, the bash script saved to a file (to source, or to put where bash-completion looks):\n"
+                       "  mbscope completion bash > mbscope.bash\n"
                        "Exit status: 0 ok, 2 usage error."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("shell"), QStringLiteral("bash or zsh."), kShells.join(QLatin1Char('|')));

@@ -1,5 +1,7 @@
 #include "common/framelog.h"
 
+#include "common/progressline.h"
+
 #include "engine/transactionengine.h"
 #include "transport/monotonicclock.h"
 
@@ -29,8 +31,6 @@ void appendDigits(QByteArray &out, qint64 value, int digits)
 FrameLog::FrameLog(QObject *parent)
     : QObject(parent)
 {
-    const QDateTime now = QDateTime::currentDateTime();
-    m_localOffsetNs = (now.toMSecsSinceEpoch() + qint64(now.offsetFromUtc()) * 1000) * 1'000'000 - monotonicNowNs();
 }
 
 FrameLog::~FrameLog()
@@ -40,6 +40,10 @@ FrameLog::~FrameLog()
 
 bool FrameLog::open(const QString &path, QString *error)
 {
+    // The local time zone is read here, not in the constructor: a command without a frame log
+    // does not pay for it at start.
+    const QDateTime now = QDateTime::currentDateTime();
+    m_localOffsetNs = (now.toMSecsSinceEpoch() + qint64(now.offsetFromUtc()) * 1000) * 1'000'000 - monotonicNowNs();
     if (path.isEmpty()) {
         m_open = m_file.open(stderr, QIODevice::WriteOnly | QIODevice::Unbuffered);
     } else {
@@ -55,14 +59,20 @@ bool FrameLog::open(const QString &path, QString *error)
 void FrameLog::attach(TransactionEngine *engine)
 {
     engine->setFramesPublished(true);
-    connect(engine, &TransactionEngine::framesLogged, this,
-            [this](const QList<TrafficFrame> &frames, const QString &) { add(frames); });
+    connect(engine, &TransactionEngine::framesLogged, this, &FrameLog::addFrames);
 }
 
-QByteArray FrameLog::line(const TrafficFrame &frame, qint64 localOffsetNs)
+void FrameLog::addFrames(const QList<TrafficFrame> &frames, const QString &link)
 {
-    QByteArray out;
-    out.reserve(40 + 3 * int(frame.bytes.size()));
+    if (m_namesLinks && m_open && !frames.isEmpty() && link != m_lastLink) {
+        m_lastLink = link;
+        m_file.write("-- link " + link.toUtf8() + '\n');
+    }
+    add(frames);
+}
+
+void FrameLog::appendLine(QByteArray &out, const TrafficFrame &frame, qint64 localOffsetNs)
+{
     const qint64 ns = frame.tNs + localOffsetNs;
     const qint64 dayNs = ((ns % (86400 * 1'000'000'000LL)) + 86400 * 1'000'000'000LL) % (86400 * 1'000'000'000LL);
     const qint64 seconds = dayNs / 1'000'000'000LL;
@@ -77,21 +87,33 @@ QByteArray FrameLog::line(const TrafficFrame &frame, qint64 localOffsetNs)
     const char *verdict = trafficVerdictName(frame.verdict);
     out.append(verdict);
     if (!frame.bytes.isEmpty()) {
-        out.append(QByteArray(qMax(1, kVerdictWidth + 1 - int(qstrlen(verdict))), ' '));
-        out.append(frame.bytes.toHex(' ').toUpper());
+        static const char digits[] = "0123456789ABCDEF";
+        const qsizetype pad = qMax(1, kVerdictWidth + 1 - int(qstrlen(verdict)));
+        const qsizetype start = out.size();
+        out.resize(start + pad + 3 * frame.bytes.size() - 1);
+        char *p = out.data() + start;
+        for (qsizetype i = 0; i < pad; ++i)
+            *p++ = ' ';
+        for (qsizetype i = 0; i < frame.bytes.size(); ++i) {
+            if (i > 0)
+                *p++ = ' ';
+            const auto b = quint8(frame.bytes.at(i));
+            *p++ = digits[b >> 4];
+            *p++ = digits[b & 0xF];
+        }
     }
-    return out;
+    out.append('\n');
 }
 
 void FrameLog::add(const QList<TrafficFrame> &frames)
 {
     if (!m_open || frames.isEmpty())
         return;
-    m_buffer.clear();
-    for (const TrafficFrame &f : frames) {
-        m_buffer += line(f, m_localOffsetNs);
-        m_buffer += '\n';
-    }
+    if (m_progress && m_file.handle() == fileno(stderr))
+        m_progress->clear();
+    m_buffer.resize(0); // keeps its capacity for the next batch
+    for (const TrafficFrame &f : frames)
+        appendLine(m_buffer, f, m_localOffsetNs);
     m_lines += quint64(frames.size());
     m_file.write(m_buffer);
     m_file.flush();

@@ -65,7 +65,8 @@ int runConform(const QStringList &arguments)
         "Safe by default: it only reads. A check that writes runs only on the addresses --writable names, and puts back "
         "the value it found. Checks of what the device does not support (exception 01 to the survey's read, or not in "
         "the --profile's functions) are skipped with the reason.\n"
-        "Example: mbscope conform --target tcp://127.0.0.1:5020 --profile conformance --junit conform.xml\n"
+        "Example (with mbscope simulate --profile conformance --listen tcp://127.0.0.1:5020 running):\n"
+        "  mbscope conform --target tcp://127.0.0.1:5020 --profile conformance --junit conform.xml\n"
         "Exit status: 0 every mandatory check passed, 1 a mandatory check failed (or Ctrl-C), 2 usage error, or the "
         "target refused or answered nothing at all."));
     parser.addHelpOption();

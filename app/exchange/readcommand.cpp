@@ -30,10 +30,11 @@ int runRead(const QStringList &arguments)
         "Reads coils, discrete inputs, holding or input registers with a request built from the options, prints the "
         "request and the response decoded field by field, the latency, and the values with their Modicon references in "
         "the formats asked.\n"
-        "Example: mbscope read --target tcp://192.168.1.10 --unit 1 --function 3 --address 0x79 --quantity 22 "
-        "--format u16,hex\n"
-        "As mbpoll's habits have it (-a unit, -r reference, -c count, -t 4 holding registers, -q values only): "
-        "mbscope read -a 1 -r 1 -c 10 -t 4 --one-based -q 192.168.1.10\n"
+        "The second example is mbpoll's habits (-a unit, -r reference, -c count, -t 4 holding registers, -q values "
+        "only).\n"
+        "Examples (with mbscope simulate --profile rosrao-gamma --listen tcp://127.0.0.1:5020 running):\n"
+        "  mbscope read --target tcp://127.0.0.1:5020 --unit 1 --function 3 --address 0x79 --quantity 22 --format u16,hex\n"
+        "  mbscope read -a 1 -r 122 -c 10 -t 4 --one-based -q 127.0.0.1:5020\n"
         "Exit status: 0 ok, 1 the transaction failed (exception, timeout, bad answer), 2 usage or link error.");
     spec.requestGroups = RequestOptions::Read;
     spec.jsonHelp = QStringLiteral("Print the transaction and the values as JSON.");

@@ -1,8 +1,10 @@
 #include "exchange/runcommand.h"
 
 #include "common/cli.h"
+#include "common/framelog.h"
 #include "common/interruptwatcher.h"
 #include "common/outputpath.h"
+#include "common/printoptions.h"
 #include "common/recordoptions.h"
 
 #include "session/capturerecovery.h"
@@ -59,7 +61,9 @@ int runRun(const QStringList &arguments)
         "each step sends a request and checks the answer (exact bytes, decoded field values or ranges, an exception "
         "code, no answer), polls and checks bounds on the statistics (\"p95 < 20 ms\", \"timeouts == 0\"), waits or "
         "repeats steps. Prints each step with pass or fail and why.\n"
-        "Example: mbscope run docs/examples/rosrao-gamma.mbscope.json --target rtu-tcp://127.0.0.1:4001 --junit results.xml\n"
+        "Example, in mbscope's source folder (with mbscope simulate --profile rosrao-gamma --listen "
+        "rtu-tcp://127.0.0.1:4001 running):\n"
+        "  mbscope run docs/examples/rosrao-gamma.mbscope.json --target rtu-tcp://127.0.0.1:4001 --junit results.xml\n"
         "Ctrl-C stops the run: the steps left are reported skipped, and the JUnit file is still written.\n"
         "--record FILE journals every frame of the run; --record-capture journals it into the file the session's "
         "capture.journal names, beside the document, so that analyze, export and replay of the session read this run.\n"
@@ -79,6 +83,8 @@ int runRun(const QStringList &arguments)
     parser.addOptions({target, junit, json, recordCapture});
     const RecordOptions recordOptions;
     recordOptions.addTo(parser);
+    const PrintOptions printOptions(false);
+    printOptions.addTo(parser);
     if (!parser.parse(arguments)) {
         err << "mbscope run: " << parser.errorText() << '\n';
         return ExitUsage;
@@ -112,9 +118,12 @@ int runRun(const QStringList &arguments)
             return ExitUsage;
         }
         record.overwrite = force;
-    } else if (!recordOptions.read(parser, QStringLiteral("run"), record, err, parser.isSet(junit))) {
+    } else if (!recordOptions.read(parser, QStringLiteral("run"), record, err, parser.isSet(junit) || printOptions.frameLogSet(parser))) {
         return ExitUsage;
     }
+    PrintSettings print;
+    if (!printOptions.read(parser, QStringLiteral("run"), force, print, err))
+        return ExitUsage;
     const SessionLoadResult loaded = SessionReader::load(path);
     if (!loaded.ok()) {
         err << "mbscope run: cannot open the session (" << loaded.problems.size()
@@ -180,6 +189,9 @@ int runRun(const QStringList &arguments)
     }
     if (!openRecording(recording, record, metadata, QStringLiteral("run"), err))
         return ExitUsage;
+    FrameLog frames;
+    if (!openFrameLog(frames, print, QStringLiteral("run"), err))
+        return ExitUsage;
 
     const bool asJson = parser.isSet(json);
     if (!asJson) {
@@ -190,6 +202,8 @@ int runRun(const QStringList &arguments)
     PlanRunner runner(named, *parsed.url, document.target);
     if (recording.isOpen())
         runner.setTrafficLog(recording.log());
+    if (frames.isOpen())
+        runner.setFramesObserver([&frames](const QList<TrafficFrame> &batch, const QString &link) { frames.addFrames(batch, link); });
     InterruptWatcher interrupt;
     QObject::connect(&interrupt, &InterruptWatcher::interrupted, &interrupt, [&runner] { runner.stop(); });
     // Steps not run are each a result (JUnit lists each as skipped); the text shows the first of

@@ -26,7 +26,8 @@ int runSend(const QStringList &arguments)
         "Sends bytes to a device exactly as given (a wrong CRC included), or with --complete a PDU wrapped for the "
         "target's framing (MBAP header, or unit id and CRC/LRC), then prints the request and the response decoded field "
         "by field, and the latency.\n"
-        "Example: mbscope send --target rtu-tcp://192.168.127.254:4001 --hex \"01 03 00 79 00 16 15 DD\"\n"
+        "Example (with mbscope simulate --profile rosrao-gamma --listen rtu-tcp://127.0.0.1:4001 running):\n"
+        "  mbscope send --target rtu-tcp://127.0.0.1:4001 --hex \"01 03 00 79 00 16 15 DD\"\n"
         "Exit status: 0 ok, 1 the transaction failed (exception, timeout, bad answer), 2 usage or link error.");
     spec.requestGroups = RequestOptions::Hex;
     spec.jsonHelp = QStringLiteral("Print the transaction as JSON.");

@@ -31,9 +31,10 @@ int runWrite(const QStringList &arguments)
         "Writes coils or holding registers from --address with Write Multiple Coils (15) / Write Multiple Registers "
         "(16), or with --single one Write Single Coil (05) / Write Single Register (06) per value, and prints each "
         "request and response decoded, the latency and the values written with their Modicon references.\n"
-        "Examples: mbscope write --target tcp://192.168.1.10 --coils 1,0,0 --address 0\n"
-        "          mbscope write --target tcp://192.168.1.10 --registers 205,172,73 --address 0 --single\n"
-        "          mbscope write --target tcp://192.168.1.10 --registers 123.456 --format f32-cdab --address 10\n"
+        "Examples (with mbscope simulate --profile conformance --listen tcp://127.0.0.1:5020 running):\n"
+        "  mbscope write --target tcp://127.0.0.1:5020 --coils 1,0,0 --address 0\n"
+        "  mbscope write --target tcp://127.0.0.1:5020 --registers 205,172,73 --address 0 --single\n"
+        "  mbscope write --target tcp://127.0.0.1:5020 --registers 123.456 --format f32-cdab --address 10\n"
         "Exit status: 0 every write ok, 1 some failed (exception, timeout, bad answer), 2 usage or link error.");
     spec.requestGroups = RequestOptions::Write;
     spec.jsonHelp = QStringLiteral("Print the transactions and values as JSON.");

@@ -97,7 +97,10 @@ int runExportMap(const QStringList &arguments)
         "With --verify TARGET it first reads every value once through the map, and refuses the export when a value "
         "is not finite or outside the min and max its entry declares, naming the entry (a \"not implemented\" "
         "sentinel is allowed and said). It only reads.\n"
-        "Example: mbscope export-map bench.json --to telegraf -o telegraf.conf --verify tcp://127.0.0.1:5020\n"
+        "Example, a profile drafted first (with mbscope simulate --profile conformance --listen tcp://127.0.0.1:5020 "
+        "running):\n"
+        "  mbscope scan --target tcp://127.0.0.1:5020 --map 1 --addresses 0-99 --no-optional --profile-out bench.json\n"
+        "  mbscope export-map bench.json --to telegraf -o telegraf.conf --verify tcp://127.0.0.1:5020\n"
         "Exit status: 0 written, 1 --verify refused the map (or could not read it), 2 usage error or a profile "
         "that does not load."));
     parser.addHelpOption();

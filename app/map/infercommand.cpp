@@ -64,8 +64,9 @@ int runInfer(const QStringList &arguments)
         "status bits), each with a confidence and its evidence in words. The blocks are those a map scan of the unit "
         "finds (as mbscope scan --map does), or those given with --block. --out writes the guesses as a device "
         "profile draft that mbscope simulate --profile FILE serves, each entry's description marked as a guess.\n"
-        "Examples: mbscope infer tcp://127.0.0.1:5020 --block 4:0:40 --samples 20 --interval 200ms\n"
-        "          mbscope infer tcp://127.0.0.1:5020 --duration 1min --out draft.json\n"
+        "Examples (with mbscope simulate --profile conformance --listen tcp://127.0.0.1:5020 running):\n"
+        "  mbscope infer tcp://127.0.0.1:5020 --block 4:0:40 --samples 20 --interval 200ms\n"
+        "  mbscope infer tcp://127.0.0.1:5020 --duration 5s --out draft.json\n"
         "Exit status: 0 something was sampled, 1 nothing could be read, 2 usage or link error."));
     parser.addHelpOption();
     const TargetOptions targetOptions;

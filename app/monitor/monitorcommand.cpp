@@ -54,7 +54,9 @@ int runMonitor(const QStringList &arguments)
         "request waiting, the answer's length), paired by order, unit and function as analyze pairs a capture, and "
         "judged as poll judges an answer. Each exchange is printed as it is seen; the statistics at the end are "
         "those poll prints. Latency is the time from the request's last byte to the answer's last byte.\n"
-        "Example: mbscope monitor \"rtu:///dev/ttyUSB0?baud=9600&parity=N\" --duration 60s --record bus.mbscope.journal\n"
+        "Example (not run by the tests: it needs a bus another master drives; docs/guide/command-line.md runs one on a "
+        "simulated bus):\n"
+        "  mbscope monitor \"rtu:///dev/ttyUSB0?baud=9600&parity=N\" --duration 60s --record bus.mbscope.journal\n"
         "A live line is shown on a terminal; Ctrl-C stops and prints the statistics.\n"
         "Exit status: 0 every exchange ok, 1 some failed or damaged frames were seen, 2 usage or link error (the "
         "port cannot be opened, or was lost), 3 nothing was heard (not one byte)."));

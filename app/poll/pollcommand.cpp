@@ -29,18 +29,21 @@ int runPollOrSweep(const QStringList &arguments, bool sweep)
         sweep ? QStringLiteral(
                     "Runs the same poll at each interval in turn and prints a table of interval against error rate and "
                     "latency (min, mean, p50, p99, max), e.g. to find how fast a noisy RS485 bus can be polled.\n"
-                    "Example: mbscope sweep --target rtu:///dev/ttyUSB0?baud=9600 --function 3 --address 0 --quantity 10 "
-                    "--intervals 100,200,300,333,350,400 --count 300\n"
+                    "Example (with mbscope simulate --profile rosrao-gamma --listen rtu-tcp://127.0.0.1:4001 running; on a "
+                    "bus: --target \"rtu:///dev/ttyUSB0?baud=9600\" and --count 300):\n"
+                    "  mbscope sweep --target rtu-tcp://127.0.0.1:4001 --function 3 --address 0x79 --quantity 10 "
+                    "--intervals 20,50,100 --count 20\n"
                     "A live progress line is shown on a terminal; Ctrl-C stops and prints the intervals run so far.\n"
                     "Exit status: 0 every transaction ok, 1 some failed, 2 usage or link error.")
               : QStringLiteral(
                     "Sends the requests in cycles at an interval, for a count of cycles or a duration, and prints the "
                     "statistics: counts by outcome, latency min, mean, median, p90, p95, p99, max and standard "
                     "deviation.\n"
-                    "Examples: mbscope poll --target tcp://192.168.1.10 --function 3 --address 0 --quantity 10 "
-                    "--interval 100ms --count 100\n"
-                    "          mbscope poll --target tcp://192.168.1.10 --hex \"00 01 00 00 00 06 01 03 00 00 00 0A\" "
-                    "--interval 0 --duration 60s --pipeline 8 --histogram latency.png\n"
+                    "Examples (with mbscope simulate --profile rosrao-gamma --listen tcp://127.0.0.1:5020 running):\n"
+                    "  mbscope poll --target tcp://127.0.0.1:5020 --function 3 --address 0x79 --quantity 10 "
+                    "--interval 100ms --count 20\n"
+                    "  mbscope poll --target tcp://127.0.0.1:5020 --hex \"00 01 00 00 00 06 01 03 00 79 00 0A\" "
+                    "--interval 0 --duration 2s --pipeline 8 --histogram latency.png\n"
                     "A live progress line is shown on a terminal; Ctrl-C stops the poll and still prints the statistics.\n"
                     "Exit status: 0 every transaction ok, 1 some failed, 2 usage or link error."));
     parser.addHelpOption();

@@ -1,6 +1,7 @@
 #include "scan/scancommand.h"
 
 #include "common/cli.h"
+#include "common/framelog.h"
 #include "common/interruptwatcher.h"
 #include "common/outputpath.h"
 #include "common/progressline.h"
@@ -75,11 +76,16 @@ int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, 
     TrafficRecording recording;
     if (!openRecording(recording, common.record.settings, common.record.metadata, QStringLiteral("scan"), err))
         return ExitUsage;
+    FrameLog frames;
+    if (!openFrameLog(frames, common.record.print, QStringLiteral("scan"), err))
+        return ExitUsage;
     UnitScanner scanner;
     if (recording.isOpen())
         scanner.channel()->setTrafficLog(recording.log());
+    QObject::connect(scanner.channel(), &ProbeChannel::framesLogged, &frames, &FrameLog::addFrames);
     InterruptWatcher interrupts;
     ProgressLine line;
+    frames.setProgressLine(&line);
     QEventLoop loop;
     ScanEnd end = ScanEnd::Completed;
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &UnitScanner::stop);
@@ -142,11 +148,16 @@ int runMap(const Common &common, MapScanSettings settings, const QString &profil
     TrafficRecording recording;
     if (!openRecording(recording, common.record.settings, common.record.metadata, QStringLiteral("scan"), err))
         return ExitUsage;
+    FrameLog frames;
+    if (!openFrameLog(frames, common.record.print, QStringLiteral("scan"), err))
+        return ExitUsage;
     MapScanner scanner;
     if (recording.isOpen())
         scanner.channel()->setTrafficLog(recording.log());
+    QObject::connect(scanner.channel(), &ProbeChannel::framesLogged, &frames, &FrameLog::addFrames);
     InterruptWatcher interrupts;
     ProgressLine line;
+    frames.setProgressLine(&line);
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &MapScanner::stop);
     QObject::connect(&scanner, &MapScanner::progressChanged, &scanner,
                      [&](const ScanProgress &p) { line.show(ScanReport::progressText(QStringLiteral("addresses"), p)); });
@@ -202,8 +213,9 @@ int runScan(const QStringList &arguments)
         "come back, and says what was tried and what worked.\n"
         "With --timing UNIT it measures the unit's timing limits and prints settings ready to use (a watch link's "
         "gapMs and timeoutMs, Telegraf's modbus input pause_between_requests and pause_after_connect).\n"
-        "Examples: mbscope scan --target tcp://127.0.0.1:5020 --units 1-10\n"
-        "          mbscope scan --target tcp://127.0.0.1:5020 --map 1 --profile-out draft.json\n"
+        "Examples (with mbscope simulate --profile conformance --listen tcp://127.0.0.1:5020 running):\n"
+        "  mbscope scan --target tcp://127.0.0.1:5020 --units 1-10\n"
+        "  mbscope scan --target tcp://127.0.0.1:5020 --map 1 --profile-out draft.json\n"
         "Every scan is bounded (--max-time, --max-requests), shows its progress and the time left on a terminal, and "
         "stops on Ctrl-C with what it found so far.\n"
         "Exit status: 0 something was found, 1 nothing was, 2 usage or link error."));
@@ -269,6 +281,8 @@ int runScan(const QStringList &arguments)
                                         QStringLiteral("N"));
     const RecordOptions recordOptions;
     recordOptions.addTo(parser);
+    const PrintOptions printOptions(false);
+    printOptions.addTo(parser);
     parser.addOptions({lineOpt, baudsOpt, paritiesOpt, stopBitsOpt, firstOpt, timingOpt, clientsOpt});
     parser.addOptions({targetOpt, unitsOpt, allIdsOpt, functionOpt, addressOpt, quantityOpt, timeoutOpt, gapOpt, maxTimeOpt,
                        allOpt, jsonOpt, watchesOpt, mapOpt, addressesOpt, tablesOpt, noOptionalOpt, profileOutOpt,
@@ -304,6 +318,8 @@ int runScan(const QStringList &arguments)
     if (!recordOptions.read(parser, QStringLiteral("scan"), common.record.settings, err, true))
         return ExitUsage;
     const bool force = common.record.settings.overwrite;
+    if (!printOptions.read(parser, QStringLiteral("scan"), force, common.record.print, err))
+        return ExitUsage;
     common.record.metadata = commandMetadata(QStringLiteral("scan"), arguments);
     common.record.metadata.target = common.url.toString();
     const ScanOptionReader read{parser, err};

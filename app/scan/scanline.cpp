@@ -1,6 +1,7 @@
 #include "scan/scanline.h"
 
 #include "common/cli.h"
+#include "common/framelog.h"
 #include "common/interruptwatcher.h"
 #include "common/progressline.h"
 #include "scan/scanreport.h"
@@ -94,11 +95,17 @@ int runLineScan(const LineScanSettings &settings, bool asJson, const ScanRecord 
     TrafficRecording recording;
     if (!openRecording(recording, record.settings, record.metadata, QStringLiteral("scan"), err))
         return ExitUsage;
+    FrameLog frames;
+    if (!openFrameLog(frames, record.print, QStringLiteral("scan"), err))
+        return ExitUsage;
+    frames.setNamesLinks(true); // every setting tried is a link of its own
     LineScanner scanner;
     if (recording.isOpen())
         scanner.channel()->setTrafficLog(recording.log()); // every setting tried, a link of its own
+    QObject::connect(scanner.channel(), &ProbeChannel::framesLogged, &frames, &FrameLog::addFrames);
     InterruptWatcher interrupts;
     ProgressLine line;
+    frames.setProgressLine(&line);
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &LineScanner::stop);
     QString lastTried; // the setting of the last trial: "19200 8E1 unit 1 silent"
     QObject::connect(&scanner, &LineScanner::tried, &scanner, [&](const LineTrial &t) {

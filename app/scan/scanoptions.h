@@ -1,5 +1,6 @@
 #pragma once
 
+#include "common/printoptions.h"
 #include "common/recordoptions.h"
 
 #include <QtCore/QCommandLineOption>
@@ -26,11 +27,12 @@ struct ScanOptionReader {
     bool integers(const QCommandLineOption &option, qint64 low, qint64 high, QList<qint64> *values) const;
 };
 
-// --record FILE of a scan: opened by the scan once its settings are known good (a usage error
+// --record FILE of a scan (and its live frame log): opened by the scan once its settings are known good (a usage error
 // leaves no journal), every connection the scan opens on it, closed when the scan is done.
 struct ScanRecord {
     RecordSettings settings;
     TrafficMetadata metadata;
+    PrintSettings print; // --print frames, --frame-log FILE: the live frame log
 };
 
 } // namespace mbscope::app

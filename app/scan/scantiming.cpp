@@ -1,6 +1,7 @@
 #include "scan/scantiming.h"
 
 #include "common/cli.h"
+#include "common/framelog.h"
 #include "common/interruptwatcher.h"
 #include "common/progressline.h"
 #include "scan/scanreport.h"
@@ -110,11 +111,17 @@ int runTimingScan(const TimingScanSettings &settings, bool asJson, const ScanRec
     if (!openRecording(recording, record.settings, record.metadata, QStringLiteral("scan"), err))
         return ExitUsage;
     recording.log()->setShared(true); // the pipelined burst and every client on engines of their own
+    FrameLog frames;
+    if (!openFrameLog(frames, record.print, QStringLiteral("scan"), err))
+        return ExitUsage;
     TimingScanner scanner;
     if (recording.isOpen())
         scanner.setTrafficLog(recording.log());
+    scanner.setFramesPublished(frames.isOpen());
+    QObject::connect(&scanner, &TimingScanner::framesLogged, &frames, &FrameLog::addFrames);
     InterruptWatcher interrupts;
     ProgressLine line;
+    frames.setProgressLine(&line);
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &TimingScanner::stop);
     QString part; // what is being measured: "gap 50 ms"
     QObject::connect(&scanner, &TimingScanner::step, &scanner, [&](const QString &what) { part = what; });

@@ -1,7 +1,9 @@
 #include "service/watchcommand.h"
 
 #include "common/cli.h"
+#include "common/framelog.h"
 #include "common/interruptwatcher.h"
+#include "common/printoptions.h"
 #include "common/recordoptions.h"
 #include "service/watchreport.h"
 #include "service/watchservice.h"
@@ -38,6 +40,7 @@ struct WatchOptions {
     bool quiet = false;
     WatchService::Options service; // --metrics, --mqtt..., --log-level
     RecordSettings record;         // --record, --force
+    PrintSettings print;           // --print frames, --frame-log FILE
 };
 
 // Parses the command line into options; false when the command should end now with *status
@@ -52,7 +55,9 @@ bool parseWatchOptions(const QStringList &arguments, WatchOptions *options, int 
         "no other link. A link that fails is opened again after a backoff (doubling from reconnectMinMs to "
         "reconnectMaxMs), counted. One line per poll with the values named, scaled and with their units; rule events "
         "as they fire and clear; errors and link changes on standard error; the counters of every watch at the end.\n"
-        "Example: mbscope watch bench.mbscope.json --csv logs --duration 1min\n"
+        "Example, in mbscope's source folder (with mbscope simulate --profile m221-plc --listen tcp://127.0.0.1:5020 "
+        "running):\n"
+        "  mbscope watch docs/examples/plc-watches.mbscope.json --csv logs --duration 3s\n"
         "Ctrl-C or SIGTERM stops cleanly: the CSV files are flushed and the counters printed.\n"
         "Exit status: 0 every poll answered, 1 some polls failed (or CSV rows were lost), 2 usage error or a session "
         "that cannot be read, 3 every poll answered but the --mqtt broker was never reached (nothing published)."));
@@ -76,6 +81,8 @@ bool parseWatchOptions(const QStringList &arguments, WatchOptions *options, int 
     parser.addOptions({csvOpt, csvModeOpt, durationOpt, countOpt, jsonOpt, quietOpt});
     const RecordOptions recordOptions;
     recordOptions.addTo(parser);
+    const PrintOptions printOptions(false);
+    printOptions.addTo(parser);
     WatchService::addOptions(parser);
     parser.addPositionalArgument(QStringLiteral("session"), QStringLiteral("A session document with watches (*.mbscope.json)."));
     *status = ExitUsage;
@@ -130,7 +137,9 @@ bool parseWatchOptions(const QStringList &arguments, WatchOptions *options, int 
             return false;
         }
     }
-    if (!recordOptions.read(parser, QStringLiteral("watch"), options->record, err))
+    if (!recordOptions.read(parser, QStringLiteral("watch"), options->record, err, printOptions.frameLogSet(parser)))
+        return false;
+    if (!printOptions.read(parser, QStringLiteral("watch"), options->record.overwrite, options->print, err))
         return false;
     options->json = parser.isSet(jsonOpt);
     options->quiet = parser.isSet(quietOpt);
@@ -236,6 +245,12 @@ int runWatch(const QStringList &arguments)
     }
     if (recording.isOpen())
         runner.setTrafficLog(recording.log());
+    FrameLog frames;
+    if (!openFrameLog(frames, options.print, QStringLiteral("watch"), err))
+        return ExitUsage;
+    frames.setNamesLinks(true); // the watches' links take turns
+    runner.setFramesPublished(frames.isOpen());
+    QObject::connect(&runner, &WatchRunner::framesLogged, &frames, &FrameLog::addFrames);
     service.setWatches(watches);
     runner.setLog(csv);
     QEventLoop loop;

@@ -2,11 +2,14 @@
 
 #include "capture/captureinput.h"
 #include "common/cli.h"
+#include "common/framelog.h"
+#include "common/printoptions.h"
 #include "time/duration.h"
 #include "common/interruptwatcher.h"
 #include "common/recordoptions.h"
 #include "sim/replayserve.h"
 
+#include "engine/transactionengine.h"
 #include "protocol/hextext.h"
 #include "replay/replayrunner.h"
 #include "replay/replayscript.h"
@@ -56,9 +59,11 @@ int runReplay(const QStringList &arguments)
         "counted as skipped.\n"
         "With --serve URL: a simulator on URL answers with the recorded answers, matched by unit and request PDU (the "
         "MBAP transaction id aside); a request recorded several times gets its answers in turn, cycling.\n"
-        "Example: mbscope replay bench.mbscope.json --speed max\n"
-        "Example: mbscope replay bench.mbscope.json --ignore modbus.register_value@0x007D\n"
-        "Example: mbscope replay bench.mbscope.journal --serve rtu-tcp://127.0.0.1:4001\n"
+        "Examples, a journal recorded first (with mbscope simulate --profile rosrao-gamma --listen tcp://127.0.0.1:5020 "
+        "running):\n"
+        "  mbscope poll --target tcp://127.0.0.1:5020 --address 0x79 --quantity 14 --count 5 --interval 100ms --record bench.mbscope.journal\n"
+        "  mbscope replay bench.mbscope.journal --speed max --ignore modbus.register_value@0x0086\n"
+        "  mbscope replay bench.mbscope.journal --serve rtu-tcp://127.0.0.1:4001 --duration 1s\n"
         "--record FILE journals what the replay sent and got (with --serve: what it served).\n"
         "Exit status: 0 every answer matched (or --serve stopped), 1 some differed, 2 usage error, unreadable source or link failure."));
     parser.addHelpOption();
@@ -95,6 +100,8 @@ int runReplay(const QStringList &arguments)
     parser.addOptions({targetOpt, speedOpt, serveOpt, unrecordedOpt, durationOpt, ignoreOpt, sendWritesOpt, jsonOpt});
     const RecordOptions recordOptions;
     recordOptions.addTo(parser);
+    const PrintOptions printOptions(false);
+    printOptions.addTo(parser);
     parser.addPositionalArgument(QStringLiteral("source"),
                                  QStringLiteral("A session document with a capture, a traffic journal, or a .pcap/.pcapng file."));
     if (!parser.parse(arguments)) {
@@ -152,8 +159,16 @@ int runReplay(const QStringList &arguments)
         return ExitUsage;
     }
     RecordSettings record;
-    if (!recordOptions.read(parser, QStringLiteral("replay"), record, err))
+    if (!recordOptions.read(parser, QStringLiteral("replay"), record, err, printOptions.frameLogSet(parser)))
         return ExitUsage;
+    PrintSettings print;
+    if (!printOptions.read(parser, QStringLiteral("replay"), record.overwrite, print, err))
+        return ExitUsage;
+    if (print.frames && parser.isSet(serveOpt)) {
+        err << "mbscope replay: --print frames and --frame-log show what a replay to a device sends and gets; with --serve, "
+               "--record FILE journals what is served (mbscope export reads it)\n";
+        return ExitUsage;
+    }
     qint64 durationMs = 0;
     if (parser.isSet(durationOpt)) {
         const DurationResult d = parseDuration(parser.value(durationOpt));
@@ -297,6 +312,11 @@ int runReplay(const QStringList &arguments)
     runner.setSendWrites(sendWrites);
     if (recording.isOpen())
         runner.setTrafficLog(recording.log());
+    FrameLog frames;
+    if (!openFrameLog(frames, print, QStringLiteral("replay"), err))
+        return ExitUsage;
+    if (frames.isOpen())
+        frames.attach(runner.engine());
     InterruptWatcher interrupt;
     QObject::connect(&interrupt, &InterruptWatcher::interrupted, &interrupt, [&runner] { runner.stop(); });
     QString linkProblem;
@@ -308,6 +328,8 @@ int runReplay(const QStringList &arguments)
     });
     if (recording.isOpen())
         runner.setTrafficLog(nullptr);
+    if (frames.isOpen())
+        runner.engine()->deliverPending(); // the last frames reach the log
     if (asJson)
         out << QJsonDocument(result.toJson(script)).toJson(QJsonDocument::Indented);
     else

@@ -61,6 +61,8 @@ int runSimulate(const QStringList &arguments)
         "Profiles: a shipped one by name (see --list-profiles) or a JSON file (docs/profiles.md).\n"
         "--record FILE journals every request and answer (both directions, with the fault rules that shaped each answer) "
         "for analyze, export and replay.\n"
+        "Example, the RosRao detector behind a serial device server, for ten seconds:\n"
+        "  mbscope simulate --profile rosrao-gamma --listen rtu-tcp://127.0.0.1:4001 --duration 10s\n"
         "Exit status: 0 after a clean stop, 2 for unusable options (unknown profile, bad URL, port in use, bad faults file)."));
     parser.addHelpOption();
     const QCommandLineOption profileOption(QStringLiteral("profile"), QStringLiteral("Profile name or JSON file."),

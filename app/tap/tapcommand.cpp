@@ -108,7 +108,9 @@ int runTap(const QStringList &arguments)
         "unchanged. One line per request (or a summary every 10 s with --quiet) and a summary at the end.\n"
         "--record FILE journals both legs: master to tap (the listening URL's link) and tap to device (the target's link), each "
         "with its own times, so analyze shows the device's own response time beside what the master saw.\n"
-        "Example: mbscope tap --listen tcp://127.0.0.1:5020 --target rtu-tcp://127.0.0.1:4001\n"
+        "Example (with mbscope simulate --profile rosrao-gamma --listen rtu-tcp://127.0.0.1:4001 running; point a master "
+        "at tcp://127.0.0.1:5020 within two seconds):\n"
+        "  mbscope tap --listen tcp://127.0.0.1:5020 --target rtu-tcp://127.0.0.1:4001 --duration 2s\n"
         "Exit status: 0 after a clean stop (Ctrl-C or --duration), 2 for unusable options."));
     parser.addHelpOption();
     const QCommandLineOption listenOption(QStringLiteral("listen"),

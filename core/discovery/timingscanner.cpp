@@ -9,6 +9,7 @@
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QEventLoop>
+#include <QtCore/QScopeGuard>
 #include <QtCore/QSet>
 #include <QtCore/QTimer>
 
@@ -65,6 +66,10 @@ TimingScanner::TimingScanner(QObject *parent)
     : QObject(parent)
     , m_channel(new ProbeChannel(this))
 {
+    connect(m_channel, &ProbeChannel::framesLogged, this, [this](const QList<TrafficFrame> &frames, const QString &link) {
+        if (m_framesPublished)
+            Q_EMIT framesLogged(frames, link);
+    });
 }
 
 QByteArray TimingScanner::readPdu(int quantity) const
@@ -96,6 +101,16 @@ void TimingScanner::setTrafficLog(TrafficLog *log)
 {
     m_log = log;
     m_channel->setTrafficLog(log);
+}
+
+void TimingScanner::observe(TransactionEngine &engine)
+{
+    if (m_log)
+        engine.setTrafficLog(m_log);
+    if (m_framesPublished) {
+        engine.setFramesPublished(true);
+        connect(&engine, &TransactionEngine::framesLogged, this, &TimingScanner::framesLogged);
+    }
 }
 
 std::optional<ProbeChannel::Answer> TimingScanner::ask(int quantity, int timeoutMs, bool measured)
@@ -381,8 +396,11 @@ void TimingScanner::pipelining(TimingReport &report)
     options.pipelineDepth = m_settings.pipelineDepth;
     options.batchIntervalMs = 1;
     engine.setTarget(m_settings.url, options);
-    if (m_log)
-        engine.setTrafficLog(m_log);
+    observe(engine);
+    const auto lastFrames = qScopeGuard([&engine, this] {
+        if (m_framesPublished)
+            engine.deliverPending();
+    });
     openAndSettle(engine, m_settings.url.connectTimeoutMs, settleMs(report), this);
     if (m_stopRequested)
         return;
@@ -413,18 +431,27 @@ void TimingScanner::clients(TimingReport &report)
         int opened = 0; // connections made: more than one means the first was closed
     };
     std::vector<std::unique_ptr<Held>> held;
+    std::unique_ptr<Held> client;
+    const auto lastFrames = qScopeGuard([&] { // the frames not yet delivered, before the engines go
+        if (!m_framesPublished)
+            return;
+        for (const std::unique_ptr<Held> &h : held)
+            h->engine->deliverPending();
+        if (client)
+            client->engine->deliverPending();
+    });
     const QByteArray adu = AduBuilder::complete(readPdu(1), AduOptions{m_settings.url.framing(), m_settings.unit, 1, 0});
-    const auto askClient = [&](Held &client) {
+    const auto askClient = [&](Held &asked) {
         RequestItem item = RequestItem::forLink(adu, m_settings.url);
         item.timeoutMs = m_settings.timeoutMs;
-        const std::optional<Transaction> t = client.engine->sendAndWait(item);
+        const std::optional<Transaction> t = asked.engine->sendAndWait(item);
         return t && served(*t);
     };
     for (int k = 1; k <= m_settings.maxClients; ++k) {
         const qint64 recheckMs = k >= 2 ? std::max(20, report.recommendedGapMs()) + m_settings.timeoutMs : 0;
         if (!mayContinue(settleMs(report) + m_settings.timeoutMs + recheckMs))
             return;
-        auto client = std::make_unique<Held>();
+        client = std::make_unique<Held>();
         client->engine = std::make_unique<TransactionEngine>();
         Held *c = client.get();
         connect(c->engine.get(), &TransactionEngine::linkOpened, this, [c] { ++c->opened; });
@@ -433,8 +460,7 @@ void TimingScanner::clients(TimingReport &report)
         EngineOptions options;
         options.batchIntervalMs = 1;
         c->engine->setTarget(m_settings.url, options);
-        if (m_log)
-            c->engine->setTrafficLog(m_log);
+        observe(*c->engine);
         openAndSettle(*c->engine, m_settings.url.connectTimeoutMs, settleMs(report), this);
         const bool servedNew = !m_stopRequested && askClient(*c);
         if (m_stopRequested)

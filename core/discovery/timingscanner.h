@@ -14,6 +14,7 @@
 namespace mbscope {
 
 class TrafficLog;
+class TransactionEngine;
 
 struct TimingScanSettings {
     LinkUrl url;
@@ -77,6 +78,8 @@ public:
     // each connection on a link id of its own: the log must be shared (TrafficLog::setShared),
     // and outlive the scanner.
     void setTrafficLog(TrafficLog *log);
+    // framesLogged() on or off (off by default), for the next run().
+    void setFramesPublished(bool published) { m_framesPublished = published; }
     // The channel of its one-at-a-time requests (its frames: ProbeChannel::framesLogged).
     [[nodiscard]] ProbeChannel *channel() { return m_channel; }
     [[nodiscard]] bool wasStopped() const { return m_end == ScanEnd::Stopped; }
@@ -89,6 +92,10 @@ Q_SIGNALS:
     void progressChanged(const mbscope::ScanProgress &progress);
     // stop() was called: the waits of the part running end.
     void stopping();
+    // With setFramesPublished(true): every frame of every connection as its engine logs it
+    // (TransactionEngine::framesLogged: the probe channel's, the pipelined burst's, each client's),
+    // link its URL.
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
 
 private:
     enum Part : quint8 { Warmup, Gaps, Largest, Pipeline, Clients, PartCount };
@@ -108,10 +115,14 @@ private:
     void stepDone();
     void endPart(Part part); // the part's steps left count as done
     [[nodiscard]] qint64 answerMs() const;
+    // An engine of the burst or of a client: recorded to the log and its frames published, as the
+    // channel's are.
+    void observe(TransactionEngine &engine);
     [[nodiscard]] qint64 stepCostMs(int index) const;
 
     ProbeChannel *m_channel;
     TrafficLog *m_log = nullptr;
+    bool m_framesPublished = false;
     TimingScanSettings m_settings;
     const TimingReport *m_report = nullptr; // while run() runs: the estimate reads the gaps and warm-up seen
     QElapsedTimer m_clock;

@@ -51,6 +51,9 @@ public:
     // Every frame in and out goes to log (--record) until setTrafficLog(nullptr), which also
     // writes the engine's last frames to the log's journal (TransactionEngine::setTrafficLog).
     void setTrafficLog(TrafficLog *log);
+    // The engine that sends: its frames as it logs them (TransactionEngine::framesLogged), for a
+    // live frame log.
+    [[nodiscard]] TransactionEngine *engine() const { return m_engine.get(); }
     [[nodiscard]] ReplayResult run(const Observer &observer = {});
     // From a Ctrl-C handler's event: stops after the request in flight.
     void stop();

@@ -13,7 +13,10 @@
 // are printed, never asserted; every run must exit 0 with the ten values on its output, so the
 // benchmark fails when a program does not work.
 //
-// Usage: bench_startup [--runs N] [--mbscope PATH] [--mbpoll PATH]
+// --baseline PATH adds another `mbscope` (an earlier build's, copied aside) to the same rounds, so
+// that a change's before and after come from one run, on one machine load.
+//
+// Usage: bench_startup [--runs N] [--mbscope PATH] [--mbpoll PATH] [--baseline PATH]
 // scripts/bench-startup.sh builds Release and runs it; docs/benchmarks.md has the figures.
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -153,6 +156,7 @@ int main(int argc, char *argv[])
     int runs = 20;
     std::string mbscope = MBSCOPE_EXECUTABLE;
     std::string mbpoll = "mbpoll";
+    std::string baseline;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--runs" && i + 1 < argc)
@@ -161,8 +165,10 @@ int main(int argc, char *argv[])
             mbscope = argv[++i];
         else if (a == "--mbpoll" && i + 1 < argc)
             mbpoll = argv[++i];
+        else if (a == "--baseline" && i + 1 < argc)
+            baseline = argv[++i];
         else {
-            std::fprintf(stderr, "usage: bench_startup [--runs N] [--mbscope PATH] [--mbpoll PATH]\n");
+            std::fprintf(stderr, "usage: bench_startup [--runs N] [--mbscope PATH] [--mbpoll PATH] [--baseline PATH]\n");
             return 2;
         }
     }
@@ -205,6 +211,17 @@ int main(int argc, char *argv[])
     Contender light{"mbscope read", {mbscope}, "40010", {}, {}, false};
     light.args.insert(light.args.end(), readArgs.begin(), readArgs.end());
     contenders.push_back(light);
+    if (!baseline.empty()) {
+        if (!isExecutable(baseline)) {
+            std::fprintf(stderr, "bench_startup: --baseline %s is not an executable\n", baseline.c_str());
+            kill(sim, SIGTERM);
+            waitpid(sim, nullptr, 0);
+            return 2;
+        }
+        Contender before{"baseline read (--baseline)", {baseline}, "40010", {}, {}, false};
+        before.args.insert(before.args.end(), readArgs.begin(), readArgs.end());
+        contenders.push_back(before);
+    }
     if (isExecutable(full)) {
         Contender heavy{"mbscope-full read (one binary)", {full}, "40010", {}, {}, false};
         heavy.args.insert(heavy.args.end(), readArgs.begin(), readArgs.end());

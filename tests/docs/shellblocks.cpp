@@ -102,4 +102,53 @@ QList<ShellBlock> shellBlocks(const QString &markdown)
     return blocks;
 }
 
+QList<ShellBlock> helpBlocks(const QString &help, const QString &command)
+{
+    static const QRegularExpression opening(QStringLiteral(R"(^Examples?\b.*:$)"));
+    static const QRegularExpression simulator(QStringLiteral(R"(\(with (mbscope simulate [^);]+?) running[;)])"));
+    static const QRegularExpression notRun(QStringLiteral(R"(\(not run by the tests: ([^)]+)\))"));
+    const QStringList lines = help.split(QLatin1Char('\n'));
+    const QString own = QStringLiteral("mbscope %1 ").arg(command);
+    QList<ShellBlock> blocks;
+    bool ownExample = false;
+    for (int i = 0; i < lines.size(); ++i) {
+        const QString &line = lines.at(i);
+        if (!line.startsWith(QLatin1String("Example")))
+            continue;
+        ShellBlock block;
+        block.line = i + 1;
+        block.language = QStringLiteral("help");
+        if (!opening.match(line).hasMatch()) {
+            block.problems.append(QStringLiteral("'%1': an example's commands go on the lines after \"Example...:\", each "
+                                                 "indented by two spaces").arg(line));
+            blocks.append(block);
+            continue;
+        }
+        if (const QRegularExpressionMatch m = notRun.match(line); m.hasMatch())
+            block.skip = m.captured(1);
+        const QRegularExpressionMatch sim = simulator.match(line);
+        if (sim.hasMatch()) {
+            block.setup.append(sim.captured(1) + QStringLiteral(" --quiet --ready-file sim%1.ready &").arg(i));
+            block.setup.append(QStringLiteral("until [ -e sim%1.ready ]; do sleep 0.1; done").arg(i));
+        }
+        QStringList commands;
+        while (i + 1 < lines.size() && lines.at(i + 1).startsWith(QLatin1String("  mbscope ")))
+            commands.append(lines.at(++i).mid(2));
+        if (commands.isEmpty())
+            block.problems.append(QStringLiteral("'%1' is followed by no command (\"  mbscope ...\")").arg(line));
+        for (const QString &c : std::as_const(commands))
+            ownExample = ownExample || (c + QLatin1Char(' ')).startsWith(own);
+        block.script = commands.join(QLatin1Char('\n'));
+        blocks.append(block);
+    }
+    if (!ownExample) {
+        ShellBlock missing;
+        missing.language = QStringLiteral("help");
+        missing.problems.append(QStringLiteral("mbscope %1 --help has no example of mbscope %1 (\"Example:\", then the command "
+                                               "on the next line, indented by two spaces)").arg(command));
+        blocks.append(missing);
+    }
+    return blocks;
+}
+
 } // namespace mbscope::testdocs

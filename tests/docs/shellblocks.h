@@ -41,4 +41,14 @@ struct ShellBlock {
 // "mbscope ") come back too, with a problem saying to tag them, so none escapes the test.
 [[nodiscard]] QList<ShellBlock> shellBlocks(const QString &markdown);
 
+// The examples of a subcommand's --help, as blocks to run the same way: a line that starts with
+// "Example" and ends with a colon opens a block; the lines after it that start with two spaces and
+// "mbscope " are its commands, run in order. A simulator named on the opening line in parentheses,
+// "(with mbscope simulate --profile P --listen URL running)", is the block's setup: started first
+// (quiet, in the background), the commands run once it listens; "(not run by the tests: why)"
+// there skips the block, for the reason given. A help with no example of
+// `mbscope command`, or with a command on the opening line itself, comes back as a block with a
+// problem saying so.
+[[nodiscard]] QList<ShellBlock> helpBlocks(const QString &help, const QString &command);
+
 } // namespace mbscope::testdocs

@@ -11,6 +11,9 @@
 // ports (127.0.0.1:N, in the block and in the docs/examples it reads) are mapped to free ports
 // for its run, and /tmp/ to the block's folder, so that blocks never collide with anything.
 //
+// The examples of every subcommand's --help run the same way (rows "help:NAME:N"): each help has
+// one at least, and a simulator it needs is named on its first line (shellblocks.h, helpBlocks).
+//
 // The blocks take minutes in all, most of it waiting on simulators and timers, so CTest runs them
 // as several tests (tst_docexamples_1of3 ...): MBSCOPE_DOC_SHARD=K/N runs every Nth block from
 // the Kth (1-based); without it, every block runs.
@@ -104,6 +107,38 @@ QString mapped(QString text, const QHash<QString, QString> &ports, const QString
     return out.replace(QStringLiteral("/tmp/"), folder + QStringLiteral("/tmp/"));
 }
 
+// Every subcommand's --help, by name, as `mbscope --help-all` prints them ("== mbscope NAME ==").
+const QHash<QString, QString> &helpTexts()
+{
+    static const QHash<QString, QString> texts = [] {
+        QHash<QString, QString> helps;
+        QProcess process;
+        process.start(kExecutable, {QStringLiteral("--help-all")});
+        if (!process.waitForFinished(60000))
+            return helps;
+        static const QRegularExpression heading(QStringLiteral(R"(^== mbscope (\S+) ==$)"), QRegularExpression::MultilineOption);
+        const QString all = QString::fromUtf8(process.readAllStandardOutput());
+        QRegularExpressionMatch m = heading.match(all);
+        while (m.hasMatch()) {
+            const QRegularExpressionMatch next = heading.match(all, m.capturedEnd());
+            helps.insert(m.captured(1), all.mid(m.capturedEnd(), next.hasMatch() ? next.capturedStart() - m.capturedEnd() : -1));
+            m = next;
+        }
+        return helps;
+    }();
+    return texts;
+}
+
+// The blocks of a row's source: a Markdown page, or "help:NAME", a subcommand's --help.
+QList<ShellBlock> blocksOf(const QString &source)
+{
+    if (source.startsWith(QLatin1String("help:"))) {
+        const QString name = source.mid(5);
+        return helpBlocks(helpTexts().value(name), name);
+    }
+    return shellBlocks(readText(source));
+}
+
 QByteArray tail(const QByteArray &bytes, int size = 4000)
 {
     return bytes.size() <= size ? bytes : "..." + bytes.right(size);
@@ -165,9 +200,16 @@ void TestDocExamples::blocks_data()
             QFAIL(qPrintable(QStringLiteral("MBSCOPE_DOC_SHARD=%1: expected K/N with 1 <= K <= N").arg(spec)));
     }
     int counter = 0;
-    for (const QString &file : markdownFiles()) {
-        const QString relative = QDir(kSourceDir).relativeFilePath(file);
-        const QList<ShellBlock> blocks = shellBlocks(readText(file));
+    QStringList sources = markdownFiles();
+    QStringList names = helpTexts().keys();
+    if (names.size() < 10)
+        QFAIL(qPrintable(QStringLiteral("mbscope --help-all listed %1 subcommands").arg(names.size())));
+    names.sort();
+    for (const QString &name : std::as_const(names))
+        sources.append(QStringLiteral("help:") + name);
+    for (const QString &file : std::as_const(sources)) {
+        const QString relative = file.startsWith(QLatin1String("help:")) ? file : QDir(kSourceDir).relativeFilePath(file);
+        const QList<ShellBlock> blocks = blocksOf(file);
         for (int i = 0; i < blocks.size(); ++i) {
             if (counter++ % shards == shard - 1)
                 QTest::addRow("%s:%d", qPrintable(relative), blocks.at(i).line) << file << i;
@@ -179,7 +221,7 @@ void TestDocExamples::blocks()
 {
     QFETCH(QString, file);
     QFETCH(int, index);
-    const ShellBlock block = shellBlocks(readText(file)).at(index);
+    const ShellBlock block = blocksOf(file).at(index);
     QVERIFY2(block.problems.isEmpty(), qPrintable(block.problems.join(QLatin1String("; "))));
     if (!block.skip.isEmpty()) {
         ++m_skipped;
