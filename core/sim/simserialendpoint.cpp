@@ -13,6 +13,8 @@
 
 #include <QtSerialPort/QSerialPort>
 
+#include <algorithm>
+
 namespace mbscope {
 
 namespace {
@@ -151,7 +153,7 @@ void SimSerialEndpoint::drain()
         simulator()->takeFrame(this, frame.bytes, frame.status, device, received, 0, [self, received](const FaultPlan &plan) {
             if (!self)
                 return;
-            self->m_responder.enqueue(plan, received, [endpoint = self.data(), id = plan.trafficId](const QByteArray &answer) {
+            self->m_responder.enqueue(self->keepFrameGap(plan), received, [endpoint = self.data(), id = plan.trafficId](const QByteArray &answer) {
                 if (!endpoint->m_port || !endpoint->m_port->isOpen())
                     return;
                 if (endpoint->m_rts)
@@ -162,6 +164,20 @@ void SimSerialEndpoint::drain()
             });
         });
     }
+}
+
+FaultPlan SimSerialEndpoint::keepFrameGap(const FaultPlan &plan) const
+{
+    if (url().kind != LinkKind::Rtu || url().delimited.enabled || plan.chunks.isEmpty())
+        return plan;
+    // A frame is cut as soon as its length is in, so without this the answer could start sooner
+    // than t3.5 after the request's last byte, and a slave on the bus that frames by silence would
+    // take the request and the answer for one frame (Serial Line V1.02, 2.5.1.1). A delay longer
+    // than t3.5 (the unit's, a fault's) already keeps it.
+    FaultPlan kept = plan;
+    qint64 &first = kept.chunks.first().delayNs;
+    first = std::max(first, RtuFramer::t35Ns(url().serial.baud));
+    return kept;
 }
 
 bool SimSerialEndpoint::writeAnswer(const QByteArray &answer)

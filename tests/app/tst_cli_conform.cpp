@@ -14,6 +14,8 @@
 #include <QtCore/QXmlStreamReader>
 #include <QtTest/QtTest>
 
+#include <algorithm>
+
 using namespace mbscope::testcli;
 
 namespace {
@@ -342,9 +344,10 @@ private Q_SLOTS:
 
     // The line timing on an RTU serial port, at 600 baud 8N1 (a character 16.7 ms, t1.5 27.5 ms,
     // t3.5 64.2 ms): the simulator behind a line relay that takes each character's time
-    // (PacedLine) answers as soon as a request's length is in, sooner than t3.5; a delay fault
-    // makes it wait; a trickle fault puts 38 ms of silence between its characters (under t3.5,
-    // so still one frame). A bare pty pair carries bytes at once: its times are not the line's.
+    // (PacedLine) keeps t3.5 before it answers (it did not, and failed serial.t35-before-answer,
+    // before session 14); a delay fault makes it wait longer; a trickle fault puts 55 ms of
+    // silence between its characters (over t1.5, under t3.5: still one frame). A bare pty pair
+    // carries bytes at once: its times are not the line's.
     void serialTiming_data()
     {
         QTest::addColumn<bool>("paced");
@@ -353,9 +356,9 @@ private Q_SLOTS:
         QTest::addColumn<QString>("t15");  // serial.t15-within-answer's
         QTest::addColumn<QString>("says"); // in t15's sentence, or t35's when t15 says nothing new
         QTest::newRow("bare pty pair") << false << "" << "skipped" << "skipped" << "not measurable on this link";
-        QTest::newRow("paced, answers at once") << true << "" << "failed" << "skipped" << "came in one read";
+        QTest::newRow("paced, the default profile") << true << "" << "passed" << "skipped" << "came in one read";
         QTest::newRow("paced, waits 100 ms") << true << R"({"kind": "delay", "delay": 100})" << "passed" << "skipped" << "came in one read";
-        QTest::newRow("paced, silences inside the answer") << true << R"({"kind": "trickle", "gapMs": 55})" << "failed" << "failed"
+        QTest::newRow("paced, silences inside the answer") << true << R"({"kind": "trickle", "gapMs": 55})" << "passed" << "failed"
                                                            << "at least one silence between its characters";
     }
     void serialTiming()
@@ -397,6 +400,45 @@ private Q_SLOTS:
                 QVERIFY2(c.value(QStringLiteral("sentence")).toString().startsWith(QLatin1String("not judged")), r.describe());
         }
         QCOMPARE(r.exitCode, t35 == QLatin1String("failed") || t15 == QLatin1String("failed") ? 1 : 0);
+    }
+
+    // The simulator's RTU serial endpoint keeps t3.5 of silence between a request's last byte and
+    // its answer's first (Serial Line V1.02, 2.5.1.1), at the baud rate's t3.5 up to 19200 baud and
+    // the fixed 1.75 ms above. The relay measures each turnaround from just before it handed the
+    // request over to just after it read the answer, never shorter than the simulator kept it.
+    // Before session 14 the answer left as soon as the request's length was in.
+    void simulatorKeepsT35BeforeAnswer_data()
+    {
+        QTest::addColumn<int>("baud");
+        QTest::newRow("9600 baud") << 9600;
+        QTest::newRow("19200 baud") << 19200;
+        QTest::newRow("115200 baud") << 115200;
+    }
+    void simulatorKeepsT35BeforeAnswer()
+    {
+        QFETCH(int, baud);
+        const qint64 characterNs = 10LL * 1000000000LL / baud; // 8N1
+        mbscope::testpeers::PacedLine line;
+        QString error;
+        QVERIFY2(line.start(characterNs, &error), qPrintable(error));
+        const QString options = QStringLiteral("?baud=%1&parity=N").arg(baud);
+        Background sim;
+        QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                            QStringLiteral("rtu://") + line.deviceEnd() + options, QStringLiteral("--quiet")},
+                           &error),
+                 qPrintable(error));
+        const CliResult poll = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), QStringLiteral("rtu://") + line.masterEnd() + options,
+                                           QStringLiteral("--address"), QStringLiteral("0"), QStringLiteral("--quantity"), QStringLiteral("4"),
+                                           QStringLiteral("--count"), QStringLiteral("10"), QStringLiteral("--interval"), QStringLiteral("0")});
+        QVERIFY2(poll.exitCode == 0, poll.describe());
+        const mbscope::testpeers::PacedLine::Timing timing = line.take();
+        QCOMPARE(timing.turnaroundsNs.size(), size_t(10));
+        const qint64 t35 = baud > 19200 ? 1750000 : 77LL * 1000000000LL / (2LL * baud); // 3.5 11-bit characters (Serial Line V1.02, 2.5.1.1)
+        const qint64 shortest = *std::min_element(timing.turnaroundsNs.begin(), timing.turnaroundsNs.end());
+        QVERIFY2(shortest >= t35, qPrintable(QStringLiteral("%1 us of silence before an answer; t3.5 at %2 baud is %3 us")
+                                                 .arg(double(shortest) / 1000, 0, 'f', 1)
+                                                 .arg(baud)
+                                                 .arg(double(t35) / 1000, 0, 'f', 1)));
     }
 
     // Connections at once: the simulator takes 64 by default (the check's 8 beside its own pass);
