@@ -22,17 +22,6 @@ namespace mbscope::app {
 
 namespace {
 
-// The profile's first endpoint the format can take, else Modbus/TCP on the loopback's 502.
-LinkUrl defaultEndpoint(const DeviceProfile &profile, MapExportFormat format)
-{
-    for (const QString &text : profile.endpoints) {
-        const LinkUrl::Result parsed = LinkUrl::parse(text);
-        if (parsed.url && MapExporter::unsupportedEndpoint(format, *parsed.url).isEmpty())
-            return *parsed.url;
-    }
-    return *LinkUrl::parse(u"tcp://127.0.0.1:502").url;
-}
-
 // One read of every block through target; bits come back as 0/1 words.
 QList<ExportBlockReading> readBlocks(const TargetSettings &target, const QList<MapPoint> &points,
                                   const QList<ExportBlock> &blocks)
@@ -189,7 +178,7 @@ int runExportMap(const QStringList &arguments)
             return usage(QStringLiteral("--endpoint %1").arg(parsed.error));
         input.endpoint = *parsed.url;
     } else {
-        input.endpoint = defaultEndpoint(profile, *format);
+        input.endpoint = MapExporter::defaultEndpoint(profile, *format);
     }
     if (const QString why = MapExporter::unsupportedEndpoint(*format, input.endpoint); !why.isEmpty())
         return usage(QStringLiteral("--endpoint %1: %2").arg(input.endpoint.toString(), why));

@@ -12,7 +12,6 @@
 #include "inference/blockinferrer.h"
 #include "inference/blocksampler.h"
 #include "inference/inferencedraft.h"
-#include "inference/scaleinferrer.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QFile>
@@ -173,12 +172,10 @@ int runInfer(const QStringList &arguments)
         line.clear();
         if (!map)
             return ExitUsage;
-        for (const TableMap &t : map->tables) {
-            if (t.maxQuantity > 0 && t.function >= 3)
-                maxQuantity = std::min(maxQuantity, t.maxQuantity);
-            for (const MapBlock &b : t.blocks)
-                blocks.append(BlockRequest{t.function, b.address, b.count()});
-        }
+        SampleSettings found;
+        found.takeBlocks(*map);
+        maxQuantity = found.maxQuantity;
+        blocks = found.blocks;
         if (blocks.isEmpty()) {
             if (scanner.end() == ScanEnd::LinkError) {
                 err << "mbscope infer: the link failed: " << target.url.toString() << " cannot be reached\n";
@@ -210,17 +207,11 @@ int runInfer(const QStringList &arguments)
     QList<InferredBlock> inferred;
     QList<ValueGuess> all;
     int readable = 0;
-    for (const BlockSamples &s : sampled) {
-        InferredBlock b{s, BlockInferrer::infer(s)};
-        readable += s.samples.isEmpty() ? 0 : 1;
-        all += b.guesses;
-        inferred.append(b);
-    }
-    // Setpoints beside temperatures, across the unit's blocks.
-    ScaleInferrer::applyNeighbours(all);
-    for (qsizetype i = 0, at = 0; i < inferred.size(); ++i) {
-        for (ValueGuess &g : inferred[i].guesses)
-            g = all.at(at++);
+    const QList<QList<ValueGuess>> guesses = BlockInferrer::inferUnit(sampled);
+    for (qsizetype i = 0; i < sampled.size(); ++i) {
+        readable += sampled.at(i).samples.isEmpty() ? 0 : 1;
+        all += guesses.at(i);
+        inferred.append(InferredBlock{sampled.at(i), guesses.at(i)});
     }
     if (readable == 0) {
         err << "mbscope infer: nothing could be read" << (sampler.problem().isEmpty() ? QString() : QStringLiteral(": ") + sampler.problem())

@@ -47,7 +47,7 @@ QString InferReport::text(const QString &target, quint8 unit, int intervalMs, co
         for (const ValueGuess &g : b.guesses) {
             QString evidence = g.evidence;
             if (!g.scaleEvidence.isEmpty())
-                evidence += QStringLiteral("; scale: ") + g.scaleEvidence;
+                evidence += QStringLiteral("; scale (%1 %): ").arg(qRound(g.scaleConfidence * 100)) + g.scaleEvidence;
             QString last = g.text ? QLatin1Char('"') + g.lastText + QLatin1Char('"') : g.lastText;
             if (last.size() > 14)
                 last = last.left(13) + QChar(0x2026);
@@ -81,6 +81,7 @@ QJsonObject InferReport::json(const QString &target, quint8 unit, int intervalMs
                           {QStringLiteral("confidence"), g.confidence},
                           {QStringLiteral("evidence"), g.evidence},
                           {QStringLiteral("scaleEvidence"), g.scaleEvidence},
+                          {QStringLiteral("scaleConfidence"), g.scaleConfidence},
                           {QStringLiteral("minimum"), g.minimum},
                           {QStringLiteral("maximum"), g.maximum},
                           {QStringLiteral("last"), g.text ? QJsonValue(g.lastText) : QJsonValue(g.last)}};

@@ -1,6 +1,7 @@
 #include "profiledraft.h"
 
 #include "profile/simtable.h"
+#include "protocol/quantitylimits.h"
 
 #include <QtCore/QDateTime>
 #include <QtCore/QJsonArray>
@@ -65,7 +66,15 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
     if (map.exceptionStatus >= 0)
         unit.insert(QStringLiteral("exceptionStatus"), map.exceptionStatus);
 
-    const QJsonObject profile{
+    // The device's limits the scan measured: a read function that took fewer than the
+    // specification allows (exception 03 above it) is recorded, so that what polls the clone or
+    // exports its map (export-map's blocks) asks no more.
+    QJsonObject maxQuantity;
+    for (const TableMap &t : map.tables) {
+        if (t.supported && t.maxQuantity > 0 && t.maxQuantity < QuantityLimits::maxQuantity(t.function))
+            maxQuantity.insert(hexCode(t.function), t.maxQuantity);
+    }
+    QJsonObject profile{
         {QStringLiteral("name"), name},
         {QStringLiteral("description"),
          QStringLiteral("Draft from mbscope scan --map of %1, unit %2, on %3: the addresses found and the values read "
@@ -75,6 +84,8 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
              .arg(QDateTime::currentDateTimeUtc().toString(Qt::ISODate))},
         {QStringLiteral("units"), QJsonArray{unit}},
     };
+    if (!maxQuantity.isEmpty())
+        profile.insert(QStringLiteral("limits"), QJsonObject{{QStringLiteral("maxQuantity"), maxQuantity}});
     return QJsonDocument(profile).toJson(QJsonDocument::Indented);
 }
 

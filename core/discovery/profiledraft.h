@@ -11,7 +11,9 @@ namespace mbscope {
 // serves: one unit with the scanned id, a table entry per block with the values read, the function
 // codes the device knew (read functions that were accepted and optional ones answered or refused
 // with anything but 01; the write functions, never tried, are left out), and the exception status
-// read. A draft: names, types and scaling are for a person to add.
+// read, and the device's limits the scan measured ("limits": {"maxQuantity"} for a read function
+// that takes fewer than the specification allows). A draft: names, types and scaling are for a
+// person to add.
 class ProfileDraft
 {
 public:

@@ -120,4 +120,24 @@ QList<ValueGuess> BlockInferrer::infer(const BlockSamples &block)
     return guesses;
 }
 
+QList<QList<ValueGuess>> BlockInferrer::inferUnit(const QList<BlockSamples> &blocks)
+{
+    QList<ValueGuess> all;
+    QList<qsizetype> sizes;
+    for (const BlockSamples &b : blocks) {
+        const QList<ValueGuess> guesses = infer(b);
+        sizes.append(guesses.size());
+        all += guesses;
+    }
+    // Setpoints beside temperatures, across the unit's blocks.
+    ScaleInferrer::applyNeighbours(all);
+    QList<QList<ValueGuess>> out;
+    qsizetype at = 0;
+    for (const qsizetype n : std::as_const(sizes)) {
+        out.append(all.mid(at, n));
+        at += n;
+    }
+    return out;
+}
+
 } // namespace mbscope

@@ -13,6 +13,16 @@
 
 namespace mbscope {
 
+void SampleSettings::takeBlocks(const RegisterMap &map)
+{
+    for (const TableMap &t : map.tables) {
+        if (t.maxQuantity > 0 && t.function >= 3)
+            maxQuantity = std::min(maxQuantity, t.maxQuantity);
+        for (const MapBlock &b : t.blocks)
+            blocks.append(BlockRequest{t.function, b.address, b.count()});
+    }
+}
+
 BlockSampler::BlockSampler(QObject *parent)
     : QObject(parent), m_channel(new ProbeChannel(this))
 {

@@ -3,6 +3,7 @@
 #include "blocksamples.h"
 
 #include "discovery/probechannel.h"
+#include "discovery/registermap.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QList>
@@ -26,6 +27,10 @@ struct SampleSettings {
     int intervalMs = 1000;     // from the start of one round to the start of the next
     int timeoutMs = 1000;
     int maxQuantity = 125;     // registers per read (bits: 2000); longer blocks take several reads
+
+    // The blocks a map scan found, each read whole (in reads of the largest quantity the scan
+    // measured for registers): what `mbscope infer` samples after its scan, and the window's Infer.
+    void takeBlocks(const RegisterMap &map);
 };
 
 // Reads the blocks again and again through a ProbeChannel (a TransactionEngine of its own), one

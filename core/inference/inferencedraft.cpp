@@ -19,6 +19,8 @@ namespace {
 
 QString entryName(const ValueGuess &g)
 {
+    if (!g.name.isEmpty())
+        return g.name;
     const QString what = g.text ? QStringLiteral("text")
                          : !g.quantity.isEmpty() ? g.quantity
                                                  : valueKindName(g.kind);
@@ -27,12 +29,15 @@ QString entryName(const ValueGuess &g)
 
 QString description(const ValueGuess &g)
 {
+    if (g.confirmed)
+        return QStringLiteral("confirmed: %1, type %2%3").arg(valueKindName(g.kind), g.typeName(),
+                                                               g.scale != 1 ? QStringLiteral(", scale %1").arg(g.scale) : QString());
     QString text = QStringLiteral("guess: %1, type %2 (confidence %3 %): %4")
                        .arg(valueKindName(g.kind), g.typeName())
                        .arg(qRound(g.confidence * 100))
                        .arg(g.evidence);
     if (!g.scaleEvidence.isEmpty())
-        text += QStringLiteral("; scale %1: %2").arg(g.scale).arg(g.scaleEvidence);
+        text += QStringLiteral("; scale %1 (confidence %2 %): %3").arg(g.scale).arg(qRound(g.scaleConfidence * 100)).arg(g.scaleEvidence);
     return text;
 }
 
@@ -101,7 +106,7 @@ QByteArray InferenceDraft::toJson(const QList<ValueGuess> &guesses, quint8 unit,
         {QStringLiteral("name"), name},
         {QStringLiteral("description"),
          QStringLiteral("Draft from mbscope infer of %1, unit %2, on %3: every entry's type, order, scale, unit and kind "
-                        "are guesses from the values sampled (each description starts 'guess' and says why); check them.")
+                        "are guesses from the values sampled (each description starts 'guess' and says why; 'confirmed' when a person confirmed or corrected it); check them.")
              .arg(source)
              .arg(unit)
              .arg(QDateTime::currentDateTimeUtc().toString(Qt::ISODate))},

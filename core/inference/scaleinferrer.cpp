@@ -1,5 +1,6 @@
 #include "scaleinferrer.h"
 
+#include "powerrelations.h"
 #include "wordseries.h"
 
 #include <algorithm>
@@ -106,6 +107,7 @@ void ScaleInferrer::apply(QList<ValueGuess> &guesses, const BlockSamples &block)
                 g.scale = std::pow(10.0, exponent);
                 g.scaleRegister = sf.address;
                 g.scaleEvidence = QStringLiteral("scale-factor register at %1 holds %2 (x 10^%2)").arg(sf.address).arg(exponent);
+                g.scaleConfidence = 0.9;
             }
             guesses[at].format = RegisterFormat(RegisterType::Int16);
             guesses[at].quantity = QStringLiteral("scale factor");
@@ -134,6 +136,7 @@ void ScaleInferrer::apply(QList<ValueGuess> &guesses, const BlockSamples &block)
                 g.scale = s;
                 g.quantity = QString::fromLatin1(q->name);
                 g.unit = QString::fromLatin1(q->unit);
+                g.scaleConfidence = 0.8;
                 g.scaleEvidence = QStringLiteral("raw %1 to %2 x %3 = %4 to %5 %6: reads as %7")
                                       .arg(WordSeries::number(low), WordSeries::number(high), WordSeries::number(s),
                                            WordSeries::number(low * s), WordSeries::number(high * s), g.unit, g.quantity)
@@ -146,6 +149,7 @@ void ScaleInferrer::apply(QList<ValueGuess> &guesses, const BlockSamples &block)
             if (const Quantity *q = recognise(low, high, 0, g.registers)) {
                 g.quantity = QString::fromLatin1(q->name);
                 g.unit = QString::fromLatin1(q->unit);
+                g.scaleConfidence = 0.8;
                 g.scaleEvidence = QStringLiteral("%1 to %2: reads as %3").arg(WordSeries::number(low), WordSeries::number(high), g.quantity);
             }
         } else if (g.scaleRegister >= 0) {
@@ -157,6 +161,19 @@ void ScaleInferrer::apply(QList<ValueGuess> &guesses, const BlockSamples &block)
                     g.format = RegisterFormat(RegisterType::Int16, g.format.order());
             }
         }
+    }
+
+    PowerRelations::apply(guesses, block);
+
+    for (ValueGuess &g : guesses) {
+        if (g.text || g.bit)
+            continue;
+        const QList<double> raw = rawValues(g, block);
+        if (raw.isEmpty())
+            continue;
+        const auto [lowIt, highIt] = std::minmax_element(raw.cbegin(), raw.cend());
+        const double low = *lowIt;
+        const double high = *highIt;
         QList<double> values = raw;
         for (double &v : values)
             v *= g.scale;
@@ -204,6 +221,7 @@ void ScaleInferrer::applyNeighbours(QList<ValueGuess> &guesses)
         g.format = RegisterFormat(RegisterType::Int16, g.format.order());
         g.minimum = g.maximum = g.last = raw * 0.1;
         g.lastText = WordSeries::number(g.last);
+        g.scaleConfidence = 0.5;
         g.scaleEvidence = beside ? QStringLiteral("still at raw %1; x 0.1 = %2 degC, a setpoint beside temperatures in tenths").arg(raw).arg(g.last)
                                  : QStringLiteral("still at raw %1 among settings; x 0.1 = %2 degC, as the device's temperatures").arg(raw).arg(g.last);
     }

@@ -31,11 +31,14 @@ struct ValueGuess {
     double confidence = 0.5; // of the type and order
     QString evidence;        // why this type and order
     QString scaleEvidence;   // why this scale and unit (empty: scale 1 for want of a reason)
+    double scaleConfidence = 0.3; // of the scale and unit (0.3: scale 1 for want of a reason)
     double minimum = 0;      // engineering values (raw x scale) over the samples
     double maximum = 0;
     double last = 0;
     QString lastText;        // the last value as text (strings: the characters)
     QList<quint16> lastWords; // the last sample's words, wire order
+    QString name;            // given by a person (the window's Infer); empty: named after its quantity
+    bool confirmed = false;  // a person confirmed or corrected it: the draft no longer calls it a guess
     double typicalStep = 0;  // the median size of a change between samples (engineering units)
 
     [[nodiscard]] QString typeName() const; // "f32-cdab", "ascii[16]", "bit"

@@ -81,4 +81,14 @@ QString MapExporter::write(MapExportFormat format, const MapExportInput &input)
     return QString();
 }
 
+LinkUrl MapExporter::defaultEndpoint(const DeviceProfile &profile, MapExportFormat format)
+{
+    for (const QString &text : profile.endpoints) {
+        const LinkUrl::Result parsed = LinkUrl::parse(text);
+        if (parsed.url && unsupportedEndpoint(format, *parsed.url).isEmpty())
+            return *parsed.url;
+    }
+    return *LinkUrl::parse(u"tcp://127.0.0.1:502").url;
+}
+
 } // namespace mbscope

@@ -2,6 +2,8 @@
 
 #include "mapexportinput.h"
 
+#include "profile/deviceprofile.h"
+
 #include <QtCore/QString>
 #include <QtCore/QStringView>
 
@@ -29,6 +31,9 @@ public:
     // What the format cannot say about the endpoint (a serial line for modbus_exporter); empty when it can.
     [[nodiscard]] static QString unsupportedEndpoint(MapExportFormat format, const LinkUrl &endpoint);
     [[nodiscard]] static QString write(MapExportFormat format, const MapExportInput &input);
+    // Where the tool reaches the device when nobody says: the profile's first endpoint the format
+    // takes, else tcp://127.0.0.1:502 (export-map without --endpoint, the window's Export map).
+    [[nodiscard]] static LinkUrl defaultEndpoint(const DeviceProfile &profile, MapExportFormat format);
 };
 
 } // namespace mbscope

@@ -1239,6 +1239,187 @@
     </message>
 </context>
 <context>
+    <name>mbscope::ExportMapDialog</name>
+    <message>
+        <location filename="../../ui/discovery/exportmapdialog.cpp" line="+63"/>
+        <source>no usable answer</source>
+        <translation>tidak ada jawaban yang dapat dipakai</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source> ms</source>
+        <translation> md</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Export</source>
+        <translation>&amp;Ekspor</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Export map</source>
+        <translation>Ekspor peta</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a shipped profile&apos;s name or a JSON file</source>
+        <translation>nama profil bawaan atau berkas JSON</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the profile&apos;s first endpoint the format takes</source>
+        <translation>titik ujung pertama profil yang diterima format ini</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Where the tool will reach the device: tcp://host:port, rtu-tcp://..., rtu:///dev/ttyUSB0?baud=...</source>
+        <translation>Tempat alat itu menjangkau perangkat: tcp://host:port, rtu-tcp://..., rtu:///dev/ttyUSB0?baud=...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How often the tool polls.</source>
+        <translation>Seberapa sering alat itu melakukan poll.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>empty: export without reading</source>
+        <translation>kosong: ekspor tanpa membaca</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Read every value once from this target first and refuse the export when one is not finite or outside the min and max its entry declares.</source>
+        <translation>Baca setiap nilai sekali dari tujuan ini lebih dulu dan tolak ekspor bila ada yang tidak hingga atau di luar min dan max yang dinyatakan entrinya.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Telusuri…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Ch&amp;oose…</source>
+        <translation>Pilih &amp;berkas…</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Profile:</source>
+        <translation>&amp;Profil:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Format:</source>
+        <translation>&amp;Format:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>E&amp;ndpoint:</source>
+        <translation>Titik &amp;ujung:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Poll &amp;interval:</source>
+        <translation>&amp;Interval poll:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Verify from:</source>
+        <translation>&amp;Verifikasi dari:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>O&amp;utput file:</source>
+        <translation>Berkas &amp;keluaran:</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Writes the profile&apos;s register map for the tool that will poll the device (mbscope export-map).</source>
+        <translation>Menulis peta register profil untuk alat yang akan melakukan poll ke perangkat (mbscope export-map).</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Which profile? Give a shipped profile&apos;s name or a JSON file.</source>
+        <translation>Profil yang mana? Berikan nama profil bawaan atau berkas JSON.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Endpoint: %1</source>
+        <translation>Titik ujung: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Endpoint %1: %2</source>
+        <translation>Titik ujung %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 has no table entries to export.</source>
+        <translation>%1 tidak punya entri tabel untuk diekspor.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Choose the output file.</source>
+        <translation>Pilih berkas keluaran.</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Verify from: %1</source>
+        <translation>Verifikasi dari: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Reading every value once from %1…</source>
+        <translation>Membaca setiap nilai sekali dari %1…</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>unit %1 %2 %3 (%4): %5</source>
+        <translation>unit %1 %2 %3 (%4): %5</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Refused: %1 of %2 values read from %3 are not usable; nothing written.</source>
+        <translation>Ditolak: %1 dari %2 nilai yang dibaca dari %3 tidak dapat dipakai; tidak ada yang ditulis.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>
+ɪnd %n more</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Verified: %1 values read from %2 are finite and inside their ranges. </source>
+        <translation>Terverifikasi: %1 nilai yang dibaca dari %2 hingga dan di dalam rentangnya. </translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot write %1: %2</source>
+        <translation>Tidak dapat menulis %1: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Wrote %1 values in %2 blocks to %3 (%4).</source>
+        <translation>Menulis %1 nilai dalam %2 blok ke %3 (%4).</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Device profile</source>
+        <translation>Profil perangkat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device profiles (*.json)</source>
+        <translation>Profil perangkat (*.json)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Export to</source>
+        <translation>Ekspor ke</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::Field</name>
     <message>
         <location filename="../../core/protocol/aduascii.cpp" line="+71"/>
@@ -2606,6 +2787,193 @@
     </message>
 </context>
 <context>
+    <name>mbscope::InferDialog</name>
+    <message>
+        <location filename="../../ui/discovery/inferdialog.cpp" line="+36"/>
+        <source> ms</source>
+        <translation> md</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Sample and infer</source>
+        <translation>&amp;Ambil sampel dan simpulkan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sto&amp;p</source>
+        <translation>&amp;Hentikan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Read again</source>
+        <translation>Baca &amp;lagi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sa&amp;ve profile…</source>
+        <translation>Simpan &amp;profil…</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Infer types</source>
+        <translation>Simpulkan tipe</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How many times every block is read: the more, the surer the kinds and relations.</source>
+        <translation>Berapa kali setiap blok dibaca: makin banyak, makin yakin jenis dan hubungannya.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>From the start of one round of reads to the start of the next.</source>
+        <translation>Dari awal satu putaran pembacaan sampai awal putaran berikutnya.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Unit:</source>
+        <translation>Unit:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>every</source>
+        <translation>setiap</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Sa&amp;mples:</source>
+        <translation>Sa&amp;mpel:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Read every block once more and show the values under every reading.</source>
+        <translation>Baca setiap blok sekali lagi dan tampilkan nilai di bawah setiap bacaan.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the draft as a device profile that mbscope simulate --profile serves and mbscope export-map exports: the rows checked OK are confirmed, the others stay guesses.</source>
+        <translation>Simpan draf sebagai profil perangkat yang dilayani mbscope simulate --profile dan diekspor mbscope export-map: baris yang dicentang OK dikonfirmasi, sisanya tetap tebakan.</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1 of %2 values confirmed. Check the reading whose numbers you recognise, or OK to keep the guess; then save the profile.</source>
+        <translation>%1 dari %2 nilai dikonfirmasi. Centang bacaan yang angkanya Anda kenali, atau OK untuk mempertahankan tebakan; lalu simpan profilnya.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Reads the blocks of the map again and again, then proposes each value&apos;s type, order, scale, unit and kind. Never writes.</source>
+        <translation>Membaca blok-blok peta berulang kali, lalu mengusulkan tipe, urutan, skala, satuan, dan jenis setiap nilai. Tidak pernah menulis.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+16"/>
+        <source>%1, unit %2: %n block(s) of the map</source>
+        <translation>
+            <numerusform>%1, unit %2: %n blok dari peta</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>, %n address(es)</source>
+        <translation>
+            <numerusform>, %n alamat</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+24"/>
+        <source>Reading the blocks %n time(s)…</source>
+        <translation>
+            <numerusform>Membaca blok-blok %n kali…</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Too few reads answered to infer anything.</source>
+        <translation>Terlalu sedikit pembacaan yang dijawab untuk menyimpulkan apa pun.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Nothing could be read: %1</source>
+        <translation>Tidak ada yang bisa dibaca: %1</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>Cannot save %1: %2</source>
+        <translation>Tidak dapat menyimpan %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Saved %1 (%2 of %3 values confirmed): mbscope simulate --profile %1 serves it, mbscope export-map %1 --to FORMAT exports it.</source>
+        <translation>Tersimpan %1 (%2 dari %3 nilai dikonfirmasi): mbscope simulate --profile %1 melayaninya, mbscope export-map %1 --to FORMAT mengekspornya.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Save profile</source>
+        <translation>Simpan profil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device profiles (*.json)</source>
+        <translation>Profil perangkat (*.json)</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::InferDraftModel</name>
+    <message>
+        <location filename="../../ui/discovery/inferdraftmodel.cpp" line="+116"/>
+        <source>The guess: %1</source>
+        <translation>Tebakan: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Check to read the value as %1 instead</source>
+        <translation>Centang untuk membaca nilai sebagai %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Scale (%1 %): %2</source>
+        <translation>Skala (%1 %): %2</translation>
+    </message>
+    <message>
+        <location line="+66"/>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Address</source>
+        <translation>Alamat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Name</source>
+        <translation>Nama</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Unit</source>
+        <translation>Satuan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Kind</source>
+        <translation>Jenis</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Sure</source>
+        <translation>Yakin</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Guess</source>
+        <translation>Tebakan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Reading %1</source>
+        <translation>Bacaan %1</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::LatencyAnalysis</name>
     <message>
         <location filename="../../ui/analysis/latencyanalysis.cpp" line="+22"/>
@@ -3625,7 +3993,7 @@
 <context>
     <name>mbscope::MapScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/mapscandialog.cpp" line="+38"/>
+        <location filename="../../ui/discovery/mapscandialog.cpp" line="+39"/>
         <source>&amp;Optional functions (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)</source>
         <translation>Fungsi &amp;opsional (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)</translation>
     </message>
@@ -3654,6 +4022,11 @@
         <location line="+1"/>
         <source>&amp;Add as watches</source>
         <translation>&amp;Tambahkan sebagai pantauan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>I&amp;nfer types…</source>
+        <translation>&amp;Simpulkan tipe…</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -3756,7 +4129,12 @@
         <translation>Tambahkan satu pantauan per blok yang ditemukan ke pantauan jendela.</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+5"/>
+        <source>Read the blocks found again and again and propose each value&apos;s type, order, scale, unit and kind, to confirm or correct row by row (mbscope infer).</source>
+        <translation>Baca blok yang ditemukan berulang kali dan usulkan tipe, urutan, skala, satuan, dan jenis setiap nilai, untuk dikonfirmasi atau dikoreksi baris demi baris (mbscope infer).</translation>
+    </message>
+    <message>
+        <location line="+23"/>
         <source>Reads every table&apos;s addresses (exception 02 says an address is missing). Never writes.</source>
         <translation>Membaca alamat setiap tabel (eksepsi 02 berarti alamat itu tidak ada). Tidak pernah menulis.</translation>
     </message>
@@ -3776,7 +4154,7 @@
         <translation>Memetakan unit %1…</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Map complete</source>
         <translation>Peta selesai</translation>
     </message>
@@ -3828,7 +4206,7 @@
         <translation>Tersimpan %1: mbscope simulate --profile %1 melayani unit ini.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+15"/>
         <source>Save profile draft</source>
         <translation>Simpan draf profil</translation>
     </message>
@@ -5646,7 +6024,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RequestForm</name>
     <message>
-        <location filename="../../ui/compose/requestform.cpp" line="+124"/>
+        <location filename="../../ui/compose/requestform.cpp" line="+121"/>
         <source>Read Device Identification</source>
         <translation>Baca Identifikasi Perangkat</translation>
     </message>
@@ -5847,7 +6225,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 %2 ditolak: %3 menerima 1-%4 %5 dalam satu permintaan (Modbus V1.1b3)</translation>
     </message>
     <message>
-        <location line="-306"/>
+        <location line="-302"/>
         <location line="+4"/>
         <source>coils</source>
         <translation>coil</translation>
@@ -5866,7 +6244,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>register</translation>
     </message>
     <message>
-        <location line="+412"/>
+        <location line="+408"/>
         <source>read quantity</source>
         <translation>jumlah baca</translation>
     </message>
@@ -8153,7 +8531,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ToolsMenu</name>
     <message>
-        <location filename="../../ui/shell/toolsmenu.cpp" line="+34"/>
+        <location filename="../../ui/shell/toolsmenu.cpp" line="+35"/>
         <source>&amp;Tools</source>
         <translation>&amp;Alat</translation>
     </message>
@@ -8178,7 +8556,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Jalankan rangkaian uji kesesuaian mbscope conform terhadap sebuah slave: satu hasil per pemeriksaan beserta pasalnya</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>&amp;Export map…</source>
+        <translation>&amp;Ekspor peta…</translation>
+    </message>
+    <message>
         <location line="+2"/>
+        <source>Write a device profile&apos;s register map for Node-RED, Telegraf, Home Assistant, modbus_exporter or CSV, verified against the device first if you like (mbscope export-map)</source>
+        <translation>Tulis peta register profil perangkat untuk Node-RED, Telegraf, Home Assistant, modbus_exporter atau CSV, diverifikasi terhadap perangkat lebih dulu bila mau (mbscope export-map)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>&amp;Preferences…</source>
         <translation>&amp;Preferensi…</translation>
     </message>
@@ -8193,7 +8581,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Tentang mbscope</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+77"/>
         <source>Recording settings apply from the next connection.</source>
         <translation>Pengaturan perekaman berlaku mulai sambungan berikutnya.</translation>
     </message>
@@ -8658,7 +9046,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchDialog</name>
     <message>
-        <location filename="../../ui/watch/watchdialog.cpp" line="+49"/>
+        <location filename="../../ui/watch/watchdialog.cpp" line="+51"/>
         <source>Each address holds a 32-bit value (&amp;Enron/Daniel)</source>
         <translation>Tiap alamat berisi nilai 32-bit (&amp;Enron/Daniel)</translation>
     </message>

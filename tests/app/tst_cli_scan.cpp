@@ -158,6 +158,7 @@ private slots:
     void badInput_data();
     void badInput();
     void mapDraftServedAgainAnswersTheSame();
+    void mapDraftRecordsTheLargestRead();
     void lineSettingsFound();
     void timingLimitsFound();
     void timingTellsDropOldestFromRefuse();
@@ -419,6 +420,47 @@ void TestCliScan::mapDraftServedAgainAnswersTheSame()
         QCOMPARE(cloned.value(it.key()), it.value());
     }
     QCOMPARE(again.json().value(QStringLiteral("exception_status")).toInt(), 0x6D);
+}
+
+// A device that takes 16 registers a read at most: the map scan finds it, the draft records it
+// as the profile's limits (before, the draft dropped it and a clone took 125), the clone served
+// from the draft refuses 17 as the device does, and export-map's blocks honour it.
+void TestCliScan::mapDraftRecordsTheLargestRead()
+{
+    QFile profile(m_dir.filePath(QStringLiteral("narrow.json")));
+    QVERIFY(profile.open(QIODevice::WriteOnly));
+    profile.write(R"({"name": "narrow", "limits": {"maxQuantity": {"0x03": 16}},
+                      "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 40}]}}]})");
+    profile.close();
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), profile.fileName(), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const QString draft = m_dir.filePath(QStringLiteral("narrow-draft.json"));
+    const CliResult scanned = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--map"),
+                                          QStringLiteral("1"), QStringLiteral("--addresses"), QStringLiteral("0-99"), QStringLiteral("--tables"),
+                                          QStringLiteral("3"), QStringLiteral("--profile-out"), draft});
+    QVERIFY2(scanned.finished && scanned.exitCode == 0, scanned.describe());
+    QFile file(draft);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject written = QJsonDocument::fromJson(file.readAll()).object();
+    QCOMPARE(written.value(QStringLiteral("limits")).toObject().value(QStringLiteral("maxQuantity")).toObject().value(QStringLiteral("0x03")).toInt(), 16);
+
+    Background clone;
+    QVERIFY2(clone.start({QStringLiteral("simulate"), QStringLiteral("--profile"), draft, QStringLiteral("--listen"),
+                          QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                         &error),
+             qPrintable(error));
+    const CliResult refused = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), clone.url(), QStringLiteral("--address"),
+                                          QStringLiteral("0"), QStringLiteral("--quantity"), QStringLiteral("17")});
+    QVERIFY2(refused.finished && (refused.out + refused.err).toLower().contains("illegal data value"), refused.describe());
+    // export-map reads the 40 registers in blocks of 16 at most.
+    const CliResult exported = runMbscope({QStringLiteral("export-map"), draft, QStringLiteral("--to"), QStringLiteral("csv"),
+                                           QStringLiteral("--verify"), clone.url()});
+    QVERIFY2(exported.finished && exported.exitCode == 0, exported.describe());
+    QVERIFY2(exported.err.contains("verified: 40 values"), exported.describe());
 }
 
 void TestCliScan::lineSettingsFound()

@@ -7,8 +7,8 @@
 //               while the sign bit stays clear, u16/hex/bin); strings: ascii of the same length;
 //               bits: a bit. "exact" counts only the same type name.
 //   scale       numeric register values whose guessed scale is the profile's.
-//   const->meas values that never move in the profile (no generator, or a constant one) that
-//               the guess calls a measurement.
+//   const->meas values that never move in the profile (declared constant, or no kind and no
+//               generator or a constant one) that the guess calls a measurement.
 // Goals: type+order >= 90 %, scale >= 80 %, const->meas 0. --check fails the run when a goal is
 // missed. Usage: bench_infer [--samples 40] [--interval 500] [--device NAME] [--check]
 
@@ -104,7 +104,10 @@ Figures compare(const DeviceProfile &profile, const QJsonObject &inferred)
     Figures f;
     for (const TableEntry &e : profile.units.constFirst().entries) {
         const int function = functionOf(e.table);
-        const bool still = !e.generator || e.generator->kind == GeneratorSpec::Kind::Constant;
+        // Still: declared constant, or neither declared to move nor moved by a generator (a value
+        // a unit's script computes says its kind).
+        const bool still = e.kind == ValueKind::Constant
+            || (e.kind == ValueKind::Unspecified && (!e.generator || e.generator->kind == GeneratorSpec::Kind::Constant));
         const bool bits = isBitTable(e.table);
         const bool text = !bits && e.format.type() == RegisterType::Ascii && e.count > 1;
         const int values = text ? 1 : e.valueCount();

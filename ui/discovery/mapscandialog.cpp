@@ -2,6 +2,7 @@
 
 #include "common/lastfolder.h"
 
+#include "inferdialog.h"
 #include "mapresulttree.h"
 #include "scanform.h"
 
@@ -43,6 +44,7 @@ MapScanDialog::MapScanDialog(QWidget *parent)
     , m_stop(new QPushButton(tr("Sto&p"), this))
     , m_save(new QPushButton(tr("Save profile &draft\u2026"), this))
     , m_add(new QPushButton(tr("&Add as watches"), this))
+    , m_infer(new QPushButton(tr("I&nfer types\u2026"), this))
     , m_progress(new QProgressBar(this))
     , m_status(new QLabel(this))
 {
@@ -108,6 +110,10 @@ MapScanDialog::MapScanDialog(QWidget *parent)
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     buttons->addButton(m_save, QDialogButtonBox::ActionRole);
     buttons->addButton(m_add, QDialogButtonBox::ActionRole);
+    m_infer->setObjectName(QStringLiteral("mapInfer"));
+    m_infer->setToolTip(tr("Read the blocks found again and again and propose each value's type, order, scale, unit "
+                           "and kind, to confirm or correct row by row (mbscope infer)."));
+    buttons->addButton(m_infer, QDialogButtonBox::ActionRole);
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -121,6 +127,11 @@ MapScanDialog::MapScanDialog(QWidget *parent)
     connect(m_stop, &QPushButton::clicked, this, &MapScanDialog::stop);
     connect(m_save, &QPushButton::clicked, this, &MapScanDialog::chooseDraftFile);
     connect(m_add, &QPushButton::clicked, this, [this] { Q_EMIT watchesRequested(watches()); });
+    connect(m_infer, &QPushButton::clicked, this, [this] {
+        InferDialog *dialog = inferTypes();
+        dialog->show();
+        dialog->raise();
+    });
     connect(buttons, &QDialogButtonBox::rejected, this, &MapScanDialog::reject);
     connect(m_scanner, &MapScanner::progressChanged, this, &MapScanDialog::onProgress);
     m_status->setText(tr("Reads every table's addresses (exception 02 says an address is missing). Never writes."));
@@ -188,6 +199,7 @@ void MapScanDialog::start()
     if (map) {
         m_map = map;
         m_mapTarget = s->url.toString();
+        m_mapUrl = s->url;
         m_tree->showMap(*map);
     }
     const int found = map ? MapResultTree::addressCount(*map) : 0;
@@ -248,6 +260,15 @@ bool MapScanDialog::saveDraft(const QString &path)
     return true;
 }
 
+InferDialog *MapScanDialog::inferTypes()
+{
+    if (!m_inferDialog)
+        m_inferDialog = new InferDialog(this);
+    if (m_map)
+        m_inferDialog->setSource(m_mapUrl, m_map->unit, *m_map);
+    return m_inferDialog;
+}
+
 void MapScanDialog::chooseDraftFile()
 {
     const QString path = QFileDialog::getSaveFileName(this, tr("Save profile draft"),
@@ -265,6 +286,7 @@ void MapScanDialog::updateButtons()
     const bool blocks = m_map && MapResultTree::addressCount(*m_map) > 0;
     m_save->setEnabled(m_map.has_value() && !m_running);
     m_add->setEnabled(blocks && !m_running);
+    m_infer->setEnabled(blocks && !m_running);
     QList<QWidget *> fields{m_target, m_unit, m_first, m_last, m_step, m_optional, m_timeout, m_gap, m_maxRequests};
     for (QCheckBox *box : std::as_const(m_tables))
         fields.append(box);

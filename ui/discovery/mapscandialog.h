@@ -20,13 +20,15 @@ class QSpinBox;
 
 namespace mbscope {
 
+class InferDialog;
 class MapResultTree;
 class MapScanner;
 
 // Scan > Map unit: which addresses of each table a unit has, the largest read each function takes
 // and which optional functions it answers (core/discovery's MapScanner: reads only, bounded by a
 // request count), shown as a tree. The map becomes a device profile draft that `mbscope simulate
-// --profile` serves ("Save profile draft"), or a watch per block (watchesRequested()).
+// --profile` serves ("Save profile draft"), or a watch per block (watchesRequested()), or goes on to
+// Infer types (InferDialog: what each value of the blocks is, confirmed row by row).
 class MapScanDialog : public QDialog
 {
     Q_OBJECT
@@ -44,6 +46,9 @@ public:
     [[nodiscard]] QList<WatchDefinition> watches() const;
     // Writes the map as a profile draft to path; false, with the reason shown, when it cannot.
     bool saveDraft(const QString &path);
+    // Infer types: the dialog that samples the map's blocks and proposes what each value is,
+    // made on the first call and set to this map's unit.
+    InferDialog *inferTypes();
 
 public Q_SLOTS:
     // Runs the scan to its end (local event loops: the dialog stays live, Stop works).
@@ -78,11 +83,14 @@ private:
     QPushButton *m_stop;
     QPushButton *m_save;
     QPushButton *m_add;
+    QPushButton *m_infer;
+    InferDialog *m_inferDialog = nullptr;
     QProgressBar *m_progress;
     QLabel *m_status;
     bool m_running = false;
     std::optional<RegisterMap> m_map;
     QString m_mapTarget;
+    LinkUrl m_mapUrl;
 };
 
 } // namespace mbscope

@@ -48,7 +48,9 @@ QHBoxLayout *ScanForm::runRow(QPushButton *start, QPushButton *stop, QProgressBa
 
 void ScanForm::showProblem(QLabel *status, const QString &text)
 {
-    status->setText(QStringLiteral("<span style=\"color:#c0392b\">%1</span>").arg(text.toHtmlEscaped()));
+    // Rich text: a line break of the text is a <br>.
+    status->setText(QStringLiteral("<span style=\"color:#c0392b\">%1</span>")
+                        .arg(text.toHtmlEscaped().replace(QLatin1Char('\n'), QLatin1String("<br>"))));
 }
 
 std::optional<LinkUrl> ScanForm::target(const QLineEdit *target, QLabel *status, const QString &emptyHint)

@@ -34,7 +34,7 @@ public:
     static void addRow(QWidget *parent, QFormLayout *form, const QString &label, QWidget *buddy, QLayout *fields);
     // Start, Stop and the progress bar, side by side.
     [[nodiscard]] static QHBoxLayout *runRow(QPushButton *start, QPushButton *stop, QProgressBar *progress);
-    // The status line in red: what is wrong.
+    // The status line in red: what is wrong (a text of several lines keeps them).
     static void showProblem(QLabel *status, const QString &text);
     // The link typed in target; nullopt with the reason (or emptyHint for an empty field) shown.
     [[nodiscard]] static std::optional<LinkUrl> target(const QLineEdit *target, QLabel *status, const QString &emptyHint);

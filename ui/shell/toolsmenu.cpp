@@ -1,6 +1,7 @@
 #include "toolsmenu.h"
 
 #include "conformance/conformancedialog.h"
+#include "discovery/exportmapdialog.h"
 #include "discovery/scandialog.h"
 #include "link/connectionbar.h"
 #include "link/linkcontroller.h"
@@ -38,6 +39,10 @@ void ToolsMenu::addMenus(QMenuBar *menuBar)
     QAction *conform = tools->addAction(tr("&Conformance\u2026"), this, &ToolsMenu::showConformanceDialog);
     conform->setObjectName(QStringLiteral("conformanceAction"));
     conform->setToolTip(tr("Run the conformance battery of mbscope conform against a slave: a verdict per check with its clause"));
+    QAction *exportMap = tools->addAction(tr("&Export map\u2026"), this, &ToolsMenu::showExportMapDialog);
+    exportMap->setObjectName(QStringLiteral("exportMapAction"));
+    exportMap->setToolTip(tr("Write a device profile's register map for Node-RED, Telegraf, Home Assistant, modbus_exporter or CSV, "
+                             "verified against the device first if you like (mbscope export-map)"));
     tools->addSeparator();
     QAction *preferences = tools->addAction(tr("&Preferences\u2026"), this, &ToolsMenu::showPreferences);
     preferences->setMenuRole(QAction::PreferencesRole);
@@ -90,6 +95,21 @@ void ToolsMenu::showConformanceDialog()
         else if (const ConnectionBar::State state = m_connectionBar->state(); state.target)
             dialog->setTarget(*state.target);
     }
+    dialog->show();
+    dialog->raise();
+    dialog->activateWindow();
+}
+
+ExportMapDialog *ToolsMenu::exportMapDialog()
+{
+    if (!m_exportMapDialog)
+        m_exportMapDialog = new ExportMapDialog(m_window);
+    return m_exportMapDialog;
+}
+
+void ToolsMenu::showExportMapDialog()
+{
+    ExportMapDialog *dialog = exportMapDialog();
     dialog->show();
     dialog->raise();
     dialog->activateWindow();

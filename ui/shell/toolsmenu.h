@@ -12,12 +12,13 @@ namespace mbscope {
 
 class ConformanceDialog;
 class ConnectionBar;
+class ExportMapDialog;
 class LinkController;
 class RecordingControl;
 class ScanDialog;
 class TrafficMonitor;
 
-// The Tools menu (Scan for units, Conformance, Preferences) and the Help menu (About). The scan dialog is made
+// The Tools menu (Scan for units, Conformance, Export map, Preferences) and the Help menu (About). The scan dialog is made
 // when first asked for; its frames reach the traffic list and the connection's recording as the
 // composer's do, and the units it finds are offered to the window as watches (watchesFound).
 // MainWindow makes one and adds its menus.
@@ -38,6 +39,9 @@ public:
     // Tools > Conformance's dialog (made on first use), opened on the window's target as the scan's is.
     [[nodiscard]] ConformanceDialog *conformanceDialog();
     void showConformanceDialog();
+    // Tools > Export map's dialog (made on first use): mbscope export-map from the window.
+    [[nodiscard]] ExportMapDialog *exportMapDialog();
+    void showExportMapDialog();
 
 Q_SIGNALS:
     // "Add as watches" in the scan dialog.
@@ -55,6 +59,7 @@ private:
     RecordingControl *m_recording;
     ScanDialog *m_scanDialog = nullptr;
     ConformanceDialog *m_conformanceDialog = nullptr;
+    ExportMapDialog *m_exportMapDialog = nullptr;
 };
 
 } // namespace mbscope

@@ -232,6 +232,78 @@ private Q_SLOTS:
         QCOMPARE(g->unit, unit);
     }
 
+    // A three-phase meter of 32-bit integers low word first whose powers follow from its voltages
+    // (x0.1), currents (x0.001) and power factors (x0.001) as a meter computes them: the currents
+    // and powers get their scales from the relations between registers (PowerRelations). When
+    // the powers move on their own, nothing relates them and they keep scale 1.
+    void powerRelations_data()
+    {
+        QTest::addColumn<bool>("related");
+        QTest::addColumn<int>("address");
+        QTest::addColumn<double>("scale");
+        QTest::addColumn<QString>("unit");
+        QTest::addColumn<QString>("evidence");
+        QTest::newRow("current L1") << true << 6 << 0.001 << "A" << "V(0) x A(6)";
+        QTest::newRow("current L3") << true << 10 << 0.001 << "A" << "x A(10)";
+        QTest::newRow("active power L1") << true << 12 << 0.1 << "W" << "x PF(36)";
+        QTest::newRow("apparent power L2") << true << 20 << 0.1 << "VA" << "= V(2) x A(8) over";
+        QTest::newRow("reactive power L1") << true << 24 << 0.1 << "var" << "sqrt(VA(18)^2 - W(12)^2)";
+        QTest::newRow("reactive power L3, negative") << true << 28 << 0.1 << "var" << "sqrt(VA(22)^2 - W(16)^2)";
+        QTest::newRow("total active power") << true << 30 << 0.1 << "W" << "30 = 12 + 14 + 16";
+        QTest::newRow("total reactive power") << true << 34 << 0.1 << "var" << "34 = 24 + 26 + 28";
+        QTest::newRow("voltage still recognised") << true << 0 << 0.1 << "V" << "reads as voltage";
+        QTest::newRow("unrelated: current") << false << 6 << 1.0 << "" << "";
+        QTest::newRow("unrelated: apparent power") << false << 18 << 1.0 << "" << "";
+    }
+    void powerRelations()
+    {
+        QFETCH(bool, related);
+        QFETCH(int, address);
+        QFETCH(double, scale);
+        QFETCH(QString, unit);
+        QFETCH(QString, evidence);
+        auto volts = [](int p, int t) { return std::round(10 * (230 + 0.5 * p + 0.8 * std::sin(0.37 * t + p))) / 10; };
+        auto amps = [](int p, int t) { return std::round(1000 * (5 + p + 1.5 * std::sin(0.23 * t + p))) / 1000; };
+        auto factor = [](int p, int t) { return std::round(1000 * (0.92 + 0.04 * std::sin(0.51 * t + p))) / 1000; };
+        auto va = [&](int p, int t) { return related ? volts(p, t) * amps(p, t) : sine(t + 7 * p, 1200, 300); };
+        auto w = [&](int p, int t) { return va(p, t) * factor(p, t); };
+        auto var = [&](int p, int t) { return (p == 2 ? -1 : 1) * std::sqrt(std::max(0.0, va(p, t) * va(p, t) - w(p, t) * w(p, t))); };
+        QList<Field> fields;
+        auto add = [&](const QString &format, std::function<double(int)> raw) { fields.append({format, std::move(raw)}); };
+        for (int p = 0; p < 3; ++p)
+            add(QStringLiteral("u32-cdab"), [=](int t) { return std::round(10 * volts(p, t)); });
+        for (int p = 0; p < 3; ++p)
+            add(QStringLiteral("u32-cdab"), [=](int t) { return std::round(1000 * amps(p, t)); });
+        for (const auto &quantity : {std::function<double(int, int)>(w), std::function<double(int, int)>(va),
+                                     std::function<double(int, int)>(var)}) {
+            for (int p = 0; p < 3; ++p)
+                add(QStringLiteral("i32-cdab"), [=](int t) { return std::round(10 * quantity(p, t)); });
+        }
+        for (const auto &quantity : {std::function<double(int, int)>(w), std::function<double(int, int)>(va),
+                                     std::function<double(int, int)>(var)}) {
+            add(QStringLiteral("i32-cdab"), [=](int t) {
+                double sum = 0;
+                for (int p = 0; p < 3; ++p)
+                    sum += std::round(10 * quantity(p, t)) / 10;
+                return std::round(10 * sum);
+            });
+        }
+        for (int p = 0; p < 3; ++p)
+            add(QStringLiteral("i16"), [=](int t) { return std::round(1000 * factor(p, t)); });
+        const BlockSamples block = makeBlock(fields, 3);
+        const QList<ValueGuess> guesses = BlockInferrer::infer(block);
+        QString all;
+        for (const ValueGuess &x : guesses)
+            all += QStringLiteral("%1@%2 x%3 %4; ").arg(x.typeName()).arg(x.address).arg(x.scale).arg(x.unit);
+        const ValueGuess *g = at(guesses, address);
+        QVERIFY2(g, qPrintable(all));
+        QVERIFY2(qFuzzyCompare(g->scale, scale), qPrintable(g->scaleEvidence + QStringLiteral(" | ") + all));
+        QCOMPARE(g->unit, unit);
+        QVERIFY2(g->scaleEvidence.contains(evidence), qPrintable(g->scaleEvidence));
+        if (related && unit != QLatin1String("V"))
+            QVERIFY(g->scaleConfidence >= 0.5 && g->scaleConfidence < 0.8); // a relation, not a reading of the value
+    }
+
     void bitsAreConstantOrStatus()
     {
         BlockSamples block;
