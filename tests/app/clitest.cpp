@@ -8,6 +8,14 @@
 
 namespace mbscope::testcli {
 
+QStringList sl(std::initializer_list<const char *> items)
+{
+    QStringList list;
+    for (const char *i : items)
+        list.append(QString::fromUtf8(i));
+    return list;
+}
+
 QJsonObject CliResult::json() const
 {
     return QJsonDocument::fromJson(out).object();

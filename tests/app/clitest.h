@@ -10,6 +10,7 @@
 #include <QtCore/QStringList>
 
 #include <csignal>
+#include <initializer_list>
 #include <memory>
 
 namespace mbscope::testcli {
@@ -28,6 +29,9 @@ struct CliResult {
     // For failure messages: exit status and both streams.
     [[nodiscard]] QByteArray describe() const;
 };
+
+// An argument list from C strings: sl({"read", "-r", "121"}).
+[[nodiscard]] QStringList sl(std::initializer_list<const char *> items);
 
 // The mbscope executable under test (the build's, passed in by CMake).
 [[nodiscard]] QString mbscopePath();

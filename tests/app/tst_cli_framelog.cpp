@@ -24,14 +24,6 @@ using namespace mbscope::testcli;
 
 namespace {
 
-QStringList sl(std::initializer_list<const char *> items)
-{
-    QStringList list;
-    for (const char *i : items)
-        list.append(QString::fromUtf8(i));
-    return list;
-}
-
 const QString kSourceDir = QStringLiteral(MBSCOPE_SOURCE_DIR);
 
 // A frame as the frame log writes it after its time stamp: "out sent        01 03 ...".

@@ -22,14 +22,6 @@ using namespace mbscope::testcli;
 
 namespace {
 
-QStringList sl(std::initializer_list<const char *> items)
-{
-    QStringList list;
-    for (const char *i : items)
-        list.append(QString::fromUtf8(i));
-    return list;
-}
-
 // "PORT" and "TARGET" in an argument list become the simulator's port and URL, "SILENT" a TCP
 // port that takes connections and never answers.
 QString silentUrl;
