@@ -380,7 +380,7 @@
 <context>
     <name>mbscope::ConformanceDialog</name>
     <message>
-        <location filename="../../ui/conformance/conformancedialog.cpp" line="+34"/>
+        <location filename="../../ui/conformance/conformancedialog.cpp" line="+35"/>
         <source> ms</source>
         <translation> md</translation>
     </message>
@@ -451,8 +451,8 @@
     </message>
     <message>
         <location line="+4"/>
-        <source>Save the scorecard as an HTML page, JSON or JUnit XML</source>
-        <translation>Simpan kartu skor sebagai halaman HTML, JSON atau JUnit XML</translation>
+        <source>Save the scorecard as an HTML page, a PDF, JSON or JUnit XML</source>
+        <translation>Simpan kartu skor sebagai halaman HTML, PDF, JSON atau JUnit XML</translation>
     </message>
     <message>
         <location line="+19"/>
@@ -526,7 +526,7 @@
         <translation>Berjalan: boleh menulis pada %1…</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>Not tested: %1</source>
         <translation>Tidak diuji: %1</translation>
     </message>
@@ -541,12 +541,17 @@
         <translation>Belum ada kartu skor untuk disimpan: jalankan rangkaian uji dulu.</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>%1: name the file .html, .json or .xml (JUnit) to say which report to save.</source>
-        <translation>%1: beri nama berkas .html, .json atau .xml (JUnit) untuk menyebut laporan mana yang disimpan.</translation>
+        <location line="+9"/>
+        <source>%1: name the file .html, .pdf, .json or .xml (JUnit) to say which report to save.</source>
+        <translation>%1: beri nama berkas .html, .pdf, .json atau .xml (JUnit) untuk menyebut laporan mana yang disimpan.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+14"/>
+        <source>HTML page (*.html);;PDF (*.pdf);;JSON (*.json);;JUnit XML (*.xml)</source>
+        <translation>Halaman HTML (*.html);;PDF (*.pdf);;JSON (*.json);;JUnit XML (*.xml)</translation>
+    </message>
+    <message>
+        <location line="-11"/>
         <location line="+3"/>
         <source>cannot write %1: %2</source>
         <translation>tidak dapat menulis %1: %2</translation>
@@ -557,12 +562,7 @@
         <translation>Simpan kartu skor</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>HTML page (*.html);;JSON (*.json);;JUnit XML (*.xml)</source>
-        <translation>Halaman HTML (*.html);;JSON (*.json);;JUnit XML (*.xml)</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Saved %1.</source>
         <translation>Disimpan %1.</translation>
     </message>
@@ -5646,7 +5646,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RequestForm</name>
     <message>
-        <location filename="../../ui/compose/requestform.cpp" line="+124"/>
+        <location filename="../../ui/compose/requestform.cpp" line="+121"/>
         <source>Read Device Identification</source>
         <translation>Baca Identifikasi Perangkat</translation>
     </message>
@@ -5847,7 +5847,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 %2 ditolak: %3 menerima 1-%4 %5 dalam satu permintaan (Modbus V1.1b3)</translation>
     </message>
     <message>
-        <location line="-306"/>
+        <location line="-302"/>
         <location line="+4"/>
         <source>coils</source>
         <translation>coil</translation>
@@ -5866,7 +5866,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>register</translation>
     </message>
     <message>
-        <location line="+412"/>
+        <location line="+408"/>
         <source>read quantity</source>
         <translation>jumlah baca</translation>
     </message>
@@ -8193,7 +8193,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Tentang mbscope</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+67"/>
         <source>Recording settings apply from the next connection.</source>
         <translation>Pengaturan perekaman berlaku mulai sambungan berikutnya.</translation>
     </message>
@@ -8658,7 +8658,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchDialog</name>
     <message>
-        <location filename="../../ui/watch/watchdialog.cpp" line="+49"/>
+        <location filename="../../ui/watch/watchdialog.cpp" line="+51"/>
         <source>Each address holds a 32-bit value (&amp;Enron/Daniel)</source>
         <translation>Tiap alamat berisi nilai 32-bit (&amp;Enron/Daniel)</translation>
     </message>
