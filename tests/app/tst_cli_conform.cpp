@@ -151,6 +151,12 @@ private Q_SLOTS:
                                                      "read.04.past-end", "read.04.quantity-max", "read.04.quantity-over", "read.04.quantity-zero"};
         QTest::newRow("wrong byte count") << tcp << R"({"kind": "fewerRegisters", "functions": ["0x04"]})" << "" << "read.04.answer" << QStringList{"read.04.answer"};
         QTest::newRow("wrong CRC on 08") << rtu << R"({"kind": "wrongChecksum", "functions": ["0x08"]})" << "" << "diag.echo" << QStringList{"diag.echo"};
+        // Line noise on 08's answers (every bit flipped with probability 0.5, seeded): the garbled
+        // answers are no echo, and answer nothing the battery asked.
+        QTest::newRow("line noise on 08's answers") << rtu << R"({"kind": "noise", "bitErrorRate": 0.5, "on": "answer", "functions": ["0x08"]})" << ""
+                                                    << "diag.echo" << QStringList{"answer.unsolicited", "diag.echo"};
+        QTest::newRow("closes instead of answering 2B") << tcp << R"({"kind": "close", "when": "before", "functions": ["0x2B"]})" << ""
+                                                        << "ident.basic" << QStringList{"ident.bad-code", "ident.basic"};
         QTest::newRow("junk before 2B") << tcp << R"({"kind": "junk", "before": "DE AD", "functions": ["0x2B"]})" << "" << "answer.unsolicited"
                                         << QStringList{"answer.unsolicited"};
         QTest::newRow("chunked answers are legal") << tcp << R"({"kind": "chunks", "chunkBytes": 3, "gapMs": 2})" << "" << "" << QStringList{};
