@@ -22,6 +22,7 @@ test_pkgs=(
   prometheus mosquitto mosquitto-clients
   shellcheck  # tst_shellscripts
   zsh  # tst_cli_completion: `zsh -n` parses `mbscope completion zsh`
+  poppler-utils  # tst_cli_conform, tst_conformancedialog: pdftotext reads the scorecard PDF back
 )
 
 want=("${build_pkgs[@]}")

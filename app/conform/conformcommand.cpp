@@ -12,6 +12,10 @@
 #include "session/junitreport.h"
 #include "traffic/trafficrecording.h"
 
+#ifdef MBSCOPE_HAVE_UI
+#include "conformance/conformancepdf.h"
+#endif
+
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QTextStream>
@@ -60,7 +64,8 @@ int runConform(const QStringList &arguments)
         "request, the connection kept, reconnects, a second client and up to 8 more connections at once, on an RTU serial "
         "port the line timing (t3.5 before the answer, no silence over t1.5 inside it; not judged when the link's times "
         "cannot show it), 08/0000 echo, device identification, response times; with --writable, 05, 06, 0F, 10, 16 and "
-        "17 too. --html writes the scorecard as one self-contained page; Tools > Conformance in the window runs the "
+        "17 too. --html writes the scorecard as one self-contained page, --pdf the same report as a PDF; Tools > "
+        "Conformance in the window runs the "
         "same battery.\n"
         "Safe by default: it only reads. A check that writes runs only on the addresses --writable names, and puts back "
         "the value it found. Checks of what the device does not support (exception 01 to the survey's read, or not in "
@@ -104,8 +109,11 @@ int runConform(const QStringList &arguments)
                                   QStringLiteral("Write the scorecard as one self-contained HTML page to FILE: the verdict first, "
                                                  "then every check with its clause, verdict, request and answer (prints well)."),
                                   QStringLiteral("file"));
+    const QCommandLineOption pdf(QStringLiteral("pdf"),
+                                 QStringLiteral("Write the scorecard as a PDF to FILE (A4): the --html report, laid out for print."),
+                                 QStringLiteral("file"));
     const QCommandLineOption list(QStringLiteral("list"), QStringLiteral("List the checks (id, level, title, clause) and exit."));
-    parser.addOptions({unit, profile, readable, missing, writable, only, samples, json, junit, html, list});
+    parser.addOptions({unit, profile, readable, missing, writable, only, samples, json, junit, html, pdf, list});
     const RecordOptions recordOptions;
     recordOptions.addTo(parser);
     if (!parser.parse(arguments)) {
@@ -176,7 +184,15 @@ int runConform(const QStringList &arguments)
         }
     }
     const bool force = parser.isSet(QStringLiteral("force"));
-    for (const auto &[option, example] : {std::pair{&junit, "--junit conform.xml"}, std::pair{&html, "--html conform.html"}}) {
+#ifndef MBSCOPE_HAVE_UI
+    if (parser.isSet(pdf)) {
+        err << "mbscope conform: --pdf: this mbscope was built without the GUI (MBSCOPE_BUILD_UI=OFF), so it writes no PDF; --html "
+               "writes the same report\n";
+        return ExitUsage;
+    }
+#endif
+    for (const auto &[option, example] :
+         {std::pair{&junit, "--junit conform.xml"}, std::pair{&html, "--html conform.html"}, std::pair{&pdf, "--pdf conform.pdf"}}) {
         if (!parser.isSet(*option))
             continue;
         const QString name = QStringLiteral("--") + option->names().constFirst();
@@ -187,7 +203,7 @@ int runConform(const QStringList &arguments)
         }
     }
     RecordSettings record;
-    if (!recordOptions.read(parser, QStringLiteral("conform"), record, err, parser.isSet(junit) || parser.isSet(html)))
+    if (!recordOptions.read(parser, QStringLiteral("conform"), record, err, parser.isSet(junit) || parser.isSet(html) || parser.isSet(pdf)))
         return ExitUsage;
     TrafficRecording recording;
     TrafficMetadata metadata = commandMetadata(QStringLiteral("conform"), arguments);
@@ -240,6 +256,17 @@ int runConform(const QStringList &arguments)
         if (!asJson)
             out << "html       " << parser.value(html) << '\n';
     }
+#ifdef MBSCOPE_HAVE_UI
+    if (parser.isSet(pdf) && !result.linkFailed) {
+        QString error;
+        if (!ConformancePdf::write(result, parser.value(pdf), &error)) {
+            err << "mbscope conform: --pdf: " << error << '\n';
+            return ExitUsage;
+        }
+        if (!asJson)
+            out << "pdf        " << parser.value(pdf) << '\n';
+    }
+#endif
     if (result.linkFailed)
         return ExitLinkError;
     return result.passed() ? ExitOk : ExitFailure;

@@ -34,6 +34,13 @@ QString HistogramPlot::unavailableReason()
 
 bool HistogramPlot::isRequested(int argc, char *argv[])
 {
+    if (argc >= 2 && std::strcmp(argv[1], "conform") == 0) { // --pdf: a QTextDocument laid out with the GUI's fonts
+        for (int i = 2; i < argc && std::strcmp(argv[i], "--") != 0; ++i) {
+            if (std::strcmp(argv[i], "--pdf") == 0 || std::strncmp(argv[i], "--pdf=", 6) == 0)
+                return true;
+        }
+        return false;
+    }
     const bool plots = argc >= 2
                        && (std::strcmp(argv[1], "poll") == 0 || std::strcmp(argv[1], "sweep") == 0
                            || std::strcmp(argv[1], "analyze") == 0 || std::strcmp(argv[1], "export") == 0);

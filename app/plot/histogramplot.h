@@ -34,7 +34,8 @@ public:
     [[nodiscard]] static QString unavailableReason();
 
     // Whether a command line asks for a plot, so main() makes a QApplication instead of a
-    // QCoreApplication: poll, sweep, analyze or export with --histogram (or --timeseries).
+    // QCoreApplication: poll, sweep, analyze or export with --histogram (or --timeseries), and
+    // conform with --pdf (the report's layout needs the GUI's fonts).
     [[nodiscard]] static bool isRequested(int argc, char *argv[]);
     // Renders without a display: QT_QPA_PLATFORM=offscreen unless the user chose a platform. A
     // PNG needs no window, and the offscreen platform gives the same picture with or without X.

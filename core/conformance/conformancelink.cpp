@@ -98,6 +98,11 @@ void ConformanceLink::closeLink()
     m_channel->closeLink();
 }
 
+void ConformanceLink::onFramesLogged(const std::function<void(const QList<TrafficFrame> &, const QString &)> &each)
+{
+    QObject::connect(m_channel, &ProbeChannel::framesLogged, m_channel, each);
+}
+
 void ConformanceLink::setTrafficLog(TrafficLog *log)
 {
     m_channel->setTrafficLog(log);

@@ -9,6 +9,8 @@
 #include <QtCore/QList>
 #include <QtCore/QPair>
 
+#include <functional>
+
 namespace mbscope {
 
 class ProbeChannel;
@@ -70,6 +72,8 @@ public:
     // Connections (or ports) opened so far: a device that closes after each answer makes one per request.
     [[nodiscard]] int opens() const { return m_opens; }
     void setTrafficLog(TrafficLog *log);
+    // Calls each with the frames the engine logs (ProbeChannel::framesLogged).
+    void onFramesLogged(const std::function<void(const QList<TrafficFrame> &, const QString &)> &each);
 
 private:
     LinkUrl m_url;

@@ -94,6 +94,8 @@ ConformanceResult ConformanceRunner::run(const std::function<void(const CheckRes
     ConformanceLink link(m_settings.url, m_settings.timeoutMs);
     if (m_log)
         link.setTrafficLog(m_log);
+    if (m_framesLogged)
+        link.onFramesLogged(m_framesLogged);
     ConformanceContext ctx(m_settings, link);
     const ConformanceSurvey::Outcome survey = ConformanceSurvey::run(ctx);
     result.support = ctx.supportTable();

@@ -4,7 +4,10 @@
 #include "conformanceresult.h"
 #include "conformancesettings.h"
 
+#include "exchange/trafficentry.h"
+
 #include <QtCore/QList>
+#include <QtCore/QString>
 
 #include <atomic>
 #include <functional>
@@ -26,6 +29,10 @@ public:
     [[nodiscard]] static QList<ConformanceCheck> battery();
 
     void setTrafficLog(TrafficLog *log) { m_log = log; }
+    // Every frame in and out as the engine logs it (ProbeChannel::framesLogged, with the link's
+    // name): the window's traffic list takes the run's frames as it takes a scan's.
+    using FramesLogged = std::function<void(const QList<TrafficFrame> &frames, const QString &link)>;
+    void setFramesLogged(FramesLogged framesLogged) { m_framesLogged = std::move(framesLogged); }
     // Each result as it is decided (the CLI prints it), then the scorecard.
     [[nodiscard]] ConformanceResult run(const std::function<void(const CheckResult &)> &each = {});
     // The checks not run yet are not run (Ctrl-C); safe from a signal-driven event.
@@ -37,6 +44,7 @@ private:
 
     ConformanceSettings m_settings;
     TrafficLog *m_log = nullptr;
+    FramesLogged m_framesLogged;
     std::atomic<bool> m_stop{false};
 };
 

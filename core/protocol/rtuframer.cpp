@@ -151,7 +151,7 @@ RtuFramer::Decision RtuFramer::decide(QByteArrayView bytes, bool atBoundary)
     if (needed > 0)
         return {Verdict::Wait, 0, {}, needed};
     if (candidates > 0)
-        return {Verdict::Reject, 0, SkipReason::ChecksumMismatch, 0};
+        return {Verdict::Reject, 0, SkipReason::ChecksumMismatch, 0, lengths[0]};
     if (tooLong || !noRule)
         return {Verdict::Reject, 0, SkipReason::TooLong, 0};
 
@@ -186,6 +186,10 @@ void RtuFramer::process()
             emitFrame(decision.length);
             break;
         case Verdict::Reject:
+            if (m_dropsBadFrames && decision.badLength > 0) {
+                skip(decision.badLength, decision.reason);
+                break; // still at a boundary
+            }
             skip(1, decision.reason);
             beginResync();
             break;

@@ -41,6 +41,13 @@ public:
     // without them it flushes at once. Returns whether it flushed.
     bool onSilence(qint64 nowNs) override;
     void setBaudRate(int baud) { m_baud = baud; }
+    // A slave reading its master's requests (the simulator's endpoints): a frame at a boundary
+    // whose CRC fails is dropped whole, its predicted length skipped (ChecksumMismatch), and the
+    // next byte starts a frame, as a slave on a line discards the frame the silence ended. Without
+    // it (a sniffer, a master) a search follows, which passes over codes without a length rule
+    // (08/0000, 2B/0E ...) until the next silence: a request of such a code sent after a bad one,
+    // sooner than the silence, would be lost.
+    void setDropsBadFrames(bool drops) { m_dropsBadFrames = drops; }
     [[nodiscard]] int baudRate() const { return m_baud; }
 
     // Character time for 11-bit characters (start, 8 data, parity or a second stop bit, stop:
@@ -69,6 +76,7 @@ private:
         qsizetype length = 0;                             // Accept
         SkipReason reason = SkipReason::ChecksumMismatch; // Reject
         qsizetype needed = 2;                             // Wait: bytes from the start that may change it
+        qsizetype badLength = 0;                          // Reject for a CRC that fails: the predicted length
     };
     // What a frame starting at bytes[0] is, from the bytes present.
     [[nodiscard]] Decision decide(QByteArrayView bytes, bool atBoundary);
@@ -85,6 +93,7 @@ private:
 
     Direction m_direction;
     int m_baud = 0;
+    bool m_dropsBadFrames = false;
     bool m_atBoundary = true; // false while resynchronising
     bool m_afterGap = false;  // resynchronising after restartAfterGap()
     qsizetype m_crcScanned = 0; // lengths already tried for a code without a length rule

@@ -26,7 +26,13 @@ std::unique_ptr<StreamFramer> framerFor(const LinkUrl &url)
     if (url.delimited.enabled)
         return std::make_unique<DelimitedFramer>(url.delimited);
     switch (url.framing()) {
-    case Framing::Rtu: return std::make_unique<RtuFramer>(Direction::Request);
+    case Framing::Rtu: {
+        // A request whose CRC fails is dropped whole and the next one read at once, whatever its
+        // code (issue 29: a 08/0000 after a bad CRC was lost).
+        auto rtu = std::make_unique<RtuFramer>(Direction::Request);
+        rtu->setDropsBadFrames(true);
+        return rtu;
+    }
     case Framing::Ascii: return std::make_unique<AsciiFramer>();
     default: return std::make_unique<MbapFramer>();
     }

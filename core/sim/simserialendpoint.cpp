@@ -78,6 +78,7 @@ bool SimSerialEndpoint::start(QString *error)
     } else if (url().kind == LinkKind::Rtu) {
         auto rtu = std::make_unique<RtuFramer>(Direction::Request);
         rtu->setBaudRate(s.baud);
+        rtu->setDropsBadFrames(true); // a request whose CRC fails is dropped whole, the next read at once
         m_framer = std::move(rtu);
     } else {
         m_framer = std::make_unique<AsciiFramer>();

@@ -380,7 +380,7 @@
 <context>
     <name>mbscope::ConformanceDialog</name>
     <message>
-        <location filename="../../ui/conformance/conformancedialog.cpp" line="+34"/>
+        <location filename="../../ui/conformance/conformancedialog.cpp" line="+35"/>
         <source> ms</source>
         <translation> md</translation>
     </message>
@@ -451,8 +451,8 @@
     </message>
     <message>
         <location line="+4"/>
-        <source>Save the scorecard as an HTML page, JSON or JUnit XML</source>
-        <translation>Simpan kartu skor sebagai halaman HTML, JSON atau JUnit XML</translation>
+        <source>Save the scorecard as an HTML page, a PDF, JSON or JUnit XML</source>
+        <translation>Simpan kartu skor sebagai halaman HTML, PDF, JSON atau JUnit XML</translation>
     </message>
     <message>
         <location line="+19"/>
@@ -526,7 +526,7 @@
         <translation>Berjalan: boleh menulis pada %1…</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+23"/>
         <source>Not tested: %1</source>
         <translation>Tidak diuji: %1</translation>
     </message>
@@ -541,12 +541,17 @@
         <translation>Belum ada kartu skor untuk disimpan: jalankan rangkaian uji dulu.</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>%1: name the file .html, .json or .xml (JUnit) to say which report to save.</source>
-        <translation>%1: beri nama berkas .html, .json atau .xml (JUnit) untuk menyebut laporan mana yang disimpan.</translation>
+        <location line="+9"/>
+        <source>%1: name the file .html, .pdf, .json or .xml (JUnit) to say which report to save.</source>
+        <translation>%1: beri nama berkas .html, .pdf, .json atau .xml (JUnit) untuk menyebut laporan mana yang disimpan.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+14"/>
+        <source>HTML page (*.html);;PDF (*.pdf);;JSON (*.json);;JUnit XML (*.xml)</source>
+        <translation>Halaman HTML (*.html);;PDF (*.pdf);;JSON (*.json);;JUnit XML (*.xml)</translation>
+    </message>
+    <message>
+        <location line="-11"/>
         <location line="+3"/>
         <source>cannot write %1: %2</source>
         <translation>tidak dapat menulis %1: %2</translation>
@@ -557,12 +562,7 @@
         <translation>Simpan kartu skor</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>HTML page (*.html);;JSON (*.json);;JUnit XML (*.xml)</source>
-        <translation>Halaman HTML (*.html);;JSON (*.json);;JUnit XML (*.xml)</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Saved %1.</source>
         <translation>Disimpan %1.</translation>
     </message>

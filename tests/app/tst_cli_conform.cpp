@@ -9,7 +9,9 @@
 
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
+#include <QtCore/QProcess>
 #include <QtCore/QSet>
+#include <QtCore/QStandardPaths>
 #include <QtCore/QTemporaryDir>
 #include <QtCore/QXmlStreamReader>
 #include <QtTest/QtTest>
@@ -149,6 +151,12 @@ private Q_SLOTS:
                                                      "read.04.past-end", "read.04.quantity-max", "read.04.quantity-over", "read.04.quantity-zero"};
         QTest::newRow("wrong byte count") << tcp << R"({"kind": "fewerRegisters", "functions": ["0x04"]})" << "" << "read.04.answer" << QStringList{"read.04.answer"};
         QTest::newRow("wrong CRC on 08") << rtu << R"({"kind": "wrongChecksum", "functions": ["0x08"]})" << "" << "diag.echo" << QStringList{"diag.echo"};
+        // Line noise on 08's answers (every bit flipped with probability 0.5, seeded): the garbled
+        // answers are no echo, and answer nothing the battery asked.
+        QTest::newRow("line noise on 08's answers") << rtu << R"({"kind": "noise", "bitErrorRate": 0.5, "on": "answer", "functions": ["0x08"]})" << ""
+                                                    << "diag.echo" << QStringList{"answer.unsolicited", "diag.echo"};
+        QTest::newRow("closes instead of answering 2B") << tcp << R"({"kind": "close", "when": "before", "functions": ["0x2B"]})" << ""
+                                                        << "ident.basic" << QStringList{"ident.bad-code", "ident.basic"};
         QTest::newRow("junk before 2B") << tcp << R"({"kind": "junk", "before": "DE AD", "functions": ["0x2B"]})" << "" << "answer.unsolicited"
                                         << QStringList{"answer.unsolicited"};
         QTest::newRow("chunked answers are legal") << tcp << R"({"kind": "chunks", "chunkBytes": 3, "gapMs": 2})" << "" << "" << QStringList{};
@@ -238,7 +246,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("only");
         QTest::addColumn<bool>("passes");
         QTest::newRow("tcp passes") << "tcp://127.0.0.1:0" << "" << "" << true;
-        QTest::newRow("rtu-tcp passes") << "rtu-tcp://127.0.0.1:0" << "" << "read.03,serial.broadcast,serial.reserved,diag" << true;
+        QTest::newRow("rtu-tcp passes") << "rtu-tcp://127.0.0.1:0" << "" << "read.03,serial,diag" << true;
         QTest::newRow("wrong exception code fails") << "tcp://127.0.0.1:0" << R"({"kind": "exception", "code": 2, "functions": ["0x03"], "quantity": 0})"
                                                     << "read.03,mbap" << false;
     }
@@ -340,6 +348,66 @@ private Q_SLOTS:
         }
         QCOMPARE(failuresListed, failed);
         QCOMPARE(failed.isEmpty(), passes);
+    }
+
+    // --pdf: the --html report printed to a PDF (ConformancePdf); pdftotext (poppler-utils) reads
+    // it back: the summary's verdict and counts, and each check's id with its clause.
+    void pdfReport_data()
+    {
+        QTest::addColumn<QString>("faults");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("verdict"); // in the summary
+        QTest::newRow("passes") << "" << 0 << "every mandatory check passed";
+        QTest::newRow("wrong exception code fails") << R"({"kind": "exception", "code": 2, "functions": ["0x03"], "quantity": 0})" << 1
+                                                    << "mandatory check(s) failed";
+    }
+    void pdfReport()
+    {
+        QFETCH(QString, faults);
+        QFETCH(int, exitCode);
+        QFETCH(QString, verdict);
+        const QString pdftotext = QStandardPaths::findExecutable(QStringLiteral("pdftotext"));
+        if (pdftotext.isEmpty())
+            QSKIP("pdftotext (poppler-utils, scripts/install-deps.sh --tests) is not installed");
+        const QString tag = QString::fromLatin1(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('-'));
+        QStringList simArgs{QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                            QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")};
+        if (!faults.isEmpty()) {
+            const QString path = m_dir.filePath(tag + QStringLiteral("-pdf-faults.json"));
+            QVERIFY(writeFile(path, QStringLiteral(R"({"seed": 1, "rules": [%1]})").arg(faults).toUtf8()));
+            simArgs += {QStringLiteral("--faults"), path};
+        }
+        Background sim;
+        QString error;
+        QVERIFY2(sim.start(simArgs, &error), qPrintable(error));
+        const QString pdf = m_dir.filePath(tag + QStringLiteral(".pdf"));
+        const CliResult r = runMbscope(QStringList{QStringLiteral("conform"), QStringLiteral("--target"), sim.url(), QStringLiteral("--profile"),
+                                                   QStringLiteral("conformance"), QStringLiteral("--only"), QStringLiteral("read.03,mbap"),
+                                                   QStringLiteral("--json"), QStringLiteral("--pdf"), pdf}
+                                       + kTimeout);
+        QVERIFY2(r.finished, r.describe());
+        QVERIFY2(r.exitCode == exitCode, r.describe());
+        QFile file(pdf);
+        QVERIFY2(file.open(QIODevice::ReadOnly), qPrintable(pdf));
+        QCOMPARE(file.read(5), QByteArray("%PDF-"));
+        QProcess text;
+        text.start(pdftotext, {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+        QVERIFY(text.waitForFinished(60000));
+        QCOMPARE(text.exitCode(), 0);
+        // Words as laid out: lines joined, runs of blanks made one.
+        const QString words = QString::fromUtf8(text.readAllStandardOutput()).simplified();
+        QVERIFY2(words.contains(QStringLiteral("Modbus conformance scorecard")), qPrintable(words.left(400)));
+        QVERIFY2(words.contains(verdict), qPrintable(words.left(400)));
+        const QJsonObject card = r.json();
+        const QString counts = QStringLiteral("%1 checks").arg(card.value(QStringLiteral("checks")).toArray().size());
+        QVERIFY2(words.contains(counts), qPrintable(counts + QLatin1Char('\n') + words.left(400)));
+        for (const QString &id : {QStringLiteral("read.03.quantity-zero"), QStringLiteral("mbap.transaction-id")}) {
+            const QJsonObject c = checkOf(card, id);
+            QVERIFY2(words.contains(id), qPrintable(id));
+            const QString clause = c.value(QStringLiteral("clause")).toString();
+            QVERIFY(!clause.isEmpty());
+            QVERIFY2(words.contains(QStringLiteral("clause ") + clause), qPrintable(id + QStringLiteral(": ") + clause));
+        }
     }
 
     // The line timing on an RTU serial port, at 600 baud 8N1 (a character 16.7 ms, t1.5 27.5 ms,

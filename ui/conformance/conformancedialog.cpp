@@ -1,5 +1,6 @@
 #include "conformancedialog.h"
 
+#include "conformancepdf.h"
 #include "conformanceresultmodel.h"
 
 #include "conformance/conformancehtml.h"
@@ -62,7 +63,7 @@ ConformanceDialog::ConformanceDialog(QWidget *parent)
     m_start->setObjectName(QStringLiteral("conformStart"));
     m_stop->setObjectName(QStringLiteral("conformStop"));
     m_save->setObjectName(QStringLiteral("conformSave"));
-    m_save->setToolTip(tr("Save the scorecard as an HTML page, JSON or JUnit XML"));
+    m_save->setToolTip(tr("Save the scorecard as an HTML page, a PDF, JSON or JUnit XML"));
     m_progress->setObjectName(QStringLiteral("conformProgress"));
     m_status->setObjectName(QStringLiteral("conformStatus"));
     m_status->setWordWrap(true);
@@ -194,6 +195,8 @@ void ConformanceDialog::start()
 void ConformanceDialog::run(const ConformanceSettings &settings)
 {
     m_runner = std::make_unique<ConformanceRunner>(settings);
+    m_runner->setTrafficLog(m_trafficLog);
+    m_runner->setFramesLogged([this](const QList<TrafficFrame> &frames, const QString &link) { Q_EMIT framesLogged(frames, link); });
     const int total = m_progress->maximum();
     int done = 0;
     const ConformanceResult result = m_runner->run([this, &done, total](const CheckResult &r) {
@@ -246,10 +249,12 @@ bool ConformanceDialog::saveReport(const QString &path, QString *error)
     const QString suffix = QFileInfo(path).suffix().toLower();
     if (suffix == QLatin1String("html") || suffix == QLatin1String("htm"))
         return ConformanceHtml::write(*m_result, path, error);
+    if (suffix == QLatin1String("pdf"))
+        return ConformancePdf::write(*m_result, path, error);
     if (suffix == QLatin1String("xml"))
         return JUnitReport::write(m_result->toJUnit(), path, error);
     if (suffix != QLatin1String("json"))
-        return fail(tr("%1: name the file .html, .json or .xml (JUnit) to say which report to save.").arg(path));
+        return fail(tr("%1: name the file .html, .pdf, .json or .xml (JUnit) to say which report to save.").arg(path));
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return fail(tr("cannot write %1: %2").arg(path, file.errorString()));
@@ -263,11 +268,12 @@ void ConformanceDialog::save()
 {
     QString filter;
     QString path = QFileDialog::getSaveFileName(this, tr("Save the scorecard"), QStringLiteral("conform.html"),
-                                                      tr("HTML page (*.html);;JSON (*.json);;JUnit XML (*.xml)"), &filter);
+                                                      tr("HTML page (*.html);;PDF (*.pdf);;JSON (*.json);;JUnit XML (*.xml)"), &filter);
     if (path.isEmpty())
         return;
     if (QFileInfo(path).suffix().isEmpty()) // the filter chosen says the format
         path += filter.contains(QLatin1String("*.json")) ? QStringLiteral(".json")
+              : filter.contains(QLatin1String("*.pdf"))  ? QStringLiteral(".pdf")
               : filter.contains(QLatin1String("*.xml"))  ? QStringLiteral(".xml")
                                                           : QStringLiteral(".html");
     QString error;

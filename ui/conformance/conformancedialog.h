@@ -2,6 +2,7 @@
 
 #include "conformance/conformanceresult.h"
 #include "conformance/conformancesettings.h"
+#include "exchange/trafficentry.h"
 #include "transport/linkurl.h"
 
 #include <QtWidgets/QDialog>
@@ -20,10 +21,11 @@ namespace mbscope {
 
 class ConformanceResultModel;
 class ConformanceRunner;
+class TrafficLog;
 
 // Tools > Conformance: the battery of `mbscope conform` (core/conformance's ConformanceRunner)
 // against the window's link, a row per check as it is decided, a progress bar, Stop, and the
-// scorecard saved as HTML, JSON or JUnit XML. Reads only unless Writable names addresses, as
+// scorecard saved as HTML, PDF, JSON or JUnit XML. Reads only unless Writable names addresses, as
 // --writable does on the command line.
 class ConformanceDialog : public QDialog
 {
@@ -38,9 +40,12 @@ public:
     [[nodiscard]] bool isRunning() const { return m_running; }
     [[nodiscard]] ConformanceResultModel *model() const { return m_model; }
     [[nodiscard]] const std::optional<ConformanceResult> &result() const { return m_result; }
-    // The scorecard to path, in the format its suffix names (.html or .htm, .json, .xml for
+    // The scorecard to path, in the format its suffix names (.html or .htm, .pdf, .json, .xml for
     // JUnit); false with *error when there is none yet, the suffix is unknown or the file cannot be written.
     bool saveReport(const QString &path, QString *error = nullptr);
+    // The log a run's frames are recorded into too (the window's recording of its link); null:
+    // none. Taken by the next run.
+    void setTrafficLog(TrafficLog *log) { m_trafficLog = log; }
 
 public Q_SLOTS:
     // Starts the battery (from the event loop: the call returns at once; finished() follows).
@@ -51,6 +56,8 @@ public Q_SLOTS:
 Q_SIGNALS:
     void checkDecided(int done, int total);
     void finished(bool passed);
+    // Every frame of a run in and out (the window's traffic list takes them, as a scan's).
+    void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
 
 protected:
     void reject() override;
@@ -74,6 +81,7 @@ private:
     QTableView *m_table;
     bool m_running = false;
     std::unique_ptr<ConformanceRunner> m_runner;
+    TrafficLog *m_trafficLog = nullptr;
     std::optional<ConformanceResult> m_result;
 };
 

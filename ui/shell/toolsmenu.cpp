@@ -81,8 +81,13 @@ void ToolsMenu::showScanDialog()
 
 ConformanceDialog *ToolsMenu::conformanceDialog()
 {
-    if (!m_conformanceDialog)
+    if (!m_conformanceDialog) {
         m_conformanceDialog = new ConformanceDialog(m_window);
+        // A run's frames, as a scan's: the traffic list and the recording.
+        connect(m_conformanceDialog, &ConformanceDialog::framesLogged, m_traffic, &TrafficMonitor::appendLinkFrames);
+        m_conformanceDialog->setTrafficLog(m_link->trafficLog());
+        connect(m_link, &LinkController::trafficLogChanged, m_conformanceDialog, &ConformanceDialog::setTrafficLog, Qt::DirectConnection);
+    }
     return m_conformanceDialog;
 }
 

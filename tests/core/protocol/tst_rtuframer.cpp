@@ -224,6 +224,40 @@ private slots:
                                          expected, false);
     }
 
+    // A slave's framer (setDropsBadFrames, the simulator's endpoints): a request whose CRC fails is
+    // dropped whole and the next request read at once, even one of a code without a length rule
+    // (08/0000); the search (without it) passes that one over until the silence.
+    void dropsBadFrames_data()
+    {
+        QTest::addColumn<bool>("drops");
+        QTest::addColumn<QByteArray>("stream");
+        QTest::addColumn<QStringList>("expected");
+        QByteArray bad = rtu("0300000003", 0x01);
+        bad[6] = char(~quint8(bad.at(6)));
+        bad[7] = char(~quint8(bad.at(7)));
+        const QByteArray echo = rtu("0800001234", 0x01);
+        const QByteArray read = rtu("0300000003", 0x01);
+        QTest::newRow("bad CRC, then 08/0000, dropped") << true << bad + echo << QStringList{skip(0, 8, "crc"), frame(8, echo)};
+        QTest::newRow("bad CRC, then a read, dropped") << true << bad + read << QStringList{skip(0, 8, "crc"), frame(8, read)};
+        QTest::newRow("two bad CRCs, then 08/0000, dropped")
+            << true << bad + bad + echo << QStringList{skip(0, 16, "crc"), frame(16, echo)}; // the two dropped: one run
+        // The search: the echo's start is passed over (no length rule), the silence ends it all.
+        QTest::newRow("bad CRC, then 08/0000, searched") << false << bad + echo << QStringList{skip(0, 16, "crc")};
+    }
+    void dropsBadFrames()
+    {
+        QFETCH(bool, drops);
+        QFETCH(QByteArray, stream);
+        QFETCH(QStringList, expected);
+        framertesting::checkAllChunkings(
+            [drops] {
+                auto framer = std::make_unique<RtuFramer>(Direction::Request);
+                framer->setDropsBadFrames(drops);
+                return framer;
+            },
+            stream, expected, true);
+    }
+
     void silenceByTime()
     {
         RtuFramer framer(Direction::Request);

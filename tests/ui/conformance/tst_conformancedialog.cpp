@@ -2,8 +2,8 @@
 // conformance profile: the battery's rows fill the table as checks are decided, the progress bar
 // follows, nothing fails, write checks are skipped unless Writable names addresses (and pass when
 // it does), Stop ends a run early, bad fields are said, the verdict colours follow the level, the
-// scorecard is saved as HTML, JSON and JUnit, and the window's Tools menu opens the dialog on its
-// target.
+// scorecard is saved as HTML, PDF, JSON and JUnit, the window's Tools menu opens the dialog on its
+// target, and a run's frames reach the window's traffic list.
 
 #include "conformance/conformancedialog.h"
 #include "conformance/conformanceresultmodel.h"
@@ -12,11 +12,16 @@
 #include "link/connectionbar.h"
 #include "shell/mainwindow.h"
 #include "sim/embeddedsimulator.h"
+#include "traffic/trafficmodel.h"
+#include "traffic/trafficmonitor.h"
 
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
+#include <QtCore/QProcess>
+#include <QtCore/QStandardPaths>
+#include <QtCore/QSet>
 #include <QtCore/QTemporaryDir>
 #include <QtCore/QXmlStreamReader>
 #include <QtGui/QAction>
@@ -59,6 +64,7 @@ private Q_SLOTS:
     void verdictColours_data();
     void verdictColours();
     void toolsMenuOpensIt();
+    void runReachesTheTrafficList();
 
 private:
     void fill(ConformanceDialog &dialog, const QString &writable, const QString &only);
@@ -171,8 +177,23 @@ void TestConformanceDialog::runFillsTheScorecard()
         QVERIFY2(!reader.hasError(), qPrintable(reader.errorString()));
         QCOMPARE(items, rows);
     }
+    // And as a PDF (the HTML page printed): pdftotext reads the summary and a check's clause back.
+    const QString pdf = m_dir.filePath(tag + QStringLiteral(".pdf"));
+    QVERIFY2(dialog.saveReport(pdf, &error), qPrintable(error));
+    QFile pf(pdf);
+    QVERIFY(pf.open(QIODevice::ReadOnly));
+    QCOMPARE(pf.read(5), QByteArray("%PDF-"));
+    if (const QString pdftotext = QStandardPaths::findExecutable(QStringLiteral("pdftotext")); !pdftotext.isEmpty()) {
+        QProcess text;
+        text.start(pdftotext, {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+        QVERIFY(text.waitForFinished(60000));
+        const QString words = QString::fromUtf8(text.readAllStandardOutput()).simplified();
+        QVERIFY2(words.contains(QStringLiteral("every mandatory check passed")), qPrintable(words.left(400)));
+        QVERIFY2(words.contains(QStringLiteral("read.03.quantity-zero")), qPrintable(words.left(400)));
+        QVERIFY2(words.contains(QStringLiteral("clause Application Protocol V1.1b3, 6.3")), qPrintable(words.left(400)));
+    }
     QVERIFY(!dialog.saveReport(m_dir.filePath(tag + QStringLiteral(".txt")), &error));
-    QVERIFY2(error.contains(QStringLiteral(".html, .json or .xml")), qPrintable(error));
+    QVERIFY2(error.contains(QStringLiteral(".html, .pdf, .json or .xml")), qPrintable(error));
 
     // scripts/screenshots.sh renders the guide's picture from here.
     if (const QString path = qEnvironmentVariable("MBSCOPE_CONFORMANCE_SCREENSHOT"); !path.isEmpty() && !screenshot.isEmpty()) {
@@ -284,6 +305,41 @@ void TestConformanceDialog::toolsMenuOpensIt()
     QCOMPARE(settings->url.port, m_url.port);
     QCOMPARE(settings->url.kind, m_url.kind);
     QVERIFY(settings->writable.isEmpty()); // never writes unless told where
+    dialog->close();
+}
+
+// A run from Tools > Conformance puts its frames in the window's traffic list, as a scan does
+// (before session 14 the list stayed empty): each request the scorecard shows is there, sent.
+void TestConformanceDialog::runReachesTheTrafficList()
+{
+    MainWindow window;
+    window.connectionBar()->setUrl(m_url);
+    window.findChild<QAction *>(QStringLiteral("conformanceAction"))->trigger();
+    auto *dialog = window.findChild<ConformanceDialog *>();
+    QVERIFY(dialog);
+    fill(*dialog, QString(), QStringLiteral("read.03"));
+    const TrafficModel *traffic = window.trafficMonitor()->model();
+    const qsizetype before = traffic->frameCount();
+    QSignalSpy finished(dialog, &ConformanceDialog::finished);
+    QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("conformStart")), Qt::LeftButton);
+    QVERIFY(finished.wait(120000));
+    const std::optional<ConformanceResult> &result = dialog->result();
+    QVERIFY(result && !result->checks.isEmpty());
+    QSet<QByteArray> sent;
+    QTRY_VERIFY_WITH_TIMEOUT(traffic->frameCount() > before, 5000);
+    for (qsizetype i = before; i < traffic->frameCount(); ++i) {
+        const TrafficEntry e = traffic->frameAt(i);
+        if (e.direction == TrafficDirection::Out)
+            sent.insert(e.bytes.toByteArray());
+    }
+    int requests = 0;
+    for (const CheckResult &c : result->checks) {
+        if (c.request.isEmpty())
+            continue;
+        ++requests;
+        QVERIFY2(sent.contains(c.request), qPrintable(c.id + QStringLiteral(": ") + QString::fromLatin1(c.request.toHex(' '))));
+    }
+    QVERIFY(requests > 3);
     dialog->close();
 }
 
