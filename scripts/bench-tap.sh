@@ -6,6 +6,7 @@
 #
 #   scripts/bench-tap.sh [bench_tap options...]
 #       e.g. --rounds 7 --sections latency,throughput --pipeline 8
+#       --cpu 0: the added latency again with every process on CPU 0, both pinnings side by side
 #
 # Defaults: 20000 requests for the latency, 2000 per master for the throughput, 5 rounds, 200
 # requests per master (4 masters) on the serial line at 115200 and 19200 baud. Environment:

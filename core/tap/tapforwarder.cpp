@@ -71,7 +71,8 @@ TapForwarder::Target &TapForwarder::targetFor(const LinkUrl &url)
     target.core->setTarget(key, m_settings.engine);
     target.core->setTrafficLog(m_log);
     target.core->recorder()->addRecordListener(this);
-    const QString name = key.toString();
+    target.name = key.toString();
+    const QString name = target.name;
     connect(target.core, &EngineCore::linkOpened, this, [this, name] { Q_EMIT targetOpened(name); });
     connect(target.core, &EngineCore::linkMessage, this, [this, name](const QString &message) { Q_EMIT targetMessage(name, message); });
     m_targets.push_back(target);
@@ -141,7 +142,7 @@ void TapForwarder::forward(const Request &request, Done done)
     waiting.function = function;
     waiting.masterUnit = request.unitId;
     waiting.receivedNs = request.receivedNs;
-    waiting.target = target.url.toString();
+    waiting.target = target.name;
     waiting.core = target.core;
     if (!write && !waiting.broadcast)
         waiting.resend = item;

@@ -68,6 +68,7 @@ Q_SIGNALS:
 private:
     struct Target {
         LinkUrl url; // without a response timeout: routes differing only in timeout= share it
+        QString name; // url.toString(), made once: every answer's note and metrics name it
         EngineCore *core = nullptr;
     };
     struct Waiting {

@@ -16,7 +16,13 @@
 //
 // 1. Added latency: one master, --requests requests per round; p50 and p99 of each row, and what
 //    socat and the tap add to the direct path (the target for the tap: p50 under 50 us and
-//    p99 under 200 us above direct).
+//    p99 under 200 us above direct). With --cpu C the section runs twice in the same run: pinned as
+//    above, then with every process of the comparison (masters, simulator, socat and its children,
+//    the tap) on CPU C, as `taskset -c C` would run them. Two processes on different CPUs wake each
+//    other through an inter-processor interrupt and a CPU coming out of idle; on one CPU a wake-up
+//    is a context switch. The extra process in the middle pays that hop twice a transaction, so the
+//    one-CPU figures show what the tap itself adds, and the split ones what a deployment across
+//    CPUs pays. A summary gives both pinnings side by side.
 // 2. Throughput with --masters masters (1, 4 and 16), --per-master requests each: transactions/s,
 //    p99, and the CPU the process in the middle used per transaction (the simulator's for direct;
 //    socat's with its forks).
@@ -25,8 +31,8 @@
 //
 //   bench_tap [--requests 20000] [--per-master 2000] [--masters 1,4,16] [--rounds 5]
 //             [--pipeline 16] [--serial-requests 200] [--serial-masters 4] [--bauds 115200,19200]
-//             [--sections latency,throughput,serial] [--server-cpu 0] [--client-cpu 1] [--no-pin]
-//             [--mbscope PATH]
+//             [--sections latency,throughput,serial] [--server-cpu 0] [--client-cpu 1] [--cpu C]
+//             [--no-pin] [--mbscope PATH]
 //
 // Figures only, nothing asserted: exit status 1 when a master saw an error (a wrong or missing
 // answer), 2 when something could not start. scripts/bench-tap.sh builds Release and runs it;
@@ -61,6 +67,7 @@ struct Options {
     SerialBenchOptions serialOptions;
     int serverCpu = 0;
     int clientCpu = 1;
+    int oneCpu = -1; // --cpu: the latency section again with every process on this CPU
     bool pin = true;
     QString mbscope = QStringLiteral(MBSCOPE_EXECUTABLE);
 };
@@ -112,6 +119,10 @@ bool parse(const QStringList &args, Options *o)
             o->serverCpu = v.toInt(&ok);
         else if (a == QLatin1String("--client-cpu"))
             o->clientCpu = v.toInt(&ok);
+        else if (a == QLatin1String("--cpu")) {
+            o->oneCpu = v.toInt(&ok);
+            ok = ok && o->oneCpu >= 0;
+        }
         else if (a == QLatin1String("--mbscope"))
             o->mbscope = v;
         else if (a == QLatin1String("--sections")) {
@@ -136,6 +147,40 @@ bool parse(const QStringList &args, Options *o)
            && (o->latency || o->throughput || o->serial);
 }
 
+// Where the processes of a comparison run: the process in the middle and the simulator on one
+// CPU, the masters on another (or unpinned); or every one of them on the same CPU.
+struct Pinning {
+    QString label;
+    bool pin = true;
+    int serverCpu = 0;
+    int masterCpu = 1;
+};
+
+Pinning splitPinning(const Options &o)
+{
+    return {o.pin ? QStringLiteral("simulator, socat, tap on CPU %1; masters on CPU %2").arg(o.serverCpu).arg(o.clientCpu)
+                  : QStringLiteral("unpinned"),
+            o.pin, o.serverCpu, o.clientCpu};
+}
+
+Pinning onePinning(const Options &o)
+{
+    return {QStringLiteral("every process on CPU %1").arg(o.oneCpu), true, o.oneCpu, o.oneCpu};
+}
+
+// The servers (and their threads) moved to the pinning's server CPU (any CPU when unpinned).
+bool applyPinning(const std::vector<BenchServer *> &servers, const Pinning &pinning)
+{
+    bool all = true;
+    for (const BenchServer *server : servers) {
+        if (server->pid() > 0 && !pinRunning(server->pid(), pinning.pin ? pinning.serverCpu : -1)) {
+            std::fprintf(stderr, "bench_tap: cannot move %s to CPU %d\n", qPrintable(server->name), pinning.serverCpu);
+            all = false;
+        }
+    }
+    return all;
+}
+
 // A way from the masters to the simulator, with its figures per round.
 struct Row {
     QString name;
@@ -146,12 +191,12 @@ struct Row {
 };
 
 // One round of masters through a row; false on an error.
-bool runRound(Row &row, BenchServer &sim, int masters, int requests, size_t slot, int round, const Options &o)
+bool runRound(Row &row, BenchServer &sim, int masters, int requests, size_t slot, int round, const Pinning &pinning)
 {
     BenchServer &measured = row.middle ? *row.middle : sim;
     const double cpuBefore = measured.cpuSeconds();
-    const ClientFigures f = runManyClients(row.port, masters, {QStringLiteral("--requests"), QString::number(requests)}, o.pin,
-                                           o.clientCpu);
+    const ClientFigures f = runManyClients(row.port, masters, {QStringLiteral("--requests"), QString::number(requests)}, pinning.pin,
+                                           pinning.masterCpu);
     if (row.middle && row.middle->childrenCpu)
         QThread::msleep(100); // socat's children are counted once it has waited for them
     const double cpu = measured.cpuSeconds() - cpuBefore;
@@ -171,12 +216,12 @@ bool runRound(Row &row, BenchServer &sim, int masters, int requests, size_t slot
 }
 
 // Every row for `rounds` rounds, taking turns (reversed every other round).
-bool runRows(std::vector<Row> &rows, BenchServer &sim, int masters, int requests, size_t slot, const Options &o)
+bool runRows(std::vector<Row> &rows, BenchServer &sim, int masters, int requests, size_t slot, const Options &o, const Pinning &pinning)
 {
     bool clean = true;
     for (int round = 1; round <= o.rounds; ++round) {
         for (size_t k = 0; k < rows.size(); ++k)
-            clean = runRound(rows[round % 2 == 1 ? k : rows.size() - 1 - k], sim, masters, requests, slot, round, o) && clean;
+            clean = runRound(rows[round % 2 == 1 ? k : rows.size() - 1 - k], sim, masters, requests, slot, round, pinning) && clean;
     }
     return clean;
 }
@@ -191,11 +236,20 @@ void resize(std::vector<Row> &rows, size_t count)
     }
 }
 
-bool latencySection(std::vector<Row> &rows, BenchServer &sim, const Options &o)
+// One pinning's medians: p50 and p99 of each row (in the rows' order).
+struct LatencyFigures {
+    QString pinning;
+    std::vector<std::pair<double, double>> rows;
+};
+
+bool latencySection(std::vector<Row> &rows, BenchServer &sim, const Options &o, const Pinning &pinning, LatencyFigures *figures)
 {
-    std::printf("\n== Added latency: 1 master, %d requests a round, %d round(s)\n", o.requests, o.rounds);
+    std::printf("\n== Added latency: 1 master, %d requests a round, %d round(s); %s\n", o.requests, o.rounds, qPrintable(pinning.label));
     resize(rows, 1);
-    const bool clean = runRows(rows, sim, 1, o.requests, 0, o);
+    const bool clean = runRows(rows, sim, 1, o.requests, 0, o, pinning);
+    figures->pinning = pinning.label;
+    for (const Row &row : rows)
+        figures->rows.emplace_back(median(row.p50[0]), median(row.p99[0]));
     const Row &direct = rows.front();
     const double p50 = median(direct.p50[0]);
     const double p99 = median(direct.p99[0]);
@@ -220,13 +274,31 @@ bool latencySection(std::vector<Row> &rows, BenchServer &sim, const Options &o)
     return clean;
 }
 
+// Both pinnings side by side: each row's p50 and p99, and what it adds to the direct path.
+void latencySummary(const std::vector<Row> &rows, const std::vector<LatencyFigures> &pinnings, int rounds)
+{
+    std::printf("\n== Added latency by pinning (medians over %d round(s), one run)\n", rounds);
+    for (const LatencyFigures &f : pinnings) {
+        std::printf("%s:\n", qPrintable(f.pinning));
+        const auto [d50, d99] = f.rows.front();
+        for (size_t k = 0; k < rows.size(); ++k) {
+            const auto [p50, p99] = f.rows.at(k);
+            if (k == 0)
+                std::printf("  %-8s p50 %7.1f us  p99 %8.1f us\n", qPrintable(rows.at(k).name), p50, p99);
+            else
+                std::printf("  %-8s p50 %7.1f us  p99 %8.1f us  adds %+7.1f us at p50, %+8.1f us at p99\n", qPrintable(rows.at(k).name), p50,
+                            p99, p50 - d50, p99 - d99);
+        }
+    }
+}
+
 bool throughputSection(std::vector<Row> &rows, BenchServer &sim, const Options &o)
 {
     std::printf("\n== Throughput: %d requests per master, %d round(s) per master count\n", o.perMaster, o.rounds);
     resize(rows, size_t(o.masters.size()));
     bool clean = true;
     for (qsizetype m = 0; m < o.masters.size(); ++m)
-        clean = runRows(rows, sim, o.masters.at(m), o.perMaster, size_t(m), o) && clean;
+        clean = runRows(rows, sim, o.masters.at(m), o.perMaster, size_t(m), o, splitPinning(o)) && clean;
     std::printf("\nmedians over %d round(s): transactions/s (p99 us; CPU us/tx of the process in the middle)\n%-8s", o.rounds,
                 "masters");
     for (const Row &row : rows)
@@ -262,12 +334,14 @@ int main(int argc, char **argv)
     if (!parse(app.arguments(), &o)) {
         std::fprintf(stderr, "usage: bench_tap [--requests N] [--per-master N] [--masters 1,4,16] [--rounds R] [--pipeline N] "
                              "[--serial-requests N] [--serial-masters N] [--bauds 115200,19200] "
-                             "[--sections latency,throughput,serial] [--server-cpu C] [--client-cpu C] [--no-pin] [--mbscope PATH]\n");
+                             "[--sections latency,throughput,serial] [--server-cpu C] [--client-cpu C] [--cpu C] [--no-pin] "
+                             "[--mbscope PATH]\n");
         return 2;
     }
     const long cpus = sysconf(_SC_NPROCESSORS_ONLN);
-    if (o.pin && (o.serverCpu >= cpus || o.clientCpu >= cpus)) {
-        std::fprintf(stderr, "bench_tap: this machine has %ld CPU(s): --server-cpu and --client-cpu go from 0 to %ld\n", cpus, cpus - 1);
+    if ((o.pin && (o.serverCpu >= cpus || o.clientCpu >= cpus)) || o.oneCpu >= cpus) {
+        std::fprintf(stderr, "bench_tap: this machine has %ld CPU(s): --server-cpu, --client-cpu and --cpu go from 0 to %ld\n", cpus,
+                     cpus - 1);
         return 2;
     }
     std::printf("bench_tap: libmodbus masters (Read Holding Registers, 10 registers, every answer checked); %s; mbscope %s\n",
@@ -323,8 +397,21 @@ int main(int argc, char **argv)
         resize(rows, 1);
         for (Row &row : rows)
             (void)runManyClients(row.port, 4, {QStringLiteral("--requests"), QStringLiteral("200")}, o.pin, o.clientCpu);
-        if (o.latency)
-            clean = latencySection(rows, sim, o) && clean;
+        if (o.latency) {
+            std::vector<Pinning> pinnings{splitPinning(o)};
+            if (o.oneCpu >= 0)
+                pinnings.push_back(onePinning(o));
+            std::vector<LatencyFigures> figures;
+            for (const Pinning &pinning : pinnings) {
+                if (!applyPinning({&sim, &socat, &tap}, pinning))
+                    return 2;
+                figures.emplace_back();
+                clean = latencySection(rows, sim, o, pinning, &figures.back()) && clean;
+            }
+            if (!applyPinning({&sim, &socat, &tap}, splitPinning(o)))
+                return 2;
+            latencySummary(rows, figures, o.rounds);
+        }
         if (o.pipeline > 0) {
             Row row;
             row.name = pipelined.name;

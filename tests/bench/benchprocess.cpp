@@ -3,6 +3,7 @@
 #include "peerprocess.h"
 #include "procstat.h"
 
+#include <QtCore/QDir>
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QThread>
 #include <QtNetwork/QTcpServer>
@@ -12,6 +13,7 @@
 #include <cstdio>
 
 #include <sched.h>
+#include <unistd.h>
 
 namespace mbscope::bench {
 
@@ -25,6 +27,22 @@ void pinChild(QProcess &process, bool pin, int cpu)
         CPU_SET(cpu, &set);
         sched_setaffinity(0, sizeof set, &set);
     });
+}
+
+bool pinRunning(qint64 pid, int cpu)
+{
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    const long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+    for (long c = 0; c < cpus; ++c) {
+        if (cpu < 0 || c == cpu)
+            CPU_SET(int(c), &set);
+    }
+    const QStringList threads = QDir(QStringLiteral("/proc/%1/task").arg(pid)).entryList(QDir::Dirs | QDir::NoDotAndDotDot);
+    bool all = !threads.isEmpty();
+    for (const QString &tid : threads)
+        all = sched_setaffinity(pid_t(tid.toLongLong()), sizeof set, &set) == 0 && all;
+    return all;
 }
 
 double median(std::vector<double> v)

@@ -15,6 +15,10 @@ namespace mbscope::bench {
 // The process pinned to one CPU from before exec, as taskset would (nothing when pin is false).
 void pinChild(QProcess &process, bool pin, int cpu);
 
+// A running process moved to one CPU (cpu < 0: any CPU), every thread of it (/proc/PID/task): what a process forks
+// afterwards (socat's child per connection) inherits it. False when a thread could not be moved.
+bool pinRunning(qint64 pid, int cpu);
+
 // The median of the values (0 for none).
 [[nodiscard]] double median(std::vector<double> values);
 
