@@ -64,6 +64,23 @@ Fit fitPowerOfTen(const QList<double> &ratio, bool floats)
 
 // The values moved enough for a relation between them to mean something: the series x is not
 // still to within its own rounding.
+// How much a series moves against its size: (max - min) / max |value|.
+double relativeRange(const QList<double> &raw)
+{
+    if (raw.isEmpty())
+        return 0;
+    const auto [lo, hi] = std::minmax_element(raw.cbegin(), raw.cend());
+    const double largest = std::max(std::fabs(*lo), std::fabs(*hi));
+    return largest > 0 ? (*hi - *lo) / largest : 0;
+}
+
+// A relation explains the values only when its ratio stays far steadier than they move: a
+// ratio that wanders 1.7 % between values that move 3 % is a coincidence of two slow series.
+bool explains(const Fit &fit, const QList<double> &a, const QList<double> &b)
+{
+    return fit.ok && fit.spread * 5 <= std::min(relativeRange(a), relativeRange(b));
+}
+
 bool moves(const QList<double> &raw)
 {
     if (raw.isEmpty())
@@ -151,7 +168,7 @@ void PowerRelations::apply(QList<ValueGuess> &guesses, const BlockSamples &block
                         ratio.append(denominator == 0 ? std::nan("") : series.at(y).raw.at(t) / denominator);
                     }
                     const Fit fit = fitPowerOfTen(ratio, guesses.at(y).format.isFloat());
-                    if (fit.ok && (!best.ok || fit.spread < best.spread)) {
+                    if (explains(fit, series.at(x).raw, series.at(y).raw) && (!best.ok || fit.spread < best.spread)) {
                         best = fit;
                         found = {y, x, v, f < 0 ? -1 : factors.at(f)};
                     }
@@ -218,7 +235,7 @@ void PowerRelations::apply(QList<ValueGuess> &guesses, const BlockSamples &block
                     ratio.append(q == 0 ? std::nan("") : std::fabs(series.at(z).raw.at(t)) / q);
                 }
                 const Fit fit = fitPowerOfTen(ratio, guesses.at(z).format.isFloat());
-                if (!fit.ok)
+                if (!explains(fit, series.at(z).raw, series.at(z).raw))
                     continue;
                 setScale(guesses[z], std::pow(10.0, -fit.exponent), QStringLiteral("reactive power"), QStringLiteral("var"), 0.6,
                          QStringLiteral("|%1| = sqrt(VA(%2)^2 - W(%3)^2) over %4 samples (within %5)")

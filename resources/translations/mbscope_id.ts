@@ -241,7 +241,7 @@
         <translation>04 Baca Register Input</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+40"/>
         <source>%1, about %2 left</source>
         <translation>%1, sekitar %2 lagi</translation>
     </message>
@@ -1383,9 +1383,10 @@
     <message numerus="yes">
         <location line="+5"/>
         <source>
-ɪnd %n more</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+and %n more</source>
+        <translation>
+            <numerusform>
+dan %n lagi</numerusform>
         </translation>
     </message>
     <message>
