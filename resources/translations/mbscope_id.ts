@@ -70,7 +70,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../app/gui.cpp" line="+327"/>
+        <location filename="../../app/gui.cpp" line="+345"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
@@ -259,7 +259,7 @@
 <context>
     <name>TrafficSaver</name>
     <message>
-        <location filename="../../ui/traffic/trafficsaver.cpp" line="+69"/>
+        <location filename="../../ui/traffic/trafficsaver.cpp" line="+68"/>
         <source>Traffic journal (*.mbscope.journal)</source>
         <translation>Jurnal lalu lintas (*.mbscope.journal)</translation>
     </message>
@@ -5646,7 +5646,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RequestForm</name>
     <message>
-        <location filename="../../ui/compose/requestform.cpp" line="+124"/>
+        <location filename="../../ui/compose/requestform.cpp" line="+121"/>
         <source>Read Device Identification</source>
         <translation>Baca Identifikasi Perangkat</translation>
     </message>
@@ -5847,7 +5847,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 %2 ditolak: %3 menerima 1-%4 %5 dalam satu permintaan (Modbus V1.1b3)</translation>
     </message>
     <message>
-        <location line="-306"/>
+        <location line="-302"/>
         <location line="+4"/>
         <source>coils</source>
         <translation>coil</translation>
@@ -5866,7 +5866,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>register</translation>
     </message>
     <message>
-        <location line="+412"/>
+        <location line="+408"/>
         <source>read quantity</source>
         <translation>jumlah baca</translation>
     </message>
@@ -6995,7 +6995,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimScriptPanel</name>
     <message>
-        <location filename="../../ui/sim/simscriptpanel.cpp" line="+27"/>
+        <location filename="../../ui/sim/simscriptpanel.cpp" line="+30"/>
         <source>Re&amp;load scripts</source>
         <translation>Muat &amp;ulang skrip</translation>
     </message>
@@ -7010,17 +7010,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Bersihkan lo&amp;g</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>What the scripts write with log(...) or console.log(...), and their errors with file and line.</source>
         <translation>Apa yang ditulis skrip dengan log(...) atau console.log(...), serta galatnya dengan berkas dan baris.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+21"/>
         <source>%1  %2  error: %3</source>
         <translation>%1  %2  galat: %3</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+32"/>
         <source>No simulator selected.</source>
         <translation>Tidak ada simulator yang dipilih.</translation>
     </message>
@@ -8216,7 +8216,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficModel</name>
     <message>
-        <location filename="../../ui/traffic/trafficmodel.cpp" line="+432"/>
+        <location filename="../../ui/traffic/trafficmodeldata.cpp" line="+21"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
@@ -8314,7 +8314,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficMonitor</name>
     <message>
-        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+73"/>
+        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+75"/>
         <location line="+5"/>
         <location line="+15"/>
         <source>any</source>
@@ -8471,6 +8471,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+2"/>
         <source> · %1 oldest dropped from the list</source>
         <translation> · %1 terlama dibuang dari daftar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> · older frames are no longer kept on disk: %1</source>
+        <translation> · frame lama tidak lagi disimpan di disk: %1</translation>
     </message>
 </context>
 <context>
@@ -8658,7 +8663,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchDialog</name>
     <message>
-        <location filename="../../ui/watch/watchdialog.cpp" line="+49"/>
+        <location filename="../../ui/watch/watchdialog.cpp" line="+51"/>
         <source>Each address holds a 32-bit value (&amp;Enron/Daniel)</source>
         <translation>Tiap alamat berisi nilai 32-bit (&amp;Enron/Daniel)</translation>
     </message>
