@@ -114,6 +114,9 @@ int main(int argc, char *argv[])
     std::printf("%10s %12s %14s\n", "seconds", "RSS MiB", "journal MiB");
     for (int k = 1;; ++k) {
         const qint64 dueMs = qint64(k * every * 1000);
+        // No sample in the last second: the window is closing then, its memory going.
+        if (dueMs > runMs - 1000)
+            break;
         if (window.waitForFinished(int(std::max<qint64>(1, dueMs - clock.elapsed()))))
             break;
         Sample s{double(clock.elapsed()) / 1000.0, residentKiB(pid), journalBytes(data)};
@@ -123,7 +126,7 @@ int main(int argc, char *argv[])
         std::printf("%10.1f %12.1f %14.1f\n", s.seconds, double(s.rssKiB) / 1024.0, double(s.journalBytes) / 1048576.0);
         std::fflush(stdout);
     }
-    window.waitForFinished(60000);
+    window.waitForFinished(int(runMs - clock.elapsed()) + 60000);
     if (window.exitStatus() != QProcess::NormalExit || window.exitCode() != 0) {
         std::fprintf(stderr, "bench_windowsoak: the window ended with status %d\n", window.exitCode());
         return 1;
