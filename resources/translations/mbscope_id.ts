@@ -6212,6 +6212,69 @@ Klik kanan untuk mengganti format</translation>
     </message>
 </context>
 <context>
+    <name>mbscope::ScriptEditor</name>
+    <message>
+        <location filename="../../ui/sim/scripteditor.cpp" line="+44"/>
+        <source>The script shown in the editor</source>
+        <translation>Skrip yang ditampilkan di editor</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Save script</source>
+        <translation>&amp;Simpan skrip</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Writes the script to its file (Ctrl+S); the simulator loads it again at once.</source>
+        <translation>Menulis skrip ke berkasnya (Ctrl+S); simulator langsung memuatnya ulang.</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>No script: the selected simulator&apos;s profile names none.</source>
+        <translation>Tidak ada skrip: profil simulator yang dipilih tidak menyebut satu pun.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Cannot read %1: %2</source>
+        <translation>Tidak dapat membaca %1: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is part of mbscope: shown read-only.</source>
+        <translation>%1 adalah bagian dari mbscope: ditampilkan hanya-baca.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Not saved: cannot write %1: %2</source>
+        <translation>Tidak disimpan: tidak dapat menulis %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not saved: writing %1 failed: %2</source>
+        <translation>Tidak disimpan: penulisan %1 gagal: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Saved %1; the simulator loads it again.</source>
+        <translation>%1 disimpan; simulator memuatnya ulang.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 changed on disk; the editor keeps your edits (Save writes them over it).</source>
+        <translation>%1 berubah di disk; editor mempertahankan suntingan Anda (Simpan menimpanya).</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 loaded.</source>
+        <translation>%1 dimuat.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Line %1: %2</source>
+        <translation>Baris %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::SessionController</name>
     <message>
         <location filename="../../ui/session/sessioncontroller.cpp" line="+41"/>
