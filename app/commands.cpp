@@ -86,8 +86,8 @@ void printUsage(QTextStream &out)
         << "  --dock NAME      show a dock at start           --start-watches  start the session's watches\n"
         << "  --no-simulator   start without the built-in simulator\n"
         << "  --new-instance   a window of its own (otherwise --session, --tab and --dock go to the running one)\n"
-        << "  --screenshot FILE [--size WxH] [--screenshot-before-send] [--screenshot-poll COUNT]\n"
-        << "                   render the window to a PNG and quit\n"
+        << "  --screenshot FILE [--size WxH] [--screenshot-before-send] [--screenshot-poll COUNT [--poll-interval MS]]\n"
+        << "                   render the window to a PNG and quit (after COUNT polls, MS apart; 0: back to back)\n"
         << "\nRun 'mbscope SUBCOMMAND --help' for a subcommand's options, 'mbscope --help-all' for every one's.\n";
 }
 

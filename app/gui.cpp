@@ -23,9 +23,11 @@
 #include <QtWidgets/QMessageBox>
 #include <QtWidgets/QSpinBox>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 
 namespace mbscope::app {
 
@@ -72,10 +74,12 @@ bool raiseDock(MainWindow &window, const QString &name)
 // Renders the window once it is laid out and, on a first run, once the simulator's answer to
 // the ready request is shown (or a few seconds passed), then quits: docs and GUI smoke tests use
 // it with QT_QPA_PLATFORM=offscreen, so no display is needed.
-// With pollCount > 0 the ready request is polled that many times, 20 ms apart, instead of sent
-// once, and the window is rendered when the poll ends: the traffic list, the register table and
-// the analysis dock then have something to show.
-void scheduleScreenshot(QApplication &app, MainWindow &window, const QString &path, bool waitForAnswer, int pollCount)
+// With pollCount > 0 the ready request is polled that many times, intervalMs apart (0: back to
+// back), instead of sent once, the status bar's summary of the poll printed, and the window is
+// rendered when the poll ends: the traffic list,
+// the register table and the analysis dock then have something to show.
+void scheduleScreenshot(QApplication &app, MainWindow &window, const QString &path, bool waitForAnswer, int pollCount,
+                        int intervalMs)
 {
     auto shoot = [&app, &window, path] {
         if (!saveScreenshot(window, path)) {
@@ -91,10 +95,19 @@ void scheduleScreenshot(QApplication &app, MainWindow &window, const QString &pa
     }
     if (pollCount > 0) {
         // The analysis plots redraw in batches: a short wait after the poll lets the last one in.
+        // The status bar's summary is printed too: an offscreen poll is a measurement to read.
         QObject::connect(window.controller(), &LinkController::pollFinished, &window,
-                         [shoot] { QTimer::singleShot(400, shoot); }, Qt::SingleShotConnection);
-        QTimer::singleShot(kScreenshotAnswerWaitMs + pollCount * 100, &window, shoot);
-        window.composer()->intervalSpin()->setValue(20);
+                         [shoot](const PollReport &report) {
+                             std::printf("%s\n", qPrintable(LinkController::describe(report)));
+                             std::fflush(stdout);
+                             QTimer::singleShot(400, shoot);
+                         },
+                         Qt::SingleShotConnection);
+        // Rendered anyway when the poll has not ended by then (a device that stopped answering):
+        // every request allowed its interval and 100 ms more.
+        const qint64 fallbackMs = kScreenshotAnswerWaitMs + qint64(pollCount) * (intervalMs + 100);
+        QTimer::singleShot(int(std::min<qint64>(fallbackMs, std::numeric_limits<int>::max())), &window, shoot);
+        window.composer()->intervalSpin()->setValue(intervalMs);
         window.composer()->countSpin()->setValue(pollCount);
         QTimer::singleShot(0, &window, [&window] { window.composer()->togglePoll(); });
         return;
@@ -193,9 +206,14 @@ int runGui(QApplication &app)
                                         QStringLiteral("Show and raise the dock NAME (traffic, registers, ...) at start."),
                                         QStringLiteral("NAME"));
     const QCommandLineOption pollOption(QStringLiteral("screenshot-poll"),
-                                        QStringLiteral("With --screenshot: poll the first run's request COUNT times, "
-                                                       "20 ms apart, and render when the poll ends."),
+                                        QStringLiteral("With --screenshot: poll the first run's request COUNT times "
+                                                       "(1 to 100000000), --poll-interval apart, and render when the poll ends."),
                                         QStringLiteral("COUNT"));
+    const QCommandLineOption pollIntervalOption(QStringLiteral("poll-interval"),
+                                                QStringLiteral("With --screenshot-poll: milliseconds from the start of one request "
+                                                               "to the start of the next (default 20; 0: back to back, as fast as "
+                                                               "the simulator answers)."),
+                                                QStringLiteral("MS"));
     const QCommandLineOption langOption(QStringLiteral("lang"),
                                         QStringLiteral("Language of the window for this run: id (Bahasa Indonesia), en "
                                                        "(English) or system; without it, the choice in Preferences."),
@@ -214,9 +232,9 @@ int runGui(QApplication &app)
                                                QStringLiteral("Open a window of its own even when one is running (without it, "
                                                               "--session, --tab and --dock go to the running window)."));
     parser.addOptions({screenshotOption, sizeOption, noSimulatorOption, sessionOption, beforeSendOption, dockOption, pollOption,
-                       langOption, themeOption, tabOption, startWatchesOption, newInstanceOption});
+                       pollIntervalOption, langOption, themeOption, tabOption, startWatchesOption, newInstanceOption});
     if (!parser.parse(QCoreApplication::arguments())) {
-        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT] [--dock NAME] [--lang CODE] [--theme NAME] [--tab NAME] [--start-watches] [--new-instance]\n",
+        std::fprintf(stderr, "mbscope: %s\nUsage: mbscope [--screenshot FILE] [--size WxH] [--no-simulator] [--session FILE] [--screenshot-before-send] [--screenshot-poll COUNT [--poll-interval MS]] [--dock NAME] [--lang CODE] [--theme NAME] [--tab NAME] [--start-watches] [--new-instance]\n",
                      qPrintable(parser.errorText()));
         return ExitUsage;
     }
@@ -349,9 +367,24 @@ int runGui(QApplication &app)
     if (parser.isSet(pollOption)) {
         bool countOk = false;
         pollCount = parser.value(pollOption).toInt(&countOk);
-        if (!countOk || pollCount < 1 || pollCount > 10000) {
-            std::fprintf(stderr, "mbscope: --screenshot-poll '%s' is not a count from 1 to 10000\n",
+        if (!countOk || pollCount < 1 || pollCount > 100000000) {
+            std::fprintf(stderr, "mbscope: --screenshot-poll '%s' is not a count from 1 to 100000000\n",
                          qPrintable(parser.value(pollOption)));
+            return ExitUsage;
+        }
+    }
+    int pollIntervalMs = 20;
+    if (parser.isSet(pollIntervalOption)) {
+        bool intervalOk = false;
+        pollIntervalMs = parser.value(pollIntervalOption).toInt(&intervalOk);
+        if (!intervalOk || pollIntervalMs < 0 || pollIntervalMs > 3600000) {
+            std::fprintf(stderr, "mbscope: --poll-interval '%s' is not a number of milliseconds from 0 to 3600000\n",
+                         qPrintable(parser.value(pollIntervalOption)));
+            return ExitUsage;
+        }
+        if (!parser.isSet(pollOption)) {
+            std::fprintf(stderr, "mbscope: --poll-interval goes with --screenshot-poll COUNT (the window's own polls "
+                                 "take the interval in the composer)\n");
             return ExitUsage;
         }
     }
@@ -364,7 +397,8 @@ int runGui(QApplication &app)
             app.exit(saved ? ExitOk : ExitFailure);
         });
     } else if (!screenshot.isEmpty()) {
-        scheduleScreenshot(app, window, screenshot, simulated && !parser.isSet(beforeSendOption), simulated ? pollCount : 0);
+        scheduleScreenshot(app, window, screenshot, simulated && !parser.isSet(beforeSendOption), simulated ? pollCount : 0,
+                           pollIntervalMs);
     }
 
     bool ok = false;

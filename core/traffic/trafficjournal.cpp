@@ -1,4 +1,5 @@
 #include "trafficjournal.h"
+#include "journalbatch.h"
 
 #include "transport/monotonicclock.h"
 
@@ -59,6 +60,20 @@ template<typename T>
 T readLe(const char *p)
 {
     return qFromLittleEndian<T>(p);
+}
+
+// A frame record (its header at rec) as the entry it holds, numbered sequence.
+TrafficEntry frameEntry(const char *rec, quint64 sequence)
+{
+    TrafficEntry e;
+    e.sequence = sequence;
+    e.direction = TrafficDirection(quint8(rec[1]) & 1);
+    e.verdict = quint8(rec[2]) < kTrafficVerdictCount ? TrafficVerdict(quint8(rec[2])) : TrafficVerdict::Garbage;
+    e.link = readLe<quint16>(rec + 4);
+    e.tNs = readLe<qint64>(rec + 12);
+    e.transactionId = readLe<quint64>(rec + 20);
+    e.bytes = QByteArrayView(rec + kRecordHeaderSize, qsizetype(readLe<quint32>(rec + 8)));
+    return e;
 }
 
 } // namespace
@@ -432,15 +447,7 @@ TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sin
                     notes(TrafficJournalNote{link, readLe<quint64>(rec + 20), readLe<qint64>(rec + 12),
                                              QByteArrayView(rec + kRecordHeaderSize, qsizetype(length))});
             } else if (sink) {
-                TrafficEntry e;
-                e.sequence = sequence;
-                e.direction = TrafficDirection(quint8(rec[1]) & 1);
-                e.verdict = quint8(rec[2]) < kTrafficVerdictCount ? TrafficVerdict(quint8(rec[2])) : TrafficVerdict::Garbage;
-                e.link = link;
-                e.tNs = readLe<qint64>(rec + 12);
-                e.transactionId = readLe<quint64>(rec + 20);
-                e.bytes = QByteArrayView(rec + kRecordHeaderSize, qsizetype(length));
-                sink(e);
+                sink(frameEntry(rec, sequence));
             }
             sequence += kind == kKindFrame ? 1 : 0;
             off += kRecordHeaderSize + length;
@@ -489,6 +496,34 @@ TrafficJournalRecovery TrafficJournalReader::read(const QString &path, const Sin
     }
     r.message = text;
     return r;
+}
+
+bool readJournalBatch(QFile &file, qint64 offset, const TrafficJournalReader::Sink &sink, qint64 *next)
+{
+    char h[kBatchHeaderSize];
+    if (!file.seek(offset) || file.read(h, qint64(kBatchHeaderSize)) != qint64(kBatchHeaderSize)
+        || std::memcmp(h, kBatchMagic, sizeof kBatchMagic) != 0 || readLe<quint32>(h + 28) != TrafficJournalWriter::crc32(h, 28))
+        return false;
+    const auto payload = qint64(readLe<quint32>(h + 4));
+    const QByteArray p = file.read(payload);
+    if (p.size() != payload || TrafficJournalWriter::crc32(p.constData(), std::size_t(payload)) != readLe<quint32>(h + 24))
+        return false;
+    quint64 sequence = readLe<quint64>(h + 16);
+    for (qint64 off = 0; off + qint64(kRecordHeaderSize) <= payload;) {
+        const char *rec = p.constData() + off;
+        const auto length = qint64(readLe<quint32>(rec + 8));
+        if (length > payload - off - qint64(kRecordHeaderSize))
+            return false;
+        if (quint8(rec[0]) == kKindFrame) {
+            if (sink)
+                sink(frameEntry(rec, sequence));
+            ++sequence;
+        }
+        off += qint64(kRecordHeaderSize) + length;
+    }
+    if (next)
+        *next = offset + qint64(kBatchHeaderSize) + payload;
+    return true;
 }
 
 } // namespace mbscope

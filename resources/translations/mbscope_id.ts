@@ -70,7 +70,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../app/gui.cpp" line="+327"/>
+        <location filename="../../app/gui.cpp" line="+345"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
@@ -259,7 +259,7 @@
 <context>
     <name>TrafficSaver</name>
     <message>
-        <location filename="../../ui/traffic/trafficsaver.cpp" line="+69"/>
+        <location filename="../../ui/traffic/trafficsaver.cpp" line="+68"/>
         <source>Traffic journal (*.mbscope.journal)</source>
         <translation>Jurnal lalu lintas (*.mbscope.journal)</translation>
     </message>
@@ -6591,6 +6591,69 @@ Klik kanan untuk mengganti format</translation>
     </message>
 </context>
 <context>
+    <name>mbscope::ScriptEditor</name>
+    <message>
+        <location filename="../../ui/sim/scripteditor.cpp" line="+44"/>
+        <source>The script shown in the editor</source>
+        <translation>Skrip yang ditampilkan di editor</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Save script</source>
+        <translation>&amp;Simpan skrip</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Writes the script to its file (Ctrl+S); the simulator loads it again at once.</source>
+        <translation>Menulis skrip ke berkasnya (Ctrl+S); simulator langsung memuatnya ulang.</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>No script: the selected simulator&apos;s profile names none.</source>
+        <translation>Tidak ada skrip: profil simulator yang dipilih tidak menyebut satu pun.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Cannot read %1: %2</source>
+        <translation>Tidak dapat membaca %1: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is part of mbscope: shown read-only.</source>
+        <translation>%1 adalah bagian dari mbscope: ditampilkan hanya-baca.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Not saved: cannot write %1: %2</source>
+        <translation>Tidak disimpan: tidak dapat menulis %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not saved: writing %1 failed: %2</source>
+        <translation>Tidak disimpan: penulisan %1 gagal: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Saved %1; the simulator loads it again.</source>
+        <translation>%1 disimpan; simulator memuatnya ulang.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 changed on disk; the editor keeps your edits (Save writes them over it).</source>
+        <translation>%1 berubah di disk; editor mempertahankan suntingan Anda (Simpan menimpanya).</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 loaded.</source>
+        <translation>%1 dimuat.</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Line %1: %2</source>
+        <translation>Baris %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>mbscope::SessionController</name>
     <message>
         <location filename="../../ui/session/sessioncontroller.cpp" line="+41"/>
@@ -7374,7 +7437,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::SimScriptPanel</name>
     <message>
-        <location filename="../../ui/sim/simscriptpanel.cpp" line="+27"/>
+        <location filename="../../ui/sim/simscriptpanel.cpp" line="+30"/>
         <source>Re&amp;load scripts</source>
         <translation>Muat &amp;ulang skrip</translation>
     </message>
@@ -7389,17 +7452,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Bersihkan lo&amp;g</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+17"/>
         <source>What the scripts write with log(...) or console.log(...), and their errors with file and line.</source>
         <translation>Apa yang ditulis skrip dengan log(...) atau console.log(...), serta galatnya dengan berkas dan baris.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+21"/>
         <source>%1  %2  error: %3</source>
         <translation>%1  %2  galat: %3</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+32"/>
         <source>No simulator selected.</source>
         <translation>Tidak ada simulator yang dipilih.</translation>
     </message>
@@ -8605,7 +8668,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficModel</name>
     <message>
-        <location filename="../../ui/traffic/trafficmodel.cpp" line="+432"/>
+        <location filename="../../ui/traffic/trafficmodeldata.cpp" line="+21"/>
         <source>No.</source>
         <translation>No.</translation>
     </message>
@@ -8703,7 +8766,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TrafficMonitor</name>
     <message>
-        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+73"/>
+        <location filename="../../ui/traffic/trafficmonitor.cpp" line="+75"/>
         <location line="+5"/>
         <location line="+15"/>
         <source>any</source>
@@ -8860,6 +8923,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+2"/>
         <source> · %1 oldest dropped from the list</source>
         <translation> · %1 terlama dibuang dari daftar</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> · older frames are no longer kept on disk: %1</source>
+        <translation> · frame lama tidak lagi disimpan di disk: %1</translation>
     </message>
 </context>
 <context>

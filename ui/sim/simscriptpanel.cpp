@@ -1,5 +1,7 @@
 #include "simscriptpanel.h"
 
+#include "scripteditor.h"
+
 #include "sim/simulatorhost.h"
 
 #include <QtCore/QDateTime>
@@ -10,6 +12,7 @@
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPlainTextEdit>
 #include <QtWidgets/QPushButton>
+#include <QtWidgets/QSplitter>
 #include <QtWidgets/QVBoxLayout>
 
 namespace mbscope {
@@ -32,7 +35,12 @@ SimScriptPanel::SimScriptPanel(QWidget *parent)
     m_clear->setObjectName(QStringLiteral("simClearScriptLog"));
     row->addWidget(m_clear);
     layout->addLayout(row);
-    m_log = new QPlainTextEdit(this);
+    // The script on the left, what it logs on the right.
+    m_split = new QSplitter(Qt::Horizontal, this);
+    m_split->setObjectName(QStringLiteral("simScriptSplit"));
+    m_split->setChildrenCollapsible(false);
+    m_editor = new ScriptEditor(m_split);
+    m_log = new QPlainTextEdit(m_split);
     m_log->setObjectName(QStringLiteral("simScriptLog"));
     m_log->setReadOnly(true);
     m_log->setLineWrapMode(QPlainTextEdit::NoWrap);
@@ -41,9 +49,14 @@ SimScriptPanel::SimScriptPanel(QWidget *parent)
     // Room for several errors at once, however small the dock.
     m_log->setMinimumHeight(8 * QFontMetrics(m_log->font()).lineSpacing());
     m_log->setPlaceholderText(tr("What the scripts write with log(...) or console.log(...), and their errors with file and line."));
-    layout->addWidget(m_log, 1);
+    m_split->addWidget(m_editor);
+    m_split->addWidget(m_log);
+    m_split->setStretchFactor(0, 3);
+    m_split->setStretchFactor(1, 2);
+    layout->addWidget(m_split, 1);
 
     connect(m_reload, &QPushButton::clicked, this, &SimScriptPanel::reload);
+    connect(m_editor, &ScriptEditor::reloadWanted, this, &SimScriptPanel::reload);
     connect(m_clear, &QPushButton::clicked, this, [this] {
         if (m_host)
             m_logs.remove(m_host);
@@ -57,6 +70,8 @@ void SimScriptPanel::watch(SimulatorHost *host)
     connect(host, &SimulatorHost::scriptLogged, this, [this, host](const QString &who, const QString &text, bool error) {
         const QString time = QDateTime::currentDateTime().toString(QStringLiteral("HH:mm:ss.zzz"));
         append(host, error ? tr("%1  %2  error: %3").arg(time, who, text) : QStringLiteral("%1  %2  %3").arg(time, who, text));
+        if (host == m_host)
+            m_editor->noteLog(who, text, error);
     });
 }
 
@@ -80,6 +95,7 @@ void SimScriptPanel::append(SimulatorHost *host, const QString &line)
 void SimScriptPanel::setHost(SimulatorHost *host)
 {
     m_host = host;
+    m_editor->setHost(host);
     m_log->clear();
     const QStringList scripts = host ? host->scripts() : QStringList();
     m_reload->setEnabled(!scripts.isEmpty());

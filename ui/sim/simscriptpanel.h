@@ -8,14 +8,18 @@
 class QLabel;
 class QPlainTextEdit;
 class QPushButton;
+class QSplitter;
 
 namespace mbscope {
 
+class ScriptEditor;
 class SimulatorHost;
 
 // The Simulator dock's Script tab: which scripts the selected simulator runs, Reload scripts
-// (each loaded again from its file, in the simulator's thread), and the scripts' log: their
-// log(...) lines and their errors with file and line, the newest kLogLines of each simulator.
+// (each loaded again from its file, in the simulator's thread), the script's editor
+// (ScriptEditor: highlighted, its error's line marked, loaded again on every save) and beside
+// it the scripts' log: their log(...) lines and their errors with file and line, the newest
+// kLogLines of each simulator.
 class SimScriptPanel : public QWidget
 {
     Q_OBJECT
@@ -33,6 +37,7 @@ public:
 
     [[nodiscard]] QString logText() const;
     [[nodiscard]] QPushButton *reloadButton() const { return m_reload; }
+    [[nodiscard]] ScriptEditor *editor() const { return m_editor; }
 
 private:
     void append(SimulatorHost *host, const QString &line);
@@ -42,6 +47,8 @@ private:
     QLabel *m_scripts = nullptr;
     QPushButton *m_reload = nullptr;
     QPushButton *m_clear = nullptr;
+    QSplitter *m_split = nullptr;
+    ScriptEditor *m_editor = nullptr;
     QPlainTextEdit *m_log = nullptr;
 };
 

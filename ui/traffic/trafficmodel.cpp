@@ -76,8 +76,8 @@ void TrafficModel::rebuildShown()
     std::vector<quint32>().swap(m_shown);
     if (!m_filtered)
         return;
-    const quint64 first = m_log->firstSequence();
-    m_log->visit(first, true, [&](const TrafficEntry &e) {
+    const quint64 first = firstKept();
+    visitFrames(first, true, [&](const TrafficEntry &e) {
         if (e.sequence >= m_publishedEnd)
             return false;
         if (m_filter.accepts(e, keysAt(qsizetype(e.sequence - first))))
@@ -119,7 +119,7 @@ qsizetype TrafficModel::storeRow(int row) const
 
 int TrafficModel::rowOfStoreRow(qsizetype storeRow) const
 {
-    const qsizetype published = qsizetype(m_publishedEnd - m_log->firstSequence());
+    const qsizetype published = qsizetype(m_publishedEnd - firstKept());
     if (storeRow < 0 || storeRow >= published)
         return -1;
     if (!m_filtered)
@@ -130,15 +130,46 @@ int TrafficModel::rowOfStoreRow(qsizetype storeRow) const
 
 TrafficEntry TrafficModel::frameAt(qsizetype storeRow) const
 {
-    return m_log->at(sequenceOf(storeRow));
+    const quint64 sequence = sequenceOf(storeRow);
+    return sequence < m_log->firstSequence() && m_archive ? m_archive->at(sequence) : m_log->at(sequence);
+}
+
+void TrafficModel::visitFrames(quint64 from, bool forward, const std::function<bool(const TrafficEntry &)> &visitor) const
+{
+    const quint64 inMemory = m_log->firstSequence();
+    bool goOn = true;
+    const auto seen = [&](const TrafficEntry &e) { return goOn = visitor(e); };
+    if (forward) {
+        if (from < inMemory && m_archive) {
+            m_archive->visit(from, true, seen);
+            if (!goOn)
+                return;
+            from = inMemory;
+        }
+        m_log->visit(std::max(from, inMemory), true, seen);
+        return;
+    }
+    if (from >= inMemory) {
+        m_log->visit(from, false, seen);
+        if (!goOn || inMemory == 0)
+            return;
+        from = inMemory - 1;
+    }
+    if (m_archive)
+        m_archive->visit(from, false, seen);
+}
+
+void TrafficModel::setArchiveFolder(const QString &folder)
+{
+    m_archiveFolder = folder;
 }
 
 qsizetype TrafficModel::pairedRow(qsizetype storeRow) const
 {
     const TrafficEntry frame = frameAt(storeRow);
-    if (frame.transactionId == 0 || frame.sequence < m_log->firstSequence())
+    const quint64 first = firstKept();
+    if (frame.transactionId == 0 || frame.sequence < first)
         return -1;
-    const quint64 first = m_log->firstSequence();
     PairSlot &slot = m_pairs[std::size_t(frame.sequence % quint64(kPairCacheSize))];
     if (slot.key == frame.sequence + 1)
         return slot.paired >= first ? qsizetype(slot.paired - first) : -1;
@@ -149,7 +180,7 @@ qsizetype TrafficModel::pairedRow(qsizetype storeRow) const
     int seen = 0;
     const quint64 from = out ? frame.sequence + 1 : frame.sequence - 1;
     if (out ? from < m_log->appended() : frame.sequence > first) {
-        m_log->visit(from, out, [&](const TrafficEntry &e) {
+        visitFrames(from, out, [&](const TrafficEntry &e) {
             if (++seen > kPairWindow)
                 return false;
             if (e.link != frame.link || e.transactionId != frame.transactionId)
@@ -281,7 +312,7 @@ void TrafficModel::publish()
 {
     if (m_paused || m_publishedEnd == m_log->appended())
         return;
-    const quint64 first = m_log->firstSequence();
+    const quint64 first = firstKept();
     const quint64 from = m_publishedEnd;
     const quint64 to = m_log->appended();
     if (!m_filtered) {
@@ -291,7 +322,7 @@ void TrafficModel::publish()
         return;
     }
     std::vector<quint32> accepted;
-    m_log->visit(from, true, [&](const TrafficEntry &e) {
+    visitFrames(from, true, [&](const TrafficEntry &e) {
         if (m_filter.accepts(e, keysAt(qsizetype(e.sequence - first))))
             accepted.push_back(quint32(e.sequence - first));
         return true;
@@ -305,7 +336,7 @@ void TrafficModel::publish()
     endInsertRows();
 }
 
-// Rows are dropped a tenth of a limit at a time, so the cost of moving the rest is paid rarely.
+// Rows leave memory a tenth of a limit at a time, so the cost of moving the rest is paid rarely.
 void TrafficModel::enforceLimit()
 {
     const auto size = qsizetype(m_log->size());
@@ -325,20 +356,65 @@ void TrafficModel::enforceLimit()
     }
     if (drop <= 0)
         return;
-    const qsizetype published = qsizetype(m_publishedEnd - m_log->firstSequence());
-    const qsizetype publishedDropped = std::min(drop, published);
+    if (!archiveOldest(quint64(drop)))
+        dropOldest(quint64(drop));
+}
+
+bool TrafficModel::archiveOldest(quint64 count)
+{
+    if (m_archiveFolder.isEmpty() || !m_archiveProblem.isEmpty())
+        return false;
+    if (!m_archive) {
+        // The archive holds the list from its first frame on, or nothing.
+        if (m_log->firstSequence() != 0)
+            return false;
+        auto archive = std::make_unique<TrafficArchive>();
+        if (!archive->open(m_archiveFolder, &m_archiveProblem)) {
+            if (m_archiveProblem.isEmpty())
+                m_archiveProblem = archive->error();
+            return false;
+        }
+        m_archive = std::move(archive);
+    }
+    bool ok = true;
+    quint64 moved = 0;
+    m_log->visit(m_log->firstSequence(), true, [&](const TrafficEntry &e) {
+        ok = m_archive->append(e);
+        return ok && ++moved < count;
+    });
+    if (ok) {
+        m_log->dropOldest(count);
+        return true;
+    }
+    // The disk refused: the list goes on without the archive, from what memory holds.
+    m_archiveProblem = m_archive->error().isEmpty() ? QStringLiteral("the traffic list's archive could not be written")
+                                                    : m_archive->error();
+    dropOldest(archivedCount());
+    return false;
+}
+
+void TrafficModel::dropOldest(quint64 count)
+{
+    const quint64 first = firstKept();
+    const qsizetype published = qsizetype(m_publishedEnd - first);
+    const qsizetype publishedDropped = std::min(qsizetype(count), published);
     const int shownDropped = m_filtered
         ? int(std::lower_bound(m_shown.begin(), m_shown.end(), quint32(publishedDropped)) - m_shown.begin())
         : int(publishedDropped);
     if (shownDropped > 0)
         beginRemoveRows({}, 0, shownDropped - 1);
-    m_log->dropOldest(quint64(drop));
-    if (m_publishedEnd < m_log->firstSequence())
-        m_publishedEnd = m_log->firstSequence();
+    // The archive goes whole (it holds the oldest frames, and only from the first on).
+    const quint64 archived = archivedCount();
+    if (m_archive && count >= archived)
+        m_archive.reset();
+    m_log->dropOldest(count - std::min(count, archived));
+    if (m_publishedEnd < firstKept())
+        m_publishedEnd = firstKept();
     if (m_filtered) {
         m_shown.erase(m_shown.begin(), m_shown.begin() + shownDropped);
+        const quint64 shift = firstKept() - first;
         for (quint32 &row : m_shown)
-            row -= quint32(drop);
+            row -= quint32(shift);
     }
     if (shownDropped > 0)
         endRemoveRows();
@@ -348,6 +424,8 @@ void TrafficModel::clear()
 {
     beginResetModel();
     m_log = std::make_unique<TrafficLog>(unbounded());
+    m_archive.reset();
+    m_archiveProblem.clear();
     std::fill(m_pairs.begin(), m_pairs.end(), PairSlot{});
     std::vector<quint32>().swap(m_shown);
     m_publishedEnd = 0;
@@ -407,7 +485,7 @@ int TrafficModel::findNext(const QString &query, int fromRow, bool forward) cons
 
 std::size_t TrafficModel::memoryBytes() const
 {
-    return m_log->memoryBytes() + m_links.memoryBytes() + m_shown.capacity() * sizeof(quint32)
+    return m_log->memoryBytes() + (m_archive ? m_archive->memoryBytes() : 0) + m_links.memoryBytes() + m_shown.capacity() * sizeof(quint32)
         + m_pairs.capacity() * sizeof(PairSlot);
 }
 
@@ -415,180 +493,12 @@ int TrafficModel::rowCount(const QModelIndex &parent) const
 {
     if (parent.isValid())
         return 0;
-    return m_filtered ? int(m_shown.size()) : int(m_publishedEnd - m_log->firstSequence());
+    return m_filtered ? int(m_shown.size()) : int(m_publishedEnd - firstKept());
 }
 
 int TrafficModel::columnCount(const QModelIndex &parent) const
 {
     return parent.isValid() ? 0 : ColumnCount;
-}
-
-QVariant TrafficModel::headerData(int section, Qt::Orientation orientation, int role) const
-{
-    if (orientation != Qt::Horizontal || section < 0 || section >= ColumnCount)
-        return {};
-    if (role == Qt::DisplayRole) {
-        switch (Column(section)) {
-        case NumberColumn: return tr("No.");
-        case TimeColumn: return tr("Time (s)");
-        case DirectionColumn: return tr("Dir");
-        case LinkColumn: return tr("Link");
-        case UnitColumn: return tr("Unit");
-        case FunctionColumn: return tr("Function");
-        case LengthColumn: return tr("Length");
-        case LatencyColumn: return tr("Latency");
-        case VerdictColumn: return tr("Verdict");
-        case BytesColumn: return tr("Bytes");
-        case ColumnCount: break;
-        }
-    } else if (role == Qt::ToolTipRole) {
-        switch (Column(section)) {
-        case TimeColumn: return tr("Seconds since the first frame listed (monotonic clock)");
-        case LatencyColumn: return tr("From the request's write to the first byte of its answer, as the recording keeps them; the Analysis dock measures from the request's last byte to the answer's last byte");
-        case VerdictColumn: return tr("What became of the frame: a request is 'sent', its answer carries the verdict");
-        default: break;
-        }
-    }
-    return {};
-}
-
-QVariant TrafficModel::data(const QModelIndex &index, int role) const
-{
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
-        return {};
-    const qsizetype s = storeRow(index.row());
-    const int column = index.column();
-    const TrafficEntry r = frameAt(s);
-    switch (role) {
-    case Qt::DisplayRole:
-        return displayText(s, column);
-    case Qt::ForegroundRole:
-        return foreground(s, column);
-    case Qt::BackgroundRole:
-        return background(s);
-    case Qt::ToolTipRole:
-        return toolTip(s, column);
-    case Qt::FontRole:
-        return column == BytesColumn ? QVariant(m_monoFont) : QVariant();
-    case Qt::TextAlignmentRole:
-        switch (column) {
-        case NumberColumn:
-        case TimeColumn:
-        case UnitColumn:
-        case LengthColumn:
-        case LatencyColumn:
-            return QVariant(Qt::AlignRight | Qt::AlignVCenter);
-        default:
-            return QVariant(Qt::AlignLeft | Qt::AlignVCenter);
-        }
-    case DirectionRole:
-        return int(r.direction);
-    case VerdictRole:
-        return int(r.verdict);
-    case TransactionIdRole:
-        return qulonglong(r.transactionId);
-    case LatencyNsRole:
-        return qlonglong(latencyNs(s));
-    case TimeNsRole:
-        return qlonglong(r.tNs);
-    case StoreRowRole:
-        return qlonglong(s);
-    case BytesRole:
-        return r.bytes.toByteArray();
-    default:
-        return {};
-    }
-}
-
-QVariant TrafficModel::displayText(qsizetype s, int column) const
-{
-    const TrafficEntry r = frameAt(s);
-    switch (Column(column)) {
-    case NumberColumn:
-        return QString::number(r.sequence + 1);
-    case TimeColumn:
-        return QString::number(double(r.tNs - m_originNs) / 1e9, 'f', 6);
-    case DirectionColumn:
-        return TrafficStyle::directionText(r.direction);
-    case LinkColumn: {
-        const QString name = m_links.name(r.link);
-        return name.isEmpty() ? tr("link %1").arg(r.link) : name;
-    }
-    case UnitColumn: {
-        const FrameKeys keys = keysAt(s);
-        return keys.valid ? QVariant(QString::number(keys.unit)) : QVariant();
-    }
-    case FunctionColumn: {
-        const FrameKeys keys = keysAt(s);
-        if (!keys.valid)
-            return {};
-        const quint8 function = keys.functionCode;
-        // An exception response is its request's code with the high bit set (V1.1b3, 7).
-        if (function & 0x80)
-            return tr("%1 Exception to %2").arg(hexByte(function), fieldText(functionName(function & 0x7F)));
-        return hexByte(function) + QLatin1Char(' ') + fieldText(functionName(function));
-    }
-    case LengthColumn:
-        return QString::number(r.bytes.size());
-    case LatencyColumn:
-        return ExchangeFormat::latencyText(latencyNs(s));
-    case VerdictColumn:
-        return TrafficStyle::verdictText(r.verdict);
-    case BytesColumn: {
-        const QByteArrayView bytes = r.bytes;
-        if (bytes.size() <= kBytesShown)
-            return HexText::format(bytes);
-        return HexText::format(bytes.first(kBytesShown)) + QStringLiteral(" \u2026");
-    }
-    case ColumnCount:
-        break;
-    }
-    return {};
-}
-
-QVariant TrafficModel::foreground(qsizetype s, int column) const
-{
-    const TrafficEntry r = frameAt(s);
-    if (column == DirectionColumn)
-        return TrafficStyle::directionColor(r.direction);
-    if (column == VerdictColumn) {
-        const Severity severity = TrafficStyle::severity(r.verdict);
-        if (severity != Severity::Ok)
-            return SeverityStyle::textColor(severity);
-    }
-    return {};
-}
-
-// Rows whose verdict is an error are tinted whole, as a packet list colours bad packets, so they
-// stand out while scrolling; warnings colour only their verdict.
-QVariant TrafficModel::background(qsizetype s) const
-{
-    const Severity severity = TrafficStyle::severity(frameAt(s).verdict);
-    return severity == Severity::Error ? QVariant(SeverityStyle::backgroundColor(severity)) : QVariant();
-}
-
-QString TrafficModel::toolTip(qsizetype s, int column) const
-{
-    const TrafficEntry r = frameAt(s);
-    switch (column) {
-    case BytesColumn: {
-        const QByteArrayView bytes = r.bytes;
-        HexText::FormatOptions options;
-        options.bytesPerLine = 16;
-        return bytes.isEmpty() ? tr("No bytes") : HexText::format(bytes, options);
-    }
-    case LatencyColumn:
-    case VerdictColumn: {
-        const qsizetype paired = pairedRow(s);
-        if (paired < 0)
-            return r.direction == TrafficDirection::In && r.transactionId == 0 ? tr("Not an answer to any request sent")
-                                                                               : QString();
-        return r.direction == TrafficDirection::In ? tr("Answers frame %1").arg(sequenceOf(paired) + 1)
-                                                   : tr("Answered in frame %1").arg(sequenceOf(paired) + 1);
-    }
-    default:
-        return {};
-    }
 }
 
 } // namespace mbscope

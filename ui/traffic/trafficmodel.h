@@ -6,12 +6,14 @@
 
 #include "exchange/trafficentry.h"
 #include "exchange/transaction.h"
+#include "traffic/trafficarchive.h"
 #include "traffic/trafficlog.h"
 
 #include <QtCore/QAbstractTableModel>
 #include <QtCore/QList>
 #include <QtGui/QFont>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -24,6 +26,12 @@ namespace mbscope {
 // latest frame out of its link with the answer's transaction id (the engine's pairing), looked up
 // when needed. Filtering keeps a vector of the shown rows' indexes (none while everything is
 // shown). Pausing holds new rows back from the views, never drops them.
+//
+// Memory stays bounded however long a poll runs (issue 31): at most rowLimit frames are kept in
+// memory. With an archive folder (setArchiveFolder: the window's cache folder) the oldest tenth
+// beyond that goes to a TrafficArchive, a journal on disk, and stays in the list: scrolling,
+// selecting, pairing and searching read it back from there. Without one (or when the disk
+// refuses), the oldest tenth is dropped from the list instead, and counted.
 //
 // Feeds: appendLinkFrames() takes TransactionEngine::framesLogged's batches, appendFrames() a
 // traffic log's frames with its link ids (TrafficLog::copy, a journal read back). Engines that do
@@ -85,18 +93,33 @@ public:
     // Rows stored but not shown yet because the model is paused.
     [[nodiscard]] qsizetype heldCount() const { return qsizetype(m_log->appended() - m_publishedEnd); }
 
-    // At most this many frames (default 5 million) and bytes of frames and their records (default
-    // 1 GiB) are kept; beyond either the oldest tenth goes.
+    // At most this many frames (default 200,000) and bytes of frames and their records (default
+    // 32 MiB) are kept in memory; beyond either the oldest tenth goes to the archive, or is
+    // dropped without one.
     void setRowLimit(qsizetype limit);
     [[nodiscard]] qsizetype rowLimit() const { return m_rowLimit; }
     void setByteLimit(quint64 bytes);
     [[nodiscard]] quint64 byteLimit() const { return m_byteLimit; }
+    // Where frames beyond the memory limits go (a journal made in folder, removed with the
+    // model or by clear()); empty: they are dropped. Applies from the next clear() when frames
+    // were dropped already.
+    void setArchiveFolder(const QString &folder);
+    // Why the archive stopped taking frames (the folder could not be written), or empty.
+    [[nodiscard]] const QString &archiveProblem() const { return m_archiveProblem; }
+    // Frames kept on disk only, in the archive (part of frameCount()).
+    [[nodiscard]] quint64 archivedCount() const { return m_archive ? m_log->firstSequence() : 0; }
     // Oldest rows dropped for the limits since the last clear.
-    [[nodiscard]] quint64 droppedCount() const { return m_log->firstSequence(); }
+    [[nodiscard]] quint64 droppedCount() const { return firstKept(); }
 
-    // The frames kept, shown or not (held, filtered out).
-    [[nodiscard]] qsizetype frameCount() const { return qsizetype(m_log->size()); }
+    // The frames kept, in memory or archived, shown or not (held, filtered out).
+    [[nodiscard]] qsizetype frameCount() const { return qsizetype(m_log->appended() - firstKept()); }
+    // The frames kept in memory, the newest.
     [[nodiscard]] const TrafficLog &log() const { return *m_log; }
+    // Every frame kept, archived ones first, from the frame numbered from (0: the first ever
+    // appended) on (forward) or back, until visitor returns false; as TrafficLog::visit.
+    void visitFrames(quint64 from, bool forward, const std::function<bool(const TrafficEntry &)> &visitor) const;
+    // The number of the oldest frame kept (in the archive or in memory).
+    [[nodiscard]] quint64 firstKept() const { return m_archive ? 0 : m_log->firstSequence(); }
     [[nodiscard]] const TrafficLinks &links() const { return m_links; }
     // A row's frame by its index among the frames kept (0: the oldest kept).
     [[nodiscard]] qsizetype storeRow(int row) const; // -1 for an invalid row
@@ -148,13 +171,21 @@ private:
     void publish();
     void rebuildShown();
     void enforceLimit();
-    [[nodiscard]] quint64 sequenceOf(qsizetype storeRow) const { return m_log->firstSequence() + quint64(storeRow); }
+    // Moves the oldest count frames of memory to the archive; false when there is none (or it
+    // failed: then its frames are gone from the list too).
+    bool archiveOldest(quint64 count);
+    // Drops the oldest count frames kept (from the archive first) and tells the views.
+    void dropOldest(quint64 count);
+    [[nodiscard]] quint64 sequenceOf(qsizetype storeRow) const { return firstKept() + quint64(storeRow); }
     [[nodiscard]] QVariant displayText(qsizetype storeRow, int column) const;
     [[nodiscard]] QVariant foreground(qsizetype storeRow, int column) const;
     [[nodiscard]] QVariant background(qsizetype storeRow) const;
     [[nodiscard]] QString toolTip(qsizetype storeRow, int column) const;
 
     std::unique_ptr<TrafficLog> m_log;
+    QString m_archiveFolder;
+    QString m_archiveProblem;
+    std::unique_ptr<TrafficArchive> m_archive; // frames 0 .. m_log->firstSequence() - 1, when made
     TrafficLinks m_links;
     // Pairs found, so painting does not look them up again: a slot per frame sequence modulo
     // the size (sequence + 1, 0: empty; the pair's sequence). Fixed size: it never grows.
@@ -168,8 +199,8 @@ private:
     bool m_filtered = false;
     bool m_paused = false;
     quint64 m_publishedEnd = 0; // the sequence after the last frame the views have been told about
-    qsizetype m_rowLimit = 5'000'000;
-    quint64 m_byteLimit = quint64(1) << 30;
+    qsizetype m_rowLimit = 200'000;
+    quint64 m_byteLimit = quint64(32) << 20;
     qint64 m_originNs = 0;     // the Time column counts from the first frame
     bool m_hasOrigin = false;
     QFont m_monoFont;          // for the Bytes column

@@ -56,6 +56,8 @@ TrafficMonitor::TrafficMonitor(QWidget *parent)
     : QWidget(parent)
     , m_model(new TrafficModel(this))
 {
+    // The oldest frames beyond the list's memory go to disk, in the cache folder, and stay listed.
+    m_model->setArchiveFolder(QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + QStringLiteral("/traffic-list"));
     buildUi();
     connect(m_model, &TrafficModel::countsChanged, this, &TrafficMonitor::updateStatus);
     connect(m_model, &QAbstractItemModel::rowsAboutToBeInserted, this, &TrafficMonitor::onRowsAboutToBeInserted);
@@ -434,6 +436,8 @@ void TrafficMonitor::updateStatus()
         text += tr(" \u00B7 paused: %1 new frames held").arg(locale.toString(qlonglong(m_model->heldCount())));
     if (m_model->droppedCount() > 0)
         text += tr(" \u00B7 %1 oldest dropped from the list").arg(locale.toString(qulonglong(m_model->droppedCount())));
+    if (!m_model->archiveProblem().isEmpty())
+        text += tr(" \u00B7 older frames are no longer kept on disk: %1").arg(m_model->archiveProblem());
     SeverityStyle::setTextColour(m_statusLabel, m_findMessage.isEmpty() ? Severity::Ok : Severity::Warning);
     if (!m_findMessage.isEmpty())
         text += QStringLiteral(" \u00B7 ") + m_findMessage;

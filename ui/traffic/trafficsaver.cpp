@@ -42,8 +42,7 @@ bool writeJournal(const TrafficModel &model, bool shownOnly, const QString &path
             ++*frames;
         }
     } else {
-        const TrafficLog &log = model.log();
-        log.visit(log.firstSequence(), true, [&](const TrafficEntry &e) {
+        model.visitFrames(model.firstKept(), true, [&](const TrafficEntry &e) {
             journal.addFrame(e);
             ++*frames;
             return true;

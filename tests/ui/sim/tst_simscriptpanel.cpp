@@ -3,6 +3,15 @@
 // (log(...) lines, the load); Reload scripts picks up an edited file; a broken edit is logged
 // with file, line and column and the unit answers as its profile says; a profile whose script
 // does not compile is refused with the located error. A screenshot of the tab goes to the output.
+// The tab's editor: the script highlighted in the theme's colours (light and dark, each rendered
+// to a PNG), Ctrl+S saves and the simulator answers as the saved script says, a broken save marks
+// the error's line, an edit made by another program on disk is followed and loaded.
+#include "guitestsupport.h"
+#include "windowfit.h"
+
+#include "common/theme.h"
+#include "sim/scripteditor.h"
+#include "sim/scripthighlighter.h"
 #include "sim/simscriptpanel.h"
 #include "sim/simulatorpanel.h"
 
@@ -14,7 +23,11 @@
 #include <QtCore/QTemporaryDir>
 #include <QtNetwork/QTcpSocket>
 #include <QtTest/QtTest>
+#include <QtGui/QTextBlock>
+#include <QtGui/QTextLayout>
+#include <QtWidgets/QComboBox>
 #include <QtWidgets/QLabel>
+#include <QtWidgets/QPlainTextEdit>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QTabWidget>
 
@@ -58,6 +71,7 @@ class TestSimScriptPanel : public QObject
 private Q_SLOTS:
     void loadReloadAndLog();
     void brokenScriptRefusedAtStart();
+    void editorSavesMarksAndFollows();
 };
 
 void TestSimScriptPanel::loadReloadAndLog()
@@ -122,6 +136,128 @@ void TestSimScriptPanel::brokenScriptRefusedAtStart()
     QVERIFY(!panel.startSimulator(profile, QStringLiteral("tcp://127.0.0.1:0")));
     QVERIFY2(panel.message().contains(QStringLiteral("%1: units[0].script: s.js:1:").arg(profile)), qPrintable(panel.message()));
     QVERIFY2(panel.message().contains(QLatin1String("SyntaxError")), qPrintable(panel.message()));
+}
+
+namespace {
+
+// The colour the highlighter gave the text at column of line (0-based), invalid when none.
+QColor colourAt(QPlainTextEdit *edit, int line, int column)
+{
+    const QTextBlock block = edit->document()->findBlockByNumber(line);
+    for (const QTextLayout::FormatRange &r : block.layout()->formats()) {
+        if (column >= r.start && column < r.start + r.length)
+            return r.format.foreground().color();
+    }
+    return {};
+}
+
+void typeOver(QPlainTextEdit *edit, const QString &text)
+{
+    edit->setFocus();
+    edit->selectAll();
+    QTextCursor cursor = edit->textCursor();
+    cursor.insertText(text);
+    edit->setTextCursor(cursor);
+}
+
+} // namespace
+
+void TestSimScriptPanel::editorSavesMarksAndFollows()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString script = dir.filePath(QStringLiteral("s.js"));
+    writeFile(script, "// answers 111\nfunction onRequest(r) { log(\"asked\", 0x10); return [111]; }\n");
+    const QString profile = dir.filePath(QStringLiteral("p.json"));
+    writeFile(profile, kProfile);
+
+    Theme::apply(Theme::Choice::Light);
+    SimulatorPanel panel;
+    panel.resize(1100, 600);
+    panel.show();
+    panel.activateWindow(); // Ctrl+S reaches the active window only
+    QVERIFY(QTest::qWaitForWindowActive(&panel));
+    SimulatorHost *host = panel.startSimulator(profile, QStringLiteral("tcp://127.0.0.1:0"));
+    QVERIFY2(host, qPrintable(panel.message()));
+    const quint16 port = host->boundUrls().first().port;
+    SimScriptPanel *scripts = panel.scriptPanel();
+    panel.tabs()->setCurrentWidget(scripts);
+    ScriptEditor *editor = scripts->editor();
+    QPlainTextEdit *edit = editor->editor();
+    QCOMPARE(editor->scriptChoice()->currentText(), QStringLiteral("unit 1: s.js"));
+    QCOMPARE(editor->path(), script);
+    QVERIFY(edit->toPlainText().startsWith(QStringLiteral("// answers 111\nfunction onRequest")));
+    QVERIFY(!edit->isReadOnly());
+    // The editor beside the log.
+    QVERIFY(edit->isVisible());
+    QVERIFY(scripts->findChild<QPlainTextEdit *>(QStringLiteral("simScriptLog"))->isVisible());
+
+    // Highlighted in the light theme's colours, each readable on the editor's background.
+    using Kind = ScriptHighlighter::Kind;
+    const auto checkContrast = [&](const char *theme) {
+        const QColor base = edit->palette().color(QPalette::Base);
+        for (Kind kind : {Kind::Keyword, Kind::String, Kind::Number, Kind::Comment}) {
+            const double ratio = windowfit::contrast(ScriptHighlighter::format(kind).foreground().color(), base);
+            QVERIFY2(ratio >= 4.5, qPrintable(QStringLiteral("%1: kind %2 at %3:1").arg(QLatin1String(theme)).arg(int(kind)).arg(ratio)));
+        }
+    };
+    QCOMPARE(colourAt(edit, 0, 3), ScriptHighlighter::format(Kind::Comment).foreground().color());
+    QCOMPARE(colourAt(edit, 1, 0), ScriptHighlighter::format(Kind::Keyword).foreground().color());
+    QCOMPARE(colourAt(edit, 1, 29), ScriptHighlighter::format(Kind::String).foreground().color()); // "asked"
+    QCOMPARE(colourAt(edit, 1, 38), ScriptHighlighter::format(Kind::Number).foreground().color()); // 0x10
+    QVERIFY(!colourAt(edit, 1, 10).isValid());                                                    // onRequest
+    checkContrast("light");
+    const QColor lightKeyword = colourAt(edit, 1, 0);
+    QVERIFY(guitest::saveShot(&panel, QStringLiteral("sim-script-editor-light.png")));
+
+    // Saved with Ctrl+S: the simulator answers as the saved script says.
+    QCOMPARE(readRegister0(port), 111);
+    typeOver(edit, QStringLiteral("function onRequest(r) { return [444]; }\n"));
+    QVERIFY(editor->saveButton()->isEnabled());
+    QTest::keyClick(edit, Qt::Key_S, Qt::ControlModifier);
+    QCOMPARE(QString::fromUtf8([&] { QFile f(script); f.open(QIODevice::ReadOnly); return f.readAll(); }()),
+             QStringLiteral("function onRequest(r) { return [444]; }\n"));
+    QVERIFY(!editor->saveButton()->isEnabled());
+    QTRY_VERIFY_WITH_TIMEOUT(scripts->logText().contains(QLatin1String("unit 1: s.js  reloaded")), 5000);
+    QCOMPARE(readRegister0(port), 444);
+
+    // A broken save: the error's line marked, the cursor on it, the status line saying it.
+    typeOver(edit, QStringLiteral("function onRequest(r) {\n  return [333;\n}\n"));
+    QVERIFY(editor->save());
+    QTRY_COMPARE_WITH_TIMEOUT(editor->errorLine(), 2, 5000);
+    QCOMPARE(edit->extraSelections().size(), 1);
+    QCOMPARE(edit->extraSelections().first().cursor.blockNumber(), 1);
+    QCOMPARE(edit->textCursor().blockNumber(), 1);
+    QVERIFY2(editor->statusText().startsWith(QStringLiteral("Line 2: ")) && editor->statusText().contains(QStringLiteral("SyntaxError")),
+             qPrintable(editor->statusText()));
+    QCOMPARE(readRegister0(port), 5); // the profile answers meanwhile
+
+    // In the dark theme: other colours, still readable, the mark still there.
+    Theme::apply(Theme::Choice::Dark);
+    QCoreApplication::processEvents();
+    // Rehighlighted: "function" and 333 of the broken script in the dark theme's colours.
+    QCOMPARE(colourAt(edit, 0, 0), ScriptHighlighter::format(Kind::Keyword).foreground().color());
+    QCOMPARE(colourAt(edit, 1, 10), ScriptHighlighter::format(Kind::Number).foreground().color());
+    QVERIFY(colourAt(edit, 0, 0) != lightKeyword);
+    checkContrast("dark");
+    QCOMPARE(edit->extraSelections().size(), 1);
+    QVERIFY(guitest::saveShot(&panel, QStringLiteral("sim-script-editor-dark.png")));
+    Theme::apply(Theme::Choice::Light);
+
+    // Fixed by another program: the editor follows the file, the simulator loads it, the mark goes.
+    writeFile(script, "function onRequest(r) { return [555]; }\n");
+    QTRY_COMPARE_WITH_TIMEOUT(edit->toPlainText(), QStringLiteral("function onRequest(r) { return [555]; }\n"), 5000);
+    QTRY_COMPARE_WITH_TIMEOUT(editor->errorLine(), 0, 5000);
+    QVERIFY(edit->extraSelections().isEmpty());
+    QCOMPARE(readRegister0(port), 555);
+
+    // Edits of its own are kept when the file changes under them, and said.
+    typeOver(edit, QStringLiteral("// mine\n"));
+    writeFile(script, "function onRequest(r) { return [666]; }\n");
+    QTRY_VERIFY_WITH_TIMEOUT(editor->statusText().contains(QStringLiteral("changed on disk")), 5000);
+    QCOMPARE(edit->toPlainText(), QStringLiteral("// mine\n"));
+    panel.stopSimulator(host);
+    QVERIFY(edit->toPlainText().isEmpty());
 }
 
 QTEST_MAIN(TestSimScriptPanel)
