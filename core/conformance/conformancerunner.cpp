@@ -65,6 +65,8 @@ QString ConformanceRunner::skipReason(const ConformanceCheck &check, const Confo
             return QStringLiteral("the device answers function %1 with exception 01: it does not support it").arg(fc);
         case SurveyedSupport::Silent:
             return QStringLiteral("the device did not answer function %1 at all (see exception.unsupported-function)").arg(fc);
+        case SurveyedSupport::NotSurveyed:
+            return QStringLiteral("not surveyed (the link closed each time the survey asked about function %1)").arg(fc);
         case SurveyedSupport::Supported:
         case SurveyedSupport::Unknown:
             break;
@@ -116,11 +118,23 @@ ConformanceResult ConformanceRunner::run(const std::function<void(const CheckRes
                 break;
             }
             const qint64 t0 = monotonicNowNs();
+            const int unreachableBefore = link.unreachableCount();
             const QString why = skipReason(check, ctx);
-            if (!why.isEmpty())
+            if (!result.linkLostAt.isEmpty())
+                r.skip(QStringLiteral("not judged: the link was lost at check %1").arg(result.linkLostAt));
+            else if (!why.isEmpty())
                 r.skip(why);
             else
                 check.run(ctx, r);
+            if (link.unreachableCount() > unreachableBefore) {
+                // A request of this check could not even be sent: its evidence is incomplete, and
+                // the device is gone. Said once here; the checks after it are not run.
+                result.linkLostAt = check.id;
+                result.linkLostMessage = link.lastProblem();
+                r.verdict = CheckVerdict::Error;
+                r.sentence = QStringLiteral("not judged: the link was lost during this check (%1); the checks after it are not run")
+                                 .arg(link.lastProblem());
+            }
             r.elapsedNs = monotonicNowNs() - t0;
             result.checks.append(r);
             if (each)
