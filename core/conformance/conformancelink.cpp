@@ -59,6 +59,8 @@ ConformanceExchange ConformanceLink::exchange(const QByteArray &adu, int timeout
         m_lastProblem = e.transaction.problem;
     if (e.unreachable())
         ++m_unreachable;
+    else if (e.linkFailed())
+        ++m_dropped;
     return e;
 }
 

@@ -77,6 +77,8 @@ public:
     // Exchanges whose request could not be written (ConformanceExchange::unreachable), and the
     // last one's problem: the runner's sign that the device is gone.
     [[nodiscard]] int unreachableCount() const { return m_unreachable; }
+    // Exchanges the link dropped under after the request was written (the connection closed).
+    [[nodiscard]] int droppedCount() const { return m_dropped; }
     [[nodiscard]] const QString &lastProblem() const { return m_lastProblem; }
     void setTrafficLog(TrafficLog *log);
     // Calls each with the frames the engine logs (ProbeChannel::framesLogged).
@@ -90,6 +92,7 @@ private:
     QList<TrafficFrame> m_in;
     int m_opens = 0;
     int m_unreachable = 0;
+    int m_dropped = 0;
     QString m_lastProblem;
     QList<QPair<qsizetype, qsizetype>> m_excused;
 };
