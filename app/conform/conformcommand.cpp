@@ -1,8 +1,10 @@
 #include "conform/conformcommand.h"
 
 #include "common/cli.h"
+#include "common/framelog.h"
 #include "common/interruptwatcher.h"
 #include "common/outputpath.h"
+#include "common/printoptions.h"
 #include "common/recordoptions.h"
 #include "common/targetoptions.h"
 
@@ -116,6 +118,8 @@ int runConform(const QStringList &arguments)
     parser.addOptions({unit, profile, readable, missing, writable, only, samples, json, junit, html, pdf, list});
     const RecordOptions recordOptions;
     recordOptions.addTo(parser);
+    const PrintOptions printOptions(false);
+    printOptions.addTo(parser);
     if (!parser.parse(arguments)) {
         err << "mbscope conform: " << parser.errorText() << '\n';
         return ExitUsage;
@@ -205,6 +209,9 @@ int runConform(const QStringList &arguments)
     RecordSettings record;
     if (!recordOptions.read(parser, QStringLiteral("conform"), record, err, parser.isSet(junit) || parser.isSet(html) || parser.isSet(pdf)))
         return ExitUsage;
+    PrintSettings print;
+    if (!printOptions.read(parser, QStringLiteral("conform"), force, print, err))
+        return ExitUsage;
     TrafficRecording recording;
     TrafficMetadata metadata = commandMetadata(QStringLiteral("conform"), arguments);
     metadata.target = settings.url.toString();
@@ -215,6 +222,11 @@ int runConform(const QStringList &arguments)
     ConformanceRunner runner(settings);
     if (recording.isOpen())
         runner.setTrafficLog(recording.log());
+    FrameLog frames;
+    if (!openFrameLog(frames, print, QStringLiteral("conform"), err))
+        return ExitUsage;
+    if (frames.isOpen())
+        runner.setFramesLogged([&frames](const QList<TrafficFrame> &batch, const QString &link) { frames.addFrames(batch, link); });
     InterruptWatcher interrupt;
     QObject::connect(&interrupt, &InterruptWatcher::interrupted, &interrupt, [&runner] { runner.stop(); });
     if (!asJson) {
@@ -228,6 +240,7 @@ int runConform(const QStringList &arguments)
     }
     const ConformanceResult result = runner.run();
     finishRecording(recording, err);
+    frames.close();
     if (result.linkFailed) {
         err << "mbscope conform: " << result.linkMessage << '\n';
         if (!asJson)

@@ -1,10 +1,13 @@
 #include "map/infercommand.h"
 
 #include "common/cli.h"
+#include "common/framelog.h"
 #include "map/inferreport.h"
 #include "common/interruptwatcher.h"
 #include "common/outputpath.h"
+#include "common/printoptions.h"
 #include "common/progressline.h"
+#include "common/recordoptions.h"
 #include "scan/scanoptions.h"
 #include "common/targetoptions.h"
 
@@ -12,6 +15,7 @@
 #include "inference/blockinferrer.h"
 #include "inference/blocksampler.h"
 #include "inference/inferencedraft.h"
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QFile>
@@ -92,8 +96,11 @@ int runInfer(const QStringList &arguments)
     const QCommandLineOption outOpt(QStringLiteral("out"),
                                     QStringLiteral("Write the guesses as a device profile draft (docs/profiles.md) to FILE."),
                                     QStringLiteral("FILE"));
-    const QCommandLineOption forceOpt = OutputPath::forceOption();
-    parser.addOptions({unitOpt, blockOpt, addressesOpt, tablesOpt, samplesOpt, durationOpt, intervalOpt, jsonOpt, outOpt, forceOpt});
+    parser.addOptions({unitOpt, blockOpt, addressesOpt, tablesOpt, samplesOpt, durationOpt, intervalOpt, jsonOpt, outOpt});
+    const RecordOptions recordOptions; // --record, and --force (for --out too)
+    recordOptions.addTo(parser);
+    const PrintOptions printOptions(false);
+    printOptions.addTo(parser);
     if (!parser.parse(arguments)) {
         err << "mbscope infer: " << parser.errorText() << '\n';
         return ExitUsage;
@@ -143,15 +150,31 @@ int runInfer(const QStringList &arguments)
     }
     const QString outPath = parser.value(outOpt);
     if (!outPath.isEmpty()) {
-        const QString problem = OutputPath::problem(QStringLiteral("--out"), outPath, QStringLiteral("--out FILE"), parser.isSet(forceOpt));
+        const QString problem = OutputPath::problem(QStringLiteral("--out"), outPath, QStringLiteral("--out FILE"), parser.isSet(QStringLiteral("force")));
         if (!problem.isEmpty()) {
             err << "mbscope infer: " << problem << '\n';
             return ExitUsage;
         }
     }
 
+    RecordSettings record;
+    if (!recordOptions.read(parser, QStringLiteral("infer"), record, err, !outPath.isEmpty()))
+        return ExitUsage;
+    PrintSettings print;
+    if (!printOptions.read(parser, QStringLiteral("infer"), parser.isSet(QStringLiteral("force")), print, err))
+        return ExitUsage;
+    TrafficRecording recording;
+    TrafficMetadata metadata = commandMetadata(QStringLiteral("infer"), arguments);
+    metadata.target = target.url.toString();
+    if (!openRecording(recording, record, metadata, QStringLiteral("infer"), err))
+        return ExitUsage;
+    FrameLog frames;
+    if (!openFrameLog(frames, print, QStringLiteral("infer"), err))
+        return ExitUsage;
+
     InterruptWatcher interrupts;
     ProgressLine line;
+    frames.setProgressLine(&line);
     int maxQuantity = 125;
     if (blocks.isEmpty()) {
         scan.url = target.url;
@@ -166,10 +189,16 @@ int runInfer(const QStringList &arguments)
             return ExitUsage;
         }
         MapScanner scanner;
+        if (recording.isOpen())
+            scanner.channel()->setTrafficLog(recording.log());
+        QObject::connect(scanner.channel(), &ProbeChannel::framesLogged, &frames, &FrameLog::addFrames);
         QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &MapScanner::stop);
         line.show(QStringLiteral("mapping unit %1 (addresses %2-%3)").arg(unit).arg(scan.firstAddress).arg(scan.lastAddress));
         const std::optional<RegisterMap> map = scanner.run(scan);
         line.clear();
+        if (recording.isOpen())
+            scanner.channel()->setTrafficLog(nullptr); // its last frames, before the sampler's
+
         if (!map)
             return ExitUsage;
         SampleSettings found;
@@ -177,6 +206,7 @@ int runInfer(const QStringList &arguments)
         maxQuantity = found.maxQuantity;
         blocks = found.blocks;
         if (blocks.isEmpty()) {
+            finishRecording(recording, err);
             if (scanner.end() == ScanEnd::LinkError) {
                 err << "mbscope infer: the link failed: " << target.url.toString() << " cannot be reached\n";
                 return ExitLinkError;
@@ -197,12 +227,19 @@ int runInfer(const QStringList &arguments)
     settings.timeoutMs = target.timeoutMs;
     settings.maxQuantity = maxQuantity;
     BlockSampler sampler;
+    if (recording.isOpen())
+        sampler.channel()->setTrafficLog(recording.log());
+    QObject::connect(sampler.channel(), &ProbeChannel::framesLogged, &frames, &FrameLog::addFrames);
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &sampler, &BlockSampler::stop);
     QObject::connect(&sampler, &BlockSampler::roundDone, &sampler, [&](int done, int total) {
         line.show(QStringLiteral("sample %1 of %2  (Ctrl-C stops and infers from what was read)").arg(done).arg(total));
     });
     const QList<BlockSamples> sampled = sampler.run(settings);
     line.clear();
+    if (recording.isOpen())
+        sampler.channel()->setTrafficLog(nullptr);
+    finishRecording(recording, err);
+    frames.close();
 
     QList<InferredBlock> inferred;
     QList<ValueGuess> all;

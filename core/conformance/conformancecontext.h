@@ -17,6 +17,7 @@ enum class SurveyedSupport : quint8 {
     Supported,   // a normal answer, or an exception other than 01
     Unsupported, // exception 01
     Silent,      // no answer at all to a well-formed request
+    NotSurveyed, // the link closed each time the survey asked: nothing is known, its checks are skipped
 };
 
 // What a check works with: the settings, the link, and what the survey learnt of the device.

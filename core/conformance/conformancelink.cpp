@@ -55,6 +55,12 @@ ConformanceExchange ConformanceLink::exchange(const QByteArray &adu, int timeout
         e.transaction.status = TransactionStatus::LinkError;
         e.transaction.problem = QStringLiteral("the request could not be sent");
     }
+    if (e.linkFailed())
+        m_lastProblem = e.transaction.problem;
+    if (e.unreachable())
+        ++m_unreachable;
+    else if (e.linkFailed())
+        ++m_dropped;
     return e;
 }
 

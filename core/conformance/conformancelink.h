@@ -25,6 +25,9 @@ struct ConformanceExchange {
 
     [[nodiscard]] bool silent() const { return answer.isEmpty(); }
     [[nodiscard]] bool linkFailed() const { return transaction.status == TransactionStatus::LinkError; }
+    // The link failed before the request was written (no connection could be opened, the port is
+    // gone): the device was not asked at all.
+    [[nodiscard]] bool unreachable() const { return linkFailed() && transaction.writeNs == 0; }
 };
 
 // The battery's way to the device: frames sent exactly as built, through the engine (a
@@ -71,6 +74,12 @@ public:
     void closeLink();
     // Connections (or ports) opened so far: a device that closes after each answer makes one per request.
     [[nodiscard]] int opens() const { return m_opens; }
+    // Exchanges whose request could not be written (ConformanceExchange::unreachable), and the
+    // last one's problem: the runner's sign that the device is gone.
+    [[nodiscard]] int unreachableCount() const { return m_unreachable; }
+    // Exchanges the link dropped under after the request was written (the connection closed).
+    [[nodiscard]] int droppedCount() const { return m_dropped; }
+    [[nodiscard]] const QString &lastProblem() const { return m_lastProblem; }
     void setTrafficLog(TrafficLog *log);
     // Calls each with the frames the engine logs (ProbeChannel::framesLogged).
     void onFramesLogged(const std::function<void(const QList<TrafficFrame> &, const QString &)> &each);
@@ -82,6 +91,9 @@ private:
     ProbeChannel *m_channel;
     QList<TrafficFrame> m_in;
     int m_opens = 0;
+    int m_unreachable = 0;
+    int m_dropped = 0;
+    QString m_lastProblem;
     QList<QPair<qsizetype, qsizetype>> m_excused;
 };
 

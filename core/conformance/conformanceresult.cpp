@@ -38,6 +38,10 @@ QString ConformanceResult::verdictSentence() const
         return QStringLiteral("every mandatory check passed");
     if (linkFailed)
         return QStringLiteral("not tested: ") + linkMessage;
+    if (!linkLostAt.isEmpty())
+        return QStringLiteral("cut short: the link was lost at check %1 (%2): %3 check(s) after it not judged")
+            .arg(linkLostAt, linkLostMessage)
+            .arg(notJudged());
     if (interrupted)
         return QStringLiteral("interrupted");
     return QStringLiteral("%1 mandatory check(s) failed").arg(failed(CheckLevel::Mandatory) + count(CheckVerdict::Error));
@@ -91,6 +95,7 @@ const char *ConformanceResult::supportName(SurveyedSupport support)
     case SurveyedSupport::Unsupported: return "unsupported";
     case SurveyedSupport::Silent: return "silent";
     case SurveyedSupport::Unknown: return "unknown";
+    case SurveyedSupport::NotSurveyed: return "not surveyed";
     }
     return "";
 }
@@ -100,6 +105,17 @@ int ConformanceResult::count(CheckVerdict verdict) const
     int n = 0;
     for (const CheckResult &c : checks)
         n += c.verdict == verdict ? 1 : 0;
+    return n;
+}
+
+int ConformanceResult::notJudged() const
+{
+    int n = 0;
+    bool after = false;
+    for (const CheckResult &c : checks) {
+        n += after ? 1 : 0;
+        after = after || (!linkLostAt.isEmpty() && c.id == linkLostAt);
+    }
     return n;
 }
 
@@ -164,6 +180,13 @@ QJsonObject ConformanceResult::toJson() const
     o.insert(QStringLiteral("checks"), list);
     if (linkFailed)
         o.insert(QStringLiteral("link_error"), linkMessage);
+    if (!linkLostAt.isEmpty()) {
+        QJsonObject lost;
+        lost.insert(QStringLiteral("check"), linkLostAt);
+        lost.insert(QStringLiteral("problem"), linkLostMessage);
+        lost.insert(QStringLiteral("not_judged"), notJudged());
+        o.insert(QStringLiteral("link_lost"), lost);
+    }
     o.insert(QStringLiteral("interrupted"), interrupted);
     return o;
 }

@@ -65,6 +65,8 @@ QString ConformanceRunner::skipReason(const ConformanceCheck &check, const Confo
             return QStringLiteral("the device answers function %1 with exception 01: it does not support it").arg(fc);
         case SurveyedSupport::Silent:
             return QStringLiteral("the device did not answer function %1 at all (see exception.unsupported-function)").arg(fc);
+        case SurveyedSupport::NotSurveyed:
+            return QStringLiteral("not surveyed (the link closed each time the survey asked about function %1)").arg(fc);
         case SurveyedSupport::Supported:
         case SurveyedSupport::Unknown:
             break;
@@ -103,6 +105,7 @@ ConformanceResult ConformanceRunner::run(const std::function<void(const CheckRes
         result.linkFailed = true;
         result.linkMessage = survey.message;
     } else {
+        bool droppedInPrevious = false;
         for (const ConformanceCheck &check : battery()) {
             if (!m_settings.selected(check.id))
                 continue;
@@ -116,11 +119,32 @@ ConformanceResult ConformanceRunner::run(const std::function<void(const CheckRes
                 break;
             }
             const qint64 t0 = monotonicNowNs();
+            const int unreachableBefore = link.unreachableCount();
+            const int droppedBefore = link.droppedCount();
             const QString why = skipReason(check, ctx);
-            if (!why.isEmpty())
+            if (!result.linkLostAt.isEmpty())
+                r.skip(QStringLiteral("not judged: the link was lost at check %1").arg(result.linkLostAt));
+            else if (!why.isEmpty())
                 r.skip(why);
             else
                 check.run(ctx, r);
+            if (link.unreachableCount() > unreachableBefore) {
+                // A request of this check could not even be sent: its evidence is incomplete, and
+                // the device is gone. Said once; the checks after it are not run. When the
+                // connection closed under the previous check's last request, the device died
+                // there: that check is the one not judged, and this one follows it.
+                CheckResult *lost = &r;
+                if (droppedInPrevious && !result.checks.isEmpty())
+                    lost = &result.checks.last();
+                result.linkLostAt = lost->id;
+                result.linkLostMessage = link.lastProblem();
+                lost->verdict = CheckVerdict::Error;
+                lost->sentence = QStringLiteral("not judged: the link was lost during this check (%1); the checks after it are not run")
+                                     .arg(link.lastProblem());
+                if (lost != &r)
+                    r.skip(QStringLiteral("not judged: the link was lost at check %1").arg(result.linkLostAt));
+            }
+            droppedInPrevious = link.droppedCount() > droppedBefore;
             r.elapsedNs = monotonicNowNs() - t0;
             result.checks.append(r);
             if (each)

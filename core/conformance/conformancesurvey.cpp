@@ -10,6 +10,9 @@ namespace mbscope {
 
 namespace {
 
+constexpr int kAskAgain = 2;           // asks after the first when the link drops under a request
+constexpr int kReconnectWaitMs = 300;  // before asking again a device that could not be reached
+
 QString code(quint8 function)
 {
     return QString::number(function, 16).toUpper().rightJustified(2, QLatin1Char('0'));
@@ -38,6 +41,17 @@ QString codes(const QList<quint8> &functions)
     return out.join(QLatin1String(", "));
 }
 
+// "; not surveyed (the link closed): 08, 2B", or empty: what a pass of the survey's checks leaves out.
+QString unsurveyedNote(const ConformanceContext &ctx)
+{
+    QList<quint8> out;
+    for (quint8 f : ConformanceSurvey::functions()) {
+        if (ctx.support(f) == SurveyedSupport::NotSurveyed)
+            out.append(f);
+    }
+    return out.isEmpty() ? QString() : QStringLiteral("; not surveyed (the link closed): %1").arg(codes(out));
+}
+
 } // namespace
 
 QList<quint8> ConformanceSurvey::functions()
@@ -50,14 +64,26 @@ ConformanceSurvey::Outcome ConformanceSurvey::run(ConformanceContext &ctx)
     Outcome outcome;
     bool answered = false;
     for (quint8 f : functions()) {
-        const ConformanceExchange e = ctx.ask(surveyPdu(f, ctx));
+        ConformanceExchange e = ctx.ask(surveyPdu(f, ctx));
+        if (e.linkFailed() && outcome.exchanges.isEmpty()) {
+            outcome.exchanges.append(e);
+            outcome.linkFailed = true;
+            outcome.message = e.transaction.problem;
+            return outcome;
+        }
+        // The link dropped under the request: ask again on a new connection (a device restarting
+        // comes back), waiting a little while it cannot be reached.
+        for (int again = 0; again < kAskAgain && e.linkFailed(); ++again) {
+            if (e.unreachable())
+                (void)ctx.link().listen(kReconnectWaitMs);
+            e = ctx.ask(surveyPdu(f, ctx));
+        }
         outcome.exchanges.append(e);
         if (e.linkFailed()) {
-            if (!answered && outcome.exchanges.size() == 1) {
-                outcome.linkFailed = true;
-                outcome.message = e.transaction.problem;
-                return outcome;
-            }
+            // Sent each time and closed each time: the device's own reply to this function (its
+            // checks judge it). Not even sent: nothing is known of it, and its checks are skipped.
+            if (e.unreachable())
+                ctx.setSupport(f, SurveyedSupport::NotSurveyed);
             continue;
         }
         const Transaction &t = e.transaction;
@@ -114,8 +140,9 @@ QList<ConformanceCheck> ConformanceSurvey::checks()
                 refused.append(f);
         }
         if (quiet.isEmpty()) {
-            res.pass(refused.isEmpty() ? QStringLiteral("the device supports every function surveyed")
-                                       : QStringLiteral("exception 01 for %1").arg(codes(refused)));
+            res.pass((refused.isEmpty() ? QStringLiteral("the device supports every function surveyed")
+                                        : QStringLiteral("exception 01 for %1").arg(codes(refused)))
+                     + unsurveyedNote(ctx));
             return;
         }
         res.fail(QStringLiteral("the device answers other requests but gave no answer at all to %1 %2; %3 requires "
@@ -144,7 +171,8 @@ QList<ConformanceCheck> ConformanceSurvey::checks()
                 extra.append(f);
         }
         if (missing.isEmpty() && extra.isEmpty()) {
-            res.pass(QStringLiteral("every function surveyed is supported exactly as %1 promises").arg(ctx.settings().promiseSource));
+            res.pass(QStringLiteral("every function surveyed is supported exactly as %1 promises").arg(ctx.settings().promiseSource)
+                     + unsurveyedNote(ctx));
             return;
         }
         QStringList why;

@@ -14,6 +14,8 @@ class ConformanceContext;
 // readable address, 07, 08/00 return query data, 0B, 0C, 11, 2B/0E basic identification), so
 // that support is read from the device's answers (exception 01: not supported; an answer or any
 // other exception: supported; nothing: silent) and checks of what it does not support are skipped.
+// A request the link dropped under is asked again on a new connection; a function the device
+// could still not be asked about (not even sent) is NotSurveyed, and its checks are skipped.
 // Its checks judge the survey itself: silence instead of exception 01, and a profile's promise.
 class ConformanceSurvey
 {

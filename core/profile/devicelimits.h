@@ -30,6 +30,7 @@ struct DeviceLimits {
     ExtraClient extraClients = ExtraClient::Refuse;
     QMap<quint8, int> maxQuantity;          // function code -> most registers or bits per request
     double warmUpMs = 0;                    // requests this soon after a connection opens are ignored
+    bool answersBroadcasts = false;         // "answersBroadcasts": serial lines answer unit 0 (a deviation)
 
     [[nodiscard]] bool limitsRequests() const { return minGapMs > 0 || !maxQuantity.isEmpty() || warmUpMs > 0; }
     [[nodiscard]] static QString unknownUnitName(UnknownUnit policy); // "first", "exception", "silent", "auto"

@@ -73,6 +73,7 @@ DeviceLimits DeviceLimitsReader::read(JsonReader &reader, const QJsonObject &roo
         {"first", L::UnknownUnit::FirstUnit}, {"exception", L::UnknownUnit::Exception},
         {"silent", L::UnknownUnit::Silent}, {"auto", L::UnknownUnit::Auto}};
     limits.unknownUnit = readChoice(reader, root, QString(), "unknownUnit", kUnknown, L::UnknownUnit::Auto);
+    limits.answersBroadcasts = reader.boolean(root, QString(), "answersBroadcasts").value_or(false);
 
     const auto o = reader.object(root, QString(), "limits");
     if (!o)

@@ -8,7 +8,7 @@ namespace mbscope {
 
 class JsonReader;
 
-// Reads a profile's "unknownUnit" and "limits" (docs/profiles.md, "Device limits") from the
+// Reads a profile's "unknownUnit", "answersBroadcasts" and "limits" (docs/profiles.md, "Device limits") from the
 // profile's top-level object, recording problems in the reader.
 class DeviceLimitsReader
 {

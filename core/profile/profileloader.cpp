@@ -197,7 +197,7 @@ ProfileLoadResult ProfileLoader::parse(const QByteArray &json, const QString &so
     JsonReader reader(&result.problems, source);
     const QString top;
     reader.checkKeys(*root, top, {"$schema", "name", "description", "endpoints", "seed", "units", "faults",
-                                    "unknownUnit", "limits", "delimited"});
+                                    "unknownUnit", "answersBroadcasts", "limits", "delimited"});
 
     DeviceProfile profile;
     profile.source = source;

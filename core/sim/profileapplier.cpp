@@ -94,6 +94,7 @@ SimEndpointOptions ProfileApplier::endpointOptions(const DeviceProfile &profile)
     if (profile.limits.maxClients > 0)
         options.maxConnections = profile.limits.maxClients;
     options.dropOldestConnection = profile.limits.extraClients == DeviceLimits::ExtraClient::DropOldest;
+    options.answerBroadcasts = profile.limits.answersBroadcasts;
     return options;
 }
 

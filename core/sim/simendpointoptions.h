@@ -18,6 +18,10 @@ struct SimEndpointOptions {
     // MBAP framings: unit id 0 and 0xFF address "the server itself" (V1.0b 4.4.1.1): when no unit
     // has that id, the lowest unit id of the endpoint answers.
     bool directUnitIds = true;
+    // Serial framings: a broadcast (unit 0) answered by the endpoint's first unit, as a request
+    // to it, the answer carrying unit 0: the deviation Serial Line V1.02, 2.1 forbids (a profile's
+    // "answersBroadcasts", for testing masters and the conformance battery).
+    bool answerBroadcasts = false;
     int maxConnections = 64;      // stream endpoints: more are accepted and closed at once; 0: no limit
     // Stream endpoints at maxConnections: a new client knocks the oldest off instead of being refused.
     bool dropOldestConnection = false;

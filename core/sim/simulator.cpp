@@ -365,7 +365,7 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         SimProcessor::noteBusMessage(*slot->unit);
 
     const quint8 unitId = parts.unitId;
-    if (serial && unitId == 0) {
+    if (serial && unitId == 0 && !(endpoint->options().answerBroadcasts && !units.isEmpty())) {
         for (Slot *slot : units)
             slot->processor->process(parts.pdu, true);
         log(endpoint, peer, 0, adu, {}, SimLogEntry::Verdict::NoAnswer,
@@ -377,6 +377,8 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
         if (slot->unit->id() == unitId)
             target = slot;
     }
+    if (!target && serial && unitId == 0 && endpoint->options().answerBroadcasts && !units.isEmpty())
+        target = units.first(); // a deviation asked for: the broadcast answered as a request
     if (!target && !serial && endpoint->options().directUnitIds && (unitId == 0 || unitId == 0xFF) && !units.isEmpty())
         target = units.first();
     // Many TCP servers answer whatever unit id is asked as their one device.

@@ -126,6 +126,11 @@ void TestCliFrameLog::sameFramesAsTheJournal_data()
                                  << false << 10;
     QTest::newRow("run") << sl({"run", "SOURCE/docs/examples/rosrao-gamma.mbscope.json", "--target", "RTU"}) << true << 10;
     QTest::newRow("watch") << sl({"watch", "DIR/watches.mbscope.json", "--count", "2", "--quiet"}) << false << 8;
+    QTest::newRow("conform") << sl({"conform", "--target", "TARGET", "--only", "exception,read.03,mbap", "--timeout", "300ms", "--samples", "3"})
+                             << true << 20;
+    QTest::newRow("infer, map scan then samples") << sl({"infer", "TARGET", "--addresses", "115-130", "--tables", "3", "--samples",
+                                                        "3", "--interval", "10ms"})
+                                                  << true << 8;
     QTest::newRow("replay") << sl({"replay", "DIR/replayed.mbscope.journal", "--target", "TARGET", "--speed", "max"}) << true << 4;
 }
 

@@ -2,6 +2,7 @@
 """A Modbus server that misbehaves on purpose, for mbscope's fault tests.
 
   fault_server.py tcp|rtu-tcp [--port 0] [--unit 1] [--fault NAME[=PARAM]] [--lifetime S]
+                  [--drop-at N[,N...]] [--die-at N]
 
 Binds 127.0.0.1 (port 0 lets the system choose) and prints "LISTENING 127.0.0.1:PORT" on stdout.
 tcp speaks MBAP (Messaging on TCP/IP V1.0b); rtu-tcp speaks RTU frames with CRC over the TCP stream
@@ -37,6 +38,11 @@ prints "SERVED N NAME" (N counts requests from 1) so tests can tell when a slow 
   short             a read answer holding one register fewer than asked (byte count consistent)
   echo              the request's own bytes sent back, whatever its unit (a 2-wire adapter that
                     hears itself)
+
+A device that drops or dies. --drop-at N[,N...] closes the connection instead of answering request
+N (counted as SERVED counts them) and serves on (a device restarting); --die-at N closes the
+connection instead of answering request N, and the listening port with it: every later connection
+is refused (a device gone), while the process waits for its standard input to close.
 
 The process exits when its standard input closes (the test that started it died) or after --lifetime
 seconds.
@@ -167,9 +173,13 @@ class Connection(asyncio.Protocol):
 
     def connection_made(self, transport):
         self.transport = transport
+        self.server.connections.add(self)
+        if self.server.dead:
+            transport.close()
         self.worker = asyncio.create_task(self.work())
 
     def connection_lost(self, exc):
+        self.server.connections.discard(self)
         if self.worker is not None:
             self.worker.cancel()
 
@@ -221,6 +231,13 @@ class Connection(asyncio.Protocol):
         faults = self.server.faults
         faults.served += 1
         number = faults.served
+        if number in self.server.drop_at or number == self.server.die_at:
+            died = number == self.server.die_at
+            say(f"SERVED {number} {'die' if died else 'drop'}")
+            self.transport.close()
+            if died:
+                self.server.die()
+            return
         if faults.standing[0] == "echo" and faults.once is None:
             self.transport.write(frame)
             say(f"SERVED {number} echo")
@@ -277,12 +294,24 @@ class Server:
         self.unit = unit
         self.faults = Faults(mode, ("none", 0))
         self.registers = Registers()
+        self.drop_at = set()
+        self.die_at = 0
+        self.dead = False
+        self.listener = None
+        self.connections = set()
         if standing:
             words = standing.replace("=", " ").split()
             fault, error = self.faults.parse(words)
             if error:
                 raise SystemExit(f"fault_server.py: --fault: {error}")
             self.faults.standing = fault
+
+    def die(self):
+        self.dead = True
+        if self.listener is not None:
+            self.listener.close()
+        for connection in list(self.connections):
+            connection.transport.close()
 
     def command(self, line):
         words = line.split()
@@ -305,7 +334,10 @@ class Server:
 async def main_async(args):
     loop = asyncio.get_running_loop()
     server = Server(args.mode, args.unit, args.fault)
+    server.drop_at = {int(n) for n in args.drop_at.split(",") if n} if args.drop_at else set()
+    server.die_at = args.die_at
     listener = await loop.create_server(lambda: Connection(server), args.host, args.port)
+    server.listener = listener
     say(f"LISTENING {args.host}:{listener.sockets[0].getsockname()[1]}")
 
     done = asyncio.Event()
@@ -335,6 +367,8 @@ def main():
     parser.add_argument("--unit", type=int, default=1)
     parser.add_argument("--fault", help="fault for every request, NAME or NAME=PARAM")
     parser.add_argument("--lifetime", type=float, default=900.0)
+    parser.add_argument("--drop-at", help="requests (1, 2...) whose connection is closed instead of answered")
+    parser.add_argument("--die-at", type=int, default=0, help="the request at which the device dies (port closed)")
     args = parser.parse_args()
     try:
         asyncio.run(main_async(args))

@@ -208,6 +208,13 @@ void ConformanceDialog::run(const ConformanceSettings &settings)
     m_runner.reset();
     m_running = false;
     m_result = result;
+    if (!result.linkLostAt.isEmpty()) {
+        // The check the device died under is re-judged once the next request finds it gone: the
+        // rows shown as they came give way to the scorecard.
+        m_model->clear();
+        for (const CheckResult &c : result.checks)
+            m_model->append(c);
+    }
     if (result.linkFailed) {
         ScanForm::showProblem(m_status, tr("Not tested: %1").arg(result.linkMessage));
     } else {

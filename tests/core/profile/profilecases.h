@@ -53,7 +53,7 @@ inline void addErrorRows()
     row("name empty", R"({"name": " ", "units": [{"id": 1}]})", "name", S("the name is empty"));
     row("name a number", R"({"name": 5, "units": [{"id": 1}]})", "name", S("expected a string, found the number 5"));
     row("unknown top-level key", R"({"name": "t", "unit": [], "units": [{"id": 1}]})", "",
-        S("unknown key 'unit': expected one of $schema, name, description, endpoints, seed, units, faults, unknownUnit, "
+        S("unknown key 'unit': expected one of $schema, name, description, endpoints, seed, units, faults, unknownUnit, answersBroadcasts, "
           "limits, delimited"));
     row("units missing", R"({"name": "t"})", "", S("'units' is missing"));
     row("units empty", R"({"name": "t", "units": []})", "units", S("the list is empty: a profile has at least one unit"));
