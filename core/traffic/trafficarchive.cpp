@@ -1,6 +1,7 @@
 #include "trafficarchive.h"
 
-#include "journalbatch.h"
+#include "trafficjournal.h"
+
 
 #include <QtCore/QDir>
 #include <QtCore/QTemporaryFile>

@@ -1,5 +1,4 @@
 #include "trafficjournal.h"
-#include "journalbatch.h"
 
 #include "transport/monotonicclock.h"
 
