@@ -526,7 +526,7 @@
         <translation>Berjalan: boleh menulis pada %1…</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+30"/>
         <source>Not tested: %1</source>
         <translation>Tidak diuji: %1</translation>
     </message>
@@ -1125,12 +1125,12 @@
 <context>
     <name>mbscope::DissectionSummary</name>
     <message>
-        <location filename="../../ui/decode/dissectionsummary.cpp" line="+22"/>
+        <location filename="../../ui/decode/dissectionsummary.cpp" line="+17"/>
         <source>Frame</source>
         <translation>Frame</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>%1 request</source>
         <translation>permintaan %1</translation>
     </message>
@@ -2690,7 +2690,7 @@ dan %n lagi</numerusform>
         <translation>Kode pengecualian</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/dissector.cpp" line="+42"/>
+        <location filename="../../core/protocol/dissector.cpp" line="+34"/>
         <source>Frame too long</source>
         <translation>Frame terlalu panjang</translation>
     </message>
@@ -4649,7 +4649,7 @@ dan %n lagi</numerusform>
 <context>
     <name>mbscope::RawRequestEditor</name>
     <message>
-        <location filename="../../ui/compose/rawrequesteditor.cpp" line="+43"/>
+        <location filename="../../ui/compose/rawrequesteditor.cpp" line="+44"/>
         <source>Add MBAP header</source>
         <translation>Tambahkan header MBAP</translation>
     </message>
@@ -5234,7 +5234,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RegisterTrendPanel</name>
     <message>
-        <location filename="../../ui/analysis/registertrendpanel.cpp" line="+111"/>
+        <location filename="../../ui/analysis/registertrendpanel.cpp" line="+63"/>
         <source>Add &amp;selected register</source>
         <translation>Tambahkan register yang &amp;dipilih</translation>
     </message>
@@ -6025,12 +6025,12 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::RequestForm</name>
     <message>
-        <location filename="../../ui/compose/requestform.cpp" line="+121"/>
+        <location filename="../../ui/compose/requestformlayout.cpp" line="+47"/>
         <source>Read Device Identification</source>
         <translation>Baca Identifikasi Perangkat</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>ON (FF 00); unchecked: OFF (00 00)</source>
         <translation>ON (FF 00); tidak dicentang: OFF (00 00)</translation>
     </message>
@@ -6045,13 +6045,13 @@ Klik kanan untuk mengganti format</translation>
         <translation>Alamat</translation>
     </message>
     <message>
-        <location line="+0"/>
-        <location line="+159"/>
+        <location filename="../../ui/compose/requestform.cpp" line="+175"/>
+        <location filename="../../ui/compose/requestformlayout.cpp" line="+0"/>
         <source>Value</source>
         <translation>Nilai</translation>
     </message>
     <message>
-        <location line="-154"/>
+        <location filename="../../ui/compose/requestformlayout.cpp" line="+5"/>
         <source>Register values: decimal (0-65535 or -32768..-1) or hex (0x1234); coils: tick for ON</source>
         <translation>Nilai register: desimal (0-65535 atau -32768..-1) atau hex (0x1234); coil: centang untuk ON</translation>
     </message>
@@ -6081,19 +6081,19 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Fungsi:</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+106"/>
+        <location filename="../../ui/compose/requestform.cpp" line="-19"/>
+        <location filename="../../ui/compose/requestformlayout.cpp" line="+1"/>
         <source>&amp;Address:</source>
         <translation>&amp;Alamat:</translation>
     </message>
     <message>
-        <location line="-105"/>
-        <location line="+113"/>
+        <location line="+8"/>
+        <location filename="../../ui/compose/requestformlayout.cpp" line="+1"/>
         <source>&amp;Quantity:</source>
         <translation>&amp;Jumlah:</translation>
     </message>
     <message>
-        <location line="-112"/>
+        <location filename="../../ui/compose/requestformlayout.cpp" line="+1"/>
         <source>Coil &amp;value:</source>
         <translation>&amp;Nilai coil:</translation>
     </message>
@@ -6138,15 +6138,15 @@ Klik kanan untuk mengganti format</translation>
         <translation>Nilai:</translation>
     </message>
     <message>
-        <location line="+33"/>
-        <location line="+201"/>
+        <location filename="../../ui/compose/requestform.cpp" line="+130"/>
+        <location filename="../../ui/compose/requestformlayout.cpp" line="+33"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="-201"/>
-        <location line="+132"/>
+        <location line="-69"/>
         <location line="+69"/>
+        <location filename="../../ui/compose/requestformlayout.cpp" line="+0"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
@@ -6216,17 +6216,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Byte: %1  (%2, unit %3)</translation>
     </message>
     <message>
-        <location line="-408"/>
+        <location filename="../../ui/compose/requestformlayout.cpp" line="-89"/>
         <source>Register value: decimal (0-65535 or -32768..-1) or hex (0x1234)</source>
         <translation>Nilai register: desimal (0-65535 atau -32768..-1) atau hex (0x1234)</translation>
     </message>
     <message>
-        <location line="+197"/>
+        <location filename="../../ui/compose/requestform.cpp" line="-211"/>
         <source>%1 %2 is refused: %3 takes 1-%4 %5 in one request (Modbus V1.1b3)</source>
         <translation>%1 %2 ditolak: %3 menerima 1-%4 %5 dalam satu permintaan (Modbus V1.1b3)</translation>
     </message>
     <message>
-        <location line="-302"/>
+        <location line="-165"/>
         <location line="+4"/>
         <source>coils</source>
         <translation>coil</translation>
@@ -6245,7 +6245,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>register</translation>
     </message>
     <message>
-        <location line="+408"/>
+        <location line="+271"/>
         <source>read quantity</source>
         <translation>jumlah baca</translation>
     </message>
@@ -6319,7 +6319,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/scandialog.cpp" line="+41"/>
+        <location filename="../../ui/discovery/scandialog.cpp" line="+42"/>
         <location line="+1"/>
         <source> ms</source>
         <translation> md</translation>
@@ -8645,7 +8645,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Tentang mbscope</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+82"/>
         <source>Recording settings apply from the next connection.</source>
         <translation>Pengaturan perekaman berlaku mulai sambungan berikutnya.</translation>
     </message>
@@ -9718,7 +9718,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchValueWrite</name>
     <message>
-        <location filename="../../ui/watch/watchvaluewrite.cpp" line="+22"/>
+        <location filename="../../ui/watch/watchvaluewrite.cpp" line="+23"/>
         <source>%1: only points marked writable of a coil (01) or holding register (03) watch are written</source>
         <translation>%1: hanya titik bertanda dapat ditulis dari pantauan coil (01) atau holding register (03) yang ditulis</translation>
     </message>
