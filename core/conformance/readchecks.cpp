@@ -5,7 +5,7 @@
 
 #include "profile/simtable.h"
 #include "protocol/functioncode.h"
-#include "protocol/quantitylimits.h"
+#include "protocol/functionspec.h"
 
 namespace mbscope {
 

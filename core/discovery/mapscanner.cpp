@@ -4,7 +4,7 @@
 
 #include "protocol/adubuilder.h"
 #include "protocol/readanswer.h"
-#include "protocol/quantitylimits.h"
+#include "protocol/functionspec.h"
 
 namespace mbscope {
 

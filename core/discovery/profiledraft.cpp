@@ -1,7 +1,7 @@
 #include "profiledraft.h"
 
 #include "profile/simtable.h"
-#include "protocol/quantitylimits.h"
+#include "protocol/functionspec.h"
 
 #include <QtCore/QDateTime>
 #include <QtCore/QJsonArray>

@@ -4,7 +4,7 @@
 #include "unitscansettings.h"
 
 #include "profile/simtable.h"
-#include "protocol/quantitylimits.h"
+#include "protocol/functionspec.h"
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>

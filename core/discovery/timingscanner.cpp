@@ -5,7 +5,7 @@
 #include "engine/transactionengine.h"
 #include "exchange/requestitem.h"
 #include "protocol/adubuilder.h"
-#include "protocol/quantitylimits.h"
+#include "protocol/functionspec.h"
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QEventLoop>

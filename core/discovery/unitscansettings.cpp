@@ -1,5 +1,5 @@
 #include "unitscansettings.h"
-#include "protocol/quantitylimits.h"
+#include "protocol/functionspec.h"
 
 namespace mbscope {
 

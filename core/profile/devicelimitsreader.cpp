@@ -1,7 +1,7 @@
 #include "devicelimitsreader.h"
 
 #include "json/jsonreader.h"
-#include "protocol/quantitylimits.h"
+#include "protocol/functionspec.h"
 
 namespace mbscope {
 

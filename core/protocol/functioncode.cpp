@@ -1,5 +1,7 @@
 #include "functioncode.h"
 
+#include "functionspec.h"
+
 namespace mbscope {
 
 FunctionKind functionKind(quint8 code)
@@ -9,11 +11,9 @@ FunctionKind functionKind(quint8 code)
         return FunctionKind::Invalid;
     if (code >= 0x80)
         return FunctionKind::Exception;
-    switch (code) {
-    case 0x01: case 0x02: case 0x03: case 0x04: case 0x05: case 0x06: case 0x07: case 0x08:
-    case 0x0B: case 0x0C: case 0x0F: case 0x10: case 0x11: case 0x14: case 0x15: case 0x16:
-    case 0x17: case 0x18: case 0x2B:
+    if (functionSpec(code))
         return FunctionKind::Public;
+    switch (code) {
     // V1.1b3, 5.1 and Annex A: reserved function codes.
     case 0x09: case 0x0A: case 0x0D: case 0x0E: case 0x29: case 0x2A: case 0x5A: case 0x5B:
     case 0x7D: case 0x7E: case 0x7F:
@@ -28,28 +28,8 @@ FunctionKind functionKind(quint8 code)
 
 const char *functionName(quint8 code)
 {
-    switch (code) {
-    case 0x01: return QT_TRANSLATE_NOOP("mbscope::Field", "Read Coils");
-    case 0x02: return QT_TRANSLATE_NOOP("mbscope::Field", "Read Discrete Inputs");
-    case 0x03: return QT_TRANSLATE_NOOP("mbscope::Field", "Read Holding Registers");
-    case 0x04: return QT_TRANSLATE_NOOP("mbscope::Field", "Read Input Registers");
-    case 0x05: return QT_TRANSLATE_NOOP("mbscope::Field", "Write Single Coil");
-    case 0x06: return QT_TRANSLATE_NOOP("mbscope::Field", "Write Single Register");
-    case 0x07: return QT_TRANSLATE_NOOP("mbscope::Field", "Read Exception Status");
-    case 0x08: return QT_TRANSLATE_NOOP("mbscope::Field", "Diagnostics");
-    case 0x0B: return QT_TRANSLATE_NOOP("mbscope::Field", "Get Comm Event Counter");
-    case 0x0C: return QT_TRANSLATE_NOOP("mbscope::Field", "Get Comm Event Log");
-    case 0x0F: return QT_TRANSLATE_NOOP("mbscope::Field", "Write Multiple Coils");
-    case 0x10: return QT_TRANSLATE_NOOP("mbscope::Field", "Write Multiple Registers");
-    case 0x11: return QT_TRANSLATE_NOOP("mbscope::Field", "Report Server ID");
-    case 0x14: return QT_TRANSLATE_NOOP("mbscope::Field", "Read File Record");
-    case 0x15: return QT_TRANSLATE_NOOP("mbscope::Field", "Write File Record");
-    case 0x16: return QT_TRANSLATE_NOOP("mbscope::Field", "Mask Write Register");
-    case 0x17: return QT_TRANSLATE_NOOP("mbscope::Field", "Read/Write Multiple Registers");
-    case 0x18: return QT_TRANSLATE_NOOP("mbscope::Field", "Read FIFO Queue");
-    case 0x2B: return QT_TRANSLATE_NOOP("mbscope::Field", "Encapsulated Interface Transport");
-    default: break;
-    }
+    if (const FunctionSpec *spec = functionSpec(code))
+        return spec->name;
     switch (functionKind(code)) {
     case FunctionKind::UserDefined: return QT_TRANSLATE_NOOP("mbscope::Field", "User-defined function");
     case FunctionKind::Reserved: return QT_TRANSLATE_NOOP("mbscope::Field", "Reserved function code");

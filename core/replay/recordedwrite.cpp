@@ -1,5 +1,7 @@
 #include "replay/recordedwrite.h"
 
+#include "protocol/functionspec.h"
+
 #include "protocol/diagnosticrules.h"
 #include "protocol/functioncode.h"
 
@@ -26,12 +28,7 @@ QString hex(quint32 value, int digits)
 
 bool RecordedWrite::isWriteFunction(quint8 function)
 {
-    switch (function) {
-    case 0x05: case 0x06: case 0x0F: case 0x10: case 0x15: case 0x16: case 0x17:
-        return true;
-    default:
-        return false;
-    }
+    return functionWrites(function);
 }
 
 bool RecordedWrite::isChangingDiagnostic(int subFunction)

@@ -1,4 +1,6 @@
 #include "sim/faultinjector.h"
+
+#include "protocol/functionspec.h"
 #include "protocol/framingtraits.h"
 
 #include "protocol/adubuilder.h"
@@ -64,8 +66,9 @@ FaultContext FaultContext::forRequest(Framing framing, const QByteArray &request
         for (int i = 0; i < count && at + 2 * i + 1 < pdu.size(); ++i)
             c.written.append(word(pdu, at + 2 * i));
     };
-    if (pdu.size() >= 3 && c.function != 0x07 && c.function != 0x08 && c.function != 0x0B && c.function != 0x0C
-        && c.function != 0x11 && c.function != 0x14 && c.function != 0x15 && c.function != 0x2B)
+    // A code outside the public table (user-defined) is taken to start with an address too, as
+    // such functions usually do.
+    if (pdu.size() >= 3 && (functionStartsWithAddress(c.function) || !functionSpec(c.function)))
         c.start = word(pdu, 1);
     switch (c.function) {
     case 0x01: case 0x02: case 0x03: case 0x04: case 0x0F: case 0x10:

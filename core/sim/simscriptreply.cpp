@@ -1,5 +1,7 @@
 #include "sim/simscriptreply.h"
 
+#include "protocol/functionspec.h"
+
 #include "script/scripthost.h"
 #include "sim/simprocessor.h"
 
@@ -17,13 +19,13 @@ QString hex2(int value)
 SimReply valuesReply(quint8 function, const QList<quint16> &values, QString *why)
 {
     const bool bits = function == 0x01 || function == 0x02;
-    if (!bits && function != 0x03 && function != 0x04 && function != 0x17) {
+    if (!functionReadsValues(function)) {
         *why = QStringLiteral("values answer a read (01-04, 17), not function %1").arg(hex2(function));
         return {};
     }
     const int byteCount = bits ? int((values.size() + 7) / 8) : int(values.size() * 2);
     if (values.isEmpty() || byteCount > 250) {
-        *why = QStringLiteral("%1 values do not fit one answer (1 to %2)").arg(values.size()).arg(bits ? 2000 : 125);
+        *why = QStringLiteral("%1 values do not fit one answer (1 to %2)").arg(values.size()).arg(QuantityLimits::maxQuantity(function));
         return {};
     }
     QByteArray pdu(2 + byteCount, 0);

@@ -1626,7 +1626,7 @@ dan %n lagi</numerusform>
         <translation>Kosongkan Penghitung dan Flag Overrun</translation>
     </message>
     <message>
-        <location filename="../../core/protocol/functioncode.cpp" line="+32"/>
+        <location filename="../../core/protocol/functionspec.h" line="+38"/>
         <source>Read Coils</source>
         <translation>Baca Coil</translation>
     </message>
@@ -1636,12 +1636,25 @@ dan %n lagi</numerusform>
         <translation>Baca Discrete Input</translation>
     </message>
     <message>
+        <location line="+0"/>
+        <source>inputs</source>
+        <translation>input</translation>
+    </message>
+    <message>
         <location line="+1"/>
         <source>Read Holding Registers</source>
         <translation>Baca Holding Register</translation>
     </message>
     <message>
+        <location line="+0"/>
         <location line="+1"/>
+        <location line="+8"/>
+        <location line="+5"/>
+        <source>registers</source>
+        <translation>register</translation>
+    </message>
+    <message>
+        <location line="-13"/>
         <source>Read Input Registers</source>
         <translation>Baca Input Register</translation>
     </message>
@@ -1721,7 +1734,7 @@ dan %n lagi</numerusform>
         <translation>Transport Antarmuka Terenkapsulasi</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location filename="../../core/protocol/functioncode.cpp" line="+34"/>
         <source>User-defined function</source>
         <translation>Fungsi buatan pengguna</translation>
     </message>
@@ -1862,12 +1875,14 @@ dan %n lagi</numerusform>
         <translation>Kode pengecualian tidak dikenal: spesifikasi Modbus mendefinisikan 0x01-0x08, 0x0A dan 0x0B</translation>
     </message>
     <message>
+        <location filename="../../core/protocol/functionspec.h" line="-18"/>
+        <location line="+10"/>
         <location filename="../../core/protocol/modiconreference.cpp" line="+197"/>
         <source>coils</source>
         <translation>coil</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location filename="../../core/protocol/modiconreference.cpp" line="+1"/>
         <source>discrete inputs</source>
         <translation>discrete input</translation>
     </message>
@@ -3745,7 +3760,7 @@ dan %n lagi</numerusform>
 <context>
     <name>mbscope::MainWindow</name>
     <message>
-        <location filename="../../ui/shell/mainwindow.cpp" line="+94"/>
+        <location filename="../../ui/shell/mainwindow.cpp" line="+96"/>
         <source>Ready</source>
         <translation>Siap</translation>
     </message>
@@ -6045,7 +6060,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Alamat</translation>
     </message>
     <message>
-        <location filename="../../ui/compose/requestform.cpp" line="+175"/>
+        <location filename="../../ui/compose/requestform.cpp" line="+157"/>
         <location filename="../../ui/compose/requestformlayout.cpp" line="+0"/>
         <source>Value</source>
         <translation>Nilai</translation>
@@ -6081,7 +6096,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Fungsi:</translation>
     </message>
     <message>
-        <location filename="../../ui/compose/requestform.cpp" line="-19"/>
+        <location filename="../../ui/compose/requestform.cpp" line="-15"/>
         <location filename="../../ui/compose/requestformlayout.cpp" line="+1"/>
         <source>&amp;Address:</source>
         <translation>&amp;Alamat:</translation>
@@ -6138,7 +6153,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Nilai:</translation>
     </message>
     <message>
-        <location filename="../../ui/compose/requestform.cpp" line="+130"/>
+        <location filename="../../ui/compose/requestform.cpp" line="+126"/>
         <location filename="../../ui/compose/requestformlayout.cpp" line="+33"/>
         <source>ON</source>
         <translation>ON</translation>
@@ -6151,7 +6166,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="-140"/>
+        <location line="-136"/>
         <source>Start &amp;address:</source>
         <translation>&amp;Alamat awal:</translation>
     </message>
@@ -6171,12 +6186,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>&amp;Jumlah baca:</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
         <source>1-%1 %2 (V1.1b3)</source>
         <translation>1-%1 %2 (V1.1b3)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+1"/>
         <source>Coil</source>
         <translation>Coil</translation>
     </message>
@@ -6191,7 +6206,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>alamat: %1</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+38"/>
         <source>AND mask &apos;%1&apos; is not a 16-bit hex value (0x0000-0xFFFF)</source>
         <translation>Mask AND &apos;%1&apos; bukan nilai hex 16-bit (0x0000-0xFFFF)</translation>
     </message>
@@ -6221,31 +6236,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Nilai register: desimal (0-65535 atau -32768..-1) atau hex (0x1234)</translation>
     </message>
     <message>
-        <location filename="../../ui/compose/requestform.cpp" line="-211"/>
+        <location filename="../../ui/compose/requestform.cpp" line="-208"/>
         <source>%1 %2 is refused: %3 takes 1-%4 %5 in one request (Modbus V1.1b3)</source>
         <translation>%1 %2 ditolak: %3 menerima 1-%4 %5 dalam satu permintaan (Modbus V1.1b3)</translation>
     </message>
     <message>
-        <location line="-165"/>
-        <location line="+4"/>
-        <source>coils</source>
-        <translation>coil</translation>
-    </message>
-    <message>
-        <location line="-3"/>
-        <source>inputs</source>
-        <translation>input</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location line="+1"/>
-        <location line="+2"/>
-        <location line="+1"/>
-        <source>registers</source>
-        <translation>register</translation>
-    </message>
-    <message>
-        <location line="+271"/>
+        <location line="+110"/>
         <source>read quantity</source>
         <translation>jumlah baca</translation>
     </message>
@@ -6255,7 +6251,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>jumlah</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>write quantity</source>
         <translation>jumlah tulis</translation>
     </message>

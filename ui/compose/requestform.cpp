@@ -9,7 +9,7 @@
 #include "protocol/functioncode.h"
 #include "protocol/hextext.h"
 #include "protocol/requestbuilder.h"
-#include "protocol/quantitylimits.h"
+#include "protocol/functionspec.h"
 
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
@@ -26,21 +26,6 @@ namespace mbscope {
 
 namespace {
 
-// What the quantity of each function with a limit counts; the limits are core/protocol's
-// QuantityLimits (V1.1b3, 6.1-6.4, 6.11, 6.12 and 6.17).
-struct QuantityLimit {
-    int code;
-    const char *unit;
-};
-constexpr QuantityLimit kLimits[] = {
-    {0x01, QT_TRANSLATE_NOOP("mbscope::RequestForm", "coils")},
-    {0x02, QT_TRANSLATE_NOOP("mbscope::RequestForm", "inputs")},
-    {0x03, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
-    {0x04, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
-    {0x0F, QT_TRANSLATE_NOOP("mbscope::RequestForm", "coils")},
-    {0x10, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
-    {0x17, QT_TRANSLATE_NOOP("mbscope::RequestForm", "registers")},
-};
 constexpr int kMaxReadWriteWrite = QuantityLimits::kReadWriteWrite; // 0x17's write quantity (V1.1b3, 6.17)
 
 int quantityMax(int code)
@@ -135,43 +120,40 @@ bool RequestForm::isFieldVisible(QWidget *field) const
 void RequestForm::onFunctionChanged()
 {
     const int code = functionCode();
-    const bool reads = code >= 0x01 && code <= 0x04;
-    const bool multiple = code == 0x0F || code == 0x10;
-    const bool hasAddress = reads || multiple || code == 0x05 || code == 0x06 || code == 0x16 || code == 0x17 || code == 0x18;
-    m_form->setRowVisible(m_address, hasAddress);
-    m_form->setRowVisible(m_quantityRow, reads || multiple || code == 0x17);
-    m_form->setRowVisible(m_coil, code == 0x05);
-    m_form->setRowVisible(m_value, code == 0x06);
-    m_form->setRowVisible(m_andMask, code == 0x16);
-    m_form->setRowVisible(m_orMask, code == 0x16);
-    m_form->setRowVisible(m_writeAddress, code == 0x17);
-    m_form->setRowVisible(m_writeQuantity, code == 0x17);
-    m_form->setRowVisible(m_values, multiple || code == 0x17);
-    m_form->setRowVisible(m_deviceIdCode, code == 0x2B);
-    m_form->setRowVisible(m_objectId, code == 0x2B);
+    const FunctionSpec *spec = functionSpec(quint8(code));
+    const RequestShape shape = spec ? spec->shape : RequestShape::Bare;
+    const bool range = shape == RequestShape::Range || shape == RequestShape::RangeValues;
+    const bool readWrite = shape == RequestShape::ReadWrite;
+    m_form->setRowVisible(m_address, functionStartsWithAddress(quint8(code)));
+    m_form->setRowVisible(m_quantityRow, range || readWrite);
+    m_form->setRowVisible(m_coil, code == quint8(FunctionCode::WriteSingleCoil));
+    m_form->setRowVisible(m_value, code == quint8(FunctionCode::WriteSingleRegister));
+    m_form->setRowVisible(m_andMask, shape == RequestShape::Mask);
+    m_form->setRowVisible(m_orMask, shape == RequestShape::Mask);
+    m_form->setRowVisible(m_writeAddress, readWrite);
+    m_form->setRowVisible(m_writeQuantity, readWrite);
+    m_form->setRowVisible(m_values, shape == RequestShape::RangeValues || readWrite);
+    m_form->setRowVisible(m_deviceIdCode, shape == RequestShape::Mei);
+    m_form->setRowVisible(m_objectId, shape == RequestShape::Mei);
 
     // The address label says what the address is for this code.
     QString addressLabel = tr("Start &address:");
-    if (code == 0x05 || code == 0x06 || code == 0x16)
+    if (shape == RequestShape::Single || shape == RequestShape::Mask)
         addressLabel = tr("&Address:");
-    else if (code == 0x17)
+    else if (readWrite)
         addressLabel = tr("Read &address:");
-    else if (code == 0x18)
+    else if (shape == RequestShape::Pointer)
         addressLabel = tr("FIFO pointer &address:");
     if (auto *label = qobject_cast<QLabel *>(m_form->labelForField(m_address)))
         label->setText(addressLabel);
     if (auto *label = qobject_cast<QLabel *>(m_form->labelForField(m_quantityRow)))
-        label->setText(code == 0x17 ? tr("Read &quantity:") : tr("&Quantity:"));
+        label->setText(readWrite ? tr("Read &quantity:") : tr("&Quantity:"));
 
     const std::optional<ModbusTable> table = ModiconReference::tableOf(quint8(code));
-    m_address->setTable(code == 0x18 ? std::optional<ModbusTable>(ModbusTable::HoldingRegisters) : table);
+    m_address->setTable(shape == RequestShape::Pointer ? std::optional<ModbusTable>(ModbusTable::HoldingRegisters) : table);
     m_writeAddress->setTable(ModbusTable::HoldingRegisters);
-    if (const int max = quantityMax(code)) {
-        for (const QuantityLimit &limit : kLimits) {
-            if (limit.code == code)
-                m_quantityLimit->setText(tr("1-%1 %2 (V1.1b3)").arg(max).arg(tr(limit.unit)));
-        }
-    }
+    if (spec && spec->maxQuantity > 0)
+        m_quantityLimit->setText(tr("1-%1 %2 (V1.1b3)").arg(spec->maxQuantity).arg(fieldText(spec->unit)));
     m_values->horizontalHeaderItem(1)->setText(isCoilTable() ? tr("Coil") : tr("Value"));
     m_values->setRowCount(0); // the other kind of value: start again
     resizeValueTable();
@@ -203,7 +185,7 @@ QString RequestForm::quantityError(const QString &label, int quantity, int max, 
         .arg(quantity)
         .arg(fieldText(functionName(quint8(functionCode()))))
         .arg(max)
-        .arg(tr(unit));
+        .arg(fieldText(unit));
 }
 
 void RequestForm::resizeValueTable()
@@ -306,14 +288,11 @@ BuildResult RequestForm::build() const
         failed.errors.append({QStringLiteral("address"), tr("address: %1").arg(m_address->error())});
     const int a = address.value_or(0);
     const int q = m_quantity->value();
-    if (m_form->isRowVisible(m_quantityRow)) {
-        for (const QuantityLimit &limit : kLimits) {
-            if (limit.code != code)
-                continue;
-            const QString why = quantityError(code == 0x17 ? tr("read quantity") : tr("quantity"), q, quantityMax(code), limit.unit);
-            if (!why.isEmpty())
-                failed.errors.append({QStringLiteral("quantity"), why});
-        }
+    const FunctionSpec *spec = functionSpec(quint8(code));
+    if (m_form->isRowVisible(m_quantityRow) && spec && spec->maxQuantity > 0) {
+        const QString why = quantityError(code == 0x17 ? tr("read quantity") : tr("quantity"), q, spec->maxQuantity, spec->unit);
+        if (!why.isEmpty())
+            failed.errors.append({QStringLiteral("quantity"), why});
     }
     if (code == 0x17) {
         const QString why = quantityError(tr("write quantity"), m_writeQuantity->value(), kMaxReadWriteWrite, "registers");
@@ -434,11 +413,11 @@ bool RequestForm::setFromPdu(const QByteArray &pdu)
     case 0x05: ok = size == 5 && (word(pdu, 3) == 0xFF00 || word(pdu, 3) == 0x0000); break;
     case 0x06: case 0x16: ok = size == (code == 0x06 ? 5 : 7); break;
     case 0x0F:
-        ok = size >= 6 && word(pdu, 3) >= 1 && word(pdu, 3) <= 1968 && quint8(pdu.at(5)) == (word(pdu, 3) + 7) / 8
+        ok = size >= 6 && word(pdu, 3) >= 1 && word(pdu, 3) <= quantityMax(code) && quint8(pdu.at(5)) == (word(pdu, 3) + 7) / 8
              && size == 6 + quint8(pdu.at(5));
         break;
     case 0x10:
-        ok = size >= 6 && word(pdu, 3) >= 1 && word(pdu, 3) <= 123 && quint8(pdu.at(5)) == 2 * word(pdu, 3)
+        ok = size >= 6 && word(pdu, 3) >= 1 && word(pdu, 3) <= quantityMax(code) && quint8(pdu.at(5)) == 2 * word(pdu, 3)
              && size == 6 + quint8(pdu.at(5));
         break;
     case 0x17:
@@ -454,7 +433,7 @@ bool RequestForm::setFromPdu(const QByteArray &pdu)
 
     m_filling = true;
     setFunctionCode(code);
-    if (size >= 3 && code != 0x2B && code != 0x07 && code != 0x0B && code != 0x0C && code != 0x11)
+    if (size >= 3 && functionStartsWithAddress(quint8(code)))
         m_address->setAddress(word(pdu, 1));
     switch (code) {
     case 0x01: case 0x02: case 0x03: case 0x04: m_quantity->setValue(word(pdu, 3)); break;

@@ -1,5 +1,7 @@
 #include "mainwindow.h"
 
+#include "protocol/functionspec.h"
+
 #include "analysis/analysisdock.h"
 #include "common/appicon.h"
 #include "link/connectionbar.h"
@@ -327,7 +329,7 @@ void MainWindow::showInRegisterTable(const Transaction &transaction)
     const AduParts request = AduBuilder::parse(transaction.request, framing);
     // Only reads (01-04, 17) have values to show; a write's answer would replace them with a complaint.
     const quint8 function = request.pdu.isEmpty() ? 0 : quint8(request.pdu.at(0));
-    if ((function < 0x01 || function > 0x04) && function != 0x17)
+    if (!functionReadsValues(function))
         return;
     m_lastRead = transaction.request;
     m_registers->showTransaction(transaction, framing);

@@ -1,5 +1,8 @@
 #include "protocol/requestbuilder.h"
 
+#include "protocol/functioncode.h"
+#include "protocol/functionspec.h"
+
 #include "buildertesting.h"
 
 #include <QtTest/QtTest>
@@ -32,6 +35,8 @@ private slots:
     void limits();
     void errorsAreAllCollected();
     void errorStringNamesEveryParameter();
+    void functionTable_data();
+    void functionTable();
 };
 
 void TestRequestBuilder::bytes_data()
@@ -345,6 +350,83 @@ void TestRequestBuilder::errorStringNamesEveryParameter()
                             "(0x0000-0xFFFF); andMask: AND mask 65536 is out of range: Mask Write Register takes a "
                             "16-bit value, 0-65535 (0x0000-0xFFFF)"));
     QVERIFY(RequestBuilder::readCoils(0, 1).errorString().isEmpty());
+}
+
+// The function table (functionspec.h) against the builders: the request the builder makes for
+// each public function has the table's shape, and a quantity is accepted at the table's limit
+// and refused one past it.
+namespace {
+
+BuildResult buildWith(quint8 code, int quantity)
+{
+    const QList<quint16> registers(quantity, 0);
+    switch (code) {
+    case 0x01: return RequestBuilder::readCoils(0, quantity);
+    case 0x02: return RequestBuilder::readDiscreteInputs(0, quantity);
+    case 0x03: return RequestBuilder::readHoldingRegisters(0, quantity);
+    case 0x04: return RequestBuilder::readInputRegisters(0, quantity);
+    case 0x05: return RequestBuilder::writeSingleCoil(0, true);
+    case 0x06: return RequestBuilder::writeSingleRegister(0, 1);
+    case 0x07: return RequestBuilder::readExceptionStatus();
+    case 0x0B: return RequestBuilder::getCommEventCounter();
+    case 0x0C: return RequestBuilder::getCommEventLog();
+    case 0x0F: return RequestBuilder::writeMultipleCoils(0, QList<bool>(quantity, true));
+    case 0x10: return RequestBuilder::writeMultipleRegisters(0, registers);
+    case 0x11: return RequestBuilder::reportServerId();
+    case 0x16: return RequestBuilder::maskWriteRegister(0, 0xFFFF, 0);
+    case 0x17: return RequestBuilder::readWriteMultipleRegisters(0, quantity, 0, {1});
+    case 0x18: return RequestBuilder::readFifoQueue(0);
+    default: return {};
+    }
+}
+
+// The request's length after the function code that the shape implies (-1: it varies).
+int shapeLength(RequestShape shape, int quantity, quint8 code)
+{
+    switch (shape) {
+    case RequestShape::Bare: return 0;
+    case RequestShape::Range: return 4;
+    case RequestShape::Single: return 4;
+    case RequestShape::Mask: return 6;
+    case RequestShape::Pointer: return 2;
+    case RequestShape::RangeValues: return 5 + (code == 0x0F ? (quantity + 7) / 8 : 2 * quantity);
+    case RequestShape::ReadWrite: return 9 + 2; // one value written
+    default: return -1;
+    }
+}
+
+} // namespace
+
+void TestRequestBuilder::functionTable_data()
+{
+    QTest::addColumn<int>("index");
+    for (int i = 0; i < int(std::size(kFunctionSpecs)); ++i)
+        QTest::newRow(kFunctionSpecs[i].name) << i;
+}
+
+void TestRequestBuilder::functionTable()
+{
+    QFETCH(int, index);
+    const FunctionSpec &spec = kFunctionSpecs[index];
+    QCOMPARE(functionSpec(spec.code), &spec);
+    QCOMPARE(functionKind(spec.code), FunctionKind::Public);
+    QCOMPARE(QByteArray(functionName(spec.code)), QByteArray(spec.name));
+    const QByteArray name(spec.name);
+    QCOMPARE(spec.writes, name.contains("Write"));
+    QCOMPARE(QByteArray(spec.clause).startsWith("6."), true);
+    QCOMPARE(spec.maxQuantity > 0, spec.unit != nullptr);
+
+    const int quantity = spec.maxQuantity > 0 ? spec.maxQuantity : 1;
+    const BuildResult built = buildWith(spec.code, quantity);
+    if (built.pdu.isEmpty() && built.isValid())
+        QSKIP("no one-call builder for this function's variable request (08, 14, 15, 2B): the dissector tests cover it");
+    QVERIFY2(built.isValid(), qPrintable(built.errorString()));
+    QCOMPARE(quint8(built.pdu.at(0)), spec.code);
+    QCOMPARE(int(built.pdu.size()) - 1, shapeLength(spec.shape, quantity, spec.code));
+    if (spec.maxQuantity > 0) {
+        const BuildResult over = buildWith(spec.code, spec.maxQuantity + 1);
+        QVERIFY2(!over.isValid(), "one past the table's limit was accepted");
+    }
 }
 
 QTEST_GUILESS_MAIN(TestRequestBuilder)
