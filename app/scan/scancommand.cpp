@@ -31,17 +31,6 @@ namespace mbscope::app {
 
 namespace {
 
-bool writeFile(const QString &path, const QByteArray &bytes, const char *what, QTextStream &err)
-{
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size()) {
-        err << "mbscope scan: cannot write the " << what << " to " << path << ": " << file.errorString() << '\n';
-        return false;
-    }
-    err << "mbscope scan: " << what << " written to " << path << '\n';
-    return true;
-}
-
 // Options whose file must be writable before the first request: a scan may take minutes
 // (OutputPath's policy: an existing file only with --force).
 bool checkWritable(const QString &option, const QString &path, bool force, QTextStream &err)
@@ -124,7 +113,7 @@ int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, 
         QList<WatchDefinition> watches;
         for (const UnitProbe &p : results)
             watches += ScanWatches::fromProbe(settings, p);
-        if (!writeFile(common.watchesPath, ScanWatches::toJson(watches), "watch definitions", err))
+        if (!writeScanFile(common.watchesPath, ScanWatches::toJson(watches), "watch definitions", err))
             return ExitUsage;
     }
     if (common.json)
@@ -179,11 +168,11 @@ int runMap(const Common &common, MapScanSettings settings, const QString &profil
     }
     if (!profilePath.isEmpty()) {
         const QString name = QFileInfo(profilePath).completeBaseName();
-        if (!writeFile(profilePath, ProfileDraft::toJson(*map, name, settings.url.toString()), "profile draft", err))
+        if (!writeScanFile(profilePath, ProfileDraft::toJson(*map, name, settings.url.toString()), "profile draft", err))
             return ExitUsage;
     }
     if (!common.watchesPath.isEmpty()
-        && !writeFile(common.watchesPath, ScanWatches::toJson(ScanWatches::fromMap(settings.url.toString(), *map)),
+        && !writeScanFile(common.watchesPath, ScanWatches::toJson(ScanWatches::fromMap(settings.url.toString(), *map)),
                       "watch definitions", err))
         return ExitUsage;
     if (common.json)
@@ -212,10 +201,12 @@ int runScan(const QStringList &arguments)
         "With --line (a serial port) it tries baud rates, parities and stop bits with the read until CRC-valid answers "
         "come back, and says what was tried and what worked.\n"
         "With --timing UNIT it measures the unit's timing limits and prints settings ready to use (a watch link's "
-        "gapMs and timeoutMs, Telegraf's modbus input pause_between_requests and pause_after_connect).\n"
+        "gapMs and timeoutMs, Telegraf's modbus input pause_between_requests and pause_after_connect); --profile-out "
+        "merges what it measured (minGapMs, warmUpMs, maxClients, maxQuantity) into an existing profile's limits.\n"
         "Examples (with mbscope simulate --profile conformance --listen tcp://127.0.0.1:5020 running):\n"
         "  mbscope scan --target tcp://127.0.0.1:5020 --units 1-10\n"
         "  mbscope scan --target tcp://127.0.0.1:5020 --map 1 --profile-out draft.json\n"
+        "  mbscope scan --target tcp://127.0.0.1:5020 --timing 1 --profile-out draft.json\n"
         "Every scan is bounded (--max-time, --max-requests), shows its progress and the time left on a terminal, and "
         "stops on Ctrl-C with what it found so far.\n"
         "Exit status: 0 something was found, 1 nothing was, 2 usage or link error."));
@@ -254,7 +245,8 @@ int runScan(const QStringList &arguments)
                                        QStringLiteral("LIST"));
     const QCommandLineOption noOptionalOpt(QStringLiteral("no-optional"), QStringLiteral("--map: do not ask the optional functions."));
     const QCommandLineOption profileOutOpt(QStringLiteral("profile-out"),
-                                           QStringLiteral("--map: save the map as a device profile draft (docs/profiles.md)."),
+                                           QStringLiteral("--map: save the map as a device profile draft (docs/profiles.md). --timing: merge "
+                                                          "the limits measured into this existing profile's \"limits\"."),
                                            QStringLiteral("FILE"));
     const QCommandLineOption stepOpt(QStringLiteral("step"),
                                      QStringLiteral("--map: between blocks ask one address in N (default 1: every address; "
@@ -351,7 +343,24 @@ int runScan(const QStringList &arguments)
         settings.maxClients = int(clients);
         settings.timeoutMs = parser.isSet(timeoutOpt) ? int(timeoutMs) : 1000;
         settings.maxDurationMs = common.maxTimeMs;
-        return runTimingScan(settings, common.json, common.record, out, err);
+        // --profile-out FILE: the limits measured are merged into an existing profile (the
+        // --map draft, or one written by hand); it is read now, so that a bad file costs no scan.
+        const QString profilePath = parser.value(profileOutOpt);
+        if (!profilePath.isEmpty()) {
+            QFile file(profilePath);
+            QString problem;
+            if (!file.open(QIODevice::ReadOnly))
+                problem = QStringLiteral("cannot be read (%1): with --timing the limits are merged into an existing profile, "
+                                         "such as the one mbscope scan --map UNIT --profile-out FILE writes")
+                              .arg(file.errorString());
+            else
+                (void)ProfileDraft::mergeLimits(file.readAll(), {}, &problem);
+            if (!problem.isEmpty()) {
+                err << "mbscope scan: --profile-out " << profilePath << ": " << problem << '\n';
+                return ExitUsage;
+            }
+        }
+        return runTimingScan(settings, common.json, common.record, profilePath, out, err);
     }
     if (parser.isSet(clientsOpt)) {
         err << "mbscope scan: --clients belongs to --timing UNIT\n";
@@ -443,7 +452,8 @@ int runScan(const QStringList &arguments)
 
     for (const QCommandLineOption *mapOnly : {&addressesOpt, &tablesOpt, &noOptionalOpt, &profileOutOpt, &maxRequestsOpt, &stepOpt}) {
         if (parser.isSet(*mapOnly)) {
-            err << "mbscope scan: --" << mapOnly->names().constFirst() << " belongs to --map UNIT\n";
+            err << "mbscope scan: --" << mapOnly->names().constFirst() << " belongs to --map UNIT"
+                << (mapOnly == &profileOutOpt ? " (or --timing UNIT)" : "") << '\n';
             return ExitUsage;
         }
     }

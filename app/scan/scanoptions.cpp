@@ -4,6 +4,7 @@
 
 #include "time/duration.h"
 
+#include <QtCore/QFile>
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QTextStream>
 
@@ -93,6 +94,17 @@ bool ScanOptionReader::integers(const QCommandLineOption &option, qint64 low, qi
         return false;
     }
     *values = out;
+    return true;
+}
+
+bool writeScanFile(const QString &path, const QByteArray &bytes, const char *what, QTextStream &err)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size()) {
+        err << "mbscope scan: cannot write the " << what << " to " << path << ": " << file.errorString() << '\n';
+        return false;
+    }
+    err << "mbscope scan: " << what << " written to " << path << '\n';
     return true;
 }
 

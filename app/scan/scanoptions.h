@@ -27,6 +27,9 @@ struct ScanOptionReader {
     bool integers(const QCommandLineOption &option, qint64 low, qint64 high, QList<qint64> *values) const;
 };
 
+// Writes bytes to path and says so on err ("mbscope scan: <what> written to <path>"), or why not.
+bool writeScanFile(const QString &path, const QByteArray &bytes, const char *what, QTextStream &err);
+
 // --record FILE of a scan (and its live frame log): opened by the scan once its settings are known good (a usage error
 // leaves no journal), every connection the scan opens on it, closed when the scan is done.
 struct ScanRecord {

@@ -6,8 +6,10 @@
 #include "common/progressline.h"
 #include "scan/scanreport.h"
 
+#include "discovery/profiledraft.h"
 #include "traffic/trafficrecording.h"
 
+#include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
@@ -99,9 +101,29 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, ScanEnd end
     };
 }
 
+// The limits measured merged into the profile at path (read again: it was checked before the scan).
+bool writeLimits(const QString &path, const QJsonObject &limits, QTextStream &err)
+{
+    QFile file(path);
+    QString problem;
+    QByteArray merged;
+    if (!file.open(QIODevice::ReadOnly))
+        problem = file.errorString();
+    else
+        merged = ProfileDraft::mergeLimits(file.readAll(), limits, &problem);
+    file.close();
+    if (!problem.isEmpty()) {
+        err << "mbscope scan: --profile-out " << path << ": " << problem << '\n';
+        return false;
+    }
+    err << "mbscope scan: limits measured: " << ProfileDraft::describeLimits(limits) << '\n';
+    return writeScanFile(path, merged, "profile limits", err);
+}
+
 } // namespace
 
-int runTimingScan(const TimingScanSettings &settings, bool asJson, const ScanRecord &record, QTextStream &out, QTextStream &err)
+int runTimingScan(const TimingScanSettings &settings, bool asJson, const ScanRecord &record, const QString &profilePath,
+                  QTextStream &out, QTextStream &err)
 {
     if (const QString problem = settings.problem(); !problem.isEmpty()) {
         err << "mbscope scan: " << problem << '\n';
@@ -146,6 +168,8 @@ int runTimingScan(const TimingScanSettings &settings, bool asJson, const ScanRec
         if (!asJson)
             return ExitFailure;
     }
+    if (!profilePath.isEmpty() && report->firstAnswerMs >= 0 && !writeLimits(profilePath, report->profileLimits(settings.function), err))
+        return ExitUsage;
     if (asJson)
         out << QJsonDocument(json(settings, *report, scanner.end())).toJson(QJsonDocument::Indented);
     else

@@ -10,6 +10,8 @@ namespace mbscope::app {
 
 // mbscope scan --timing UNIT: the timing scan run, its measurements and the settings they give
 // (mbscope's watch link gapMs and timeoutMs, poll's --timeout, Telegraf's modbus input), or JSON.
-int runTimingScan(const TimingScanSettings &settings, bool json, const ScanRecord &record, QTextStream &out, QTextStream &err);
+// profilePath (--profile-out), when not empty: an existing profile the limits measured are merged into.
+int runTimingScan(const TimingScanSettings &settings, bool json, const ScanRecord &record, const QString &profilePath,
+                  QTextStream &out, QTextStream &err);
 
 } // namespace mbscope::app

@@ -14,11 +14,6 @@ namespace mbscope {
 
 namespace {
 
-QString hexCode(int code)
-{
-    return QStringLiteral("0x%1").arg(code, 2, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x"));
-}
-
 // Functions the simulator implements (docs/profiles.md, units: functions): a draft names no other.
 bool simulatorImplements(quint8 f)
 {
@@ -57,7 +52,7 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
     std::sort(functions.begin(), functions.end());
     QJsonArray codes;
     for (const int f : std::as_const(functions))
-        codes.append(hexCode(f));
+        codes.append(ProfileDraft::functionKey(f));
 
     QJsonObject unit{{QStringLiteral("id"), int(map.unit)},
                      {QStringLiteral("name"), QStringLiteral("unit %1").arg(map.unit)},
@@ -72,7 +67,7 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
     QJsonObject maxQuantity;
     for (const TableMap &t : map.tables) {
         if (t.supported && t.maxQuantity > 0 && t.maxQuantity < QuantityLimits::maxQuantity(t.function))
-            maxQuantity.insert(hexCode(t.function), t.maxQuantity);
+            maxQuantity.insert(ProfileDraft::functionKey(t.function), t.maxQuantity);
     }
     QJsonObject profile{
         {QStringLiteral("name"), name},
@@ -87,6 +82,89 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
     if (!maxQuantity.isEmpty())
         profile.insert(QStringLiteral("limits"), QJsonObject{{QStringLiteral("maxQuantity"), maxQuantity}});
     return QJsonDocument(profile).toJson(QJsonDocument::Indented);
+}
+
+QString ProfileDraft::functionKey(int code)
+{
+    return QStringLiteral("0x%1").arg(code, 2, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x"));
+}
+
+QString ProfileDraft::describeLimits(const QJsonObject &limits)
+{
+    QStringList found;
+    QStringList none;
+    const auto number = [](const QJsonValue &v) { return QString::number(v.toDouble()); };
+    for (auto it = limits.begin(); it != limits.end(); ++it) {
+        if (it.key() == QLatin1String("maxQuantity")) {
+            const QJsonObject q = it.value().toObject();
+            for (auto f = q.begin(); f != q.end(); ++f)
+                (f.value().isNull() ? none : found)
+                    .append(f.value().isNull() ? QStringLiteral("maxQuantity %1").arg(f.key())
+                                               : QStringLiteral("maxQuantity %1 %2").arg(f.key(), number(f.value())));
+        } else if (it.value().isNull()) {
+            none.append(it.key());
+        } else {
+            found.append(QStringLiteral("%1 %2").arg(it.key(), it.value().isString() ? it.value().toString() : number(it.value())));
+        }
+    }
+    QString text = found.join(QStringLiteral(", "));
+    if (!none.isEmpty())
+        text += (text.isEmpty() ? QString() : QStringLiteral("; ")) + QStringLiteral("no limit seen: ") + none.join(QStringLiteral(", "));
+    return text.isEmpty() ? QStringLiteral("nothing measured") : text;
+}
+
+QByteArray ProfileDraft::mergeLimits(const QByteArray &profile, const QJsonObject &limits, QString *error)
+{
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(profile, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        *error = QStringLiteral("not JSON: %1 at offset %2").arg(parseError.errorString()).arg(parseError.offset);
+        return {};
+    }
+    if (!doc.isObject()) {
+        *error = QStringLiteral("not a profile: expected a JSON object");
+        return {};
+    }
+    QJsonObject root = doc.object();
+    QJsonObject merged = root.value(QLatin1String("limits")).toObject();
+    // The member a limit qualifies, gone with it.
+    const auto companion = [](const QString &key) {
+        return key == QLatin1String("minGapMs") ? QStringLiteral("tooSoon")
+             : key == QLatin1String("maxClients") ? QStringLiteral("extraClients")
+                                                   : QString();
+    };
+    for (auto it = limits.begin(); it != limits.end(); ++it) {
+        if (it.key() == QLatin1String("maxQuantity")) {
+            QJsonObject quantities = merged.value(it.key()).toObject();
+            const QJsonObject given = it.value().toObject();
+            for (auto q = given.begin(); q != given.end(); ++q) {
+                // The profile may spell the code another way ("3", "0X03"): one key a function.
+                for (const QString &key : quantities.keys()) {
+                    bool ok = false;
+                    const int code = key.startsWith(QLatin1String("0x"), Qt::CaseInsensitive) ? key.mid(2).toInt(&ok, 16) : key.toInt(&ok, 10);
+                    if (ok && functionKey(code) == q.key())
+                        quantities.remove(key);
+                }
+                if (!q.value().isNull())
+                    quantities.insert(q.key(), q.value());
+            }
+            if (quantities.isEmpty())
+                merged.remove(it.key());
+            else
+                merged.insert(it.key(), quantities);
+        } else if (it.value().isNull()) {
+            merged.remove(it.key());
+            if (const QString other = companion(it.key()); !other.isEmpty())
+                merged.remove(other);
+        } else {
+            merged.insert(it.key(), it.value());
+        }
+    }
+    if (merged.isEmpty())
+        root.remove(QStringLiteral("limits"));
+    else
+        root.insert(QStringLiteral("limits"), merged);
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
 } // namespace mbscope

@@ -3,6 +3,7 @@
 #include "registermap.h"
 
 #include <QtCore/QByteArray>
+#include <QtCore/QJsonObject>
 #include <QtCore/QString>
 
 namespace mbscope {
@@ -18,6 +19,17 @@ class ProfileDraft
 {
 public:
     [[nodiscard]] static QByteArray toJson(const RegisterMap &map, const QString &name, const QString &source);
+    // profile (a profile's JSON text) with limits merged into its "limits": each member given
+    // replaces the profile's, maxQuantity function by function; a member given as null (measured:
+    // the device has no such limit) removes the profile's, minGapMs with its tooSoon and maxClients
+    // with its extraClients; everything else is kept. Empty and *error set when profile is not a
+    // JSON object.
+    [[nodiscard]] static QByteArray mergeLimits(const QByteArray &profile, const QJsonObject &limits, QString *error);
+    // What limits (as mergeLimits takes them) says, for a person: "minGapMs 50, maxQuantity 0x03 16;
+    // no limit seen: warmUpMs", or "nothing measured".
+    [[nodiscard]] static QString describeLimits(const QJsonObject &limits);
+    // A function code as a key of "maxQuantity" (and of "functions"): "0x03".
+    [[nodiscard]] static QString functionKey(int code);
 };
 
 } // namespace mbscope

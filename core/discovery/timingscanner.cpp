@@ -1,5 +1,6 @@
 #include "timingscanner.h"
 
+#include "profiledraft.h"
 #include "unitscanner.h"
 
 #include "engine/transactionengine.h"
@@ -60,6 +61,33 @@ int TimingReport::recommendedTimeoutMs() const
     // Three times the slowest answer seen, rounded up to 10 ms, and never under 100 ms.
     const qint64 ms = (maxLatencyUs * 3 + 999) / 1000;
     return int(qMax<qint64>(100, (ms + 9) / 10 * 10));
+}
+
+QJsonObject TimingReport::profileLimits(quint8 function) const
+{
+    QJsonObject limits;
+    if (firstAnswerMs < 0)
+        return limits; // never answered: nothing was measured
+    // A gap is the device's least only when a shorter one was tried and had errors; 0 ms clean
+    // says it has none. Gaps that all had errors, or a stop before any error, say nothing.
+    bool shorterFailed = false;
+    for (const GapTrial &trial : gaps)
+        shorterFailed = shorterFailed || (trial.failed > 0 && trial.gapMs < shortestCleanGapMs);
+    if (shortestCleanGapMs > 0 && shorterFailed)
+        limits.insert(QStringLiteral("minGapMs"), shortestCleanGapMs);
+    else if (shortestCleanGapMs == 0)
+        limits.insert(QStringLiteral("minGapMs"), QJsonValue::Null);
+    limits.insert(QStringLiteral("warmUpMs"), warmupFailures > 0 ? QJsonValue(double(firstAnswerMs)) : QJsonValue(QJsonValue::Null));
+    if (clientsTried > 0 && clientsServed > 0 && clientsServed < clientsTried) {
+        limits.insert(QStringLiteral("maxClients"), clientsServed);
+        limits.insert(QStringLiteral("extraClients"), oldestDropped ? QStringLiteral("dropOldest") : QStringLiteral("refuse"));
+    }
+    const int specMax = QuantityLimits::maxQuantity(function);
+    if (largestQuantity > 0 && largestFound)
+        limits.insert(QStringLiteral("maxQuantity"),
+                      QJsonObject{{ProfileDraft::functionKey(function),
+                                   largestQuantity < specMax ? QJsonValue(largestQuantity) : QJsonValue(QJsonValue::Null)}});
+    return limits;
 }
 
 TimingScanner::TimingScanner(QObject *parent)
@@ -332,6 +360,7 @@ void TimingScanner::largestRead(TimingReport &report)
         }
     }
     report.largestQuantity = ok;
+    report.largestFound = ok == specMax || refused - ok == 1;
     report.largestAnswerPdu = ok == 0 ? 0 : 2 + (m_settings.function <= 2 ? (ok + 7) / 8 : 2 * ok);
     if (m_end == ScanEnd::Completed)
         endPart(Largest);

@@ -5,6 +5,7 @@
 
 #include "transport/linkurl.h"
 
+#include <QtCore/QJsonObject>
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QList>
 #include <QtCore/QObject>
@@ -52,9 +53,18 @@ struct TimingReport {
     bool oldestDropped = false;  // client clientsTried was served by closing the oldest (dropOldest)
     int largestQuantity = 0;     // the largest read quantity answered at address
     int largestAnswerPdu = 0;    // its answer's PDU size in bytes
+    bool largestFound = false;   // largestQuantity is the specification's, or one more was refused (not cut short)
 
     [[nodiscard]] int recommendedGapMs() const;
     [[nodiscard]] int recommendedTimeoutMs() const;
+    // What was measured as a profile's "limits" (docs/profiles.md, Device limits; what
+    // DeviceLimitsReader reads), for ProfileDraft::mergeLimits: minGapMs the shortest clean gap
+    // when a shorter one had errors (null when 0 ms was clean), warmUpMs the first answer's time
+    // when requests failed before it (null when the first was answered), maxClients (and
+    // extraClients) when a client beyond them was not served alongside, maxQuantity of function
+    // the largest read (null when the specification's was answered). What was not measured is
+    // left out; a null says the device showed no such limit.
+    [[nodiscard]] QJsonObject profileLimits(quint8 function) const;
 };
 
 // A device's timing limits through a link (issue 18, item 4): how long after connecting it

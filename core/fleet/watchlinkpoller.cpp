@@ -76,8 +76,16 @@ void WatchLinkPoller::start()
     const qint64 now = monotonicNowNs();
     for (Entry &e : m_entries)
         e.dueNs = now;
-    m_phase = Phase::Idle;
     setState(WatchLinkState::State::Connecting);
+    if (m_settings.warmUpMs > 0) {
+        // The device ignores requests this soon after a connection opens: open it first, and the
+        // first request waits warmUpMs after it opened (onLinkOpened).
+        m_phase = Phase::Connecting;
+        m_timer.start(m_url->connectTimeoutMs + 3000);
+        m_engine->openLink();
+        return;
+    }
+    m_phase = Phase::Idle;
     pump();
 }
 
@@ -406,6 +414,11 @@ void WatchLinkPoller::onLinkOpened()
     setState(WatchLinkState::State::Up);
     if (m_phase == Phase::Connecting) {
         m_timer.stop();
+        if (m_settings.warmUpMs > 0) {
+            m_phase = Phase::Gap; // the warm-up: a gap before the first request on this connection
+            m_timer.start(m_settings.warmUpMs);
+            return;
+        }
         m_phase = Phase::Idle;
         pump();
     }

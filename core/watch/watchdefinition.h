@@ -84,6 +84,7 @@ struct WatchDefinition {
 struct WatchLinkSettings {
     QString target;
     int gapMs = 0;                // idle line between the end of one exchange and the next request
+    int warmUpMs = 0;             // after the link opens, before its first request (a device's warm-up)
     int timeoutMs = -1;           // -1: the URL's timeout=, else 1000 ms
     int retries = 0;
     int reconnectMinMs = 500;     // backoff after a link error: doubles from min to max

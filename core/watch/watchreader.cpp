@@ -267,7 +267,7 @@ void readLinks(JsonReader &reader, const QJsonArray &links, SessionWatches *watc
         const auto o = reader.objectValue(links.at(i), path);
         if (!o)
             continue;
-        reader.checkKeys(*o, path, {"target", "gapMs", "timeoutMs", "retries", "reconnectMinMs", "reconnectMaxMs"});
+        reader.checkKeys(*o, path, {"target", "gapMs", "warmUpMs", "timeoutMs", "retries", "reconnectMinMs", "reconnectMaxMs"});
         WatchLinkSettings s;
         if (reader.require(*o, path, "target")) {
             s.target = reader.string(*o, path, "target").value_or(QString());
@@ -279,6 +279,7 @@ void readLinks(JsonReader &reader, const QJsonArray &links, SessionWatches *watc
             seen.insert(s.target);
         }
         s.gapMs = int(reader.integer(*o, path, "gapMs", 0, 60'000).value_or(0));
+        s.warmUpMs = int(reader.integer(*o, path, "warmUpMs", 0, 3'600'000).value_or(0));
         s.timeoutMs = int(reader.integer(*o, path, "timeoutMs", 1, 3'600'000).value_or(-1));
         s.retries = int(reader.integer(*o, path, "retries", 0, 100).value_or(0));
         s.reconnectMinMs = int(reader.integer(*o, path, "reconnectMinMs", 1, 3'600'000).value_or(s.reconnectMinMs));

@@ -132,6 +132,8 @@ void WatchWriter::write(const SessionWatches &watches, QJsonObject *root)
             o.insert(QLatin1String("target"), l.target);
             if (l.gapMs != defaults.gapMs)
                 o.insert(QLatin1String("gapMs"), l.gapMs);
+            if (l.warmUpMs != defaults.warmUpMs)
+                o.insert(QLatin1String("warmUpMs"), l.warmUpMs);
             if (l.timeoutMs > 0)
                 o.insert(QLatin1String("timeoutMs"), l.timeoutMs);
             if (l.retries != defaults.retries)

@@ -8320,7 +8320,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TimingScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/timingscandialog.cpp" line="+29"/>
+        <location filename="../../ui/discovery/timingscandialog.cpp" line="+36"/>
         <source> ms</source>
         <translation> md</translation>
     </message>
@@ -8338,6 +8338,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>&amp;Copy settings</source>
         <translation>&amp;Salin pengaturan</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Record &amp;limits in profile…</source>
+        <translation>Catat &amp;batas di profil…</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -8430,6 +8435,11 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pengaturan yang disarankan sebagai teks: gapMs dan timeoutMs link pantauan, --timeout mbscope, dan input modbus Telegraf.</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>Merge what was measured (minGapMs, warmUpMs, maxClients, maxQuantity) into an existing device profile&apos;s limits, such as the map scan&apos;s draft; its other contents stay.</source>
+        <translation>Gabungkan hasil pengukuran (minGapMs, warmUpMs, maxClients, maxQuantity) ke batas profil perangkat yang sudah ada, seperti draf pemindaian peta; isi lainnya tetap.</translation>
+    </message>
+    <message>
         <location line="+20"/>
         <source>Measuring %1: %2 of %3 steps</source>
         <translation>Mengukur %1: %2 dari %3 langkah</translation>
@@ -8455,7 +8465,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Jeda: berikan paling sedikit satu, mis. 100, 20, 0.</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+35"/>
         <source>Stopped before the first answer: nothing was measured.</source>
         <translation>Dihentikan sebelum jawaban pertama: tidak ada yang diukur.</translation>
     </message>
@@ -8488,6 +8498,36 @@ Klik kanan untuk mengganti format</translation>
         <location line="+23"/>
         <source>The recommended settings are on the clipboard.</source>
         <translation>Pengaturan yang disarankan ada di papan klip.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Cannot read %1: %2</source>
+        <translation>Tidak dapat membaca %1: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot record the limits in %1: %2</source>
+        <translation>Tidak dapat mencatat batas di %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot save %1: %2</source>
+        <translation>Tidak dapat menyimpan %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Recorded in %1: %2.</source>
+        <translation>Dicatat di %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Record limits in profile</source>
+        <translation>Catat batas di profil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device profiles (*.json)</source>
+        <translation>Profil perangkat (*.json)</translation>
     </message>
 </context>
 <context>
@@ -9810,7 +9850,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::WatchWorkspace</name>
     <message>
-        <location filename="../../ui/watch/watchworkspace.cpp" line="+63"/>
+        <location filename="../../ui/watch/watchworkspace.cpp" line="+66"/>
         <source>No watches yet. A watch polls a block of a device at its own interval and shows its values with names, units and rule colours. Make one with Workspace → New watch (%1), from the composer&apos;s read request (%2) or from a device profile (%3); Start all (%4) polls them together.</source>
         <translation>Belum ada pantauan. Sebuah pantauan mem-polling satu blok perangkat pada intervalnya sendiri dan menampilkan nilainya dengan nama, unit, dan warna aturan. Buat dengan Daftar pantau → Pantauan baru (%1), dari permintaan baca penyusun (%2) atau dari profil perangkat (%3); Mulai semua (%4) mem-polling semuanya bersama.</translation>
     </message>
@@ -9982,7 +10022,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Profil %1 tidak punya unit %2 dengan register atau bit untuk dipantau</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+20"/>
         <source>No watches to start: make one first (Workspace → New watch)</source>
         <translation>Tidak ada pantauan untuk dimulai: buat dulu (Daftar pantau → Pantauan baru)</translation>
     </message>

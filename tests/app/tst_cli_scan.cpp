@@ -162,6 +162,7 @@ private slots:
     void lineSettingsFound();
     void timingLimitsFound();
     void timingTellsDropOldestFromRefuse();
+    void timingLimitsMergedIntoProfile();
     void timingProgressOnATerminal();
     void timingBoundedAndStopped();
     void allIdsSaysWhatItAsked();
@@ -355,6 +356,10 @@ void TestCliScan::badInput_data()
                              << QStringLiteral("--function 6 is out of range: expected 1 to 4");
     QTest::newRow("map option alone") << QStringList{QStringLiteral("--profile-out"), QStringLiteral("x.json")}
                                       << QStringLiteral("--profile-out belongs to --map UNIT");
+    QTest::newRow("timing profile missing")
+        << QStringList{QStringLiteral("--timing"), QStringLiteral("1"), QStringLiteral("--profile-out"), QStringLiteral("no-such-profile.json")}
+        << QStringLiteral("--profile-out no-such-profile.json: cannot be read (No such file or directory): with --timing the limits are "
+                          "merged into an existing profile");
     QTest::newRow("bad gap") << QStringList{QStringLiteral("--gap"), QStringLiteral("fast")} << QStringLiteral("--gap: ");
 }
 
@@ -549,6 +554,83 @@ void TestCliScan::timingLimitsFound()
     QCOMPARE(o.value(QStringLiteral("recommended")).toObject().value(QStringLiteral("gap_ms")).toInt(), 100);
     QCOMPARE(o.value(QStringLiteral("recommended")).toObject().value(QStringLiteral("telegraf_pause_between_requests")).toString(),
              QStringLiteral("100ms"));
+}
+
+// The timing scan's --profile-out merges what it measured into an existing profile's limits (before,
+// it wrote them nowhere): the gap, the warm-up, the clients and the largest read of the simulator's
+// device; the profile's other limits are kept, and the simulator serves the result.
+void TestCliScan::timingLimitsMergedIntoProfile()
+{
+    QFile device(m_dir.filePath(QStringLiteral("limited.json")));
+    QVERIFY(device.open(QIODevice::WriteOnly));
+    device.write(R"({"name": "limited", "limits": {"minGapMs": 50, "maxClients": 2, "extraClients": "dropOldest",
+                      "maxQuantity": {"0x03": 16}, "warmUpMs": 300},
+                      "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})");
+    device.close();
+    const QString target = m_dir.filePath(QStringLiteral("limited-draft.json"));
+    QFile draft(target);
+    QVERIFY(draft.open(QIODevice::WriteOnly));
+    draft.write(R"({"name": "limited-draft", "limits": {"maxQuantity": {"0x04": 8}},
+                    "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})");
+    draft.close();
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), device.fileName(), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--timing"), QStringLiteral("1"),
+                                    QStringLiteral("--clients"), QStringLiteral("4"), QStringLiteral("--profile-out"), target});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    QVERIFY2(r.errText().contains(QStringLiteral("mbscope scan: limits measured: extraClients dropOldest, maxClients 2, maxQuantity 0x03 16, "
+                                                 "minGapMs 50, warmUpMs ")),
+             r.describe());
+    QVERIFY2(r.errText().contains(QStringLiteral("mbscope scan: profile limits written to ") + target), r.describe());
+    QVERIFY(draft.open(QIODevice::ReadOnly));
+    const QJsonObject written = QJsonDocument::fromJson(draft.readAll()).object();
+    draft.close();
+    QCOMPARE(written.value(QStringLiteral("name")).toString(), QStringLiteral("limited-draft"));
+    const QJsonObject limits = written.value(QStringLiteral("limits")).toObject();
+    QCOMPARE(limits.value(QStringLiteral("minGapMs")).toInt(), 50);
+    QVERIFY2(limits.value(QStringLiteral("warmUpMs")).toDouble() >= 300, qPrintable(QJsonDocument(limits).toJson()));
+    QCOMPARE(limits.value(QStringLiteral("maxClients")).toInt(), 2);
+    QCOMPARE(limits.value(QStringLiteral("extraClients")).toString(), QStringLiteral("dropOldest"));
+    const QJsonObject quantities = limits.value(QStringLiteral("maxQuantity")).toObject();
+    QCOMPARE(quantities.value(QStringLiteral("0x03")).toInt(), 16);
+    QCOMPARE(quantities.value(QStringLiteral("0x04")).toInt(), 8); // kept
+    QCOMPARE(written.value(QStringLiteral("units")).toArray().size(), 1);
+
+    // The written profile is one the simulator serves.
+    Background clone;
+    QVERIFY2(clone.start({QStringLiteral("simulate"), QStringLiteral("--profile"), target, QStringLiteral("--listen"),
+                          QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                         &error),
+             qPrintable(error));
+
+    // Measured against a device without those limits, the ones it shows it lacks go (0 ms clean,
+    // the first request answered, 125 registers read); the clients, all served, prove no more than
+    // two and stay, as does the other function's maxQuantity (before, a profile kept limits its
+    // device had been measured not to have).
+    QFile plainFile(m_dir.filePath(QStringLiteral("plain.json")));
+    QVERIFY(plainFile.open(QIODevice::WriteOnly));
+    plainFile.write(R"({"name": "plain", "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 200}]}}]})");
+    plainFile.close();
+    Background plain;
+    QVERIFY2(plain.start({QStringLiteral("simulate"), QStringLiteral("--profile"), plainFile.fileName(), QStringLiteral("--listen"),
+                          QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                         &error),
+             qPrintable(error));
+    const CliResult again = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), plain.url(), QStringLiteral("--timing"),
+                                        QStringLiteral("1"), QStringLiteral("--clients"), QStringLiteral("2"), QStringLiteral("--profile-out"),
+                                        target});
+    QVERIFY2(again.finished && again.exitCode == 0, again.describe());
+    QVERIFY2(again.errText().contains(QStringLiteral("mbscope scan: limits measured: no limit seen: maxQuantity 0x03, minGapMs, warmUpMs\n")),
+             again.describe());
+    QVERIFY(draft.open(QIODevice::ReadOnly));
+    const QJsonObject after = QJsonDocument::fromJson(draft.readAll()).object().value(QStringLiteral("limits")).toObject();
+    draft.close();
+    QCOMPARE(QStringList(after.keys()), (QStringList{QStringLiteral("extraClients"), QStringLiteral("maxClients"), QStringLiteral("maxQuantity")}));
+    QCOMPARE(after.value(QStringLiteral("maxQuantity")).toObject(), (QJsonObject{{QStringLiteral("0x04"), 8}}));
 }
 
 // Two clients at most, the third refused or served by knocking the first off: the timing scan

@@ -105,6 +105,7 @@ class TestCliWatch : public QObject
 
 private Q_SLOTS:
     void threeDevicesOnThreeLinks();
+    void linkWaitsTheWarmUp();
     void brokenSessionRefused();
     void thresholdsThePointCannotReachRefused();
     void noWatches();
@@ -508,6 +509,33 @@ void TestCliWatch::firstConnectionIsNoReconnect()
     static const QRegularExpression first(QStringLiteral(R"( notice: link tcp://127\.0\.0\.1:\d+: up \(first connection, after \d+ failed attempts?\))"));
     QVERIFY2(first.match(err).hasMatch(), qPrintable(err));
     QCOMPARE(watch.lines().constLast().value(QLatin1String("watches")).toArray().at(0)[QLatin1String("reconnects")].toInt(), 0);
+}
+
+// Issue 28: a device that ignores requests in the first 400 ms of a connection (limits.warmUpMs, as
+// the timing scan records it). The session's link waits its warmUpMs (500) after opening before the
+// first request, and every poll is answered: exit 0 (before, warmUpMs was refused as an unknown
+// member; without the wait, the first request goes unanswered and the watch counts a timeout).
+void TestCliWatch::linkWaitsTheWarmUp()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString profile = dir.filePath(QStringLiteral("slow.json"));
+    QVERIFY(writeFile(profile, R"({"name": "slow", "limits": {"warmUpMs": 400},
+        "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 4}]}}]})"));
+    Background sim;
+    QString why;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), profile, QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &why),
+             qPrintable(why));
+    const QString session = dir.filePath(QStringLiteral("slow.mbscope.json"));
+    QVERIFY(writeFile(session, QStringLiteral(R"({"format": "mbscope-session", "version": 2, "name": "slow",
+        "watches": [{"name": "slow", "target": "%1", "address": 0, "quantity": 4, "intervalMs": 100}],
+        "watchLinks": [{"target": "%1", "warmUpMs": 500, "timeoutMs": 300}]})")
+                                   .arg(sim.url())
+                                   .toUtf8()));
+    const CliResult r = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--count"), QStringLiteral("3"), QStringLiteral("--quiet")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
 }
 
 QTEST_GUILESS_MAIN(TestCliWatch)

@@ -1,12 +1,19 @@
 #include "timingscandialog.h"
 
+#include "common/lastfolder.h"
 #include "scanform.h"
 #include "timingresulttree.h"
 
+#include "discovery/profiledraft.h"
+
+#include <QtCore/QDir>
+#include <QtCore/QFile>
+#include <QtCore/QSaveFile>
 #include <QtGui/QClipboard>
 #include <QtGui/QGuiApplication>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QDialogButtonBox>
+#include <QtWidgets/QFileDialog>
 #include <QtWidgets/QFormLayout>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
@@ -34,6 +41,7 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
     , m_start(new QPushButton(tr("&Start"), this))
     , m_stop(new QPushButton(tr("Sto&p"), this))
     , m_copy(new QPushButton(tr("&Copy settings"), this))
+    , m_saveLimits(new QPushButton(tr("Record &limits in profile\u2026"), this))
     , m_progress(new QProgressBar(this))
     , m_status(new QLabel(this))
 {
@@ -91,6 +99,10 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
                           "and Telegraf's modbus input."));
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     buttons->addButton(m_copy, QDialogButtonBox::ActionRole);
+    m_saveLimits->setObjectName(QStringLiteral("timingSaveLimits"));
+    m_saveLimits->setToolTip(tr("Merge what was measured (minGapMs, warmUpMs, maxClients, maxQuantity) into an existing "
+                                "device profile's limits, such as the map scan's draft; its other contents stay."));
+    buttons->addButton(m_saveLimits, QDialogButtonBox::ActionRole);
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -103,6 +115,7 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
     connect(m_start, &QPushButton::clicked, this, &TimingScanDialog::start);
     connect(m_stop, &QPushButton::clicked, this, &TimingScanDialog::stop);
     connect(m_copy, &QPushButton::clicked, this, &TimingScanDialog::copySettings);
+    connect(m_saveLimits, &QPushButton::clicked, this, &TimingScanDialog::chooseProfileFile);
     connect(buttons, &QDialogButtonBox::rejected, this, &TimingScanDialog::reject);
     connect(m_scanner, &TimingScanner::step, this, [this](const QString &what) { m_part = what; });
     connect(m_scanner, &TimingScanner::progressChanged, this, [this](const ScanProgress &p) {
@@ -171,6 +184,7 @@ void TimingScanDialog::start()
     if (!s)
         return;
     m_running = true;
+    m_scannedFunction = s->function;
     m_part.clear();
     m_report.reset();
     m_tree->clear();
@@ -223,11 +237,48 @@ void TimingScanDialog::copySettings()
     m_status->setText(tr("The recommended settings are on the clipboard."));
 }
 
+bool TimingScanDialog::saveLimits(const QString &path)
+{
+    if (!m_report || m_report->firstAnswerMs < 0)
+        return false;
+    const QString shown = QDir::toNativeSeparators(path);
+    QFile in(path);
+    if (!in.open(QIODevice::ReadOnly)) {
+        ScanForm::showProblem(m_status, tr("Cannot read %1: %2").arg(shown, in.errorString()));
+        return false;
+    }
+    const QJsonObject limits = m_report->profileLimits(m_scannedFunction);
+    QString problem;
+    const QByteArray merged = ProfileDraft::mergeLimits(in.readAll(), limits, &problem);
+    in.close();
+    if (!problem.isEmpty()) {
+        ScanForm::showProblem(m_status, tr("Cannot record the limits in %1: %2").arg(shown, problem));
+        return false;
+    }
+    QSaveFile out(path);
+    if (!out.open(QIODevice::WriteOnly) || out.write(merged) != merged.size() || !out.commit()) {
+        ScanForm::showProblem(m_status, tr("Cannot save %1: %2").arg(shown, out.errorString()));
+        return false;
+    }
+    m_status->setText(tr("Recorded in %1: %2.").arg(shown, ProfileDraft::describeLimits(limits)));
+    return true;
+}
+
+void TimingScanDialog::chooseProfileFile()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Record limits in profile"), LastFolder::start(QString()),
+                                                      tr("Device profiles (*.json)"));
+    LastFolder::remember(path);
+    if (!path.isEmpty())
+        saveLimits(path);
+}
+
 void TimingScanDialog::updateButtons()
 {
     m_start->setEnabled(!m_running);
     m_stop->setEnabled(m_running);
     m_copy->setEnabled(m_report.has_value() && m_report->firstAnswerMs >= 0 && !m_running);
+    m_saveLimits->setEnabled(m_copy->isEnabled());
     for (QWidget *w : std::initializer_list<QWidget *>{m_target, m_unit, m_function, m_address, m_timeout, m_gaps, m_perGap,
                                                        m_pipeline, m_clients})
         w->setEnabled(!m_running);

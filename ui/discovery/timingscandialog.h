@@ -20,7 +20,8 @@ class TimingResultTree;
 // Scan > Timing: how a unit copes with being asked (core/discovery's TimingScanner, reads only):
 // how long after connecting it answers, the shortest gap between requests before errors start,
 // pipelined MBAP requests, TCP clients at once and the largest read; with the settings that
-// follow, copied to the clipboard for a watch link, mbscope's options or Telegraf.
+// follow, copied to the clipboard for a watch link, mbscope's options or Telegraf, and the limits
+// measured recorded in a device profile (as mbscope scan --timing UNIT --profile-out FILE does).
 class TimingScanDialog : public QDialog
 {
     Q_OBJECT
@@ -41,6 +42,10 @@ public Q_SLOTS:
     void start();
     void stop();
     void copySettings();
+    // Merges the limits measured (TimingReport::profileLimits) into the existing profile at path;
+    // false, with the reason shown, when it cannot be read or written.
+    bool saveLimits(const QString &path);
+    void chooseProfileFile();
 
 Q_SIGNALS:
     void scanFinished(bool stopped);
@@ -65,6 +70,8 @@ private:
     QPushButton *m_start;
     QPushButton *m_stop;
     QPushButton *m_copy;
+    QPushButton *m_saveLimits;
+    quint8 m_scannedFunction = 3; // the read function of the last scan
     QProgressBar *m_progress;
     QLabel *m_status;
     bool m_running = false;

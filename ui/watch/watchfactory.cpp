@@ -146,7 +146,11 @@ QList<WatchDefinition> WatchFactory::fromProfile(const DeviceProfile &profile, q
     for (SimTable table : {SimTable::HoldingRegisters, SimTable::InputRegisters, SimTable::Coils, SimTable::DiscreteInputs}) {
         QList<TableEntry> entries = unit->entriesOf(table);
         std::sort(entries.begin(), entries.end(), [](const TableEntry &a, const TableEntry &b) { return a.address < b.address; });
-        const int limit = isBitTable(table) ? kMaxBits : kMaxRegisters;
+        // The device's own largest read (the profile's limits.maxQuantity, as the map or timing
+        // scan records it) when it takes fewer than a request can hold: no watch asks more.
+        int limit = isBitTable(table) ? kMaxBits : kMaxRegisters;
+        if (const int device = profile.limits.maxQuantity.value(functionOf(table), 0); device > 0)
+            limit = qMin(limit, device);
         WatchDefinition current;
         auto flush = [&] {
             if (current.points.isEmpty())
@@ -165,7 +169,7 @@ QList<WatchDefinition> WatchFactory::fromProfile(const DeviceProfile &profile, q
             // An entry longer than a read (the M221's 8000 %MW) becomes consecutive watches, each
             // one read; its values keep their names whichever watch they land in.
             const int width = entry.width();
-            const int perPiece = limit / width;
+            const int perPiece = qMax(1, limit / width); // a value wider than the device's limit is still read whole
             for (int first = 0; first < entry.valueCount(); first += perPiece) {
                 const int count = qMin(perPiece, entry.valueCount() - first);
                 const int address = entry.address + first * width;

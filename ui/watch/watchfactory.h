@@ -17,7 +17,8 @@ struct WatchFromRequest {
 // Watches made from what the window already has: the composer's read request (its unit,
 // function, address and quantity), or a device profile's unit (a watch per group of entries of
 // one table that a single read can cover; an entry longer than a read is cut into consecutive
-// watches, none of it left out). Names are made unique against the ones taken.
+// watches, none of it left out; no watch asks more than the profile's limits.maxQuantity of its
+// function). Names are made unique against the ones taken.
 class WatchFactory
 {
     Q_DECLARE_TR_FUNCTIONS(mbscope::WatchFactory)

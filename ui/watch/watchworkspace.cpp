@@ -20,6 +20,9 @@
 #include <QtWidgets/QToolBar>
 #include <QtWidgets/QVBoxLayout>
 
+#include <algorithm>
+#include <cmath>
+
 namespace mbscope {
 
 WatchWorkspace::WatchWorkspace(QWidget *parent)
@@ -394,6 +397,19 @@ int WatchWorkspace::addFromProfile(const QString &profileName, int unit, const Q
     if (made.isEmpty()) {
         *error = tr("The profile %1 has no unit %2 with registers or bits to watch").arg(profileName).arg(unit);
         return 0;
+    }
+    // The device's least gap between requests (limits.minGapMs) and its warm-up after connecting
+    // (limits.warmUpMs) become its link's gapMs and warmUpMs unless those already wait longer:
+    // the watches never ask it too soon.
+    const int gap = int(std::ceil(loaded.profile.limits.minGapMs));
+    const int warmUp = int(std::ceil(loaded.profile.limits.warmUpMs));
+    if (gap > 0 || warmUp > 0) {
+        auto link = std::find_if(m_watches.links.begin(), m_watches.links.end(),
+                                 [&](const WatchLinkSettings &l) { return l.target == target; });
+        if (link == m_watches.links.end())
+            link = m_watches.links.insert(m_watches.links.end(), WatchLinkSettings{.target = target});
+        link->gapMs = qMax(link->gapMs, gap);
+        link->warmUpMs = qMax(link->warmUpMs, warmUp);
     }
     for (const WatchDefinition &watch : made)
         addWatch(watch);

@@ -69,7 +69,9 @@ public:
     // The session document's path: a log directory that is not absolute is relative to it.
     void setSessionPathSource(std::function<QString()> source);
     bool addFromRequest(QString *error);
-    // A watch per group of entries of unit of the profile (a shipped name or a file); how many.
+    // A watch per group of entries of unit of the profile (a shipped name or a file), none asking
+    // more than its limits.maxQuantity; its limits.minGapMs and warmUpMs become the target link's
+    // gapMs and warmUpMs (at least). How many watches were made.
     int addFromProfile(const QString &profile, int unit, const QString &target, int intervalMs, QString *error);
 
     void startAll();

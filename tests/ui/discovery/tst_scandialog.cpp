@@ -21,6 +21,7 @@
 #include "sim/embeddedsimulator.h"
 #include "link/connectionbar.h"
 
+#include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
@@ -29,12 +30,14 @@
 #include <QtCore/QProcess>
 #include <QtCore/QScopeGuard>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QTimer>
 #include <QtWidgets/QTreeWidget>
 #include <QtTest/QAbstractItemModelTester>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QCheckBox>
+#include <QtWidgets/QFileDialog>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QProgressBar>
@@ -355,6 +358,36 @@ void TestScanDialog::timingOfAFoundUnit()
     const QString copied = QGuiApplication::clipboard()->text();
     QVERIFY2(copied.contains(QStringLiteral("\"gapMs\": %1").arg(r.recommendedGapMs())), qPrintable(copied));
     QVERIFY(copied.contains(QLatin1String("pause_between_requests")));
+
+    // "Record limits in profile…" merges what was measured into a profile picked in the file
+    // dialog (before, the window wrote the limits nowhere): here the largest read, 22 registers;
+    // the profile's name and units stay.
+    QTemporaryDir dir;
+    const QString profilePath = dir.filePath(QStringLiteral("device.json"));
+    QFile profile(profilePath);
+    QVERIFY(profile.open(QIODevice::WriteOnly));
+    profile.write(R"({"name": "device", "units": [{"id": 1, "tables": {"holding": [{"address": 121, "count": 22}]}}]})");
+    profile.close();
+    auto *saveLimits = timing->findChild<QPushButton *>(QStringLiteral("timingSaveLimits"));
+    QVERIFY(saveLimits->isEnabled());
+    bool picked = false;
+    QTimer::singleShot(0, timing, [&] {
+        QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()));
+        auto *files = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+        files->selectFile(profilePath);
+        QMetaObject::invokeMethod(files, "accept");
+        picked = true;
+    });
+    QTest::mouseClick(saveLimits, Qt::LeftButton);
+    QVERIFY(picked);
+    QVERIFY(profile.open(QIODevice::ReadOnly));
+    const QJsonObject saved = QJsonDocument::fromJson(profile.readAll()).object();
+    QCOMPARE(saved.value(QStringLiteral("name")).toString(), QStringLiteral("device"));
+    QCOMPARE(saved.value(QStringLiteral("units")).toArray().size(), 1);
+    QCOMPARE(saved.value(QStringLiteral("limits")).toObject().value(QStringLiteral("maxQuantity")).toObject().value(QStringLiteral("0x03")).toInt(),
+             22);
+    QVERIFY2(status->text().startsWith(QLatin1String("Recorded ")) && status->text().contains(QLatin1String("maxQuantity")),
+             qPrintable(status->text()));
     if (const QString shot = qEnvironmentVariable("MBSCOPE_TIMING_SCREENSHOT"); !shot.isEmpty())
         timing->grab().save(shot);
 }

@@ -20,6 +20,7 @@ private Q_SLOTS:
     void namesAreUnique();
     void fromProfiles_data();
     void fromProfiles();
+    void fromProfileHonoursMaxQuantity();
 };
 
 void TestWatchFactory::fromTheRosRaoRead()
@@ -116,6 +117,32 @@ void TestWatchFactory::fromProfiles()
     for (const TableEntry &entry : unit.entries)
         expected += entry.valueCount();
     QCOMPARE(points, expected);
+}
+
+// A device that takes 16 registers a read (limits.maxQuantity, as the scans record it): its 40
+// holding registers become reads of 16, 16 and 8 (before, one read of 40, refused with 03), its
+// coils (no limit of theirs) stay one read.
+void TestWatchFactory::fromProfileHonoursMaxQuantity()
+{
+    const ProfileLoadResult loaded = ProfileLoader::parse(R"({"name": "narrow", "limits": {"maxQuantity": {"0x03": 16}},
+        "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 40}], "coils": [{"address": 0, "count": 40}]}}]})",
+                                                          QStringLiteral("narrow.json"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.errorText()));
+    const QList<WatchDefinition> watches = WatchFactory::fromProfile(loaded.profile, 1, QStringLiteral("tcp://127.0.0.1:502"), 250, {});
+    QList<std::pair<int, int>> holding;
+    int coilReads = 0;
+    int holdingPoints = 0;
+    for (const WatchDefinition &watch : watches) {
+        if (watch.function == 3) {
+            holding.append({watch.address, watch.quantity});
+            holdingPoints += int(watch.points.size());
+        } else if (watch.function == 1) {
+            ++coilReads;
+        }
+    }
+    QCOMPARE(holding, (QList<std::pair<int, int>>{{0, 16}, {16, 16}, {32, 8}}));
+    QCOMPARE(holdingPoints, 40);
+    QCOMPARE(coilReads, 1);
 }
 
 QTEST_MAIN(TestWatchFactory)

@@ -112,6 +112,7 @@ private Q_SLOTS:
     void statusBarCountsWatchTraffic();
     void polish();
     void profileKeepsEveryBlock();
+    void profileLimitsHonoured();
 };
 
 // Ctrl+F5, the Workspace menu's "Poll this watch" and the window's context menu start and stop the
@@ -444,6 +445,55 @@ void TestWorkspaceWindow::profileKeepsEveryBlock()
     workspace->startWatch(lastHolding);
     QTRY_VERIFY_WITH_TIMEOUT(last->counters().ok >= 1, kWaitMs);
     workspace->stopAll();
+}
+
+// Issue 28: watches from a profile whose device takes 16 registers a read, 50 ms between requests
+// and ignores requests in the first 300 ms of a connection. Its 40 registers become three reads
+// (16, 16, 8: the simulator refuses 17 with 03), the link waits the gap (gapMs 50) and the warm-up
+// (warmUpMs 300), and polled against the simulator serving the same limits every poll of the three
+// is answered: none refused with 03 as too large or 06 as too soon, none unanswered in the warm-up
+// (before, one read of 40 was refused every time, reads back to back were refused as too soon,
+// and the first request after connecting timed out).
+void TestWorkspaceWindow::profileLimitsHonoured()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("narrow.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"name": "narrow", "limits": {"maxQuantity": {"0x03": 16}, "minGapMs": 50, "warmUpMs": 300},
+                   "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 40}]}}]})");
+    file.close();
+    const ProfileLoadResult loaded = ProfileLoader::loadFile(path);
+    QVERIFY2(loaded.ok, qPrintable(loaded.errorText()));
+    SimulatorHost host;
+    QString error;
+    QVERIFY2(host.load(loaded.profile, &error), qPrintable(error));
+    const std::optional<LinkUrl> listening = host.listen(QStringLiteral("tcp://127.0.0.1:0"), &error);
+    QVERIFY2(listening, qPrintable(error));
+    host.start();
+    const QString url = listening->toString();
+    MainWindow window;
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.showTab(QStringLiteral("watches"));
+    WatchWorkspace *workspace = window.watchWorkspace();
+    QCOMPARE(workspace->addFromProfile(path, 1, url, 100, &error), 3);
+    QList<std::pair<int, int>> reads;
+    for (const WatchDefinition &watch : workspace->watches().watches)
+        reads.append({watch.address, watch.quantity});
+    QCOMPARE(reads, (QList<std::pair<int, int>>{{0, 16}, {16, 16}, {32, 8}}));
+    QCOMPARE(workspace->watches().links.size(), 1);
+    QCOMPARE(workspace->watches().links.constFirst().target, url);
+    QCOMPARE(workspace->watches().links.constFirst().gapMs, 50);
+    QCOMPARE(workspace->watches().links.constFirst().warmUpMs, 300);
+    workspace->startAll();
+    for (int i = 0; i < 3; ++i)
+        QTRY_VERIFY_WITH_TIMEOUT(workspace->window(i)->counters().ok >= 3, kWaitMs);
+    workspace->stopAll();
+    for (int i = 0; i < 3; ++i) {
+        const WatchCounters c = workspace->window(i)->counters();
+        QVERIFY2(c.exceptions == 0 && c.timeouts == 0 && c.otherErrors == 0, qPrintable(c.lastError));
+    }
 }
 
 QTEST_MAIN(TestWorkspaceWindow)
