@@ -10022,7 +10022,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Profil %1 tidak punya unit %2 dengan register atau bit untuk dipantau</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>No watches to start: make one first (Workspace → New watch)</source>
         <translation>Tidak ada pantauan untuk dimulai: buat dulu (Daftar pantau → Pantauan baru)</translation>
     </message>
