@@ -1,6 +1,9 @@
 #include "exchange/exchangecommand.h"
 
 #include "common/cli.h"
+#include "common/framelog.h"
+#include "exchange/deviceexchange.h"
+#include "traffic/trafficrecording.h"
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QTextStream>
@@ -54,6 +57,23 @@ std::optional<int> parseExchangeCommand(const ExchangeCommandSpec &spec, const Q
         return ExitUsage;
     }
     return std::nullopt;
+}
+
+std::optional<QList<Transaction>> runExchangeCommand(const ExchangeCommandSpec &spec, const QStringList &arguments,
+                                                   const ExchangeCommandInput &input, QTextStream &err)
+{
+    const QString command = QString::fromLatin1(spec.name);
+    FrameLog frames;
+    if (!openFrameLog(frames, input.print, command, err))
+        return std::nullopt;
+    TrafficRecording recording;
+    if (!openRecording(recording, input.record, clientMetadata(command, arguments, input.target, input.plan), command, err))
+        return std::nullopt;
+    const QList<Transaction> records = exchange(input.target, input.plan.requests,
+                                                recording.isOpen() ? recording.log() : nullptr,
+                                                frames.isOpen() ? &frames : nullptr);
+    finishRecording(recording, err);
+    return records;
 }
 
 } // namespace mbscope::app

@@ -5,6 +5,9 @@
 #include "common/requestoptions.h"
 #include "common/targetoptions.h"
 
+#include "exchange/transaction.h"
+
+#include <QtCore/QList>
 #include <QtCore/QString>
 #include <QtCore/QStringList>
 
@@ -39,5 +42,12 @@ struct ExchangeCommandInput {
 // a usage problem, said on err: 2), or nothing when the exchange is to go on.
 [[nodiscard]] std::optional<int> parseExchangeCommand(const ExchangeCommandSpec &spec, const QStringList &arguments,
                                                       QTextStream &out, QTextStream &err, ExchangeCommandInput &input);
+
+// Runs input's requests against its target with what the options asked for around them (--print
+// frames / --frame-log, --record) and returns the transactions; nothing when the frame log or the
+// recording could not be opened (said on err: exit 2, before any byte is sent).
+[[nodiscard]] std::optional<QList<Transaction>> runExchangeCommand(const ExchangeCommandSpec &spec,
+                                                                  const QStringList &arguments,
+                                                                  const ExchangeCommandInput &input, QTextStream &err);
 
 } // namespace mbscope::app

@@ -1,9 +1,7 @@
 #include "exchange/readcommand.h"
 
 #include "common/cli.h"
-#include "exchange/deviceexchange.h"
 #include "exchange/exchangecommand.h"
-#include "common/framelog.h"
 #include "common/recordoptions.h"
 #include "common/requestoptions.h"
 #include "common/targetoptions.h"
@@ -12,7 +10,6 @@
 
 #include "protocol/adubuilder.h"
 
-#include "traffic/trafficrecording.h"
 
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonValue>
@@ -47,15 +44,10 @@ int runRead(const QStringList &arguments)
     const RequestPlan &plan = input.plan;
 
     const PlannedRequest &request = plan.requests.constFirst();
-    FrameLog frames;
-    if (!openFrameLog(frames, input.print, QStringLiteral("read"), err))
+    const std::optional<QList<Transaction>> exchanged = runExchangeCommand(spec, arguments, input, err);
+    if (!exchanged)
         return ExitUsage;
-    TrafficRecording recording;
-    if (!openRecording(recording, input.record, clientMetadata(QStringLiteral("read"), arguments, target, plan), QStringLiteral("read"), err))
-        return ExitUsage;
-    const QList<Transaction> records =
-        exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr, frames.isOpen() ? &frames : nullptr);
-    finishRecording(recording, err);
+    const QList<Transaction> &records = *exchanged;
     const Transaction &t = records.constFirst();
     ValueTable values;
     if (t.status == TransactionStatus::Ok) {

@@ -1,15 +1,12 @@
 #include "exchange/sendcommand.h"
 
 #include "common/cli.h"
-#include "exchange/deviceexchange.h"
 #include "exchange/exchangecommand.h"
-#include "common/framelog.h"
 #include "common/recordoptions.h"
 #include "common/requestoptions.h"
 #include "common/targetoptions.h"
 #include "common/transactionreport.h"
 
-#include "traffic/trafficrecording.h"
 
 #include <QtCore/QJsonDocument>
 #include <QtCore/QTextStream>
@@ -36,17 +33,11 @@ int runSend(const QStringList &arguments)
     if (const std::optional<int> status = parseExchangeCommand(spec, arguments, out, err, input))
         return *status;
     const TargetSettings &target = input.target;
-    const RequestPlan &plan = input.plan;
 
-    FrameLog frames;
-    if (!openFrameLog(frames, input.print, QStringLiteral("send"), err))
+    const std::optional<QList<Transaction>> exchanged = runExchangeCommand(spec, arguments, input, err);
+    if (!exchanged)
         return ExitUsage;
-    TrafficRecording recording;
-    if (!openRecording(recording, input.record, clientMetadata(QStringLiteral("send"), arguments, target, plan), QStringLiteral("send"), err))
-        return ExitUsage;
-    const QList<Transaction> records =
-        exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr, frames.isOpen() ? &frames : nullptr);
-    finishRecording(recording, err);
+    const QList<Transaction> &records = *exchanged;
     const Transaction &t = records.constFirst();
     if (input.json) {
         QJsonObject o = TransactionReport::json(t, target.url);

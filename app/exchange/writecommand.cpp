@@ -1,16 +1,13 @@
 #include "exchange/writecommand.h"
 
 #include "common/cli.h"
-#include "exchange/deviceexchange.h"
 #include "exchange/exchangecommand.h"
-#include "common/framelog.h"
 #include "common/recordoptions.h"
 #include "common/requestoptions.h"
 #include "common/targetoptions.h"
 #include "common/transactionreport.h"
 #include "common/valuetable.h"
 
-#include "traffic/trafficrecording.h"
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
@@ -45,15 +42,10 @@ int runWrite(const QStringList &arguments)
     const TargetSettings &target = input.target;
     const RequestPlan &plan = input.plan;
 
-    FrameLog frames;
-    if (!openFrameLog(frames, input.print, QStringLiteral("write"), err))
+    const std::optional<QList<Transaction>> exchanged = runExchangeCommand(spec, arguments, input, err);
+    if (!exchanged)
         return ExitUsage;
-    TrafficRecording recording;
-    if (!openRecording(recording, input.record, clientMetadata(QStringLiteral("write"), arguments, target, plan), QStringLiteral("write"), err))
-        return ExitUsage;
-    const QList<Transaction> records =
-        exchange(target, plan.requests, recording.isOpen() ? recording.log() : nullptr, frames.isOpen() ? &frames : nullptr);
-    finishRecording(recording, err);
+    const QList<Transaction> &records = *exchanged;
     int status = ExitOk;
     for (const Transaction &t : records)
         status = qMax(status, TransactionReport::exitStatus(t, target.url));
