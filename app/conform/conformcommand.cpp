@@ -74,7 +74,8 @@ int runConform(const QStringList &arguments)
         "the --profile's functions) are skipped with the reason.\n"
         "Example (with mbscope simulate --profile conformance --listen tcp://127.0.0.1:5020 running):\n"
         "  mbscope conform --target tcp://127.0.0.1:5020 --profile conformance --junit conform.xml\n"
-        "Exit status: 0 every mandatory check passed, 1 a mandatory check failed (or Ctrl-C), 2 usage error, or the "
+        "Exit status: 0 every mandatory check passed, 1 a mandatory check failed, or the run was cut short (the device "
+        "lost mid-run, or Ctrl-C), 2 usage error, or the "
         "target refused or answered nothing at all."));
     parser.addHelpOption();
     const TargetOptions targetOptions(false);

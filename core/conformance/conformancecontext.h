@@ -38,6 +38,10 @@ public:
     [[nodiscard]] SurveyedSupport support(quint8 function) const { return m_support.value(function, SurveyedSupport::Unknown); }
     void setSupport(quint8 function, SurveyedSupport support) { m_support.insert(function, support); }
     [[nodiscard]] const QMap<quint8, SurveyedSupport> &supportTable() const { return m_support; }
+    // Functions whose every ask by the survey was sent and met the connection closing instead of
+    // an answer (their support is Silent: no answer at all).
+    [[nodiscard]] const QList<quint8> &closedOn() const { return m_closedOn; }
+    void setClosedOn(quint8 function) { m_closedOn.append(function); }
     // An address of table the device answered a read of (-1: none known).
     [[nodiscard]] int readable(SimTable table) const { return m_readable[int(table)]; }
     void setReadable(SimTable table, int address) { m_readable[int(table)] = address; }
@@ -49,6 +53,7 @@ private:
     const ConformanceSettings &m_settings;
     ConformanceLink &m_link;
     QMap<quint8, SurveyedSupport> m_support;
+    QList<quint8> m_closedOn;
     std::array<int, SimTableCount> m_readable{};
 };
 

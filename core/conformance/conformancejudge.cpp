@@ -40,6 +40,10 @@ QString ConformanceJudge::seen(const ConformanceExchange &e)
     case TransactionStatus::Unexpected:
         return QStringLiteral("%1 (%2)").arg(hex(t.response.isEmpty() ? e.answer : t.response), t.problem);
     default:
+        if (e.late)
+            return QStringLiteral("%1 only after the %2 ms timeout (a late answer, when a master has given up on it)")
+                .arg(hex(e.answer))
+                .arg(e.timeoutMs);
         return QStringLiteral("%1 (bytes that answer nothing it asked)").arg(hex(e.answer));
     }
 }

@@ -47,10 +47,15 @@ ConformanceExchange ConformanceLink::exchange(const QByteArray &adu, int timeout
     ConformanceExchange e;
     e.request = adu;
     e.timeoutMs = timeoutMs < 0 ? m_timeoutMs : timeoutMs;
+    const qsizetype before = m_in.size();
     const std::optional<ProbeChannel::Answer> answer = m_channel->askRaw(adu, e.timeoutMs);
     if (answer) {
         e.transaction = answer->transaction;
         e.answer = answer->bytesRead;
+        if (e.transaction.status == TransactionStatus::Timeout) {
+            for (qsizetype i = before; i < m_in.size() && !e.late; ++i)
+                e.late = m_in.at(i).verdict == TrafficVerdict::Late && m_in.at(i).transactionId == e.transaction.id;
+        }
     } else {
         e.transaction.status = TransactionStatus::LinkError;
         e.transaction.problem = QStringLiteral("the request could not be sent");

@@ -22,6 +22,9 @@ struct ConformanceExchange {
     Transaction transaction; // the engine's record: its status, exception code, matched answer and times
     QByteArray answer;       // every byte read while the request was in flight (empty: silence)
     int timeoutMs = 0;       // how long it waited
+    // Timed out, and its own answer (by transaction id) came just after the timeout, among the
+    // bytes read: a late answer, not bytes that answer nothing (answer.late counts it).
+    bool late = false;
 
     [[nodiscard]] bool silent() const { return answer.isEmpty(); }
     [[nodiscard]] bool linkFailed() const { return transaction.status == TransactionStatus::LinkError; }

@@ -80,10 +80,15 @@ ConformanceSurvey::Outcome ConformanceSurvey::run(ConformanceContext &ctx)
         }
         outcome.exchanges.append(e);
         if (e.linkFailed()) {
-            // Sent each time and closed each time: the device's own reply to this function (its
-            // checks judge it). Not even sent: nothing is known of it, and its checks are skipped.
-            if (e.unreachable())
+            // Sent each time and closed each time: the device's own reply to this function is no
+            // answer at all (exception.unsupported-function says so). Not even sent: nothing is
+            // known of it, and its checks are skipped.
+            if (e.unreachable()) {
                 ctx.setSupport(f, SurveyedSupport::NotSurveyed);
+            } else {
+                ctx.setSupport(f, SurveyedSupport::Silent);
+                ctx.setClosedOn(f);
+            }
             continue;
         }
         const Transaction &t = e.transaction;
@@ -145,9 +150,18 @@ QList<ConformanceCheck> ConformanceSurvey::checks()
                      + unsurveyedNote(ctx));
             return;
         }
-        res.fail(QStringLiteral("the device answers other requests but gave no answer at all to %1 %2; %3 requires "
+        QList<quint8> closed;
+        for (quint8 f : quiet) {
+            if (ctx.closedOn().contains(f))
+                closed.append(f);
+        }
+        const QString how = closed.isEmpty() ? QString()
+                                             : QStringLiteral(" (to %1 it closed the connection instead, each of the %2 times it was asked)")
+                                                   .arg(codes(closed))
+                                                   .arg(1 + kAskAgain);
+        res.fail(QStringLiteral("the device answers other requests but gave no answer at all to %1 %2%3; %4 requires "
                                 "exception 01 (Illegal Function) for a function it does not support")
-                     .arg(quiet.size() == 1 ? QStringLiteral("function") : QStringLiteral("functions"), codes(quiet), res.clause));
+                     .arg(quiet.size() == 1 ? QStringLiteral("function") : QStringLiteral("functions"), codes(quiet), how, res.clause));
     };
     out.append(silent);
 

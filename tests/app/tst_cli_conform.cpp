@@ -156,7 +156,8 @@ private Q_SLOTS:
         QTest::newRow("line noise on 08's answers") << rtu << R"({"kind": "noise", "bitErrorRate": 0.5, "on": "answer", "functions": ["0x08"]})" << ""
                                                     << "diag.echo" << QStringList{"answer.unsolicited", "diag.echo"};
         QTest::newRow("closes instead of answering 2B") << tcp << R"({"kind": "close", "when": "before", "functions": ["0x2B"]})" << ""
-                                                        << "ident.basic" << QStringList{"ident.bad-code", "ident.basic"};
+                                                        << "exception.unsupported-function"
+                                                        << QStringList{"exception.unsupported-function", "promise.functions"};
         QTest::newRow("junk before 2B") << tcp << R"({"kind": "junk", "before": "DE AD", "functions": ["0x2B"]})" << "" << "answer.unsolicited"
                                         << QStringList{"answer.unsolicited"};
         QTest::newRow("chunked answers are legal") << tcp << R"({"kind": "chunks", "chunkBytes": 3, "gapMs": 2})" << "" << "" << QStringList{};

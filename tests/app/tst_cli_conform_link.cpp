@@ -152,6 +152,41 @@ private Q_SLOTS:
         QVERIFY(!card.contains(QStringLiteral("link_lost")));
     }
 
+    // The connection closes under every ask of the survey's 07 (requests 5, 6 and 7: the first and
+    // both asks again), the server serving on, as libmodbus 3.1.6's unit-test server restarted in a
+    // loop does: the device's reply to 07 is no answer at all, so 07 is "silent" and
+    // exception.unsupported-function fails naming it (before: 07 was left out of the functions and
+    // the check passed, "the device supports every function surveyed"); nothing else changes.
+    void surveyFunctionClosedEveryTime()
+    {
+        PeerProcess steady;
+        QString error;
+        const CliResult base = conform({}, steady, &error);
+        QVERIFY2(base.finished, qPrintable(error + base.describe()));
+        PeerProcess dropping;
+        const CliResult r = conform({QStringLiteral("--drop-at"), QStringLiteral("5,6,7")}, dropping, &error);
+        QVERIFY2(r.finished, qPrintable(error + r.describe()));
+        QVERIFY(dropping.waitForLine("SERVED 7 drop", 5000));
+        const QJsonObject card = r.json();
+        const QJsonObject baseCard = base.json();
+        QCOMPARE(card.value(QStringLiteral("functions")).toObject().value(QStringLiteral("07")).toString(), QStringLiteral("silent"));
+        QStringList failed = withVerdict(baseCard, QStringLiteral("failed"));
+        failed.append(QStringLiteral("exception.unsupported-function"));
+        failed.sort();
+        failed.removeDuplicates();
+        QCOMPARE(withVerdict(card, QStringLiteral("failed")), failed);
+        QCOMPARE(withVerdict(card, QStringLiteral("error")), QStringList{});
+        for (const auto &c : checksOf(card)) {
+            if (c.first == QLatin1String("exception.unsupported-function")) {
+                const QString sentence = c.second.value(QStringLiteral("sentence")).toString();
+                QVERIFY2(sentence.contains(QLatin1String("no answer at all to function 07")), qPrintable(sentence));
+                QVERIFY2(sentence.contains(QLatin1String("closed the connection")), qPrintable(sentence));
+            }
+        }
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(!card.contains(QStringLiteral("link_lost")));
+    }
+
     // The device dies at request dieAt (its port closed): one check is an error saying the link
     // was lost; every check after it is skipped as not judged; no check fails on a link error; the
     // functions the survey could not reach are "not surveyed"; the run is cut short (exit 1), and

@@ -3,7 +3,8 @@
 // follows, nothing fails, write checks are skipped unless Writable names addresses (and pass when
 // it does), Stop ends a run early, bad fields are said, the verdict colours follow the level, the
 // scorecard is saved as HTML, PDF, JSON and JUnit, the window's Tools menu opens the dialog on its
-// target, and a run's frames reach the window's traffic list.
+// target, a run's frames reach the window's traffic list, and against devices that deviate (the
+// simulator with a fault, pymodbus) the window gives every check the verdict mbscope conform gives.
 
 #include "conformance/conformancedialog.h"
 #include "conformance/conformanceresultmodel.h"
@@ -14,6 +15,7 @@
 #include "sim/embeddedsimulator.h"
 #include "traffic/trafficmodel.h"
 #include "traffic/trafficmonitor.h"
+#include "peerprocess.h"
 
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
@@ -65,6 +67,8 @@ private Q_SLOTS:
     void verdictColours();
     void toolsMenuOpensIt();
     void runReachesTheTrafficList();
+    void windowAgreesWithTheCommandLine_data();
+    void windowAgreesWithTheCommandLine();
 
 private:
     void fill(ConformanceDialog &dialog, const QString &writable, const QString &only);
@@ -341,6 +345,96 @@ void TestConformanceDialog::runReachesTheTrafficList()
     }
     QVERIFY(requests > 3);
     dialog->close();
+}
+
+void TestConformanceDialog::windowAgreesWithTheCommandLine_data()
+{
+    QTest::addColumn<QString>("device"); // "pymodbus", or a fault rule the simulator commits
+    QTest::addColumn<QStringList>("failing"); // the mandatory checks both must fail
+    QTest::newRow("simulator, transaction id not echoed")
+        << R"({"kind": "wrongTransactionId"})" << QStringList{QStringLiteral("mbap.transaction-id"), QStringLiteral("mbap.pipelined")};
+    QTest::newRow("pymodbus") << "pymodbus"
+                              << QStringList{QStringLiteral("mbap.foreign-protocol"), QStringLiteral("mbap.unit-ff"),
+                                             QStringLiteral("diag.echo"), QStringLiteral("write.05.bad-value")};
+}
+
+// The same device judged by mbscope conform --json and by the window: the same verdict for every
+// check, the same overall verdict in the status line; the window's picture is saved (to
+// MBSCOPE_CONFORMANCE_COMPARE_DIR when set) for a person to look at.
+void TestConformanceDialog::windowAgreesWithTheCommandLine()
+{
+    QFETCH(QString, device);
+    QFETCH(QStringList, failing);
+    testpeers::PeerProcess peer;
+    QProcess sim; // killed when it goes
+    QString target;
+    if (device == QLatin1String("pymodbus")) {
+        QString why;
+        if (!testpeers::pymodbusAvailable(&why))
+            QSKIP(qPrintable(why));
+        QVERIFY2(peer.start(testpeers::systemPython(), {testpeers::peersDir() + QStringLiteral("/pymodbus_server.py"), QStringLiteral("tcp")}),
+                 qPrintable(peer.error()));
+        target = QStringLiteral("tcp://127.0.0.1:%1").arg(peer.port());
+    } else {
+        const QString faults = m_dir.filePath(QStringLiteral("faults.json"));
+        QFile f(faults);
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(QStringLiteral(R"({"seed": 1, "rules": [%1]})").arg(device).toUtf8());
+        f.close();
+        sim.setProcessChannelMode(QProcess::SeparateChannels);
+        sim.start(QStringLiteral(MBSCOPE_BINARY), {QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"),
+                                                   QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--faults"), faults});
+        QByteArray seen;
+        while (!seen.contains("listening tcp://") || !seen.mid(seen.indexOf("listening tcp://")).contains('\n')) {
+            QVERIFY2(sim.waitForReadyRead(30000), qPrintable(QString::fromUtf8(seen + sim.readAllStandardError())));
+            seen += sim.readAllStandardOutput();
+        }
+        const QByteArray line = seen.mid(seen.indexOf("listening tcp://") + 10);
+        target = QString::fromUtf8(line.left(line.indexOf('\n'))).section(QLatin1Char(' '), 0, 0);
+    }
+    const QString writable = QStringLiteral("holding:10-13, coils:10-17");
+
+    QProcess cli;
+    cli.start(QStringLiteral(MBSCOPE_BINARY),
+              {QStringLiteral("conform"), QStringLiteral("--target"), target, QStringLiteral("--timeout"), QStringLiteral("1500ms"),
+               QStringLiteral("--writable"), QStringLiteral("holding:10-13"), QStringLiteral("--writable"), QStringLiteral("coils:10-17"),
+               QStringLiteral("--json")});
+    QVERIFY(cli.waitForFinished(240000));
+    QCOMPARE(cli.exitCode(), 1);
+    const QJsonObject card = QJsonDocument::fromJson(cli.readAllStandardOutput()).object();
+    QMap<QString, QString> byCli;
+    for (const QJsonValue &c : card.value(QStringLiteral("checks")).toArray())
+        byCli.insert(c[QStringLiteral("id")].toString(), c[QStringLiteral("verdict")].toString());
+    QVERIFY(byCli.size() > 10);
+
+    ConformanceDialog dialog;
+    fill(dialog, writable, QString());
+    const LinkUrl::Result url = LinkUrl::parse(target);
+    QVERIFY2(url.url, qPrintable(target + QStringLiteral(": ") + url.error));
+    dialog.setTarget(*url.url);
+    dialog.findChild<QSpinBox *>(QStringLiteral("conformTimeout"))->setValue(1500);
+    dialog.findChild<QLineEdit *>(QStringLiteral("conformProfile"))->clear();
+    dialog.show();
+    QSignalSpy finished(&dialog, &ConformanceDialog::finished);
+    QTest::mouseClick(dialog.findChild<QPushButton *>(QStringLiteral("conformStart")), Qt::LeftButton);
+    QVERIFY(finished.wait(240000));
+    QCOMPARE(finished.first().first().toBool(), false);
+    const QMap<QString, QString> byWindow = verdicts(dialog.model());
+    QCOMPARE(byWindow, byCli);
+    for (const QString &id : failing)
+        QVERIFY2(byWindow.value(id) == QLatin1String("failed"), qPrintable(id + QStringLiteral(": ") + byWindow.value(id)));
+    const QString status = dialog.findChild<QLabel *>(QStringLiteral("conformStatus"))->text();
+    const int failedMandatory = card.value(QStringLiteral("counts"))[QStringLiteral("failed_mandatory")].toInt();
+    QVERIFY(failedMandatory >= failing.size());
+    const QString cliVerdict = QStringLiteral("%1 mandatory check(s) failed").arg(failedMandatory);
+    QVERIFY2(status.contains(cliVerdict, Qt::CaseInsensitive), qPrintable(status + QStringLiteral(" | ") + cliVerdict));
+
+    const QString dir = qEnvironmentVariable("MBSCOPE_CONFORMANCE_COMPARE_DIR", m_dir.path());
+    dialog.resize(1400, 760);
+    QCoreApplication::sendPostedEvents();
+    const QString tag = QString::fromLatin1(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('-')).remove(QLatin1Char(','));
+    QVERIFY(dialog.grab().save(dir + QStringLiteral("/conformance-") + tag + QStringLiteral(".png"), "PNG"));
+    dialog.close();
 }
 
 QTEST_MAIN(TestConformanceDialog)
