@@ -80,21 +80,21 @@ QByteArray TimingScanner::readPdu(int quantity) const
 void TimingScanner::stop()
 {
     m_stopRequested = true;
-    if (m_report && m_end == ScanEnd::Completed)
-        m_end = ScanEnd::Stopped;
+    if (m_report && m_end == JobEnd::Completed)
+        m_end = JobEnd::Stopped;
     m_channel->cancel();
     Q_EMIT stopping();
 }
 
 bool TimingScanner::mayContinue(qint64 nextMs)
 {
-    if (m_end != ScanEnd::Completed)
+    if (m_end != JobEnd::Completed)
         return false;
     if (m_stopRequested)
-        m_end = ScanEnd::Stopped;
+        m_end = JobEnd::Stopped;
     else if (m_clock.elapsed() + nextMs > m_settings.maxDurationMs)
-        m_end = ScanEnd::TimeLimit;
-    return m_end == ScanEnd::Completed;
+        m_end = JobEnd::TimeLimit;
+    return m_end == JobEnd::Completed;
 }
 
 void TimingScanner::setTrafficLog(TrafficLog *log)
@@ -158,9 +158,9 @@ qint64 TimingScanner::stepCostMs(int index) const
     return settle + answer + (k >= 2 ? qMax<qint64>(20, gap) + answer : 0);
 }
 
-ScanProgress TimingScanner::progress() const
+JobProgress TimingScanner::progress() const
 {
-    ScanProgress p;
+    JobProgress p;
     p.total = m_partStart[PartCount];
     p.done = qMin(m_done, p.total);
     p.elapsedMs = m_clock.isValid() ? m_clock.elapsed() : 0;
@@ -196,7 +196,7 @@ std::optional<TimingReport> TimingScanner::run(const TimingScanSettings &setting
         return std::nullopt;
     m_settings = settings;
     m_stopRequested = false;
-    m_end = ScanEnd::Completed;
+    m_end = JobEnd::Completed;
     m_done = 0;
     m_answeredMs = 0;
     m_answered = 0;
@@ -219,19 +219,19 @@ std::optional<TimingReport> TimingScanner::run(const TimingScanSettings &setting
     m_clock.start();
     warmup(report); // its start emits the first progress, at 0
     if (report.firstAnswerMs >= 0) {
-        if (m_end == ScanEnd::Completed)
+        if (m_end == JobEnd::Completed)
             gaps(report);
-        if (m_end == ScanEnd::Completed)
+        if (m_end == JobEnd::Completed)
             largestRead(report);
         // The probe channel's connection would count among the clients: the rest opens its own.
         m_channel->closeLink();
-        if (m_end == ScanEnd::Completed)
+        if (m_end == JobEnd::Completed)
             pipelining(report);
-        if (m_end == ScanEnd::Completed)
+        if (m_end == JobEnd::Completed)
             clients(report);
     }
     m_channel->closeLink();
-    ScanProgress last = progress();
+    JobProgress last = progress();
     last.remainingMs = 0; // ended: nothing is left, whatever was not asked
     m_report = nullptr;
     Q_EMIT progressChanged(last);
@@ -333,7 +333,7 @@ void TimingScanner::largestRead(TimingReport &report)
     }
     report.largestQuantity = ok;
     report.largestAnswerPdu = ok == 0 ? 0 : 2 + (m_settings.function <= 2 ? (ok + 7) / 8 : 2 * ok);
-    if (m_end == ScanEnd::Completed)
+    if (m_end == JobEnd::Completed)
         endPart(Largest);
 }
 

@@ -133,7 +133,7 @@ LineScanDialog::LineScanDialog(QWidget *parent)
     });
     connect(buttons, &QDialogButtonBox::rejected, this, &LineScanDialog::reject);
     connect(m_scanner, &LineScanner::tried, this, &LineScanDialog::onTried);
-    connect(m_scanner, &LineScanner::progressChanged, this, [this](const ScanProgress &p) {
+    connect(m_scanner, &LineScanner::progressChanged, this, [this](const JobProgress &p) {
         if (m_running)
             ScanForm::showProgress(m_progress, m_status, p, tr("%1 of %2 tried, %3 answered").arg(p.done).arg(p.total).arg(p.found));
     });
@@ -240,7 +240,7 @@ void LineScanDialog::onTried(const LineTrial &trial)
     m_list->scrollToItem(item);
 }
 
-void LineScanDialog::summarise(ScanEnd end)
+void LineScanDialog::summarise(JobEnd end)
 {
     QStringList working;
     QSet<char> parities;
@@ -250,15 +250,15 @@ void LineScanDialog::summarise(ScanEnd end)
             parities.insert(t.parity);
         }
     }
-    if (end == ScanEnd::LinkError && working.isEmpty()) {
+    if (end == JobEnd::LinkError && working.isEmpty()) {
         ScanForm::showProblem(m_status, tr("The port failed: %1").arg(m_trials.isEmpty() ? m_ran.url.toString() : m_trials.constLast().probe.summary()));
         return;
     }
     QString text = working.isEmpty() ? tr("No setting answered (%n tried).", nullptr, int(m_trials.size()))
                                      : tr("Answered: %1.").arg(working.join(QStringLiteral(", ")));
-    if (end == ScanEnd::Stopped)
+    if (end == JobEnd::Stopped)
         text = tr("Stopped. %1").arg(text);
-    else if (end == ScanEnd::TimeLimit)
+    else if (end == JobEnd::TimeLimit)
         text = tr("Time limit reached. %1").arg(text);
     if (parities.size() > 1)
         text += QLatin1Char(' ')

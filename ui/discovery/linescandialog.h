@@ -45,14 +45,14 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void settingChosen(const mbscope::LinkUrl &url);
-    void scanFinished(mbscope::ScanEnd end);
+    void scanFinished(mbscope::JobEnd end);
 
 protected:
     void reject() override;
 
 private:
     void onTried(const LineTrial &trial);
-    void summarise(ScanEnd end);
+    void summarise(JobEnd end);
     void updateButtons();
 
     LineScanner *m_scanner;

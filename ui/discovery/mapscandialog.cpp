@@ -195,7 +195,7 @@ void MapScanDialog::start()
     m_status->setText(tr("Mapping unit %1\u2026").arg(s->unit));
     const std::optional<RegisterMap> map = m_scanner->run(*s);
     m_running = false;
-    const ScanEnd end = m_scanner->end();
+    const JobEnd end = m_scanner->end();
     if (map) {
         m_map = map;
         m_mapTarget = s->url.toString();
@@ -207,13 +207,13 @@ void MapScanDialog::start()
     m_progress->setValue(1);
     QString how;
     switch (end) {
-    case ScanEnd::Completed: how = tr("Map complete"); break;
-    case ScanEnd::Stopped: how = tr("Stopped"); break;
-    case ScanEnd::TimeLimit: how = tr("Time limit reached"); break;
-    case ScanEnd::RequestLimit: how = tr("Request limit reached"); break;
-    case ScanEnd::LinkError: how = tr("The link failed"); break;
+    case JobEnd::Completed: how = tr("Map complete"); break;
+    case JobEnd::Stopped: how = tr("Stopped"); break;
+    case JobEnd::TimeLimit: how = tr("Time limit reached"); break;
+    case JobEnd::RequestLimit: how = tr("Request limit reached"); break;
+    case JobEnd::LinkError: how = tr("The link failed"); break;
     }
-    if (end == ScanEnd::LinkError && found == 0)
+    if (end == JobEnd::LinkError && found == 0)
         ScanForm::showProblem(m_status, tr("The link failed: %1 cannot be reached.").arg(s->url.toString()));
     else
         m_status->setText(tr("%1: %n address(es) found in %2 requests.", nullptr, found)
@@ -234,7 +234,7 @@ void MapScanDialog::reject()
     QDialog::reject();
 }
 
-void MapScanDialog::onProgress(const ScanProgress &p)
+void MapScanDialog::onProgress(const JobProgress &p)
 {
     if (!m_running)
         return;

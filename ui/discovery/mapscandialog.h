@@ -2,7 +2,8 @@
 
 #include "discovery/mapscansettings.h"
 #include "discovery/registermap.h"
-#include "discovery/scanprogress.h"
+#include "job/jobend.h"
+#include "job/jobprogress.h"
 
 #include "watch/watchdefinition.h"
 
@@ -57,13 +58,13 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void watchesRequested(const QList<mbscope::WatchDefinition> &watches);
-    void scanFinished(mbscope::ScanEnd end);
+    void scanFinished(mbscope::JobEnd end);
 
 protected:
     void reject() override;
 
 private:
-    void onProgress(const ScanProgress &progress);
+    void onProgress(const JobProgress &progress);
     void chooseDraftFile();
     void updateButtons();
 

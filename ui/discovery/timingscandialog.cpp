@@ -105,7 +105,7 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
     connect(m_copy, &QPushButton::clicked, this, &TimingScanDialog::copySettings);
     connect(buttons, &QDialogButtonBox::rejected, this, &TimingScanDialog::reject);
     connect(m_scanner, &TimingScanner::step, this, [this](const QString &what) { m_part = what; });
-    connect(m_scanner, &TimingScanner::progressChanged, this, [this](const ScanProgress &p) {
+    connect(m_scanner, &TimingScanner::progressChanged, this, [this](const JobProgress &p) {
         if (m_running)
             ScanForm::showProgress(m_progress, m_status, p, tr("Measuring %1: %2 of %3 steps").arg(m_part).arg(p.done).arg(p.total));
     });
@@ -179,8 +179,8 @@ void TimingScanDialog::start()
     updateButtons();
     const std::optional<TimingReport> report = m_scanner->run(*s);
     m_running = false;
-    const bool stopped = m_scanner->end() == ScanEnd::Stopped;
-    const bool timeLimit = m_scanner->end() == ScanEnd::TimeLimit;
+    const bool stopped = m_scanner->end() == JobEnd::Stopped;
+    const bool timeLimit = m_scanner->end() == JobEnd::TimeLimit;
     if (report) {
         m_report = report;
         m_tree->showReport(*s, *report);

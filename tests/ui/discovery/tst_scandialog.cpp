@@ -88,7 +88,7 @@ void TestScanDialog::scanListsEveryId()
     QVERIFY(dialog.isRunning());
     QVERIFY(!dialog.findChild<QPushButton *>(QStringLiteral("scanStart"))->isEnabled());
     QVERIFY(finished.wait(20000));
-    QCOMPARE(finished.first().first().value<ScanEnd>(), ScanEnd::Completed);
+    QCOMPARE(finished.first().first().value<JobEnd>(), JobEnd::Completed);
     QCOMPARE(dialog.model()->rowCount(), 6);
     QCOMPARE(dialog.findChild<QProgressBar *>(QStringLiteral("scanProgress"))->value(), 6);
     const auto kind = [&](int row) { return dialog.model()->probes().at(row).kind; };
@@ -132,7 +132,7 @@ void TestScanDialog::stopEndsTheScan()
     QTRY_VERIFY_WITH_TIMEOUT(dialog.model()->rowCount() >= 3, 10000);
     QTest::mouseClick(dialog.findChild<QPushButton *>(QStringLiteral("scanStop")), Qt::LeftButton);
     QVERIFY(finished.wait(5000) || finished.size() == 1);
-    QCOMPARE(finished.first().first().value<ScanEnd>(), ScanEnd::Stopped);
+    QCOMPARE(finished.first().first().value<JobEnd>(), JobEnd::Stopped);
     QVERIFY(!dialog.isRunning());
     const int rows = dialog.model()->rowCount();
     QVERIFY(rows < 247);
@@ -317,7 +317,7 @@ void TestScanDialog::timingOfAFoundUnit()
     auto *status = timing->findChild<QLabel *>(QStringLiteral("timingStatus"));
     QList<int> values;
     QStringList texts;
-    connect(timing->findChild<TimingScanner *>(), &TimingScanner::progressChanged, this, [&](const ScanProgress &) {
+    connect(timing->findChild<TimingScanner *>(), &TimingScanner::progressChanged, this, [&](const JobProgress &) {
         QCOMPARE(bar->maximum(), 1 + 2 * 5 + 8 + 3); // first answer, 2 gaps x 5, largest read, 3 clients (rtu-tcp: no pipelining)
         values.append(bar->value());
         texts.append(status->text());
@@ -406,13 +406,13 @@ void TestScanDialog::serialSettingsFound()
     QSignalSpy finished(line, &LineScanDialog::scanFinished);
     auto *bar = line->findChild<QProgressBar *>(QStringLiteral("lineProgress"));
     QStringList texts;
-    connect(line->findChild<LineScanner *>(), &LineScanner::progressChanged, this, [&](const ScanProgress &) {
+    connect(line->findChild<LineScanner *>(), &LineScanner::progressChanged, this, [&](const JobProgress &) {
         QCOMPARE(bar->maximum(), 12);
         texts.append(line->findChild<QLabel *>(QStringLiteral("lineStatus"))->text());
     });
     QTest::mouseClick(line->findChild<QPushButton *>(QStringLiteral("lineStart")), Qt::LeftButton);
     QVERIFY(!finished.isEmpty() || finished.wait(60000));
-    QCOMPARE(finished.first().first().value<ScanEnd>(), ScanEnd::Completed);
+    QCOMPARE(finished.first().first().value<JobEnd>(), JobEnd::Completed);
     // The bar at the trials of the plan, the status with the time left: none at the end.
     QVERIFY2(texts.first().startsWith(QLatin1String("0 of 12 tried, 0 answered, about ")), qPrintable(texts.first()));
     QVERIFY2(texts.last() == QLatin1String("12 of 12 tried, 3 answered, about 0.0 s left"), qPrintable(texts.last()));
