@@ -9,6 +9,7 @@
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QEventLoop>
+#include <QtCore/QThread>
 #include <QtCore/QScopeGuard>
 #include <QtCore/QSet>
 #include <QtCore/QTimer>
@@ -99,6 +100,11 @@ bool TimingScanner::mayContinue(qint64 nextMs)
 
 void TimingScanner::setTrafficLog(TrafficLog *log)
 {
+    // From the thread that shows the scan while the scanner lives in a job's thread (JobThread).
+    if (thread() != QThread::currentThread() && thread()->isRunning()) {
+        QMetaObject::invokeMethod(this, [this, log] { setTrafficLog(log); }, Qt::BlockingQueuedConnection);
+        return;
+    }
     m_log = log;
     m_channel->setTrafficLog(log);
 }

@@ -399,7 +399,7 @@ void TestScanDialog::timingOfAFoundUnit()
     auto *status = timing->findChild<QLabel *>(QStringLiteral("timingStatus"));
     QList<int> values;
     QStringList texts;
-    connect(timing->findChild<TimingScanner *>(), &TimingScanner::progressChanged, this, [&](const JobProgress &) {
+    connect(timing->scanner(), &TimingScanner::progressChanged, this, [&](const JobProgress &) {
         QCOMPARE(bar->maximum(), 1 + 2 * 5 + 8 + 3); // first answer, 2 gaps x 5, largest read, 3 clients (rtu-tcp: no pipelining)
         values.append(bar->value());
         texts.append(status->text());
