@@ -488,7 +488,7 @@ void TestScanDialog::serialSettingsFound()
     QSignalSpy finished(line, &LineScanDialog::scanFinished);
     auto *bar = line->findChild<QProgressBar *>(QStringLiteral("lineProgress"));
     QStringList texts;
-    connect(line->findChild<LineScanner *>(), &LineScanner::progressChanged, this, [&](const JobProgress &) {
+    connect(line->scanner(), &LineScanner::progressChanged, this, [&](const JobProgress &) {
         QCOMPARE(bar->maximum(), 12);
         texts.append(line->findChild<QLabel *>(QStringLiteral("lineStatus"))->text());
     });
