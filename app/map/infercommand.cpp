@@ -207,7 +207,7 @@ int runInfer(const QStringList &arguments)
         blocks = found.blocks;
         if (blocks.isEmpty()) {
             finishRecording(recording, err);
-            if (scanner.end() == ScanEnd::LinkError) {
+            if (scanner.end() == JobEnd::LinkError) {
                 err << "mbscope infer: the link failed: " << target.url.toString() << " cannot be reached\n";
                 return ExitLinkError;
             }

@@ -76,9 +76,9 @@ int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, 
     ProgressLine line;
     frames.setProgressLine(&line);
     QEventLoop loop;
-    ScanEnd end = ScanEnd::Completed;
+    JobEnd end = JobEnd::Completed;
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &UnitScanner::stop);
-    QObject::connect(&scanner, &UnitScanner::progressChanged, &loop, [&](const ScanProgress &p) {
+    QObject::connect(&scanner, &UnitScanner::progressChanged, &loop, [&](const JobProgress &p) {
         line.show(ScanReport::progressText(QStringLiteral("ids"), p));
     });
     QObject::connect(&scanner, &UnitScanner::probed, &loop, [&](const UnitProbe &p) {
@@ -88,7 +88,7 @@ int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, 
             err.flush();
         }
     });
-    QObject::connect(&scanner, &UnitScanner::finished, &loop, [&](ScanEnd how) {
+    QObject::connect(&scanner, &UnitScanner::finished, &loop, [&](JobEnd how) {
         end = how;
         loop.quit();
     });
@@ -103,8 +103,8 @@ int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, 
     finishRecording(recording, err);
 
     const QList<UnitProbe> &results = scanner.results();
-    const ScanProgress progress = scanner.progress();
-    if (end == ScanEnd::LinkError && progress.found == 0 && !results.isEmpty()) {
+    const JobProgress progress = scanner.progress();
+    if (end == JobEnd::LinkError && progress.found == 0 && !results.isEmpty()) {
         err << "mbscope scan: " << results.constLast().problem << '\n';
         if (!common.json)
             return ExitLinkError;
@@ -121,7 +121,7 @@ int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, 
     else
         out << ScanReport::unitsText(settings, results, progress, end, common.all);
     out.flush();
-    if (end == ScanEnd::LinkError && progress.found == 0)
+    if (end == JobEnd::LinkError && progress.found == 0)
         return ExitLinkError;
     return progress.found > 0 ? ExitOk : ExitFailure;
 }
@@ -149,7 +149,7 @@ int runMap(const Common &common, MapScanSettings settings, const QString &profil
     frames.setProgressLine(&line);
     QObject::connect(&interrupts, &InterruptWatcher::interrupted, &scanner, &MapScanner::stop);
     QObject::connect(&scanner, &MapScanner::progressChanged, &scanner,
-                     [&](const ScanProgress &p) { line.show(ScanReport::progressText(QStringLiteral("addresses"), p)); });
+                     [&](const JobProgress &p) { line.show(ScanReport::progressText(QStringLiteral("addresses"), p)); });
     QElapsedTimer clock;
     clock.start();
     const std::optional<RegisterMap> map = scanner.run(settings);
@@ -162,7 +162,7 @@ int runMap(const Common &common, MapScanSettings settings, const QString &profil
     bool anything = false;
     for (const TableMap &t : map->tables)
         anything = anything || !t.blocks.isEmpty();
-    if (scanner.end() == ScanEnd::LinkError && !anything) {
+    if (scanner.end() == JobEnd::LinkError && !anything) {
         err << "mbscope scan: the link failed: " << settings.url.toString() << " cannot be reached\n";
         return ExitLinkError;
     }

@@ -20,7 +20,7 @@ namespace mbscope::app {
 
 namespace {
 
-QString text(const LineScanSettings &settings, const QList<LineTrial> &trials, ScanEnd end, qint64 elapsedMs)
+QString text(const LineScanSettings &settings, const QList<LineTrial> &trials, JobEnd end, qint64 elapsedMs)
 {
     QString t = QStringLiteral("LINE %1  read %2 at %3, quantity %4\n")
                     .arg(settings.url.serial.device)
@@ -42,7 +42,7 @@ QString text(const LineScanSettings &settings, const QList<LineTrial> &trials, S
             working.append(QStringLiteral("%1 (unit %2)").arg(a.settingText()).arg(a.unit));
         i = j;
     }
-    t += QStringLiteral("\n%1 trials in %2; %3\n").arg(trials.size()).arg(ScanReport::durationText(elapsedMs)).arg(QString::fromLatin1(scanEndName(end)));
+    t += QStringLiteral("\n%1 trials in %2; %3\n").arg(trials.size()).arg(ScanReport::durationText(elapsedMs)).arg(QString::fromLatin1(jobEndName(end)));
     if (working.isEmpty()) {
         t += QStringLiteral("no setting answered\n");
     } else {
@@ -61,7 +61,7 @@ QString text(const LineScanSettings &settings, const QList<LineTrial> &trials, S
     return t;
 }
 
-QJsonObject json(const LineScanSettings &settings, const QList<LineTrial> &trials, ScanEnd end, qint64 elapsedMs)
+QJsonObject json(const LineScanSettings &settings, const QList<LineTrial> &trials, JobEnd end, qint64 elapsedMs)
 {
     QJsonArray list;
     QJsonArray working;
@@ -81,7 +81,7 @@ QJsonObject json(const LineScanSettings &settings, const QList<LineTrial> &trial
                        {QStringLiteral("tried"), list},
                        {QStringLiteral("working"), working},
                        {QStringLiteral("elapsed_ms"), double(elapsedMs)},
-                       {QStringLiteral("end"), QString::fromLatin1(scanEndName(end))}};
+                       {QStringLiteral("end"), QString::fromLatin1(jobEndName(end))}};
 }
 
 } // namespace
@@ -112,7 +112,7 @@ int runLineScan(const LineScanSettings &settings, bool asJson, const ScanRecord 
         lastTried = QStringLiteral("%1 unit %2 %3").arg(t.settingText()).arg(t.unit).arg(QString::fromLatin1(unitProbeKindName(t.probe.kind)));
     });
     QObject::connect(&scanner, &LineScanner::progressChanged, &scanner,
-                     [&](const ScanProgress &p) { line.show(ScanReport::progressText(QStringLiteral("trials"), p, lastTried)); });
+                     [&](const JobProgress &p) { line.show(ScanReport::progressText(QStringLiteral("trials"), p, lastTried)); });
     QElapsedTimer clock;
     clock.start();
     const std::optional<QList<LineTrial>> trials = scanner.run(settings);
@@ -121,7 +121,7 @@ int runLineScan(const LineScanSettings &settings, bool asJson, const ScanRecord 
     finishRecording(recording, err);
     if (!trials)
         return ExitUsage;
-    if (scanner.end() == ScanEnd::LinkError && !trials->isEmpty() && trials->size() == 1) {
+    if (scanner.end() == JobEnd::LinkError && !trials->isEmpty() && trials->size() == 1) {
         err << "mbscope scan: " << trials->constLast().probe.problem << '\n';
         return ExitLinkError;
     }

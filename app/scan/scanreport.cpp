@@ -60,14 +60,14 @@ QList<int> answeredOutside(const QList<UnitProbe> &probes)
     return ids;
 }
 
-QString endText(ScanEnd end)
+QString endText(JobEnd end)
 {
     switch (end) {
-    case ScanEnd::Completed: return QStringLiteral("completed");
-    case ScanEnd::Stopped: return QStringLiteral("stopped (Ctrl-C): the rest was not asked");
-    case ScanEnd::TimeLimit: return QStringLiteral("time limit reached (--max-time): the rest was not asked");
-    case ScanEnd::LinkError: return QStringLiteral("ended by a link error: the rest was not asked");
-    case ScanEnd::RequestLimit: return QStringLiteral("request limit reached (--max-requests): the rest was not asked");
+    case JobEnd::Completed: return QStringLiteral("completed");
+    case JobEnd::Stopped: return QStringLiteral("stopped (Ctrl-C): the rest was not asked");
+    case JobEnd::TimeLimit: return QStringLiteral("time limit reached (--max-time): the rest was not asked");
+    case JobEnd::LinkError: return QStringLiteral("ended by a link error: the rest was not asked");
+    case JobEnd::RequestLimit: return QStringLiteral("request limit reached (--max-requests): the rest was not asked");
     }
     return {};
 }
@@ -124,7 +124,7 @@ QString ScanReport::durationText(qint64 ms)
     return QStringLiteral("%1m %2s").arg(ms / 60000).arg((ms / 1000) % 60, 2, 10, QLatin1Char('0'));
 }
 
-QString ScanReport::progressText(const QString &what, const ScanProgress &p, const QString &detail)
+QString ScanReport::progressText(const QString &what, const JobProgress &p, const QString &detail)
 {
     QString text = QStringLiteral("%1 %2/%3").arg(what).arg(p.done).arg(p.total);
     if (what == QLatin1String("ids"))
@@ -136,7 +136,7 @@ QString ScanReport::progressText(const QString &what, const ScanProgress &p, con
 }
 
 QString ScanReport::unitsText(const UnitScanSettings &settings, const QList<UnitProbe> &probes,
-                              const ScanProgress &progress, ScanEnd end, bool all)
+                              const JobProgress &progress, JobEnd end, bool all)
 {
     QString text;
     text += QStringLiteral("SCAN %1  units %2  function %3 address %4 quantity %5  timeout %6 ms  gap %7 ms\n")
@@ -217,7 +217,7 @@ QString ScanReport::unitsText(const UnitScanSettings &settings, const QList<Unit
 }
 
 QJsonObject ScanReport::unitsJson(const UnitScanSettings &settings, const QList<UnitProbe> &probes,
-                                  const ScanProgress &progress, ScanEnd end)
+                                  const JobProgress &progress, JobEnd end)
 {
     QJsonArray units;
     for (const UnitProbe &p : probes) {
@@ -256,12 +256,12 @@ QJsonObject ScanReport::unitsJson(const UnitScanSettings &settings, const QList<
              return ids;
          }()},
         {QStringLiteral("elapsed_ms"), double(progress.elapsedMs)},
-        {QStringLiteral("end"), QString::fromLatin1(scanEndName(end))},
+        {QStringLiteral("end"), QString::fromLatin1(jobEndName(end))},
         {QStringLiteral("units"), units},
     };
 }
 
-QString ScanReport::mapText(const RegisterMap &map, ScanEnd end, qint64 elapsedMs)
+QString ScanReport::mapText(const RegisterMap &map, JobEnd end, qint64 elapsedMs)
 {
     QString text = QStringLiteral("MAP unit %1\n").arg(map.unit);
     for (const TableMap &t : map.tables) {
@@ -294,7 +294,7 @@ QString ScanReport::mapText(const RegisterMap &map, ScanEnd end, qint64 elapsedM
     return text;
 }
 
-QJsonObject ScanReport::mapJson(const RegisterMap &map, ScanEnd end, qint64 elapsedMs)
+QJsonObject ScanReport::mapJson(const RegisterMap &map, JobEnd end, qint64 elapsedMs)
 {
     QJsonArray tables;
     for (const TableMap &t : map.tables) {
@@ -332,7 +332,7 @@ QJsonObject ScanReport::mapJson(const RegisterMap &map, ScanEnd end, qint64 elap
                   {QStringLiteral("functions"), functions},
                   {QStringLiteral("requests"), map.requests},
                   {QStringLiteral("elapsed_ms"), double(elapsedMs)},
-                  {QStringLiteral("end"), QString::fromLatin1(scanEndName(end))}};
+                  {QStringLiteral("end"), QString::fromLatin1(jobEndName(end))}};
     if (map.exceptionStatus >= 0)
         o.insert(QStringLiteral("exception_status"), map.exceptionStatus);
     return o;

@@ -1,7 +1,8 @@
 #pragma once
 
 #include "discovery/registermap.h"
-#include "discovery/scanprogress.h"
+#include "job/jobend.h"
+#include "job/jobprogress.h"
 #include "discovery/unitprobe.h"
 #include "discovery/unitscansettings.h"
 
@@ -16,16 +17,16 @@ class ScanReport
 {
 public:
     [[nodiscard]] static QString unitsText(const UnitScanSettings &settings, const QList<UnitProbe> &probes,
-                                           const ScanProgress &progress, ScanEnd end, bool all);
+                                           const JobProgress &progress, JobEnd end, bool all);
     [[nodiscard]] static QJsonObject unitsJson(const UnitScanSettings &settings, const QList<UnitProbe> &probes,
-                                               const ScanProgress &progress, ScanEnd end);
-    [[nodiscard]] static QString mapText(const RegisterMap &map, ScanEnd end, qint64 elapsedMs);
-    [[nodiscard]] static QJsonObject mapJson(const RegisterMap &map, ScanEnd end, qint64 elapsedMs);
+                                               const JobProgress &progress, JobEnd end);
+    [[nodiscard]] static QString mapText(const RegisterMap &map, JobEnd end, qint64 elapsedMs);
+    [[nodiscard]] static QJsonObject mapJson(const RegisterMap &map, JobEnd end, qint64 elapsedMs);
     // "1m 05s", "12.3 s", "850 ms"
     [[nodiscard]] static QString durationText(qint64 ms);
     // The live line: "ids 37/247  found 2  12 s, about 48 s left  (Ctrl-C stops)"; detail (what is
     // being done: "gap 50 ms") follows the counts.
-    [[nodiscard]] static QString progressText(const QString &what, const ScanProgress &progress, const QString &detail = {});
+    [[nodiscard]] static QString progressText(const QString &what, const JobProgress &progress, const QString &detail = {});
 };
 
 } // namespace mbscope::app

@@ -19,7 +19,7 @@ namespace mbscope::app {
 
 namespace {
 
-QString text(const TimingScanSettings &s, const TimingReport &r, ScanEnd end)
+QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
 {
     QString t = QStringLiteral("TIMING %1 unit %2\n\n").arg(s.url.toString()).arg(s.unit);
     t += QStringLiteral("first answer after connecting   %1 ms (%2 failed before it)\n").arg(r.firstAnswerMs).arg(r.warmupFailures);
@@ -49,9 +49,9 @@ QString text(const TimingScanSettings &s, const TimingReport &r, ScanEnd end)
                                             .arg(r.clientsTried)
                       : r.clientsServed == s.maxClients ? QStringLiteral(" (all tried; there may be room for more)")
                                                         : QStringLiteral(" (client %1 was not served)").arg(r.clientsTried));
-    if (end == ScanEnd::Stopped)
+    if (end == JobEnd::Stopped)
         t += QStringLiteral("\nstopped (Ctrl-C): later measurements were not made\n");
-    else if (end == ScanEnd::TimeLimit)
+    else if (end == JobEnd::TimeLimit)
         t += QStringLiteral("\ntime limit (--max-time %1) reached: later measurements were not made\n")
                  .arg(ScanReport::durationText(s.maxDurationMs));
     const int gap = r.recommendedGapMs();
@@ -66,7 +66,7 @@ QString text(const TimingScanSettings &s, const TimingReport &r, ScanEnd end)
     return t;
 }
 
-QJsonObject json(const TimingScanSettings &s, const TimingReport &r, ScanEnd end)
+QJsonObject json(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
 {
     QJsonArray gaps;
     for (const TimingReport::GapTrial &g : r.gaps)
@@ -90,8 +90,8 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, ScanEnd end
         {QStringLiteral("clients_extra"), r.clientsTried == 0 || r.clientsServed == r.clientsTried
                                               ? QStringLiteral("not reached")
                                               : (r.oldestDropped ? QStringLiteral("drop_oldest") : QStringLiteral("refuse"))},
-        {QStringLiteral("stopped"), end == ScanEnd::Stopped},
-        {QStringLiteral("end"), QString::fromLatin1(scanEndName(end))},
+        {QStringLiteral("stopped"), end == JobEnd::Stopped},
+        {QStringLiteral("end"), QString::fromLatin1(jobEndName(end))},
         {QStringLiteral("recommended"),
          QJsonObject{{QStringLiteral("gap_ms"), r.recommendedGapMs()},
                      {QStringLiteral("timeout_ms"), r.recommendedTimeoutMs()},
@@ -148,7 +148,7 @@ int runTimingScan(const TimingScanSettings &settings, bool asJson, const ScanRec
     QString part; // what is being measured: "gap 50 ms"
     QObject::connect(&scanner, &TimingScanner::step, &scanner, [&](const QString &what) { part = what; });
     QObject::connect(&scanner, &TimingScanner::progressChanged, &scanner,
-                     [&](const ScanProgress &p) { line.show(ScanReport::progressText(QStringLiteral("steps"), p, part)); });
+                     [&](const JobProgress &p) { line.show(ScanReport::progressText(QStringLiteral("steps"), p, part)); });
     const std::optional<TimingReport> report = scanner.run(settings);
     line.clear();
     scanner.setTrafficLog(nullptr); // the last frames reach the journal
@@ -156,10 +156,10 @@ int runTimingScan(const TimingScanSettings &settings, bool asJson, const ScanRec
     if (!report)
         return ExitUsage;
     if (report->firstAnswerMs < 0) {
-        if (scanner.end() == ScanEnd::TimeLimit)
+        if (scanner.end() == JobEnd::TimeLimit)
             err << "mbscope scan: the time limit (" << ScanReport::durationText(settings.maxDurationMs) << ") came before unit "
                 << settings.unit << " at " << settings.url.toString() << " answered: nothing to time\n";
-        else if (scanner.end() == ScanEnd::Stopped)
+        else if (scanner.end() == JobEnd::Stopped)
             err << "mbscope scan: stopped before unit " << settings.unit << " at " << settings.url.toString()
                 << " answered: nothing to time\n";
         else

@@ -61,13 +61,13 @@ LineScanner::LineScanner(QObject *parent)
 
 bool LineScanner::mayContinue(int timeoutMs)
 {
-    if (m_end != ScanEnd::Completed)
+    if (m_end != JobEnd::Completed)
         return false;
     if (m_stopRequested)
-        m_end = ScanEnd::Stopped;
+        m_end = JobEnd::Stopped;
     else if (m_clock.elapsed() + timeoutMs > m_settings.maxDurationMs)
-        m_end = ScanEnd::TimeLimit;
-    return m_end == ScanEnd::Completed;
+        m_end = JobEnd::TimeLimit;
+    return m_end == JobEnd::Completed;
 }
 
 int LineScanner::timeoutAt(int baud) const
@@ -85,9 +85,9 @@ void LineScanner::skip(int trials, int timeoutMs)
     m_plannedLeftMs = qMax<qint64>(0, m_plannedLeftMs - qint64(trials) * timeoutMs);
 }
 
-ScanProgress LineScanner::progress() const
+JobProgress LineScanner::progress() const
 {
-    ScanProgress p;
+    JobProgress p;
     p.total = m_total;
     p.done = qMin(m_done, m_total);
     p.found = m_found;
@@ -133,7 +133,7 @@ bool LineScanner::pass(const QList<quint8> &ids, QList<LineTrial> &out)
                         skip(int(ids.size() - i - 1), timeoutMs); // the next setting: this one is known to work
                     Q_EMIT progressChanged(progress());
                     if (trial.probe.kind == UnitProbeKind::LinkError) {
-                        m_end = ScanEnd::LinkError;
+                        m_end = JobEnd::LinkError;
                         return false;
                     }
                     if (trial.works()) {
@@ -154,7 +154,7 @@ std::optional<QList<LineTrial>> LineScanner::run(const LineScanSettings &setting
         return std::nullopt;
     m_settings = settings;
     m_stopRequested = false;
-    m_end = ScanEnd::Completed;
+    m_end = JobEnd::Completed;
     m_done = 0;
     m_found = 0;
     m_plannedRunMs = 0;
@@ -180,9 +180,9 @@ std::optional<QList<LineTrial>> LineScanner::run(const LineScanSettings &setting
     }
     m_channel->closeLink();
     // Completed: what was not asked was not needed (a setting answered, or --first).
-    if (m_end == ScanEnd::Completed)
+    if (m_end == JobEnd::Completed)
         skip(m_total - m_done, 0);
-    ScanProgress last = progress();
+    JobProgress last = progress();
     last.remainingMs = 0;
     Q_EMIT progressChanged(last);
     return trials;

@@ -1,7 +1,8 @@
 #pragma once
 
 #include "probechannel.h"
-#include "scanprogress.h"
+#include "job/jobend.h"
+#include "job/jobprogress.h"
 #include "unitprobe.h"
 
 #include "transport/linkurl.h"
@@ -64,15 +65,15 @@ public:
         m_stopRequested = true;
         m_channel->cancel();
     }
-    [[nodiscard]] ScanEnd end() const { return m_end; }
+    [[nodiscard]] JobEnd end() const { return m_end; }
     [[nodiscard]] ProbeChannel *channel() { return m_channel; }
     // Trials done of the plan (every setting with every id; without ids, 1 and then 2-247 on
     // each: trials not needed, as the ids after one that answered, count as done), and the time
     // left: the plan's timeouts left, scaled by what the trials so far took of theirs.
-    [[nodiscard]] ScanProgress progress() const;
+    [[nodiscard]] JobProgress progress() const;
 
 Q_SIGNALS:
-    void progressChanged(const mbscope::ScanProgress &progress);
+    void progressChanged(const mbscope::JobProgress &progress);
     void tried(const mbscope::LineTrial &trial);
 
 private:
@@ -88,7 +89,7 @@ private:
     LineScanSettings m_settings;
     QElapsedTimer m_clock;
     bool m_stopRequested = false;
-    ScanEnd m_end = ScanEnd::Completed;
+    JobEnd m_end = JobEnd::Completed;
     int m_done = 0;
     int m_total = 0;
     int m_found = 0;

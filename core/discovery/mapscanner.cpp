@@ -59,7 +59,7 @@ std::optional<RegisterMap> MapScanner::run(const MapScanSettings &settings)
     m_channel->setGapMs(settings.gapMs);
     m_requests = 0;
     m_stopRequested = false;
-    m_end = ScanEnd::Completed;
+    m_end = JobEnd::Completed;
     m_clock.start();
 
     RegisterMap map;
@@ -84,15 +84,15 @@ std::optional<RegisterMap> MapScanner::run(const MapScanSettings &settings)
 
 bool MapScanner::mayContinue()
 {
-    if (m_end != ScanEnd::Completed)
+    if (m_end != JobEnd::Completed)
         return false;
     if (m_stopRequested)
-        m_end = ScanEnd::Stopped;
+        m_end = JobEnd::Stopped;
     else if (m_requests >= m_settings.maxRequests)
-        m_end = ScanEnd::RequestLimit;
+        m_end = JobEnd::RequestLimit;
     else if (m_clock.elapsed() + m_settings.timeoutMs + m_settings.gapMs > m_settings.maxDurationMs)
-        m_end = ScanEnd::TimeLimit;
-    return m_end == ScanEnd::Completed;
+        m_end = JobEnd::TimeLimit;
+    return m_end == JobEnd::Completed;
 }
 
 std::optional<ProbeChannel::Answer> MapScanner::ask(const QByteArray &pdu)
@@ -106,7 +106,7 @@ std::optional<ProbeChannel::Answer> MapScanner::ask(const QByteArray &pdu)
         return std::nullopt;
     }
     if (answer->transaction.status == TransactionStatus::LinkError)
-        m_end = ScanEnd::LinkError;
+        m_end = JobEnd::LinkError;
     return answer;
 }
 
@@ -305,7 +305,7 @@ void MapScanner::probeOptional(RegisterMap &map)
 void MapScanner::report(int tableIndex, int address)
 {
     const int window = m_settings.lastAddress - m_settings.firstAddress + 1;
-    ScanProgress p;
+    JobProgress p;
     p.total = int(m_settings.functions.size()) * window;
     p.done = qMin(p.total, tableIndex * window + (address - m_settings.firstAddress));
     p.elapsedMs = m_clock.elapsed();

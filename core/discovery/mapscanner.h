@@ -3,7 +3,8 @@
 #include "mapscansettings.h"
 #include "probechannel.h"
 #include "registermap.h"
-#include "scanprogress.h"
+#include "job/jobend.h"
+#include "job/jobprogress.h"
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QObject>
@@ -38,11 +39,11 @@ public:
         m_stopRequested = true;
         m_channel->cancel();
     }
-    [[nodiscard]] ScanEnd end() const { return m_end; }
+    [[nodiscard]] JobEnd end() const { return m_end; }
     [[nodiscard]] ProbeChannel *channel() { return m_channel; }
 
 Q_SIGNALS:
-    void progressChanged(const mbscope::ScanProgress &progress);
+    void progressChanged(const mbscope::JobProgress &progress);
 
 private:
     enum class Reply : quint8 { Ok, IllegalAddress, IllegalQuantity, IllegalFunction, OtherException, Silent, Bad };
@@ -66,7 +67,7 @@ private:
     QElapsedTimer m_clock;
     int m_requests = 0;
     bool m_stopRequested = false;
-    ScanEnd m_end = ScanEnd::Completed;
+    JobEnd m_end = JobEnd::Completed;
     int m_tableIndex = 0;
 };
 

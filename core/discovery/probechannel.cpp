@@ -6,6 +6,7 @@
 #include "protocol/adubuilder.h"
 
 #include <QtCore/QEventLoop>
+#include <QtCore/QThread>
 #include <QtCore/QTimer>
 
 namespace mbscope {
@@ -38,6 +39,12 @@ void ProbeChannel::setTarget(const LinkUrl &url)
 
 void ProbeChannel::setTrafficLog(TrafficLog *log)
 {
+    // From the thread that shows the scan while the channel lives in a job's thread (JobThread):
+    // set there, between two of its steps.
+    if (thread() != QThread::currentThread() && thread()->isRunning()) {
+        QMetaObject::invokeMethod(this, [this, log] { m_engine->setTrafficLog(log); }, Qt::BlockingQueuedConnection);
+        return;
+    }
     m_engine->setTrafficLog(log);
 }
 

@@ -38,7 +38,8 @@ public:
     void setGapMs(int gapMs) { m_gapMs = gapMs; }
     // Every frame in and out goes to log (a command's --record, the window's recording) until
     // setTrafficLog(nullptr), which writes the last ones to its journal; log must outlive that,
-    // and be shared (TrafficLog::setShared) when another engine writes it too.
+    // and be shared (TrafficLog::setShared) when another engine writes it too. Callable from
+    // another thread than the channel's (it waits for the channel's thread to set it).
     void setTrafficLog(TrafficLog *log);
     [[nodiscard]] int gapMs() const { return m_gapMs; }
 

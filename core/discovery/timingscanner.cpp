@@ -10,6 +10,7 @@
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QEventLoop>
+#include <QtCore/QThread>
 #include <QtCore/QScopeGuard>
 #include <QtCore/QSet>
 #include <QtCore/QTimer>
@@ -108,25 +109,30 @@ QByteArray TimingScanner::readPdu(int quantity) const
 void TimingScanner::stop()
 {
     m_stopRequested = true;
-    if (m_report && m_end == ScanEnd::Completed)
-        m_end = ScanEnd::Stopped;
+    if (m_report && m_end == JobEnd::Completed)
+        m_end = JobEnd::Stopped;
     m_channel->cancel();
     Q_EMIT stopping();
 }
 
 bool TimingScanner::mayContinue(qint64 nextMs)
 {
-    if (m_end != ScanEnd::Completed)
+    if (m_end != JobEnd::Completed)
         return false;
     if (m_stopRequested)
-        m_end = ScanEnd::Stopped;
+        m_end = JobEnd::Stopped;
     else if (m_clock.elapsed() + nextMs > m_settings.maxDurationMs)
-        m_end = ScanEnd::TimeLimit;
-    return m_end == ScanEnd::Completed;
+        m_end = JobEnd::TimeLimit;
+    return m_end == JobEnd::Completed;
 }
 
 void TimingScanner::setTrafficLog(TrafficLog *log)
 {
+    // From the thread that shows the scan while the scanner lives in a job's thread (JobThread).
+    if (thread() != QThread::currentThread() && thread()->isRunning()) {
+        QMetaObject::invokeMethod(this, [this, log] { setTrafficLog(log); }, Qt::BlockingQueuedConnection);
+        return;
+    }
     m_log = log;
     m_channel->setTrafficLog(log);
 }
@@ -186,9 +192,9 @@ qint64 TimingScanner::stepCostMs(int index) const
     return settle + answer + (k >= 2 ? qMax<qint64>(20, gap) + answer : 0);
 }
 
-ScanProgress TimingScanner::progress() const
+JobProgress TimingScanner::progress() const
 {
-    ScanProgress p;
+    JobProgress p;
     p.total = m_partStart[PartCount];
     p.done = qMin(m_done, p.total);
     p.elapsedMs = m_clock.isValid() ? m_clock.elapsed() : 0;
@@ -224,7 +230,7 @@ std::optional<TimingReport> TimingScanner::run(const TimingScanSettings &setting
         return std::nullopt;
     m_settings = settings;
     m_stopRequested = false;
-    m_end = ScanEnd::Completed;
+    m_end = JobEnd::Completed;
     m_done = 0;
     m_answeredMs = 0;
     m_answered = 0;
@@ -247,19 +253,19 @@ std::optional<TimingReport> TimingScanner::run(const TimingScanSettings &setting
     m_clock.start();
     warmup(report); // its start emits the first progress, at 0
     if (report.firstAnswerMs >= 0) {
-        if (m_end == ScanEnd::Completed)
+        if (m_end == JobEnd::Completed)
             gaps(report);
-        if (m_end == ScanEnd::Completed)
+        if (m_end == JobEnd::Completed)
             largestRead(report);
         // The probe channel's connection would count among the clients: the rest opens its own.
         m_channel->closeLink();
-        if (m_end == ScanEnd::Completed)
+        if (m_end == JobEnd::Completed)
             pipelining(report);
-        if (m_end == ScanEnd::Completed)
+        if (m_end == JobEnd::Completed)
             clients(report);
     }
     m_channel->closeLink();
-    ScanProgress last = progress();
+    JobProgress last = progress();
     last.remainingMs = 0; // ended: nothing is left, whatever was not asked
     m_report = nullptr;
     Q_EMIT progressChanged(last);
@@ -362,7 +368,7 @@ void TimingScanner::largestRead(TimingReport &report)
     report.largestQuantity = ok;
     report.largestFound = ok == specMax || refused - ok == 1;
     report.largestAnswerPdu = ok == 0 ? 0 : 2 + (m_settings.function <= 2 ? (ok + 7) / 8 : 2 * ok);
-    if (m_end == ScanEnd::Completed)
+    if (m_end == JobEnd::Completed)
         endPart(Largest);
 }
 

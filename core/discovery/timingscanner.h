@@ -1,7 +1,8 @@
 #pragma once
 
 #include "probechannel.h"
-#include "scanprogress.h"
+#include "job/jobend.h"
+#include "job/jobprogress.h"
 
 #include "transport/linkurl.h"
 
@@ -83,7 +84,7 @@ public:
     // The report, or nullopt with settings.problem() unusable. end() says how it ended.
     [[nodiscard]] std::optional<TimingReport> run(const TimingScanSettings &settings);
     void stop();
-    [[nodiscard]] ScanEnd end() const { return m_end; }
+    [[nodiscard]] JobEnd end() const { return m_end; }
     // Every frame of every connection the scan opens goes to log (ProbeChannel::setTrafficLog),
     // each connection on a link id of its own: the log must be shared (TrafficLog::setShared),
     // and outlive the scanner.
@@ -92,14 +93,14 @@ public:
     void setFramesPublished(bool published) { m_framesPublished = published; }
     // The channel of its one-at-a-time requests (its frames: ProbeChannel::framesLogged).
     [[nodiscard]] ProbeChannel *channel() { return m_channel; }
-    [[nodiscard]] bool wasStopped() const { return m_end == ScanEnd::Stopped; }
+    [[nodiscard]] bool wasStopped() const { return m_end == JobEnd::Stopped; }
     // Steps done of the plan, and the time left: the plan's waits (gaps, warm-up, settling) and
     // one answer a step, at the average answer time measured so far (the timeout before any).
-    [[nodiscard]] ScanProgress progress() const;
+    [[nodiscard]] JobProgress progress() const;
 
 Q_SIGNALS:
     void step(const QString &what);
-    void progressChanged(const mbscope::ScanProgress &progress);
+    void progressChanged(const mbscope::JobProgress &progress);
     // stop() was called: the waits of the part running end.
     void stopping();
     // With setFramesPublished(true): every frame of every connection as its engine logs it
@@ -137,7 +138,7 @@ private:
     const TimingReport *m_report = nullptr; // while run() runs: the estimate reads the gaps and warm-up seen
     QElapsedTimer m_clock;
     bool m_stopRequested = false;
-    ScanEnd m_end = ScanEnd::Completed;
+    JobEnd m_end = JobEnd::Completed;
     int m_partStart[PartCount + 1] = {};
     int m_done = 0;
     qint64 m_answeredMs = 0; // time of the measured requests beyond their gaps

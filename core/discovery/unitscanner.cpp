@@ -38,12 +38,12 @@ bool UnitScanner::start(const UnitScanSettings &settings)
 void UnitScanner::stop()
 {
     if (m_running)
-        end(ScanEnd::Stopped);
+        end(JobEnd::Stopped);
 }
 
-ScanProgress UnitScanner::progress() const
+JobProgress UnitScanner::progress() const
 {
-    ScanProgress p;
+    JobProgress p;
     p.total = m_settings.idCount();
     p.done = int(m_results.size());
     for (const UnitProbe &r : m_results)
@@ -60,12 +60,12 @@ void UnitScanner::next()
     if (!m_running)
         return;
     if (m_nextUnit > m_settings.lastUnit) {
-        end(ScanEnd::Completed);
+        end(JobEnd::Completed);
         return;
     }
     // The probe must fit in what is left of the time limit, or it is not sent.
     if (m_clock.elapsed() + m_settings.timeoutMs + m_settings.gapMs > m_settings.maxDurationMs) {
-        end(ScanEnd::TimeLimit);
+        end(JobEnd::TimeLimit);
         return;
     }
     m_current = m_nextUnit++;
@@ -84,13 +84,13 @@ void UnitScanner::onAnswered(const Transaction &transaction, const QByteArray &b
     Q_EMIT probed(probe);
     Q_EMIT progressChanged(progress());
     if (probe.kind == UnitProbeKind::LinkError) {
-        end(ScanEnd::LinkError);
+        end(JobEnd::LinkError);
         return;
     }
     next();
 }
 
-void UnitScanner::end(ScanEnd how)
+void UnitScanner::end(JobEnd how)
 {
     m_running = false;
     m_channel->cancel();

@@ -1,7 +1,8 @@
 #pragma once
 
 #include "probechannel.h"
-#include "scanprogress.h"
+#include "job/jobend.h"
+#include "job/jobprogress.h"
 #include "unitprobe.h"
 #include "unitscansettings.h"
 
@@ -27,7 +28,7 @@ public:
     [[nodiscard]] bool isRunning() const { return m_running; }
     [[nodiscard]] const QList<UnitProbe> &results() const { return m_results; }
     [[nodiscard]] const UnitScanSettings &settings() const { return m_settings; }
-    [[nodiscard]] ScanProgress progress() const;
+    [[nodiscard]] JobProgress progress() const;
     [[nodiscard]] ProbeChannel *channel() { return m_channel; }
 
     // The read a scan sends (function, address, quantity), as a PDU.
@@ -35,13 +36,13 @@ public:
 
 Q_SIGNALS:
     void probed(const mbscope::UnitProbe &probe);
-    void progressChanged(const mbscope::ScanProgress &progress);
-    void finished(mbscope::ScanEnd end);
+    void progressChanged(const mbscope::JobProgress &progress);
+    void finished(mbscope::JobEnd end);
 
 private:
     void next();
     void onAnswered(const Transaction &transaction, const QByteArray &bytesRead);
-    void end(ScanEnd how);
+    void end(JobEnd how);
 
     ProbeChannel *m_channel;
     UnitScanSettings m_settings;

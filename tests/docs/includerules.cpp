@@ -81,7 +81,7 @@ QMap<QString, int> IncludeRules::coreLayers()
 {
     return {
         {QStringLiteral("protocol"), 0}, {QStringLiteral("time"), 0},    {QStringLiteral("json"), 0},
-        {QStringLiteral("metrics"), 0},
+        {QStringLiteral("metrics"), 0}, {QStringLiteral("job"), 0},
         {QStringLiteral("transport"), 1}, {QStringLiteral("exchange"), 2}, {QStringLiteral("traffic"), 3},
         {QStringLiteral("script"), 3},
         {QStringLiteral("engine"), 4},   {QStringLiteral("capture"), 4}, {QStringLiteral("profile"), 4},

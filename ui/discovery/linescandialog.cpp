@@ -2,6 +2,9 @@
 
 #include "scanform.h"
 
+#include "job/job.h"
+#include "job/jobthread.h"
+
 #include <QtCore/QSet>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QDialogButtonBox>
@@ -43,7 +46,9 @@ std::optional<QList<int>> numberList(const QString &text, int low, int high, QSt
 
 LineScanDialog::LineScanDialog(QWidget *parent)
     : QDialog(parent)
-    , m_scanner(new LineScanner(this))
+    , m_job(new Job(this))
+    , m_jobs(new JobThread(this))
+    , m_scanner(new LineScanner)
     , m_list(new QTreeWidget(this))
     , m_target(new QLineEdit(this))
     , m_bauds(new QLineEdit(QStringLiteral("9600, 19200, 38400, 57600, 115200, 4800, 2400, 1200"), this))
@@ -133,8 +138,13 @@ LineScanDialog::LineScanDialog(QWidget *parent)
     });
     connect(buttons, &QDialogButtonBox::rejected, this, &LineScanDialog::reject);
     connect(m_scanner, &LineScanner::tried, this, &LineScanDialog::onTried);
-    connect(m_scanner, &LineScanner::progressChanged, this, [this](const ScanProgress &p) {
-        if (m_running)
+    // The scanner lives in the job's thread: its signals and the job's cancel cross by queued connections.
+    m_jobs->adopt(m_scanner);
+    connect(m_scanner, &LineScanner::progressChanged, m_job, &Job::report);
+    connect(m_job, &Job::cancelRequested, m_scanner, &LineScanner::stop);
+    connect(m_job, &Job::finished, this, &LineScanDialog::onFinished);
+    connect(m_job, &Job::progressChanged, this, [this](const JobProgress &p) {
+        if (m_job->state() == JobState::Running)
             ScanForm::showProgress(m_progress, m_status, p, tr("%1 of %2 tried, %3 answered").arg(p.done).arg(p.total).arg(p.found));
     });
     m_status->setText(tr("Asks the read on every setting until CRC-valid answers come back. Never writes."));
@@ -143,7 +153,12 @@ LineScanDialog::LineScanDialog(QWidget *parent)
 
 LineScanDialog::~LineScanDialog()
 {
-    m_scanner->stop();
+    delete m_jobs; // cancels the scan, ends its thread and deletes the scanner there
+}
+
+bool LineScanDialog::isRunning() const
+{
+    return m_job->isActive();
 }
 
 void LineScanDialog::setTarget(const LinkUrl &url, quint8 function, quint16 address)
@@ -203,25 +218,34 @@ std::optional<LineScanSettings> LineScanDialog::settings()
 
 void LineScanDialog::start()
 {
-    if (m_running)
+    if (isRunning())
         return;
     const std::optional<LineScanSettings> s = settings();
     if (!s)
         return;
-    m_running = true;
     m_ran = *s;
     m_trials.clear();
     m_list->clear();
     m_progress->setRange(0, 1);
     m_progress->setValue(0);
+    LineScanner *scanner = m_scanner;
+    const LineScanSettings settings = *s;
+    m_jobs->run(m_job, [this, scanner, settings]() -> JobThread::Outcome {
+        // In the job's thread: only the scanner is touched here; the trials come back by value.
+        const std::optional<QList<LineTrial>> trials = scanner->run(settings);
+        return {scanner->end(), [this, trials] {
+                    if (trials)
+                        m_trials = *trials;
+                }};
+    });
     updateButtons();
-    const std::optional<QList<LineTrial>> trials = m_scanner->run(*s);
-    m_running = false;
-    if (trials)
-        m_trials = *trials;
-    summarise(m_scanner->end());
+}
+
+void LineScanDialog::onFinished(JobEnd end)
+{
+    summarise(end);
     updateButtons();
-    Q_EMIT scanFinished(m_scanner->end());
+    Q_EMIT scanFinished(end);
 }
 
 void LineScanDialog::onTried(const LineTrial &trial)
@@ -240,7 +264,7 @@ void LineScanDialog::onTried(const LineTrial &trial)
     m_list->scrollToItem(item);
 }
 
-void LineScanDialog::summarise(ScanEnd end)
+void LineScanDialog::summarise(JobEnd end)
 {
     QStringList working;
     QSet<char> parities;
@@ -250,15 +274,15 @@ void LineScanDialog::summarise(ScanEnd end)
             parities.insert(t.parity);
         }
     }
-    if (end == ScanEnd::LinkError && working.isEmpty()) {
+    if (end == JobEnd::LinkError && working.isEmpty()) {
         ScanForm::showProblem(m_status, tr("The port failed: %1").arg(m_trials.isEmpty() ? m_ran.url.toString() : m_trials.constLast().probe.summary()));
         return;
     }
     QString text = working.isEmpty() ? tr("No setting answered (%n tried).", nullptr, int(m_trials.size()))
                                      : tr("Answered: %1.").arg(working.join(QStringLiteral(", ")));
-    if (end == ScanEnd::Stopped)
+    if (end == JobEnd::Stopped)
         text = tr("Stopped. %1").arg(text);
-    else if (end == ScanEnd::TimeLimit)
+    else if (end == JobEnd::TimeLimit)
         text = tr("Time limit reached. %1").arg(text);
     if (parities.size() > 1)
         text += QLatin1Char(' ')
@@ -291,30 +315,31 @@ std::optional<LinkUrl> LineScanDialog::workingUrl() const
 
 void LineScanDialog::stop()
 {
-    m_scanner->stop();
+    m_job->cancel();
 }
 
 void LineScanDialog::reject()
 {
-    m_scanner->stop();
+    m_job->cancel();
     QDialog::reject();
 }
 
 void LineScanDialog::updateButtons()
 {
-    m_start->setEnabled(!m_running);
-    m_stop->setEnabled(m_running);
+    const bool running = isRunning();
+    m_start->setEnabled(!running);
+    m_stop->setEnabled(running);
     bool works = false;
     for (const LineTrial &t : std::as_const(m_trials))
         works = works || t.works();
-    m_use->setEnabled(works && !m_running);
+    m_use->setEnabled(works && !running);
     QList<QWidget *> fields{m_target, m_bauds, m_units, m_timeout, m_first};
     for (QCheckBox *box : std::as_const(m_parities))
         fields.append(box);
     for (QCheckBox *box : std::as_const(m_stopBits))
         fields.append(box);
     for (QWidget *w : std::as_const(fields))
-        w->setEnabled(!m_running);
+        w->setEnabled(!running);
 }
 
 } // namespace mbscope

@@ -21,6 +21,9 @@ namespace mbscope {
 // read until CRC-valid answers come back (core/discovery's LineScanner, reads only), listing every
 // setting tried as it goes. "Use this setting" hands the port with the setting that worked to
 // whoever asked (the unit scan's target).
+class Job;
+class JobThread;
+
 class LineScanDialog : public QDialog
 {
     Q_OBJECT
@@ -33,29 +36,34 @@ public:
     void setTarget(const LinkUrl &url, quint8 function, quint16 address);
     // The settings the fields make; nullopt, with the reason shown, when they make none.
     [[nodiscard]] std::optional<LineScanSettings> settings();
-    [[nodiscard]] bool isRunning() const { return m_running; }
+    [[nodiscard]] bool isRunning() const;
+    // The scan as a job (it runs on a thread of its own).
+    [[nodiscard]] Job *job() const { return m_job; }
     [[nodiscard]] const QList<LineTrial> &trials() const { return m_trials; }
     // The port with the selected working setting (the first that worked without a selection).
     [[nodiscard]] std::optional<LinkUrl> workingUrl() const;
 
 public Q_SLOTS:
-    // Runs the scan to its end (local event loops: the dialog stays live, Stop works).
+    // Starts the scan on the dialog's job thread and returns; scanFinished() when it ends.
     void start();
     void stop();
 
 Q_SIGNALS:
     void settingChosen(const mbscope::LinkUrl &url);
-    void scanFinished(mbscope::ScanEnd end);
+    void scanFinished(mbscope::JobEnd end);
 
 protected:
     void reject() override;
 
 private:
     void onTried(const LineTrial &trial);
-    void summarise(ScanEnd end);
+    void summarise(JobEnd end);
     void updateButtons();
+    void onFinished(JobEnd end);
 
-    LineScanner *m_scanner;
+    Job *m_job;
+    JobThread *m_jobs;
+    LineScanner *m_scanner; // lives in m_jobs' thread
     QTreeWidget *m_list;
     QLineEdit *m_target;
     QLineEdit *m_bauds;
@@ -69,7 +77,6 @@ private:
     QPushButton *m_use;
     QProgressBar *m_progress;
     QLabel *m_status;
-    bool m_running = false;
     LineScanSettings m_ran;
     QList<LineTrial> m_trials;
 };

@@ -9,6 +9,8 @@
 #include "discovery/mapscanner.h"
 #include "discovery/profiledraft.h"
 #include "discovery/scanwatches.h"
+#include "job/job.h"
+#include "job/jobthread.h"
 
 #include <QtCore/QDir>
 #include <QtCore/QFileInfo>
@@ -29,7 +31,9 @@ namespace mbscope {
 
 MapScanDialog::MapScanDialog(QWidget *parent)
     : QDialog(parent)
-    , m_scanner(new MapScanner(this))
+    , m_job(new Job(this))
+    , m_jobs(new JobThread(this))
+    , m_scanner(new MapScanner)
     , m_tree(new MapResultTree(this))
     , m_target(new QLineEdit(this))
     , m_unit(ScanForm::spinBox(this, "mapUnit", 0, 255, 1))
@@ -133,14 +137,24 @@ MapScanDialog::MapScanDialog(QWidget *parent)
         dialog->raise();
     });
     connect(buttons, &QDialogButtonBox::rejected, this, &MapScanDialog::reject);
-    connect(m_scanner, &MapScanner::progressChanged, this, &MapScanDialog::onProgress);
+    // The scanner lives in the job's thread: its progress and the job's cancel cross by queued signals.
+    m_jobs->adopt(m_scanner);
+    connect(m_scanner, &MapScanner::progressChanged, m_job, &Job::report);
+    connect(m_job, &Job::cancelRequested, m_scanner, &MapScanner::stop);
+    connect(m_job, &Job::progressChanged, this, &MapScanDialog::onProgress);
+    connect(m_job, &Job::finished, this, &MapScanDialog::onFinished);
     m_status->setText(tr("Reads every table's addresses (exception 02 says an address is missing). Never writes."));
     updateButtons();
 }
 
 MapScanDialog::~MapScanDialog()
 {
-    m_scanner->stop();
+    delete m_jobs; // cancels the scan, ends its thread and deletes the scanner there
+}
+
+bool MapScanDialog::isRunning() const
+{
+    return m_job->isActive();
 }
 
 void MapScanDialog::setTarget(const LinkUrl &url, quint8 unit)
@@ -182,24 +196,33 @@ std::optional<MapScanSettings> MapScanDialog::settings()
 
 void MapScanDialog::start()
 {
-    if (m_running)
+    if (isRunning())
         return;
     const std::optional<MapScanSettings> s = settings();
     if (!s)
         return;
-    m_running = true;
+    m_runSettings = s;
     m_map.reset();
     m_tree->clear();
     m_progress->setRange(0, 0);
-    updateButtons();
     m_status->setText(tr("Mapping unit %1\u2026").arg(s->unit));
-    const std::optional<RegisterMap> map = m_scanner->run(*s);
-    m_running = false;
-    const ScanEnd end = m_scanner->end();
+    MapScanner *scanner = m_scanner;
+    const MapScanSettings settings = *s;
+    m_jobs->run(m_job, [this, scanner, settings]() -> JobThread::Outcome {
+        // In the job's thread: only the scanner is touched here; the map comes back by value.
+        const std::optional<RegisterMap> map = scanner->run(settings);
+        return {scanner->end(), [this, map] { m_map = map; }};
+    });
+    updateButtons();
+}
+
+void MapScanDialog::onFinished(JobEnd end)
+{
+    const MapScanSettings s = m_runSettings.value_or(MapScanSettings{});
+    const std::optional<RegisterMap> &map = m_map;
     if (map) {
-        m_map = map;
-        m_mapTarget = s->url.toString();
-        m_mapUrl = s->url;
+        m_mapTarget = s.url.toString();
+        m_mapUrl = s.url;
         m_tree->showMap(*map);
     }
     const int found = map ? MapResultTree::addressCount(*map) : 0;
@@ -207,14 +230,14 @@ void MapScanDialog::start()
     m_progress->setValue(1);
     QString how;
     switch (end) {
-    case ScanEnd::Completed: how = tr("Map complete"); break;
-    case ScanEnd::Stopped: how = tr("Stopped"); break;
-    case ScanEnd::TimeLimit: how = tr("Time limit reached"); break;
-    case ScanEnd::RequestLimit: how = tr("Request limit reached"); break;
-    case ScanEnd::LinkError: how = tr("The link failed"); break;
+    case JobEnd::Completed: how = tr("Map complete"); break;
+    case JobEnd::Stopped: how = tr("Stopped"); break;
+    case JobEnd::TimeLimit: how = tr("Time limit reached"); break;
+    case JobEnd::RequestLimit: how = tr("Request limit reached"); break;
+    case JobEnd::LinkError: how = tr("The link failed"); break;
     }
-    if (end == ScanEnd::LinkError && found == 0)
-        ScanForm::showProblem(m_status, tr("The link failed: %1 cannot be reached.").arg(s->url.toString()));
+    if (end == JobEnd::LinkError && found == 0)
+        ScanForm::showProblem(m_status, tr("The link failed: %1 cannot be reached.").arg(s.url.toString()));
     else
         m_status->setText(tr("%1: %n address(es) found in %2 requests.", nullptr, found)
                               .arg(how)
@@ -225,18 +248,18 @@ void MapScanDialog::start()
 
 void MapScanDialog::stop()
 {
-    m_scanner->stop();
+    m_job->cancel();
 }
 
 void MapScanDialog::reject()
 {
-    m_scanner->stop();
+    m_job->cancel();
     QDialog::reject();
 }
 
-void MapScanDialog::onProgress(const ScanProgress &p)
+void MapScanDialog::onProgress(const JobProgress &p)
 {
-    if (!m_running)
+    if (m_job->state() != JobState::Running)
         return;
     ScanForm::showProgress(m_progress, m_status, p, tr("%1 of %2 addresses searched").arg(p.done).arg(p.total));
 }
@@ -281,17 +304,18 @@ void MapScanDialog::chooseDraftFile()
 
 void MapScanDialog::updateButtons()
 {
-    m_start->setEnabled(!m_running);
-    m_stop->setEnabled(m_running);
+    const bool running = isRunning();
+    m_start->setEnabled(!running);
+    m_stop->setEnabled(running);
     const bool blocks = m_map && MapResultTree::addressCount(*m_map) > 0;
-    m_save->setEnabled(m_map.has_value() && !m_running);
-    m_add->setEnabled(blocks && !m_running);
-    m_infer->setEnabled(blocks && !m_running);
+    m_save->setEnabled(m_map.has_value() && !running);
+    m_add->setEnabled(blocks && !running);
+    m_infer->setEnabled(blocks && !running);
     QList<QWidget *> fields{m_target, m_unit, m_first, m_last, m_step, m_optional, m_timeout, m_gap, m_maxRequests};
     for (QCheckBox *box : std::as_const(m_tables))
         fields.append(box);
     for (QWidget *w : std::as_const(fields))
-        w->setEnabled(!m_running);
+        w->setEnabled(!running);
 }
 
 } // namespace mbscope

@@ -2,7 +2,8 @@
 
 #include "discovery/mapscansettings.h"
 #include "discovery/registermap.h"
-#include "discovery/scanprogress.h"
+#include "job/jobend.h"
+#include "job/jobprogress.h"
 
 #include "watch/watchdefinition.h"
 
@@ -21,6 +22,8 @@ class QSpinBox;
 namespace mbscope {
 
 class InferDialog;
+class Job;
+class JobThread;
 class MapResultTree;
 class MapScanner;
 
@@ -41,7 +44,9 @@ public:
     void setTarget(const LinkUrl &url, quint8 unit);
     // The settings the fields make; nullopt, with the reason shown, when they make none.
     [[nodiscard]] std::optional<MapScanSettings> settings();
-    [[nodiscard]] bool isRunning() const { return m_running; }
+    [[nodiscard]] bool isRunning() const;
+    // The scan as a job: its state, progress and end (the scan itself runs on a thread of its own).
+    [[nodiscard]] Job *job() const { return m_job; }
     [[nodiscard]] const std::optional<RegisterMap> &map() const { return m_map; }
     [[nodiscard]] QList<WatchDefinition> watches() const;
     // Writes the map as a profile draft to path; false, with the reason shown, when it cannot.
@@ -51,23 +56,26 @@ public:
     InferDialog *inferTypes();
 
 public Q_SLOTS:
-    // Runs the scan to its end (local event loops: the dialog stays live, Stop works).
+    // Starts the scan on the dialog's job thread and returns; scanFinished() when it ends.
     void start();
     void stop();
 
 Q_SIGNALS:
     void watchesRequested(const QList<mbscope::WatchDefinition> &watches);
-    void scanFinished(mbscope::ScanEnd end);
+    void scanFinished(mbscope::JobEnd end);
 
 protected:
     void reject() override;
 
 private:
-    void onProgress(const ScanProgress &progress);
+    void onProgress(const JobProgress &progress);
+    void onFinished(JobEnd end);
     void chooseDraftFile();
     void updateButtons();
 
-    MapScanner *m_scanner;
+    Job *m_job;
+    JobThread *m_jobs;
+    MapScanner *m_scanner; // lives in m_jobs' thread
     MapResultTree *m_tree;
     QLineEdit *m_target;
     QSpinBox *m_unit;
@@ -87,7 +95,7 @@ private:
     InferDialog *m_inferDialog = nullptr;
     QProgressBar *m_progress;
     QLabel *m_status;
-    bool m_running = false;
+    std::optional<MapScanSettings> m_runSettings;
     std::optional<RegisterMap> m_map;
     QString m_mapTarget;
     LinkUrl m_mapUrl;

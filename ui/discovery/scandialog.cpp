@@ -216,7 +216,7 @@ void ScanDialog::reject()
     QDialog::reject();
 }
 
-void ScanDialog::onProgress(const ScanProgress &p)
+void ScanDialog::onProgress(const JobProgress &p)
 {
     if (!isRunning()) {
         m_progress->setValue(p.done);
@@ -225,16 +225,16 @@ void ScanDialog::onProgress(const ScanProgress &p)
     ScanForm::showProgress(m_progress, m_status, p, tr("%1 of %2 ids asked, %3 found").arg(p.done).arg(p.total).arg(p.found));
 }
 
-void ScanDialog::onFinished(ScanEnd end)
+void ScanDialog::onFinished(JobEnd end)
 {
-    const ScanProgress p = m_scanner->progress();
+    const JobProgress p = m_scanner->progress();
     QString how;
     switch (end) {
-    case ScanEnd::Completed: how = tr("Scan complete"); break;
-    case ScanEnd::Stopped: how = tr("Stopped"); break;
-    case ScanEnd::TimeLimit: how = tr("Time limit reached"); break;
-    case ScanEnd::RequestLimit: how = tr("Request limit reached"); break;
-    case ScanEnd::LinkError:
+    case JobEnd::Completed: how = tr("Scan complete"); break;
+    case JobEnd::Stopped: how = tr("Stopped"); break;
+    case JobEnd::TimeLimit: how = tr("Time limit reached"); break;
+    case JobEnd::RequestLimit: how = tr("Request limit reached"); break;
+    case JobEnd::LinkError:
         how = tr("The link failed: %1").arg(m_scanner->results().isEmpty() ? QString() : m_scanner->results().constLast().problem);
         break;
     }

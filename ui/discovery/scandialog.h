@@ -1,6 +1,7 @@
 #pragma once
 
-#include "discovery/scanprogress.h"
+#include "job/jobend.h"
+#include "job/jobprogress.h"
 #include "exchange/trafficentry.h"
 #include "discovery/unitscansettings.h"
 
@@ -66,7 +67,7 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void watchesRequested(const QList<mbscope::WatchDefinition> &watches);
-    void scanFinished(mbscope::ScanEnd end);
+    void scanFinished(mbscope::JobEnd end);
     // Every frame a scan sends and gets, as its engine logs it (the window's traffic view).
     void framesLogged(const QList<mbscope::TrafficFrame> &frames, const QString &link);
 
@@ -74,8 +75,8 @@ protected:
     void reject() override;
 
 private:
-    void onProgress(const ScanProgress &progress);
-    void onFinished(ScanEnd end);
+    void onProgress(const JobProgress &progress);
+    void onFinished(JobEnd end);
     void updateButtons();
     // A scanner's channel: on the recording, its frames shown.
     void adopt(ProbeChannel *channel);

@@ -62,7 +62,7 @@ std::optional<LinkUrl> ScanForm::target(const QLineEdit *target, QLabel *status,
     return parsed.url;
 }
 
-void ScanForm::showProgress(QProgressBar *bar, QLabel *status, const ScanProgress &progress, const QString &counts)
+void ScanForm::showProgress(QProgressBar *bar, QLabel *status, const JobProgress &progress, const QString &counts)
 {
     bar->setRange(0, qMax(1, progress.total));
     bar->setValue(qBound(0, progress.done, qMax(1, progress.total)));

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "discovery/scanprogress.h"
+#include "job/jobprogress.h"
 #include "transport/linkurl.h"
 
 #include <QtCore/QCoreApplication>
@@ -40,7 +40,7 @@ public:
     [[nodiscard]] static std::optional<LinkUrl> target(const QLineEdit *target, QLabel *status, const QString &emptyHint);
     // A running scan's progress: the bar at done of total, the status line "<counts>, about X left"
     // (counts: "12 of 40 ids asked, 1 found").
-    static void showProgress(QProgressBar *bar, QLabel *status, const ScanProgress &progress, const QString &counts);
+    static void showProgress(QProgressBar *bar, QLabel *status, const JobProgress &progress, const QString &counts);
     // "4.2 s" under a minute, "3 min 20 s" from one.
     [[nodiscard]] static QString duration(qint64 ms);
 };

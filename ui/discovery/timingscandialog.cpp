@@ -5,6 +5,8 @@
 #include "timingresulttree.h"
 
 #include "discovery/profiledraft.h"
+#include "job/job.h"
+#include "job/jobthread.h"
 
 #include <QtCore/QDir>
 #include <QtCore/QFile>
@@ -27,7 +29,9 @@ namespace mbscope {
 
 TimingScanDialog::TimingScanDialog(QWidget *parent)
     : QDialog(parent)
-    , m_scanner(new TimingScanner(this))
+    , m_job(new Job(this))
+    , m_jobs(new JobThread(this))
+    , m_scanner(new TimingScanner)
     , m_tree(new TimingResultTree(this))
     , m_target(new QLineEdit(this))
     , m_unit(ScanForm::spinBox(this, "timingUnit", 0, 255, 1))
@@ -118,8 +122,13 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
     connect(m_saveLimits, &QPushButton::clicked, this, &TimingScanDialog::chooseProfileFile);
     connect(buttons, &QDialogButtonBox::rejected, this, &TimingScanDialog::reject);
     connect(m_scanner, &TimingScanner::step, this, [this](const QString &what) { m_part = what; });
-    connect(m_scanner, &TimingScanner::progressChanged, this, [this](const ScanProgress &p) {
-        if (m_running)
+    // The scanner lives in the job's thread: its signals and the job's cancel cross by queued connections.
+    m_jobs->adopt(m_scanner);
+    connect(m_scanner, &TimingScanner::progressChanged, m_job, &Job::report);
+    connect(m_job, &Job::cancelRequested, m_scanner, &TimingScanner::stop);
+    connect(m_job, &Job::finished, this, &TimingScanDialog::onFinished);
+    connect(m_job, &Job::progressChanged, this, [this](const JobProgress &p) {
+        if (m_job->state() == JobState::Running)
             ScanForm::showProgress(m_progress, m_status, p, tr("Measuring %1: %2 of %3 steps").arg(m_part).arg(p.done).arg(p.total));
     });
     m_status->setText(tr("Asks the read again and again, at shorter and shorter gaps, and says what the unit stood. Never writes."));
@@ -128,7 +137,12 @@ TimingScanDialog::TimingScanDialog(QWidget *parent)
 
 TimingScanDialog::~TimingScanDialog()
 {
-    m_scanner->stop();
+    delete m_jobs; // cancels the scan, ends its thread and deletes the scanner there
+}
+
+bool TimingScanDialog::isRunning() const
+{
+    return m_job->isActive();
 }
 
 void TimingScanDialog::setTarget(const LinkUrl &url, quint8 unit, quint8 function, quint16 address)
@@ -178,27 +192,36 @@ std::optional<TimingScanSettings> TimingScanDialog::settings()
 
 void TimingScanDialog::start()
 {
-    if (m_running)
+    if (isRunning())
         return;
     const std::optional<TimingScanSettings> s = settings();
     if (!s)
         return;
-    m_running = true;
+    m_runSettings = s;
     m_scannedFunction = s->function;
     m_part.clear();
     m_report.reset();
     m_tree->clear();
     m_progress->setRange(0, 1);
     m_progress->setValue(0);
+    TimingScanner *scanner = m_scanner;
+    const TimingScanSettings settings = *s;
+    m_jobs->run(m_job, [this, scanner, settings]() -> JobThread::Outcome {
+        // In the job's thread: only the scanner is touched here; the report comes back by value.
+        const std::optional<TimingReport> report = scanner->run(settings);
+        return {scanner->end(), [this, report] { m_report = report; }};
+    });
     updateButtons();
-    const std::optional<TimingReport> report = m_scanner->run(*s);
-    m_running = false;
-    const bool stopped = m_scanner->end() == ScanEnd::Stopped;
-    const bool timeLimit = m_scanner->end() == ScanEnd::TimeLimit;
-    if (report) {
-        m_report = report;
+}
+
+void TimingScanDialog::onFinished(JobEnd end)
+{
+    const std::optional<TimingScanSettings> s = m_runSettings;
+    const std::optional<TimingReport> report = m_report;
+    const bool stopped = end == JobEnd::Stopped;
+    const bool timeLimit = end == JobEnd::TimeLimit;
+    if (report && s)
         m_tree->showReport(*s, *report);
-    }
     if (stopped && (!report || report->firstAnswerMs < 0))
         m_status->setText(tr("Stopped before the first answer: nothing was measured."));
     else if (timeLimit && (!report || report->firstAnswerMs < 0))
@@ -220,12 +243,12 @@ void TimingScanDialog::start()
 
 void TimingScanDialog::stop()
 {
-    m_scanner->stop();
+    m_job->cancel();
 }
 
 void TimingScanDialog::reject()
 {
-    m_scanner->stop();
+    m_job->cancel();
     QDialog::reject();
 }
 
@@ -275,13 +298,14 @@ void TimingScanDialog::chooseProfileFile()
 
 void TimingScanDialog::updateButtons()
 {
-    m_start->setEnabled(!m_running);
-    m_stop->setEnabled(m_running);
-    m_copy->setEnabled(m_report.has_value() && m_report->firstAnswerMs >= 0 && !m_running);
+    const bool running = isRunning();
+    m_start->setEnabled(!running);
+    m_stop->setEnabled(running);
+    m_copy->setEnabled(m_report.has_value() && m_report->firstAnswerMs >= 0 && !running);
     m_saveLimits->setEnabled(m_copy->isEnabled());
     for (QWidget *w : std::initializer_list<QWidget *>{m_target, m_unit, m_function, m_address, m_timeout, m_gaps, m_perGap,
                                                        m_pipeline, m_clients})
-        w->setEnabled(!m_running);
+        w->setEnabled(!running);
 }
 
 } // namespace mbscope

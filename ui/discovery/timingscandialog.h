@@ -15,6 +15,8 @@ class QSpinBox;
 
 namespace mbscope {
 
+class Job;
+class JobThread;
 class TimingResultTree;
 
 // Scan > Timing: how a unit copes with being asked (core/discovery's TimingScanner, reads only):
@@ -34,11 +36,13 @@ public:
     void setTarget(const LinkUrl &url, quint8 unit, quint8 function, quint16 address);
     // The settings the fields make; nullopt, with the reason shown, when they make none.
     [[nodiscard]] std::optional<TimingScanSettings> settings();
-    [[nodiscard]] bool isRunning() const { return m_running; }
+    [[nodiscard]] bool isRunning() const;
+    // The scan as a job (it runs on a thread of its own).
+    [[nodiscard]] Job *job() const { return m_job; }
     [[nodiscard]] const std::optional<TimingReport> &report() const { return m_report; }
 
 public Q_SLOTS:
-    // Runs the scan to its end (local event loops: the dialog stays live, Stop works).
+    // Starts the scan on the dialog's job thread and returns; scanFinished() when it ends.
     void start();
     void stop();
     void copySettings();
@@ -55,8 +59,11 @@ protected:
 
 private:
     void updateButtons();
+    void onFinished(JobEnd end);
 
-    TimingScanner *m_scanner;
+    Job *m_job;
+    JobThread *m_jobs;
+    TimingScanner *m_scanner; // lives in m_jobs' thread
     TimingResultTree *m_tree;
     QLineEdit *m_target;
     QSpinBox *m_unit;
@@ -74,7 +81,7 @@ private:
     quint8 m_scannedFunction = 3; // the read function of the last scan
     QProgressBar *m_progress;
     QLabel *m_status;
-    bool m_running = false;
+    std::optional<TimingScanSettings> m_runSettings;
     QString m_part; // what the scan measures now: "gap 50 ms"
     std::optional<TimingReport> m_report;
 };

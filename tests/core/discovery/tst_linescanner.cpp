@@ -28,7 +28,7 @@ private Q_SLOTS:
 private:
     [[nodiscard]] LineScanSettings settings(const QList<quint8> &units) const;
     // Runs a scan; every progress it emitted in *seen.
-    std::optional<QList<LineTrial>> run(LineScanner &scanner, const LineScanSettings &s, QList<ScanProgress> *seen);
+    std::optional<QList<LineTrial>> run(LineScanner &scanner, const LineScanSettings &s, QList<JobProgress> *seen);
 
     QTemporaryDir m_dir;
     QProcess m_socat;
@@ -39,7 +39,7 @@ private:
 
 void TestLineScanner::initTestCase()
 {
-    qRegisterMetaType<ScanProgress>();
+    qRegisterMetaType<JobProgress>();
     const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
     if (socat.isEmpty())
         QSKIP("socat is not installed: no pty pair");
@@ -81,10 +81,10 @@ LineScanSettings TestLineScanner::settings(const QList<quint8> &units) const
     return s;
 }
 
-std::optional<QList<LineTrial>> TestLineScanner::run(LineScanner &scanner, const LineScanSettings &s, QList<ScanProgress> *seen)
+std::optional<QList<LineTrial>> TestLineScanner::run(LineScanner &scanner, const LineScanSettings &s, QList<JobProgress> *seen)
 {
     const QMetaObject::Connection c =
-        connect(&scanner, &LineScanner::progressChanged, this, [seen](const ScanProgress &p) { seen->append(p); });
+        connect(&scanner, &LineScanner::progressChanged, this, [seen](const JobProgress &p) { seen->append(p); });
     std::optional<QList<LineTrial>> trials = scanner.run(s);
     disconnect(c);
     return trials;
@@ -94,10 +94,10 @@ std::optional<QList<LineTrial>> TestLineScanner::run(LineScanner &scanner, const
 void TestLineScanner::progressCountsThePlan()
 {
     LineScanner scanner;
-    QList<ScanProgress> seen;
+    QList<JobProgress> seen;
     const std::optional<QList<LineTrial>> trials = run(scanner, settings({1, 5}), &seen);
     QVERIFY(trials);
-    QCOMPARE(scanner.end(), ScanEnd::Completed);
+    QCOMPARE(scanner.end(), JobEnd::Completed);
     QCOMPARE(trials->size(), 4);
     for (const LineTrial &t : *trials)
         QVERIFY2(t.works(), qPrintable(t.settingText() + QLatin1Char(' ') + t.probe.summary()));
@@ -107,7 +107,7 @@ void TestLineScanner::progressCountsThePlan()
     QCOMPARE(seen.first().total, 8);
     QCOMPARE(seen.first().remainingMs, qint64(2 * 2 * (217 + 208)));
     int done = 0;
-    for (const ScanProgress &p : std::as_const(seen)) {
+    for (const JobProgress &p : std::as_const(seen)) {
         QCOMPARE(p.total, 8);
         QVERIFY2(p.done >= done, qPrintable(QStringLiteral("done went from %1 to %2").arg(done).arg(p.done)));
         done = p.done;
@@ -124,13 +124,13 @@ void TestLineScanner::progressCountsThePlan()
 void TestLineScanner::withoutIdsThePlanHasBothPasses()
 {
     LineScanner scanner;
-    QList<ScanProgress> seen;
+    QList<JobProgress> seen;
     LineScanSettings s = settings({});
     s.bauds = {19200};
     const std::optional<QList<LineTrial>> trials = run(scanner, s, &seen);
     QVERIFY(trials);
     QCOMPARE(trials->size(), 2);
-    for (const ScanProgress &p : std::as_const(seen))
+    for (const JobProgress &p : std::as_const(seen))
         QCOMPARE(p.total, 2 * 247);
     QCOMPARE(seen.last().done, 2 * 247);
     QCOMPARE(seen.last().remainingMs, qint64(0));
@@ -140,33 +140,33 @@ void TestLineScanner::withoutIdsThePlanHasBothPasses()
 void TestLineScanner::timeLimitEndsIt()
 {
     LineScanner scanner;
-    QList<ScanProgress> seen;
+    QList<JobProgress> seen;
     LineScanSettings s = settings({5});
     s.parities = {'E', 'N', 'O'};
     s.stopBits = {1, 2};
     s.maxDurationMs = 700;
     const std::optional<QList<LineTrial>> trials = run(scanner, s, &seen);
     QVERIFY(trials);
-    QCOMPARE(scanner.end(), ScanEnd::TimeLimit);
+    QCOMPARE(scanner.end(), JobEnd::TimeLimit);
     QVERIFY(!trials->isEmpty() && trials->size() < 12);
     QCOMPARE(seen.last().total, 12);
     QCOMPARE(seen.last().done, int(trials->size()));
     QCOMPARE(seen.last().remainingMs, qint64(0));
-    for (const ScanProgress &p : std::as_const(seen))
+    for (const JobProgress &p : std::as_const(seen))
         QVERIFY(p.remainingMs <= s.maxDurationMs);
 }
 
 void TestLineScanner::stopKeepsWhatWasTried()
 {
     LineScanner scanner;
-    QList<ScanProgress> seen;
-    connect(&scanner, &LineScanner::progressChanged, this, [&scanner](const ScanProgress &p) {
+    QList<JobProgress> seen;
+    connect(&scanner, &LineScanner::progressChanged, this, [&scanner](const JobProgress &p) {
         if (p.done == 2)
             scanner.stop();
     });
     const std::optional<QList<LineTrial>> trials = run(scanner, settings({5}), &seen);
     QVERIFY(trials);
-    QCOMPARE(scanner.end(), ScanEnd::Stopped);
+    QCOMPARE(scanner.end(), JobEnd::Stopped);
     QCOMPARE(trials->size(), 2);
     QCOMPARE(seen.last().done, 2);
     QCOMPARE(seen.last().remainingMs, qint64(0));

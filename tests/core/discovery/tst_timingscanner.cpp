@@ -65,7 +65,7 @@ class TestTimingScanner : public QObject
     Q_OBJECT
 
 private Q_SLOTS:
-    void initTestCase() { qRegisterMetaType<ScanProgress>(); }
+    void initTestCase() { qRegisterMetaType<JobProgress>(); }
     void progressFollowsThePlan();
     void timeLimitEndsIt();
     void timeLimitBeforeAnyAnswer();
@@ -78,11 +78,11 @@ void TestTimingScanner::progressFollowsThePlan()
     Device device;
     QVERIFY(device.start());
     TimingScanner scanner;
-    QList<ScanProgress> seen;
-    connect(&scanner, &TimingScanner::progressChanged, this, [&](const ScanProgress &p) { seen.append(p); });
+    QList<JobProgress> seen;
+    connect(&scanner, &TimingScanner::progressChanged, this, [&](const JobProgress &p) { seen.append(p); });
     const std::optional<TimingReport> report = scanner.run(smallScan(device.url));
     QVERIFY(report);
-    QCOMPARE(scanner.end(), ScanEnd::Completed);
+    QCOMPARE(scanner.end(), JobEnd::Completed);
     // The device is busy under 20 ms: errors start at 10 ms, so 0 ms is never asked.
     QCOMPARE(report->shortestCleanGapMs, 20);
     QCOMPARE(report->gaps.size(), 3);
@@ -102,7 +102,7 @@ void TestTimingScanner::progressFollowsThePlan()
     const int clients = 300 + 2 * (300 + 20 + 300);
     QCOMPARE(seen.first().remainingMs, qint64(warmup + gaps + largest + pipeline + clients));
     int done = 0;
-    for (const ScanProgress &p : std::as_const(seen)) {
+    for (const JobProgress &p : std::as_const(seen)) {
         QCOMPARE(p.total, total);
         QVERIFY2(p.done >= done, qPrintable(QStringLiteral("done went from %1 to %2").arg(done).arg(p.done)));
         QVERIFY(p.remainingMs >= 0);
@@ -125,11 +125,11 @@ void TestTimingScanner::timeLimitEndsIt()
     s.requestsPerGap = 50; // 10 s of gaps
     s.maxDurationMs = 1500;
     TimingScanner scanner;
-    QList<ScanProgress> seen;
-    connect(&scanner, &TimingScanner::progressChanged, this, [&](const ScanProgress &p) { seen.append(p); });
+    QList<JobProgress> seen;
+    connect(&scanner, &TimingScanner::progressChanged, this, [&](const JobProgress &p) { seen.append(p); });
     const std::optional<TimingReport> report = scanner.run(s);
     QVERIFY(report);
-    QCOMPARE(scanner.end(), ScanEnd::TimeLimit);
+    QCOMPARE(scanner.end(), JobEnd::TimeLimit);
     QVERIFY(!scanner.wasStopped());
     QVERIFY(report->firstAnswerMs >= 0);
     QCOMPARE(report->gaps.size(), 1);
@@ -139,7 +139,7 @@ void TestTimingScanner::timeLimitEndsIt()
     QVERIFY(seen.last().done < seen.last().total);
     QCOMPARE(seen.last().remainingMs, qint64(0));
     // The estimate never promises more than the limit leaves.
-    for (const ScanProgress &p : std::as_const(seen))
+    for (const JobProgress &p : std::as_const(seen))
         QVERIFY(p.remainingMs <= s.maxDurationMs);
 }
 
@@ -155,7 +155,7 @@ void TestTimingScanner::timeLimitBeforeAnyAnswer()
     TimingScanner scanner;
     const std::optional<TimingReport> report = scanner.run(s);
     QVERIFY(report);
-    QCOMPARE(scanner.end(), ScanEnd::TimeLimit);
+    QCOMPARE(scanner.end(), JobEnd::TimeLimit);
     QVERIFY(report->firstAnswerMs < 0);
     QVERIFY(report->warmupFailures >= 1);
     QVERIFY(report->gaps.isEmpty());
@@ -167,15 +167,15 @@ void TestTimingScanner::stopKeepsWhatWasMeasured()
     Device device;
     QVERIFY(device.start());
     TimingScanner scanner;
-    QList<ScanProgress> seen;
-    connect(&scanner, &TimingScanner::progressChanged, this, [&](const ScanProgress &p) {
+    QList<JobProgress> seen;
+    connect(&scanner, &TimingScanner::progressChanged, this, [&](const JobProgress &p) {
         seen.append(p);
         if (p.done == 5)
             scanner.stop();
     });
     const std::optional<TimingReport> report = scanner.run(smallScan(device.url));
     QVERIFY(report);
-    QCOMPARE(scanner.end(), ScanEnd::Stopped);
+    QCOMPARE(scanner.end(), JobEnd::Stopped);
     QVERIFY(scanner.wasStopped());
     QVERIFY(report->firstAnswerMs >= 0);
     QCOMPARE(report->gaps.size(), 2); // 50 ms done (3), 20 ms begun (1)

@@ -6,6 +6,8 @@
 // simulator that maps the same.
 
 #include "discovery/mapresulttree.h"
+#include "discovery/mapscanner.h"
+#include "job/job.h"
 #include "discovery/linescandialog.h"
 #include "discovery/mapscandialog.h"
 #include "discovery/scandialog.h"
@@ -30,6 +32,7 @@
 #include <QtCore/QProcess>
 #include <QtCore/QScopeGuard>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QThread>
 #include <QtCore/QTimer>
 #include <QtWidgets/QTreeWidget>
 #include <QtTest/QAbstractItemModelTester>
@@ -58,6 +61,7 @@ private slots:
     void badTargetIsSaid();
     void toolsMenuOpensIt();
     void mapUnitClonesIt();
+    void mapScanLeavesTheWindowLoopAlone();
     void timingOfAFoundUnit();
     void serialSettingsFound();
     void accessKeysAreUnique_data();
@@ -91,7 +95,7 @@ void TestScanDialog::scanListsEveryId()
     QVERIFY(dialog.isRunning());
     QVERIFY(!dialog.findChild<QPushButton *>(QStringLiteral("scanStart"))->isEnabled());
     QVERIFY(finished.wait(20000));
-    QCOMPARE(finished.first().first().value<ScanEnd>(), ScanEnd::Completed);
+    QCOMPARE(finished.first().first().value<JobEnd>(), JobEnd::Completed);
     QCOMPARE(dialog.model()->rowCount(), 6);
     QCOMPARE(dialog.findChild<QProgressBar *>(QStringLiteral("scanProgress"))->value(), 6);
     const auto kind = [&](int row) { return dialog.model()->probes().at(row).kind; };
@@ -135,7 +139,7 @@ void TestScanDialog::stopEndsTheScan()
     QTRY_VERIFY_WITH_TIMEOUT(dialog.model()->rowCount() >= 3, 10000);
     QTest::mouseClick(dialog.findChild<QPushButton *>(QStringLiteral("scanStop")), Qt::LeftButton);
     QVERIFY(finished.wait(5000) || finished.size() == 1);
-    QCOMPARE(finished.first().first().value<ScanEnd>(), ScanEnd::Stopped);
+    QCOMPARE(finished.first().first().value<JobEnd>(), JobEnd::Stopped);
     QVERIFY(!dialog.isRunning());
     const int rows = dialog.model()->rowCount();
     QVERIFY(rows < 247);
@@ -281,6 +285,83 @@ void TestScanDialog::mapUnitClonesIt()
     QVERIFY(map->findChild<QLabel *>(QStringLiteral("mapStatus"))->text().contains(QLatin1String("scheme")));
 }
 
+// The map scan runs on a job thread (JobThread), not in local event loops on the window's thread:
+// a timer on the window's thread never sees a nested loop while it runs (before: level 2, the
+// scan's wait inside the click's), its frames still reach the scan dialog's framesLogged() (the
+// window's traffic list), and Stop mid-scan keeps the block found.
+void TestScanDialog::mapScanLeavesTheWindowLoopAlone()
+{
+    ScanDialog dialog;
+    dialog.setTarget(m_url);
+    dialog.findChild<QSpinBox *>(QStringLiteral("scanLastUnit"))->setValue(3);
+    dialog.findChild<QSpinBox *>(QStringLiteral("scanAddress"))->setValue(0x79);
+    QSignalSpy scanned(&dialog, &ScanDialog::scanFinished);
+    dialog.show();
+    dialog.start();
+    QVERIFY(scanned.wait(20000));
+    dialog.findChild<QTableView *>(QStringLiteral("scanResults"))->selectRow(2); // unit 3
+    MapScanDialog *map = dialog.mapSelectedUnit();
+    QVERIFY(map);
+    map->findChild<QSpinBox *>(QStringLiteral("mapFirstAddress"))->setValue(0x70);
+    map->findChild<QSpinBox *>(QStringLiteral("mapLastAddress"))->setValue(65535);
+    for (const int table : {1, 2, 4})
+        map->findChild<QCheckBox *>(QStringLiteral("mapTable%1").arg(table))->setChecked(false);
+    map->findChild<QCheckBox *>(QStringLiteral("mapOptional"))->setChecked(false);
+    map->findChild<QSpinBox *>(QStringLiteral("mapMaxRequests"))->setValue(1000000);
+
+    QSignalSpy frames(&dialog, &ScanDialog::framesLogged);
+    QSignalSpy finished(map, &MapScanDialog::scanFinished);
+    int deepest = 0;
+    int samples = 0;
+    QTimer probe;
+    connect(&probe, &QTimer::timeout, this, [&] {
+        deepest = qMax(deepest, QThread::currentThread()->loopLevel());
+        ++samples;
+    });
+    probe.start(2);
+    // Stop once the scan is past the block at 0x79-0x8E, far from the end of the table.
+    const QMetaObject::Connection stopper = connect(map->job(), &Job::progressChanged, this, [&](const JobProgress &p) {
+        if (p.done > 0x30 && map->isRunning())
+            QTest::mouseClick(map->findChild<QPushButton *>(QStringLiteral("mapStop")), Qt::LeftButton);
+    });
+    // Clicked from inside the test's event loop, as a user clicks inside the window's.
+    QTimer::singleShot(0, map, [map] { QTest::mouseClick(map->findChild<QPushButton *>(QStringLiteral("mapStart")), Qt::LeftButton); });
+    QVERIFY(finished.wait(60000));
+    probe.stop();
+    QVERIFY(samples > 0);
+    QCOMPARE(deepest, 1);
+    QCOMPARE(finished.first().first().value<JobEnd>(), JobEnd::Stopped);
+    QVERIFY(!map->isRunning());
+    QVERIFY(map->map());
+    const TableMap *holding = map->map()->table(3);
+    QVERIFY(holding);
+    QCOMPARE(holding->blocks.size(), 1);
+    QCOMPARE(int(holding->blocks.first().address), 0x79);
+    QCOMPARE(holding->blocks.first().last(), 0x8E);
+    QVERIFY(map->findChild<QLabel *>(QStringLiteral("mapStatus"))->text().startsWith(QLatin1String("Stopped")));
+    QVERIFY(map->findChild<QPushButton *>(QStringLiteral("mapSaveDraft"))->isEnabled());
+    QVERIFY(!frames.isEmpty());
+    bool sawRead = false;
+    for (const QList<QVariant> &args : std::as_const(frames)) {
+        for (const TrafficFrame &f : args.first().value<QList<TrafficFrame>>())
+            sawRead = sawRead || (f.direction == TrafficDirection::Out && f.bytes.contains(QByteArray::fromHex("0300700001")));
+    }
+    QVERIFY(sawRead); // the map's first read (the unit scan asked 0x79), from the scan's thread
+
+    // Esc mid-scan: the dialog closes, the scan stops, what it found is kept.
+    disconnect(stopper);
+    finished.clear();
+    QTimer::singleShot(0, map, [map] { QTest::mouseClick(map->findChild<QPushButton *>(QStringLiteral("mapStart")), Qt::LeftButton); });
+    connect(map->job(), &Job::progressChanged, this, [&](const JobProgress &p) {
+        if (p.done > 0x30 && map->isVisible())
+            QTest::keyClick(map, Qt::Key_Escape);
+    });
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.first().first().value<JobEnd>(), JobEnd::Stopped);
+    QVERIFY(!map->isVisible());
+    QVERIFY(map->map() && map->map()->table(3) && map->map()->table(3)->blocks.size() == 1);
+}
+
 // Timing on a found unit: the read the scan asked, measured through the dialog's Start, the
 // recommended settings on the clipboard; a gap that is not a number is said.
 void TestScanDialog::timingOfAFoundUnit()
@@ -320,7 +401,7 @@ void TestScanDialog::timingOfAFoundUnit()
     auto *status = timing->findChild<QLabel *>(QStringLiteral("timingStatus"));
     QList<int> values;
     QStringList texts;
-    connect(timing->findChild<TimingScanner *>(), &TimingScanner::progressChanged, this, [&](const ScanProgress &) {
+    connect(timing->scanner(), &TimingScanner::progressChanged, this, [&](const JobProgress &) {
         QCOMPARE(bar->maximum(), 1 + 2 * 5 + 8 + 3); // first answer, 2 gaps x 5, largest read, 3 clients (rtu-tcp: no pipelining)
         values.append(bar->value());
         texts.append(status->text());
@@ -439,13 +520,13 @@ void TestScanDialog::serialSettingsFound()
     QSignalSpy finished(line, &LineScanDialog::scanFinished);
     auto *bar = line->findChild<QProgressBar *>(QStringLiteral("lineProgress"));
     QStringList texts;
-    connect(line->findChild<LineScanner *>(), &LineScanner::progressChanged, this, [&](const ScanProgress &) {
+    connect(line->scanner(), &LineScanner::progressChanged, this, [&](const JobProgress &) {
         QCOMPARE(bar->maximum(), 12);
         texts.append(line->findChild<QLabel *>(QStringLiteral("lineStatus"))->text());
     });
     QTest::mouseClick(line->findChild<QPushButton *>(QStringLiteral("lineStart")), Qt::LeftButton);
     QVERIFY(!finished.isEmpty() || finished.wait(60000));
-    QCOMPARE(finished.first().first().value<ScanEnd>(), ScanEnd::Completed);
+    QCOMPARE(finished.first().first().value<JobEnd>(), JobEnd::Completed);
     // The bar at the trials of the plan, the status with the time left: none at the end.
     QVERIFY2(texts.first().startsWith(QLatin1String("0 of 12 tried, 0 answered, about ")), qPrintable(texts.first()));
     QVERIFY2(texts.last() == QLatin1String("12 of 12 tried, 3 answered, about 0.0 s left"), qPrintable(texts.last()));
