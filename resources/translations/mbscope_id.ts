@@ -3396,7 +3396,7 @@ dan %n lagi</numerusform>
 <context>
     <name>mbscope::LineScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/linescandialog.cpp" line="+51"/>
+        <location filename="../../ui/discovery/linescandialog.cpp" line="+56"/>
         <source> ms</source>
         <translation> md</translation>
     </message>
@@ -3526,7 +3526,7 @@ dan %n lagi</numerusform>
         <translation>Tujuan pemindaian unit sekarang %1.</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+12"/>
         <source>%1 of %2 tried, %3 answered</source>
         <translation>%1 dari %2 dicoba, %3 menjawab</translation>
     </message>
@@ -3536,7 +3536,7 @@ dan %n lagi</numerusform>
         <translation>Menanyakan baca itu pada setiap pengaturan sampai jawaban dengan CRC sah kembali. Tidak pernah menulis.</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+23"/>
         <source>Give the serial port, e.g. rtu:///dev/ttyUSB0.</source>
         <translation>Berikan port serial, mis. rtu:///dev/ttyUSB0.</translation>
     </message>
@@ -3561,7 +3561,7 @@ dan %n lagi</numerusform>
         <translation>Pilih paling sedikit satu paritas dan satu jumlah bit stop.</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+49"/>
         <source>works: %1</source>
         <translation>berhasil: %1</translation>
     </message>
@@ -4009,7 +4009,7 @@ dan %n lagi</numerusform>
 <context>
     <name>mbscope::MapScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/mapscandialog.cpp" line="+39"/>
+        <location filename="../../ui/discovery/mapscandialog.cpp" line="+43"/>
         <source>&amp;Optional functions (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)</source>
         <translation>Fungsi &amp;opsional (07, 08, 0B, 0C, 11, 14, 17, 18, 2B/0E)</translation>
     </message>
@@ -4150,12 +4150,12 @@ dan %n lagi</numerusform>
         <translation>Baca blok yang ditemukan berulang kali dan usulkan tipe, urutan, skala, satuan, dan jenis setiap nilai, untuk dikonfirmasi atau dikoreksi baris demi baris (mbscope infer).</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+28"/>
         <source>Reads every table&apos;s addresses (exception 02 says an address is missing). Never writes.</source>
         <translation>Membaca alamat setiap tabel (eksepsi 02 berarti alamat itu tidak ada). Tidak pernah menulis.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>Give the link of the unit, e.g. tcp://192.168.1.10:502.</source>
         <translation>Berikan link unit tersebut, mis. tcp://192.168.1.10:502.</translation>
     </message>
@@ -4165,12 +4165,12 @@ dan %n lagi</numerusform>
         <translation>Pilih sebuah tabel atau fungsi opsional: tidak ada yang bisa dipindai.</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>Mapping unit %1…</source>
         <translation>Memetakan unit %1…</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+25"/>
         <source>Map complete</source>
         <translation>Peta selesai</translation>
     </message>
@@ -8320,7 +8320,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TimingScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/timingscandialog.cpp" line="+36"/>
+        <location filename="../../ui/discovery/timingscandialog.cpp" line="+40"/>
         <source> ms</source>
         <translation> md</translation>
     </message>
@@ -8440,7 +8440,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Gabungkan hasil pengukuran (minGapMs, warmUpMs, maxClients, maxQuantity) ke batas profil perangkat yang sudah ada, seperti draf pemindaian peta; isi lainnya tetap.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+25"/>
         <source>Measuring %1: %2 of %3 steps</source>
         <translation>Mengukur %1: %2 dari %3 langkah</translation>
     </message>
@@ -8450,7 +8450,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Menanyakan baca itu berulang-ulang, dengan jeda makin pendek, dan mengatakan apa yang sanggup dilayani unit. Tidak pernah menulis.</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>Give the link of the unit, e.g. tcp://192.168.1.10:502.</source>
         <translation>Berikan link unit tersebut, mis. tcp://192.168.1.10:502.</translation>
     </message>
@@ -8465,7 +8465,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Jeda: berikan paling sedikit satu, mis. 100, 20, 0.</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+44"/>
         <source>Stopped before the first answer: nothing was measured.</source>
         <translation>Dihentikan sebelum jawaban pertama: tidak ada yang diukur.</translation>
     </message>
