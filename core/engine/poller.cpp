@@ -25,6 +25,7 @@ Poller::Poller(EngineCore *core, const PollSettings &settings, quint64 tag, QObj
     for (const RequestItem &item : settings.items)
         names.append(item.name);
     m_run.statistics.setItemNames(names);
+    m_run.statistics.setExactLatencyLimit(settings.exactLatencyLimit);
 }
 
 Poller::~Poller()

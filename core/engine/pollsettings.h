@@ -20,6 +20,8 @@ struct PollSettings {
     qint64 intervalNs = 0;
     quint64 count = 0;     // cycles; 0: no count limit
     qint64 durationNs = 0; // 0: no duration limit
+    // The poll's latencies past this many are binned (LatencySamples::setExactLimit); 0: all kept.
+    std::size_t exactLatencyLimit = 0;
 };
 
 // The same poll run once per interval, in order (interval of the poll ignored).

@@ -87,15 +87,12 @@ Histogram Histogram::logarithmic(int binsPerDecade, qint64 lowNs, qint64 highNs)
     return h;
 }
 
-Histogram Histogram::autoFixed(std::span<const qint64> values, int maxBins)
+namespace {
+
+// The 1-2-5 layout autoFixed chooses for count values from minNs to maxNs.
+Histogram autoLayout(qint64 minNs, qint64 maxNs, qint64 count, int maxBins)
 {
-    if (values.empty())
-        return {};
-    const auto [minIt, maxIt] = std::minmax_element(values.begin(), values.end());
-    const qint64 minNs = *minIt;
-    const qint64 maxNs = *maxIt;
-    const auto target = std::clamp<qint64>(qint64(std::ceil(std::sqrt(double(values.size())))), 1,
-                                           std::max(1, maxBins));
+    const auto target = std::clamp<qint64>(qint64(std::ceil(std::sqrt(double(count)))), 1, std::max(1, maxBins));
     // Widths 1, 2, 5 x 10^k ns, never narrower than 1 us (the unit the edges are shown in).
     const auto floorDiv = [](qint64 a, qint64 w) { return a >= 0 ? a / w : -((-a + w - 1) / w); };
     qint64 width = 1000;
@@ -107,9 +104,28 @@ Histogram Histogram::autoFixed(std::span<const qint64> values, int maxBins)
     }
     const qint64 low = floorDiv(minNs, width) * width;
     const qint64 bins = floorDiv(maxNs, width) - floorDiv(minNs, width) + 1;
-    Histogram h = fixed(width, low, low + bins * width);
+    return Histogram::fixed(width, low, low + bins * width);
+}
+
+} // namespace
+
+Histogram Histogram::autoFixed(std::span<const qint64> values, int maxBins)
+{
+    if (values.empty())
+        return {};
+    const auto [minIt, maxIt] = std::minmax_element(values.begin(), values.end());
+    Histogram h = autoLayout(*minIt, *maxIt, qint64(values.size()), maxBins);
     for (const qint64 v : values)
         h.add(v);
+    return h;
+}
+
+Histogram Histogram::autoFixed(const LatencySamples &samples, int maxBins)
+{
+    if (samples.isEmpty())
+        return {};
+    Histogram h = autoLayout(samples.minNs(), samples.maxNs(), samples.count(), maxBins);
+    h.addSamples(samples);
     return h;
 }
 
@@ -177,6 +193,24 @@ void Histogram::addSorted(std::span<const qint64> ascending)
         start = end;
     }
     m_overflow += quint64(ascending.end() - start);
+}
+
+void Histogram::addSamples(const LatencySamples &samples)
+{
+    const auto n = quint64(samples.count());
+    m_total += n;
+    if (m_counts.empty()) {
+        m_overflow += n;
+        return;
+    }
+    auto below = quint64(samples.countBelow(m_edges.front()));
+    m_underflow += below;
+    for (std::size_t bin = 0; bin < m_counts.size(); ++bin) {
+        const auto next = quint64(samples.countBelow(m_edges[bin + 1]));
+        m_counts[bin] += next - below;
+        below = next;
+    }
+    m_overflow += n - below;
 }
 
 void Histogram::clear()

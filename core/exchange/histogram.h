@@ -1,5 +1,7 @@
 #pragma once
 
+#include "latencysamples.h"
+
 #include <QtCore/QJsonObject>
 #include <QtCore/QtGlobal>
 
@@ -48,6 +50,9 @@ public:
     // maxBins bins (fewer for few values: about sqrt(n)), edges on multiples of the width, the
     // values added. Empty values give a histogram with no bins.
     [[nodiscard]] static Histogram autoFixed(std::span<const qint64> values, int maxBins = 50);
+    // The same bins for a store of latencies (binned or not: see LatencySamples), counted with
+    // addSamples().
+    [[nodiscard]] static Histogram autoFixed(const LatencySamples &samples, int maxBins = 50);
     // The layout a spec names (Auto gives no bins: use autoFixed with the data).
     [[nodiscard]] static Histogram fromSpec(const HistogramSpec &spec);
 
@@ -56,6 +61,9 @@ public:
     // for each, found with a binary search per edge, so rebinning a million stored latencies
     // costs O(bins x log n) instead of a bin lookup per value.
     void addSorted(std::span<const qint64> ascending);
+    // Adds a store's samples: the same counts as addSorted(samples.sorted()) while it keeps every
+    // sample, and from its bins once it no longer does (LatencySamples::countBelow per edge).
+    void addSamples(const LatencySamples &samples);
     void clear(); // counts to zero, bins kept
 
     [[nodiscard]] bool isValid() const { return !m_counts.empty(); }

@@ -98,8 +98,10 @@ void Statistics::add(const Transaction &transaction)
 void Statistics::clear()
 {
     const bool onTheLine = m_onTheLine;
+    const std::size_t limit = m_latency.exactLimit();
     *this = Statistics(m_spec);
     m_onTheLine = onTheLine;
+    m_latency.setExactLimit(limit);
 }
 
 quint64 Statistics::failed() const
@@ -142,7 +144,7 @@ QString Statistics::outranLineWarning() const
 Histogram Statistics::histogram() const
 {
     if (m_spec.kind == HistogramSpec::Kind::Auto)
-        return Histogram::autoFixed(m_latency.sorted(), m_spec.maxBins);
+        return Histogram::autoFixed(m_latency, m_spec.maxBins);
     return m_histogram;
 }
 

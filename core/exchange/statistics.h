@@ -22,7 +22,8 @@ struct LatencyUnit {
 };
 
 // The figures of a run of transactions (one request item's, or all of them), fed one Transaction
-// at a time in O(1) (amortized: the latency store is a growing vector).
+// at a time in O(1) (amortized: the latency store is a growing vector, or fixed bins once past
+// setExactLatencyLimit()).
 //
 // What is counted:
 // - count: every transaction except Late records (a late answer belongs to a request already
@@ -78,6 +79,8 @@ public:
     [[nodiscard]] QString outranLineWarning() const;
 
     [[nodiscard]] const LatencySamples &latency() const { return m_latency; }
+    // Latencies past limit are binned (LatencySamples::setExactLimit); 0, the default: all kept.
+    void setExactLatencyLimit(std::size_t limit) { m_latency.setExactLimit(limit); } // kept by clear()
     [[nodiscard]] const HistogramSpec &histogramSpec() const { return m_spec; }
     // The latency histogram: the one kept up to date, or for Auto one fitted to the latencies now.
     [[nodiscard]] Histogram histogram() const;

@@ -22,6 +22,14 @@ void StatisticsSet::add(const Transaction &transaction)
     m_items[index].add(transaction);
 }
 
+void StatisticsSet::setExactLatencyLimit(std::size_t limit)
+{
+    m_overall.setExactLatencyLimit(limit);
+    m_empty.setExactLatencyLimit(limit);
+    for (Statistics &one : m_items)
+        one.setExactLatencyLimit(limit);
+}
+
 void StatisticsSet::clear()
 {
     m_overall.clear();

@@ -20,6 +20,9 @@ public:
     void add(const Transaction &transaction);
     void clear(); // counts and latencies gone; item names kept
 
+    // Each item's latencies and the overall ones past limit are binned (Statistics); 0: all kept.
+    void setExactLatencyLimit(std::size_t limit);
+
     // Names shown beside each item in JSON and the summary ("write bits", "write words").
     void setItemNames(const QStringList &names) { m_names = names; }
 

@@ -23,7 +23,7 @@ Histogram layout(qint64 minNs, qint64 maxNs, qint64 total, LatencyBinning::Scale
     }
     // Widths 1, 2, 5 x 10^k ns, never narrower than 1 us, about sqrt(n) bins: the layout
     // Histogram::autoFixed chooses for n values (what `poll --json` reports), found from the range
-    // alone so that the sorted values can be counted with Histogram::addSorted.
+    // alone so that the samples can be counted with Histogram::addSamples.
     qint64 width = 1000;
     for (int step = 0;; ++step) {
         const qint64 bins = maxNs / width - minNs / width + 1;
@@ -38,29 +38,29 @@ Histogram layout(qint64 minNs, qint64 maxNs, qint64 total, LatencyBinning::Scale
 
 } // namespace
 
-Histogram LatencyBinning::bin(std::span<const qint64> values, Scale scale, int maxBins)
+Histogram LatencyBinning::bin(const LatencySamples &values, Scale scale, int maxBins)
 {
-    return binCommon({values}, scale, maxBins).constFirst();
+    return binCommon({&values}, scale, maxBins).constFirst();
 }
 
-QList<Histogram> LatencyBinning::binCommon(const QList<std::span<const qint64>> &values, Scale scale, int maxBins)
+QList<Histogram> LatencyBinning::binCommon(const QList<const LatencySamples *> &values, Scale scale, int maxBins)
 {
     qint64 minNs = std::numeric_limits<qint64>::max();
     qint64 maxNs = std::numeric_limits<qint64>::min();
     qint64 total = 0;
-    for (const std::span<const qint64> &one : values) {
-        if (one.empty())
+    for (const LatencySamples *one : values) {
+        if (one->isEmpty())
             continue;
-        minNs = std::min(minNs, one.front());
-        maxNs = std::max(maxNs, one.back());
-        total += qint64(one.size());
+        minNs = std::min(minNs, one->minNs());
+        maxNs = std::max(maxNs, one->maxNs());
+        total += one->count();
     }
     QList<Histogram> histograms;
     // Latencies are never negative; clamping keeps the integer bin arithmetic simple.
     const Histogram empty = total == 0 ? Histogram() : layout(std::max<qint64>(0, minNs), std::max<qint64>(0, maxNs), total, scale, maxBins);
-    for (const std::span<const qint64> &one : values) {
+    for (const LatencySamples *one : values) {
         Histogram h = empty;
-        h.addSorted(one);
+        h.addSamples(*one);
         histograms.append(h);
     }
     return histograms;

@@ -1,10 +1,10 @@
 #pragma once
 
 #include "exchange/histogram.h"
+#include "exchange/latencysamples.h"
 
 #include <QtCore/QList>
 
-#include <span>
 
 namespace mbscope {
 
@@ -21,12 +21,13 @@ public:
     // engine's automatic bins (HistogramSpec::automatic), so linear bins are those of `poll --json`.
     static constexpr int kMaxBins = 50;
 
-    // One histogram of values in ascending order (LatencySamples::sorted()) in the scale's bins,
-    // about sqrt(n) of them; no bins when values is empty. Linear bins are those
-    // Histogram::autoFixed chooses. Counted by binary search: O(bins x log n), not O(n).
-    [[nodiscard]] static Histogram bin(std::span<const qint64> values, Scale scale, int maxBins = kMaxBins);
-    // One histogram per ascending list of values, all on the same bins (covering every list's range).
-    [[nodiscard]] static QList<Histogram> binCommon(const QList<std::span<const qint64>> &values, Scale scale,
+    // One histogram of a store's latencies in the scale's bins, about sqrt(n) of them; no bins
+    // when it is empty. Linear bins are those Histogram::autoFixed chooses. Counted with
+    // Histogram::addSamples: O(bins x log n) while the store keeps every sample, O(bins x its
+    // bins) once it has binned them (LatencySamples::setExactLimit), never O(n).
+    [[nodiscard]] static Histogram bin(const LatencySamples &values, Scale scale, int maxBins = kMaxBins);
+    // One histogram per store, all on the same bins (covering every store's range).
+    [[nodiscard]] static QList<Histogram> binCommon(const QList<const LatencySamples *> &values, Scale scale,
                                                     int maxBins = kMaxBins);
 };
 

@@ -184,7 +184,7 @@ void LatencyComparePanel::redraw()
     refillChoices();
     const Statistics &first = m_runs->statistics(m_sides[0].run, m_sides[0].item);
     const Statistics &second = m_runs->statistics(m_sides[1].run, m_sides[1].item);
-    m_histograms = LatencyBinning::binCommon({first.latency().sorted(), second.latency().sorted()}, m_scale);
+    m_histograms = LatencyBinning::binCommon({&first.latency(), &second.latency()}, m_scale);
 
     QList<HistogramChart::Series> series;
     QList<HistogramChart::Marker> markers;

@@ -210,7 +210,7 @@ void LatencyHistogramPanel::redraw()
     refillItemChoice();
     const Statistics &statistics = m_runs->statistics(m_run, m_item);
     const LatencySamples &latency = statistics.latency();
-    m_histogram = LatencyBinning::bin(latency.sorted(), m_scale);
+    m_histogram = LatencyBinning::bin(latency, m_scale);
 
     QList<HistogramChart::Series> series;
     QList<HistogramChart::Marker> markers;

@@ -65,7 +65,7 @@ LatencyTimePanel::LatencyTimePanel(QWidget *parent)
 
 void LatencyTimePanel::addTransactions(const QList<Transaction> &transactions)
 {
-    QList<double> answeredKeys, answeredValues, exceptionKeys, exceptionValues, failedKeys;
+    bool answered = false, exceptions = false, failed = false;
     for (const Transaction &t : transactions) {
         if (t.status == TransactionStatus::Late || t.status == TransactionStatus::Broadcast || t.sentNs == 0)
             continue;
@@ -76,19 +76,20 @@ void LatencyTimePanel::addTransactions(const QList<Transaction> &transactions)
         if (t.status == TransactionStatus::Ok || t.status == TransactionStatus::Exception) {
             const double ms = double(t.latencyNs()) / 1e6;
             m_maxLatencyMs = std::max(m_maxLatencyMs, ms);
-            (t.status == TransactionStatus::Ok ? answeredKeys : exceptionKeys).append(seconds);
-            (t.status == TransactionStatus::Ok ? answeredValues : exceptionValues).append(ms);
+            (t.status == TransactionStatus::Ok ? m_answered : m_exceptions).add(seconds, ms);
+            (t.status == TransactionStatus::Ok ? answered : exceptions) = true;
         } else {
-            failedKeys.append(seconds);
+            m_failed.add(seconds, 0.0);
+            failed = true;
         }
     }
-    // Send times only grow within a poll, so the points go on the end of the sorted data.
-    if (!answeredKeys.isEmpty())
-        m_graphs.answered->addData(answeredKeys, answeredValues, true);
-    if (!exceptionKeys.isEmpty())
-        m_graphs.exceptions->addData(exceptionKeys, exceptionValues, true);
-    if (!failedKeys.isEmpty())
-        m_graphs.failed->addData(failedKeys, QList<double>(failedKeys.size(), 0.0), true);
+    // Send times only grow within a poll: the kept points are in key order.
+    if (answered)
+        m_graphs.answered->setData(m_answered.keys(), m_answered.values(), true);
+    if (exceptions)
+        m_graphs.exceptions->setData(m_exceptions.keys(), m_exceptions.values(), true);
+    if (failed)
+        m_graphs.failed->setData(m_failed.keys(), m_failed.values(), true);
     m_follower->scheduleRedraw();
 }
 
@@ -97,6 +98,9 @@ void LatencyTimePanel::clear()
     m_graphs.answered->data()->clear();
     m_graphs.exceptions->data()->clear();
     m_graphs.failed->data()->clear();
+    m_answered.clear();
+    m_exceptions.clear();
+    m_failed.clear();
     m_startNs = 0;
     m_lastSeconds = 0;
     m_maxLatencyMs = 0;
@@ -117,9 +121,9 @@ bool LatencyTimePanel::isFollowing() const
 
 QString LatencyTimePanel::summary() const
 {
-    const int answered = m_graphs.answered->dataCount();
-    const int exceptions = m_graphs.exceptions->dataCount();
-    const int failed = m_graphs.failed->dataCount();
+    const qint64 answered = m_answered.added();
+    const qint64 exceptions = m_exceptions.added();
+    const qint64 failed = m_failed.added();
     return tr("%1 transactions: %2 answered, %3 exceptions, %4 without a usable answer")
         .arg(answered + exceptions + failed)
         .arg(answered)
@@ -142,10 +146,10 @@ void LatencyTimePanel::redrawNow()
 
 void LatencyTimePanel::redraw()
 {
-    m_graphs.nameWithCounts(m_graphs.answered->dataCount(), m_graphs.exceptions->dataCount(), m_graphs.failed->dataCount());
+    m_graphs.nameWithCounts(m_answered.added(), m_exceptions.added(), m_failed.added());
     // Only what happened is in the legend: most polls have no exceptions, some no failures.
     for (QCPGraph *graph : {m_graphs.exceptions, m_graphs.failed}) {
-        if (graph->dataCount() > 0)
+        if (graph->dataCount() > 0) // a graph with points was given some
             graph->addToLegend();
         else
             graph->removeFromLegend();

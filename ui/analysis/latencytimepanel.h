@@ -2,6 +2,8 @@
 
 #include "latencytimegraphs.h"
 
+#include "common/decimatedseries.h"
+
 #include "exchange/transaction.h"
 
 #include <QtCore/QList>
@@ -22,8 +24,10 @@ class PlotFollower;
 // own colour, requests without a usable answer (timeouts first of all) as red crosses on the time
 // axis. Late answers and broadcasts are not points: a late answer's request is already a cross.
 //
-// Batches are appended to the graphs (never rebuilt) and redrawn at most every kRedrawMs, so a
-// long poll costs one append per transaction. While "Follow" is on the axes show everything; the
+// Each graph holds at most DecimatedSeries::kDefaultBudget points: past that, a bucket of time
+// keeps its lowest and highest latency (spikes stay where they were), so a poll left running all
+// day neither grows the window's memory nor slows the drawing; the counts stay those of every
+// transaction. Redrawn at most every kRedrawMs. While "Follow" is on the axes show everything; the
 // wheel zooms, dragging pans (and turns Follow off), a click pins the cursor.
 class LatencyTimePanel : public QWidget
 {
@@ -42,6 +46,8 @@ public:
 
     [[nodiscard]] QCustomPlot *plot() const { return m_plot; }
     [[nodiscard]] const LatencyTimeGraphs &graphs() const { return m_graphs; }
+    // The points behind each graph (answered, exceptions, failed), every one counted.
+    [[nodiscard]] const DecimatedSeries &answeredSeries() const { return m_answered; }
     [[nodiscard]] PlotCursor *cursor() const { return m_cursor; }
     [[nodiscard]] PlotExportMenu *exportMenu() const { return m_export; }
     [[nodiscard]] QString summary() const;
@@ -56,6 +62,9 @@ private:
 
     QCustomPlot *m_plot;
     LatencyTimeGraphs m_graphs;
+    DecimatedSeries m_answered;
+    DecimatedSeries m_exceptions;
+    DecimatedSeries m_failed;
     PlotCursor *m_cursor;
     PlotExportMenu *m_export;
     QLabel *m_summary;

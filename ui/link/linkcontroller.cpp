@@ -374,6 +374,8 @@ bool LinkController::startPoll(const QByteArray &bytes, int intervalMs, quint64 
     settings.items = {item(bytes)};
     settings.intervalNs = qint64(qMax(0, intervalMs)) * 1000000;
     settings.count = count;
+    // A poll left running all day: its latencies past the first 100,000 go into bins.
+    settings.exactLatencyLimit = LatencySamples::kLongRunExactLimit;
     m_engine->startPoll(settings);
     m_polling = true;
     Q_EMIT pollingChanged(true);
@@ -387,6 +389,7 @@ bool LinkController::startSweep(const QByteArray &bytes, const QList<int> &inter
     SweepSettings settings;
     settings.poll.items = {item(bytes)};
     settings.poll.count = count;
+    settings.poll.exactLatencyLimit = LatencySamples::kLongRunExactLimit;
     for (const int ms : intervalsMs)
         settings.intervalsNs.append(qint64(qMax(0, ms)) * 1000000);
     m_engine->startSweep(settings);

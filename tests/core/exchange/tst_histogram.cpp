@@ -207,7 +207,7 @@ private slots:
         QCOMPARE(single.edgesNs(), (std::vector<double>{12000, 13000}));
         QCOMPARE(single.counts(), (std::vector<quint64>{1}));
 
-        QVERIFY(!Histogram::autoFixed({}).isValid());
+        QVERIFY(!Histogram::autoFixed(std::span<const qint64>{}).isValid());
         // maxBins is honoured.
         QVERIFY(Histogram::autoFixed(values, 3).binCount() <= 3);
     }

@@ -188,6 +188,118 @@ private slots:
         QCOMPARE(s.percentileNs(99), values[std::size_t(std::ceil(0.99 * count - 1e-9)) - 1]);
     }
 
+    // Issue 31: a store with an exact limit keeps at most maxBins() counters after any number of
+    // samples, and each percentile stays within kRelativeError of the exact one (a spread of
+    // latencies over five decades, from 200 ns to 20 s); count, min, max, mean, stddev exact.
+    void exactLimitBinsWithinStatedError()
+    {
+        std::mt19937_64 random(31);
+        std::lognormal_distribution<double> spread(std::log(2e6), 2.0);
+        LatencySamples exact;
+        LatencySamples bounded;
+        bounded.setExactLimit(1000);
+        for (int i = 0; i < 300000; ++i) {
+            const auto ns = std::clamp<qint64>(qint64(spread(random)), 200, qint64(20e9));
+            exact.add(ns);
+            bounded.add(ns);
+        }
+        QVERIFY(exact.isExact());
+        QVERIFY(!bounded.isExact());
+        QVERIFY(bounded.sorted().empty());
+        QVERIFY2(bounded.memoryBytes() <= LatencySamples::maxBins() * sizeof(quint64),
+                 qPrintable(QString::number(bounded.memoryBytes())));
+        QVERIFY(LatencySamples::maxBins() * sizeof(quint64) < 240 * 1024);
+        QCOMPARE(bounded.count(), exact.count());
+        QCOMPARE(bounded.minNs(), exact.minNs());
+        QCOMPARE(bounded.maxNs(), exact.maxNs());
+        QCOMPARE(bounded.meanNs(), exact.meanNs());
+        QCOMPARE(bounded.stddevNs(), exact.stddevNs());
+        for (const double p : {0.0, 0.1, 1.0, 10.0, 25.0, 50.0, 75.0, 90.0, 95.0, 99.0, 99.9, 99.99, 100.0}) {
+            const double want = double(exact.percentileNs(p));
+            const double got = double(bounded.percentileNs(p));
+            QVERIFY2(std::abs(got - want) <= want * LatencySamples::kRelativeError,
+                     qPrintable(QStringLiteral("p%1: %2 binned, %3 exact").arg(p).arg(got).arg(want)));
+        }
+        // A million more samples: the bins do not grow.
+        const std::size_t before = bounded.memoryBytes();
+        for (int i = 0; i < 1000000; ++i)
+            bounded.add(std::clamp<qint64>(qint64(spread(random)), 200, qint64(20e9)));
+        QCOMPARE(bounded.memoryBytes(), before);
+        QCOMPARE(bounded.count(), 1300000);
+    }
+
+    // Under the limit nothing changes; latencies under 1024 ns have a bin each (exact); clear()
+    // keeps the limit and gives the memory back.
+    void exactLimitBelowAndSmallValues()
+    {
+        LatencySamples s;
+        s.setExactLimit(10);
+        for (qint64 v = 1; v <= 10; ++v)
+            s.add(v * 100);
+        QVERIFY(s.isExact());
+        QCOMPARE(s.percentileNs(50), 500);
+        s.add(1000);
+        QVERIFY(!s.isExact());
+        QCOMPARE(s.percentileNs(50), 600); // rank 6 of 11, in a bin of its own
+        QCOMPARE(s.countBelow(550), 5);
+        s.clear();
+        QVERIFY(s.isExact());
+        QCOMPARE(s.exactLimit(), std::size_t(10));
+        QCOMPARE(s.memoryBytes(), std::size_t(0));
+    }
+
+    // Histogram::addSamples counts as addSorted does while every sample is kept, and the binned
+    // store's counts differ only by samples within kRelativeError of an edge.
+    void histogramFromBinnedSamples()
+    {
+        std::mt19937_64 random(7);
+        std::uniform_int_distribution<qint64> spread(1000000, 9000000);
+        LatencySamples exact;
+        LatencySamples bounded;
+        bounded.setExactLimit(100);
+        for (int i = 0; i < 50000; ++i) {
+            const qint64 ns = spread(random);
+            exact.add(ns);
+            bounded.add(ns);
+        }
+        Histogram fromSorted = Histogram::autoFixed(exact.sorted());
+        Histogram fromExact = Histogram::autoFixed(exact);
+        QCOMPARE(fromExact.counts(), fromSorted.counts());
+        QCOMPARE(fromExact.edgesNs(), fromSorted.edgesNs());
+        Histogram fromBins = Histogram::autoFixed(bounded);
+        QCOMPARE(fromBins.edgesNs(), fromExact.edgesNs());
+        QCOMPARE(fromBins.total(), fromExact.total());
+        for (int bin = 0; bin < fromBins.binCount(); ++bin) {
+            const double edge = fromBins.edgesNs()[std::size_t(bin)];
+            const double next = fromBins.edgesNs()[std::size_t(bin) + 1];
+            qint64 nearEdges = 0; // samples that a bin's middle may put on the other side of an edge
+            for (const qint64 v : exact.sorted()) {
+                if (std::abs(double(v) - edge) <= edge * LatencySamples::kRelativeError
+                    || std::abs(double(v) - next) <= next * LatencySamples::kRelativeError)
+                    ++nearEdges;
+            }
+            QVERIFY2(std::abs(qint64(fromBins.count(bin)) - qint64(fromExact.count(bin))) <= nearEdges,
+                     qPrintable(QStringLiteral("bin %1: %2 binned, %3 exact").arg(bin).arg(fromBins.count(bin)).arg(fromExact.count(bin))));
+        }
+    }
+
+    // A StatisticsSet's limit reaches every item, and survives clear().
+    void statisticsSetLimit()
+    {
+        StatisticsSet set;
+        set.setExactLatencyLimit(5);
+        for (int i = 0; i < 20; ++i)
+            set.add(make(TransactionStatus::Ok, 1000000 + i, i % 2));
+        QVERIFY(!set.overall().latency().isExact());
+        QVERIFY(!set.item(0).latency().isExact());
+        QVERIFY(!set.item(1).latency().isExact());
+        set.clear();
+        for (int i = 0; i < 20; ++i)
+            set.add(make(TransactionStatus::Ok, 1000000 + i, 0));
+        QVERIFY(!set.overall().latency().isExact());
+        QVERIFY(!set.item(0).latency().isExact());
+    }
+
     void counters()
     {
         Statistics stats;

@@ -24,6 +24,7 @@ private Q_SLOTS:
     void pointsByStatus();
     void pollWithDropsMarksTimeouts();
     void batchesAppendAndFollow();
+    void longPollKeepsPointBudget();
 };
 
 namespace {
@@ -185,6 +186,30 @@ void TestLatencyTimePanel::batchesAppendAndFollow()
     QVERIFY(panel.plot()->xAxis->range().contains(20.0));
     panel.clear();
     QCOMPARE(panel.graphs().answered->dataCount(), 0);
+}
+
+// Issue 31: 100,000 transactions keep at most the budget's points (the window's memory stays flat
+// all day), the legend and summary still count every one, and a spike is still drawn.
+void TestLatencyTimePanel::longPollKeepsPointBudget()
+{
+    LatencyTimePanel panel;
+    for (int batch = 0; batch < 100; ++batch) {
+        QList<Transaction> transactions;
+        for (int i = 0; i < 1000; ++i) {
+            const int n = batch * 1000 + i;
+            transactions.append(transaction(TransactionStatus::Ok, n * 10, n == 54321 ? 900 : 2 + n % 5));
+        }
+        panel.addTransactions(transactions);
+        QVERIFY(panel.graphs().answered->dataCount() <= DecimatedSeries::kDefaultBudget);
+    }
+    panel.redrawNow();
+    QCOMPARE(panel.answeredSeries().added(), 100000);
+    QVERIFY(panel.summary().startsWith(QStringLiteral("100000 transactions: 100000 answered")));
+    QCOMPARE(panel.graphs().answered->name(), QStringLiteral("answered (100000)"));
+    double highest = 0;
+    for (auto it = panel.graphs().answered->data()->constBegin(); it != panel.graphs().answered->data()->constEnd(); ++it)
+        highest = std::max(highest, it->value);
+    QCOMPARE(highest, 900.0);
 }
 
 QTEST_MAIN(TestLatencyTimePanel)
