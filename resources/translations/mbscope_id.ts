@@ -2671,17 +2671,17 @@ dan %n lagi</numerusform>
     <message>
         <location line="+4"/>
         <source>(discrete input 1xxxx, numbered from 1: PDU address + 1)</source>
-        <translation>(discrete input 1xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
+        <translation>(input diskret 1xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>(input register 3xxxx, numbered from 1: PDU address + 1)</source>
-        <translation>(input register 3xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
+        <translation>(register input 3xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>(holding register 4xxxx, numbered from 1: PDU address + 1)</source>
-        <translation>(holding register 4xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
+        <translation>(register holding 4xxxx, bernomor mulai 1: alamat PDU + 1)</translation>
     </message>
     <message>
         <location line="+21"/>
