@@ -41,15 +41,24 @@ QString codes(const QList<quint8> &functions)
     return out.join(QLatin1String(", "));
 }
 
-// "; not surveyed (the link closed): 08, 2B", or empty: what a pass of the survey's checks leaves out.
-QString unsurveyedNote(const ConformanceContext &ctx)
+// "not judged: not surveyed (the link closed): 08, 2B; no answer could be matched: 03", or empty:
+// the functions the survey learnt nothing of, which a pass of the survey's checks would claim.
+QString unjudged(const ConformanceContext &ctx)
 {
-    QList<quint8> out;
+    QList<quint8> unsurveyed;
+    QList<quint8> unmatched;
     for (quint8 f : ConformanceSurvey::functions()) {
         if (ctx.support(f) == SurveyedSupport::NotSurveyed)
-            out.append(f);
+            unsurveyed.append(f);
+        else if (ctx.support(f) == SurveyedSupport::Unknown)
+            unmatched.append(f);
     }
-    return out.isEmpty() ? QString() : QStringLiteral("; not surveyed (the link closed): %1").arg(codes(out));
+    QStringList why;
+    if (!unsurveyed.isEmpty())
+        why.append(QStringLiteral("not surveyed (the link closed): %1").arg(codes(unsurveyed)));
+    if (!unmatched.isEmpty())
+        why.append(QStringLiteral("no answer could be matched to the survey's request: %1").arg(codes(unmatched)));
+    return why.isEmpty() ? QString() : QStringLiteral("not judged: ") + why.join(QLatin1String("; "));
 }
 
 } // namespace
@@ -145,9 +154,13 @@ QList<ConformanceCheck> ConformanceSurvey::checks()
                 refused.append(f);
         }
         if (quiet.isEmpty()) {
-            res.pass((refused.isEmpty() ? QStringLiteral("the device supports every function surveyed")
-                                        : QStringLiteral("exception 01 for %1").arg(codes(refused)))
-                     + unsurveyedNote(ctx));
+            // A pass says every function answers: not when some could not be asked or matched.
+            if (const QString why = unjudged(ctx); !why.isEmpty()) {
+                res.skip(why);
+                return;
+            }
+            res.pass(refused.isEmpty() ? QStringLiteral("the device supports every function surveyed")
+                                       : QStringLiteral("exception 01 for %1").arg(codes(refused)));
             return;
         }
         QList<quint8> closed;
@@ -185,8 +198,11 @@ QList<ConformanceCheck> ConformanceSurvey::checks()
                 extra.append(f);
         }
         if (missing.isEmpty() && extra.isEmpty()) {
-            res.pass(QStringLiteral("every function surveyed is supported exactly as %1 promises").arg(ctx.settings().promiseSource)
-                     + unsurveyedNote(ctx));
+            if (const QString why = unjudged(ctx); !why.isEmpty()) {
+                res.skip(why);
+                return;
+            }
+            res.pass(QStringLiteral("every function surveyed is supported exactly as %1 promises").arg(ctx.settings().promiseSource));
             return;
         }
         QStringList why;

@@ -87,6 +87,7 @@ QList<ConformanceCheck> IdentityChecks::checks()
                          // Only those that change nothing: 02 the diagnostic register, 0B-12 the counters.
                          QStringList offered;
                          QStringList refused;
+                         QStringList unmatched; // no answer matched to the request: nothing known of it
                          for (int sub : {0x02, 0x0B, 0x0C, 0x0D, 0x0E, 0x0F, 0x10, 0x11, 0x12}) {
                              QByteArray pdu = QByteArray::fromHex("08");
                              pdu.append(char(sub >> 8));
@@ -95,11 +96,19 @@ QList<ConformanceCheck> IdentityChecks::checks()
                              const ConformanceExchange e = ctx.ask(pdu);
                              ConformanceJudge::record(res, e);
                              const QString name = QStringLiteral("%1 %2").arg(sub, 2, 16, QLatin1Char('0')).arg(QLatin1String(diagnosticrules::subFunctionName(sub)));
-                             (e.transaction.status == TransactionStatus::Ok ? offered : refused).append(name.toUpper().left(2) + name.mid(2));
+                             const TransactionStatus status = e.transaction.status;
+                             (status == TransactionStatus::Ok ? offered : status == TransactionStatus::Exception ? refused : unmatched)
+                                 .append(name.toUpper().left(2) + name.mid(2));
+                         }
+                         if (offered.isEmpty() && refused.isEmpty()) {
+                             res.skip(QStringLiteral("not judged: no answer could be matched to any of the %1 requests").arg(unmatched.size()));
+                             return;
                          }
                          res.measured = QStringLiteral("offered: %1; not offered: %2")
                                             .arg(offered.isEmpty() ? QStringLiteral("none") : offered.join(QLatin1String(", ")),
                                                  refused.isEmpty() ? QStringLiteral("none") : refused.join(QLatin1String(", ")));
+                         if (!unmatched.isEmpty())
+                             res.measured += QStringLiteral("; no answer matched: %1").arg(unmatched.join(QLatin1String(", ")));
                          res.pass(res.measured);
                      }));
 

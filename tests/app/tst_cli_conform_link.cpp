@@ -187,6 +187,49 @@ private Q_SLOTS:
         QVERIFY(!card.contains(QStringLiteral("link_lost")));
     }
 
+    // Every answer carries a wrong transaction id (the simulator's wrongTransactionId fault): no
+    // answer can be matched to its request, so diag.subfunctions is not judged, saying why
+    // (before: it passed "offered: none; not offered: 02 ...", what nothing it read supports);
+    // nor are exception.unsupported-function and promise.functions, whose passes would claim
+    // every function answers (before: "the device supports every function surveyed").
+    void subfunctionsUnmatchedNotJudged()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("faults.json"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"seed": 1, "rules": [{"kind": "wrongTransactionId", "delta": 1}]})");
+        f.close();
+        Background sim;
+        QString error;
+        QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet"),
+                            QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--faults"), path},
+                           &error),
+                 qPrintable(error));
+        const CliResult r = runMbscope(QStringList{QStringLiteral("conform"), QStringLiteral("--target"), sim.url(), QStringLiteral("--json"),
+                                                   QStringLiteral("--profile"), QStringLiteral("conformance")}
+                                       + kTimeout);
+        QVERIFY2(r.finished, r.describe());
+        int seen = 0;
+        for (const auto &c : checksOf(r.json())) {
+            const QString sentence = c.second.value(QStringLiteral("sentence")).toString();
+            // Nothing the survey asked was matched: no pass claims every function answers.
+            if (c.first == QLatin1String("exception.unsupported-function") || c.first == QLatin1String("promise.functions")) {
+                ++seen;
+                QCOMPARE(c.second.value(QStringLiteral("verdict")).toString(), QStringLiteral("skipped"));
+                QVERIFY2(sentence.startsWith(QLatin1String("not judged: no answer could be matched to the survey's request: 03, 04")), qPrintable(sentence));
+            }
+            if (c.first != QLatin1String("diag.subfunctions"))
+                continue;
+            ++seen;
+            QCOMPARE(c.second.value(QStringLiteral("verdict")).toString(), QStringLiteral("skipped"));
+            QVERIFY2(sentence.startsWith(QLatin1String("not judged: no answer could be matched")), qPrintable(sentence));
+            QVERIFY2(!sentence.contains(QLatin1String("not offered")), qPrintable(sentence));
+        }
+        QVERIFY2(seen == 3, r.describe());
+    }
+
     // The device dies at request dieAt (its port closed): one check is an error saying the link
     // was lost; every check after it is skipped as not judged; no check fails on a link error; the
     // functions the survey could not reach are "not surveyed"; the run is cut short (exit 1), and
@@ -196,6 +239,7 @@ private Q_SLOTS:
         QTest::addColumn<int>("dieAt");
         QTest::addColumn<QStringList>("notSurveyed");
         QTest::newRow("during the survey") << 6 << QStringList{"08", "0B", "0C", "11", "2B"};
+        QTest::newRow("at the survey's 07") << 5 << QStringList{"07", "08", "0B", "0C", "11", "2B"};
         QTest::newRow("during the checks") << 20 << QStringList{};
     }
     void deviceDiesMidRun()
@@ -227,6 +271,13 @@ private Q_SLOTS:
             const QString sentence = c.second.value(QStringLiteral("sentence")).toString();
             QVERIFY2(!sentence.contains(QLatin1String("link error")) && !sentence.contains(QLatin1String("the link failed")),
                      qPrintable(c.first + QStringLiteral(": ") + sentence));
+            // A function the survey could not ask leaves exception.unsupported-function unjudged:
+            // its pass would claim every function answers (before: passed, "...; not surveyed: 07...").
+            if (c.first == QLatin1String("exception.unsupported-function") && !notSurveyed.isEmpty()) {
+                QCOMPARE(c.second.value(QStringLiteral("verdict")).toString(), QStringLiteral("skipped"));
+                QVERIFY2(sentence.startsWith(QLatin1String("not judged: ")), qPrintable(sentence));
+                QVERIFY2(sentence.contains(notSurveyed.join(QLatin1String(", "))), qPrintable(sentence));
+            }
             if (c.first == lostAt) {
                 QVERIFY2(sentence.startsWith(QLatin1String("not judged: the link was lost during this check")), qPrintable(sentence));
                 after = true;
