@@ -3161,7 +3161,7 @@ dan %n lagi</numerusform>
 <context>
     <name>mbscope::LatencyRuns</name>
     <message>
-        <location filename="../../ui/analysis/latencyruns.cpp" line="+53"/>
+        <location filename="../../ui/analysis/latencyruns.cpp" line="+57"/>
         <source>Current poll</source>
         <translation>Polling saat ini</translation>
     </message>
@@ -3388,7 +3388,7 @@ dan %n lagi</numerusform>
         <translation>Lupakan titik yang ditampilkan; transaksi baru memulai sumbu waktu baru</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+81"/>
         <source>%1 transactions: %2 answered, %3 exceptions, %4 without a usable answer</source>
         <translation>%1 transaksi: %2 terjawab, %3 pengecualian, %4 tanpa jawaban yang bisa dipakai</translation>
     </message>
@@ -3654,7 +3654,7 @@ dan %n lagi</numerusform>
         <translation> (hanya baca)</translation>
     </message>
     <message>
-        <location line="+127"/>
+        <location line="+130"/>
         <source>Poll %1: %2 transactions, %3 ok, %4 failed</source>
         <translation>Polling %1: %2 transaksi, %3 ok, %4 gagal</translation>
     </message>
