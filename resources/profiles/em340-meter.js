@@ -1,7 +1,8 @@
 // em340-meter.js: the script of the em340-meter profile (docs/profiles.md, "Devices for inference").
 // A real meter measures voltages, currents and power factors and computes the rest from them; so
 // does this one. The profile's generators move the phase voltages (0-5), currents (12-17), power
-// factors (46-48) and the frequency; every tick this script computes from them, as the meter does:
+// factors (46-48) and the frequency; before every answer (onRequest) and every tick this script
+// computes from them, as the meter does, so that no read sees new voltages beside old powers:
 //   VA Ln  = V Ln-N x A Ln                  (24-29)
 //   W Ln   = VA Ln x PF Ln                  (18-23)
 //   var Ln = sqrt(VA^2 - W^2), + inductive on L1 and L2, - capacitive on L3   (30-35)
@@ -35,7 +36,8 @@ function read16(address, scale) {
     return (raw >= 32768 ? raw - 65536 : raw) * scale;
 }
 
-function onTick(time) {
+// The values computed from the measured ones; returns W sys and var sys.
+function compute() {
     var sign = [1, 1, -1];
     var w = 0, va = 0, vars = 0, vln = 0;
     var v = [];
@@ -67,6 +69,17 @@ function onTick(time) {
     write32(42, va, 0.1);
     write32(44, vars, 0.1);
     unit.write("holding", 49, Math.round(1000 * w / va));
+    return {w: w, vars: vars};
+}
+
+function onRequest(request) {
+    compute();
+    return undefined; // the tables answer
+}
+
+function onTick(time) {
+    var sys = compute();
+    var w = sys.w, vars = sys.vars;
     if (last >= 0) {
         var hours = (time - last) / 3600000;
         kwh += w * hours / 1000;

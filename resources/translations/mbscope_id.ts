@@ -380,7 +380,7 @@
 <context>
     <name>mbscope::ConformanceDialog</name>
     <message>
-        <location filename="../../ui/conformance/conformancedialog.cpp" line="+35"/>
+        <location filename="../../ui/conformance/conformancedialog.cpp" line="+37"/>
         <source> ms</source>
         <translation> md</translation>
     </message>
@@ -400,7 +400,7 @@
         <translation>&amp;Simpan laporan…</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Conformance</source>
         <translation>Kesesuaian</translation>
     </message>
@@ -490,12 +490,12 @@
         <translation>&amp;Tutup</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>Reads only, unless Writable names addresses. A failure says what was sent, what came back and what the clause requires.</source>
         <translation>Hanya membaca, kecuali Dapat ditulis menyebut alamat. Kegagalan menyebut apa yang dikirim, apa yang kembali, dan apa yang diwajibkan pasalnya.</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+25"/>
         <source>Type the link of the slave under test.</source>
         <translation>Ketik link slave yang diuji.</translation>
     </message>
@@ -516,7 +516,7 @@
         <translation>Profil %1: %2</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+21"/>
         <source>Running: reads only…</source>
         <translation>Berjalan: hanya membaca…</translation>
     </message>
@@ -526,7 +526,7 @@
         <translation>Berjalan: boleh menulis pada %1…</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+43"/>
         <source>Not tested: %1</source>
         <translation>Tidak diuji: %1</translation>
     </message>
@@ -2805,7 +2805,7 @@ dan %n lagi</numerusform>
 <context>
     <name>mbscope::InferDialog</name>
     <message>
-        <location filename="../../ui/discovery/inferdialog.cpp" line="+36"/>
+        <location filename="../../ui/discovery/inferdialog.cpp" line="+41"/>
         <source> ms</source>
         <translation> md</translation>
     </message>
@@ -2870,7 +2870,7 @@ dan %n lagi</numerusform>
         <translation>Simpan draf sebagai profil perangkat yang dilayani mbscope simulate --profile dan diekspor mbscope export-map: baris yang dicentang OK dikonfirmasi, sisanya tetap tebakan.</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+38"/>
         <source>%1 of %2 values confirmed. Check the reading whose numbers you recognise, or OK to keep the guess; then save the profile.</source>
         <translation>%1 dari %2 nilai dikonfirmasi. Centang bacaan yang angkanya Anda kenali, atau OK untuk mempertahankan tebakan; lalu simpan profilnya.</translation>
     </message>
@@ -2894,14 +2894,14 @@ dan %n lagi</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+24"/>
+        <location line="+32"/>
         <source>Reading the blocks %n time(s)…</source>
         <translation>
             <numerusform>Membaca blok-blok %n kali…</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+48"/>
         <source>Too few reads answered to infer anything.</source>
         <translation>Terlalu sedikit pembacaan yang dijawab untuk menyimpulkan apa pun.</translation>
     </message>
@@ -2911,7 +2911,7 @@ dan %n lagi</numerusform>
         <translation>Tidak ada yang bisa dibaca: %1</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+33"/>
         <source>Cannot save %1: %2</source>
         <translation>Tidak dapat menyimpan %1: %2</translation>
     </message>
@@ -6315,7 +6315,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/scandialog.cpp" line="+42"/>
+        <location filename="../../ui/discovery/scandialog.cpp" line="+43"/>
         <location line="+1"/>
         <source> ms</source>
         <translation> md</translation>
@@ -6496,7 +6496,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1: %2 dari %3 id ditanyai dalam %4, %5 ditemukan.</translation>
     </message>
     <message numerus="yes">
-        <location line="+137"/>
+        <location line="+140"/>
         <source>%n watch definition(s) copied to the clipboard.</source>
         <translation>
             <numerusform>%n definisi pantauan disalin ke papan klip.</numerusform>

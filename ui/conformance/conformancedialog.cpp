@@ -6,6 +6,8 @@
 #include "conformance/conformancehtml.h"
 #include "conformance/conformancerunner.h"
 #include "discovery/scanform.h"
+#include "job/job.h"
+#include "job/jobthread.h"
 #include "profile/profileloader.h"
 #include "session/junitreport.h"
 
@@ -42,6 +44,8 @@ ConformanceDialog::ConformanceDialog(QWidget *parent)
     , m_progress(new QProgressBar(this))
     , m_status(new QLabel(this))
     , m_table(new QTableView(this))
+    , m_job(new Job(this))
+    , m_jobs(new JobThread(this))
 {
     setObjectName(QStringLiteral("conformanceDialog"));
     setWindowTitle(tr("Conformance"));
@@ -110,6 +114,7 @@ ConformanceDialog::ConformanceDialog(QWidget *parent)
     connect(m_start, &QPushButton::clicked, this, &ConformanceDialog::start);
     connect(m_stop, &QPushButton::clicked, this, &ConformanceDialog::stop);
     connect(m_save, &QPushButton::clicked, this, &ConformanceDialog::save);
+    connect(m_job, &Job::finished, this, &ConformanceDialog::onFinished);
     m_status->setText(tr("Reads only, unless Writable names addresses. A failure says what was sent, what came back and "
                          "what the clause requires."));
     resize(1200, 700);
@@ -120,6 +125,12 @@ ConformanceDialog::~ConformanceDialog()
 {
     if (m_runner)
         m_runner->stop();
+    delete m_jobs; // ends the job's thread: the check in flight returns at once, the rest are not run
+}
+
+bool ConformanceDialog::isRunning() const
+{
+    return m_job->isActive();
 }
 
 void ConformanceDialog::setTarget(const LinkUrl &url)
@@ -173,12 +184,11 @@ std::optional<ConformanceSettings> ConformanceDialog::settings()
 
 void ConformanceDialog::start()
 {
-    if (m_running)
+    if (isRunning())
         return;
     const std::optional<ConformanceSettings> s = settings();
     if (!s)
         return;
-    m_running = true;
     m_result.reset();
     m_model->clear();
     int total = 0;
@@ -187,26 +197,39 @@ void ConformanceDialog::start()
     m_progress->setRange(0, total);
     m_progress->setValue(0);
     m_status->setText(s->writable.isEmpty() ? tr("Running: reads only\u2026") : tr("Running: writes allowed on %1\u2026").arg(m_writable->text()));
+    run(*s);
     updateButtons();
-    // From the event loop, so that Run's click returns and Stop can be pressed.
-    QTimer::singleShot(0, this, [this, settings = *s] { run(settings); });
 }
 
 void ConformanceDialog::run(const ConformanceSettings &settings)
 {
     m_runner = std::make_unique<ConformanceRunner>(settings);
-    m_runner->setTrafficLog(m_trafficLog);
-    m_runner->setFramesLogged([this](const QList<TrafficFrame> &frames, const QString &link) { Q_EMIT framesLogged(frames, link); });
-    const int total = m_progress->maximum();
-    int done = 0;
-    const ConformanceResult result = m_runner->run([this, &done, total](const CheckResult &r) {
-        m_model->append(r);
-        m_progress->setValue(++done);
-        m_table->scrollToBottom();
-        Q_EMIT checkDecided(done, total);
+    m_runner->setTrafficLog(m_trafficLog); // the shared, locked log: written from the job's thread
+    // Called in the job's thread: each crosses to this one by a queued call.
+    m_runner->setFramesLogged([this](const QList<TrafficFrame> &frames, const QString &link) {
+        QMetaObject::invokeMethod(this, [this, frames, link] { Q_EMIT framesLogged(frames, link); }, Qt::QueuedConnection);
     });
+    m_delivered.reset();
+    ConformanceRunner *runner = m_runner.get();
+    m_jobs->run(m_job, [this, runner]() -> JobThread::Outcome {
+        const ConformanceResult result = runner->run([this](const CheckResult &r) {
+            QMetaObject::invokeMethod(this, [this, r] {
+                m_model->append(r);
+                m_progress->setValue(m_progress->value() + 1);
+                m_table->scrollToBottom();
+                Q_EMIT checkDecided(m_progress->value(), m_progress->maximum());
+            }, Qt::QueuedConnection);
+        });
+        return {result.linkFailed ? JobEnd::LinkError : JobEnd::Completed, [this, result] { m_delivered = result; }};
+    });
+}
+
+void ConformanceDialog::onFinished()
+{
     m_runner.reset();
-    m_running = false;
+    if (!m_delivered)
+        return;
+    const ConformanceResult result = *m_delivered;
     m_result = result;
     if (!result.linkLostAt.isEmpty()) {
         // The check the device died under is re-judged once the next request finds it gone: the
@@ -292,11 +315,12 @@ void ConformanceDialog::save()
 
 void ConformanceDialog::updateButtons()
 {
-    m_start->setEnabled(!m_running);
-    m_stop->setEnabled(m_running);
-    m_save->setEnabled(!m_running && m_result.has_value() && !m_result->linkFailed);
+    const bool running = isRunning();
+    m_start->setEnabled(!running);
+    m_stop->setEnabled(running);
+    m_save->setEnabled(!running && m_result.has_value() && !m_result->linkFailed);
     for (QWidget *w : std::initializer_list<QWidget *>{m_target, m_unit, m_timeout, m_profile, m_writable, m_only})
-        w->setEnabled(!m_running);
+        w->setEnabled(!running);
 }
 
 } // namespace mbscope

@@ -21,6 +21,8 @@ namespace mbscope {
 
 class ConformanceResultModel;
 class ConformanceRunner;
+class Job;
+class JobThread;
 class TrafficLog;
 
 // Tools > Conformance: the battery of `mbscope conform` (core/conformance's ConformanceRunner)
@@ -37,7 +39,7 @@ public:
     void setTarget(const LinkUrl &url);
     // The settings the fields make; nullopt, with what is wrong shown in the status line.
     [[nodiscard]] std::optional<ConformanceSettings> settings();
-    [[nodiscard]] bool isRunning() const { return m_running; }
+    [[nodiscard]] bool isRunning() const;
     [[nodiscard]] ConformanceResultModel *model() const { return m_model; }
     [[nodiscard]] const std::optional<ConformanceResult> &result() const { return m_result; }
     // The scorecard to path, in the format its suffix names (.html or .htm, .pdf, .json, .xml for
@@ -64,6 +66,7 @@ protected:
 
 private:
     void run(const ConformanceSettings &settings);
+    void onFinished();
     void updateButtons();
 
     ConformanceResultModel *m_model;
@@ -79,8 +82,10 @@ private:
     QProgressBar *m_progress;
     QLabel *m_status;
     QTableView *m_table;
-    bool m_running = false;
-    std::unique_ptr<ConformanceRunner> m_runner;
+    Job *m_job;
+    JobThread *m_jobs;  // the battery runs in its thread: the window's never nests a loop
+    std::unique_ptr<ConformanceRunner> m_runner; // made here, run there, dropped here when done
+    std::optional<ConformanceResult> m_delivered; // the run's scorecard, from the job's thread
     TrafficLog *m_trafficLog = nullptr;
     std::optional<ConformanceResult> m_result;
 };

@@ -7,6 +7,8 @@
 
 #include "inference/blockinferrer.h"
 #include "inference/inferencedraft.h"
+#include "job/job.h"
+#include "job/jobthread.h"
 
 #include <QtCore/QDir>
 #include <QtCore/QFileInfo>
@@ -24,12 +26,15 @@
 #include <QtWidgets/QVBoxLayout>
 
 #include <algorithm>
+#include <utility>
 
 namespace mbscope {
 
 InferDialog::InferDialog(QWidget *parent)
     : QDialog(parent)
-    , m_sampler(new BlockSampler(this))
+    , m_job(new Job(this))
+    , m_jobs(new JobThread(this))
+    , m_sampler(new BlockSampler)
     , m_model(new InferDraftModel(this))
     , m_table(new QTableView(this))
     , m_samples(ScanForm::spinBox(this, "inferSamples", 2, 100000, 20))
@@ -87,10 +92,14 @@ InferDialog::InferDialog(QWidget *parent)
     connect(m_again, &QPushButton::clicked, this, &InferDialog::readAgain);
     connect(m_save, &QPushButton::clicked, this, &InferDialog::chooseFile);
     connect(buttons, &QDialogButtonBox::rejected, this, &InferDialog::reject);
+    // The sampler lives in the job's thread: its rounds and the job's cancel cross by queued signals.
+    m_jobs->adopt(m_sampler);
     connect(m_sampler, &BlockSampler::roundDone, this, [this](int done, int total) {
         m_progress->setRange(0, total);
         m_progress->setValue(done);
     });
+    connect(m_job, &Job::cancelRequested, m_sampler, &BlockSampler::stop);
+    connect(m_job, &Job::finished, this, &InferDialog::onFinished);
     connect(m_model, &InferDraftModel::confirmedChanged, this, [this](int confirmed) {
         if (m_haveDraft)
             m_status->setText(tr("%1 of %2 values confirmed. Check the reading whose numbers you recognise, "
@@ -131,29 +140,77 @@ SampleSettings InferDialog::settings(int samples) const
     return s;
 }
 
+InferDialog::~InferDialog()
+{
+    delete m_jobs; // cancels the sampling, ends its thread and deletes the sampler there
+}
+
+bool InferDialog::isRunning() const
+{
+    return m_job->isActive();
+}
+
 void InferDialog::start()
 {
-    if (m_running || m_blocks.isEmpty())
+    if (isRunning() || m_blocks.isEmpty())
         return;
-    m_running = true;
-    updateButtons();
     m_progress->setRange(0, m_samples->value());
     m_progress->setValue(0);
     m_status->setText(tr("Reading the blocks %n time(s)\u2026", nullptr, m_samples->value()));
-    const QList<BlockSamples> sampled = m_sampler->run(settings(m_samples->value()));
-    m_running = false;
+    run(Run::Sample, m_samples->value());
+}
+
+void InferDialog::readAgain()
+{
+    if (isRunning() || !m_haveDraft)
+        return;
+    run(Run::ReadAgain, 1);
+}
+
+void InferDialog::run(Run what, int samples)
+{
+    m_run = what;
+    BlockSampler *sampler = m_sampler;
+    const SampleSettings s = settings(samples);
+    const Job *job = m_job;
+    m_jobs->run(m_job, [this, sampler, s, job]() -> JobThread::Outcome {
+        // In the job's thread: only the sampler is touched here; what it read comes back by value.
+        const QList<BlockSamples> read = sampler->run(s);
+        const QString problem = sampler->problem();
+        return {job->isCancelRequested() ? JobEnd::Stopped : JobEnd::Completed, [this, read, problem] {
+                    m_read = read;
+                    m_readProblem = problem;
+                }};
+    });
+    updateButtons();
+}
+
+void InferDialog::onFinished()
+{
+    const Run what = std::exchange(m_run, Run::None);
+    if (what == Run::ReadAgain) {
+        m_model->updateLive(m_read);
+        updateButtons();
+        Q_EMIT readDone();
+        return;
+    }
+    showInference();
+}
+
+void InferDialog::showInference()
+{
     int samples = 0;
-    for (const BlockSamples &b : sampled)
+    for (const BlockSamples &b : std::as_const(m_read))
         samples = std::max(samples, int(b.samples.size()));
     if (samples < 2) {
         m_haveDraft = false;
-        ScanForm::showProblem(m_status, m_sampler->problem().isEmpty() ? tr("Too few reads answered to infer anything.")
-                                                                       : tr("Nothing could be read: %1").arg(m_sampler->problem()));
+        ScanForm::showProblem(m_status, m_readProblem.isEmpty() ? tr("Too few reads answered to infer anything.")
+                                                                : tr("Nothing could be read: %1").arg(m_readProblem));
         updateButtons();
         return;
     }
     QList<ValueGuess> guesses;
-    for (const QList<ValueGuess> &block : BlockInferrer::inferUnit(sampled))
+    for (const QList<ValueGuess> &block : BlockInferrer::inferUnit(m_read))
         guesses += block;
     m_haveDraft = true;
     m_model->setGuesses(guesses);
@@ -162,27 +219,14 @@ void InferDialog::start()
     Q_EMIT inferred(int(guesses.size()));
 }
 
-void InferDialog::readAgain()
-{
-    if (m_running || !m_haveDraft)
-        return;
-    m_running = true;
-    updateButtons();
-    const QList<BlockSamples> read = m_sampler->run(settings(1));
-    m_running = false;
-    m_model->updateLive(read);
-    updateButtons();
-    Q_EMIT readDone();
-}
-
 void InferDialog::stop()
 {
-    m_sampler->stop();
+    m_job->cancel();
 }
 
 void InferDialog::reject()
 {
-    m_sampler->stop();
+    m_job->cancel();
     QDialog::reject();
 }
 
@@ -216,12 +260,13 @@ void InferDialog::chooseFile()
 
 void InferDialog::updateButtons()
 {
-    m_start->setEnabled(!m_running && !m_blocks.isEmpty());
-    m_stop->setEnabled(m_running);
-    m_again->setEnabled(!m_running && m_haveDraft);
-    m_save->setEnabled(!m_running && m_haveDraft);
-    m_samples->setEnabled(!m_running);
-    m_interval->setEnabled(!m_running);
+    const bool running = isRunning();
+    m_start->setEnabled(!running && !m_blocks.isEmpty());
+    m_stop->setEnabled(running);
+    m_again->setEnabled(!running && m_haveDraft);
+    m_save->setEnabled(!running && m_haveDraft);
+    m_samples->setEnabled(!running);
+    m_interval->setEnabled(!running);
 }
 
 } // namespace mbscope

@@ -1,6 +1,7 @@
 #include "scandialog.h"
 #include "protocol/framingtraits.h"
 
+#include "inferdialog.h"
 #include "linescandialog.h"
 #include "mapscandialog.h"
 #include "scanresultmodel.h"
@@ -307,6 +308,7 @@ MapScanDialog *ScanDialog::mapSelectedUnit()
     if (!m_mapDialog) {
         m_mapDialog = new MapScanDialog(this);
         adopt(m_mapDialog->scanner()->channel());
+        adopt(m_mapDialog->inferTypes()->sampler()->channel()); // Infer types' reads: traffic and recording too
         connect(m_mapDialog, &MapScanDialog::watchesRequested, this, &ScanDialog::watchesRequested);
     }
     if (!m_mapDialog->isRunning())
@@ -363,8 +365,10 @@ void ScanDialog::setTrafficLog(TrafficLog *log)
 {
     m_trafficLog = log;
     m_scanner->channel()->setTrafficLog(log);
-    if (m_mapDialog)
+    if (m_mapDialog) {
         m_mapDialog->scanner()->channel()->setTrafficLog(log);
+        m_mapDialog->inferTypes()->sampler()->channel()->setTrafficLog(log);
+    }
     if (m_timingDialog)
         m_timingDialog->scanner()->setTrafficLog(log);
     if (m_lineDialog)

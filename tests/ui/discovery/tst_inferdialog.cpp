@@ -15,6 +15,8 @@
 
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QAbstractItemModelTester>
+#include <QtCore/QThread>
+#include <QtCore/QTimer>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
 #include <QtWidgets/QApplication>
@@ -99,8 +101,17 @@ void TestInferDialog::inferConfirmAndSave()
     dialog->findChild<QSpinBox *>(QStringLiteral("inferSamples"))->setValue(16);
     dialog->findChild<QSpinBox *>(QStringLiteral("inferInterval"))->setValue(300);
     QSignalSpy inferred(dialog, &InferDialog::inferred);
-    QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("inferStart")), Qt::LeftButton);
-    QVERIFY(!inferred.isEmpty() || inferred.wait(60000));
+    // The sampling runs in the job's thread: the window's own loop is never nested meanwhile (a
+    // 2 ms timer on it sees loop level 1 throughout; sampling on it made that 2).
+    int deepest = 0;
+    QTimer probe;
+    connect(&probe, &QTimer::timeout, this, [&deepest] { deepest = qMax(deepest, QThread::currentThread()->loopLevel()); });
+    probe.start(2);
+    // Clicked from inside the test's event loop, as a user clicks inside the window's.
+    QTimer::singleShot(0, dialog, [dialog] { QTest::mouseClick(dialog->findChild<QPushButton *>(QStringLiteral("inferStart")), Qt::LeftButton); });
+    QVERIFY(inferred.wait(60000));
+    probe.stop();
+    QCOMPARE(deepest, 1);
     // The profile's 31 values, one row each (an energy counter that did not move while sampled
     // may be two still 16-bit registers).
     QVERIFY2(model->rowCount() >= 31 && model->rowCount() <= 33, qPrintable(QString::number(model->rowCount())));
