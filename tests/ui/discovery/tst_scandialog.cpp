@@ -9,6 +9,7 @@
 #include "discovery/mapscanner.h"
 #include "job/job.h"
 #include "discovery/linescandialog.h"
+#include "discovery/inferdialog.h"
 #include "discovery/mapscandialog.h"
 #include "discovery/scandialog.h"
 #include "discovery/timingresulttree.h"
@@ -360,6 +361,23 @@ void TestScanDialog::mapScanLeavesTheWindowLoopAlone()
     QCOMPARE(finished.first().first().value<JobEnd>(), JobEnd::Stopped);
     QVERIFY(!map->isVisible());
     QVERIFY(map->map() && map->map()->table(3) && map->map()->table(3)->blocks.size() == 1);
+
+    // Infer types on that map: its reads reach the scan dialog's framesLogged() too (the window's
+    // traffic list and recording); before, its sampler's channel was nobody's.
+    InferDialog *infer = map->inferTypes();
+    QVERIFY(infer);
+    infer->findChild<QSpinBox *>(QStringLiteral("inferSamples"))->setValue(2);
+    infer->findChild<QSpinBox *>(QStringLiteral("inferInterval"))->setValue(10);
+    frames.clear();
+    QSignalSpy inferred(infer, &InferDialog::inferred);
+    infer->start();
+    QVERIFY(inferred.wait(30000));
+    bool sawBlockRead = false;
+    for (const QList<QVariant> &args : std::as_const(frames)) {
+        for (const TrafficFrame &f : args.first().value<QList<TrafficFrame>>())
+            sawBlockRead = sawBlockRead || (f.direction == TrafficDirection::Out && f.bytes.contains(QByteArray::fromHex("0300790016")));
+    }
+    QVERIFY(sawBlockRead); // the block 0x79-0x8E read whole, from the sampler's thread
 }
 
 // Timing on a found unit: the read the scan asked, measured through the dialog's Start, the
