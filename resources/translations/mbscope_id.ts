@@ -3267,7 +3267,12 @@ dan %n lagi</numerusform>
         <translation>Lebih cepat daripada saluran (dari penulisan)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+8"/>
+        <source> (within 0.1 %)</source>
+        <translation> (paling jauh 0,1 % dari nilai tepatnya)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Latency min</source>
         <translation>Latensi min</translation>
     </message>

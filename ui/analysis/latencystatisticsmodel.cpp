@@ -62,6 +62,12 @@ QList<LatencyStatisticsModel::Row> LatencyStatisticsModel::rowsFor(const QList<C
         counter(QStringLiteral("outran_line"), tr("Faster than the line (from the write)"),
                 [](const Statistics &s) { return s.outranLine(); });
 
+    // Past a store's exact limit its percentiles are bin middles: the rows say so (the figures are
+    // within LatencySamples::kRelativeError, under 0.1 %, of the exact ones).
+    const bool binned = std::any_of(columns.begin(), columns.end(), [](const Column &column) {
+        return !column.statistics->latency().isExact();
+    });
+    const QString approximate = binned ? tr(" (within 0.1 %)") : QString();
     const auto latency = [&rows, &columns](const QString &key, const QString &name, auto figure) {
         Row row{key, name, true, {}};
         for (const Column &column : columns) {
@@ -72,10 +78,10 @@ QList<LatencyStatisticsModel::Row> LatencyStatisticsModel::rowsFor(const QList<C
     };
     latency(QStringLiteral("latency_min"), tr("Latency min"), [](const LatencySamples &l) { return double(l.minNs()); });
     latency(QStringLiteral("latency_mean"), tr("Latency mean"), [](const LatencySamples &l) { return l.meanNs(); });
-    latency(QStringLiteral("latency_median"), tr("Latency median"), [](const LatencySamples &l) { return double(l.medianNs()); });
-    latency(QStringLiteral("latency_p90"), tr("Latency p90"), [](const LatencySamples &l) { return double(l.percentileNs(90)); });
-    latency(QStringLiteral("latency_p95"), tr("Latency p95"), [](const LatencySamples &l) { return double(l.percentileNs(95)); });
-    latency(QStringLiteral("latency_p99"), tr("Latency p99"), [](const LatencySamples &l) { return double(l.percentileNs(99)); });
+    latency(QStringLiteral("latency_median"), tr("Latency median") + approximate, [](const LatencySamples &l) { return double(l.medianNs()); });
+    latency(QStringLiteral("latency_p90"), tr("Latency p90") + approximate, [](const LatencySamples &l) { return double(l.percentileNs(90)); });
+    latency(QStringLiteral("latency_p95"), tr("Latency p95") + approximate, [](const LatencySamples &l) { return double(l.percentileNs(95)); });
+    latency(QStringLiteral("latency_p99"), tr("Latency p99") + approximate, [](const LatencySamples &l) { return double(l.percentileNs(99)); });
     latency(QStringLiteral("latency_max"), tr("Latency max"), [](const LatencySamples &l) { return double(l.maxNs()); });
     latency(QStringLiteral("latency_stddev"), tr("Latency std. deviation"), [](const LatencySamples &l) { return l.stddevNs(); });
     return rows;

@@ -338,6 +338,20 @@ void TestLatencyHistogram::statisticsModel()
     const QString csv = TableCsv::toCsv(model);
     QVERIFY2(csv.startsWith(QLatin1String("Figure,a,c\r\n")), qPrintable(csv));
     QVERIFY2(csv.contains(QLatin1String("\r\nTransactions,3,0\r\n")), qPrintable(csv));
+    const auto name = [&model](const char *key) {
+        return model.index(model.rowOf(QLatin1String(key)), 0).data().toString();
+    };
+    QCOMPARE(name("latency_p99"), QStringLiteral("Latency p99")); // every sample kept: exact
+
+    // Past the exact limit the percentiles come from bins: their rows say how close they are.
+    Statistics binned;
+    binned.setExactLatencyLimit(2);
+    for (const qint64 ns : {1000000, 2000000, 3000000})
+        binned.add(answered(ns));
+    model.setColumns({{QStringLiteral("binned"), &binned}});
+    QCOMPARE(name("latency_p99"), QStringLiteral("Latency p99 (within 0.1 %)"));
+    QCOMPARE(name("latency_median"), QStringLiteral("Latency median (within 0.1 %)"));
+    QCOMPARE(name("latency_max"), QStringLiteral("Latency max")); // min, max, mean stay exact
 }
 
 // Serial answers that came before the line could have carried them (a pty, a buffering USB
