@@ -93,7 +93,6 @@ public:
     void setFramesPublished(bool published) { m_framesPublished = published; }
     // The channel of its one-at-a-time requests (its frames: ProbeChannel::framesLogged).
     [[nodiscard]] ProbeChannel *channel() { return m_channel; }
-    [[nodiscard]] bool wasStopped() const { return m_end == JobEnd::Stopped; }
     // Steps done of the plan, and the time left: the plan's waits (gaps, warm-up, settling) and
     // one answer a step, at the average answer time measured so far (the timeout before any).
     [[nodiscard]] JobProgress progress() const;
