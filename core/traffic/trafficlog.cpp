@@ -140,6 +140,7 @@ quint16 TrafficLog::appendLink(const QString &name)
 
 void TrafficLog::setEndpoints(quint16 link, qint64 tNs, quint64 transactionId, const JournalEndpoints &endpoints)
 {
+    QMutexLocker lock(m_lock.get());
     QByteArray &json = m_endpoints[link];
     json = endpoints.toJson();
     m_journal.addNote(link, transactionId, tNs, json);

@@ -48,7 +48,7 @@ public:
     TrafficLog &operator=(const TrafficLog &) = delete;
 
     // Several writers in threads of their own (engines: EngineRecorder), one journal: append,
-    // addLink, addConnection, annotate, flush, flushIfDue and closeJournal then lock, so that
+    // addLink, addConnection, setEndpoints, annotate, flush, flushIfDue and closeJournal then lock, so that
     // frames from each thread go in whole and in turn. Set before any writer has the log. The
     // reading calls (at, visit, copy, links) stay unlocked: for when no writer writes.
     void setShared(bool shared);

@@ -238,7 +238,8 @@ void TestTrafficLog::memoryOnlyJournal()
 
 // Issue 25: the engines of a watch run or a scan write one journal from threads of their own.
 // A shared log takes every frame whole, each writer's in its order, each writer on a link of its
-// own though they name the same URL (each numbers its transactions from 1).
+// own though they name the same URL (each numbers its transactions from 1), each noting its
+// connection's ends as it goes.
 void TestTrafficLog::sharedByThreads()
 {
     QTemporaryDir dir;
@@ -258,6 +259,11 @@ void TestTrafficLog::sharedByThreads()
                 for (quint64 id = 1; id <= kFrames; ++id) {
                     const QByteArray bytes(int(id % 40) + 1, char(link));
                     log.append(qint64(id), TrafficDirection::Out, link, TrafficVerdict::Sent, id, bytes);
+                    // A link (re)opening notes its ends from its own thread, amid the others'
+                    // frames (it took no lock: two links of a watch connecting at once crashed).
+                    if (id % 25 == 0)
+                        log.setEndpoints(link, qint64(id), 0,
+                                         JournalEndpoints{QStringLiteral("127.0.0.1:%1").arg(40000 + id), QStringLiteral("127.0.0.1:502")});
                     if (id % 500 == 0)
                         log.flushIfDue(qint64(id) + 200'000'000);
                 }
