@@ -161,9 +161,9 @@ int runExportMap(const QStringList &arguments)
             return usage(QStringLiteral("--unit %1: the profile has no such unit").arg(id.value));
         unitId = quint8(id.value);
     }
-    MapExportInput input;
-    input.name = profile.name;
-    input.source = profile.source;
+    MapExportInput input = MapExportInput::fromProfile(profile, unitId);
+    if (input.points.isEmpty())
+        return usage(QStringLiteral("%1 has no table entries to export").arg(profile.source));
     const DurationResult every = parseDuration(parser.value(interval));
     if (!every.ok() || every.ns < Duration::Millisecond)
         return usage(QStringLiteral("--interval %1").arg(every.ok() ? QStringLiteral("is under 1 ms") : every.error));
@@ -183,10 +183,6 @@ int runExportMap(const QStringList &arguments)
     if (const QString why = MapExporter::unsupportedEndpoint(*format, input.endpoint); !why.isEmpty())
         return usage(QStringLiteral("--endpoint %1: %2").arg(input.endpoint.toString(), why));
 
-    input.points = MapPoint::fromProfile(profile, unitId);
-    if (input.points.isEmpty())
-        return usage(QStringLiteral("%1 has no table entries to export").arg(profile.source));
-    input.blocks = ExportBlock::group(input.points, &profile.limits); // as many a request as the device takes
 
     const QString path = parser.value(output);
     if (parser.isSet(output) && path != QLatin1String("-")) {

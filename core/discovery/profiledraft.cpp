@@ -1,6 +1,7 @@
 #include "profiledraft.h"
 
 #include "profile/simtable.h"
+#include "profile/devicelimits.h"
 #include "protocol/functionspec.h"
 
 #include <QtCore/QDateTime>
@@ -52,7 +53,7 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
     std::sort(functions.begin(), functions.end());
     QJsonArray codes;
     for (const int f : std::as_const(functions))
-        codes.append(ProfileDraft::functionKey(f));
+        codes.append(DeviceLimits::functionKey(f));
 
     QJsonObject unit{{QStringLiteral("id"), int(map.unit)},
                      {QStringLiteral("name"), QStringLiteral("unit %1").arg(map.unit)},
@@ -67,7 +68,7 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
     QJsonObject maxQuantity;
     for (const TableMap &t : map.tables) {
         if (t.supported && t.maxQuantity > 0 && t.maxQuantity < QuantityLimits::maxQuantity(t.function))
-            maxQuantity.insert(ProfileDraft::functionKey(t.function), t.maxQuantity);
+            maxQuantity.insert(DeviceLimits::functionKey(t.function), t.maxQuantity);
     }
     QJsonObject profile{
         {QStringLiteral("name"), name},
@@ -82,11 +83,6 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
     if (!maxQuantity.isEmpty())
         profile.insert(QStringLiteral("limits"), QJsonObject{{QStringLiteral("maxQuantity"), maxQuantity}});
     return QJsonDocument(profile).toJson(QJsonDocument::Indented);
-}
-
-QString ProfileDraft::functionKey(int code)
-{
-    return QStringLiteral("0x%1").arg(code, 2, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x"));
 }
 
 QString ProfileDraft::describeLimits(const QJsonObject &limits)
@@ -140,9 +136,7 @@ QByteArray ProfileDraft::mergeLimits(const QByteArray &profile, const QJsonObjec
             for (auto q = given.begin(); q != given.end(); ++q) {
                 // The profile may spell the code another way ("3", "0X03"): one key a function.
                 for (const QString &key : quantities.keys()) {
-                    bool ok = false;
-                    const int code = key.startsWith(QLatin1String("0x"), Qt::CaseInsensitive) ? key.mid(2).toInt(&ok, 16) : key.toInt(&ok, 10);
-                    if (ok && functionKey(code) == q.key())
+                    if (const std::optional<int> code = DeviceLimits::parseFunctionKey(key); code && DeviceLimits::functionKey(*code) == q.key())
                         quantities.remove(key);
                 }
                 if (!q.value().isNull())

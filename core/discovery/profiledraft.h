@@ -28,8 +28,6 @@ public:
     // What limits (as mergeLimits takes them) says, for a person: "minGapMs 50, maxQuantity 0x03 16;
     // no limit seen: warmUpMs", or "nothing measured".
     [[nodiscard]] static QString describeLimits(const QJsonObject &limits);
-    // A function code as a key of "maxQuantity" (and of "functions"): "0x03".
-    [[nodiscard]] static QString functionKey(int code);
 };
 
 } // namespace mbscope

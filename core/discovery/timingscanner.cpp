@@ -6,6 +6,7 @@
 #include "engine/transactionengine.h"
 #include "exchange/requestitem.h"
 #include "protocol/adubuilder.h"
+#include "profile/devicelimits.h"
 #include "protocol/functionspec.h"
 
 #include <QtCore/QElapsedTimer>
@@ -86,7 +87,7 @@ QJsonObject TimingReport::profileLimits(quint8 function) const
     const int specMax = QuantityLimits::maxQuantity(function);
     if (largestQuantity > 0 && largestFound)
         limits.insert(QStringLiteral("maxQuantity"),
-                      QJsonObject{{ProfileDraft::functionKey(function),
+                      QJsonObject{{DeviceLimits::functionKey(function),
                                    largestQuantity < specMax ? QJsonValue(largestQuantity) : QJsonValue(QJsonValue::Null)}});
     return limits;
 }

@@ -67,6 +67,12 @@ QString HomeAssistantWriter::write(const MapExportInput &input)
                    .arg(e.port);
     }
     out += QStringLiteral("    timeout: %1\n").arg(std::max(1, (input.timeoutMs + 999) / 1000));
+    // The device's pace (profile limits): whole seconds to wait after connecting, milliseconds
+    // between requests.
+    if (input.warmUpMs > 0)
+        out += QStringLiteral("    delay: %1\n").arg((input.warmUpMs + 999) / 1000);
+    if (input.minGapMs > 0)
+        out += QStringLiteral("    message_wait_milliseconds: %1\n").arg(input.minGapMs);
 
     QString sensors;
     QString binary;

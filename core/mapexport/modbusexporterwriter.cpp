@@ -1,6 +1,7 @@
 #include "modbusexporterwriter.h"
 
 #include <QtCore/QLocale>
+#include <QtCore/QStringList>
 
 namespace mbscope {
 
@@ -35,6 +36,15 @@ QString ModbusExporterWriter::write(const MapExportInput &input)
                           "# Prometheus passes the target (%3:%4) and the unit as sub_target.\n")
                .arg(input.name, input.source, input.endpoint.host)
                .arg(input.endpoint.port);
+    // The device's pace (profile limits): said, since a module has no setting for it.
+    QStringList pace;
+    if (input.minGapMs > 0)
+        pace.append(QStringLiteral("%1 ms between requests").arg(input.minGapMs));
+    if (input.warmUpMs > 0)
+        pace.append(QStringLiteral("%1 ms after a connection opens").arg(input.warmUpMs));
+    if (!pace.isEmpty())
+        out += QStringLiteral("# The device needs %1: modbus_exporter has no setting for %2.\n")
+                   .arg(pace.join(QStringLiteral(" and ")), pace.size() == 1 ? QStringLiteral("it") : QStringLiteral("either"));
     out += QStringLiteral("modules:\n  - name: %1\n    protocol: \"tcp/ip\"\n    metrics:\n")
                .arg(MapPoint::yamlQuoted(MapPoint::slug(input.name)));
     for (const MapPoint &p : input.points) {

@@ -1,5 +1,7 @@
 #include "noderedwriter.h"
 
+#include <algorithm>
+
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
@@ -165,13 +167,20 @@ QString NodeRedWriter::write(const MapExportInput &input)
                   {QStringLiteral("serialStopbits"), QString::number(e.serial.stopBits)},
                   {QStringLiteral("serialParity"), e.serial.parity == 'E' ? QStringLiteral("even")
                                                    : e.serial.parity == 'O' ? QStringLiteral("odd") : QStringLiteral("none")},
-                  {QStringLiteral("serialConnectionDelay"), QStringLiteral("100")},
+                  // The device's pace (profile limits): a serial port waits warmUpMs after it
+                  // opens; a TCP connection's reads wait whole seconds (delayOnStart below).
+                  {QStringLiteral("serialConnectionDelay"), QString::number(std::max(100, input.warmUpMs))},
                   {QStringLiteral("unit_id"), input.points.isEmpty() ? 1 : int(input.points.constFirst().unitId)},
-                  {QStringLiteral("commandDelay"), 1},
+                  // Between an answer and the next request: the device's gap (1 ms: the node's least).
+                  {QStringLiteral("commandDelay"), std::max(1, input.minGapMs)},
                   {QStringLiteral("clientTimeout"), input.timeoutMs},
                   {QStringLiteral("reconnectOnTimeout"), true},
                   {QStringLiteral("reconnectTimeout"), 2000},
-                  {QStringLiteral("parallelUnitIdsAllowed"), true}};
+                  // Units in turn when the device needs a gap: in parallel, each unit's queue
+                  // would send regardless of the others'.
+                  {QStringLiteral("parallelUnitIdsAllowed"), input.minGapMs == 0}};
+    // Reads wait after each connection opens: whole seconds, the node's unit.
+    const bool delayOnStart = input.warmUpMs > 0 && !e.isSerial();
     flow.append(c);
 
     int y = 60;
@@ -199,8 +208,8 @@ QString NodeRedWriter::write(const MapExportInput &input)
                                 {QStringLiteral("quantity"), QString::number(b.quantity)},
                                 {QStringLiteral("rate"), QString::number(input.intervalMs)},
                                 {QStringLiteral("rateUnit"), QStringLiteral("ms")},
-                                {QStringLiteral("delayOnStart"), false},
-                                {QStringLiteral("startDelayTime"), QString()},
+                                {QStringLiteral("delayOnStart"), delayOnStart},
+                                {QStringLiteral("startDelayTime"), delayOnStart ? QString::number((input.warmUpMs + 999) / 1000) : QString()},
                                 {QStringLiteral("server"), client},
                                 {QStringLiteral("useIOFile"), false},
                                 {QStringLiteral("ioFile"), QString()},

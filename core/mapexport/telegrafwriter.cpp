@@ -82,20 +82,24 @@ QString TelegrafWriter::write(const MapExportInput &input)
     }
     out += QStringLiteral("  configuration_type = \"request\"\n");
 
-    // One request per unit, table and byte order, in the order of the points.
+    // One request per block and byte order, in the order of the points: Telegraf groups the fields
+    // of one request into reads of up to 125 registers (2000 bits) of its own, never those of two
+    // requests, so a block (within the device's limits.maxQuantity) is never read in a larger one.
     struct Key {
-        quint8 unit;
-        SimTable table;
+        qsizetype block;
         QString order;
-        bool operator<(const Key &o) const
-        {
-            return std::tie(unit, table, order) < std::tie(o.unit, o.table, o.order);
-        }
+        bool operator<(const Key &o) const { return std::tie(block, order) < std::tie(o.block, o.order); }
     };
+    QList<qsizetype> blockOf(input.points.size(), 0);
+    for (qsizetype b = 0; b < input.blocks.size(); ++b) {
+        for (qsizetype i : input.blocks.at(b).points)
+            blockOf[i] = b;
+    }
     QList<Key> order;
     QMap<Key, QStringList> fields;
-    for (const MapPoint &p : input.points) {
-        const Key k{p.unitId, p.table, byteOrder(p)};
+    for (qsizetype i = 0; i < input.points.size(); ++i) {
+        const MapPoint &p = input.points.at(i);
+        const Key k{blockOf.at(i), byteOrder(p)};
         if (!fields.contains(k))
             order.append(k);
         QString f = QStringLiteral("{ address=%1, name=%2").arg(p.address).arg(tomlString(p.name));
@@ -114,14 +118,24 @@ QString TelegrafWriter::write(const MapExportInput &input)
         fields[k].append(f);
     }
     for (const Key &k : order) {
+        const MapPoint &first = input.points.at(input.blocks.at(k.block).points.constFirst());
         out += QStringLiteral("\n  [[inputs.modbus.request]]\n");
-        out += QStringLiteral("    slave_id = %1\n").arg(int(k.unit));
+        out += QStringLiteral("    slave_id = %1\n").arg(int(first.unitId));
         out += QStringLiteral("    byte_order = \"%1\"\n").arg(k.order);
-        out += QStringLiteral("    register = \"%1\"\n").arg(registerName(k.table));
+        out += QStringLiteral("    register = \"%1\"\n").arg(registerName(first.table));
         out += QStringLiteral("    fields = [\n");
         for (const QString &f : fields.value(k))
             out += QStringLiteral("      ") + f + QLatin1Char('\n');
         out += QStringLiteral("    ]\n");
+    }
+    // The device's pace (profile limits): a pause between requests and after a connection opens
+    // (Telegraf 1.25 and later for the second).
+    if (input.minGapMs > 0 || input.warmUpMs > 0) {
+        out += QStringLiteral("\n  [inputs.modbus.workarounds]\n");
+        if (input.minGapMs > 0)
+            out += QStringLiteral("    pause_between_requests = \"%1ms\"\n").arg(input.minGapMs);
+        if (input.warmUpMs > 0)
+            out += QStringLiteral("    pause_after_connect = \"%1ms\"\n").arg(input.warmUpMs);
     }
     return out;
 }

@@ -13,4 +13,16 @@ QString DeviceLimits::unknownUnitName(UnknownUnit policy)
     return QStringLiteral("auto");
 }
 
+QString DeviceLimits::functionKey(int code)
+{
+    return QStringLiteral("0x%1").arg(code, 2, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x"));
+}
+
+std::optional<int> DeviceLimits::parseFunctionKey(const QString &key)
+{
+    bool ok = false;
+    const int code = key.startsWith(QLatin1String("0x"), Qt::CaseInsensitive) ? key.mid(2).toInt(&ok, 16) : key.toInt(&ok, 10);
+    return ok ? std::optional<int>(code) : std::nullopt;
+}
+
 } // namespace mbscope

@@ -34,6 +34,10 @@ struct DeviceLimits {
 
     [[nodiscard]] bool limitsRequests() const { return minGapMs > 0 || !maxQuantity.isEmpty() || warmUpMs > 0; }
     [[nodiscard]] static QString unknownUnitName(UnknownUnit policy); // "first", "exception", "silent", "auto"
+    // A function code as a "maxQuantity" key: "0x03", "0x0F". And back: hex text ("0x03", "0X0f")
+    // or decimal ("3"); nullopt for anything else.
+    [[nodiscard]] static QString functionKey(int code);
+    [[nodiscard]] static std::optional<int> parseFunctionKey(const QString &key);
 
     friend bool operator==(const DeviceLimits &, const DeviceLimits &) = default;
 };

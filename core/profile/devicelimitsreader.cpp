@@ -43,15 +43,13 @@ void readMaxQuantity(JsonReader &reader, const QJsonObject &limits, const QStrin
     const QString at = JsonReader::member(path, "maxQuantity");
     for (auto it = o->begin(); it != o->end(); ++it) {
         const QString keyAt = JsonReader::member(at, it.key());
-        bool ok = false;
         const QString key = it.key();
-        const int function = key.startsWith(QLatin1String("0x"), Qt::CaseInsensitive) ? key.mid(2).toInt(&ok, 16)
-                                                                                        : key.toInt(&ok, 10);
-        const int spec = ok ? QuantityLimits::maxQuantity(quint8(function)) : 0;
-        if (!ok || function < 1 || function > 255) {
+        const int function = DeviceLimits::parseFunctionKey(key).value_or(0);
+        if (function < 1 || function > 255) {
             reader.error(keyAt, QStringLiteral("'%1' is not a function code: expected hex text such as \"0x03\"").arg(key));
             continue;
         }
+        const int spec = QuantityLimits::maxQuantity(quint8(function));
         if (spec == 0) {
             reader.error(keyAt, QStringLiteral("function %1 has no quantity to limit: expected one of 0x01, 0x02, 0x03, "
                                                "0x04, 0x0F, 0x10, 0x17")

@@ -256,7 +256,11 @@ private slots:
         QVERIFY(r.out.isEmpty());
     }
 
-    // The exported flow, run by Node-RED against the simulator, reads every value as mbscope does.
+    // The exported flow, run by Node-RED against the simulator, reads every value as mbscope does,
+    // from a device that needs its pace kept (the profile's limits, served by the simulator): 40 ms
+    // between requests (exception 06 otherwise) and 600 ms after a connection opens (requests
+    // ignored before). A flow that did not keep it would read nothing: its four reads go out
+    // together, and its first 300 ms after connecting.
     void nodeRedReadsWhatTheSimulatorServes()
     {
         const QString nodered = nodeRedDir();
@@ -265,12 +269,25 @@ private slots:
         const QString node = QStandardPaths::findExecutable(QStringLiteral("node"));
         if (node.isEmpty())
             QSKIP("node is not installed");
+        QByteArray paced(kProfile);
+        paced.replace(R"({"name": "map-test",)", R"({"name": "map-test", "limits": {"minGapMs": 40, "tooSoon": "busy", "warmUpMs": 600},)");
+        const QString pacedProfile = m_dir.filePath(QStringLiteral("map-test-paced.json"));
+        {
+            QFile f(pacedProfile);
+            QVERIFY(f.open(QIODevice::WriteOnly) && f.write(paced) == paced.size());
+        }
+        Background device;
+        QString error;
+        QVERIFY2(device.start({QStringLiteral("simulate"), QStringLiteral("--profile"), pacedProfile, QStringLiteral("--listen"),
+                               QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                              &error),
+                 qPrintable(error));
 
         // The flow, its debug nodes turned into file nodes that write each message's payload.
         const QString flowPath = m_dir.filePath(QStringLiteral("flow.json"));
         QFile::remove(flowPath);
-        const CliResult exported = runMbscope({QStringLiteral("export-map"), m_profile, QStringLiteral("--to"), QStringLiteral("nodered"),
-                                               QStringLiteral("--endpoint"), m_sim.url(), QStringLiteral("--interval"),
+        const CliResult exported = runMbscope({QStringLiteral("export-map"), pacedProfile, QStringLiteral("--to"), QStringLiteral("nodered"),
+                                               QStringLiteral("--endpoint"), device.url(), QStringLiteral("--interval"),
                                                QStringLiteral("300ms"), QStringLiteral("-o"), flowPath});
         QVERIFY2(exported.finished && exported.exitCode == 0, exported.describe());
         QFile flowFile(flowPath);

@@ -158,9 +158,11 @@ bool ExportMapDialog::exportMap()
     }
     const DeviceProfile &profile = loaded.profile;
     const auto format = MapExportFormat(m_format->currentData().toInt());
-    MapExportInput input;
-    input.name = profile.name;
-    input.source = profile.source;
+    MapExportInput input = MapExportInput::fromProfile(profile);
+    if (input.points.isEmpty()) {
+        problem(tr("%1 has no table entries to export.").arg(profile.source));
+        return false;
+    }
     input.intervalMs = m_interval->value();
     if (const QString text = m_endpoint->text().trimmed(); !text.isEmpty()) {
         const LinkUrl::Result parsed = LinkUrl::parse(text);
@@ -176,12 +178,6 @@ bool ExportMapDialog::exportMap()
         problem(tr("Endpoint %1: %2").arg(input.endpoint.toString(), why));
         return false;
     }
-    input.points = MapPoint::fromProfile(profile);
-    if (input.points.isEmpty()) {
-        problem(tr("%1 has no table entries to export.").arg(profile.source));
-        return false;
-    }
-    input.blocks = ExportBlock::group(input.points, &profile.limits);
     const QString path = m_output->text().trimmed();
     if (path.isEmpty()) {
         problem(tr("Choose the output file."));

@@ -56,12 +56,8 @@ DeviceProfile testProfile()
 MapExportInput testInput()
 {
     const DeviceProfile profile = testProfile();
-    MapExportInput input;
-    input.name = profile.name;
-    input.source = profile.source;
+    MapExportInput input = MapExportInput::fromProfile(profile);
     input.endpoint = *LinkUrl::parse(u"tcp://127.0.0.1:5020").url;
-    input.points = MapPoint::fromProfile(profile);
-    input.blocks = ExportBlock::group(input.points, &profile.limits);
     return input;
 }
 
@@ -357,6 +353,79 @@ private slots:
         QVERIFY2(error.isEmpty(), qPrintable(error));
         const QJsonValue root = doc.isArray() ? QJsonValue(doc.array()) : QJsonValue(doc.object());
         QCOMPARE(text(at(root, path)), expected);
+    }
+
+    // The device's limits reach each tool's settings for them: the gap between requests, the
+    // pause after a connection opens, the largest read (a Telegraf request per block).
+    void paceHonoured_data()
+    {
+        QTest::addColumn<int>("format");
+        QTest::addColumn<QString>("url");
+        QTest::addColumn<bool>("limited");
+        QTest::addColumn<QString>("path");
+        QTest::addColumn<QString>("expected");
+        using F = MapExportFormat;
+        const QString tcp = QStringLiteral("tcp://127.0.0.1:5020");
+        const QString serial = QStringLiteral("rtu:///dev/ttyUSB0?baud=19200&parity=N");
+        auto row = [](const char *name, F f, const QString &url, bool limited, const char *path, const char *expected) {
+            QTest::newRow(name) << int(f) << url << limited << QString::fromLatin1(path) << QString::fromLatin1(expected);
+        };
+        row("telegraf gap", F::Telegraf, tcp, true, "inputs.modbus[0].workarounds.pause_between_requests", "41ms");
+        row("telegraf warm-up", F::Telegraf, tcp, true, "inputs.modbus[0].workarounds.pause_after_connect", "1500ms");
+        row("telegraf none", F::Telegraf, tcp, false, "inputs.modbus[0].workarounds", "(absent)");
+        // input 0-25 in reads of 8 at most: a request per block and order (unlimited, [5] is holding)
+        row("telegraf largest read", F::Telegraf, tcp, true, "inputs.modbus[0].request[5].fields[0].name", "big");
+        row("telegraf largest read, last", F::Telegraf, tcp, true, "inputs.modbus[0].request[7].fields[0].name", "swapped");
+        row("home assistant gap", F::HomeAssistant, tcp, true, "modbus[0].message_wait_milliseconds", "41");
+        row("home assistant warm-up", F::HomeAssistant, tcp, true, "modbus[0].delay", "2");
+        row("home assistant none", F::HomeAssistant, tcp, false, "modbus[0].delay", "(absent)");
+        row("node-red gap", F::NodeRed, tcp, true, "[1].commandDelay", "41");
+        row("node-red units in turn", F::NodeRed, tcp, true, "[1].parallelUnitIdsAllowed", "false");
+        row("node-red warm-up", F::NodeRed, tcp, true, "[2].delayOnStart", "true");
+        row("node-red warm-up seconds", F::NodeRed, tcp, true, "[2].startDelayTime", "2");
+        row("node-red serial warm-up", F::NodeRed, serial, true, "[1].serialConnectionDelay", "1500");
+        row("node-red serial no delay on start", F::NodeRed, serial, true, "[2].delayOnStart", "false");
+        row("node-red none", F::NodeRed, tcp, false, "[1].commandDelay", "1");
+        row("node-red none, no delay", F::NodeRed, tcp, false, "[2].delayOnStart", "false");
+        row("node-red largest read", F::NodeRed, tcp, true, "[5].quantity", "7");
+    }
+
+    void paceHonoured()
+    {
+        QFETCH(int, format);
+        QFETCH(QString, url);
+        QFETCH(bool, limited);
+        QFETCH(QString, path);
+        QFETCH(QString, expected);
+        DeviceProfile profile = testProfile();
+        if (limited) {
+            profile.limits.minGapMs = 40.5;
+            profile.limits.warmUpMs = 1500;
+            profile.limits.maxQuantity.insert(0x04, 8);
+        }
+        MapExportInput input = MapExportInput::fromProfile(profile);
+        input.endpoint = *LinkUrl::parse(url).url;
+        const QString written = MapExporter::write(MapExportFormat(format), input);
+        QString error;
+        const QJsonDocument doc = parsed(MapExportFormat(format), written, &error);
+        QVERIFY2(error.isEmpty(), qPrintable(error + QLatin1Char('\n') + written));
+        const QJsonValue root = doc.isArray() ? QJsonValue(doc.array()) : QJsonValue(doc.object());
+        QVERIFY2(text(at(root, path)) == expected, qPrintable(text(at(root, path)) + QStringLiteral(" != ") + expected + QLatin1Char('\n') + written));
+    }
+
+    // modbus_exporter has no setting for the pace: the module says what the device needs.
+    void paceSaidWhereNoSetting()
+    {
+        DeviceProfile profile = testProfile();
+        profile.limits.minGapMs = 40.5;
+        profile.limits.warmUpMs = 1500;
+        MapExportInput input = MapExportInput::fromProfile(profile);
+        input.endpoint = *LinkUrl::parse(u"tcp://127.0.0.1:5020").url;
+        const QString written = MapExporter::write(MapExportFormat::ModbusExporter, input);
+        QVERIFY2(written.contains(QLatin1String("# The device needs 41 ms between requests and 1500 ms after a connection opens: "
+                                                "modbus_exporter has no setting for either.")),
+                 qPrintable(written));
+        QVERIFY(!MapExporter::write(MapExportFormat::ModbusExporter, testInput()).contains(QLatin1String("The device needs")));
     }
 
     void unsupportedEndpoints()
