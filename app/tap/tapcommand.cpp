@@ -123,13 +123,15 @@ int runTap(const QStringList &arguments)
     const QCommandLineOption routeOption(QStringLiteral("route"),
                                          QStringLiteral("Units to a device (repeatable; the first route that serves a unit takes it): "
                                                         "UNITS[:DEVICE_UNIT]=URL, e.g. 1-10=rtu:///dev/ttyUSB0 or 1:17=tcp://10.0.0.5:502 "
-                                                        "(the master's unit 1 is the device's unit 17). A route's URL may give timeout=."),
+                                                        "(the master's unit 1 is the device's unit 17). A route's URL may give timeout= and retries= "
+                                                        "(this route's response timeout and further attempts of a read)."),
                                          QStringLiteral("ROUTE"));
     const QCommandLineOption timeoutOption(QStringLiteral("timeout"),
                                            QStringLiteral("Response timeout of a forwarded request (default 1s), unless its route's URL gives timeout=."),
                                            QStringLiteral("TIME"));
     const QCommandLineOption retriesOption(QStringLiteral("retries"),
-                                           QStringLiteral("Further attempts of a read after a timeout or a damaged answer (default 0); a write is sent once, as its master sent it."), QStringLiteral("N"));
+                                           QStringLiteral("Further attempts of a read after a timeout or a damaged answer (default 0), unless its route's "
+                                                          "URL gives retries=; a write is sent once, as its master sent it."), QStringLiteral("N"));
     const QCommandLineOption noAnswerOption(QStringLiteral("no-answer"),
                                             QStringLiteral("What a master gets when its device does not answer (exception 0B) or no route serves "
                                                            "its unit (exception 0A): auto (exceptions to Modbus/TCP and UDP masters, silence to "
@@ -197,14 +199,12 @@ int runTap(const QStringList &arguments)
         settings.routes.append(*route.route);
     }
     if (parser.isSet(targetOption)) {
-        const LinkUrl::Result url = LinkUrl::parse(parser.value(targetOption));
-        if (!url.url) {
-            err << "mbscope tap: --target " << url.error << '\n';
+        const TapRoute::Result every = TapRoute::parseTarget(parser.value(targetOption));
+        if (!every.route) {
+            err << "mbscope tap: --target " << every.error << '\n';
             return kExitUsage;
         }
-        TapRoute every;
-        every.target = *url.url;
-        settings.routes.append(every); // after the routes: they take their units first
+        settings.routes.append(*every.route); // after the routes: they take their units first
     }
     if (settings.routes.isEmpty()) {
         err << "mbscope tap: --target URL or --route UNITS=URL is required (where the requests go, e.g. --target "

@@ -132,7 +132,7 @@ void TapForwarder::forward(const Request &request, Done done)
     // A write goes once, as its master sent it: a retry after a timeout could apply it twice
     // (the device may have acted and only its answer got lost). Reads are retried.
     const bool write = RecordedWrite::of(0, request.unitId, request.pdu).has_value();
-    item.retries = write ? 0 : m_settings.retries;
+    item.retries = write ? 0 : route->retries >= 0 ? route->retries : m_settings.retries;
     Waiting waiting;
     waiting.done = std::move(done);
     waiting.masterFraming = request.framing;

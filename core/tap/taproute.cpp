@@ -1,5 +1,7 @@
 #include "taproute.h"
 
+#include <QtCore/QStringList>
+
 namespace mbscope {
 
 namespace {
@@ -18,6 +20,33 @@ std::optional<int> unitNumber(QStringView text, QString *error)
         return std::nullopt;
     }
     return value;
+}
+
+// Takes retries=N off a URL's query (0-100); the URL without it. *error set when N is no count.
+QString takeRetries(QStringView url, int *retries, QString *error)
+{
+    const qsizetype question = url.indexOf(QLatin1Char('?'));
+    if (question < 0)
+        return url.toString();
+    QStringList kept;
+    for (const QStringView part : url.sliced(question + 1).split(QLatin1Char('&'))) {
+        if (!part.startsWith(QLatin1String("retries="))) {
+            kept.append(part.toString());
+            continue;
+        }
+        bool ok = false;
+        const int n = part.sliced(8).toInt(&ok, 10);
+        if (!ok || n < 0 || n > 100) {
+            *error = QStringLiteral("retries '%1' is not a count from 0 to 100 (the further attempts of a read on this route)")
+                         .arg(part.sliced(8));
+            return {};
+        }
+        *retries = n;
+    }
+    QString rest = url.first(question).toString();
+    if (!kept.isEmpty())
+        rest += QLatin1Char('?') + kept.join(QLatin1Char('&'));
+    return rest;
 }
 
 } // namespace
@@ -40,7 +69,32 @@ QString TapRoute::describe() const
         units += firstUnit == lastUnit ? QStringLiteral(" as %1").arg(deviceUnit)
                                        : QStringLiteral(" as %1-%2").arg(deviceUnit).arg(deviceUnit + lastUnit - firstUnit);
     }
-    return units + QStringLiteral(" -> ") + target.toString();
+    return units + QStringLiteral(" -> ") + target.toString()
+         + (retries >= 0 ? QStringLiteral(" (retries %1)").arg(retries) : QString());
+}
+
+TapRoute::Result TapRoute::parseTarget(QStringView url)
+{
+    Result result;
+    TapRoute route;
+    QString error;
+    const QString rest = takeRetries(url.trimmed(), &route.retries, &error);
+    if (!error.isEmpty()) {
+        result.error = error;
+        return result;
+    }
+    const LinkUrl::Result parsed = LinkUrl::parse(rest);
+    if (!parsed.url) {
+        result.error = parsed.error;
+        return result;
+    }
+    route.target = *parsed.url;
+    if (route.target.delimited.enabled) {
+        result.error = QStringLiteral("the tap forwards Modbus; framing=delimited has no unit ids to route");
+        return result;
+    }
+    result.route = route;
+    return result;
 }
 
 TapRoute::Result TapRoute::parse(QStringView text)
@@ -77,12 +131,11 @@ TapRoute::Result TapRoute::parse(QStringView text)
     route.lastUnit = *last;
     if (route.deviceUnit >= 0 && route.deviceUnit + (route.lastUnit - route.firstUnit) > 255)
         return fail(QStringLiteral("units %1-%2 renumbered from %3 run past 255").arg(*first).arg(*last).arg(route.deviceUnit));
-    const LinkUrl::Result parsed = LinkUrl::parse(url);
-    if (!parsed.url)
-        return fail(parsed.error);
-    route.target = *parsed.url;
-    if (route.target.delimited.enabled)
-        return fail(QStringLiteral("the tap forwards Modbus; framing=delimited has no unit ids to route"));
+    const Result target = parseTarget(url);
+    if (!target.route)
+        return fail(target.error);
+    route.target = target.route->target;
+    route.retries = target.route->retries;
     result.route = route;
     return result;
 }

@@ -21,12 +21,18 @@ namespace mbscope {
 //     1:17=rtu-tcp://10.0.0.5:4001     master asks unit 1, the device behind the server is unit 17
 //     10-19=rtu:///dev/ttyUSB0?baud=19200&parity=N
 //
-// The target URL's timeout= option is the response timeout of this route's requests.
+// The target URL's timeout= option is the response timeout of this route's requests, and
+// retries=N (the tap's own, taken off the URL before the link reads it) the further attempts of a
+// read on this route (a unit behind a flaky radio link gets 3, an absent one 0 so that it does
+// not hold the line for the others):
+//
+//     5=rtu:///dev/ttyUSB0?baud=9600&timeout=300ms&retries=3
 struct TapRoute {
     int firstUnit = 0;
     int lastUnit = 255;
     int deviceUnit = -1; // -1: ids are sent as they came
     LinkUrl target;
+    int retries = -1;    // -1: the tap's (TapSettings::retries)
 
     [[nodiscard]] bool serves(int unit) const { return unit >= firstUnit && unit <= lastUnit; }
     [[nodiscard]] bool renumbers() const { return deviceUnit >= 0 && deviceUnit != firstUnit; }
@@ -37,6 +43,8 @@ struct TapRoute {
 
     struct Result;
     [[nodiscard]] static Result parse(QStringView text);
+    // A target URL that may give retries=N: the route to every unit (`--target URL`).
+    [[nodiscard]] static Result parseTarget(QStringView url);
 };
 
 struct TapRoute::Result {

@@ -73,6 +73,7 @@ private Q_SLOTS:
     void writesPassWhenNotReadOnly();
     void faultsOnTheWay();
     void retriesReadsNeverWrites();
+    void retriesPerRoute();
     void recordsBothLegs();
     void mbpollThroughTheTap();
     void pymodbusBehindTheTap();
@@ -350,6 +351,51 @@ void TestCliTap::retriesReadsNeverWrites()
     QVERIFY2(device.count(QLatin1String("06 Write Single Register")) == 1, qPrintable(device));
 }
 
+// A route's URL gives its own retries: the master's unit 5 reaches the device's 17 with none
+// (an absent unit must not hold the line), unit 17 straight through with the tap's 2.
+void TestCliTap::retriesPerRoute()
+{
+    const QString faults = m_dir.filePath(QStringLiteral("drops04.json"));
+    QFile file(faults);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"seed": 1, "rules": [{"kind": "drop", "functions": ["0x04"]}]})");
+    file.close();
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("libmodbus-unit-test"), QStringLiteral("--listen"),
+                        QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--faults"), faults},
+                       &error),
+             qPrintable(error));
+    Background tap;
+    QVERIFY2(startTap(tap, {QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--route"),
+                            QStringLiteral("5:17=%1?retries=0").arg(sim.url()), QStringLiteral("--target"), sim.url(),
+                            QStringLiteral("--timeout"), QStringLiteral("100ms"), QStringLiteral("--retries"), QStringLiteral("2")},
+                      &error),
+             qPrintable(error));
+    QCOMPARE(sendPdu(tap.url(), 5, QStringLiteral("04 01 08 00 01"), {QStringLiteral("--timeout"), QStringLiteral("2s")}).status,
+             QStringLiteral("exception"));
+    const QString lines = QString::fromUtf8(tap.stop());
+    QVERIFY2(lines.contains(QLatin1String("(retries 0)")), qPrintable(lines));
+    QString device = QString::fromUtf8(sim.stop());
+    QVERIFY2(device.count(QLatin1String("04 Read Input Registers")) == 1, qPrintable(device));
+
+    // The same device through the route to every unit: the tap's retries.
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("libmodbus-unit-test"), QStringLiteral("--listen"),
+                        QStringLiteral("rtu-tcp://127.0.0.1:0"), QStringLiteral("--faults"), faults},
+                       &error),
+             qPrintable(error));
+    QVERIFY2(startTap(tap, {QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--route"),
+                            QStringLiteral("5:17=%1?retries=0").arg(sim.url()), QStringLiteral("--target"), sim.url(),
+                            QStringLiteral("--timeout"), QStringLiteral("100ms"), QStringLiteral("--retries"), QStringLiteral("2")},
+                      &error),
+             qPrintable(error));
+    QCOMPARE(sendPdu(tap.url(), 17, QStringLiteral("04 01 08 00 01"), {QStringLiteral("--timeout"), QStringLiteral("2s")}).status,
+             QStringLiteral("exception"));
+    tap.stop();
+    device = QString::fromUtf8(sim.stop());
+    QVERIFY2(device.count(QLatin1String("04 Read Input Registers")) == 3, qPrintable(device));
+}
+
 void TestCliTap::recordsBothLegs()
 {
     const QString journal = m_dir.filePath(QStringLiteral("tap.mbj"));
@@ -473,6 +519,12 @@ void TestCliTap::badOptions_data()
     QTest::newRow("renumbered past 255") << QStringList{QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--route"),
                                                         QStringLiteral("1-10:250=tcp://127.0.0.1:502")}
                                          << QStringLiteral("run past 255");
+    QTest::newRow("bad route retries") << QStringList{QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--route"),
+                                                      QStringLiteral("1=tcp://127.0.0.1:502?timeout=1s&retries=many")}
+                                       << QStringLiteral("retries 'many' is not a count from 0 to 100");
+    QTest::newRow("target retries above 100") << QStringList{QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--target"),
+                                                             QStringLiteral("tcp://127.0.0.1:502?retries=101")}
+                                              << QStringLiteral("--target retries '101' is not a count from 0 to 100");
     QTest::newRow("bad target url") << QStringList{QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--target"),
                                                    QStringLiteral("tcp://127.0.0.1:99999")}
                                     << QStringLiteral("--target ");
