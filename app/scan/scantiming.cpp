@@ -36,6 +36,13 @@ QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
              .arg(r.largestQuantity)
              .arg(s.address)
              .arg(r.largestAnswerPdu);
+    if (r.gapReconnects >= 0 && r.gapAnswered >= 3)
+        t += QStringLiteral("connection after each answer    %1\n")
+                 .arg(r.closesAfterAnswer() ? QStringLiteral("closed by the device (%1 connections for %2 answers): pipelining and "
+                                                             "clients at once not measured")
+                                                  .arg(r.gapReconnects)
+                                                  .arg(r.gapAnswered)
+                                            : QStringLiteral("kept open"));
     if (r.pipelineSent > 0)
         t += QStringLiteral("pipelined requests              %1 of %2 answered%3\n")
                  .arg(r.pipelineOk)
@@ -83,6 +90,8 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
         {QStringLiteral("shortest_clean_gap_ms"), r.shortestCleanGapMs},
         {QStringLiteral("largest_quantity"), r.largestQuantity},
         {QStringLiteral("largest_answer_pdu"), r.largestAnswerPdu},
+        {QStringLiteral("closes_after_answer"), r.gapReconnects >= 0 && r.gapAnswered >= 3 ? QJsonValue(r.closesAfterAnswer())
+                                                                                             : QJsonValue(QJsonValue::Null)},
         {QStringLiteral("pipeline_sent"), r.pipelineSent},
         {QStringLiteral("pipeline_ok"), r.pipelineOk},
         {QStringLiteral("clients_tried"), r.clientsTried},

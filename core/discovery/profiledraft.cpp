@@ -100,7 +100,8 @@ QString ProfileDraft::describeLimits(const QJsonObject &limits)
         } else if (it.value().isNull()) {
             none.append(it.key());
         } else {
-            found.append(QStringLiteral("%1 %2").arg(it.key(), it.value().isString() ? it.value().toString() : number(it.value())));
+            found.append(it.value().isBool() ? it.key()
+                                             : QStringLiteral("%1 %2").arg(it.key(), it.value().isString() ? it.value().toString() : number(it.value())));
         }
     }
     QString text = found.join(QStringLiteral(", "));

@@ -80,6 +80,8 @@ QJsonObject TimingReport::profileLimits(quint8 function) const
     else if (shortestCleanGapMs == 0)
         limits.insert(QStringLiteral("minGapMs"), QJsonValue::Null);
     limits.insert(QStringLiteral("warmUpMs"), warmupFailures > 0 ? QJsonValue(double(firstAnswerMs)) : QJsonValue(QJsonValue::Null));
+    if (gapReconnects >= 0 && gapAnswered >= 3)
+        limits.insert(QStringLiteral("closesAfterAnswer"), closesAfterAnswer() ? QJsonValue(true) : QJsonValue(QJsonValue::Null));
     if (clientsTried > 0 && clientsServed > 0 && clientsServed < clientsTried) {
         limits.insert(QStringLiteral("maxClients"), clientsServed);
         limits.insert(QStringLiteral("extraClients"), oldestDropped ? QStringLiteral("dropOldest") : QStringLiteral("refuse"));
@@ -100,6 +102,7 @@ TimingScanner::TimingScanner(QObject *parent)
         if (m_framesPublished)
             Q_EMIT framesLogged(frames, link);
     });
+    connect(m_channel, &ProbeChannel::linkOpened, this, [this] { ++m_opens; });
 }
 
 QByteArray TimingScanner::readPdu(int quantity) const
@@ -260,9 +263,15 @@ std::optional<TimingReport> TimingScanner::run(const TimingScanSettings &setting
             largestRead(report);
         // The probe channel's connection would count among the clients: the rest opens its own.
         m_channel->closeLink();
-        if (m_end == JobEnd::Completed)
+        // A device that hangs up after each answer serves no burst and keeps no client: not
+        // measured (they would read as limits it does not have).
+        if (report.closesAfterAnswer() && m_end == JobEnd::Completed) {
+            Q_EMIT step(QStringLiteral("the device closes the connection after each answer: pipelining and clients at once not measured"));
+            endPart(Clients);
+        }
+        if (m_end == JobEnd::Completed && !report.closesAfterAnswer())
             pipelining(report);
-        if (m_end == JobEnd::Completed)
+        if (m_end == JobEnd::Completed && !report.closesAfterAnswer())
             clients(report);
     }
     m_channel->closeLink();
@@ -301,6 +310,13 @@ void TimingScanner::warmup(TimingReport &report)
 void TimingScanner::gaps(TimingReport &report)
 {
     beginPart(Gaps, QStringLiteral("gap %1 ms").arg(m_settings.gapsMs.constFirst()));
+    // On a connection, how often the channel had to connect again for them (however this ends).
+    const bool stream = !m_settings.url.isSerial() && !m_settings.url.isDatagram();
+    const int opensBefore = m_opens;
+    const auto reconnects = qScopeGuard([&] {
+        if (stream)
+            report.gapReconnects = m_opens - opensBefore;
+    });
     for (const int gap : m_settings.gapsMs) {
         if (!mayContinue(gap + m_settings.timeoutMs))
             return;
@@ -318,6 +334,7 @@ void TimingScanner::gaps(TimingReport &report)
             }
             if (served(a->transaction)) {
                 ++trial.ok;
+                ++report.gapAnswered;
                 trial.maxLatencyUs = qMax(trial.maxLatencyUs, a->transaction.latencyNs() / 1000);
             } else {
                 ++trial.failed;

@@ -55,6 +55,17 @@ struct TimingReport {
     int largestQuantity = 0;     // the largest read quantity answered at address
     int largestAnswerPdu = 0;    // its answer's PDU size in bytes
     bool largestFound = false;   // largestQuantity is the specification's, or one more was refused (not cut short)
+    // Stream links: the answers of the gap trials, and the connections the channel had to open
+    // again for their requests (0 when the device keeps the connection; one an answer when it
+    // hangs up after each).
+    int gapAnswered = 0;
+    int gapReconnects = -1;      // -1: not measured (serial lines, datagrams)
+
+    // The device closed the connection after every answer of the gap trials (three at least;
+    // the first request may have found the warm-up's connection still open; a request that
+    // failed may or may not have needed one). Pipelining and clients at once cannot be measured
+    // then: those parts are skipped.
+    [[nodiscard]] bool closesAfterAnswer() const { return gapReconnects >= 0 && gapAnswered >= 3 && gapReconnects >= gapAnswered - 1; }
 
     [[nodiscard]] int recommendedGapMs() const;
     [[nodiscard]] int recommendedTimeoutMs() const;
@@ -63,8 +74,9 @@ struct TimingReport {
     // when a shorter one had errors (null when 0 ms was clean), warmUpMs the first answer's time
     // when requests failed before it (null when the first was answered), maxClients (and
     // extraClients) when a client beyond them was not served alongside, maxQuantity of function
-    // the largest read (null when the specification's was answered). What was not measured is
-    // left out; a null says the device showed no such limit.
+    // the largest read (null when the specification's was answered), closesAfterAnswer (null when
+    // the connection stayed open). What was not measured is left out; a null says the device
+    // showed no such limit.
     [[nodiscard]] QJsonObject profileLimits(quint8 function) const;
 };
 
@@ -138,6 +150,7 @@ private:
     QElapsedTimer m_clock;
     bool m_stopRequested = false;
     JobEnd m_end = JobEnd::Completed;
+    int m_opens = 0; // the channel's link openings
     int m_partStart[PartCount + 1] = {};
     int m_done = 0;
     qint64 m_answeredMs = 0; // time of the measured requests beyond their gaps

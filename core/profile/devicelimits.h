@@ -30,6 +30,9 @@ struct DeviceLimits {
     ExtraClient extraClients = ExtraClient::Refuse;
     QMap<quint8, int> maxQuantity;          // function code -> most registers or bits per request
     double warmUpMs = 0;                    // requests this soon after a connection opens are ignored
+    // Stream endpoints (tcp, rtu-tcp, ascii-tcp, tls): the connection is closed after each answer,
+    // as some cheap devices and gateways do; the client connects again for the next request.
+    bool closesAfterAnswer = false;
     bool answersBroadcasts = false;         // "answersBroadcasts": serial lines answer unit 0 (a deviation)
 
     [[nodiscard]] bool limitsRequests() const { return minGapMs > 0 || !maxQuantity.isEmpty() || warmUpMs > 0; }

@@ -77,7 +77,7 @@ DeviceLimits DeviceLimitsReader::read(JsonReader &reader, const QJsonObject &roo
     if (!o)
         return limits;
     const QString path = QStringLiteral("limits");
-    reader.checkKeys(*o, path, {"minGapMs", "tooSoon", "maxClients", "extraClients", "maxQuantity", "warmUpMs"});
+    reader.checkKeys(*o, path, {"minGapMs", "tooSoon", "maxClients", "extraClients", "maxQuantity", "warmUpMs", "closesAfterAnswer"});
     limits.minGapMs = reader.number(*o, path, "minGapMs", 0, kMaxMs).value_or(0);
     static constexpr Choice<L::TooSoon> kTooSoon[] = {{"busy", L::TooSoon::Busy}, {"silent", L::TooSoon::Silent}};
     limits.tooSoon = readChoice(reader, *o, path, "tooSoon", kTooSoon, L::TooSoon::Busy);
@@ -92,6 +92,7 @@ DeviceLimits DeviceLimitsReader::read(JsonReader &reader, const QJsonObject &roo
                      QStringLiteral("'extraClients' needs 'maxClients' (how many clients are too many)"));
     readMaxQuantity(reader, *o, path, &limits);
     limits.warmUpMs = reader.number(*o, path, "warmUpMs", 0, kMaxMs).value_or(0);
+    limits.closesAfterAnswer = reader.boolean(*o, path, "closesAfterAnswer").value_or(false);
     return limits;
 }
 

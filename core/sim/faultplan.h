@@ -20,6 +20,7 @@ struct FaultPlan {
     bool closeAfter = false;      // close the connection after the last chunk
     QList<ResponseChunk> chunks;  // in order; empty when drop or closeBefore
     QStringList faults;           // the rules that fired (their names, else their kinds), for logs
+    QString closeReason;          // why it closes, for the log; empty: a fault rule
     // The id the Simulator logged the request with (Simulator::setTrafficLog), so that the
     // answer's frames carry it too and a journal pairs them; 0 when no traffic log is set.
     quint64 trafficId = 0;

@@ -84,7 +84,8 @@ SimConnection::SimConnection(Simulator *simulator, SimEndpoint *endpoint, QTcpSo
     connect(&m_idle, &QTimer::timeout, this, [this] {
         close(QStringLiteral("idle for %1 ms: closed").arg(m_endpoint->options().idleTimeoutMs));
     });
-    connect(&m_responder, &SimResponder::closeRequested, this, [this] { close(QStringLiteral("closed by a fault rule")); });
+    connect(&m_responder, &SimResponder::closeRequested, this,
+            [this](const QString &reason) { close(reason.isEmpty() ? QStringLiteral("closed by a fault rule") : reason); });
     if (m_endpoint->options().idleTimeoutMs > 0)
         m_idle.start(m_endpoint->options().idleTimeoutMs);
     // Bytes may have arrived with the connection (a TLS handshake followed by a request).

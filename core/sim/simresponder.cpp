@@ -82,11 +82,14 @@ void SimResponder::run()
         return; // a writer re-entered (a socket signal): the outer call carries on
     m_running = true;
     bool closing = false;
+    QString reason;
     qint64 now = monotonicNowNs();
     if (const qint64 due = nextDueNs(); due > now && due - now <= DueTimer::kEarlyWakeNs)
         now = DueTimer::spinUntil(due);
     for (int i = 0; i < m_pending.size() && !closing;) {
         if (advance(i, now, &closing)) {
+            if (closing)
+                reason = m_pending.at(i).plan.closeReason;
             m_pending.removeAt(i);
             continue;
         }
@@ -97,7 +100,7 @@ void SimResponder::run()
     m_running = false;
     if (closing) {
         clear();
-        Q_EMIT closeRequested();
+        Q_EMIT closeRequested(reason);
         return;
     }
     arm();

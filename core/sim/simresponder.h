@@ -42,7 +42,7 @@ public:
 
 Q_SIGNALS:
     // A plan said to close; the owner closes the output (the responder forgets what is pending).
-    void closeRequested();
+    void closeRequested(const QString &reason);
 
 private:
     struct Pending {

@@ -455,6 +455,12 @@ FaultPlan Simulator::handleFrame(SimEndpoint *endpoint, QByteArrayView adu, Fram
     } else {
         plan.chunks.append(ResponseChunk{answer, delayNs});
     }
+    // A device that hangs up after each answer (limits.closesAfterAnswer): on connections only.
+    if (m_limits.closesAfterAnswer && !plan.drop && !plan.closeBefore && !plan.closeAfter && !endpoint->url().isSerial()
+        && !endpoint->url().isDatagram()) {
+        plan.closeAfter = true;
+        plan.closeReason = QStringLiteral("closesAfterAnswer: the device hangs up after each answer");
+    }
     plan.trafficId = log(endpoint, peer, unitId, adu, answer, verdict, reply.note, plan.faults);
     noteFaultPlan(endpoint, plan);
     return plan;

@@ -1341,7 +1341,7 @@
         <translation>Profil yang mana? Berikan nama profil bawaan atau berkas JSON.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>Endpoint: %1</source>
         <translation>Titik ujung: %1</translation>
     </message>
@@ -1351,12 +1351,12 @@
         <translation>Titik ujung %1: %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-15"/>
         <source>%1 has no table entries to export.</source>
         <translation>%1 tidak punya entri tabel untuk diekspor.</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+20"/>
         <source>Choose the output file.</source>
         <translation>Pilih berkas keluaran.</translation>
     </message>
@@ -8193,14 +8193,14 @@ Klik kanan untuk mengganti format</translation>
         <location filename="../../ui/discovery/timingresulttree.cpp" line="+13"/>
         <location line="+47"/>
         <location line="+8"/>
-        <location line="+16"/>
+        <location line="+22"/>
         <location line="+1"/>
         <location line="+1"/>
         <source>%1 ms</source>
         <translation>%1 md</translation>
     </message>
     <message>
-        <location line="-55"/>
+        <location line="-61"/>
         <source>Measurement</source>
         <translation>Pengukuran</translation>
     </message>
@@ -8260,6 +8260,21 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>%1 at address %2 (an answer PDU of %3 bytes)</source>
         <translation>%1 di alamat %2 (PDU jawaban %3 bita)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Connection after each answer</source>
+        <translation>Koneksi setelah tiap jawaban</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>closed by the device (%1 connections for %2 answers): pipelining and clients at once not measured</source>
+        <translation>ditutup oleh perangkat (%1 koneksi untuk %2 jawaban): pipelining dan klien sekaligus tidak diukur</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>kept open</source>
+        <translation>tetap terbuka</translation>
     </message>
     <message>
         <location line="+2"/>

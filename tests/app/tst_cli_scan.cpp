@@ -163,6 +163,7 @@ private slots:
     void timingLimitsFound();
     void timingTellsDropOldestFromRefuse();
     void timingLimitsMergedIntoProfile();
+    void timingFindsAHangUp();
     void timingProgressOnATerminal();
     void timingBoundedAndStopped();
     void allIdsSaysWhatItAsked();
@@ -624,13 +625,50 @@ void TestCliScan::timingLimitsMergedIntoProfile()
                                         QStringLiteral("1"), QStringLiteral("--clients"), QStringLiteral("2"), QStringLiteral("--profile-out"),
                                         target});
     QVERIFY2(again.finished && again.exitCode == 0, again.describe());
-    QVERIFY2(again.errText().contains(QStringLiteral("mbscope scan: limits measured: no limit seen: maxQuantity 0x03, minGapMs, warmUpMs\n")),
+    QVERIFY2(again.errText().contains(QStringLiteral("mbscope scan: limits measured: no limit seen: closesAfterAnswer, maxQuantity 0x03, minGapMs, "
+                                                     "warmUpMs\n")),
              again.describe());
     QVERIFY(draft.open(QIODevice::ReadOnly));
     const QJsonObject after = QJsonDocument::fromJson(draft.readAll()).object().value(QStringLiteral("limits")).toObject();
     draft.close();
     QCOMPARE(QStringList(after.keys()), (QStringList{QStringLiteral("extraClients"), QStringLiteral("maxClients"), QStringLiteral("maxQuantity")}));
     QCOMPARE(after.value(QStringLiteral("maxQuantity")).toObject(), (QJsonObject{{QStringLiteral("0x04"), 8}}));
+}
+
+// A device that hangs up after each answer (limits.closesAfterAnswer): the timing scan says so,
+// records it, and does not take the clients it could not keep for a client limit (before, the
+// second client's recheck found the first reconnected and reported maxClients 1 dropOldest).
+void TestCliScan::timingFindsAHangUp()
+{
+    QFile device(m_dir.filePath(QStringLiteral("hangs-up.json")));
+    QVERIFY(device.open(QIODevice::WriteOnly));
+    device.write(R"({"name": "hangs-up", "limits": {"closesAfterAnswer": true},
+                      "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})");
+    device.close();
+    const QString target = m_dir.filePath(QStringLiteral("hangs-up-draft.json"));
+    QFile draft(target);
+    QVERIFY(draft.open(QIODevice::WriteOnly));
+    draft.write(R"({"name": "hangs-up-draft", "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})");
+    draft.close();
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), device.fileName(), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--timing"), QStringLiteral("1"),
+                                    QStringLiteral("--clients"), QStringLiteral("3"), QStringLiteral("--json"), QStringLiteral("--profile-out"), target});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("closes_after_answer")), QJsonValue(true));
+    QCOMPARE(o.value(QStringLiteral("clients_tried")).toInt(), 0);
+    QCOMPARE(o.value(QStringLiteral("pipeline_sent")).toInt(), 0);
+    QVERIFY2(r.errText().contains(QStringLiteral("mbscope scan: limits measured: closesAfterAnswer")), r.describe());
+    QVERIFY(draft.open(QIODevice::ReadOnly));
+    const QJsonObject limits = QJsonDocument::fromJson(draft.readAll()).object().value(QStringLiteral("limits")).toObject();
+    draft.close();
+    QCOMPARE(limits.value(QStringLiteral("closesAfterAnswer")), QJsonValue(true));
+    QVERIFY2(!limits.contains(QStringLiteral("maxClients")), qPrintable(QJsonDocument(limits).toJson()));
 }
 
 // Two clients at most, the third refused or served by knocking the first off: the timing scan
@@ -658,6 +696,7 @@ void TestCliScan::timingTellsDropOldestFromRefuse()
         QCOMPARE(o.value(QStringLiteral("clients_tried")).toInt(), 3);
         const bool drops = QByteArray(extra) == "dropOldest";
         QCOMPARE(o.value(QStringLiteral("clients_extra")).toString(), drops ? QStringLiteral("drop_oldest") : QStringLiteral("refuse"));
+        QCOMPARE(o.value(QStringLiteral("closes_after_answer")), QJsonValue(false));
         const CliResult text = runMbscope(args);
         QVERIFY2(text.finished && text.exitCode == 0, text.describe());
         QVERIFY2(text.outText().contains(drops ? QStringLiteral("TCP clients served at once      2 (client 3 was served by closing "
@@ -665,6 +704,7 @@ void TestCliScan::timingTellsDropOldestFromRefuse()
                                                                 "extraClients dropOldest)\n")
                                                : QStringLiteral("TCP clients served at once      2 (client 3 was not served)\n")),
                  text.out.constData());
+        QVERIFY2(text.outText().contains(QStringLiteral("connection after each answer    kept open\n")), text.out.constData());
     }
 }
 

@@ -69,6 +69,12 @@ void TimingResultTree::showReport(const TimingScanSettings &s, const TimingRepor
     if (r.largestQuantity > 0)
         row(root, tr("Largest read answered"),
             tr("%1 at address %2 (an answer PDU of %3 bytes)").arg(r.largestQuantity).arg(s.address).arg(r.largestAnswerPdu));
+    if (r.gapReconnects >= 0 && r.gapAnswered >= 3)
+        row(root, tr("Connection after each answer"),
+            r.closesAfterAnswer() ? tr("closed by the device (%1 connections for %2 answers): pipelining and clients at once not measured")
+                                        .arg(r.gapReconnects)
+                                        .arg(r.gapAnswered)
+                                  : tr("kept open"));
     if (r.pipelineSent > 0)
         row(root, tr("Pipelined requests"),
             r.pipelineOk == r.pipelineSent ? tr("%1 of %2 answered: pipelining works").arg(r.pipelineOk).arg(r.pipelineSent)

@@ -90,6 +90,7 @@ private Q_SLOTS:
     void maxQuantity();
     void warmUp();
     void dropOldestClient();
+    void closesAfterAnswer();
     void profileKeys();
 };
 
@@ -216,12 +217,40 @@ void TestSimDeviceLimits::dropOldestClient()
     QVERIFY(knocked);
 }
 
+// closesAfterAnswer: a connection is closed once each answer has left, with the reason in the
+// log; a datagram endpoint has no connection to close.
+void TestSimDeviceLimits::closesAfterAnswer()
+{
+    DeviceLimits limits;
+    limits.closesAfterAnswer = true;
+    m_sim->setLimits(limits);
+    SimEndpoint *endpoint = listen(QStringLiteral("tcp://127.0.0.1:0"));
+    QVERIFY(endpoint);
+    const FaultPlan plan = ask(endpoint, tcp(readHolding(2, 1), 1), kT0);
+    QCOMPARE(answerOf(plan), QStringLiteral("03 02 00 14"));
+    QVERIFY(plan.closeAfter);
+    QCOMPARE(plan.closeReason, QStringLiteral("closesAfterAnswer: the device hangs up after each answer"));
+    SimEndpoint *udp = listen(QStringLiteral("udp://127.0.0.1:0"));
+    QVERIFY(udp);
+    QVERIFY(!ask(udp, tcp(readHolding(2, 1), 1), kT0 + 10 * kMs).closeAfter);
+
+    // On a real connection: the answer arrives whole, then the connection ends.
+    StreamClient client(endpoint);
+    QVERIFY(client.waitConnected());
+    QCOMPARE(client.ask(tcp(readHolding(2, 1), 1, 7)), tcp(pduOf(ResponseBuilder::readHoldingRegisters({20})), 1, 7));
+    QVERIFY(client.waitDisconnected());
+    bool said = false;
+    for (const SimLogEntry &e : std::as_const(m_log))
+        said = said || e.reason == QStringLiteral("closesAfterAnswer: the device hangs up after each answer");
+    QVERIFY(said);
+}
+
 // The profile keys reach the simulator's objects.
 void TestSimDeviceLimits::profileKeys()
 {
     const ProfileLoadResult r = ProfileLoader::parse(R"({"name": "t", "unknownUnit": "first",
         "limits": {"minGapMs": 20, "tooSoon": "silent", "maxClients": 1, "extraClients": "dropOldest",
-                   "maxQuantity": {"0x03": 16, "16": 8}, "warmUpMs": 250},
+                   "maxQuantity": {"0x03": 16, "16": 8}, "warmUpMs": 250, "closesAfterAnswer": true},
         "units": [{"id": 1}]})",
                                                      QStringLiteral("test"));
     QVERIFY2(r.ok, qPrintable(r.errorText()));
@@ -232,6 +261,7 @@ void TestSimDeviceLimits::profileKeys()
     QCOMPARE(l.maxQuantity.value(0x03), 16);
     QCOMPARE(l.maxQuantity.value(0x10), 8);
     QCOMPARE(l.warmUpMs, 250.0);
+    QVERIFY(l.closesAfterAnswer);
     const SimEndpointOptions options = ProfileApplier::endpointOptions(r.profile);
     QCOMPARE(options.unknownUnit, SimEndpointOptions::UnknownUnit::FirstUnit);
     QCOMPARE(options.maxConnections, 1);
@@ -241,6 +271,7 @@ void TestSimDeviceLimits::profileKeys()
     QVERIFY(plain.ok);
     QCOMPARE(ProfileApplier::endpointOptions(plain.profile).maxConnections, SimEndpointOptions().maxConnections);
     QVERIFY(!plain.profile.limits.limitsRequests());
+    QVERIFY(!plain.profile.limits.closesAfterAnswer);
 }
 
 QTEST_GUILESS_MAIN(TestSimDeviceLimits)
