@@ -4,6 +4,8 @@
 #include "conformancejudge.h"
 #include "readchecks.h"
 
+#include "protocol/quantitylimits.h"
+
 #include <optional>
 
 namespace mbscope {
@@ -200,6 +202,37 @@ QList<ConformanceCheck> WriteChecks::checks()
                                                          QStringLiteral("exception 03 (Illegal Data Value) for quantity 0"));
                          }));
     }
+
+    // One coil over the most 0F may write (1969, 0x07B1): its 247 data bytes still fit a legal
+    // frame (a PDU of 253 bytes). The register writes cannot be asked so: 124 registers for 10, or
+    // 122 for 17's write, need a PDU over 253 bytes, which tests the framing, not the quantity.
+    out.append(check("write.0F.quantity-over", QStringLiteral("0F with quantity 1969 (one over the most) gets exception 03"),
+                     "Application Protocol V1.1b3, 6.11", 0x0F, SimTable::Coils, [](ConformanceContext &ctx, CheckResult &res, const TableRange &w) {
+                         const int over = QuantityLimits::kWriteCoils + 1;
+                         if (w.count() < over) {
+                             res.skip(QStringLiteral("needs %1 writable coils from one address (--writable coils:FIRST-LAST), the "
+                                                     "writable range %2 has %3: a device that took the write would change coils "
+                                                     "nobody named")
+                                          .arg(over)
+                                          .arg(w.toString())
+                                          .arg(w.count()));
+                             return;
+                         }
+                         QList<int> before;
+                         if (!readBefore(ctx, res, true, w.first, over, &before))
+                             return;
+                         // The values found: a device that writes anyway changes nothing.
+                         ConformanceJudge::exception(res, ctx.ask(multiple(true, w.first, before)), {0x03},
+                                                     QStringLiteral("exception 03 (Illegal Data Value): at most 1968 coils (0x07B0) a request"));
+                         if (res.verdict != CheckVerdict::Failed)
+                             return;
+                         // It took it: any coil it changed is put back.
+                         const std::optional<QList<int>> after = readValues(ctx, true, w.first, over);
+                         for (int i = 0; after && i < over; ++i) {
+                             if (after->at(i) != before.at(i))
+                                 (void)ctx.ask(single(0x05, w.first + i, before.at(i) ? 0xFF00 : 0x0000));
+                         }
+                     }));
 
     out.append(check("write.16.mask", QStringLiteral("16 Mask Write Register echoes and leaves (value AND and) OR (or AND NOT and)"),
                      "Application Protocol V1.1b3, 6.16", 0x16, SimTable::HoldingRegisters,

@@ -237,6 +237,56 @@ private Q_SLOTS:
         QCOMPARE(r.exitCode, card.value(QStringLiteral("counts")).toObject().value(QStringLiteral("failed_mandatory")).toInt() > 0 ? 1 : 0);
     }
 
+    // 0F one coil over the most: refused with 03 by the simulator; a device that echoes it fails,
+    // and what it changed is put back; with fewer writable coils than the request would write, the
+    // check is skipped, saying why (it never writes a coil the user did not name).
+    void writeQuantityOver_data()
+    {
+        QTest::addColumn<QString>("script");
+        QTest::addColumn<QString>("writable");
+        QTest::addColumn<QString>("verdict");
+        QTest::addColumn<QString>("says");
+        QTest::newRow("refused") << "" << "coils:0-1999" << "passed" << "";
+        QTest::newRow("taken") << "if (r.function === 15 && r.quantity > 1968) { unit.write('coils', r.address, [0]); return {pdu: r.pdu.slice(0, 5)}; }"
+                               << "coils:0-1999" << "failed" << "exception 03";
+        QTest::newRow("too few writable") << "" << "coils:10-17" << "skipped" << "needs 1969 writable coils";
+    }
+    void writeQuantityOver()
+    {
+        QFETCH(QString, script);
+        QFETCH(QString, writable);
+        QFETCH(QString, verdict);
+        QFETCH(QString, says);
+        const QString folder = m_dir.filePath(QStringLiteral("over-%1").arg(QString::fromLatin1(QTest::currentDataTag()).replace(QLatin1Char(' '), QLatin1Char('-'))));
+        QVERIFY(QDir().mkpath(folder));
+        QVERIFY(writeFile(folder + QStringLiteral("/many.json"),
+                          R"({"name": "many-coils", "units": [{"id": 1, "script": "many.js", "tables": {"coils": [{"address": 0, "count": 2000, "values": [1, 1, 0, 1]}]}}]})"));
+        QVERIFY(writeFile(folder + QStringLiteral("/many.js"),
+                          QStringLiteral("function onRequest(r) {\n%1\nreturn undefined;\n}\n").arg(script).toUtf8()));
+        Background sim;
+        QString error;
+        QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), folder + QStringLiteral("/many.json"), QStringLiteral("--listen"),
+                            QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                           &error),
+                 qPrintable(error));
+        const CliResult r = runMbscope(QStringList{QStringLiteral("conform"), QStringLiteral("--target"), sim.url(), QStringLiteral("--json"),
+                                                   QStringLiteral("--writable"), writable, QStringLiteral("--only"), QStringLiteral("write.0F.quantity-over")}
+                                       + kTimeout);
+        QVERIFY2(r.finished, r.describe());
+        const QJsonObject c = checkOf(r.json(), QStringLiteral("write.0F.quantity-over"));
+        QVERIFY2(c.value(QStringLiteral("verdict")).toString() == verdict, r.describe());
+        QVERIFY2(c.value(QStringLiteral("sentence")).toString().contains(says), r.describe());
+        if (verdict == QLatin1String("failed")) {
+            // Coil 0 was ON; the device cleared it while taking the write: put back.
+            const CliResult read = runMbscope({QStringLiteral("read"), QStringLiteral("--target"), sim.url(), QStringLiteral("--function"),
+                                               QStringLiteral("1"), QStringLiteral("--address"), QStringLiteral("0"), QStringLiteral("--quantity"),
+                                               QStringLiteral("4"), QStringLiteral("--json")});
+            QVERIFY2(read.exitCode == 0, read.describe());
+            const QJsonArray values = read.json().value(QStringLiteral("values")).toArray();
+            QVERIFY2(values.size() == 4 && values.at(0).toObject().value(QStringLiteral("value")).toVariant().toInt() == 1, read.describe());
+        }
+    }
+
     // --html: one self-contained page, read back as XML: the summary before the first check, a
     // section per check of the JSON scorecard with its clause, verdict, request and answer, the
     // failures listed and linked, and nothing loaded from outside (no src, no href but #anchors).
