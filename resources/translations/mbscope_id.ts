@@ -8017,12 +8017,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>tidak ada: setiap unit ke target</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Units to other devices, separated by spaces, each UNITS[:DEVICE_UNIT]=URL: 1-10=rtu:///dev/ttyUSB0 or 1:17=tcp://10.0.0.5:502 (the master&apos;s unit 1 is the device&apos;s unit 17). The first route that serves a unit takes it; the target above takes the units no route serves.</source>
-        <translation>Unit ke perangkat lain, dipisah spasi, masing-masing UNIT[:UNIT_PERANGKAT]=URL: 1-10=rtu:///dev/ttyUSB0 atau 1:17=tcp://10.0.0.5:502 (unit 1 milik master adalah unit 17 milik perangkat). Rute pertama yang melayani sebuah unit mengambilnya; target di atas mengambil unit yang tidak dilayani rute mana pun.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Read-only</source>
         <translation>Hanya baca</translation>
     </message>
@@ -8063,12 +8058,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>Yang diterima master bila perangkatnya tidak menjawab (eksepsi 0B) atau tidak ada rute yang melayani unitnya (eksepsi 0A): otomatis memberi eksepsi kepada master Modbus/TCP dan UDP, dan diam kepada master serial</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>Further attempts after a timeout or a damaged answer, before the master gets its 0B or silence</source>
-        <translation>Percobaan tambahan setelah habis waktu atau jawaban rusak, sebelum master menerima 0B atau diam</translation>
+        <location line="-22"/>
+        <source>Units to other devices, separated by spaces, each UNITS[:DEVICE_UNIT]=URL: 1-10=rtu:///dev/ttyUSB0 or 1:17=tcp://10.0.0.5:502 (the master&apos;s unit 1 is the device&apos;s unit 17). The first route that serves a unit takes it; the target above takes the units no route serves. A route&apos;s URL may give its own timeout= and retries= (1:17=tcp://10.0.0.5:502?timeout=300ms&amp;retries=0).</source>
+        <translation>Unit ke perangkat lain, dipisah spasi, masing-masing UNIT[:UNIT_PERANGKAT]=URL: 1-10=rtu:///dev/ttyUSB0 atau 1:17=tcp://10.0.0.5:502 (unit 1 milik master adalah unit 17 milik perangkat). Rute pertama yang melayani sebuah unit mengambilnya; target di atas mengambil unit yang tidak dilayani rute mana pun. URL sebuah rute dapat memberi timeout= dan retries= sendiri (1:17=tcp://10.0.0.5:502?timeout=300ms&amp;retries=0).</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+29"/>
+        <source>Further attempts of a read after a timeout or a damaged answer, before the master gets its 0B or silence (a write is sent once), unless a route&apos;s URL gives retries=</source>
+        <translation>Percobaan tambahan untuk pembacaan setelah habis waktu atau jawaban rusak, sebelum master menerima 0B atau diam (penulisan dikirim sekali), kecuali URL rute memberi retries=</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>none</source>
         <translation>tidak ada</translation>
     </message>

@@ -57,7 +57,8 @@ TapFields::TapFields(QWidget *parent)
     m_routesEdit->setPlaceholderText(tr("none: every unit to the target"));
     m_routesEdit->setToolTip(tr("Units to other devices, separated by spaces, each UNITS[:DEVICE_UNIT]=URL: 1-10=rtu:///dev/ttyUSB0 "
                                 "or 1:17=tcp://10.0.0.5:502 (the master's unit 1 is the device's unit 17). The first route "
-                                "that serves a unit takes it; the target above takes the units no route serves."));
+                                "that serves a unit takes it; the target above takes the units no route serves. A route's URL may give its "
+                                "own timeout= and retries= (1:17=tcp://10.0.0.5:502?timeout=300ms&retries=0)."));
     m_readOnlyCheck = new QCheckBox(tr("Read-only"), this);
     m_readOnlyCheck->setObjectName(QStringLiteral("tapReadOnlyCheck"));
     m_readOnlyCheck->setChecked(settings.value(kReadOnlyKey, false).toBool());
@@ -83,7 +84,8 @@ TapFields::TapFields(QWidget *parent)
     m_retriesSpin->setObjectName(QStringLiteral("tapRetriesSpin"));
     m_retriesSpin->setRange(0, 100);
     m_retriesSpin->setValue(settings.value(kRetriesKey, 0).toInt());
-    m_retriesSpin->setToolTip(tr("Further attempts after a timeout or a damaged answer, before the master gets its 0B or silence"));
+    m_retriesSpin->setToolTip(tr("Further attempts of a read after a timeout or a damaged answer, before the master gets its 0B "
+                                 "or silence (a write is sent once), unless a route's URL gives retries="));
     m_faultsEdit = new QLineEdit(settings.value(kFaultsKey).toString(), this);
     m_faultsEdit->setObjectName(QStringLiteral("tapFaultsEdit"));
     m_faultsEdit->setPlaceholderText(tr("none"));
