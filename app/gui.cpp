@@ -6,6 +6,8 @@
 #include "link/linkcontroller.h"
 #include "compose/requestcomposer.h"
 #include "shell/mainwindow.h"
+#include "shell/responsivenessprobe.h"
+#include "traffic/trafficmonitor.h"
 #include "session/sessioncontroller.h"
 #include "decode/transactionview.h"
 #include "watch/watchworkspace.h"
@@ -22,12 +24,14 @@
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMessageBox>
 #include <QtWidgets/QSpinBox>
+#include <QtWidgets/QTableView>
 
 #include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <memory>
 
 namespace mbscope::app {
 
@@ -405,6 +409,17 @@ int runGui(QApplication &app)
     const int quitAfterMs = qEnvironmentVariableIntValue("MBSCOPE_QUIT_AFTER_MS", &ok);
     if (ok && quitAfterMs >= 0)
         QTimer::singleShot(quitAfterMs, &app, &QCoreApplication::quit);
+    // How fast the window answers while it works (bench_windowsoak): menus opened and the traffic
+    // list moved every N ms, the figures on standard error at the end.
+    std::unique_ptr<ResponsivenessProbe> probe;
+    const int probeMs = qEnvironmentVariableIntValue("MBSCOPE_RESPONSIVENESS_MS", &ok);
+    if (ok && probeMs > 0) {
+        auto *traffic = window.findChild<TrafficMonitor *>();
+        probe = std::make_unique<ResponsivenessProbe>(&window, traffic ? traffic->view() : nullptr, probeMs);
+        QObject::connect(&app, &QCoreApplication::aboutToQuit, &app, [&probe] {
+            std::fprintf(stderr, "responsiveness: %s\n", qPrintable(probe->summary()));
+        });
+    }
 
     return app.exec();
 }

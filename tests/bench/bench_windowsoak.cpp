@@ -4,9 +4,12 @@
 // (VmRSS of /proc/PID/status) is read every --every seconds, beside the bytes its recording
 // journals hold; at the end the journals are read back to count the transactions. Printed: the
 // samples, then resident memory at the end of the first minute and of the last, and the
-// transactions per second. Figures only, never asserted.
+// transactions per second. With it, how fast the window answers meanwhile: every --probe-ms
+// (default 1000; 0: not at all) it opens a menu or moves its traffic list to a random row, and
+// says, as it quits, how long each took to paint (ResponsivenessProbe). Figures only, never
+// asserted.
 //
-// Usage: bench_windowsoak [--minutes M] [--every S]   (ctest runs --minutes 0.25 --every 2)
+// Usage: bench_windowsoak [--minutes M] [--every S] [--probe-ms MS]   (ctest runs --minutes 0.25 --every 2)
 #include "traffic/trafficjournal.h"
 
 #include <QtCore/QCoreApplication>
@@ -66,14 +69,17 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     double minutes = 30;
     double every = 10;
+    int probeMs = 1000;
     const QStringList args = app.arguments();
     for (qsizetype i = 1; i < args.size(); ++i) {
         if (args.at(i) == QLatin1String("--minutes") && i + 1 < args.size())
             minutes = args.at(++i).toDouble();
         else if (args.at(i) == QLatin1String("--every") && i + 1 < args.size())
             every = args.at(++i).toDouble();
+        else if (args.at(i) == QLatin1String("--probe-ms") && i + 1 < args.size())
+            probeMs = args.at(++i).toInt();
         else {
-            std::fprintf(stderr, "usage: bench_windowsoak [--minutes M] [--every SECONDS]\n");
+            std::fprintf(stderr, "usage: bench_windowsoak [--minutes M] [--every SECONDS] [--probe-ms MS]\n");
             return 2;
         }
     }
@@ -94,6 +100,10 @@ int main(int argc, char *argv[])
     }
     const qint64 runMs = qint64(minutes * 60'000);
     env.insert(QStringLiteral("MBSCOPE_QUIT_AFTER_MS"), QString::number(runMs));
+    // Every probeMs the window opens a menu or moves its traffic list to a random row, timing
+    // each to its paint; it prints the figures ("responsiveness: menus: ...") as it quits.
+    if (probeMs > 0)
+        env.insert(QStringLiteral("MBSCOPE_RESPONSIVENESS_MS"), QString::number(probeMs));
     window.setProcessEnvironment(env);
     window.setProcessChannelMode(QProcess::ForwardedErrorChannel);
     const QStringList windowArgs{QStringLiteral("--screenshot"), home.filePath(QStringLiteral("soak.png")),
