@@ -2,6 +2,7 @@
 
 #include "peer_datamap.h"
 
+#include <QtCore/QFile>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QProcess>
 #include <QtNetwork/QTcpServer>
@@ -33,6 +34,12 @@ QString mbscopePath()
     // new test fails there); the build's own executable otherwise.
     const QString other = qEnvironmentVariable("MBSCOPE_UNDER_TEST");
     return other.isEmpty() ? QStringLiteral(MBSCOPE_EXECUTABLE) : other;
+}
+
+bool writeFile(const QString &path, const QByteArray &bytes)
+{
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
 }
 
 CliResult runMbscope(const QStringList &arguments, int timeoutMs, const QProcessEnvironment &env)

@@ -40,6 +40,9 @@ struct CliResult {
 [[nodiscard]] CliResult runMbscope(const QStringList &arguments, int timeoutMs = 120000,
                                    const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment());
 
+// Writes bytes to path (created or replaced): false when it cannot.
+[[nodiscard]] bool writeFile(const QString &path, const QByteArray &bytes);
+
 // A pymodbus server (tests/peers/pymodbus_server.py) in one mode ("tcp", "udp", "rtu-tcp",
 // "ascii-tcp"), on a port it chooses, stopped when the object goes.
 class PymodbusTarget

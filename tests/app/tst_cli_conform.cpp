@@ -38,12 +38,6 @@ const char kProfile[] = R"({
   }]
 })";
 
-bool writeFile(const QString &path, const QByteArray &bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
-}
-
 // The ids of the checks whose verdict is "failed" in a scorecard.
 QStringList failedIds(const QJsonObject &card)
 {

@@ -57,12 +57,6 @@ QStringList journalFrames(const QString &path)
     return frames;
 }
 
-bool writeFile(const QString &path, const QByteArray &bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(bytes) == bytes.size();
-}
-
 } // namespace
 
 class TestCliFrameLog : public QObject

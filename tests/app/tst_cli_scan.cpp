@@ -640,19 +640,15 @@ void TestCliScan::timingLimitsMergedIntoProfile()
 // second client's recheck found the first reconnected and reported maxClients 1 dropOldest).
 void TestCliScan::timingFindsAHangUp()
 {
-    QFile device(m_dir.filePath(QStringLiteral("hangs-up.json")));
-    QVERIFY(device.open(QIODevice::WriteOnly));
-    device.write(R"({"name": "hangs-up", "limits": {"closesAfterAnswer": true},
-                      "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})");
-    device.close();
+    const QString device = m_dir.filePath(QStringLiteral("hangs-up.json"));
+    QVERIFY(writeFile(device, R"({"name": "hangs-up", "limits": {"closesAfterAnswer": true},
+                                  "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})"));
     const QString target = m_dir.filePath(QStringLiteral("hangs-up-draft.json"));
+    QVERIFY(writeFile(target, R"({"name": "hangs-up-draft", "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})"));
     QFile draft(target);
-    QVERIFY(draft.open(QIODevice::WriteOnly));
-    draft.write(R"({"name": "hangs-up-draft", "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})");
-    draft.close();
     Background sim;
     QString error;
-    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), device.fileName(), QStringLiteral("--listen"),
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), device, QStringLiteral("--listen"),
                         QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
                        &error),
              qPrintable(error));

@@ -21,12 +21,6 @@ using namespace mbscope::testcli;
 
 namespace {
 
-bool writeFile(const QString &path, const QByteArray &bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
-}
-
 // `mbscope watch ... --json` running in the background, its JSON lines read as they come.
 class WatchProcess
 {
