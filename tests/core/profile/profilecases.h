@@ -330,7 +330,7 @@ inline void addErrorRows()
     row("unknownUnit word", R"({"name": "t", "unknownUnit": "answer", "units": [{"id": 1}]})", "unknownUnit",
         S("'answer' is not one of first, exception, silent, auto"));
     row("limits unknown key", R"({"name": "t", "limits": {"gapMs": 5}, "units": [{"id": 1}]})", "limits",
-        S("unknown key 'gapMs': expected one of minGapMs, tooSoon, maxClients, extraClients, maxQuantity, warmUpMs"));
+        S("unknown key 'gapMs': expected one of minGapMs, tooSoon, maxClients, extraClients, maxQuantity, warmUpMs, closesAfterAnswer"));
     row("limits gap negative", R"({"name": "t", "limits": {"minGapMs": -1}, "units": [{"id": 1}]})", "limits.minGapMs",
         S("-1 is below 0"));
     row("limits tooSoon word", R"({"name": "t", "limits": {"minGapMs": 5, "tooSoon": "later"}, "units": [{"id": 1}]})",
