@@ -202,7 +202,7 @@ int runScan(const QStringList &arguments)
         "come back, and says what was tried and what worked.\n"
         "With --timing UNIT it measures the unit's timing limits and prints settings ready to use (a watch link's "
         "gapMs and timeoutMs, Telegraf's modbus input pause_between_requests and pause_after_connect); --profile-out "
-        "merges what it measured (minGapMs, warmUpMs, maxClients, maxQuantity, closesAfterAnswer) into an existing profile's limits.\n"
+        "merges what it measured (minGapMs, warmUpMs, maxClients and extraClients, maxQuantity, closesAfterAnswer) into an existing profile's limits.\n"
         "Examples (with mbscope simulate --profile conformance --listen tcp://127.0.0.1:5020 running):\n"
         "  mbscope scan --target tcp://127.0.0.1:5020 --units 1-10\n"
         "  mbscope scan --target tcp://127.0.0.1:5020 --map 1 --profile-out draft.json\n"

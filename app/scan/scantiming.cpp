@@ -32,10 +32,12 @@ QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
                  .arg(QString::number(double(g.maxLatencyUs) / 1000.0, 'f', 2));
     t += QStringLiteral("shortest gap without errors     %1\n")
              .arg(r.shortestCleanGapMs < 0 ? QStringLiteral("none of those tried") : QStringLiteral("%1 ms").arg(r.shortestCleanGapMs));
-    t += QStringLiteral("largest read answered           %1 at address %2 (an answer PDU of %3 bytes)\n")
+    t += QStringLiteral("largest read answered           %1 at address %2 (an answer PDU of %3 bytes)%4\n")
              .arg(r.largestQuantity)
              .arg(s.address)
-             .arg(r.largestAnswerPdu);
+             .arg(r.largestAnswerPdu)
+             .arg(r.largestEndsMap ? QStringLiteral(": one more ran past the device's map (no exception 03), not a quantity limit")
+                                   : QString());
     if (r.gapReconnects >= 0 && r.gapAnswered >= 3)
         t += QStringLiteral("connection after each answer    %1\n")
                  .arg(r.closesAfterAnswer() ? QStringLiteral("closed by the device (%1 connections for %2 answers): pipelining and "
@@ -90,13 +92,15 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
         {QStringLiteral("shortest_clean_gap_ms"), r.shortestCleanGapMs},
         {QStringLiteral("largest_quantity"), r.largestQuantity},
         {QStringLiteral("largest_answer_pdu"), r.largestAnswerPdu},
+        {QStringLiteral("largest_ends_map"), r.largestEndsMap},
         {QStringLiteral("closes_after_answer"), r.gapReconnects >= 0 && r.gapAnswered >= 3 ? QJsonValue(r.closesAfterAnswer())
                                                                                              : QJsonValue(QJsonValue::Null)},
         {QStringLiteral("pipeline_sent"), r.pipelineSent},
         {QStringLiteral("pipeline_ok"), r.pipelineOk},
         {QStringLiteral("clients_tried"), r.clientsTried},
         {QStringLiteral("clients_served"), r.clientsServed},
-        {QStringLiteral("clients_extra"), r.clientsTried == 0 || r.clientsServed == r.clientsTried
+        {QStringLiteral("clients_extra"), r.clientsTried == 0 ? QStringLiteral("not measured")
+                                          : r.clientsServed == r.clientsTried
                                               ? QStringLiteral("not reached")
                                               : (r.oldestDropped ? QStringLiteral("drop_oldest") : QStringLiteral("refuse"))},
         {QStringLiteral("stopped"), end == JobEnd::Stopped},

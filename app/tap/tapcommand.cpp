@@ -118,7 +118,8 @@ int runTap(const QStringList &arguments)
                                                          "tls://, or a serial port rtu:///dev/ttyUSB0?baud=19200&parity=N (port 0: any free port)."),
                                           QStringLiteral("URL"));
     const QCommandLineOption targetOption(QStringLiteral("target"),
-                                          QStringLiteral("The device every unit goes to (the route 0-255=URL), over any link mbscope has."),
+                                          QStringLiteral("The device every unit goes to (the route 0-255=URL), over any link mbscope has; its URL may "
+                                                         "give timeout= and retries= as a route's does."),
                                           QStringLiteral("URL"));
     const QCommandLineOption routeOption(QStringLiteral("route"),
                                          QStringLiteral("Units to a device (repeatable; the first route that serves a unit takes it): "
@@ -201,7 +202,7 @@ int runTap(const QStringList &arguments)
     if (parser.isSet(targetOption)) {
         const TapRoute::Result every = TapRoute::parseTarget(parser.value(targetOption));
         if (!every.route) {
-            err << "mbscope tap: --target " << every.error << '\n';
+            err << "mbscope tap: --target '" << parser.value(targetOption) << "': " << every.error << '\n';
             return kExitUsage;
         }
         settings.routes.append(*every.route); // after the routes: they take their units first

@@ -26,10 +26,13 @@ QByteArray single(quint8 function, int address, int value)
     return pdu;
 }
 
-// The values of count registers (or bits as 0/1) from address, or nullopt.
-std::optional<QList<int>> readValues(ConformanceContext &ctx, bool bits, int address, int count)
+// The values of count registers (or bits as 0/1) from address, or nullopt (*seen, when given:
+// what came back instead).
+std::optional<QList<int>> readValues(ConformanceContext &ctx, bool bits, int address, int count, QString *seen = nullptr)
 {
     const ConformanceExchange e = ctx.ask(ReadChecks::readPdu(bits ? 0x01 : 0x03, address, count));
+    if (seen)
+        *seen = ConformanceJudge::seen(e);
     if (e.transaction.status != TransactionStatus::Ok)
         return std::nullopt;
     const QByteArray pdu = ConformanceJudge::pdu(e.transaction.response, ctx.link().framing());
@@ -95,9 +98,15 @@ ConformanceCheck check(const char *id, const QString &title, const char *clause,
 
 bool readBefore(ConformanceContext &ctx, CheckResult &res, bool bits, int address, int count, QList<int> *values)
 {
-    const std::optional<QList<int>> found = readValues(ctx, bits, address, count);
+    QString seen;
+    const std::optional<QList<int>> found = readValues(ctx, bits, address, count, &seen);
     if (!found) {
-        res.skip(QStringLiteral("the values to put back could not be read (%1 from %2)").arg(QLatin1String(bits ? "01" : "03")).arg(address));
+        res.skip(QStringLiteral("the values to put back could not be read (%1, %2 %3 from %4: %5)")
+                     .arg(QLatin1String(bits ? "01" : "03"))
+                     .arg(count)
+                     .arg(QLatin1String(bits ? (count == 1 ? "coil" : "coils") : (count == 1 ? "register" : "registers")))
+                     .arg(address)
+                     .arg(seen));
         return false;
     }
     *values = *found;

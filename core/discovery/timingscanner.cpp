@@ -357,6 +357,9 @@ void TimingScanner::largestRead(TimingReport &report)
     m_channel->setGapMs(gap);
     const int specMax = QuantityLimits::maxQuantity(quint8(m_settings.function));
     // Whether quantity q is answered; nullopt when it was not asked (stopped, or out of time).
+    // A refusal notes whether it was for the quantity (exception 03): 02 says the read ran past
+    // the device's map, which limits where, not how much.
+    bool refusedForQuantity = false;
     const auto answers = [&](int q) -> std::optional<bool> {
         if (!mayContinue(gap + m_settings.timeoutMs))
             return std::nullopt;
@@ -364,27 +367,38 @@ void TimingScanner::largestRead(TimingReport &report)
         if (!a)
             return std::nullopt;
         stepDone();
-        return a->transaction.status == TransactionStatus::Ok;
+        if (a->transaction.status == TransactionStatus::Ok)
+            return true;
+        refusedForQuantity = a->transaction.status == TransactionStatus::Exception && a->transaction.exceptionCode == 0x03;
+        return false;
     };
     int ok = 0;
     int refused = specMax + 1;
+    bool refusedBy03 = false; // the refusal at `refused`
     const std::optional<bool> whole = answers(specMax);
     if (whole && *whole) {
         ok = specMax;
     } else if (whole) {
+        refused = specMax;
+        refusedBy03 = refusedForQuantity;
         while (refused - ok > 1) {
             const int mid = (ok + refused) / 2;
             const std::optional<bool> answered = answers(mid);
             if (!answered)
                 break;
-            if (*answered)
+            if (*answered) {
                 ok = mid;
-            else
+            } else {
                 refused = mid;
+                refusedBy03 = refusedForQuantity;
+            }
         }
     }
     report.largestQuantity = ok;
-    report.largestFound = ok == specMax || refused - ok == 1;
+    // A limit of the device only when one more was refused for its quantity: a read refused for
+    // running past the map (02) says where the map ends.
+    report.largestFound = ok == specMax || (refused - ok == 1 && refusedBy03);
+    report.largestEndsMap = ok < specMax && refused - ok == 1 && !refusedBy03;
     report.largestAnswerPdu = ok == 0 ? 0 : 2 + (m_settings.function <= 2 ? (ok + 7) / 8 : 2 * ok);
     if (m_end == JobEnd::Completed)
         endPart(Largest);

@@ -54,7 +54,8 @@ struct TimingReport {
     bool oldestDropped = false;  // client clientsTried was served by closing the oldest (dropOldest)
     int largestQuantity = 0;     // the largest read quantity answered at address
     int largestAnswerPdu = 0;    // its answer's PDU size in bytes
-    bool largestFound = false;   // largestQuantity is the specification's, or one more was refused (not cut short)
+    bool largestFound = false;   // largestQuantity is the specification's, or one more was refused with 03 (not cut short)
+    bool largestEndsMap = false; // one more was refused otherwise (02: the read ran past the map), not for its quantity
     // Stream links: the answers of the gap trials, and the connections the channel had to open
     // again for their requests (0 when the device keeps the connection; one an answer when it
     // hangs up after each).

@@ -37,7 +37,7 @@ QString takeRetries(QStringView url, int *retries, QString *error)
         bool ok = false;
         const int n = part.sliced(8).toInt(&ok, 10);
         if (!ok || n < 0 || n > 100) {
-            *error = QStringLiteral("retries '%1' is not a count from 0 to 100 (the further attempts of a read on this route)")
+            *error = QStringLiteral("retries '%1' is not a count from 0 to 100 (the further attempts of a read the tap makes)")
                          .arg(part.sliced(8));
             return {};
         }
@@ -85,7 +85,10 @@ TapRoute::Result TapRoute::parseTarget(QStringView url)
     }
     const LinkUrl::Result parsed = LinkUrl::parse(rest);
     if (!parsed.url) {
-        result.error = parsed.error;
+        // The link's options are listed there; the tap takes one more of its own.
+        result.error = parsed.error.startsWith(QLatin1String("unknown option"))
+                           ? parsed.error + QStringLiteral("; and, on the tap's routes and target, retries")
+                           : parsed.error;
         return result;
     }
     route.target = *parsed.url;

@@ -70,7 +70,7 @@
 <context>
     <name>QObject</name>
     <message>
-        <location filename="../../app/gui.cpp" line="+345"/>
+        <location filename="../../app/gui.cpp" line="+349"/>
         <source>Session not opened</source>
         <translation>Sesi tidak dibuka</translation>
     </message>
@@ -8193,14 +8193,14 @@ Klik kanan untuk mengganti format</translation>
         <location filename="../../ui/discovery/timingresulttree.cpp" line="+13"/>
         <location line="+47"/>
         <location line="+8"/>
-        <location line="+22"/>
+        <location line="+23"/>
         <location line="+1"/>
         <location line="+1"/>
         <source>%1 ms</source>
         <translation>%1 md</translation>
     </message>
     <message>
-        <location line="-61"/>
+        <location line="-62"/>
         <source>Measurement</source>
         <translation>Pengukuran</translation>
     </message>
@@ -8260,6 +8260,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>%1 at address %2 (an answer PDU of %3 bytes)</source>
         <translation>%1 di alamat %2 (PDU jawaban %3 bita)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>: one more ran past the device&apos;s map (no exception 03), not a quantity limit</source>
+        <translation>: satu lagi melewati peta perangkat (tanpa pengecualian 03), bukan batas jumlah</translation>
     </message>
     <message>
         <location line="+2"/>

@@ -665,6 +665,11 @@ void TestCliScan::timingFindsAHangUp()
     draft.close();
     QCOMPARE(limits.value(QStringLiteral("closesAfterAnswer")), QJsonValue(true));
     QVERIFY2(!limits.contains(QStringLiteral("maxClients")), qPrintable(QJsonDocument(limits).toJson()));
+    // Its map is 100 registers: 101 from address 0 gets 02, which says where the map ends, not how
+    // much a read may ask (before, maxQuantity 0x03 100 was written).
+    QCOMPARE(o.value(QStringLiteral("largest_quantity")).toInt(), 100);
+    QCOMPARE(o.value(QStringLiteral("largest_ends_map")), QJsonValue(true));
+    QVERIFY2(!limits.contains(QStringLiteral("maxQuantity")), qPrintable(QJsonDocument(limits).toJson()));
 }
 
 // Two clients at most, the third refused or served by knocking the first off: the timing scan

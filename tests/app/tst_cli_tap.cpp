@@ -516,7 +516,7 @@ void TestCliTap::badOptions_data()
                                        << QStringLiteral("retries 'many' is not a count from 0 to 100");
     QTest::newRow("target retries above 100") << QStringList{QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--target"),
                                                              QStringLiteral("tcp://127.0.0.1:502?retries=101")}
-                                              << QStringLiteral("--target retries '101' is not a count from 0 to 100");
+                                              << QStringLiteral("--target 'tcp://127.0.0.1:502?retries=101': retries '101' is not a count from 0 to 100");
     QTest::newRow("bad target url") << QStringList{QStringLiteral("--listen"), QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--target"),
                                                    QStringLiteral("tcp://127.0.0.1:99999")}
                                     << QStringLiteral("--target ");

@@ -68,7 +68,8 @@ void TimingResultTree::showReport(const TimingScanSettings &s, const TimingRepor
         r.shortestCleanGapMs < 0 ? tr("none of those tried") : tr("%1 ms").arg(r.shortestCleanGapMs));
     if (r.largestQuantity > 0)
         row(root, tr("Largest read answered"),
-            tr("%1 at address %2 (an answer PDU of %3 bytes)").arg(r.largestQuantity).arg(s.address).arg(r.largestAnswerPdu));
+            tr("%1 at address %2 (an answer PDU of %3 bytes)").arg(r.largestQuantity).arg(s.address).arg(r.largestAnswerPdu)
+                + (r.largestEndsMap ? tr(": one more ran past the device's map (no exception 03), not a quantity limit") : QString()));
     if (r.gapReconnects >= 0 && r.gapAnswered >= 3)
         row(root, tr("Connection after each answer"),
             r.closesAfterAnswer() ? tr("closed by the device (%1 connections for %2 answers): pipelining and clients at once not measured")
