@@ -348,7 +348,10 @@ private slots:
                 for (auto it = payload.begin(); it != payload.end(); ++it)
                     seen.insert(it.key(), it.value());
             }
-            if (seen.contains(QStringLiteral("relay")) && seen.contains(QStringLiteral("serial_number")))
+            // Every block's payload: the four reads go out 40 ms apart (the device's gap), so the
+            // first ones can come back well before the last.
+            if (seen.contains(QStringLiteral("relay")) && seen.contains(QStringLiteral("serial_number")) && seen.contains(QStringLiteral("voltage"))
+                && seen.contains(QStringLiteral("ct_ratio")))
                 break;
         }
         const QByteArray log = red.readAll();
