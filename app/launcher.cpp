@@ -3,6 +3,7 @@
 #include "common/cli.h"
 #include "commands.h"
 #include "plot/histogramplot.h"
+#include "poll/profilelimits.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -37,7 +38,7 @@ bool Launcher::needsFull(int argc, char *argv[])
         return false; // `help`, or a typo that the dispatcher names
     if (!runsHere(first))
         return true;
-    return HistogramPlot::isRequested(argc, argv);
+    return HistogramPlot::isRequested(argc, argv) || ProfileLimits::isRequested(argc, argv);
 }
 
 std::string Launcher::fullPath()

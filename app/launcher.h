@@ -15,7 +15,8 @@ class Launcher
 {
 public:
     // No subcommand (the window and its options), --help-all, a subcommand that runs only in
-    // mbscope-full (runsHere), or a plot (--histogram, --timeseries: HistogramPlot::isRequested).
+    // mbscope-full (runsHere), a plot (--histogram, --timeseries: HistogramPlot::isRequested), or
+    // a poll or sweep with --profile (ProfileLimits::isRequested).
     // --help, --version, unknown words and every light subcommand's --help stay here.
     [[nodiscard]] static bool needsFull(int argc, char *argv[]);
     // Where mbscope-full is: beside this executable (its real path, symbolic links resolved).

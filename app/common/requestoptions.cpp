@@ -1,10 +1,10 @@
 #include "common/requestoptions.h"
 
+#include "common/requestnames.h"
 #include "common/tabletype.h"
 #include "common/targetoptions.h"
 
 #include "protocol/adubuilder.h"
-#include "protocol/functioncode.h"
 #include "protocol/hextext.h"
 #include "protocol/modiconreference.h"
 #include "protocol/registervalue.h"
@@ -18,55 +18,6 @@
 namespace mbscope::app {
 
 namespace {
-
-// The Modicon references of a run of items: "40122-40143", or "40122" for one.
-QString referenceRange(quint8 functionCode, int address, int quantity)
-{
-    const auto table = ModiconReference::tableOf(functionCode);
-    if (!table || address < 0 || quantity < 1 || address + quantity - 1 > 0xFFFF)
-        return {};
-    const ModiconReference first(*table, quint16(address));
-    const ModiconReference last(*table, quint16(address + quantity - 1));
-    const bool five = last.hasFiveDigitForm();
-    const QString a = five ? first.fiveDigit() : first.sixDigit();
-    const QString b = five ? last.fiveDigit() : last.sixDigit();
-    return quantity == 1 ? a : a + QLatin1Char('-') + b;
-}
-
-QString hex4(int address)
-{
-    return QString::number(address, 16).toUpper().rightJustified(4, QLatin1Char('0'));
-}
-
-// "unit 1, 22 registers at 121 (0x0079), 40122-40143"; counted from 1: "unit 1, 22 registers at
-// 122 (1-based; PDU address 121, 0x0079), 40122-40143".
-QString describeItems(quint8 functionCode, int unit, int address, int quantity, const char *items, bool oneBased)
-{
-    const QString where = oneBased ? QStringLiteral("%1 (1-based; PDU address %2, 0x%3)").arg(address + 1).arg(address).arg(hex4(address))
-                                   : QStringLiteral("%1 (0x%2)").arg(address).arg(hex4(address));
-    QString text = QStringLiteral("unit %1, %2 %3 at %4")
-                       .arg(unit)
-                       .arg(quantity)
-                       .arg(QLatin1String(items), where);
-    const QString refs = referenceRange(functionCode, address, quantity);
-    if (!refs.isEmpty())
-        text += QStringLiteral(", ") + refs;
-    return text;
-}
-
-QString describe(quint8 functionCode, int unit, int address, int quantity, const char *items, bool oneBased)
-{
-    return QString::fromLatin1(functionName(functionCode)) + QStringLiteral(", ")
-           + describeItems(functionCode, unit, address, quantity, items, oneBased);
-}
-
-// A request's name in statistics and journals: "Read Holding Registers 121 x4", counted from 1
-// "Read Holding Registers 122 x4 (1-based)".
-QString itemName(quint8 functionCode, int address, int quantity, bool oneBased)
-{
-    return oneBased ? QStringLiteral("%1 %2 x%3 (1-based)").arg(QString::fromLatin1(functionName(functionCode))).arg(address + 1).arg(quantity)
-                    : QStringLiteral("%1 %2 x%3").arg(QString::fromLatin1(functionName(functionCode))).arg(address).arg(quantity);
-}
 
 // RequestBuilder names its parameters; the user knows the options.
 QString optionFor(const QString &parameter, bool registers)
@@ -109,7 +60,7 @@ QString hintWithOption(int typed, bool oneBased)
                               "to type the manual's numbers")
             .arg(typed)
             .arg(typed - 1)
-            .arg(hex4(typed - 1));
+            .arg(RequestNames::hex4(typed - 1));
     }
     if (!oneBased && typed == 65536)
         return QStringLiteral("65536 is one past the last PDU address (65535) but the last register counted from 1: "
@@ -419,14 +370,13 @@ bool RequestOptions::readRead(const QCommandLineParser &parser, const TargetSett
     options.transactionId = 1;
     PlannedRequest r;
     r.functionCode = quint8(function.value);
+    r.unit = quint8(unit);
     r.address = a;
     r.quantity = q;
-    const char *noun = registers ? (q == 1 ? "register" : "registers")
-                       : function.value == 1 ? (q == 1 ? "coil" : "coils")
-                                             : (q == 1 ? "discrete input" : "discrete inputs");
+    const char *noun = RequestNames::readNoun(r.functionCode, q);
     r.oneBased = out.oneBased;
-    r.description = describe(r.functionCode, unit, a, q, noun, out.oneBased);
-    r.item = RequestItem::forLink(AduBuilder::complete(pdu.pdu, options), url, itemName(r.functionCode, a, q, out.oneBased));
+    r.description = RequestNames::describe(r.functionCode, unit, a, q, noun, out.oneBased);
+    r.item = RequestItem::forLink(AduBuilder::complete(pdu.pdu, options), url, RequestNames::itemName(r.functionCode, a, q, out.oneBased));
     out.requests.append(r);
     out.summary = r.description;
     out.built = true;
@@ -506,13 +456,14 @@ bool RequestOptions::readWrite(const QCommandLineParser &parser, const TargetSet
         options.transactionId = transactionId++;
         PlannedRequest r;
         r.functionCode = code;
+        r.unit = quint8(unit);
         r.address = at;
         r.quantity = count;
         r.oneBased = out.oneBased;
-        r.description = describe(code, unit, at, count, registers ? (count == 1 ? "register" : "registers")
+        r.description = RequestNames::describe(code, unit, at, count, registers ? (count == 1 ? "register" : "registers")
                                                                   : (count == 1 ? "coil" : "coils"),
                                  out.oneBased);
-        r.item = RequestItem::forLink(AduBuilder::complete(pdu.pdu, options), url, itemName(code, at, count, out.oneBased));
+        r.item = RequestItem::forLink(AduBuilder::complete(pdu.pdu, options), url, RequestNames::itemName(code, at, count, out.oneBased));
         if (registers)
             r.registers = words.mid(at - a, count);
         else
@@ -541,7 +492,7 @@ bool RequestOptions::readWrite(const QCommandLineParser &parser, const TargetSet
         }
         plan(pdu, registers ? 0x10 : 0x0F, a, n);
     }
-    out.summary = describeItems(registers ? 0x10 : 0x0F, unit, a, n,
+    out.summary = RequestNames::describeItems(registers ? 0x10 : 0x0F, unit, a, n,
                                 registers ? (n == 1 ? "register" : "registers") : (n == 1 ? "coil" : "coils"), out.oneBased);
     out.built = true;
     return true;

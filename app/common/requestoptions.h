@@ -20,6 +20,7 @@ struct PlannedRequest {
     RequestItem item;
     QString description;     // "Read Holding Registers, unit 1, 22 registers at 121 (0x0079), 40122-40143"
     quint8 functionCode = 0; // of a built request; 0 for --hex
+    quint8 unit = 1;         // of a built request
     int address = 0;         // first register or coil
     int quantity = 0;        // registers or bits read or written
     QList<quint16> registers; // the values a register write sends

@@ -1,5 +1,8 @@
 #include "poll/polloptions.h"
 
+#include "poll/devicepace.h"
+#include "poll/profilelimits.h"
+
 #include "time/duration.h"
 #include "plot/histogramplot.h"
 #include "common/outputpath.h"
@@ -8,6 +11,8 @@
 #include <QtCore/QDir>
 #include <QtCore/QFileInfo>
 #include <QtCore/QTextStream>
+
+#include <cmath>
 
 namespace mbscope::app {
 
@@ -58,6 +63,21 @@ PollOptions::PollOptions(bool sweep)
             QStringLiteral("Write one CSV row per transaction as it happens: time, item, status, latency_ms, then the values "
                            "(a column per --format)."),
             QStringLiteral("file"))
+    , m_gap(QStringLiteral("gap"),
+            QStringLiteral("The device's pace: no request sooner than this after the previous one was sent or its "
+                           "exchange ended (answer or timeout): 50ms... (default: the --profile's minGapMs, else 0)."),
+            QStringLiteral("duration"))
+    , m_warmUp(QStringLiteral("warm-up"),
+               QStringLiteral("After the link opens (each time), wait this long before the first request: 2s... "
+                              "(default: the --profile's warmUpMs, else 0)."),
+               QStringLiteral("duration"))
+    , m_profile(QStringLiteral("profile"),
+                QStringLiteral("Honour the limits of a device profile (shipped name or JSON file, as scan --profile-out "
+                               "writes them): its minGapMs and warmUpMs (unless --gap or --warm-up is given), and reads "
+                               "built with --function/--quantity that ask more than its maxQuantity are cut into "
+                               "several; a device that hangs up after each answer (closesAfterAnswer) gets a new connection for "
+                               "each request."),
+                QStringLiteral("profile"))
 {
 }
 
@@ -66,7 +86,7 @@ void PollOptions::addTo(QCommandLineParser &parser) const
     m_target.addTo(parser);
     m_requests.addTo(parser);
     parser.addOption(m_sweep ? m_intervals : m_interval);
-    parser.addOptions({m_count, m_duration, m_pipeline, m_stats, m_histogram, m_json});
+    parser.addOptions({m_count, m_duration, m_pipeline, m_gap, m_warmUp, m_profile, m_stats, m_histogram, m_json});
     if (!m_sweep)
         parser.addOptions({m_once, m_csv});
     m_print.addTo(parser);
@@ -149,6 +169,35 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
         return false;
     }
     out.engine.pipelineDepth = int(pipeline.value);
+    DeviceLimits limits;
+    if (parser.isSet(m_profile)) {
+        out.profile = parser.value(m_profile);
+        QString error;
+        const std::optional<DeviceLimits> loaded = ProfileLimits::load(out.profile, &error);
+        if (!loaded) {
+            err << prefix << "--profile " << out.profile << ":\n" << error << '\n';
+            return false;
+        }
+        limits = *loaded;
+    }
+    // The profile's figures with some to spare, in whole milliseconds: the device counts its gap
+    // from a request's arrival (this end waits from the end of the exchange, later still: 1 ms
+    // more), and its warm-up from when it took the connection in, which can be milliseconds after
+    // this end saw it open (a tenth more, at least 2 ms).
+    const auto ms = [](double value) { return std::chrono::nanoseconds(qint64(std::ceil(value)) * 1'000'000); };
+    out.engine.requestGap = limits.minGapMs > 0 ? ms(limits.minGapMs + 1) : ms(0);
+    out.engine.warmUp = limits.warmUpMs > 0 ? ms(limits.warmUpMs + qMax(2.0, limits.warmUpMs / 10)) : ms(0);
+    out.engine.closeAfterAnswer = limits.closesAfterAnswer;
+    for (const auto &[option, value] : {std::pair{&m_gap, &out.engine.requestGap}, std::pair{&m_warmUp, &out.engine.warmUp}}) {
+        if (!parser.isSet(*option))
+            continue;
+        const DurationResult d = parseDuration(parser.value(*option));
+        if (!d.ok()) {
+            err << prefix << "--" << option->names().constFirst() << ": " << d.error << '\n';
+            return false;
+        }
+        *value = std::chrono::nanoseconds(d.ns);
+    }
 
     // --record and --force first: --force is the policy for --histogram and --csv too.
     if (!m_record.read(parser, m_command, out.record, err,
@@ -192,6 +241,11 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
     }
     if (!m_requests.read(parser, m_command, out.target, out.plan, err))
         return false;
+    // Said before the first request: what the poll sends differs from what was typed, or the
+    // device is likely to refuse it.
+    for (const QString &note : DevicePace::fitReads(out.plan, limits.maxQuantity, out.target.url,
+                                                     QStringLiteral("--profile %1").arg(out.profile)))
+        err << prefix << note << '\n';
     for (const PlannedRequest &r : out.plan.requests)
         out.settings.poll.items.append(r.item);
     return true;

@@ -29,6 +29,7 @@ struct PollConfig {
     bool printValues = false; // poll --print values
     PrintSettings print;      // --print values|frames, --frame-log FILE
     QString csvPath;          // poll --csv FILE; empty: none
+    QString profile;          // --profile: the device profile whose limits the poll honours; empty: none
 };
 
 // The options poll and sweep share, and the one each has alone:
@@ -36,7 +37,9 @@ struct PollConfig {
 //           --print values|frames, --csv FILE
 //   sweep:  --intervals D1,D2,... (required)
 //   both:   --count N (cycles per interval) | --duration DURATION, --pipeline N, --stats,
-//           --histogram FILE.png, --json, --record FILE [--force], the target options and the request options
+//           --histogram FILE.png, --json, --record FILE [--force], --gap DURATION, --warm-up DURATION,
+//           --profile P (its limits: minGapMs and warmUpMs unless --gap and --warm-up say otherwise,
+//           and reads cut to its maxQuantity: DevicePace), the target options and the request options
 //           (--hex ... | --function/--address/--quantity | --coils/--registers).
 class PollOptions
 {
@@ -62,6 +65,9 @@ private:
     QCommandLineOption m_json;
     PrintOptions m_print;
     QCommandLineOption m_csv;
+    QCommandLineOption m_gap;
+    QCommandLineOption m_warmUp;
+    QCommandLineOption m_profile;
     RecordOptions m_record;
 };
 

@@ -182,6 +182,8 @@ QString PollResults::pollText() const
     if (m_config.engine.pipelineDepth > 1)
         out += padded(QStringLiteral("pipeline")) + QString::number(m_config.engine.pipelineDepth).rightJustified(8)
                + QStringLiteral("  requests in flight at most\n");
+    if (const QString pace = paceText(); !pace.isEmpty())
+        out += padded(QStringLiteral("pace")) + QStringLiteral("          ") + pace + QLatin1Char('\n');
     out += run.statistics.itemCount() > 1 ? run.statistics.summary() : run.statistics.overall().summary();
     if (m_config.stats)
         out += detail(run);
@@ -212,7 +214,32 @@ QJsonObject PollResults::pollJson() const
     o.insert(QStringLiteral("requests"), requests);
     o.insert(QStringLiteral("interrupted"), m_outcome.interrupted);
     o.insert(QStringLiteral("pipeline"), m_config.engine.pipelineDepth);
+    o.insert(QStringLiteral("pace"), paceJson());
     return o;
+}
+
+QString PollResults::paceText() const
+{
+    QStringList parts;
+    if (m_config.engine.requestGap.count() > 0)
+        parts.append(QStringLiteral("gap %1 between requests").arg(formatDuration(m_config.engine.requestGap.count())));
+    if (m_config.engine.warmUp.count() > 0)
+        parts.append(QStringLiteral("warm-up %1 after connecting").arg(formatDuration(m_config.engine.warmUp.count())));
+    if (m_config.engine.closeAfterAnswer)
+        parts.append(QStringLiteral("a new connection for each request (the device hangs up after each answer)"));
+    if (!m_config.profile.isEmpty())
+        parts.append(QStringLiteral("limits of --profile %1").arg(m_config.profile));
+    return parts.join(QStringLiteral(", "));
+}
+
+QJsonObject PollResults::paceJson() const
+{
+    return QJsonObject{
+        {QStringLiteral("gap_ms"), double(m_config.engine.requestGap.count()) / 1e6},
+        {QStringLiteral("warm_up_ms"), double(m_config.engine.warmUp.count()) / 1e6},
+        {QStringLiteral("new_connection_each"), m_config.engine.closeAfterAnswer},
+        {QStringLiteral("profile"), m_config.profile.isEmpty() ? QJsonValue() : QJsonValue(m_config.profile)},
+    };
 }
 
 QString PollResults::sweepText() const
@@ -224,7 +251,10 @@ QString PollResults::sweepText() const
         per.append(QStringLiteral("%1 cycles").arg(s.poll.count));
     if (s.poll.durationNs > 0)
         per.append(QStringLiteral("at most %1").arg(formatDuration(s.poll.durationNs)));
-    out += per.join(QStringLiteral(", ")) + QStringLiteral(" per interval") + QLatin1Char('\n') + QLatin1Char('\n');
+    out += per.join(QStringLiteral(", ")) + QStringLiteral(" per interval") + QLatin1Char('\n');
+    if (const QString pace = paceText(); !pace.isEmpty())
+        out += QStringLiteral("pace: ") + pace + QLatin1Char('\n');
+    out += QLatin1Char('\n');
 
     QList<QStringList> rows;
     rows.append({QStringLiteral("INTERVAL"), QStringLiteral("CYCLES"), QStringLiteral("COUNT"), QStringLiteral("OK"),
@@ -294,6 +324,7 @@ QJsonObject PollResults::sweepJson() const
         {QStringLiteral("count"), p.count > 0 ? QJsonValue(double(p.count)) : QJsonValue()},
         {QStringLiteral("duration_ms"), p.durationNs > 0 ? QJsonValue(double(p.durationNs) / 1e6) : QJsonValue()},
         {QStringLiteral("pipeline"), m_config.engine.pipelineDepth},
+        {QStringLiteral("pace"), paceJson()},
         {QStringLiteral("stopped"), m_outcome.report.stopped},
         {QStringLiteral("interrupted"), m_outcome.interrupted},
         {QStringLiteral("runs"), runs},

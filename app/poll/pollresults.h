@@ -38,6 +38,10 @@ public:
 
 private:
     [[nodiscard]] QString heading(const char *what) const;
+    // The device's pace the engine kept: "gap 50 ms between requests, warm-up 500 ms after
+    // connecting, limits of --profile slow.json"; empty when it kept none.
+    [[nodiscard]] QString paceText() const;
+    [[nodiscard]] QJsonObject paceJson() const;
     [[nodiscard]] QString detail(const PollRun &run) const;
     [[nodiscard]] QJsonObject runJson(const PollRun &run) const;
 

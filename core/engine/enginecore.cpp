@@ -94,6 +94,7 @@ void EngineCore::setTarget(const LinkUrl &url, const EngineOptions &options)
     m_router.reset(m_framing, options.lateWindow);
     m_frameGapNs = url.kind == LinkKind::Rtu && m_framing.framing == Framing::Rtu ? RtuFramer::t35Ns(url.serial.baud) : 0;
     m_lineQuietNs = 0;
+    m_requestGapNs = std::chrono::nanoseconds(options.requestGap).count();
     m_gapTimer.stop();
     updateBroadcastWait();
     m_recorder->setBatchInterval(options.batchIntervalMs);
@@ -103,7 +104,7 @@ void EngineCore::setTarget(const LinkUrl &url, const EngineOptions &options)
 int EngineCore::pipelineDepth() const
 {
     const bool mbap = !m_framing.delimited && (m_framing.framing == Framing::Tcp || m_framing.framing == Framing::Udp);
-    return mbap ? qMax(1, m_options.pipelineDepth) : 1;
+    return mbap && !m_options.closeAfterAnswer ? qMax(1, m_options.pipelineDepth) : 1;
 }
 
 void EngineCore::submit(const RequestItem &item, quint64 id, int itemIndex, quint64 tag)
@@ -140,6 +141,8 @@ void EngineCore::pump()
         schedulePump();
         return;
     }
+    if (m_hangUpPending)
+        return; // the link closes first (closeAfterAnswer); then this pumps again
     m_pumping = true;
     // A pipelined stream link gets the requests of one turn in one write: one system call and one
     // segment for all of them, and a server that reads what has come answers them together.
@@ -163,7 +166,7 @@ void EngineCore::pump()
 
 bool EngineCore::lineQuiet()
 {
-    if (m_frameGapNs == 0 || monotonicNowNs() >= m_lineQuietNs)
+    if (m_lineQuietNs == 0 || monotonicNowNs() >= m_lineQuietNs)
         return true;
     if (!m_gapTimer.isActive())
         m_gapTimer.start(m_lineQuietNs);
@@ -181,6 +184,8 @@ void EngineCore::resetFramer()
 void EngineCore::stageNext()
 {
     const InFlightRequest &p = m_scheduler.stage(pipelineDepth(), monotonicNowNs(), broadcastWaitNs());
+    if (m_requestGapNs > 0) // pipelined requests too go out the device's gap apart
+        m_lineQuietNs = qMax(m_lineQuietNs, p.writeStartNs + m_requestGapNs);
     ++m_counters.requestsSent;
     m_counters.bytesOut += quint64(p.sent.size());
     m_recorder->logOutgoing(p.sent, p.writeStartNs, p.out.id);
@@ -282,6 +287,8 @@ void EngineCore::finish(qsizetype index, TransactionStatus status, const QString
                         qint64 firstNs, qint64 lastNs, quint8 exceptionCode)
 {
     const InFlightRequest p = m_scheduler.takeInFlight(index);
+    if (m_requestGapNs > 0) // the next request waits the device's gap after this exchange ended
+        m_lineQuietNs = qMax(m_lineQuietNs, qMax(lastNs, monotonicNowNs()) + m_requestGapNs);
     if (retryable(status) && p.out.attempt < p.out.item.retries) {
         OutgoingRequest again = p.out;
         again.history += QStringLiteral("attempt %1: %2: %3; ").arg(again.attempt + 1).arg(transactionStatusName(status), problem);
@@ -294,9 +301,26 @@ void EngineCore::finish(qsizetype index, TransactionStatus status, const QString
     }
     if (!response.isEmpty())
         m_router.answered(p.out.item);
+    // Before the record: its listeners (a poll) submit the next request at once.
+    if (m_options.closeAfterAnswer)
+        hangUpWhenIdle();
     record(p.toTransaction(status, problem, response, firstNs, lastNs, exceptionCode), p.out.tag);
     armDeadline();
     pump();
+}
+
+void EngineCore::hangUpWhenIdle()
+{
+    if (m_hangUpPending || !m_scheduler.inFlight().isEmpty() || !m_link || m_link->state() != Link::State::Open)
+        return;
+    // Not inside the link's own callback (an answer being read): from the event loop.
+    m_hangUpPending = true;
+    QMetaObject::invokeMethod(this, [this] {
+        m_hangUpPending = false;
+        if (m_scheduler.inFlight().isEmpty() && m_link && m_link->state() == Link::State::Open)
+            closeLink();
+        pump();
+    }, Qt::QueuedConnection);
 }
 
 void EngineCore::record(Transaction transaction, quint64 tag)

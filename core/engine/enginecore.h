@@ -99,8 +99,9 @@ private:
     // Writes what stageNext() gathered in one write.
     void writeStaged();
     void armDeadline();
-    // RTU on a serial port: false (and the gap timer armed) while the line has not yet been
-    // silent t3.5 since its last frame (Serial Line V1.02, 2.5.1.1); true on every other link.
+    // False (and the gap timer armed) while the next request must wait: on an RTU serial port
+    // until the line has been silent t3.5 since its last frame (Serial Line V1.02, 2.5.1.1); on
+    // any link for the device's pace (EngineOptions::requestGap, warmUp).
     [[nodiscard]] bool lineQuiet();
     void onBytesWritten(qint64 lastByteNs);
     void onDeadline();
@@ -109,6 +110,8 @@ private:
     void finish(qsizetype index, TransactionStatus status, const QString &problem,
                 const QByteArray &response = {}, qint64 firstNs = 0, qint64 lastNs = 0, quint8 exceptionCode = 0);
     void record(Transaction transaction, quint64 tag);
+    // EngineOptions::closeAfterAnswer: closes the link, from the event loop, once nothing is in flight.
+    void hangUpWhenIdle();
     // The wait after a broadcast: the link's RS485 turnaround when its URL gives one, else the
     // engine's (Serial Line V1.02, 2.4.1). Worked out once per link, not per request.
     [[nodiscard]] qint64 broadcastWaitNs() const { return m_broadcastWaitNs; }
@@ -159,7 +162,10 @@ private:
     // RTU on a serial port: t3.5 of the line's baud rate (0: no gap kept, every other link), the
     // moment the line will have been silent that long (from the last byte read or sent), and the
     // timer (microseconds: t3.5 is 1.75 ms above 19200 baud) that sends the next request then.
+    // The line stays quiet until m_lineQuietNs also for the device's pace (EngineOptions::requestGap
+    // and warmUp), 0 until something sets it.
     qint64 m_frameGapNs = 0;
+    qint64 m_requestGapNs = 0;
     qint64 m_lineQuietNs = 0;
     DueTimer m_gapTimer;
     bool m_pumpScheduled = false;
@@ -167,6 +173,7 @@ private:
     bool m_deferPump = false;      // inside a link callback: pump from the event loop
     bool m_processing = false;     // handling the frames of one read
     bool m_pumpAfterProcessing = false;
+    bool m_hangUpPending = false;  // closeAfterAnswer: the link closes before the next request
     bool m_closingQuietly = false; // closing on purpose: the closed() that follows says nothing new
     bool m_linkLost = false;       // flushing what a lost link left: a cut answer is a link error
 };

@@ -63,6 +63,8 @@ void EngineCore::onOpened()
     if (const auto *network = qobject_cast<const NetworkLink *>(m_link))
         m_recorder->noteEndpoints(network->localEndpoint(), network->peerEndpoint());
     resetFramer();
+    if (m_options.warmUp.count() > 0) // the device's warm-up: its first request waits (lineQuiet)
+        m_lineQuietNs = qMax(m_lineQuietNs, monotonicNowNs() + qint64(m_options.warmUp.count()));
     Q_EMIT linkOpened();
     schedulePump();
 }

@@ -2,6 +2,8 @@
 
 #include <QtCore/QtGlobal>
 
+#include <chrono>
+
 namespace mbscope {
 
 // How the engine talks on a link, beyond what the target URL says.
@@ -24,6 +26,18 @@ struct EngineOptions {
     int lateWindow = 32;
     // How often observers get batched updates, at most (~30 a second).
     int batchIntervalMs = 33;
+    // The device's pace (a profile's limits.minGapMs and warmUpMs, or poll's --gap and --warm-up):
+    // no request is written sooner than requestGap after the one before it was written, nor
+    // sooner than requestGap after the previous exchange ended (its answer's last byte, its
+    // timeout, its link error); none sooner than warmUp after the link opened (every time it
+    // opens: a device that hangs up after each answer warms up again). Zero: no wait.
+    std::chrono::nanoseconds requestGap{0};
+    std::chrono::nanoseconds warmUp{0};
+    // The device hangs up after each answer (a profile's limits.closesAfterAnswer): once an
+    // exchange ends with nothing else in flight the engine closes the link itself, and opens a new
+    // one for the next request, instead of writing into a connection the device is closing. One
+    // request in flight at a time.
+    bool closeAfterAnswer = false;
 };
 
 } // namespace mbscope

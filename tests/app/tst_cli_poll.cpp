@@ -49,6 +49,9 @@ private slots:
     void pollWrites();
     void pollPipelined();
     void pollDuration();
+    void pacedByProfile_data();
+    void pacedByProfile();
+    void paceOptions();
     void pollHistogram();
     void sweepTable();
     void sweepJson();
@@ -213,6 +216,85 @@ void TestCliPoll::pollDuration()
     QVERIFY2(r.exitCode == 0, r.describe());
     QVERIFY(r.json().value(QStringLiteral("count")).toDouble() >= 1);
     QCOMPARE(r.json().value(QStringLiteral("count")).toDouble(), r.json().value(QStringLiteral("ok")).toDouble());
+}
+
+void TestCliPoll::pacedByProfile_data()
+{
+    QTest::addColumn<QString>("limits");
+    QTest::addColumn<int>("pieces");      // requests a cycle's read of 40 registers becomes
+    QTest::addColumn<bool>("newLinkEach"); // the device hangs up after each answer
+    QTest::addColumn<double>("leastMs");  // the pace's own floor for 3 cycles
+    // A read of 40 over 16 a request: 16, 16, 8; 9 requests 40 ms apart after a warm-up of 200 ms.
+    QTest::newRow("gap, warm-up, largest read")
+        << QStringLiteral(R"({"minGapMs": 40, "warmUpMs": 200, "maxQuantity": {"0x03": 16}})") << 3 << false << 200.0 + 8 * 40;
+    // Every request on a new connection, each waiting the warm-up again.
+    QTest::newRow("hangs up, warm-up each time")
+        << QStringLiteral(R"({"closesAfterAnswer": true, "warmUpMs": 100})") << 1 << true << 3 * 100.0;
+}
+
+void TestCliPoll::pacedByProfile()
+{
+    // issue 28: the device's limits, as scan --profile-out records them, kept by poll --profile.
+    QFETCH(QString, limits);
+    QFETCH(int, pieces);
+    QFETCH(bool, newLinkEach);
+    QFETCH(double, leastMs);
+    const QString profile = m_dir.filePath(QStringLiteral("paced-%1.json").arg(QTest::currentDataTag()[0] == 'g' ? 1 : 2));
+    QVERIFY(writeFile(profile, QStringLiteral(R"({"name": "paced", "limits": %1,
+        "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})").arg(limits).toUtf8()));
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), profile, QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const QStringList read = {QStringLiteral("poll"), QStringLiteral("--target"), sim.url(), QStringLiteral("--function"),
+                              QStringLiteral("3"), QStringLiteral("--address"), QStringLiteral("0"), QStringLiteral("--quantity"),
+                              QStringLiteral("40"), QStringLiteral("--interval"), QStringLiteral("0"), QStringLiteral("--count"),
+                              QStringLiteral("3"), QStringLiteral("--timeout"), QStringLiteral("300ms"), QStringLiteral("--json")};
+    // Asked as if the device had no limits, it refuses or ignores some of it: the limits are real.
+    const CliResult careless = runMbscope(read);
+    QVERIFY2(careless.finished, careless.describe());
+    QVERIFY2(careless.json().value(QStringLiteral("ok")).toDouble() < 3.0 * pieces, careless.describe());
+
+    const CliResult r = runMbscope(read + QStringList{QStringLiteral("--profile"), profile});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    const QJsonObject o = r.json();
+    QCOMPARE(o.value(QStringLiteral("count")).toDouble(), 3.0 * pieces);
+    QCOMPARE(o.value(QStringLiteral("ok")).toDouble(), 3.0 * pieces);
+    QCOMPARE(o.value(QStringLiteral("requests")).toArray().size(), pieces);
+    const QJsonObject pace = o.value(QStringLiteral("pace")).toObject();
+    QCOMPARE(pace.value(QStringLiteral("profile")).toString(), profile);
+    // A floor, not a speed: the pace can only make the run longer than its own waits.
+    QVERIFY2(o.value(QStringLiteral("elapsed_ms")).toDouble() >= leastMs, r.describe());
+    const double connects = o.value(QStringLiteral("engine")).toObject().value(QStringLiteral("connects")).toDouble();
+    if (newLinkEach) {
+        QCOMPARE(connects, 3.0);
+    } else {
+        QCOMPARE(connects, 1.0);
+        QCOMPARE(o.value(QStringLiteral("requests")).toArray().at(2).toString(), QStringLiteral("Read Holding Registers 32 x8"));
+        QVERIFY2(r.errText().contains(QLatin1String("Read Holding Registers 0 x40 asks 40 with 0x03, more than the device takes "
+                                                    "(limits.maxQuantity 16 of --profile ")),
+                 r.describe());
+        QVERIFY2(r.errText().contains(QLatin1String("read as 3 requests of at most 16 (0-15, 16-31, 32-39)")), r.describe());
+    }
+}
+
+void TestCliPoll::paceOptions()
+{
+    // --gap and --warm-up alone, and what a bad one says.
+    const CliResult r = poll({QStringLiteral("--gap"), QStringLiteral("30ms"), QStringLiteral("--warm-up"), QStringLiteral("100ms"),
+                              QStringLiteral("--interval"), QStringLiteral("0"), QStringLiteral("--count"), QStringLiteral("4")});
+    QVERIFY2(r.exitCode == 0, r.describe());
+    QVERIFY2(r.outText().contains(QLatin1String("pace                    gap 30 ms between requests, warm-up 100 ms after connecting\n")),
+             r.describe());
+    const CliResult bad = poll({QStringLiteral("--gap"), QStringLiteral("fast"), QStringLiteral("--count"), QStringLiteral("1")});
+    QCOMPARE(bad.exitCode, 2);
+    QVERIFY2(bad.errText().startsWith(QLatin1String("mbscope poll: --gap: ")), bad.describe());
+    const CliResult missing = poll({QStringLiteral("--profile"), m_dir.filePath(QStringLiteral("none.json")), QStringLiteral("--count"),
+                                    QStringLiteral("1")});
+    QCOMPARE(missing.exitCode, 2);
+    QVERIFY2(missing.errText().startsWith(QLatin1String("mbscope poll: --profile ")), missing.describe());
 }
 
 void TestCliPoll::pollHistogram()
