@@ -12,8 +12,6 @@
 #include <QtCore/QFileInfo>
 #include <QtCore/QTextStream>
 
-#include <cmath>
-
 namespace mbscope::app {
 
 namespace {
@@ -180,13 +178,8 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
         }
         limits = *loaded;
     }
-    // The profile's figures with some to spare, in whole milliseconds: the device counts its gap
-    // from a request's arrival (this end waits from the end of the exchange, later still: 1 ms
-    // more), and its warm-up from when it took the connection in, which can be milliseconds after
-    // this end saw it open (a tenth more, at least 2 ms).
-    const auto ms = [](double value) { return std::chrono::nanoseconds(qint64(std::ceil(value)) * 1'000'000); };
-    out.engine.requestGap = limits.minGapMs > 0 ? ms(limits.minGapMs + 1) : ms(0);
-    out.engine.warmUp = limits.warmUpMs > 0 ? ms(limits.warmUpMs + qMax(2.0, limits.warmUpMs / 10)) : ms(0);
+    out.engine.requestGap = limits.clientGap(); // with some to spare (DeviceLimits)
+    out.engine.warmUp = limits.clientWarmUp();
     out.engine.closeAfterAnswer = limits.closesAfterAnswer;
     for (const auto &[option, value] : {std::pair{&m_gap, &out.engine.requestGap}, std::pair{&m_warmUp, &out.engine.warmUp}}) {
         if (!parser.isSet(*option))

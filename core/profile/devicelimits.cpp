@@ -1,5 +1,9 @@
 #include "devicelimits.h"
 
+#include <QtCore/QtGlobal>
+
+#include <cmath>
+
 namespace mbscope {
 
 QString DeviceLimits::unknownUnitName(UnknownUnit policy)
@@ -16,6 +20,16 @@ QString DeviceLimits::unknownUnitName(UnknownUnit policy)
 QString DeviceLimits::functionKey(int code)
 {
     return QStringLiteral("0x%1").arg(code, 2, 16, QLatin1Char('0')).toUpper().replace(QLatin1String("0X"), QLatin1String("0x"));
+}
+
+std::chrono::milliseconds DeviceLimits::clientGap() const
+{
+    return std::chrono::milliseconds(minGapMs > 0 ? qint64(std::ceil(minGapMs + 1)) : 0);
+}
+
+std::chrono::milliseconds DeviceLimits::clientWarmUp() const
+{
+    return std::chrono::milliseconds(warmUpMs > 0 ? qint64(std::ceil(warmUpMs + qMax(2.0, warmUpMs / 10))) : 0);
 }
 
 std::optional<int> DeviceLimits::parseFunctionKey(const QString &key)

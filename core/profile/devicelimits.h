@@ -3,6 +3,7 @@
 #include <QtCore/QMap>
 #include <QtCore/QString>
 
+#include <chrono>
 #include <optional>
 
 namespace mbscope {
@@ -35,6 +36,13 @@ struct DeviceLimits {
     bool closesAfterAnswer = false;
     bool answersBroadcasts = false;         // "answersBroadcasts": serial lines answer unit 0 (a deviation)
 
+    // The waits a client keeps for minGapMs and warmUpMs, with some to spare, in whole
+    // milliseconds (0: none): the device counts its gap from a request's arrival (a client waits
+    // from the end of the exchange, later still: 1 ms more) and its warm-up from when it took the
+    // connection in, which can be milliseconds after the client saw it open (a tenth more, at
+    // least 2 ms). poll --profile and watches made from a profile keep these.
+    [[nodiscard]] std::chrono::milliseconds clientGap() const;
+    [[nodiscard]] std::chrono::milliseconds clientWarmUp() const;
     [[nodiscard]] bool limitsRequests() const { return minGapMs > 0 || !maxQuantity.isEmpty() || warmUpMs > 0; }
     [[nodiscard]] static QString unknownUnitName(UnknownUnit policy); // "first", "exception", "silent", "auto"
     // A function code as a "maxQuantity" key: "0x03", "0x0F". And back: hex text ("0x03", "0X0f")

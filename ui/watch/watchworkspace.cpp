@@ -399,10 +399,10 @@ int WatchWorkspace::addFromProfile(const QString &profileName, int unit, const Q
         return 0;
     }
     // The device's least gap between requests (limits.minGapMs) and its warm-up after connecting
-    // (limits.warmUpMs) become its link's gapMs and warmUpMs unless those already wait longer:
-    // the watches never ask it too soon.
-    const int gap = int(std::ceil(loaded.profile.limits.minGapMs));
-    const int warmUp = int(std::ceil(loaded.profile.limits.warmUpMs));
+    // (limits.warmUpMs), with some to spare (DeviceLimits::clientGap), become its link's gapMs and
+    // warmUpMs unless those already wait longer: the watches never ask it too soon.
+    const int gap = int(loaded.profile.limits.clientGap().count());
+    const int warmUp = int(loaded.profile.limits.clientWarmUp().count());
     if (gap > 0 || warmUp > 0) {
         auto link = std::find_if(m_watches.links.begin(), m_watches.links.end(),
                                  [&](const WatchLinkSettings &l) { return l.target == target; });
