@@ -85,8 +85,9 @@ QString RollingCapture::nextPart(const QString &closedPath)
         parts = m_partsDirectory;
     }
     const QString path = parts.newJournalPath(m_start, m_target, ++m_part);
-    if (!CaptureDirectory::markOpen(path))
-        return {};
+    // Without its marker the part is still tried: the journal's own open then says what is wrong
+    // with the place ("cannot create ...: No such file or directory"), which the window shows.
+    CaptureDirectory::markOpen(path);
     {
         const QMutexLocker lock(&m_mutex);
         m_path = path;

@@ -60,6 +60,7 @@ bool TrafficLog::openJournal(const QString &path, const TrafficJournalWriter::Op
         return false;
     m_journalOptions = options;
     m_rotationError.clear();
+    m_stopSaid = false;
     for (qsizetype i = 0; i < m_links.size(); ++i)
         m_journal.addLink(quint16(i), m_links.at(i));
     for (auto it = m_endpoints.cbegin(); it != m_endpoints.cend(); ++it)
@@ -89,12 +90,14 @@ void TrafficLog::flushIfDue(qint64 nowNs)
 {
     QMutexLocker lock(m_lock.get());
     m_journal.flushIfDue(nowNs);
+    sayIfStopped();
 }
 
 void TrafficLog::flush()
 {
     QMutexLocker lock(m_lock.get());
     m_journal.flush();
+    sayIfStopped();
 }
 
 void TrafficLog::setJournalRotation(qint64 maxBytes, std::function<QString(const QString &)> next)
@@ -111,6 +114,22 @@ void TrafficLog::rotateJournal()
     QString error;
     if (next.isEmpty() || !openJournal(next, m_journalOptions, false, &error))
         m_rotationError = next.isEmpty() ? QStringLiteral("%1: no next journal part was given").arg(closed) : error;
+    sayIfStopped();
+}
+
+void TrafficLog::setJournalStopped(std::function<void(const QString &)> handler)
+{
+    QMutexLocker lock(m_lock.get());
+    m_journalStopped = std::move(handler);
+}
+
+void TrafficLog::sayIfStopped()
+{
+    if (m_stopSaid || (m_rotationError.isEmpty() && m_journal.error().isEmpty()))
+        return;
+    m_stopSaid = true;
+    if (m_journalStopped)
+        m_journalStopped(m_rotationError.isEmpty() ? m_journal.error() : m_rotationError);
 }
 
 quint16 TrafficLog::addLink(const QString &name)
@@ -194,6 +213,8 @@ quint64 TrafficLog::append(qint64 tNs, TrafficDirection direction, quint16 link,
         m_journal.addFrame(TrafficEntry{sequence, tNs, transactionId, link, direction, verdict, bytes});
         if (m_rotateBytes > 0 && m_journal.bytesWritten() >= m_rotateBytes)
             rotateJournal();
+        else if (!m_journal.error().isEmpty())
+            sayIfStopped();
     }
     while (m_size > 0 && (m_size > m_limits.maxEntries || m_retainedBytes > m_limits.maxBytes))
         evictOldest();

@@ -69,6 +69,11 @@ public:
     void setJournalRotation(qint64 maxBytes, std::function<QString(const QString &closedPath)> next);
     // Why journaling stopped at a rotation (the next part could not be created), or empty.
     [[nodiscard]] const QString &rotationError() const { return m_rotationError; }
+    // Called once when journaling stops on its own while frames still come: a rotation whose next
+    // part cannot be made (rotationError), or the journal's first write error (a full disk). In
+    // the thread that appended or flushed (an engine's), under the log's lock: the handler only
+    // hands the problem over (a queued call), and must not call the log.
+    void setJournalStopped(std::function<void(const QString &problem)> handler);
     [[nodiscard]] const TrafficJournalWriter &journal() const { return m_journal; }
 
     // A short id for a link's name ("tcp://192.168.1.10:502"); the same name gives the same id.
@@ -129,6 +134,8 @@ private:
     void evictOldest();
     [[nodiscard]] TrafficEntry entryAt(const Chunk &chunk, quint32 index) const;
     void rotateJournal();
+    // The journal stopped (rotationError, or its write error): says so, once, to the handler.
+    void sayIfStopped();
     quint16 appendLink(const QString &name);
 
     Limits m_limits;
@@ -145,6 +152,8 @@ private:
     qint64 m_rotateBytes = 0;
     std::function<QString(const QString &)> m_nextJournal;
     QString m_rotationError;
+    std::function<void(const QString &)> m_journalStopped;
+    bool m_stopSaid = false;
     std::unique_ptr<QMutex> m_lock; // shared logs only
 };
 

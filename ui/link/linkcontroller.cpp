@@ -9,6 +9,7 @@
 #include "engine/transactionengine.h"
 #include "traffic/trafficmetadata.h"
 
+#include <QtCore/QDir>
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QFileInfo>
@@ -111,6 +112,35 @@ void LinkController::setRecording(bool enabled, const CaptureDirectory &director
     m_capturePolicy = policy;
 }
 
+TrafficLog *LinkController::startRecording(const QString &target, const RollingCapture::Describe &describe)
+{
+    m_capture = std::make_unique<RollingCapture>(m_captures, m_capturePolicy);
+    if (!m_capture->start(target, &m_recordingProblem, describe)) {
+        m_capture.reset();
+        Q_EMIT recordingChanged(QString(), m_recordingProblem);
+        return nullptr;
+    }
+    // A journal that stops while frames still come (its next part cannot be made, a full disk)
+    // is said at once, not found out when the recording is opened: from the writing engine's
+    // thread to this one.
+    const RollingCapture *capture = m_capture.get();
+    m_capture->log()->setJournalStopped([this, capture](const QString &problem) {
+        QMetaObject::invokeMethod(this, [this, capture, problem] {
+            if (m_capture.get() == capture)
+                onRecordingStopped(problem);
+        }, Qt::QueuedConnection);
+    });
+    Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
+    return m_capture->log();
+}
+
+void LinkController::onRecordingStopped(const QString &problem)
+{
+    m_recordingProblem = tr("the recording stopped: %1; what came before is in %2")
+                             .arg(problem, QDir::toNativeSeparators(recordingPath()));
+    Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
+}
+
 QString LinkController::recordingPath() const
 {
     return m_capture ? m_capture->currentPath() : QString();
@@ -189,13 +219,8 @@ void LinkController::connectTo(const LinkUrl &url)
     m_engine->setTarget(url);
     m_recordingProblem.clear();
     if (m_recordingEnabled) {
-        m_capture = std::make_unique<RollingCapture>(m_captures, m_capturePolicy);
-        if (m_capture->start(url.toString(), &m_recordingProblem)) {
-            m_engine->setTrafficLog(m_capture->log());
-        } else {
-            m_capture.reset();
-        }
-        Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
+        if (TrafficLog *log = startRecording(url.toString()))
+            m_engine->setTrafficLog(log);
         if (m_capture)
             Q_EMIT trafficLogChanged(m_capture->log());
     }
@@ -215,12 +240,7 @@ void LinkController::listenTo(const LinkUrl &url)
     m_recordingProblem.clear();
     TrafficLog *log = nullptr;
     if (m_recordingEnabled) {
-        m_capture = std::make_unique<RollingCapture>(m_captures, m_capturePolicy);
-        if (m_capture->start(url.toString(), &m_recordingProblem))
-            log = m_capture->log();
-        else
-            m_capture.reset();
-        Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
+        log = startRecording(url.toString());
     }
     m_listener = std::make_unique<BusListener>(url, log);
     if (log)
@@ -269,12 +289,7 @@ void LinkController::tapTo(const TapSetup &setup)
             metadata.settings.insert(QStringLiteral("tap"), QJsonArray::fromStringList(setup.arguments()));
             metadata.target = setup.settings.routes.size() == 1 ? setup.settings.routes.constFirst().target.toString() : QString();
         };
-        m_capture = std::make_unique<RollingCapture>(m_captures, m_capturePolicy);
-        if (m_capture->start(QStringLiteral("tap ") + endpoints.value(0), &m_recordingProblem, describe))
-            log = m_capture->log();
-        else
-            m_capture.reset();
-        Q_EMIT recordingChanged(recordingPath(), m_recordingProblem);
+        log = startRecording(QStringLiteral("tap ") + endpoints.value(0), describe);
     }
     connect(m_tap.get(), &TapRunner::framesLogged, this, &LinkController::onTapFrames);
     connect(m_tap.get(), &TapRunner::countersChanged, this, &LinkController::tapCountersChanged);

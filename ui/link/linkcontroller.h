@@ -124,7 +124,8 @@ Q_SIGNALS:
     void progressChanged(const mbscope::EngineProgress &progress);
     void pollingChanged(bool polling);
     void pollFinished(const mbscope::PollReport &report);
-    // Recording started (path), stopped (empty path), or could not start (problem).
+    // Recording started (path), stopped (empty path), could not start (problem), or stopped on
+    // its own while frames still came (the path of what came before, and the problem).
     void recordingChanged(const QString &path, const QString &problem);
     // The recording's log for other writers (the watches, the scans): a new one once a
     // connection's recording started, nullptr before it finishes. Connect directly: a receiver
@@ -164,6 +165,11 @@ private:
     EngineCounters m_countersBefore; // this connection's traffic not counted by its engine (a plan's, a replay's)
     bool m_polling = false;
     bool m_recordingEnabled = false;
+    // A new recording into m_captures for target; its log, or nullptr with m_recordingProblem
+    // saying why. recordingChanged() says which.
+    TrafficLog *startRecording(const QString &target, const RollingCapture::Describe &describe = {});
+    void onRecordingStopped(const QString &problem);
+
     CaptureDirectory m_captures;
     RollingCapture::Policy m_capturePolicy;
     std::unique_ptr<RollingCapture> m_capture;

@@ -70,7 +70,12 @@ void RecordingControl::apply(const RecordingSettings &settings)
 
 void RecordingControl::onRecordingChanged(const QString &path, const QString &problem)
 {
-    if (!problem.isEmpty())
+    if (!problem.isEmpty() && !path.isEmpty()) {
+        // It stopped on its own: said where it stays in sight until dismissed, as a recovery is.
+        m_offered.clear();
+        m_banner->showNotice(tr("<b>Not recording any more</b>: %1.").arg(problem.toHtmlEscaped()));
+        Q_EMIT message(tr("Not recording: %1").arg(problem));
+    } else if (!problem.isEmpty())
         Q_EMIT message(tr("Not recording: %1").arg(problem));
     else if (!path.isEmpty())
         Q_EMIT message(tr("Recording to %1").arg(QDir::toNativeSeparators(path)));
@@ -112,8 +117,10 @@ bool RecordingControl::recover()
 
 void RecordingControl::dismissRecovery()
 {
-    if (m_offered.isEmpty())
+    if (m_offered.isEmpty()) {
+        m_banner->hide(); // a notice that the recording stopped
         return;
+    }
     // Kept as it is, under the folder's quota like every other journal; no longer offered.
     CaptureDirectory::markClosed(std::exchange(m_offered, {}));
     m_banner->hide();

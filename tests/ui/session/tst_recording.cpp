@@ -51,6 +51,7 @@ private Q_SLOTS:
     void signalsCloseTheJournal_data();
     void signalsCloseTheJournal();
     void watchesAndScansAreRecordedAndListed();
+    void stoppingOnItsOwnIsSaid();
 
 private:
     QTemporaryDir m_captures;
@@ -319,6 +320,54 @@ void TestRecording::watchesAndScansAreRecordedAndListed()
     QVERIFY2(c.out >= 5 + 3, qPrintable(QString::number(c.out)));
     // The composer's link, the watch's and the scan's: three links named by the one URL.
     QCOMPARE(c.recovery.links.count(url), 3);
+}
+
+
+void TestRecording::stoppingOnItsOwnIsSaid()
+{
+    // A recording whose next part cannot be made (its folder was removed under it) stops: the
+    // window says so at once, in a notice that stays, instead of recording nothing unseen.
+    EmbeddedSimulator sim;
+    const LinkUrl url = startSimulator(sim);
+    MainWindow window;
+    QTemporaryDir captures;
+    const QString folder = captures.filePath(QStringLiteral("captures"));
+    QVERIFY(QDir().mkpath(folder));
+    RollingCapture::Policy policy;
+    policy.rotateBytes = 2048; // a part every few exchanges
+    window.controller()->setRecording(true, CaptureDirectory(folder), policy);
+    QSignalSpy recording(window.controller(), &LinkController::recordingChanged);
+    QSignalSpy latest(window.controller(), &LinkController::latestTransaction);
+    window.controller()->connectTo(url);
+    const QString first = window.controller()->recordingPath();
+    QVERIFY(!first.isEmpty());
+    QVERIFY(window.controller()->send(kRead) > 0);
+    QVERIFY(latest.wait(5000));
+    QVERIFY(QDir(folder).removeRecursively());
+    for (int i = 0; i < 60 && recording.count() < 2; ++i) {
+        QVERIFY(window.controller()->send(kRead) > 0);
+        QVERIFY(latest.wait(5000));
+        QCoreApplication::processEvents();
+    }
+    QTRY_COMPARE_WITH_TIMEOUT(recording.count(), 2, 5000);
+    const QString problem = recording.last().at(1).toString();
+    QVERIFY2(problem.startsWith(QStringLiteral("the recording stopped: ")), qPrintable(problem));
+    QVERIFY2(problem.contains(QStringLiteral("No such file or directory")), qPrintable(problem));
+    QCOMPARE(window.controller()->recordingProblem(), problem);
+    NoticeBanner *banner = window.recording()->recoveryBanner();
+    QVERIFY(!banner->isHidden());
+    QVERIFY2(banner->text().contains(QStringLiteral("Not recording any more")), qPrintable(banner->text()));
+    QVERIFY2(banner->text().contains(QStringLiteral("No such file or directory")), qPrintable(banner->text()));
+    // Said once, however many frames come after.
+    for (int i = 0; i < 5; ++i) {
+        QVERIFY(window.controller()->send(kRead) > 0);
+        QVERIFY(latest.wait(5000));
+    }
+    QCoreApplication::processEvents();
+    QCOMPARE(recording.count(), 2);
+    Q_EMIT banner->dismissed();
+    QVERIFY(banner->isHidden());
+    window.controller()->disconnectLink();
 }
 
 QTEST_MAIN(TestRecording)
