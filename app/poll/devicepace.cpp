@@ -75,8 +75,8 @@ QStringList DevicePace::fitReads(RequestPlan &plan, const QMap<quint8, int> &max
             notes.append(over + (builtRead ? QStringLiteral(": one value of --format takes %1 registers, more than a read "
                                                             "may ask; sent as given")
                                                  .arg(whole)
-                                           : QStringLiteral(": sent as given (only reads built from --function/--address/"
-                                                            "--quantity are cut)")));
+                                           : QStringLiteral(": sent as given (only reads built from the read "
+                                                            "options, --function or -t, are cut)")));
             continue;
         }
         AduOptions options;
@@ -100,7 +100,7 @@ QStringList DevicePace::fitReads(RequestPlan &plan, const QMap<quint8, int> &max
             piece.item = item;
             fitted.append(piece);
             const int shown = address + (r.oneBased ? 1 : 0);
-            pieces.append(QStringLiteral("%1-%2").arg(shown).arg(shown + count - 1));
+            pieces.append(count == 1 ? QString::number(shown) : QStringLiteral("%1-%2").arg(shown).arg(shown + count - 1));
         }
         if (plan.requests.size() == 1) // the heading says what the cycle reads, all together
             plan.summary = RequestNames::describeItems(code, r.unit, r.address, r.quantity,

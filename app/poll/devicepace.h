@@ -17,7 +17,7 @@ namespace mbscope::app {
 class DevicePace
 {
 public:
-    // Cuts each read the options built (--function/--address/--quantity, -t) that asks more than
+    // Cuts each read the read options built (--function or -t, --address, --quantity) that asks more than
     // maxQuantity of its function into consecutive reads of at most that many, each ending on a
     // whole value of every --format, sent one after the other in the cycle. Requests sent as typed
     // (--hex) and writes are sent as given. Returns a line for each request it cut and each it

@@ -63,16 +63,17 @@ PollOptions::PollOptions(bool sweep)
             QStringLiteral("file"))
     , m_gap(QStringLiteral("gap"),
             QStringLiteral("The device's pace: no request sooner than this after the previous one was sent or its "
-                           "exchange ended (answer or timeout): 50ms... (default: the --profile's minGapMs, else 0)."),
+                           "exchange ended (answer or timeout): 50ms... (default: the --profile's minGapMs and 1 ms, "
+                           "else 0)."),
             QStringLiteral("duration"))
     , m_warmUp(QStringLiteral("warm-up"),
                QStringLiteral("After the link opens (each time), wait this long before the first request: 2s... "
-                              "(default: the --profile's warmUpMs, else 0)."),
+                              "(default: the --profile's warmUpMs and a tenth, at least 2 ms, else 0)."),
                QStringLiteral("duration"))
     , m_profile(QStringLiteral("profile"),
                 QStringLiteral("Honour the limits of a device profile (shipped name or JSON file, as scan --profile-out "
                                "writes them): its minGapMs and warmUpMs (unless --gap or --warm-up is given), and reads "
-                               "built with --function/--quantity that ask more than its maxQuantity are cut into "
+                               "built with --function or -t that ask more than its maxQuantity are cut into "
                                "several; a device that hangs up after each answer (closesAfterAnswer) gets a new connection for "
                                "each request."),
                 QStringLiteral("profile"))
@@ -178,18 +179,53 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
         }
         limits = *loaded;
     }
-    out.engine.requestGap = limits.clientGap(); // with some to spare (DeviceLimits)
-    out.engine.warmUp = limits.clientWarmUp();
-    out.engine.closeAfterAnswer = limits.closesAfterAnswer;
-    for (const auto &[option, value] : {std::pair{&m_gap, &out.engine.requestGap}, std::pair{&m_warmUp, &out.engine.warmUp}}) {
-        if (!parser.isSet(*option))
-            continue;
-        const DurationResult d = parseDuration(parser.value(*option));
-        if (!d.ok()) {
-            err << prefix << "--" << option->names().constFirst() << ": " << d.error << '\n';
-            return false;
+    // The profile's waits with some to spare (DeviceLimits::clientGap); --gap and --warm-up win.
+    const QString ofProfile = QStringLiteral(" of --profile %1").arg(out.profile);
+    const struct {
+        const QCommandLineOption *option;
+        std::chrono::nanoseconds *value;
+        std::chrono::nanoseconds fromProfile;
+        QString what;
+        QString limit;
+    } waits[] = {
+        {&m_gap, &out.engine.requestGap, limits.clientGap(), QStringLiteral("gap %1 between requests"),
+         QStringLiteral("minGapMs %1%2, 1 ms to spare").arg(limits.minGapMs).arg(ofProfile)},
+        {&m_warmUp, &out.engine.warmUp, limits.clientWarmUp(), QStringLiteral("warm-up %1 after connecting"),
+         QStringLiteral("warmUpMs %1%2, a tenth to spare").arg(limits.warmUpMs).arg(ofProfile)},
+    };
+    for (const auto &wait : waits) {
+        QString source = wait.limit;
+        *wait.value = wait.fromProfile;
+        if (parser.isSet(*wait.option)) {
+            const DurationResult d = parseDuration(parser.value(*wait.option));
+            if (!d.ok()) {
+                err << prefix << "--" << wait.option->names().constFirst() << ": " << d.error << '\n';
+                return false;
+            }
+            *wait.value = std::chrono::nanoseconds(d.ns);
+            source = QStringLiteral("--") + wait.option->names().constFirst();
         }
-        *value = std::chrono::nanoseconds(d.ns);
+        if (wait.value->count() > 0)
+            out.pace.append(wait.what.arg(formatDuration(wait.value->count())) + QStringLiteral(" (%1)").arg(source));
+    }
+    out.engine.closeAfterAnswer = limits.closesAfterAnswer;
+    if (limits.closesAfterAnswer)
+        out.pace.append(QStringLiteral("a new connection for each request (closesAfterAnswer%1)").arg(ofProfile));
+    if (!limits.maxQuantity.isEmpty()) {
+        QStringList largest;
+        for (auto it = limits.maxQuantity.cbegin(); it != limits.maxQuantity.cend(); ++it)
+            largest.append(QStringLiteral("%1 %2").arg(DeviceLimits::functionKey(it.key())).arg(it.value()));
+        out.pace.append(QStringLiteral("reads cut to maxQuantity %1%2").arg(largest.join(QStringLiteral(", ")), ofProfile));
+    }
+    if (!out.profile.isEmpty() && out.pace.isEmpty())
+        out.pace.append(QStringLiteral("none: --profile %1 has no minGapMs, warmUpMs, maxQuantity or closesAfterAnswer")
+                            .arg(out.profile));
+    // One request at a time when each must wait for the one before it.
+    if (out.engine.pipelineDepth > 1 && (out.engine.requestGap.count() > 0 || out.engine.closeAfterAnswer)) {
+        err << prefix << "--pipeline " << out.engine.pipelineDepth << ": one request at a time: "
+            << (out.engine.closeAfterAnswer ? "the device hangs up after each answer" : "each request waits the gap after the one before it")
+            << Qt::endl;
+        out.engine.pipelineDepth = 1;
     }
 
     // --record and --force first: --force is the policy for --histogram and --csv too.
@@ -239,6 +275,7 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
     for (const QString &note : DevicePace::fitReads(out.plan, limits.maxQuantity, out.target.url,
                                                      QStringLiteral("--profile %1").arg(out.profile)))
         err << prefix << note << '\n';
+    err.flush();
     for (const PlannedRequest &r : out.plan.requests)
         out.settings.poll.items.append(r.item);
     return true;

@@ -30,6 +30,7 @@ struct PollConfig {
     PrintSettings print;      // --print values|frames, --frame-log FILE
     QString csvPath;          // poll --csv FILE; empty: none
     QString profile;          // --profile: the device profile whose limits the poll honours; empty: none
+    QStringList pace;         // what of the device's pace the engine keeps, each with where it came from
 };
 
 // The options poll and sweep share, and the one each has alone:

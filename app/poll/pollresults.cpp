@@ -220,16 +220,7 @@ QJsonObject PollResults::pollJson() const
 
 QString PollResults::paceText() const
 {
-    QStringList parts;
-    if (m_config.engine.requestGap.count() > 0)
-        parts.append(QStringLiteral("gap %1 between requests").arg(formatDuration(m_config.engine.requestGap.count())));
-    if (m_config.engine.warmUp.count() > 0)
-        parts.append(QStringLiteral("warm-up %1 after connecting").arg(formatDuration(m_config.engine.warmUp.count())));
-    if (m_config.engine.closeAfterAnswer)
-        parts.append(QStringLiteral("a new connection for each request (the device hangs up after each answer)"));
-    if (!m_config.profile.isEmpty())
-        parts.append(QStringLiteral("limits of --profile %1").arg(m_config.profile));
-    return parts.join(QStringLiteral(", "));
+    return m_config.pace.join(QStringLiteral(", "));
 }
 
 QJsonObject PollResults::paceJson() const
@@ -257,7 +248,7 @@ QString PollResults::sweepText() const
     out += QLatin1Char('\n');
 
     QList<QStringList> rows;
-    rows.append({QStringLiteral("INTERVAL"), QStringLiteral("CYCLES"), QStringLiteral("COUNT"), QStringLiteral("OK"),
+    rows.append({QStringLiteral("INTERVAL"), QStringLiteral("CYCLES"), QStringLiteral("OVERRUNS"), QStringLiteral("COUNT"), QStringLiteral("OK"),
                  QStringLiteral("FAILED"), QStringLiteral("ERROR RATE"), QStringLiteral("MIN ms"), QStringLiteral("MEAN ms"),
                  QStringLiteral("P50 ms"), QStringLiteral("P99 ms"), QStringLiteral("MAX ms")});
     for (const PollRun &run : m_outcome.report.runs) {
@@ -268,7 +259,7 @@ QString PollResults::sweepText() const
         QString interval = formatDuration(run.intervalNs);
         if (run.stopped)
             interval += QLatin1Char('*');
-        rows.append({interval, QString::number(run.cycles), QString::number(st.count()), QString::number(st.ok()),
+        rows.append({interval, QString::number(run.cycles), QString::number(run.overruns), QString::number(st.count()), QString::number(st.ok()),
                      QString::number(st.failed()), QString::number(100.0 * st.errorRate(), 'f', 2) + QStringLiteral(" %"),
                      figure(double(l.minNs())), figure(l.meanNs()), figure(double(l.medianNs())),
                      figure(double(l.percentileNs(99))), figure(double(l.maxNs()))});

@@ -38,8 +38,8 @@ public:
 
 private:
     [[nodiscard]] QString heading(const char *what) const;
-    // The device's pace the engine kept: "gap 50 ms between requests, warm-up 500 ms after
-    // connecting, limits of --profile slow.json"; empty when it kept none.
+    // The device's pace the engine kept, each with where it came from: "gap 51 ms between
+    // requests (minGapMs 50 of --profile slow.json, 1 ms to spare), ..."; empty when none.
     [[nodiscard]] QString paceText() const;
     [[nodiscard]] QJsonObject paceJson() const;
     [[nodiscard]] QString detail(const PollRun &run) const;

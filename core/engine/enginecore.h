@@ -67,6 +67,10 @@ public:
     void cancel(quint64 tag);
     // Requests of a tag queued or in flight.
     [[nodiscard]] int outstanding(quint64 tag) const { return m_scheduler.outstanding(tag); }
+    // Drops a tag's requests not yet written (a poll's cycle the device's pace still holds when
+    // the poll's time is up), and whether a request is still waiting to be written.
+    void dropQueued(quint64 tag) { m_scheduler.dropQueued(tag); }
+    [[nodiscard]] bool isQueued(quint64 id) const { return m_scheduler.isQueued(id); }
     // How many requests may be in flight at once on this target.
     [[nodiscard]] int pipelineDepth() const;
     void closeLink();

@@ -86,6 +86,14 @@ void Poller::advance(bool fromRecord)
         const qint64 now = monotonicNowNs();
         if (!moreCycles(now)) {
             m_timer.stop();
+            // The poll's time is up before the device's pace let the latest cycle's first request
+            // out: that cycle never began (a cycle begins when its first request is written).
+            const bool timeUp = m_settings.durationNs > 0 && now - m_startNs >= m_settings.durationNs;
+            if (timeUp && m_run.cycles > 0 && m_core->isQueued(m_cycleFirstId)) {
+                m_core->dropQueued(m_tag);
+                --m_run.cycles;
+                --m_core->counters().cycles;
+            }
             if (m_core->outstanding(m_tag) == 0)
                 finish();
             else if (m_settings.durationNs > 0 && m_settings.count == 0)
@@ -99,14 +107,20 @@ void Poller::advance(bool fromRecord)
             m_timer.start(int((wakeNs - now + 999999) / 1000000));
             return;
         }
-        if (!hasRoom())
-            return; // the next record calls again
+        if (!hasRoom()) {
+            // The next record calls again; and the end of the poll's time, should the device's
+            // pace hold a request past it.
+            if (m_settings.durationNs > 0 && !m_timer.isActive())
+                m_timer.start(int(std::max<qint64>(0, m_startNs + m_settings.durationNs - now + 999999) / 1000000));
+            return;
+        }
         // Started by the end of the cycle before rather than by its own due time: that cycle
         // took longer than the interval.
-        if (fromRecord && m_settings.intervalNs > 0 && m_run.cycles > 0) {
-            ++m_run.overruns;
-            ++m_core->counters().overruns;
-        }
+        const bool late = fromRecord && m_settings.intervalNs > 0 && m_run.cycles > 0;
+        if (late)
+            countOverrun();
+        m_cycleDueNs = m_nextDueNs;
+        m_cycleOverrun = late;
         startCycle(now);
         // Loop: arm the timer for the next due time, or (back to back, pipelined) start
         // another cycle while the pipeline has room.
@@ -137,10 +151,28 @@ void Poller::onRecord(const Transaction &transaction, quint64 tag)
     m_run.statistics.add(transaction);
     // The cycle actually began when its first request was written: a link still opening held it
     // (the second cycle followed the first by the interval less the opening time).
-    if (transaction.id == m_cycleFirstId && transaction.attempt == 0 && transaction.writeNs > 0)
+    if (transaction.id == m_cycleFirstId && transaction.attempt == 0 && transaction.writeNs > 0) {
         m_nextDueNs = std::max(m_nextDueNs, transaction.writeNs + m_settings.intervalNs);
+        // Held past its due time by the device's pace (EngineOptions::requestGap, warmUp): the
+        // interval asked for was not kept, which is what an overrun says. (The first cycle waits
+        // for the link to open, as every poll's does.)
+        const EngineOptions &o = m_core->options();
+        const bool paced = o.requestGap.count() > 0 || o.warmUp.count() > 0;
+        const qint64 slackNs = std::max<qint64>(1'000'000, m_settings.intervalNs / 20);
+        if (paced && !m_cycleOverrun && m_run.cycles > 1 && m_settings.intervalNs > 0
+            && transaction.writeNs - m_cycleDueNs > slackNs) {
+            m_cycleOverrun = true;
+            countOverrun();
+        }
+    }
     updateProgress(monotonicNowNs());
     advance(true);
+}
+
+void Poller::countOverrun()
+{
+    ++m_run.overruns;
+    ++m_core->counters().overruns;
 }
 
 void Poller::updateProgress(qint64 nowNs)

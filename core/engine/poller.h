@@ -19,7 +19,8 @@ struct Transaction;
 // was due, because the one before was still running, starts as soon as that one ends and counts
 // as an overrun: the interval runs from one cycle's actual start to the next, the moment its first
 // request was handed to the link (which may be later than the cycle was begun: the link may still
-// be opening, or the engine busy with an answer).
+// be opening, or the engine busy with an answer). A cycle whose first request the device's pace
+// held (EngineOptions::requestGap, warmUp) past its due time is an overrun too.
 class Poller : public QObject, private RecordListener
 {
     Q_OBJECT
@@ -46,6 +47,7 @@ private:
     [[nodiscard]] bool hasRoom() const;
     void finish();
     void updateProgress(qint64 nowNs);
+    void countOverrun();
 
     EngineCore *m_core;
     // The engine may go first (a sweep, and its poller, are the engine's children): only a
@@ -59,6 +61,8 @@ private:
     qint64 m_startNs = 0;
     qint64 m_nextDueNs = 0;
     quint64 m_cycleFirstId = 0; // the request that begins the latest cycle
+    qint64 m_cycleDueNs = 0;    // when the latest cycle was due
+    bool m_cycleOverrun = false; // the latest cycle is counted as an overrun already
     bool m_started = false;
     bool m_finished = false;
 };

@@ -113,6 +113,16 @@ qsizetype WriteScheduler::cancel(quint64 tag)
     return before - m_inFlight.size();
 }
 
+void WriteScheduler::dropQueued(quint64 tag)
+{
+    m_queue.removeIf([tag](const OutgoingRequest &o) { return o.tag == tag; });
+}
+
+bool WriteScheduler::isQueued(quint64 id) const
+{
+    return std::any_of(m_queue.cbegin(), m_queue.cend(), [id](const OutgoingRequest &o) { return o.id == id; });
+}
+
 int WriteScheduler::outstanding(quint64 tag) const
 {
     int n = 0;

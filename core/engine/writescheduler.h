@@ -64,6 +64,9 @@ public:
 
     // Drops a tag's queued requests and those in flight; how many were in flight.
     qsizetype cancel(quint64 tag);
+    // Drops a tag's queued requests only (never written: nothing to abandon).
+    void dropQueued(quint64 tag);
+    [[nodiscard]] bool isQueued(quint64 id) const;
     [[nodiscard]] int outstanding(quint64 tag) const;
 
 private:

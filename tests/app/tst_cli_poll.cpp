@@ -265,6 +265,21 @@ void TestCliPoll::pacedByProfile()
     QCOMPARE(o.value(QStringLiteral("requests")).toArray().size(), pieces);
     const QJsonObject pace = o.value(QStringLiteral("pace")).toObject();
     QCOMPARE(pace.value(QStringLiteral("profile")).toString(), profile);
+    if (!newLinkEach) {
+        // Said as the poll starts, not once it ends: a poll that runs until Ctrl-C says it too.
+        QProcess running;
+        running.start(mbscopePath(), {QStringLiteral("poll"), QStringLiteral("--target"), sim.url(), QStringLiteral("--quantity"),
+                                      QStringLiteral("40"), QStringLiteral("--profile"), profile});
+        QVERIFY(running.waitForStarted(30000));
+        QByteArray said;
+        running.setReadChannel(QProcess::StandardError);
+        while (!said.contains("read as 3 requests") && running.waitForReadyRead(20000))
+            said += running.readAllStandardError();
+        QVERIFY2(running.state() == QProcess::Running, said);
+        QVERIFY2(said.contains("read as 3 requests"), said);
+        ::kill(pid_t(running.processId()), SIGINT);
+        QVERIFY(running.waitForFinished(30000));
+    }
     // A floor, not a speed: the pace can only make the run longer than its own waits.
     QVERIFY2(o.value(QStringLiteral("elapsed_ms")).toDouble() >= leastMs, r.describe());
     const double connects = o.value(QStringLiteral("engine")).toObject().value(QStringLiteral("connects")).toDouble();
@@ -286,8 +301,21 @@ void TestCliPoll::paceOptions()
     const CliResult r = poll({QStringLiteral("--gap"), QStringLiteral("30ms"), QStringLiteral("--warm-up"), QStringLiteral("100ms"),
                               QStringLiteral("--interval"), QStringLiteral("0"), QStringLiteral("--count"), QStringLiteral("4")});
     QVERIFY2(r.exitCode == 0, r.describe());
-    QVERIFY2(r.outText().contains(QLatin1String("pace                    gap 30 ms between requests, warm-up 100 ms after connecting\n")),
+    QVERIFY2(r.outText().contains(QLatin1String("pace                    gap 30 ms between requests (--gap), warm-up 100 ms after "
+                                                "connecting (--warm-up)\n")),
              r.describe());
+    // The gap, longer than the interval, sets the real pace: every cycle after the first is late.
+    const CliResult slow = poll({QStringLiteral("--gap"), QStringLiteral("40ms"), QStringLiteral("--interval"), QStringLiteral("10ms"),
+                                 QStringLiteral("--count"), QStringLiteral("4"), QStringLiteral("--json")});
+    QVERIFY2(slow.exitCode == 0, slow.describe());
+    QCOMPARE(slow.json().value(QStringLiteral("overruns")).toDouble(), 3.0);
+    // The pace that holds the first request past the poll's time: that cycle never began.
+    const CliResult held = poll({QStringLiteral("--warm-up"), QStringLiteral("2s"), QStringLiteral("--duration"), QStringLiteral("300ms"),
+                                 QStringLiteral("--json")});
+    QVERIFY2(held.finished, held.describe());
+    QCOMPARE(held.json().value(QStringLiteral("count")).toDouble(), 0.0);
+    QCOMPARE(held.json().value(QStringLiteral("cycles")).toDouble(), 0.0);
+    QVERIFY2(held.json().value(QStringLiteral("elapsed_ms")).toDouble() < 2000, held.describe());
     const CliResult bad = poll({QStringLiteral("--gap"), QStringLiteral("fast"), QStringLiteral("--count"), QStringLiteral("1")});
     QCOMPARE(bad.exitCode, 2);
     QVERIFY2(bad.errText().startsWith(QLatin1String("mbscope poll: --gap: ")), bad.describe());
