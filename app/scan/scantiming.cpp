@@ -23,6 +23,10 @@ QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
 {
     QString t = QStringLiteral("TIMING %1 unit %2\n\n").arg(s.url.toString()).arg(s.unit);
     t += QStringLiteral("first answer after connecting   %1 ms (%2 failed before it)\n").arg(r.firstAnswerMs).arg(r.warmupFailures);
+    if (r.warmUpMs >= 0)
+        t += QStringLiteral("warm-up after connecting        %1 ms (answered after waiting %1 ms, not after %2 ms)\n")
+                 .arg(r.warmUpMs)
+                 .arg(r.warmUpRefusedMs);
     for (const TimingReport::GapTrial &g : r.gaps)
         t += QStringLiteral("gap %1 ms%2%3 ok, %4 failed, slowest %5 ms\n")
                  .arg(g.gapMs)
@@ -30,6 +34,10 @@ QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
                  .arg(g.ok)
                  .arg(g.failed)
                  .arg(QString::number(double(g.maxLatencyUs) / 1000.0, 'f', 2));
+    if (r.gapsHeldByWarmUp)
+        t += QStringLiteral("shorter gaps                    not measured: the device hangs up after each answer and each new "
+                            "connection waits its warm-up (%1 ms)\n")
+                 .arg(r.pauseAfterConnectMs());
     t += QStringLiteral("shortest gap without errors     %1\n")
              .arg(r.shortestCleanGapMs < 0 ? QStringLiteral("none of those tried") : QStringLiteral("%1 ms").arg(r.shortestCleanGapMs));
     t += QStringLiteral("largest read answered           %1 at address %2 (an answer PDU of %3 bytes)%4\n")
@@ -71,7 +79,7 @@ QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
     t += QStringLiteral("  Telegraf inputs.modbus: timeout = \"%1ms\"\n").arg(timeout);
     t += QStringLiteral("    [inputs.modbus.workarounds] pause_between_requests = \"%1ms\", pause_after_connect = \"%2ms\"\n")
              .arg(gap)
-             .arg(r.warmupFailures > 0 ? r.firstAnswerMs : 0);
+             .arg(r.pauseAfterConnectMs());
     return t;
 }
 
@@ -88,8 +96,11 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
         {QStringLiteral("unit"), int(s.unit)},
         {QStringLiteral("first_answer_ms"), double(r.firstAnswerMs)},
         {QStringLiteral("warmup_failures"), r.warmupFailures},
+        {QStringLiteral("warm_up_ms"), r.warmUpMs >= 0 ? QJsonValue(double(r.warmUpMs)) : QJsonValue(QJsonValue::Null)},
+        {QStringLiteral("warm_up_refused_ms"), r.warmUpMs >= 0 ? QJsonValue(double(r.warmUpRefusedMs)) : QJsonValue(QJsonValue::Null)},
         {QStringLiteral("gaps"), gaps},
         {QStringLiteral("shortest_clean_gap_ms"), r.shortestCleanGapMs},
+        {QStringLiteral("gaps_held_by_warm_up"), r.gapsHeldByWarmUp},
         {QStringLiteral("largest_quantity"), r.largestQuantity},
         {QStringLiteral("largest_answer_pdu"), r.largestAnswerPdu},
         {QStringLiteral("largest_ends_map"), r.largestEndsMap},
@@ -110,7 +121,7 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
                      {QStringLiteral("timeout_ms"), r.recommendedTimeoutMs()},
                      {QStringLiteral("telegraf_pause_between_requests"), QStringLiteral("%1ms").arg(r.recommendedGapMs())},
                      {QStringLiteral("telegraf_pause_after_connect"),
-                      QStringLiteral("%1ms").arg(r.warmupFailures > 0 ? r.firstAnswerMs : 0)}}},
+                      QStringLiteral("%1ms").arg(r.pauseAfterConnectMs())}}},
     };
 }
 

@@ -34,7 +34,14 @@ void ProbeChannel::setTarget(const LinkUrl &url)
     // not wait out the engine's usual 33 ms (a 247-id scan would spend 8 s in it).
     EngineOptions options;
     options.batchIntervalMs = 1;
+    options.warmUp = std::chrono::milliseconds(m_warmUpMs);
     m_engine->setTarget(url, options);
+}
+
+void ProbeChannel::setWarmUpMs(int warmUpMs)
+{
+    m_warmUpMs = warmUpMs;
+    setTarget(m_url);
 }
 
 void ProbeChannel::setTrafficLog(TrafficLog *log)

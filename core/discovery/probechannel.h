@@ -36,6 +36,9 @@ public:
     void setLinkFactory(const LinkFactory &factory);
     [[nodiscard]] const LinkUrl &target() const { return m_url; }
     void setGapMs(int gapMs) { m_gapMs = gapMs; }
+    // On every connection the channel opens from now on, the first request waits this long after
+    // it opened (EngineOptions::warmUp). Closes the link open now.
+    void setWarmUpMs(int warmUpMs);
     // Every frame in and out goes to log (a command's --record, the window's recording) until
     // setTrafficLog(nullptr), which writes the last ones to its journal; log must outlive that,
     // and be shared (TrafficLog::setShared) when another engine writes it too. Callable from
@@ -84,6 +87,7 @@ private:
 
     TransactionEngine *m_engine;
     LinkUrl m_url;
+    int m_warmUpMs = 0;
     int m_gapMs = 0;
     quint16 m_transactionId = 0;
     QByteArray m_nextAdu;

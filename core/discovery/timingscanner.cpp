@@ -26,6 +26,15 @@ namespace {
 
 // An answer that says the device served the request: data, or an exception about the request
 // itself. Busy (06), acknowledge (05) and the gateway's 0A/0B say it did not.
+// A warm-up waited out with some to spare, as a client keeps it (DeviceLimits::clientWarmUp):
+// the device counts from when it took the connection in, which can be after this end saw it open.
+qint64 spared(qint64 warmUpMs)
+{
+    DeviceLimits limits;
+    limits.warmUpMs = double(warmUpMs);
+    return limits.clientWarmUp().count();
+}
+
 bool served(const Transaction &t)
 {
     if (t.status == TransactionStatus::Ok)
@@ -53,6 +62,8 @@ int TimingReport::recommendedGapMs() const
 {
     // Twice the shortest gap that had no error, at least 1 ms when it needed any: a margin for a
     // busier device than the one measured.
+    if (gapsHeldByWarmUp)
+        return 0; // the warm-up of each new connection keeps the requests apart
     if (shortestCleanGapMs < 0)
         return gaps.isEmpty() ? 0 : gaps.constFirst().gapMs * 2;
     return shortestCleanGapMs == 0 ? 0 : shortestCleanGapMs * 2;
@@ -79,7 +90,7 @@ QJsonObject TimingReport::profileLimits(quint8 function) const
         limits.insert(QStringLiteral("minGapMs"), shortestCleanGapMs);
     else if (shortestCleanGapMs == 0)
         limits.insert(QStringLiteral("minGapMs"), QJsonValue::Null);
-    limits.insert(QStringLiteral("warmUpMs"), warmupFailures > 0 ? QJsonValue(double(firstAnswerMs)) : QJsonValue(QJsonValue::Null));
+    limits.insert(QStringLiteral("warmUpMs"), warmupFailures > 0 ? QJsonValue(double(pauseAfterConnectMs())) : QJsonValue(QJsonValue::Null));
     if (gapReconnects >= 0 && gapAnswered >= 3)
         limits.insert(QStringLiteral("closesAfterAnswer"), closesAfterAnswer() ? QJsonValue(true) : QJsonValue(QJsonValue::Null));
     if (clientsTried > 0 && clientsServed > 0 && clientsServed < clientsTried) {
@@ -181,7 +192,7 @@ qint64 TimingScanner::stepCostMs(int index) const
         for (const TimingReport::GapTrial &trial : m_report->gaps)
             errors = errors || trial.failed > 0;
         gap = m_done < m_partStart[Largest] && !errors ? 2 * qint64(*std::min_element(m_settings.gapsMs.cbegin(), m_settings.gapsMs.cend())) : qMax(0, m_report->recommendedGapMs());
-        settle = (m_report->warmupFailures > 0 ? m_report->firstAnswerMs : 0) + gap;
+        settle = m_report->pauseAfterConnectMs() + gap;
     }
     if (index < m_partStart[Gaps])
         return 20 + answer; // the warm-up asks every 20 ms
@@ -300,11 +311,42 @@ void TimingScanner::warmup(TimingReport &report)
             // Until the gaps are measured, the estimate takes this answer's time for every one.
             m_answeredMs += a->transaction.latencyNs() / 1'000'000;
             ++m_answered;
+            if (report.warmupFailures > 0)
+                narrowWarmUp(report, timeoutMs);
             endPart(Warmup);
             return;
         }
         ++report.warmupFailures;
     }
+}
+
+void TimingScanner::narrowWarmUp(TimingReport &report, int timeoutMs)
+{
+    // The first answer came one timeout after requests the device ignored: the warm-up lies
+    // between 0 and that time. Each try is a new connection whose first request waits a given
+    // time after it opened; halving the range to 10 ms takes about six of them.
+    qint64 answered = report.firstAnswerMs;
+    qint64 refused = 0;
+    while (answered - refused > 10) {
+        const qint64 wait = (answered + refused) / 2;
+        if (!mayContinue(wait + timeoutMs))
+            break;
+        m_channel->closeLink();
+        m_channel->setWarmUpMs(int(wait));
+        const std::optional<ProbeChannel::Answer> a = ask(1, timeoutMs, false);
+        if (!a)
+            break;
+        if (served(a->transaction))
+            answered = wait;
+        else
+            refused = wait;
+    }
+    report.warmUpMs = answered;
+    report.warmUpRefusedMs = refused;
+    // Every connection the rest of the scan opens waits it out (a device that hangs up after each
+    // answer is connected again for each request).
+    m_channel->closeLink();
+    m_channel->setWarmUpMs(int(spared(answered)));
 }
 
 void TimingScanner::gaps(TimingReport &report)
@@ -346,6 +388,12 @@ void TimingScanner::gaps(TimingReport &report)
         if (trial.failed > 0)
             break; // errors started: shorter gaps are not asked
         report.shortestCleanGapMs = gap;
+        // A device that hangs up after each answer, whose every new connection waits its warm-up:
+        // each request comes the warm-up after the one before, so no shorter gap can be asked.
+        if (stream && report.pauseAfterConnectMs() > 0 && trial.ok >= 3 && m_opens - opensBefore >= trial.ok - 1) {
+            report.gapsHeldByWarmUp = true;
+            break;
+        }
     }
     endPart(Gaps);
 }
@@ -448,7 +496,8 @@ void openAndSettle(TransactionEngine &engine, int connectMs, qint64 settleMs, Ti
 
 qint64 TimingScanner::settleMs(const TimingReport &report) const
 {
-    return (report.warmupFailures > 0 ? report.firstAnswerMs : 0) + report.recommendedGapMs();
+    const qint64 pause = report.pauseAfterConnectMs();
+    return (pause > 0 ? spared(pause) : 0) + report.recommendedGapMs();
 }
 
 void TimingScanner::pipelining(TimingReport &report)

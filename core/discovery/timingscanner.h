@@ -38,6 +38,17 @@ struct TimingScanSettings {
 struct TimingReport {
     qint64 firstAnswerMs = -1;   // from the first request on a new connection to its first good answer
     int warmupFailures = 0;      // requests that failed before it
+    // With failures before the first answer, the warm-up found to 10 ms (waits on new
+    // connections, halved in between): the shortest wait after a connection opened before a
+    // request that was answered, and the longest that was not (-1: not measured).
+    qint64 warmUpMs = -1;
+    qint64 warmUpRefusedMs = -1;
+    // What a client waits after connecting: warmUpMs (firstAnswerMs when it could not be
+    // narrowed), 0 when the first request was answered.
+    [[nodiscard]] qint64 pauseAfterConnectMs() const
+    {
+        return warmupFailures > 0 ? (warmUpMs >= 0 ? warmUpMs : firstAnswerMs) : 0;
+    }
     struct GapTrial {
         int gapMs = 0;
         int ok = 0;
@@ -46,6 +57,9 @@ struct TimingReport {
     };
     QList<GapTrial> gaps;        // longest first, until errors started
     int shortestCleanGapMs = -1; // -1: every gap tried had errors
+    // The device hangs up after each answer and each new connection waits its warm-up: gaps
+    // shorter than the first tried could not be asked (not measured; no minGapMs from them).
+    bool gapsHeldByWarmUp = false;
     qint64 maxLatencyUs = 0;     // over every good answer
     int pipelineSent = 0;        // 0: not tried (not MBAP)
     int pipelineOk = 0;
@@ -123,6 +137,7 @@ Q_SIGNALS:
 private:
     enum Part : quint8 { Warmup, Gaps, Largest, Pipeline, Clients, PartCount };
     void warmup(TimingReport &report);
+    void narrowWarmUp(TimingReport &report, int timeoutMs);
     void gaps(TimingReport &report);
     void pipelining(TimingReport &report);
     void clients(TimingReport &report);

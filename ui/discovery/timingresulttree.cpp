@@ -44,7 +44,7 @@ QString TimingResultTree::settingsText(const TimingReport &r)
                           "  [inputs.modbus.workarounds] pause_between_requests = \"%1ms\", pause_after_connect = \"%3ms\"\n")
         .arg(gap)
         .arg(timeout)
-        .arg(r.warmupFailures > 0 ? r.firstAnswerMs : 0);
+        .arg(r.pauseAfterConnectMs());
 }
 
 void TimingResultTree::showReport(const TimingScanSettings &s, const TimingReport &r)
@@ -54,6 +54,9 @@ void TimingResultTree::showReport(const TimingScanSettings &s, const TimingRepor
     row(root, tr("First answer after connecting"),
         r.firstAnswerMs < 0 ? tr("none within %1 ms").arg(s.warmupLimitMs)
                             : tr("%1 ms (%2 failed before it)").arg(r.firstAnswerMs).arg(r.warmupFailures));
+    if (r.warmUpMs >= 0)
+        row(root, tr("Warm-up after connecting"),
+            tr("%1 ms (answered after waiting %1 ms, not after %2 ms)").arg(r.warmUpMs).arg(r.warmUpRefusedMs));
     if (!r.gaps.isEmpty()) {
         QTreeWidgetItem *gaps = row(root, tr("Gaps between requests"), tr("%n tried, longest first", nullptr, int(r.gaps.size())));
         for (const TimingReport::GapTrial &g : r.gaps) {
@@ -62,6 +65,9 @@ void TimingResultTree::showReport(const TimingScanSettings &s, const TimingRepor
             if (g.failed > 0)
                 trial->setForeground(ResultColumn, SeverityStyle::textColor(Severity::Error));
         }
+        if (r.gapsHeldByWarmUp)
+            row(gaps, tr("shorter"), tr("not measured: the device hangs up after each answer and each new connection waits "
+                                        "its warm-up (%1 ms)").arg(r.pauseAfterConnectMs()));
         gaps->setExpanded(true);
     }
     row(root, tr("Shortest gap without errors"),
@@ -90,7 +96,7 @@ void TimingResultTree::showReport(const TimingScanSettings &s, const TimingRepor
     QTreeWidgetItem *settings = row(root, tr("Recommended"), tr("twice the shortest clean gap, three times the slowest answer"));
     row(settings, tr("Gap between requests"), tr("%1 ms").arg(r.recommendedGapMs()));
     row(settings, tr("Timeout"), tr("%1 ms").arg(r.recommendedTimeoutMs()));
-    row(settings, tr("Pause after connecting"), tr("%1 ms").arg(r.warmupFailures > 0 ? r.firstAnswerMs : 0));
+    row(settings, tr("Pause after connecting"), tr("%1 ms").arg(r.pauseAfterConnectMs()));
     settings->setExpanded(true);
     QFont bold = settings->font(MeasureColumn);
     bold.setBold(true);

@@ -21,7 +21,7 @@ struct Device {
     Simulator sim;
     LinkUrl url;
 
-    bool start()
+    bool start(double warmUpMs = 0, bool closesAfterAnswer = false)
     {
         SimUnit *unit = sim.addUnit(1);
         SimRange range;
@@ -32,6 +32,8 @@ struct Device {
         DeviceLimits limits;
         limits.minGapMs = 20;
         limits.tooSoon = DeviceLimits::TooSoon::Busy;
+        limits.warmUpMs = warmUpMs;
+        limits.closesAfterAnswer = closesAfterAnswer;
         sim.setLimits(limits);
         SimEndpointOptions options;
         options.maxConnections = 2;
@@ -71,6 +73,8 @@ private Q_SLOTS:
     void timeLimitBeforeAnyAnswer();
     void stopKeepsWhatWasMeasured();
     void limitMustBePositive();
+    void warmUpNarrowed_data();
+    void warmUpNarrowed();
 };
 
 void TestTimingScanner::progressFollowsThePlan()
@@ -195,6 +199,46 @@ void TestTimingScanner::limitMustBePositive()
     QCOMPARE(s.problem(), QStringLiteral("the time limit must be positive"));
     TimingScanner scanner;
     QVERIFY(!scanner.run(s));
+}
+
+void TestTimingScanner::warmUpNarrowed_data()
+{
+    QTest::addColumn<bool>("hangsUp");
+    QTest::newRow("keeps the connection") << false;
+    QTest::newRow("hangs up after each answer") << true;
+}
+
+void TestTimingScanner::warmUpNarrowed()
+{
+    // A device that ignores what comes in its first 150 ms on a connection: the first answer comes
+    // one timeout (300 ms) after the first request, and the warm-up is then found to 10 ms on new
+    // connections. Against one that also hangs up, every gap request waits it out (none is
+    // ignored) and the gaps shorter than the first cannot be asked: not measured, no minGapMs.
+    QFETCH(bool, hangsUp);
+    Device device;
+    QVERIFY(device.start(150, hangsUp));
+    TimingScanSettings s = smallScan(device.url);
+    s.gapsMs = {30, 0};
+    s.maxClients = 2;
+    TimingScanner scanner;
+    const std::optional<TimingReport> report = scanner.run(s);
+    QVERIFY(report);
+    QCOMPARE(report->warmupFailures, 1);
+    QVERIFY2(report->firstAnswerMs >= 300, qPrintable(QString::number(report->firstAnswerMs)));
+    QVERIFY2(report->warmUpMs >= 150 && report->warmUpMs - report->warmUpRefusedMs <= 10,
+             qPrintable(QStringLiteral("%1 %2").arg(report->warmUpMs).arg(report->warmUpRefusedMs)));
+    QCOMPARE(report->pauseAfterConnectMs(), report->warmUpMs);
+    QCOMPARE(report->gaps.first().failed, 0);
+    const QJsonObject limits = report->profileLimits(3);
+    QCOMPARE(limits.value(QStringLiteral("warmUpMs")).toDouble(), double(report->warmUpMs));
+    QCOMPARE(report->gapsHeldByWarmUp, hangsUp);
+    if (hangsUp) {
+        QCOMPARE(report->gaps.size(), 1);
+        QVERIFY(!limits.contains(QStringLiteral("minGapMs")));
+        QCOMPARE(report->recommendedGapMs(), 0);
+    } else {
+        QCOMPARE(limits.value(QStringLiteral("minGapMs")).toInt(), 30); // 0 ms was refused busy
+    }
 }
 
 QTEST_GUILESS_MAIN(TestTimingScanner)
