@@ -54,7 +54,28 @@ struct Common {
     ScanRecord record;
 };
 
-int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, QTextStream &err)
+// --profile-out FILE for the scans that merge into an existing profile (--timing's limits, the
+// unit scan's units): read now, so that a bad file costs no scan.
+bool profileToMerge(const QString &path, const char *what, QTextStream &err)
+{
+    if (path.isEmpty())
+        return true;
+    QFile file(path);
+    QString problem;
+    if (!file.open(QIODevice::ReadOnly))
+        problem = QStringLiteral("cannot be read (%1): %2 merged into an existing profile, such as the one mbscope scan "
+                                 "--map UNIT --profile-out FILE writes")
+                      .arg(file.errorString(), QLatin1String(what));
+    else
+        (void)ProfileDraft::mergeLimits(file.readAll(), {}, &problem);
+    if (!problem.isEmpty()) {
+        err << "mbscope scan: --profile-out " << path << ": " << problem << '\n';
+        return false;
+    }
+    return true;
+}
+
+int runUnits(const Common &common, UnitScanSettings settings, const QString &profilePath, QTextStream &out, QTextStream &err)
 {
     settings.url = common.url;
     settings.maxDurationMs = common.maxTimeMs;
@@ -114,6 +135,24 @@ int runUnits(const Common &common, UnitScanSettings settings, QTextStream &out, 
         for (const UnitProbe &p : results)
             watches += ScanWatches::fromProbe(settings, p);
         if (!writeScanFile(common.watchesPath, ScanWatches::toJson(watches), "watch definitions", err))
+            return ExitUsage;
+    }
+    if (!profilePath.isEmpty()) {
+        QFile file(profilePath);
+        QString said;
+        QString problem;
+        QByteArray merged;
+        if (!file.open(QIODevice::ReadOnly))
+            problem = file.errorString();
+        else
+            merged = ProfileDraft::mergeUnits(file.readAll(), results, &said, &problem);
+        file.close();
+        if (!problem.isEmpty()) {
+            err << "mbscope scan: --profile-out " << profilePath << ": " << problem << '\n';
+            return ExitUsage;
+        }
+        err << "mbscope scan: " << said << '\n';
+        if (!writeScanFile(profilePath, merged, "profile units", err))
             return ExitUsage;
     }
     if (common.json)
@@ -246,7 +285,9 @@ int runScan(const QStringList &arguments)
     const QCommandLineOption noOptionalOpt(QStringLiteral("no-optional"), QStringLiteral("--map: do not ask the optional functions."));
     const QCommandLineOption profileOutOpt(QStringLiteral("profile-out"),
                                            QStringLiteral("--map: save the map as a device profile draft (docs/profiles.md). --timing: merge "
-                                                          "the limits measured into this existing profile's \"limits\"."),
+                                                          "the limits measured into this existing profile's \"limits\". A "
+                                                          "unit scan: add the units that answered to this existing "
+                                                          "profile, and its \"unknownUnit\" from what the others got."),
                                            QStringLiteral("FILE"));
     const QCommandLineOption stepOpt(QStringLiteral("step"),
                                      QStringLiteral("--map: between blocks ask one address in N (default 1: every address; "
@@ -343,23 +384,9 @@ int runScan(const QStringList &arguments)
         settings.maxClients = int(clients);
         settings.timeoutMs = parser.isSet(timeoutOpt) ? int(timeoutMs) : 1000;
         settings.maxDurationMs = common.maxTimeMs;
-        // --profile-out FILE: the limits measured are merged into an existing profile (the
-        // --map draft, or one written by hand); it is read now, so that a bad file costs no scan.
         const QString profilePath = parser.value(profileOutOpt);
-        if (!profilePath.isEmpty()) {
-            QFile file(profilePath);
-            QString problem;
-            if (!file.open(QIODevice::ReadOnly))
-                problem = QStringLiteral("cannot be read (%1): with --timing the limits are merged into an existing profile, "
-                                         "such as the one mbscope scan --map UNIT --profile-out FILE writes")
-                              .arg(file.errorString());
-            else
-                (void)ProfileDraft::mergeLimits(file.readAll(), {}, &problem);
-            if (!problem.isEmpty()) {
-                err << "mbscope scan: --profile-out " << profilePath << ": " << problem << '\n';
-                return ExitUsage;
-            }
-        }
+        if (!profileToMerge(profilePath, "with --timing the limits are", err))
+            return ExitUsage;
         return runTimingScan(settings, common.json, common.record, profilePath, out, err);
     }
     if (parser.isSet(clientsOpt)) {
@@ -369,6 +396,11 @@ int runScan(const QStringList &arguments)
     if (parser.isSet(lineOpt)) {
         if (map) {
             err << "mbscope scan: --line and --map are two scans: give one\n";
+            return ExitUsage;
+        }
+        if (parser.isSet(profileOutOpt)) {
+            err << "mbscope scan: --profile-out belongs to --map, --timing and the unit scan: --line finds a serial "
+                << "line's settings, which a device profile does not hold\n";
             return ExitUsage;
         }
         LineScanSettings settings;
@@ -450,13 +482,15 @@ int runScan(const QStringList &arguments)
         return runMap(common, settings, profilePath, out, err);
     }
 
-    for (const QCommandLineOption *mapOnly : {&addressesOpt, &tablesOpt, &noOptionalOpt, &profileOutOpt, &maxRequestsOpt, &stepOpt}) {
+    for (const QCommandLineOption *mapOnly : {&addressesOpt, &tablesOpt, &noOptionalOpt, &maxRequestsOpt, &stepOpt}) {
         if (parser.isSet(*mapOnly)) {
-            err << "mbscope scan: --" << mapOnly->names().constFirst() << " belongs to --map UNIT"
-                << (mapOnly == &profileOutOpt ? " (or --timing UNIT)" : "") << '\n';
+            err << "mbscope scan: --" << mapOnly->names().constFirst() << " belongs to --map UNIT\n";
             return ExitUsage;
         }
     }
+    const QString unitsProfile = parser.value(profileOutOpt);
+    if (!profileToMerge(unitsProfile, "the units found are", err))
+        return ExitUsage;
     UnitScanSettings settings;
     if (parser.isSet(allIdsOpt)) {
         if (parser.isSet(unitsOpt)) {
@@ -485,7 +519,7 @@ int runScan(const QStringList &arguments)
     settings.quantity = quint16(quantity);
     settings.timeoutMs = int(timeoutMs);
     settings.gapMs = int(gapMs);
-    return runUnits(common, settings, out, err);
+    return runUnits(common, settings, unitsProfile, out, err);
 }
 
 } // namespace mbscope::app

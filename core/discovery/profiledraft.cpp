@@ -7,9 +7,12 @@
 #include <QtCore/QDateTime>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
+#include <QtCore/QSet>
 #include <QtCore/QJsonObject>
 
 #include <algorithm>
+
+#include <optional>
 
 namespace mbscope {
 
@@ -110,19 +113,94 @@ QString ProfileDraft::describeLimits(const QJsonObject &limits)
     return text.isEmpty() ? QStringLiteral("nothing measured") : text;
 }
 
-QByteArray ProfileDraft::mergeLimits(const QByteArray &profile, const QJsonObject &limits, QString *error)
+namespace {
+
+// A profile's text as a JSON object; nullopt with *error saying why not.
+std::optional<QJsonObject> profileObject(const QByteArray &profile, QString *error)
 {
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(profile, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
         *error = QStringLiteral("not JSON: %1 at offset %2").arg(parseError.errorString()).arg(parseError.offset);
-        return {};
+        return std::nullopt;
     }
     if (!doc.isObject()) {
         *error = QStringLiteral("not a profile: expected a JSON object");
-        return {};
+        return std::nullopt;
     }
-    QJsonObject root = doc.object();
+    return doc.object();
+}
+
+QString idList(const QList<int> &ids)
+{
+    QStringList out;
+    for (const int id : ids)
+        out.append(QString::number(id));
+    return out.join(QStringLiteral(", "));
+}
+
+} // namespace
+
+QByteArray ProfileDraft::mergeUnits(const QByteArray &profile, const QList<UnitProbe> &probes, QString *said, QString *error)
+{
+    const std::optional<QJsonObject> parsed = profileObject(profile, error);
+    if (!parsed)
+        return {};
+    QJsonObject root = *parsed;
+    QJsonArray units = root.value(QLatin1String("units")).toArray();
+    QSet<int> known;
+    for (const QJsonValue &u : std::as_const(units))
+        known.insert(u.toObject().value(QLatin1String("id")).toInt(-1));
+    QList<int> present;
+    QList<int> absent;
+    QSet<int> absentKinds;
+    for (const UnitProbe &p : probes) {
+        if (p.unit == 0 || p.unit >= 248)
+            continue;
+        if (p.isPresent()) {
+            present.append(p.unit);
+        } else {
+            absent.append(p.unit);
+            absentKinds.insert(int(p.kind));
+        }
+    }
+    QStringList parts;
+    if (absent.isEmpty() && present.size() >= 3) {
+        root.insert(QStringLiteral("unknownUnit"), QStringLiteral("first"));
+        parts.append(QStringLiteral("every id asked answered (%1): unknownUnit first, no unit added").arg(present.size()));
+    } else {
+        QList<int> added;
+        for (const int id : std::as_const(present)) {
+            if (!known.contains(id)) {
+                units.append(QJsonObject{{QStringLiteral("id"), id}});
+                added.append(id);
+            }
+        }
+        parts.append(present.isEmpty() ? QStringLiteral("no unit answered")
+                                       : QStringLiteral("units answering: %1 (%2 added)").arg(idList(present)).arg(added.size()));
+        if (absentKinds.size() == 1) {
+            const auto kind = UnitProbeKind(*absentKinds.cbegin());
+            const QString policy = kind == UnitProbeKind::Silent                ? QStringLiteral("silent")
+                                   : kind == UnitProbeKind::GatewayTargetFailed ? QStringLiteral("exception")
+                                                                                : QString();
+            if (!policy.isEmpty()) {
+                root.insert(QStringLiteral("unknownUnit"), policy);
+                parts.append(QStringLiteral("unknownUnit %1 (ids %2: %3)")
+                                 .arg(policy, idList(absent), QString::fromLatin1(unitProbeKindName(kind))));
+            }
+        }
+    }
+    root.insert(QStringLiteral("units"), units);
+    *said = parts.join(QStringLiteral("; "));
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+QByteArray ProfileDraft::mergeLimits(const QByteArray &profile, const QJsonObject &limits, QString *error)
+{
+    const std::optional<QJsonObject> parsed = profileObject(profile, error);
+    if (!parsed)
+        return {};
+    QJsonObject root = *parsed;
     QJsonObject merged = root.value(QLatin1String("limits")).toObject();
     // The member a limit qualifies, gone with it.
     const auto companion = [](const QString &key) {

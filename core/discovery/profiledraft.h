@@ -1,6 +1,9 @@
 #pragma once
 
 #include "registermap.h"
+#include "unitprobe.h"
+
+#include <QtCore/QList>
 
 #include <QtCore/QByteArray>
 #include <QtCore/QJsonObject>
@@ -25,6 +28,15 @@ public:
     // with its extraClients; everything else is kept. Empty and *error set when profile is not a
     // JSON object.
     [[nodiscard]] static QByteArray mergeLimits(const QByteArray &profile, const QJsonObject &limits, QString *error);
+    // profile with what a unit scan found: each id that answered (with data or an exception of
+    // its own) and is not among the profile's units is added as a unit of its own ({"id": N},
+    // its tables for a map scan to fill); "unknownUnit" says what the ids that were not there got
+    // when they all got the same: "silent" (no answer), "exception" (0B); "first" when every id
+    // asked (three or more) answered, as a device that ignores the unit id does (then no unit is
+    // added). Ids 0 and 248-255 (broadcast, reserved, the MBAP server's own) are left out.
+    // *said is one line for a person. Empty and *error set when profile is not a JSON object.
+    [[nodiscard]] static QByteArray mergeUnits(const QByteArray &profile, const QList<UnitProbe> &probes, QString *said,
+                                               QString *error);
     // What limits (as mergeLimits takes them) says, for a person: "minGapMs 50, maxQuantity 0x03 16;
     // no limit seen: warmUpMs", or "nothing measured".
     [[nodiscard]] static QString describeLimits(const QJsonObject &limits);

@@ -167,6 +167,8 @@ private slots:
     void timingProgressOnATerminal();
     void timingBoundedAndStopped();
     void allIdsSaysWhatItAsked();
+    void unitsIntoAProfile_data();
+    void unitsIntoAProfile();
 
 private:
     QTemporaryDir m_dir;
@@ -355,8 +357,11 @@ void TestCliScan::badInput_data()
                             << QStringLiteral("--units 300 is out of range: expected 0 to 255");
     QTest::newRow("a write") << QStringList{QStringLiteral("--function"), QStringLiteral("6")}
                              << QStringLiteral("--function 6 is out of range: expected 1 to 4");
-    QTest::newRow("map option alone") << QStringList{QStringLiteral("--profile-out"), QStringLiteral("x.json")}
-                                      << QStringLiteral("--profile-out belongs to --map UNIT");
+    QTest::newRow("map option alone") << QStringList{QStringLiteral("--step"), QStringLiteral("8")}
+                                      << QStringLiteral("--step belongs to --map UNIT");
+    QTest::newRow("units profile missing") << QStringList{QStringLiteral("--profile-out"), QStringLiteral("x.json")}
+                                           << QStringLiteral("--profile-out x.json: cannot be read (No such file or directory): the "
+                                                             "units found are merged into an existing profile");
     QTest::newRow("timing profile missing")
         << QStringList{QStringLiteral("--timing"), QStringLiteral("1"), QStringLiteral("--profile-out"), QStringLiteral("no-such-profile.json")}
         << QStringLiteral("--profile-out no-such-profile.json: cannot be read (No such file or directory): with --timing the limits are "
@@ -811,6 +816,61 @@ void TestCliScan::allIdsSaysWhatItAsked()
     const CliResult some = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--units"), QStringLiteral("1-3"),
                                        QStringLiteral("--timeout"), QStringLiteral("20ms"), QStringLiteral("--json")});
     QCOMPARE(some.json().value(QStringLiteral("outside_unit_addresses")).toArray().size(), 0);
+}
+
+void TestCliScan::unitsIntoAProfile_data()
+{
+    // issue 28: "which unit ids it answers", measured and stored in the profile.
+    QTest::addColumn<QString>("device");   // the simulated device's profile, minus its name
+    QTest::addColumn<QList<int>>("units");  // in the draft after the scan
+    QTest::addColumn<QString>("unknownUnit"); // empty: not written
+    QTest::newRow("others silent")
+        << QStringLiteral(R"("unknownUnit": "silent", "units": [{"id": 2, "tables": {"holding": [{"address": 0, "count": 4}]}},
+                             {"id": 5, "tables": {"holding": [{"address": 0, "count": 4}]}}])")
+        << QList<int>{1, 2, 5} << QStringLiteral("silent");
+    QTest::newRow("others get 0B")
+        << QStringLiteral(R"("unknownUnit": "exception", "units": [{"id": 4, "tables": {"holding": [{"address": 0, "count": 4}]}}])")
+        << QList<int>{1, 4} << QStringLiteral("exception");
+    QTest::newRow("every id answers")
+        << QStringLiteral(R"("unknownUnit": "first", "units": [{"id": 3, "tables": {"holding": [{"address": 0, "count": 4}]}}])")
+        << QList<int>{1} << QStringLiteral("first");
+}
+
+void TestCliScan::unitsIntoAProfile()
+{
+    QFETCH(QString, device);
+    QFETCH(QList<int>, units);
+    QFETCH(QString, unknownUnit);
+    const QString devicePath = m_dir.filePath(QStringLiteral("units-device.json"));
+    QVERIFY(writeFile(devicePath, QStringLiteral(R"({"name": "units-device", %1})").arg(device).toUtf8()));
+    // The draft knows unit 1 already (as a map scan of it would have written it).
+    const QString draft = m_dir.filePath(QStringLiteral("units-draft.json"));
+    QVERIFY(writeFile(draft, R"({"name": "units-draft", "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 4}]}}]})"));
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), devicePath, QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--units"),
+                                    QStringLiteral("1-6"), QStringLiteral("--timeout"), QStringLiteral("200ms"),
+                                    QStringLiteral("--profile-out"), draft});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    QVERIFY2(r.errText().contains(QLatin1String("mbscope scan: profile units written to ")), r.describe());
+    QFile file(draft);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QJsonObject profile = QJsonDocument::fromJson(file.readAll()).object();
+    QList<int> ids;
+    for (const QJsonValue &u : profile.value(QStringLiteral("units")).toArray())
+        ids.append(u.toObject().value(QStringLiteral("id")).toInt());
+    QCOMPARE(ids, units);
+    QCOMPARE(profile.value(QStringLiteral("unknownUnit")).toString(), unknownUnit);
+    QCOMPARE(profile.value(QStringLiteral("units")).toArray().first().toObject().value(QStringLiteral("tables")).toObject().size(), 1);
+    // What it wrote loads: the simulator serves it.
+    const CliResult check = runMbscope({QStringLiteral("simulate"), QStringLiteral("--profile"), draft, QStringLiteral("--listen"),
+                                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--duration"), QStringLiteral("100ms"),
+                                        QStringLiteral("--quiet")});
+    QVERIFY2(check.finished && check.exitCode == 0, check.describe());
 }
 
 QTEST_GUILESS_MAIN(TestCliScan)
