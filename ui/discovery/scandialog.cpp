@@ -1,4 +1,8 @@
 #include "scandialog.h"
+
+#include "common/lastfolder.h"
+
+#include "discovery/profiledraft.h"
 #include "protocol/framingtraits.h"
 
 #include "inferdialog.h"
@@ -23,6 +27,7 @@
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QProgressBar>
+#include <QtWidgets/QFileDialog>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
 #include <QtWidgets/QTableView>
@@ -49,6 +54,7 @@ ScanDialog::ScanDialog(QWidget *parent)
     , m_map(new QPushButton(tr("&Map unit\u2026"), this))
     , m_timing(new QPushButton(tr("Timi&ng\u2026"), this))
     , m_line(new QPushButton(tr("Seria&l settings\u2026"), this))
+    , m_recordUnits(new QPushButton(tr("Record in pr&ofile\u2026"), this))
     , m_progress(new QProgressBar(this))
     , m_status(new QLabel(this))
     , m_table(new QTableView(this))
@@ -94,6 +100,8 @@ ScanDialog::ScanDialog(QWidget *parent)
     m_progress->setObjectName(QStringLiteral("scanProgress"));
     m_status->setObjectName(QStringLiteral("scanStatus"));
     m_status->setWordWrap(true);
+    // Two lines of room: a wrapped status (what was recorded where) is read whole, not cut.
+    m_status->setMinimumHeight(2 * m_status->fontMetrics().lineSpacing() + 4);
 
     m_table->setObjectName(QStringLiteral("scanResults"));
     m_table->setModel(m_model);
@@ -123,6 +131,10 @@ ScanDialog::ScanDialog(QWidget *parent)
     m_line->setObjectName(QStringLiteral("scanLineSettings"));
     m_line->setToolTip(tr("On a serial port: try baud rates, parities and stop bits with the read above until a unit answers."));
     buttons->addButton(m_line, QDialogButtonBox::ActionRole);
+    m_recordUnits->setObjectName(QStringLiteral("scanRecordUnits"));
+    m_recordUnits->setToolTip(tr("Add the units that answered to an existing device profile, and its unknownUnit from what "
+                                 "the other ids got (as scan --units --profile-out)."));
+    buttons->addButton(m_recordUnits, QDialogButtonBox::ActionRole);
 
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -139,6 +151,7 @@ ScanDialog::ScanDialog(QWidget *parent)
     connect(m_map, &QPushButton::clicked, this, &ScanDialog::mapSelectedUnit);
     connect(m_timing, &QPushButton::clicked, this, &ScanDialog::timeSelectedUnit);
     connect(m_line, &QPushButton::clicked, this, &ScanDialog::findLineSettings);
+    connect(m_recordUnits, &QPushButton::clicked, this, &ScanDialog::recordUnits);
     connect(m_target, &QLineEdit::textChanged, this, &ScanDialog::updateButtons);
     connect(buttons, &QDialogButtonBox::rejected, this, &ScanDialog::reject);
     connect(m_scanner, &UnitScanner::probed, m_model, &ScanResultModel::append);
@@ -261,6 +274,7 @@ void ScanDialog::updateButtons()
     m_add->setEnabled(found);
     m_map->setEnabled(found && !running);
     m_timing->setEnabled(found && !running);
+    m_recordUnits->setEnabled(!running && !m_model->probes().isEmpty());
     const LinkUrl::Result target = LinkUrl::parse(m_target->text().trimmed());
     m_line->setEnabled(!running && target.url && target.url->isSerial());
     for (QWidget *w : {static_cast<QWidget *>(m_target), static_cast<QWidget *>(m_first), static_cast<QWidget *>(m_last),
@@ -380,6 +394,19 @@ void ScanDialog::copyWatches()
     const QList<WatchDefinition> list = watches();
     QGuiApplication::clipboard()->setText(QString::fromUtf8(ScanWatches::toJson(list)));
     m_status->setText(tr("%n watch definition(s) copied to the clipboard.", nullptr, int(list.size())));
+}
+
+void ScanDialog::recordUnits()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Record units in profile"), LastFolder::start(QString()),
+                                                      tr("Device profiles (*.json)"));
+    LastFolder::remember(path);
+    if (path.isEmpty())
+        return;
+    const QList<UnitProbe> probes = m_model->probes();
+    ScanForm::mergeIntoProfile(path, [&probes](const QByteArray &profile, QString *said, QString *problem) {
+        return ProfileDraft::mergeUnits(profile, probes, said, problem);
+    }, m_status);
 }
 
 } // namespace mbscope

@@ -56,6 +56,9 @@ public Q_SLOTS:
     void start();
     void stop();
     void copyWatches();
+    // Record in profile...: the units that answered, and what the others got, merged into a
+    // profile file the user picks (ProfileDraft::mergeUnits, as scan --units --profile-out).
+    void recordUnits();
     // Opens Map a unit's registers on the selected found unit (the first found without a selection).
     MapScanDialog *mapSelectedUnit();
     // Opens Time a unit on the selected found unit (the first found without a selection), asking
@@ -99,6 +102,7 @@ private:
     QPushButton *m_map;
     QPushButton *m_timing;
     QPushButton *m_line;
+    QPushButton *m_recordUnits;
     LineScanDialog *m_lineDialog = nullptr;
     MapScanDialog *m_mapDialog = nullptr;
     TimingScanDialog *m_timingDialog = nullptr;

@@ -1,5 +1,10 @@
 #include "scanform.h"
 
+#include <QtCore/QDir>
+#include <QtCore/QFile>
+#include <QtCore/QFileInfo>
+#include <QtCore/QSaveFile>
+
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QFormLayout>
 #include <QtWidgets/QHBoxLayout>
@@ -73,6 +78,32 @@ QString ScanForm::duration(qint64 ms)
 {
     return ms < 60000 ? tr("%1 s").arg(QString::number(double(ms) / 1000.0, 'f', 1))
                       : tr("%1 min %2 s").arg(ms / 60000).arg((ms / 1000) % 60);
+}
+
+bool ScanForm::mergeIntoProfile(const QString &path, const ProfileMerge &merge, QLabel *status)
+{
+    const QString shown = QDir::toNativeSeparators(path);
+    QFile in(path);
+    if (!in.open(QIODevice::ReadOnly)) {
+        showProblem(status, tr("Cannot read %1: %2").arg(shown, in.errorString()));
+        return false;
+    }
+    QString said;
+    QString problem;
+    const QByteArray merged = merge(in.readAll(), &said, &problem);
+    in.close();
+    if (!problem.isEmpty()) {
+        showProblem(status, tr("Cannot record it in %1: %2").arg(shown, problem));
+        return false;
+    }
+    QSaveFile out(path);
+    if (!out.open(QIODevice::WriteOnly) || out.write(merged) != merged.size() || !out.commit()) {
+        showProblem(status, tr("Cannot save %1: %2").arg(shown, out.errorString()));
+        return false;
+    }
+    status->setText(tr("Recorded in %1: %2.").arg(QFileInfo(path).fileName(), said));
+    status->setToolTip(shown);
+    return true;
 }
 
 } // namespace mbscope

@@ -6,6 +6,7 @@
 #include <QtCore/QCoreApplication>
 #include <QtCore/QString>
 
+#include <functional>
 #include <optional>
 
 class QComboBox;
@@ -41,6 +42,11 @@ public:
     // A running scan's progress: the bar at done of total, the status line "<counts>, about X left"
     // (counts: "12 of 40 ids asked, 1 found").
     static void showProgress(QProgressBar *bar, QLabel *status, const JobProgress &progress, const QString &counts);
+    // Merges what a scan found into an existing profile file at path (read, merge(text, &said,
+    // &problem), saved whole or not at all), the status line saying what was recorded or what is
+    // wrong. The scans' "Record ... in profile" buttons (ProfileDraft::mergeLimits, mergeUnits).
+    using ProfileMerge = std::function<QByteArray(const QByteArray &profile, QString *said, QString *problem)>;
+    static bool mergeIntoProfile(const QString &path, const ProfileMerge &merge, QLabel *status);
     // "4.2 s" under a minute, "3 min 20 s" from one.
     [[nodiscard]] static QString duration(qint64 ms);
 };

@@ -8,9 +8,6 @@
 #include "job/job.h"
 #include "job/jobthread.h"
 
-#include <QtCore/QDir>
-#include <QtCore/QFile>
-#include <QtCore/QSaveFile>
 #include <QtGui/QClipboard>
 #include <QtGui/QGuiApplication>
 #include <QtWidgets/QComboBox>
@@ -264,27 +261,11 @@ bool TimingScanDialog::saveLimits(const QString &path)
 {
     if (!m_report || m_report->firstAnswerMs < 0)
         return false;
-    const QString shown = QDir::toNativeSeparators(path);
-    QFile in(path);
-    if (!in.open(QIODevice::ReadOnly)) {
-        ScanForm::showProblem(m_status, tr("Cannot read %1: %2").arg(shown, in.errorString()));
-        return false;
-    }
     const QJsonObject limits = m_report->profileLimits(m_scannedFunction);
-    QString problem;
-    const QByteArray merged = ProfileDraft::mergeLimits(in.readAll(), limits, &problem);
-    in.close();
-    if (!problem.isEmpty()) {
-        ScanForm::showProblem(m_status, tr("Cannot record the limits in %1: %2").arg(shown, problem));
-        return false;
-    }
-    QSaveFile out(path);
-    if (!out.open(QIODevice::WriteOnly) || out.write(merged) != merged.size() || !out.commit()) {
-        ScanForm::showProblem(m_status, tr("Cannot save %1: %2").arg(shown, out.errorString()));
-        return false;
-    }
-    m_status->setText(tr("Recorded in %1: %2.").arg(shown, ProfileDraft::describeLimits(limits)));
-    return true;
+    return ScanForm::mergeIntoProfile(path, [&limits](const QByteArray &profile, QString *said, QString *problem) {
+        *said = ProfileDraft::describeLimits(limits);
+        return ProfileDraft::mergeLimits(profile, limits, problem);
+    }, m_status);
 }
 
 void TimingScanDialog::chooseProfileFile()

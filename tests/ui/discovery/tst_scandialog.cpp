@@ -51,6 +51,16 @@
 
 using namespace mbscope;
 
+namespace {
+
+bool writeTestFile(const QString &path, const QByteArray &bytes)
+{
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
+}
+
+} // namespace
+
 class TestScanDialog : public QObject
 {
     Q_OBJECT
@@ -124,6 +134,33 @@ void TestScanDialog::scanListsEveryId()
     QTest::mouseClick(dialog.findChild<QPushButton *>(QStringLiteral("scanAddWatches")), Qt::LeftButton);
     QCOMPARE(requested.size(), 1);
     QCOMPARE(requested.first().first().value<QList<WatchDefinition>>().size(), 1);
+
+    // "Record in profile…": the units that answered go into a profile picked in the file dialog,
+    // and unknownUnit from what the others got (0B: exception), as scan --units --profile-out.
+    QTemporaryDir dir;
+    const QString profilePath = dir.filePath(QStringLiteral("gateway.json"));
+    QVERIFY(writeTestFile(profilePath, R"({"name": "gateway", "units": [{"id": 1}]})"));
+    auto *record = dialog.findChild<QPushButton *>(QStringLiteral("scanRecordUnits"));
+    QVERIFY(record->isEnabled());
+    bool picked = false;
+    QTimer::singleShot(0, &dialog, [&] {
+        QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()));
+        auto *files = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+        files->selectFile(profilePath);
+        QMetaObject::invokeMethod(files, "accept");
+        picked = true;
+    });
+    QTest::mouseClick(record, Qt::LeftButton);
+    QVERIFY(picked);
+    QFile saved(profilePath);
+    QVERIFY(saved.open(QIODevice::ReadOnly));
+    const QJsonObject profile = QJsonDocument::fromJson(saved.readAll()).object();
+    QCOMPARE(profile.value(QStringLiteral("units")).toArray().size(), 2);
+    QCOMPARE(profile.value(QStringLiteral("units")).toArray().at(1).toObject().value(QStringLiteral("id")).toInt(), 3);
+    QCOMPARE(profile.value(QStringLiteral("unknownUnit")).toString(), QStringLiteral("exception"));
+    const QString said = dialog.findChild<QLabel *>(QStringLiteral("scanStatus"))->text();
+    QVERIFY2(said.startsWith(QLatin1String("Recorded in ")) && said.contains(QLatin1String("units answering: 1, 3 (1 added)")),
+             qPrintable(said));
 
     if (const QString path = qEnvironmentVariable("MBSCOPE_SCAN_SCREENSHOT"); !path.isEmpty())
         dialog.grab().save(path);
