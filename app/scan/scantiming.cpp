@@ -39,7 +39,9 @@ QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
                             "connection waits its warm-up (%1 ms)\n")
                  .arg(r.pauseAfterConnectMs());
     t += QStringLiteral("shortest gap without errors     %1\n")
-             .arg(r.shortestCleanGapMs < 0 ? QStringLiteral("none of those tried") : QStringLiteral("%1 ms").arg(r.shortestCleanGapMs));
+             .arg(r.gapsHeldByWarmUp ? QStringLiteral("not measured (the warm-up kept every request apart)")
+                  : r.shortestCleanGapMs < 0 ? QStringLiteral("none of those tried")
+                                             : QStringLiteral("%1 ms").arg(r.shortestCleanGapMs));
     t += QStringLiteral("largest read answered           %1 at address %2 (an answer PDU of %3 bytes)%4\n")
              .arg(r.largestQuantity)
              .arg(s.address)
@@ -74,7 +76,10 @@ QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
     const int gap = r.recommendedGapMs();
     const int timeout = r.recommendedTimeoutMs();
     t += QStringLiteral("\nSettings (twice the shortest clean gap, three times the slowest answer):\n");
-    t += QStringLiteral("  mbscope watch link:    \"gapMs\": %1, \"timeoutMs\": %2\n").arg(gap).arg(timeout);
+    t += QStringLiteral("  mbscope watch link:    \"gapMs\": %1, \"timeoutMs\": %2%3\n")
+             .arg(gap)
+             .arg(timeout)
+             .arg(r.pauseAfterConnectMs() > 0 ? QStringLiteral(", \"warmUpMs\": %1").arg(r.pauseAfterConnectMs()) : QString());
     t += QStringLiteral("  mbscope poll/read:     --timeout %1ms\n").arg(timeout);
     t += QStringLiteral("  Telegraf inputs.modbus: timeout = \"%1ms\"\n").arg(timeout);
     t += QStringLiteral("    [inputs.modbus.workarounds] pause_between_requests = \"%1ms\", pause_after_connect = \"%2ms\"\n")
@@ -99,7 +104,7 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
         {QStringLiteral("warm_up_ms"), r.warmUpMs >= 0 ? QJsonValue(double(r.warmUpMs)) : QJsonValue(QJsonValue::Null)},
         {QStringLiteral("warm_up_refused_ms"), r.warmUpMs >= 0 ? QJsonValue(double(r.warmUpRefusedMs)) : QJsonValue(QJsonValue::Null)},
         {QStringLiteral("gaps"), gaps},
-        {QStringLiteral("shortest_clean_gap_ms"), r.shortestCleanGapMs},
+        {QStringLiteral("shortest_clean_gap_ms"), r.gapsHeldByWarmUp ? QJsonValue(QJsonValue::Null) : QJsonValue(r.shortestCleanGapMs)},
         {QStringLiteral("gaps_held_by_warm_up"), r.gapsHeldByWarmUp},
         {QStringLiteral("largest_quantity"), r.largestQuantity},
         {QStringLiteral("largest_answer_pdu"), r.largestAnswerPdu},

@@ -165,9 +165,13 @@ QByteArray ProfileDraft::mergeUnits(const QByteArray &profile, const QList<UnitP
         }
     }
     QStringList parts;
-    if (absent.isEmpty() && present.size() >= 3) {
+    // So many ids all answering is one device ignoring the unit id, not that many devices; fewer
+    // could be real units (a gateway with three), which are added instead.
+    constexpr int kIgnoresUnitId = 16;
+    if (absent.isEmpty() && present.size() >= kIgnoresUnitId) {
         root.insert(QStringLiteral("unknownUnit"), QStringLiteral("first"));
-        parts.append(QStringLiteral("every id asked answered (%1): unknownUnit first, no unit added").arg(present.size()));
+        parts.append(QStringLiteral("every id asked answered (%1 of 1-247): the device ignores the unit id: unknownUnit first, "
+                                    "no unit added").arg(present.size()));
     } else {
         QList<int> added;
         for (const int id : std::as_const(present)) {
@@ -178,6 +182,7 @@ QByteArray ProfileDraft::mergeUnits(const QByteArray &profile, const QList<UnitP
         }
         parts.append(present.isEmpty() ? QStringLiteral("no unit answered")
                                        : QStringLiteral("units answering: %1 (%2 added)").arg(idList(present)).arg(added.size()));
+        bool written = false;
         if (absentKinds.size() == 1) {
             const auto kind = UnitProbeKind(*absentKinds.cbegin());
             const QString policy = kind == UnitProbeKind::Silent                ? QStringLiteral("silent")
@@ -187,8 +192,19 @@ QByteArray ProfileDraft::mergeUnits(const QByteArray &profile, const QList<UnitP
                 root.insert(QStringLiteral("unknownUnit"), policy);
                 parts.append(QStringLiteral("unknownUnit %1 (ids %2: %3)")
                                  .arg(policy, idList(absent), QString::fromLatin1(unitProbeKindName(kind))));
+                written = true;
             }
         }
+        if (!absent.isEmpty() && !written) {
+            const QString why = absentKinds.size() > 1 ? QStringLiteral("the other ids got different answers")
+                                                       : QStringLiteral("no profile setting gives what the other ids got");
+            const QString kept = root.value(QLatin1String("unknownUnit")).toString();
+            parts.append(kept.isEmpty() ? QStringLiteral("unknownUnit not written: %1").arg(why)
+                                        : QStringLiteral("unknownUnit left as it was (%1): %2").arg(kept, why));
+        }
+        if (present.size() == int(probes.size()) && present.size() >= 3)
+            parts.append(QStringLiteral("every id asked answered: a wider range tells real units from a device that ignores "
+                                        "the unit id"));
     }
     root.insert(QStringLiteral("units"), units);
     *said = parts.join(QStringLiteral("; "));

@@ -32,7 +32,7 @@ public:
     // its own) and is not among the profile's units is added as a unit of its own ({"id": N},
     // its tables for a map scan to fill); "unknownUnit" says what the ids that were not there got
     // when they all got the same: "silent" (no answer), "exception" (0B); "first" when every id
-    // asked (three or more) answered, as a device that ignores the unit id does (then no unit is
+    // asked (16 or more) answered, as a device that ignores the unit id does (then no unit is
     // added). Ids 0 and 248-255 (broadcast, reserved, the MBAP server's own) are left out.
     // *said is one line for a person. Empty and *error set when profile is not a JSON object.
     [[nodiscard]] static QByteArray mergeUnits(const QByteArray &profile, const QList<UnitProbe> &probes, QString *said,

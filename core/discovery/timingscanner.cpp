@@ -336,7 +336,11 @@ void TimingScanner::narrowWarmUp(TimingReport &report, int timeoutMs)
         const std::optional<ProbeChannel::Answer> a = ask(1, timeoutMs, false);
         if (!a)
             break;
-        if (served(a->transaction))
+        // Awake is any answer, a refusal too: a device still warming up says nothing, and one
+        // asked too soon after the last request (its minGapMs, counted across connections)
+        // answers busy, which is no warm-up.
+        const TransactionStatus status = a->transaction.status;
+        if (status == TransactionStatus::Ok || status == TransactionStatus::Exception)
             answered = wait;
         else
             refused = wait;

@@ -31,7 +31,10 @@ bool UnitScanner::start(const UnitScanSettings &settings)
     m_running = true;
     m_clock.start();
     Q_EMIT progressChanged(progress());
-    next();
+    // From the event loop: a scan whose time limit leaves room for no request at all ends at
+    // once, and finished() must reach whoever waits for it after start() (a command's loop hung
+    // forever, deaf to Ctrl-C, on `scan --units 1-3 --max-time 200ms`).
+    QMetaObject::invokeMethod(this, &UnitScanner::next, Qt::QueuedConnection);
     return true;
 }
 

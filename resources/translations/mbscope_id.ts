@@ -221,7 +221,7 @@
 <context>
     <name>ScanForm</name>
     <message>
-        <location filename="../../ui/discovery/scanform.cpp" line="+26"/>
+        <location filename="../../ui/discovery/scanform.cpp" line="+31"/>
         <source>01 Read Coils</source>
         <translation>01 Baca Coil</translation>
     </message>
@@ -254,6 +254,26 @@
         <location line="+1"/>
         <source>%1 min %2 s</source>
         <translation>%1 mnt %2 dtk</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot read %1: %2</source>
+        <translation>Tidak dapat membaca %1: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Cannot record it in %1: %2</source>
+        <translation>Tidak dapat mencatatnya di %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Cannot save %1: %2</source>
+        <translation>Tidak dapat menyimpan %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Recorded in %1: %2.</source>
+        <translation>Dicatat di %1: %2.</translation>
     </message>
 </context>
 <context>
@@ -3611,7 +3631,7 @@ dan %n lagi</numerusform>
 <context>
     <name>mbscope::LinkController</name>
     <message>
-        <location filename="../../ui/link/linkcontroller.cpp" line="+123"/>
+        <location filename="../../ui/link/linkcontroller.cpp" line="+153"/>
         <source>nothing is being recorded</source>
         <translation>tidak ada yang sedang direkam</translation>
     </message>
@@ -3622,7 +3642,7 @@ dan %n lagi</numerusform>
         <translation>tidak dapat menyalin %1 ke %2: %3</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+71"/>
         <source>%1: listening only (nothing is sent)</source>
         <translation>%1: hanya mendengar (tidak ada yang dikirim)</translation>
     </message>
@@ -3632,13 +3652,18 @@ dan %n lagi</numerusform>
         <translation>%1: membuka untuk mendengar</translation>
     </message>
     <message>
-        <location line="-31"/>
+        <location line="-26"/>
         <source>%1: connecting…</source>
         <translation>%1: menyambungkan…</translation>
     </message>
     <message>
-        <location line="+48"/>
-        <location line="+88"/>
+        <location line="-90"/>
+        <source>the recording stopped: %1; what came before is in %2</source>
+        <translation>perekaman berhenti: %1; yang datang sebelumnya ada di %2</translation>
+    </message>
+    <message>
+        <location line="+133"/>
+        <location line="+83"/>
         <location line="+10"/>
         <source>Not connected</source>
         <translation>Tidak tersambung</translation>
@@ -4882,7 +4907,13 @@ dan %n lagi</numerusform>
         <translation>batch di byte %1 rusak: batch itu dan semua sesudahnya tidak disertakan</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+43"/>
+        <source>&lt;b&gt;Not recording any more&lt;/b&gt;: %1.</source>
+        <translation>&lt;b&gt;Tidak merekam lagi&lt;/b&gt;: %1.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+2"/>
         <source>Not recording: %1</source>
         <translation>Tidak merekam: %1</translation>
     </message>
@@ -4914,7 +4945,7 @@ dan %n lagi</numerusform>
         <translation>Simpan di folder capture</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+64"/>
         <source>The session was saved without its traffic: %1</source>
         <translation>Sesi disimpan tanpa lalu lintasnya: %1</translation>
     </message>
@@ -6320,7 +6351,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::ScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/scandialog.cpp" line="+43"/>
+        <location filename="../../ui/discovery/scandialog.cpp" line="+48"/>
         <location line="+1"/>
         <source> ms</source>
         <translation> md</translation>
@@ -6359,6 +6390,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>Seria&amp;l settings…</source>
         <translation>Pengaturan seria&amp;l…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Record in pr&amp;ofile…</source>
+        <translation>Catat di pr&amp;ofil…</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -6431,7 +6467,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Watch definitions of the selected found units (or of every found unit) as JSON on the clipboard.</source>
         <translation>Definisi pantauan unit terpilih yang ditemukan (atau semua unit yang ditemukan) sebagai JSON di papan klip.</translation>
     </message>
@@ -6456,7 +6492,12 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pada port serial: coba laju baud, paritas, dan bit stop dengan baca di atas sampai sebuah unit menjawab.</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+3"/>
+        <source>Add the units that answered to an existing device profile, and its unknownUnit from what the other ids got (as scan --units --profile-out).</source>
+        <translation>Tambahkan unit yang menjawab ke profil perangkat yang sudah ada, beserta unknownUnit-nya dari apa yang didapat id lain (seperti scan --units --profile-out).</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>Asks every id the read above, one at a time, and says what each did.</source>
         <translation>Menanyai setiap id dengan pembacaan di atas, satu per satu, dan menyebutkan apa yang dilakukan masing-masing.</translation>
     </message>
@@ -6501,11 +6542,21 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1: %2 dari %3 id ditanyai dalam %4, %5 ditemukan.</translation>
     </message>
     <message numerus="yes">
-        <location line="+140"/>
+        <location line="+141"/>
         <source>%n watch definition(s) copied to the clipboard.</source>
         <translation>
             <numerusform>%n definisi pantauan disalin ke papan klip.</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Record units in profile</source>
+        <translation>Catat unit di profil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device profiles (*.json)</source>
+        <translation>Profil perangkat (*.json)</translation>
     </message>
 </context>
 <context>
@@ -8191,8 +8242,8 @@ Klik kanan untuk mengganti format</translation>
     <name>mbscope::TimingResultTree</name>
     <message>
         <location filename="../../ui/discovery/timingresulttree.cpp" line="+13"/>
-        <location line="+47"/>
-        <location line="+8"/>
+        <location line="+50"/>
+        <location line="+11"/>
         <location line="+23"/>
         <location line="+1"/>
         <location line="+1"/>
@@ -8200,7 +8251,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 md</translation>
     </message>
     <message>
-        <location line="-62"/>
+        <location line="-68"/>
         <source>Measurement</source>
         <translation>Pengukuran</translation>
     </message>
@@ -8226,6 +8277,16 @@ Klik kanan untuk mengganti format</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>Warm-up after connecting</source>
+        <translation>Pemanasan setelah tersambung</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 ms (answered after waiting %1 ms, not after %2 ms)</source>
+        <translation>%1 ms (dijawab setelah menunggu %1 ms, tidak setelah %2 ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Gaps between requests</source>
         <translation>Jeda antarpermintaan</translation>
     </message>
@@ -8242,7 +8303,17 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 ok, %2 gagal, paling lambat %3</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
+        <source>shorter</source>
+        <translation>lebih pendek</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not measured: the device hangs up after each answer and each new connection waits its warm-up (%1 ms)</source>
+        <translation>tidak diukur: perangkat memutus sambungan setelah setiap jawaban dan setiap sambungan baru menunggu pemanasannya (%1 ms)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Shortest gap without errors</source>
         <translation>Jeda terpendek tanpa galat</translation>
     </message>
@@ -8345,7 +8416,7 @@ Klik kanan untuk mengganti format</translation>
 <context>
     <name>mbscope::TimingScanDialog</name>
     <message>
-        <location filename="../../ui/discovery/timingscandialog.cpp" line="+40"/>
+        <location filename="../../ui/discovery/timingscandialog.cpp" line="+37"/>
         <source> ms</source>
         <translation> md</translation>
     </message>
@@ -8525,27 +8596,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pengaturan yang disarankan ada di papan klip.</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>Cannot read %1: %2</source>
-        <translation>Tidak dapat membaca %1: %2</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Cannot record the limits in %1: %2</source>
-        <translation>Tidak dapat mencatat batas di %1: %2</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Cannot save %1: %2</source>
-        <translation>Tidak dapat menyimpan %1: %2</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Recorded in %1: %2.</source>
-        <translation>Dicatat di %1: %2.</translation>
-    </message>
-    <message>
-        <location line="+6"/>
+        <location line="+16"/>
         <source>Record limits in profile</source>
         <translation>Catat batas di profil</translation>
     </message>

@@ -364,7 +364,7 @@ void TestCliPoll::sweepTable()
     const QStringList lines = r.outText().split(QLatin1Char('\n'));
     const auto header = std::find_if(lines.begin(), lines.end(), [](const QString &l) { return l.startsWith(QLatin1String("INTERVAL")); });
     QVERIFY2(header != lines.end(), r.describe());
-    for (const char *column : {"CYCLES", "COUNT", "OK", "FAILED", "ERROR RATE", "MIN ms", "MEAN ms", "P50 ms", "P99 ms", "MAX ms"})
+    for (const char *column : {"CYCLES", "OVERRUNS", "COUNT", "OK", "FAILED", "ERROR RATE", "MIN ms", "MEAN ms", "P50 ms", "P99 ms", "MAX ms"})
         QVERIFY2(header->contains(QLatin1String(column)), qPrintable(*header));
     const QStringList expected = {QStringLiteral("0 ms"), QStringLiteral("5 ms"), QStringLiteral("10 ms")};
     for (qsizetype i = 0; i < expected.size(); ++i) {

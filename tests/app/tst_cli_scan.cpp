@@ -169,6 +169,7 @@ private slots:
     void allIdsSaysWhatItAsked();
     void unitsIntoAProfile_data();
     void unitsIntoAProfile();
+    void noRoomForARequestEnds();
 
 private:
     QTemporaryDir m_dir;
@@ -822,23 +823,31 @@ void TestCliScan::unitsIntoAProfile_data()
 {
     // issue 28: "which unit ids it answers", measured and stored in the profile.
     QTest::addColumn<QString>("device");   // the simulated device's profile, minus its name
+    QTest::addColumn<QString>("asked");    // the ids scanned
     QTest::addColumn<QList<int>>("units");  // in the draft after the scan
     QTest::addColumn<QString>("unknownUnit"); // empty: not written
     QTest::newRow("others silent")
         << QStringLiteral(R"("unknownUnit": "silent", "units": [{"id": 2, "tables": {"holding": [{"address": 0, "count": 4}]}},
                              {"id": 5, "tables": {"holding": [{"address": 0, "count": 4}]}}])")
-        << QList<int>{1, 2, 5} << QStringLiteral("silent");
+        << QStringLiteral("1-6") << QList<int>{1, 2, 5} << QStringLiteral("silent");
     QTest::newRow("others get 0B")
         << QStringLiteral(R"("unknownUnit": "exception", "units": [{"id": 4, "tables": {"holding": [{"address": 0, "count": 4}]}}])")
-        << QList<int>{1, 4} << QStringLiteral("exception");
+        << QStringLiteral("1-6") << QList<int>{1, 4} << QStringLiteral("exception");
     QTest::newRow("every id answers")
         << QStringLiteral(R"("unknownUnit": "first", "units": [{"id": 3, "tables": {"holding": [{"address": 0, "count": 4}]}}])")
-        << QList<int>{1} << QStringLiteral("first");
+        << QStringLiteral("1-20") << QList<int>{1} << QStringLiteral("first");
+    // Three real units answer as a device ignoring the unit id would: they are added, nothing concluded.
+    QTest::newRow("three units, every id asked")
+        << QStringLiteral(R"("unknownUnit": "silent", "units": [{"id": 2, "tables": {"holding": [{"address": 0, "count": 4}]}},
+                             {"id": 3, "tables": {"holding": [{"address": 0, "count": 4}]}},
+                             {"id": 1, "tables": {"holding": [{"address": 0, "count": 4}]}}])")
+        << QStringLiteral("1-3") << QList<int>{1, 2, 3} << QString();
 }
 
 void TestCliScan::unitsIntoAProfile()
 {
     QFETCH(QString, device);
+    QFETCH(QString, asked);
     QFETCH(QList<int>, units);
     QFETCH(QString, unknownUnit);
     const QString devicePath = m_dir.filePath(QStringLiteral("units-device.json"));
@@ -853,7 +862,7 @@ void TestCliScan::unitsIntoAProfile()
                        &error),
              qPrintable(error));
     const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--units"),
-                                    QStringLiteral("1-6"), QStringLiteral("--timeout"), QStringLiteral("200ms"),
+                                    asked, QStringLiteral("--timeout"), QStringLiteral("200ms"), QStringLiteral("--gap"), QStringLiteral("0"),
                                     QStringLiteral("--profile-out"), draft});
     QVERIFY2(r.finished && r.exitCode == 0, r.describe());
     QVERIFY2(r.errText().contains(QLatin1String("mbscope scan: profile units written to ")), r.describe());
@@ -871,6 +880,19 @@ void TestCliScan::unitsIntoAProfile()
                                         QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--duration"), QStringLiteral("100ms"),
                                         QStringLiteral("--quiet")});
     QVERIFY2(check.finished && check.exitCode == 0, check.describe());
+}
+
+void TestCliScan::noRoomForARequestEnds()
+{
+    // A time limit that leaves room for no request: the scan ends at once, saying so (it hung,
+    // deaf to Ctrl-C, when its end came before the command waited for it).
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), m_gateway.url(), QStringLiteral("--units"),
+                                    QStringLiteral("1-3"), QStringLiteral("--max-time"), QStringLiteral("100ms"), QStringLiteral("--json")},
+                                   30000);
+    QVERIFY2(r.finished, r.describe());
+    QCOMPARE(r.exitCode, 1);
+    QCOMPARE(r.json().value(QStringLiteral("asked")).toInt(), 0);
+    QCOMPARE(r.json().value(QStringLiteral("end")).toString(), QStringLiteral("time_limit"));
 }
 
 QTEST_GUILESS_MAIN(TestCliScan)

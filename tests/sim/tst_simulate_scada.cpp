@@ -42,8 +42,8 @@ void tst_SimulateScada::sweepCurve()
     QVERIFY2(r.exitCode == 0 || r.exitCode == 1, (r.out + r.err).constData());
     QString table = QStringLiteral("interval ms   paper %   measured % (mbscope sweep, %1 per interval)\n").arg(kCount);
     for (const auto &[interval, expected] : paper) {
-        // "100 ms        50     50  25      25     50.00 %  ..."
-        const QRegularExpression row(QStringLiteral("^%1 ms\\s+\\d+\\s+(\\d+)\\s+\\d+\\s+(\\d+)\\s+([0-9.]+) %").arg(interval),
+        // "100 ms        50         0     50  25      25     50.00 %  ..." (cycles, overruns, count, ok, failed)
+        const QRegularExpression row(QStringLiteral("^%1 ms\\s+\\d+\\s+\\d+\\s+(\\d+)\\s+\\d+\\s+(\\d+)\\s+([0-9.]+) %").arg(interval),
                                      QRegularExpression::MultilineOption);
         const QRegularExpressionMatch m = row.match(QString::fromUtf8(r.out));
         QVERIFY2(m.hasMatch(), r.out.constData());

@@ -38,13 +38,15 @@ QString TimingResultTree::settingsText(const TimingReport &r)
 {
     const int gap = r.recommendedGapMs();
     const int timeout = r.recommendedTimeoutMs();
-    return QStringLiteral("mbscope watch link:    \"gapMs\": %1, \"timeoutMs\": %2\n"
+    const qint64 pause = r.pauseAfterConnectMs();
+    return QStringLiteral("mbscope watch link:    \"gapMs\": %1, \"timeoutMs\": %2%4\n"
                           "mbscope poll/read:     --timeout %2ms\n"
                           "Telegraf inputs.modbus: timeout = \"%2ms\"\n"
                           "  [inputs.modbus.workarounds] pause_between_requests = \"%1ms\", pause_after_connect = \"%3ms\"\n")
         .arg(gap)
         .arg(timeout)
-        .arg(r.pauseAfterConnectMs());
+        .arg(pause)
+        .arg(pause > 0 ? QStringLiteral(", \"warmUpMs\": %1").arg(pause) : QString());
 }
 
 void TimingResultTree::showReport(const TimingScanSettings &s, const TimingReport &r)
