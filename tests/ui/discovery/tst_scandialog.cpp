@@ -53,6 +53,21 @@ using namespace mbscope;
 
 namespace {
 
+// Clicks button, whose slot opens a file dialog, and picks path in it; whether it was picked.
+bool clickPickingFile(QPushButton *button, const QString &path)
+{
+    bool picked = false;
+    QTimer::singleShot(0, button, [&] {
+        QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()));
+        auto *files = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+        files->selectFile(path);
+        QMetaObject::invokeMethod(files, "accept");
+        picked = true;
+    });
+    QTest::mouseClick(button, Qt::LeftButton);
+    return picked;
+}
+
 bool writeTestFile(const QString &path, const QByteArray &bytes)
 {
     QFile file(path);
@@ -142,16 +157,7 @@ void TestScanDialog::scanListsEveryId()
     QVERIFY(writeTestFile(profilePath, R"({"name": "gateway", "units": [{"id": 1}]})"));
     auto *record = dialog.findChild<QPushButton *>(QStringLiteral("scanRecordUnits"));
     QVERIFY(record->isEnabled());
-    bool picked = false;
-    QTimer::singleShot(0, &dialog, [&] {
-        QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()));
-        auto *files = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
-        files->selectFile(profilePath);
-        QMetaObject::invokeMethod(files, "accept");
-        picked = true;
-    });
-    QTest::mouseClick(record, Qt::LeftButton);
-    QVERIFY(picked);
+    QVERIFY(clickPickingFile(record, profilePath));
     QFile saved(profilePath);
     QVERIFY(saved.open(QIODevice::ReadOnly));
     const QJsonObject profile = QJsonDocument::fromJson(saved.readAll()).object();
@@ -508,16 +514,7 @@ void TestScanDialog::timingOfAFoundUnit()
     profile.close();
     auto *saveLimits = timing->findChild<QPushButton *>(QStringLiteral("timingSaveLimits"));
     QVERIFY(saveLimits->isEnabled());
-    bool picked = false;
-    QTimer::singleShot(0, timing, [&] {
-        QTRY_VERIFY(qobject_cast<QFileDialog *>(QApplication::activeModalWidget()));
-        auto *files = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
-        files->selectFile(profilePath);
-        QMetaObject::invokeMethod(files, "accept");
-        picked = true;
-    });
-    QTest::mouseClick(saveLimits, Qt::LeftButton);
-    QVERIFY(picked);
+    QVERIFY(clickPickingFile(saveLimits, profilePath));
     QVERIFY(profile.open(QIODevice::ReadOnly));
     const QJsonObject saved = QJsonDocument::fromJson(profile.readAll()).object();
     QCOMPARE(saved.value(QStringLiteral("name")).toString(), QStringLiteral("device"));
