@@ -217,8 +217,8 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
             largest.append(QStringLiteral("%1 %2").arg(DeviceLimits::functionKey(it.key())).arg(it.value()));
         out.pace.append(QStringLiteral("reads cut to maxQuantity %1%2").arg(largest.join(QStringLiteral(", ")), ofProfile));
     }
-    if (!out.profile.isEmpty() && out.pace.isEmpty())
-        out.pace.append(QStringLiteral("none: --profile %1 has no minGapMs, warmUpMs, maxQuantity or closesAfterAnswer")
+    if (!out.profile.isEmpty() && !limits.limitsRequests() && !limits.closesAfterAnswer)
+        out.pace.append(QStringLiteral("none from --profile %1: it has no minGapMs, warmUpMs, maxQuantity or closesAfterAnswer")
                             .arg(out.profile));
     // One request at a time when each must wait for the one before it.
     if (out.engine.pipelineDepth > 1 && (out.engine.requestGap.count() > 0 || out.engine.closeAfterAnswer)) {
