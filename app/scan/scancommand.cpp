@@ -55,24 +55,11 @@ struct Common {
 };
 
 // --profile-out FILE for the scans that merge into an existing profile (--timing's limits, the
-// unit scan's units): read now, so that a bad file costs no scan.
+// unit scan's units): read and checked now, so that a bad file costs no scan.
 bool profileToMerge(const QString &path, const char *what, QTextStream &err)
 {
-    if (path.isEmpty())
-        return true;
-    QFile file(path);
-    QString problem;
-    if (!file.open(QIODevice::ReadOnly))
-        problem = QStringLiteral("cannot be read (%1): %2 merged into an existing profile, such as the one mbscope scan "
-                                 "--map UNIT --profile-out FILE writes")
-                      .arg(file.errorString(), QLatin1String(what));
-    else
-        (void)ProfileDraft::mergeLimits(file.readAll(), {}, &problem);
-    if (!problem.isEmpty()) {
-        err << "mbscope scan: --profile-out " << path << ": " << problem << '\n';
-        return false;
-    }
-    return true;
+    QByteArray unused;
+    return path.isEmpty() || readProfileToMerge(path, what, &unused, err);
 }
 
 int runUnits(const Common &common, UnitScanSettings settings, const QString &profilePath, QTextStream &out, QTextStream &err)
@@ -137,24 +124,11 @@ int runUnits(const Common &common, UnitScanSettings settings, const QString &pro
         if (!writeScanFile(common.watchesPath, ScanWatches::toJson(watches), "watch definitions", err))
             return ExitUsage;
     }
-    if (!profilePath.isEmpty()) {
-        QFile file(profilePath);
-        QString said;
-        QString problem;
-        QByteArray merged;
-        if (!file.open(QIODevice::ReadOnly))
-            problem = file.errorString();
-        else
-            merged = ProfileDraft::mergeUnits(file.readAll(), results, &said, &problem);
-        file.close();
-        if (!problem.isEmpty()) {
-            err << "mbscope scan: --profile-out " << profilePath << ": " << problem << '\n';
-            return ExitUsage;
-        }
-        err << "mbscope scan: " << said << '\n';
-        if (!writeScanFile(profilePath, merged, "profile units", err))
-            return ExitUsage;
-    }
+    if (!profilePath.isEmpty()
+        && !mergeIntoProfileFile(profilePath, [&results](const QByteArray &profile, QString *said, QString *problem) {
+               return ProfileDraft::mergeUnits(profile, results, said, problem);
+           }, "profile units", err))
+        return ExitUsage;
     if (common.json)
         out << QJsonDocument(ScanReport::unitsJson(settings, results, progress, end)).toJson(QJsonDocument::Indented);
     else
@@ -162,7 +136,8 @@ int runUnits(const Common &common, UnitScanSettings settings, const QString &pro
     out.flush();
     if (end == JobEnd::LinkError && progress.found == 0)
         return ExitLinkError;
-    return progress.found > 0 ? ExitOk : ExitFailure;
+    // Only 0 or 255 answering (a gateway for itself) is no device found.
+    return ScanReport::devicesFound(results) > 0 ? ExitOk : ExitFailure;
 }
 
 int runMap(const Common &common, MapScanSettings settings, const QString &profilePath, QTextStream &out, QTextStream &err)

@@ -1,10 +1,12 @@
 #include "scan/scanoptions.h"
 
 #include "common/targetoptions.h"
+#include "poll/profilelimits.h"
 
 #include "time/duration.h"
 
 #include <QtCore/QFile>
+#include <QtCore/QSaveFile>
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QTextStream>
 
@@ -99,13 +101,48 @@ bool ScanOptionReader::integers(const QCommandLineOption &option, qint64 low, qi
 
 bool writeScanFile(const QString &path, const QByteArray &bytes, const char *what, QTextStream &err)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate) || file.write(bytes) != bytes.size()) {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
         err << "mbscope scan: cannot write the " << what << " to " << path << ": " << file.errorString() << '\n';
         return false;
     }
     err << "mbscope scan: " << what << " written to " << path << '\n';
     return true;
+}
+
+bool readProfileToMerge(const QString &path, const char *what, QByteArray *json, QTextStream &err)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        err << "mbscope scan: --profile-out " << path << ": cannot be read (" << file.errorString() << "): " << what
+            << " merged into an existing profile, such as the one mbscope scan --map UNIT --profile-out FILE writes\n";
+        return false;
+    }
+    *json = file.readAll();
+    if (const QString problem = ProfileLimits::loadProblem(*json, path); !problem.isEmpty()) {
+        err << "mbscope scan: --profile-out " << path << ": not a profile the simulator loads, so nothing is merged into it:\n"
+            << problem << '\n';
+        return false;
+    }
+    return true;
+}
+
+bool mergeIntoProfileFile(const QString &path, const ProfileMergeFunction &merge, const char *written, QTextStream &err)
+{
+    QByteArray profile; // read again: it was checked before the scan, and may have changed since
+    if (!readProfileToMerge(path, "what the scan found is", &profile, err))
+        return false;
+    QString said;
+    QString problem;
+    const QByteArray merged = merge(profile, &said, &problem);
+    if (problem.isEmpty())
+        problem = ProfileLimits::loadProblem(merged, path);
+    if (!problem.isEmpty()) {
+        err << "mbscope scan: --profile-out " << path << ": nothing merged: " << problem << '\n';
+        return false;
+    }
+    err << "mbscope scan: " << said << '\n';
+    return writeScanFile(path, merged, written, err);
 }
 
 } // namespace mbscope::app

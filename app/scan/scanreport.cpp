@@ -115,6 +115,14 @@ const char *answerName(FunctionSupport::Answer a)
 
 } // namespace
 
+int ScanReport::devicesFound(const QList<UnitProbe> &probes)
+{
+    int found = 0;
+    for (const UnitProbe &p : probes)
+        found += p.isPresent() && p.unit >= 1 && p.unit <= 247 ? 1 : 0;
+    return found;
+}
+
 QString ScanReport::durationText(qint64 ms)
 {
     if (ms < 1000)
@@ -199,7 +207,7 @@ QString ScanReport::unitsText(const UnitScanSettings &settings, const QList<Unit
     for (auto it = counts.cbegin(); it != counts.cend(); ++it)
         parts.append(QStringLiteral("%1 %2").arg(it.value()).arg(QString::fromLatin1(unitProbeKindName(it.key()))));
     const QList<int> outside = answeredOutside(probes);
-    QString found = QStringLiteral("found %1 device(s)").arg(progress.found - int(outside.size()));
+    QString found = QStringLiteral("found %1 device(s)").arg(devicesFound(probes));
     if (!outside.isEmpty()) {
         QStringList ids;
         for (int id : outside)
@@ -248,7 +256,7 @@ QJsonObject ScanReport::unitsJson(const UnitScanSettings &settings, const QList<
         {QStringLiteral("timeout_ms"), settings.timeoutMs},
         {QStringLiteral("gap_ms"), settings.gapMs},
         {QStringLiteral("asked"), progress.done},
-        {QStringLiteral("found"), progress.found - int(answeredOutside(probes).size())}, // at unit addresses 1-247
+        {QStringLiteral("found"), devicesFound(probes)}, // at unit addresses 1-247
         {QStringLiteral("answered_outside_unit_addresses"), [&] {
              QJsonArray ids;
              for (int id : answeredOutside(probes))

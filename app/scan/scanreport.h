@@ -23,6 +23,9 @@ public:
     [[nodiscard]] static QString mapText(const RegisterMap &map, JobEnd end, qint64 elapsedMs);
     [[nodiscard]] static QJsonObject mapJson(const RegisterMap &map, JobEnd end, qint64 elapsedMs);
     // "1m 05s", "12.3 s", "850 ms"
+    // The devices a unit scan found: ids 1-247 that answered (an MBAP server answering 0 or 255
+    // for itself is no device of its own).
+    [[nodiscard]] static int devicesFound(const QList<UnitProbe> &probes);
     [[nodiscard]] static QString durationText(qint64 ms);
     // The live line: "ids 37/247  found 2  12 s, about 48 s left  (Ctrl-C stops)"; detail (what is
     // being done: "gap 50 ms") follows the counts.

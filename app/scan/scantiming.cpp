@@ -4,12 +4,12 @@
 #include "common/framelog.h"
 #include "common/interruptwatcher.h"
 #include "common/progressline.h"
+#include "scan/scanoptions.h"
 #include "scan/scanreport.h"
 
 #include "discovery/profiledraft.h"
 #include "traffic/trafficrecording.h"
 
-#include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
@@ -130,23 +130,15 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
     };
 }
 
-// The limits measured merged into the profile at path (read again: it was checked before the scan).
-bool writeLimits(const QString &path, const QJsonObject &limits, QTextStream &err)
+// The limits measured merged into the profile at path.
+bool writeLimits(const QString &path, const TimingReport &report, quint8 function, QTextStream &err)
 {
-    QFile file(path);
-    QString problem;
-    QByteArray merged;
-    if (!file.open(QIODevice::ReadOnly))
-        problem = file.errorString();
-    else
-        merged = ProfileDraft::mergeLimits(file.readAll(), limits, &problem);
-    file.close();
-    if (!problem.isEmpty()) {
-        err << "mbscope scan: --profile-out " << path << ": " << problem << '\n';
-        return false;
-    }
-    err << "mbscope scan: limits measured: " << ProfileDraft::describeLimits(limits) << '\n';
-    return writeScanFile(path, merged, "profile limits", err);
+    return mergeIntoProfileFile(path, [&](const QByteArray &profile, QString *said, QString *problem) {
+        const QByteArray merged = ProfileDraft::mergeLimits(profile, report.profileLimits(function), report.answeredReads(function), said,
+                                                            problem);
+        *said = QStringLiteral("limits measured: ") + *said;
+        return merged;
+    }, "profile limits", err);
 }
 
 } // namespace
@@ -197,7 +189,7 @@ int runTimingScan(const TimingScanSettings &settings, bool asJson, const ScanRec
         if (!asJson)
             return ExitFailure;
     }
-    if (!profilePath.isEmpty() && report->firstAnswerMs >= 0 && !writeLimits(profilePath, report->profileLimits(settings.function), err))
+    if (!profilePath.isEmpty() && report->firstAnswerMs >= 0 && !writeLimits(profilePath, *report, settings.function, err))
         return ExitUsage;
     if (asJson)
         out << QJsonDocument(json(settings, *report, scanner.end())).toJson(QJsonDocument::Indented);

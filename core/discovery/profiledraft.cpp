@@ -211,7 +211,8 @@ QByteArray ProfileDraft::mergeUnits(const QByteArray &profile, const QList<UnitP
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
-QByteArray ProfileDraft::mergeLimits(const QByteArray &profile, const QJsonObject &limits, QString *error)
+QByteArray ProfileDraft::mergeLimits(const QByteArray &profile, const QJsonObject &limits, const QMap<int, int> &answered,
+                                     QString *said, QString *error)
 {
     const std::optional<QJsonObject> parsed = profileObject(profile, error);
     if (!parsed)
@@ -224,16 +225,19 @@ QByteArray ProfileDraft::mergeLimits(const QByteArray &profile, const QJsonObjec
              : key == QLatin1String("maxClients") ? QStringLiteral("extraClients")
                                                    : QString();
     };
+    // The profile may spell a function's code another way ("3", "0X03"): one key a function.
+    const auto removeFunction = [](QJsonObject &quantities, const QString &canonical) {
+        for (const QString &key : quantities.keys()) {
+            if (const std::optional<int> code = DeviceLimits::parseFunctionKey(key); code && DeviceLimits::functionKey(*code) == canonical)
+                quantities.remove(key);
+        }
+    };
     for (auto it = limits.begin(); it != limits.end(); ++it) {
         if (it.key() == QLatin1String("maxQuantity")) {
             QJsonObject quantities = merged.value(it.key()).toObject();
             const QJsonObject given = it.value().toObject();
             for (auto q = given.begin(); q != given.end(); ++q) {
-                // The profile may spell the code another way ("3", "0X03"): one key a function.
-                for (const QString &key : quantities.keys()) {
-                    if (const std::optional<int> code = DeviceLimits::parseFunctionKey(key); code && DeviceLimits::functionKey(*code) == q.key())
-                        quantities.remove(key);
-                }
+                removeFunction(quantities, q.key());
                 if (!q.value().isNull())
                     quantities.insert(q.key(), q.value());
             }
@@ -249,10 +253,30 @@ QByteArray ProfileDraft::mergeLimits(const QByteArray &profile, const QJsonObjec
             merged.insert(it.key(), it.value());
         }
     }
+    QStringList disproved;
+    QJsonObject quantities = merged.value(QLatin1String("maxQuantity")).toObject();
+    for (auto a = answered.cbegin(); a != answered.cend(); ++a) {
+        const QString canonical = DeviceLimits::functionKey(a.key());
+        for (const QString &key : quantities.keys()) {
+            const std::optional<int> code = DeviceLimits::parseFunctionKey(key);
+            const int limit = quantities.value(key).toInt();
+            if (code && DeviceLimits::functionKey(*code) == canonical && limit < a.value()) {
+                disproved.append(QStringLiteral("maxQuantity %1 %2 removed (%3 were answered at once)").arg(canonical).arg(limit).arg(a.value()));
+                removeFunction(quantities, canonical);
+            }
+        }
+    }
+    if (quantities.isEmpty())
+        merged.remove(QStringLiteral("maxQuantity"));
+    else
+        merged.insert(QStringLiteral("maxQuantity"), quantities);
     if (merged.isEmpty())
         root.remove(QStringLiteral("limits"));
     else
         root.insert(QStringLiteral("limits"), merged);
+    *said = describeLimits(limits);
+    if (!disproved.isEmpty())
+        *said += QStringLiteral("; ") + disproved.join(QStringLiteral("; "));
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 

@@ -4,6 +4,7 @@
 #include "unitprobe.h"
 
 #include <QtCore/QList>
+#include <QtCore/QMap>
 
 #include <QtCore/QByteArray>
 #include <QtCore/QJsonObject>
@@ -25,9 +26,12 @@ public:
     // profile (a profile's JSON text) with limits merged into its "limits": each member given
     // replaces the profile's, maxQuantity function by function; a member given as null (measured:
     // the device has no such limit) removes the profile's, minGapMs with its tooSoon and maxClients
-    // with its extraClients; everything else is kept. Empty and *error set when profile is not a
-    // JSON object.
-    [[nodiscard]] static QByteArray mergeLimits(const QByteArray &profile, const QJsonObject &limits, QString *error);
+    // with its extraClients; everything else is kept. answered holds reads the device answered
+    // (function code -> quantity): a profile's maxQuantity below one is disproved and removed. *said
+    // is one line for a person (describeLimits, and what was removed). Empty and *error set when
+    // profile is not a JSON object.
+    [[nodiscard]] static QByteArray mergeLimits(const QByteArray &profile, const QJsonObject &limits, const QMap<int, int> &answered,
+                                                QString *said, QString *error);
     // profile with what a unit scan found: each id that answered (with data or an exception of
     // its own) and is not among the profile's units is added as a unit of its own ({"id": N},
     // its tables for a map scan to fill); "unknownUnit" says what the ids that were not there got

@@ -105,6 +105,14 @@ QJsonObject TimingReport::profileLimits(quint8 function) const
     return limits;
 }
 
+QMap<int, int> TimingReport::answeredReads(quint8 function) const
+{
+    QMap<int, int> answered;
+    if (largestQuantity > 0)
+        answered.insert(function, largestQuantity);
+    return answered;
+}
+
 TimingScanner::TimingScanner(QObject *parent)
     : QObject(parent)
     , m_channel(new ProbeChannel(this))

@@ -9,6 +9,7 @@
 #include <QtCore/QJsonObject>
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QList>
+#include <QtCore/QMap>
 #include <QtCore/QObject>
 
 #include <optional>
@@ -93,6 +94,9 @@ struct TimingReport {
     // the connection stayed open). What was not measured is left out; a null says the device
     // showed no such limit.
     [[nodiscard]] QJsonObject profileLimits(quint8 function) const;
+    // The largest read answered (function -> largestQuantity; empty when none was), which
+    // disproves a smaller maxQuantity a profile holds even when no limit was found.
+    [[nodiscard]] QMap<int, int> answeredReads(quint8 function) const;
 };
 
 // A device's timing limits through a link (issue 18, item 4): how long after connecting it

@@ -15,6 +15,10 @@ QString UnitScanSettings::problem() const
         return QStringLiteral("unit 0 is the broadcast address on %1 framing: nobody answers it (its unit ids are 1-247: "
                               "start at 1)")
             .arg(framingName(url.framing()));
+    if (lastUnit > 247 && url.framing() != Framing::Tcp && url.framing() != Framing::Udp)
+        return QStringLiteral("unit ids 248-255 are reserved on %1 framing (Serial Line V1.02, 2.2; its unit ids are 1-247): "
+                              "end at 247")
+            .arg(framingName(url.framing()));
     if (function < 1 || function > 4)
         return QStringLiteral("function %1 is not a read: a scan asks with 01, 02, 03 or 04").arg(function);
     const int maxQuantity = QuantityLimits::maxQuantity(quint8(function));

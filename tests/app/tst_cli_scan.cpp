@@ -352,6 +352,9 @@ void TestCliScan::badInput_data()
                                     << QStringLiteral("--all-ids asks 0-255, which only an MBAP target (tcp://, tls://, udp://) "
                                                       "has; on rtu framing the unit ids are 1-247 (0 is the broadcast, which no "
                                                       "unit answers; 248-255 are reserved): leave --all-ids out to ask 1-247");
+    QTest::newRow("reserved ids on rtu") << QStringList{QStringLiteral("--units"), QStringLiteral("240-250")}
+                                         << QStringLiteral("unit ids 248-255 are reserved on rtu framing (Serial Line V1.02, 2.2; "
+                                                           "its unit ids are 1-247): end at 247");
     QTest::newRow("ids reversed") << QStringList{QStringLiteral("--units"), QStringLiteral("9-2")}
                                   << QStringLiteral("--units '9-2': the first is above the last");
     QTest::newRow("id 300") << QStringList{QStringLiteral("--units"), QStringLiteral("1-300")}
@@ -363,6 +366,19 @@ void TestCliScan::badInput_data()
     QTest::newRow("units profile missing") << QStringList{QStringLiteral("--profile-out"), QStringLiteral("x.json")}
                                            << QStringLiteral("--profile-out x.json: cannot be read (No such file or directory): the "
                                                              "units found are merged into an existing profile");
+    {
+        // An empty object was merged into and written without a name, which simulate then refused.
+        QFile empty(m_dir.filePath(QStringLiteral("empty-profile.json")));
+        QVERIFY(empty.open(QIODevice::WriteOnly) && empty.write("{}") == 2);
+    }
+    QTest::newRow("units profile not a profile")
+        << QStringList{QStringLiteral("--profile-out"), m_dir.filePath(QStringLiteral("empty-profile.json"))}
+        << QStringLiteral("empty-profile.json: not a profile the simulator loads, so nothing is merged into it:\n")
+               + m_dir.filePath(QStringLiteral("empty-profile.json")) + QStringLiteral(": 'name' is missing");
+    QTest::newRow("timing profile not a profile")
+        << QStringList{QStringLiteral("--timing"), QStringLiteral("1"), QStringLiteral("--profile-out"),
+                       m_dir.filePath(QStringLiteral("empty-profile.json"))}
+        << QStringLiteral("'units' is missing");
     QTest::newRow("timing profile missing")
         << QStringList{QStringLiteral("--timing"), QStringLiteral("1"), QStringLiteral("--profile-out"), QStringLiteral("no-such-profile.json")}
         << QStringLiteral("--profile-out no-such-profile.json: cannot be read (No such file or directory): with --timing the limits are "
@@ -650,7 +666,8 @@ void TestCliScan::timingFindsAHangUp()
     QVERIFY(writeFile(device, R"({"name": "hangs-up", "limits": {"closesAfterAnswer": true},
                                   "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})"));
     const QString target = m_dir.filePath(QStringLiteral("hangs-up-draft.json"));
-    QVERIFY(writeFile(target, R"({"name": "hangs-up-draft", "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})"));
+    QVERIFY(writeFile(target, R"({"name": "hangs-up-draft", "limits": {"maxQuantity": {"3": 16}},
+                                  "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 100}]}}]})"));
     QFile draft(target);
     Background sim;
     QString error;
@@ -672,10 +689,12 @@ void TestCliScan::timingFindsAHangUp()
     QCOMPARE(limits.value(QStringLiteral("closesAfterAnswer")), QJsonValue(true));
     QVERIFY2(!limits.contains(QStringLiteral("maxClients")), qPrintable(QJsonDocument(limits).toJson()));
     // Its map is 100 registers: 101 from address 0 gets 02, which says where the map ends, not how
-    // much a read may ask (before, maxQuantity 0x03 100 was written).
+    // much a read may ask (before, maxQuantity 0x03 100 was written). The draft's 16 is disproved
+    // by the 100 answered and removed (it was kept, unsaid).
     QCOMPARE(o.value(QStringLiteral("largest_quantity")).toInt(), 100);
     QCOMPARE(o.value(QStringLiteral("largest_ends_map")), QJsonValue(true));
     QVERIFY2(!limits.contains(QStringLiteral("maxQuantity")), qPrintable(QJsonDocument(limits).toJson()));
+    QVERIFY2(r.errText().contains(QStringLiteral("; maxQuantity 0x03 16 removed (100 were answered at once)\n")), r.describe());
 }
 
 // Two clients at most, the third refused or served by knocking the first off: the timing scan
@@ -817,6 +836,11 @@ void TestCliScan::allIdsSaysWhatItAsked()
     const CliResult some = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--units"), QStringLiteral("1-3"),
                                        QStringLiteral("--timeout"), QStringLiteral("20ms"), QStringLiteral("--json")});
     QCOMPARE(some.json().value(QStringLiteral("outside_unit_addresses")).toArray().size(), 0);
+    // Only the server answering for itself is no device found: exit status 1 (it was 0).
+    const CliResult server = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--units"),
+                                         QStringLiteral("250-255"), QStringLiteral("--timeout"), QStringLiteral("20ms")});
+    QVERIFY2(server.finished && server.exitCode == 1, server.describe());
+    QVERIFY2(server.outText().contains(QStringLiteral("found 0 device(s) at unit addresses 1-247; id 255 answered too")), server.describe());
 }
 
 void TestCliScan::unitsIntoAProfile_data()

@@ -1,5 +1,7 @@
 #include "scanform.h"
 
+#include "profile/profileloader.h"
+
 #include <QtCore/QDir>
 #include <QtCore/QFile>
 #include <QtCore/QFileInfo>
@@ -88,10 +90,20 @@ bool ScanForm::mergeIntoProfile(const QString &path, const ProfileMerge &merge, 
         showProblem(status, tr("Cannot read %1: %2").arg(shown, in.errorString()));
         return false;
     }
+    const QByteArray profile = in.readAll();
+    in.close();
+    if (const ProfileLoadResult loaded = ProfileLoader::parse(profile, shown); !loaded.ok) {
+        showProblem(status, tr("%1 is not a profile the simulator loads, so nothing was recorded in it: %2")
+                                .arg(shown, loaded.errorText()));
+        return false;
+    }
     QString said;
     QString problem;
-    const QByteArray merged = merge(in.readAll(), &said, &problem);
-    in.close();
+    const QByteArray merged = merge(profile, &said, &problem);
+    if (problem.isEmpty()) {
+        if (const ProfileLoadResult loaded = ProfileLoader::parse(merged, shown); !loaded.ok)
+            problem = loaded.errorText();
+    }
     if (!problem.isEmpty()) {
         showProblem(status, tr("Cannot record it in %1: %2").arg(shown, problem));
         return false;

@@ -43,8 +43,8 @@ public:
     // (counts: "12 of 40 ids asked, 1 found").
     static void showProgress(QProgressBar *bar, QLabel *status, const JobProgress &progress, const QString &counts);
     // Merges what a scan found into an existing profile file at path (read, merge(text, &said,
-    // &problem), saved whole or not at all), the status line saying what was recorded or what is
-    // wrong. The scans' "Record ... in profile" buttons (ProfileDraft::mergeLimits, mergeUnits).
+    // &problem), saved whole or not at all; the file and the result must load as the simulator loads
+    // profiles), the status line saying what was recorded or what is wrong. The scans' "Record ... in profile" buttons (ProfileDraft::mergeLimits, mergeUnits).
     using ProfileMerge = std::function<QByteArray(const QByteArray &profile, QString *said, QString *problem)>;
     static bool mergeIntoProfile(const QString &path, const ProfileMerge &merge, QLabel *status);
     // "4.2 s" under a minute, "3 min 20 s" from one.

@@ -262,9 +262,8 @@ bool TimingScanDialog::saveLimits(const QString &path)
     if (!m_report || m_report->firstAnswerMs < 0)
         return false;
     const QJsonObject limits = m_report->profileLimits(m_scannedFunction);
-    return ScanForm::mergeIntoProfile(path, [&limits](const QByteArray &profile, QString *said, QString *problem) {
-        *said = ProfileDraft::describeLimits(limits);
-        return ProfileDraft::mergeLimits(profile, limits, problem);
+    return ScanForm::mergeIntoProfile(path, [&limits, this](const QByteArray &profile, QString *said, QString *problem) {
+        return ProfileDraft::mergeLimits(profile, limits, m_report->answeredReads(m_scannedFunction), said, problem);
     }, m_status);
 }
 

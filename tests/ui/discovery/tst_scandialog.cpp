@@ -170,6 +170,19 @@ void TestScanDialog::scanListsEveryId()
 
     if (const QString path = qEnvironmentVariable("MBSCOPE_SCAN_SCREENSHOT"); !path.isEmpty())
         dialog.grab().save(path);
+
+    // A file that is no profile is left alone (an empty object was written back without a name,
+    // which the simulator then refused).
+    const QString emptyPath = dir.filePath(QStringLiteral("empty.json"));
+    QVERIFY(writeTestFile(emptyPath, "{}"));
+    QVERIFY(clickPickingFile(record, emptyPath));
+    QFile empty(emptyPath);
+    QVERIFY(empty.open(QIODevice::ReadOnly));
+    QCOMPARE(empty.readAll(), QByteArray("{}"));
+    const QString refused = dialog.findChild<QLabel *>(QStringLiteral("scanStatus"))->text();
+    QVERIFY2(refused.contains(QLatin1String("is not a profile the simulator loads, so nothing was recorded in it: "))
+                 && refused.contains(QLatin1String("'name' is missing")),
+             qPrintable(refused));
 }
 
 void TestScanDialog::stopEndsTheScan()
