@@ -39,12 +39,13 @@ int quantityOf(const QByteArray &pdu)
 
 } // namespace
 
-QStringList DevicePace::fitReads(RequestPlan &plan, const QMap<quint8, int> &maxQuantity, const LinkUrl &url,
-                                 const QString &source)
+DevicePace::Fit DevicePace::fitReads(RequestPlan &plan, const QMap<quint8, int> &maxQuantity, const LinkUrl &url,
+                                     const QString &source)
 {
-    QStringList notes;
+    Fit fit;
+    QStringList &notes = fit.notes;
     if (maxQuantity.isEmpty())
-        return notes;
+        return fit;
     // A cut falls between whole values of every format: f32 and u64 together cut at 4 registers.
     int whole = 1;
     for (const RegisterFormat &f : std::as_const(plan.formats))
@@ -72,6 +73,7 @@ QStringList DevicePace::fitReads(RequestPlan &plan, const QMap<quint8, int> &max
         const int step = code >= 3 ? limit - limit % whole : limit;
         if (!builtRead || step < 1) {
             fitted.append(r);
+            ++fit.sentOver;
             notes.append(over + (builtRead ? QStringLiteral(": one value of --format takes %1 registers, more than a read "
                                                             "may ask; sent as given")
                                                  .arg(whole)
@@ -105,13 +107,14 @@ QStringList DevicePace::fitReads(RequestPlan &plan, const QMap<quint8, int> &max
         if (plan.requests.size() == 1) // the heading says what the cycle reads, all together
             plan.summary = RequestNames::describeItems(code, r.unit, r.address, r.quantity,
                                                        RequestNames::readNoun(code, r.quantity), r.oneBased);
+        ++fit.cut;
         notes.append(over + QStringLiteral(": read as %1 requests of at most %2 (%3)")
                                 .arg(pieces.size())
                                 .arg(step)
                                 .arg(pieces.join(QStringLiteral(", "))));
     }
     plan.requests = fitted;
-    return notes;
+    return fit;
 }
 
 } // namespace mbscope::app

@@ -22,8 +22,13 @@ public:
     // whole value of every --format, sent one after the other in the cycle. Requests sent as typed
     // (--hex) and writes are sent as given. Returns a line for each request it cut and each it
     // left over the device's limit, for standard error; source names where the limits came from.
-    [[nodiscard]] static QStringList fitReads(RequestPlan &plan, const QMap<quint8, int> &maxQuantity,
-                                              const LinkUrl &url, const QString &source);
+    struct Fit {
+        QStringList notes;
+        int cut = 0;        // requests cut into several
+        int sentOver = 0;   // requests over the limit sent as given
+    };
+    [[nodiscard]] static Fit fitReads(RequestPlan &plan, const QMap<quint8, int> &maxQuantity, const LinkUrl &url,
+                                      const QString &source);
 };
 
 } // namespace mbscope::app

@@ -179,19 +179,24 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
         }
         limits = *loaded;
     }
-    // The profile's waits with some to spare (DeviceLimits::clientGap); --gap and --warm-up win.
+    // The profile's waits with some to spare (DeviceLimits::clientGap); --gap and --warm-up win;
+    // the target's own (gap=, warmup=) holds when longer, as the engine keeps it
+    // (EngineOptions::withPaceOf).
     const QString ofProfile = QStringLiteral(" of --profile %1").arg(out.profile);
+    const LinkUrl &url = out.target.url;
     const struct {
         const QCommandLineOption *option;
         std::chrono::nanoseconds *value;
         std::chrono::nanoseconds fromProfile;
+        std::chrono::nanoseconds fromTarget;
         QString what;
         QString limit;
+        const char *urlKey;
     } waits[] = {
-        {&m_gap, &out.engine.requestGap, limits.clientGap(), QStringLiteral("gap %1 between requests"),
-         QStringLiteral("minGapMs %1%2, 1 ms to spare").arg(limits.minGapMs).arg(ofProfile)},
-        {&m_warmUp, &out.engine.warmUp, limits.clientWarmUp(), QStringLiteral("warm-up %1 after connecting"),
-         QStringLiteral("warmUpMs %1%2, a tenth to spare").arg(limits.warmUpMs).arg(ofProfile)},
+        {&m_gap, &out.engine.requestGap, limits.clientGap(), url.gap, QStringLiteral("gap %1 between requests"),
+         QStringLiteral("minGapMs %1%2, 1 ms to spare").arg(limits.minGapMs).arg(ofProfile), "gap"},
+        {&m_warmUp, &out.engine.warmUp, limits.clientWarmUp(), url.warmUp, QStringLiteral("warm-up %1 after connecting"),
+         QStringLiteral("warmUpMs %1%2, a tenth to spare").arg(limits.warmUpMs).arg(ofProfile), "warmup"},
     };
     for (const auto &wait : waits) {
         QString source = wait.limit;
@@ -205,18 +210,19 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
             *wait.value = std::chrono::nanoseconds(d.ns);
             source = QStringLiteral("--") + wait.option->names().constFirst();
         }
-        if (wait.value->count() > 0)
+        if (wait.fromTarget > *wait.value) {
+            *wait.value = wait.fromTarget;
+            source = QStringLiteral("%1= of --target").arg(QLatin1String(wait.urlKey));
+        }
+        // A wait turned off with --gap 0 or --warm-up 0 is said too: it overrides the profile's.
+        if (wait.value->count() > 0 || parser.isSet(*wait.option))
             out.pace.append(wait.what.arg(formatDuration(wait.value->count())) + QStringLiteral(" (%1)").arg(source));
     }
-    out.engine.closeAfterAnswer = limits.closesAfterAnswer;
-    if (limits.closesAfterAnswer)
-        out.pace.append(QStringLiteral("a new connection for each request (closesAfterAnswer%1)").arg(ofProfile));
-    if (!limits.maxQuantity.isEmpty()) {
-        QStringList largest;
-        for (auto it = limits.maxQuantity.cbegin(); it != limits.maxQuantity.cend(); ++it)
-            largest.append(QStringLiteral("%1 %2").arg(DeviceLimits::functionKey(it.key())).arg(it.value()));
-        out.pace.append(QStringLiteral("reads cut to maxQuantity %1%2").arg(largest.join(QStringLiteral(", ")), ofProfile));
-    }
+    out.engine.closeAfterAnswer = limits.closesAfterAnswer || url.closeAfterAnswer;
+    if (out.engine.closeAfterAnswer)
+        out.pace.append(QStringLiteral("a new connection for each request (%1)")
+                            .arg(url.closeAfterAnswer ? QStringLiteral("close=each of --target")
+                                                      : QStringLiteral("closesAfterAnswer") + ofProfile));
     if (!out.profile.isEmpty() && !limits.limitsRequests() && !limits.closesAfterAnswer)
         out.pace.append(QStringLiteral("none from --profile %1: it has no minGapMs, warmUpMs, maxQuantity or closesAfterAnswer")
                             .arg(out.profile));
@@ -272,10 +278,26 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
         return false;
     // Said before the first request: what the poll sends differs from what was typed, or the
     // device is likely to refuse it.
-    for (const QString &note : DevicePace::fitReads(out.plan, limits.maxQuantity, out.target.url,
-                                                     QStringLiteral("--profile %1").arg(out.profile)))
+    const DevicePace::Fit fit = DevicePace::fitReads(out.plan, limits.maxQuantity, out.target.url,
+                                                     QStringLiteral("--profile %1").arg(out.profile));
+    for (const QString &note : fit.notes)
         err << prefix << note << '\n';
     err.flush();
+    if (!limits.maxQuantity.isEmpty()) {
+        QStringList largest;
+        for (auto it = limits.maxQuantity.cbegin(); it != limits.maxQuantity.cend(); ++it)
+            largest.append(QStringLiteral("%1 %2").arg(DeviceLimits::functionKey(it.key())).arg(it.value()));
+        const QString of = QStringLiteral("maxQuantity %1%2").arg(largest.join(QStringLiteral(", ")), ofProfile);
+        // Said as it happened: a read cut, one sent over the limit as given (--hex, a write), or none over it.
+        QStringList said;
+        if (fit.cut > 0)
+            said.append(QStringLiteral("reads cut to %1").arg(of));
+        if (fit.sentOver > 0)
+            said.append(QStringLiteral("%1 request(s) over %2 sent as given").arg(fit.sentOver).arg(of));
+        if (said.isEmpty())
+            said.append(QStringLiteral("every request within %1").arg(of));
+        out.pace.append(said);
+    }
     for (const PlannedRequest &r : out.plan.requests)
         out.settings.poll.items.append(r.item);
     return true;

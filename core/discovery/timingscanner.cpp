@@ -49,6 +49,9 @@ QString TimingScanSettings::problem() const
 {
     if (url.delimited.enabled)
         return QStringLiteral("a delimited link carries no Modbus: there is nothing to time");
+    if (url.hasPace())
+        return QStringLiteral("the timing scan measures the device's own pace, which gap=, warmup= and close= of the target "
+                              "would hide: leave them out of the target");
     if (function < 1 || function > 4)
         return QStringLiteral("function %1 is not a read: 01, 02, 03 or 04").arg(function);
     if (timeoutMs < 1 || requestsPerGap < 1 || pipelineDepth < 1 || maxClients < 1 || gapsMs.isEmpty())

@@ -70,8 +70,9 @@ EngineCore::~EngineCore()
     }
 }
 
-void EngineCore::setTarget(const LinkUrl &url, const EngineOptions &options)
+void EngineCore::setTarget(const LinkUrl &url, const EngineOptions &given)
 {
+    const EngineOptions options = given.withPaceOf(url);
     m_deferPump = true;
     failInFlight(QStringLiteral("%1: the target changed to %2").arg(m_url.toString(), url.toString()));
     m_deferPump = false;

@@ -1,6 +1,10 @@
 #pragma once
 
+#include "transport/linkurl.h"
+
 #include <QtCore/QtGlobal>
+
+#include <algorithm>
 
 #include <chrono>
 
@@ -38,6 +42,17 @@ struct EngineOptions {
     // one for the next request, instead of writing into a connection the device is closing. One
     // request in flight at a time.
     bool closeAfterAnswer = false;
+
+    // These options holding at least the target's own pace (its gap=, warmup=, close=each): the
+    // longer of each wait, a new connection for each request when either asks for it.
+    [[nodiscard]] EngineOptions withPaceOf(const LinkUrl &url) const
+    {
+        EngineOptions paced = *this;
+        paced.requestGap = std::max<std::chrono::nanoseconds>(requestGap, url.gap);
+        paced.warmUp = std::max<std::chrono::nanoseconds>(warmUp, url.warmUp);
+        paced.closeAfterAnswer = closeAfterAnswer || url.closeAfterAnswer;
+        return paced;
+    }
 };
 
 } // namespace mbscope

@@ -42,6 +42,7 @@ constexpr Option kOptions[] = {
     {"connect_timeout", Scope::Network}, {"timeout", Scope::Any},    {"framing", Scope::Any},
     {"start", Scope::Any},        {"end", Scope::Any},               {"checksum", Scope::Any},
     {"display", Scope::Any},      {"mode", Scope::Stream},           {"busy", Scope::Stream},
+    {"gap", Scope::Any},          {"warmup", Scope::Any},            {"close", Scope::Stream},
 };
 
 bool inScope(Scope scope, LinkKind kind)
@@ -274,6 +275,21 @@ QString applyOption(const QString &key, const QString &value, LinkUrl &url)
         return milliseconds(Duration::Millisecond, 1, &url.connectTimeoutMs);
     if (key == u"timeout")
         return milliseconds(Duration::Millisecond, 1, &url.responseTimeoutMs);
+    if (key == u"gap" || key == u"warmup") {
+        int ms = 0;
+        if (const QString error = milliseconds(Duration::Millisecond, 0, &ms); !error.isEmpty())
+            return error;
+        (key == u"gap" ? url.gap : url.warmUp) = std::chrono::milliseconds(ms);
+        return {};
+    }
+    if (key == u"close") {
+        if (value.compare(u"each", Qt::CaseInsensitive) != 0)
+            return QStringLiteral("close '%1' is not known: expected each (the device hangs up after each answer: a new "
+                                  "connection for each request)")
+                .arg(value);
+        url.closeAfterAnswer = true;
+        return {};
+    }
     if (key == u"cert" || key == u"key" || key == u"ca") {
         if (value.isEmpty())
             return QStringLiteral("%1 is empty: expected the path of a PEM file").arg(key);
@@ -347,6 +363,14 @@ QString checkListen(const QSet<QString> &seen, const LinkUrl &url, LinkUse use)
 {
     if (use == LinkUse::Listen && seen.contains(QStringLiteral("mode")))
         return QStringLiteral("'mode' is an option of --target URLs, not of an address to listen on (this one listens already)");
+    if (use == LinkUse::Listen) {
+        for (const char *key : {"gap", "warmup", "close"}) {
+            if (seen.contains(QLatin1String(key)))
+                return QStringLiteral("'%1' is the pace of a device asked (an option of --target URLs), not of an address to "
+                                      "listen on")
+                    .arg(QLatin1String(key));
+        }
+    }
     if (!url.listen) {
         if (seen.contains(QStringLiteral("busy")))
             return QStringLiteral("'busy' needs mode=listen");

@@ -7,6 +7,7 @@
 #include <QtCore/QString>
 #include <QtCore/QStringView>
 
+#include <chrono>
 #include <optional>
 
 namespace mbscope {
@@ -116,6 +117,14 @@ public:
     int responseTimeoutMs = -1; // -1: not given (the engine's default applies)
     bool listen = false;        // mode=listen: wait for the device to connect to host:port
     BusyPolicy busy = BusyPolicy::Replace;
+    // The device's pace (docs/guide/connecting.md, "A device that needs time"), which every engine
+    // on the link holds at least (EngineOptions::withPaceOf): gap= no request sooner than this after
+    // the one before it, warmup= none sooner than this after the link opens, close=each a new
+    // connection for each request (a device that hangs up after each answer). Zero, false: none.
+    std::chrono::milliseconds gap{0};
+    std::chrono::milliseconds warmUp{0};
+    bool closeAfterAnswer = false;
+    [[nodiscard]] bool hasPace() const { return gap.count() > 0 || warmUp.count() > 0 || closeAfterAnswer; }
 
     [[nodiscard]] bool isSerial() const { return kind == LinkKind::Rtu || kind == LinkKind::Ascii; }
     [[nodiscard]] bool isDatagram() const { return kind == LinkKind::Udp || kind == LinkKind::RtuUdp; }

@@ -63,6 +63,12 @@ QString LinkUrl::toString() const
     }
     if (responseTimeoutMs >= 0)
         add("timeout", QString::number(responseTimeoutMs) + QStringLiteral("ms"));
+    if (gap.count() > 0)
+        add("gap", QString::number(gap.count()) + QStringLiteral("ms"));
+    if (warmUp.count() > 0)
+        add("warmup", QString::number(warmUp.count()) + QStringLiteral("ms"));
+    if (closeAfterAnswer)
+        add("close", QStringLiteral("each"));
     if (delimited.enabled) {
         add("framing", QStringLiteral("delimited"));
         auto hexList = [](const QByteArray &bytes) {

@@ -221,7 +221,7 @@
 <context>
     <name>ScanForm</name>
     <message>
-        <location filename="../../ui/discovery/scanform.cpp" line="+31"/>
+        <location filename="../../ui/discovery/scanform.cpp" line="+33"/>
         <source>01 Read Coils</source>
         <translation>01 Baca Coil</translation>
     </message>
@@ -261,7 +261,12 @@
         <translation>Tidak dapat membaca %1: %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
+        <source>%1 is not a profile the simulator loads, so nothing was recorded in it: %2</source>
+        <translation>%1 bukan profil yang dapat dimuat simulator, jadi tidak ada yang dicatat di dalamnya: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Cannot record it in %1: %2</source>
         <translation>Tidak dapat mencatatnya di %1: %2</translation>
     </message>
@@ -758,7 +763,17 @@
         <translation>Berapa lama menunggu jawaban sebelum permintaan dianggap habis waktu</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
+        <source>Pace…</source>
+        <translation>Tempo…</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The device&apos;s pace: a gap between requests, a wait after connecting, a new connection for each request (by hand or from a device profile)</source>
+        <translation>Tempo perangkat: jeda antar permintaan, tunggu setelah tersambung, sambungan baru untuk setiap permintaan (manual atau dari profil perangkat)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>L&amp;isten</source>
         <translation>Si&amp;mak</translation>
     </message>
@@ -779,12 +794,12 @@
     </message>
     <message>
         <location line="+19"/>
-        <location line="+281"/>
+        <location line="+315"/>
         <source>&amp;Connect</source>
         <translation>Sa&amp;mbungkan</translation>
     </message>
     <message>
-        <location line="-278"/>
+        <location line="-312"/>
         <source>Disconnect</source>
         <translation>Putuskan</translation>
     </message>
@@ -814,12 +829,12 @@
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+85"/>
-        <source>Options of this target that no field here shows, used on Connect: %1. They came with the target (a recent target, a session or the command line); choose another link type to drop them.</source>
-        <translation>Opsi target ini yang tidak ditampilkan kolom mana pun di sini, dipakai saat Sambung: %1. Opsi ini datang bersama target (target terakhir, sesi, atau baris perintah); pilih jenis tautan lain untuk membuangnya.</translation>
+        <location line="+118"/>
+        <source>Options of this target that no field here shows, used on Connect: %1. They came with the target (a recent target, a session or the command line) or from Pace…; choose another link type to drop them.</source>
+        <translation>Opsi target ini yang tidak ditampilkan kolom mana pun, dipakai saat Sambung: %1. Opsi ini datang bersama target (target terbaru, sesi, atau baris perintah) atau dari Tempo…; pilih jenis tautan lain untuk membuangnya.</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>No serial port found: plug in the adapter and press Refresh, or type the device path</source>
         <translation>Tidak ada port serial: colokkan adaptor lalu tekan Segarkan, atau ketik path perangkatnya</translation>
     </message>
@@ -869,7 +884,7 @@
         <translation>Putus&amp;kan</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+50"/>
         <source>The link failed: %1. Check that the device is powered and reachable at this address, then send again (the link reopens), or press Disconnect to change the target.</source>
         <translation>Link gagal: %1. Pastikan perangkat menyala dan dapat dijangkau di alamat ini, lalu kirim lagi (link dibuka kembali), atau tekan Putuskan untuk mengganti target.</translation>
     </message>
@@ -4268,6 +4283,119 @@ dan %n lagi</numerusform>
         <location filename="../../ui/common/noticebanner.cpp" line="+46"/>
         <source>Dismiss</source>
         <translation>Tutup</translation>
+    </message>
+</context>
+<context>
+    <name>mbscope::PaceDialog</name>
+    <message>
+        <location filename="../../ui/link/pacedialog.cpp" line="+27"/>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none</source>
+        <translation>tidak ada</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Device pace</source>
+        <translation>Tempo perangkat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>How fast this device may be asked. Every request the window sends on the target keeps it (Send, Poll, sweeps), as gap=, warmup= and close=each of its URL do on the command line.</source>
+        <translation>Seberapa cepat perangkat ini boleh ditanya. Setiap permintaan yang dikirim jendela ke target mematuhinya (Kirim, Poll, sapuan), seperti gap=, warmup= dan close=each pada URL-nya di baris perintah.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>No request sooner than this after the one before it was sent or its exchange ended</source>
+        <translation>Tidak ada permintaan lebih cepat dari ini setelah permintaan sebelumnya dikirim atau pertukarannya selesai</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Nothing is sent sooner than this after the link opens (every time it opens)</source>
+        <translation>Tidak ada yang dikirim lebih cepat dari ini setelah tautan terbuka (setiap kali terbuka)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A new connection for each request (the device hangs up after each answer)</source>
+        <translation>Sambungan baru untuk setiap permintaan (perangkat menutup sambungan setelah setiap jawaban)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Only a stream link (TCP, RTU or ASCII over TCP, TLS) has a connection to hang up</source>
+        <translation>Hanya tautan aliran (TCP, RTU atau ASCII lewat TCP, TLS) yang memiliki sambungan untuk ditutup</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>From &amp;profile…</source>
+        <translation>Dari &amp;profil…</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Take minGapMs, warmUpMs and closesAfterAnswer from a device profile&apos;s limits (as scan --timing --profile-out records them), with some to spare, as poll --profile keeps them</source>
+        <translation>Ambil minGapMs, warmUpMs dan closesAfterAnswer dari batas profil perangkat (seperti yang dicatat scan --timing --profile-out), dengan sedikit cadangan, seperti yang dipatuhi poll --profile</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&amp;Gap between requests:</source>
+        <translation>&amp;Jeda antar permintaan:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Warm-up after connecting:</source>
+        <translation>&amp;Pemanasan setelah tersambung:</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Nothing taken: %1</source>
+        <translation>Tidak ada yang diambil: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>minGapMs %1 (%2 ms, 1 ms to spare)</source>
+        <translation>minGapMs %1 (%2 ms, cadangan 1 ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>warmUpMs %1 (%2 ms, a tenth to spare)</source>
+        <translation>warmUpMs %1 (%2 ms, cadangan sepersepuluh)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>closesAfterAnswer</source>
+        <translation>closesAfterAnswer</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>not closesAfterAnswer (this link has no connection to hang up)</source>
+        <translation>bukan closesAfterAnswer (tautan ini tidak memiliki sambungan untuk ditutup)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 has no minGapMs, warmUpMs or closesAfterAnswer: no pace.</source>
+        <translation>%1 tidak memiliki minGapMs, warmUpMs atau closesAfterAnswer: tanpa tempo.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>From %1: %2.</source>
+        <translation>Dari %1: %2.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Its maxQuantity (%1) is not applied: the window sends the request you build as it is; keep reads within it.</source>
+        <translation>maxQuantity-nya (%1) tidak diterapkan: jendela mengirim permintaan yang Anda susun apa adanya; jaga pembacaan dalam batas itu.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Device pace from a profile</source>
+        <translation>Tempo perangkat dari profil</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Device profiles (*.json)</source>
+        <translation>Profil perangkat (*.json)</translation>
     </message>
 </context>
 <context>
@@ -8242,7 +8370,7 @@ Klik kanan untuk mengganti format</translation>
     <name>mbscope::TimingResultTree</name>
     <message>
         <location filename="../../ui/discovery/timingresulttree.cpp" line="+13"/>
-        <location line="+50"/>
+        <location line="+52"/>
         <location line="+11"/>
         <location line="+23"/>
         <location line="+1"/>
@@ -8251,7 +8379,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>%1 md</translation>
     </message>
     <message>
-        <location line="-68"/>
+        <location line="-70"/>
         <source>Measurement</source>
         <translation>Pengukuran</translation>
     </message>
@@ -8261,7 +8389,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Hasil</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>First answer after connecting</source>
         <translation>Jawaban pertama setelah tersambung</translation>
     </message>
@@ -8596,7 +8724,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Pengaturan yang disarankan ada di papan klip.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>Record limits in profile</source>
         <translation>Catat batas di profil</translation>
     </message>

@@ -318,6 +318,22 @@ void TestCliPoll::paceOptions()
     QCOMPARE(held.json().value(QStringLiteral("count")).toDouble(), 0.0);
     QCOMPARE(held.json().value(QStringLiteral("cycles")).toDouble(), 0.0);
     QVERIFY2(held.json().value(QStringLiteral("elapsed_ms")).toDouble() < 2000, held.describe());
+    // The target's own pace (gap=, warmup=) holds where it is longer than --gap or the profile's,
+    // and the pace line says where it came from; the engine keeps it (each request 35 ms apart).
+    const CliResult url = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), m_url + QStringLiteral("?gap=35ms&warmup=20ms"),
+                                      QStringLiteral("--quantity"), QStringLiteral("2"), QStringLiteral("--gap"), QStringLiteral("5ms"),
+                                      QStringLiteral("--interval"), QStringLiteral("0"), QStringLiteral("--count"), QStringLiteral("5"),
+                                      QStringLiteral("--json")});
+    QVERIFY2(url.exitCode == 0, url.describe());
+    const QJsonObject pace = url.json().value(QStringLiteral("pace")).toObject();
+    QCOMPARE(pace.value(QStringLiteral("gap_ms")).toDouble(), 35.0);
+    QCOMPARE(pace.value(QStringLiteral("warm_up_ms")).toDouble(), 20.0);
+    QVERIFY2(url.json().value(QStringLiteral("elapsed_ms")).toDouble() >= 4 * 35, url.describe());
+    const CliResult urlText = runMbscope({QStringLiteral("poll"), QStringLiteral("--target"), m_url + QStringLiteral("?gap=35ms"),
+                                          QStringLiteral("--quantity"), QStringLiteral("2"), QStringLiteral("--gap"), QStringLiteral("5ms"),
+                                          QStringLiteral("--count"), QStringLiteral("1")});
+    QVERIFY2(urlText.outText().contains(QLatin1String("pace                    gap 35 ms between requests (gap= of --target)\n")),
+             urlText.describe());
     const CliResult bad = poll({QStringLiteral("--gap"), QStringLiteral("fast"), QStringLiteral("--count"), QStringLiteral("1")});
     QCOMPARE(bad.exitCode, 2);
     QVERIFY2(bad.errText().startsWith(QLatin1String("mbscope poll: --gap: ")), bad.describe());

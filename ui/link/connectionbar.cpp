@@ -169,6 +169,13 @@ void ConnectionBar::buildUi()
     m_timeoutSpin->setSuffix(tr(" ms"));
     m_timeoutSpin->setToolTip(tr("How long to wait for an answer before the request counts as timed out"));
 
+    m_paceButton = new QToolButton(this);
+    m_paceButton->setObjectName(QStringLiteral("paceButton"));
+    m_paceButton->setText(tr("Pace…"));
+    m_paceButton->setToolTip(tr("The device's pace: a gap between requests, a wait after connecting, a new connection for "
+                                "each request (by hand or from a device profile)"));
+    connect(m_paceButton, &QToolButton::clicked, this, &ConnectionBar::editPace);
+
     m_listenOnlyCheck = new QCheckBox(tr("L&isten"), this);
     m_listenOnlyCheck->setObjectName(QStringLiteral("listenOnlyCheck"));
     m_listenOnlyCheck->setToolTip(tr("Monitor a bus another master drives: every exchange on the line is shown, paired "
@@ -227,6 +234,7 @@ void ConnectionBar::buildUi()
     row->addWidget(m_unitSpin);
     row->addWidget(buddyLabel(tr("Ti&meout:"), m_timeoutSpin, this));
     row->addWidget(m_timeoutSpin);
+    row->addWidget(m_paceButton);
     row->addWidget(m_keptLabel);
     row->addWidget(m_listenOnlyCheck);
     row->addWidget(m_tapCheck);
@@ -284,6 +292,9 @@ QStringList hiddenOptions(const LinkUrl &url)
     shown.connectTimeoutMs = defaults.connectTimeoutMs;
     shown.listen = defaults.listen;
     shown.busy = defaults.busy;
+    shown.gap = defaults.gap;
+    shown.warmUp = defaults.warmUp;
+    shown.closeAfterAnswer = defaults.closeAfterAnswer;
     const auto options = [](const QString &text) {
         const qsizetype q = text.indexOf(QLatin1Char('?'));
         return q < 0 ? QStringList() : text.mid(q + 1).split(QLatin1Char('&'), Qt::SkipEmptyParts);
@@ -306,12 +317,42 @@ QString ConnectionBar::keptOptions() const
     return hiddenOptions(*m_kept).join(QLatin1Char('&'));
 }
 
+PaceDialog::Pace ConnectionBar::pace() const
+{
+    if (!m_kept || m_kept->kind != kind())
+        return {};
+    return PaceDialog::Pace{m_kept->gap, m_kept->warmUp, m_kept->closeAfterAnswer};
+}
+
+void ConnectionBar::setPace(const PaceDialog::Pace &pace)
+{
+    if (!m_kept || m_kept->kind != kind()) {
+        m_kept = LinkUrl{};
+        m_kept->kind = kind();
+    }
+    m_kept->gap = pace.gap;
+    m_kept->warmUp = pace.warmUp;
+    m_kept->closeAfterAnswer = pace.closeAfterAnswer && !m_kept->isSerial() && !m_kept->isDatagram();
+    showKept();
+    Q_EMIT stateChanged();
+}
+
+void ConnectionBar::editPace()
+{
+    LinkUrl probe;
+    probe.kind = kind();
+    PaceDialog dialog(pace(), !probe.isSerial() && !probe.isDatagram(), this);
+    if (dialog.exec() == QDialog::Accepted)
+        setPace(dialog.pace());
+}
+
 void ConnectionBar::showKept()
 {
     const QString kept = keptOptions();
     m_keptLabel->setText(kept.isEmpty() ? QString() : QStringLiteral("+ ") + kept);
     m_keptLabel->setToolTip(tr("Options of this target that no field here shows, used on Connect: %1. They came with the "
-                               "target (a recent target, a session or the command line); choose another link type to drop them.")
+                               "target (a recent target, a session or the command line) or from Pace…; choose another link type "
+                               "to drop them.")
                                 .arg(kept));
     m_keptLabel->setVisible(!kept.isEmpty());
 }
@@ -478,7 +519,8 @@ void ConnectionBar::setConnected(bool connected)
     m_connected = connected;
     m_connectButton->setText(connected ? tr("Dis&connect") : tr("&Connect"));
     // The target of a live link is what the link uses: change it by disconnecting first.
-    for (QWidget *w : std::initializer_list<QWidget *>{m_kindCombo, m_networkPage, m_serialPage, m_tlsFiles, m_timeoutSpin, m_recentButton})
+    for (QWidget *w : std::initializer_list<QWidget *>{m_kindCombo, m_networkPage, m_serialPage, m_tlsFiles, m_timeoutSpin, m_paceButton,
+                                                       m_recentButton})
         w->setEnabled(!connected);
     m_listenOnlyCheck->setEnabled(!connected && canListen(kind()));
     m_tapCheck->setEnabled(!connected);

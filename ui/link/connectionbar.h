@@ -1,5 +1,6 @@
 #pragma once
 
+#include "pacedialog.h"
 #include "tapsetup.h"
 
 #include "transport/linkurl.h"
@@ -59,6 +60,12 @@ public:
     void setUrl(const LinkUrl &url);
     // The kept options in URL form ("rts=up&rts_after=1ms"), empty when none apply.
     [[nodiscard]] QString keptOptions() const;
+    // The device's pace on the target (its gap=, warmup=, close=each), set with Pace… (PaceDialog)
+    // or with the URL set last; kept like the options no field shows, for as long as the link
+    // type stays the same.
+    [[nodiscard]] PaceDialog::Pace pace() const;
+    void setPace(const PaceDialog::Pace &pace);
+    [[nodiscard]] QToolButton *paceButton() const { return m_paceButton; }
     [[nodiscard]] int unitId() const;
     void setUnitId(int unit);
     [[nodiscard]] int timeoutMs() const;
@@ -114,6 +121,7 @@ private:
     void onConnectClicked();
     void onKindChanged();
     void rebuildRecentMenu();
+    void editPace();
     void watchFields();
     [[nodiscard]] LinkKind kind() const;
 
@@ -134,6 +142,7 @@ private:
     TapFields *m_tapFields = nullptr; // the Tap row: shown while Tap is ticked
     QPushButton *m_connectButton = nullptr;
     QToolButton *m_recentButton = nullptr;
+    QToolButton *m_paceButton = nullptr;
     QLabel *m_errorLabel = nullptr;
     QLabel *m_keptLabel = nullptr;  // the options of the last URL set that no field shows
     std::optional<LinkUrl> m_kept;  // that URL

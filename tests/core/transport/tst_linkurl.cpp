@@ -106,6 +106,9 @@ private slots:
             "rtu:///dev/ttyS1?baud=9600&parity=E&data=8&stop=1&rts=down&rts_before=1ms&rts_after=1000ms&rs485=kernel");
         row("ascii:///dev/ttyUSB1?rts=up&rts_after=3ms",
             "ascii:///dev/ttyUSB1?baud=9600&parity=E&data=7&stop=1&rts=up&rts_after=3ms");
+        row("tcp://h:502?warmup=1.5s&close=each&gap=20", "tcp://h:502?gap=20ms&warmup=1500ms&close=each");
+        row("rtu:///dev/ttyUSB0?gap=0&warmup=0", "rtu:///dev/ttyUSB0?baud=9600&parity=E&data=8&stop=1");
+        row("rtu-tcp://gw:4001?gap=50ms&timeout=300", "rtu-tcp://gw:4001?timeout=300ms&gap=50ms");
     }
     void canonical()
     {
@@ -238,10 +241,11 @@ private slots:
         row("empty", "", "no scheme: expected scheme://..., with a scheme among tcp, rtu-tcp, ascii-tcp, udp, rtu-udp, rtu, "
                          "ascii, tls (e.g. tcp://192.168.1.10:502)");
         row("unknown option", "tcp://h:502?speed=fast",
-            "unknown option 'speed': tcp links take connect_timeout, timeout, framing, start, end, checksum, display, mode, busy");
+            "unknown option 'speed': tcp links take connect_timeout, timeout, framing, start, end, checksum, display, mode, busy, "
+            "gap, warmup, close");
         row("unknown serial option", "rtu:///dev/ttyUSB0?bauds=9600",
             "unknown option 'bauds': rtu links take baud, parity, data, stop, turnaround, turnaround_us, rts, rts_before, "
-            "rts_after, rs485, timeout, framing, start, end, checksum, display");
+            "rts_after, rs485, timeout, framing, start, end, checksum, display, gap, warmup");
         row("serial option on tcp", "tcp://h:502?baud=9600",
             "'baud' is an option of serial links (rtu, ascii), not of tcp links");
         row("tls option on tcp", "tcp://h:502?cert=c.pem", "'cert' is an option of tls links, not of tcp links");
@@ -345,6 +349,15 @@ private slots:
         row("kernel delay in us", "rtu:///dev/ttyUSB0?rs485=kernel&rts_after=1500us",
             "rts_after 1500us is not a whole number of milliseconds: rs485=kernel hands the driver milliseconds");
         row("rts twice", "rtu:///dev/ttyUSB0?rts=up&rts=down", "option 'rts' is given twice");
+        // The device's pace: gap=, warmup= (every link), close=each (streams).
+        row("gap not a duration", "tcp://h:502?gap=fast",
+            "gap 'fast' is not a duration: expected a number with an optional unit ns, us, ms, s, min or h (e.g. 100ms, 1.5s, "
+            "2min; a bare number is milliseconds)");
+        row("warmup negative", "tcp://h:502?warmup=-5ms", "warmup '-5ms' is a negative duration: a duration is 0 or more");
+        row("gap in us", "tcp://h:502?gap=1500us", "gap '1500us' is not a whole number of milliseconds");
+        row("close unknown", "tcp://h:502?close=always",
+            "close 'always' is not known: expected each (the device hangs up after each answer: a new connection for each request)");
+        row("close on udp", "udp://h:502?close=each", "'close' is an option of stream links (tcp, rtu-tcp, ascii-tcp, tls), not of udp links");
     }
     void errors()
     {
@@ -358,6 +371,14 @@ private slots:
     // mode= belongs to targets: an address something listens on (the simulator's) refuses it.
     void modeIsForTargets()
     {
+        const auto paced = LinkUrl::parse(QStringLiteral("tcp://127.0.0.1:0?gap=5ms"), LinkUse::Listen);
+        QVERIFY(!paced.url);
+        QCOMPARE(paced.error, QStringLiteral("tcp://127.0.0.1:0?gap=5ms: 'gap' is the pace of a device asked (an option of --target "
+                                             "URLs), not of an address to listen on"));
+        const LinkUrl pace = parsed(QStringLiteral("tcp://h?gap=20ms&warmup=300ms&close=each"));
+        QCOMPARE(pace.gap, std::chrono::milliseconds(20));
+        QCOMPARE(pace.warmUp, std::chrono::milliseconds(300));
+        QVERIFY(pace.closeAfterAnswer && pace.hasPace());
         const auto listen = LinkUrl::parse(QStringLiteral("tcp://127.0.0.1:0?mode=listen"), LinkUse::Listen);
         QVERIFY(!listen.url);
         QCOMPARE(listen.error, QStringLiteral("tcp://127.0.0.1:0?mode=listen: 'mode' is an option of --target URLs, not of an "

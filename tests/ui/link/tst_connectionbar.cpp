@@ -6,6 +6,7 @@
 
 #include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QTimer>
 #include <QtSerialPort/QSerialPortInfo>
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QComboBox>
@@ -36,6 +37,7 @@ private Q_SLOTS:
     void setUrlRoundTrip_data();
     void setUrlRoundTrip();
     void keptOptionsGoWithTheLinkType();
+    void paceFromAProfile();
     void connectAndDisconnectSignals();
     void recentTargets();
     void serialListIsReadAgainWhenOpened();
@@ -213,6 +215,49 @@ void TestConnectionBar::keptOptionsGoWithTheLinkType()
     // Back to RTU serial: the target set last still holds them.
     chooseKind(bar, LinkKind::Rtu);
     QCOMPARE(bar.keptOptions(), QStringLiteral("rts=up&rts_after=1ms"));
+}
+
+// Issue 28: Pace… sets the device's pace on the target (gap=, warmup=, close=each), here taken
+// from a profile's limits with poll --profile's margins; it goes into the URL Connect uses.
+void TestConnectionBar::paceFromAProfile()
+{
+    QTemporaryDir dir;
+    const QString profile = dir.filePath(QStringLiteral("slow.json"));
+    QFile file(profile);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"name": "slow", "limits": {"minGapMs": 50, "warmUpMs": 500, "closesAfterAnswer": true, "maxQuantity": {"0x03": 16}},
+                  "units": [{"id": 1}]})");
+    file.close();
+    ConnectionBar bar;
+    chooseKind(bar, LinkKind::Tcp);
+    bar.findChild<QLineEdit *>(QStringLiteral("hostEdit"))->setText(QStringLiteral("127.0.0.1"));
+    QString status;
+    QTimer::singleShot(0, &bar, [&] {
+        auto *dialog = qobject_cast<PaceDialog *>(QApplication::activeModalWidget());
+        QVERIFY(dialog);
+        QVERIFY(dialog->takeProfile(profile));
+        status = dialog->findChild<QLabel *>(QStringLiteral("paceStatus"))->text();
+        dialog->accept();
+    });
+    bar.findChild<QToolButton *>(QStringLiteral("paceButton"))->click();
+    QVERIFY2(status.startsWith(QLatin1String("From slow.json: minGapMs 50 (51 ms, 1 ms to spare), warmUpMs 500 (550 ms, a tenth to "
+                                             "spare), closesAfterAnswer. Its maxQuantity (0x03 16) is not applied")),
+             qPrintable(status));
+    QCOMPARE(bar.keptOptions(), QStringLiteral("gap=51ms&warmup=550ms&close=each"));
+    QCOMPARE(bar.findChild<QLabel *>(QStringLiteral("keptOptionsLabel"))->text(), QStringLiteral("+ gap=51ms&warmup=550ms&close=each"));
+    const std::optional<LinkUrl> url = bar.url();
+    QVERIFY2(url, qPrintable(bar.errorText()));
+    QCOMPARE(url->gap, std::chrono::milliseconds(51));
+    QCOMPARE(url->warmUp, std::chrono::milliseconds(550));
+    QVERIFY(url->closeAfterAnswer);
+    // Set back to none by hand: the URL carries no pace.
+    bar.setPace({});
+    QVERIFY(bar.keptOptions().isEmpty());
+    QVERIFY(!bar.url()->hasPace());
+    // A serial link has no connection to hang up: the box is off there.
+    chooseKind(bar, LinkKind::Rtu);
+    bar.setPace({std::chrono::milliseconds(20), std::chrono::milliseconds(0), true});
+    QCOMPARE(bar.keptOptions(), QStringLiteral("gap=20ms"));
 }
 
 void TestConnectionBar::connectAndDisconnectSignals()

@@ -7,6 +7,7 @@
 
 #include "exchange/statistics.h"
 
+#include <QtCore/QTemporaryDir>
 #include <QtNetwork/QTcpServer>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QtTest>
@@ -21,6 +22,7 @@ private Q_SLOTS:
     void states();
     void sendToTheSimulator();
     void pollSummary();
+    void pollKeepsTheTargetsPace();
     void unknownProfileIsNamed();
     void takenPortIsSaid();
     void connectOpensTheLink();
@@ -96,6 +98,41 @@ void TestLinkController::pollSummary()
     const PollReport report = finished.first().first().value<PollReport>();
     const QString text = LinkController::describe(report);
     QVERIFY2(text.startsWith(QLatin1String("Poll finished: 5 transactions, 5 ok, 0 failed; latency min ")), qPrintable(text));
+}
+
+// Issue 28: the window's own poll keeps the device's pace when the target carries it (gap=, as
+// the bar's Pace… sets it): a device that answers 06 to a request sooner than 40 ms after the one
+// before gets every request of a back-to-back poll right; the same poll without it does not.
+void TestLinkController::pollKeepsTheTargetsPace()
+{
+    QTemporaryDir dir;
+    const QString profile = dir.filePath(QStringLiteral("busy.json"));
+    QFile file(profile);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"name": "busy", "limits": {"minGapMs": 40}, "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 10}]}}]})");
+    file.close();
+    EmbeddedSimulator sim;
+    const EmbeddedSimulator::Started started = sim.start(profile, QStringLiteral("tcp://127.0.0.1:0"));
+    QVERIFY2(started.ok, qPrintable(started.error));
+    const QByteArray read = QByteArray::fromHex("000100000006010300000002");
+    for (const bool paced : {true, false}) { // the device counts its gap across connections: the paced poll first
+        LinkUrl url = started.url;
+        if (paced)
+            url.gap = std::chrono::milliseconds(41);
+        LinkController controller;
+        QSignalSpy finished(&controller, &LinkController::pollFinished);
+        controller.connectTo(url);
+        QVERIFY(controller.startPoll(read, 0, 6));
+        QVERIFY(finished.wait(10000));
+        const PollReport report = finished.first().first().value<PollReport>();
+        QCOMPARE(report.runs.size(), 1);
+        const Statistics &stats = report.runs.first().statistics.overall();
+        QCOMPARE(stats.count(), quint64(6));
+        if (paced)
+            QVERIFY2(stats.ok() == 6, qPrintable(LinkController::describe(report) + stats.summary()));
+        else
+            QVERIFY2(stats.ok() < 6, qPrintable(LinkController::describe(report)));
+    }
 }
 
 void TestLinkController::unknownProfileIsNamed()
