@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <fcntl.h>
 #include <signal.h>
+#include <time.h>
 #include <unistd.h>
 #endif
 
@@ -19,10 +20,36 @@ int s_pipe[2] = {-1, -1};
 struct sigaction s_oldInt;
 struct sigaction s_oldTerm;
 struct sigaction s_oldHup;
+// The first Ctrl-C or SIGTERM and when it came (CLOCK_MONOTONIC).
+volatile sig_atomic_t s_interrupted = 0;
+struct timespec s_firstAt = {};
+
+// A second interrupt this soon after the first is the same one delivered twice: timeout(1) and
+// scripts signal the command and then its whole process group, microseconds apart. A person's
+// second Ctrl-C comes later.
+constexpr long long kSameInterruptMs = 300;
 
 void onSignal(int number)
 {
     const int saved = errno;
+    if (number != SIGHUP) {
+        struct timespec now = {};
+        clock_gettime(CLOCK_MONOTONIC, &now);
+        if (s_interrupted) {
+            const long long ms = (now.tv_sec - s_firstAt.tv_sec) * 1000LL + (now.tv_nsec - s_firstAt.tv_nsec) / 1000000LL;
+            if (ms < kSameInterruptMs) {
+                errno = saved;
+                return;
+            }
+            // A second Ctrl-C: the default action, at once (both calls are async-signal-safe).
+            signal(number, SIG_DFL);
+            raise(number);
+            errno = saved;
+            return;
+        }
+        s_firstAt = now;
+        s_interrupted = 1;
+    }
     const char byte = char(number);
     // Nothing to do when the pipe is full: the bytes already there say it.
     [[maybe_unused]] const ssize_t n = ::write(s_pipe[1], &byte, 1);
@@ -38,11 +65,12 @@ InterruptWatcher::InterruptWatcher(QObject *parent)
         s_pipe[0] = s_pipe[1] = -1;
         return; // Ctrl-C then ends the process as usual; nothing worse
     }
+    s_interrupted = 0;
     struct sigaction action = {};
     action.sa_handler = onSignal;
     sigemptyset(&action.sa_mask);
-    // SA_RESETHAND: the default action is back once the handler has run, for a second Ctrl-C.
-    action.sa_flags = SA_RESTART | SA_RESETHAND;
+    // The handler itself puts the default action back for a second Ctrl-C (not one delivered twice).
+    action.sa_flags = SA_RESTART;
     sigaction(SIGINT, &action, &s_oldInt);
     sigaction(SIGTERM, &action, &s_oldTerm);
     m_notifier = new QSocketNotifier(qintptr(s_pipe[0]), QSocketNotifier::Read, this);
