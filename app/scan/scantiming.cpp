@@ -38,16 +38,26 @@ QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
         t += QStringLiteral("shorter gaps                    not measured: the device hangs up after each answer and each new "
                             "connection waits its warm-up (%1 ms)\n")
                  .arg(r.pauseAfterConnectMs());
+    // What a part cut short by Ctrl-C or --max-time did not measure is said so, never shown as a figure.
+    const QString cut = end == JobEnd::Stopped ? QStringLiteral("stopped") : QStringLiteral("time limit");
     t += QStringLiteral("shortest gap without errors     %1\n")
              .arg(r.gapsHeldByWarmUp ? QStringLiteral("not measured (the warm-up kept every request apart)")
-                  : r.shortestCleanGapMs < 0 ? QStringLiteral("none of those tried")
-                                             : QStringLiteral("%1 ms").arg(r.shortestCleanGapMs));
-    t += QStringLiteral("largest read answered           %1 at address %2 (an answer PDU of %3 bytes)%4\n")
-             .arg(r.largestQuantity)
-             .arg(s.address)
-             .arg(r.largestAnswerPdu)
-             .arg(r.largestEndsMap ? QStringLiteral(": one more ran past the device's map (no exception 03), not a quantity limit")
-                                   : QString());
+                  : !r.gapMeasured() ? QStringLiteral("not measured (%1 before a gap was tried through)").arg(cut)
+                  : r.shortestCleanGapMs < 0 ? QStringLiteral("none of those tried (every gap had errors)")
+                  : r.gapsComplete ? QStringLiteral("%1 ms").arg(r.shortestCleanGapMs)
+                                   : QStringLiteral("%1 ms (shorter gaps not tried: %2)").arg(r.shortestCleanGapMs).arg(cut));
+    if (r.largestQuantity == 0)
+        t += QStringLiteral("largest read answered           not measured%1\n")
+                 .arg(r.largestComplete ? QString() : QStringLiteral(" (%1 before it)").arg(cut));
+    else
+        t += QStringLiteral("largest read answered           %1%2 at address %3 (an answer PDU of %4 bytes)%5\n")
+                 .arg(r.largestComplete ? QString() : QStringLiteral("at least "))
+                 .arg(r.largestQuantity)
+                 .arg(s.address)
+                 .arg(r.largestAnswerPdu)
+                 .arg(r.largestEndsMap ? QStringLiteral(": one more ran past the device's map (no exception 03), not a quantity limit")
+                      : r.largestComplete ? QString()
+                                          : QStringLiteral(" (%1 before the largest was found)").arg(cut));
     if (r.gapReconnects >= 0 && r.gapAnswered >= 3)
         t += QStringLiteral("connection after each answer    %1\n")
                  .arg(r.closesAfterAnswer() ? QStringLiteral("closed by the device (%1 connections for %2 answers): pipelining and "
@@ -75,16 +85,21 @@ QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
                  .arg(ScanReport::durationText(s.maxDurationMs));
     const int gap = r.recommendedGapMs();
     const int timeout = r.recommendedTimeoutMs();
-    t += QStringLiteral("\nSettings (twice the shortest clean gap, three times the slowest answer):\n");
-    t += QStringLiteral("  mbscope watch link:    \"gapMs\": %1, \"timeoutMs\": %2%3\n")
-             .arg(gap)
+    // Only what was measured becomes a setting: without a gap measured, none is recommended.
+    const bool gapKnown = r.gapMeasured();
+    t += gapKnown ? QStringLiteral("\nSettings (twice the shortest clean gap, three times the slowest answer):\n")
+                  : QStringLiteral("\nSettings (three times the slowest answer; no gap was measured, so none is given):\n");
+    t += QStringLiteral("  mbscope watch link:    %1\"timeoutMs\": %2%3\n")
+             .arg(gapKnown ? QStringLiteral("\"gapMs\": %1, ").arg(gap) : QString())
              .arg(timeout)
              .arg(r.pauseAfterConnectMs() > 0 ? QStringLiteral(", \"warmUpMs\": %1").arg(r.pauseAfterConnectMs()) : QString());
     t += QStringLiteral("  mbscope poll/read:     --timeout %1ms\n").arg(timeout);
     t += QStringLiteral("  Telegraf inputs.modbus: timeout = \"%1ms\"\n").arg(timeout);
-    t += QStringLiteral("    [inputs.modbus.workarounds] pause_between_requests = \"%1ms\", pause_after_connect = \"%2ms\"\n")
-             .arg(gap)
-             .arg(r.pauseAfterConnectMs());
+    QStringList workarounds;
+    if (gapKnown)
+        workarounds.append(QStringLiteral("pause_between_requests = \"%1ms\"").arg(gap));
+    workarounds.append(QStringLiteral("pause_after_connect = \"%1ms\"").arg(r.pauseAfterConnectMs()));
+    t += QStringLiteral("    [inputs.modbus.workarounds] %1\n").arg(workarounds.join(QStringLiteral(", ")));
     return t;
 }
 
@@ -104,9 +119,12 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
         {QStringLiteral("warm_up_ms"), r.warmUpMs >= 0 ? QJsonValue(double(r.warmUpMs)) : QJsonValue(QJsonValue::Null)},
         {QStringLiteral("warm_up_refused_ms"), r.warmUpMs >= 0 ? QJsonValue(double(r.warmUpRefusedMs)) : QJsonValue(QJsonValue::Null)},
         {QStringLiteral("gaps"), gaps},
-        {QStringLiteral("shortest_clean_gap_ms"), r.gapsHeldByWarmUp ? QJsonValue(QJsonValue::Null) : QJsonValue(r.shortestCleanGapMs)},
+        {QStringLiteral("shortest_clean_gap_ms"), r.gapsHeldByWarmUp || !r.gapMeasured() ? QJsonValue(QJsonValue::Null)
+                                                                                          : QJsonValue(r.shortestCleanGapMs)},
         {QStringLiteral("gaps_held_by_warm_up"), r.gapsHeldByWarmUp},
-        {QStringLiteral("largest_quantity"), r.largestQuantity},
+        {QStringLiteral("gaps_complete"), r.gapsComplete},
+        {QStringLiteral("largest_quantity"), r.largestQuantity == 0 ? QJsonValue(QJsonValue::Null) : QJsonValue(r.largestQuantity)},
+        {QStringLiteral("largest_complete"), r.largestComplete},
         {QStringLiteral("largest_answer_pdu"), r.largestAnswerPdu},
         {QStringLiteral("largest_ends_map"), r.largestEndsMap},
         {QStringLiteral("closes_after_answer"), r.gapReconnects >= 0 && r.gapAnswered >= 3 ? QJsonValue(r.closesAfterAnswer())
@@ -122,9 +140,10 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
         {QStringLiteral("stopped"), end == JobEnd::Stopped},
         {QStringLiteral("end"), QString::fromLatin1(jobEndName(end))},
         {QStringLiteral("recommended"),
-         QJsonObject{{QStringLiteral("gap_ms"), r.recommendedGapMs()},
+         QJsonObject{{QStringLiteral("gap_ms"), r.gapMeasured() ? QJsonValue(r.recommendedGapMs()) : QJsonValue(QJsonValue::Null)},
                      {QStringLiteral("timeout_ms"), r.recommendedTimeoutMs()},
-                     {QStringLiteral("telegraf_pause_between_requests"), QStringLiteral("%1ms").arg(r.recommendedGapMs())},
+                     {QStringLiteral("telegraf_pause_between_requests"),
+                      r.gapMeasured() ? QJsonValue(QStringLiteral("%1ms").arg(r.recommendedGapMs())) : QJsonValue(QJsonValue::Null)},
                      {QStringLiteral("telegraf_pause_after_connect"),
                       QStringLiteral("%1ms").arg(r.pauseAfterConnectMs())}}},
     };

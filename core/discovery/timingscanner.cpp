@@ -410,6 +410,7 @@ void TimingScanner::gaps(TimingReport &report)
             break;
         }
     }
+    report.gapsComplete = true;
     endPart(Gaps);
 }
 
@@ -463,8 +464,10 @@ void TimingScanner::largestRead(TimingReport &report)
     report.largestFound = ok == specMax || (refused - ok == 1 && refusedBy03);
     report.largestEndsMap = ok < specMax && refused - ok == 1 && !refusedBy03;
     report.largestAnswerPdu = ok == 0 ? 0 : 2 + (m_settings.function <= 2 ? (ok + 7) / 8 : 2 * ok);
-    if (m_end == JobEnd::Completed)
+    if (m_end == JobEnd::Completed) {
+        report.largestComplete = true;
         endPart(Largest);
+    }
 }
 
 namespace {

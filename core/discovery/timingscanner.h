@@ -67,6 +67,10 @@ struct TimingReport {
     int clientsTried = 0;        // 0: not tried (not a TCP link)
     int clientsServed = 0;       // connections answered while all of them stayed open
     bool oldestDropped = false;  // client clientsTried was served by closing the oldest (dropOldest)
+    // Which parts ran to their end (not cut short by a stop or the time limit): what a part that
+    // did not says is a lower bound at most, and nothing at all when it measured nothing.
+    bool gapsComplete = false;
+    bool largestComplete = false;
     int largestQuantity = 0;     // the largest read quantity answered at address
     int largestAnswerPdu = 0;    // its answer's PDU size in bytes
     bool largestFound = false;   // largestQuantity is the specification's, or one more was refused with 03 (not cut short)
@@ -83,6 +87,9 @@ struct TimingReport {
     // then: those parts are skipped.
     [[nodiscard]] bool closesAfterAnswer() const { return gapReconnects >= 0 && gapAnswered >= 3 && gapReconnects >= gapAnswered - 1; }
 
+    // Whether a gap between requests was measured at all: a clean one, or every one tried failing
+    // through to the end of the part.
+    [[nodiscard]] bool gapMeasured() const { return gapsHeldByWarmUp || shortestCleanGapMs >= 0 || (gapsComplete && !gaps.isEmpty()); }
     [[nodiscard]] int recommendedGapMs() const;
     [[nodiscard]] int recommendedTimeoutMs() const;
     // What was measured as a profile's "limits" (docs/profiles.md, Device limits; what

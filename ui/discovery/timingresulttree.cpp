@@ -36,17 +36,20 @@ TimingResultTree::TimingResultTree(QWidget *parent)
 
 QString TimingResultTree::settingsText(const TimingReport &r)
 {
+    // Only what was measured becomes a setting: without a gap measured, none is given.
+    const bool gapKnown = r.gapMeasured();
     const int gap = r.recommendedGapMs();
     const int timeout = r.recommendedTimeoutMs();
     const qint64 pause = r.pauseAfterConnectMs();
-    return QStringLiteral("mbscope watch link:    \"gapMs\": %1, \"timeoutMs\": %2%4\n"
+    return QStringLiteral("mbscope watch link:    %1\"timeoutMs\": %2%4\n"
                           "mbscope poll/read:     --timeout %2ms\n"
                           "Telegraf inputs.modbus: timeout = \"%2ms\"\n"
-                          "  [inputs.modbus.workarounds] pause_between_requests = \"%1ms\", pause_after_connect = \"%3ms\"\n")
-        .arg(gap)
+                          "  [inputs.modbus.workarounds] %5pause_after_connect = \"%3ms\"\n")
+        .arg(gapKnown ? QStringLiteral("\"gapMs\": %1, ").arg(gap) : QString())
         .arg(timeout)
         .arg(pause)
-        .arg(pause > 0 ? QStringLiteral(", \"warmUpMs\": %1").arg(pause) : QString());
+        .arg(pause > 0 ? QStringLiteral(", \"warmUpMs\": %1").arg(pause) : QString())
+        .arg(gapKnown ? QStringLiteral("pause_between_requests = \"%1ms\", ").arg(gap) : QString());
 }
 
 void TimingResultTree::showReport(const TimingScanSettings &s, const TimingReport &r)
@@ -72,12 +75,23 @@ void TimingResultTree::showReport(const TimingScanSettings &s, const TimingRepor
                                         "its warm-up (%1 ms)").arg(r.pauseAfterConnectMs()));
         gaps->setExpanded(true);
     }
+    // What a part cut short (Stop, the time limit) did not measure is said so, never shown as a figure.
     row(root, tr("Shortest gap without errors"),
-        r.shortestCleanGapMs < 0 ? tr("none of those tried") : tr("%1 ms").arg(r.shortestCleanGapMs));
+        r.gapsHeldByWarmUp ? tr("not measured (the warm-up kept every request apart)")
+        : !r.gapMeasured() ? tr("not measured (stopped before a gap was tried through)")
+        : r.shortestCleanGapMs < 0 ? tr("none of those tried (every gap had errors)")
+        : r.gapsComplete ? tr("%1 ms").arg(r.shortestCleanGapMs)
+                         : tr("%1 ms (shorter gaps not tried: stopped)").arg(r.shortestCleanGapMs));
     if (r.largestQuantity > 0)
         row(root, tr("Largest read answered"),
-            tr("%1 at address %2 (an answer PDU of %3 bytes)").arg(r.largestQuantity).arg(s.address).arg(r.largestAnswerPdu)
+            (r.largestComplete ? tr("%1 at address %2 (an answer PDU of %3 bytes)")
+                               : tr("at least %1 at address %2 (an answer PDU of %3 bytes; stopped before the largest was found)"))
+                    .arg(r.largestQuantity)
+                    .arg(s.address)
+                    .arg(r.largestAnswerPdu)
                 + (r.largestEndsMap ? tr(": one more ran past the device's map (no exception 03), not a quantity limit") : QString()));
+    else
+        row(root, tr("Largest read answered"), tr("not measured"));
     if (r.gapReconnects >= 0 && r.gapAnswered >= 3)
         row(root, tr("Connection after each answer"),
             r.closesAfterAnswer() ? tr("closed by the device (%1 connections for %2 answers): pipelining and clients at once not measured")
@@ -96,7 +110,7 @@ void TimingResultTree::showReport(const TimingScanSettings &s, const TimingRepor
             : r.clientsServed == s.maxClients ? tr("%1 (all tried; there may be room for more)").arg(r.clientsServed)
                                               : tr("%1 (client %2 was not served)").arg(r.clientsServed).arg(r.clientsTried));
     QTreeWidgetItem *settings = row(root, tr("Recommended"), tr("twice the shortest clean gap, three times the slowest answer"));
-    row(settings, tr("Gap between requests"), tr("%1 ms").arg(r.recommendedGapMs()));
+    row(settings, tr("Gap between requests"), r.gapMeasured() ? tr("%1 ms").arg(r.recommendedGapMs()) : tr("none: no gap was measured"));
     row(settings, tr("Timeout"), tr("%1 ms").arg(r.recommendedTimeoutMs()));
     row(settings, tr("Pause after connecting"), tr("%1 ms").arg(r.pauseAfterConnectMs()));
     settings->setExpanded(true);
