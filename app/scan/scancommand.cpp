@@ -180,12 +180,22 @@ int runMap(const Common &common, MapScanSettings settings, const QString &profil
         err << "mbscope scan: the link failed: " << settings.url.toString() << " cannot be reached\n";
         return ExitLinkError;
     }
-    if (!profilePath.isEmpty()) {
+    bool gatewayOnly = !map->tables.isEmpty();
+    for (const TableMap &t : map->tables)
+        gatewayOnly = gatewayOnly && t.gatewayException != 0;
+    if (gatewayOnly)
+        err << "mbscope scan: unit " << map->unit << " is not there: a gateway answered every read with exception "
+            << QString::number(map->tables.constFirst().gatewayException, 16).toUpper().rightJustified(2, QLatin1Char('0')) << '\n';
+    // Nothing found is no map: no draft, no watches (a draft of an absent unit listed functions it never had).
+    if (!anything && (!profilePath.isEmpty() || !common.watchesPath.isEmpty()))
+        err << "mbscope scan: no address answered: no " << (profilePath.isEmpty() ? "watch definitions" : "profile draft")
+            << " written\n";
+    if (anything && !profilePath.isEmpty()) {
         const QString name = QFileInfo(profilePath).completeBaseName();
         if (!writeScanFile(profilePath, ProfileDraft::toJson(*map, name, settings.url.toString()), "profile draft", err))
             return ExitUsage;
     }
-    if (!common.watchesPath.isEmpty()
+    if (anything && !common.watchesPath.isEmpty()
         && !writeScanFile(common.watchesPath, ScanWatches::toJson(ScanWatches::fromMap(settings.url.toString(), *map)),
                       "watch definitions", err))
         return ExitUsage;

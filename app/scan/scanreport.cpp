@@ -95,7 +95,9 @@ QString answerText(const FunctionSupport &s)
     switch (s.answer) {
     case FunctionSupport::Answer::Answers: return QStringLiteral("answers");
     case FunctionSupport::Answer::Exception:
-        return QStringLiteral("exception %1%2").arg(hex2(s.exceptionCode), s.exceptionCode == 0x01 ? QStringLiteral(" (not supported)") : QStringLiteral(" (supported)"));
+        return QStringLiteral("exception %1%2").arg(hex2(s.exceptionCode), s.exceptionCode == 0x01 ? QStringLiteral(" (not supported)")
+                                                             : s.fromGateway()       ? QStringLiteral(" (gateway: no device)")
+                                                                                     : QStringLiteral(" (supported)"));
     case FunctionSupport::Answer::Silent: return QStringLiteral("silent");
     case FunctionSupport::Answer::NotProbed: return QStringLiteral("not probed");
     }
@@ -207,7 +209,10 @@ QString ScanReport::unitsText(const UnitScanSettings &settings, const QList<Unit
     for (auto it = counts.cbegin(); it != counts.cend(); ++it)
         parts.append(QStringLiteral("%1 %2").arg(it.value()).arg(QString::fromLatin1(unitProbeKindName(it.key()))));
     const QList<int> outside = answeredOutside(probes);
-    QString found = QStringLiteral("found %1 device(s)").arg(devicesFound(probes));
+    QString found = UnitProbe::oneDeviceIgnoringUnitId(probes)
+        ? QStringLiteral("every one of the %1 unit addresses asked answered: likely one device that ignores the unit id, "
+                         "not %1 devices").arg(devicesFound(probes))
+        : QStringLiteral("found %1 device(s)").arg(devicesFound(probes));
     if (!outside.isEmpty()) {
         QStringList ids;
         for (int id : outside)
@@ -257,6 +262,7 @@ QJsonObject ScanReport::unitsJson(const UnitScanSettings &settings, const QList<
         {QStringLiteral("gap_ms"), settings.gapMs},
         {QStringLiteral("asked"), progress.done},
         {QStringLiteral("found"), devicesFound(probes)}, // at unit addresses 1-247
+        {QStringLiteral("ignores_unit_id"), UnitProbe::oneDeviceIgnoringUnitId(probes)},
         {QStringLiteral("answered_outside_unit_addresses"), [&] {
              QJsonArray ids;
              for (int id : answeredOutside(probes))
@@ -277,6 +283,13 @@ QString ScanReport::mapText(const RegisterMap &map, JobEnd end, qint64 elapsedMs
                     .arg(QString::fromLatin1(tableName(t.function)))
                     .arg(t.searchedFirst)
                     .arg(t.searchedLast);
+        if (t.gatewayException != 0) {
+            text += QStringLiteral("no device: exception %1 from a gateway (%2)\n")
+                        .arg(hex2(t.gatewayException),
+                             t.gatewayException == 0x0A ? QStringLiteral("no path to the unit")
+                                                        : QStringLiteral("nothing answered behind it"));
+            continue;
+        }
         if (!t.supported) {
             text += QStringLiteral("function not answered (exception 01 or silence)\n");
             continue;
@@ -318,6 +331,8 @@ QJsonObject ScanReport::mapJson(const RegisterMap &map, JobEnd end, qint64 elaps
         tables.append(QJsonObject{{QStringLiteral("function"), int(t.function)},
                                   {QStringLiteral("supported"), t.supported},
                                   {QStringLiteral("max_quantity"), t.maxQuantity},
+                                  {QStringLiteral("gateway_exception"), t.gatewayException != 0 ? QJsonValue(int(t.gatewayException))
+                                                                                                : QJsonValue(QJsonValue::Null)},
                                   {QStringLiteral("searched_first"), t.searchedFirst},
                                   {QStringLiteral("searched_last"), t.searchedLast},
                                   {QStringLiteral("requests"), t.requests},

@@ -74,7 +74,12 @@ std::optional<RegisterMap> MapScanner::run(const MapScanSettings &settings)
         table.requests = m_requests - before;
         map.tables.append(table);
     }
-    if (settings.optionalFunctions && mayContinue())
+    // A gateway that answered every table for the unit with 0A or 0B has no device behind it to
+    // ask the optional functions of.
+    bool noDevice = !map.tables.isEmpty();
+    for (const TableMap &t : std::as_const(map.tables))
+        noDevice = noDevice && t.gatewayException != 0;
+    if (settings.optionalFunctions && !noDevice && mayContinue())
         probeOptional(map);
     map.requests = m_requests;
     m_channel->closeLink();
@@ -176,6 +181,10 @@ void MapScanner::mapTable(TableMap &table)
     const ReadReply probe = read(table.function, first, 1);
     if (probe.reply == Reply::IllegalFunction || probe.reply == Reply::Silent || probe.reply == Reply::Bad)
         return;
+    if (probe.reply == Reply::OtherException && (probe.exceptionCode == 0x0A || probe.exceptionCode == 0x0B)) {
+        table.gatewayException = probe.exceptionCode; // a gateway with no device behind it for this unit
+        return;
+    }
     table.supported = true;
     const int specMax = QuantityLimits::maxQuantity(quint8(table.function));
     table.maxQuantity = findMaxQuantity(table, specMax);

@@ -165,10 +165,7 @@ QByteArray ProfileDraft::mergeUnits(const QByteArray &profile, const QList<UnitP
         }
     }
     QStringList parts;
-    // So many ids all answering is one device ignoring the unit id, not that many devices; fewer
-    // could be real units (a gateway with three), which are added instead.
-    constexpr int kIgnoresUnitId = 16;
-    if (absent.isEmpty() && present.size() >= kIgnoresUnitId) {
+    if (UnitProbe::oneDeviceIgnoringUnitId(probes)) {
         root.insert(QStringLiteral("unknownUnit"), QStringLiteral("first"));
         parts.append(QStringLiteral("every id asked answered (%1 of 1-247): the device ignores the unit id: unknownUnit first, "
                                     "no unit added").arg(present.size()));

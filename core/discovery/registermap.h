@@ -25,6 +25,9 @@ struct TableMap {
     int requests = 0;        // requests spent on the table
     int searchedFirst = 0;   // the addresses searched
     int searchedLast = 0;
+    // 0A or 0B: a gateway answered the table's first read for the unit (no path, or nothing
+    // answered behind it): no device, so nothing is known of the function. 0 otherwise.
+    quint8 gatewayException = 0;
 };
 
 // Whether an optional function (or a diagnostics sub-function) is answered.
@@ -36,9 +39,14 @@ struct FunctionSupport {
     QString note;            // what was asked, or why it was not
 
     // A device that answers 02 or 03 knows the function: only 01 (or silence) says it does not.
+    // 0A and 0B come from a gateway with no device behind it: they say nothing of the function.
     [[nodiscard]] bool known() const
     {
-        return answer == Answer::Answers || (answer == Answer::Exception && exceptionCode != 0x01);
+        return answer == Answer::Answers || (answer == Answer::Exception && exceptionCode != 0x01 && !fromGateway());
+    }
+    [[nodiscard]] bool fromGateway() const
+    {
+        return answer == Answer::Exception && (exceptionCode == 0x0A || exceptionCode == 0x0B);
     }
 };
 

@@ -2,6 +2,7 @@
 
 #include <QtCore/QByteArray>
 #include <QtCore/QMetaType>
+#include <QtCore/QList>
 #include <QtCore/QString>
 
 namespace mbscope {
@@ -41,6 +42,22 @@ struct UnitProbe {
     }
     // One line for people: "answers", "exception 02 (illegal data address)", "answered as unit 4".
     [[nodiscard]] QString summary() const;
+
+    // So many unit addresses (1-247) asked, every one answering: one device that ignores the unit
+    // id, not that many devices (fewer could be real units: a gateway with three).
+    static constexpr int kIgnoresUnitId = 16;
+    [[nodiscard]] static bool oneDeviceIgnoringUnitId(const QList<UnitProbe> &probes)
+    {
+        int present = 0;
+        for (const UnitProbe &p : probes) {
+            if (p.unit < 1 || p.unit > 247)
+                continue;
+            if (!p.isPresent())
+                return false;
+            ++present;
+        }
+        return present >= kIgnoresUnitId;
+    }
 };
 
 } // namespace mbscope

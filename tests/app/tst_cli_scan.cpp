@@ -167,6 +167,7 @@ private slots:
     void timingProgressOnATerminal();
     void timingBoundedAndStopped();
     void allIdsSaysWhatItAsked();
+    void mapOfAnAbsentUnit();
     void unitsIntoAProfile_data();
     void unitsIntoAProfile();
     void noRoomForARequestEnds();
@@ -843,6 +844,33 @@ void TestCliScan::allIdsSaysWhatItAsked()
     QVERIFY2(server.outText().contains(QStringLiteral("found 0 device(s) at unit addresses 1-247; id 255 answered too")), server.describe());
 }
 
+// A map scan of a unit a gateway has nothing behind (exception 0B to every read) is no map: it
+// said "largest quantity 125", listed every optional function as supported and wrote a draft.
+void TestCliScan::mapOfAnAbsentUnit()
+{
+    Background sim;
+    QString error;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), QStringLiteral("conformance"), QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &error),
+             qPrintable(error));
+    const QString draft = m_dir.filePath(QStringLiteral("absent-unit.json"));
+    const CliResult r = runMbscope({QStringLiteral("scan"), QStringLiteral("--target"), sim.url(), QStringLiteral("--map"), QStringLiteral("7"),
+                                    QStringLiteral("--addresses"), QStringLiteral("0-20"), QStringLiteral("--tables"), QStringLiteral("3"),
+                                    QStringLiteral("--profile-out"), draft, QStringLiteral("--json")});
+    QVERIFY2(r.finished && r.exitCode == 1, r.describe());
+    QVERIFY2(r.errText().contains(QStringLiteral("mbscope scan: unit 7 is not there: a gateway answered every read with exception 0B\n"
+                                                 "mbscope scan: no address answered: no profile draft written\n")),
+             r.describe());
+    QVERIFY(!QFile::exists(draft));
+    const QJsonObject table = r.json().value(QStringLiteral("tables")).toArray().at(0).toObject();
+    QCOMPARE(table.value(QStringLiteral("gateway_exception")).toInt(), 0x0B);
+    QCOMPARE(table.value(QStringLiteral("supported")).toBool(), false);
+    QCOMPARE(table.value(QStringLiteral("max_quantity")).toInt(), 0);
+    for (const QJsonValue &f : r.json().value(QStringLiteral("functions")).toArray())
+        QVERIFY2(f.toObject().value(QStringLiteral("answer")).toString() == QLatin1String("not_probed"), r.out.constData());
+}
+
 void TestCliScan::unitsIntoAProfile_data()
 {
     // issue 28: "which unit ids it answers", measured and stored in the profile.
@@ -890,6 +918,11 @@ void TestCliScan::unitsIntoAProfile()
                                     QStringLiteral("--profile-out"), draft});
     QVERIFY2(r.finished && r.exitCode == 0, r.describe());
     QVERIFY2(r.errText().contains(QLatin1String("mbscope scan: profile units written to ")), r.describe());
+    // A device that ignores the unit id is one device in the report too (it said "found 16 device(s)").
+    if (unknownUnit == QLatin1String("first"))
+        QVERIFY2(r.outText().contains(QLatin1String("answered: likely one device that ignores the unit id, not ")), r.describe());
+    else
+        QVERIFY2(r.outText().contains(QLatin1String("\nfound ")), r.describe());
     QFile file(draft);
     QVERIFY(file.open(QIODevice::ReadOnly));
     const QJsonObject profile = QJsonDocument::fromJson(file.readAll()).object();

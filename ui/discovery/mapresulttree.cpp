@@ -39,6 +39,7 @@ QString answerText(const FunctionSupport &s)
     case FunctionSupport::Answer::Answers: return MapResultTree::tr("answers");
     case FunctionSupport::Answer::Exception:
         return s.exceptionCode == 0x01 ? MapResultTree::tr("exception 01: not supported")
+             : s.fromGateway()         ? MapResultTree::tr("exception %1 from a gateway: no device").arg(hex(s.exceptionCode, 2))
                                        : MapResultTree::tr("exception %1: known, refused").arg(hex(s.exceptionCode, 2));
     case FunctionSupport::Answer::Silent: return MapResultTree::tr("silent");
     case FunctionSupport::Answer::NotProbed: return MapResultTree::tr("not asked");
@@ -91,6 +92,10 @@ void MapResultTree::showMap(const RegisterMap &map)
         table->setText(DetailColumn, tr("addresses %1-%2 searched, %n request(s)", nullptr, t.requests)
                                          .arg(t.searchedFirst)
                                          .arg(t.searchedLast));
+        if (t.gatewayException != 0) {
+            table->setText(FindingColumn, tr("no device: exception %1 from a gateway").arg(hex(t.gatewayException, 2)));
+            continue;
+        }
         if (!t.supported) {
             table->setText(FindingColumn, tr("not answered (exception 01 or silence)"));
             continue;
