@@ -165,6 +165,14 @@ int runExportMap(const QStringList &arguments)
     MapExportInput input = MapExportInput::fromProfile(profile, unitId);
     if (input.points.isEmpty())
         return usage(QStringLiteral("%1 has no table entries to export").arg(profile.source));
+    if (!input.tooLarge.isEmpty()) {
+        // No tool can poll such a value: the device refuses the one read it needs.
+        for (const QString &line : std::as_const(input.tooLarge))
+            err << "mbscope export-map: " << profile.source << ": " << line << '\n';
+        err << "mbscope export-map: refused: " << input.tooLarge.size()
+            << " value(s) cannot be read whole within the device's limits.maxQuantity; nothing written\n";
+        return ExitFailure;
+    }
     const DurationResult every = parseDuration(parser.value(interval));
     if (!every.ok() || every.ns < Duration::Millisecond)
         return usage(QStringLiteral("--interval %1").arg(every.ok() ? QStringLiteral("is under 1 ms") : every.error));
@@ -197,7 +205,7 @@ int runExportMap(const QStringList &arguments)
         if (!parsed.url)
             return usage(QStringLiteral("--verify %1").arg(parsed.error));
         TargetSettings target;
-        target.url = *parsed.url;
+        target.url = input.paced(*parsed.url); // the device's gap, warm-up and hang-up, as its profile says
         target.timeoutMs = input.timeoutMs;
         const QList<MapVerdict> verdicts = MapVerifier::judge(input.points, input.blocks,
                                                               readBlocks(target, input.points, input.blocks));

@@ -7,6 +7,10 @@
 
 #include <QtCore/QList>
 #include <QtCore/QString>
+#include <QtCore/QStringList>
+
+#include <algorithm>
+#include <chrono>
 
 #include <optional>
 
@@ -29,6 +33,26 @@ struct MapExportInput {
     // connection opens), and a tool that has none says so in a comment.
     int minGapMs = 0;
     int warmUpMs = 0;
+    // The waits a client keeps for them, with poll --profile's margins (DeviceLimits::clientGap),
+    // and whether the device hangs up after each answer: what --verify keeps when it reads.
+    std::chrono::milliseconds clientGap{0};
+    std::chrono::milliseconds clientWarmUp{0};
+    bool closesAfterAnswer = false;
+
+    // url with at least the device's pace (gap=, warmup=, close=each): the reads of --verify
+    // keep it, as the tool the map is exported to will.
+    [[nodiscard]] LinkUrl paced(LinkUrl url) const
+    {
+        url.gap = std::max(url.gap, clientGap);
+        url.warmUp = std::max(url.warmUp, clientWarmUp);
+        url.closeAfterAnswer = url.closeAfterAnswer || (closesAfterAnswer && !url.isSerial() && !url.isDatagram());
+        return url;
+    }
+
+    // Points one read cannot fetch whole within the device's largest quantity (a 5-register string
+    // with maxQuantity 4): one line each ("unit 1 holding 20 (Serial number): 5 registers in one
+    // read, more than maxQuantity 4 of function 0x03"). No tool can poll them: an export refuses.
+    QStringList tooLarge;
 
     // Name, source, the points of the profile (of one unit, or of all), their blocks within the
     // device's largest quantities, and its gap and warm-up; the endpoint, interval and timeout

@@ -246,6 +246,48 @@ private slots:
                      r.describe());
     }
 
+    // Issue 28, from a new user's try: --verify keeps the device's pace its profile gives (it sent
+    // its reads as the connection opened and got timeouts from a device with a warm-up, and
+    // exception 06 from one with a gap), and a value no read can fetch whole within the device's
+    // largest quantity is refused before anything is sent (it was exported as one read the device
+    // refuses).
+    void verifyKeepsThePaceAndTheLargestRead()
+    {
+        const QString paced = m_dir.filePath(QStringLiteral("paced.json"));
+        QFile file(paced);
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        file.write(R"({"name": "paced", "limits": {"minGapMs": 40, "warmUpMs": 300, "maxQuantity": {"0x03": 4}},
+                      "units": [{"id": 1, "tables": {"holding": [{"address": 0, "type": "u16", "name": "A", "value": 1},
+                                                                 {"address": 10, "type": "u16", "name": "B", "value": 2},
+                                                                 {"address": 20, "type": "u16", "name": "C", "value": 3}]}}]})");
+        file.close();
+        Background sim;
+        QString error;
+        QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), paced, QStringLiteral("--listen"),
+                            QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                           &error),
+                 qPrintable(error));
+        const CliResult r = runMbscope({QStringLiteral("export-map"), paced, QStringLiteral("--to"), QStringLiteral("csv"),
+                                        QStringLiteral("--verify"), sim.url()});
+        QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+        QVERIFY2(r.errText().contains(QLatin1String("verified: 3 values read from ")), r.describe());
+
+        const QString tooLarge = m_dir.filePath(QStringLiteral("too-large.json"));
+        QFile large(tooLarge);
+        QVERIFY(large.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        large.write(R"({"name": "too-large", "limits": {"maxQuantity": {"0x03": 4}},
+                       "units": [{"id": 1, "tables": {"holding": [{"address": 20, "type": "ascii", "length": 10, "name": "Serial number", "value": "SN-1234567"}]}}]})");
+        large.close();
+        const QString out = m_dir.filePath(QStringLiteral("too-large.csv"));
+        const CliResult refused = runMbscope({QStringLiteral("export-map"), tooLarge, QStringLiteral("--to"), QStringLiteral("csv"),
+                                              QStringLiteral("-o"), out});
+        QVERIFY2(refused.finished && refused.exitCode == 1, refused.describe());
+        QVERIFY2(refused.errText().contains(QLatin1String("unit 1 holding 20 (Serial number): 5 registers in one read, more than "
+                                                          "maxQuantity 4 of function 0x03\n")),
+                 refused.describe());
+        QVERIFY(!QFile::exists(out));
+    }
+
     void verifyUnreachable()
     {
         const CliResult r = runMbscope({QStringLiteral("export-map"), m_profile, QStringLiteral("--to"), QStringLiteral("csv"),

@@ -163,6 +163,12 @@ bool ExportMapDialog::exportMap()
         problem(tr("%1 has no table entries to export.").arg(profile.source));
         return false;
     }
+    if (!input.tooLarge.isEmpty()) {
+        problem(tr("Nothing exported: %n value(s) cannot be read whole within the device's limits.maxQuantity: %1", nullptr,
+                   int(input.tooLarge.size()))
+                    .arg(input.tooLarge.join(QStringLiteral("; "))));
+        return false;
+    }
     input.intervalMs = m_interval->value();
     if (const QString text = m_endpoint->text().trimmed(); !text.isEmpty()) {
         const LinkUrl::Result parsed = LinkUrl::parse(text);
@@ -195,7 +201,7 @@ bool ExportMapDialog::exportMap()
         m_export->setEnabled(false);
         m_status->setText(tr("Reading every value once from %1\u2026").arg(parsed.url->toString()));
         const QList<MapVerdict> verdicts = MapVerifier::judge(
-            input.points, input.blocks, readBlocks(m_sampler, *parsed.url, input.timeoutMs, input.points, input.blocks));
+            input.points, input.blocks, readBlocks(m_sampler, input.paced(*parsed.url), input.timeoutMs, input.points, input.blocks));
         m_running = false;
         m_export->setEnabled(true);
         QStringList bad;
