@@ -201,6 +201,12 @@ int runInfer(const QStringList &arguments)
 
         if (!map)
             return ExitUsage;
+        if (interrupts.isInterrupted()) {
+            // Ctrl-C in the map scan ends the run: there is nothing sampled to infer from.
+            finishRecording(recording, err);
+            err << "mbscope infer: stopped (Ctrl-C) during the map scan of unit " << unit << ": nothing sampled, nothing inferred\n";
+            return ExitFailure;
+        }
         SampleSettings found;
         found.takeBlocks(*map);
         maxQuantity = found.maxQuantity;
@@ -253,7 +259,7 @@ int runInfer(const QStringList &arguments)
     if (readable == 0) {
         err << "mbscope infer: nothing could be read" << (sampler.problem().isEmpty() ? QString() : QStringLiteral(": ") + sampler.problem())
             << '\n';
-        return ExitFailure;
+        return sampler.linkFailed() ? ExitLinkError : ExitFailure;
     }
     if (!outPath.isEmpty()) {
         const QByteArray bytes = InferenceDraft::toJson(all, quint8(unit), QFileInfo(outPath).completeBaseName(),

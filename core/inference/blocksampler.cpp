@@ -49,10 +49,15 @@ bool BlockSampler::readBlock(const SampleSettings &settings, const BlockRequest 
             return false;
         const Transaction &t = answer->transaction;
         if (t.status != TransactionStatus::Ok) {
+            m_linkFailed = m_linkFailed || t.status == TransactionStatus::LinkError;
             if (m_problem.isEmpty())
                 m_problem = t.status == TransactionStatus::Exception
                                 ? QStringLiteral("read %1 at %2 x %3 answered exception %4").arg(block.function).arg(address).arg(quantity).arg(t.exceptionCode)
-                                : QStringLiteral("read %1 at %2 x %3 got no usable answer").arg(block.function).arg(address).arg(quantity);
+                                : QStringLiteral("read %1 at %2 x %3 got no usable answer%4")
+                                      .arg(block.function)
+                                      .arg(address)
+                                      .arg(quantity)
+                                      .arg(t.problem.isEmpty() ? QString() : QStringLiteral(": ") + t.problem);
             return false;
         }
         const QByteArray pdu = AduBuilder::parse(t.response, settings.url.framing()).pdu;
@@ -72,6 +77,7 @@ bool BlockSampler::readBlock(const SampleSettings &settings, const BlockRequest 
 QList<BlockSamples> BlockSampler::run(const SampleSettings &settings)
 {
     m_stopRequested = false;
+    m_linkFailed = false;
     m_problem.clear();
     m_channel->setTarget(settings.url);
     QList<BlockSamples> out;

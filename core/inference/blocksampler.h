@@ -48,6 +48,9 @@ public:
     [[nodiscard]] ProbeChannel *channel() { return m_channel; }
     // Why the last run read nothing at all (the first failure), or empty.
     [[nodiscard]] QString problem() const { return m_problem; }
+    // A read of the last run failed on the link (it could not be opened, or it broke).
+    [[nodiscard]] bool linkFailed() const { return m_linkFailed; }
+    [[nodiscard]] bool wasStopped() const { return m_stopRequested; }
 
 Q_SIGNALS:
     void roundDone(int done, int total);
@@ -57,6 +60,7 @@ private:
 
     ProbeChannel *m_channel;
     bool m_stopRequested = false;
+    bool m_linkFailed = false;
     QString m_problem;
 };
 

@@ -177,6 +177,10 @@ private Q_SLOTS:
         QTest::newRow("no target") << QStringList{QStringLiteral("--samples"), QStringLiteral("5")} << "target";
         QTest::newRow("block and addresses") << QStringList{target, QStringLiteral("--block"), QStringLiteral("3:0:4"), QStringLiteral("--addresses"), QStringLiteral("0-9")}
                                              << "--addresses says where a map scan searches";
+        // A link that cannot be opened is exit status 2 with its reason (it was 1, "got no usable answer").
+        QTest::newRow("nothing listens") << QStringList{QStringLiteral("tcp://127.0.0.1:%1").arg(closedPort()), QStringLiteral("--block"),
+                                                        QStringLiteral("3:0:4"), QStringLiteral("--samples"), QStringLiteral("2")}
+                                         << "got no usable answer: tcp://127.0.0.1:";
     }
     void badInput()
     {
