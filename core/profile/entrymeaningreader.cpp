@@ -192,8 +192,11 @@ bool EntryMeaningReader::resolveScaleRegister(JsonReader &reader, const QList<Ta
                              .arg(table).arg(address));
         return false;
     }
-    if (source->width() != 1 || !isIntegerFormat(source->format)) {
-        reader.error(at, QStringLiteral("%1 %2 is a %3 value: a scale factor is one i16 register (a power of ten)")
+    // Signed: a factor below one is a negative power (SunSpec's sunssf is an int16). A u16 entry
+    // would read 0xFFFF as 10^65535; it was taken as an i16 without a word.
+    if (source->width() != 1 || source->format.type() != RegisterType::Int16) {
+        reader.error(at, QStringLiteral("%1 %2 is a %3 value: a scale factor is one i16 register (a power of ten; give that "
+                                        "entry \"type\": \"i16\")")
                              .arg(table).arg(address).arg(source->format.name()));
         return false;
     }

@@ -180,7 +180,11 @@ inline void addErrorRows()
         S("holding 9 is not in any holding entry of this unit (without a scaleRegister of its own)"));
     row("scaleRegister a float", holding(R"({"address": 0, "scaleRegister": 2}, {"address": 2, "type": "f32"})"),
         "units[0].tables.holding[0].scaleRegister",
-        S("holding 2 is a f32-abcd value: a scale factor is one i16 register (a power of ten)"));
+        S("holding 2 is a f32-abcd value: a scale factor is one i16 register (a power of ten; give that entry \"type\": \"i16\")"));
+    // A u16 (an untyped block) was taken as an i16 without a word (a new user's try).
+    row("scaleRegister a u16", holding(R"({"address": 0, "count": 10}, {"address": 20, "type": "i16", "scaleRegister": 9})"),
+        "units[0].tables.holding[1].scaleRegister",
+        S("holding 9 is a u16 value: a scale factor is one i16 register (a power of ten; give that entry \"type\": \"i16\")"));
     row("scaleRegister too large", holding(R"({"address": 0, "scaleRegister": 1}, {"address": 1, "type": "i16", "value": 40})"),
         "units[0].tables.holding[0].scaleRegister",
         S("holding 1 holds 40: a scale factor of 10^40 is outside 10^-10..10^10"));
