@@ -13,6 +13,19 @@ namespace mbscope {
 
 namespace {
 
+// A u16 guess re-read as i16 because it is a temperature: the type and its evidence say so (the
+// evidence said "u16: ..." beside the type i16).
+void readSigned(ValueGuess &g)
+{
+    g.format = RegisterFormat(RegisterType::Int16, g.format.order());
+    if (g.evidence.startsWith(QLatin1String("u16:"))) {
+        const qsizetype end = g.evidence.indexOf(QLatin1Char(';'));
+        const QString why = g.evidence.mid(4, end < 0 ? -1 : end - 4);
+        g.evidence = QStringLiteral("i16, as a temperature has a sign (as u16:%1)").arg(why) + (end < 0 ? QString() : g.evidence.mid(end));
+    }
+}
+
+
 struct Quantity {
     const char *name;
     const char *unit;
@@ -142,7 +155,7 @@ void ScaleInferrer::apply(QList<ValueGuess> &guesses, const BlockSamples &block)
                                            WordSeries::number(low * s), WordSeries::number(high * s), g.unit, g.quantity)
                                       .trimmed();
                 if (g.quantity == QLatin1String("temperature") && g.format.type() == RegisterType::UInt16)
-                    g.format = RegisterFormat(RegisterType::Int16, g.format.order()); // temperatures have a sign
+                    readSigned(g); // temperatures have a sign
                 break;
             }
         } else if (g.format.isFloat() && g.kind == ValueKind::Measurement) {
@@ -158,7 +171,7 @@ void ScaleInferrer::apply(QList<ValueGuess> &guesses, const BlockSamples &block)
                 g.quantity = QString::fromLatin1(q->name);
                 g.unit = QString::fromLatin1(q->unit);
                 if (g.quantity == QLatin1String("temperature") && g.format.type() == RegisterType::UInt16)
-                    g.format = RegisterFormat(RegisterType::Int16, g.format.order());
+                    readSigned(g);
             }
         }
     }
@@ -218,7 +231,7 @@ void ScaleInferrer::applyNeighbours(QList<ValueGuess> &guesses)
         g.scale = 0.1;
         g.unit = QStringLiteral("degC");
         g.quantity = QStringLiteral("temperature");
-        g.format = RegisterFormat(RegisterType::Int16, g.format.order());
+        readSigned(g);
         g.minimum = g.maximum = g.last = raw * 0.1;
         g.lastText = WordSeries::number(g.last);
         g.scaleConfidence = 0.5;
