@@ -158,6 +158,22 @@ int runHeadless(const QStringList &arguments)
         }
         return ExitOk;
     }
+    if (first == QLatin1String("help") && arguments.size() > 2) {
+        // `mbscope help NAME` is `mbscope NAME --help`.
+        const QString name = arguments.at(2);
+        for (const Subcommand &s : kSubcommands) {
+            if (name != QLatin1String(s.name))
+                continue;
+            if (!s.run) {
+                err << "mbscope: '" << name << "' runs in mbscope-full, which this executable could not start\n";
+                return ExitUsage;
+            }
+            return s.run({name, QStringLiteral("--help")});
+        }
+        err << "mbscope help: unknown subcommand '" << name << "'\n";
+        printUsage(err);
+        return ExitUsage;
+    }
     if (first.isEmpty() || first == QLatin1String("--help") || first == QLatin1String("-h") || first == QLatin1String("help")) {
         printUsage(out);
         return first.isEmpty() && !hasGui() ? ExitUsage : ExitOk;

@@ -34,8 +34,10 @@ bool Launcher::needsFull(int argc, char *argv[])
     const char *first = argv[1];
     if (first[0] == '-')
         return !isOneOf(first, {"--help", "-h", "--version"}); // the window's options, --help-all
+    if (std::strcmp(first, "help") == 0) // `help NAME`: NAME's --help, where NAME runs
+        return argc > 2 && isSubcommand(argv[2]) && !runsHere(argv[2]);
     if (!isSubcommand(first))
-        return false; // `help`, or a typo that the dispatcher names
+        return false; // a typo that the dispatcher names
     if (!runsHere(first))
         return true;
     return HistogramPlot::isRequested(argc, argv) || ProfileLimits::isRequested(argc, argv);

@@ -561,6 +561,16 @@ void TestCliExchange::helpAll()
         QVERIFY2(all.outText().contains(QStringLiteral("\n== mbscope %1 ==\n").arg(QLatin1String(command))), command);
     }
     QVERIFY2(all.err.isEmpty(), all.describe());
+    // `mbscope help NAME` is NAME's --help (it printed the general usage), one of mbscope-full's
+    // too; an unknown name is a usage error.
+    for (const char *command : {"scan", "simulate"}) {
+        const CliResult help = runMbscope({QStringLiteral("help"), QLatin1String(command)});
+        const CliResult own = runMbscope({QLatin1String(command), QStringLiteral("--help")});
+        QVERIFY2(help.exitCode == 0 && help.out == own.out && !help.out.isEmpty(), help.describe());
+    }
+    const CliResult bogus = runMbscope({QStringLiteral("help"), QStringLiteral("bogus")});
+    QCOMPARE(bogus.exitCode, 2);
+    QVERIFY2(bogus.errText().startsWith(QLatin1String("mbscope help: unknown subcommand 'bogus'\n")), bogus.describe());
 }
 
 QTEST_GUILESS_MAIN(TestCliExchange)
