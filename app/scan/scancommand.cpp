@@ -125,8 +125,14 @@ int runUnits(const Common &common, UnitScanSettings settings, const QString &pro
             return ExitUsage;
     }
     if (!profilePath.isEmpty()
-        && !mergeIntoProfileFile(profilePath, [&results](const QByteArray &profile, QString *said, QString *problem) {
-               return ProfileDraft::mergeUnits(profile, results, said, problem);
+        && !mergeIntoProfileFile(profilePath, [&](const QByteArray &profile, QString *said, QString *problem) {
+               const QByteArray merged = ProfileDraft::mergeUnits(profile, results, said, problem);
+               if (end != JobEnd::Completed) // what the others got is of the ids asked only
+                   *said += QStringLiteral(" (from %1 of %2 ids: %3)")
+                                .arg(results.size())
+                                .arg(settings.idCount())
+                                .arg(end == JobEnd::Stopped ? QStringLiteral("stopped") : QStringLiteral("cut short"));
+               return merged;
            }, "profile units", err))
         return ExitUsage;
     if (common.json)

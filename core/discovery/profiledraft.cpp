@@ -131,11 +131,19 @@ std::optional<QJsonObject> profileObject(const QByteArray &profile, QString *err
     return doc.object();
 }
 
+// "1, 3, 5-247": runs of consecutive ids as ranges (a full scan listed 245 ids one by one).
 QString idList(const QList<int> &ids)
 {
     QStringList out;
-    for (const int id : ids)
-        out.append(QString::number(id));
+    for (qsizetype i = 0; i < ids.size();) {
+        qsizetype j = i;
+        while (j + 1 < ids.size() && ids.at(j + 1) == ids.at(j) + 1)
+            ++j;
+        out.append(j - i >= 2 ? QStringLiteral("%1-%2").arg(ids.at(i)).arg(ids.at(j)) : QString::number(ids.at(i)));
+        if (j - i == 1)
+            out.append(QString::number(ids.at(j)));
+        i = j + 1;
+    }
     return out.join(QStringLiteral(", "));
 }
 

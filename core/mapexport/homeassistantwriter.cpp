@@ -10,6 +10,18 @@ namespace mbscope {
 
 namespace {
 
+// Home Assistant's own unit symbols where a profile spells one in ASCII: its temperature sensors
+// know "°C" and "°F", not "degC" (a sensor with an unknown unit gets no conversion or device class).
+QString homeAssistantUnit(const QString &unit)
+{
+    if (unit == QLatin1String("degC"))
+        return QStringLiteral("\u00B0C");
+    if (unit == QLatin1String("degF"))
+        return QStringLiteral("\u00B0F");
+    return unit;
+}
+
+
 QString dataType(const MapPoint &p)
 {
     if (p.isString())
@@ -98,7 +110,7 @@ QString HomeAssistantWriter::write(const MapExportInput &input)
             s += QStringLiteral("        swap: %1\n        scale: %2\n        offset: %3\n        precision: %4\n")
                      .arg(swap(p), number(p.scale), number(p.offset)).arg(precision(p));
             if (!p.unit.isEmpty())
-                s += QStringLiteral("        unit_of_measurement: %1\n").arg(MapPoint::yamlQuoted(p.unit));
+                s += QStringLiteral("        unit_of_measurement: %1\n").arg(MapPoint::yamlQuoted(homeAssistantUnit(p.unit)));
             if (p.kind == ValueKind::Counter)
                 s += QStringLiteral("        state_class: total_increasing\n");
             else if (p.kind == ValueKind::Measurement)

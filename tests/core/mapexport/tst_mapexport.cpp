@@ -243,6 +243,8 @@ private slots:
         row(F::HomeAssistant, "modbus[0].sensors[10].swap", "byte");
         row(F::HomeAssistant, "modbus[0].sensors[11].offset", "900");
         row(F::HomeAssistant, "modbus[0].sensors[13].input_type", "holding");
+        // Home Assistant's own symbol: "degC" passed through left the sensor without its unit.
+        row(F::HomeAssistant, "modbus[0].sensors[13].unit_of_measurement", "\u00B0C");
         row(F::HomeAssistant, "modbus[0].sensors[13].min_value", "5");
         row(F::HomeAssistant, "modbus[0].sensors[13].max_value", "35");
         row(F::HomeAssistant, "modbus[0].sensors[14].data_type", "string");
