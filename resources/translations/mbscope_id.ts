@@ -1375,8 +1375,15 @@
         <source>Which profile? Give a shipped profile&apos;s name or a JSON file.</source>
         <translation>Profil yang mana? Berikan nama profil bawaan atau berkas JSON.</translation>
     </message>
+    <message numerus="yes">
+        <location line="+16"/>
+        <source>Nothing exported: %n value(s) cannot be read whole within the device&apos;s limits.maxQuantity: %1</source>
+        <translation>
+            <numerusform>Tidak ada yang diekspor: %n nilai tidak dapat dibaca utuh dalam limits.maxQuantity perangkat: %1</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="+19"/>
+        <location line="+9"/>
         <source>Endpoint: %1</source>
         <translation>Titik ujung: %1</translation>
     </message>
@@ -1386,12 +1393,12 @@
         <translation>Titik ujung %1: %2</translation>
     </message>
     <message>
-        <location line="-15"/>
+        <location line="-21"/>
         <source>%1 has no table entries to export.</source>
         <translation>%1 tidak punya entri tabel untuk diekspor.</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+26"/>
         <source>Choose the output file.</source>
         <translation>Pilih berkas keluaran.</translation>
     </message>
@@ -3941,6 +3948,11 @@ dan %n lagi</numerusform>
     </message>
     <message>
         <location line="+1"/>
+        <source>exception %1 from a gateway: no device</source>
+        <translation>pengecualian %1 dari gateway: tidak ada perangkat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>exception %1: known, refused</source>
         <translation>eksepsi %1: dikenal, ditolak</translation>
     </message>
@@ -3995,6 +4007,11 @@ dan %n lagi</numerusform>
         <translation>
             <numerusform>alamat %1–%2 dicari, %n permintaan</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no device: exception %1 from a gateway</source>
+        <translation>tidak ada perangkat: pengecualian %1 dari gateway</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -8370,16 +8387,16 @@ Klik kanan untuk mengganti format</translation>
     <name>mbscope::TimingResultTree</name>
     <message>
         <location filename="../../ui/discovery/timingresulttree.cpp" line="+13"/>
-        <location line="+52"/>
-        <location line="+11"/>
-        <location line="+23"/>
+        <location line="+55"/>
+        <location line="+15"/>
+        <location line="+30"/>
         <location line="+1"/>
         <location line="+1"/>
         <source>%1 ms</source>
         <translation>%1 md</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-84"/>
         <source>Measurement</source>
         <translation>Pengukuran</translation>
     </message>
@@ -8389,7 +8406,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Hasil</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+28"/>
         <source>First answer after connecting</source>
         <translation>Jawaban pertama setelah tersambung</translation>
     </message>
@@ -8441,29 +8458,55 @@ Klik kanan untuk mengganti format</translation>
         <translation>tidak diukur: perangkat memutus sambungan setelah setiap jawaban dan setiap sambungan baru menunggu pemanasannya (%1 ms)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Shortest gap without errors</source>
         <translation>Jeda terpendek tanpa galat</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>none of those tried</source>
-        <translation>tidak satu pun yang dicoba</translation>
+        <source>not measured (the warm-up kept every request apart)</source>
+        <translation>tidak diukur (pemanasan menjaga jarak setiap permintaan)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>not measured (stopped before a gap was tried through)</source>
+        <translation>tidak diukur (dihentikan sebelum sebuah jeda dicoba sampai selesai)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>none of those tried (every gap had errors)</source>
+        <translation>tidak satu pun yang dicoba (setiap jeda ada galat)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>%1 ms (shorter gaps not tried: stopped)</source>
+        <translation>%1 ms (jeda yang lebih pendek tidak dicoba: dihentikan)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+8"/>
         <source>Largest read answered</source>
         <translation>Baca terbesar yang dijawab</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-7"/>
         <source>%1 at address %2 (an answer PDU of %3 bytes)</source>
         <translation>%1 di alamat %2 (PDU jawaban %3 bita)</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>at least %1 at address %2 (an answer PDU of %3 bytes; stopped before the largest was found)</source>
+        <translation>setidaknya %1 di alamat %2 (PDU jawaban %3 byte; dihentikan sebelum yang terbesar ditemukan)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>: one more ran past the device&apos;s map (no exception 03), not a quantity limit</source>
         <translation>: satu lagi melewati peta perangkat (tanpa pengecualian 03), bukan batas jumlah</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>not measured</source>
+        <translation>tidak diukur</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -8529,6 +8572,11 @@ Klik kanan untuk mengganti format</translation>
         <location line="+1"/>
         <source>Gap between requests</source>
         <translation>Jeda antarpermintaan</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>none: no gap was measured</source>
+        <translation>tidak ada: tidak ada jeda yang diukur</translation>
     </message>
     <message>
         <location line="+1"/>
