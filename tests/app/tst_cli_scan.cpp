@@ -616,7 +616,11 @@ void TestCliScan::timingLimitsMergedIntoProfile()
     QCOMPARE(written.value(QStringLiteral("name")).toString(), QStringLiteral("limited-draft"));
     const QJsonObject limits = written.value(QStringLiteral("limits")).toObject();
     QCOMPARE(limits.value(QStringLiteral("minGapMs")).toInt(), 50);
-    QVERIFY2(limits.value(QStringLiteral("warmUpMs")).toDouble() >= 300, qPrintable(QJsonDocument(limits).toJson()));
+    // The device counts its 300 ms from when its event loop took the connection in and read the
+    // request, which on a busy machine can be milliseconds after the client saw it open and wrote
+    // it (292 ms was recorded once under two parallel tests): a tenth of slack, the margin
+    // DeviceLimits::clientWarmUp adds when the profile is used.
+    QVERIFY2(limits.value(QStringLiteral("warmUpMs")).toDouble() >= 270, qPrintable(QJsonDocument(limits).toJson()));
     QCOMPARE(limits.value(QStringLiteral("maxClients")).toInt(), 2);
     QCOMPARE(limits.value(QStringLiteral("extraClients")).toString(), QStringLiteral("dropOldest"));
     const QJsonObject quantities = limits.value(QStringLiteral("maxQuantity")).toObject();
