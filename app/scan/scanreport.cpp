@@ -301,6 +301,8 @@ QString ScanReport::mapText(const RegisterMap &map, JobEnd end, qint64 elapsedMs
             text += QStringLiteral("  no address answered\n");
         for (const MapBlock &b : t.blocks)
             text += QStringLiteral("  %1-%2  (%3 addresses)\n").arg(b.address).arg(b.last()).arg(b.count());
+        if (t.refusesGapReads())
+            text += QStringLiteral("  reads over a gap refused (exception 02 at %1): no read spans two blocks\n").arg(t.firstGapRefusal);
     }
     if (!map.functions.isEmpty()) {
         text += QStringLiteral("\nOptional functions:\n");
@@ -333,6 +335,7 @@ QJsonObject ScanReport::mapJson(const RegisterMap &map, JobEnd end, qint64 elaps
                                   {QStringLiteral("max_quantity"), t.maxQuantity},
                                   {QStringLiteral("gateway_exception"), t.gatewayException != 0 ? QJsonValue(int(t.gatewayException))
                                                                                                 : QJsonValue(QJsonValue::Null)},
+                                  {QStringLiteral("gap_reads_refused"), t.refusesGapReads()},
                                   {QStringLiteral("searched_first"), t.searchedFirst},
                                   {QStringLiteral("searched_last"), t.searchedLast},
                                   {QStringLiteral("requests"), t.requests},

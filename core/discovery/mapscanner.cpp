@@ -201,6 +201,9 @@ void MapScanner::mapTable(TableMap &table)
         if (address != first)
             reply = read(table.function, address, 1);
         if (reply.reply != Reply::Ok) {
+            // A read past a block refused with 02: if another block follows, reads over the gap fail.
+            if (reply.reply == Reply::IllegalAddress && !table.blocks.isEmpty() && table.firstGapRefusal < 0)
+                table.firstGapRefusal = address;
             unknownFrom = address + 1;
             address = address == table.searchedLast ? address + 1 : qMin(address + step, table.searchedLast);
             continue;

@@ -64,6 +64,10 @@ QByteArray ProfileDraft::toJson(const RegisterMap &map, const QString &name, con
                      {QStringLiteral("tables"), tables}};
     if (map.exceptionStatus >= 0)
         unit.insert(QStringLiteral("exceptionStatus"), map.exceptionStatus);
+    // Measured: an address between two blocks was refused with 02. (A device answering zeros
+    // there shows one block holding zeros: the scan cannot tell those from registers at 0.)
+    if (std::any_of(map.tables.cbegin(), map.tables.cend(), [](const TableMap &t) { return t.refusesGapReads(); }))
+        unit.insert(QStringLiteral("gapReads"), QStringLiteral("exception"));
 
     // The device's limits the scan measured: a read function that took fewer than the
     // specification allows (exception 03 above it) is recorded, so that what polls the clone or

@@ -28,6 +28,14 @@ struct TableMap {
     // 0A or 0B: a gateway answered the table's first read for the unit (no path, or nothing
     // answered behind it): no device, so nothing is known of the function. 0 otherwise.
     quint8 gatewayException = 0;
+    // The first address after a block whose one-register read got exception 02 (-1: none). With a
+    // block after it, the device refuses a read over the gap between (a profile's gapReads
+    // "exception"), which no read may span.
+    int firstGapRefusal = -1;
+    [[nodiscard]] bool refusesGapReads() const
+    {
+        return blocks.size() >= 2 && firstGapRefusal >= 0 && firstGapRefusal < int(blocks.constLast().address);
+    }
 };
 
 // Whether an optional function (or a diagnostics sub-function) is answered.

@@ -433,6 +433,15 @@ void TestCliScan::mapDraftServedAgainAnswersTheSame()
     }
     QVERIFY(answers2B);
     QCOMPARE(first.value(QStringLiteral("exception_status")).toInt(), 0x6D);
+    // Issue 28, "whether a read spanning a gap fails": measured (02 between blocks) and stored.
+    for (const QJsonValue &t : first.value(QStringLiteral("tables")).toArray())
+        QCOMPARE(t.toObject().value(QStringLiteral("gap_reads_refused")).toBool(), t.toObject().value(QStringLiteral("function")).toInt() >= 3);
+    {
+        QFile saved(draft);
+        QVERIFY(saved.open(QIODevice::ReadOnly));
+        const QJsonObject unit = QJsonDocument::fromJson(saved.readAll()).object().value(QStringLiteral("units")).toArray().at(0).toObject();
+        QCOMPARE(unit.value(QStringLiteral("gapReads")).toString(), QStringLiteral("exception"));
+    }
 
     Background clone;
     QVERIFY2(clone.start({QStringLiteral("simulate"), QStringLiteral("--profile"), draft, QStringLiteral("--listen"),
