@@ -62,6 +62,11 @@ void WatchLinkPoller::start()
     EngineOptions options;
     // Each answer decides the next turn: it is wanted at once, not in the next ~30 Hz batch.
     options.batchIntervalMs = 0;
+    // The device's pace is the engine's, as for every other talker (poll, the window): no request
+    // sooner than gapMs after the exchange before it, none sooner than warmUpMs after the link
+    // opens (each time it opens).
+    options.requestGap = std::chrono::milliseconds(m_settings.gapMs);
+    options.warmUp = std::chrono::milliseconds(m_settings.warmUpMs);
     m_engine = std::make_unique<TransactionEngine>();
     m_engine->setTarget(*m_url, options);
     if (m_log)
@@ -78,8 +83,8 @@ void WatchLinkPoller::start()
         e.dueNs = now;
     setState(WatchLinkState::State::Connecting);
     if (m_settings.warmUpMs > 0) {
-        // The device ignores requests this soon after a connection opens: open it first, and the
-        // first request waits warmUpMs after it opened (onLinkOpened).
+        // The device ignores requests this soon after a connection opens: open it first (the
+        // state says Connecting, then Up), and the engine holds the first request its warm-up.
         m_phase = Phase::Connecting;
         m_timer.start(m_url->connectTimeoutMs + 3000);
         m_engine->openLink();
@@ -212,10 +217,6 @@ void WatchLinkPoller::onTimer()
     case Phase::Idle:
         pump();
         break;
-    case Phase::Gap:
-        m_phase = Phase::Idle;
-        pump();
-        break;
     case Phase::Backoff:
         m_phase = Phase::Connecting;
         setState(WatchLinkState::State::Connecting, m_state.message);
@@ -248,14 +249,8 @@ void WatchLinkPoller::onTransactions(const QList<Transaction> &transactions)
             linkLost(t.problem);
             continue;
         }
-        if (m_settings.gapMs > 0) {
-            // The gap runs from the end of the exchange: the answer's last byte, or the timeout.
-            m_phase = Phase::Gap;
-            m_timer.start(m_settings.gapMs);
-        } else {
-            m_phase = Phase::Idle;
-            pump();
-        }
+        m_phase = Phase::Idle; // the engine keeps the gap after this exchange (EngineOptions::requestGap)
+        pump();
     }
 }
 
@@ -414,12 +409,7 @@ void WatchLinkPoller::onLinkOpened()
     setState(WatchLinkState::State::Up);
     if (m_phase == Phase::Connecting) {
         m_timer.stop();
-        if (m_settings.warmUpMs > 0) {
-            m_phase = Phase::Gap; // the warm-up: a gap before the first request on this connection
-            m_timer.start(m_settings.warmUpMs);
-            return;
-        }
-        m_phase = Phase::Idle;
+        m_phase = Phase::Idle; // the engine holds the first request the warm-up (EngineOptions::warmUp)
         pump();
     }
 }

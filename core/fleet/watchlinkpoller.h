@@ -76,7 +76,7 @@ private:
         QByteArray pdu;
         quint8 unit = 1;
     };
-    enum class Phase : quint8 { Idle, Busy, Gap, Backoff, Connecting, Stopped };
+    enum class Phase : quint8 { Idle, Busy, Backoff, Connecting, Stopped };
 
     void pump();
     void armTimer(qint64 waitNs);

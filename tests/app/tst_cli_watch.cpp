@@ -509,12 +509,14 @@ void TestCliWatch::firstConnectionIsNoReconnect()
 // the timing scan records it). The session's link waits its warmUpMs (500) after opening before the
 // first request, and every poll is answered: exit 0 (before, warmUpMs was refused as an unknown
 // member; without the wait, the first request goes unanswered and the watch counts a timeout).
+// The gap too (minGapMs 40, busy answers sooner): the link's gapMs 41, kept by the engine as for
+// every other talker (the watch link kept it with timers of its own), gets every poll answered.
 void TestCliWatch::linkWaitsTheWarmUp()
 {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString profile = dir.filePath(QStringLiteral("slow.json"));
-    QVERIFY(writeFile(profile, R"({"name": "slow", "limits": {"warmUpMs": 400},
+    QVERIFY(writeFile(profile, R"({"name": "slow", "limits": {"warmUpMs": 400, "minGapMs": 40},
         "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 4}]}}]})"));
     Background sim;
     QString why;
@@ -524,8 +526,9 @@ void TestCliWatch::linkWaitsTheWarmUp()
              qPrintable(why));
     const QString session = dir.filePath(QStringLiteral("slow.mbscope.json"));
     QVERIFY(writeFile(session, QStringLiteral(R"({"format": "mbscope-session", "version": 2, "name": "slow",
-        "watches": [{"name": "slow", "target": "%1", "address": 0, "quantity": 4, "intervalMs": 100}],
-        "watchLinks": [{"target": "%1", "warmUpMs": 500, "timeoutMs": 300}]})")
+        "watches": [{"name": "slow", "target": "%1", "address": 0, "quantity": 4, "intervalMs": 10},
+                    {"name": "slow too", "target": "%1", "address": 1, "quantity": 2, "intervalMs": 10}],
+        "watchLinks": [{"target": "%1", "warmUpMs": 500, "gapMs": 41, "timeoutMs": 300}]})")
                                    .arg(sim.url())
                                    .toUtf8()));
     const CliResult r = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--count"), QStringLiteral("3"), QStringLiteral("--quiet")});
