@@ -172,15 +172,15 @@ void InferDialog::run(Run what, int samples)
     m_run = what;
     BlockSampler *sampler = m_sampler;
     const SampleSettings s = settings(samples);
-    const Job *job = m_job;
+    Job *job = m_job;
     m_jobs->run(m_job, [this, sampler, s, job]() -> JobThread::Outcome {
-        // In the job's thread: only the sampler is touched here; what it read comes back by value.
+        // In the job's thread: only the sampler is touched here; what it read comes back by value,
+        // the first failure as the job's problem.
         const QList<BlockSamples> read = sampler->run(s);
-        const QString problem = sampler->problem();
-        return {job->isCancelRequested() ? JobEnd::Stopped : JobEnd::Completed, [this, read, problem] {
-                    m_read = read;
-                    m_readProblem = problem;
-                }};
+        if (!sampler->problem().isEmpty())
+            job->addProblem(sampler->problem());
+        const JobEnd end = job->isCancelRequested() ? JobEnd::Stopped : sampler->linkFailed() ? JobEnd::LinkError : JobEnd::Completed;
+        return {end, [this, read] { m_read = read; }};
     });
     updateButtons();
 }
@@ -204,8 +204,9 @@ void InferDialog::showInference()
         samples = std::max(samples, int(b.samples.size()));
     if (samples < 2) {
         m_haveDraft = false;
-        ScanForm::showProblem(m_status, m_readProblem.isEmpty() ? tr("Too few reads answered to infer anything.")
-                                                                : tr("Nothing could be read: %1").arg(m_readProblem));
+        const QStringList problems = m_job->problems();
+        ScanForm::showProblem(m_status, problems.isEmpty() ? tr("Too few reads answered to infer anything.")
+                                                           : tr("Nothing could be read: %1").arg(problems.constFirst()));
         updateButtons();
         return;
     }

@@ -84,7 +84,6 @@ private:
     int m_maxQuantity = 125;
     Run m_run = Run::None;
     QList<BlockSamples> m_read;  // what the last run read, delivered from the job's thread
-    QString m_readProblem;
     bool m_haveDraft = false;
 };
 
