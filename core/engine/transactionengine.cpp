@@ -4,6 +4,8 @@
 #include "engineeventdispatcher.h"
 #include "sweep.h"
 
+#include <limits>
+
 #include <QtCore/QCoreApplication>
 #include <QtCore/QEventLoop>
 #include <QtCore/QTimer>
@@ -55,6 +57,9 @@ void TransactionEngine::setLinkFactory(LinkFactory factory)
 void TransactionEngine::setTarget(const LinkUrl &url, const EngineOptions &options)
 {
     m_url = url;
+    // What the device's pace may hold a request before it is written (sendAndWait waits it too).
+    const EngineOptions paced = options.withPaceOf(url);
+    m_paceWaitMs = std::chrono::ceil<std::chrono::milliseconds>(paced.requestGap + paced.warmUp).count();
     QMetaObject::invokeMethod(m_core, [core = m_core, url, options] { core->setTarget(url, options); }, Qt::QueuedConnection);
 }
 
@@ -89,7 +94,8 @@ quint64 TransactionEngine::send(const RequestItem &item)
 std::optional<Transaction> TransactionEngine::sendAndWait(const RequestItem &item, int waitMs)
 {
     if (waitMs < 0)
-        waitMs = item.timeoutMs * (item.retries + 1) + m_url.connectTimeoutMs + 2000;
+        waitMs = int(std::min<qint64>((qint64(item.timeoutMs) + m_paceWaitMs) * (item.retries + 1) + m_url.connectTimeoutMs + 2000,
+                                      std::numeric_limits<int>::max()));
     QEventLoop loop;
     std::optional<Transaction> result;
     quint64 id = 0;

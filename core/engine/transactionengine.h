@@ -101,6 +101,7 @@ private:
     EngineCore *m_core;       // lives in m_thread
     Sweep *m_sweep = nullptr; // engine thread only
     LinkUrl m_url;            // caller's thread: for sendAndWait's default wait
+    qint64 m_paceWaitMs = 0;  // caller's thread: the longest the device's pace (gap, warm-up) holds a request
 };
 
 } // namespace mbscope

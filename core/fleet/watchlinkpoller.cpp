@@ -401,12 +401,16 @@ void WatchLinkPoller::linkLost(const QString &message)
 void WatchLinkPoller::onLinkOpened()
 {
     ++m_opens;
-    if (m_opens > 1)
+    // A device that hangs up after each answer (close=each) gets a new connection per request by
+    // design: that is no reconnect, and the link, up all along, says nothing new.
+    const bool planned = m_url->closeAfterAnswer && m_state.state == WatchLinkState::State::Up;
+    if (m_opens > 1 && !planned)
         ++m_state.reconnects;
     for (Entry &e : m_entries)
         e.counters.reconnects = m_state.reconnects;
     m_backoffMs = 0;
-    setState(WatchLinkState::State::Up);
+    if (!planned)
+        setState(WatchLinkState::State::Up);
     if (m_phase == Phase::Connecting) {
         m_timer.stop();
         m_phase = Phase::Idle; // the engine holds the first request the warm-up (EngineOptions::warmUp)

@@ -100,6 +100,7 @@ class TestCliWatch : public QObject
 private Q_SLOTS:
     void threeDevicesOnThreeLinks();
     void linkWaitsTheWarmUp();
+    void closeEachIsNoReconnect();
     void brokenSessionRefused();
     void thresholdsThePointCannotReachRefused();
     void noWatches();
@@ -533,6 +534,35 @@ void TestCliWatch::linkWaitsTheWarmUp()
                                    .toUtf8()));
     const CliResult r = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--count"), QStringLiteral("3"), QStringLiteral("--quiet")});
     QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+}
+
+// A device that hangs up after each answer, on a target with close=each: a new connection per
+// request is the plan, not a reconnect (a new user's try saw "up" twice a poll and 8 reconnects).
+void TestCliWatch::closeEachIsNoReconnect()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString profile = dir.filePath(QStringLiteral("hang.json"));
+    QVERIFY(writeFile(profile, R"({"name": "hang", "limits": {"closesAfterAnswer": true},
+        "units": [{"id": 1, "tables": {"holding": [{"address": 0, "count": 4}]}}]})"));
+    Background sim;
+    QString why;
+    QVERIFY2(sim.start({QStringLiteral("simulate"), QStringLiteral("--profile"), profile, QStringLiteral("--listen"),
+                        QStringLiteral("tcp://127.0.0.1:0"), QStringLiteral("--quiet")},
+                       &why),
+             qPrintable(why));
+    const QString target = sim.url() + QStringLiteral("?close=each");
+    const QString session = dir.filePath(QStringLiteral("hang.mbscope.json"));
+    QVERIFY(writeFile(session, QStringLiteral(R"({"format": "mbscope-session", "version": 2, "name": "hang",
+        "watches": [{"name": "a", "target": "%1", "address": 0, "quantity": 2, "intervalMs": 20},
+                    {"name": "b", "target": "%1", "address": 2, "quantity": 2, "intervalMs": 20}]})")
+                                   .arg(target)
+                                   .toUtf8()));
+    const CliResult r = runMbscope({QStringLiteral("watch"), session, QStringLiteral("--count"), QStringLiteral("5"), QStringLiteral("--quiet")});
+    QVERIFY2(r.finished && r.exitCode == 0, r.describe());
+    QCOMPARE(r.errText().count(QLatin1String(": up\n")) + r.outText().count(QLatin1String(": up\n")), 1);
+    QVERIFY2(r.outText().count(QLatin1String(", 0 timeouts,")) == 2 && r.outText().count(QLatin1String(", 0 reconnects,")) == 2,
+             r.describe());
 }
 
 QTEST_GUILESS_MAIN(TestCliWatch)

@@ -627,7 +627,8 @@ void ConnectionBar::rebuildRecentMenu()
     menu->clear();
     const QStringList recent = recentTargets();
     for (const QString &text : recent) {
-        menu->addAction(text, this, [this, text] {
+        // A URL's options are joined by '&', which a menu takes for a shortcut mark.
+        menu->addAction(QString(text).replace(QLatin1Char('&'), QStringLiteral("&&")), this, [this, text] {
             const LinkUrl::Result parsed = LinkUrl::parse(text);
             if (parsed.url)
                 setUrl(*parsed.url);

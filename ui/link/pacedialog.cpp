@@ -88,6 +88,7 @@ bool PaceDialog::takeProfile(const QString &path)
     const ProfileLoadResult loaded = ProfileLoader::loadFile(path);
     if (!loaded.ok) {
         m_status->setText(tr("Nothing taken: %1").arg(loaded.errorText()));
+        resize(width(), qMax(height(), sizeHint().height()));
         return false;
     }
     const DeviceLimits &limits = loaded.profile.limits;
@@ -113,6 +114,8 @@ bool PaceDialog::takeProfile(const QString &path)
     }
     m_status->setText(text);
     m_status->setToolTip(path);
+    // The note takes lines of its own: the dialog grows for them rather than squeezing the fields.
+    resize(width(), qMax(height(), sizeHint().height()));
     return true;
 }
 

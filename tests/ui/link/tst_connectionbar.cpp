@@ -293,6 +293,17 @@ void TestConnectionBar::recentTargets()
     // A second bar (the next start of the program) sees the same list.
     ConnectionBar next;
     QCOMPARE(next.recentTargets(), recent);
+    // The menu shows a URL's options as written: '&' is no shortcut mark there (it read
+    // "timeout=1000msgap=51ms" with the g underlined).
+    LinkUrl paced;
+    paced.host = QStringLiteral("10.0.0.99");
+    paced.gap = std::chrono::milliseconds(51);
+    paced.warmUp = std::chrono::milliseconds(550);
+    next.addRecent(paced);
+    QMenu *menu = next.findChild<QToolButton *>(QStringLiteral("recentButton"))->menu();
+    QVERIFY(!menu->actions().isEmpty());
+    QCOMPARE(menu->actions().first()->text(), QStringLiteral("tcp://10.0.0.99:502?gap=51ms&&warmup=550ms"));
+    QCOMPARE(menu->actions().first()->iconText(), QStringLiteral("tcp://10.0.0.99:502?gap=51ms&warmup=550ms"));
 }
 
 namespace {
