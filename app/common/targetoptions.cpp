@@ -24,7 +24,9 @@ TargetOptions::TargetOptions(bool withRetries)
                               "some gateways): tcp://0.0.0.0:5020?mode=listen (also rtu-tcp, ascii-tcp, tls) waits up "
                               "to connect_timeout= for it and uses its connection; a second connection while one is "
                               "in use replaces it (busy=replace, the default), waits for it to end (busy=queue) or "
-                              "is closed at once (busy=refuse). Or, as mbpoll takes it, a host (192.168.1.10) or a "
+                              "is closed at once (busy=refuse). A device that needs time: ?gap=50ms (between "
+                              "requests), &warmup=500ms (after connecting), &close=each (a new connection per request). "
+                              "Or, as mbpoll takes it, a host (192.168.1.10) or a "
                               "serial device (/dev/ttyUSB0) with -m, -p, -b, -P, -d, -s; the target may also be given "
                               "without --target, as the last argument."),
                QStringLiteral("url"))

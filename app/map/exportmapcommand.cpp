@@ -237,7 +237,8 @@ int runExportMap(const QStringList &arguments)
         err << "mbscope export-map: -o: cannot write " << path << ": " << file.errorString() << '\n';
         return ExitUsage;
     }
-    err << "wrote " << input.points.size() << " values in " << input.blocks.size() << " blocks to " << path << " ("
+    err << "wrote " << input.points.size() << (input.points.size() == 1 ? " value in " : " values in ") << input.blocks.size()
+        << (input.blocks.size() == 1 ? " block to " : " blocks to ") << path << " ("
         << MapExporter::formatName(*format) << ")\n";
     return ExitOk;
 }

@@ -242,6 +242,13 @@ int runInfer(const QStringList &arguments)
     });
     const QList<BlockSamples> sampled = sampler.run(settings);
     line.clear();
+    if (interrupts.isInterrupted()) {
+        int most = 0;
+        for (const BlockSamples &b : sampled)
+            most = std::max(most, int(b.samples.size()));
+        err << "mbscope infer: stopped (Ctrl-C) after " << most << " of " << settings.samples << " samples: inferring from "
+            << (most == 1 ? "that one" : "those") << '\n';
+    }
     if (recording.isOpen())
         sampler.channel()->setTrafficLog(nullptr);
     finishRecording(recording, err);

@@ -56,7 +56,13 @@ DevicePace::Fit DevicePace::fitReads(RequestPlan &plan, const QMap<quint8, int> 
         const bool builtRead = plan.built && r.functionCode >= 1 && r.functionCode <= 4;
         const quint8 code = builtRead ? r.functionCode : r.item.functionCode;
         const int limit = maxQuantity.value(code, 0);
-        const int asked = builtRead ? r.quantity : quantityOf(AduBuilder::parse(r.item.bytes, r.item.framing).pdu);
+        const QByteArray pdu = builtRead ? QByteArray() : AduBuilder::parse(r.item.bytes, r.item.framing).pdu;
+        if (!builtRead && pdu.isEmpty()) {
+            ++fit.unchecked; // not a frame of the link's framing: what it asks is not known
+            fitted.append(r);
+            continue;
+        }
+        const int asked = builtRead ? r.quantity : quantityOf(pdu);
         if (limit <= 0 || asked <= limit) {
             fitted.append(r);
             continue;

@@ -26,6 +26,7 @@ public:
         QStringList notes;
         int cut = 0;        // requests cut into several
         int sentOver = 0;   // requests over the limit sent as given
+        int unchecked = 0;  // requests sent as typed that are no frame of the link's framing
     };
     [[nodiscard]] static Fit fitReads(RequestPlan &plan, const QMap<quint8, int> &maxQuantity, const LinkUrl &url,
                                       const QString &source);

@@ -215,8 +215,12 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
             source = QStringLiteral("%1= of --target").arg(QLatin1String(wait.urlKey));
         }
         // A wait turned off with --gap 0 or --warm-up 0 is said too: it overrides the profile's.
-        if (wait.value->count() > 0 || parser.isSet(*wait.option))
+        if (wait.value->count() > 0)
             out.pace.append(wait.what.arg(formatDuration(wait.value->count())) + QStringLiteral(" (%1)").arg(source));
+        else if (parser.isSet(*wait.option))
+            out.pace.append(QStringLiteral("no %1 (%2 0)").arg(QLatin1String(wait.urlKey) == QLatin1String("gap") ? QStringLiteral("gap")
+                                                                                                               : QStringLiteral("warm-up"),
+                                                           source));
     }
     out.engine.closeAfterAnswer = limits.closesAfterAnswer || url.closeAfterAnswer;
     if (out.engine.closeAfterAnswer)
@@ -294,6 +298,10 @@ bool PollOptions::read(const QCommandLineParser &parser, PollConfig &out, QTextS
             said.append(QStringLiteral("reads cut to %1").arg(of));
         if (fit.sentOver > 0)
             said.append(QStringLiteral("%1 request(s) over %2 sent as given").arg(fit.sentOver).arg(of));
+        if (fit.unchecked > 0)
+            said.append(QStringLiteral("%1 request(s) not checked against %2 (not a frame of the target's framing)")
+                            .arg(fit.unchecked)
+                            .arg(of));
         if (said.isEmpty())
             said.append(QStringLiteral("every request within %1").arg(of));
         out.pace.append(said);
