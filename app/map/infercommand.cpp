@@ -214,7 +214,10 @@ int runInfer(const QStringList &arguments)
         if (blocks.isEmpty()) {
             finishRecording(recording, err);
             if (scanner.end() == JobEnd::LinkError) {
-                err << "mbscope infer: the link failed: " << target.url.toString() << " cannot be reached\n";
+                err << "mbscope infer: the link failed: "
+                    << (scanner.linkProblem().isEmpty() ? target.url.toString() + QStringLiteral(" cannot be reached")
+                                                        : scanner.linkProblem())
+                    << '\n';
                 return ExitLinkError;
             }
             err << "mbscope infer: the map scan of unit " << unit << " found no addresses in " << scan.firstAddress << '-'
@@ -264,8 +267,8 @@ int runInfer(const QStringList &arguments)
         inferred.append(InferredBlock{sampled.at(i), guesses.at(i)});
     }
     if (readable == 0) {
-        err << "mbscope infer: nothing could be read" << (sampler.problem().isEmpty() ? QString() : QStringLiteral(": ") + sampler.problem())
-            << '\n';
+        err << "mbscope infer: " << (sampler.linkFailed() ? "the link failed" : "nothing could be read")
+            << (sampler.problem().isEmpty() ? QString() : QStringLiteral(": ") + sampler.problem()) << '\n';
         return sampler.linkFailed() ? ExitLinkError : ExitFailure;
     }
     if (!outPath.isEmpty()) {

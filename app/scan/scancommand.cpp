@@ -66,6 +66,7 @@ int runUnits(const Common &common, UnitScanSettings settings, const QString &pro
 {
     settings.url = common.url;
     settings.maxDurationMs = common.maxTimeMs;
+    settings.keepTargetPace();
     if (const QString problem = settings.problem(); !problem.isEmpty()) {
         err << "mbscope scan: " << problem << '\n';
         return ExitUsage;
@@ -183,7 +184,9 @@ int runMap(const Common &common, MapScanSettings settings, const QString &profil
     for (const TableMap &t : map->tables)
         anything = anything || !t.blocks.isEmpty();
     if (scanner.end() == JobEnd::LinkError && !anything) {
-        err << "mbscope scan: the link failed: " << settings.url.toString() << " cannot be reached\n";
+        err << "mbscope scan: the link failed: "
+            << (scanner.linkProblem().isEmpty() ? settings.url.toString() + QStringLiteral(" cannot be reached") : scanner.linkProblem())
+            << '\n';
         return ExitLinkError;
     }
     bool gatewayOnly = !map->tables.isEmpty();

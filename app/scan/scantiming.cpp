@@ -24,9 +24,13 @@ QString text(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
     QString t = QStringLiteral("TIMING %1 unit %2\n\n").arg(s.url.toString()).arg(s.unit);
     t += QStringLiteral("first answer after connecting   %1 ms (%2 failed before it)\n").arg(r.firstAnswerMs).arg(r.warmupFailures);
     if (r.warmUpMs >= 0)
-        t += QStringLiteral("warm-up after connecting        %1 ms (answered after waiting %1 ms, not after %2 ms)\n")
+        t += QStringLiteral("warm-up after connecting        %1 ms (answered after waiting %1 ms, not after %2 ms)%3\n")
                  .arg(r.warmUpMs)
-                 .arg(r.warmUpRefusedMs);
+                 .arg(r.warmUpRefusedMs)
+                 .arg(r.warmUpMs - r.warmUpRefusedMs > 10 && end != JobEnd::Completed
+                          ? QStringLiteral(": not narrowed to 10 ms (%1), an upper bound").arg(end == JobEnd::Stopped ? QStringLiteral("stopped")
+                                                                                                                 : QStringLiteral("time limit"))
+                          : QString());
     for (const TimingReport::GapTrial &g : r.gaps)
         t += QStringLiteral("gap %1 ms%2%3 ok, %4 failed, slowest %5 ms\n")
                  .arg(g.gapMs)

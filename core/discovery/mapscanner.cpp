@@ -60,6 +60,7 @@ std::optional<RegisterMap> MapScanner::run(const MapScanSettings &settings)
     m_requests = 0;
     m_stopRequested = false;
     m_end = JobEnd::Completed;
+    m_linkProblem.clear();
     m_clock.start();
 
     RegisterMap map;
@@ -110,8 +111,11 @@ std::optional<ProbeChannel::Answer> MapScanner::ask(const QByteArray &pdu)
         m_stopRequested = true;
         return std::nullopt;
     }
-    if (answer->transaction.status == TransactionStatus::LinkError)
+    if (answer->transaction.status == TransactionStatus::LinkError) {
         m_end = JobEnd::LinkError;
+        if (m_linkProblem.isEmpty())
+            m_linkProblem = answer->transaction.problem;
+    }
     return answer;
 }
 

@@ -40,6 +40,8 @@ public:
         m_channel->cancel();
     }
     [[nodiscard]] JobEnd end() const { return m_end; }
+    // The link's own words when it failed (JobEnd::LinkError), else empty.
+    [[nodiscard]] QString linkProblem() const { return m_linkProblem; }
     [[nodiscard]] ProbeChannel *channel() { return m_channel; }
 
 Q_SIGNALS:
@@ -68,6 +70,7 @@ private:
     int m_requests = 0;
     bool m_stopRequested = false;
     JobEnd m_end = JobEnd::Completed;
+    QString m_linkProblem;
     int m_tableIndex = 0;
 };
 

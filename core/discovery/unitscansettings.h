@@ -4,6 +4,8 @@
 
 #include <QtCore/QString>
 
+#include <algorithm>
+
 namespace mbscope {
 
 // What a unit scan asks, of which ids, and how long it may take. A read only: function 01-04
@@ -26,6 +28,9 @@ struct UnitScanSettings {
     [[nodiscard]] int idCount() const { return lastUnit - firstUnit + 1; }
     // Before the first probe: the longest the scan can take (every id silent).
     [[nodiscard]] qint64 worstCaseMs() const { return qint64(idCount()) * (timeoutMs + gapMs); }
+    // The gap the scan keeps: the longer of gapMs and the target's own gap= (which the engine
+    // holds anyway), so that what the scan says and estimates is what it does.
+    void keepTargetPace() { gapMs = std::max<int>(gapMs, int(url.gap.count())); }
 };
 
 } // namespace mbscope

@@ -180,7 +180,7 @@ private Q_SLOTS:
         // A link that cannot be opened is exit status 2 with its reason (it was 1, "got no usable answer").
         QTest::newRow("nothing listens") << QStringList{QStringLiteral("tcp://127.0.0.1:%1").arg(closedPort()), QStringLiteral("--block"),
                                                         QStringLiteral("3:0:4"), QStringLiteral("--samples"), QStringLiteral("2")}
-                                         << "got no usable answer: tcp://127.0.0.1:";
+                                         << "mbscope infer: the link failed: read 3 at 0 x 4 got no usable answer: tcp://127.0.0.1:";
     }
     void badInput()
     {

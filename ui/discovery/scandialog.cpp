@@ -208,9 +208,10 @@ void ScanDialog::start()
 {
     if (isRunning())
         return;
-    const std::optional<UnitScanSettings> s = settings();
+    std::optional<UnitScanSettings> s = settings();
     if (!s)
         return;
+    s->keepTargetPace(); // the target's gap= holds: the list says the gap kept
     m_running = *s;
     m_model->clear();
     m_progress->setRange(0, s->idCount());
