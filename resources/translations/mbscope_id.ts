@@ -889,7 +889,7 @@
         <translation>Link gagal: %1. Pastikan perangkat menyala dan dapat dijangkau di alamat ini, lalu kirim lagi (link dibuka kembali), atau tekan Putuskan untuk mengganti target.</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>The recent target &apos;%1&apos; cannot be read: %2</source>
         <translation>Target terakhir &apos;%1&apos; tidak dapat dibaca: %2</translation>
     </message>
@@ -2943,7 +2943,7 @@ dan %n lagi</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Too few reads answered to infer anything.</source>
         <translation>Terlalu sedikit pembacaan yang dijawab untuk menyimpulkan apa pun.</translation>
     </message>
@@ -4370,7 +4370,7 @@ dan %n lagi</numerusform>
         <translation>Tidak ada yang diambil: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>minGapMs %1 (%2 ms, 1 ms to spare)</source>
         <translation>minGapMs %1 (%2 ms, cadangan 1 ms)</translation>
     </message>
@@ -4405,7 +4405,7 @@ dan %n lagi</numerusform>
         <translation>maxQuantity-nya (%1) tidak diterapkan: jendela mengirim permintaan yang Anda susun apa adanya; jaga pembacaan dalam batas itu.</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>Device pace from a profile</source>
         <translation>Tempo perangkat dari profil</translation>
     </message>
@@ -6652,7 +6652,7 @@ Klik kanan untuk mengganti format</translation>
         <translation>Berikan link yang akan dipindai, mis. tcp://192.168.1.10:502.</translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+52"/>
         <source>%1 of %2 ids asked, %3 found</source>
         <translation>%1 dari %2 id ditanyai, %3 ditemukan</translation>
     </message>
