@@ -47,6 +47,12 @@ void onSignal(int number)
             errno = saved;
             return;
         }
+        if (s_pipe[1] < 0) { // no watcher any more: the default action
+            signal(number, SIG_DFL);
+            raise(number);
+            errno = saved;
+            return;
+        }
         s_firstAt = now;
         s_interrupted = 1;
     }
@@ -82,8 +88,13 @@ InterruptWatcher::~InterruptWatcher()
     if (s_pipe[0] < 0)
         return;
     delete m_notifier;
-    sigaction(SIGINT, &s_oldInt, nullptr);
-    sigaction(SIGTERM, &s_oldTerm, nullptr);
+    // After an interrupt the handler stays: the same one delivered again in the next moments (the
+    // command's exit is quick) must not kill the process while it prints; a later one ends it
+    // at once, as the default would.
+    if (!s_interrupted) {
+        sigaction(SIGINT, &s_oldInt, nullptr);
+        sigaction(SIGTERM, &s_oldTerm, nullptr);
+    }
     if (m_hangup)
         sigaction(SIGHUP, &s_oldHup, nullptr);
     ::close(s_pipe[0]);

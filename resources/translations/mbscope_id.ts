@@ -763,12 +763,22 @@
         <translation>Berapa lama menunggu jawaban sebelum permintaan dianggap habis waktu</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>Pace…</source>
-        <translation>Tempo…</translation>
+        <location line="+3"/>
+        <source>Device &amp;pace…</source>
+        <translation>&amp;Tempo perangkat…</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+41"/>
+        <source>Targets connected to before, and the device&apos;s pace</source>
+        <translation>Target yang pernah disambungkan, dan tempo perangkat</translation>
+    </message>
+    <message>
+        <location line="+138"/>
+        <source>Options of this target that no field here shows, used on Connect: %1. They came with the target (a recent target, a session or the command line) or from Device pace…; choose another link type to drop them.</source>
+        <translation>Opsi target ini yang tidak ditampilkan kolom mana pun, dipakai saat Sambung: %1. Opsi ini datang bersama target (target terbaru, sesi, atau baris perintah) atau dari Tempo perangkat…; pilih jenis tautan lain untuk membuangnya.</translation>
+    </message>
+    <message>
+        <location line="-177"/>
         <source>The device&apos;s pace: a gap between requests, a wait after connecting, a new connection for each request (by hand or from a device profile)</source>
         <translation>Tempo perangkat: jeda antar permintaan, tunggu setelah tersambung, sambungan baru untuk setiap permintaan (manual atau dari profil perangkat)</translation>
     </message>
@@ -794,12 +804,12 @@
     </message>
     <message>
         <location line="+19"/>
-        <location line="+315"/>
+        <location line="+314"/>
         <source>&amp;Connect</source>
         <translation>Sa&amp;mbungkan</translation>
     </message>
     <message>
-        <location line="-312"/>
+        <location line="-311"/>
         <source>Disconnect</source>
         <translation>Putuskan</translation>
     </message>
@@ -809,12 +819,7 @@
         <translation>Terakhir</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Targets connected to before</source>
-        <translation>Target yang pernah disambungkan</translation>
-    </message>
-    <message>
-        <location line="+15"/>
+        <location line="+18"/>
         <source>&amp;Link:</source>
         <translation>&amp;Link:</translation>
     </message>
@@ -829,12 +834,7 @@
         <translation>Batas &amp;waktu:</translation>
     </message>
     <message>
-        <location line="+118"/>
-        <source>Options of this target that no field here shows, used on Connect: %1. They came with the target (a recent target, a session or the command line) or from Pace…; choose another link type to drop them.</source>
-        <translation>Opsi target ini yang tidak ditampilkan kolom mana pun, dipakai saat Sambung: %1. Opsi ini datang bersama target (target terbaru, sesi, atau baris perintah) atau dari Tempo…; pilih jenis tautan lain untuk membuangnya.</translation>
-    </message>
-    <message>
-        <location line="+42"/>
+        <location line="+159"/>
         <source>No serial port found: plug in the adapter and press Refresh, or type the device path</source>
         <translation>Tidak ada port serial: colokkan adaptor lalu tekan Segarkan, atau ketik path perangkatnya</translation>
     </message>
@@ -884,7 +884,7 @@
         <translation>Putus&amp;kan</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+49"/>
         <source>The link failed: %1. Check that the device is powered and reachable at this address, then send again (the link reopens), or press Disconnect to change the target.</source>
         <translation>Link gagal: %1. Pastikan perangkat menyala dan dapat dijangkau di alamat ini, lalu kirim lagi (link dibuka kembali), atau tekan Putuskan untuk mengganti target.</translation>
     </message>

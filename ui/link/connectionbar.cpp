@@ -169,12 +169,12 @@ void ConnectionBar::buildUi()
     m_timeoutSpin->setSuffix(tr(" ms"));
     m_timeoutSpin->setToolTip(tr("How long to wait for an answer before the request counts as timed out"));
 
-    m_paceButton = new QToolButton(this);
-    m_paceButton->setObjectName(QStringLiteral("paceButton"));
-    m_paceButton->setText(tr("Pace…"));
-    m_paceButton->setToolTip(tr("The device's pace: a gap between requests, a wait after connecting, a new connection for "
+    // In the Recent menu, not a button of its own: the bar must fit a 1024-pixel screen.
+    m_paceAction = new QAction(tr("Device &pace…"), this);
+    m_paceAction->setObjectName(QStringLiteral("paceAction"));
+    m_paceAction->setToolTip(tr("The device's pace: a gap between requests, a wait after connecting, a new connection for "
                                 "each request (by hand or from a device profile)"));
-    connect(m_paceButton, &QToolButton::clicked, this, &ConnectionBar::editPace);
+    connect(m_paceAction, &QAction::triggered, this, &ConnectionBar::editPace);
 
     m_listenOnlyCheck = new QCheckBox(tr("L&isten"), this);
     m_listenOnlyCheck->setObjectName(QStringLiteral("listenOnlyCheck"));
@@ -211,7 +211,7 @@ void ConnectionBar::buildUi()
     m_recentButton->setText(tr("Recent"));
     m_recentButton->setPopupMode(QToolButton::InstantPopup);
     m_recentButton->setMenu(new QMenu(m_recentButton));
-    m_recentButton->setToolTip(tr("Targets connected to before"));
+    m_recentButton->setToolTip(tr("Targets connected to before, and the device's pace"));
 
     // TLS's files on a row of their own, shown for tls:// only.
     m_tlsFiles = new TlsFilesField(this);
@@ -234,7 +234,6 @@ void ConnectionBar::buildUi()
     row->addWidget(m_unitSpin);
     row->addWidget(buddyLabel(tr("Ti&meout:"), m_timeoutSpin, this));
     row->addWidget(m_timeoutSpin);
-    row->addWidget(m_paceButton);
     row->addWidget(m_keptLabel);
     row->addWidget(m_listenOnlyCheck);
     row->addWidget(m_tapCheck);
@@ -351,7 +350,7 @@ void ConnectionBar::showKept()
     const QString kept = keptOptions();
     m_keptLabel->setText(kept.isEmpty() ? QString() : QStringLiteral("+ ") + kept);
     m_keptLabel->setToolTip(tr("Options of this target that no field here shows, used on Connect: %1. They came with the "
-                               "target (a recent target, a session or the command line) or from Pace…; choose another link type "
+                               "target (a recent target, a session or the command line) or from Device pace…; choose another link type "
                                "to drop them.")
                                 .arg(kept));
     m_keptLabel->setVisible(!kept.isEmpty());
@@ -519,8 +518,7 @@ void ConnectionBar::setConnected(bool connected)
     m_connected = connected;
     m_connectButton->setText(connected ? tr("Dis&connect") : tr("&Connect"));
     // The target of a live link is what the link uses: change it by disconnecting first.
-    for (QWidget *w : std::initializer_list<QWidget *>{m_kindCombo, m_networkPage, m_serialPage, m_tlsFiles, m_timeoutSpin, m_paceButton,
-                                                       m_recentButton})
+    for (QWidget *w : std::initializer_list<QWidget *>{m_kindCombo, m_networkPage, m_serialPage, m_tlsFiles, m_timeoutSpin, m_recentButton})
         w->setEnabled(!connected);
     m_listenOnlyCheck->setEnabled(!connected && canListen(kind()));
     m_tapCheck->setEnabled(!connected);
@@ -638,6 +636,8 @@ void ConnectionBar::rebuildRecentMenu()
     }
     if (recent.isEmpty())
         menu->addAction(tr("(no recent targets yet)"))->setEnabled(false);
+    menu->addSeparator();
+    menu->addAction(m_paceAction);
 }
 
 } // namespace mbscope

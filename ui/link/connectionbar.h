@@ -9,6 +9,7 @@
 
 #include <optional>
 
+class QAction;
 class QCheckBox;
 class QComboBox;
 class QLabel;
@@ -60,12 +61,13 @@ public:
     void setUrl(const LinkUrl &url);
     // The kept options in URL form ("rts=up&rts_after=1ms"), empty when none apply.
     [[nodiscard]] QString keptOptions() const;
-    // The device's pace on the target (its gap=, warmup=, close=each), set with Pace… (PaceDialog)
+    // The device's pace on the target (its gap=, warmup=, close=each), set with Recent > Device
+    // pace… (PaceDialog)
     // or with the URL set last; kept like the options no field shows, for as long as the link
     // type stays the same.
     [[nodiscard]] PaceDialog::Pace pace() const;
     void setPace(const PaceDialog::Pace &pace);
-    [[nodiscard]] QToolButton *paceButton() const { return m_paceButton; }
+    [[nodiscard]] QAction *paceAction() const { return m_paceAction; }
     [[nodiscard]] int unitId() const;
     void setUnitId(int unit);
     [[nodiscard]] int timeoutMs() const;
@@ -142,7 +144,7 @@ private:
     TapFields *m_tapFields = nullptr; // the Tap row: shown while Tap is ticked
     QPushButton *m_connectButton = nullptr;
     QToolButton *m_recentButton = nullptr;
-    QToolButton *m_paceButton = nullptr;
+    QAction *m_paceAction = nullptr;
     QLabel *m_errorLabel = nullptr;
     QLabel *m_keptLabel = nullptr;  // the options of the last URL set that no field shows
     std::optional<LinkUrl> m_kept;  // that URL
