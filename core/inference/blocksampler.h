@@ -50,7 +50,6 @@ public:
     [[nodiscard]] QString problem() const { return m_problem; }
     // A read of the last run failed on the link (it could not be opened, or it broke).
     [[nodiscard]] bool linkFailed() const { return m_linkFailed; }
-    [[nodiscard]] bool wasStopped() const { return m_stopRequested; }
 
 Q_SIGNALS:
     void roundDone(int done, int total);
