@@ -129,14 +129,14 @@ QJsonObject json(const TimingScanSettings &s, const TimingReport &r, JobEnd end)
         {QStringLiteral("gaps_complete"), r.gapsComplete},
         {QStringLiteral("largest_quantity"), r.largestQuantity == 0 ? QJsonValue(QJsonValue::Null) : QJsonValue(r.largestQuantity)},
         {QStringLiteral("largest_complete"), r.largestComplete},
-        {QStringLiteral("largest_answer_pdu"), r.largestAnswerPdu},
+        {QStringLiteral("largest_answer_pdu"), r.largestQuantity == 0 ? QJsonValue(QJsonValue::Null) : QJsonValue(r.largestAnswerPdu)},
         {QStringLiteral("largest_ends_map"), r.largestEndsMap},
         {QStringLiteral("closes_after_answer"), r.gapReconnects >= 0 && r.gapAnswered >= 3 ? QJsonValue(r.closesAfterAnswer())
                                                                                              : QJsonValue(QJsonValue::Null)},
         {QStringLiteral("pipeline_sent"), r.pipelineSent},
-        {QStringLiteral("pipeline_ok"), r.pipelineOk},
+        {QStringLiteral("pipeline_ok"), r.pipelineSent == 0 ? QJsonValue(QJsonValue::Null) : QJsonValue(r.pipelineOk)}, // null: not tried
         {QStringLiteral("clients_tried"), r.clientsTried},
-        {QStringLiteral("clients_served"), r.clientsServed},
+        {QStringLiteral("clients_served"), r.clientsTried == 0 ? QJsonValue(QJsonValue::Null) : QJsonValue(r.clientsServed)}, // null: not tried
         {QStringLiteral("clients_extra"), r.clientsTried == 0 ? QStringLiteral("not measured")
                                           : r.clientsServed == r.clientsTried
                                               ? QStringLiteral("not reached")

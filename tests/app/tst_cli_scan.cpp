@@ -696,6 +696,9 @@ void TestCliScan::timingFindsAHangUp()
     QCOMPARE(o.value(QStringLiteral("closes_after_answer")), QJsonValue(true));
     QCOMPARE(o.value(QStringLiteral("clients_tried")).toInt(), 0);
     QCOMPARE(o.value(QStringLiteral("pipeline_sent")).toInt(), 0);
+    // Never tried is null, not 0 (a new user's try read "clients_served": 0 as none served).
+    QVERIFY(o.value(QStringLiteral("clients_served")).isNull());
+    QVERIFY(o.value(QStringLiteral("pipeline_ok")).isNull());
     QVERIFY2(r.errText().contains(QStringLiteral("mbscope scan: limits measured: closesAfterAnswer")), r.describe());
     QVERIFY(draft.open(QIODevice::ReadOnly));
     const QJsonObject limits = QJsonDocument::fromJson(draft.readAll()).object().value(QStringLiteral("limits")).toObject();
